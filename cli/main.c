@@ -1,0 +1,314 @@
+/* main.c - the ssgraph command line, a thin layer over libssgraph (ssgraph.h).
+ *
+ *   ssgraph run FILE [options]        validate, then run a graph and write its outputs
+ *   ssgraph check FILE [options]      validate only (no meshes or images are loaded)
+ *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR]
+ *   ssgraph nodes | describe NODE | docs
+ * Exit status: 0 success, 1 invalid input or failed run, 2 bad command line. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "ssgraph.h"
+
+enum { MAX_SETS = 256, MAX_INPUTS = 24, EXIT_INVALID = 1, EXIT_USAGE = 2 };
+
+struct options {
+    const char *file;                /* graph file, or node name for `node` */
+    struct ssg_overrides ov;
+    const char *sets[MAX_SETS];
+    const char *inputs[MAX_INPUTS];  /* `node`: port=file[:layer] */
+    int input_count;
+    const char *out_dir;
+    int threads;
+    int quiet;
+    float fov;                       /* `node`: vertical fov, degrees */
+};
+
+static const char *const usage_text =
+    "usage: ssgraph <command> [arguments]\n"
+    "\n"
+    "commands:\n"
+    "  run FILE        validate and run a graph; writes into --out (default out/)\n"
+    "  check FILE      validate a graph and its scene without running it\n"
+    "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
+    "  nodes           list the nodes\n"
+    "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
+    "  docs            the Markdown reference of every node\n"
+    "\n"
+    "options of run, check and node:\n"
+    "  --scene FILE        use this scene instead of the graph's\n"
+    "  --size WxH          frame size in pixels instead of the graph's\n"
+    "  --set NODE.P=VALUE  override a parameter or input (repeatable; for `node`: P=VALUE)\n"
+    "  --seed N            seed of every pseudo-random choice (default: the graph's, or 1)\n"
+    "  --out DIR           output directory (default out)\n"
+    "  --threads N         worker threads (default: all cores); never changes the result\n"
+    "  --quiet             do not print per-node timings\n"
+    "  --in PORT=FILE[:LAYER]  (node) bind an image file, or one EXR layer of it, to a port\n"
+    "  --fov DEGREES       (node) vertical field of view of the frame (default 45)\n"
+    "  --help, --version\n";
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "ssgraph: error: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n(run 'ssgraph --help' for usage)\n");
+    return EXIT_USAGE;
+}
+
+static int parse_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_size(const char *s, int *w, int *h)
+{
+    char buf[64];
+    long lw, lh;
+    const char *x = strchr(s, 'x');
+    if (!x || x - s >= (long)sizeof buf)
+        return 0;
+    memcpy(buf, s, (size_t)(x - s));
+    buf[x - s] = 0;
+    if (!parse_int(buf, 1, 16384, &lw) || !parse_int(x + 1, 1, 16384, &lh))
+        return 0;
+    *w = (int)lw;
+    *h = (int)lh;
+    return 1;
+}
+
+/* One option with its value at argv[*i + 1]; returns 0 on success, else an exit code. */
+static int take_option(struct options *o, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    if (!strcmp(opt, "--quiet")) {
+        o->quiet = 1;
+        return 0;
+    }
+    if (*i + 1 >= argc)
+        return usage_error("option '%s' needs a value", opt);
+    const char *val = argv[++*i];
+    long n;
+    if (!strcmp(opt, "--scene")) {
+        o->ov.scene = val;
+    } else if (!strcmp(opt, "--size")) {
+        if (!parse_size(val, &o->ov.width, &o->ov.height))
+            return usage_error("--size expects WIDTHxHEIGHT with 1..16384 each, got '%s'", val);
+    } else if (!strcmp(opt, "--set")) {
+        if (o->ov.set_count == MAX_SETS)
+            return usage_error("too many --set options (at most 256), at '%s'", val);
+        o->sets[o->ov.set_count++] = val;
+    } else if (!strcmp(opt, "--in")) {
+        if (o->input_count == MAX_INPUTS)
+            return usage_error("too many --in options (at most 24), at '%s'", val);
+        o->inputs[o->input_count++] = val;
+    } else if (!strcmp(opt, "--seed")) {
+        if (!parse_int(val, 0, 2147483647L, &n))
+            return usage_error("--seed expects an integer 0..2147483647, got '%s'", val);
+        o->ov.seed = n;
+    } else if (!strcmp(opt, "--threads")) {
+        if (!parse_int(val, 1, 1024, &n))
+            return usage_error("--threads expects an integer 1..1024, got '%s'", val);
+        o->threads = (int)n;
+    } else if (!strcmp(opt, "--fov")) {
+        char *end;
+        o->fov = strtof(val, &end);
+        if (*end || !(o->fov > 0 && o->fov < 180))
+            return usage_error("--fov expects degrees in (0, 180), got '%s'", val);
+    } else if (!strcmp(opt, "--out")) {
+        o->out_dir = val;
+    } else {
+        return usage_error("unknown option '%s'", opt);
+    }
+    return 0;
+}
+
+static int parse_options(struct options *o, int argc, char **argv)
+{
+    memset(o, 0, sizeof *o);
+    o->ov.seed = -1;
+    o->ov.sets = o->sets;
+    o->out_dir = "out";
+    for (int i = 0; i < argc; i++) {
+        if (argv[i][0] == '-' && argv[i][1] == '-') {
+            int rc = take_option(o, argc, argv, &i);
+            if (rc)
+                return rc;
+        } else if (!o->file) {
+            o->file = argv[i];
+        } else {
+            return usage_error("unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!o->file)
+        return usage_error("%s", "missing FILE (or NODE) argument");
+    return 0;
+}
+
+static int report(struct ssg_diags *d, enum ssg_err e)
+{
+    ssg_diags_print(d, stderr);
+    if (e && d->count == 0)
+        fprintf(stderr, "ssgraph: error: %s\n", ssg_err_text(e));
+    return e ? EXIT_INVALID : 0;
+}
+
+static int cmd_run(const struct options *o, int check_only)
+{
+    struct ssg_diags d = {0};
+    if (check_only) {
+        enum ssg_err e = ssg_graph_check(o->file, &o->ov, &d);
+        if (!e)
+            printf("%s: ok\n", o->file);
+        return report(&d, e);
+    }
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(o->file, &o->ov, &g, &d);
+    if (!e) {
+        struct ssg_run_options ro = {o->out_dir, o->threads, o->quiet, stdout};
+        e = ssg_graph_run(g, &ro, &d);
+    }
+    ssg_graph_destroy(&g);
+    return report(&d, e);
+}
+
+/* `--in port=file[:layer]` into a binding; the image is owned by the caller. The spec's
+ * form was checked by check_inputs. */
+static enum ssg_err read_input(const char *spec, struct ssg_binding *b, char *port, size_t len,
+                               struct ssg_diags *d)
+{
+    const char *eq = strchr(spec, '=');
+    memcpy(port, spec, (size_t)(eq - spec));
+    port[eq - spec] = 0;
+    char path[1024];
+    snprintf(path, sizeof path, "%s", eq + 1);
+    char *colon = strrchr(path, ':');
+    const char *layer = NULL;
+    if (colon && !strchr(colon, '/')) {
+        *colon = 0;
+        layer = colon + 1;
+    }
+    struct ssg_image *im = NULL;
+    enum ssg_err e = ssg_image_read(path, layer, &im, d);
+    b->port = port;
+    b->image = im;
+    return e;
+}
+
+static int check_inputs(const struct options *o)
+{
+    for (int i = 0; i < o->input_count; i++) {
+        const char *eq = strchr(o->inputs[i], '=');
+        if (!eq || eq == o->inputs[i] || eq - o->inputs[i] >= 64 || !eq[1])
+            return usage_error("--in expects PORT=FILE[:LAYER], got '%s'", o->inputs[i]);
+    }
+    return 0;
+}
+
+static enum ssg_err write_outputs(const struct ssg_outputs *out, const char *dir,
+                                  struct ssg_diags *d)
+{
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "%s: error: cannot create output directory: %s\n", dir, strerror(errno));
+        return SSG_E_IO;
+    }
+    for (int i = 0; i < out->count; i++) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s.exr", dir, out->names[i]);
+        enum ssg_err e = ssg_image_write(path, out->images[i], d);
+        if (e)
+            return e;
+        printf("wrote %s (%dx%d, %d channels)\n", path, out->images[i]->width,
+               out->images[i]->height, out->images[i]->channels);
+    }
+    return SSG_OK;
+}
+
+static int cmd_node(const struct options *o)
+{
+    struct ssg_diags d = {0};
+    struct ssg_binding bind[MAX_INPUTS] = {{0}};
+    char ports[MAX_INPUTS][64];
+    enum ssg_err e = SSG_OK;
+    int rc = check_inputs(o);
+    if (rc)
+        return rc;
+    for (int i = 0; i < o->input_count; i++) {
+        enum ssg_err r = read_input(o->inputs[i], &bind[i], ports[i], sizeof ports[i], &d);
+        if (r && !e)
+            e = r;
+    }
+    struct ssg_frame frame = {o->ov.width, o->ov.height, o->fov, 0, 0,
+                              o->ov.seed >= 0 ? (uint64_t)o->ov.seed : 1};
+    struct ssg_outputs out = {0};
+    if (!e)
+        e = ssg_node_run(o->file, bind, o->input_count, o->sets, o->ov.set_count, &frame, &out,
+                         &d);
+    if (!e)
+        e = write_outputs(&out, o->out_dir, &d);
+    ssg_outputs_release(&out);
+    for (int i = 0; i < o->input_count; i++)
+        ssg_image_destroy((struct ssg_image **)&bind[i].image);
+    return report(&d, e);
+}
+
+static int cmd_nodes(void)
+{
+    for (int i = 0; i < ssg_node_count(); i++)
+        printf("%-12s %s\n", ssg_node_name(i), ssg_node_summary(i));
+    return 0;
+}
+
+static int cmd_describe(const char *node)
+{
+    if (ssg_node_describe(node, stdout) == SSG_OK)
+        return 0;
+    fprintf(stderr, "ssgraph: error: unknown node '%s' (see 'ssgraph nodes')\n", node);
+    return EXIT_INVALID;
+}
+
+static int wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))
+            return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || wants_help(argc, argv)) {
+        fputs(usage_text, argc < 2 ? stderr : stdout);
+        return argc < 2 ? EXIT_USAGE : 0;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "--version")) {
+        printf("ssgraph %s\n", SSG_VERSION);
+        return 0;
+    }
+    if (!strcmp(cmd, "nodes"))
+        return cmd_nodes();
+    if (!strcmp(cmd, "docs")) {
+        ssg_nodes_markdown(stdout);
+        return 0;
+    }
+    if (!strcmp(cmd, "describe"))
+        return argc == 3 ? cmd_describe(argv[2]) : usage_error("%s", "describe expects NODE");
+    if (strcmp(cmd, "run") && strcmp(cmd, "check") && strcmp(cmd, "node"))
+        return usage_error("unknown command '%s'", cmd);
+    struct options o;
+    int rc = parse_options(&o, argc - 2, argv + 2);
+    if (rc)
+        return rc;
+    if (!strcmp(cmd, "node"))
+        return cmd_node(&o);
+    return cmd_run(&o, !strcmp(cmd, "check"));
+}

@@ -1,0 +1,95 @@
+/* exec.c - output shapes and the timed execution of one node (exec.h). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "exec.h"
+#include "image.h"
+
+double ssg_now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static void default_shape(const struct ssg_node_desc *desc, int port,
+                          const struct ssg_frame *frame, const struct ssg_shape *in,
+                          struct ssg_shape *out)
+{
+    const struct ssg_port_desc *p = &desc->outputs[port];
+    if (p->same_as) {
+        int src = ssg_port_find(desc->inputs, desc->input_count, p->same_as, strlen(p->same_as));
+        if (src >= 0) {
+            *out = in[src];
+            return;
+        }
+    }
+    out->width = frame->width;
+    out->height = frame->height;
+    out->channels = ssg_type_channels(p->types);
+    out->type = p->types;
+}
+
+enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *params,
+                              const struct ssg_frame *frame, const struct ssg_shape *in,
+                              struct ssg_shape *out, char *why, size_t why_len)
+{
+    why[0] = 0;
+    for (int i = 0; i < desc->output_count; i++)
+        default_shape(desc, i, frame, in, &out[i]);
+    if (desc->check) {
+        enum ssg_err e = desc->check(params, frame, in, out, why, why_len);
+        if (e)
+            return e;
+    }
+    for (int i = 0; i < desc->output_count; i++) {
+        if (!ssg_image_size_ok(out[i].width, out[i].height, out[i].channels)) {
+            snprintf(why, why_len, "output '%s' would be %dx%d with %d channels (at most "
+                     "%dx%d, %d pixels, 1-4 channels)", desc->outputs[i].name, out[i].width,
+                     out[i].height, out[i].channels, SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_SIDE,
+                     SSG_IMAGE_MAX_PIXELS);
+            return SSG_E_SIZE;
+        }
+    }
+    return SSG_OK;
+}
+
+enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, const struct ssg_io *io, double *ms)
+{
+    double t0 = ssg_now_ms();
+    void *consts = NULL;
+    enum ssg_err e = SSG_OK;
+    if (desc->consts_size) {
+        consts = calloc(1, desc->consts_size);
+        if (!consts) {
+            ssg_diag_file(ctx->diags, SSG_E_NOMEM, NULL, "out of memory preparing '%s'",
+                          ctx->instance);
+            return SSG_E_NOMEM;
+        }
+        if (desc->prepare)
+            e = desc->prepare(ctx, params, consts);
+    }
+    if (!e)
+        e = desc->run_cpu(ctx, consts ? consts : params, io);
+    free(consts);
+    *ms = ssg_now_ms() - t0;
+    return e;
+}
+
+unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image)
+{
+    if (image->channels == 1 && (accepted & SSG_T_SCALAR))
+        return SSG_T_SCALAR;
+    if (image->channels == 3 && (accepted & SSG_T_VECTOR))
+        return SSG_T_VECTOR;
+    if (image->channels == 3 && (accepted & SSG_T_COLOR))
+        return SSG_T_COLOR;
+    if (image->channels == 3 && image->height == 1 && (accepted & SSG_T_KERNEL))
+        return SSG_T_KERNEL;
+    if (image->channels == 2 && (accepted & SSG_T_PATTERN))
+        return SSG_T_PATTERN;
+    return 0;
+}

@@ -1,0 +1,212 @@
+/* graph.c - the public graph API (ssgraph.h): load = build + scene + validate; run = every
+ * live node in order, images from a pool, each freed after its last reader, each node
+ * timed. */
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "graph.h"
+#include "image.h"
+
+static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
+{
+    for (int i = 0; i < g->count; i++) {
+        if (g->nodes[i].desc->needs_scene) {
+            *where = g->nodes[i].loc;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Loads the scene (assets too when load_assets) and derives the frame from its camera. */
+static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, struct ssg_diags *diags)
+{
+    struct ssg_loc where = {0};
+    g->frame = (struct ssg_frame){.width = g->width, .height = g->height, .fov_y = 45.0f,
+                                  .near_z = 0.05f, .far_z = 100.0f, .seed = (uint64_t)g->seed};
+    if (!ssg_image_size_ok(g->width, g->height, 1)) {
+        ssg_diag_at(diags, SSG_E_SIZE, g->size_loc, "frame size %dx%d is out of range "
+                    "(expected 1 to %d per side, at most %d pixels)", g->width, g->height,
+                    SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_PIXELS);
+        return SSG_E_SIZE;
+    }
+    if (!g->scene_path[0]) {
+        if (!needs_scene(g, &where))
+            return SSG_OK;
+        ssg_diag_at(diags, SSG_E_SCENE, where, "this node needs a scene (expected a line "
+                    "scene \"file.scene\" in the graph, or --scene FILE)");
+        return SSG_E_SCENE;
+    }
+    enum ssg_err e = ssg_scene_load(g->scene_path, load_assets, &g->scene, diags);
+    if (e)
+        return e;
+    g->frame.fov_y = g->scene->camera.fov_y;
+    g->frame.near_z = g->scene->camera.near_z;
+    g->frame.far_z = g->scene->camera.far_z;
+    return SSG_OK;
+}
+
+static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,
+                         struct ssg_graph **out, struct ssg_diags *diags)
+{
+    struct ssg_graph *g = calloc(1, sizeof *g);
+    *out = NULL;
+    if (!g)
+        return SSG_E_NOMEM;
+    enum ssg_err e = ssg_graph_build(g, path, ov, diags);
+    /* The scene is checked even when the graph has errors, so one run reports both. */
+    enum ssg_err scene = setup_frame(g, load_assets, diags);
+    if (!e)
+        e = scene;
+    if (!e)
+        e = ssg_graph_validate(g, diags);
+    if (e) {
+        ssg_graph_destroy(&g);
+        return e;
+    }
+    *out = g;
+    return SSG_OK;
+}
+
+enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *ov,
+                            struct ssg_graph **out, struct ssg_diags *diags)
+{
+    return load(path, ov, 1, out, diags);
+}
+
+enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
+                             struct ssg_diags *diags)
+{
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = load(path, ov, 0, &g, diags);
+    ssg_graph_destroy(&g);
+    return e;
+}
+
+void ssg_graph_destroy(struct ssg_graph **graph)
+{
+    if (!graph || !*graph)
+        return;
+    ssg_scene_destroy(&(*graph)->scene);
+    ssg_arena_free(&(*graph)->arena);
+    free(*graph);
+    *graph = NULL;
+}
+
+/* ---- running ---- */
+
+struct run {
+    struct ssg_graph *g;
+    struct ssg_pool *pool;
+    const struct ssg_run_options *opt;
+    struct ssg_diags *diags;
+    double *ms;
+};
+
+static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
+{
+    for (int k = 0; k < n->desc->output_count; k++) {
+        const struct ssg_shape *s = &n->out_shape[k];
+        n->out_img[k] = ssg_pool_acquire(r->pool, s->width, s->height, s->channels);
+        if (!n->out_img[k]) {
+            ssg_diag_at(r->diags, SSG_E_NOMEM, n->loc, "out of memory for output '%s' of "
+                        "node '%s' (%dx%dx%d)", n->desc->outputs[k].name, n->name, s->width,
+                        s->height, s->channels);
+            return SSG_E_NOMEM;
+        }
+    }
+    return SSG_OK;
+}
+
+/* Gives back every image whose last reader ran at position p (and unread outputs of the
+ * node at p itself). */
+static void release_after(struct run *r, int p)
+{
+    struct ssg_graph *g = r->g;
+    for (int q = 0; q <= p; q++) {
+        struct gnode *n = &g->nodes[g->order[q]];
+        for (int k = 0; k < n->desc->output_count; k++) {
+            if (n->out_img[k] && (n->last_reader[k] == p || n->last_reader[k] < 0)) {
+                ssg_pool_release(r->pool, n->out_img[k]);
+                n->out_img[k] = NULL;
+            }
+        }
+    }
+}
+
+static void release_all(struct run *r)
+{
+    for (int q = 0; q < r->g->order_count; q++) {
+        struct gnode *n = &r->g->nodes[r->g->order[q]];
+        for (int k = 0; k < SSG_MAX_PORTS; k++) {
+            ssg_pool_release(r->pool, n->out_img[k]);
+            n->out_img[k] = NULL;
+        }
+    }
+}
+
+static enum ssg_err run_node(struct run *r, int p)
+{
+    struct ssg_graph *g = r->g;
+    struct gnode *n = &g->nodes[g->order[p]];
+    const struct ssg_image *in[SSG_MAX_PORTS] = {0}, *extra[SSG_MAX_EXTRA] = {0};
+    for (int k = 0; k < n->desc->input_count; k++)
+        if (n->in[k].node >= 0)
+            in[k] = g->nodes[n->in[k].node].out_img[n->in[k].port];
+    for (int k = 0; k < n->extra_count; k++)
+        extra[k] = g->nodes[n->extra[k].node].out_img[n->extra[k].port];
+    enum ssg_err e = allocate_outputs(r, n);
+    if (e)
+        return e;
+    struct ssg_io io = {in, n->out_img, n->extra_count, n->extra_names, extra, n->extra_types};
+    struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene,
+                               r->opt->out_dir ? r->opt->out_dir : "out", r->diags};
+    e = ssg_node_execute(n->desc, &ctx, n->params, &io, &r->ms[p]);
+    if (e && r->diags->count == 0)
+        ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
+                    ssg_err_text(e));
+    return e;
+}
+
+static void print_timings(const struct run *r, double total)
+{
+    FILE *log = r->opt->log ? r->opt->log : stdout;
+    const struct ssg_graph *g = r->g;
+    fprintf(log, "%-16s %-12s %10s\n", "node", "type", "ms");
+    for (int p = 0; p < g->order_count; p++) {
+        const struct gnode *n = &g->nodes[g->order[p]];
+        fprintf(log, "%-16s %-12s %10.2f\n", n->name, n->desc->name, r->ms[p]);
+    }
+    fprintf(log, "%-16s %-12s %10.2f   (%dx%d, %d threads, peak images %.1f MB)\n", "total",
+            "", total, g->width, g->height, omp_get_max_threads(),
+            (double)ssg_pool_peak_bytes(r->pool) / (1024.0 * 1024.0));
+}
+
+enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *options,
+                           struct ssg_diags *diags)
+{
+    struct ssg_run_options defaults = {0};
+    struct run r = {g, ssg_pool_create(), options ? options : &defaults, diags,
+                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof(double))};
+    if (!r.pool || !r.ms) {
+        ssg_pool_destroy(&r.pool);
+        free(r.ms);
+        return SSG_E_NOMEM;
+    }
+    if (r.opt->threads > 0)
+        omp_set_num_threads(r.opt->threads);
+    enum ssg_err e = SSG_OK;
+    double t0 = ssg_now_ms();
+    for (int p = 0; p < g->order_count && !e; p++) {
+        e = run_node(&r, p);
+        release_after(&r, p);
+    }
+    if (!e && !r.opt->quiet)
+        print_timings(&r, ssg_now_ms() - t0);
+    release_all(&r);
+    ssg_pool_destroy(&r.pool);
+    free(r.ms);
+    return e;
+}

@@ -1,0 +1,252 @@
+/* graph_check.c - whole-graph validation before anything runs (graph.h): references,
+ * required inputs and parameters, reachability from a sink, cycles, port types and image
+ * shapes; then the run order and each output's last reader, so the executor can give an
+ * image back to the pool as soon as nothing else reads it. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "graph.h"
+#include "image.h"
+
+struct checker {
+    struct ssg_graph *g;
+    struct ssg_diags *diags;
+    enum ssg_err first;
+};
+
+static void fail(struct checker *c, enum ssg_err e)
+{
+    if (!c->first)
+        c->first = e;
+}
+
+static void output_names(const struct ssg_node_desc *d, char *buf, size_t len)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < d->output_count && n < len; i++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", i ? ", " : "", d->outputs[i].name);
+    if (!d->output_count)
+        snprintf(buf, len, "none: it is a sink");
+}
+
+static void resolve(struct checker *c, struct gconn *conn)
+{
+    if (!conn->ref)
+        return;
+    const struct ssg_value *v = &conn->value;
+    int producer = ssg_graph_find(c->g, v->text, v->len);
+    if (producer < 0) {
+        ssg_diag_at(c->diags, SSG_E_UNKNOWN_NAME, v->loc, "no node named '%.*s' (in '%s')",
+                    (int)v->len, v->text, conn->ref);
+        fail(c, SSG_E_UNKNOWN_NAME);
+        return;
+    }
+    const struct ssg_node_desc *d = c->g->nodes[producer].desc;
+    int port = ssg_port_find(d->outputs, d->output_count, v->member, v->member_len);
+    if (port < 0) {
+        char names[256];
+        output_names(d, names, sizeof names);
+        ssg_diag_at(c->diags, SSG_E_UNKNOWN_PORT, v->member_loc, "node '%.*s' (%s) has no "
+                    "output '%.*s' (expected one of: %s)", (int)v->len, v->text, d->name,
+                    (int)v->member_len, v->member, names);
+        fail(c, SSG_E_UNKNOWN_PORT);
+        return;
+    }
+    conn->node = producer;
+    conn->port = port;
+}
+
+static void check_required(struct checker *c, struct gnode *n)
+{
+    const struct ssg_node_desc *d = n->desc;
+    for (int i = 0; i < d->input_count; i++) {
+        if (d->inputs[i].optional || n->in[i].ref)
+            continue;
+        char types[64];
+        ssg_type_names(d->inputs[i].types, types, sizeof types);
+        ssg_diag_at(c->diags, SSG_E_MISSING_INPUT, n->loc, "node '%s' (%s) needs input '%s' "
+                    "(%s), which is not connected (expected %s=node.port)", n->name, d->name,
+                    d->inputs[i].name, types, d->inputs[i].name);
+        fail(c, SSG_E_MISSING_INPUT);
+    }
+    for (int i = 0; i < d->params.count; i++) {
+        if (!d->params.params[i].required || (i < (int)sizeof n->param_set && n->param_set[i]))
+            continue;
+        ssg_diag_at(c->diags, SSG_E_MISSING_INPUT, n->loc, "node '%s' (%s) needs parameter "
+                    "'%s' (%s)", n->name, d->name, d->params.params[i].name,
+                    d->params.params[i].help);
+        fail(c, SSG_E_MISSING_INPUT);
+    }
+}
+
+/* Calls fn for every connected input (ports, then extras) of node n. */
+#define FOR_EACH_INPUT(n, conn)                                                             \
+    for (int k_ = 0; k_ < SSG_MAX_PORTS + (n)->extra_count; k_++)                           \
+        for (struct gconn *conn = k_ < SSG_MAX_PORTS ? &(n)->in[k_]                         \
+                                                     : &(n)->extra[k_ - SSG_MAX_PORTS];     \
+             conn; conn = NULL)                                                             \
+            if (conn->node >= 0)
+
+static void mark_live(struct ssg_graph *g, int i)
+{
+    struct gnode *n = &g->nodes[i];
+    if (n->live)
+        return;
+    n->live = 1;
+    FOR_EACH_INPUT(n, conn) mark_live(g, conn->node);
+}
+
+/* Follows inputs among unordered nodes from `start` until one repeats: that is a cycle. */
+static void report_cycle(struct checker *c, const int *unordered, int start)
+{
+    struct ssg_graph *g = c->g;
+    int *seen = calloc((size_t)g->count, sizeof *seen);
+    int path[64], len = 0, at = start;
+    if (!seen)
+        return;
+    while (!seen[at] && len < 64) {
+        seen[at] = len + 1;
+        path[len++] = at;
+        int nxt = -1;
+        FOR_EACH_INPUT(&g->nodes[at], conn) if (nxt < 0 && unordered[conn->node]) nxt = conn->node;
+        if (nxt < 0)
+            break;
+        at = nxt;
+    }
+    char text[512];
+    size_t n = 0;
+    int from = seen[at] ? seen[at] - 1 : 0;
+    for (int i = len - 1; i >= from && n < sizeof text; i--)
+        n += (size_t)snprintf(text + n, sizeof text - n, "%s -> ", g->nodes[path[i]].name);
+    if (n < sizeof text)
+        snprintf(text + n, sizeof text - n, "%s", g->nodes[path[len - 1]].name);
+    ssg_diag_at(c->diags, SSG_E_CYCLE, g->nodes[at].loc, "the graph has a cycle: %s (expected "
+                "every node to depend only on nodes that do not depend on it)", text);
+    fail(c, SSG_E_CYCLE);
+    free(seen);
+}
+
+/* Kahn's algorithm over live nodes, taking the earliest-defined ready node first so the
+ * run order is stable and follows the file where it can. */
+static void order_nodes(struct checker *c)
+{
+    struct ssg_graph *g = c->g;
+    int *done = calloc((size_t)g->count, sizeof *done);
+    g->order = ssg_arena_alloc(&g->arena, (size_t)(g->count ? g->count : 1) * sizeof *g->order);
+    if (!done || !g->order) {
+        free(done);
+        fail(c, SSG_E_NOMEM);
+        return;
+    }
+    g->order_count = 0;
+    for (int progress = 1; progress;) {
+        progress = 0;
+        for (int i = 0; i < g->count; i++) {
+            struct gnode *n = &g->nodes[i];
+            int ready = n->live && !done[i];
+            FOR_EACH_INPUT(n, conn) ready = ready && done[conn->node];
+            if (ready) {
+                done[i] = 1;
+                g->order[g->order_count++] = i;
+                progress = 1;
+                break;
+            }
+        }
+    }
+    for (int i = 0; i < g->count; i++)
+        done[i] = g->nodes[i].live && !done[i]; /* now: 1 = stuck on a cycle */
+    for (int i = 0; i < g->count; i++) {
+        if (done[i]) {
+            report_cycle(c, done, i);
+            break;
+        }
+    }
+    free(done);
+}
+
+static int check_type(struct checker *c, const struct gnode *n, const char *port,
+                      unsigned accepted, const struct gconn *conn, struct ssg_shape *shape)
+{
+    *shape = c->g->nodes[conn->node].out_shape[conn->port];
+    if (shape->type & accepted)
+        return 1;
+    char want[64], got[64];
+    ssg_type_names(accepted, want, sizeof want);
+    ssg_type_names(shape->type, got, sizeof got);
+    ssg_diag_at(c->diags, SSG_E_TYPE, conn->value.loc, "input '%s' of node '%s' (%s) expects "
+                "%s, but '%s' is %s", port, n->name, n->desc->name, want, conn->ref, got);
+    fail(c, SSG_E_TYPE);
+    return 0;
+}
+
+static void infer_node(struct checker *c, struct gnode *n)
+{
+    const struct ssg_node_desc *d = n->desc;
+    int ok = 1;
+    for (int i = 0; i < d->input_count; i++)
+        if (n->in[i].node >= 0)
+            ok &= check_type(c, n, d->inputs[i].name, d->inputs[i].types, &n->in[i],
+                             &n->in_shape[i]);
+    for (int i = 0; i < n->extra_count; i++) {
+        struct ssg_shape s;
+        if (n->extra[i].node >= 0 && check_type(c, n, n->extra_names[i], SSG_T_IMAGE,
+                                                &n->extra[i], &s))
+            n->extra_types[i] = s.type;
+        else
+            ok = 0;
+    }
+    if (!ok)
+        return;
+    char why[400];
+    enum ssg_err e = ssg_shapes_infer(d, n->params, &c->g->frame, n->in_shape, n->out_shape,
+                                      why, sizeof why);
+    if (e) {
+        ssg_diag_at(c->diags, e, n->loc, "node '%s' (%s): %s", n->name, d->name, why);
+        fail(c, e);
+    }
+}
+
+static void last_readers(struct ssg_graph *g)
+{
+    for (int p = 0; p < g->order_count; p++)
+        for (int k = 0; k < SSG_MAX_PORTS; k++)
+            g->nodes[g->order[p]].last_reader[k] = -1;
+    for (int p = 0; p < g->order_count; p++) {
+        struct gnode *n = &g->nodes[g->order[p]];
+        FOR_EACH_INPUT(n, conn) g->nodes[conn->node].last_reader[conn->port] = p;
+    }
+}
+
+enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
+{
+    struct checker c = {g, diags, SSG_OK};
+    int sinks = 0;
+    for (int i = 0; i < g->count; i++) {
+        struct gnode *n = &g->nodes[i];
+        for (int k = 0; k < SSG_MAX_PORTS; k++)
+            resolve(&c, &n->in[k]);
+        for (int k = 0; k < n->extra_count; k++)
+            resolve(&c, &n->extra[k]);
+        check_required(&c, n);
+    }
+    for (int i = 0; i < g->count; i++) {
+        if (g->nodes[i].desc->is_sink) {
+            sinks++;
+            mark_live(g, i);
+        }
+    }
+    if (!sinks) {
+        ssg_diag_file(diags, SSG_E_VALUE, g->path, "the graph writes nothing (expected at "
+                      "least one write(node.port, \"name\"))");
+        fail(&c, SSG_E_VALUE);
+    }
+    order_nodes(&c);
+    if (c.first)
+        return c.first;
+    for (int p = 0; p < g->order_count; p++)
+        infer_node(&c, &g->nodes[g->order[p]]);
+    last_readers(g);
+    return c.first;
+}

@@ -1,0 +1,96 @@
+/* scene.h - the loaded scene: camera, lights, environment, materials and triangle meshes
+ * in world space, plus the Embree scene every CPU ray query goes through.
+ *
+ * Scene files (examples/NAME.scene) use the statement syntax of parse.h, one entity a line:
+ *   camera(position=[0,1,3.4], target=[0,1,0], up=[0,1,0], fov=40, near=0.05, far=50)
+ *   white = material(albedo=[0.73,0.73,0.73], specular=[0,0,0], shininess=32, texture="t.png")
+ *   point_light(position=[0,1.9,0], color=[1,1,1], intensity=4)
+ *   directional_light(direction=[-1,-2,-1], color=[1,1,1], intensity=1)
+ *   environment(color=[1,1,1], intensity=0.3, image="probe.hdr")
+ *   plane(material=white, center=[0,0,0], size=[2,2], normal=[0,1,0]) ... box, sphere
+ *   mesh("bunny.gltf", material=white, translate=[..], rotate=[..], scale=1)
+ * Each entity's arguments are a parameter table (params.h). Relative paths resolve against
+ * the scene file. The scene owns all its memory; ssg_scene_destroy frees it. A loaded scene
+ * is read-only and may be shared by threads. */
+#ifndef SSG_SCENE_H
+#define SSG_SCENE_H
+
+#include <stdint.h>
+
+#include "ssgraph.h"
+
+struct ssg_camera {
+    float position[3]; /* world, scene units */
+    float target[3];   /* world point looked at */
+    float up[3];       /* world up hint */
+    float fov_y;       /* vertical field of view, degrees */
+    float near_z;      /* scene units */
+    float far_z;       /* scene units */
+};
+
+enum ssg_light_kind { SSG_LIGHT_POINT, SSG_LIGHT_DIRECTIONAL };
+
+struct ssg_light {
+    enum ssg_light_kind kind;
+    float position[3];  /* point: world position */
+    float direction[3]; /* directional: unit direction the light travels (world) */
+    float color[3];     /* linear RGB */
+    float intensity;    /* point: radiant intensity (falls off with 1/d^2); directional: irradiance */
+};
+
+/* A decoded texture: linear RGB floats, interleaved, row 0 at the top. */
+struct ssg_texture {
+    int width, height;
+    float *rgb;
+};
+
+struct ssg_material {
+    char name[64];
+    float albedo[3];    /* diffuse reflectance, linear; multiplies the texture */
+    float specular[3];  /* Blinn-Phong specular colour, default 0 */
+    float shininess;    /* Blinn-Phong exponent, default 32 */
+    int texture;        /* index into scene->textures, -1 = none */
+};
+
+/* A triangle mesh in world space. Every primitive and glTF primitive becomes one. */
+struct ssg_mesh {
+    int vertex_count, triangle_count;
+    float *positions;  /* xyz per vertex, world */
+    float *normals;    /* unit xyz per vertex, world */
+    float *uvs;        /* uv per vertex, or NULL */
+    uint32_t *indices; /* 3 per triangle */
+    int material;      /* index into scene->materials */
+};
+
+struct ssg_environment {
+    float color[3];   /* constant radiance, linear RGB */
+    float intensity;  /* multiplies color and image */
+    int image;        /* lat-long HDR in scene->textures, -1 = none */
+};
+
+struct ssg_rt; /* Embree device + scene, see rt.h */
+
+struct ssg_scene {
+    char path[512];
+    int has_camera;  /* 0 = neither the scene nor a glTF gave one; a default is used */
+    struct ssg_camera camera;
+    struct ssg_environment environment;
+    int light_count, material_count, mesh_count, texture_count;
+    struct ssg_light *lights;
+    struct ssg_material *materials;
+    struct ssg_mesh *meshes;
+    struct ssg_texture *textures;
+    struct ssg_rt *rt; /* built by ssg_scene_load when load_assets is 1 */
+};
+
+/* Loads a scene file. With load_assets = 0 it only parses and validates the file (used by
+ * `ssgraph check`): no meshes, images or Embree. All problems go into diags with location. */
+enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
+                            struct ssg_diags *diags);
+void ssg_scene_destroy(struct ssg_scene **scene);
+
+/* The camera's view matrix (world -> view, column-major 4x4) for the frame conventions of
+ * node.h, and the world->view transforms of points and directions. */
+void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16]);
+
+#endif

@@ -1,0 +1,162 @@
+/* ssgraph.h - the public C interface of libssgraph.
+ *
+ * libssgraph loads a declarative graph of screen-space lighting passes (a `.graph` file),
+ * validates it as a whole, and runs its nodes in dependency order on the CPU backend.
+ * A user's own program can also run one node on in-memory images (ssg_node_run), which is
+ * how nodes are unit-tested.
+ *
+ * Ownership: every object returned through a `T **` is owned by the caller and released
+ * with the matching destroy function, which takes `T **` and sets it to NULL.
+ * Images are planar float: channel c of pixel (x, y) is data[(c * height + y) * width + x];
+ * row 0 is the top of the picture.
+ * Thread safety: separate graphs may be used from separate threads; one graph is used by
+ * one thread at a time (its run splits work over OpenMP threads internally).
+ * Errors: functions return enum ssg_err and append diagnostics (with file:line:column)
+ * to a struct ssg_diags the caller provides. */
+#ifndef SSGRAPH_H
+#define SSGRAPH_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SSG_VERSION "0.1.0"
+
+enum ssg_err {
+#define X(code, text) code,
+#include "errors.def"
+#undef X
+    SSG_ERR_COUNT
+};
+
+/* Short symbolic name ("SSG_E_CYCLE") and general description of an error code. */
+const char *ssg_err_name(enum ssg_err code);
+const char *ssg_err_text(enum ssg_err code);
+
+/* One diagnostic. line/column are 1-based; 0 where the message has no location. */
+struct ssg_diag {
+    enum ssg_err code;
+    char file[256];   /* file the problem is in, or "<command line>" */
+    int line;         /* 1-based line, 0 if none */
+    int column;       /* 1-based column, 0 if none */
+    char message[512];/* full message, including what was expected */
+};
+
+#define SSG_DIAGS_MAX 32
+/* A list of diagnostics; zero-initialise it. Stores the first SSG_DIAGS_MAX, counts all. */
+struct ssg_diags {
+    int count;                          /* diagnostics stored */
+    int total;                          /* diagnostics reported, stored or not */
+    struct ssg_diag items[SSG_DIAGS_MAX];
+};
+
+/* Prints every diagnostic as `file:line:column: error: message`, one a line. */
+void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
+/* First error code in the list, or SSG_OK. */
+enum ssg_err ssg_diags_first(const struct ssg_diags *diags);
+
+/* A planar float image (see the header comment for the layout). */
+struct ssg_image {
+    int width;     /* pixels */
+    int height;    /* pixels */
+    int channels;  /* planes, 1..4 */
+    float *data;   /* width * height * channels floats, planar */
+};
+
+/* Allocates a zeroed image; NULL for absurd sizes or when out of memory. */
+struct ssg_image *ssg_image_create(int width, int height, int channels);
+void ssg_image_destroy(struct ssg_image **image);
+static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
+{
+    return im->data + (size_t)channel * (size_t)im->width * (size_t)im->height;
+}
+
+/* Reads an image file (EXR, PNG, HDR, ... through OpenImageIO) into a planar float image.
+ * `layer` selects an EXR layer by name ("ao" reads channels "ao.*"); NULL reads the
+ * unnamed channels (or all channels when the file has no unnamed ones). */
+enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
+                            struct ssg_diags *diags);
+
+/* Writes an image as a 32-bit float EXR (1 channel: Y; 2: R,G; 3: R,G,B; 4: R,G,B,A),
+ * through a temporary file renamed into place, so a failure leaves no partial file. */
+enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
+                             struct ssg_diags *diags);
+
+/* What a screen-space node needs to know about the frame besides its images. */
+struct ssg_frame {
+    int width, height;  /* pixels of the full-resolution frame */
+    float fov_y;        /* vertical field of view, degrees; default 45 */
+    float near_z;       /* near plane distance, scene units; default 0.05 */
+    float far_z;        /* far plane distance, scene units; default 100 */
+    uint64_t seed;      /* seed for every pseudo-random choice; default 1 */
+};
+
+/* Options of a graph run; zero means default. */
+struct ssg_run_options {
+    const char *out_dir;   /* directory for written files; default "out" */
+    int threads;           /* OpenMP threads; 0 = all cores */
+    int quiet;             /* 1 = do not print the per-node timing table */
+    FILE *log;             /* where timings go; default stdout */
+};
+
+/* Command-line style overrides applied after the graph file is read. */
+struct ssg_overrides {
+    const char *scene;       /* scene file path, NULL = the graph's own */
+    int width, height;       /* 0 = the graph's own size */
+    const char *const *sets; /* "node.param=value" strings */
+    int set_count;
+    int64_t seed;            /* -1 = the graph's own seed */
+};
+
+struct ssg_graph;
+
+/* Parses, includes, applies overrides, loads the scene and validates the whole graph.
+ * Every problem found goes into diags; on any error *out is NULL. */
+enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overrides,
+                            struct ssg_graph **out, struct ssg_diags *diags);
+/* Same, validating only: does not load the scene's meshes or images. */
+enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
+                             struct ssg_diags *diags);
+/* Runs every node in dependency order; writes files into options->out_dir. */
+enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
+                           struct ssg_diags *diags);
+void ssg_graph_destroy(struct ssg_graph **graph);
+
+/* One input of a single-node run: an image bound to a named input port. */
+struct ssg_binding {
+    const char *port;
+    const struct ssg_image *image;
+};
+
+/* The outputs of a single-node run, in the node's port order. */
+struct ssg_outputs {
+    int count;
+    const char *names[8];
+    struct ssg_image *images[8];  /* owned; released by ssg_outputs_release */
+};
+void ssg_outputs_release(struct ssg_outputs *outputs);
+
+/* Runs one node alone on in-memory images. `sets` are "param=value" strings. The frame
+ * gives size and camera; its width/height default to the first input's size. */
+enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, int input_count,
+                          const char *const *sets, int set_count, const struct ssg_frame *frame,
+                          struct ssg_outputs *outputs, struct ssg_diags *diags);
+
+/* The node registry: names, and a full description (ports, parameters, defaults, ranges,
+ * units, doc) printed from the node's descriptor table. */
+int ssg_node_count(void);
+const char *ssg_node_name(int index);
+const char *ssg_node_summary(int index);
+/* Returns SSG_E_UNKNOWN_NODE when no node has that name. */
+enum ssg_err ssg_node_describe(const char *node, FILE *stream);
+/* Writes the Markdown reference of every node (used to generate docs/nodes.md). */
+void ssg_nodes_markdown(FILE *stream);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

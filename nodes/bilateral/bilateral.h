@@ -1,0 +1,35 @@
+/* bilateral.h - parameters and prepared constants of the `bilateral` node, shared by
+ * bilateral.c (descriptor, check, prepare) and bilateral_cpu.c (the CPU kernel). Method in
+ * bilateral.c. */
+#ifndef SSG_BILATERAL_H
+#define SSG_BILATERAL_H
+
+#include "node.h"
+
+#define SSG_BILATERAL_MAX_SIZE 63
+
+/* Input ports, in order. */
+enum { SSG_BILATERAL_IN, SSG_BILATERAL_IN_DEPTH, SSG_BILATERAL_IN_NORMAL };
+
+struct ssg_bilateral_params {
+    int size;            /* window diameter, px, odd, 1..63; default 9 */
+    float sigma_spatial; /* px; 0 = size / 3; default 0 */
+    float sigma_depth;   /* depth difference as a fraction of the centre depth; 0.05 */
+    int normal_power;    /* p of max(0, n.n')^p, 0..127, 0 = no normal term; default 16 */
+};
+
+struct ssg_bilateral_consts {
+    int radius;          /* (size - 1) / 2, px */
+    int size;            /* 2 * radius + 1, px */
+    float depth_scale;   /* 1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2 */
+    int normal_power;    /* as in the parameters */
+    /* ln of the spatial Gaussian weight, -0.5 (dx^2 + dy^2) / sigma_spatial^2, for
+       dy, dx in [-radius, radius]: row (dy + radius) * size + dx + radius. Logarithms, so
+       that the three weights multiply by adding exponents and one exp() does it all. */
+    float spatial[SSG_BILATERAL_MAX_SIZE * SSG_BILATERAL_MAX_SIZE];
+};
+
+enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io);
+
+#endif

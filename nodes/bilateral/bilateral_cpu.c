@@ -1,0 +1,212 @@
+/* bilateral_cpu.c - CPU kernel of the `bilateral` node (method in bilateral.c).
+ *
+ * The loops run over output pixels innermost: a row is cut into chunks, and for each tap
+ * (dy, dx) of the window one loop walks the chunk, reading the neighbours at a fixed
+ * offset (contiguous loads) and adding into per-pixel sums. Each pixel's sums are thus
+ * independent lanes, which the compiler vectorises without reassociating anything, and
+ * the sum order per pixel is fixed whatever the threads. The three weights multiply by
+ * adding their logarithms (spatial from prepare, depth, p * ln(n.n')) and taking one
+ * exp(); exp and ln are small polynomial versions that vectorise (libm's do not without
+ * -ffast-math), accurate to a few 1e-7 relative. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "bilateral.h"
+
+enum { CHUNK = 256, ROWS_PER_BAND = 4 };
+
+struct job {
+    const struct ssg_bilateral_consts *c;
+    const float *in[3];    /* channel planes of the input */
+    int channels;          /* 1 or 3 */
+    const float *depth;
+    const float *nrm[3];   /* NULL when there is no normal term */
+    float *out[3];
+    int w, h;
+};
+
+/* Per-pixel values of one chunk, structure of arrays. */
+struct chunk {
+    float dc[CHUNK];                    /* centre depth */
+    float kd[CHUNK];                    /* depth_scale / centre depth */
+    float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit centre normal */
+    float acc[3][CHUNK];                /* weighted sums per channel */
+    float wsum[CHUNK];                  /* sum of weights */
+};
+
+/* e^x for x <= 0, clamped at -80 (weights below 1.8e-35 are 0 for every purpose and stay
+   normal floats). x = k ln2 + g with |g| <= ln2 / 2; e^g by its Taylor series to g^6
+   (error below 1.3e-7 relative), 2^k by building the float's exponent bits. */
+static inline float exp_neg(float x)
+{
+    x = x < -80.0f ? -80.0f : x;
+    float t = x * 1.44269504088896341f;
+    float k = floorf(t + 0.5f);
+    float g = (t - k) * 0.693147180559945309f;
+    float p = 1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f +
+              g * (1.0f / 120.0f + g * (1.0f / 720.0f))))));
+    int32_t bits = ((int32_t)k + 127) << 23;
+    float scale;
+    memcpy(&scale, &bits, sizeof scale);
+    return p * scale;
+}
+
+/* ln(c) for a positive normal float: c = 2^e m with m in [sqrt(1/2), sqrt(2)), and
+   ln m = 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.172, by its series to s^9. */
+static inline float log_pos(float c)
+{
+    int32_t bits;
+    memcpy(&bits, &c, sizeof bits);
+    int32_t e = (bits >> 23) - 127;
+    int32_t mbits = (bits & 0x007FFFFF) | 0x3F800000;
+    float m;
+    memcpy(&m, &mbits, sizeof m);
+    int big = m > 1.41421356f;
+    m = big ? 0.5f * m : m;
+    e = big ? e + 1 : e;
+    float s = (m - 1.0f) / (m + 1.0f), s2 = s * s;
+    float lm = 2.0f * s * (1.0f + s2 * (1.0f / 3.0f + s2 * (1.0f / 5.0f + s2 * (1.0f / 7.0f +
+               s2 * (1.0f / 9.0f)))));
+    return (float)e * 0.693147180559945309f + lm;
+}
+
+static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int len)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    for (int i = 0; i < len; i++) {
+        float d = j->depth[o + (size_t)i];
+        k->dc[i] = d;
+        k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
+        k->wsum[i] = 0.0f;
+        for (int ch = 0; ch < 3; ch++)
+            k->acc[ch][i] = 0.0f;
+        k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
+        if (j->nrm[0]) {
+            float nx = j->nrm[0][o + (size_t)i], ny = j->nrm[1][o + (size_t)i];
+            float nz = j->nrm[2][o + (size_t)i], nn = nx * nx + ny * ny + nz * nz;
+            float inv = nn > 0.0f ? 1.0f / sqrtf(nn) : 0.0f;
+            k->nx[i] = nx * inv, k->ny[i] = ny * inv, k->nz[i] = nz * inv;
+        }
+    }
+}
+
+/* Adds tap (dx, dy) with spatial log-weight es to pixels [i0, i1) of the chunk; q points
+   at the tap's pixel for chunk index 0 (offset into each plane). `channels` and `normals`
+   are constants at each call site, so each variant is its own straight loop. */
+static inline __attribute__((always_inline)) void
+add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1, float es,
+        int channels, int normals)
+{
+    const float *restrict dq = j->depth + q;
+    const float p = (float)j->c->normal_power;
+    for (int i = i0; i < i1; i++) {
+        float delta = (dq[i] - k->dc[i]) * k->kd[i];
+        float e = es - 0.5f * delta * delta;
+        int use = dq[i] > 0.0f;
+        if (normals) {
+            float c = k->nx[i] * j->nrm[0][q + (size_t)i] + k->ny[i] * j->nrm[1][q + (size_t)i] +
+                      k->nz[i] * j->nrm[2][q + (size_t)i];
+            /* Below 1e-30 (or facing away) the weight is 0 for any power >= 1. */
+            use &= c > 1e-30f;
+            e += p * log_pos(c > 1e-30f ? c : 1.0f);
+        }
+        float w = use ? exp_neg(e) : 0.0f;
+        k->wsum[i] += w;
+        for (int ch = 0; ch < channels; ch++)
+            k->acc[ch][i] += w * j->in[ch][q + (size_t)i];
+    }
+}
+
+static void add_taps(const struct job *j, struct chunk *k, int y, int x0, int len)
+{
+    const int r = j->c->radius, size = j->c->size;
+    const int normals = j->nrm[0] != NULL && j->c->normal_power > 0;
+    for (int dy = -r; dy <= r; dy++) {
+        int qy = y + dy;
+        if (qy < 0 || qy >= j->h)
+            continue;
+        for (int dx = -r; dx <= r; dx++) {
+            /* Chunk pixels whose neighbour x0 + i + dx lies inside the row. */
+            int i0 = -dx - x0 > 0 ? -dx - x0 : 0;
+            int i1 = j->w - dx - x0 < len ? j->w - dx - x0 : len;
+            if (i0 >= i1)
+                continue;
+            size_t q = (size_t)qy * (size_t)j->w + (size_t)(x0 + dx);
+            float es = j->c->spatial[(dy + r) * size + dx + r];
+            if (j->channels == 1 && !normals)
+                add_tap(j, k, q, i0, i1, es, 1, 0);
+            else if (j->channels == 1)
+                add_tap(j, k, q, i0, i1, es, 1, 1);
+            else if (!normals)
+                add_tap(j, k, q, i0, i1, es, 3, 0);
+            else
+                add_tap(j, k, q, i0, i1, es, 3, 1);
+        }
+    }
+}
+
+static void finish_chunk(const struct job *j, const struct chunk *k, int y, int x0, int len)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    for (int ch = 0; ch < j->channels; ch++) {
+        const float *in = j->in[ch] + o;
+        float *out = j->out[ch] + o;
+        for (int i = 0; i < len; i++) {
+            /* Background, or nothing with weight (zero normal): pass through. */
+            int keep = !(k->dc[i] > 0.0f) || !(k->wsum[i] > 0.0f);
+            out[i] = keep ? in[i] : k->acc[ch][i] / k->wsum[i];
+        }
+    }
+}
+
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct chunk k;
+    for (int y = y0; y < y1; y++)
+        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+            int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+            setup_chunk(j, &k, y, x0, len);
+            add_taps(j, &k, y, x0, len);
+            finish_chunk(j, &k, y, x0, len);
+        }
+}
+
+static enum ssg_err fail(const struct ssg_node_ctx *ctx, const char *what)
+{
+    ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0}, "bilateral '%s': %s",
+                ctx->instance ? ctx->instance : "", what);
+    return SSG_E_SIZE;
+}
+
+static int size_is(const struct ssg_image *im, int w, int h, int ch)
+{
+    return im && im->width == w && im->height == h && im->channels == ch;
+}
+
+enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io)
+{
+    const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
+    const struct ssg_image *dep = io->in[SSG_BILATERAL_IN_DEPTH];
+    const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
+    if (!in || (in->channels != 1 && in->channels != 3))
+        return fail(ctx, "in must have 1 or 3 channels");
+    if (!size_is(dep, in->width, in->height, 1))
+        return fail(ctx, "depth must be 1-channel, the size of in");
+    if (nrm && !size_is(nrm, in->width, in->height, 3))
+        return fail(ctx, "normal must be 3-channel, the size of in");
+    if (!size_is(io->out[0], in->width, in->height, in->channels))
+        return fail(ctx, "output must have the shape of in");
+    struct job j = {.c = consts, .channels = in->channels, .depth = dep->data,
+                    .w = in->width, .h = in->height};
+    for (int ch = 0; ch < in->channels; ch++) {
+        j.in[ch] = ssg_image_plane(in, ch);
+        j.out[ch] = ssg_image_plane(io->out[0], ch);
+    }
+    for (int ch = 0; nrm && ch < 3; ch++)
+        j.nrm[ch] = ssg_image_plane(nrm, ch);
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+    return SSG_OK;
+}

@@ -1,0 +1,32 @@
+/* combine.h - the parameters and port order of the `combine` node (final shading), shared
+ * by combine.c (descriptor), combine_cpu.c (the kernel) and tests/test_combine.c.
+ *
+ * Method: the SSAO term modulates the ambient light of a diffuse surface, Szentandrasi,
+ * "Modern Methods of Realistic Lighting in Real Time", section 3.1, with AO defined as in
+ * Belonogov, "Global Illumination methods in simulated VR environments", section 2.2.3,
+ * eq. 2.5 (1 = unoccluded). */
+#ifndef SSG_COMBINE_H
+#define SSG_COMBINE_H
+
+#include "node.h"
+
+/* Input ports, in the order of the descriptor's table. */
+enum ssg_combine_input {
+    SSG_COMBINE_DIRECT,   /* color, required: direct diffuse + specular light */
+    SSG_COMBINE_ALBEDO,   /* color, required: diffuse reflectance */
+    SSG_COMBINE_AO,       /* scalar, optional: ambient occlusion, 1 = open; missing = 1 */
+    SSG_COMBINE_INDIRECT, /* color, optional: indirect light added as is; missing = 0 */
+    SSG_COMBINE_INPUTS
+};
+
+/* Parameters as the graph file sets them (see the table in combine.c). */
+struct ssg_combine_params {
+    float ambient;          /* strength of the ambient light, 0..10; default 0.3 */
+    float ambient_color[3]; /* linear RGB tint of the ambient light, 0..100; default [1,1,1] */
+};
+
+/* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */
+enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                 const struct ssg_io *io);
+
+#endif

@@ -1,0 +1,84 @@
+/* combine_cpu.c - CPU kernel of the `combine` node (equation and sources in combine.c):
+ * one pass over fixed bands of rows, one plane at a time, so the inner loops are plain
+ * contiguous multiply-adds the compiler vectorises. */
+#include "combine.h"
+
+/* Rows per band of ssg_parallel_rows: the bands, not the threads, fix the work split. */
+enum { BAND_ROWS = 16 };
+
+struct combine_job {
+    const float *direct[3], *albedo[3], *indirect[3]; /* indirect[c] NULL = none */
+    const float *ao;                                  /* NULL = unoccluded */
+    float *out[3];
+    float k[3];                                       /* ambient * ambient_color */
+    int width;
+};
+
+static void combine_rows(void *user, int y0, int y1)
+{
+    const struct combine_job *j = user;
+    size_t w = (size_t)j->width, begin = (size_t)y0 * w, end = (size_t)y1 * w;
+    for (int c = 0; c < 3; c++) {
+        const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
+        float *o = j->out[c], k = j->k[c];
+        if (ao)
+            for (size_t i = begin; i < end; i++)
+                o[i] = d[i] + k * a[i] * ao[i];
+        else
+            for (size_t i = begin; i < end; i++)
+                o[i] = d[i] + k * a[i];
+        if (ind)
+            for (size_t i = begin; i < end; i++)
+                o[i] += ind[i];
+    }
+}
+
+/* An input must have the output's size and its port's channel count. */
+static enum ssg_err check_input(const struct ssg_node_ctx *ctx, const struct ssg_image *in,
+                                const char *port, int channels, const struct ssg_image *out)
+{
+    static const struct ssg_loc nowhere = {0};
+    if (!in) {
+        ssg_diag_at(ctx->diags, SSG_E_MISSING_INPUT, nowhere,
+                    "combine '%s': input '%s' is not connected", ctx->instance, port);
+        return SSG_E_MISSING_INPUT;
+    }
+    if (in->width != out->width || in->height != out->height) {
+        ssg_diag_at(ctx->diags, SSG_E_SIZE, nowhere,
+                    "combine '%s': input '%s' is %d x %d, expected %d x %d", ctx->instance,
+                    port, in->width, in->height, out->width, out->height);
+        return SSG_E_SIZE;
+    }
+    if (in->channels != channels) {
+        ssg_diag_at(ctx->diags, SSG_E_CHANNELS, nowhere,
+                    "combine '%s': input '%s' has %d channels, expected %d", ctx->instance,
+                    port, in->channels, channels);
+        return SSG_E_CHANNELS;
+    }
+    return SSG_OK;
+}
+
+enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                 const struct ssg_io *io)
+{
+    const struct ssg_combine_params *p = consts;
+    const struct ssg_image *direct = io->in[SSG_COMBINE_DIRECT], *albedo = io->in[SSG_COMBINE_ALBEDO];
+    const struct ssg_image *ao = io->in[SSG_COMBINE_AO], *indirect = io->in[SSG_COMBINE_INDIRECT];
+    struct ssg_image *out = io->out[0];
+    enum ssg_err err = SSG_OK;
+    if ((err = check_input(ctx, direct, "direct", 3, out)) ||
+        (err = check_input(ctx, albedo, "albedo", 3, out)) ||
+        (ao && (err = check_input(ctx, ao, "ambient_occlusion", 1, out))) ||
+        (indirect && (err = check_input(ctx, indirect, "indirect", 3, out))))
+        return err;
+    struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width};
+    for (int c = 0; c < 3; c++) {
+        job.direct[c] = ssg_image_plane(direct, c);
+        job.albedo[c] = ssg_image_plane(albedo, c);
+        job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
+        job.out[c] = ssg_image_plane(out, c);
+        job.k[c] = p->ambient * p->ambient_color[c];
+    }
+    ssg_parallel_rows(out->height, BAND_ROWS, combine_rows, &job);
+    return SSG_OK;
+}

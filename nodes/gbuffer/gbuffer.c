@@ -1,0 +1,97 @@
+/* gbuffer.c - the `gbuffer` node: the geometry buffer of deferred shading, made by ray
+ * casting instead of rasterisation.
+ *
+ * Method: the G-buffer of deferred shading (Deering et al. 1988, as used by Knuth and
+ * Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes", section 4,
+ * Architecture, figure 10; Belonogov, "Global Illumination methods in simulated VR
+ * environments", section 4.5, geometry pass): per pixel the view-space position, normal
+ * and linear depth of the nearest surface, its albedo, and direct light. Visibility: one
+ * primary ray per pixel centre through Embree (core/rt.h). Direct light: Lambert diffuse
+ * plus the Blinn-Phong specular term (Blinn, "Models of light reflection for computer
+ * synthesized pictures", SIGGRAPH 1977, the half-vector form N.H), without shadows:
+ *   direct = sum over lights of (albedo / pi + specular * max(0, N.H)^shininess) * E,
+ *   E = color * intensity * max(0, N.L) / d^2   (point light at distance d)
+ *   E = color * intensity * max(0, N.L)         (directional light, L = -direction)
+ * with N the shading normal turned towards the camera and H = normalize(L + V).
+ *
+ * Conventions (node.h): view space looks down -z; ray directions are built with view
+ * z = -1 so the ray parameter of a hit is its depth, and position = t * direction
+ * reprojects exactly to the pixel centre through ssg_frame_projection. Background
+ * pixels are 0 in every output. The camera pose comes from ctx->scene, the intrinsics
+ * (fov, near, far, size) from ctx->frame. */
+#include "gbuffer.h"
+
+#include "rt.h"
+#include "scene.h"
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    struct ssg_gbuffer_consts *c = consts;
+    const struct ssg_scene *s = ctx->scene;
+    c->p = *(const struct ssg_gbuffer_params *)params;
+    if (!s || !s->rt) {
+        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0}, "gbuffer '%s': needs a "
+                    "loaded scene (a `scene` line in the graph, or --scene)",
+                    ctx->instance ? ctx->instance : "");
+        return SSG_E_SCENE;
+    }
+    c->proj = ssg_frame_projection(ctx->frame);
+    if (ctx->frame->width < 1 || ctx->frame->height < 1 || !(c->proj.f > 0) ||
+        !(ctx->frame->near_z > 0) || !(ctx->frame->far_z > ctx->frame->near_z)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "gbuffer '%s': the frame "
+                    "needs a size, a field of view and 0 < near < far",
+                    ctx->instance ? ctx->instance : "");
+        return SSG_E_VALUE;
+    }
+    float m[16];
+    ssg_camera_view_matrix(&s->camera, m);
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++)
+            c->rot[3 * r + k] = m[4 * k + r];
+    for (int i = 0; i < 3; i++)
+        c->eye[i] = s->camera.position[i];
+    c->near_z = ctx->frame->near_z;
+    c->far_z = ctx->frame->far_z;
+    return SSG_OK;
+}
+
+static const char *const normals_choices[] = {"smooth", "face", NULL};
+
+static const struct ssg_param_desc params[] = {
+    {.name = "normals", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_gbuffer_params, normals),
+     .def = SSG_GBUFFER_NORMALS_SMOOTH, .choices = normals_choices,
+     .help = "smooth: interpolated vertex normals; face: the triangle's own normal (no "
+             "self-occlusion of flat-shaded meshes in SSAO)"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position, 0 = background"},
+    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal facing the camera"},
+    {.name = "depth", .types = SSG_T_SCALAR, .doc = "linear depth along -z, 0 = background"},
+    {.name = "albedo", .types = SSG_T_COLOR, .doc = "material albedo times texture, linear RGB"},
+    {.name = "direct", .types = SSG_T_COLOR,
+     .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
+};
+
+const struct ssg_node_desc ssg_node_gbuffer = {
+    .name = "gbuffer",
+    .summary = "view-space G-buffer and direct light by ray casting the scene (Embree)",
+    .method = "deferred-shading G-buffer (Knuth and Kohlhammer, sec. 4, fig. 10; Belonogov, "
+              "sec. 4.5) by primary ray casting; Lambert + Blinn-Phong direct light (Blinn "
+              "1977), no shadows",
+    .doc = "Casts one ray per pixel centre from the scene camera (pose from the scene, fov, "
+           "near and far from the frame) and writes the nearest surface's view-space "
+           "position, normal (turned to face the camera) and linear depth, its albedo "
+           "(material albedo times texture) and `direct` = sum over lights of (albedo/pi + "
+           "specular * (N.H)^shininess) * E, with E = color * intensity * max(0, N.L) / d^2 "
+           "for point lights (no 1/d^2 for directional lights). Surfaces outside [near, "
+           "far] and background pixels are 0 in every output.",
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_gbuffer_params),
+    .consts_size = sizeof(struct ssg_gbuffer_consts),
+    .needs_scene = 1,
+    .prepare = prepare,
+    .run_cpu = ssg_gbuffer_run_cpu,
+};

@@ -1,0 +1,39 @@
+/* ssao.h - parameters and prepared constants of the `ssao` node, shared by ssao.c
+ * (descriptor, check, prepare) and ssao_cpu.c (the CPU kernel). Method and conventions are
+ * described in ssao.c. */
+#ifndef SSG_SSAO_H
+#define SSG_SSAO_H
+
+#include "node.h"
+
+enum ssg_ssao_range {
+    SSG_SSAO_RANGE_NONE,   /* every occluder counts fully */
+    SSG_SSAO_RANGE_HARD,   /* occluders farther than radius in depth do not count */
+    SSG_SSAO_RANGE_SMOOTH, /* weight smoothstep(0, 1, radius / |depth difference|) */
+};
+
+/* Input ports, in order. */
+enum { SSG_SSAO_IN_POSITION, SSG_SSAO_IN_NORMAL, SSG_SSAO_IN_KERNEL, SSG_SSAO_IN_ROTATION,
+       SSG_SSAO_IN_DEPTH };
+
+struct ssg_ssao_params {
+    float radius;            /* hemisphere radius, scene units, > 0; default 0.5 */
+    float bias;              /* depth margin before a sample counts as occluded, scene
+                                units; default 0.02 */
+    float power;             /* ao = visibility^power; default 1 */
+    int range_check;         /* enum ssg_ssao_range; default smooth */
+    float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
+};
+
+struct ssg_ssao_consts {
+    struct ssg_ssao_params p; /* the parameters as given */
+    struct ssg_projection proj; /* ssg_frame_projection of the frame */
+    int frame_width;            /* px, the frame proj belongs to; inputs of another size
+                                   (a subsampled G-buffer) get proj scaled to theirs */
+    int frame_height;           /* px */
+};
+
+enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                              const struct ssg_io *io);
+
+#endif

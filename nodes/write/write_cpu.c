@@ -1,0 +1,114 @@
+/* write_cpu.c - what the `write` node does when it runs (method and layout in write.c):
+ * create the output directory, gather the layers, hand them to core/imageio.h. */
+#include <errno.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "imageio.h"
+#include "write.h"
+
+enum { PATH_MAX_LEN = 4096 };
+
+static const struct ssg_loc nowhere = {0};
+
+/* mkdir -p: creates every missing directory of `dir`. */
+static enum ssg_err make_dirs(const char *dir, struct ssg_diags *diags)
+{
+    char buf[PATH_MAX_LEN];
+    size_t len = strlen(dir);
+    if (len >= sizeof buf) {
+        ssg_diag_file(diags, SSG_E_IO, dir, "output directory path is too long");
+        return SSG_E_IO;
+    }
+    memcpy(buf, dir, len + 1);
+    for (size_t i = 1; i <= len; i++) {
+        if (buf[i] != '/' && buf[i] != 0)
+            continue;
+        char saved = buf[i];
+        buf[i] = 0;
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+            ssg_diag_file(diags, SSG_E_IO, buf, "cannot create output directory: %s",
+                          strerror(errno));
+            return SSG_E_IO;
+        }
+        buf[i] = saved;
+    }
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        ssg_diag_file(diags, SSG_E_IO, dir, "output path exists and is not a directory");
+        return SSG_E_IO;
+    }
+    return SSG_OK;
+}
+
+static enum ssg_err make_path(char *buf, size_t len, const char *dir, const char *name,
+                              const char *ext, struct ssg_diags *diags)
+{
+    int n = snprintf(buf, len, "%s/%s.%s", dir, name, ext);
+    if (n < 0 || (size_t)n >= len) {
+        ssg_diag_file(diags, SSG_E_IO, dir, "output file path for '%s' is too long", name);
+        return SSG_E_IO;
+    }
+    return SSG_OK;
+}
+
+static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
+{
+    switch (type) {
+    case SSG_T_SCALAR: *kind = SSG_LAYER_SCALAR; return 1;
+    case SSG_T_VECTOR: *kind = SSG_LAYER_VECTOR; return 1;
+    case SSG_T_COLOR: *kind = SSG_LAYER_COLOR; return 1;
+    default: return 0;
+    }
+}
+
+/* The EXR: the main image, then each extra input as a layer named by its key. */
+static enum ssg_err write_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                              const char *path)
+{
+    enum { MAX_LAYERS = 64 };
+    struct ssg_exr_layer layers[MAX_LAYERS];
+    if (io->extra_count + 1 > MAX_LAYERS) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, nowhere, "write '%s': %d layers, at most %d",
+                    ctx->instance, io->extra_count + 1, MAX_LAYERS);
+        return SSG_E_VALUE;
+    }
+    layers[0] = (struct ssg_exr_layer){.name = NULL, .image = io->in[0]};
+    for (int i = 0; i < io->extra_count; i++) {
+        layers[i + 1] = (struct ssg_exr_layer){.name = io->extra_names[i],
+                                               .image = io->extra_in[i]};
+        if (!layer_kind(io->extra_types[i], &layers[i + 1].kind)) {
+            char types[64];
+            ssg_type_names(io->extra_types[i], types, sizeof types);
+            ssg_diag_at(ctx->diags, SSG_E_TYPE, nowhere,
+                        "write '%s': layer '%s' is a %s, expected scalar, vector or color",
+                        ctx->instance, io->extra_names[i], types);
+            return SSG_E_TYPE;
+        }
+    }
+    return ssg_exr_write(path, layers, io->extra_count + 1, ctx->diags);
+}
+
+enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                               const struct ssg_io *io)
+{
+    const struct ssg_write_params *p = consts;
+    char why[512], path[PATH_MAX_LEN];
+    if (!ssg_write_name_ok(p->name, why, sizeof why)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, nowhere, "write '%s': %s", ctx->instance, why);
+        return SSG_E_VALUE;
+    }
+    if (!io->in[0]) {
+        ssg_diag_at(ctx->diags, SSG_E_MISSING_INPUT, nowhere,
+                    "write '%s': input 'image' is not connected", ctx->instance);
+        return SSG_E_MISSING_INPUT;
+    }
+    const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
+    enum ssg_err err = make_dirs(dir, ctx->diags);
+    if (!err && p->exr && !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
+        err = write_exr(ctx, io, path);
+    if (!err && p->png && !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
+        err = ssg_png_write(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
+                            ctx->diags);
+    return err;
+}

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# The ssgraph command line from the outside: every graph in graphs/ runs end to end at a
+# small size, results do not depend on the thread count, single nodes run on EXR files,
+# and bad input gets a located message, a non-zero exit and no output file.
+set -u
+BIN=${SSG_BIN:?SSG_BIN must point at the ssgraph executable}
+TMP=${SSG_TMP:-/tmp/ssg_test_cli}
+rm -rf "$TMP" && mkdir -p "$TMP"
+fails=0
+
+fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
+# expect_exit CODE PATTERN CMD...: runs CMD, checks its exit status and that stderr+stdout
+# match PATTERN (grep -E).
+expect_exit() {
+    local code=$1 pattern=$2; shift 2
+    local out rc
+    out=$("$@" 2>&1); rc=$?
+    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code. Output: $out"
+    echo "$out" | grep -Eq -- "$pattern" || fail "'$*' output lacks /$pattern/: $out"
+}
+
+# --- help, version, listing ---
+expect_exit 0 "usage: ssgraph" "$BIN" --help
+expect_exit 0 "usage: ssgraph" "$BIN" run --help
+expect_exit 0 "^ssgraph [0-9]+\.[0-9]+" "$BIN" --version
+expect_exit 2 "usage: ssgraph" "$BIN"
+expect_exit 2 "unknown command 'frobnicate'" "$BIN" frobnicate
+expect_exit 0 "ssao" "$BIN" nodes
+expect_exit 0 "radius +float +default 0.5" "$BIN" describe ssao
+expect_exit 1 "unknown node 'nope'" "$BIN" describe nope
+expect_exit 2 "--size expects" "$BIN" run graphs/ssao.graph --size 12x
+expect_exit 2 "unknown option '--frob'" "$BIN" run graphs/ssao.graph --frob 1
+
+# --- every graph runs end to end, and check agrees ---
+for graph in graphs/*.graph; do
+    name=$(basename "$graph" .graph)
+    expect_exit 0 "ok" "$BIN" check "$graph"
+    out="$TMP/e2e_$name"
+    expect_exit 0 "total" "$BIN" run "$graph" --size 96x64 --out "$out"
+    n=$(ls "$out"/*.exr 2>/dev/null | wc -l)
+    [ "$n" -ge 1 ] || fail "$graph wrote no EXR into $out"
+    n=$(ls "$out"/*.png 2>/dev/null | wc -l)
+    [ "$n" -ge 1 ] || fail "$graph wrote no PNG into $out"
+    ls -a "$out" | grep -q 'tmp' && fail "$graph left a temporary file in $out"
+done
+
+# --- determinism: same bytes with 1 and 2 threads, and across runs ---
+"$BIN" run graphs/ssao.graph --size 160x90 --threads 1 --out "$TMP/t1" --quiet || fail "t1 run"
+"$BIN" run graphs/ssao.graph --size 160x90 --threads 2 --out "$TMP/t2" --quiet || fail "t2 run"
+"$BIN" run graphs/ssao.graph --size 160x90 --threads 2 --out "$TMP/t3" --quiet || fail "t3 run"
+for f in ssao.exr ssao.png; do
+    cmp -s "$TMP/t1/$f" "$TMP/t2/$f" || fail "$f differs between 1 and 2 threads"
+    cmp -s "$TMP/t2/$f" "$TMP/t3/$f" || fail "$f differs between two identical runs"
+done
+"$BIN" run graphs/ssao.graph --size 160x90 --seed 7 --out "$TMP/s7" --quiet || fail "seed run"
+cmp -s "$TMP/t1/ssao.exr" "$TMP/s7/ssao.exr" && fail "--seed 7 gave the same bytes as seed 1"
+
+# --- overrides from the command line ---
+"$BIN" run graphs/ssao.graph --size 64x40 --set out.name='"renamed"' --out "$TMP/ov" --quiet \
+    || fail "override run"
+[ -f "$TMP/ov/renamed.exr" ] || fail "--set out.name did not rename the output"
+expect_exit 1 "<command line --set>:1:11: error: .*radius" \
+    "$BIN" check graphs/ssao.graph --set ao.radius=abc
+expect_exit 1 "unknown parameter or input 'radus'" \
+    "$BIN" check graphs/ssao.graph --set ao.radus=1
+
+# --- one node alone on EXR layers of a full run ---
+src="$TMP/t1/ssao.exr"
+expect_exit 0 "wrote .*samples.exr" "$BIN" node halton --set count=8 --out "$TMP/node"
+expect_exit 0 "wrote .*out.exr" "$BIN" node ssao --in "position=$src:position" \
+    --in "normal=$src:normal" --in "kernel=$TMP/node/samples.exr" --set radius=0.4 \
+    --out "$TMP/node"
+expect_exit 1 "needs input 'normal'" "$BIN" node ssao --in "position=$src:position" \
+    --in "kernel=$TMP/node/samples.exr" --out "$TMP/node_missing"
+expect_exit 1 "input 'normal' of node 'ssao' expects vector.*got 1 channels" "$BIN" node ssao \
+    --in "position=$src:position" --in "normal=$src:depth" \
+    --in "kernel=$TMP/node/samples.exr" --out "$TMP/node_channels"
+[ -e "$TMP/node_missing" ] && fail "a failed node run created its output directory"
+
+# --- bad input: located message, exit 1, nothing written ---
+expect_exit 1 "cannot open" "$BIN" run "$TMP/does_not_exist.graph" --out "$TMP/none"
+printf 'scene "%s/tests/fixtures/broken_gltf.scene"\ng = gbuffer()\nout = write(g.direct, "x")\n' \
+    "$PWD" > "$TMP/broken.graph"
+expect_exit 1 "broken.gltf" "$BIN" run "$TMP/broken.graph" --out "$TMP/broken_out"
+[ -e "$TMP/broken_out/x.exr" ] && fail "a failed run left x.exr behind"
+expect_exit 1 "corrupt.exr.*error" "$BIN" node bilateral --in "in=tests/fixtures/corrupt.exr" \
+    --in "depth=tests/fixtures/corrupt.exr" --out "$TMP/corrupt_out"
+[ -e "$TMP/corrupt_out" ] && fail "a corrupt input still produced output"
+printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
+expect_exit 1 "syntax.graph:3:1: error: expected '\)'" "$BIN" check "$TMP/syntax.graph"
+
+if [ "$fails" -ne 0 ]; then
+    echo "$fails failure(s)" >&2
+    exit 1
+fi
+echo "all CLI checks passed"

@@ -1,0 +1,224 @@
+/* test_combine.c - the `combine` node called through its descriptor on tiny images with
+ * answers worked out by hand: out = direct + ambient * ambient_color * albedo * ao
+ * + indirect, AO missing = 1, indirect missing = 0, background stays 0, sizes checked,
+ * the same bits for any thread count. */
+#include <omp.h>
+#include <string.h>
+
+#include "check.h"
+#include "combine/combine.h"
+
+extern const struct ssg_node_desc ssg_node_combine;
+
+/* A 3-channel image whose pixel i has value v[c][i] in plane c. */
+static struct ssg_image *rgb(int w, int h, const float *r, const float *g, const float *b)
+{
+    struct ssg_image *im = ssg_image_create(w, h, 3);
+    size_t n = (size_t)w * (size_t)h * sizeof(float);
+    memcpy(ssg_image_plane(im, 0), r, n);
+    memcpy(ssg_image_plane(im, 1), g, n);
+    memcpy(ssg_image_plane(im, 2), b, n);
+    return im;
+}
+
+struct run {
+    struct ssg_diags diags;
+    struct ssg_frame frame;
+    struct ssg_node_ctx ctx;
+    const struct ssg_image *in[SSG_COMBINE_INPUTS];
+    struct ssg_image *out[1];
+    struct ssg_io io;
+};
+
+static void run_init(struct run *r, int w, int h)
+{
+    memset(r, 0, sizeof *r);
+    r->frame = (struct ssg_frame){.width = w, .height = h, .fov_y = 45, .near_z = 0.05f,
+                                  .far_z = 100, .seed = 1};
+    r->ctx = (struct ssg_node_ctx){.instance = "img", .frame = &r->frame, .diags = &r->diags};
+    r->out[0] = ssg_image_create(w, h, 3);
+    r->io = (struct ssg_io){.in = r->in, .out = r->out};
+}
+
+static enum ssg_err run_combine(struct run *r, const struct ssg_combine_params *p)
+{
+    return ssg_node_combine.run_cpu(&r->ctx, p, &r->io);
+}
+
+static void test_descriptor(void)
+{
+    const struct ssg_node_desc *d = &ssg_node_combine;
+    CHECK(strcmp(d->name, "combine") == 0);
+    CHECK_EQ(d->input_count, SSG_COMBINE_INPUTS);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_DIRECT].name, "direct") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_ALBEDO].name, "albedo") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_AO].name, "ambient_occlusion") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_INDIRECT].name, "indirect") == 0);
+    CHECK(!d->inputs[SSG_COMBINE_DIRECT].optional && !d->inputs[SSG_COMBINE_ALBEDO].optional);
+    CHECK(d->inputs[SSG_COMBINE_AO].optional && d->inputs[SSG_COMBINE_INDIRECT].optional);
+    CHECK_EQ(d->inputs[SSG_COMBINE_AO].types, SSG_T_SCALAR);
+    CHECK_EQ(d->output_count, 1);
+    CHECK_EQ(d->outputs[0].types, SSG_T_COLOR);
+    CHECK_EQ(d->consts_size, 0);
+    CHECK_EQ(d->params_size, sizeof(struct ssg_combine_params));
+    CHECK(d->method && strstr(d->method, "3.1"));
+
+    struct ssg_combine_params p;
+    memset(&p, 0xff, sizeof p);
+    ssg_params_defaults(d->params, &p);
+    CHECK_NEAR(p.ambient, 0.3, 1e-7);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(p.ambient_color[c], 1.0, 0.0);
+    struct ssg_diags diags = {0};
+    CHECK_EQ(ssg_param_set_text(d->params, &p, "ambient=2.5", "<test>", "combine", &diags),
+             SSG_OK);
+    CHECK_NEAR(p.ambient, 2.5, 0.0);
+    CHECK_EQ(ssg_param_set_text(d->params, &p, "ambient=11", "<test>", "combine", &diags),
+             SSG_E_RANGE);
+    CHECK_EQ(ssg_param_set_text(d->params, &p, "ambient_color=[1, 0.5, 0]", "<test>",
+                                "combine", &diags),
+             SSG_OK);
+    CHECK_NEAR(p.ambient_color[1], 0.5, 0.0);
+}
+
+/* 2 x 2 by hand. Defaults: ambient 0.3, colour white. */
+static void test_known_values(void)
+{
+    struct run r;
+    run_init(&r, 2, 2);
+    float dr[4] = {0.5f, 0, 1, 0}, dg[4] = {0.25f, 0, 0, 0}, db[4] = {0, 0, 0, 0};
+    float ar[4] = {1, 0.5f, 0, 0}, ag[4] = {0.5f, 0.5f, 0, 0}, ab[4] = {0.25f, 1, 0, 0};
+    struct ssg_image *direct = rgb(2, 2, dr, dg, db), *albedo = rgb(2, 2, ar, ag, ab);
+    struct ssg_image *ao = ssg_image_create(2, 2, 1);
+    float aov[4] = {1, 0.5f, 0.25f, 0};
+    memcpy(ao->data, aov, sizeof aov);
+    struct ssg_combine_params p;
+    ssg_params_defaults(ssg_node_combine.params, &p);
+    r.in[SSG_COMBINE_DIRECT] = direct;
+    r.in[SSG_COMBINE_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_AO] = ao;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    const float *o0 = ssg_image_plane(r.out[0], 0), *o1 = ssg_image_plane(r.out[0], 1),
+                *o2 = ssg_image_plane(r.out[0], 2);
+    /* pixel 0: ao 1 -> direct + 0.3 * albedo */
+    CHECK_NEAR(o0[0], 0.8, 1e-6);
+    CHECK_NEAR(o1[0], 0.4, 1e-6);
+    CHECK_NEAR(o2[0], 0.075, 1e-6);
+    /* pixel 1: ao 0.5 -> 0.15 * albedo */
+    CHECK_NEAR(o0[1], 0.075, 1e-6);
+    CHECK_NEAR(o1[1], 0.075, 1e-6);
+    CHECK_NEAR(o2[1], 0.15, 1e-6);
+    /* pixel 2: no albedo: direct only */
+    CHECK_NEAR(o0[2], 1.0, 0.0);
+    CHECK_NEAR(o1[2], 0.0, 0.0);
+    /* pixel 3: background (direct 0, albedo 0) stays exactly 0 */
+    CHECK_EQ(o0[3], 0);
+    CHECK_EQ(o1[3], 0);
+    CHECK_EQ(o2[3], 0);
+
+    /* No AO: the ambient term is unoccluded (ao = 1). Tinted, stronger ambient. */
+    r.in[SSG_COMBINE_AO] = NULL;
+    p.ambient = 2.0f;
+    p.ambient_color[0] = 1.0f;
+    p.ambient_color[1] = 0.5f;
+    p.ambient_color[2] = 0.0f;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(o0[1], 1.0, 1e-6);  /* 0 + 2 * 1 * 0.5 */
+    CHECK_NEAR(o1[1], 0.5, 1e-6);  /* 0 + 2 * 0.5 * 0.5 */
+    CHECK_NEAR(o2[1], 0.0, 0.0);   /* blue ambient is off */
+    CHECK_NEAR(o0[0], 2.5, 1e-6);  /* 0.5 + 2 * 1 * 1 */
+
+    /* Indirect light is added as is. */
+    float ir[4] = {0.1f, 0.2f, 0.3f, 0.4f}, ig[4] = {1, 1, 1, 1}, ib[4] = {0, 0, 0, 5};
+    struct ssg_image *indirect = rgb(2, 2, ir, ig, ib);
+    r.in[SSG_COMBINE_INDIRECT] = indirect;
+    r.in[SSG_COMBINE_AO] = ao;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(o0[1], 0.5 + 0.2, 1e-6); /* 2 * 1 * 0.5 * ao 0.5, + 0.2 */
+    CHECK_NEAR(o1[1], 0.25 + 1, 1e-6);
+    CHECK_NEAR(o2[3], 5.0, 0.0);        /* background with indirect only */
+    CHECK_EQ(r.diags.count, 0);
+
+    ssg_image_destroy(&direct);
+    ssg_image_destroy(&albedo);
+    ssg_image_destroy(&ao);
+    ssg_image_destroy(&indirect);
+    ssg_image_destroy(&r.out[0]);
+}
+
+/* Inputs that do not fit the output are reported, not read out of bounds. */
+static void test_mismatch(void)
+{
+    struct run r;
+    run_init(&r, 4, 3);
+    struct ssg_image *direct = ssg_image_create(4, 3, 3), *albedo = ssg_image_create(4, 3, 3);
+    struct ssg_image *small = ssg_image_create(4, 2, 1), *gray = ssg_image_create(4, 3, 1);
+    struct ssg_combine_params p;
+    ssg_params_defaults(ssg_node_combine.params, &p);
+    r.in[SSG_COMBINE_DIRECT] = direct;
+    r.in[SSG_COMBINE_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_AO] = small;
+    CHECK_EQ(run_combine(&r, &p), SSG_E_SIZE);
+    CHECK_EQ(r.diags.count, 1);
+    CHECK(strstr(r.diags.items[0].message, "ambient_occlusion") != NULL);
+    r.in[SSG_COMBINE_AO] = NULL;
+    r.in[SSG_COMBINE_ALBEDO] = gray;
+    CHECK_EQ(run_combine(&r, &p), SSG_E_CHANNELS);
+    CHECK_EQ(r.diags.items[1].code, SSG_E_CHANNELS);
+    ssg_image_destroy(&direct);
+    ssg_image_destroy(&albedo);
+    ssg_image_destroy(&small);
+    ssg_image_destroy(&gray);
+    ssg_image_destroy(&r.out[0]);
+}
+
+/* A frame taller than one band, run with 1 and 3 threads: every pixel matches the
+   equation and both runs give the same bits. */
+static void test_bands_and_threads(void)
+{
+    enum { W = 13, H = 37 };
+    struct ssg_image *direct = ssg_image_create(W, H, 3), *albedo = ssg_image_create(W, H, 3);
+    struct ssg_image *ao = ssg_image_create(W, H, 1);
+    for (int i = 0; i < W * H * 3; i++) {
+        direct->data[i] = (float)(i % 17) * 0.0625f;
+        albedo->data[i] = (float)(i % 11) * 0.09375f;
+    }
+    for (int i = 0; i < W * H; i++)
+        ao->data[i] = (float)(i % 5) * 0.25f;
+    struct ssg_combine_params p;
+    ssg_params_defaults(ssg_node_combine.params, &p);
+    struct run r1, r3;
+    run_init(&r1, W, H);
+    run_init(&r3, W, H);
+    struct run *runs[2] = {&r1, &r3};
+    for (int k = 0; k < 2; k++) {
+        runs[k]->in[SSG_COMBINE_DIRECT] = direct;
+        runs[k]->in[SSG_COMBINE_ALBEDO] = albedo;
+        runs[k]->in[SSG_COMBINE_AO] = ao;
+        omp_set_num_threads(k == 0 ? 1 : 3);
+        CHECK_EQ(run_combine(runs[k], &p), SSG_OK);
+    }
+    CHECK(memcmp(r1.out[0]->data, r3.out[0]->data, sizeof(float) * W * H * 3) == 0);
+    int bad = 0;
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < W * H; i++) {
+            float want = ssg_image_plane(direct, c)[i] +
+                         0.3f * ssg_image_plane(albedo, c)[i] * ao->data[i];
+            bad += fabsf(ssg_image_plane(r1.out[0], c)[i] - want) > 1e-6f;
+        }
+    CHECK_EQ(bad, 0);
+    ssg_image_destroy(&direct);
+    ssg_image_destroy(&albedo);
+    ssg_image_destroy(&ao);
+    ssg_image_destroy(&r1.out[0]);
+    ssg_image_destroy(&r3.out[0]);
+}
+
+int main(void)
+{
+    test_descriptor();
+    test_known_values();
+    test_mismatch();
+    test_bands_and_threads();
+    return check_report();
+}

@@ -1,0 +1,132 @@
+/* test_gltf.c - the glTF adapter (core/gltf.h): the bundled bunny loads with the OBJ's
+ * vertex and triangle counts; a small fixture checks transforms, computed normals,
+ * materials, sRGB texture decoding and the camera; broken files give SSG_E_GLTF (or
+ * SSG_E_IO) with the file name in the message, and never crash. */
+#include <string.h>
+
+#include "check.h"
+#include "gltf.h"
+
+#define OBJ_PATH "/usr/share/glmark2/models/bunny.obj"
+
+/* Counts `v ` and `f ` lines of the OBJ the bunny was converted from (tools/obj2gltf.py
+ * keeps one vertex per OBJ position and one triangle per triangular face). */
+static int count_obj(int *vertices, int *faces)
+{
+    FILE *f = fopen(OBJ_PATH, "r");
+    char line[256];
+    if (!f)
+        return 0;
+    *vertices = *faces = 0;
+    while (fgets(line, sizeof line, f)) {
+        *vertices += line[0] == 'v' && line[1] == ' ';
+        *faces += line[0] == 'f' && line[1] == ' ';
+    }
+    fclose(f);
+    return 1;
+}
+
+static void test_bunny(void)
+{
+    struct ssg_gltf *g = NULL;
+    char why[512] = "";
+    CHECK_EQ(ssg_gltf_load("examples/bunny.gltf", &g, why, sizeof why), SSG_OK);
+    if (!g) {
+        fprintf(stderr, "%s\n", why);
+        return;
+    }
+    int vertices = 34835, faces = 69666; /* the glmark2-data copy, when it is not installed */
+    count_obj(&vertices, &faces);
+    CHECK_EQ(g->mesh_count, 1);
+    CHECK_EQ(g->meshes[0].vertex_count, vertices);
+    CHECK_EQ(g->meshes[0].triangle_count, faces);
+    CHECK_EQ(g->meshes[0].material, -1);
+    CHECK(g->meshes[0].uvs == NULL);
+    CHECK_EQ(g->has_camera, 0);
+    /* every normal is unit length and every index in range */
+    int bad = 0;
+    for (int v = 0; v < g->meshes[0].vertex_count; v++) {
+        const float *n = &g->meshes[0].normals[3 * v];
+        bad += fabsf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0f) > 1e-4f;
+    }
+    for (int i = 0; i < 3 * g->meshes[0].triangle_count; i++)
+        bad += g->meshes[0].indices[i] >= (uint32_t)vertices;
+    CHECK_EQ(bad, 0);
+    ssg_gltf_destroy(&g);
+    CHECK(g == NULL);
+}
+
+static void test_triangle(void)
+{
+    struct ssg_gltf *g = NULL;
+    char why[512] = "";
+    CHECK_EQ(ssg_gltf_load("tests/fixtures/gltf/triangle.gltf", &g, why, sizeof why), SSG_OK);
+    if (!g) {
+        fprintf(stderr, "%s\n", why);
+        return;
+    }
+    CHECK_EQ(g->mesh_count, 1);
+    const struct ssg_mesh *m = &g->meshes[0];
+    CHECK_EQ(m->vertex_count, 3);
+    CHECK_EQ(m->triangle_count, 1);
+    /* node: translation (1,2,3), scale 2 -> (1,2,3), (3,2,3), (1,4,3) */
+    const float want[9] = {1, 2, 3, 3, 2, 3, 1, 4, 3};
+    for (int i = 0; i < 9; i++)
+        CHECK_NEAR(m->positions[i], want[i], 1e-6);
+    for (int v = 0; v < 3; v++) { /* computed: the face normal, +z */
+        CHECK_NEAR(m->normals[3 * v], 0, 1e-6);
+        CHECK_NEAR(m->normals[3 * v + 1], 0, 1e-6);
+        CHECK_NEAR(m->normals[3 * v + 2], 1, 1e-6);
+    }
+    CHECK(m->uvs != NULL);
+    if (m->uvs)
+        CHECK_NEAR(m->uvs[2], 1.0, 1e-6);
+    CHECK_EQ(m->material, 0);
+    CHECK_EQ(g->material_count, 1);
+    CHECK(strcmp(g->materials[0].name, "tinted") == 0);
+    CHECK_NEAR(g->materials[0].base_color[1], 0.25, 1e-6);
+    CHECK_EQ(g->materials[0].texture, 0);
+    CHECK_EQ(g->texture_count, 1);
+    if (g->texture_count == 1) { /* sRGB (255,128,0), (0,0,188) decoded to linear */
+        const struct ssg_texture *t = &g->textures[0];
+        CHECK_EQ(t->width, 2);
+        CHECK_EQ(t->height, 1);
+        CHECK_NEAR(t->rgb[0], 1.0, 1e-6);
+        CHECK_NEAR(t->rgb[1], 0.2158605, 1e-5);
+        CHECK_NEAR(t->rgb[2], 0.0, 1e-6);
+        CHECK_NEAR(t->rgb[5], 0.5028865, 1e-5);
+    }
+    CHECK_EQ(g->has_camera, 1);
+    CHECK_NEAR(g->camera.position[2], 5, 1e-6);
+    CHECK_NEAR(g->camera.target[2], 4, 1e-6); /* looks down -z */
+    CHECK_NEAR(g->camera.up[1], 1, 1e-6);
+    CHECK_NEAR(g->camera.fov_y, 0.8 * 180.0 / M_PI, 1e-4);
+    CHECK_NEAR(g->camera.near_z, 0.1, 1e-6);
+    CHECK_NEAR(g->camera.far_z, 50, 1e-6);
+    ssg_gltf_destroy(&g);
+}
+
+/* A broken file: the expected code, no struct, and the file named in the message. */
+static void expect_failure(const char *path, enum ssg_err code, const char *words)
+{
+    struct ssg_gltf *g = (struct ssg_gltf *)1;
+    char why[512] = "";
+    CHECK_EQ(ssg_gltf_load(path, &g, why, sizeof why), code);
+    CHECK(g == NULL);
+    CHECK(strstr(why, path) != NULL);
+    CHECK(strstr(why, words) != NULL);
+    fprintf(stderr, "  (expected) %s\n", why);
+}
+
+int main(void)
+{
+    test_bunny();
+    test_triangle();
+    expect_failure("tests/fixtures/broken.gltf", SSG_E_GLTF, "");
+    expect_failure("tests/fixtures/gltf/index_out_of_range.gltf", SSG_E_GLTF, "out of range");
+    expect_failure("tests/fixtures/gltf/lines.gltf", SSG_E_GLTF, "not a triangle mode");
+    expect_failure("tests/fixtures/gltf/missing_bin.gltf", SSG_E_GLTF, "missing.bin");
+    expect_failure("tests/fixtures/gltf/no_such_file.gltf", SSG_E_IO, "cannot open");
+    expect_failure("tests/fixtures/garbage.png", SSG_E_GLTF, "");
+    return check_report();
+}
