@@ -7,9 +7,10 @@
  * plane as in a real frame. Build against a Release libssgraph, e.g.
  *   cc -O3 -march=x86-64-v2 -fopenmp -Icore -Inodes bench/ssao_micro.c \
  *      build-release/libssgraph.a <libssgraph's link libraries> -lm
- * Usage: ssao_micro [runs=15] [samples=16] [threads=0 (all)] */
+ * Usage: ssao_micro [runs=15] [samples=16] [threads=0 (all)] [ssao param=value ...] */
 #include <math.h>
 #include <omp.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,10 +21,10 @@
 
 enum { W = 1920, H = 1080 };
 
-static double now_ms(void)
+static double clock_ms(clockid_t clock)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(clock, &ts);
     return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
@@ -94,6 +95,11 @@ int main(int argc, char **argv)
         return 1;
     void *params = calloc(1, d->params_size), *consts = calloc(1, d->consts_size);
     ssg_params_defaults(d->params, params);
+    for (int a = 4; a < argc; a++)
+        if (ssg_param_set_text(d->params, params, argv[a], "<argv>", "ssao", &diags)) {
+            ssg_diags_print(&diags, stderr);
+            return 2;
+        }
     struct ssg_node_ctx ctx = {"ao", &frame, NULL, "out", &diags};
     const struct ssg_image *in[5] = {pos, nrm, hal.images[0], hal.images[1], NULL};
     struct ssg_image *outs[1] = {out};
@@ -101,21 +107,33 @@ int main(int argc, char **argv)
     if (d->prepare(&ctx, params, consts) != SSG_OK)
         return 1;
 
-    double *ms = calloc((size_t)runs, sizeof *ms);
+    /* Wall time, and the CPU time of all threads (on a shared machine, wall time also
+       counts time other processes held the cores). */
+    double *ms = calloc((size_t)runs, sizeof *ms), *cpu = calloc((size_t)runs, sizeof *cpu);
     d->run_cpu(&ctx, consts, &io); /* warm caches and threads */
     for (int r = 0; r < runs; r++) {
-        double t0 = now_ms();
+        double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
         d->run_cpu(&ctx, consts, &io);
-        ms[r] = now_ms() - t0;
+        ms[r] = clock_ms(CLOCK_MONOTONIC) - t0;
+        cpu[r] = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
     }
     qsort(ms, (size_t)runs, sizeof *ms, cmp_double);
+    qsort(cpu, (size_t)runs, sizeof *cpu, cmp_double);
+    /* Mean, and an FNV-1a hash of the bits, to compare builds and variants. */
     double mean_ao = 0;
-    for (size_t i = 0; i < (size_t)W * H; i++)
+    uint64_t hash = 1469598103934665603ull;
+    for (size_t i = 0; i < (size_t)W * H; i++) {
+        uint32_t bits;
+        memcpy(&bits, &out->data[i], sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
         mean_ao += out->data[i];
+    }
     printf("ssao %dx%d, %d samples, %d threads: median %.2f ms (min %.2f, max %.2f) over %d "
-           "runs; mean ao %.4f\n", W, H, samples, omp_get_max_threads(), ms[runs / 2], ms[0],
-           ms[runs - 1], runs, mean_ao / ((double)W * H));
+           "runs, cpu time median %.2f ms; mean ao %.4f, hash %016llx\n", W, H, samples,
+           omp_get_max_threads(), ms[runs / 2], ms[0], ms[runs - 1], runs, cpu[runs / 2],
+           mean_ao / ((double)W * H), (unsigned long long)hash);
     free(ms);
+    free(cpu);
     free(params);
     free(consts);
     ssg_image_destroy(&pos);

@@ -47,7 +47,8 @@ enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *para
     for (int i = 0; i < desc->output_count; i++) {
         if (!ssg_image_size_ok(out[i].width, out[i].height, out[i].channels)) {
             snprintf(why, why_len, "output '%s' would be %dx%d with %d channels (at most "
-                     "%dx%d, %d pixels, 1-4 channels)", desc->outputs[i].name, out[i].width,
+                     "%dx%d, %d pixels, 1-4 channels; a frame needs a size or a frame-sized input)",
+                     desc->outputs[i].name, out[i].width,
                      out[i].height, out[i].channels, SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_SIDE,
                      SSG_IMAGE_MAX_PIXELS);
             return SSG_E_SIZE;

@@ -270,6 +270,7 @@ class Flattener {
     std::vector<int> texture_slot; /* glTF texture index -> textures index, -1 = not yet */
     bool has_camera = false;
     ssg_camera camera{};
+    size_t visits = 0; /* node instances seen, against shared subtrees blowing up */
 
     void visit(int node, const Mat4 &parent, int depth);
     void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
@@ -303,13 +304,14 @@ void Flattener::visit(int index, const Mat4 &parent, int depth)
 {
     if (index < 0 || (size_t)index >= m.nodes.size())
         fail("node " + std::to_string(index) + " does not exist");
-    if (depth > 64)
-        fail("node hierarchy deeper than 64 levels (a cycle?)");
+    if (depth > 64 || ++visits > (1u << 20))
+        fail("node hierarchy deeper than 64 levels or over 2^20 node instances (a cycle?)");
     const tinygltf::Node &node = m.nodes[(size_t)index];
     Mat4 world = multiply(parent, local_matrix(node));
     if (node.mesh >= 0) {
         if ((size_t)node.mesh >= m.meshes.size())
-            fail("node " + std::to_string(index) + " names missing mesh " + std::to_string(node.mesh));
+            fail("node " + std::to_string(index) + " names missing mesh " +
+                 std::to_string(node.mesh));
         const tinygltf::Mesh &mesh = m.meshes[(size_t)node.mesh];
         for (size_t p = 0; p < mesh.primitives.size(); p++)
             add_primitive(mesh.primitives[p], world,
@@ -391,7 +393,8 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
     double det;
     normal_matrix(world, &det);
     if (det < 0) /* a mirroring transform flips the winding; flip it back */
-        for (size_t t = 0; t < out.indices.size(); t += 3) std::swap(out.indices[t + 1], out.indices[t + 2]);
+        for (size_t t = 0; t < out.indices.size(); t += 3)
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
     prims.push_back(std::move(out));
 }
 
@@ -478,7 +481,8 @@ ssg_gltf *Flattener::to_c() const
     try {
         g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
         g->materials = c_array(materials);
-        g->textures = static_cast<ssg_texture *>(std::calloc(textures.size() + 1, sizeof(ssg_texture)));
+        g->textures =
+            static_cast<ssg_texture *>(std::calloc(textures.size() + 1, sizeof(ssg_texture)));
         if (!g->meshes || !g->textures || (!materials.empty() && !g->materials))
             throw std::bad_alloc();
         g->material_count = (int)materials.size();
@@ -543,8 +547,11 @@ ssg_gltf *load(const char *path)
                                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-        for (char &c : err)
-            if (c == '\n') c = ';'; /* one diagnostic, one line */
+        for (char &c : err) /* one printable line: JSON errors quote raw bytes of the file */
+            if (c == '\n')
+                c = ';';
+            else if ((unsigned char)c < 32 || (unsigned char)c > 126)
+                c = '?';
         fail(err.empty() ? "tinygltf could not parse it" : err);
     }
     Flattener flat(model);

@@ -1,8 +1,9 @@
 /* imageio.h - image files through OpenImageIO (core/imageio_adapter.cc), behind a C header.
  *
  * Reading is ssg_image_read (ssgraph.h). Writing covers what the `write` node needs: a
- * multi-layer 32-bit float EXR (ZIP, zlib level 1) and an 8-bit PNG preview whose tone mapping and sRGB
- * encoding happen here, in one place, so every caller previews images the same way.
+ * multi-layer 32-bit float EXR (ZIP, zlib level 1) and an 8-bit PNG preview whose tone
+ * mapping and sRGB encoding happen here, in one place, so every caller previews images the
+ * same way.
  *
  * Both writers write a hidden temporary file next to the target (".stem.tmp-PID-N.ext",
  * same directory, so rename() is atomic) and rename it into place only once it is complete;
@@ -12,13 +13,15 @@
  *
  * Colour: EXR data is written and read as is (linear). PNG is written sRGB-encoded; files
  * OpenImageIO reports as sRGB (8-bit PNG, JPEG, ...) are decoded to linear on reading, so
- * every image inside ssgraph is linear.
+ * every image inside ssgraph is linear. Alpha is read as stored (not premultiplied).
  *
  * Errors go to diags with the file name: SSG_E_IO (cannot open, create, write or rename),
  * SSG_E_IMAGE (unreadable or malformed file), SSG_E_SIZE (absurd size), SSG_E_CHANNELS
- * (no such layer, or a layer whose channel count does not fit its kind), SSG_E_VALUE
- * (bad layer names). No C++ exception ever leaves these functions.
- * Thread safety: the functions keep no state; separate calls may run in separate threads. */
+ * (no such layer, or a layer whose channel count does not fit its kind), SSG_E_VALUE and
+ * SSG_E_DUPLICATE (bad or repeated layer names), SSG_E_NOMEM. No C++ exception ever leaves
+ * these functions.
+ * Thread safety: no state but an atomic counter for temporary names; separate calls may
+ * run in separate threads. */
 #ifndef SSG_IMAGEIO_H
 #define SSG_IMAGEIO_H
 

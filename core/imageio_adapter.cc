@@ -218,14 +218,18 @@ enum ssg_err read_pixels(ImageInput *in, const char *path, const std::vector<int
     int chbegin = *std::min_element(idx.begin(), idx.end());
     int chend = *std::max_element(idx.begin(), idx.end()) + 1;
     int nread = chend - chbegin;
-    /* 8-bit colour files are display encoded; alpha never is. */
+    /* Files tagged sRGB (8-bit PNG, JPEG) hold display-encoded colour; alpha never is. */
     bool srgb = OIIO::Strutil::iequals(spec.get_string_attribute("oiio:ColorSpace"), "sRGB");
     std::vector<char> decode(idx.size());
     for (size_t k = 0; k < idx.size(); k++)
         decode[k] = srgb && idx[k] != spec.alpha_channel;
-    std::vector<float> band((size_t)spec.width * (size_t)nread * BAND_ROWS);
-    for (int y0 = 0; y0 < spec.height; y0 += BAND_ROWS) {
-        int rows = std::min(BAND_ROWS, spec.height - y0);
+    /* The channel range read may hold many unwanted channels: keep the band under 64 MB. */
+    size_t row_floats = (size_t)spec.width * (size_t)nread;
+    int band_rows =
+        (int)std::max<size_t>(1, std::min<size_t>(BAND_ROWS, (16u << 20) / row_floats));
+    std::vector<float> band(row_floats * (size_t)band_rows);
+    for (int y0 = 0; y0 < spec.height; y0 += band_rows) {
+        int rows = std::min(band_rows, spec.height - y0);
         if (!in->read_scanlines(0, 0, spec.y + y0, spec.y + y0 + rows, spec.z, chbegin, chend,
                                 TypeDesc::FLOAT, band.data())) {
             ssg_diag_file(diags, SSG_E_IMAGE, path, "cannot decode image: %s",
@@ -243,7 +247,11 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
     enum ssg_err err = check_readable(path, diags);
     if (err)
         return err;
-    std::unique_ptr<ImageInput> in = ImageInput::open(path);
+    /* Alpha stays as stored (unassociated in PNG): premultiplying before the sRGB decode
+       below would decode the wrong values. */
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    std::unique_ptr<ImageInput> in = ImageInput::open(path, &config);
     if (!in) {
         ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s",
                       oiio_error<ImageInput>(nullptr).c_str());

@@ -155,12 +155,9 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
     enum ssg_err b = bind_inputs(&s, inputs, input_count, diags);
     if (!e)
         e = b;
+    /* No size check here: a node with no frame-sized output (halton) needs no frame;
+       the shape check rejects a frame-sized output of a frame without a size. */
     struct ssg_frame f = make_frame(&s, frame);
-    if (!e && !ssg_image_size_ok(f.width, f.height, 1)) {
-        ssg_diag_file(diags, SSG_E_SIZE, NULL, "node '%s': frame size %dx%d is out of range "
-                      "(give a frame size or a frame-sized input)", node, f.width, f.height);
-        e = SSG_E_SIZE;
-    }
     if (!e)
         e = run_single(&s, params, &f, outputs, diags);
     free(params);

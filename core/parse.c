@@ -391,6 +391,7 @@ static int parse_call(struct parser *ps, struct ssg_stmt *st)
     st->callee = callee->at;
     st->callee_len = callee->len;
     st->callee_loc = loc_of(ps, callee->at);
+    const char *open = peek(ps, 0)->at;
     if (!expect(ps, T_LPAREN, "after the node or entity name"))
         return 0;
     while (peek(ps, 0)->kind != T_RPAREN) {
@@ -404,8 +405,14 @@ static int parse_call(struct parser *ps, struct ssg_stmt *st)
             break;
         next(ps);
     }
-    if (!expect(ps, T_RPAREN, "to close the argument list"))
+    if (peek(ps, 0)->kind != T_RPAREN) {
+        int line, column;
+        ssg_loc_linecol(loc_of(ps, open), &line, &column);
+        error_at(ps, peek(ps, 0)->at, "expected ')' to close the '(' of line %d, column %d, "
+                 "found %s", line, column, tok_texts[peek(ps, 0)->kind]);
         return 0;
+    }
+    next(ps);
     st->args = copy_args(ps, args, count);
     st->arg_count = count;
     return st->args != NULL;

@@ -1,11 +1,16 @@
 /* rt.c - the Embree 3 wrapper behind rt.h.
  *
- * Packets: coherent batches go through rtcIntersect8 (8-wide, native on AVX2). Measured
- * on the 2-core build machine for the 1920x1080 bunny G-buffer (primary rays only, one
- * thread): rtcIntersect1 per ray 1.00x, rtcIntersect1M with the coherent flag ~1.0x,
- * rtcIntersect16 and rtcIntersect8 in 4x2 tiles the fastest; see SSG_RT_PACKET in rt.h.
+ * Coherent batches go through rtcIntersect1M with the coherent flag: Embree regroups the
+ * stream into packets itself. Measured for the 1920x1080 bunny frame (primary rays only,
+ * one thread, the variants interleaved in one process, best of 6 rounds): rtcIntersect1
+ * per ray 330 ms; rtcIntersect8 in 4x2 pixel tiles 109 ms; rtcIntersect1M over row
+ * segments of 64 to 256 pixels 104-109 ms (and up to 25% ahead of the 4x2 packets when
+ * the machine was loaded); 1M over 8x8 tiles 121 ms; rtcIntersectNp (SoA pointers) about
+ * 1.5x slower than 1M; rtcIntersect16 in 4x4 tiles (not native on AVX2) no faster than
+ * rtcIntersect8 in separate runs.
  * The scene is built with RTC_SCENE_FLAG_ROBUST so rays through a shared edge (the
- * diagonal of a two-triangle plane at a pixel centre) never slip through. */
+ * diagonal of a two-triangle plane at a pixel centre) never slip through; its cost was
+ * within the noise of the measurement above. */
 #include "rt.h"
 
 #include <embree3/rtcore.h>
@@ -14,6 +19,9 @@
 
 #include "parse.h"
 #include "scene.h"
+
+/* Rays per rtcIntersect1M call; on the stack, 80 bytes each. */
+enum { STREAM = 256 };
 
 struct ssg_rt {
     RTCDevice device;
@@ -130,20 +138,15 @@ void ssg_rt_intersect(const struct ssg_rt *rt, const float org[3], const float d
     set_hit(hit, rh.ray.tfar, rh.hit.u, rh.hit.v, rh.hit.geomID, rh.hit.primID);
 }
 
-/* Fills packet lanes [0, n) from rays [first, first + n) and masks the rest off. */
-static void fill_packet(struct RTCRayHit8 *p, int valid[8], const struct ssg_rays *r, int first,
-                        int n)
+/* Copies rays [first, first + n) into Embree's ray-hit layout. */
+static void fill_stream(struct RTCRayHit *rh, const struct ssg_rays *r, int first, int n)
 {
-    for (int k = 0; k < 8; k++) {
-        int i = first + (k < n ? k : 0);
-        valid[k] = k < n ? -1 : 0;
-        p->ray.org_x[k] = r->ox[i], p->ray.org_y[k] = r->oy[i], p->ray.org_z[k] = r->oz[i];
-        p->ray.dir_x[k] = r->dx[i], p->ray.dir_y[k] = r->dy[i], p->ray.dir_z[k] = r->dz[i];
-        p->ray.tnear[k] = r->tnear, p->ray.tfar[k] = r->tfar;
-        p->ray.time[k] = 0.0f, p->ray.mask[k] = ~0u, p->ray.id[k] = (unsigned)k;
-        p->ray.flags[k] = 0;
-        p->hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        p->hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    for (int k = 0; k < n; k++) {
+        const float org[3] = {r->ox[first + k], r->oy[first + k], r->oz[first + k]};
+        const float dir[3] = {r->dx[first + k], r->dy[first + k], r->dz[first + k]};
+        rh[k].ray = make_ray(org, dir, r->tnear, r->tfar);
+        rh[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     }
 }
 
@@ -153,15 +156,14 @@ void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
     struct RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    struct RTCRayHit8 p;
-    int valid[8];
-    for (int first = 0; first < rays->count; first += 8) {
-        int n = rays->count - first < 8 ? rays->count - first : 8;
-        fill_packet(&p, valid, rays, first, n);
-        rtcIntersect8(valid, rt->scene, &ctx, &p);
+    struct RTCRayHit rh[STREAM];
+    for (int first = 0; first < rays->count; first += STREAM) {
+        int n = rays->count - first < STREAM ? rays->count - first : STREAM;
+        fill_stream(rh, rays, first, n);
+        rtcIntersect1M(rt->scene, &ctx, rh, (unsigned)n, sizeof rh[0]);
         for (int k = 0; k < n; k++)
-            set_hit(&hits[first + k], p.ray.tfar[k], p.hit.u[k], p.hit.v[k], p.hit.geomID[k],
-                    p.hit.primID[k]);
+            set_hit(&hits[first + k], rh[k].ray.tfar, rh[k].hit.u, rh[k].hit.v,
+                    rh[k].hit.geomID, rh[k].hit.primID);
     }
 }
 

@@ -28,10 +28,6 @@ struct ssg_rays {
     float tnear, tfar;         /* hits outside [tnear, tfar] are ignored */
 };
 
-/* Rays of ssg_rt_intersect_rays are traced SSG_RT_PACKET at a time: for coherent (camera)
- * rays, order them so each consecutive group of this many covers a compact screen tile. */
-#define SSG_RT_PACKET 8
-
 /* Builds the Embree scene of every mesh. Embree errors go to diags (SSG_E_BACKEND). */
 enum ssg_err ssg_rt_build(const struct ssg_scene *scene, struct ssg_rt **out,
                           struct ssg_diags *diags);
@@ -41,8 +37,9 @@ void ssg_rt_destroy(struct ssg_rt **rt);
 void ssg_rt_intersect(const struct ssg_rt *rt, const float org[3], const float dir[3],
                       float tnear, float tfar, struct ssg_hit *hit);
 
-/* Nearest hits of a batch of coherent rays, e.g. the primary rays of a few image rows;
- * hits[i] belongs to ray i. */
+/* Nearest hits of a batch of coherent rays, traced as one Embree ray stream with the
+ * coherent flag: order them so neighbours in the batch are neighbours on screen (a row
+ * segment of primary rays, for instance). hits[i] belongs to ray i. */
 void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
                            struct ssg_hit *hits);
 

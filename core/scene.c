@@ -367,36 +367,43 @@ static void check_camera(struct scene_loader *l, const struct scene_entity *e)
         problem(l, e, "far", SSG_E_RANGE, "'far' must be greater than 'near'");
 }
 
+static void check_plane(struct scene_loader *l, struct scene_entity *e)
+{
+    const struct shape_args *s = e->args;
+    if (is_zero3(s->normal))
+        problem(l, e, "normal", SSG_E_VALUE, "the normal is zero");
+    if (s->size[0] <= 0.0f || s->size[2] <= 0.0f)
+        problem(l, e, "size", SSG_E_RANGE, "width (size[0]) and depth (size[2]) must be > 0");
+}
+
 static void check_entity(struct scene_loader *l, struct scene_entity *e)
 {
     check_required(l, e);
     switch (e->kind) {
     case SK_CAMERA: check_camera(l, e); break;
-    case SK_MATERIAL: check_file(l, e, "texture", ((struct material_args *)e->args)->texture); break;
+    case SK_MATERIAL:
+        check_file(l, e, "texture", ((const struct material_args *)e->args)->texture);
+        break;
     case SK_POINT_LIGHT: break;
     case SK_DIRECTIONAL_LIGHT:
         if (e->at[param_index(e, "direction")].src &&
-            is_zero3(((struct light_args *)e->args)->direction))
+            is_zero3(((const struct light_args *)e->args)->direction))
             problem(l, e, "direction", SSG_E_VALUE, "the direction is zero");
         break;
-    case SK_ENVIRONMENT: check_file(l, e, "image", ((struct environment_args *)e->args)->image); break;
-    case SK_PLANE: {
-        struct shape_args *s = e->args;
-        if (is_zero3(s->normal))
-            problem(l, e, "normal", SSG_E_VALUE, "the normal is zero");
-        if (s->size[0] <= 0.0f || s->size[2] <= 0.0f)
-            problem(l, e, "size", SSG_E_RANGE, "width (size[0]) and depth (size[2]) must be > 0");
-        check_material_ref(l, e, s->material);
+    case SK_ENVIRONMENT:
+        check_file(l, e, "image", ((const struct environment_args *)e->args)->image);
         break;
-    }
+    case SK_PLANE:
     case SK_BOX:
-    case SK_SPHERE: check_material_ref(l, e, ((struct shape_args *)e->args)->material); break;
-    case SK_MESH: {
-        struct mesh_args *m = e->args;
-        check_file(l, e, "file", m->file);
-        check_material_ref(l, e, m->material);
+    case SK_SPHERE:
+        if (e->kind == SK_PLANE)
+            check_plane(l, e);
+        check_material_ref(l, e, ((const struct shape_args *)e->args)->material);
         break;
-    }
+    case SK_MESH:
+        check_file(l, e, "file", ((const struct mesh_args *)e->args)->file);
+        check_material_ref(l, e, ((const struct mesh_args *)e->args)->material);
+        break;
     case SK_COUNT: break;
     }
 }

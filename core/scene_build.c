@@ -14,29 +14,31 @@
 #include "scene_build.h"
 #include "scene_shapes.h"
 
-/* Makes room for one more element of an array of `size`-byte items. */
-static int reserve(struct scene_loader *l, void **array, int count, int *cap, size_t size)
+/* The array, grown when needed to hold count + 1 items of `size` bytes; NULL (the
+ * array left as it was) when out of memory. */
+static void *reserve(struct scene_loader *l, void *array, int count, int *cap, size_t size)
 {
     if (count < *cap)
-        return 1;
+        return array;
     int want = *cap ? 2 * *cap : 16;
-    void *p = realloc(*array, (size_t)want * size);
+    void *p = realloc(array, (size_t)want * size);
     if (!p) {
         ssg_diag_at(l->diags, SSG_E_NOMEM, (struct ssg_loc){0}, "out of memory loading the scene");
         ssg_scene_fail(l, SSG_E_NOMEM);
-        return 0;
+        return NULL;
     }
-    *array = p;
     *cap = want;
-    return 1;
+    return p;
 }
 
 static struct ssg_material *new_material(struct scene_loader *l, const char *name)
 {
     struct ssg_scene *s = l->scene;
-    if (!reserve(l, (void **)&s->materials, s->material_count, &l->material_cap,
-                 sizeof *s->materials))
+    struct ssg_material *grown = reserve(l, s->materials, s->material_count, &l->material_cap,
+                                         sizeof *s->materials);
+    if (!grown)
         return NULL;
+    s->materials = grown;
     struct ssg_material *m = &s->materials[s->material_count++];
     memset(m, 0, sizeof *m);
     snprintf(m->name, sizeof m->name, "%s", name);
@@ -51,7 +53,7 @@ static int default_material(struct scene_loader *l)
     if (l->default_material < 0) {
         struct ssg_material *m = new_material(l, "default");
         if (!m)
-            return 0;
+            return -1; /* l->first is set: the scene is discarded */
         m->albedo[0] = m->albedo[1] = m->albedo[2] = 0.8f;
         l->default_material = l->scene->material_count - 1;
     }
@@ -62,11 +64,13 @@ static int default_material(struct scene_loader *l)
 static int add_texture(struct scene_loader *l, int width, int height, float *rgb)
 {
     struct ssg_scene *s = l->scene;
-    if (!reserve(l, (void **)&s->textures, s->texture_count, &l->texture_cap,
-                 sizeof *s->textures)) {
+    struct ssg_texture *grown = reserve(l, s->textures, s->texture_count, &l->texture_cap,
+                                        sizeof *s->textures);
+    if (!grown) {
         free(rgb);
         return -1;
     }
+    s->textures = grown;
     s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb};
     return s->texture_count++;
 }
@@ -113,9 +117,8 @@ static void build_material(struct scene_loader *l, int ent)
     memcpy(m->specular, a->specular, sizeof m->specular);
     m->shininess = a->shininess;
     l->material_of[ent] = l->scene->material_count - 1;
-    if (a->texture[0]) {
+    if (a->texture[0])
         m->texture = load_texture(l, a->texture);
-    }
 }
 
 static void build_light(struct scene_loader *l, const struct scene_entity *e)
@@ -137,10 +140,12 @@ static void build_light(struct scene_loader *l, const struct scene_entity *e)
 static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
 {
     struct ssg_scene *s = l->scene;
-    if (!reserve(l, (void **)&s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes)) {
+    struct ssg_mesh *grown = reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
+    if (!grown) {
         ssg_mesh_free(mesh);
         return;
     }
+    s->meshes = grown;
     s->meshes[s->mesh_count++] = *mesh;
 }
 
@@ -182,7 +187,7 @@ static int import_gltf_materials(struct scene_loader *l, struct ssg_gltf *g, con
     for (int i = 0; i < g->material_count; i++) {
         const struct ssg_gltf_material *gm = &g->materials[i];
         char name[SSG_NAME_MAX];
-        snprintf(name, sizeof name, "%s", gm->name[0] ? gm->name : file);
+        snprintf(name, sizeof name, "%.63s", gm->name[0] ? gm->name : file);
         struct ssg_material *m = new_material(l, name);
         if (!m)
             return first;
@@ -200,7 +205,9 @@ static void place_camera(struct ssg_camera *c, const struct mesh_args *a)
     for (int k = 0; k < 2; k++) {
         float p[3] = {pts[k][0] * a->scale[0], pts[k][1] * a->scale[1], pts[k][2] * a->scale[2]};
         for (int i = 0; i < 3; i++)
-            pts[k][i] = r[3 * i] * p[0] + r[3 * i + 1] * p[1] + r[3 * i + 2] * p[2] + a->translate[i];
+            pts[k][i] = r[3 * i] * p[0] + r[3 * i + 1] * p[1] + r[3 * i + 2] * p[2];
+        for (int i = 0; i < 3; i++)
+            pts[k][i] += a->translate[i];
     }
     float u[3] = {c->up[0], c->up[1], c->up[2]};
     for (int i = 0; i < 3; i++)

@@ -87,7 +87,8 @@ expect_exit 1 "corrupt.exr.*error" "$BIN" node bilateral --in "in=tests/fixtures
     --in "depth=tests/fixtures/corrupt.exr" --out "$TMP/corrupt_out"
 [ -e "$TMP/corrupt_out" ] && fail "a corrupt input still produced output"
 printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
-expect_exit 1 "syntax.graph:3:1: error: expected '\)'" "$BIN" check "$TMP/syntax.graph"
+expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
+    "$BIN" check "$TMP/syntax.graph"
 
 if [ "$fails" -ne 0 ]; then
     echo "$fails failure(s)" >&2

@@ -100,7 +100,7 @@ static void test_triangle(void)
     CHECK_NEAR(g->camera.position[2], 5, 1e-6);
     CHECK_NEAR(g->camera.target[2], 4, 1e-6); /* looks down -z */
     CHECK_NEAR(g->camera.up[1], 1, 1e-6);
-    CHECK_NEAR(g->camera.fov_y, 0.8 * 180.0 / M_PI, 1e-4);
+    CHECK_NEAR(g->camera.fov_y, 0.8 * 180.0 / 3.14159265358979, 1e-4);
     CHECK_NEAR(g->camera.near_z, 0.1, 1e-6);
     CHECK_NEAR(g->camera.far_z, 50, 1e-6);
     ssg_gltf_destroy(&g);

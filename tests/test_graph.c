@@ -117,7 +117,7 @@ static void test_errors(void)
                  "out = write(b.out, \"t\")\n",
                  SSG_E_CYCLE, 4, 5);
     expect_error("syntax.graph", "g = gbuffer(\nout = write(g.depth \"t\")\n", SSG_E_SYNTAX,
-                 3, 1);
+                 3, 12);
     expect_error("bad_char.graph", "g = gbuffer() $\n", SSG_E_SYNTAX, 2, 15);
     expect_error("size.graph", "size 0 480\n", SSG_E_SIZE, 2, 6);
     expect_error("include_missing.graph", "include \"nope.graph\"\n", SSG_E_IO, 2, 9);

@@ -203,7 +203,8 @@ static void test_exr_bad_layers(void)
     struct ssg_exr_layer size[] = {{.image = a}, {.name = "b", .image = b}};
     struct ssg_diags d = {0};
     check_error(&d, ssg_exr_write(path, size, 2, &d), SSG_E_SIZE, "bad_layers.exr");
-    struct ssg_exr_layer kind[] = {{.image = a}, {.name = "v", .image = c, .kind = SSG_LAYER_VECTOR}};
+    struct ssg_exr_layer kind[] = {{.image = a},
+                                   {.name = "v", .image = c, .kind = SSG_LAYER_VECTOR}};
     struct ssg_diags d2 = {0};
     check_error(&d2, ssg_exr_write(path, kind, 2, &d2), SSG_E_CHANNELS, "bad_layers.exr");
     struct ssg_exr_layer dup[] = {{.name = "x", .image = c}, {.name = "x", .image = c}};

@@ -27,7 +27,10 @@
 #include "node.h"
 #include "ssgraph.h"
 
-enum { W = 256, H = 256, MAX_PLANES = 3 };
+enum { MAX_PLANES = 3 };
+
+/* Frame size of the current test (the corner's closed-form check uses a narrow one). */
+static int W = 128, H = 256;
 
 struct plane {
     double n[3];  /* unit normal, pointing into the air */
@@ -287,99 +290,6 @@ static double standard_error(double v, int n)
     return sqrt(v * (1 - v) / n);
 }
 
-/* An inner 90-degree corner: two faces at 45 degrees to the view axis meeting along a
-   horizontal edge 5 units away; the camera looks into it. */
-static void test_corner(const struct ssg_image *small_kernel,
-                        const struct ssg_image *small_rot)
-{
-    const char *ksets[] = {"count=256", "bases=[2,3,5]"};
-    struct ssg_image *rot = NULL, *kernel = kernel_of(ksets, 2, &rot);
-    if (!kernel)
-        return;
-    struct scene s = {.count = 2};
-    plane_at(&s.pl[0], 0, 1, 1, 0, 0, -5);  /* floor A, facing up and towards us */
-    plane_at(&s.pl[1], 0, -1, 1, 0, 0, -5); /* wall B, facing down and towards us */
-    struct gbuf g;
-    cast(&s, &g);
-    const double radius = 0.5, bias = 0.02;
-    double bound = depth_bound(&s);
-    CHECK(bound < bias);
-    double margin = (bias + bound) * max_ray_length();
-    const char *sets[] = {"radius=0.5", "bias=0.02", "range_check=none"};
-    struct ssg_image *ao = ssao(&g, kernel, rot, 0, sets, 3);
-    struct ssg_image *open = NULL;
-    if (ao) {
-        /* Along the centre column: floor pixels at distance a from the wall. */
-        int x = W / 2, tested = 0, far_ones = 0, far_total = 0, near_n = 0;
-        double near_max = 0;
-        for (int y = 0; y < H; y++) {
-            size_t o = (size_t)y * W + (size_t)x;
-            if (g.which[o] != 0)
-                continue;
-            double p[3] = {g.pos->data[o], g.pos->data[W * H + o], g.pos->data[2 * W * H + o]};
-            double a = dot3(s.pl[1].n, p) - dot3(s.pl[1].n, s.pl[1].p0);
-            double v = ao->data[o];
-            if (a >= radius) {
-                far_total++;
-                far_ones += v == 1.0;
-                continue;
-            }
-            double lo = wall_model(kernel, a, radius);
-            double hi = wall_model(kernel, a + margin, radius);
-            double tol_lo = 4 * standard_error(lo, kernel->width);
-            double tol_hi = 4 * standard_error(hi, kernel->width);
-            CHECK(v >= lo - tol_lo && v <= hi + tol_hi);
-            if (!(v >= lo - tol_lo && v <= hi + tol_hi))
-                fprintf(stderr, "  corner a=%.4f: ssao %.4f, expected [%.4f, %.4f]\n", a, v,
-                        lo - tol_lo, hi + tol_hi);
-            tested++;
-            if (getenv("SSAO_DEBUG"))
-                fprintf(stderr, "corner a=%.4f v=%.4f [%.4f %.4f]\n", a, v, lo, hi);
-            if (a < 0.1) {
-                near_max = fmax(near_max, v);
-                near_n++;
-            }
-        }
-        CHECK(tested > 10);
-        CHECK(far_total > 10);
-        /* No sample reaches the wall from a >= radius: exactly open, given bound < bias. */
-        CHECK_EQ(far_ones, far_total);
-        /* Every pixel near the edge is darker than every far one (and than the open
-           face below). */
-        CHECK(near_n > 0 && near_max < 1.0);
-    }
-    /* The same pixels on an open face (the floor alone) are 1. */
-    struct scene floor_only = {.count = 1};
-    floor_only.pl[0] = s.pl[0];
-    struct gbuf gf;
-    cast(&floor_only, &gf);
-    open = ssao(&gf, kernel, rot, 0, sets, 3);
-    if (open)
-        CHECK_EQ(count_not_one(&gf, open), 0);
-    /* 1 and 2 threads give the same bytes (fixed bands); a 16-sample kernel is enough
-       to show it and keeps the sanitizer build quick. */
-    const char *smooth[] = {"radius=0.5"};
-    omp_set_num_threads(1);
-    struct ssg_image *one = ssao(&g, small_kernel, small_rot, 0, smooth, 1);
-    omp_set_num_threads(2);
-    struct ssg_image *two = ssao(&g, small_kernel, small_rot, 0, smooth, 1);
-    if (one && two)
-        CHECK(memcmp(one->data, two->data, sizeof(float) * W * H) == 0);
-    /* A depth image equal to -position.z gives the same result as none. */
-    struct ssg_image *with_depth = ssao(&g, small_kernel, small_rot, 1, smooth, 1);
-    if (one && with_depth)
-        CHECK(memcmp(one->data, with_depth->data, sizeof(float) * W * H) == 0);
-    ssg_image_destroy(&one);
-    ssg_image_destroy(&two);
-    ssg_image_destroy(&with_depth);
-    ssg_image_destroy(&ao);
-    ssg_image_destroy(&open);
-    release(&gf);
-    release(&g);
-    ssg_image_destroy(&kernel);
-    ssg_image_destroy(&rot);
-}
-
 static double mean_over(const struct ssg_image *ao, const int *which, int x0, int y0, int x1,
                         int y1, int plane, int *count)
 {
@@ -395,6 +305,156 @@ static double mean_over(const struct ssg_image *ao, const int *which, int x0, in
         }
     return *count ? sum / *count : 0;
 }
+
+/* Case 3 averaged over the lengths of several kernels. */
+static double wall_model_all(struct ssg_image *const *k, int nk, double a, double radius)
+{
+    double v = 0;
+    for (int i = 0; i < nk; i++)
+        v += wall_model(k[i], a, radius);
+    return v / nk;
+}
+
+/* An inner 90-degree corner: two faces at 45 degrees to the view axis meeting along a
+   horizontal edge 5 units away; the camera looks into it. */
+static void corner_scene(struct scene *s)
+{
+    *s = (struct scene){.count = 2};
+    plane_at(&s->pl[0], 0, 1, 1, 0, 0, -5);  /* floor A, facing up and towards us */
+    plane_at(&s->pl[1], 0, -1, 1, 0, 0, -5); /* wall B, facing down and towards us */
+}
+
+/* The corner against ANALYTIC.md case 3. Four kernels of 1024 samples at consecutive
+   Halton blocks (offsets 1, 1025, ...) make one 4096-sample estimate per pixel (the mean
+   of their results), for a tolerance of four standard errors of 4096 samples. A frame
+   64 px wide suffices: the floor's rows each lie at one distance from the wall (the
+   depth along a row is constant on a plane through the x axis) and the centre column's
+   samples stay within 31 px of it. */
+static void test_corner_closed_form(void)
+{
+    enum { KERNELS = 4 };
+    int saved_w = W;
+    W = 64;
+    struct scene s;
+    corner_scene(&s);
+    struct gbuf g;
+    cast(&s, &g);
+    const double radius = 0.5, bias = 0.02;
+    double bound = depth_bound(&s);
+    CHECK(bound < bias);
+    double margin = (bias + bound) * max_ray_length();
+    if (getenv("SSAO_DEBUG"))
+        fprintf(stderr, "corner: depth bound %.5f, margin %.5f\n", bound, margin);
+    const char *sets[] = {"radius=0.5", "bias=0.02", "range_check=none"};
+    struct ssg_image *kernel[KERNELS] = {0}, *rot[KERNELS] = {0}, *ao[KERNELS] = {0};
+    int ok = 1;
+    for (int k = 0; k < KERNELS; k++) {
+        char offset[32];
+        snprintf(offset, sizeof offset, "offset=%d", 1 + 1024 * k);
+        const char *ksets[] = {"count=1024", "bases=[2,3,5]", offset};
+        kernel[k] = kernel_of(ksets, 3, &rot[k]);
+        ao[k] = kernel[k] ? ssao(&g, kernel[k], rot[k], 0, sets, 3) : NULL;
+        ok &= ao[k] != NULL;
+    }
+    if (ok) {
+        /* Along the centre column: floor pixels at distance a from the wall. */
+        int x = W / 2, tested = 0, far_ones = 0, far_total = 0, near_n = 0;
+        double near_max = 0;
+        const int n = 1024 * KERNELS;
+        for (int y = 0; y < H; y++) {
+            size_t o = (size_t)y * W + (size_t)x;
+            if (g.which[o] != 0)
+                continue;
+            double p[3] = {g.pos->data[o], g.pos->data[W * H + o], g.pos->data[2 * W * H + o]};
+            double a = dot3(s.pl[1].n, p) - dot3(s.pl[1].n, s.pl[1].p0);
+            double v = 0;
+            for (int k = 0; k < KERNELS; k++)
+                v += ao[k]->data[o];
+            v /= KERNELS;
+            if (a >= radius) {
+                far_total++;
+                far_ones += v == 1.0;
+                continue;
+            }
+            double lo = wall_model_all(kernel, KERNELS, a, radius);
+            double hi = wall_model_all(kernel, KERNELS, a + margin, radius);
+            double tol_lo = 4 * standard_error(lo, n), tol_hi = 4 * standard_error(hi, n);
+            int inside = v >= lo - tol_lo && v <= hi + tol_hi;
+            CHECK(inside);
+            if (!inside || getenv("SSAO_DEBUG"))
+                fprintf(stderr, "  corner a=%.4f: ssao %.4f, expected [%.4f, %.4f] "
+                        "(before tolerance [%.4f, %.4f])\n", a, v, lo - tol_lo, hi + tol_hi,
+                        lo, hi);
+            tested++;
+            if (a < 0.1) {
+                near_max = fmax(near_max, v);
+                near_n++;
+            }
+        }
+        CHECK(tested > 10);
+        CHECK(far_total > 10);
+        /* No sample reaches the wall from a >= radius: exactly open, given bound < bias. */
+        CHECK_EQ(far_ones, far_total);
+        /* Every pixel near the edge is darker than every far one. */
+        CHECK(near_n > 0 && near_max < 1.0);
+    }
+    for (int k = 0; k < KERNELS; k++) {
+        ssg_image_destroy(&kernel[k]);
+        ssg_image_destroy(&rot[k]);
+        ssg_image_destroy(&ao[k]);
+    }
+    release(&g);
+    W = saved_w;
+}
+
+/* The corner with the everyday kernel: the open floor alone is 1 where the corner is
+   dark; 1 and 2 threads give the same bytes; a depth input equal to -position.z gives
+   the same result as none. */
+static void test_corner(const struct ssg_image *kernel, const struct ssg_image *rot)
+{
+    struct scene s;
+    corner_scene(&s);
+    struct gbuf g;
+    cast(&s, &g);
+    const char *sets[] = {"radius=0.5", "bias=0.02", "range_check=none"};
+    struct ssg_image *ao = ssao(&g, kernel, rot, 0, sets, 3), *open = NULL;
+    if (ao) {
+        /* Floor rows next to the edge (a < 0.1) are darker on average than floor rows
+           out of the wall's reach (a > radius, 40 rows down), which are exactly 1. */
+        int n_near, n_far;
+        double v_near = mean_over(ao, g.which, 0, H / 2, W, H / 2 + 4, 0, &n_near);
+        double v_far = mean_over(ao, g.which, 0, H / 2 + 40, W, H / 2 + 44, 0, &n_far);
+        CHECK(n_near == 4 * W && n_far == 4 * W);
+        CHECK(v_near < v_far);
+        CHECK(v_far == 1.0);
+    }
+    /* The same pixels on an open face (the floor alone) are 1. */
+    struct scene floor_only = {.count = 1};
+    floor_only.pl[0] = s.pl[0];
+    struct gbuf gf;
+    cast(&floor_only, &gf);
+    open = ssao(&gf, kernel, rot, 0, sets, 3);
+    if (open)
+        CHECK_EQ(count_not_one(&gf, open), 0);
+    const char *smooth[] = {"radius=0.5"};
+    omp_set_num_threads(1);
+    struct ssg_image *one = ssao(&g, kernel, rot, 0, smooth, 1);
+    omp_set_num_threads(2);
+    struct ssg_image *two = ssao(&g, kernel, rot, 0, smooth, 1);
+    if (one && two)
+        CHECK(memcmp(one->data, two->data, sizeof(float) * W * H) == 0);
+    struct ssg_image *with_depth = ssao(&g, kernel, rot, 1, smooth, 1);
+    if (one && with_depth)
+        CHECK(memcmp(one->data, with_depth->data, sizeof(float) * W * H) == 0);
+    ssg_image_destroy(&one);
+    ssg_image_destroy(&two);
+    ssg_image_destroy(&with_depth);
+    ssg_image_destroy(&ao);
+    ssg_image_destroy(&open);
+    release(&gf);
+    release(&g);
+}
+
 
 /* A floor 0.3 below the camera, open or under a ceiling 0.3 above it (h = 0.6 < radius 2,
    so case 2 of ANALYTIC.md predicts occlusion). The floor is seen at a grazing angle
@@ -443,8 +503,9 @@ static void test_floor_ceiling(const struct ssg_image *kernel, const struct ssg_
 /* A near object in front of a far wall: the left half at depth 2, the right at 5 (a
    G-buffer written directly). Wall pixels next to the step see the near half over their
    samples. Without a range check that occludes them; with the hard check (3 > radius) it
-   does not; the smooth one weights it by smoothstep(0.5 / 3) = 0.0741. */
-static void test_range_check(const struct ssg_image *kernel)
+   does not; the smooth one weights it by smoothstep(0.5 / 3) = 0.0741. Also checks the
+   power and max_screen_radius parameters on the same scene. */
+static void test_step(const struct ssg_image *kernel)
 {
     struct gbuf g = {ssg_image_create(W, H, 3), ssg_image_create(W, H, 3),
                      ssg_image_create(W, H, 1), NULL};
@@ -476,9 +537,31 @@ static void test_range_check(const struct ssg_image *kernel)
         /* The near half is in front of everything: open. */
         CHECK_EQ(a->data[(size_t)(H / 2) * W + W / 4], 1.0f);
     }
+    /* power: out = visibility^power. */
+    const char *squared[] = {"range_check=none", "radius=0.5", "power=2"};
+    struct ssg_image *p = ssao(&g, kernel, NULL, 0, squared, 3);
+    if (a && p) {
+        double worst = 0;
+        for (size_t i = 0; i < (size_t)W * H; i++)
+            worst = fmax(worst, fabs(p->data[i] - (double)a->data[i] * a->data[i]));
+        CHECK(worst < 1e-6);
+    }
+    /* max_screen_radius: 10 px right of the step the wall's samples reach the near half
+       (radius 0.5 at depth 5 projects to 0.5 f / 5 = 31 px); capped at 8 px they cannot
+       (r becomes 8 * 5 / f), so the pixel is open. */
+    const char *capped[] = {"range_check=none", "radius=0.5", "max_screen_radius=8"};
+    struct ssg_image *m = ssao(&g, kernel, NULL, 0, capped, 3);
+    if (a && m) {
+        size_t o = (size_t)(H / 2) * W + W / 2 + 10;
+        CHECK(a->data[o] < 1.0f);
+        CHECK_EQ(m->data[o], 1.0f);
+        CHECK(m->data[(size_t)(H / 2) * W + W / 2] < 1.0f); /* right at the step: still */
+    }
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);
     ssg_image_destroy(&c);
+    ssg_image_destroy(&p);
+    ssg_image_destroy(&m);
     release(&g);
 }
 
@@ -507,10 +590,11 @@ int main(void)
     if (kernel) {
         test_open_planes(kernel, rot);
         test_floor_ceiling(kernel, rot);
-        test_range_check(kernel);
+        test_step(kernel);
         test_rejects(kernel);
         test_corner(kernel, rot);
     }
+    test_corner_closed_form();
     ssg_image_destroy(&kernel);
     ssg_image_destroy(&rot);
     return check_report();

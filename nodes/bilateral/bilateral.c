@@ -18,6 +18,7 @@
  * sigma_spatial defaults to size / 3: the window is meant to average away the tiled
  * rotation noise of `ssao`, so the weights stay broad across it (about 0.41 at the window's
  * edge) rather than a narrow Gaussian that would waste most of the window. */
+#include <math.h>
 #include <stdio.h>
 
 #include "bilateral.h"
@@ -61,6 +62,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->size = p->size;
     c->depth_scale = 1.0f / p->sigma_depth;
     c->normal_power = p->normal_power;
+    c->normal_min = p->normal_power > 0 ? (float)pow(1e-30, 1.0 / p->normal_power) : 0.0f;
     float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
     float k = -0.5f / (sigma * sigma);
     for (int dy = -c->radius; dy <= c->radius; dy++)

@@ -23,6 +23,7 @@ struct ssg_bilateral_consts {
     int size;            /* 2 * radius + 1, px */
     float depth_scale;   /* 1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2 */
     int normal_power;    /* as in the parameters */
+    float normal_min;    /* normal cosines below this weigh c^p < 1e-30 and count as 0 */
     /* ln of the spatial Gaussian weight, -0.5 (dx^2 + dy^2) / sigma_spatial^2, for
        dy, dx in [-radius, radius]: row (dy + radius) * size + dx + radius. Logarithms, so
        that the three weights multiply by adding exponents and one exp() does it all. */

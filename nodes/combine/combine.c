@@ -31,8 +31,8 @@ static const struct ssg_port_desc outputs[] = {
 
 static const struct ssg_param_desc param_table[] = {
     {.name = "ambient", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_combine_params, ambient),
-     .def = 0.3, .min = 0, .max = 10, .unit = "radiance",
-     .help = "strength of the uniform ambient light that AO darkens"},
+     .def = 0.3, .min = 0, .max = 10,
+     .help = "strength of the uniform ambient light that AO darkens (linear, like direct)"},
     {.name = "ambient_color", .type = SSG_P_VEC3,
      .offset = offsetof(struct ssg_combine_params, ambient_color), .min = 0, .max = 100,
      .def3 = {1, 1, 1}, .unit = "linear RGB", .help = "tint of the ambient light"},

@@ -62,8 +62,10 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
                                  const struct ssg_io *io)
 {
     const struct ssg_combine_params *p = consts;
-    const struct ssg_image *direct = io->in[SSG_COMBINE_DIRECT], *albedo = io->in[SSG_COMBINE_ALBEDO];
-    const struct ssg_image *ao = io->in[SSG_COMBINE_AO], *indirect = io->in[SSG_COMBINE_INDIRECT];
+    const struct ssg_image *direct = io->in[SSG_COMBINE_DIRECT];
+    const struct ssg_image *albedo = io->in[SSG_COMBINE_ALBEDO];
+    const struct ssg_image *ao = io->in[SSG_COMBINE_AO];
+    const struct ssg_image *indirect = io->in[SSG_COMBINE_INDIRECT];
     struct ssg_image *out = io->out[0];
     enum ssg_err err = SSG_OK;
     if ((err = check_input(ctx, direct, "direct", 3, out)) ||

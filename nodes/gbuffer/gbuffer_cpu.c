@@ -1,10 +1,13 @@
 /* gbuffer_cpu.c - CPU kernel of the `gbuffer` node (method in gbuffer.c).
  *
- * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Within a band, pairs of rows are
- * cut into chunks of CHUNK_COLS columns whose rays are ordered in 4x2 pixel tiles, so each
- * packet of SSG_RT_PACKET rays Embree traces together covers a compact patch of the
- * screen (coherent traversal). After the chunk is traced, each hit is shaded on its own.
- * A pixel depends only on its own ray, so the result does not depend on the threads. */
+ * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows; a band's rows are cut into
+ * segments of CHUNK pixels. A segment's primary rays go to Embree as one coherent ray
+ * stream (rt.h), in pixel order. The hits are then gathered (vertex normals, material,
+ * texture: the only scattered reads) into structure-of-arrays scratch, and the rest,
+ * lighting included, is straight-line arithmetic over those arrays that the compiler can
+ * vectorise, ending in contiguous stores into the output planes. A background pixel
+ * gathers zeros and so comes out 0 everywhere without a branch. A pixel depends only on
+ * its own ray, so the result does not depend on the threads. */
 #include <math.h>
 #include <string.h>
 
@@ -12,7 +15,10 @@
 #include "rt.h"
 #include "scene.h"
 
-enum { ROWS_PER_BAND = 4, CHUNK_COLS = 64, CHUNK = 2 * CHUNK_COLS };
+enum { ROWS_PER_BAND = 4, CHUNK = 128 };
+
+/* Below float precision for any unit-scale vector; keeps 1/sqrt finite for a zero one. */
+#define TINY 1e-30f
 
 struct job {
     const struct ssg_gbuffer_consts *c;
@@ -21,77 +27,48 @@ struct job {
     int w, h;
 };
 
-/* The rays of one chunk and their hits. */
+/* One row segment, pixel by pixel. */
 struct chunk {
-    int count;
-    int px[CHUNK], py[CHUNK];                           /* the pixel of each ray */
-    float vx[CHUNK], vy[CHUNK];                         /* view direction (z = -1) */
-    float ox[CHUNK], oy[CHUNK], oz[CHUNK];              /* world origin: the eye */
-    float dx[CHUNK], dy[CHUNK], dz[CHUNK];              /* world direction */
+    int count;                                /* pixels */
+    int any_specular;                         /* a material here has a specular colour */
+    float ox[CHUNK], oy[CHUNK], oz[CHUNK];    /* ray origins: the eye */
+    float wx[CHUNK], wy[CHUNK], wz[CHUNK];    /* ray directions, world */
+    float vx[CHUNK], vy[CHUNK];               /* the same in view space (z = -1) */
     struct ssg_hit hits[CHUNK];
+    float t[CHUNK];                           /* depth, 0 = background */
+    float nx[CHUNK], ny[CHUNK], nz[CHUNK];    /* world normal, facing the camera */
+    float nvx[CHUNK], nvy[CHUNK], nvz[CHUNK]; /* view normal */
+    float px[CHUNK], py[CHUNK], pz[CHUNK];    /* world hit point */
+    float ux[CHUNK], uy[CHUNK], uz[CHUNK];    /* unit vector to the camera */
+    float ar[CHUNK], ag[CHUNK], ab[CHUNK];    /* albedo */
+    float sr[CHUNK], sg[CHUNK], sb[CHUNK];    /* specular colour */
+    float shin[CHUNK];                        /* shininess */
+    float lx[CHUNK], ly[CHUNK], lz[CHUNK];    /* one light: unit direction to it */
+    float e[CHUNK], ndh[CHUNK], spec[CHUNK];  /* its irradiance, N.H and (N.H)^s */
+    float lr[CHUNK], lg[CHUNK], lb[CHUNK];    /* direct light */
 };
 
-/* One surface point, everything shading needs, in world space unless named view. */
-struct surface {
-    float p[3];      /* hit point */
-    float n[3];      /* unit normal facing the camera */
-    float nv[3];     /* the same in view space */
-    float v[3];      /* unit direction towards the camera */
-    float albedo[3];
-    const struct ssg_material *m;
-};
-
-static void rot_apply(const float r[9], const float a[3], float out[3])
-{
-    for (int i = 0; i < 3; i++)
-        out[i] = r[3 * i] * a[0] + r[3 * i + 1] * a[1] + r[3 * i + 2] * a[2];
-}
-
-static void rot_apply_t(const float r[9], const float a[3], float out[3])
-{
-    for (int i = 0; i < 3; i++)
-        out[i] = r[i] * a[0] + r[3 + i] * a[1] + r[6 + i] * a[2];
-}
-
-static float dot3(const float a[3], const float b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void normalize3(float v[3])
-{
-    float len2 = dot3(v, v);
-    float s = len2 > 0.0f ? 1.0f / sqrtf(len2) : 0.0f;
-    v[0] *= s, v[1] *= s, v[2] *= s;
-}
-
-/* Rays for rows y and y+1 (when inside the image), columns [x0, x0 + CHUNK_COLS), in 4x2
- * tiles (8x1 when only one row is left). */
-static void make_rays(const struct job *j, struct chunk *k, int x0, int y, int rows)
+/* The rays of pixels [x0, x0 + count) of row y. */
+static void make_rays(const struct job *j, struct chunk *k, int x0, int y)
 {
     const struct ssg_gbuffer_consts *c = j->c;
-    int tile_w = SSG_RT_PACKET / rows, x1 = x0 + CHUNK_COLS < j->w ? x0 + CHUNK_COLS : j->w;
-    float inv_f = 1.0f / c->proj.f;
-    k->count = 0;
-    for (int tx = x0; tx < x1; tx += tile_w)
-        for (int lane = 0; lane < SSG_RT_PACKET; lane++) {
-            int x = tx + lane % tile_w, yy = y + lane / tile_w;
-            if (x >= x1)
-                continue;
-            int i = k->count++;
-            float dv[3] = {((float)x + 0.5f - c->proj.cx) * inv_f,
-                           -((float)yy + 0.5f - c->proj.cy) * inv_f, -1.0f}, dw[3];
-            rot_apply_t(c->rot, dv, dw);
-            k->px[i] = x, k->py[i] = yy;
-            k->vx[i] = dv[0], k->vy[i] = dv[1];
-            k->ox[i] = c->eye[0], k->oy[i] = c->eye[1], k->oz[i] = c->eye[2];
-            k->dx[i] = dw[0], k->dy[i] = dw[1], k->dz[i] = dw[2];
-        }
+    const float *r = c->rot;
+    float inv_f = 1.0f / c->proj.f, vy = -((float)y + 0.5f - c->proj.cy) * inv_f;
+    k->count = x0 + CHUNK < j->w ? CHUNK : j->w - x0;
+    for (int s = 0; s < k->count; s++) {
+        k->vx[s] = ((float)(x0 + s) + 0.5f - c->proj.cx) * inv_f;
+        k->vy[s] = vy;
+    }
+    for (int s = 0; s < k->count; s++) { /* world = rot^T * view, view z = -1 */
+        k->wx[s] = r[0] * k->vx[s] + r[3] * vy - r[6];
+        k->wy[s] = r[1] * k->vx[s] + r[4] * vy - r[7];
+        k->wz[s] = r[2] * k->vx[s] + r[5] * vy - r[8];
+    }
 }
 
 static void trace(const struct job *j, struct chunk *k)
 {
-    struct ssg_rays rays = {k->count, k->ox, k->oy, k->oz, k->dx, k->dy, k->dz,
+    struct ssg_rays rays = {k->count, k->ox, k->oy, k->oz, k->wx, k->wy, k->wz,
                             j->c->near_z, j->c->far_z};
     ssg_rt_intersect_rays(j->scene->rt, &rays, k->hits);
 }
@@ -113,23 +90,26 @@ static void sample_texture(const struct ssg_texture *t, float u, float v, float 
         out[i] = (1 - ay) * ((1 - ax) * a[i] + ax * b[i]) + ay * ((1 - ax) * cc[i] + ax * d[i]);
 }
 
-static void surface_albedo(const struct ssg_scene *s, const struct ssg_mesh *m,
-                           const uint32_t *tri, const struct ssg_hit *h, struct surface *sf)
+/* Material albedo times the texture at the hit's interpolated uv. */
+static void gather_albedo(const struct ssg_scene *s, const struct ssg_mesh *m,
+                          const struct ssg_material *mat, const uint32_t *tri,
+                          const struct ssg_hit *h, float out[3])
 {
-    memcpy(sf->albedo, sf->m->albedo, sizeof sf->albedo);
-    if (sf->m->texture < 0 || !m->uvs)
+    memcpy(out, mat->albedo, 3 * sizeof(float));
+    if (mat->texture < 0 || !m->uvs)
         return;
-    float w0 = 1.0f - h->u - h->v, uv[2], tex[3];
+    float w0 = 1.0f - h->u - h->v, uv[2];
     for (int i = 0; i < 2; i++)
         uv[i] = w0 * m->uvs[2 * tri[0] + i] + h->u * m->uvs[2 * tri[1] + i] +
                 h->v * m->uvs[2 * tri[2] + i];
-    sample_texture(&s->textures[sf->m->texture], uv[0], uv[1], tex);
+    sample_texture(&s->textures[mat->texture], uv[0], uv[1], out);
     for (int i = 0; i < 3; i++)
-        sf->albedo[i] *= tex[i];
+        out[i] *= mat->albedo[i];
 }
 
-static void surface_normal(const struct ssg_mesh *m, const uint32_t *tri,
-                           const struct ssg_hit *h, int face, float n[3])
+/* Interpolated vertex normal, or the face normal; either unnormalised. */
+static void gather_normal(const struct ssg_mesh *m, const uint32_t *tri,
+                          const struct ssg_hit *h, int face, float n[3])
 {
     if (face) {
         const float *p0 = &m->positions[3 * tri[0]], *p1 = &m->positions[3 * tri[1]];
@@ -139,107 +119,173 @@ static void surface_normal(const struct ssg_mesh *m, const uint32_t *tri,
         n[0] = e1[1] * e2[2] - e1[2] * e2[1];
         n[1] = e1[2] * e2[0] - e1[0] * e2[2];
         n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    } else {
-        float w0 = 1.0f - h->u - h->v;
-        for (int i = 0; i < 3; i++)
-            n[i] = w0 * m->normals[3 * tri[0] + i] + h->u * m->normals[3 * tri[1] + i] +
-                   h->v * m->normals[3 * tri[2] + i];
-    }
-    normalize3(n);
-}
-
-/* Builds the surface of hit i of the chunk; returns its view-space depth. */
-static float make_surface(const struct job *j, const struct chunk *k, int i, struct surface *sf)
-{
-    const struct ssg_hit *h = &k->hits[i];
-    const struct ssg_mesh *m = &j->scene->meshes[h->mesh];
-    const uint32_t *tri = &m->indices[3 * (size_t)h->triangle];
-    const float dw[3] = {k->dx[i], k->dy[i], k->dz[i]}, dv[3] = {k->vx[i], k->vy[i], -1.0f};
-    sf->m = &j->scene->materials[m->material];
-    surface_normal(m, tri, h, j->c->p.normals == SSG_GBUFFER_NORMALS_FACE, sf->n);
-    rot_apply(j->c->rot, sf->n, sf->nv);
-    if (dot3(sf->nv, dv) > 0.0f) /* seen from behind: shade the side facing the camera */
-        for (int a = 0; a < 3; a++)
-            sf->n[a] = -sf->n[a], sf->nv[a] = -sf->nv[a];
-    for (int a = 0; a < 3; a++) {
-        sf->p[a] = j->c->eye[a] + h->t * dw[a];
-        sf->v[a] = -dw[a];
-    }
-    normalize3(sf->v);
-    surface_albedo(j->scene, m, tri, h, sf);
-    return h->t;
-}
-
-/* Lambert + Blinn-Phong of every light at the surface, no shadows (gbuffer.c). */
-static void direct_light(const struct ssg_scene *s, const struct surface *sf, float out[3])
-{
-    const struct ssg_material *m = sf->m;
-    int specular = m->specular[0] > 0.0f || m->specular[1] > 0.0f || m->specular[2] > 0.0f;
-    out[0] = out[1] = out[2] = 0.0f;
-    for (int li = 0; li < s->light_count; li++) {
-        const struct ssg_light *l = &s->lights[li];
-        float dir[3], falloff = 1.0f;
-        if (l->kind == SSG_LIGHT_POINT) {
-            for (int a = 0; a < 3; a++)
-                dir[a] = l->position[a] - sf->p[a];
-            float d2 = dot3(dir, dir);
-            falloff = d2 > 0.0f ? 1.0f / d2 : 0.0f;
-            normalize3(dir);
-        } else {
-            for (int a = 0; a < 3; a++)
-                dir[a] = -l->direction[a];
-        }
-        float ndl = dot3(sf->n, dir);
-        if (ndl <= 0.0f)
-            continue;
-        float spec = 0.0f;
-        if (specular) {
-            float hv[3] = {dir[0] + sf->v[0], dir[1] + sf->v[1], dir[2] + sf->v[2]};
-            normalize3(hv);
-            float ndh = dot3(sf->n, hv);
-            spec = ndh > 0.0f ? powf(ndh, m->shininess) : 0.0f;
-        }
-        float e = l->intensity * ndl * falloff;
-        for (int a = 0; a < 3; a++)
-            out[a] += (sf->albedo[a] * (float)(1.0 / M_PI) + m->specular[a] * spec) * l->color[a] * e;
-    }
-}
-
-static void write_pixel(const struct job *j, const struct chunk *k, int i)
-{
-    size_t o = (size_t)k->py[i] * (size_t)j->w + (size_t)k->px[i];
-    if (k->hits[i].mesh < 0) {
-        for (int a = 0; a < 3; a++)
-            j->pos[a][o] = j->nrm[a][o] = j->alb[a][o] = j->dir[a][o] = 0.0f;
-        j->depth[o] = 0.0f;
         return;
     }
-    struct surface sf;
-    float t = make_surface(j, k, i, &sf), direct[3];
-    direct_light(j->scene, &sf, direct);
-    const float p[3] = {t * k->vx[i], t * k->vy[i], -t};
-    for (int a = 0; a < 3; a++) {
-        j->pos[a][o] = p[a];
-        j->nrm[a][o] = sf.nv[a];
-        j->alb[a][o] = sf.albedo[a];
-        j->dir[a][o] = direct[a];
+    float w0 = 1.0f - h->u - h->v;
+    for (int i = 0; i < 3; i++)
+        n[i] = w0 * m->normals[3 * tri[0] + i] + h->u * m->normals[3 * tri[1] + i] +
+               h->v * m->normals[3 * tri[2] + i];
+}
+
+/* The scattered reads: per hit, its normal, depth and material. */
+static void gather(const struct job *j, struct chunk *k)
+{
+    const struct ssg_scene *s = j->scene;
+    int face = j->c->p.normals == SSG_GBUFFER_NORMALS_FACE;
+    k->any_specular = 0;
+    for (int i = 0; i < k->count; i++) {
+        const struct ssg_hit *h = &k->hits[i];
+        float n[3] = {0, 0, 0}, albedo[3] = {0, 0, 0}, spec[3] = {0, 0, 0}, shin = 1;
+        if (h->mesh >= 0) {
+            const struct ssg_mesh *m = &s->meshes[h->mesh];
+            const struct ssg_material *mat = &s->materials[m->material];
+            const uint32_t *tri = &m->indices[3 * (size_t)h->triangle];
+            gather_normal(m, tri, h, face, n);
+            gather_albedo(s, m, mat, tri, h, albedo);
+            memcpy(spec, mat->specular, sizeof spec);
+            shin = mat->shininess;
+            k->any_specular |= spec[0] > 0.0f || spec[1] > 0.0f || spec[2] > 0.0f;
+        }
+        k->t[i] = h->mesh >= 0 ? h->t : 0.0f;
+        k->nx[i] = n[0], k->ny[i] = n[1], k->nz[i] = n[2];
+        k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
+        k->sr[i] = spec[0], k->sg[i] = spec[1], k->sb[i] = spec[2];
+        k->shin[i] = shin;
     }
-    j->depth[o] = t;
+}
+
+/* Unit normals turned to face the camera, in world and view space, and hit points. */
+static void geometry(const struct job *j, struct chunk *k)
+{
+    const float *r = j->c->rot, *eye = j->c->eye;
+    for (int s = 0; s < k->count; s++) {
+        float inv = 1.0f / sqrtf(k->nx[s] * k->nx[s] + k->ny[s] * k->ny[s] +
+                                 k->nz[s] * k->nz[s] + TINY);
+        float nx = k->nx[s] * inv, ny = k->ny[s] * inv, nz = k->nz[s] * inv;
+        float vx = r[0] * nx + r[1] * ny + r[2] * nz;
+        float vy = r[3] * nx + r[4] * ny + r[5] * nz;
+        float vz = r[6] * nx + r[7] * ny + r[8] * nz;
+        /* seen from behind (n . view direction > 0): shade the side facing the camera */
+        float flip = 1.0f - 2.0f * (float)(vx * k->vx[s] + vy * k->vy[s] - vz > 0.0f);
+        k->nx[s] = flip * nx, k->ny[s] = flip * ny, k->nz[s] = flip * nz;
+        k->nvx[s] = flip * vx, k->nvy[s] = flip * vy, k->nvz[s] = flip * vz;
+        k->px[s] = eye[0] + k->t[s] * k->wx[s];
+        k->py[s] = eye[1] + k->t[s] * k->wy[s];
+        k->pz[s] = eye[2] + k->t[s] * k->wz[s];
+    }
+}
+
+/* Unit direction to the camera; only the specular term needs it. */
+static void view_vectors(struct chunk *k)
+{
+    for (int s = 0; s < k->count; s++) {
+        float inv = 1.0f / sqrtf(k->wx[s] * k->wx[s] + k->wy[s] * k->wy[s] + k->wz[s] * k->wz[s]);
+        k->ux[s] = -k->wx[s] * inv, k->uy[s] = -k->wy[s] * inv, k->uz[s] = -k->wz[s] * inv;
+    }
+}
+
+/* Irradiance E = intensity * max(0, N.L) / d^2 of a point light, and unit L. */
+static void point_light(struct chunk *k, const struct ssg_light *l)
+{
+    for (int s = 0; s < k->count; s++) {
+        float lx = l->position[0] - k->px[s], ly = l->position[1] - k->py[s];
+        float lz = l->position[2] - k->pz[s];
+        float inv = 1.0f / sqrtf(lx * lx + ly * ly + lz * lz + TINY);
+        lx *= inv, ly *= inv, lz *= inv;
+        float ndl = k->nx[s] * lx + k->ny[s] * ly + k->nz[s] * lz;
+        k->e[s] = l->intensity * (ndl > 0.0f ? ndl : 0.0f) * inv * inv;
+        k->lx[s] = lx, k->ly[s] = ly, k->lz[s] = lz;
+    }
+}
+
+/* Irradiance E = intensity * max(0, N.L) of a directional light, and L. */
+static void directional_light(struct chunk *k, const struct ssg_light *l)
+{
+    const float lx = -l->direction[0], ly = -l->direction[1], lz = -l->direction[2];
+    for (int s = 0; s < k->count; s++) {
+        float ndl = k->nx[s] * lx + k->ny[s] * ly + k->nz[s] * lz;
+        k->e[s] = l->intensity * (ndl > 0.0f ? ndl : 0.0f);
+        k->lx[s] = lx, k->ly[s] = ly, k->lz[s] = lz;
+    }
+}
+
+/* Blinn-Phong (N.H)^shininess with H = normalize(L + V), where the light reaches. */
+static void specular(struct chunk *k)
+{
+    for (int s = 0; s < k->count; s++) {
+        float hx = k->lx[s] + k->ux[s], hy = k->ly[s] + k->uy[s], hz = k->lz[s] + k->uz[s];
+        float hinv = 1.0f / sqrtf(hx * hx + hy * hy + hz * hz + TINY);
+        float ndh = (k->nx[s] * hx + k->ny[s] * hy + k->nz[s] * hz) * hinv;
+        k->ndh[s] = ndh > 0.0f ? ndh : 0.0f;
+    }
+    for (int s = 0; s < k->count; s++) /* powf does not vectorise: a loop of its own */
+        k->spec[s] = k->e[s] > 0.0f ? powf(k->ndh[s], k->shin[s]) : 0.0f;
+}
+
+/* Sums every light's Lambert + Blinn-Phong term into lr, lg, lb (gbuffer.c). */
+static void lighting(const struct job *j, struct chunk *k)
+{
+    const struct ssg_scene *sc = j->scene;
+    const float inv_pi = (float)(1.0 / M_PI);
+    for (int s = 0; s < k->count; s++) {
+        k->lr[s] = k->lg[s] = k->lb[s] = 0.0f;
+        k->spec[s] = 0.0f;
+    }
+    if (k->any_specular)
+        view_vectors(k);
+    for (int li = 0; li < sc->light_count; li++) {
+        const struct ssg_light *l = &sc->lights[li];
+        if (l->kind == SSG_LIGHT_POINT)
+            point_light(k, l);
+        else
+            directional_light(k, l);
+        if (k->any_specular) /* matte chunks (most of a typical frame) skip it */
+            specular(k);
+        for (int s = 0; s < k->count; s++) {
+            k->lr[s] += (k->ar[s] * inv_pi + k->sr[s] * k->spec[s]) * l->color[0] * k->e[s];
+            k->lg[s] += (k->ag[s] * inv_pi + k->sg[s] * k->spec[s]) * l->color[1] * k->e[s];
+            k->lb[s] += (k->ab[s] * inv_pi + k->sb[s] * k->spec[s]) * l->color[2] * k->e[s];
+        }
+    }
+}
+
+/* Contiguous stores of the segment into the output planes. */
+static void store(const struct job *j, const struct chunk *k, size_t o)
+{
+    size_t bytes = sizeof(float) * (size_t)k->count;
+    for (int x = 0; x < k->count; x++) {
+        float t = k->t[x];
+        j->pos[0][o + x] = t * k->vx[x];
+        j->pos[1][o + x] = t * k->vy[x];
+        j->pos[2][o + x] = 0.0f - t; /* +0, not -0, for background */
+        j->depth[o + x] = t;
+    }
+    memcpy(&j->nrm[0][o], k->nvx, bytes);
+    memcpy(&j->nrm[1][o], k->nvy, bytes);
+    memcpy(&j->nrm[2][o], k->nvz, bytes);
+    memcpy(&j->alb[0][o], k->ar, bytes);
+    memcpy(&j->alb[1][o], k->ag, bytes);
+    memcpy(&j->alb[2][o], k->ab, bytes);
+    memcpy(&j->dir[0][o], k->lr, bytes);
+    memcpy(&j->dir[1][o], k->lg, bytes);
+    memcpy(&j->dir[2][o], k->lb, bytes);
 }
 
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
     struct chunk k;
-    for (int y = y0; y < y1; y += 2) {
-        int n = y + 1 < y1 ? 2 : 1;
-        for (int x0 = 0; x0 < j->w; x0 += CHUNK_COLS) {
-            make_rays(j, &k, x0, y, n);
+    for (int s = 0; s < CHUNK; s++)
+        k.ox[s] = j->c->eye[0], k.oy[s] = j->c->eye[1], k.oz[s] = j->c->eye[2];
+    for (int y = y0; y < y1; y++)
+        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+            make_rays(j, &k, x0, y);
             trace(j, &k);
-            for (int i = 0; i < k.count; i++)
-                write_pixel(j, &k, i);
+            gather(j, &k);
+            geometry(j, &k);
+            lighting(j, &k);
+            store(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
         }
-    }
 }
 
 enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -249,6 +295,12 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     struct ssg_image *const *out = io->out;
     j.w = out[SSG_GBUFFER_OUT_DEPTH]->width;
     j.h = out[SSG_GBUFFER_OUT_DEPTH]->height;
+    if (j.w != ctx->frame->width || j.h != ctx->frame->height) {
+        ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0}, "gbuffer '%s': outputs are "
+                    "%dx%d but the frame is %dx%d", ctx->instance ? ctx->instance : "", j.w,
+                    j.h, ctx->frame->width, ctx->frame->height);
+        return SSG_E_SIZE;
+    }
     for (int a = 0; a < 3; a++) {
         j.pos[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_POSITION], a);
         j.nrm[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_NORMAL], a);

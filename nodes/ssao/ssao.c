@@ -18,9 +18,11 @@
  * check (hard: |d - depth(P)| <= r; smooth: smoothstep(0, 1, r / |depth(P) - d|)).
  * Samples outside the frame, behind the camera or over background (depth 0, infinitely
  * far) are unoccluded. out = (1 - occluded / count)^power; background pixels get 1.
- * max_screen_radius > 0 caps r per pixel at max_screen_radius * depth(P) / f, so that
- * near pixels do not sample all over the screen (cache misses, and the paper's remark
- * that SSAO precision depends on the projected size of the sampled area). */
+ * max_screen_radius > 0 caps r per pixel at max_screen_radius * depth(P) / f (the capped
+ * r is also the range-check distance), so that near pixels do not sample all over the
+ * screen: their depth reads would miss the cache (see ssao_cpu.c), and section 3.1 notes
+ * that the sampled area's projected size governs what SSAO can find anyway.
+ * Normals are taken as unit (node.h); others are normalised. */
 #include <stdio.h>
 
 #include "ssao.h"

@@ -74,13 +74,16 @@ static enum ssg_err write_check(const void *params, const struct ssg_frame *fram
 const struct ssg_node_desc ssg_node_write = {
     .name = "write",
     .summary = "write the image as a float EXR with named layers and an 8-bit PNG preview",
-    .method = "OpenEXR, 32-bit float, ZIP; PNG tone curves: Reinhard et al. 2002 eq. 3, "
-              "Narkowicz 2015 ACES fit; sRGB encoding IEC 61966-2-1",
+    .method = "OpenEXR, 32-bit float, ZIP (zlib level 1); PNG tone curves: Reinhard et al. "
+              "2002 eq. 3, Narkowicz 2015 ACES fit; sRGB encoding IEC 61966-2-1",
     .doc = "Writes <out>/<name>.exr (channels R,G,B or Y of the main image, then one layer per "
            "extra key=port argument: scalar key.Y, vector key.X/Y/Z, colour key.R/G/B) and "
            "<out>/<name>.png (main image x 2^exposure, tone-mapped, sRGB-encoded 8-bit; gray "
-           "for a scalar image). The output directory is created if missing. Files are "
-           "written under a temporary name and renamed, so a failed run leaves no partial file.",
+           "for a scalar image). The tone curve defaults to aces, which keeps the highlights "
+           "of a shaded frame from clipping; tonemap=clamp shows data in [0, 1] (AO, albedo) "
+           "unchanged. The output directory is created if missing. Files are written under a "
+           "temporary name and renamed, so a failed run leaves no partial file; the same "
+           "pixels always give the same bytes.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .extra_inputs = 1,
