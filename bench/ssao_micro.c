@@ -1,12 +1,15 @@
 /* ssao_micro.c - timing of the `ssao` node's CPU kernel on a synthetic 1920x1080 G-buffer
- * (not a test: it asserts nothing about speed). Prints the median of several runs of
- * run_cpu alone (prepare and allocation excluded), for the default 16-sample kernel.
+ * (not a test: it asserts nothing about speed). Prints the median wall time of several
+ * runs of run_cpu alone (prepare and allocation excluded), the median CPU time of all
+ * threads (on a shared machine wall time also counts other processes), and a hash of the
+ * output bits, to compare builds (the AVX2 and SSE paths must give the same hash).
  *
  * Scene: an inner corner (a floor and a wall at 45 degrees to the view, 5 units away) with
  * a sinusoidal relief on the floor, so normals vary and samples land all over the depth
- * plane as in a real frame. Build against a Release libssgraph, e.g.
- *   cc -O3 -march=x86-64-v2 -fopenmp -Icore -Inodes bench/ssao_micro.c \
- *      build-release/libssgraph.a <libssgraph's link libraries> -lm
+ * plane as in a real frame. Default kernel: halton count=16 with its rotation tile.
+ * Build against a Release libssgraph, e.g. in CMake:
+ *   add_executable(ssao_micro bench/ssao_micro.c)
+ *   target_link_libraries(ssao_micro PRIVATE ssgraph)
  * Usage: ssao_micro [runs=15] [samples=16] [threads=0 (all)] [ssao param=value ...] */
 #include <math.h>
 #include <omp.h>

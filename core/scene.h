@@ -7,7 +7,7 @@
  *   point_light(position=[0,1.9,0], color=[1,1,1], intensity=4)
  *   directional_light(direction=[-1,-2,-1], color=[1,1,1], intensity=1)
  *   environment(color=[1,1,1], intensity=0.3, image="probe.hdr")
- *   plane(material=white, center=[0,0,0], size=[2,2], normal=[0,1,0]) ... box, sphere
+ *   plane(material=white, center=[0,0,0], size=[2,0,2], normal=[0,1,0]) ... box, sphere
  *   mesh("bunny.gltf", material=white, translate=[..], rotate=[..], scale=1)
  * Each entity's arguments are a parameter table (params.h). Relative paths resolve against
  * the scene file. The scene owns all its memory; ssg_scene_destroy frees it. A loaded scene
@@ -90,7 +90,7 @@ enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene 
 void ssg_scene_destroy(struct ssg_scene **scene);
 
 /* The camera's view matrix (world -> view, column-major 4x4) for the frame conventions of
- * node.h, and the world->view transforms of points and directions. */
+ * node.h. */
 void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16]);
 
 #endif

@@ -483,8 +483,6 @@ static void test_floor_ceiling(const struct ssg_image *kernel, const struct ssg_
                                  H / 2 + 33, 0, &n2);
         CHECK(n1 == 32 * 16 && n2 == 32 * 16);
         CHECK(v_cov < v_open);
-        if (getenv("SSAO_DEBUG"))
-            fprintf(stderr, "floor: open %.4f, under ceiling %.4f\n", v_open, v_cov);
         int bg = 0, bg_ones = 0;
         for (size_t i = 0; i < (size_t)W * H; i++)
             if (go.which[i] < 0) {
