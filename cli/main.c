@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "ssgraph.h"
 
@@ -216,10 +215,9 @@ static int check_inputs(const struct options *o)
 static enum ssg_err write_outputs(const struct ssg_outputs *out, const char *dir,
                                   struct ssg_diags *d)
 {
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "%s: error: cannot create output directory: %s\n", dir, strerror(errno));
-        return SSG_E_IO;
-    }
+    enum ssg_err made = ssg_make_dirs(dir, d);
+    if (made)
+        return made;
     for (int i = 0; i < out->count; i++) {
         char path[1200];
         snprintf(path, sizeof path, "%s/%s.exr", dir, out->names[i]);

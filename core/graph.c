@@ -8,6 +8,7 @@
 
 #include "graph.h"
 #include "image.h"
+#include "metrics.h"
 
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
 {
@@ -103,6 +104,7 @@ struct run {
     const struct ssg_run_options *opt;
     struct ssg_diags *diags;
     double *ms;
+    struct ssg_metrics metrics;
 };
 
 static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
@@ -147,6 +149,11 @@ static void release_all(struct run *r)
     }
 }
 
+static const char *out_dir(const struct run *r)
+{
+    return r->opt->out_dir ? r->opt->out_dir : "out";
+}
+
 static enum ssg_err run_node(struct run *r, int p)
 {
     struct ssg_graph *g = r->g;
@@ -161,8 +168,8 @@ static enum ssg_err run_node(struct run *r, int p)
     if (e)
         return e;
     struct ssg_io io = {in, n->out_img, n->extra_count, n->extra_names, extra, n->extra_types};
-    struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene,
-                               r->opt->out_dir ? r->opt->out_dir : "out", r->diags};
+    struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene, out_dir(r), r->diags,
+                               &r->metrics};
     e = ssg_node_execute(n->desc, &ctx, n->params, &io, &r->ms[p]);
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
@@ -189,7 +196,8 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
 {
     struct ssg_run_options defaults = {0};
     struct run r = {g, ssg_pool_create(), options ? options : &defaults, diags,
-                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof(double))};
+                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof(double)),
+                    {0}};
     if (!r.pool || !r.ms) {
         ssg_pool_destroy(&r.pool);
         free(r.ms);
@@ -203,8 +211,17 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         e = run_node(&r, p);
         release_after(&r, p);
     }
-    if (!e && !r.opt->quiet)
+    if (!e && !r.opt->quiet) {
         print_timings(&r, ssg_now_ms() - t0);
+        ssg_metrics_print(&r.metrics, r.opt->log ? r.opt->log : stdout);
+    }
+    if (!e && r.metrics.count) {
+        char path[1100];
+        snprintf(path, sizeof path, "%s/metrics.json", out_dir(&r));
+        e = ssg_make_dirs(out_dir(&r), diags);
+        if (!e)
+            e = ssg_metrics_write_json(&r.metrics, path, diags);
+    }
     release_all(&r);
     ssg_pool_destroy(&r.pool);
     free(r.ms);

@@ -26,6 +26,7 @@
 #endif
 
 struct ssg_scene;
+struct ssg_metrics;
 
 /* Port types. An input port accepts a mask of them; an output produces one (or copies the
  * type of an input, see same_as). */
@@ -65,7 +66,12 @@ struct ssg_node_ctx {
     const struct ssg_scene *scene; /* NULL when running without a scene */
     const char *out_dir;           /* where sink nodes write files */
     struct ssg_diags *diags;       /* for errors while running */
+    struct ssg_metrics *metrics;   /* where ssg_metric_report goes; NULL = discarded */
 };
+
+/* Reports a named scalar result of this node (e.g. "rmse"); printed after the run and
+ * written to <out>/metrics.json. Call from the node's thread, not inside row bands. */
+void ssg_metric_report(const struct ssg_node_ctx *ctx, const char *name, double value);
 
 /* The images of one run: inputs in port order (NULL = unconnected optional), outputs in
  * port order (allocated by the executor to the shape check() gave), then extra inputs. */
@@ -92,7 +98,8 @@ struct ssg_node_desc {
     size_t params_size;  /* sizeof the params struct */
     size_t consts_size;  /* sizeof what prepare() writes; 0 = none */
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
-    int is_sink;         /* 1 = writes files; never pruned, has no outputs */
+    int is_sink;         /* 1 = always runs (writes files or reports metrics); the
+                            runtime keeps what it reads and prunes what no sink reads */
 
     /* Optional. Cross-parameter checks and output shapes. `out` arrives filled with the
        default shapes (frame size, type channels, or same_as); a node with kernel or pattern

@@ -7,6 +7,7 @@
 
 #include "exec.h"
 #include "image.h"
+#include "metrics.h"
 #include "parse.h"
 
 struct single {
@@ -126,9 +127,17 @@ static enum ssg_err run_single(struct single *s, const void *params, const struc
     }
     struct ssg_io io = {s->in, outputs->images, s->extra_count, s->extra_names, s->extra,
                         s->extra_types};
-    struct ssg_node_ctx ctx = {s->d->name, f, NULL, "out", diags};
+    struct ssg_metrics metrics = {0};
+    struct ssg_node_ctx ctx = {s->d->name, f, NULL, "out", diags, &metrics};
     double ms;
-    return ssg_node_execute(s->d, &ctx, params, &io, &ms);
+    e = ssg_node_execute(s->d, &ctx, params, &io, &ms);
+    for (int i = 0; i < metrics.count && i < 16; i++) {
+        snprintf(outputs->metric_names[i], sizeof outputs->metric_names[i], "%s",
+                 metrics.items[i].name);
+        outputs->metric_values[i] = metrics.items[i].value;
+        outputs->metric_count = i + 1;
+    }
+    return e;
 }
 
 enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, int input_count,

@@ -339,7 +339,7 @@ void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream)
     char def[128], expected[256];
     default_text(p, def, sizeof def);
     expected_text(p, expected, sizeof expected);
-    fprintf(stream, "  %-16s %-8s default %-14s %s\n  %16s %s\n", p->name, type_name(p), def,
+    fprintf(stream, "  %-18s %-8s default %-14s %s\n  %18s %s\n", p->name, type_name(p), def,
             expected, "", p->help ? p->help : "");
 }
 

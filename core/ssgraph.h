@@ -86,6 +86,9 @@ enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_imag
 enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
                              struct ssg_diags *diags);
 
+/* Creates `dir` and every missing parent (mkdir -p); an existing non-directory is an error. */
+enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
+
 /* What a screen-space node needs to know about the frame besides its images. */
 struct ssg_frame {
     int width, height;  /* pixels of the full-resolution frame */
@@ -121,7 +124,9 @@ enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overri
 /* Same, validating only: does not load the scene's meshes or images. */
 enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
                              struct ssg_diags *diags);
-/* Runs every node in dependency order; writes files into options->out_dir. */
+/* Runs every node in dependency order; writes files into options->out_dir. Metrics that
+ * nodes report (compare) are printed after the timings and written to
+ * <out_dir>/metrics.json. */
 enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
                            struct ssg_diags *diags);
 void ssg_graph_destroy(struct ssg_graph **graph);
@@ -132,11 +137,15 @@ struct ssg_binding {
     const struct ssg_image *image;
 };
 
-/* The outputs of a single-node run, in the node's port order. */
+/* The outputs of a single-node run, in the node's port order, and the metrics it reported
+ * (compare's rmse, psnr, ...). */
 struct ssg_outputs {
     int count;
     const char *names[8];
     struct ssg_image *images[8];  /* owned; released by ssg_outputs_release */
+    int metric_count;
+    char metric_names[16][32];
+    double metric_values[16];
 };
 void ssg_outputs_release(struct ssg_outputs *outputs);
 

@@ -31,6 +31,10 @@ expect_exit 1 "unknown node 'nope'" "$BIN" describe nope
 expect_exit 2 "--size expects" "$BIN" run graphs/ssao.graph --size 12x
 expect_exit 2 "unknown option '--frob'" "$BIN" run graphs/ssao.graph --frob 1
 
+# --- the node reference is generated from the descriptors and must be current ---
+"$BIN" docs | diff -u docs/nodes.md - > "$TMP/docs.diff" \
+    || fail "docs/nodes.md is stale: run '$BIN docs > docs/nodes.md' ($(head -c 300 "$TMP/docs.diff"))"
+
 # --- every graph runs end to end, and check agrees ---
 for graph in graphs/*.graph; do
     name=$(basename "$graph" .graph)

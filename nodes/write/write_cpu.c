@@ -11,35 +11,6 @@ enum { PATH_MAX_LEN = 4096 };
 
 static const struct ssg_loc nowhere = {0};
 
-/* mkdir -p: creates every missing directory of `dir`. */
-static enum ssg_err make_dirs(const char *dir, struct ssg_diags *diags)
-{
-    char buf[PATH_MAX_LEN];
-    size_t len = strlen(dir);
-    if (len >= sizeof buf) {
-        ssg_diag_file(diags, SSG_E_IO, dir, "output directory path is too long");
-        return SSG_E_IO;
-    }
-    memcpy(buf, dir, len + 1);
-    for (size_t i = 1; i <= len; i++) {
-        if (buf[i] != '/' && buf[i] != 0)
-            continue;
-        char saved = buf[i];
-        buf[i] = 0;
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            ssg_diag_file(diags, SSG_E_IO, buf, "cannot create output directory: %s",
-                          strerror(errno));
-            return SSG_E_IO;
-        }
-        buf[i] = saved;
-    }
-    struct stat st;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        ssg_diag_file(diags, SSG_E_IO, dir, "output path exists and is not a directory");
-        return SSG_E_IO;
-    }
-    return SSG_OK;
-}
 
 static enum ssg_err make_path(char *buf, size_t len, const char *dir, const char *name,
                               const char *ext, struct ssg_diags *diags)
@@ -104,7 +75,7 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
         return SSG_E_MISSING_INPUT;
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
-    enum ssg_err err = make_dirs(dir, ctx->diags);
+    enum ssg_err err = ssg_make_dirs(dir, ctx->diags);
     if (!err && p->exr && !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
         err = write_exr(ctx, io, path);
     if (!err && p->png && !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
