@@ -31,7 +31,8 @@ static const char *const usage_text =
     "\n"
     "commands:\n"
     "  run FILE        validate and run a graph; writes into --out (default out/)\n"
-    "  check FILE      validate a graph and its scene without running it\n"
+    "  check FILE      validate a graph and its scene without running it (FILE.scene:\n"
+    "                  validate a scene and load its meshes)\n"
     "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
@@ -163,8 +164,11 @@ static int report(struct ssg_diags *d, enum ssg_err e)
 static int cmd_run(const struct options *o, int check_only)
 {
     struct ssg_diags d = {0};
+    size_t len = strlen(o->file);
     if (check_only) {
-        enum ssg_err e = ssg_graph_check(o->file, &o->ov, &d);
+        int is_scene = len > 6 && !strcmp(o->file + len - 6, ".scene");
+        enum ssg_err e = is_scene ? ssg_scene_check(o->file, &d)
+                                  : ssg_graph_check(o->file, &o->ov, &d);
         if (!e)
             printf("%s: ok\n", o->file);
         return report(&d, e);

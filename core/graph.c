@@ -86,6 +86,14 @@ enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
     return e;
 }
 
+enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags)
+{
+    struct ssg_scene *scene = NULL;
+    enum ssg_err e = ssg_scene_load(path, 1, &scene, diags);
+    ssg_scene_destroy(&scene);
+    return e;
+}
+
 void ssg_graph_destroy(struct ssg_graph **graph)
 {
     if (!graph || !*graph)

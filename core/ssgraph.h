@@ -131,6 +131,10 @@ enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options
                            struct ssg_diags *diags);
 void ssg_graph_destroy(struct ssg_graph **graph);
 
+/* Parses and validates a scene file and every file it names (meshes included, so a broken
+ * glTF is found), without building the ray-tracing scene. */
+enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
+
 /* One input of a single-node run: an image bound to a named input port. */
 struct ssg_binding {
     const char *port;

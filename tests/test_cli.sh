@@ -85,7 +85,10 @@ expect_exit 1 "input 'normal' of node 'ssao' expects vector.*got 1 channels" "$B
 expect_exit 1 "cannot open" "$BIN" run "$TMP/does_not_exist.graph" --out "$TMP/none"
 printf 'scene "%s/tests/fixtures/broken_gltf.scene"\ng = gbuffer()\nout = write(g.direct, "x")\n' \
     "$PWD" > "$TMP/broken.graph"
-expect_exit 1 "broken.gltf" "$BIN" run "$TMP/broken.graph" --out "$TMP/broken_out"
+expect_exit 1 "broken_gltf\.scene:3:6: error: .*broken\.gltf: .*parse error" \
+    "$BIN" run "$TMP/broken.graph" --out "$TMP/broken_out"
+expect_exit 1 "broken_gltf\.scene:3:6: error: .*broken\.gltf" \
+    "$BIN" check tests/fixtures/broken_gltf.scene
 [ -e "$TMP/broken_out/x.exr" ] && fail "a failed run left x.exr behind"
 expect_exit 1 "corrupt.exr.*error" "$BIN" node bilateral --in "in=tests/fixtures/corrupt.exr" \
     --in "depth=tests/fixtures/corrupt.exr" --out "$TMP/corrupt_out"
