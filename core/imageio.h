@@ -47,11 +47,25 @@ struct ssg_exr_layer {
     enum ssg_layer_kind kind;      /* how the channels are named; default SSG_LAYER_SCALAR */
 };
 
+/* Lossless EXR compressions, in the order of the write node's `compression` choices.
+ * Measured on an 18-channel 1080p frame: none ~0.4 s (150 MB), rle ~1.3 s (136 MB),
+ * zip ~2 s (70 MB), piz ~4 s (53 MB) on the 2-core development machine. */
+enum ssg_exr_compression {
+    SSG_EXR_ZIP,  /* zlib level 1, 16-line blocks (the default) */
+    SSG_EXR_NONE,
+    SSG_EXR_RLE,
+    SSG_EXR_PIZ,
+};
+
 /* Writes all layers into one scanline EXR with 32-bit float channels and ZIP compression.
  * Layer names must be unique, non-empty except for at most one main image, and must not
  * contain '.'. */
 enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers, int count,
                            struct ssg_diags *diags);
+/* The same with a chosen compression. */
+enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_layer *layers,
+                                      int count, enum ssg_exr_compression compression,
+                                      struct ssg_diags *diags);
 
 /* Tone mapping of the PNG preview, applied to exposure-scaled linear values. The order
  * matches the `tonemap` choices of the write node. */

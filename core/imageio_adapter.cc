@@ -450,8 +450,21 @@ enum ssg_err check_layers(const char *path, const struct ssg_exr_layer *layers, 
     return first;
 }
 
+const char *compression_name(enum ssg_exr_compression c)
+{
+    switch (c) {
+    case SSG_EXR_NONE: return "none";
+    case SSG_EXR_RLE: return "rle";
+    case SSG_EXR_PIZ: return "piz";
+    case SSG_EXR_ZIP: break;
+    }
+    /* ZIP at zlib level 1: on the frame's float layers it is about a third faster than
+       the default level for files about 1.5% larger. */
+    return "zip:1";
+}
+
 enum ssg_err write_exr(const char *path, const struct ssg_exr_layer *layers, int count,
-                       struct ssg_diags *diags)
+                       enum ssg_exr_compression compression, struct ssg_diags *diags)
 {
     enum ssg_err err = check_layers(path, layers, count, diags);
     if (err)
@@ -469,9 +482,7 @@ enum ssg_err write_exr(const char *path, const struct ssg_exr_layer *layers, int
     }
     ImageSpec spec(src.width, layers[0].image->height, (int)names.size(), TypeDesc::FLOAT);
     spec.channelnames = names;
-    /* ZIP at zlib level 1: on the frame's float layers it is about a third faster than
-       the default level for files about 1.5% larger. */
-    spec.attribute("compression", "zip:1");
+    spec.attribute("compression", compression_name(compression));
     /* OpenImageIO stamps the current time as capDate unless DateTime is set: an empty one
        keeps the bytes the same from run to run. */
     spec.attribute("DateTime", "");
@@ -554,8 +565,16 @@ extern "C" enum ssg_err ssg_image_read(const char *path, const char *layer,
 extern "C" enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers,
                                       int count, struct ssg_diags *diags)
 {
+    return ssg_exr_write_compressed(path, layers, count, SSG_EXR_ZIP, diags);
+}
+
+extern "C" enum ssg_err ssg_exr_write_compressed(const char *path,
+                                                 const struct ssg_exr_layer *layers, int count,
+                                                 enum ssg_exr_compression compression,
+                                                 struct ssg_diags *diags)
+{
     try {
-        return write_exr(path, layers, count, diags);
+        return write_exr(path, layers, count, compression, diags);
     } catch (const std::bad_alloc &) {
         return report_exception(diags, path, SSG_E_NOMEM, "out of memory while writing");
     } catch (const std::exception &e) {

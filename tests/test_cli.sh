@@ -59,6 +59,14 @@ done
 "$BIN" run graphs/ssao.graph --size 160x90 --seed 7 --out "$TMP/s7" --quiet || fail "seed run"
 cmp -s "$TMP/t1/ssao.exr" "$TMP/s7/ssao.exr" && fail "--seed 7 gave the same bytes as seed 1"
 
+# --- EXR compression: uncompressed is larger but holds the same layers ---
+"$BIN" run graphs/ssao.graph --size 160x90 --set out.compression=none --out "$TMP/raw" --quiet \
+    || fail "compression=none run"
+[ "$(stat -c %s "$TMP/raw/ssao.exr")" -gt "$(stat -c %s "$TMP/t1/ssao.exr")" ] \
+    || fail "compression=none did not give a larger EXR than zip"
+expect_exit 0 "wrote" "$BIN" node bilateral --in "in=$TMP/raw/ssao.exr:ao" \
+    --in "depth=$TMP/raw/ssao.exr:depth" --out "$TMP/raw_node"
+
 # --- overrides from the command line ---
 "$BIN" run graphs/ssao.graph --size 64x40 --set out.name='"renamed"' --out "$TMP/ov" --quiet \
     || fail "override run"

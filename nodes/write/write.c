@@ -19,6 +19,7 @@ static const struct ssg_port_desc inputs[] = {
 };
 
 static const char *const tonemaps[] = {"clamp", "reinhard", "aces", NULL};
+static const char *const compressions[] = {"zip", "none", "rle", "piz", NULL};
 
 static const struct ssg_param_desc param_table[] = {
     {.name = "name", .type = SSG_P_STRING, .offset = offsetof(struct ssg_write_params, name),
@@ -33,6 +34,10 @@ static const struct ssg_param_desc param_table[] = {
      .def = 1, .help = "write the 8-bit sRGB PNG preview"},
     {.name = "exr", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_write_params, exr),
      .def = 1, .help = "write the 32-bit float EXR with all layers"},
+    {.name = "compression", .type = SSG_P_ENUM,
+     .offset = offsetof(struct ssg_write_params, compression), .def = SSG_EXR_ZIP,
+     .choices = compressions,
+     .help = "EXR compression, all lossless: zip is small, none is ~5x faster to write"},
 };
 
 int ssg_write_name_ok(const char *name, char *why, size_t why_len)

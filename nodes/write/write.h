@@ -15,6 +15,7 @@ struct ssg_write_params {
     int tonemap;            /* PNG tone curve, enum ssg_tonemap (imageio.h); default aces */
     int png;                /* 1 = write the 8-bit PNG preview; default 1 */
     int exr;                /* 1 = write the float EXR with every layer; default 1 */
+    int compression;        /* EXR compression, enum ssg_exr_compression; default zip */
 };
 
 /* 1 when `name` is a plain file stem: not empty, at most 200 bytes, no '/', '\', "..",

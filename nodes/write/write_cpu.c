@@ -35,7 +35,7 @@ static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
 
 /* The EXR: the main image, then each extra input as a layer named by its key. */
 static enum ssg_err write_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                              const char *path)
+                              const struct ssg_write_params *p, const char *path)
 {
     enum { MAX_LAYERS = 64 };
     struct ssg_exr_layer layers[MAX_LAYERS];
@@ -57,7 +57,8 @@ static enum ssg_err write_exr(const struct ssg_node_ctx *ctx, const struct ssg_i
             return SSG_E_TYPE;
         }
     }
-    return ssg_exr_write(path, layers, io->extra_count + 1, ctx->diags);
+    return ssg_exr_write_compressed(path, layers, io->extra_count + 1,
+                                    (enum ssg_exr_compression)p->compression, ctx->diags);
 }
 
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -77,7 +78,7 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
     enum ssg_err err = ssg_make_dirs(dir, ctx->diags);
     if (!err && p->exr && !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
-        err = write_exr(ctx, io, path);
+        err = write_exr(ctx, io, p, path);
     if (!err && p->png && !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
         err = ssg_png_write(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
                             ctx->diags);
