@@ -3,9 +3,11 @@
  *   ssgraph run FILE [options]        validate, then run a graph and write its outputs
  *   ssgraph check FILE [options]      validate only (no meshes or images are loaded)
  *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR]
+ *   ssgraph compare A B [--mask M] [--json] [--peak P]
  *   ssgraph nodes | describe NODE | docs
  * Exit status: 0 success, 1 invalid input or failed run, 2 bad command line. */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +36,8 @@ static const char *const usage_text =
     "  check FILE      validate a graph and its scene without running it (FILE.scene:\n"
     "                  validate a scene and load its meshes)\n"
     "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
+    "  compare A B     RMSE, MAE, PSNR, SSIM of image A against reference B (FILE[:LAYER];\n"
+    "                  --mask M, --json, --peak P; diff image: node compare --in ...)\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n"
@@ -234,6 +238,22 @@ static enum ssg_err write_outputs(const struct ssg_outputs *out, const char *dir
     return SSG_OK;
 }
 
+/* The metrics as `name value` lines, or as one line of JSON (non-finite: null). */
+static void print_metrics(const struct ssg_outputs *out, int json)
+{
+    for (int i = 0; i < out->metric_count && !json; i++)
+        printf("%-7s %.9g\n", out->metric_names[i], out->metric_values[i]);
+    for (int i = 0; i < out->metric_count && json; i++) {
+        printf("%s\"%s\":", i ? "," : "{", out->metric_names[i]);
+        if (isfinite(out->metric_values[i]))
+            printf("%.9g", out->metric_values[i]);
+        else
+            fputs("null", stdout);
+    }
+    if (json)
+        puts(out->metric_count ? "}" : "{}");
+}
+
 static int cmd_node(const struct options *o)
 {
     struct ssg_diags d = {0};
@@ -256,8 +276,74 @@ static int cmd_node(const struct options *o)
                          &d);
     if (!e)
         e = write_outputs(&out, o->out_dir, &d);
+    if (!e)
+        print_metrics(&out, 0);
     ssg_outputs_release(&out);
     for (int i = 0; i < o->input_count; i++)
+        ssg_image_destroy((struct ssg_image **)&bind[i].image);
+    return report(&d, e);
+}
+
+/* `compare A B ...`: what cmd_compare reads from the command line. */
+struct compare_args {
+    const char *files[3]; /* a, b, mask (NULL = every pixel), each FILE[:LAYER] */
+    const char *peak;     /* --peak P, then "peak=P" for the node (default 1) */
+    int json;             /* 1 = one line of JSON instead of the table */
+};
+
+static int parse_compare(struct compare_args *c, int argc, char **argv, char *peak, size_t len)
+{
+    int n = 0;
+    memset(c, 0, sizeof *c);
+    for (int i = 0; i < argc; i++) {
+        const char *arg = argv[i], **slot = !strcmp(arg, "--mask") ? &c->files[2]
+                                          : !strcmp(arg, "--peak") ? &c->peak : NULL;
+        if (slot && i + 1 >= argc)
+            return usage_error("option '%s' needs a value", arg);
+        if (slot)
+            *slot = argv[++i];
+        else if (!strcmp(arg, "--json"))
+            c->json = 1;
+        else if (arg[0] == '-' && arg[1] == '-')
+            return usage_error("unknown option '%s'", arg);
+        else if (n < 2)
+            c->files[n++] = arg;
+        else
+            return usage_error("unexpected argument '%s'", arg);
+    }
+    char *end;
+    if (c->peak && (!(strtod(c->peak, &end) > 0) || *end || end == c->peak))
+        return usage_error("--peak expects a positive number, got '%s'", c->peak);
+    snprintf(peak, len, "peak=%s", c->peak ? c->peak : "1");
+    c->peak = peak;
+    return n == 2 ? 0 : usage_error("%s", "compare expects two image files: A B");
+}
+
+static int cmd_compare(int argc, char **argv)
+{
+    static const char *const ports[3] = {"a", "b", "mask"};
+    struct compare_args c;
+    char peak[64], specs[3][1100], names[3][64];
+    int rc = parse_compare(&c, argc, argv, peak, sizeof peak);
+    if (rc)
+        return rc;
+    struct ssg_diags d = {0};
+    struct ssg_binding bind[3] = {{0}};
+    int count = c.files[2] ? 3 : 2;
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < count; i++) {
+        snprintf(specs[i], sizeof specs[i], "%s=%s", ports[i], c.files[i]);
+        enum ssg_err r = read_input(specs[i], &bind[i], names[i], sizeof names[i], &d);
+        if (r && !e)
+            e = r;
+    }
+    struct ssg_outputs out = {0};
+    if (!e)
+        e = ssg_node_run("compare", bind, count, &c.peak, 1, NULL, &out, &d);
+    if (!e)
+        print_metrics(&out, c.json);
+    ssg_outputs_release(&out);
+    for (int i = 0; i < count; i++)
         ssg_image_destroy((struct ssg_image **)&bind[i].image);
     return report(&d, e);
 }
@@ -304,6 +390,8 @@ int main(int argc, char **argv)
     }
     if (!strcmp(cmd, "describe"))
         return argc == 3 ? cmd_describe(argv[2]) : usage_error("%s", "describe expects NODE");
+    if (!strcmp(cmd, "compare"))
+        return cmd_compare(argc - 2, argv + 2);
     if (strcmp(cmd, "run") && strcmp(cmd, "check") && strcmp(cmd, "node"))
         return usage_error("unknown command '%s'", cmd);
     struct options o;

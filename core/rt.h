@@ -47,4 +47,12 @@ void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
 int ssg_rt_occluded(const struct ssg_rt *rt, const float org[3], const float dir[3],
                     float tnear, float tfar);
 
+/* Occlusion of a batch of rays (ambient-occlusion style: many rays from one point, or
+ * from neighbouring points): occluded[i] = 1 when anything lies on ray i within
+ * [tnear, tfar], else 0; occluded may be NULL. Returns how many rays are occluded.
+ * Traced as Embree packets of 8 with the incoherent flag, the fastest style for such rays
+ * (rt.c has the measurement); the answers do not depend on how rays are batched. */
+int ssg_rt_occluded_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
+                         unsigned char *occluded);
+
 #endif

@@ -1,0 +1,144 @@
+/* compare.c - the `compare` node: how far image `a` (the method under test) is from image `b`
+ * (the reference), as metrics and as a false-colour difference image.
+ *
+ * Metrics, over the counted pixels (mask > 0.5, or all pixels without a mask), all channels:
+ *   rmse   sqrt(MSE), MSE = sum (a - b)^2 / (pixels * channels)
+ *   mae    sum |a - b| / (pixels * channels)
+ *   psnr   10 log10(peak^2 / MSE) in dB; +inf when the images are identical (JSON: null)
+ *   ssim   mean SSIM, Wang, Bovik, Sheikh and Simoncelli, "Image Quality Assessment: From
+ *          Error Visibility to Structural Similarity", IEEE TIP 13(4), 2004: eq. 13 with
+ *          the Gaussian-weighted local statistics of eqs. 14-16 (11 x 11 window, sigma 1.5,
+ *          K1 = 0.01, K2 = 0.03, L = peak), averaged as in eq. 17 over the counted pixels,
+ *          then over channels
+ *   pixels the number of pixels counted
+ * With no pixel counted, every metric but `pixels` is NaN (null in JSON).
+ *
+ * Departure from the paper, at borders and mask edges: the paper averages only windows that
+ * lie wholly inside the image. Here every counted pixel has an SSIM value, and its window
+ * uses only the pixels that are inside the image and counted, with the Gaussian weights
+ * renormalised over them. So a mask excludes pixels from the statistics of their
+ * neighbours too (background never leaks into the foreground's score), and small images
+ * have a score. Away from borders and mask edges this is the paper's SSIM exactly.
+ *
+ * The `diff` image (colour) shows the signed difference d = a - b on a blue-white-red map:
+ * t = clamp(d / scale, -1, 1); white at t = 0, pure red (1, 0, 0) at t = +1 (a above b,
+ * for AO: the method too bright, missing occlusion), pure blue (0, 0, 1) at t = -1 (a below
+ * b: too dark), linear in between. For 3-channel images d is the channel difference of
+ * largest magnitude. Pixels not counted are black. */
+#include <math.h>
+#include <stdio.h>
+
+#include "compare.h"
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_shape *a = &in[SSG_COMPARE_IN_A], *b = &in[SSG_COMPARE_IN_B];
+    const struct ssg_shape *m = &in[SSG_COMPARE_IN_MASK];
+    if (a->channels != b->channels || a->type != b->type) {
+        char ta[32], tb[32];
+        ssg_type_names(a->type, ta, sizeof ta);
+        ssg_type_names(b->type, tb, sizeof tb);
+        snprintf(why, why_len, "a and b must have the same type: a is %s (%d channel%s), b is "
+                 "%s (%d channel%s)", ta, a->channels, a->channels == 1 ? "" : "s", tb,
+                 b->channels, b->channels == 1 ? "" : "s");
+        return SSG_E_TYPE;
+    }
+    if (a->channels > SSG_COMPARE_MAX_CHANNELS) {
+        snprintf(why, why_len, "a and b have %d channels, at most %d are compared",
+                 a->channels, SSG_COMPARE_MAX_CHANNELS);
+        return SSG_E_CHANNELS;
+    }
+    if (a->width != b->width || a->height != b->height) {
+        snprintf(why, why_len, "a and b must have the same size: a is %dx%d, b is %dx%d",
+                 a->width, a->height, b->width, b->height);
+        return SSG_E_SIZE;
+    }
+    if (m->channels != 0 && (m->width != a->width || m->height != a->height)) {
+        snprintf(why, why_len, "mask must have the size of a and b (%dx%d), got %dx%d",
+                 a->width, a->height, m->width, m->height);
+        return SSG_E_SIZE;
+    }
+    /* The diff has the compared images' size, which need not be the frame's. */
+    out[0].width = a->width;
+    out[0].height = a->height;
+    out[0].channels = 3;
+    out[0].type = SSG_T_COLOR;
+    return SSG_OK;
+}
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    const struct ssg_compare_params *p = params;
+    struct ssg_compare_consts *c = consts;
+    if (!(p->scale > 0) || !(p->peak > 0)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
+                    "compare '%s': scale and peak must be positive",
+                    ctx->instance ? ctx->instance : "");
+        return SSG_E_VALUE;
+    }
+    /* Section III-C: "an 11 x 11 circular-symmetric Gaussian weighting function ... with
+       standard deviation of 1.5 samples, normalized to unit sum". */
+    double sum = 0;
+    for (int i = 0; i < SSG_COMPARE_TAPS; i++) {
+        double d = i - SSG_COMPARE_RADIUS;
+        c->gauss[i] = exp(-d * d / (2.0 * 1.5 * 1.5));
+        sum += c->gauss[i];
+    }
+    for (int i = 0; i < SSG_COMPARE_TAPS; i++)
+        c->gauss[i] /= sum;
+    c->c1 = (0.01 * p->peak) * (0.01 * p->peak);
+    c->c2 = (0.03 * p->peak) * (0.03 * p->peak);
+    c->peak = p->peak;
+    c->inv_scale = 1.0f / p->scale;
+    return SSG_OK;
+}
+
+static const struct ssg_param_desc params[] = {
+    {.name = "scale", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_compare_params, scale),
+     .def = 0.25, .min = 1e-6, .max = 1e6,
+     .help = "diff image: |a - b| at which the colour is pure red or blue"},
+    {.name = "peak", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_compare_params, peak),
+     .def = 1, .min = 1e-6, .max = 1e6,
+     .help = "signal peak: PSNR's maximum and SSIM's dynamic range L (1 for AO, [0,1] data)"},
+};
+
+static const struct ssg_port_desc inputs[] = {
+    {.name = "a", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+     .doc = "image under test"},
+    {.name = "b", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+     .doc = "reference image, same type and size as a"},
+    {.name = "mask", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "pixels with mask > 0.5 are compared; none = every pixel"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "diff", .types = SSG_T_COLOR,
+     .doc = "a - b on blue (a < b), white (equal), red (a > b); black = not compared"},
+};
+
+const struct ssg_node_desc ssg_node_compare = {
+    .name = "compare",
+    .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM and a diff image",
+    .method = "RMSE, MAE, PSNR = 10 log10(peak^2 / MSE); SSIM: Wang, Bovik, Sheikh, "
+              "Simoncelli, IEEE TIP 13(4) 2004, eqs. 13-17 (Gaussian window 11x11, sigma 1.5, "
+              "K1 0.01, K2 0.03)",
+    .doc = "Reports rmse, mae, psnr (dB, inf when identical), ssim and pixels over the pixels "
+           "with mask > 0.5 (all without a mask), averaged over channels; `ssgraph run` prints "
+           "them and writes them to <out>/metrics.json. SSIM windows use only counted pixels "
+           "inside the image, weights renormalised. `diff` maps t = clamp((a - b) / scale, "
+           "-1, 1) to blue (-1), white (0), red (+1); for 3 channels the channel difference "
+           "of largest magnitude; pixels not compared are black.",
+    .inputs = inputs,
+    .input_count = SSG_COUNT(inputs),
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_compare_params),
+    .consts_size = sizeof(struct ssg_compare_consts),
+    .is_sink = 1,
+    .check = check,
+    .prepare = prepare,
+    .run_cpu = ssg_compare_run_cpu,
+};

@@ -1,0 +1,34 @@
+/* compare.h - parameters and prepared constants of the `compare` node, shared by compare.c
+ * (descriptor, check, prepare) and compare_cpu.c (the CPU kernel). Method in compare.c. */
+#ifndef SSG_COMPARE_H
+#define SSG_COMPARE_H
+
+#include "node.h"
+
+/* SSIM window: 11 x 11 taps (Wang et al. 2004, section III-C). */
+#define SSG_COMPARE_RADIUS 5
+#define SSG_COMPARE_TAPS (2 * SSG_COMPARE_RADIUS + 1)
+/* Most channels an input may have (scalar 1, vector/color 3). */
+#define SSG_COMPARE_MAX_CHANNELS 4
+
+/* Input ports, in order. */
+enum { SSG_COMPARE_IN_A, SSG_COMPARE_IN_B, SSG_COMPARE_IN_MASK };
+
+struct ssg_compare_params {
+    float scale; /* |a - b| shown in full colour in `diff`, image units; default 0.25 */
+    float peak;  /* signal peak: PSNR's MAX and SSIM's dynamic range L; default 1 */
+};
+
+struct ssg_compare_consts {
+    double gauss[SSG_COMPARE_TAPS]; /* 1D Gaussian, sigma 1.5 px, sums to 1; the window is
+                                       the outer product of it with itself */
+    double c1;                      /* SSIM (K1 L)^2, K1 = 0.01 */
+    double c2;                      /* SSIM (K2 L)^2, K2 = 0.03 */
+    double peak;                    /* as in the parameters */
+    float inv_scale;                /* 1 / scale */
+};
+
+enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                 const struct ssg_io *io);
+
+#endif

@@ -1,0 +1,190 @@
+/* hbao.c - the `hbao` node: horizon-based screen-space ambient occlusion.
+ *
+ * Method: Bavoil, Sainz and Dimitrov, "Image-Space Horizon-Based Ambient Occlusion"
+ * (SIGGRAPH 2008 talk), as described by Belonogov, "Global Illumination methods in
+ * simulated VR environments", section 3.3.1, eq. 3.1 and 3.2:
+ *   A = 1 - 1/(2 pi) int_{-pi}^{pi} (sin h(theta) - sin t(theta)) W(theta) dtheta,
+ * theta the azimuth about the view vector, t the signed elevation of the surface tangent,
+ * h the elevation of the horizon (the highest point of the depth buffer, seen as a height
+ * field, within R), W(theta) = max(0, 1 - r(theta) / R), r the distance from P to the
+ * horizon point. The integral is estimated with `directions` azimuths per pixel, each
+ * ray-marched with `steps` depth samples: as section 3.3.1 describes, a sample higher
+ * than the highest so far becomes the horizon, the others are skipped. W is taken at the
+ * final horizon point, as eq. 3.2 states (with falloff = none, W = 1 within R, this
+ * equals the thesis's per-sample sum of (sin h_j - sin h_{j-1}) W(r_j), which telescopes).
+ * The azimuths are turned per pixel by the tiled rotation pattern (section 3.3.1: HBAO
+ * inherits SSAO's rotation noise, removed by a blur afterwards).
+ *
+ * Geometry (view space, node.h). P is the pixel's point, V = -P / |P| the unit vector to
+ * the eye. Azimuths are uniform about V: D(theta) = cos theta e1 + sin theta e2 with
+ * e1 = normalize(y x V) (horizontal) and e2 = V x e1, theta_k = 2 pi k / directions + psi,
+ * psi the pattern's angle at (x mod n, y mod n) (0 without a pattern). The plane through
+ * the eye spanned by V and D projects to one screen line through the pixel, along
+ * J D (J the projection's Jacobian at P), so marching that line visits exactly the
+ * points of the slice: the sampled occluders and the angles of eq. 3.2 live in one plane.
+ * A sample at pixel q gives Q, reconstructed from the depth at q and the camera (as HBAO
+ * reconstructs from the depth buffer; P likewise, so a sample on P's own pixel gives
+ * Q = P exactly), and H = Q - P, projected onto the slice (rounding to pixel centres moves
+ * samples off the line by at most half a pixel): sin h = H.V / r, r = |H_s| =
+ * sqrt((H.V)^2 + (H.D)^2). The tangent of the slice is the direction in it perpendicular
+ * to the normal N: sin t = -(D.N) / sqrt((V.N)^2 + (D.N)^2). A flat plane thus gives
+ * h = t up to float rounding: no occlusion once bias exceeds that rounding.
+ * Because the slices are uniform in azimuth about V and cos(alpha) dalpha dtheta in
+ * eq. 3.1 is the solid angle, with falloff = none and many directions and steps the node
+ * tends to 1 - (solid angle above the tangent plane occluded within R) / (2 pi) when the
+ * occluders are height fields: uniform weighting, not cosine weighting. For a floor at
+ * distance a from an infinite wall that is (1 + a/R) / 2 for a < R (tests/test_hbao.c
+ * derives it), where the cosine-weighted ANALYTIC.md case 3 gives
+ * 1 - (acos c - c sqrt(1 - c^2)) / pi, c = a/R: both 1/2 at the edge, both 1 at a >= R,
+ * the uniform weighting darker in between (0.8 against 0.858 at c = 0.6).
+ *
+ * March: step j = 0..steps-1 lies at (j + u) step (su, sv) px from P's pixel, rounded to
+ * the nearest pixel (ties to even), where (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)) is the
+ * screen direction of D scaled so that a displacement beta D at depth d' moves the image
+ * by f beta |(su, sv)| / (d' - beta Dz) px, and step = f R / (den steps),
+ * den = max(depth - R, depth / 2). A point of the slice within R of P has depth at least
+ * depth - R, so it lies within f R |(su, sv)| / (depth - R) px of P's pixel: the march
+ * covers every point of the slice within R unless the camera is nearly inside the
+ * sphere (depth < 2 R, where den is floored); max_screen_radius > 0 caps f R / den.
+ * u in (0, 1] is the step jitter: 1 without a pattern, else 1 - frac(phi / 2 pi), phi
+ * the pattern's angle half a tile away ((x + n/2) mod n, (y + n/2) mod n), so direction
+ * and step jitter come from different cells. Samples off screen, on background
+ * (depth 0) or beyond R (r > R) are skipped. The horizon starts at t + bias (Bavoil's
+ * angle bias against the self-occlusion of tessellated or noisy surfaces; 0.1 rad ~
+ * 5.7 degrees; t + bias beyond pi/2 means no occlusion in that slice).
+ * out = clamp(1 - strength * mean over directions of (sin h - sin(t + bias))^+ W(r),
+ * 0, 1); background pixels (depth 0 or no normal) get 1. */
+#include <math.h>
+#include <stdio.h>
+
+#include "hbao.h"
+
+static int same_size(const struct ssg_shape *a, const struct ssg_shape *b)
+{
+    return a->width == b->width && a->height == b->height;
+}
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_shape *pos = &in[SSG_HBAO_IN_POSITION], *nrm = &in[SSG_HBAO_IN_NORMAL];
+    const struct ssg_shape *rot = &in[SSG_HBAO_IN_ROTATION], *dep = &in[SSG_HBAO_IN_DEPTH];
+    if (pos->channels != 3 || nrm->channels != 3 || !same_size(pos, nrm)) {
+        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
+        return SSG_E_SIZE;
+    }
+    if (rot->channels != 0 && (rot->channels != 2 || rot->width != rot->height)) {
+        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
+                 "%dx%dx%d", rot->width, rot->height, rot->channels);
+        return SSG_E_CHANNELS;
+    }
+    if (dep->channels != 0 && (dep->channels != 1 || !same_size(dep, pos))) {
+        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
+    out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
+    return SSG_OK;
+}
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    struct ssg_hbao_consts *c = consts;
+    c->p = *(const struct ssg_hbao_params *)params;
+    c->proj = ssg_frame_projection(ctx->frame);
+    c->frame_width = ctx->frame->width;
+    c->frame_height = ctx->frame->height;
+    /* prepare() may be reached without the table's range checks (a hand-built run):
+       never index past the fixed arrays. */
+    if (!(c->p.radius > 0) || c->p.directions < 1 ||
+        c->p.directions > SSG_HBAO_MAX_DIRECTIONS || c->p.steps < 1 ||
+        c->p.steps > SSG_HBAO_MAX_STEPS || !(c->p.bias >= 0) || !(c->p.strength >= 0) ||
+        !(c->p.max_screen_radius >= 0) || c->frame_width < 1 || c->frame_height < 1 ||
+        !(c->proj.f > 0)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
+                    "hbao '%s': needs radius > 0, 1..%d directions, 1..%d steps, bias and "
+                    "strength >= 0, and a frame with size and field of view",
+                    ctx->instance ? ctx->instance : "", SSG_HBAO_MAX_DIRECTIONS,
+                    SSG_HBAO_MAX_STEPS);
+        return SSG_E_VALUE;
+    }
+    c->cos_bias = (float)cos(c->p.bias);
+    c->sin_bias = (float)sin(c->p.bias);
+    for (int k = 0; k < c->p.directions; k++) {
+        double a = 2.0 * M_PI * k / c->p.directions;
+        c->dir_cos[k] = (float)cos(a);
+        c->dir_sin[k] = (float)sin(a);
+    }
+    return SSG_OK;
+}
+
+static const char *const falloff_choices[] = {"linear", "none", NULL};
+
+static const struct ssg_param_desc params[] = {
+    {.name = "directions", .type = SSG_P_INT,
+     .offset = offsetof(struct ssg_hbao_params, directions), .def = 8, .min = 1,
+     .max = SSG_HBAO_MAX_DIRECTIONS, .help = "azimuths per pixel (uniform about the view "
+     "vector, turned by the rotation pattern)"},
+    {.name = "steps", .type = SSG_P_INT, .offset = offsetof(struct ssg_hbao_params, steps),
+     .def = 4, .min = 1, .max = SSG_HBAO_MAX_STEPS,
+     .help = "depth samples marched along each direction"},
+    {.name = "radius", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_hbao_params, radius),
+     .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",
+     .help = "R: occluders farther than this from the pixel are ignored"},
+    {.name = "bias", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_hbao_params, bias),
+     .def = 0.1, .min = 0, .max = 1.5, .unit = "radians",
+     .help = "tangent-angle bias against self occlusion (0.1 rad ~ 5.7 degrees)"},
+    {.name = "strength", .type = SSG_P_FLOAT,
+     .offset = offsetof(struct ssg_hbao_params, strength), .def = 1, .min = 0, .max = 16,
+     .help = "out = 1 - strength * occlusion, clamped to [0, 1]"},
+    {.name = "falloff", .type = SSG_P_ENUM,
+     .offset = offsetof(struct ssg_hbao_params, falloff), .def = SSG_HBAO_FALLOFF_LINEAR,
+     .choices = falloff_choices,
+     .help = "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1"},
+    {.name = "max_screen_radius", .type = SSG_P_FLOAT,
+     .offset = offsetof(struct ssg_hbao_params, max_screen_radius), .def = 0, .min = 0,
+     .max = 16384, .unit = "px",
+     .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
+};
+
+static const struct ssg_port_desc inputs[] = {
+    {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position (its -z is the depth unless depth is given)"},
+    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
+    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
+     .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
+    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "linear depth the points are reconstructed from; none = -position.z"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "out", .types = SSG_T_SCALAR, .doc = "visibility, 1 = unoccluded"},
+};
+
+const struct ssg_node_desc ssg_node_hbao = {
+    .name = "hbao",
+    .summary = "horizon-based screen-space ambient occlusion",
+    .method = "Bavoil, Sainz and Dimitrov, Image-Space Horizon-Based Ambient Occlusion "
+              "(SIGGRAPH 2008), as in Belonogov, Global Illumination methods in simulated "
+              "VR environments, sec. 3.3.1, eq. 3.1-3.2 (W = max(0, 1 - r/R), per-sample "
+              "horizon terms, angle bias, rotated directions)",
+    .doc = "For each pixel, `directions` slices uniform in azimuth about the view vector "
+           "(turned by the rotation tile) are marched on screen with `steps` depth samples "
+           "each, far enough to reach every point of the slice within `radius`. The "
+           "highest sample within `radius` is the horizon h; each slice adds "
+           "(sin h - sin(t + bias)) W(r) when positive, t the tangent's elevation, r the "
+           "distance to the horizon, W = 1 - r/R (falloff linear) or 1 (none). out = "
+           "clamp(1 - strength * mean over slices, 0, 1); background pixels are 1. A flat "
+           "open plane gives exactly 1.",
+    .inputs = inputs,
+    .input_count = SSG_COUNT(inputs),
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_hbao_params),
+    .consts_size = sizeof(struct ssg_hbao_consts),
+    .check = check,
+    .prepare = prepare,
+    .run_cpu = ssg_hbao_run_cpu,
+};

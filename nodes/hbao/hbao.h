@@ -1,0 +1,46 @@
+/* hbao.h - parameters and prepared constants of the `hbao` node, shared by hbao.c
+ * (descriptor, check, prepare) and hbao_cpu.c (the CPU kernel). Method and conventions
+ * are described in hbao.c. Read-only after prepare(); the kernel is thread-safe. */
+#ifndef SSG_HBAO_H
+#define SSG_HBAO_H
+
+#include "node.h"
+
+#define SSG_HBAO_MAX_DIRECTIONS 64
+#define SSG_HBAO_MAX_STEPS 64
+
+/* Input ports, in order. */
+enum { SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL, SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH };
+
+enum ssg_hbao_falloff {
+    SSG_HBAO_FALLOFF_LINEAR, /* W = max(0, 1 - r / R) (Belonogov eq. 3.2) */
+    SSG_HBAO_FALLOFF_NONE,   /* W = 1 for r <= R: a hard distance limit, for comparisons
+                                with distance-limited references */
+};
+
+struct ssg_hbao_params {
+    int directions;          /* azimuths per pixel, 1..64; default 8 */
+    int steps;               /* samples along each direction, 1..64; default 4 */
+    float radius;            /* R, scene units, > 0; default 0.5 */
+    float bias;              /* tangent-angle bias, radians, 0..1.5; default 0.1 (about
+                                5.7 degrees) */
+    float strength;          /* out = 1 - strength * occlusion, 0..16; default 1 */
+    int falloff;             /* enum ssg_hbao_falloff; default linear */
+    float max_screen_radius; /* px; caps the march length (0 = no cap); default 0 */
+};
+
+struct ssg_hbao_consts {
+    struct ssg_hbao_params p;    /* the parameters as given */
+    struct ssg_projection proj;  /* ssg_frame_projection of the frame */
+    int frame_width;             /* px, the frame proj belongs to; inputs of another size
+                                    get proj scaled to theirs */
+    int frame_height;            /* px */
+    float cos_bias, sin_bias;    /* of p.bias */
+    float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
+    float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
+};
+
+enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                              const struct ssg_io *io);
+
+#endif

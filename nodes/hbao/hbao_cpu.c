@@ -1,0 +1,561 @@
+/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c).
+ *
+ * Layout for speed, as in ssao_cpu.c. A row is cut into chunks of CHUNK pixels; per
+ * chunk, what depends on the pixel only (V, the azimuth basis, the march length) is set
+ * up once in structure-of-arrays scratch, then per pair of opposite directions D, -D
+ * what depends on the azimuth (screen step, slice coefficients, tangents; -D reuses D's
+ * work), then per step two straight loops over the chunk: one places the samples and
+ * computes their pixel indices, one reads the depth there (the only gather) and updates
+ * the horizon. Both vectorise (SSE4, and AVX2 through a run-time selected clone).
+ *
+ * Cost per sample is kept to multiplies and compares:
+ * - Points come from the depth: Q = dq (a_u, a_v, -1), a_u = (u + 0.5 - cx) / f,
+ *   a_v = -(v + 0.5 - cy) / f. With V = -(a_u, a_v, -1) / L (L = |(a_u, a_v, -1)|) and D
+ *   perpendicular to V, a sample at pixel offset (ou, ov) from P gives
+ *     H.V = dq (ou Vx - ov Vy) / f - L (dq - dp),   H.D = dq (ou Dx - ov Dy) / f,
+ *   since P.V = -L dp and P.D = 0; exactly 0 on P's own pixel.
+ * - With falloff none, sines are compared as hv |hv| bq > bv |bv| q (no root, no
+ *   division) and the horizon's sine is taken once per direction; the linear falloff
+ *   weighs each raising sample by its own distance, which costs a root and a division.
+ * - The depth is copied once into a plane padded by one pixel, where background, garbage
+ *   and the border hold +inf: samples off screen are clamped into the border, and an
+ *   infinite depth makes q inf or NaN, which fails q <= R^2: no other test is needed.
+ * - The march is not normalised per direction (setup_direction).
+ * Bands of 32 rows go to ssg_parallel_rows, chunk columns outside and rows inside, so the
+ * depth window around a chunk (the march reaches ~150-250 px at 1080p) slides down one
+ * row at a time and mostly stays in L2 (taller bands: fewer refills). Each pixel depends
+ * only on the inputs and every per-pixel sum runs in a fixed order, so the output does
+ * not depend on the thread count nor on the instruction set (the clones perform the same
+ * IEEE operations lane by lane: no FMA, no reassociation). */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hbao.h"
+
+/* The kernel never unmasks floating-point exceptions, so float operations cannot trap.
+   Telling GCC so lets it vectorise loops whose comparisons and selects it would
+   otherwise turn into branches; no result changes (no reassociation, no contraction). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+enum { CHUNK = 128, ROWS_PER_BAND = 32 };
+
+/* A slice whose plane lies within asin(0.1) ~ 5.7 degrees of the tangent plane
+   (|N projected on it|^2 = (V.N)^2 + (D.N)^2 < SLICE_MIN) has no well-conditioned tangent
+   line: the correction of place_one would divide float noise by ~0, and the band
+   between tangent and horizon is a sliver. Such slices add nothing. They exist only
+   where V.N < 0.1, i.e. on surfaces seen within 6 degrees of grazing. */
+#define SLICE_MIN 0.01f
+
+struct job {
+    const struct ssg_hbao_consts *c;
+    const float *nrm[3];  /* planes of the normal */
+    const float *depth;   /* plane the depth is read from */
+    float depth_sign;     /* depth = depth_sign * plane: 1 for depth, -1 for z */
+    float *padded;        /* the depth, (w + 2) x (h + 2), with background (0), garbage
+                             (negative, NaN, inf) and a one-pixel border set to +inf */
+    int pw;               /* w + 2, the padded row length */
+    /* The pattern unrolled to full rows, n rows of w: cos and sin of the tile angle at
+       (x mod n, y mod n) and the step jitter u of the cell half a tile away (hbao.c). */
+    const float *rot_c, *rot_s, *jitter;
+    int n;                /* tile side; 1 without a pattern */
+    const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (it does not
+                               depend on the row) */
+    float *out;
+    int w, h;
+    float f, cx, cy;      /* projection of this resolution */
+};
+
+/* Per-pixel values of one chunk, structure of arrays. Directions come in opposite pairs
+   D, -D (k and k + directions / 2); the arrays [2][CHUNK] hold one row per member. */
+struct chunk {
+    /* per pixel */
+    float dp[CHUNK];                       /* depth of P */
+    float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
+    float co[CHUNK], si[CHUNK];            /* rotation of the tile */
+    float u[CHUNK];                        /* step jitter in (0, 1] */
+    float lp[CHUNK];                       /* L = |P| / depth */
+    float ldp[CHUNK];                      /* L dp = |P| */
+    float vxf[CHUNK], vyf[CHUNK];          /* Vx / f, -Vy / f */
+    float vx[CHUNK], vy[CHUNK], vz[CHUNK]; /* V */
+    float e1x[CHUNK], e1z[CHUNK];          /* e1 = (e1x, 0, e1z) */
+    float e2[3][CHUNK];                    /* e2 = V x e1 */
+    float au[CHUNK], av[CHUNK];            /* a_u, a_v of P's pixel */
+    float vn[CHUNK];                       /* V.N, floored at 1e-6 */
+    float step[CHUNK];                     /* march length / steps, px */
+    float xf[CHUNK];                       /* pixel column */
+    int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
+    float occ[CHUNK];                      /* sum of horizon terms over directions */
+    /* per direction (pair) */
+    float du[CHUNK], dv[CHUNK];            /* screen step of D, px per step */
+    float dxf[CHUNK], dyf[CHUNK];          /* Dx / f, -Dy / f */
+    float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f, M = V x D */
+    float al[CHUNK], be[CHUNK];            /* projection along the tangent plane:
+                                              mn vn / (1 - mn^2), mn dn / (1 - mn^2) */
+    float sin_tb[2][CHUNK];                /* sin(t + bias), 1 past the zenith */
+    float bv[2][CHUNK], bq[2][CHUNK];      /* horizon so far: falloff none: H.V and
+                                              |H_s|^2 of the highest sample, (sin_tb, 1)
+                                              at first; linear: bv = its sine */
+    /* per sample */
+    float a[2][CHUNK], b[2][CHUNK];        /* H'.V = dq a + L dp, H'.D_m = dq b, D_m the
+                                              member's direction (D or -D) */
+    float c[2][CHUNK];                     /* H.M = dq c */
+    int32_t idx[2][CHUNK];                 /* index of the sample in the padded plane,
+                                              relative to its pixel (0, 0) */
+};
+
+/* Loads and background. Normals are unit by the frame conventions (node.h); the rare
+   chunk holding one that is not gets a scalar pass, so the common case stays a vector
+   loop (sqrtf does not vectorise while it may set errno). */
+static inline __attribute__((always_inline)) void load_chunk(const struct job *j,
+                                                             struct chunk *restrict k,
+                                                             int y, int x0, int len)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    size_t po = (size_t)(y % j->n) * (size_t)j->w + (size_t)x0;
+    const float *restrict dpl = j->depth + o;
+    const float *restrict nx0 = j->nrm[0] + o, *restrict ny0 = j->nrm[1] + o;
+    const float *restrict nz0 = j->nrm[2] + o;
+    const float *restrict rc = j->rot_c + po, *restrict rs = j->rot_s + po;
+    const float *restrict ju = j->jitter + po;
+    const float sign = j->depth_sign;
+    int not_unit = 0;
+    for (int i = 0; i < len; i++) {
+        float nx = nx0[i], ny = ny0[i], nz = nz0[i];
+        float nn = nx * nx + ny * ny + nz * nz;
+        float d = sign * dpl[i];
+        /* Background (depth 0, normal 0) or garbage: harmless values, result 1. */
+        int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
+        not_unit |= fg & (fabsf(nn - 1.0f) > 1e-5f);
+        k->fg[i] = fg;
+        k->nx[i] = fg ? nx : 0.0f;
+        k->ny[i] = fg ? ny : 0.0f;
+        k->nz[i] = fg ? nz : 1.0f;
+        k->dp[i] = fg ? d : 1.0f;
+        k->xf[i] = (float)(x0 + i);
+        k->occ[i] = 0.0f;
+        k->co[i] = rc[i];
+        k->si[i] = rs[i];
+        k->u[i] = ju[i];
+    }
+    for (int i = 0; not_unit && i < len; i++) {
+        float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
+        float inv = 1.0f / sqrtf(nn);
+        k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
+    }
+}
+
+/* What depends on the pixel only: V, the basis e1 = normalize(y x V), e2 = V x e1, the
+   tangent term V.N and the march length (hbao.c). */
+static inline __attribute__((always_inline)) void setup_chunk(const struct job *j,
+                                                              struct chunk *restrict k,
+                                                              int y, int x0, int len)
+{
+    const float invf = 1.0f / j->f, radius = j->c->p.radius;
+    const float rf = j->f * radius, cap = j->c->p.max_screen_radius;
+    const float inv_steps = 1.0f / (float)j->c->p.steps;
+    const float av = -((float)y + 0.5f - j->cy) * invf;
+    for (int i = 0; i < len; i++) {
+        float au = (k->xf[i] + 0.5f - j->cx) * invf;
+        float l = sqrtf(au * au + av * av + 1.0f);
+        /* One division for 1 / l and 1 / den (den: the march's nearest depth). */
+        float d = k->dp[i], near = d - radius, half = 0.5f * d;
+        float den = near > half ? near : half;
+        float inv = 1.0f / (l * den);
+        float il = den * inv;
+        float vx = -au * il, vy = -av * il, vz = il;
+        float e1x = j->e1x[x0 + i], e1z = j->e1z[x0 + i];
+        k->e1x[i] = e1x;
+        k->e1z[i] = e1z;
+        k->e2[0][i] = vy * e1z;
+        k->e2[1][i] = vz * e1x - vx * e1z;
+        k->e2[2][i] = -vy * e1x;
+        k->au[i] = au;
+        k->av[i] = av;
+        k->lp[i] = l;
+        k->ldp[i] = l * k->dp[i];
+        k->vxf[i] = vx * invf;
+        k->vyf[i] = -vy * invf;
+        k->vx[i] = vx;
+        k->vy[i] = vy;
+        k->vz[i] = vz;
+        float vn = vx * k->nx[i] + vy * k->ny[i] + vz * k->nz[i];
+        k->vn[i] = vn > 1e-6f ? vn : 1e-6f;
+        /* f R / den: the march along D reaches f R |J D| / den (setup_direction). */
+        float rp = rf * l * inv;
+        rp = cap > 0.0f && rp > cap ? cap : rp;
+        k->step[i] = rp * inv_steps;
+    }
+}
+
+/* Azimuth theta = 2 pi kd / directions + psi: the slice direction D, its screen step,
+   and the starting horizons sin(t + bias) of D and of -D (1 when t + bias passes the
+   zenith; for -D, sin t changes sign and cos t does not). The screen direction
+   (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)) is J D up to the factor f / depth and is not
+   normalised: `steps` steps of step (su, sv), step = f R / (den steps), reach
+   f R |(su, sv)| / den, which is exactly the bound of hbao.c for this slice. */
+static inline __attribute__((always_inline)) void
+setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
+{
+    const float invf = 1.0f / j->f, cb = j->c->cos_bias, sb = j->c->sin_bias;
+    for (int i = 0; i < len; i++) {
+        float c = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
+        float dx = c * k->e1x[i] + s * k->e2[0][i];
+        float dy = s * k->e2[1][i];
+        float dz = c * k->e1z[i] + s * k->e2[2][i];
+        k->du[i] = (dx + k->au[i] * dz) * k->step[i];
+        k->dv[i] = -(dy + k->av[i] * dz) * k->step[i];
+        k->dxf[i] = dx * invf;
+        k->dyf[i] = -dy * invf;
+        float dn = dx * k->nx[i] + dy * k->ny[i] + dz * k->nz[i];
+        float vn = k->vn[i];
+        float mx = k->vy[i] * dz - k->vz[i] * dy, my = k->vz[i] * dx - k->vx[i] * dz;
+        float mz = k->vx[i] * dy - k->vy[i] * dx;
+        float mn = mx * k->nx[i] + my * k->ny[i] + mz * k->nz[i];
+        float sl = vn * vn + dn * dn; /* = 1 - mn^2, |N projected on the slice|^2 */
+        float isl = mn / (sl > SLICE_MIN ? sl : SLICE_MIN);
+        k->mxf[i] = mx * invf;
+        k->myf[i] = -my * invf;
+        k->al[i] = isl * vn;
+        k->be[i] = isl * dn;
+        float ir = 1.0f / sqrtf(vn * vn + dn * dn);
+        float st = -dn * ir, ct = vn * ir;
+        float stb = st * cb + ct * sb, ctb = ct * cb - st * sb;
+        float stb2 = ct * sb - st * cb, ctb2 = ct * cb + st * sb;
+        /* Past the zenith, or a slice too close to the tangent plane (below): no term. */
+        stb = (ctb < 0.0f) | (sl < SLICE_MIN) ? 1.0f : stb;
+        stb2 = (ctb2 < 0.0f) | (sl < SLICE_MIN) ? 1.0f : stb2;
+        k->sin_tb[0][i] = stb;
+        k->sin_tb[1][i] = stb2;
+        k->bv[0][i] = stb;
+        k->bv[1][i] = stb2;
+        k->bq[0][i] = 1.0f;
+        k->bq[1][i] = 1.0f;
+    }
+}
+
+/* One sample at offset (ou, ov) from pixel (x, y): its index in the padded plane, and
+   what does not depend on its depth folded into a and b. The rounding to a pixel moves
+   the sample off the slice by hm = H.M (at most half a pixel); it is brought back onto
+   the slice along the tangent plane, not orthogonally: H' = H - hm M' / (M'.M) with
+   M' = M - (M.N) N, so H'.V = H.V + hm al and H'.D = H.D + hm be. A sample of the
+   tangent plane thus lands on the slice's tangent line and a flat surface stays exactly
+   unoccluded, whatever the rounding. hm = dq (ou Mx - ov My) / f is linear in dq like
+   H.D, so the correction folds into a and b. */
+static inline __attribute__((always_inline)) void
+place_one(float x, float y, float ou, float ov, const struct chunk *restrict k, int i,
+          float fw, float fh, int pw, float sign, int32_t *idx, float *a, float *b,
+          float *cp)
+{
+    /* A sample off screen is clamped into the padded plane's border, whose infinite depth
+       makes it no occluder: the clamp replaces a test. The comparisons are written so
+       that even a NaN lands on the border. */
+    float su = x + ou, sv = y + ov;
+    su = su > -1.0f ? su : -1.0f;
+    su = su < fw ? su : fw;
+    sv = sv > -1.0f ? sv : -1.0f;
+    sv = sv < fh ? sv : fh;
+    *idx = (int)sv * pw + (int)su;
+    float c = ou * k->mxf[i] + ov * k->myf[i];
+    *a = ou * k->vxf[i] + ov * k->vyf[i] - k->lp[i] + c * k->al[i];
+    *b = sign * (ou * k->dxf[i] + ov * k->dyf[i] + c * k->be[i]);
+    *cp = c;
+}
+
+/* Places step jf of D (and of -D when `pair`) for the whole chunk, at distance
+   (jf + u) step along the screen direction, rounded to the nearest pixel (ties to even).
+   Separate from the lookup, because GCC vectorises a lookup at a computed index (an
+   emulated gather) only when the indices come from memory. */
+static inline __attribute__((always_inline)) void
+place_step(const struct job *j, struct chunk *restrict k, int len, int pair, float y,
+           float jf)
+{
+    const float fw = (float)j->w, fh = (float)j->h;
+    const int pw = j->pw;
+    int32_t *restrict i0 = k->idx[0], *restrict i1 = k->idx[1];
+    float *restrict a0 = k->a[0], *restrict a1 = k->a[1];
+    float *restrict b0 = k->b[0], *restrict b1 = k->b[1];
+    float *restrict c0 = k->c[0], *restrict c1 = k->c[1];
+    for (int i = 0; i < len; i++) {
+        float t = jf + k->u[i];
+        float x = k->du[i] * t, yv = k->dv[i] * t;
+        place_one(k->xf[i], y, nearbyintf(x), nearbyintf(yv), k, i, fw, fh, pw, 1.0f,
+                  &i0[i], &a0[i], &b0[i], &c0[i]);
+        if (pair)
+            place_one(k->xf[i], y, nearbyintf(-x), nearbyintf(-yv), k, i, fw, fh, pw, -1.0f,
+                      &i1[i], &a1[i], &b1[i], &c1[i]);
+    }
+}
+
+/* Reads the depth at a sample and raises the horizon (bv, bq) when the sample is within
+   R and higher. With falloff none only the final horizon matters (the terms telescope,
+   finish_direction adds it), and sines are compared without a root or a division:
+   hv / sqrt(q) > bv / sqrt(bq) exactly when hv |hv| bq > bv |bv| q (q, bq > 0). With the
+   linear falloff each raising sample adds (sin h_j - sin h_{j-1}) (1 - r_j / R) at once
+   (bv then holds sin h directly and bq is unused): a root and a division per sample. */
+static inline __attribute__((always_inline)) void
+horizon_one(float dq, float a, float b, float c, float ldp, float r2, float inv_radius,
+            int linear, float *bvp, float *bqp, float *occ)
+{
+    float hv = dq * a + ldp;
+    float hd = dq * b;
+    float hm = dq * c;
+    float q = hv * hv + hd * hd;
+    float bv = *bvp;
+    /* Background, garbage and off-screen samples read +inf, which makes q inf or NaN:
+       no occluder. P's own pixel gives q = 0 (and sh NaN): never higher. A sample that
+       the rounding put more off the slice than in it (|H.M| > |H'|), or behind P along
+       the slice (H'.D_m <= 0), says nothing about this half of the slice; both happen
+       only within a pixel or two of P, mostly on surfaces seen at a grazing angle. */
+    int in = (q <= r2) & (hm * hm <= q) & (hd > 0.0f);
+    if (linear) {
+        float r = sqrtf(q);
+        float sh = hv / r;
+        int take = in & (sh > bv);
+        *occ += take ? (sh - bv) * (1.0f - r * inv_radius) : 0.0f;
+        *bvp = take ? sh : bv;
+    } else {
+        float bq = *bqp;
+        int take = in & (hv * fabsf(hv) * bq > bv * fabsf(bv) * q);
+        *bvp = take ? hv : bv;
+        *bqp = take ? q : bq;
+    }
+}
+
+static inline __attribute__((always_inline)) void
+horizon_step(const struct job *j, struct chunk *restrict k, int len, int pair, int linear)
+{
+    /* Index (v, u) of the padded plane is pixel (v - 1, u - 1): base it one row and one
+       column in, so sample (su, sv) reads at sv * pw + su. */
+    const float *restrict plane = j->padded + j->pw + 1;
+    const float r2 = j->c->p.radius * j->c->p.radius, inv_radius = 1.0f / j->c->p.radius;
+    const int32_t *restrict i0 = k->idx[0], *restrict i1 = k->idx[1];
+    float *restrict v0 = k->bv[0], *restrict v1 = k->bv[1];
+    float *restrict q0 = k->bq[0], *restrict q1 = k->bq[1];
+    float *restrict occ = k->occ;
+    for (int i = 0; i < len; i++) {
+        horizon_one(plane[i0[i]], k->a[0][i], k->b[0][i], k->c[0][i], k->ldp[i], r2,
+                    inv_radius, linear, &v0[i], &q0[i], &occ[i]);
+        if (pair)
+            horizon_one(plane[i1[i]], k->a[1][i], k->b[1][i], k->c[1][i], k->ldp[i], r2,
+                        inv_radius, linear, &v1[i], &q1[i], &occ[i]);
+    }
+}
+
+/* Falloff none: eq. 3.2 for one azimuth, sin h - sin(t + bias) for the final horizon;
+   exactly 0 when no sample rose above the tangent (then bv = sin(t + bias) and
+   r = sqrt(1) = 1). */
+static inline __attribute__((always_inline)) void
+finish_direction(struct chunk *restrict k, int len, int m)
+{
+    for (int i = 0; i < len; i++) {
+        float g = k->bv[m][i] / sqrtf(k->bq[m][i]) - k->sin_tb[m][i];
+        k->occ[i] += g > 0.0f ? g : 0.0f;
+    }
+}
+
+/* One slice direction, or an opposite pair of them. `pair` and `linear` are constants
+   at each call site, so each variant is its own straight code. */
+static inline __attribute__((always_inline)) void
+march(const struct job *j, struct chunk *restrict k, int len, float y, int d, int pair,
+      int linear)
+{
+    const struct ssg_hbao_consts *c = j->c;
+    setup_direction(j, k, len, c->dir_cos[d], c->dir_sin[d]);
+    for (int s = 0; s < c->p.steps; s++) {
+        place_step(j, k, len, pair, y, (float)s);
+        horizon_step(j, k, len, pair, linear);
+    }
+    if (!linear)
+        finish_direction(k, len, 0);
+    if (!linear && pair)
+        finish_direction(k, len, 1);
+}
+
+static inline __attribute__((always_inline)) void
+finish_chunk(const struct job *j, const struct chunk *restrict k, int len, float *out)
+{
+    const float scale = j->c->p.strength / (float)j->c->p.directions;
+    for (int i = 0; i < len; i++) {
+        float v = 1.0f - k->occ[i] * scale;
+        v = v > 0.0f ? v : 0.0f;
+        v = v < 1.0f ? v : 1.0f;
+        out[i] = k->fg[i] ? v : 1.0f;
+    }
+}
+
+/* One row of one chunk: the hot code. With GCC on x86-64 it is also compiled for AVX2
+   and picked at run time: the same IEEE operations lane by lane (no FMA: avx2 does not
+   enable it, and C11 mode does not contract), so both versions give the same bits.
+   With an even number of directions, k and k + directions / 2 are opposite (theta + pi)
+   and go as pairs; their terms are added in the order k, k + directions / 2. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
+{
+    const int nd = j->c->p.directions;
+    const int linear = j->c->p.falloff == SSG_HBAO_FALLOFF_LINEAR;
+    load_chunk(j, k, y, x0, len);
+    setup_chunk(j, k, y, x0, len);
+    for (int d = 0; nd % 2 == 0 && d < nd / 2; d++) {
+        if (linear)
+            march(j, k, len, (float)y, d, 1, 1);
+        else
+            march(j, k, len, (float)y, d, 1, 0);
+    }
+    for (int d = 0; nd % 2 == 1 && d < nd; d++) {
+        if (linear)
+            march(j, k, len, (float)y, d, 0, 1);
+        else
+            march(j, k, len, (float)y, d, 0, 0);
+    }
+    finish_chunk(j, k, len, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
+}
+
+/* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
+   of the depth plane, which then stays in cache from one row to the next. */
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct chunk k;
+    for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+        int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+        for (int y = y0; y < y1; y++)
+            chunk_row(j, &k, y, x0, len);
+    }
+}
+
+static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
+{
+    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "hbao '%s': %s",
+                ctx->instance ? ctx->instance : "", what);
+    return code;
+}
+
+static int size_is(const struct ssg_image *im, int w, int h, int ch)
+{
+    return im && im->width == w && im->height == h && im->channels == ch;
+}
+
+/* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
+   read out of bounds. */
+static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
+{
+    const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
+    const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
+    const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
+    if (!pos || pos->channels != 3 || !size_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
+                                                pos->height, 3))
+        return fail(ctx, SSG_E_SIZE, "position and normal must be 3-channel, one size");
+    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
+        return fail(ctx, SSG_E_CHANNELS, "rotation must be n x n x 2");
+    if (dep && !size_is(dep, pos->width, pos->height, 1))
+        return fail(ctx, SSG_E_SIZE, "depth must be 1-channel, the size of position");
+    if (!size_is(io->out[0], pos->width, pos->height, 1))
+        return fail(ctx, SSG_E_SIZE, "output must be 1-channel, the size of position");
+    return SSG_OK;
+}
+
+/* The pattern unrolled to n full rows (see struct job; without a pattern one row of
+   cos 1, sin 0, u 1) and the columns' e1. Returns the one allocation holding them, or
+   NULL. Needs j->f and j->cx. */
+static float *unroll_pattern(const struct ssg_image *rot, int w, struct job *j)
+{
+    int n = rot ? rot->width : 1;
+    size_t row = (size_t)w, plane = (size_t)n * row, cells = (size_t)n * (size_t)n;
+    float *mem = malloc((3 * plane + 2 * row) * sizeof *mem);
+    if (!mem)
+        return NULL;
+    float *rc = mem, *rs = mem + plane, *ju = mem + 2 * plane;
+    float *e1x = mem + 3 * plane, *e1z = e1x + row;
+    for (int x = 0; x < w; x++) {
+        float au = ((float)x + 0.5f - j->cx) / j->f;
+        float h = 1.0f / sqrtf(1.0f + au * au);
+        e1x[x] = h;
+        e1z[x] = au * h;
+    }
+    j->e1x = e1x;
+    j->e1z = e1z;
+    for (int y = 0; y < n; y++)
+        for (int x = 0; x < w; x++) {
+            size_t o = (size_t)y * row + (size_t)x;
+            if (!rot) {
+                rc[o] = 1.0f, rs[o] = 0.0f, ju[o] = 1.0f;
+                continue;
+            }
+            size_t cell = (size_t)y * n + (size_t)(x % n);
+            size_t half = (size_t)((y + n / 2) % n) * n + (size_t)((x + n / 2) % n);
+            rc[o] = rot->data[cell];
+            rs[o] = rot->data[cells + cell];
+            /* u = 1 - frac(phi / 2 pi) in (0, 1], phi the angle of the cell half a tile
+               away. */
+            double a = atan2(rot->data[cells + half], rot->data[half]) / (2.0 * M_PI);
+            float u = (float)(1.0 - (a - floor(a)));
+            ju[o] = u > 0.0f ? u : 1.0f;
+        }
+    j->n = n;
+    j->rot_c = rc;
+    j->rot_s = rs;
+    j->jitter = ju;
+    return mem;
+}
+
+/* Fills the padded depth plane (struct job), rows [y0, y1) of the image. */
+static void pad_rows(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    const float sign = j->depth_sign;
+    for (int y = y0; y < y1; y++) {
+        const float *restrict src = j->depth + (size_t)y * (size_t)j->w;
+        float *restrict dst = j->padded + (size_t)(y + 1) * (size_t)j->pw;
+        dst[0] = INFINITY;
+        dst[j->w + 1] = INFINITY;
+        for (int x = 0; x < j->w; x++) {
+            float d = sign * src[x];
+            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
+        }
+    }
+}
+
+enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                              const struct ssg_io *io)
+{
+    const struct ssg_hbao_consts *c = consts;
+    enum ssg_err e = check_images(ctx, io);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
+    const struct ssg_image *nrm = io->in[SSG_HBAO_IN_NORMAL];
+    const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
+    const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
+    struct job j = {.c = c, .out = io->out[0]->data, .w = pos->width, .h = pos->height};
+    for (int ch = 0; ch < 3; ch++)
+        j.nrm[ch] = ssg_image_plane(nrm, ch);
+    j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
+    j.depth_sign = dep ? 1.0f : -1.0f;
+    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
+    j.f = c->proj.f * (float)j.h / (float)c->frame_height;
+    j.cx = c->proj.cx * (float)j.w / (float)c->frame_width;
+    j.cy = c->proj.cy * (float)j.h / (float)c->frame_height;
+    float *tables = unroll_pattern(rot, j.w, &j);
+    if (!tables)
+        return fail(ctx, SSG_E_NOMEM, "out of memory for the pattern and column tables");
+    j.pw = j.w + 2;
+    j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
+    if (!j.padded) {
+        free(tables);
+        return fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
+    }
+    float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
+    for (int x = 0; x < j.pw; x++)
+        j.padded[x] = last[x] = INFINITY;
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, pad_rows, &j);
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+    free(j.padded);
+    free(tables);
+    return SSG_OK;
+}

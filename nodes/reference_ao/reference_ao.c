@@ -1,0 +1,168 @@
+/* reference_ao.c - the `reference_ao` node: ground-truth ambient occlusion (obscurance) by
+ * tracing rays through the scene with Embree from every G-buffer point.
+ *
+ * Method: Belonogov, "Global Illumination methods in simulated VR environments", section
+ * 2.2.3: AO as the cosine-weighted visibility of the normal's hemisphere, eq. 2.5,
+ * V = 1/pi * integral of Visibility(x, w) cos(theta) dw, in its distance-limited form
+ * ("ambient obscurance", eq. 2.6-2.7) with the hard step as distance test: a direction is
+ * occluded when a surface lies on it within max_distance, and an occluder farther away
+ * does not count. So 1 = unoccluded, and the result is directly comparable with the
+ * screen-space nodes at the same radius (ssao's radius, hbao's radius). Estimated by
+ * Monte Carlo ray casting as that section and Szentandrasi, "Modern Methods of Realistic
+ * Lighting in Real Time", section 3.1, describe: V = 1 - occluded rays / rays.
+ *
+ * Sampling (quasi-Monte Carlo, Szentandrasi section 4.2, eq. 5-7): the 2D Hammersley set
+ * (i / n, radical inverse in base 2 of i), i < n = rays, is mapped to the cosine-weighted
+ * hemisphere by Malley's method (Pharr, Jakob and Humphreys, "Physically Based Rendering",
+ * 3rd ed., section 13.6.3): a point (u, v) becomes the disk point sqrt(u) (cos 2 pi v,
+ * sin 2 pi v) lifted to the hemisphere, so cos^2 theta = 1 - u. Each pixel applies its own
+ * Cranley-Patterson rotation (Cranley and Patterson 1976), (u + a, v + b) mod 1, with (a,
+ * b) from a hash of (x, y, seed): the set stays stratified within a pixel while neighbours
+ * decorrelate into noise. Shifting v by b is turning the tangent frame by 2 pi b, so the
+ * table of cos and sin made here once serves every pixel and no ray needs a sine. The
+ * tangent frame comes from the normal by Duff et al., "Building an Orthonormal Basis,
+ * Revisited" (JCGT 2017). Everything depends only on (x, y, seed, rays), never on the
+ * threads.
+ *
+ * Geometry: G-buffer positions and normals are in view space (node.h); world = eye +
+ * R^T view, normal_world = R^T normal_view, R the rotation of ssg_camera_view_matrix.
+ * Rays start at o = p + e (n + v), v the unit vector from p to the camera, and count
+ * occluders with 0 <= t <= max_distance along unit directions, so the result is exactly
+ * the obscurance of the moved point o. The G-buffer point lies on its surface only to
+ * float precision, and a ray starting under a surface is occluded at once: the n term
+ * lifts o off its own surface, the v term moves it into the free space the primary ray
+ * crossed, which keeps it off a neighbouring surface too (a point on a concave edge lies
+ * on both: the Cornell box's symmetric view puts a pixel centre exactly on each of its
+ * receding edges, and without v those pixels came out 0). e = max(offset, 1024 float
+ * ulps of the point's largest world coordinate or depth), as precision falls with the
+ * scene's scale. Background pixels (normal 0) are 1. Normals that are not unit are
+ * normalised. */
+#include <stdio.h>
+#include <string.h>
+
+#include "reference_ao.h"
+#include "rt.h"
+#include "scene.h"
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_shape *pos = &in[SSG_REFERENCE_AO_IN_POSITION];
+    const struct ssg_shape *nrm = &in[SSG_REFERENCE_AO_IN_NORMAL];
+    if (pos->channels != 3 || nrm->channels != 3 || pos->width != nrm->width ||
+        pos->height != nrm->height) {
+        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
+        return SSG_E_SIZE;
+    }
+    /* Runs at the G-buffer's resolution. */
+    out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
+    return SSG_OK;
+}
+
+/* Radical inverse in base 2 (Szentandrasi eq. 6): the bits of i mirrored about the point. */
+static double radical_inverse2(uint32_t i)
+{
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+    return (double)i * (1.0 / 4294967296.0);
+}
+
+/* The Hammersley set of n points on the disk (header comment), in float. */
+static void make_table(struct ssg_reference_ao_consts *c, int n)
+{
+    for (int i = 0; i < n; i++) {
+        double phi = 2.0 * M_PI * radical_inverse2((uint32_t)i);
+        c->u[i] = (float)((double)i / (double)n);
+        c->c[i] = (float)cos(phi);
+        c->s[i] = (float)sin(phi);
+    }
+}
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    struct ssg_reference_ao_consts *c = consts;
+    const struct ssg_scene *s = ctx->scene;
+    const char *name = ctx->instance ? ctx->instance : "";
+    c->p = *(const struct ssg_reference_ao_params *)params;
+    if (!s || !s->rt) {
+        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0}, "reference_ao '%s': needs "
+                    "a loaded scene (a `scene` line in the graph, or --scene)", name);
+        return SSG_E_SCENE;
+    }
+    if (c->p.rays < 1 || c->p.rays > SSG_REFERENCE_AO_MAX_RAYS || !(c->p.max_distance > 0) ||
+        !(c->p.offset >= 0)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "reference_ao '%s': needs "
+                    "1 <= rays <= %d, max_distance > 0 and offset >= 0", name,
+                    SSG_REFERENCE_AO_MAX_RAYS);
+        return SSG_E_VALUE;
+    }
+    float m[16];
+    ssg_camera_view_matrix(&s->camera, m);
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++)
+            c->rot[3 * r + k] = m[4 * k + r];
+    memcpy(c->eye, s->camera.position, sizeof c->eye);
+    c->seed = ctx->frame->seed;
+    make_table(c, c->p.rays);
+    return SSG_OK;
+}
+
+static const struct ssg_param_desc params[] = {
+    {.name = "rays", .type = SSG_P_INT, .offset = offsetof(struct ssg_reference_ao_params, rays),
+     .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS,
+     .help = "cosine-weighted rays per pixel; the standard error is sqrt(V (1 - V) / rays) "
+             "or less (stratified)"},
+    {.name = "max_distance", .type = SSG_P_FLOAT,
+     .offset = offsetof(struct ssg_reference_ao_params, max_distance), .def = 0.5,
+     .min = 1e-6, .max = 1e30, .unit = "scene units",
+     .help = "occluders farther along a ray do not count (the meaning of ssao's radius)"},
+    {.name = "offset", .type = SSG_P_FLOAT,
+     .offset = offsetof(struct ssg_reference_ao_params, offset), .def = 1e-3, .min = 0,
+     .max = 1e6, .unit = "scene units",
+     .help = "ray origins move this far along the normal and this far towards the camera, "
+             "against self-intersection (at least 1024 float ulps of the point's "
+             "coordinates)"},
+};
+
+static const struct ssg_port_desc inputs[] = {
+    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position (gbuffer)"},
+    {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "out", .types = SSG_T_SCALAR,
+     .doc = "visibility, 1 = unoccluded (cosine-weighted, distance-limited)"},
+};
+
+const struct ssg_node_desc ssg_node_reference_ao = {
+    .name = "reference_ao",
+    .summary = "ground-truth ambient obscurance by ray casting the scene (Embree)",
+    .method = "Belonogov, Global Illumination methods in simulated VR environments, sec. "
+              "2.2.3, eq. 2.5-2.7 (cosine-weighted, distance-limited visibility), by Monte "
+              "Carlo ray casting with a Hammersley set (Szentandrasi sec. 4.2, eq. 5-7), "
+              "Malley's method and per-pixel Cranley-Patterson rotation",
+    .doc = "Per pixel, `rays` cosine-weighted directions over the normal's hemisphere (a "
+           "Hammersley set mapped by Malley's method, shifted per pixel by a hash of x, y "
+           "and the seed) are traced from the world-space point moved by `offset` along "
+           "the normal and towards the camera; a ray is occluded when any surface lies within `max_distance` on "
+           "it. out = 1 - occluded / rays: 1 = unoccluded, comparable with ssao and hbao "
+           "at radius = max_distance. Deterministic for a seed, whatever the threads. "
+           "Background pixels (normal 0) are 1. Shows a progress bar when stderr is a "
+           "terminal.",
+    .inputs = inputs,
+    .input_count = SSG_COUNT(inputs),
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_reference_ao_params),
+    .consts_size = sizeof(struct ssg_reference_ao_consts),
+    .needs_scene = 1,
+    .check = check,
+    .prepare = prepare,
+    .run_cpu = ssg_reference_ao_run_cpu,
+};
