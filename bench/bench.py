@@ -2,7 +2,7 @@
 """Times every node of a graph over several runs and prints medians and peak memory.
 
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
-                           [--graph graphs/ssao.graph ...] [--size 1280x720 ...]
+                           [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -45,18 +45,22 @@ def run_once(binary, graph, size, threads, out_dir):
     res = subprocess.run([sys.executable, "-c", wrapper] + cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit(f"bench: {' '.join(cmd)} failed:\n{res.stderr}")
-    times, peak = {}, 0.0
-    in_table = False
+    times, metrics, peak = {}, {}, 0.0
+    table = None
     for line in res.stdout.splitlines():
         parts = line.split()
         if parts[:3] == ["node", "type", "ms"]:
-            in_table = True
+            table = "times"
+        elif parts[:2] == ["metrics", "of"]:
+            table = "metrics"
         elif parts and parts[0] == "PEAK_KB":
             peak = int(parts[1]) / 1024.0
-        elif in_table and len(parts) >= 2:
+        elif table == "times" and len(parts) >= 2:
             name = parts[0] if parts[0] == "total" else f"{parts[0]} ({parts[1]})"
             times[name] = float(parts[1] if parts[0] == "total" else parts[2])
-    return times, peak
+        elif table == "metrics" and len(parts) == 3:
+            metrics[f"{parts[0]} {parts[1]}"] = float(parts[2])
+    return times, metrics, peak
 
 
 def bench(binary, graph, size, threads, runs):
@@ -66,8 +70,8 @@ def bench(binary, graph, size, threads, runs):
     names = list(samples[0][0].keys())
     medians = {n: statistics.median(s[0][n] for s in samples) for n in names}
     spread = {n: (min(s[0][n] for s in samples), max(s[0][n] for s in samples)) for n in names}
-    peak = statistics.median(s[1] for s in samples)
-    return medians, spread, peak
+    peak = statistics.median(s[2] for s in samples)
+    return medians, spread, samples[0][1], peak
 
 
 def main():
@@ -78,20 +82,29 @@ def main():
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--graph", action="append")
     ap.add_argument("--size", action="append")
+    ap.add_argument("--ao", action="store_true",
+                    help="the AO comparison: graphs/ao_error.graph (each AO method's time "
+                         "and its error against the ray-traced reference)")
     args = ap.parse_args()
     binary = args.bin or build()
-    graphs = args.graph or [os.path.join(ROOT, "graphs", "ssao.graph"),
-                            os.path.join(ROOT, "graphs", "ssao_bunny.graph")]
+    if args.ao:
+        graphs = [os.path.join(ROOT, "graphs", "ao_error.graph")]
+    else:
+        graphs = args.graph or [os.path.join(ROOT, "graphs", "ssao.graph"),
+                                os.path.join(ROOT, "graphs", "ssao_bunny.graph")]
     sizes = args.size or ["1280x720", "1920x1080"]
     print(f"{'graph':<18} {'size':<10} {'node':<24} {'median ms':>10} {'min':>8} {'max':>8}")
     for graph in graphs:
         for size in sizes:
-            medians, spread, peak = bench(binary, graph, size, args.threads, args.runs)
+            medians, spread, metrics, peak = bench(binary, graph, size, args.threads, args.runs)
             gname = os.path.basename(graph)
             for node, ms in medians.items():
                 lo, hi = spread[node]
                 print(f"{gname:<18} {size:<10} {node:<24} {ms:>10.2f} {lo:>8.2f} {hi:>8.2f}")
             print(f"{gname:<18} {size:<10} {'peak memory (MiB)':<24} {peak:>10.1f}")
+            # compare nodes' metrics (deterministic, so one run's values are the values)
+            for name, value in metrics.items():
+                print(f"{gname:<18} {size:<10} {name:<24} {value:>10.4f}   (metric)")
     print(f"({args.runs} runs each after a warm-up; threads: "
           f"{args.threads or os.cpu_count()})")
 

@@ -6,12 +6,13 @@
  *   A = 1 - 1/(2 pi) int_{-pi}^{pi} (sin h(theta) - sin t(theta)) W(theta) dtheta,
  * theta the azimuth about the view vector, t the signed elevation of the surface tangent,
  * h the elevation of the horizon (the highest point of the depth buffer, seen as a height
- * field, within R), W(theta) = max(0, 1 - r(theta) / R), r the distance from P to the
- * horizon point. The integral is estimated with `directions` azimuths per pixel, each
- * ray-marched with `steps` depth samples: as section 3.3.1 describes, a sample higher
- * than the highest so far becomes the horizon, the others are skipped. W is taken at the
- * final horizon point, as eq. 3.2 states (with falloff = none, W = 1 within R, this
- * equals the thesis's per-sample sum of (sin h_j - sin h_{j-1}) W(r_j), which telescopes).
+ * field, within R), W = max(0, 1 - r / R), r the distance from P to the horizon point.
+ * The integral is estimated with `directions` azimuths per pixel, each ray-marched with
+ * `steps` depth samples: as section 3.3.1 describes, a sample higher than the highest so
+ * far raises the horizon and adds its own term, "every individual ambient occlusion
+ * factors for each sample are accumulated": (sin h_j - sin h_{j-1}) W(r_j), from
+ * h_0 = t + bias; lower samples are skipped. With falloff = none (W = 1 within R) the
+ * terms telescope to eq. 3.2's sin h - sin t for the highest sample within R.
  * The azimuths are turned per pixel by the tiled rotation pattern (section 3.3.1: HBAO
  * inherits SSAO's rotation noise, removed by a blur afterwards).
  *
@@ -24,11 +25,16 @@
  * points of the slice: the sampled occluders and the angles of eq. 3.2 live in one plane.
  * A sample at pixel q gives Q, reconstructed from the depth at q and the camera (as HBAO
  * reconstructs from the depth buffer; P likewise, so a sample on P's own pixel gives
- * Q = P exactly), and H = Q - P, projected onto the slice (rounding to pixel centres moves
- * samples off the line by at most half a pixel): sin h = H.V / r, r = |H_s| =
- * sqrt((H.V)^2 + (H.D)^2). The tangent of the slice is the direction in it perpendicular
- * to the normal N: sin t = -(D.N) / sqrt((V.N)^2 + (D.N)^2). A flat plane thus gives
- * h = t up to float rounding: no occlusion once bias exceeds that rounding.
+ * Q = P exactly), and H = Q - P. Rounding to pixel centres moves samples off the line by
+ * up to half a pixel; H is brought back onto the slice along the tangent plane (not
+ * orthogonally, see hbao_cpu.c place_step), giving H', and sin h = H'.V / r,
+ * r = |H'| = sqrt((H'.V)^2 + (H'.D)^2). The tangent of the slice is the direction in it
+ * perpendicular to the normal N: sin t = -(D.N) / sqrt((V.N)^2 + (D.N)^2). Any sample of
+ * the tangent plane thus has h = t up to float rounding, whatever the rounding to
+ * pixels: a flat plane gives exactly 1 once bias exceeds float rounding. Samples the
+ * rounding moved more off the slice than along it are skipped, and so are slices within
+ * 6 degrees of the tangent plane (V.N < 0.1, near-grazing views), where the tangent line
+ * is ill-conditioned.
  * Because the slices are uniform in azimuth about V and cos(alpha) dalpha dtheta in
  * eq. 3.1 is the solid angle, with falloff = none and many directions and steps the node
  * tends to 1 - (solid angle above the tangent plane occluded within R) / (2 pi) when the
@@ -52,8 +58,8 @@
  * (depth 0) or beyond R (r > R) are skipped. The horizon starts at t + bias (Bavoil's
  * angle bias against the self-occlusion of tessellated or noisy surfaces; 0.1 rad ~
  * 5.7 degrees; t + bias beyond pi/2 means no occlusion in that slice).
- * out = clamp(1 - strength * mean over directions of (sin h - sin(t + bias))^+ W(r),
- * 0, 1); background pixels (depth 0 or no normal) get 1. */
+ * out = clamp(1 - strength * mean over directions of the accumulated terms, 0, 1);
+ * background pixels (depth 0 or no normal) get 1. */
 #include <math.h>
 #include <stdio.h>
 
@@ -171,12 +177,12 @@ const struct ssg_node_desc ssg_node_hbao = {
               "horizon terms, angle bias, rotated directions)",
     .doc = "For each pixel, `directions` slices uniform in azimuth about the view vector "
            "(turned by the rotation tile) are marched on screen with `steps` depth samples "
-           "each, far enough to reach every point of the slice within `radius`. The "
-           "highest sample within `radius` is the horizon h; each slice adds "
-           "(sin h - sin(t + bias)) W(r) when positive, t the tangent's elevation, r the "
-           "distance to the horizon, W = 1 - r/R (falloff linear) or 1 (none). out = "
-           "clamp(1 - strength * mean over slices, 0, 1); background pixels are 1. A flat "
-           "open plane gives exactly 1.",
+           "each, far enough to reach every point of the slice within `radius`. Each "
+           "sample within `radius` that rises above the horizon so far (at first the "
+           "tangent's elevation t + `bias`) adds (sin h_j - sin h_{j-1}) W(r_j), W = "
+           "1 - r/R (falloff linear) or 1 (none: the slice adds sin h - sin(t + bias)). "
+           "out = clamp(1 - strength * mean over slices, 0, 1); background pixels are 1. "
+           "A flat open plane gives exactly 1.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

@@ -1,19 +1,21 @@
 /* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c).
  *
- * Layout for speed, as in ssao_cpu.c. A row is cut into chunks of CHUNK pixels; per
- * chunk, what depends on the pixel only (V, the azimuth basis, the march length) is set
- * up once in structure-of-arrays scratch, then per pair of opposite directions D, -D
- * what depends on the azimuth (screen step, slice coefficients, tangents; -D reuses D's
+ * Layout for speed, as in ssao_cpu.c. A row is cut into chunks of CHUNK pixels whose
+ * surface pixels are packed into the first lanes (background costs nothing); per chunk,
+ * what depends on the pixel only (V, the azimuth basis, the march length) is set up once
+ * in structure-of-arrays scratch, then per pair of opposite directions D, -D what
+ * depends on the azimuth (screen step, slice coefficients, tangents; -D reuses D's
  * work), then per step two straight loops over the chunk: one places the samples and
  * computes their pixel indices, one reads the depth there (the only gather) and updates
  * the horizon. Both vectorise (SSE4, and AVX2 through a run-time selected clone).
  *
- * Cost per sample is kept to multiplies and compares:
+ * Cost per sample is kept to a few multiplies and compares:
  * - Points come from the depth: Q = dq (a_u, a_v, -1), a_u = (u + 0.5 - cx) / f,
  *   a_v = -(v + 0.5 - cy) / f. With V = -(a_u, a_v, -1) / L (L = |(a_u, a_v, -1)|) and D
  *   perpendicular to V, a sample at pixel offset (ou, ov) from P gives
  *     H.V = dq (ou Vx - ov Vy) / f - L (dq - dp),   H.D = dq (ou Dx - ov Dy) / f,
- *   since P.V = -L dp and P.D = 0; exactly 0 on P's own pixel.
+ *   since P.V = -L dp and P.D = 0; exactly 0 on P's own pixel. Both are affine in dq,
+ *   and so is the projection of place_step: per sample H'.V = dq a + L dp, H'.D = dq b.
  * - With falloff none, sines are compared as hv |hv| bq > bv |bv| q (no root, no
  *   division) and the horizon's sine is taken once per direction; the linear falloff
  *   weighs each raising sample by its own distance, which costs a root and a division.
@@ -22,11 +24,11 @@
  *   infinite depth makes q inf or NaN, which fails q <= R^2: no other test is needed.
  * - The march is not normalised per direction (setup_direction).
  * Bands of 32 rows go to ssg_parallel_rows, chunk columns outside and rows inside, so the
- * depth window around a chunk (the march reaches ~150-250 px at 1080p) slides down one
- * row at a time and mostly stays in L2 (taller bands: fewer refills). Each pixel depends
- * only on the inputs and every per-pixel sum runs in a fixed order, so the output does
- * not depend on the thread count nor on the instruction set (the clones perform the same
- * IEEE operations lane by lane: no FMA, no reassociation). */
+ * depth window around a chunk (the march reaches ~150-300 px at 1080p, more than L2
+ * holds) slides down one row at a time: taller bands refill it from L3 less often. Each
+ * pixel depends only on the inputs and every per-pixel sum runs in a fixed order, so
+ * the output does not depend on the thread count nor on the instruction set (the clones
+ * perform the same IEEE operations lane by lane: no FMA, no reassociation). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -45,7 +47,7 @@ enum { CHUNK = 128, ROWS_PER_BAND = 32 };
 
 /* A slice whose plane lies within asin(0.1) ~ 5.7 degrees of the tangent plane
    (|N projected on it|^2 = (V.N)^2 + (D.N)^2 < SLICE_MIN) has no well-conditioned tangent
-   line: the correction of place_one would divide float noise by ~0, and the band
+   line: the correction of place_step would divide float noise by ~0, and the band
    between tangent and horizon is a sliver. Such slices add nothing. They exist only
    where V.N < 0.1, i.e. on surfaces seen within 6 degrees of grazing. */
 #define SLICE_MIN 0.01f
@@ -69,50 +71,59 @@ struct job {
     float f, cx, cy;      /* projection of this resolution */
 };
 
-/* Per-pixel values of one chunk, structure of arrays. Directions come in opposite pairs
-   D, -D (k and k + directions / 2); the arrays [2][CHUNK] hold one row per member. */
+/* Per-lane values of one chunk, structure of arrays; a lane is a surface pixel (xs).
+   Directions come in opposite pairs D, -D (k and k + directions / 2); the arrays
+   [2][CHUNK] hold one row per member. */
 struct chunk {
-    /* per pixel */
-    float dp[CHUNK];                       /* depth of P */
+    /* per lane; every array starts on a cache line (CHUNK floats are whole lines), so
+       vector loads never straddle two */
+    _Alignas(64) float dp[CHUNK];          /* depth of P */
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
     float co[CHUNK], si[CHUNK];            /* rotation of the tile */
     float u[CHUNK];                        /* step jitter in (0, 1] */
     float lp[CHUNK];                       /* L = |P| / depth */
     float ldp[CHUNK];                      /* L dp = |P| */
     float vxf[CHUNK], vyf[CHUNK];          /* Vx / f, -Vy / f */
-    float vx[CHUNK], vy[CHUNK], vz[CHUNK]; /* V */
     float e1x[CHUNK], e1z[CHUNK];          /* e1 = (e1x, 0, e1z) */
     float e2[3][CHUNK];                    /* e2 = V x e1 */
+    float e1n[CHUNK], e2n[CHUNK];          /* e1.N, e2.N */
     float au[CHUNK], av[CHUNK];            /* a_u, a_v of P's pixel */
     float vn[CHUNK];                       /* V.N, floored at 1e-6 */
     float step[CHUNK];                     /* march length / steps, px */
     float xf[CHUNK];                       /* pixel column */
-    int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
+    int32_t fg[CHUNK];                     /* by column: 1 = surface, 0 = background */
+    int32_t xs[CHUNK];                     /* column within the chunk of each lane */
     float occ[CHUNK];                      /* sum of horizon terms over directions */
     /* per direction (pair) */
     float du[CHUNK], dv[CHUNK];            /* screen step of D, px per step */
-    float dxf[CHUNK], dyf[CHUNK];          /* Dx / f, -Dy / f */
-    float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f, M = V x D */
-    float al[CHUNK], be[CHUNK];            /* projection along the tangent plane:
-                                              mn vn / (1 - mn^2), mn dn / (1 - mn^2) */
-    float sin_tb[2][CHUNK];                /* sin(t + bias), 1 past the zenith */
-    float bv[2][CHUNK], bq[2][CHUNK];      /* horizon so far: falloff none: H.V and
-                                              |H_s|^2 of the highest sample, (sin_tb, 1)
+    float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f, M = V x D: H.M = dq c,
+                                              c = ou mxf + ov myf */
+    float ax[CHUNK], ay[CHUNK];            /* a = ou ax + ov ay - L (place_step) */
+    float bx[CHUNK], by[CHUNK];            /* b = ou bx + ov by (place_step) */
+    float sin_tb[2][CHUNK];                /* falloff none: sin(t + bias), 1 past the
+                                              zenith */
+    float bv[2][CHUNK], bq[2][CHUNK];      /* horizon so far: falloff none: H'.V and
+                                              |H'|^2 of the highest sample, (sin_tb, 1)
                                               at first; linear: bv = its sine */
     /* per sample */
-    float a[2][CHUNK], b[2][CHUNK];        /* H'.V = dq a + L dp, H'.D_m = dq b, D_m the
-                                              member's direction (D or -D) */
-    float c[2][CHUNK];                     /* H.M = dq c */
-    int32_t idx[2][CHUNK];                 /* index of the sample in the padded plane,
-                                              relative to its pixel (0, 0) */
+    float a[2][CHUNK];                     /* H'.V = dq a + L dp; NaN for a sample
+                                              rejected by place_step */
+    float b[CHUNK];                        /* H'.D_m = dq b, D_m the member's
+                                              direction (D or -D): one b for both */
+    int32_t idx[2][CHUNK];                 /* sv pw + su for the sample's pixel (su, sv),
+                                              each in [-1, size]: relative to the
+                                              padded plane's pixel (0, 0) */
 };
 
-/* Loads and background. Normals are unit by the frame conventions (node.h); the rare
-   chunk holding one that is not gets a scalar pass, so the common case stays a vector
-   loop (sqrtf does not vectorise while it may set errno). */
-static inline __attribute__((always_inline)) void load_chunk(const struct job *j,
-                                                             struct chunk *restrict k,
-                                                             int y, int x0, int len)
+/* Loads the chunk's pixels and keeps only the surface ones, packed into the first lanes
+   (xs: their columns within the chunk): background pixels (depth 0 or no normal) are 1
+   and cost nothing more, which matters where the scene leaves much of the frame empty.
+   Returns the number of surface pixels. Normals are unit by the frame conventions
+   (node.h); the rare chunk holding one that is not gets a scalar pass, so the common
+   case stays a vector loop (sqrtf does not vectorise while it may set errno). */
+static inline __attribute__((always_inline)) int load_chunk(const struct job *j,
+                                                            struct chunk *restrict k,
+                                                            int y, int x0, int len)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
     size_t po = (size_t)(y % j->n) * (size_t)j->w + (size_t)x0;
@@ -122,30 +133,58 @@ static inline __attribute__((always_inline)) void load_chunk(const struct job *j
     const float *restrict rc = j->rot_c + po, *restrict rs = j->rot_s + po;
     const float *restrict ju = j->jitter + po;
     const float sign = j->depth_sign;
-    int not_unit = 0;
+    int all = 1;
     for (int i = 0; i < len; i++) {
         float nx = nx0[i], ny = ny0[i], nz = nz0[i];
         float nn = nx * nx + ny * ny + nz * nz;
         float d = sign * dpl[i];
-        /* Background (depth 0, normal 0) or garbage: harmless values, result 1. */
+        /* Background (depth 0, normal 0) or garbage. */
         int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
-        not_unit |= fg & (fabsf(nn - 1.0f) > 1e-5f);
         k->fg[i] = fg;
-        k->nx[i] = fg ? nx : 0.0f;
-        k->ny[i] = fg ? ny : 0.0f;
-        k->nz[i] = fg ? nz : 1.0f;
-        k->dp[i] = fg ? d : 1.0f;
-        k->xf[i] = (float)(x0 + i);
-        k->occ[i] = 0.0f;
-        k->co[i] = rc[i];
-        k->si[i] = rs[i];
-        k->u[i] = ju[i];
+        all &= fg;
     }
-    for (int i = 0; not_unit && i < len; i++) {
+    int m = 0, not_unit = 0;
+    if (all) {
+        /* The common case, a chunk all surface: straight vector copies. */
+        for (int i = 0; i < len; i++) {
+            float nx = nx0[i], ny = ny0[i], nz = nz0[i];
+            not_unit |= fabsf(nx * nx + ny * ny + nz * nz - 1.0f) > 1e-5f;
+            k->xs[i] = i;
+            k->nx[i] = nx;
+            k->ny[i] = ny;
+            k->nz[i] = nz;
+            k->dp[i] = sign * dpl[i];
+            k->xf[i] = (float)(x0 + i);
+            k->co[i] = rc[i];
+            k->si[i] = rs[i];
+            k->u[i] = ju[i];
+            k->occ[i] = 0.0f;
+        }
+        m = len;
+    }
+    for (int i = 0; !all && i < len; i++) {
+        if (!k->fg[i])
+            continue;
+        k->xs[m] = i;
+        k->nx[m] = nx0[i];
+        k->ny[m] = ny0[i];
+        k->nz[m] = nz0[i];
+        k->dp[m] = sign * dpl[i];
+        k->xf[m] = (float)(x0 + i);
+        k->co[m] = rc[i];
+        k->si[m] = rs[i];
+        k->u[m] = ju[i];
+        k->occ[m] = 0.0f;
+        float nn = nx0[i] * nx0[i] + ny0[i] * ny0[i] + nz0[i] * nz0[i];
+        not_unit |= fabsf(nn - 1.0f) > 1e-5f;
+        m++;
+    }
+    for (int i = 0; not_unit && i < m; i++) {
         float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
         float inv = 1.0f / sqrtf(nn);
         k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
     }
+    return m;
 }
 
 /* What depends on the pixel only: V, the basis e1 = normalize(y x V), e2 = V x e1, the
@@ -167,7 +206,7 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
         float inv = 1.0f / (l * den);
         float il = den * inv;
         float vx = -au * il, vy = -av * il, vz = il;
-        float e1x = j->e1x[x0 + i], e1z = j->e1z[x0 + i];
+        float e1x = j->e1x[x0 + k->xs[i]], e1z = j->e1z[x0 + k->xs[i]];
         k->e1x[i] = e1x;
         k->e1z[i] = e1z;
         k->e2[0][i] = vy * e1z;
@@ -179,11 +218,10 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
         k->ldp[i] = l * k->dp[i];
         k->vxf[i] = vx * invf;
         k->vyf[i] = -vy * invf;
-        k->vx[i] = vx;
-        k->vy[i] = vy;
-        k->vz[i] = vz;
         float vn = vx * k->nx[i] + vy * k->ny[i] + vz * k->nz[i];
         k->vn[i] = vn > 1e-6f ? vn : 1e-6f;
+        k->e1n[i] = e1x * k->nx[i] + e1z * k->nz[i];
+        k->e2n[i] = k->e2[0][i] * k->nx[i] + k->e2[1][i] * k->ny[i] + k->e2[2][i] * k->nz[i];
         /* f R / den: the march along D reaches f R |J D| / den (setup_direction). */
         float rp = rf * l * inv;
         rp = cap > 0.0f && rp > cap ? cap : rp;
@@ -198,7 +236,8 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
    normalised: `steps` steps of step (su, sv), step = f R / (den steps), reach
    f R |(su, sv)| / den, which is exactly the bound of hbao.c for this slice. */
 static inline __attribute__((always_inline)) void
-setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
+setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds,
+                int linear)
 {
     const float invf = 1.0f / j->f, cb = j->c->cos_bias, sb = j->c->sin_bias;
     for (int i = 0; i < len; i++) {
@@ -208,67 +247,75 @@ setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc
         float dz = c * k->e1z[i] + s * k->e2[2][i];
         k->du[i] = (dx + k->au[i] * dz) * k->step[i];
         k->dv[i] = -(dy + k->av[i] * dz) * k->step[i];
-        k->dxf[i] = dx * invf;
-        k->dyf[i] = -dy * invf;
-        float dn = dx * k->nx[i] + dy * k->ny[i] + dz * k->nz[i];
+        /* M = V x D = c e2 - s e1 (V x e1 = e2, V x e2 = -e1); N's components on the
+           rotated basis come from those on e1, e2. */
+        float mx = c * k->e2[0][i] - s * k->e1x[i], my = c * k->e2[1][i];
+        float dn = c * k->e1n[i] + s * k->e2n[i], mn = c * k->e2n[i] - s * k->e1n[i];
         float vn = k->vn[i];
-        float mx = k->vy[i] * dz - k->vz[i] * dy, my = k->vz[i] * dx - k->vx[i] * dz;
-        float mz = k->vx[i] * dy - k->vy[i] * dx;
-        float mn = mx * k->nx[i] + my * k->ny[i] + mz * k->nz[i];
-        float sl = vn * vn + dn * dn; /* = 1 - mn^2, |N projected on the slice|^2 */
-        float isl = mn / (sl > SLICE_MIN ? sl : SLICE_MIN);
-        k->mxf[i] = mx * invf;
-        k->myf[i] = -my * invf;
-        k->al[i] = isl * vn;
-        k->be[i] = isl * dn;
-        float ir = 1.0f / sqrtf(vn * vn + dn * dn);
+        float sl = vn * vn + dn * dn; /* = 1 - mn^2, |N projected on the slice|^2 > 0 */
+        float ir = 1.0f / sqrtf(sl);
+        /* mn / sl; huge only in the slices disabled below, whose samples it then
+           rejects (q > R^2, or NaN). */
+        float isl = mn * ir * ir;
+        /* The projection along the tangent plane (place_step), folded in. */
+        float mxf = mx * invf, myf = -my * invf, al = isl * vn, be = isl * dn;
+        k->mxf[i] = mxf;
+        k->myf[i] = myf;
+        k->ax[i] = k->vxf[i] + mxf * al;
+        k->ay[i] = k->vyf[i] + myf * al;
+        k->bx[i] = dx * invf + mxf * be;
+        k->by[i] = -dy * invf + myf * be;
         float st = -dn * ir, ct = vn * ir;
         float stb = st * cb + ct * sb, ctb = ct * cb - st * sb;
         float stb2 = ct * sb - st * cb, ctb2 = ct * cb + st * sb;
         /* Past the zenith, or a slice too close to the tangent plane (below): no term. */
         stb = (ctb < 0.0f) | (sl < SLICE_MIN) ? 1.0f : stb;
         stb2 = (ctb2 < 0.0f) | (sl < SLICE_MIN) ? 1.0f : stb2;
-        k->sin_tb[0][i] = stb;
-        k->sin_tb[1][i] = stb2;
         k->bv[0][i] = stb;
         k->bv[1][i] = stb2;
-        k->bq[0][i] = 1.0f;
-        k->bq[1][i] = 1.0f;
+        if (!linear) {
+            k->sin_tb[0][i] = stb;
+            k->sin_tb[1][i] = stb2;
+            k->bq[0][i] = 1.0f;
+            k->bq[1][i] = 1.0f;
+        }
     }
 }
 
-/* One sample at offset (ou, ov) from pixel (x, y): its index in the padded plane, and
-   what does not depend on its depth folded into a and b. The rounding to a pixel moves
-   the sample off the slice by hm = H.M (at most half a pixel); it is brought back onto
-   the slice along the tangent plane, not orthogonally: H' = H - hm M' / (M'.M) with
-   M' = M - (M.N) N, so H'.V = H.V + hm al and H'.D = H.D + hm be. A sample of the
-   tangent plane thus lands on the slice's tangent line and a flat surface stays exactly
-   unoccluded, whatever the rounding. hm = dq (ou Mx - ov My) / f is linear in dq like
-   H.D, so the correction folds into a and b. */
-static inline __attribute__((always_inline)) void
-place_one(float x, float y, float ou, float ov, const struct chunk *restrict k, int i,
-          float fw, float fh, int pw, float sign, int32_t *idx, float *a, float *b,
-          float *cp)
+/* The index in the padded plane of the sample at (x + ou, y + ov). A sample off screen
+   is clamped into the border, whose infinite depth makes it no occluder: the clamp
+   replaces a test. (ou, ov are finite: rounded products of finite values.) */
+static inline __attribute__((always_inline)) int32_t
+padded_index(float x, float y, float ou, float ov, float fw, float fh, int pw)
 {
-    /* A sample off screen is clamped into the padded plane's border, whose infinite depth
-       makes it no occluder: the clamp replaces a test. The comparisons are written so
-       that even a NaN lands on the border. */
     float su = x + ou, sv = y + ov;
-    su = su > -1.0f ? su : -1.0f;
+    su = su < -1.0f ? -1.0f : su;
     su = su < fw ? su : fw;
-    sv = sv > -1.0f ? sv : -1.0f;
+    sv = sv < -1.0f ? -1.0f : sv;
     sv = sv < fh ? sv : fh;
-    *idx = (int)sv * pw + (int)su;
-    float c = ou * k->mxf[i] + ov * k->myf[i];
-    *a = ou * k->vxf[i] + ov * k->vyf[i] - k->lp[i] + c * k->al[i];
-    *b = sign * (ou * k->dxf[i] + ov * k->dyf[i] + c * k->be[i]);
-    *cp = c;
+    return (int)sv * pw + (int)su;
 }
 
-/* Places step jf of D (and of -D when `pair`) for the whole chunk, at distance
-   (jf + u) step along the screen direction, rounded to the nearest pixel (ties to even).
-   Separate from the lookup, because GCC vectorises a lookup at a computed index (an
-   emulated gather) only when the indices come from memory. */
+/* Places step jf of D, and of -D when `pair`, for the whole chunk: the sample lies at
+   (jf + u) step along the screen direction, rounded to the nearest pixel (ties to even),
+   and what does not depend on its depth is folded into a and b.
+   The rounding moves a sample off the slice by hm = H.M (at most half a pixel); it is
+   brought back onto the slice along the tangent plane, not orthogonally:
+   H' = H - hm M' / (M'.M) with M' = M - (M.N) N, so H'.V = H.V + hm al and
+   H'.D = H.D + hm be, al = mn vn / (1 - mn^2), be = mn dn / (1 - mn^2) (mn = M.N,
+   1 - mn^2 = vn^2 + dn^2). A sample of the tangent plane thus lands on the slice's
+   tangent line, and a flat surface stays exactly unoccluded whatever the rounding.
+   hm = dq (ou Mx - ov My) / f is linear in dq like H.D, so the correction folds into
+   the per-direction coefficients ax, ay, bx, by (setup_direction).
+   A sample that the rounding put more off the slice than forward along it
+   (|H.M| >= H'.D) says nothing about this half of the slice, and its H' would be noise:
+   since H'.D = dq b and H.M = dq c share the factor dq > 0 the test is b > |c|, and a
+   NaN in a rejects the sample. That happens within a pixel or two of P, mostly on
+   surfaces seen at a grazing angle, and for an occluder so nearly straight above P that
+   its forward offset is below the rounding's.
+   -D's sample is the point reflection: rint is odd (ties to even), so its offset is
+   (-ou, -ov), its a is -(p + L) where D's is p - L, and its b and c, both odd in the
+   offset and in the direction, equal D's: one b serves both. */
 static inline __attribute__((always_inline)) void
 place_step(const struct job *j, struct chunk *restrict k, int len, int pair, float y,
            float jf)
@@ -276,17 +323,21 @@ place_step(const struct job *j, struct chunk *restrict k, int len, int pair, flo
     const float fw = (float)j->w, fh = (float)j->h;
     const int pw = j->pw;
     int32_t *restrict i0 = k->idx[0], *restrict i1 = k->idx[1];
-    float *restrict a0 = k->a[0], *restrict a1 = k->a[1];
-    float *restrict b0 = k->b[0], *restrict b1 = k->b[1];
-    float *restrict c0 = k->c[0], *restrict c1 = k->c[1];
+    float *restrict a0 = k->a[0], *restrict a1 = k->a[1], *restrict kb = k->b;
     for (int i = 0; i < len; i++) {
         float t = jf + k->u[i];
-        float x = k->du[i] * t, yv = k->dv[i] * t;
-        place_one(k->xf[i], y, nearbyintf(x), nearbyintf(yv), k, i, fw, fh, pw, 1.0f,
-                  &i0[i], &a0[i], &b0[i], &c0[i]);
-        if (pair)
-            place_one(k->xf[i], y, nearbyintf(-x), nearbyintf(-yv), k, i, fw, fh, pw, -1.0f,
-                      &i1[i], &a1[i], &b1[i], &c1[i]);
+        float ou = nearbyintf(k->du[i] * t), ov = nearbyintf(k->dv[i] * t);
+        float pa = ou * k->ax[i] + ov * k->ay[i];
+        float b = ou * k->bx[i] + ov * k->by[i];
+        float c = ou * k->mxf[i] + ov * k->myf[i];
+        int ok = b > fabsf(c);
+        kb[i] = b;
+        i0[i] = padded_index(k->xf[i], y, ou, ov, fw, fh, pw);
+        a0[i] = ok ? pa - k->lp[i] : __builtin_nanf("");
+        if (pair) {
+            i1[i] = padded_index(k->xf[i], y, -ou, -ov, fw, fh, pw);
+            a1[i] = ok ? -(pa + k->lp[i]) : __builtin_nanf("");
+        }
     }
 }
 
@@ -297,25 +348,24 @@ place_step(const struct job *j, struct chunk *restrict k, int len, int pair, flo
    linear falloff each raising sample adds (sin h_j - sin h_{j-1}) (1 - r_j / R) at once
    (bv then holds sin h directly and bq is unused): a root and a division per sample. */
 static inline __attribute__((always_inline)) void
-horizon_one(float dq, float a, float b, float c, float ldp, float r2, float inv_radius,
-            int linear, float *bvp, float *bqp, float *occ)
+horizon_one(float dq, float a, float b, float ldp, float r2, float inv_radius, int linear,
+            float *bvp, float *bqp, float *occ)
 {
     float hv = dq * a + ldp;
     float hd = dq * b;
-    float hm = dq * c;
     float q = hv * hv + hd * hd;
     float bv = *bvp;
-    /* Background, garbage and off-screen samples read +inf, which makes q inf or NaN:
-       no occluder. P's own pixel gives q = 0 (and sh NaN): never higher. A sample that
-       the rounding put more off the slice than in it (|H.M| > |H'|), or behind P along
-       the slice (H'.D_m <= 0), says nothing about this half of the slice; both happen
-       only within a pixel or two of P, mostly on surfaces seen at a grazing angle. */
-    int in = (q <= r2) & (hm * hm <= q) & (hd > 0.0f);
+    /* Background, garbage and off-screen samples read +inf, which makes q inf or NaN,
+       and samples rejected by place_step carry a NaN: no occluder. P's own pixel gives
+       q = 0 (and sh NaN): never higher. */
+    int in = q <= r2;
     if (linear) {
         float r = sqrtf(q);
         float sh = hv / r;
         int take = in & (sh > bv);
-        *occ += take ? (sh - bv) * (1.0f - r * inv_radius) : 0.0f;
+        float gain = (sh - bv) * (1.0f - r * inv_radius);
+        gain = take ? gain : 0.0f;
+        *occ += gain;
         *bvp = take ? sh : bv;
     } else {
         float bq = *bqp;
@@ -337,11 +387,11 @@ horizon_step(const struct job *j, struct chunk *restrict k, int len, int pair, i
     float *restrict q0 = k->bq[0], *restrict q1 = k->bq[1];
     float *restrict occ = k->occ;
     for (int i = 0; i < len; i++) {
-        horizon_one(plane[i0[i]], k->a[0][i], k->b[0][i], k->c[0][i], k->ldp[i], r2,
-                    inv_radius, linear, &v0[i], &q0[i], &occ[i]);
+        horizon_one(plane[i0[i]], k->a[0][i], k->b[i], k->ldp[i], r2, inv_radius, linear,
+                    &v0[i], &q0[i], &occ[i]);
         if (pair)
-            horizon_one(plane[i1[i]], k->a[1][i], k->b[1][i], k->c[1][i], k->ldp[i], r2,
-                        inv_radius, linear, &v1[i], &q1[i], &occ[i]);
+            horizon_one(plane[i1[i]], k->a[1][i], k->b[i], k->ldp[i], r2, inv_radius,
+                        linear, &v1[i], &q1[i], &occ[i]);
     }
 }
 
@@ -364,7 +414,7 @@ march(const struct job *j, struct chunk *restrict k, int len, float y, int d, in
       int linear)
 {
     const struct ssg_hbao_consts *c = j->c;
-    setup_direction(j, k, len, c->dir_cos[d], c->dir_sin[d]);
+    setup_direction(j, k, len, c->dir_cos[d], c->dir_sin[d], linear);
     for (int s = 0; s < c->p.steps; s++) {
         place_step(j, k, len, pair, y, (float)s);
         horizon_step(j, k, len, pair, linear);
@@ -376,14 +426,15 @@ march(const struct job *j, struct chunk *restrict k, int len, float y, int d, in
 }
 
 static inline __attribute__((always_inline)) void
-finish_chunk(const struct job *j, const struct chunk *restrict k, int len, float *out)
+finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m, float *out)
 {
     const float scale = j->c->p.strength / (float)j->c->p.directions;
-    for (int i = 0; i < len; i++) {
+    for (int i = 0; i < len; i++)
+        out[i] = 1.0f;
+    for (int i = 0; i < m; i++) {
         float v = 1.0f - k->occ[i] * scale;
         v = v > 0.0f ? v : 0.0f;
-        v = v < 1.0f ? v : 1.0f;
-        out[i] = k->fg[i] ? v : 1.0f;
+        out[k->xs[i]] = v < 1.0f ? v : 1.0f;
     }
 }
 
@@ -399,21 +450,21 @@ static void chunk_row(const struct job *j, struct chunk *k, int y, int x0, int l
 {
     const int nd = j->c->p.directions;
     const int linear = j->c->p.falloff == SSG_HBAO_FALLOFF_LINEAR;
-    load_chunk(j, k, y, x0, len);
-    setup_chunk(j, k, y, x0, len);
+    const int m = load_chunk(j, k, y, x0, len);
+    setup_chunk(j, k, y, x0, m);
     for (int d = 0; nd % 2 == 0 && d < nd / 2; d++) {
         if (linear)
-            march(j, k, len, (float)y, d, 1, 1);
+            march(j, k, m, (float)y, d, 1, 1);
         else
-            march(j, k, len, (float)y, d, 1, 0);
+            march(j, k, m, (float)y, d, 1, 0);
     }
     for (int d = 0; nd % 2 == 1 && d < nd; d++) {
         if (linear)
-            march(j, k, len, (float)y, d, 0, 1);
+            march(j, k, m, (float)y, d, 0, 1);
         else
-            march(j, k, len, (float)y, d, 0, 0);
+            march(j, k, m, (float)y, d, 0, 0);
     }
-    finish_chunk(j, k, len, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
+    finish_chunk(j, k, len, m, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
 }
 
 /* Chunk columns outside, rows inside: the rows of one band sample nearly the same part

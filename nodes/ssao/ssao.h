@@ -12,6 +12,12 @@ enum ssg_ssao_range {
     SSG_SSAO_RANGE_SMOOTH, /* weight smoothstep(0, 1, radius / |depth difference|) */
 };
 
+enum ssg_ssao_mode {
+    SSG_SSAO_MODE_HEMISPHERE, /* samples in the hemisphere about the normal */
+    SSG_SSAO_MODE_SPHERE,     /* normal-free: samples in the sphere about the point */
+    SSG_SSAO_MODE_DISC,       /* normal-free: depth samples in a screen-space disc */
+};
+
 /* Input ports, in order. */
 enum { SSG_SSAO_IN_POSITION, SSG_SSAO_IN_NORMAL, SSG_SSAO_IN_KERNEL, SSG_SSAO_IN_ROTATION,
        SSG_SSAO_IN_DEPTH };
@@ -23,6 +29,7 @@ struct ssg_ssao_params {
     float power;             /* ao = visibility^power; default 1 */
     int range_check;         /* enum ssg_ssao_range; default smooth */
     float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
+    int mode;                /* enum ssg_ssao_mode; default hemisphere */
 };
 
 struct ssg_ssao_consts {

@@ -31,7 +31,7 @@ enum { CHUNK = 128, ROWS_PER_BAND = 16 };
 
 struct job {
     const struct ssg_ssao_consts *c;
-    const float *pos[3], *nrm[3]; /* planes of position and normal */
+    const float *pos[3], *nrm[3]; /* planes of position and normal (NULL: normal-free) */
     const float *depth;           /* plane the scene depth is read from */
     float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
     const float *kernel;          /* planar count x 1 x 3 */
@@ -63,7 +63,12 @@ struct chunk {
     int32_t far[CHUNK];                    /* per sample: occluded from beyond r */
     float occ[CHUNK];                      /* weighted occluded samples */
     int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
+    float rp[CHUNK];                       /* disc: f r / depth, px per kernel unit */
+    float xf[CHUNK];                       /* disc: pixel column */
 };
+
+static void load_rotation(const struct job *j, struct chunk *restrict k, int y, int x0,
+                          int len);
 
 /* First part of the setup: loads and background. Normals are unit by the frame
    conventions (node.h); the rare chunk holding one that is not gets a scalar pass, so
@@ -100,6 +105,13 @@ static void load_chunk(const struct job *j, struct chunk *restrict k, int y, int
         float inv = 1.0f / sqrtf(nn);
         k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
     }
+    load_rotation(j, k, y, x0, len);
+}
+
+/* The rotation of the tile for the pixels of a chunk (shared by both loaders). */
+static void load_rotation(const struct job *j, struct chunk *restrict k, int y, int x0,
+                          int len)
+{
     if (j->rot) {
         const int n = j->n;
         const float *rc = j->rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
@@ -113,6 +125,33 @@ static void load_chunk(const struct job *j, struct chunk *restrict k, int y, int
             k->si[i] = 0.0f;
         }
     }
+}
+
+/* The loads of the normal-free modes: every pixel with a depth is a surface, and the
+   sample frame is the view axis (N = +z, so setup_chunk's T, B are x, y turned by the
+   tile). */
+static void load_chunk_free(const struct job *j, struct chunk *restrict k, int y, int x0,
+                            int len)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    const float *restrict dpl = j->depth + o;
+    const float *restrict px0 = j->pos[0] + o, *restrict py0 = j->pos[1] + o;
+    const float *restrict pz0 = j->pos[2] + o;
+    const float sign = j->depth_sign;
+    for (int i = 0; i < len; i++) {
+        float d = sign * dpl[i];
+        int fg = (d > 0.0f) & (d <= 3.0e38f);
+        k->fg[i] = fg;
+        k->nx[i] = 0.0f;
+        k->ny[i] = 0.0f;
+        k->nz[i] = 1.0f;
+        k->dp[i] = fg ? d : 1.0f;
+        k->px[i] = px0[i];
+        k->py[i] = py0[i];
+        k->pz[i] = pz0[i];
+        k->xf[i] = (float)(x0 + i);
+    }
+    load_rotation(j, k, y, x0, len);
 }
 
 /* Vectorised part of the setup: tangent frame (Duff et al., "Building an Orthonormal
@@ -162,10 +201,10 @@ static void setup_chunk(const struct job *j, struct chunk *restrict k, int len)
    come from memory. `range` is a constant at each call site, so each variant is its own
    straight code; selects of computed values, no conditional arithmetic. */
 static inline __attribute__((always_inline)) void
-sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
-             float sz, int range)
+place_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
+            float sz)
 {
-    const float bias = j->c->p.bias, sign = j->depth_sign;
+    const float bias = j->c->p.bias;
     const float fw = (float)j->w, fh = (float)j->h;
     const int w = j->w;
     for (int i = 0; i < len; i++) {
@@ -184,6 +223,14 @@ sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, f
         /* -1 never exceeds a depth > 0: off-screen samples are unoccluded. */
         k->zb[i] = ok ? zb : -1.0f;
     }
+}
+
+/* Looks up the scene depth at each sample placed in k->idx (threshold k->zb) and adds
+   its weighted occlusion. */
+static inline __attribute__((always_inline)) void
+lookup_chunk(const struct job *j, struct chunk *restrict k, int len, int range)
+{
+    const float sign = j->depth_sign;
     /* Occluders within r in depth weigh 1 in every mode (smoothstep of r / |dp - d|
        >= 1 is exactly 1), so this loop adds those; the smooth mode's division is needed
        only for the rare occluders farther away, done below when a chunk has any. */
@@ -215,6 +262,14 @@ sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, f
     }
 }
 
+static inline __attribute__((always_inline)) void
+sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
+             float sz, int range)
+{
+    place_chunk(j, k, len, sx, sy, sz);
+    lookup_chunk(j, k, len, range);
+}
+
 /* The hot loop. With GCC on x86-64 it is also compiled for AVX2 and picked at run time:
    the same IEEE operations lane by lane (no FMA: avx2 does not enable it, and C11 mode
    does not contract), so both versions give the same bits. */
@@ -223,30 +278,108 @@ __attribute__((target_clones("avx2", "default")))
 #endif
 static void sample_all(const struct job *j, struct chunk *k, int len)
 {
-    const int count = j->count;
+    const int count = j->count, sphere = j->c->p.mode == SSG_SSAO_MODE_SPHERE;
     const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
     for (int s = 0; s < count; s++) {
-        switch (j->c->p.range_check) {
-        case SSG_SSAO_RANGE_NONE:
-            sample_chunk(j, k, len, kx[s], ky[s], kz[s], SSG_SSAO_RANGE_NONE);
-            break;
-        case SSG_SSAO_RANGE_HARD:
-            sample_chunk(j, k, len, kx[s], ky[s], kz[s], SSG_SSAO_RANGE_HARD);
-            break;
-        default:
-            sample_chunk(j, k, len, kx[s], ky[s], kz[s], SSG_SSAO_RANGE_SMOOTH);
-            break;
+        /* The sphere mode adds each sample's point reflection (ssao.c), in this order. */
+        for (int m = 0; m <= sphere; m++) {
+            float sx = m ? -kx[s] : kx[s], sy = m ? -ky[s] : ky[s], sz = m ? -kz[s] : kz[s];
+            switch (j->c->p.range_check) {
+            case SSG_SSAO_RANGE_NONE:
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_NONE);
+                break;
+            case SSG_SSAO_RANGE_HARD:
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_HARD);
+                break;
+            default:
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_SMOOTH);
+                break;
+            }
         }
     }
 }
 
+/* Disc mode: per pixel the radius r (capped as in setup_chunk) and f r / depth, the
+   screen radius of the disc. */
+static void setup_disc(const struct job *j, struct chunk *restrict k, int len)
+{
+    const float radius = j->c->p.radius;
+    const float cap = j->c->p.max_screen_radius / j->f; /* r <= cap * depth */
+    const int capped = j->c->p.max_screen_radius > 0.0f;
+    for (int i = 0; i < len; i++) {
+        float rcap = cap * k->dp[i];
+        float r = capped & (rcap < radius) ? rcap : radius;
+        k->rr[i] = r;
+        k->rp[i] = j->f * r / k->dp[i];
+        k->occ[i] = 0.0f;
+    }
+}
+
+/* Disc mode: places the depth sample at screen offset +-rp R (sx, sy) (R the tile's
+   rotation, +y up the screen), rounded to whole pixels (ties to even, so the two signs
+   stay exact opposites); it occludes when its depth is below depth(P) - bias. */
+static inline __attribute__((always_inline)) void
+place_disc(const struct job *j, struct chunk *restrict k, int len, float y, float sx,
+           float sy, float sign)
+{
+    const float bias = j->c->p.bias;
+    const float fw = (float)j->w, fh = (float)j->h;
+    const int w = j->w;
+    for (int i = 0; i < len; i++) {
+        float ou = nearbyintf(k->rp[i] * (k->co[i] * sx - k->si[i] * sy));
+        float ov = nearbyintf(k->rp[i] * (k->si[i] * sx + k->co[i] * sy));
+        float u = k->xf[i] + sign * ou, v = y - sign * ov;
+        int ok = (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
+        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
+        k->idx[i] = (int)vs * w + (int)us;
+        k->zb[i] = ok ? k->dp[i] - bias : -1.0f;
+    }
+}
+
+/* Disc mode: every kernel sample's offset and its opposite. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sample_disc(const struct job *j, struct chunk *k, int len, int y)
+{
+    const int count = j->count;
+    const float *kx = j->kernel, *ky = kx + count;
+    for (int s = 0; s < count; s++)
+        for (int m = 0; m < 2; m++) {
+            place_disc(j, k, len, (float)y, kx[s], ky[s], m ? -1.0f : 1.0f);
+            switch (j->c->p.range_check) {
+            case SSG_SSAO_RANGE_NONE:
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_NONE);
+                break;
+            case SSG_SSAO_RANGE_HARD:
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_HARD);
+                break;
+            default:
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_SMOOTH);
+                break;
+            }
+        }
+}
+
+/* out = (1 - occluded / count)^power, or for the normal-free modes, whose 2 count
+   samples leave half of them occluded on an open plane, clamp(2 (1 - occluded /
+   (2 count)), 0, 1)^power = clamp(2 - occluded / count, 0, 1)^power (ssao.c). */
 static void finish_chunk(const struct job *j, const struct chunk *k, int len, float *out)
 {
     const float inv_count = 1.0f / (float)j->count, power = j->c->p.power;
-    for (int i = 0; i < len; i++) {
-        float v = 1.0f - k->occ[i] * inv_count;
-        v = v > 0.0f ? v : 0.0f;
-        out[i] = k->fg[i] ? v : 1.0f;
+    if (j->c->p.mode == SSG_SSAO_MODE_HEMISPHERE) {
+        for (int i = 0; i < len; i++) {
+            float v = 1.0f - k->occ[i] * inv_count;
+            v = v > 0.0f ? v : 0.0f;
+            out[i] = k->fg[i] ? v : 1.0f;
+        }
+    } else {
+        for (int i = 0; i < len; i++) {
+            float v = 2.0f - k->occ[i] * inv_count;
+            v = v > 0.0f ? v : 0.0f;
+            v = v < 1.0f ? v : 1.0f;
+            out[i] = k->fg[i] ? v : 1.0f;
+        }
     }
     if (power != 1.0f)
         for (int i = 0; i < len; i++)
@@ -263,9 +396,18 @@ static void band(void *user, int y0, int y1)
     for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
         int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
         for (int y = y0; y < y1; y++) {
-            load_chunk(j, &k, y, x0, len);
-            setup_chunk(j, &k, len);
-            sample_all(j, &k, len);
+            if (j->c->p.mode == SSG_SSAO_MODE_DISC) {
+                load_chunk_free(j, &k, y, x0, len);
+                setup_disc(j, &k, len);
+                sample_disc(j, &k, len, y);
+            } else {
+                if (j->c->p.mode == SSG_SSAO_MODE_SPHERE)
+                    load_chunk_free(j, &k, y, x0, len);
+                else
+                    load_chunk(j, &k, y, x0, len);
+                setup_chunk(j, &k, len);
+                sample_all(j, &k, len);
+            }
             finish_chunk(j, &k, len, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
         }
     }
@@ -285,14 +427,17 @@ static int size_is(const struct ssg_image *im, int w, int h, int ch)
 
 /* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
    read out of bounds. */
-static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
+static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                                 int mode)
 {
     const struct ssg_image *pos = io->in[SSG_SSAO_IN_POSITION];
     const struct ssg_image *ker = io->in[SSG_SSAO_IN_KERNEL];
     const struct ssg_image *rot = io->in[SSG_SSAO_IN_ROTATION];
     const struct ssg_image *dep = io->in[SSG_SSAO_IN_DEPTH];
-    if (!pos || pos->channels != 3 || !size_is(io->in[SSG_SSAO_IN_NORMAL], pos->width,
-                                                pos->height, 3))
+    const struct ssg_image *nrm = io->in[SSG_SSAO_IN_NORMAL];
+    const int needs_normal = mode == SSG_SSAO_MODE_HEMISPHERE;
+    if (!pos || pos->channels != 3 || ((nrm || needs_normal) &&
+                                       !size_is(nrm, pos->width, pos->height, 3)))
         return fail(ctx, SSG_E_SIZE, "position and normal must be 3-channel, one size");
     if (!ker || ker->channels != 3 || ker->height != 1 || ker->width < 1)
         return fail(ctx, SSG_E_CHANNELS, "kernel must be count x 1 x 3");
@@ -309,7 +454,7 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
                               const struct ssg_io *io)
 {
     const struct ssg_ssao_consts *c = consts;
-    enum ssg_err e = check_images(ctx, io);
+    enum ssg_err e = check_images(ctx, io, c->p.mode);
     if (e != SSG_OK)
         return e;
     const struct ssg_image *pos = io->in[SSG_SSAO_IN_POSITION];
@@ -321,7 +466,7 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
                     .w = pos->width, .h = pos->height};
     for (int ch = 0; ch < 3; ch++) {
         j.pos[ch] = ssg_image_plane(pos, ch);
-        j.nrm[ch] = ssg_image_plane(nrm, ch);
+        j.nrm[ch] = nrm ? ssg_image_plane(nrm, ch) : NULL;
     }
     j.depth = dep ? dep->data : j.pos[2];
     j.depth_sign = dep ? 1.0f : -1.0f;

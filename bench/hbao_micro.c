@@ -1,0 +1,154 @@
+/* hbao_micro.c - timing of the `hbao` node's CPU kernel on a synthetic 1920x1080 G-buffer
+ * (not a test: it asserts nothing about speed). Prints the median wall time of several
+ * runs of run_cpu alone (prepare and allocation excluded), the median CPU time of all
+ * threads (on a shared machine wall time also counts other processes), and a hash of the
+ * output bits, to compare builds (the AVX2 and SSE paths must give the same hash).
+ *
+ * Scene: the one of ssao_micro.c, an inner corner (a floor and a wall at 45 degrees to the
+ * view, 5 units away) with a sinusoidal relief on the floor, so normals and depths vary
+ * and the marches land all over the depth plane as in a real frame. The rotation tile
+ * comes from halton (pattern 4), as in graphs/hbao.graph.
+ * Build against a Release libssgraph, e.g. in CMake:
+ *   add_executable(hbao_micro bench/hbao_micro.c)
+ *   target_link_libraries(hbao_micro PRIVATE ssgraph)
+ * Usage: hbao_micro [runs=15] [directions=8] [steps=4] [threads=0 (all)]
+ *                   [hbao param=value ...] */
+#include <math.h>
+#include <omp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "node.h"
+#include "ssgraph.h"
+
+enum { W = 1920, H = 1080 };
+
+static double clock_ms(clockid_t clock)
+{
+    struct timespec ts;
+    clock_gettime(clock, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Ray-casts the corner; the floor gets a relief of height 0.05 by bending its normal
+   and position along it (a G-buffer, not a consistent surface: enough for timing). */
+static void make_gbuffer(const struct ssg_frame *frame, struct ssg_image *pos,
+                         struct ssg_image *nrm)
+{
+    struct ssg_projection p = ssg_frame_projection(frame);
+    const double s = sqrt(0.5);
+    const double na[3] = {0, s, s}, nb[3] = {0, -s, s}, p0z = -5;
+    size_t plane = (size_t)W * H;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            double d[3] = {(x + 0.5 - p.cx) / p.f, -(y + 0.5 - p.cy) / p.f, -1};
+            double da = na[0] * d[0] + na[1] * d[1] + na[2] * d[2];
+            double db = nb[0] * d[0] + nb[1] * d[1] + nb[2] * d[2];
+            double ta = da < 0 ? na[2] * p0z / da : INFINITY;
+            double tb = db < 0 ? nb[2] * p0z / db : INFINITY;
+            const double *n = ta < tb ? na : nb;
+            double t = fmin(ta, tb);
+            double bump = ta < tb ? 0.05 * sin(t * d[0] * 9.0) * sin(t * 7.0) : 0;
+            double nn[3] = {n[0] + 0.3 * bump * 20, n[1], n[2]};
+            double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+            size_t o = (size_t)y * W + (size_t)x;
+            for (int c = 0; c < 3; c++) {
+                pos->data[c * plane + o] = (float)(t * d[c] + n[c] * bump);
+                nrm->data[c * plane + o] = (float)(nn[c] / len);
+            }
+        }
+}
+
+int main(int argc, char **argv)
+{
+    int runs = argc > 1 ? atoi(argv[1]) : 15;
+    int directions = argc > 2 ? atoi(argv[2]) : 8;
+    int steps = argc > 3 ? atoi(argv[3]) : 4;
+    int threads = argc > 4 ? atoi(argv[4]) : 0;
+    if (runs < 1 || runs > 1000)
+        return 2;
+    if (threads > 0)
+        omp_set_num_threads(threads);
+    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1};
+    struct ssg_diags diags = {0};
+
+    /* The rotation tile from the halton node. */
+    struct ssg_outputs hal;
+    if (ssg_node_run("halton", NULL, 0, NULL, 0, &frame, &hal, &diags) != SSG_OK) {
+        ssg_diags_print(&diags, stderr);
+        return 1;
+    }
+    struct ssg_image *pos = ssg_image_create(W, H, 3), *nrm = ssg_image_create(W, H, 3);
+    struct ssg_image *out = ssg_image_create(W, H, 1);
+    if (!pos || !nrm || !out)
+        return 1;
+    make_gbuffer(&frame, pos, nrm);
+
+    const struct ssg_node_desc *d = ssg_node_find("hbao", 4);
+    if (!d)
+        return 1;
+    void *params = calloc(1, d->params_size), *consts = calloc(1, d->consts_size);
+    ssg_params_defaults(d->params, params);
+    char dir_set[32], step_set[32];
+    snprintf(dir_set, sizeof dir_set, "directions=%d", directions);
+    snprintf(step_set, sizeof step_set, "steps=%d", steps);
+    const char *sets[2] = {dir_set, step_set};
+    for (int a = 0; a < 2 + (argc > 5 ? argc - 5 : 0); a++) {
+        const char *text = a < 2 ? sets[a] : argv[a + 3];
+        if (ssg_param_set_text(d->params, params, text, "<argv>", "hbao", &diags)) {
+            ssg_diags_print(&diags, stderr);
+            return 2;
+        }
+    }
+    struct ssg_node_ctx ctx = {"h", &frame, NULL, "out", &diags, NULL};
+    const struct ssg_image *in[4] = {pos, nrm, hal.images[1], NULL};
+    struct ssg_image *outs[1] = {out};
+    struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};
+    if (d->prepare(&ctx, params, consts) != SSG_OK) {
+        ssg_diags_print(&diags, stderr);
+        return 1;
+    }
+
+    double *ms = calloc((size_t)runs, sizeof *ms), *cpu = calloc((size_t)runs, sizeof *cpu);
+    d->run_cpu(&ctx, consts, &io); /* warm caches and threads */
+    for (int r = 0; r < runs; r++) {
+        double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
+        d->run_cpu(&ctx, consts, &io);
+        ms[r] = clock_ms(CLOCK_MONOTONIC) - t0;
+        cpu[r] = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    }
+    qsort(ms, (size_t)runs, sizeof *ms, cmp_double);
+    qsort(cpu, (size_t)runs, sizeof *cpu, cmp_double);
+    /* Mean, and an FNV-1a hash of the bits, to compare builds and variants. */
+    double mean_ao = 0;
+    uint64_t hash = 1469598103934665603ull;
+    for (size_t i = 0; i < (size_t)W * H; i++) {
+        uint32_t bits;
+        memcpy(&bits, &out->data[i], sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+        mean_ao += out->data[i];
+    }
+    printf("hbao %dx%d, %d directions x %d steps, %d threads: median %.2f ms (min %.2f, max "
+           "%.2f) over %d runs, cpu time median %.2f ms (min %.2f); mean ao %.4f, hash "
+           "%016llx\n", W, H, directions, steps, omp_get_max_threads(), ms[runs / 2], ms[0],
+           ms[runs - 1], runs, cpu[runs / 2], cpu[0], mean_ao / ((double)W * H),
+           (unsigned long long)hash);
+    free(ms);
+    free(cpu);
+    free(params);
+    free(consts);
+    ssg_image_destroy(&pos);
+    ssg_image_destroy(&nrm);
+    ssg_image_destroy(&out);
+    ssg_outputs_release(&hal);
+    return 0;
+}
