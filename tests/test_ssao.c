@@ -27,102 +27,10 @@
 #include "node.h"
 #include "ssgraph.h"
 
-enum { MAX_PLANES = 3 };
+#include "planes.h"
 
 /* Flag for ssao()'s use_depth argument: run without the normal input. */
 enum { NO_NORMAL = 2 };
-
-/* Frame size of the current test (the corner's closed-form check uses a narrow one). */
-static int W = 128, H = 256;
-
-struct plane {
-    double n[3];  /* unit normal, pointing into the air */
-    double p0[3]; /* a point on the plane */
-};
-
-struct scene {
-    struct plane pl[MAX_PLANES];
-    int count;
-};
-
-struct gbuf {
-    struct ssg_image *pos, *nrm, *depth;
-    int *which; /* plane index per pixel, -1 = background */
-};
-
-static struct ssg_frame frame(void)
-{
-    return (struct ssg_frame){W, H, 45.0f, 0.05f, 100.0f, 1};
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* View ray through image point (u, v) in pixels, scaled to depth 1 (z = -1). */
-static void ray(double u, double v, double dir[3])
-{
-    struct ssg_frame f = frame();
-    struct ssg_projection p = ssg_frame_projection(&f);
-    dir[0] = (u - p.cx) / p.f;
-    dir[1] = -(v - p.cy) / p.f;
-    dir[2] = -1.0;
-}
-
-/* Depth of plane i along dir (z = -1 scaled), or INFINITY when the ray never leaves the
-   air through it. */
-static double plane_depth(const struct scene *s, int i, const double dir[3])
-{
-    double nd = dot3(s->pl[i].n, dir);
-    return nd < 0 ? dot3(s->pl[i].n, s->pl[i].p0) / nd : INFINITY;
-}
-
-static double visible_depth(const struct scene *s, const double dir[3], int *which)
-{
-    double best = INFINITY;
-    *which = -1;
-    for (int i = 0; i < s->count; i++) {
-        double t = plane_depth(s, i, dir);
-        if (t < best) {
-            best = t;
-            *which = i;
-        }
-    }
-    return best;
-}
-
-static void cast(const struct scene *s, struct gbuf *g)
-{
-    g->pos = ssg_image_create(W, H, 3);
-    g->nrm = ssg_image_create(W, H, 3);
-    g->depth = ssg_image_create(W, H, 1);
-    g->which = calloc((size_t)W * H, sizeof(int));
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            double dir[3];
-            int which;
-            ray(x + 0.5, y + 0.5, dir);
-            double t = visible_depth(s, dir, &which);
-            size_t o = (size_t)y * W + (size_t)x;
-            g->which[o] = which;
-            if (which < 0 || !(t < 1e6))
-                continue; /* background: zeros */
-            for (int c = 0; c < 3; c++) {
-                g->pos->data[(size_t)c * W * H + o] = (float)(t * dir[c]);
-                g->nrm->data[(size_t)c * W * H + o] = (float)s->pl[which].n[c];
-            }
-            g->depth->data[o] = (float)t;
-        }
-}
-
-static void release(struct gbuf *g)
-{
-    ssg_image_destroy(&g->pos);
-    ssg_image_destroy(&g->nrm);
-    ssg_image_destroy(&g->depth);
-    free(g->which);
-}
 
 /* Largest |depth(q) - depth(centre)| over points q of any pixel showing a surface: the
    visible depth is the lower envelope of functions 1 / (linear in u, v), so along a pixel
