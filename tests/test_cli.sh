@@ -3,21 +3,7 @@
 # small size, results do not depend on the thread count, single nodes run on EXR files,
 # and bad input gets a located message, a non-zero exit and no output file.
 set -u
-BIN=${SSG_BIN:?SSG_BIN must point at the ssgraph executable}
-TMP=${SSG_TMP:-/tmp/ssg_test_cli}
-rm -rf "$TMP" && mkdir -p "$TMP"
-fails=0
-
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
-# expect_exit CODE PATTERN CMD...: runs CMD, checks its exit status and that stderr+stdout
-# match PATTERN (grep -E).
-expect_exit() {
-    local code=$1 pattern=$2; shift 2
-    local out rc
-    out=$("$@" 2>&1); rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code. Output: $out"
-    echo "$out" | grep -Eq -- "$pattern" || fail "'$*' output lacks /$pattern/: $out"
-}
+source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_cli"
 
 # --- help, version, listing ---
 expect_exit 0 "usage: ssgraph" "$BIN" --help
@@ -105,8 +91,4 @@ printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
 expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
     "$BIN" check "$TMP/syntax.graph"
 
-if [ "$fails" -ne 0 ]; then
-    echo "$fails failure(s)" >&2
-    exit 1
-fi
-echo "all CLI checks passed"
+finish test_cli

@@ -5,21 +5,7 @@
 # non-zero with a message naming the problem, and `ssgraph run` writes compare's metrics to
 # out/metrics.json.
 set -u
-BIN=${SSG_BIN:?SSG_BIN must point at the ssgraph executable}
-TMP=${SSG_TMP:-/tmp/ssg_test_compare_cli}
-rm -rf "$TMP" && mkdir -p "$TMP"
-fails=0
-
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
-# expect_exit CODE PATTERN CMD...: runs CMD, checks its exit status and that stderr+stdout
-# match PATTERN (grep -E).
-expect_exit() {
-    local code=$1 pattern=$2; shift 2
-    local out rc
-    out=$("$@" 2>&1); rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code. Output: $out"
-    echo "$out" | grep -Eq -- "$pattern" || fail "'$*' output lacks /$pattern/: $out"
-}
+source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_compare_cli"
 
 # Images to compare: the layers of one small SSAO run (ao = filtered, ao_raw = unfiltered).
 "$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/run" --quiet || fail "ssao run"
@@ -89,8 +75,4 @@ tr -d ' \n' < "$json" | grep -q '"same":{"rmse":0,"mae":0,"psnr":null,"ssim":1,"
 tr -d ' \n' < "$json" | grep -q '"albedo":{"rmse":0\.[0-9]*' \
     || fail "metrics.json lacks the albedo comparison: $(cat "$json")"
 
-if [ "$fails" -ne 0 ]; then
-    echo "$fails failure(s)" >&2
-    exit 1
-fi
-echo "test_compare_cli: all passed"
+finish test_compare_cli
