@@ -6,6 +6,15 @@
 
 #include "exec.h"
 #include "image.h"
+#include "parse.h"
+
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
+                           const char *what)
+{
+    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "%s '%s': %s", node,
+                ctx->instance ? ctx->instance : "", what);
+    return code;
+}
 
 double ssg_now_ms(void)
 {

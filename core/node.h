@@ -139,6 +139,18 @@ static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame 
     return p;
 }
 
+/* Reports a node's run-time error as "<node> '<instance>': <what>" (no file location:
+ * graph-level problems were reported with one before the run) and returns code. */
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
+                           const char *what);
+
+/* 1 when the image exists and has exactly this shape (run-time re-check of what check()
+ * promised, so a hand-built run cannot read out of bounds). */
+static inline int ssg_image_is(const struct ssg_image *im, int width, int height, int channels)
+{
+    return im && im->width == width && im->height == height && im->channels == channels;
+}
+
 /* Convenience for node files. */
 #define SSG_COUNT(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
 

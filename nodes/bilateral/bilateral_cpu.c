@@ -235,18 +235,6 @@ static void band(void *user, int y0, int y1)
         }
 }
 
-static enum ssg_err fail(const struct ssg_node_ctx *ctx, const char *what)
-{
-    ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0}, "bilateral '%s': %s",
-                ctx->instance ? ctx->instance : "", what);
-    return SSG_E_SIZE;
-}
-
-static int size_is(const struct ssg_image *im, int w, int h, int ch)
-{
-    return im && im->width == w && im->height == h && im->channels == ch;
-}
-
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io)
 {
@@ -254,13 +242,15 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     const struct ssg_image *dep = io->in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
     if (!in || (in->channels != 1 && in->channels != 3))
-        return fail(ctx, "in must have 1 or 3 channels");
-    if (!size_is(dep, in->width, in->height, 1))
-        return fail(ctx, "depth must be 1-channel, the size of in");
-    if (nrm && !size_is(nrm, in->width, in->height, 3))
-        return fail(ctx, "normal must be 3-channel, the size of in");
-    if (!size_is(io->out[0], in->width, in->height, in->channels))
-        return fail(ctx, "output must have the shape of in");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "in must have 1 or 3 channels");
+    if (!ssg_image_is(dep, in->width, in->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral",
+                             "depth must be 1-channel, the size of in");
+    if (nrm && !ssg_image_is(nrm, in->width, in->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral",
+                             "normal must be 3-channel, the size of in");
+    if (!ssg_image_is(io->out[0], in->width, in->height, in->channels))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "output must have the shape of in");
     struct job j = {.c = consts, .channels = in->channels, .depth = dep->data,
                     .w = in->width, .h = in->height};
     for (int ch = 0; ch < in->channels; ch++) {

@@ -261,13 +261,6 @@ static void band(void *user, int y0, int y1)
     window_free(&win);
 }
 
-static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
-{
-    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "compare '%s': %s",
-                ctx->instance ? ctx->instance : "", what);
-    return code;
-}
-
 /* The band partials, added in band order, into the reported metrics. */
 static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, int bands)
 {
@@ -275,7 +268,8 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
     for (int i = 0; i < bands; i++) {
         const struct partial *p = &j->parts[i];
         if (p->failed)
-            return fail(ctx, SSG_E_NOMEM, "out of memory for the SSIM window buffers");
+            return ssg_node_fail(ctx, SSG_E_NOMEM, "compare",
+                                 "out of memory for the SSIM window buffers");
         t.sq += p->sq;
         t.abs += p->abs;
         t.count += p->count;
@@ -307,19 +301,21 @@ enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *a = io->in[SSG_COMPARE_IN_A], *b = io->in[SSG_COMPARE_IN_B];
     const struct ssg_image *mask = io->in[SSG_COMPARE_IN_MASK];
     if (!a || a->channels < 1 || a->channels > SSG_COMPARE_MAX_CHANNELS)
-        return fail(ctx, SSG_E_CHANNELS, "a must have 1 to 4 channels");
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "compare", "a must have 1 to 4 channels");
     if (!shape_is(b, a->width, a->height, a->channels))
-        return fail(ctx, SSG_E_SIZE, "b must have the shape of a");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "compare", "b must have the shape of a");
     if (mask && !shape_is(mask, a->width, a->height, 1))
-        return fail(ctx, SSG_E_SIZE, "mask must be 1-channel, the size of a");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "compare",
+                             "mask must be 1-channel, the size of a");
     if (!shape_is(io->out[0], a->width, a->height, 3))
-        return fail(ctx, SSG_E_SIZE, "diff must be 3-channel, the size of a");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "compare",
+                             "diff must be 3-channel, the size of a");
     int bands = (a->height + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
     struct job j = {.c = consts, .mask = mask ? mask->data : NULL, .w = a->width,
                     .h = a->height, .channels = a->channels,
                     .parts = calloc(bands > 0 ? (size_t)bands : 1, sizeof(struct partial))};
     if (!j.parts)
-        return fail(ctx, SSG_E_NOMEM, "out of memory for the partial sums");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "compare", "out of memory for the partial sums");
     for (int ch = 0; ch < a->channels; ch++) {
         j.a[ch] = ssg_image_plane(a, ch);
         j.b[ch] = ssg_image_plane(b, ch);

@@ -64,13 +64,6 @@ static void vertical(void *user, int y0, int y1)
     }
 }
 
-static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
-{
-    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "gaussian '%s': %s",
-                ctx->instance ? ctx->instance : "", what);
-    return code;
-}
-
 enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                   const struct ssg_io *io)
 {
@@ -79,9 +72,10 @@ enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     struct ssg_image *out = io->out[0];
     if (!in || !out || in->width < 1 || in->height < 1 || out->width != in->width ||
         out->height != in->height || out->channels != in->channels)
-        return fail(ctx, SSG_E_SIZE, "output must have the size and channels of in");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "gaussian",
+                             "output must have the size and channels of in");
     if (c->radius < 0 || 2 * c->radius + 1 > SSG_GAUSSIAN_MAX_SIZE)
-        return fail(ctx, SSG_E_VALUE, "invalid window");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "gaussian", "invalid window");
     struct job j = {.c = c, .w = in->width, .h = in->height};
     size_t plane = (size_t)j.w * (size_t)j.h;
     size_t bands = (size_t)(j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
@@ -90,7 +84,8 @@ enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     if (!j.tmp || !j.scratch) {
         free(j.tmp);
         free(j.scratch);
-        return fail(ctx, SSG_E_NOMEM, "out of memory for the intermediate image");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "gaussian",
+                             "out of memory for the intermediate image");
     }
     for (int ch = 0; ch < in->channels; ch++) {
         j.src = ssg_image_plane(in, ch);

@@ -480,18 +480,6 @@ static void band(void *user, int y0, int y1)
     }
 }
 
-static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
-{
-    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "hbao '%s': %s",
-                ctx->instance ? ctx->instance : "", what);
-    return code;
-}
-
-static int size_is(const struct ssg_image *im, int w, int h, int ch)
-{
-    return im && im->width == w && im->height == h && im->channels == ch;
-}
-
 /* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
    read out of bounds. */
 static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
@@ -499,15 +487,18 @@ static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ss
     const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
     const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
     const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
-    if (!pos || pos->channels != 3 || !size_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
+    if (!pos || pos->channels != 3 || !ssg_image_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
                                                 pos->height, 3))
-        return fail(ctx, SSG_E_SIZE, "position and normal must be 3-channel, one size");
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "position and normal must be 3-channel, one size");
     if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return fail(ctx, SSG_E_CHANNELS, "rotation must be n x n x 2");
-    if (dep && !size_is(dep, pos->width, pos->height, 1))
-        return fail(ctx, SSG_E_SIZE, "depth must be 1-channel, the size of position");
-    if (!size_is(io->out[0], pos->width, pos->height, 1))
-        return fail(ctx, SSG_E_SIZE, "output must be 1-channel, the size of position");
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "hbao", "rotation must be n x n x 2");
+    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "depth must be 1-channel, the size of position");
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "output must be 1-channel, the size of position");
     return SSG_OK;
 }
 
@@ -594,12 +585,13 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.cy = c->proj.cy * (float)j.h / (float)c->frame_height;
     float *tables = unroll_pattern(rot, j.w, &j);
     if (!tables)
-        return fail(ctx, SSG_E_NOMEM, "out of memory for the pattern and column tables");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao",
+                             "out of memory for the pattern and column tables");
     j.pw = j.w + 2;
     j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
     if (!j.padded) {
         free(tables);
-        return fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao", "out of memory for the padded depth");
     }
     float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
     for (int x = 0; x < j.pw; x++)

@@ -413,18 +413,6 @@ static void band(void *user, int y0, int y1)
     }
 }
 
-static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
-{
-    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "ssao '%s': %s",
-                ctx->instance ? ctx->instance : "", what);
-    return code;
-}
-
-static int size_is(const struct ssg_image *im, int w, int h, int ch)
-{
-    return im && im->width == w && im->height == h && im->channels == ch;
-}
-
 /* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
    read out of bounds. */
 static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
@@ -437,16 +425,19 @@ static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ss
     const struct ssg_image *nrm = io->in[SSG_SSAO_IN_NORMAL];
     const int needs_normal = mode == SSG_SSAO_MODE_HEMISPHERE;
     if (!pos || pos->channels != 3 || ((nrm || needs_normal) &&
-                                       !size_is(nrm, pos->width, pos->height, 3)))
-        return fail(ctx, SSG_E_SIZE, "position and normal must be 3-channel, one size");
+                                       !ssg_image_is(nrm, pos->width, pos->height, 3)))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
+                             "position and normal must be 3-channel, one size");
     if (!ker || ker->channels != 3 || ker->height != 1 || ker->width < 1)
-        return fail(ctx, SSG_E_CHANNELS, "kernel must be count x 1 x 3");
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "ssao", "kernel must be count x 1 x 3");
     if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return fail(ctx, SSG_E_CHANNELS, "rotation must be n x n x 2");
-    if (dep && !size_is(dep, pos->width, pos->height, 1))
-        return fail(ctx, SSG_E_SIZE, "depth must be 1-channel, the size of position");
-    if (!size_is(io->out[0], pos->width, pos->height, 1))
-        return fail(ctx, SSG_E_SIZE, "output must be 1-channel, the size of position");
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "ssao", "rotation must be n x n x 2");
+    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
+                             "depth must be 1-channel, the size of position");
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
+                             "output must be 1-channel, the size of position");
     return SSG_OK;
 }
 
