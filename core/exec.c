@@ -23,6 +23,24 @@ double ssg_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
+                                      const struct ssg_shape *rotation,
+                                      const struct ssg_shape *depth, char *why, size_t why_len)
+{
+    if (rotation->channels != 0 &&
+        (rotation->channels != 2 || rotation->width != rotation->height)) {
+        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
+                 "%dx%dx%d", rotation->width, rotation->height, rotation->channels);
+        return SSG_E_CHANNELS;
+    }
+    if (depth->channels != 0 &&
+        (depth->channels != 1 || !ssg_shape_same_size(depth, position))) {
+        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    return SSG_OK;
+}
+
 static void default_shape(const struct ssg_node_desc *desc, int port,
                           const struct ssg_frame *frame, const struct ssg_shape *in,
                           struct ssg_shape *out)

@@ -151,6 +151,19 @@ static inline int ssg_image_is(const struct ssg_image *im, int width, int height
     return im && im->width == width && im->height == height && im->channels == channels;
 }
 
+/* 1 when two shapes have the same width and height. */
+static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ssg_shape *b)
+{
+    return a->width == b->width && a->height == b->height;
+}
+
+/* check() of the screen-space AO nodes: the optional rotation tile (n x n, 2 channels) and
+ * the optional depth (1 channel, the size of position); channels 0 = unconnected. Returns
+ * SSG_OK, or the error code with the reason in why. */
+enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
+                                      const struct ssg_shape *rotation,
+                                      const struct ssg_shape *depth, char *why, size_t why_len);
+
 /* Convenience for node files. */
 #define SSG_COUNT(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
 

@@ -65,30 +65,19 @@
 
 #include "hbao.h"
 
-static int same_size(const struct ssg_shape *a, const struct ssg_shape *b)
-{
-    return a->width == b->width && a->height == b->height;
-}
-
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
     const struct ssg_shape *pos = &in[SSG_HBAO_IN_POSITION], *nrm = &in[SSG_HBAO_IN_NORMAL];
     const struct ssg_shape *rot = &in[SSG_HBAO_IN_ROTATION], *dep = &in[SSG_HBAO_IN_DEPTH];
-    if (pos->channels != 3 || nrm->channels != 3 || !same_size(pos, nrm)) {
+    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    if (rot->channels != 0 && (rot->channels != 2 || rot->width != rot->height)) {
-        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
-                 "%dx%dx%d", rot->width, rot->height, rot->channels);
-        return SSG_E_CHANNELS;
-    }
-    if (dep->channels != 0 && (dep->channels != 1 || !same_size(dep, pos))) {
-        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
+    enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
+    if (e)
+        return e;
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;

@@ -59,11 +59,6 @@
 
 #include "ssao.h"
 
-static int same_size(const struct ssg_shape *a, const struct ssg_shape *b)
-{
-    return a->width == b->width && a->height == b->height;
-}
-
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
@@ -78,7 +73,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         return SSG_E_MISSING_INPUT;
     }
     if (pos->channels != 3 || (nrm->channels != 0 && (nrm->channels != 3 ||
-                                                       !same_size(pos, nrm)))) {
+                                                       !ssg_shape_same_size(pos, nrm)))) {
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
@@ -87,15 +82,9 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  ker->width, ker->height, ker->channels);
         return SSG_E_CHANNELS;
     }
-    if (rot->channels != 0 && (rot->channels != 2 || rot->width != rot->height)) {
-        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
-                 "%dx%dx%d", rot->width, rot->height, rot->channels);
-        return SSG_E_CHANNELS;
-    }
-    if (dep->channels != 0 && (dep->channels != 1 || !same_size(dep, pos))) {
-        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
+    enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
+    if (e)
+        return e;
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;
