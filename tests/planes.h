@@ -108,4 +108,46 @@ static void release(struct gbuf *g)
     free(g->which);
 }
 
+static void plane_at(struct plane *p, double nx, double ny, double nz, double px, double py,
+                     double pz)
+{
+    double len = sqrt(nx * nx + ny * ny + nz * nz);
+    p->n[0] = nx / len, p->n[1] = ny / len, p->n[2] = nz / len;
+    p->p0[0] = px, p->p0[1] = py, p->p0[2] = pz;
+}
+
+/* An inner 90-degree corner: two faces at 45 degrees to the view axis meeting along a
+   horizontal edge 5 units away; the camera looks into it. Plane 0 is the floor. */
+static void corner_scene(struct scene *s)
+{
+    *s = (struct scene){.count = 2};
+    plane_at(&s->pl[0], 0, 1, 1, 0, 0, -5);  /* floor, facing up and towards us */
+    plane_at(&s->pl[1], 0, -1, 1, 0, 0, -5); /* wall, facing down and towards us */
+}
+
+/* Counts pixels showing a surface whose value is not exactly 1. */
+static int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
+{
+    int n = 0;
+    for (size_t i = 0; i < (size_t)W * H; i++)
+        n += g->which[i] >= 0 && ao->data[i] != 1.0f;
+    return n;
+}
+
+static double mean_over(const struct ssg_image *ao, const int *which, int x0, int y0, int x1,
+                        int y1, int plane, int *count)
+{
+    double sum = 0;
+    *count = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            size_t o = (size_t)y * W + (size_t)x;
+            if (which[o] == plane) {
+                sum += ao->data[o];
+                (*count)++;
+            }
+        }
+    return *count ? sum / *count : 0;
+}
+
 #endif

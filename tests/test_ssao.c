@@ -135,23 +135,6 @@ static struct ssg_image *ssao(const struct gbuf *g, const struct ssg_image *kern
     return out.images[0];
 }
 
-static void plane_at(struct plane *p, double nx, double ny, double nz, double px, double py,
-                     double pz)
-{
-    double len = sqrt(nx * nx + ny * ny + nz * nz);
-    p->n[0] = nx / len, p->n[1] = ny / len, p->n[2] = nz / len;
-    p->p0[0] = px, p->p0[1] = py, p->p0[2] = pz;
-}
-
-/* Counts pixels showing a surface whose value is not exactly 1. */
-static int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
-{
-    int n = 0;
-    for (size_t i = 0; i < (size_t)W * H; i++)
-        n += g->which[i] >= 0 && ao->data[i] != 1.0f;
-    return n;
-}
-
 static void test_open_planes(const struct ssg_image *kernel, const struct ssg_image *rot)
 {
     struct scene scenes[3] = {{.count = 1}, {.count = 1}, {.count = 1}};
@@ -204,22 +187,6 @@ static double standard_error(double v, int n)
     return sqrt(v * (1 - v) / n);
 }
 
-static double mean_over(const struct ssg_image *ao, const int *which, int x0, int y0, int x1,
-                        int y1, int plane, int *count)
-{
-    double sum = 0;
-    *count = 0;
-    for (int y = y0; y < y1; y++)
-        for (int x = x0; x < x1; x++) {
-            size_t o = (size_t)y * W + (size_t)x;
-            if (which[o] == plane) {
-                sum += ao->data[o];
-                (*count)++;
-            }
-        }
-    return *count ? sum / *count : 0;
-}
-
 /* Case 3 averaged over the lengths of several kernels. */
 static double wall_model_all(struct ssg_image *const *k, int nk, double a, double radius)
 {
@@ -227,15 +194,6 @@ static double wall_model_all(struct ssg_image *const *k, int nk, double a, doubl
     for (int i = 0; i < nk; i++)
         v += wall_model(k[i], a, radius);
     return v / nk;
-}
-
-/* An inner 90-degree corner: two faces at 45 degrees to the view axis meeting along a
-   horizontal edge 5 units away; the camera looks into it. */
-static void corner_scene(struct scene *s)
-{
-    *s = (struct scene){.count = 2};
-    plane_at(&s->pl[0], 0, 1, 1, 0, 0, -5);  /* floor A, facing up and towards us */
-    plane_at(&s->pl[1], 0, -1, 1, 0, 0, -5); /* wall B, facing down and towards us */
 }
 
 /* The corner against ANALYTIC.md case 3. Four kernels of 1024 samples at consecutive
