@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "env.h"
 #include "rt.h"
 #include "scene_build.h"
 #include "scene_shapes.h"
@@ -507,6 +508,7 @@ void ssg_scene_destroy(struct ssg_scene **scene)
         return;
     struct ssg_scene *s = *scene;
     ssg_rt_destroy(&s->rt);
+    ssg_env_destroy(&s->env);
     for (int i = 0; i < s->mesh_count; i++)
         ssg_mesh_free(&s->meshes[i]);
     for (int i = 0; i < s->texture_count; i++)

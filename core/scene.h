@@ -68,7 +68,8 @@ struct ssg_environment {
     int image;        /* lat-long HDR in scene->textures, -1 = none */
 };
 
-struct ssg_rt; /* Embree device + scene, see rt.h */
+struct ssg_rt;  /* Embree device + scene, see rt.h */
+struct ssg_env; /* the environment's lookup and sampling tables, see env.h */
 
 struct ssg_scene {
     char path[512];
@@ -80,7 +81,9 @@ struct ssg_scene {
     struct ssg_material *materials;
     struct ssg_mesh *meshes;
     struct ssg_texture *textures;
-    struct ssg_rt *rt; /* built by ssg_scene_load when load_assets is 1 */
+    struct ssg_rt *rt;   /* built by ssg_scene_load when load_assets is 1 */
+    struct ssg_env *env; /* built by ssg_scene_load when load_assets is 1 (never NULL
+                            then: a scene without environment gets a black one) */
 };
 
 /* Loads a scene file. With load_assets = 0 it only parses and validates the file (used by

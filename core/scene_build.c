@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "env.h"
 #include "gltf.h"
 #include "rt.h"
 #include "scene_build.h"
@@ -285,11 +286,19 @@ static void build_geometry(struct scene_loader *l, int *camera_set)
 
 static void build_environment(struct scene_loader *l)
 {
+    char path[1024] = "";
     for (int i = 0; i < l->count; i++) {
         const struct environment_args *a = l->ents[i].args;
-        if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0])
+        if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
             l->scene->environment.image = load_texture(l, a->image);
+            ssg_scene_path(l, a->image, path, sizeof path);
+        }
     }
+    if (l->first)
+        return;
+    enum ssg_err e = ssg_env_build(l->scene, path, &l->scene->env, l->diags);
+    if (e)
+        ssg_scene_fail(l, e);
 }
 
 void ssg_scene_build(struct scene_loader *l)

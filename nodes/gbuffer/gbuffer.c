@@ -13,6 +13,11 @@
  *   E = color * intensity * max(0, N.L) / d^2   (point light at distance d)
  *   E = color * intensity * max(0, N.L)         (directional light, L = -direction)
  * with N the shading normal turned towards the camera and H = normalize(L + V).
+ * Environment light (a separate output, so occlusion methods can darken it alone): the
+ * unoccluded diffuse reflection of the scene's environment, albedo / pi * E_env(N), with
+ * E_env the cosine convolution of the light probe (core/env.h), the term SSDO's
+ * modulation factor darkens (Szentandrasi sec. 4.1: "equation (1) without the
+ * visibility function").
  *
  * Conventions (node.h): view space looks down -z; ray directions are built with view
  * z = -1 so the ray parameter of a hit is its depth, and position = t * direction
@@ -71,6 +76,9 @@ static const struct ssg_port_desc outputs[] = {
     {.name = "albedo", .types = SSG_T_COLOR, .doc = "material albedo times texture, linear RGB"},
     {.name = "direct", .types = SSG_T_COLOR,
      .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
+    {.name = "environment", .types = SSG_T_COLOR,
+     .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
+            "irradiance, linear RGB"},
 };
 
 const struct ssg_node_desc ssg_node_gbuffer = {

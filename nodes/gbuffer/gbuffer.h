@@ -8,7 +8,7 @@
 
 /* Output ports, in order. */
 enum { SSG_GBUFFER_OUT_POSITION, SSG_GBUFFER_OUT_NORMAL, SSG_GBUFFER_OUT_DEPTH,
-       SSG_GBUFFER_OUT_ALBEDO, SSG_GBUFFER_OUT_DIRECT };
+       SSG_GBUFFER_OUT_ALBEDO, SSG_GBUFFER_OUT_DIRECT, SSG_GBUFFER_OUT_ENVIRONMENT };
 
 enum ssg_gbuffer_normals {
     SSG_GBUFFER_NORMALS_SMOOTH, /* interpolated vertex normals */

@@ -12,7 +12,9 @@
 #include <string.h>
 
 #include "gbuffer.h"
+#include "env.h"
 #include "rt.h"
+#include "surface.h"
 #include "scene.h"
 
 enum { ROWS_PER_BAND = 4, CHUNK = 128 };
@@ -23,7 +25,7 @@ enum { ROWS_PER_BAND = 4, CHUNK = 128 };
 struct job {
     const struct ssg_gbuffer_consts *c;
     const struct ssg_scene *scene;
-    float *pos[3], *nrm[3], *depth, *alb[3], *dir[3]; /* output planes */
+    float *pos[3], *nrm[3], *depth, *alb[3], *dir[3], *env[3]; /* output planes */
     int w, h;
 };
 
@@ -73,60 +75,6 @@ static void trace(const struct job *j, struct chunk *k)
     ssg_rt_intersect_rays(j->scene->rt, &rays, k->hits);
 }
 
-/* Bilinear lookup with wrap-around (uv tiles the texture), row 0 at v = 0. */
-static void sample_texture(const struct ssg_texture *t, float u, float v, float out[3])
-{
-    float fx = u * (float)t->width - 0.5f, fy = v * (float)t->height - 0.5f;
-    float x0f = floorf(fx), y0f = floorf(fy), ax = fx - x0f, ay = fy - y0f;
-    int x0 = (int)fmodf(x0f, (float)t->width), y0 = (int)fmodf(y0f, (float)t->height);
-    x0 += x0 < 0 ? t->width : 0;
-    y0 += y0 < 0 ? t->height : 0;
-    int x1 = x0 + 1 < t->width ? x0 + 1 : 0, y1 = y0 + 1 < t->height ? y0 + 1 : 0;
-    const float *a = &t->rgb[3 * ((size_t)y0 * (size_t)t->width + (size_t)x0)];
-    const float *b = &t->rgb[3 * ((size_t)y0 * (size_t)t->width + (size_t)x1)];
-    const float *cc = &t->rgb[3 * ((size_t)y1 * (size_t)t->width + (size_t)x0)];
-    const float *d = &t->rgb[3 * ((size_t)y1 * (size_t)t->width + (size_t)x1)];
-    for (int i = 0; i < 3; i++)
-        out[i] = (1 - ay) * ((1 - ax) * a[i] + ax * b[i]) + ay * ((1 - ax) * cc[i] + ax * d[i]);
-}
-
-/* Material albedo times the texture at the hit's interpolated uv. */
-static void gather_albedo(const struct ssg_scene *s, const struct ssg_mesh *m,
-                          const struct ssg_material *mat, const uint32_t *tri,
-                          const struct ssg_hit *h, float out[3])
-{
-    memcpy(out, mat->albedo, 3 * sizeof(float));
-    if (mat->texture < 0 || !m->uvs)
-        return;
-    float w0 = 1.0f - h->u - h->v, uv[2];
-    for (int i = 0; i < 2; i++)
-        uv[i] = w0 * m->uvs[2 * tri[0] + i] + h->u * m->uvs[2 * tri[1] + i] +
-                h->v * m->uvs[2 * tri[2] + i];
-    sample_texture(&s->textures[mat->texture], uv[0], uv[1], out);
-    for (int i = 0; i < 3; i++)
-        out[i] *= mat->albedo[i];
-}
-
-/* Interpolated vertex normal, or the face normal; either unnormalised. */
-static void gather_normal(const struct ssg_mesh *m, const uint32_t *tri,
-                          const struct ssg_hit *h, int face, float n[3])
-{
-    if (face) {
-        const float *p0 = &m->positions[3 * tri[0]], *p1 = &m->positions[3 * tri[1]];
-        const float *p2 = &m->positions[3 * tri[2]];
-        float e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
-        float e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
-        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        return;
-    }
-    float w0 = 1.0f - h->u - h->v;
-    for (int i = 0; i < 3; i++)
-        n[i] = w0 * m->normals[3 * tri[0] + i] + h->u * m->normals[3 * tri[1] + i] +
-               h->v * m->normals[3 * tri[2] + i];
-}
-
 /* The scattered reads: per hit, its normal, depth and material. */
 static void gather(const struct job *j, struct chunk *k)
 {
@@ -139,9 +87,8 @@ static void gather(const struct job *j, struct chunk *k)
         if (h->mesh >= 0) {
             const struct ssg_mesh *m = &s->meshes[h->mesh];
             const struct ssg_material *mat = &s->materials[m->material];
-            const uint32_t *tri = &m->indices[3 * (size_t)h->triangle];
-            gather_normal(m, tri, h, face, n);
-            gather_albedo(s, m, mat, tri, h, albedo);
+            ssg_hit_normal(s, h, face, n);
+            ssg_hit_albedo(s, h, albedo);
             memcpy(spec, mat->specular, sizeof spec);
             shin = mat->shininess;
             k->any_specular |= spec[0] > 0.0f || spec[1] > 0.0f || spec[2] > 0.0f;
@@ -249,6 +196,21 @@ static void lighting(const struct job *j, struct chunk *k)
     }
 }
 
+/* albedo / pi * E_env(N) per hit pixel into lr, lg, lb; 0 for the background. */
+static void environment_light(const struct job *j, struct chunk *k)
+{
+    const struct ssg_env *env = j->scene->env;
+    const float inv_pi = (float)(1.0 / M_PI);
+    for (int s = 0; s < k->count; s++) {
+        float e[3] = {0, 0, 0}, n[3] = {k->nx[s], k->ny[s], k->nz[s]};
+        if (k->t[s] > 0.0f && env && env->has_light)
+            ssg_env_irradiance(env, n, e);
+        k->lr[s] = k->ar[s] * inv_pi * e[0];
+        k->lg[s] = k->ag[s] * inv_pi * e[1];
+        k->lb[s] = k->ab[s] * inv_pi * e[2];
+    }
+}
+
 /* Contiguous stores of the segment into the output planes. */
 static void store(const struct job *j, const struct chunk *k, size_t o)
 {
@@ -271,6 +233,16 @@ static void store(const struct job *j, const struct chunk *k, size_t o)
     memcpy(&j->dir[2][o], k->lb, bytes);
 }
 
+/* The environment output of the segment (after store: it reuses lr, lg, lb). */
+static void store_environment(const struct job *j, struct chunk *k, size_t o)
+{
+    size_t bytes = sizeof(float) * (size_t)k->count;
+    environment_light(j, k);
+    memcpy(&j->env[0][o], k->lr, bytes);
+    memcpy(&j->env[1][o], k->lg, bytes);
+    memcpy(&j->env[2][o], k->lb, bytes);
+}
+
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
@@ -285,6 +257,7 @@ static void rows(void *user, int y0, int y1)
             geometry(j, &k);
             lighting(j, &k);
             store(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
+            store_environment(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
         }
 }
 
@@ -306,6 +279,7 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         j.nrm[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_NORMAL], a);
         j.alb[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_ALBEDO], a);
         j.dir[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_DIRECT], a);
+        j.env[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_ENVIRONMENT], a);
     }
     j.depth = ssg_image_plane(out[SSG_GBUFFER_OUT_DEPTH], 0);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
