@@ -166,23 +166,42 @@ float ssg_env_pdf(const struct ssg_env *env, const float d[3])
                                                       (size_t)x)]) / env->power);
 }
 
-/* The coarse table: solid-angle-weighted means of the probe (see the file comment). */
-static enum ssg_err build_coarse(struct ssg_env *env)
+/* Accumulates one probe direction of solid angle da into coarse texel (cy, cx): radiance
+   sums in sum[..][0..2], the weight in sum[..][3], and the power-weighted direction in
+   centroid (so the irradiance sees a small bright source where it is, not at the centre
+   of its texel). */
+static void accumulate(double (*sum)[SSG_ENV_COARSE_W][4], double (*centroid)[3], int cy,
+                       int cx, const float d[3], const float *rgb, double da)
+{
+    for (int c = 0; c < 3; c++)
+        sum[cy][cx][c] += da * rgb[c];
+    sum[cy][cx][3] += da;
+    double p = da * (rgb[0] + rgb[1] + rgb[2]) + 1e-30 * da;
+    for (int k = 0; k < 3; k++)
+        centroid[cy * SSG_ENV_COARSE_W + cx][k] += p * d[k];
+}
+
+/* The coarse table: solid-angle-weighted means of the probe (see the file comment), and
+   each texel's power-weighted unit direction in dir (for build_irradiance). */
+static enum ssg_err build_coarse(struct ssg_env *env, float (*dir)[3])
 {
     const int w = env->width, h = env->height, cw = SSG_ENV_COARSE_W, ch = SSG_ENV_COARSE_H;
     double (*sum)[SSG_ENV_COARSE_W][4] = calloc(SSG_ENV_COARSE_H, sizeof *sum);
-    if (!sum)
+    double (*centroid)[3] = calloc((size_t)cw * ch, sizeof *centroid);
+    if (!sum || !centroid) {
+        free(sum);
+        free(centroid);
         return SSG_E_NOMEM;
+    }
     if (w >= cw && h >= ch) {
         for (int y = 0; y < h; y++) {
             double da = texel_solid_angle(y, w, h);
             int cy = (int)((y + 0.5) * ch / h);
             for (int x = 0; x < w; x++) {
-                int cx = (int)((x + 0.5) * cw / w);
-                const float *p = &env->radiance[3 * ((size_t)y * (size_t)w + (size_t)x)];
-                for (int c = 0; c < 3; c++)
-                    sum[cy][cx][c] += da * p[c];
-                sum[cy][cx][3] += da;
+                float d[3];
+                ssg_env_direction((x + 0.5f) / (float)w, (y + 0.5f) / (float)h, d);
+                accumulate(sum, centroid, cy, (int)((x + 0.5) * cw / w), d,
+                           &env->radiance[3 * ((size_t)y * (size_t)w + (size_t)x)], da);
             }
         }
     } else {
@@ -194,54 +213,52 @@ static enum ssg_err build_coarse(struct ssg_env *env)
                         float d[3], rgb[3];
                         ssg_env_direction(u, v, d);
                         ssg_env_radiance(env, d, rgb);
-                        double da = sin(M_PI * v);
-                        for (int c = 0; c < 3; c++)
-                            sum[cy][cx][c] += da * rgb[c];
-                        sum[cy][cx][3] += da;
+                        accumulate(sum, centroid, cy, cx, d, rgb, sin(M_PI * v));
                     }
     }
     for (int cy = 0; cy < ch; cy++)
-        for (int cx = 0; cx < cw; cx++)
+        for (int cx = 0; cx < cw; cx++) {
             for (int c = 0; c < 3; c++)
                 env->coarse[cy][cx][c] =
                     sum[cy][cx][3] > 0 ? (float)(sum[cy][cx][c] / sum[cy][cx][3]) : 0.0f;
+            const double *m = centroid[cy * cw + cx];
+            double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+            float *d = dir[cy * cw + cx];
+            if (len > 0)
+                d[0] = (float)(m[0] / len), d[1] = (float)(m[1] / len), d[2] = (float)(m[2] / len);
+            else
+                ssg_env_direction((cx + 0.5f) / cw, (cy + 0.5f) / ch, d);
+        }
     free(sum);
+    free(centroid);
     return SSG_OK;
 }
 
-/* Irradiance at each coarse texel centre: the cosine-weighted sum of the coarse table. */
-static enum ssg_err build_irradiance(struct ssg_env *env)
+/* Irradiance at each coarse texel centre: the cosine-weighted sum over the coarse texels,
+   each taken as arriving from its power-weighted direction. */
+static void build_irradiance(struct ssg_env *env, const float (*src)[3])
 {
     const int cw = SSG_ENV_COARSE_W, ch = SSG_ENV_COARSE_H;
-    float (*dir)[3] = malloc(sizeof *dir * SSG_ENV_COARSE_H * SSG_ENV_COARSE_W);
-    double (*weight)[3] = malloc(sizeof *weight * SSG_ENV_COARSE_H * SSG_ENV_COARSE_W);
-    if (!dir || !weight) {
-        free(dir);
-        free(weight);
-        return SSG_E_NOMEM;
-    }
+    double row_da[SSG_ENV_COARSE_H], weight[3];
     for (int y = 0; y < ch; y++)
-        for (int x = 0; x < cw; x++) {
-            int i = y * cw + x;
-            ssg_env_direction((x + 0.5f) / cw, (y + 0.5f) / ch, dir[i]);
-            double da = texel_solid_angle(y, cw, ch);
-            for (int c = 0; c < 3; c++)
-                weight[i][c] = da * env->coarse[y][x][c];
-        }
+        row_da[y] = texel_solid_angle(y, cw, ch);
     for (int i = 0; i < cw * ch; i++) {
+        float n[3];
+        ssg_env_direction((i % cw + 0.5f) / cw, (i / cw + 0.5f) / ch, n);
         double e[3] = {0, 0, 0};
         for (int k = 0; k < cw * ch; k++) {
-            double cosine = dir[i][0] * dir[k][0] + dir[i][1] * dir[k][1] + dir[i][2] * dir[k][2];
-            if (cosine > 0)
-                for (int c = 0; c < 3; c++)
-                    e[c] += cosine * weight[k][c];
+            double cosine = n[0] * src[k][0] + n[1] * src[k][1] + n[2] * src[k][2];
+            if (cosine <= 0)
+                continue;
+            double da = row_da[k / cw];
+            for (int c = 0; c < 3; c++) {
+                weight[c] = da * env->coarse[k / cw][k % cw][c];
+                e[c] += cosine * weight[c];
+            }
         }
         for (int c = 0; c < 3; c++)
             env->irradiance[i / cw][i % cw][c] = (float)e[c];
     }
-    free(dir);
-    free(weight);
-    return SSG_OK;
 }
 
 /* The row and column cdfs of the probe's sampling distribution; SSG_E_NOMEM on failure. */
@@ -293,17 +310,19 @@ static enum ssg_err take_probe(struct ssg_env *env, const struct ssg_texture *t,
     }
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < 3 * n; i++)
-        if (!(t->rgb[i] >= 0.0f && t->rgb[i] <= 3.0e38f)) {
-            ssg_diag_file(diags, SSG_E_VALUE, path, "environment image has a negative or "
-                          "non-finite value at pixel (%zu, %zu): expected radiance >= 0",
-                          (i / 3) % (size_t)t->width, (i / 3) / (size_t)t->width);
+        if (!(fabsf(t->rgb[i]) <= 3.0e38f)) {
+            ssg_diag_file(diags, SSG_E_VALUE, path, "environment image has a non-finite "
+                          "value (NaN or infinity) at pixel (%zu, %zu): expected finite "
+                          "radiance", (i / 3) % (size_t)t->width, (i / 3) / (size_t)t->width);
             return SSG_E_VALUE;
         }
     env->radiance = malloc(sizeof(float) * 3 * n);
     if (!env->radiance)
         return SSG_E_NOMEM;
+    /* Lossy EXR compression (the DWA of Blender's probes) rings slightly below 0 around
+       bright spots: such values are noise, not negative light, and are taken as 0. */
     for (size_t i = 0; i < 3 * n; i++)
-        env->radiance[i] = t->rgb[i] * env->constant[i % 3];
+        env->radiance[i] = fmaxf(t->rgb[i], 0.0f) * env->constant[i % 3];
     env->width = t->width;
     env->height = t->height;
     return SSG_OK;
@@ -322,12 +341,15 @@ enum ssg_err ssg_env_build(const struct ssg_scene *scene, const char *image_path
     enum ssg_err err = SSG_OK;
     if (e->image >= 0 && e->image < scene->texture_count) {
         env->has_image = 1;
-        if ((err = take_probe(env, &scene->textures[e->image], image_path, diags)) ||
-            (err = build_sampling(env)) || (err = build_coarse(env)) ||
-            (err = build_irradiance(env))) {
+        float (*dir)[3] = malloc(sizeof *dir * SSG_ENV_COARSE_W * SSG_ENV_COARSE_H);
+        if (!dir || (err = take_probe(env, &scene->textures[e->image], image_path, diags)) ||
+            (err = build_sampling(env)) || (err = build_coarse(env, dir))) {
+            free(dir);
             ssg_env_destroy(&env);
-            return err;
+            return err ? err : SSG_E_NOMEM;
         }
+        build_irradiance(env, (const float(*)[3])dir);
+        free(dir);
         env->has_light = env->power > 0;
     } else {
         env->power = 4.0 * M_PI * sample_weight(env->constant);

@@ -43,8 +43,9 @@ struct ssg_env {
 };
 
 /* Builds the environment of a loaded scene (scene->environment and its image in
- * scene->textures). A probe that is not 2:1, or that holds a negative or non-finite value,
- * is an error (SSG_E_VALUE, naming the pixel) in diags. */
+ * scene->textures). A probe that is not 2:1, or that holds a NaN or infinity, is an error
+ * (SSG_E_VALUE, naming the pixel) in diags; negative values (the ringing of lossy EXR
+ * compression) are taken as 0. */
 enum ssg_err ssg_env_build(const struct ssg_scene *scene, const char *image_path,
                            struct ssg_env **out, struct ssg_diags *diags);
 void ssg_env_destroy(struct ssg_env **env);

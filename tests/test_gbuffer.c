@@ -2,7 +2,8 @@
  * looking down -z, a 4x4 plane facing it at distance 5 and a sphere in front of it, lit by
  * a point light and a directional light. Checked per pixel against ray-casting by hand:
  * depth, normals, background zeros, the reprojection of position onto its own pixel,
- * albedo, and direct light against the closed form of gbuffer.c. Also: face normals,
+ * albedo, direct light against the closed form of gbuffer.c, and the constant
+ * environment's diffuse light. Also: face normals,
  * the same result on 1 and 2 threads, and the error without a scene. */
 #include <omp.h>
 #include <string.h>
@@ -24,18 +25,23 @@ static const char *scene_text =
     "plane(material=wall, center=[0, 0, -5], normal=[0, 0, 1], size=[4, 0, 4])\n"
     "sphere(material=ball, center=[1.2, 0.9, -3], radius=0.6, subdivisions=64)\n"
     "point_light(position=[0.5, -0.7, -3], color=[1, 0.8, 0.6], intensity=2)\n"
-    "directional_light(direction=[0.3, 0, -1], color=[0.2, 0.3, 0.4], intensity=0.5)\n";
+    "directional_light(direction=[0.3, 0, -1], color=[0.2, 0.3, 0.4], intensity=0.5)\n"
+    "environment(color=[0.2, 0.4, 0.5], intensity=0.5)\n";
+
+/* A constant environment of radiance L has irradiance pi L about any normal, so its
+   diffuse light is albedo * L on every surface (gbuffer.c). */
+static const float env_radiance[3] = {0.1f, 0.2f, 0.25f};
 
 static const float sphere_c[3] = {1.2f, 0.9f, -3.0f}, sphere_r = 0.6f;
 
 struct gbuf {
-    struct ssg_image *out[5];
+    struct ssg_image *out[6];
 };
 
 static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *g,
                            struct ssg_diags *d)
 {
-    static const int channels[5] = {3, 3, 1, 3, 3};
+    static const int channels[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_frame frame = {W, H, s ? s->camera.fov_y : 60, s ? s->camera.near_z : 0.1f,
                               s ? s->camera.far_z : 100, 1};
     struct ssg_node_ctx ctx = {"g", &frame, s, ".", d, NULL};
@@ -43,7 +49,7 @@ static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *
     struct ssg_gbuffer_consts c;
     ssg_params_defaults(ssg_node_gbuffer.params, &p);
     p.normals = normals;
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < 6; i++) {
         g->out[i] = ssg_image_create(W, H, channels[i]);
         for (size_t k = 0; k < (size_t)W * H * (size_t)channels[i]; k++)
             g->out[i]->data[k] = -123.0f; /* outputs arrive with undefined contents */
@@ -55,7 +61,7 @@ static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *
 
 static void release(struct gbuf *g)
 {
-    for (int i = 0; i < 5; i++)
+    for (int i = 0; i < 6; i++)
         ssg_image_destroy(&g->out[i]);
 }
 
@@ -130,6 +136,8 @@ static void check_wall_pixel(const struct gbuf *g, int x, int y, const float d[3
     CHECK_NEAR(at(g->out[1], 1, x, y), 0, 1e-6);
     CHECK_NEAR(at(g->out[1], 2, x, y), 1, 1e-6);
     CHECK_NEAR(at(g->out[3], 1, x, y), 0.4, 1e-6);
+    for (int a = 0; a < 3; a++)
+        CHECK_NEAR(at(g->out[5], a, x, y), at(g->out[3], a, x, y) * env_radiance[a], 1e-6);
     if ((x + y) % 7 == 0) { /* a sample of the wall's pixels for the lighting */
         const float p[3] = {5 * d[0], 5 * d[1], -5};
         wall_direct(p, want);
@@ -148,6 +156,7 @@ static void check_ball_pixel(const struct gbuf *g, int x, int y, const float d[3
     for (int a = 0; a < 3; a++) /* the analytic normal (P - C) / r */
         CHECK_NEAR(at(g->out[1], a, x, y), (want * d[a] - sphere_c[a]) / sphere_r, 2e-2);
     CHECK_NEAR(at(g->out[3], 2, x, y), 0.9, 1e-6);
+    CHECK_NEAR(at(g->out[5], 2, x, y), 0.9 * env_radiance[2], 1e-6);
     CHECK(at(g->out[4], 0, x, y) >= 0);
     t->ball++;
 }
@@ -155,7 +164,7 @@ static void check_ball_pixel(const struct gbuf *g, int x, int y, const float d[3
 static void check_background_pixel(const struct gbuf *g, int x, int y, struct tally *t)
 {
     int nonzero = 0;
-    for (int o = 0; o < 5; o++)
+    for (int o = 0; o < 6; o++)
         for (int c = 0; c < g->out[o]->channels; c++)
             nonzero += at(g->out[o], c, x, y) != 0.0f;
     CHECK_EQ(nonzero, 0);
@@ -245,7 +254,7 @@ static void test_threads(const struct ssg_scene *s)
     omp_set_num_threads(2);
     CHECK_EQ(render(s, 0, &two, &d), SSG_OK);
     omp_set_num_threads(threads);
-    for (int o = 0; o < 5; o++)
+    for (int o = 0; o < 6; o++)
         CHECK_EQ(memcmp(one.out[o]->data, two.out[o]->data,
                         sizeof(float) * W * H * (size_t)one.out[o]->channels), 0);
     release(&one);
