@@ -1,7 +1,8 @@
 /* test_combine.c - the `combine` node called through its descriptor on tiny images with
  * answers worked out by hand: out = direct + ambient * ambient_color * albedo * ao
- * + indirect, AO missing = 1, indirect missing = 0, background stays 0, sizes checked,
- * the same bits for any thread count. */
+ * + indirect, AO missing = 1, indirect missing = 0, background stays 0, the SSDO
+ * combinations (modulation, environment, darken_indirect), sizes checked, the same bits
+ * for any thread count. */
 #include <omp.h>
 #include <string.h>
 
@@ -146,6 +147,60 @@ static void test_known_values(void)
     ssg_image_destroy(&r.out[0]);
 }
 
+/* The SSDO combinations on one pixel of known values: one step (modulation darkens
+   direct, environment and, by default, the bounce), one step without darkening the
+   bounce, a 3-channel modulation, and AO darkening the environment light (SSAO). */
+static void test_ssdo_combinations(void)
+{
+    struct run r;
+    run_init(&r, 1, 1);
+    float d[3] = {0.4f, 0.2f, 0.1f}, a[3] = {0.5f, 0.5f, 0.5f}, e[3] = {0.1f, 0.2f, 0.3f};
+    float b[3] = {0.05f, 0.01f, 0.0f}, m3[3] = {0.5f, 0.25f, 1.0f};
+    struct ssg_image *direct = rgb(1, 1, &d[0], &d[1], &d[2]);
+    struct ssg_image *albedo = rgb(1, 1, &a[0], &a[1], &a[2]);
+    struct ssg_image *env = rgb(1, 1, &e[0], &e[1], &e[2]);
+    struct ssg_image *bounce = rgb(1, 1, &b[0], &b[1], &b[2]);
+    struct ssg_image *mod3 = rgb(1, 1, &m3[0], &m3[1], &m3[2]);
+    struct ssg_image *mod1 = ssg_image_create(1, 1, 1), *ao = ssg_image_create(1, 1, 1);
+    mod1->data[0] = 0.6f;
+    ao->data[0] = 0.3f;
+    struct ssg_combine_params p;
+    ssg_params_defaults(ssg_node_combine.params, &p);
+    CHECK_EQ(p.darken_indirect, 1);
+    p.ambient = 0;
+    r.in[SSG_COMBINE_DIRECT] = direct;
+    r.in[SSG_COMBINE_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_ENVIRONMENT] = env;
+    r.in[SSG_COMBINE_INDIRECT] = bounce;
+    r.in[SSG_COMBINE_MODULATION] = mod1;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    for (int c = 0; c < 3; c++) /* M (direct + environment + bounce) */
+        CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], 0.6 * (d[c] + e[c] + b[c]), 1e-6);
+    p.darken_indirect = 0;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], 0.6 * (d[c] + e[c]) + b[c], 1e-6);
+    r.in[SSG_COMBINE_MODULATION] = mod3;
+    p.darken_indirect = 1;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], m3[c] * (d[c] + e[c] + b[c]), 1e-6);
+    /* SSAO-modulated ambient from the environment: direct + ao * environment. */
+    r.in[SSG_COMBINE_MODULATION] = NULL;
+    r.in[SSG_COMBINE_INDIRECT] = NULL;
+    r.in[SSG_COMBINE_AO] = ao;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], d[c] + 0.3 * e[c], 1e-6);
+    /* A 2-channel modulation is refused. */
+    struct ssg_image *mod2 = ssg_image_create(1, 1, 2);
+    r.in[SSG_COMBINE_MODULATION] = mod2;
+    CHECK_EQ(run_combine(&r, &p), SSG_E_CHANNELS);
+    struct ssg_image *all[] = {direct, albedo, env, bounce, mod3, mod1, ao, mod2, r.out[0]};
+    for (int i = 0; i < SSG_COUNT(all); i++)
+        ssg_image_destroy(&all[i]);
+}
+
 /* Inputs that do not fit the output are reported, not read out of bounds. */
 static void test_mismatch(void)
 {
@@ -218,6 +273,7 @@ int main(void)
 {
     test_descriptor();
     test_known_values();
+    test_ssdo_combinations();
     test_mismatch();
     test_bands_and_threads();
     return check_report();

@@ -1,15 +1,22 @@
-/* combine.c - the `combine` node: final shading of the frame from the G-buffer's direct
- * light and albedo, the (filtered) ambient occlusion and optional indirect light.
+/* combine.c - the `combine` node: final shading of the frame from the G-buffer's light and
+ * albedo, ambient occlusion or SSDO's modulation factor, and indirect light:
  *
- *   out = direct + ambient * ambient_color * albedo * ao + indirect      (per channel)
+ *   out = M * direct + M * ao * (environment + ambient * ambient_color * albedo)
+ *         + (darken_indirect ? M : 1) * indirect                       (per channel)
  *
- * The ambient term is the constant ambient light of a perfectly diffuse surface
- * (Belonogov, "Global Illumination methods in simulated VR environments", section 2.2.2),
- * darkened by ambient occlusion as its visibility factor: Szentandrasi, "Modern Methods of
- * Realistic Lighting in Real Time", section 3.1 ("this visibility property is used as a
- * darkening factor"), with AO in [0, 1] as defined by Belonogov section 2.2.3, eq. 2.5,
- * and applied to the ambient component only (Belonogov section 3.2). Direct light is not
- * darkened: it carries its own visibility. Background pixels (albedo 0, direct 0) stay 0. */
+ * with M the modulation factor (1 or 3 channels, 1 when unconnected) and ao the ambient
+ * occlusion (1 when unconnected).
+ * - SSAO: the ambient term is the ambient light of a diffuse surface (Belonogov, "Global
+ *   Illumination methods in simulated VR environments", section 2.2.2) or the scene's
+ *   environment light, darkened by AO as its visibility factor (Szentandrasi, "Modern
+ *   Methods of Realistic Lighting in Real Time", section 3.1: "this visibility property is
+ *   used as a darkening factor"; AO in [0, 1] by Belonogov eq. 2.5, applied to the ambient
+ *   component only, Belonogov section 3.2). Direct light is not darkened by AO.
+ * - SSDO one step (Szentandrasi section 4.1): the modulation factor, the ratio of light with
+ *   and without visibility, darkens the light it was computed for (direct and environment)
+ *   and, "in order to avoid pixels being too bright in darkened corners", the bounce too.
+ * - SSDO two steps: direct = SSDO's radiance, indirect = the bounce pass: a plain sum.
+ * Background pixels (albedo 0, light 0) stay 0. */
 #include <stddef.h>
 
 #include "combine.h"
@@ -21,7 +28,13 @@ static const struct ssg_port_desc inputs[] = {
     {.name = "ambient_occlusion", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "ambient occlusion, 1 = unoccluded; unconnected = 1 everywhere"},
     {.name = "indirect", .types = SSG_T_COLOR, .optional = 1,
-     .doc = "indirect light added as is, linear RGB; unconnected = 0"},
+     .doc = "indirect light (a bounce), linear RGB; unconnected = 0"},
+    {.name = "modulation", .types = SSG_T_SCALAR | SSG_T_COLOR, .optional = 1,
+     .doc = "SSDO modulation factor (1 or 3 channels) darkening direct, environment, "
+            "ambient and (darken_indirect) indirect light; unconnected = 1"},
+    {.name = "environment", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
+            "term; unconnected = 0"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -36,20 +49,29 @@ static const struct ssg_param_desc param_table[] = {
     {.name = "ambient_color", .type = SSG_P_VEC3,
      .offset = offsetof(struct ssg_combine_params, ambient_color), .min = 0, .max = 100,
      .def3 = {1, 1, 1}, .unit = "linear RGB", .help = "tint of the ambient light"},
+    {.name = "darken_indirect", .type = SSG_P_BOOL,
+     .offset = offsetof(struct ssg_combine_params, darken_indirect), .def = 1,
+     .help = "the modulation factor darkens the indirect light too (the one-step SSDO rule "
+             "against over-bright corners)"},
 };
 
 const struct ssg_node_desc ssg_node_combine = {
     .name = "combine",
-    .summary = "final shading: direct + ambient * albedo * AO + indirect",
-    .method = "out = direct + ambient * ambient_color * albedo * ao + indirect; AO darkens the "
-              "ambient term only (Szentandrasi, Modern Methods of Realistic Lighting in Real "
-              "Time, sec. 3.1; AO as in Belonogov, Global Illumination methods in simulated VR "
-              "environments, sec. 2.2.3 eq. 2.5 and sec. 3.2)",
-    .doc = "Combines the G-buffer's direct light with a uniform ambient light scaled by the "
-           "surface albedo and darkened by ambient occlusion, plus optional indirect light "
-           "(added as is). Without ambient_occlusion the ambient light is unoccluded; "
-           "background pixels (albedo 0, direct 0) stay black. Output is linear and may "
-           "exceed 1.",
+    .summary = "final shading: light darkened by AO or the SSDO modulation, plus indirect",
+    .method = "out = M direct + M ao (environment + ambient ambient_color albedo) + "
+              "(darken_indirect ? M : 1) indirect; AO darkens the ambient term only "
+              "(Szentandrasi, Modern Methods of Realistic Lighting in Real Time, sec. 3.1; "
+              "Belonogov, Global Illumination methods in simulated VR environments, sec. "
+              "2.2.3 eq. 2.5 and sec. 3.2); the SSDO modulation factor M darkens light and "
+              "bounce (Szentandrasi sec. 4.1)",
+    .doc = "Combines the G-buffer's direct light with the ambient light (a uniform ambient "
+           "scaled by the albedo, and/or the scene's environment light) darkened by ambient "
+           "occlusion, and indirect light. For one-step SSDO connect modulation (it darkens "
+           "direct, environment and ambient light and, with darken_indirect, the bounce); "
+           "for two-step SSDO connect SSDO's radiance as direct and the bounce as indirect. "
+           "Unconnected: ao and modulation 1, environment and indirect 0. Background pixels "
+           "(albedo 0, light 0) stay black. Output is linear and may exceed 1; write's "
+           "exposure and tonemap shape the PNG.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

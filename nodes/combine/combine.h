@@ -1,10 +1,8 @@
 /* combine.h - the parameters and port order of the `combine` node (final shading), shared
  * by combine.c (descriptor), combine_cpu.c (the kernel) and tests/test_combine.c.
  *
- * Method: the SSAO term modulates the ambient light of a diffuse surface, Szentandrasi,
- * "Modern Methods of Realistic Lighting in Real Time", section 3.1, with AO defined as in
- * Belonogov, "Global Illumination methods in simulated VR environments", section 2.2.3,
- * eq. 2.5 (1 = unoccluded). */
+ * Method in combine.c: AO darkens the ambient light (Szentandrasi sec. 3.1), SSDO's
+ * modulation factor darkens the light it was computed for and the bounce (sec. 4.1). */
 #ifndef SSG_COMBINE_H
 #define SSG_COMBINE_H
 
@@ -15,7 +13,9 @@ enum ssg_combine_input {
     SSG_COMBINE_DIRECT,   /* color, required: direct diffuse + specular light */
     SSG_COMBINE_ALBEDO,   /* color, required: diffuse reflectance */
     SSG_COMBINE_AO,       /* scalar, optional: ambient occlusion, 1 = open; missing = 1 */
-    SSG_COMBINE_INDIRECT, /* color, optional: indirect light added as is; missing = 0 */
+    SSG_COMBINE_INDIRECT, /* color, optional: indirect light; missing = 0 */
+    SSG_COMBINE_MODULATION, /* scalar or color, optional: SSDO modulation factor; missing = 1 */
+    SSG_COMBINE_ENVIRONMENT, /* color, optional: unoccluded environment light; missing = 0 */
     SSG_COMBINE_INPUTS
 };
 
@@ -23,6 +23,7 @@ enum ssg_combine_input {
 struct ssg_combine_params {
     float ambient;          /* strength of the ambient light, 0..10; default 0.3 */
     float ambient_color[3]; /* linear RGB tint of the ambient light, 0..100; default [1,1,1] */
+    int darken_indirect;    /* 1 = the modulation factor also darkens indirect; default 1 */
 };
 
 /* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */

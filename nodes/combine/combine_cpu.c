@@ -7,30 +7,39 @@
 enum { BAND_ROWS = 16 };
 
 struct combine_job {
-    const float *direct[3], *albedo[3], *indirect[3]; /* indirect[c] NULL = none */
-    const float *ao;                                  /* NULL = unoccluded */
+    const float *direct[3], *albedo[3]; /* required */
+    const float *indirect[3];           /* NULL = none */
+    const float *environment[3];        /* NULL = none */
+    const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
+    const float *ao;                    /* NULL = unoccluded */
+    int darken_indirect;
     float *out[3];
-    float k[3];                                       /* ambient * ambient_color */
+    float k[3];                         /* ambient * ambient_color */
     int width;
 };
+
+/* One channel of one band. The optional inputs are loop-invariant NULL tests, which the
+   compiler hoists out of the loop (unswitching), so each variant is a plain vector loop. */
+static void combine_channel(const struct combine_job *j, int c, size_t begin, size_t end)
+{
+    const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
+    const float *env = j->environment[c], *m = j->modulation[c];
+    const int darken = j->darken_indirect;
+    float *o = j->out[c], k = j->k[c];
+    for (size_t i = begin; i < end; i++) {
+        float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f;
+        float ambient = (env ? env[i] : 0.0f) + k * a[i];
+        float bounce = ind ? ind[i] : 0.0f;
+        o[i] = mi * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce;
+    }
+}
 
 static void combine_rows(void *user, int y0, int y1)
 {
     const struct combine_job *j = user;
-    size_t w = (size_t)j->width, begin = (size_t)y0 * w, end = (size_t)y1 * w;
-    for (int c = 0; c < 3; c++) {
-        const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
-        float *o = j->out[c], k = j->k[c];
-        if (ao)
-            for (size_t i = begin; i < end; i++)
-                o[i] = d[i] + k * a[i] * ao[i];
-        else
-            for (size_t i = begin; i < end; i++)
-                o[i] = d[i] + k * a[i];
-        if (ind)
-            for (size_t i = begin; i < end; i++)
-                o[i] += ind[i];
-    }
+    size_t w = (size_t)j->width;
+    for (int c = 0; c < 3; c++)
+        combine_channel(j, c, (size_t)y0 * w, (size_t)y1 * w);
 }
 
 /* An input must have the output's size and its port's channel count. */
@@ -66,18 +75,27 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *albedo = io->in[SSG_COMBINE_ALBEDO];
     const struct ssg_image *ao = io->in[SSG_COMBINE_AO];
     const struct ssg_image *indirect = io->in[SSG_COMBINE_INDIRECT];
+    const struct ssg_image *modulation = io->in[SSG_COMBINE_MODULATION];
+    const struct ssg_image *environment = io->in[SSG_COMBINE_ENVIRONMENT];
     struct ssg_image *out = io->out[0];
     enum ssg_err err = SSG_OK;
     if ((err = check_input(ctx, direct, "direct", 3, out)) ||
         (err = check_input(ctx, albedo, "albedo", 3, out)) ||
         (ao && (err = check_input(ctx, ao, "ambient_occlusion", 1, out))) ||
-        (indirect && (err = check_input(ctx, indirect, "indirect", 3, out))))
+        (indirect && (err = check_input(ctx, indirect, "indirect", 3, out))) ||
+        (environment && (err = check_input(ctx, environment, "environment", 3, out))) ||
+        (modulation && (err = check_input(ctx, modulation, "modulation",
+                                          modulation->channels == 1 ? 1 : 3, out))))
         return err;
-    struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width};
+    struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width,
+                              .darken_indirect = p->darken_indirect};
     for (int c = 0; c < 3; c++) {
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);
         job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
+        job.environment[c] = environment ? ssg_image_plane(environment, c) : NULL;
+        job.modulation[c] =
+            modulation ? ssg_image_plane(modulation, modulation->channels == 1 ? 0 : c) : NULL;
         job.out[c] = ssg_image_plane(out, c);
         job.k[c] = p->ambient * p->ambient_color[c];
     }
