@@ -3,6 +3,7 @@
 
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
+                           [--ssdo [--samples 12,24,36,64]]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -10,8 +11,13 @@ the peak memory is the process's maximum resident set (getrusage of the child), 
 includes the scene, Embree's BVH and the image pool. Without --bin it builds a Release
 binary into build-bench/ first. Speed is compared by ratios of these medians, never by
 timed assertions in tests.
+
+--ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
+bounce on and off (the `do` node's median ms), and scores each final image against
+reference_gi (bench/ssdo_reference.graph, made once per size) with `ssgraph compare`.
 """
 import argparse
+import json
 import os
 import statistics
 import subprocess
@@ -74,6 +80,58 @@ def bench(binary, graph, size, threads, runs):
     return medians, spread, samples[0][1], peak
 
 
+def run_cmd(cmd):
+    res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode != 0:
+        sys.exit(f"bench: {' '.join(cmd)} failed:\n{res.stderr}")
+    return res.stdout
+
+
+def ssdo_table(binary, sizes, threads, runs, samples):
+    """SSDO's median ms for each K and bounce setting, with its error against truth."""
+    graph = os.path.join(ROOT, "graphs", "ssdo.graph")
+    reference = os.path.join(ROOT, "bench", "ssdo_reference.graph")
+    print(f"{'size':<10} {'K':>4} {'bounce':>7} {'ssdo ms':>9} {'min':>8} {'max':>8} "
+          f"{'rmse':>8} {'ssim':>7}")
+    with tempfile.TemporaryDirectory() as tmp:
+        for size in sizes:
+            ref_dir = os.path.join(tmp, "ref_" + size)
+            run_cmd([binary, "run", reference, "--size", size, "--out", ref_dir, "--quiet"])
+            ref = os.path.join(ref_dir, "reference.exr")
+            for k in samples:
+                for bounce in ("false", "true"):
+                    sets = ["--set", f"k.count={k}", "--set", f"do.bounce={bounce}"]
+                    out_dir = os.path.join(tmp, "ssdo")
+                    cmd_graph = graph
+                    times = []
+                    for i in range(runs + 1):
+                        cmd = [binary, "run", cmd_graph, "--size", size, "--out", out_dir] + sets
+                        if threads:
+                            cmd += ["--threads", str(threads)]
+                        t = parse_times(run_cmd(cmd))
+                        if i:  # the first run warms up
+                            times.append(t["do (ssdo)"])
+                    err = json.loads(run_cmd([binary, "compare",
+                                              os.path.join(out_dir, "ssdo.exr"), ref,
+                                              "--mask", ref + ":depth", "--json"]))
+                    print(f"{size:<10} {k:>4} {bounce:>7} {statistics.median(times):>9.2f} "
+                          f"{min(times):>8.2f} {max(times):>8.2f} {err['rmse']:>8.4f} "
+                          f"{err['ssim']:>7.4f}")
+
+
+def parse_times(stdout):
+    times, table = {}, False
+    for line in stdout.splitlines():
+        parts = line.split()
+        if parts[:3] == ["node", "type", "ms"]:
+            table = True
+        elif table and len(parts) >= 3 and parts[0] != "total":
+            times[f"{parts[0]} ({parts[1]})"] = float(parts[2])
+        elif parts and parts[0] == "total":
+            table = False
+    return times
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -85,8 +143,17 @@ def main():
     ap.add_argument("--ao", action="store_true",
                     help="the AO comparison: graphs/ao_error.graph (each AO method's time "
                          "and its error against the ray-traced reference)")
+    ap.add_argument("--ssdo", action="store_true",
+                    help="SSDO's time over kernel sizes, bounce on/off, and its error "
+                         "against reference_gi on the Cornell box")
+    ap.add_argument("--samples", default="12,24,36,64",
+                    help="--ssdo: kernel sizes K, comma-separated")
     args = ap.parse_args()
     binary = args.bin or build()
+    if args.ssdo:
+        ssdo_table(binary, args.size or ["1280x720", "1920x1080"], args.threads, args.runs,
+                   [int(k) for k in args.samples.split(",")])
+        return
     if args.ao:
         graphs = [os.path.join(ROOT, "graphs", "ao_error.graph")]
     else:

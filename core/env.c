@@ -69,21 +69,44 @@ void ssg_env_radiance(const struct ssg_env *env, const float d[3], float rgb[3])
            3 * sizeof(float));
 }
 
-/* Bilinear lookup in a coarse table: u wraps around, v clamps at the poles. */
-static void table_bilinear(const float (*t)[SSG_ENV_COARSE_W][3], const float d[3],
-                           float rgb[3])
+/* Bilinear lookup in a coarse table: u wraps around; between the first (last) row's
+   centres and the pole, the value blends towards the pole's own value (the row's mean), so
+   a lookup at the pole does not depend on the azimuth it happens to carry. */
+static void table_bilinear(const float (*t)[SSG_ENV_COARSE_W][3], const float (*pole)[3],
+                           const float d[3], float rgb[3])
 {
     float u, v;
     ssg_env_latlong(d, &u, &v);
     float fx = u * SSG_ENV_COARSE_W - 0.5f, fy = v * SSG_ENV_COARSE_H - 0.5f;
-    float x0f = floorf(fx), y0f = floorf(fy), ax = fx - x0f, ay = fy - y0f;
+    float x0f = floorf(fx), ax = fx - x0f;
     int x0 = ((int)x0f % SSG_ENV_COARSE_W + SSG_ENV_COARSE_W) % SSG_ENV_COARSE_W;
-    int x1 = (x0 + 1) % SSG_ENV_COARSE_W, y0 = (int)y0f, y1 = y0 + 1;
-    y0 = y0 < 0 ? 0 : y0 >= SSG_ENV_COARSE_H ? SSG_ENV_COARSE_H - 1 : y0;
-    y1 = y1 < 0 ? 0 : y1 >= SSG_ENV_COARSE_H ? SSG_ENV_COARSE_H - 1 : y1;
-    for (int c = 0; c < 3; c++)
-        rgb[c] = (1 - ay) * ((1 - ax) * t[y0][x0][c] + ax * t[y0][x1][c]) +
-                 ay * ((1 - ax) * t[y1][x0][c] + ax * t[y1][x1][c]);
+    int x1 = (x0 + 1) % SSG_ENV_COARSE_W;
+    int y = (int)floorf(fy), last = SSG_ENV_COARSE_H - 1;
+    float ay = fy - floorf(fy);
+    for (int c = 0; c < 3; c++) {
+        float row[2];
+        for (int k = 0; k < 2; k++) {
+            int yk = y + k;
+            row[k] = yk < 0 ? pole[0][c] : yk > last ? pole[1][c]
+                   : (1 - ax) * t[yk][x0][c] + ax * t[yk][x1][c];
+        }
+        /* the poles sit half a texel beyond the outer row centres */
+        float w = y < 0 ? 2 * ay - 1 : y >= last ? 2 * ay : ay;
+        w = w < 0 ? 0 : w > 1 ? 1 : w;
+        rgb[c] = (1 - w) * row[0] + w * row[1];
+    }
+}
+
+/* The mean of a table's first and last rows: its values at the two poles. */
+static void table_poles(const float (*t)[SSG_ENV_COARSE_W][3], float pole[2][3])
+{
+    for (int p = 0; p < 2; p++)
+        for (int c = 0; c < 3; c++) {
+            double sum = 0;
+            for (int x = 0; x < SSG_ENV_COARSE_W; x++)
+                sum += t[p ? SSG_ENV_COARSE_H - 1 : 0][x][c];
+            pole[p][c] = (float)(sum / SSG_ENV_COARSE_W);
+        }
 }
 
 void ssg_env_radiance_coarse(const struct ssg_env *env, const float d[3], float rgb[3])
@@ -92,7 +115,7 @@ void ssg_env_radiance_coarse(const struct ssg_env *env, const float d[3], float 
         memcpy(rgb, env->constant, 3 * sizeof(float));
         return;
     }
-    table_bilinear(env->coarse, d, rgb);
+    table_bilinear(env->coarse, (const float(*)[3])env->coarse_pole, d, rgb);
 }
 
 void ssg_env_irradiance(const struct ssg_env *env, const float n[3], float rgb[3])
@@ -102,7 +125,7 @@ void ssg_env_irradiance(const struct ssg_env *env, const float n[3], float rgb[3
             rgb[c] = (float)M_PI * env->constant[c];
         return;
     }
-    table_bilinear(env->irradiance, n, rgb);
+    table_bilinear(env->irradiance, (const float(*)[3])env->irradiance_pole, n, rgb);
 }
 
 /* Index of the interval of a cdf (count + 1 entries, 0 .. 1) that holds x. */
@@ -348,7 +371,9 @@ enum ssg_err ssg_env_build(const struct ssg_scene *scene, const char *image_path
             ssg_env_destroy(&env);
             return err ? err : SSG_E_NOMEM;
         }
+        table_poles(env->coarse, env->coarse_pole);
         build_irradiance(env, (const float(*)[3])dir);
+        table_poles(env->irradiance, env->irradiance_pole);
         free(dir);
         env->has_light = env->power > 0;
     } else {

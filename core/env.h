@@ -35,6 +35,9 @@ struct ssg_env {
     float irradiance[SSG_ENV_COARSE_H][SSG_ENV_COARSE_W][3]; /* E(n) = integral of L(w)
                                                                 max(0, n.w) dw at the texel
                                                                 centre's direction n */
+    float coarse_pole[2][3];     /* the coarse table's value at the north and south pole
+                                    (mean of its first and last row) */
+    float irradiance_pole[2][3]; /* likewise for the irradiance table */
     /* Importance sampling of the probe by luminance x solid angle (piecewise constant):
        row_cdf[height + 1] over rows, col_cdf[height][width + 1] within each row. */
     float *row_cdf, *col_cdf;
@@ -85,25 +88,33 @@ struct ssg_env_cube {
 void ssg_env_cube_build(const struct ssg_env *env, const float to_world[9],
                         struct ssg_env_cube *cube);
 
-/* Nearest texel of the cube for direction (x, y, z) in the cube's frame (need not be unit,
- * must not be 0). */
+/* Index (in texels, times 3 for the float offset) of the nearest cube texel for direction
+ * (x, y, z) in the cube's frame (need not be unit, must not be 0). Written with selects
+ * only, no branches, so a loop over many directions vectorises. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int ssg_env_cube_index(float x, float y, float z)
+{
+    const int n = SSG_ENV_CUBE_SIZE;
+    float ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
+    int xm = (ax >= ay) & (ax >= az), ym = !xm & (ay >= az);
+    float ma = xm ? ax : ym ? ay : az;
+    int face = xm ? (x >= 0 ? 0 : 1) : ym ? (y >= 0 ? 2 : 3) : (z >= 0 ? 4 : 5);
+    float sc = xm ? (x >= 0 ? -z : z) : ym ? x : (z >= 0 ? x : -x);
+    float tc = xm ? -y : ym ? (y >= 0 ? z : -z) : -y;
+    float inv = 0.5f * (float)n / ma;
+    int i = (int)(sc * inv + 0.5f * (float)n), j = (int)(tc * inv + 0.5f * (float)n);
+    i = i < 0 ? 0 : i >= n ? n - 1 : i;
+    j = j < 0 ? 0 : j >= n ? n - 1 : j;
+    return (face * n + j) * n + i;
+}
+
+/* The nearest texel's RGB for direction (x, y, z) (see ssg_env_cube_index). */
 static inline const float *ssg_env_cube_texel(const struct ssg_env_cube *cube, float x,
                                               float y, float z)
 {
-    float ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
-    int face;
-    float sc, tc, ma;
-    if (ax >= ay && ax >= az)
-        face = x >= 0 ? 0 : 1, ma = ax, sc = x >= 0 ? -z : z, tc = -y;
-    else if (ay >= az)
-        face = y >= 0 ? 2 : 3, ma = ay, sc = x, tc = y >= 0 ? z : -z;
-    else
-        face = z >= 0 ? 4 : 5, ma = az, sc = z >= 0 ? x : -x, tc = -y;
-    const int n = SSG_ENV_CUBE_SIZE;
-    int i = (int)((sc / ma * 0.5f + 0.5f) * (float)n), j = (int)((tc / ma * 0.5f + 0.5f) * (float)n);
-    i = i < 0 ? 0 : i >= n ? n - 1 : i;
-    j = j < 0 ? 0 : j >= n ? n - 1 : j;
-    return &cube->rgb[(size_t)((face * n + j) * n + i) * 3];
+    return &cube->rgb[(size_t)ssg_env_cube_index(x, y, z) * 3];
 }
 
 #endif

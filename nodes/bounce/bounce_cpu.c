@@ -1,0 +1,68 @@
+/* bounce_cpu.c - CPU kernel of the `bounce` node (method in bounce.c). The sampling,
+ * visibility test and form factors are ssdo's shared code (ssdo/ssdo_sampling.h), run in
+ * the same order per pixel as ssdo_cpu.c runs them, so the output has the same bits as
+ * ssdo's bounce output. Layout: chunks of a row in structure-of-arrays scratch, chunk
+ * columns outside and a band's rows inside (see ssao_cpu.c); bands of rows go to
+ * ssg_parallel_rows, so the result does not depend on the thread count. */
+#include "bounce.h"
+
+/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+struct job {
+    struct ssg_ssdo_job s; /* what the shared sampling reads */
+    float *out[3];         /* planes of the output */
+};
+
+/* The hot loop, per kernel sample in order (AVX2 clone as in ssdo_cpu.c: same bits). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sample_all(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *k, int len)
+{
+    const int count = j->count, own = j->own_depth;
+    const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
+    for (int s = 0; s < count; s++) {
+        if (own)
+            ssg_ssdo_sample(j, k, len, kx[s], ky[s], kz[s], 1, 1);
+        else
+            ssg_ssdo_sample(j, k, len, kx[s], ky[s], kz[s], 0, 1);
+    }
+}
+
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct ssg_ssdo_chunk k;
+    for (int x0 = 0; x0 < j->s.w; x0 += SSG_SSDO_CHUNK) {
+        int len = j->s.w - x0 < SSG_SSDO_CHUNK ? j->s.w - x0 : SSG_SSDO_CHUNK;
+        for (int y = y0; y < y1; y++) {
+            ssg_ssdo_load(&j->s, &k, y, x0, len);
+            ssg_ssdo_setup(&j->s, &k, len);
+            sample_all(&j->s, &k, len);
+            ssg_ssdo_finish_bounce(&j->s, &k, len, (size_t)y * (size_t)j->s.w + (size_t)x0,
+                                   j->out);
+        }
+    }
+}
+
+enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io)
+{
+    const struct ssg_bounce_consts *c = consts;
+    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "bounce", 1, 1);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bounce",
+                             "output must be 3-channel, the size of position");
+    struct job j;
+    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height, 1);
+    for (int ch = 0; ch < 3; ch++)
+        j.out[ch] = ssg_image_plane(io->out[0], ch);
+    ssg_parallel_rows(j.s.h, SSG_SSDO_ROWS_PER_BAND, band, &j);
+    return SSG_OK;
+}

@@ -1,0 +1,242 @@
+/* ssdo.c - the `ssdo` node: screen-space directional occlusion with one optional indirect
+ * bounce.
+ *
+ * Method: Ritschel, Grosch and Seidel, "Approximating Dynamic Global Illumination in
+ * Image Space" (I3D 2009), after Szentandrasi, "Modern Methods of Realistic Lighting in
+ * Real Time", section 3.2 (eq. 1-4) and 4.1 (the one-step modulation factor), and
+ * Belonogov, "Global Illumination methods in simulated VR environments", chapter 4.
+ * Sampling, the visibility test (with a hard range check) and the bounce are described in
+ * ssdo_sampling.h, which the `bounce` node shares. Here, per pixel and kernel sample s
+ * with direction w = s / |s| (N.w = s.z / |s|), and dw = 2 pi / K (eq. 2: the kernel must
+ * be uniform over the hemisphere, `halton(mapping=uniform)`):
+ *   environment: lit += L_env(w) (N.w) V dw, full += L_env(w) (N.w) dw (eq. 2), L_env from
+ *     the scene's environment as a view-space cube (core/env.h, no trigonometry per sample);
+ *   point and directional lights l: E_l = colour intensity max(0, N.L_l) (/ d^2 for a
+ *     point light), the unshadowed irradiance gbuffer computes. A delta light cannot be hit
+ *     by hemisphere samples, so its visibility is estimated from the samples near its
+ *     direction: weights w_il = max(0, w_i.L_l)^lobe (N.w_i), vis_l = sum w_il V_i /
+ *     sum w_il (1 when the sum is 0). This is our documented stand-in for L_in of a point
+ *     light in eq. 2: the lobe spreads the light over a cone, and shadows move with it.
+ * mode modulation (sec. 4.1): M = (sum_l E_l vis_l + lit) / (sum_l E_l + full), per channel
+ *   (channels=3) or of the Rec. 709 luminances (channels=1); 1 where the denominator is 0
+ *   and for the background. Numerator and denominator are the same sums in the same order,
+ *   so an open plane (no sample occluded) gives exactly 1. It darkens what gbuffer's
+ *   direct + environment light (equation 1 without the visibility) shows.
+ * mode radiance (eq. 2, first pass of the two-step method): out = albedo / pi *
+ *   (sum_l E_l vis_l + lit); the `bounce` node is its second pass.
+ * bounce=true adds the bounce output (eq. 3/4, patch form, ssdo_sampling.h) with the light
+ *   input as the senders' radiance (in the one-step graph gbuffer.direct +
+ *   gbuffer.environment). Sec. 4.1 darkens the bounce by the modulation factor when
+ *   composing; this node leaves that to the composition. bounce=false: the output is 0.
+ * Without a scene (ctx->scene NULL, e.g. unit tests) there are no lights and the
+ * environment is a constant white of radiance 1: plain directional occlusion. dw is
+ * computed at run time, from the kernel's width. */
+#include <stdio.h>
+#include <string.h>
+
+#include "scene.h"
+#include "ssdo.h"
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_ssdo_params *p = params;
+    const int has_albedo = in[SSG_SSDO_IN_ALBEDO].channels != 0;
+    if (p->mode == SSG_SSDO_MODE_RADIANCE && !has_albedo) {
+        snprintf(why, why_len, "mode radiance needs input 'albedo' (out = albedo / pi * "
+                 "incoming light)");
+        return SSG_E_MISSING_INPUT;
+    }
+    if (p->bounce && (!has_albedo || in[SSG_SSDO_IN_LIGHT].channels == 0)) {
+        snprintf(why, why_len, "bounce=true needs inputs 'albedo' (the receiver) and "
+                 "'light' (the senders' radiance)");
+        return SSG_E_MISSING_INPUT;
+    }
+    if (p->channels != 1 && p->channels != 3) {
+        snprintf(why, why_len, "channels must be 1 (luminance) or 3 (per channel), got %d",
+                 p->channels);
+        return SSG_E_VALUE;
+    }
+    enum ssg_err e = ssg_ssdo_check_shapes(in, why, why_len);
+    if (e)
+        return e;
+    const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION];
+    int color = p->mode == SSG_SSDO_MODE_RADIANCE || p->channels == 3;
+    out[0] = (struct ssg_shape){pos->width, pos->height, color ? 3 : 1,
+                                color ? SSG_T_COLOR : SSG_T_SCALAR};
+    out[1] = (struct ssg_shape){pos->width, pos->height, 3, SSG_T_COLOR};
+    return SSG_OK;
+}
+
+/* The scene's lights in view space: view = R (world - eye). */
+static enum ssg_err prepare_lights(const struct ssg_node_ctx *ctx, const float rot[9],
+                                   struct ssg_ssdo_consts *c)
+{
+    const struct ssg_scene *s = ctx->scene;
+    if (s->light_count > SSG_SSDO_MAX_LIGHTS) {
+        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0},
+                    "ssdo '%s': the scene has %d lights, at most %d are supported",
+                    ctx->instance ? ctx->instance : "", s->light_count, SSG_SSDO_MAX_LIGHTS);
+        return SSG_E_SCENE;
+    }
+    c->light_count = s->light_count;
+    for (int l = 0; l < s->light_count; l++) {
+        const struct ssg_light *sl = &s->lights[l];
+        struct ssg_ssdo_light *vl = &c->lights[l];
+        float d[3];
+        vl->directional = sl->kind == SSG_LIGHT_DIRECTIONAL;
+        for (int i = 0; i < 3; i++) {
+            d[i] = vl->directional ? -sl->direction[i]
+                                   : sl->position[i] - s->camera.position[i];
+            vl->rgb[i] = sl->color[i] * sl->intensity;
+        }
+        for (int r = 0; r < 3; r++)
+            vl->v[r] = rot[3 * r] * d[0] + rot[3 * r + 1] * d[1] + rot[3 * r + 2] * d[2];
+        float len = sqrtf(vl->v[0] * vl->v[0] + vl->v[1] * vl->v[1] + vl->v[2] * vl->v[2]);
+        for (int i = 0; vl->directional && len > 0.0f && i < 3; i++)
+            vl->v[i] /= len;
+    }
+    return SSG_OK;
+}
+
+/* Lights and environment of the scene in view space; without a scene none and white. */
+static enum ssg_err prepare_light(const struct ssg_node_ctx *ctx, struct ssg_ssdo_consts *c)
+{
+    const struct ssg_scene *s = ctx->scene;
+    c->env = SSG_SSDO_ENV_CONSTANT;
+    c->light_count = 0;
+    if (!s) {
+        c->env_rgb[0] = c->env_rgb[1] = c->env_rgb[2] = 1.0f;
+        return SSG_OK;
+    }
+    float m[16], rot[9], to_world[9];
+    ssg_camera_view_matrix(&s->camera, m);
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++) {
+            rot[3 * r + k] = m[4 * k + r];      /* world -> view, row-major */
+            to_world[3 * k + r] = m[4 * k + r]; /* its transpose */
+        }
+    enum ssg_err e = prepare_lights(ctx, rot, c);
+    if (e)
+        return e;
+    const struct ssg_env *env = s->env;
+    if (!env || !env->has_light) {
+        c->env_rgb[0] = c->env_rgb[1] = c->env_rgb[2] = 0.0f;
+    } else if (!env->has_image) {
+        memcpy(c->env_rgb, env->constant, sizeof c->env_rgb);
+    } else {
+        c->env = SSG_SSDO_ENV_CUBE;
+        ssg_env_cube_build(env, to_world, &c->cube);
+    }
+    return SSG_OK;
+}
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    struct ssg_ssdo_consts *c = consts;
+    c->p = *(const struct ssg_ssdo_params *)params;
+    c->proj = ssg_frame_projection(ctx->frame);
+    c->frame_width = ctx->frame->width;
+    c->frame_height = ctx->frame->height;
+    if (!(c->p.g.radius > 0) || c->frame_width < 1 || c->frame_height < 1 ||
+        !(c->proj.f > 0) || c->p.lobe < 1 || c->p.lobe > 64 ||
+        (c->p.channels != 1 && c->p.channels != 3)) {
+        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
+                    "ssdo '%s': needs radius > 0, lobe 1..64, channels 1 or 3 and a frame "
+                    "with size and field of view", ctx->instance ? ctx->instance : "");
+        return SSG_E_VALUE;
+    }
+    return prepare_light(ctx, c);
+}
+
+static const char *const mode_choices[] = {"modulation", "radiance", NULL};
+
+#define GEOM(field) offsetof(struct ssg_ssdo_params, g) + offsetof(struct ssg_ssdo_geom, field)
+
+static const struct ssg_param_desc params[] = {
+    {.name = "radius", .type = SSG_P_FLOAT, .offset = GEOM(radius), .def = 0.5, .min = 1e-6,
+     .max = 1e6, .unit = "scene units", .help = "r_max: hemisphere radius around the pixel"},
+    {.name = "bias", .type = SSG_P_FLOAT, .offset = GEOM(bias), .def = 0.02, .min = 0,
+     .max = 1e6, .unit = "scene units",
+     .help = "a sample is occluded only when the surface is this much in front of it"},
+    {.name = "mode", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_ssdo_params, mode),
+     .def = SSG_SSDO_MODE_MODULATION, .choices = mode_choices,
+     .help = "modulation: lit / unoccluded light (one-step, sec. 4.1); radiance: albedo/pi "
+             "* directional light (eq. 2)"},
+    {.name = "channels", .type = SSG_P_INT,
+     .offset = offsetof(struct ssg_ssdo_params, channels), .def = 1, .min = 1, .max = 3,
+     .help = "modulation: 1 = one factor of the luminances, 3 = one per colour channel"},
+    {.name = "bounce", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_ssdo_params, bounce),
+     .def = 0, .help = "compute the indirect bounce output (needs albedo and light)"},
+    {.name = "strength", .type = SSG_P_FLOAT, .offset = GEOM(strength), .def = 1, .min = 0,
+     .max = 64, .help = "multiplies the sender patch area A_s = pi radius^2 / K"},
+    {.name = "min_distance", .type = SSG_P_FLOAT, .offset = GEOM(min_distance), .def = 0,
+     .min = 0, .max = 1e6, .unit = "scene units",
+     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "
+             "form factor reaches 1"},
+    {.name = "lobe", .type = SSG_P_INT, .offset = offsetof(struct ssg_ssdo_params, lobe),
+     .def = 4, .min = 1, .max = 64,
+     .help = "cosine power of the cone over which a point or directional light is sampled"},
+    {.name = "max_screen_radius", .type = SSG_P_FLOAT, .offset = GEOM(max_screen_radius),
+     .def = 0, .min = 0, .max = 16384, .unit = "px",
+     .help = "caps the projected radius; 0 = no cap"},
+};
+
+static const struct ssg_port_desc inputs[] = {
+    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},
+    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
+    {.name = "kernel", .types = SSG_T_KERNEL,
+     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},
+    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
+     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
+    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "linear depth for the occluder lookup; none = -position.z"},
+    {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "diffuse albedo (mode radiance and bounce)"},
+    {.name = "light", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "outgoing radiance of each pixel, the bounce's senders (bounce)"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "out", .types = SSG_T_SCALAR | SSG_T_COLOR,
+     .doc = "modulation factor (scalar, or color with channels=3; 1 = unoccluded) or, "
+            "mode radiance, the directional light (color)"},
+    {.name = "bounce", .types = SSG_T_COLOR,
+     .doc = "one indirect bounce, albedo * sum F_i L_i; 0 when bounce=false"},
+};
+
+const struct ssg_node_desc ssg_node_ssdo = {
+    .name = "ssdo",
+    .summary = "screen-space directional occlusion (modulation or radiance) with one "
+               "indirect bounce",
+    .method = "Ritschel, Grosch and Seidel, Approximating Dynamic Global Illumination in "
+              "Image Space (I3D 2009), as in Szentandrasi, Modern Methods of Realistic "
+              "Lighting in Real Time, sec. 3.2 eq. 1-4 and sec. 4.1 (one-step modulation "
+              "factor), and Belonogov, Global Illumination methods in simulated VR "
+              "environments, ch. 4",
+    .doc = "Kernel samples (uniform hemisphere, dw = 2 pi / K) are placed at P + radius s "
+           "about the normal (turned by the rotation tile) and projected; a sample is "
+           "occluded when the surface there is more than `bias` in front of it and within "
+           "`radius` of P. The environment (scene probe as a view-space cube; constant "
+           "white 1 without a scene) adds L(w) (N.w) dw to `full` and, when visible, to "
+           "`lit`; each point or directional light adds its unshadowed irradiance E_l, "
+           "with visibility vis_l = sum w V / sum w over weights w = max(0, w.L)^lobe "
+           "(N.w). modulation: out = (sum E_l vis_l + lit) / (sum E_l + full) per "
+           "channel or of luminances, exactly 1 on an open plane and the background; "
+           "radiance: out = albedo / pi (sum E_l vis_l + lit). bounce=true: each occluded "
+           "sample's pixel is a patch of area A_s = strength pi radius^2 / K sending its "
+           "`light` with form factor F = A_s cos_r cos_s / (pi max(d^2, min_distance^2)) "
+           "(eq. 4 without its extra dw), the F normalised when their sum exceeds 1; "
+           "bounce = albedo sum F L. At most 8 lights.",
+    .inputs = inputs,
+    .input_count = SSG_COUNT(inputs),
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_ssdo_params),
+    .consts_size = sizeof(struct ssg_ssdo_consts),
+    .check = check,
+    .prepare = prepare,
+    .run_cpu = ssg_ssdo_run_cpu,
+};

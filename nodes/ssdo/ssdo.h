@@ -1,0 +1,53 @@
+/* ssdo.h - parameters and prepared constants of the `ssdo` node, shared by ssdo.c
+ * (descriptor, check, prepare) and ssdo_cpu.c (the CPU kernel). Method and conventions are
+ * described in ssdo.c; the per-sample maths it shares with `bounce` in ssdo_sampling.h.
+ * Read-only after prepare(); the kernel is thread-safe. */
+#ifndef SSG_SSDO_H
+#define SSG_SSDO_H
+
+#include "env.h"
+#include "node.h"
+#include "ssdo_sampling.h"
+
+#define SSG_SSDO_MAX_LIGHTS 8
+
+enum ssg_ssdo_mode {
+    SSG_SSDO_MODE_MODULATION, /* one-step method (Szentandrasi sec. 4.1): lit / unoccluded */
+    SSG_SSDO_MODE_RADIANCE,   /* two-step first pass: albedo / pi * directional light (eq. 2) */
+};
+
+struct ssg_ssdo_params {
+    struct ssg_ssdo_geom g; /* radius, bias, max_screen_radius, strength, min_distance */
+    int mode;               /* enum ssg_ssdo_mode; default modulation */
+    int channels;           /* modulation output channels, 1 or 3; default 1 */
+    int bounce;             /* 1 = compute the indirect bounce output; default 0 */
+    int lobe;               /* cosine power spreading a delta light over a cone, 1..64;
+                               default 4 */
+};
+
+/* A scene light in view space. */
+struct ssg_ssdo_light {
+    int directional;  /* 0 = point light at `v`, 1 = directional light from unit `v` */
+    float v[3];       /* point: view-space position; directional: unit direction to it */
+    float rgb[3];     /* colour * intensity */
+};
+
+enum ssg_ssdo_env { SSG_SSDO_ENV_CONSTANT, SSG_SSDO_ENV_CUBE };
+
+struct ssg_ssdo_consts {
+    struct ssg_ssdo_params p;   /* the parameters as given */
+    struct ssg_projection proj; /* ssg_frame_projection of the frame */
+    int frame_width;            /* px, the frame proj belongs to; inputs of another size
+                                   get proj scaled to theirs */
+    int frame_height;           /* px */
+    int light_count;            /* 0..SSG_SSDO_MAX_LIGHTS */
+    struct ssg_ssdo_light lights[SSG_SSDO_MAX_LIGHTS];
+    int env;                    /* enum ssg_ssdo_env */
+    float env_rgb[3];           /* constant environment radiance (1 without a scene) */
+    struct ssg_env_cube cube;   /* the probe in view space (env = cube) */
+};
+
+enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                              const struct ssg_io *io);
+
+#endif

@@ -1,0 +1,288 @@
+/* ssdo_cpu.c - CPU kernel of the `ssdo` node (method in ssdo.c; the sampling, visibility
+ * and bounce shared with `bounce` in ssdo_sampling.h).
+ *
+ * Layout for speed, as ssao_cpu.c: a row is cut into chunks of SSG_SSDO_CHUNK pixels whose
+ * per-pixel constants live in structure-of-arrays scratch; per kernel sample, straight
+ * loops over the chunk place and project the sample and read the depth there (a gather);
+ * only the samples behind that depth go on, compacted, to the range check and the bounce
+ * (ssdo_sampling.h); then the environment and light weights are added. Chunk
+ * columns outside, a band's rows inside, so the depth window a chunk's samples read stays
+ * in cache from one row to the next. The environment's dot product N.w = s.z / |s| does
+ * not depend on the pixel, so a constant environment costs one add per sample; a light
+ * probe is looked up in the view-space cube per sample (a scalar loop). Each pixel depends
+ * only on the inputs and every per-pixel sum runs in kernel order: the output does not
+ * depend on the thread count nor on the instruction set (the AVX2 clone does the same IEEE
+ * operations lane by lane; C11 mode does not contract to FMA). */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ssdo.h"
+
+/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+enum { CHUNK = SSG_SSDO_CHUNK, MAXL = SSG_SSDO_MAX_LIGHTS };
+
+struct job {
+    struct ssg_ssdo_job s;         /* what the shared sampling reads */
+    const struct ssg_ssdo_consts *c;
+    float *out[3];                 /* planes of out (1 or 3) */
+    float *bounce[3];              /* planes of the bounce output */
+    int out_channels;
+    float dw;                      /* 2 pi / K */
+    float *nw;                     /* per sample: N.w = s.z / |s| (>= 0) */
+    float *inv_len;                /* per sample: 1 / |s| (0 for s = 0) */
+    float full_w;                  /* sum of nw in kernel order */
+};
+
+/* The lighting part of a chunk: per light the tangent-space direction to it and its
+   unshadowed irradiance factor, the lobe weight sums, and the environment sums. */
+struct light_chunk {
+    float lt[MAXL][3][CHUNK];   /* (T.L, B.L, N.L) */
+    float e[MAXL][CHUNK];       /* max(0, N.L) / d^2 (point) or max(0, N.L) */
+    float ws[MAXL][CHUNK];      /* sum of w_il */
+    float wv[MAXL][CHUNK];      /* sum of w_il V_i */
+    float c[CHUNK], p[CHUNK];   /* scratch of the lobe power */
+    float litw[CHUNK];          /* constant environment: sum of nw V */
+    float lit[3][CHUNK];        /* cube: sum of L_env nw V */
+    float full[3][CHUNK];       /* cube: sum of L_env nw */
+    int32_t texel[CHUNK];       /* cube: per sample, the float offset of its texel */
+};
+
+/* Per light, L in the tangent frame and E / colour; the sums start at 0. */
+static void setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
+                         struct light_chunk *restrict lc, int len)
+{
+    for (int l = 0; l < j->c->light_count; l++) {
+        const struct ssg_ssdo_light *li = &j->c->lights[l];
+        const float vx = li->v[0], vy = li->v[1], vz = li->v[2];
+        const float point = li->directional ? 0.0f : 1.0f;
+        for (int i = 0; i < len; i++) {
+            /* point: v - P; directional: v (P weighted by 0) */
+            float lx = vx - point * k->px[i], ly = vy - point * k->py[i];
+            float lz = vz - point * k->pz[i];
+            float d2 = lx * lx + ly * ly + lz * lz;
+            float inv = 1.0f / sqrtf(d2 > 1e-30f ? d2 : 1e-30f);
+            lx *= inv, ly *= inv, lz *= inv;
+            float ndl = k->nx[i] * lx + k->ny[i] * ly + k->nz[i] * lz;
+            float fall = li->directional ? 1.0f : inv * inv;
+            lc->e[l][i] = (ndl > 0.0f ? ndl : 0.0f) * fall;
+            lc->lt[l][0][i] = k->tx[i] * lx + k->ty[i] * ly + k->tz[i] * lz;
+            lc->lt[l][1][i] = k->bx[i] * lx + k->by[i] * ly + k->bz[i] * lz;
+            lc->lt[l][2][i] = ndl;
+            lc->ws[l][i] = 0.0f;
+            lc->wv[l][i] = 0.0f;
+        }
+    }
+    for (int i = 0; i < len; i++) {
+        lc->litw[i] = 0.0f;
+        for (int ch = 0; ch < 3; ch++)
+            lc->lit[ch][i] = lc->full[ch][i] = 0.0f;
+    }
+}
+
+/* One sample's lobe weights max(0, w.L)^lobe (N.w) for every light (the power by
+   squaring, one vector pass per bit of lobe). wv gets w V: with V = 1 exactly w, so an
+   open plane's vis is exactly 1. */
+static inline __attribute__((always_inline)) void
+add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
+           struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s)
+{
+    const float il = j->inv_len[s], nw = j->nw[s];
+    const int lobe = j->c->p.lobe;
+    for (int l = 0; l < j->c->light_count; l++) {
+        for (int i = 0; i < len; i++) {
+            float cl = (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
+            lc->c[i] = cl > 0.0f ? cl : 0.0f;
+            lc->p[i] = nw;
+        }
+        for (int e = lobe; e; e >>= 1) {
+            if (e & 1)
+                for (int i = 0; i < len; i++)
+                    lc->p[i] *= lc->c[i];
+            if (e > 1)
+                for (int i = 0; i < len; i++)
+                    lc->c[i] *= lc->c[i];
+        }
+        for (int i = 0; i < len; i++) {
+            lc->ws[l][i] += lc->p[i];
+            lc->wv[l][i] += lc->p[i] * k->vis[i];
+        }
+    }
+}
+
+/* The environment of one sample: constant (one weight sum) or the cube: one vector loop
+   finds every pixel's texel (branch-free face selection), a second gathers and adds. */
+static inline __attribute__((always_inline)) void
+add_environment(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
+                struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s)
+{
+    const float nw = j->nw[s];
+    if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+        for (int i = 0; i < len; i++)
+            lc->litw[i] += nw * k->vis[i];
+        return;
+    }
+    for (int i = 0; i < len; i++) {
+        float dx = k->tx[i] * sx + k->bx[i] * sy + k->nx[i] * sz;
+        float dy = k->ty[i] * sx + k->by[i] * sy + k->ny[i] * sz;
+        float dz = k->tz[i] * sx + k->bz[i] * sy + k->nz[i] * sz;
+        lc->texel[i] = 3 * ssg_env_cube_index(dx, dy, dz);
+    }
+    const float *rgb = j->c->cube.rgb;
+    for (int ch = 0; ch < 3; ch++)
+        for (int i = 0; i < len; i++) {
+            float v = rgb[lc->texel[i] + ch] * nw;
+            lc->full[ch][i] += v;
+            lc->lit[ch][i] += v * k->vis[i];
+        }
+}
+
+/* The hot loop, per kernel sample in order. With GCC on x86-64 also compiled for AVX2
+   and picked at run time (same bits, see the file header). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
+                       int len)
+{
+    const int count = j->s.count, bounce = j->s.bounce, own = j->s.own_depth;
+    const float *kx = j->s.kernel, *ky = kx + count, *kz = ky + count;
+    for (int s = 0; s < count; s++) {
+        float sx = kx[s], sy = ky[s], sz = kz[s];
+        /* constant flags at each call, so each variant is straight code */
+        if (own && bounce)
+            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 1, 1);
+        else if (own)
+            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 1, 0);
+        else if (bounce)
+            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 0, 1);
+        else
+            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 0, 0);
+        add_environment(j, k, lc, len, sx, sy, sz, s);
+        add_lights(j, k, lc, len, sx, sy, sz, s);
+    }
+}
+
+/* Numerator and denominator of channel ch at pixel i: the same sums in the same order. */
+static inline void light_sums(const struct job *j, const struct light_chunk *lc, int i,
+                              int ch, float *num, float *den)
+{
+    float n, d;
+    if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+        float scale = j->c->env_rgb[ch] * j->dw;
+        n = scale * lc->litw[i];
+        d = scale * j->full_w;
+    } else {
+        n = lc->lit[ch][i] * j->dw;
+        d = lc->full[ch][i] * j->dw;
+    }
+    for (int l = 0; l < j->c->light_count; l++) {
+        float e = j->c->lights[l].rgb[ch] * lc->e[l][i];
+        float vis = lc->ws[l][i] > 0.0f ? lc->wv[l][i] / lc->ws[l][i] : 1.0f;
+        n += e * vis;
+        d += e;
+    }
+    *num = n;
+    *den = d;
+}
+
+/* Modulation (per channel or of luminances) or radiance into the out planes. */
+static void finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *k,
+                         const struct light_chunk *lc, int len, size_t o)
+{
+    static const float luma[3] = {0.2126f, 0.7152f, 0.0722f};
+    const float inv_pi = (float)(1.0 / M_PI);
+    const int radiance = j->c->p.mode == SSG_SSDO_MODE_RADIANCE;
+    for (int i = 0; i < len; i++) {
+        float num[3], den[3];
+        for (int ch = 0; ch < 3; ch++)
+            light_sums(j, lc, i, ch, &num[ch], &den[ch]);
+        if (radiance) {
+            for (int ch = 0; ch < 3; ch++)
+                j->out[ch][o + i] = k->fg[i] ? j->s.alb[ch][o + i] * inv_pi * num[ch] : 0.0f;
+        } else if (j->out_channels == 3) {
+            for (int ch = 0; ch < 3; ch++)
+                j->out[ch][o + i] = k->fg[i] && den[ch] > 1e-30f ? num[ch] / den[ch] : 1.0f;
+        } else {
+            float yn = luma[0] * num[0] + luma[1] * num[1] + luma[2] * num[2];
+            float yd = luma[0] * den[0] + luma[1] * den[1] + luma[2] * den[2];
+            j->out[0][o + i] = k->fg[i] && yd > 1e-30f ? yn / yd : 1.0f;
+        }
+    }
+}
+
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct ssg_ssdo_chunk k;
+    struct light_chunk lc;
+    for (int x0 = 0; x0 < j->s.w; x0 += CHUNK) {
+        int len = j->s.w - x0 < CHUNK ? j->s.w - x0 : CHUNK;
+        for (int y = y0; y < y1; y++) {
+            size_t o = (size_t)y * (size_t)j->s.w + (size_t)x0;
+            ssg_ssdo_load(&j->s, &k, y, x0, len);
+            ssg_ssdo_setup(&j->s, &k, len);
+            setup_lights(j, &k, &lc, len);
+            sample_all(j, &k, &lc, len);
+            finish_chunk(j, &k, &lc, len, o);
+            if (j->s.bounce)
+                ssg_ssdo_finish_bounce(&j->s, &k, len, o, j->bounce);
+        }
+    }
+}
+
+/* Per-sample constants of the kernel: 1 / |s| and N.w = s.z / |s|, and sum of N.w. */
+static void kernel_constants(struct job *j)
+{
+    const int count = j->s.count;
+    const float *kx = j->s.kernel, *ky = kx + count, *kz = ky + count;
+    j->full_w = 0.0f;
+    for (int s = 0; s < count; s++) {
+        float l = sqrtf(kx[s] * kx[s] + ky[s] * ky[s] + kz[s] * kz[s]);
+        j->inv_len[s] = l > 0.0f ? 1.0f / l : 0.0f;
+        float nw = kz[s] * j->inv_len[s];
+        j->nw[s] = nw > 0.0f ? nw : 0.0f;
+        j->full_w += j->nw[s];
+    }
+}
+
+enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                              const struct ssg_io *io)
+{
+    const struct ssg_ssdo_consts *c = consts;
+    const int radiance = c->p.mode == SSG_SSDO_MODE_RADIANCE;
+    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "ssdo", radiance || c->p.bounce,
+                                           c->p.bounce);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    const int out_channels = radiance || c->p.channels == 3 ? 3 : 1;
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, out_channels) ||
+        !ssg_image_is(io->out[1], pos->width, pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo", "outputs must be the size of position "
+                             "with the channels check() gave");
+    struct job j = {.c = c, .out_channels = out_channels};
+    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height,
+                      c->p.bounce);
+    for (int ch = 0; ch < 3; ch++) {
+        j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
+        j.bounce[ch] = ssg_image_plane(io->out[1], ch);
+    }
+    j.dw = (float)(2.0 * M_PI / j.s.count);
+    float *per_sample = malloc(sizeof(float) * 2 * (size_t)j.s.count);
+    if (!per_sample)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "ssdo", "out of memory");
+    j.nw = per_sample;
+    j.inv_len = per_sample + j.s.count;
+    kernel_constants(&j);
+    if (!c->p.bounce)
+        memset(io->out[1]->data, 0, sizeof(float) * 3 * (size_t)pos->width * pos->height);
+    ssg_parallel_rows(j.s.h, SSG_SSDO_ROWS_PER_BAND, band, &j);
+    free(per_sample);
+    return SSG_OK;
+}

@@ -1,0 +1,424 @@
+/* ssdo_sampling.h - the per-sample maths of screen-space directional occlusion that the
+ * `ssdo` node (nodes/ssdo) and the `bounce` node (nodes/bounce) share, so that bounce's
+ * output is exactly ssdo's bounce output for the same inputs: the same loops, the same
+ * operations in the same order.
+ *
+ * Method: Ritschel, Grosch and Seidel, "Approximating Dynamic Global Illumination in
+ * Image Space" (I3D 2009), as described by Szentandrasi, "Modern Methods of Realistic
+ * Lighting in Real Time", section 3.2 (eq. 1-4), and Belonogov, "Global Illumination
+ * methods in simulated VR environments", chapter 4 (eq. 4.1-4.3).
+ * Per pixel P (unit normal N, tangent frame T, B turned by the rotation tile as in ssao)
+ * and kernel sample s (tangent space, |s| <= 1): S = P + r (T s.x + B s.y + N s.z), r the
+ * radius (capped by max_screen_radius like ssao). S is projected; off screen, behind the
+ * camera or over background it is visible (V = 1). Otherwise the scene depth z_i and
+ * point P_i at S's pixel are read: S is occluded (V = 0) when z_i < depth(S) - bias and
+ * |P_i - P| <= r (a hard range check: a far foreground object does not occlude).
+ * Bounce (eq. 3/4 in the patch form): each occluded sample's pixel is a sender patch of
+ * area A_s = strength pi r^2 / K with radiance L_i (the light input there) and normal N_i:
+ *   v = P_i - P, w = v / |v|, d2 = max(|v|^2, min_distance^2),
+ *   F_i = A_s max(0, N.w) max(0, -N_i.w) / (pi d2)   (point form factor),
+ * and when sum F_i > 1 every F_i is scaled by 1 / sum (a receiver cannot see more than its
+ * whole hemisphere), so bounce = albedo(P) sum F_i L_i <= albedo max L_i. Eq. 4's extra
+ * delta-omega is dropped: A_s / d^2 already is the patch's solid angle (documented
+ * deviation). min_distance 0 means the radius of the disc of area A_s, sqrt(A_s / pi) =
+ * r sqrt(strength / K): closer than that a single patch's point form factor would exceed 1,
+ * the whole hemisphere.
+ *
+ * Layout (as ssao_cpu.c): chunks of CHUNK pixels of one row in structure-of-arrays
+ * scratch; per kernel sample, straight loops over the chunk that GCC vectorises (the
+ * lookups at computed indices become gathers). Every per-pixel sum runs in kernel order,
+ * so results depend neither on the threads nor on the instruction set.
+ * Everything here is static inline: both nodes compile the same code. Thread-safe: a job is
+ * read-only, a chunk belongs to one thread. */
+#ifndef SSG_SSDO_SAMPLING_H
+#define SSG_SSDO_SAMPLING_H
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "node.h"
+
+/* Input ports of both nodes, in order (bounce has the same ports, albedo and light
+   required there). */
+enum { SSG_SSDO_IN_POSITION, SSG_SSDO_IN_NORMAL, SSG_SSDO_IN_KERNEL, SSG_SSDO_IN_ROTATION,
+       SSG_SSDO_IN_DEPTH, SSG_SSDO_IN_ALBEDO, SSG_SSDO_IN_LIGHT, SSG_SSDO_IN_COUNT };
+
+enum { SSG_SSDO_CHUNK = 128, SSG_SSDO_ROWS_PER_BAND = 16 };
+
+/* The parameters the sampling and the bounce read (a part of each node's params). */
+struct ssg_ssdo_geom {
+    float radius;            /* r_max, scene units, > 0; default 0.5 */
+    float bias;              /* depth margin before a sample counts as occluded, scene
+                                units; default 0.02 */
+    float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
+    float strength;          /* multiplies the patch area A_s; default 1 */
+    float min_distance;      /* clamp of the sender distance, scene units; 0 = the radius
+                                of a disc of area A_s; default 0 */
+};
+
+/* What one run reads: image planes, the kernel, the projection of this resolution. */
+struct ssg_ssdo_job {
+    struct ssg_ssdo_geom g;
+    const float *pos[3], *nrm[3];   /* planes of position and normal */
+    const float *alb[3], *light[3]; /* planes of albedo and light (NULL when unbound) */
+    const float *depth;             /* depth plane, or position's z plane */
+    float depth_sign;               /* depth = depth_sign * plane */
+    int own_depth;                  /* 1 = a depth input is bound */
+    const float *kernel;            /* planar count x 1 x 3 */
+    int count;                      /* K */
+    const float *rot;               /* planar n x n x 2 (cos, sin), NULL = none */
+    int n;
+    int w, h;                       /* px */
+    float f, cx, cy;                /* projection of this resolution */
+    int bounce;                     /* 1 = gather the bounce */
+};
+
+/* Per-pixel values of one chunk, structure of arrays. The projection of a sample is
+   affine in s over Z (see ssao_cpu.c), so each pixel keeps three 4-vectors. */
+struct ssg_ssdo_chunk {
+    int32_t fg[SSG_SSDO_CHUNK];                 /* 1 = surface, 0 = background */
+    float nx[SSG_SSDO_CHUNK], ny[SSG_SSDO_CHUNK], nz[SSG_SSDO_CHUNK]; /* unit N */
+    float tx[SSG_SSDO_CHUNK], ty[SSG_SSDO_CHUNK], tz[SSG_SSDO_CHUNK]; /* unit T, turned */
+    float bx[SSG_SSDO_CHUNK], by[SSG_SSDO_CHUNK], bz[SSG_SSDO_CHUNK]; /* unit B, turned */
+    float co[SSG_SSDO_CHUNK], si[SSG_SSDO_CHUNK]; /* rotation of the tile (scratch) */
+    float px[SSG_SSDO_CHUNK], py[SSG_SSDO_CHUNK], pz[SSG_SSDO_CHUNK]; /* P */
+    float dp[SSG_SSDO_CHUNK];                   /* depth of P */
+    float rr[SSG_SSDO_CHUNK];                   /* r, scene units */
+    float r2[SSG_SSDO_CHUNK];                   /* r^2 (range check) */
+    float cu[4][SSG_SSDO_CHUNK];                /* u Z = cu0 + cu1 s.x + cu2 s.y + cu3 s.z */
+    float cv[4][SSG_SSDO_CHUNK];                /* v Z, likewise */
+    float cz[4][SSG_SSDO_CHUNK];                /* Z - bias, likewise */
+    int32_t idx[SSG_SSDO_CHUNK];                /* per sample: pixel S lands on */
+    float zb[SSG_SSDO_CHUNK];                   /* per sample: depth(S) - bias, -1 = none */
+    float vis[SSG_SSDO_CHUNK];                  /* per sample: V, 1 or 0 */
+    int32_t cand[SSG_SSDO_CHUNK];               /* per sample: 1 = behind the depth there */
+    /* Per sample, compacted over the candidates (lanes whose depth test failed): */
+    int32_t list[SSG_SSDO_CHUNK];               /* their lanes */
+    int32_t cocc[SSG_SSDO_CHUNK];               /* 1 = occluded (range check too) */
+    float cf[SSG_SSDO_CHUNK];                   /* F_i, 0 unless occluded */
+    float cl[3][SSG_SSDO_CHUNK];                /* F_i L_i */
+    float ff[SSG_SSDO_CHUNK];                   /* A_s / pi = strength r^2 / K */
+    float md2[SSG_SSDO_CHUNK];                  /* min_distance^2 */
+    float fsum[SSG_SSDO_CHUNK];                 /* sum of F_i */
+    float br[SSG_SSDO_CHUNK], bg[SSG_SSDO_CHUNK], bb[SSG_SSDO_CHUNK]; /* sum F_i L_i */
+};
+
+/* The job of a run: planes, kernel, tile and the projection scaled from the frame to the
+   inputs' resolution (a subsampled G-buffer sees the same camera). The caller has checked
+   the images' shapes. */
+static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io *io,
+                                     const struct ssg_ssdo_geom *g,
+                                     const struct ssg_projection *proj, int frame_w,
+                                     int frame_h, int bounce)
+{
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    const struct ssg_image *nrm = io->in[SSG_SSDO_IN_NORMAL];
+    const struct ssg_image *ker = io->in[SSG_SSDO_IN_KERNEL];
+    const struct ssg_image *rot = io->in[SSG_SSDO_IN_ROTATION];
+    const struct ssg_image *dep = io->in[SSG_SSDO_IN_DEPTH];
+    const struct ssg_image *alb = io->in[SSG_SSDO_IN_ALBEDO];
+    const struct ssg_image *lig = io->in[SSG_SSDO_IN_LIGHT];
+    *j = (struct ssg_ssdo_job){.g = *g, .kernel = ker->data, .count = ker->width,
+                               .w = pos->width, .h = pos->height, .bounce = bounce};
+    for (int c = 0; c < 3; c++) {
+        j->pos[c] = ssg_image_plane(pos, c);
+        j->nrm[c] = ssg_image_plane(nrm, c);
+        j->alb[c] = alb ? ssg_image_plane(alb, c) : NULL;
+        j->light[c] = lig ? ssg_image_plane(lig, c) : NULL;
+    }
+    j->own_depth = dep != NULL;
+    j->depth = dep ? dep->data : j->pos[2];
+    j->depth_sign = dep ? 1.0f : -1.0f;
+    j->rot = rot ? rot->data : NULL;
+    j->n = rot ? rot->width : 1;
+    j->f = proj->f * (float)j->h / (float)frame_h;
+    j->cx = proj->cx * (float)j->w / (float)frame_w;
+    j->cy = proj->cy * (float)j->h / (float)frame_h;
+}
+
+/* Loads P, N, depth and the tile's rotation. Background (depth 0, normal 0) or garbage
+   gets harmless values and fg = 0. Normals are unit by the frame conventions (node.h);
+   the rare chunk holding one that is not gets a scalar pass. */
+static inline void ssg_ssdo_load(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k,
+                                 int y, int x0, int len)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    const float *restrict dpl = j->depth + o;
+    const float *restrict nx0 = j->nrm[0] + o, *restrict ny0 = j->nrm[1] + o;
+    const float *restrict nz0 = j->nrm[2] + o, *restrict px0 = j->pos[0] + o;
+    const float *restrict py0 = j->pos[1] + o, *restrict pz0 = j->pos[2] + o;
+    const float sign = j->depth_sign;
+    int not_unit = 0;
+    for (int i = 0; i < len; i++) {
+        float nx = nx0[i], ny = ny0[i], nz = nz0[i];
+        float nn = nx * nx + ny * ny + nz * nz;
+        float d = sign * dpl[i];
+        int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
+        not_unit |= fg & (fabsf(nn - 1.0f) > 1e-5f);
+        k->fg[i] = fg;
+        k->nx[i] = fg ? nx : 0.0f;
+        k->ny[i] = fg ? ny : 0.0f;
+        k->nz[i] = fg ? nz : 1.0f;
+        k->dp[i] = fg ? d : 1.0f;
+        k->px[i] = px0[i];
+        k->py[i] = py0[i];
+        k->pz[i] = pz0[i];
+    }
+    for (int i = 0; not_unit && i < len; i++) {
+        float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
+        float inv = 1.0f / sqrtf(nn);
+        k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
+    }
+    if (j->rot) {
+        const int n = j->n;
+        const float *rc = j->rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
+        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
+            k->co[i] = rc[xm];
+            k->si[i] = rs[xm];
+        }
+    } else {
+        for (int i = 0; i < len; i++) {
+            k->co[i] = 1.0f;
+            k->si[i] = 0.0f;
+        }
+    }
+}
+
+/* Tangent frame (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017,
+   branch-free, T x B = N) turned about N by the tile's angle, the radius (capped like
+   ssao), the projective coefficients of S, and the bounce's per-pixel constants. */
+static inline void ssg_ssdo_setup(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k,
+                                  int len)
+{
+    const float f = j->f, cx = j->cx, cy = j->cy, radius = j->g.radius, bias = j->g.bias;
+    const float cap = j->g.max_screen_radius / j->f; /* r <= cap * depth */
+    const int capped = j->g.max_screen_radius > 0.0f;
+    const float per_k = j->g.strength / (float)j->count;
+    const float md = j->g.min_distance;
+    const int auto_md = !(md > 0.0f);
+    for (int i = 0; i < len; i++) {
+        float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i];
+        float sign = copysignf(1.0f, nz);
+        float a = -1.0f / (sign + nz);
+        float b = nx * ny * a;
+        float t0 = 1.0f + sign * nx * nx * a, t1 = sign * b, t2 = -sign * nx;
+        float b0 = b, b1 = sign + ny * ny * a, b2 = -ny;
+        float co = k->co[i], si = k->si[i];
+        float tx = co * t0 + si * b0, ty = co * t1 + si * b1, tz = co * t2 + si * b2;
+        float bx = co * b0 - si * t0, by = co * b1 - si * t1, bz = co * b2 - si * t2;
+        k->tx[i] = tx, k->ty[i] = ty, k->tz[i] = tz;
+        k->bx[i] = bx, k->by[i] = by, k->bz[i] = bz;
+        float rcap = cap * k->dp[i];
+        float r = capped & (rcap < radius) ? rcap : radius;
+        float qx = k->px[i], qy = k->py[i], qz = -k->pz[i];
+        float rtz = r * tz, rbz = r * bz, rnz = r * nz;
+        k->cz[0][i] = qz - bias;
+        k->cz[1][i] = -rtz;
+        k->cz[2][i] = -rbz;
+        k->cz[3][i] = -rnz;
+        k->cu[0][i] = f * qx + cx * qz;
+        k->cu[1][i] = f * (r * tx) - cx * rtz;
+        k->cu[2][i] = f * (r * bx) - cx * rbz;
+        k->cu[3][i] = f * (r * nx) - cx * rnz;
+        k->cv[0][i] = cy * qz - f * qy;
+        k->cv[1][i] = -cy * rtz - f * (r * ty);
+        k->cv[2][i] = -cy * rbz - f * (r * by);
+        k->cv[3][i] = -cy * rnz - f * (r * ny);
+        k->rr[i] = r;
+        k->r2[i] = r * r;
+        k->ff[i] = per_k * (r * r);
+        k->md2[i] = auto_md ? per_k * (r * r) : md * md;
+        k->fsum[i] = 0.0f;
+        k->br[i] = k->bg[i] = k->bb[i] = 0.0f;
+    }
+}
+
+/* Places sample (sx, sy, sz) around every pixel of the chunk and projects it: the pixel
+   index it lands on, and depth(S) - bias there (-1 when off screen or behind the camera,
+   which no depth > 0 undercuts: visible). */
+static inline __attribute__((always_inline)) void
+ssg_ssdo_place(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
+               float sx, float sy, float sz)
+{
+    const float bias = j->g.bias, fw = (float)j->w, fh = (float)j->h;
+    const int w = j->w;
+    for (int i = 0; i < len; i++) {
+        float zb = k->cz[0][i] + k->cz[1][i] * sx + k->cz[2][i] * sy + k->cz[3][i] * sz;
+        float z = zb + bias;
+        float nu = k->cu[0][i] + k->cu[1][i] * sx + k->cu[2][i] * sy + k->cu[3][i] * sz;
+        float nv = k->cv[0][i] + k->cv[1][i] * sx + k->cv[2][i] * sy + k->cv[3][i] * sz;
+        float inv = 1.0f / z;
+        float u = nu * inv, v = nv * inv;
+        int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
+        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f; /* convert only in-range floats */
+        k->idx[i] = (int)vs * w + (int)us;
+        k->zb[i] = ok ? zb : -1.0f;
+    }
+}
+
+/* The depth test of each sample: a candidate when 0 < z_i < depth(S) - bias, z_i read at
+   its pixel. Returns how many, their lanes compacted into k->list (in lane order); V
+   starts at 1. `own_depth` is a constant at each call site: without a depth input z_i
+   is -P_i.z. Only the candidates go on to the range check and the bounce, which need six
+   to nine more scattered reads: most samples of a frame are not behind anything. */
+static inline __attribute__((always_inline)) int
+ssg_ssdo_depth_test(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
+                    int own_depth)
+{
+    const float *restrict dpl = j->depth, *restrict p2 = j->pos[2];
+    for (int i = 0; i < len; i++) {
+        int id = k->idx[i];
+        float d = own_depth ? dpl[id] : -p2[id];
+        k->cand[i] = (d > 0.0f) & (d < k->zb[i]);
+        k->vis[i] = 1.0f;
+    }
+    int n = 0;
+    for (int i = 0; i < len; i++) {
+        k->list[n] = i;
+        n += k->cand[i];
+    }
+    return n;
+}
+
+/* The range check |P_i - P| <= r of the n candidates (occluded: V = 0) and, with
+   `bounce` (a constant at each call site), the form factor of each occluded sample's
+   patch and F_i L_i (eq. 3/4, patch form, file header). A back-facing sender
+   (N_i.w >= 0) or one behind the receiver's tangent plane gives 0; |v| = 0 gives w = 0
+   and so 0. The sums per pixel run in kernel order (a lane appears once per sample). */
+static inline __attribute__((always_inline)) void
+ssg_ssdo_range_bounce(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int n,
+                      int bounce)
+{
+    const float *restrict p0 = j->pos[0], *restrict p1 = j->pos[1], *restrict p2 = j->pos[2];
+    const float *restrict n0 = j->nrm[0], *restrict n1 = j->nrm[1], *restrict n2 = j->nrm[2];
+    const float *restrict l0 = j->light[0], *restrict l1 = j->light[1];
+    const float *restrict l2 = j->light[2];
+    for (int m = 0; m < n; m++) {
+        int lane = k->list[m], id = k->idx[lane];
+        float vx = p0[id] - k->px[lane], vy = p1[id] - k->py[lane], vz = p2[id] - k->pz[lane];
+        float dd = vx * vx + vy * vy + vz * vz;
+        int occ = dd <= k->r2[lane];
+        k->cocc[m] = occ;
+        if (!bounce)
+            continue;
+        float mx = n0[id], my = n1[id], mz = n2[id];
+        float inv = 1.0f / sqrtf(dd > 1e-30f ? dd : 1e-30f);
+        float wx = vx * inv, wy = vy * inv, wz = vz * inv;
+        float cr = k->nx[lane] * wx + k->ny[lane] * wy + k->nz[lane] * wz;
+        float cs = -(mx * wx + my * wy + mz * wz);
+        cr = cr > 0.0f ? cr : 0.0f;
+        cs = cs > 0.0f ? cs : 0.0f;
+        float d2 = dd > k->md2[lane] ? dd : k->md2[lane];
+        float fi = k->ff[lane] * cr * cs / d2;
+        fi = occ ? fi : 0.0f;
+        k->cf[m] = fi;
+        k->cl[0][m] = fi * l0[id];
+        k->cl[1][m] = fi * l1[id];
+        k->cl[2][m] = fi * l2[id];
+    }
+    for (int m = 0; m < n; m++) { /* back to the lanes: scattered, scalar */
+        int lane = k->list[m];
+        k->vis[lane] = k->cocc[m] ? 0.0f : 1.0f;
+        if (bounce) {
+            k->fsum[lane] += k->cf[m];
+            k->br[lane] += k->cl[0][m];
+            k->bg[lane] += k->cl[1][m];
+            k->bb[lane] += k->cl[2][m];
+        }
+    }
+}
+
+/* One kernel sample's visibility (and bounce) for the chunk: place, depth test, range
+   check. Both nodes call this, in kernel order. */
+static inline __attribute__((always_inline)) void
+ssg_ssdo_sample(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
+                float sx, float sy, float sz, int own_depth, int bounce)
+{
+    ssg_ssdo_place(j, k, len, sx, sy, sz);
+    int n = ssg_ssdo_depth_test(j, k, len, own_depth);
+    if (n)
+        ssg_ssdo_range_bounce(j, k, n, bounce);
+}
+
+/* bounce = albedo(P) sum F_i L_i, the F_i scaled by 1 / sum when the sum exceeds 1;
+   0 for the background. out: three planes at the chunk's first pixel. */
+static inline void ssg_ssdo_finish_bounce(const struct ssg_ssdo_job *j,
+                                          const struct ssg_ssdo_chunk *k, int len, size_t o,
+                                          float *const out[3])
+{
+    const float *restrict a0 = j->alb[0] + o, *restrict a1 = j->alb[1] + o;
+    const float *restrict a2 = j->alb[2] + o;
+    float *restrict o0 = out[0] + o, *restrict o1 = out[1] + o, *restrict o2 = out[2] + o;
+    for (int i = 0; i < len; i++) {
+        float s = k->fsum[i] > 1.0f ? 1.0f / k->fsum[i] : 1.0f;
+        o0[i] = k->fg[i] ? a0[i] * (k->br[i] * s) : 0.0f;
+        o1[i] = k->fg[i] ? a1[i] * (k->bg[i] * s) : 0.0f;
+        o2[i] = k->fg[i] ? a2[i] * (k->bb[i] * s) : 0.0f;
+    }
+}
+
+/* Re-checks at run time what check() promised on shapes, so a hand-built run cannot read
+   out of bounds. `node` names the node in messages; need_albedo / need_light: those
+   inputs must be bound. */
+static inline enum ssg_err ssg_ssdo_check_images(const struct ssg_node_ctx *ctx,
+                                                 const struct ssg_io *io, const char *node,
+                                                 int need_albedo, int need_light)
+{
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    const struct ssg_image *ker = io->in[SSG_SSDO_IN_KERNEL];
+    const struct ssg_image *rot = io->in[SSG_SSDO_IN_ROTATION];
+    const struct ssg_image *alb = io->in[SSG_SSDO_IN_ALBEDO];
+    const struct ssg_image *lig = io->in[SSG_SSDO_IN_LIGHT];
+    if (!pos || pos->channels != 3 ||
+        !ssg_image_is(io->in[SSG_SSDO_IN_NORMAL], pos->width, pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, node,
+                             "position and normal must be 3-channel, one size");
+    if (!ker || ker->channels != 3 || ker->height != 1 || ker->width < 1)
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, node, "kernel must be count x 1 x 3");
+    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, node, "rotation must be n x n x 2");
+    if (io->in[SSG_SSDO_IN_DEPTH] &&
+        !ssg_image_is(io->in[SSG_SSDO_IN_DEPTH], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, node,
+                             "depth must be 1-channel, the size of position");
+    if ((need_albedo && !alb) || (need_light && !lig))
+        return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, node,
+                             need_albedo && !alb ? "needs input 'albedo'"
+                                                 : "needs input 'light'");
+    if ((alb && !ssg_image_is(alb, pos->width, pos->height, 3)) ||
+        (lig && !ssg_image_is(lig, pos->width, pos->height, 3)))
+        return ssg_node_fail(ctx, SSG_E_SIZE, node,
+                             "albedo and light must be 3-channel, the size of position");
+    return SSG_OK;
+}
+
+/* check() of both nodes on the input shapes (channels 0 = unbound). */
+static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, char *why,
+                                                 size_t why_len)
+{
+    const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION], *nrm = &in[SSG_SSDO_IN_NORMAL];
+    const struct ssg_shape *ker = &in[SSG_SSDO_IN_KERNEL];
+    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
+        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
+        return SSG_E_SIZE;
+    }
+    if (ker->channels != 3 || ker->height != 1 || ker->width < 1) {
+        snprintf(why, why_len, "kernel must be count x 1 with 3 channels, got %dx%dx%d",
+                 ker->width, ker->height, ker->channels);
+        return SSG_E_CHANNELS;
+    }
+    enum ssg_err e = ssg_check_rotation_depth(pos, &in[SSG_SSDO_IN_ROTATION],
+                                              &in[SSG_SSDO_IN_DEPTH], why, why_len);
+    if (e)
+        return e;
+    for (int p = SSG_SSDO_IN_ALBEDO; p <= SSG_SSDO_IN_LIGHT; p++)
+        if (in[p].channels != 0 && (in[p].channels != 3 || !ssg_shape_same_size(pos, &in[p]))) {
+            snprintf(why, why_len, "%s must be a 3-channel image the size of position",
+                     p == SSG_SSDO_IN_ALBEDO ? "albedo" : "light");
+            return SSG_E_SIZE;
+        }
+    return SSG_OK;
+}
+
+#endif
