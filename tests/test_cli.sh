@@ -87,6 +87,17 @@ expect_exit 1 "broken_gltf\.scene:3:6: error: .*broken\.gltf" \
 expect_exit 1 "corrupt.exr.*error" "$BIN" node bilateral --in "in=tests/fixtures/corrupt.exr" \
     --in "depth=tests/fixtures/corrupt.exr" --out "$TMP/corrupt_out"
 [ -e "$TMP/corrupt_out" ] && fail "a corrupt input still produced output"
+# A bad environment image: not a lat-long probe (halton's 16 x 1 kernel), or not an image.
+"$BIN" node halton --set count=16 --out "$TMP/notprobe" > /dev/null || fail "halton failed"
+for img in "$TMP/notprobe/samples.exr" "$PWD/tests/fixtures/garbage.png"; do
+    printf 'plane(center=[0, 0, 0], normal=[0, 1, 0], size=[1, 0, 1])\nenvironment(image="%s")\n' \
+        "$img" > "$TMP/badenv.scene"
+    printf 'scene "%s/badenv.scene"\ng = gbuffer()\nout = write(g.environment, "x")\n' \
+        "$TMP" > "$TMP/badenv.graph"
+    expect_exit 1 "$(basename "$img").*error: .*(lat-long light probe|cannot|not)" \
+        "$BIN" run "$TMP/badenv.graph" --out "$TMP/badenv_out"
+    [ -e "$TMP/badenv_out/x.exr" ] && fail "a bad environment image still produced output"
+done
 printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
 expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
     "$BIN" check "$TMP/syntax.graph"

@@ -24,11 +24,10 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "check.h"
 #include "reference_ao/reference_ao.h"
-#include "scene.h"
+#include "scenes.h"
 
 extern const struct ssg_node_desc ssg_node_reference_ao;
 
@@ -55,23 +54,12 @@ struct input {
     double o[P][3]; /* the ray origin the node documents, world */
 };
 
+/* The test's scene: camera, the material m, then the shapes. */
 static struct ssg_scene *load_scene(const char *name, const char *camera, const char *shapes)
 {
-    const char *dir = getenv("SSG_TMP");
-    char path[600];
-    dir = dir && dir[0] ? dir : "/tmp";
-    mkdir(dir, 0755);
-    snprintf(path, sizeof path, "%s/%s.scene", dir, name);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return NULL;
-    fprintf(f, "%s%s%s", camera, material, shapes);
-    fclose(f);
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    return s;
+    char text[2000];
+    snprintf(text, sizeof text, "%s%s%s", camera, material, shapes);
+    return scene_from_text(name, text);
 }
 
 /* View-space images of the points, and the documented origins o = p + e (n + v). */
@@ -112,33 +100,20 @@ static void free_input(struct input *in)
     ssg_image_destroy(&in->nrm);
 }
 
-/* Runs the node the way the executor does (prepare into calloc'd constants, then run). */
+/* Runs the node the way the executor does (scenes.h). */
 static enum ssg_err run(const struct ssg_scene *s, const struct input *in, int rays,
                         double max_distance, double offset, uint64_t seed,
                         struct ssg_image **out)
 {
     struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed};
-    struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {.instance = "ref", .frame = &frame, .scene = s, .out_dir = ".",
-                               .diags = &d};
     struct ssg_reference_ao_params p;
     ssg_params_defaults(ssg_node_reference_ao.params, &p);
     p.rays = rays;
     p.max_distance = (float)max_distance;
     p.offset = (float)offset;
-    struct ssg_reference_ao_consts *c = calloc(1, sizeof *c);
-    *out = ssg_image_create(W, H, 1);
-    for (int i = 0; i < P; i++)
-        (*out)->data[i] = -123.0f; /* outputs arrive with undefined contents */
+    *out = undefined_image(W, H, 1);
     const struct ssg_image *ins[2] = {in->pos, in->nrm};
-    struct ssg_image *outs[1] = {*out};
-    struct ssg_io io = {.in = ins, .out = outs};
-    enum ssg_err e = c ? ssg_node_reference_ao.prepare(&ctx, &p, c) : SSG_E_NOMEM;
-    if (!e)
-        e = ssg_node_reference_ao.run_cpu(&ctx, c, &io);
-    ssg_diags_print(&d, stderr);
-    free(c);
-    return e;
+    return run_prepared(&ssg_node_reference_ao, s, &frame, &p, ins, out);
 }
 
 /* Background pixels are 1; every foreground pixel equals want exactly. */
@@ -382,14 +357,8 @@ static void test_errors(void)
     ssg_image_destroy(&out);
     CHECK_EQ(run(s, &in, 16, 0.5, -1.0, 1, &out), SSG_E_VALUE);
     ssg_image_destroy(&out);
-    struct ssg_shape shapes[2] = {{W, H, 3, SSG_T_VECTOR}, {W, H + 1, 3, SSG_T_VECTOR}};
-    struct ssg_shape o[1] = {{0}};
-    struct ssg_frame frame = {W, H, 50, 0.05f, 100, 1};
-    char why[200];
-    CHECK_EQ(ssg_node_reference_ao.check(NULL, &frame, shapes, o, why, sizeof why), SSG_E_SIZE);
-    shapes[1].height = H;
-    CHECK_EQ(ssg_node_reference_ao.check(NULL, &frame, shapes, o, why, sizeof why), SSG_OK);
-    CHECK_EQ(o[0].width * 1000 + o[0].height * 10 + o[0].channels, W * 1000 + H * 10 + 1);
+    struct ssg_shape shapes[2] = {{W, H, 3, SSG_T_VECTOR}, {W, H, 3, SSG_T_VECTOR}};
+    check_sizes(&ssg_node_reference_ao, shapes, 1, 1, 1);
     free_input(&in);
     ssg_scene_destroy(&s);
 }

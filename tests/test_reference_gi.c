@@ -40,14 +40,13 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "check.h"
 #include "env.h"
 #include "gbuffer/gbuffer.h"
 #include "reference_gi/reference_gi.h"
-#include "scene.h"
+#include "scenes.h"
 
 extern const struct ssg_node_desc ssg_node_gbuffer;
 extern const struct ssg_node_desc ssg_node_reference_gi;
@@ -72,25 +71,6 @@ struct gbuf {
 struct result {
     struct ssg_image *out[3];
 };
-
-static struct ssg_scene *load_scene(const char *name, const char *text)
-{
-    const char *dir = getenv("SSG_TMP");
-    char path[600];
-    dir = dir && dir[0] ? dir : "/tmp";
-    mkdir(dir, 0755);
-    snprintf(path, sizeof path, "%s/%s.scene", dir, name);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return NULL;
-    fputs(text, f);
-    fclose(f);
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    return s;
-}
 
 static struct ssg_frame scene_frame(const struct ssg_scene *s, uint64_t seed)
 {
@@ -134,41 +114,45 @@ static void free_gbuffer(struct gbuf *g)
         ssg_image_destroy(&g->img[i]);
 }
 
+/* The scene written from text and its G-buffer in g; NULL (g untouched) when the scene
+   did not load. */
+static struct ssg_scene *load_scene(const char *name, const char *text, struct gbuf *g)
+{
+    struct ssg_scene *s = scene_from_text(name, text);
+    if (s)
+        make_gbuffer(s, g);
+    return s;
+}
+
+/* Frees what load_scene made. */
+static void unload(struct ssg_scene **s, struct gbuf *g)
+{
+    free_gbuffer(g);
+    ssg_scene_destroy(s);
+}
+
 static void free_result(struct result *r)
 {
     for (int i = 0; i < 3; i++)
         ssg_image_destroy(&r->out[i]);
 }
 
-/* Runs the node the way the executor does (prepare into calloc'd constants, then run). */
+/* Runs the node the way the executor does (scenes.h). */
 static enum ssg_err run(const struct ssg_scene *s, const struct gbuf *g, int samples,
                         int bounce, int environment, uint64_t seed, struct result *r)
 {
     struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed};
-    struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {.instance = "gi", .frame = &frame, .scene = s, .out_dir = ".",
-                               .diags = &d};
     struct ssg_reference_gi_params p;
     ssg_params_defaults(ssg_node_reference_gi.params, &p);
     p.samples = samples;
     p.bounce = bounce;
     p.environment = environment;
-    struct ssg_reference_gi_consts *c = calloc(1, sizeof *c);
-    for (int i = 0; i < 3; i++) {
-        r->out[i] = ssg_image_create(W, H, 3);
-        for (int k = 0; k < 3 * P; k++)
-            r->out[i]->data[k] = -123.0f; /* outputs arrive with undefined contents */
-    }
+    for (int i = 0; i < 3; i++)
+        r->out[i] = undefined_image(W, H, 3);
     const struct ssg_image *ins[3] = {g->img[SSG_GBUFFER_OUT_POSITION],
                                       g->img[SSG_GBUFFER_OUT_NORMAL],
                                       g->img[SSG_GBUFFER_OUT_ALBEDO]};
-    struct ssg_io io = {.in = ins, .out = r->out};
-    enum ssg_err e = c ? ssg_node_reference_gi.prepare(&ctx, &p, c) : SSG_E_NOMEM;
-    if (!e)
-        e = ssg_node_reference_gi.run_cpu(&ctx, c, &io);
-    ssg_diags_print(&d, stderr);
-    free(c);
-    return e;
+    return run_prepared(&ssg_node_reference_gi, s, &frame, &p, ins, r->out);
 }
 
 static float at(const struct ssg_image *im, int c, int i)
@@ -224,12 +208,11 @@ static void test_constant_environment(void)
     snprintf(text, sizeof text, "%sf = material(albedo=[%g, %g, %g])\n%s"
              "environment(color=[0.25, 0.5, 1], intensity=1.2)\n",
              floor_camera, rho[0], rho[1], rho[2], big_floor);
-    struct ssg_scene *s = load_scene("constant_env", text);
+    struct gbuf g;
+    struct ssg_scene *s = load_scene("constant_env", text, &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result r;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, n, 1, 1, 1, &r), SSG_OK);
     double want[3], se[3];
     for (int c = 0; c < 3; c++) {
@@ -246,8 +229,7 @@ static void test_constant_environment(void)
     for (int o = 0; o < 3; o++)
         CHECK_EQ(count_off(&r, o, &g, NULL, 0.0), 0);
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 /* rho / pi * E of the two lights of test_lights at world point p, normal up. */
@@ -273,13 +255,12 @@ static void test_lights(void)
     char text[1000];
     snprintf(text, sizeof text, "%sf = material(albedo=[0.5, 0.4, 0.3])\n%s%s",
              floor_camera, big_floor, lights_text);
-    struct ssg_scene *s = load_scene("lights", text);
+    struct gbuf g;
+    struct ssg_scene *s = load_scene("lights", text, &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result r;
     static double want[P][3];
-    make_gbuffer(s, &g);
     for (int i = 0; i < P; i++)
         lambert(g.p[i], rho, want[i]);
     CHECK_EQ(run(s, &g, 16, 1, 1, 1, &r), SSG_OK);
@@ -287,18 +268,16 @@ static void test_lights(void)
     CHECK_EQ(count_off(&r, SSG_REFERENCE_GI_OUT_BOUNCE, &g, NULL, 0.0), 0);
     CHECK_EQ(count_off(&r, SSG_REFERENCE_GI_OUT_OUT, &g, want, 1e-5), 0);
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
     /* A blocker above the camera and below both lights, facing the floor: all dark (its
        underside, which the bounce paths reach, is unlit too). */
     snprintf(text, sizeof text, "camera(position=[0.4, 0.8, 0.5], target=[0, 0, -0.3], "
              "up=[0, 1, 0], fov=50)\nf = material(albedo=[0.5, 0.4, 0.3])\n%s"
              "plane(material=f, center=[0, 1, 0], normal=[0, -1, 0], size=[1e4, 0, 1e4])\n"
              "%s", big_floor, lights_text);
-    s = load_scene("blocked", text);
+    s = load_scene("blocked", text, &g);
     if (!s)
         return;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, 64, 1, 1, 1, &r), SSG_OK);
     int fg = 0;
     for (int i = 0; i < P; i++)
@@ -307,25 +286,23 @@ static void test_lights(void)
     for (int o = 0; o < 3; o++)
         CHECK_EQ(count_off(&r, o, &g, NULL, 0.0), 0);
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 static void test_wall_bounce(void)
 {
     const double rho_f[3] = {0.5, 0.6, 0.7}, rho_w[3] = {0.8, 0.4, 0.2}, e_w = 2.0;
     const int n = 256;
+    struct gbuf g;
     struct ssg_scene *s = load_scene("wall",
         "camera(position=[1.6, 0.9, 1.1], target=[0.2, 0.1, -0.3], up=[0, 1, 0], fov=50)\n"
         "f = material(albedo=[0.5, 0.6, 0.7])\nw = material(albedo=[0.8, 0.4, 0.2])\n"
         "plane(material=f, center=[0, 0, 0], normal=[0, 1, 0], size=[1e4, 0, 1e4])\n"
         "plane(material=w, center=[0, 0, 0], normal=[1, 0, 0], size=[1e4, 0, 1e4])\n"
-        "directional_light(direction=[-1, 0, 0], color=[1, 1, 1], intensity=2)\n");
+        "directional_light(direction=[-1, 0, 0], color=[1, 1, 1], intensity=2)\n", &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result r;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, n, 1, 1, 1, &r), SSG_OK);
     static int on_floor[P], on_wall[P];
     double want[3], se[3], zero[3] = {0, 0, 0}, exact[3] = {1e-6, 1e-6, 1e-6}, wall[3];
@@ -345,8 +322,7 @@ static void test_wall_bounce(void)
     CHECK(check_stat(r.out[SSG_REFERENCE_GI_OUT_DIRECT], on_wall, wall, exact) > P / 8);
     CHECK(check_stat(r.out[SSG_REFERENCE_GI_OUT_BOUNCE], on_wall, zero, exact) > P / 8);
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 /* A small scene with every kind of light and something to bounce off. */
@@ -360,23 +336,22 @@ static const char *mixed_scene =
     "directional_light(direction=[0.5, -1, -0.3], color=[0.3, 0.3, 0.35], intensity=1)\n";
 
 /* mixed_scene with a constant environment. */
-static struct ssg_scene *load_mixed(const char *name)
+static struct ssg_scene *load_mixed(const char *name, struct gbuf *g)
 {
     char text[1500];
     snprintf(text, sizeof text, "%senvironment(color=[0.4, 0.5, 0.7], intensity=0.5)\n",
              mixed_scene);
-    return load_scene(name, text);
+    return load_scene(name, text, g);
 }
 
 /* bounce=false: bounce 0, out == direct, and direct the same bytes as with the bounce. */
 static void test_no_bounce(void)
 {
-    struct ssg_scene *s = load_mixed("mixed");
+    struct gbuf g;
+    struct ssg_scene *s = load_mixed("mixed", &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result on, off;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, 16, 1, 1, 3, &on), SSG_OK);
     CHECK_EQ(run(s, &g, 16, 0, 1, 3, &off), SSG_OK);
     const size_t bytes = sizeof(float) * 3 * P;
@@ -397,19 +372,17 @@ static void test_no_bounce(void)
     CHECK(bounced > fg); /* most pixels get some bounce in some channel */
     free_result(&on);
     free_result(&off);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 /* Same seed: same bytes; another seed: other bytes; 1 and 2 threads: same bytes. */
 static void test_determinism(void)
 {
-    struct ssg_scene *s = load_mixed("mixed_det");
+    struct gbuf g;
+    struct ssg_scene *s = load_mixed("mixed_det", &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result a, b, c, one, two;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, 16, 1, 1, 1, &a), SSG_OK);
     CHECK_EQ(run(s, &g, 16, 1, 1, 1, &b), SSG_OK);
     CHECK_EQ(run(s, &g, 16, 1, 1, 2, &c), SSG_OK);
@@ -430,8 +403,7 @@ static void test_determinism(void)
     free_result(&c);
     free_result(&one);
     free_result(&two);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 /* Exact irradiance about +y of a piecewise-constant lat-long probe: each texel row spans
@@ -461,12 +433,11 @@ static void test_probe(void)
     snprintf(text, sizeof text, "%sf = material(albedo=[0.6, 0.6, 0.6])\n%s"
              "environment(image=\"%s/examples/probes/courtyard.exr\", intensity=1)\n",
              floor_camera, big_floor, cwd);
-    struct ssg_scene *s = load_scene("probe", text);
+    struct gbuf g;
+    struct ssg_scene *s = load_scene("probe", text, &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result r;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, n, 1, 1, 1, &r), SSG_OK);
     double exact[3], e_table[3], sum[3] = {0, 0, 0}, sq[3] = {0, 0, 0};
     const float up[3] = {0, 1, 0};
@@ -489,16 +460,14 @@ static void test_probe(void)
         CHECK_NEAR(mean, e_table[c], tol + 0.01 * e_table[c]);
     }
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
     /* The probe with occluders and lights: finite, non-negative, lit everywhere. */
     snprintf(text, sizeof text, "%s"
              "environment(image=\"%s/examples/probes/courtyard.exr\", intensity=0.5)\n",
              mixed_scene, cwd);
-    s = load_scene("probe_mixed", text);
+    s = load_scene("probe_mixed", text, &g);
     if (!s)
         return;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(s, &g, 16, 1, 1, 1, &r), SSG_OK);
     bad = 0;
     for (int o = 0; o < 3; o++)
@@ -508,35 +477,25 @@ static void test_probe(void)
         bad += g.fg[i] && !(at(r.out[SSG_REFERENCE_GI_OUT_OUT], 0, i) > 0.0f);
     CHECK_EQ(bad, 0);
     free_result(&r);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+    unload(&s, &g);
 }
 
 /* No scene, bad parameters, mismatched inputs: located errors, no crash. */
 static void test_errors(void)
 {
-    struct ssg_scene *s = load_mixed("errors");
+    struct gbuf g;
+    struct ssg_scene *s = load_mixed("errors", &g);
     if (!s)
         return;
-    struct gbuf g;
     struct result r;
-    make_gbuffer(s, &g);
     CHECK_EQ(run(NULL, &g, 16, 1, 1, 1, &r), SSG_E_SCENE);
     free_result(&r);
     CHECK_EQ(run(s, &g, 0, 1, 1, 1, &r), SSG_E_VALUE);
     free_result(&r);
     struct ssg_shape in[3] = {{W, H, 3, SSG_T_VECTOR}, {W, H, 3, SSG_T_VECTOR},
-                              {W, H + 1, 3, SSG_T_COLOR}};
-    struct ssg_shape o[3] = {{0}};
-    struct ssg_frame frame = {W, H, 50, 0.05f, 100, 1};
-    char why[200];
-    CHECK_EQ(ssg_node_reference_gi.check(NULL, &frame, in, o, why, sizeof why), SSG_E_SIZE);
-    in[2].height = H;
-    CHECK_EQ(ssg_node_reference_gi.check(NULL, &frame, in, o, why, sizeof why), SSG_OK);
-    for (int i = 0; i < 3; i++)
-        CHECK_EQ(o[i].width * 1000 + o[i].height * 10 + o[i].channels, W * 1000 + H * 10 + 3);
-    free_gbuffer(&g);
-    ssg_scene_destroy(&s);
+                              {W, H, 3, SSG_T_COLOR}};
+    check_sizes(&ssg_node_reference_gi, in, 2, 3, 3);
+    unload(&s, &g);
 }
 
 int main(void)

@@ -26,20 +26,15 @@
  * (fov, near, far, size) from ctx->frame. */
 #include "gbuffer.h"
 
-#include "rt.h"
-#include "scene.h"
+#include "trace.h"
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_gbuffer_consts *c = consts;
-    const struct ssg_scene *s = ctx->scene;
     c->p = *(const struct ssg_gbuffer_params *)params;
-    if (!s || !s->rt) {
-        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0}, "gbuffer '%s': needs a "
-                    "loaded scene (a `scene` line in the graph, or --scene)",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_SCENE;
-    }
+    enum ssg_err e = ssg_trace_camera(ctx, "gbuffer", c->rot, c->eye);
+    if (e)
+        return e;
     c->proj = ssg_frame_projection(ctx->frame);
     if (ctx->frame->width < 1 || ctx->frame->height < 1 || !(c->proj.f > 0) ||
         !(ctx->frame->near_z > 0) || !(ctx->frame->far_z > ctx->frame->near_z)) {
@@ -48,13 +43,6 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
                     ctx->instance ? ctx->instance : "");
         return SSG_E_VALUE;
     }
-    float m[16];
-    ssg_camera_view_matrix(&s->camera, m);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++)
-            c->rot[3 * r + k] = m[4 * k + r];
-    for (int i = 0; i < 3; i++)
-        c->eye[i] = s->camera.position[i];
     c->near_z = ctx->frame->near_z;
     c->far_z = ctx->frame->far_z;
     return SSG_OK;

@@ -22,7 +22,8 @@
  * table of cos and sin made here once serves every pixel and no ray needs a sine. The
  * tangent frame comes from the normal by Duff et al., "Building an Orthonormal Basis,
  * Revisited" (JCGT 2017). Everything depends only on (x, y, seed, rays), never on the
- * threads.
+ * threads. The table, the hash, the frame and the ray origin below are core/trace.h's,
+ * shared with reference_gi.
  *
  * Geometry: G-buffer positions and normals are in view space (node.h); world = eye +
  * R^T view, normal_world = R^T normal_view, R the rotation of ssg_camera_view_matrix.
@@ -38,11 +39,9 @@
  * scene's scale. Background pixels (normal 0) are 1. Normals that are not unit are
  * normalised. */
 #include <stdio.h>
-#include <string.h>
 
 #include "reference_ao.h"
-#include "rt.h"
-#include "scene.h"
+#include "trace.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
@@ -60,39 +59,14 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
-/* Radical inverse in base 2 (Szentandrasi eq. 6): the bits of i mirrored about the point. */
-static double radical_inverse2(uint32_t i)
-{
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
-    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
-    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
-    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
-    return (double)i * (1.0 / 4294967296.0);
-}
-
-/* The Hammersley set of n points on the disk (header comment), in float. */
-static void make_table(struct ssg_reference_ao_consts *c, int n)
-{
-    for (int i = 0; i < n; i++) {
-        double phi = 2.0 * M_PI * radical_inverse2((uint32_t)i);
-        c->u[i] = (float)((double)i / (double)n);
-        c->c[i] = (float)cos(phi);
-        c->s[i] = (float)sin(phi);
-    }
-}
-
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_reference_ao_consts *c = consts;
-    const struct ssg_scene *s = ctx->scene;
     const char *name = ctx->instance ? ctx->instance : "";
     c->p = *(const struct ssg_reference_ao_params *)params;
-    if (!s || !s->rt) {
-        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0}, "reference_ao '%s': needs "
-                    "a loaded scene (a `scene` line in the graph, or --scene)", name);
-        return SSG_E_SCENE;
-    }
+    enum ssg_err e = ssg_trace_camera(ctx, "reference_ao", c->rot, c->eye);
+    if (e)
+        return e;
     if (c->p.rays < 1 || c->p.rays > SSG_REFERENCE_AO_MAX_RAYS || !(c->p.max_distance > 0) ||
         !(c->p.offset >= 0)) {
         ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "reference_ao '%s': needs "
@@ -100,14 +74,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
                     SSG_REFERENCE_AO_MAX_RAYS);
         return SSG_E_VALUE;
     }
-    float m[16];
-    ssg_camera_view_matrix(&s->camera, m);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++)
-            c->rot[3 * r + k] = m[4 * k + r];
-    memcpy(c->eye, s->camera.position, sizeof c->eye);
     c->seed = ctx->frame->seed;
-    make_table(c, c->p.rays);
+    ssg_hammersley_disk(c->p.rays, c->u, c->c, c->s);
     return SSG_OK;
 }
 

@@ -1,26 +1,22 @@
 /* reference_ao_cpu.c - CPU kernel of the `reference_ao` node (method in reference_ao.c).
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a short scalar setup
- * (world point and normal, raised origin, rotated tangent frame, the hashed shift of u)
- * is followed by the rays in batches of BATCH: one loop builds the directions from the
- * prepared table (two square roots, no trigonometry; the compiler vectorises it) into
- * structure-of-arrays scratch, and the batch goes to Embree as one occlusion query
+ * (world point and normal, raised origin, rotated tangent frame, the hashed shift of u:
+ * the helpers of core/trace.h, shared with reference_gi) is followed by the rays in
+ * batches of BATCH: ssg_malley_dirs builds the directions from the prepared table (two
+ * square roots, no trigonometry; the compiler vectorises it) into structure-of-arrays
+ * scratch, and the batch goes to Embree as one occlusion query
  * (ssg_rt_occluded_rays, which says why it uses the query style it does). A pixel
  * depends only on its inputs, (x, y), the seed and the table, and its count of occluded
  * rays is an integer sum, so the output does not depend on the threads. The progress bar
- * (stderr, only when it is a terminal) is advanced by whichever thread finishes a band,
- * through C11 atomics; nothing in the output depends on it. */
-#include <float.h>
-#include <math.h>
-#include <stdatomic.h>
-#include <stdio.h>
-#include <unistd.h>
-
+ * (struct ssg_progress: stderr, only when it is a terminal) is advanced by whichever
+ * thread finishes a band; nothing in the output depends on it. */
 #include "reference_ao.h"
 #include "rt.h"
 #include "scene.h"
+#include "trace.h"
 
-enum { ROWS_PER_BAND = 2, BATCH = 256, BAR = 30 };
+enum { ROWS_PER_BAND = 2, BATCH = 256 };
 
 struct job {
     const struct ssg_reference_ao_consts *c;
@@ -28,11 +24,7 @@ struct job {
     const float *pos[3], *nrm[3]; /* input planes */
     float *out;
     int w, h;
-    const char *name;     /* instance, for the progress bar */
-    int progress;         /* 1 = stderr is a terminal: show the bar */
-    int bands;            /* bands in the frame */
-    atomic_int done;      /* bands finished */
-    atomic_int shown;     /* last percentage printed */
+    struct ssg_progress bar;
 };
 
 /* What the rays of one pixel share. */
@@ -49,76 +41,21 @@ struct batch {
     float dx[BATCH], dy[BATCH], dz[BATCH];
 };
 
-/* SplitMix64's finaliser (Steele, Lea and Flood 2014): a full-avalanche 64-bit mix. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-/* Duff et al. 2017, listing 3: a branch-free orthonormal basis (t, b, n). */
-static void basis(const float n[3], float t[3], float b[3])
-{
-    float sign = copysignf(1.0f, n[2]);
-    float a = -1.0f / (sign + n[2]);
-    float k = n[0] * n[1] * a;
-    t[0] = 1.0f + sign * n[0] * n[0] * a, t[1] = sign * k, t[2] = -sign * n[0];
-    b[0] = k, b[1] = sign + n[1] * n[1] * a, b[2] = -n[1];
-}
-
 /* Per-pixel setup; 0 for background (a zero normal). */
 static int setup_pixel(const struct job *j, int x, int y, struct pixel *px)
 {
     const struct ssg_reference_ao_consts *c = j->c;
-    const float *r = c->rot;
     size_t o = (size_t)y * (size_t)j->w + (size_t)x;
-    float nv[3] = {j->nrm[0][o], j->nrm[1][o], j->nrm[2][o]};
-    float pv[3] = {j->pos[0][o], j->pos[1][o], j->pos[2][o]};
-    float nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
-    if (!(nn > 1e-12f)) /* also catches NaN */
+    struct ssg_trace_point pt;
+    if (!ssg_trace_point(c->rot, c->eye, c->p.offset, j->pos, j->nrm, o, &pt))
         return 0;
-    float dist = sqrtf(pv[0] * pv[0] + pv[1] * pv[1] + pv[2] * pv[2]);
-    float inv = 1.0f / sqrtf(nn), to_eye = dist > 0.0f ? -1.0f / dist : 0.0f;
-    float scale = fabsf(pv[2]), v[3];
-    for (int i = 0; i < 3; i++) { /* world = eye + R^T view */
-        px->n[i] = (r[i] * nv[0] + r[3 + i] * nv[1] + r[6 + i] * nv[2]) * inv;
-        px->o[i] = c->eye[i] + r[i] * pv[0] + r[3 + i] * pv[1] + r[6 + i] * pv[2];
-        v[i] = (r[i] * pv[0] + r[3 + i] * pv[1] + r[6 + i] * pv[2]) * to_eye;
-        scale = fmaxf(scale, fabsf(px->o[i]));
-    }
-    float e = fmaxf(c->p.offset, 1024.0f * FLT_EPSILON * scale);
-    for (int i = 0; i < 3; i++) /* off the own surface (n) and any adjacent one (v) */
-        px->o[i] += e * (px->n[i] + v[i]);
-    uint64_t h = mix64(c->seed ^ mix64(((uint64_t)(uint32_t)y << 32) | (uint32_t)x));
-    px->shift = (float)(h >> 40) * (1.0f / 16777216.0f);
-    float angle = (float)((h >> 16) & 0xffffffu) * (float)(2.0 * M_PI / 16777216.0);
-    float ca = cosf(angle), sa = sinf(angle), t[3], b[3];
-    basis(px->n, t, b);
-    for (int i = 0; i < 3; i++) {
-        px->t[i] = ca * t[i] + sa * b[i];
-        px->b[i] = ca * b[i] - sa * t[i];
-    }
+    float sa[2];
+    ssg_hash_shifts(ssg_pixel_hash(c->seed, x, y), sa);
+    px->shift = sa[0];
+    ssg_turned_basis(pt.n, sa[1], px->t, px->b);
+    for (int i = 0; i < 3; i++)
+        px->o[i] = pt.o[i], px->n[i] = pt.n[i];
     return 1;
-}
-
-/* Directions of samples [first, first + n): Malley's method on the shifted table point. */
-static void make_dirs(const struct ssg_reference_ao_consts *c, const struct pixel *px,
-                      int first, int n, struct batch *restrict k)
-{
-    const float *restrict tu = c->u + first, *restrict tc = c->c + first;
-    const float *restrict ts = c->s + first;
-    const float a = px->shift;
-    for (int i = 0; i < n; i++) {
-        float u = tu[i] + a;
-        u = u >= 1.0f ? u - 1.0f : u;
-        float rr = sqrtf(u), z = sqrtf(1.0f - u);
-        float dx = rr * tc[i], dy = rr * ts[i];
-        k->dx[i] = dx * px->t[0] + dy * px->b[0] + z * px->n[0];
-        k->dy[i] = dx * px->t[1] + dy * px->b[1] + z * px->n[1];
-        k->dz[i] = dx * px->t[2] + dy * px->b[2] + z * px->n[2];
-    }
 }
 
 /* Visibility of one foreground pixel. */
@@ -130,36 +67,14 @@ static float trace_pixel(const struct job *j, const struct pixel *px, struct bat
     int occluded = 0;
     for (int first = 0; first < n; first += BATCH) {
         int count = n - first < BATCH ? n - first : BATCH;
-        make_dirs(j->c, px, first, count, k);
+        const struct ssg_reference_ao_consts *c = j->c; /* Malley, shifted table */
+        ssg_malley_dirs(c->u + first, c->c + first, c->s + first, count, px->shift, px->t,
+                        px->b, px->n, k->dx, k->dy, k->dz);
         struct ssg_rays rays = {count, k->ox, k->oy, k->oz, k->dx, k->dy, k->dz, 0.0f,
                                 j->c->p.max_distance};
         occluded += ssg_rt_occluded_rays(j->rt, &rays, NULL);
     }
     return (float)(n - occluded) / (float)n;
-}
-
-/* Advances the bar to the finished fraction. Only the thread that raises the shown
-   percentage prints, and only while it is still the latest under the stream's lock, so
-   the bar never steps back when two threads finish bands at once. */
-static void progress(struct job *j)
-{
-    int done = atomic_fetch_add(&j->done, 1) + 1;
-    int pct = (int)((long long)done * 100 / j->bands);
-    int prev = atomic_load(&j->shown);
-    while (pct > prev) {
-        if (!atomic_compare_exchange_weak(&j->shown, &prev, pct))
-            continue; /* prev now holds the newer value */
-        char bar[BAR + 1];
-        for (int i = 0; i < BAR; i++)
-            bar[i] = i < pct * BAR / 100 ? '#' : '.';
-        bar[BAR] = '\0';
-        flockfile(stderr);
-        if (atomic_load(&j->shown) == pct)
-            fprintf(stderr, "\rreference_ao '%s' [%s] %3d%%", j->name, bar, pct);
-        fflush(stderr);
-        funlockfile(stderr);
-        break;
-    }
 }
 
 static void rows(void *user, int y0, int y1)
@@ -171,8 +86,7 @@ static void rows(void *user, int y0, int y1)
         for (int x = 0; x < j->w; x++)
             j->out[(size_t)y * (size_t)j->w + (size_t)x] =
                 setup_pixel(j, x, y, &px) ? trace_pixel(j, &px, &k) : 1.0f;
-    if (j->progress)
-        progress(j);
+    ssg_progress_band(&j->bar);
 }
 
 enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -189,17 +103,13 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
         return SSG_E_SIZE;
     }
     struct job j = {.c = consts, .rt = ctx->scene->rt, .out = out->data, .w = pos->width,
-                    .h = pos->height, .name = ctx->instance ? ctx->instance : ""};
+                    .h = pos->height};
     for (int i = 0; i < 3; i++) {
         j.pos[i] = ssg_image_plane(pos, i);
         j.nrm[i] = ssg_image_plane(nrm, i);
     }
-    j.bands = (j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
-    j.progress = j.bands > 0 && isatty(fileno(stderr));
-    atomic_init(&j.done, 0);
-    atomic_init(&j.shown, -1);
+    ssg_progress_start(&j.bar, "reference_ao", ctx->instance, j.h, ROWS_PER_BAND);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
-    if (j.progress)
-        fputc('\n', stderr);
+    ssg_progress_end(&j.bar);
     return SSG_OK;
 }

@@ -44,7 +44,8 @@
  * shift of v is a turn of the tangent frame, as in reference_ao, so the table's cos and
  * sin serve every pixel). Tangent frames: Duff et al., "Building an Orthonormal Basis,
  * Revisited" (JCGT 2017). A pixel depends only on (x, y, seed, samples) and its inputs,
- * never on the threads.
+ * never on the threads. The Hammersley disk, the hash, the frame and the ray origin at x
+ * are core/trace.h's, shared with reference_ao.
  *
  * Geometry (as reference_ao.c): world = eye + R^T view, R the rotation of
  * ssg_camera_view_matrix. Rays from x start at o = p + e (n + v), v the unit vector to the
@@ -56,12 +57,11 @@
  * gbuffer node's diffuse term. A point light's shadow ray runs from the origin to the
  * light (t in [0, 1] of the unnormalised direction); others run to infinity. */
 #include <stdio.h>
-#include <string.h>
 
 #include "env.h"
 #include "reference_gi.h"
-#include "rt.h"
 #include "scene.h"
+#include "trace.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
@@ -83,27 +83,14 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
-/* Radical inverse of i in base b (Szentandrasi eq. 6): its digits mirrored about the
-   point. */
-static double radical_inverse(uint32_t i, uint32_t b)
-{
-    double inv = 1.0 / b, scale = inv, r = 0.0;
-    for (; i; i /= b, scale *= inv)
-        r += (double)(i % b) * scale;
-    return r;
-}
-
 /* The Hammersley tables of n points (header comment). */
 static void make_table(struct ssg_reference_gi_table *t, int n)
 {
+    ssg_hammersley_disk(n, t->u, t->c, t->s);
     for (int i = 0; i < n; i++) {
-        double v = radical_inverse((uint32_t)i, 2);
-        t->u[i] = (float)((double)i / (double)n);
-        t->v[i] = (float)v;
-        t->c[i] = (float)cos(2.0 * M_PI * v);
-        t->s[i] = (float)sin(2.0 * M_PI * v);
-        t->e1[i] = (float)radical_inverse((uint32_t)i, 3);
-        t->e2[i] = (float)radical_inverse((uint32_t)i, 5);
+        t->v[i] = (float)ssg_radical_inverse((uint32_t)i, 2);
+        t->e1[i] = (float)ssg_radical_inverse((uint32_t)i, 3);
+        t->e2[i] = (float)ssg_radical_inverse((uint32_t)i, 5);
     }
 }
 
@@ -113,23 +100,15 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     const struct ssg_scene *s = ctx->scene;
     const char *name = ctx->instance ? ctx->instance : "";
     c->p = *(const struct ssg_reference_gi_params *)params;
-    if (!s || !s->rt) {
-        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0}, "reference_gi '%s': needs "
-                    "a loaded scene (a `scene` line in the graph, or --scene)", name);
-        return SSG_E_SCENE;
-    }
+    enum ssg_err e = ssg_trace_camera(ctx, "reference_gi", c->rot, c->eye);
+    if (e)
+        return e;
     if (c->p.samples < 1 || c->p.samples > SSG_REFERENCE_GI_MAX_SAMPLES ||
         !(c->p.offset >= 0)) {
         ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "reference_gi '%s': needs "
                     "1 <= samples <= %d and offset >= 0", name, SSG_REFERENCE_GI_MAX_SAMPLES);
         return SSG_E_VALUE;
     }
-    float m[16];
-    ssg_camera_view_matrix(&s->camera, m);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++)
-            c->rot[3 * r + k] = m[4 * k + r];
-    memcpy(c->eye, s->camera.position, sizeof c->eye);
     c->seed = ctx->frame->seed;
     c->use_env = c->p.environment && s->env && s->env->has_light;
     make_table(&c->t, c->p.samples);

@@ -3,7 +3,8 @@
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a scalar setup (world
  * point, normal and albedo, raised origin, rotated tangent frame, the hashed
- * Cranley-Patterson shifts) is followed by the estimators, each in batches of BATCH:
+ * Cranley-Patterson shifts: the helpers of core/trace.h, shared with reference_ao) is
+ * followed by the estimators, each in batches of BATCH:
  * - the lights' shadow rays from x, one scalar occlusion query each;
  * - the environment samples: drawn into structure-of-arrays scratch, those above the
  *   surface go to Embree as one occlusion batch (ssg_rt_occluded_rays);
@@ -14,22 +15,19 @@
  *   hits compacted with their normals, albedos and raised origins, then per light one
  *   occlusion batch over all live paths, and one for their environment samples.
  * Sums run in sample order into doubles, so a pixel depends only on its inputs, (x, y),
- * the seed and the table, never on the threads. The progress bar (stderr, only on a
- * terminal) is advanced by whichever thread finishes a band, through C11 atomics; nothing
- * in the output depends on it. */
-#include <float.h>
+ * the seed and the table, never on the threads. The progress bar (struct ssg_progress:
+ * stderr, only on a terminal) is advanced by whichever thread finishes a band; nothing in
+ * the output depends on it. */
 #include <math.h>
-#include <stdatomic.h>
-#include <stdio.h>
-#include <unistd.h>
 
 #include "env.h"
 #include "reference_gi.h"
 #include "rt.h"
 #include "scene.h"
 #include "surface.h"
+#include "trace.h"
 
-enum { ROWS_PER_BAND = 2, BATCH = 128, BAR = 30 };
+enum { ROWS_PER_BAND = 2, BATCH = 128 };
 
 /* Keeps 1/sqrt finite for a zero vector; below float precision for unit-scale ones. */
 #define TINY 1e-30f
@@ -41,11 +39,7 @@ struct job {
     float *direct[3], *bounce[3], *out[3]; /* output planes */
     int w, h;
     int lit;              /* any light or environment to bounce: 0 = no bounce rays */
-    const char *name;     /* instance, for the progress bar */
-    int progress;         /* 1 = stderr is a terminal: show the bar */
-    int bands;            /* bands in the frame */
-    atomic_int done;      /* bands finished */
-    atomic_int shown;     /* last percentage printed */
+    struct ssg_progress bar;
 };
 
 /* What the rays of one pixel share. */
@@ -84,22 +78,6 @@ struct shadows {
     unsigned char occluded[BATCH];
 };
 
-/* SplitMix64's finaliser (Steele, Lea and Flood 2014): a full-avalanche 64-bit mix. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-/* Two shifts in [0, 1) from the 24-bit fields of a hash. */
-static void shifts(uint64_t h, float out[2])
-{
-    out[0] = (float)(h >> 40) * (1.0f / 16777216.0f);
-    out[1] = (float)((h >> 16) & 0xffffffu) * (1.0f / 16777216.0f);
-}
-
 /* (a + b) mod 1 for a, b in [0, 1): the Cranley-Patterson rotation. */
 static inline float wrap(float a, float b)
 {
@@ -112,60 +90,26 @@ static inline float dot3(const float a[3], const float b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* Duff et al. 2017, listing 3: a branch-free orthonormal basis (t, b, n). */
-static void basis(const float n[3], float t[3], float b[3])
-{
-    float sign = copysignf(1.0f, n[2]);
-    float a = -1.0f / (sign + n[2]);
-    float k = n[0] * n[1] * a;
-    t[0] = 1.0f + sign * n[0] * n[0] * a, t[1] = sign * k, t[2] = -sign * n[0];
-    b[0] = k, b[1] = sign + n[1] * n[1] * a, b[2] = -n[1];
-}
-
-/* The offset e of reference_gi.c for a point whose coordinates reach `scale`. */
-static float offset_at(const struct ssg_reference_gi_consts *c, float scale)
-{
-    return fmaxf(c->p.offset, 1024.0f * FLT_EPSILON * scale);
-}
-
 /* Per-pixel setup; 0 for background (a zero normal). */
 static int setup_pixel(const struct job *j, int x, int y, struct pixel *px)
 {
     const struct ssg_reference_gi_consts *c = j->c;
-    const float *r = c->rot;
     size_t o = (size_t)y * (size_t)j->w + (size_t)x;
-    float nv[3] = {j->nrm[0][o], j->nrm[1][o], j->nrm[2][o]};
-    float pv[3] = {j->pos[0][o], j->pos[1][o], j->pos[2][o]};
-    float nn = dot3(nv, nv);
-    if (!(nn > 1e-12f)) /* also catches NaN */
+    struct ssg_trace_point pt;
+    if (!ssg_trace_point(c->rot, c->eye, c->p.offset, j->pos, j->nrm, o, &pt))
         return 0;
-    float dist = sqrtf(dot3(pv, pv));
-    float inv = 1.0f / sqrtf(nn), to_eye = dist > 0.0f ? -1.0f / dist : 0.0f;
-    float scale = fabsf(pv[2]), v[3];
-    for (int i = 0; i < 3; i++) { /* world = eye + R^T view */
-        px->n[i] = (r[i] * nv[0] + r[3 + i] * nv[1] + r[6 + i] * nv[2]) * inv;
-        px->p[i] = c->eye[i] + r[i] * pv[0] + r[3 + i] * pv[1] + r[6 + i] * pv[2];
-        v[i] = (r[i] * pv[0] + r[3 + i] * pv[1] + r[6 + i] * pv[2]) * to_eye;
-        scale = fmaxf(scale, fabsf(px->p[i]));
+    for (int i = 0; i < 3; i++) {
+        px->p[i] = pt.p[i], px->o[i] = pt.o[i], px->n[i] = pt.n[i];
         px->rho[i] = j->alb[i][o];
     }
-    float e = offset_at(c, scale);
-    for (int i = 0; i < 3; i++) /* off the own surface (n) and any adjacent one (v) */
-        px->o[i] = px->p[i] + e * (px->n[i] + v[i]);
-    uint64_t h = mix64(c->seed ^ mix64(((uint64_t)(uint32_t)y << 32) | (uint32_t)x));
+    uint64_t h = ssg_pixel_hash(c->seed, x, y);
     float sa[2];
-    shifts(h, sa);
+    ssg_hash_shifts(h, sa);
     px->bounce_u = sa[0];
-    float angle = sa[1] * (float)(2.0 * M_PI), ca = cosf(angle), sn = sinf(angle);
-    float t[3], b[3];
-    basis(px->n, t, b);
-    for (int i = 0; i < 3; i++) {
-        px->t[i] = ca * t[i] + sn * b[i];
-        px->b[i] = ca * b[i] - sn * t[i];
-    }
-    h = mix64(h);
-    shifts(h, px->env_u);
-    shifts(mix64(h), px->end_u);
+    ssg_turned_basis(px->n, sa[1], px->t, px->b);
+    h = ssg_mix64(h);
+    ssg_hash_shifts(h, px->env_u);
+    ssg_hash_shifts(ssg_mix64(h), px->end_u);
     return 1;
 }
 
@@ -251,24 +195,6 @@ static void env_direct(const struct job *j, const struct pixel *px, struct shado
         e[i] += sum[i] / n;
 }
 
-/* Directions of paths [first, first + k->count): Malley's method on the shifted table. */
-static void make_dirs(const struct ssg_reference_gi_table *t, const struct pixel *px,
-                      int first, struct paths *restrict k)
-{
-    const float *restrict tu = t->u + first, *restrict tc = t->c + first;
-    const float *restrict ts = t->s + first;
-    const float a = px->bounce_u;
-    for (int i = 0; i < k->count; i++) {
-        float u = tu[i] + a;
-        u = u >= 1.0f ? u - 1.0f : u;
-        float rr = sqrtf(u), z = sqrtf(1.0f - u);
-        float dx = rr * tc[i], dy = rr * ts[i];
-        k->dx[i] = dx * px->t[0] + dy * px->b[0] + z * px->n[0];
-        k->dy[i] = dx * px->t[1] + dy * px->b[1] + z * px->n[1];
-        k->dz[i] = dx * px->t[2] + dy * px->b[2] + z * px->n[2];
-    }
-}
-
 /* Compacts the paths that hit: point, normal facing the ray, raised origin, albedo. */
 static void gather_hits(const struct job *j, const struct pixel *px, struct paths *k,
                         int first)
@@ -291,7 +217,7 @@ static void gather_hits(const struct job *j, const struct pixel *px, struct path
         ssg_hit_normal(sc, h, 0, n);
         float inv = 1.0f / sqrtf(dot3(n, n) + TINY);
         inv = dot3(n, w) > 0.0f ? -inv : inv; /* face the arriving ray */
-        float e = offset_at(j->c, scale);
+        float e = ssg_trace_offset(j->c->p.offset, scale);
         ssg_hit_albedo(sc, h, a);
         k->index[m] = first + i;
         k->yx[m] = y[0], k->yy[m] = y[1], k->yz[m] = y[2];
@@ -360,7 +286,9 @@ static void bounce_paths(const struct job *j, const struct pixel *px, struct pat
     const float inv_pi = (float)(1.0 / M_PI);
     for (int first = 0; first < n; first += BATCH) {
         k->count = n - first < BATCH ? n - first : BATCH;
-        make_dirs(&j->c->t, px, first, k);
+        const struct ssg_reference_gi_table *t = &j->c->t; /* Malley, shifted table */
+        ssg_malley_dirs(t->u + first, t->c + first, t->s + first, k->count, px->bounce_u,
+                        px->t, px->b, px->n, k->dx, k->dy, k->dz);
         for (int i = 0; i < k->count; i++) { /* incoherent: one query each (file comment) */
             float d[3] = {k->dx[i], k->dy[i], k->dz[i]};
             ssg_rt_intersect(sc->rt, px->o, d, 0.0f, INFINITY, &k->hits[i]);
@@ -404,30 +332,6 @@ static void shade_pixel(const struct job *j, int x, int y, struct paths *k, stru
     }
 }
 
-/* Advances the bar to the finished fraction. Only the thread that raises the shown
-   percentage prints, and only while it is still the latest under the stream's lock, so
-   the bar never steps back when two threads finish bands at once. */
-static void progress(struct job *j)
-{
-    int done = atomic_fetch_add(&j->done, 1) + 1;
-    int pct = (int)((long long)done * 100 / j->bands);
-    int prev = atomic_load(&j->shown);
-    while (pct > prev) {
-        if (!atomic_compare_exchange_weak(&j->shown, &prev, pct))
-            continue; /* prev now holds the newer value */
-        char bar[BAR + 1];
-        for (int i = 0; i < BAR; i++)
-            bar[i] = i < pct * BAR / 100 ? '#' : '.';
-        bar[BAR] = '\0';
-        flockfile(stderr);
-        if (atomic_load(&j->shown) == pct)
-            fprintf(stderr, "\rreference_gi '%s' [%s] %3d%%", j->name, bar, pct);
-        fflush(stderr);
-        funlockfile(stderr);
-        break;
-    }
-}
-
 static void rows(void *user, int y0, int y1)
 {
     struct job *j = user;
@@ -436,8 +340,7 @@ static void rows(void *user, int y0, int y1)
     for (int y = y0; y < y1; y++)
         for (int x = 0; x < j->w; x++)
             shade_pixel(j, x, y, &k, &s);
-    if (j->progress)
-        progress(j);
+    ssg_progress_band(&j->bar);
 }
 
 enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -454,8 +357,7 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
     if (!ok)
         return ssg_node_fail(ctx, SSG_E_SIZE, "reference_gi", "position, normal, albedo "
                              "and the outputs must be 3-channel images of one size");
-    struct job j = {.c = consts, .scene = ctx->scene, .w = w, .h = h,
-                    .name = ctx->instance ? ctx->instance : ""};
+    struct job j = {.c = consts, .scene = ctx->scene, .w = w, .h = h};
     const struct ssg_reference_gi_consts *c = consts;
     j.lit = ctx->scene->light_count > 0 || c->use_env;
     for (int i = 0; i < 3; i++) {
@@ -466,12 +368,8 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
         j.bounce[i] = ssg_image_plane(io->out[SSG_REFERENCE_GI_OUT_BOUNCE], i);
         j.out[i] = ssg_image_plane(io->out[SSG_REFERENCE_GI_OUT_OUT], i);
     }
-    j.bands = (j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
-    j.progress = j.bands > 0 && isatty(fileno(stderr));
-    atomic_init(&j.done, 0);
-    atomic_init(&j.shown, -1);
+    ssg_progress_start(&j.bar, "reference_gi", ctx->instance, j.h, ROWS_PER_BAND);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
-    if (j.progress)
-        fputc('\n', stderr);
+    ssg_progress_end(&j.bar);
     return SSG_OK;
 }
