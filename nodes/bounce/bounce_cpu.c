@@ -4,32 +4,40 @@
  * ssdo's bounce output. Layout: chunks of a row in structure-of-arrays scratch, chunk
  * columns outside and a band's rows inside (see ssao_cpu.c); bands of rows go to
  * ssg_parallel_rows, so the result does not depend on the thread count. */
-#include "bounce.h"
-
-/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged. */
+/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged.
+   Before the includes: the shared sampling code (ssdo_sampling.h) is inlined into the
+   AVX2 clone and must be compiled with the same options, or its selects and those of
+   this file stay branches. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC optimize("no-trapping-math")
 #endif
+
+#include "bounce.h"
 
 struct job {
     struct ssg_ssdo_job s; /* what the shared sampling reads */
     float *out[3];         /* planes of the output */
 };
 
-/* The hot loop, per kernel sample in order (AVX2 clone as in ssdo_cpu.c: same bits). */
+/* One chunk of one row, start to end: loads, frame, every kernel sample in order, the
+   bounce. With GCC on x86-64 also compiled for AVX2 and picked at run time (same bits as
+   in ssdo_cpu.c: the same IEEE operations lane by lane). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void sample_all(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *k, int len)
+static void chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
 {
+    const struct ssg_ssdo_job *j = &jb->s;
     const int count = j->count, own = j->own_depth;
-    const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
+    ssg_ssdo_load(j, k, y, x0, len);
+    ssg_ssdo_setup(j, k, len);
     for (int s = 0; s < count; s++) {
         if (own)
-            ssg_ssdo_sample(j, k, len, kx[s], ky[s], kz[s], 1, 1);
+            ssg_ssdo_sample(j, k, len, s, 1, 1);
         else
-            ssg_ssdo_sample(j, k, len, kx[s], ky[s], kz[s], 0, 1);
+            ssg_ssdo_sample(j, k, len, s, 0, 1);
     }
+    ssg_ssdo_finish_bounce(j, k, len, (size_t)y * (size_t)j->w + (size_t)x0, jb->out);
 }
 
 static void band(void *user, int y0, int y1)
@@ -38,13 +46,8 @@ static void band(void *user, int y0, int y1)
     struct ssg_ssdo_chunk k;
     for (int x0 = 0; x0 < j->s.w; x0 += SSG_SSDO_CHUNK) {
         int len = j->s.w - x0 < SSG_SSDO_CHUNK ? j->s.w - x0 : SSG_SSDO_CHUNK;
-        for (int y = y0; y < y1; y++) {
-            ssg_ssdo_load(&j->s, &k, y, x0, len);
-            ssg_ssdo_setup(&j->s, &k, len);
-            sample_all(&j->s, &k, len);
-            ssg_ssdo_finish_bounce(&j->s, &k, len, (size_t)y * (size_t)j->s.w + (size_t)x0,
-                                   j->out);
-        }
+        for (int y = y0; y < y1; y++)
+            chunk_row(j, &k, y, x0, len);
     }
 }
 

@@ -13,17 +13,20 @@
  * only on the inputs and every per-pixel sum runs in kernel order: the output does not
  * depend on the thread count nor on the instruction set (the AVX2 clone does the same IEEE
  * operations lane by lane; C11 mode does not contract to FMA). */
+/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged.
+   Before the includes: the shared sampling code (ssdo_sampling.h) is inlined into the
+   AVX2 clone and must be compiled with the same options, or its selects and those of
+   this file stay branches. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "ssdo.h"
-
-/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
 
 enum { CHUNK = SSG_SSDO_CHUNK, MAXL = SSG_SSDO_MAX_LIGHTS };
 
@@ -46,16 +49,19 @@ struct light_chunk {
     float e[MAXL][CHUNK];       /* max(0, N.L) / d^2 (point) or max(0, N.L) */
     float ws[MAXL][CHUNK];      /* sum of w_il */
     float wv[MAXL][CHUNK];      /* sum of w_il V_i */
-    float c[CHUNK], p[CHUNK];   /* scratch of the lobe power */
+    float c[CHUNK], p[CHUNK];   /* scratch of the lobe power (generic lobe) */
     float litw[CHUNK];          /* constant environment: sum of nw V */
     float lit[3][CHUNK];        /* cube: sum of L_env nw V */
     float full[3][CHUNK];       /* cube: sum of L_env nw */
     int32_t texel[CHUNK];       /* cube: per sample, the float offset of its texel */
+    float num[3][CHUNK], den[3][CHUNK]; /* finish: lit and unoccluded light per channel */
+    float vis[CHUNK];           /* finish: vis_l of one light */
 };
 
 /* Per light, L in the tangent frame and E / colour; the sums start at 0. */
-static void setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
-                         struct light_chunk *restrict lc, int len)
+static inline __attribute__((always_inline)) void
+setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
+             struct light_chunk *restrict lc, int len)
 {
     for (int l = 0; l < j->c->light_count; l++) {
         const struct ssg_ssdo_light *li = &j->c->lights[l];
@@ -85,9 +91,39 @@ static void setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restr
     }
 }
 
+/* max(0, cl)^lobe nw by squaring for lobe < 16: p = nw, then per bit b of lobe from the
+   lowest p *= c (bit set) and c *= c (higher bits left). With `lobe` a constant the
+   fixed-count loop unrolls into straight code that vectorises (a loop on lobe >>= 1 would
+   not: its trip count is not affine); the generic passes of add_lights do the same
+   operations in the same order, so every lobe gives the same bits either way. */
+static inline __attribute__((always_inline)) float lobe_pow(float cl, float nw, int lobe)
+{
+    float c = cl > 0.0f ? cl : 0.0f, p = nw;
+    for (int b = 0; b < 4; b++) {
+        if ((lobe >> b) & 1)
+            p *= c;
+        if ((lobe >> b) > 1)
+            c *= c;
+    }
+    return p;
+}
+
+/* One light's lobe weights in one fused pass, lobe a constant at each call site. */
+static inline __attribute__((always_inline)) void
+add_light_lobe(struct light_chunk *restrict lc, const struct ssg_ssdo_chunk *restrict k,
+               int l, int len, float sx, float sy, float sz, float il, float nw, int lobe)
+{
+    for (int i = 0; i < len; i++) {
+        float cl = (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
+        float p = lobe_pow(cl, nw, lobe);
+        lc->ws[l][i] += p;
+        lc->wv[l][i] += p * k->vis[i];
+    }
+}
+
 /* One sample's lobe weights max(0, w.L)^lobe (N.w) for every light (the power by
-   squaring, one vector pass per bit of lobe). wv gets w V: with V = 1 exactly w, so an
-   open plane's vis is exactly 1. */
+   squaring: one fused pass for lobes 1..8, else one vector pass per bit of lobe). wv
+   gets w V: with V = 1 exactly w, so an open plane's vis is exactly 1. */
 static inline __attribute__((always_inline)) void
 add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
            struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s)
@@ -95,6 +131,17 @@ add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
     const float il = j->inv_len[s], nw = j->nw[s];
     const int lobe = j->c->p.lobe;
     for (int l = 0; l < j->c->light_count; l++) {
+        switch (lobe) {
+#define SSDO_LOBE_CASE(n)                                                                   \
+    case n:                                                                                 \
+        add_light_lobe(lc, k, l, len, sx, sy, sz, il, nw, n);                               \
+        continue;
+            SSDO_LOBE_CASE(1) SSDO_LOBE_CASE(2) SSDO_LOBE_CASE(3) SSDO_LOBE_CASE(4)
+            SSDO_LOBE_CASE(5) SSDO_LOBE_CASE(6) SSDO_LOBE_CASE(7) SSDO_LOBE_CASE(8)
+#undef SSDO_LOBE_CASE
+        default:
+            break;
+        }
         for (int i = 0; i < len; i++) {
             float cl = (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
             lc->c[i] = cl > 0.0f ? cl : 0.0f;
@@ -142,13 +189,9 @@ add_environment(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
         }
 }
 
-/* The hot loop, per kernel sample in order. With GCC on x86-64 also compiled for AVX2
-   and picked at run time (same bits, see the file header). */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-static void sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
-                       int len)
+/* The hot loop, per kernel sample in order. */
+static inline __attribute__((always_inline)) void
+sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int len)
 {
     const int count = j->s.count, bounce = j->s.bounce, own = j->s.own_depth;
     const float *kx = j->s.kernel, *ky = kx + count, *kz = ky + count;
@@ -156,64 +199,112 @@ static void sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct lig
         float sx = kx[s], sy = ky[s], sz = kz[s];
         /* constant flags at each call, so each variant is straight code */
         if (own && bounce)
-            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 1, 1);
+            ssg_ssdo_sample(&j->s, k, len, s, 1, 1);
         else if (own)
-            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 1, 0);
+            ssg_ssdo_sample(&j->s, k, len, s, 1, 0);
         else if (bounce)
-            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 0, 1);
+            ssg_ssdo_sample(&j->s, k, len, s, 0, 1);
         else
-            ssg_ssdo_sample(&j->s, k, len, sx, sy, sz, 0, 0);
+            ssg_ssdo_sample(&j->s, k, len, s, 0, 0);
         add_environment(j, k, lc, len, sx, sy, sz, s);
         add_lights(j, k, lc, len, sx, sy, sz, s);
     }
 }
 
-/* Numerator and denominator of channel ch at pixel i: the same sums in the same order. */
-static inline void light_sums(const struct job *j, const struct light_chunk *lc, int i,
-                              int ch, float *num, float *den)
+/* Numerator and denominator of every channel: per pixel and channel the environment
+   term, then each light's e vis and e in light order. Vector loops over the chunk (lights
+   and channels outside); the same operations in the same order as a per-pixel loop. */
+static inline __attribute__((always_inline)) void
+light_sums(const struct job *j, struct light_chunk *restrict lc, int len)
 {
-    float n, d;
-    if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
-        float scale = j->c->env_rgb[ch] * j->dw;
-        n = scale * lc->litw[i];
-        d = scale * j->full_w;
-    } else {
-        n = lc->lit[ch][i] * j->dw;
-        d = lc->full[ch][i] * j->dw;
+    for (int ch = 0; ch < 3; ch++) {
+        float *restrict n = lc->num[ch], *restrict d = lc->den[ch];
+        if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+            const float scale = j->c->env_rgb[ch] * j->dw, dfull = scale * j->full_w;
+            for (int i = 0; i < len; i++) {
+                n[i] = scale * lc->litw[i];
+                d[i] = dfull;
+            }
+        } else {
+            for (int i = 0; i < len; i++) {
+                n[i] = lc->lit[ch][i] * j->dw;
+                d[i] = lc->full[ch][i] * j->dw;
+            }
+        }
     }
     for (int l = 0; l < j->c->light_count; l++) {
-        float e = j->c->lights[l].rgb[ch] * lc->e[l][i];
-        float vis = lc->ws[l][i] > 0.0f ? lc->wv[l][i] / lc->ws[l][i] : 1.0f;
-        n += e * vis;
-        d += e;
+        for (int i = 0; i < len; i++) { /* no trapping maths: 0/0 lanes are selected away */
+            float ws = lc->ws[l][i], q = lc->wv[l][i] / ws;
+            lc->vis[i] = ws > 0.0f ? q : 1.0f;
+        }
+        for (int ch = 0; ch < 3; ch++) {
+            const float rgb = j->c->lights[l].rgb[ch];
+            float *restrict n = lc->num[ch], *restrict d = lc->den[ch];
+            for (int i = 0; i < len; i++) {
+                float e = rgb * lc->e[l][i];
+                n[i] += e * lc->vis[i];
+                d[i] += e;
+            }
+        }
     }
-    *num = n;
-    *den = d;
 }
 
-/* Modulation (per channel or of luminances) or radiance into the out planes. */
-static void finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *k,
-                         const struct light_chunk *lc, int len, size_t o)
+/* Modulation (per channel or of luminances) or radiance into the out planes; inputs are
+   read unconditionally so the loops vectorise. */
+static inline __attribute__((always_inline)) void
+finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
+             struct light_chunk *restrict lc, int len, size_t o)
 {
     static const float luma[3] = {0.2126f, 0.7152f, 0.0722f};
     const float inv_pi = (float)(1.0 / M_PI);
-    const int radiance = j->c->p.mode == SSG_SSDO_MODE_RADIANCE;
-    for (int i = 0; i < len; i++) {
-        float num[3], den[3];
-        for (int ch = 0; ch < 3; ch++)
-            light_sums(j, lc, i, ch, &num[ch], &den[ch]);
-        if (radiance) {
-            for (int ch = 0; ch < 3; ch++)
-                j->out[ch][o + i] = k->fg[i] ? j->s.alb[ch][o + i] * inv_pi * num[ch] : 0.0f;
-        } else if (j->out_channels == 3) {
-            for (int ch = 0; ch < 3; ch++)
-                j->out[ch][o + i] = k->fg[i] && den[ch] > 1e-30f ? num[ch] / den[ch] : 1.0f;
-        } else {
-            float yn = luma[0] * num[0] + luma[1] * num[1] + luma[2] * num[2];
-            float yd = luma[0] * den[0] + luma[1] * den[1] + luma[2] * den[2];
-            j->out[0][o + i] = k->fg[i] && yd > 1e-30f ? yn / yd : 1.0f;
+    light_sums(j, lc, len);
+    if (j->c->p.mode == SSG_SSDO_MODE_RADIANCE) {
+        for (int ch = 0; ch < 3; ch++) {
+            const float *restrict a = j->s.alb[ch] + o;
+            float *restrict out = j->out[ch] + o;
+            for (int i = 0; i < len; i++) {
+                float v = a[i] * inv_pi * lc->num[ch][i];
+                out[i] = k->fg[i] != 0 ? v : 0.0f;
+            }
+        }
+    } else if (j->out_channels == 3) {
+        for (int ch = 0; ch < 3; ch++) {
+            float *restrict out = j->out[ch] + o;
+            for (int i = 0; i < len; i++) {
+                float n = lc->num[ch][i], d = lc->den[ch][i], q = n / d;
+                out[i] = (k->fg[i] != 0) & (d > 1e-30f) ? q : 1.0f;
+            }
+        }
+    } else {
+        float *restrict out = j->out[0] + o;
+        for (int i = 0; i < len; i++) {
+            float yn = luma[0] * lc->num[0][i] + luma[1] * lc->num[1][i] +
+                       luma[2] * lc->num[2][i];
+            float yd = luma[0] * lc->den[0][i] + luma[1] * lc->den[1][i] +
+                       luma[2] * lc->den[2][i];
+            float q = yn / yd;
+            out[i] = (k->fg[i] != 0) & (yd > 1e-30f) ? q : 1.0f;
         }
     }
+}
+
+/* One chunk of one row, start to end. With GCC on x86-64 also compiled for AVX2 and
+   picked at run time (same bits, see the file header): the per-pixel passes (loads,
+   frame, lights, finish) are vector loops too, worth the wider vectors. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
+                      int y, int x0, int len)
+{
+    size_t o = (size_t)y * (size_t)j->s.w + (size_t)x0;
+    ssg_ssdo_load(&j->s, k, y, x0, len);
+    ssg_ssdo_setup(&j->s, k, len);
+    setup_lights(j, k, lc, len);
+    sample_all(j, k, lc, len);
+    finish_chunk(j, k, lc, len, o);
+    if (j->s.bounce)
+        ssg_ssdo_finish_bounce(&j->s, k, len, o, j->bounce);
 }
 
 static void band(void *user, int y0, int y1)
@@ -223,16 +314,8 @@ static void band(void *user, int y0, int y1)
     struct light_chunk lc;
     for (int x0 = 0; x0 < j->s.w; x0 += CHUNK) {
         int len = j->s.w - x0 < CHUNK ? j->s.w - x0 : CHUNK;
-        for (int y = y0; y < y1; y++) {
-            size_t o = (size_t)y * (size_t)j->s.w + (size_t)x0;
-            ssg_ssdo_load(&j->s, &k, y, x0, len);
-            ssg_ssdo_setup(&j->s, &k, len);
-            setup_lights(j, &k, &lc, len);
-            sample_all(j, &k, &lc, len);
-            finish_chunk(j, &k, &lc, len, o);
-            if (j->s.bounce)
-                ssg_ssdo_finish_bounce(&j->s, &k, len, o, j->bounce);
-        }
+        for (int y = y0; y < y1; y++)
+            chunk_row(j, &k, &lc, y, x0, len);
     }
 }
 
