@@ -3,7 +3,7 @@
 
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
-                           [--ssdo [--samples 12,24,36,64]]
+                           [--ssdo [--samples 12,24,36,64]] [--table1]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -119,6 +119,60 @@ def ssdo_table(binary, sizes, threads, runs, samples):
                           f"{err['ssim']:>7.4f}")
 
 
+TABLE1_ROWS = ["ssao_nosub_10", "ssdo_2step_10", "ssdo_nosub_10", "ssao_20", "ssdo_20",
+               "ssdo_50", "ssdo_pre_20_50"]
+TABLE1_SCENES = {"cornell": "cornell.scene", "pyramids": "pyramids.scene",
+                 "bunny": "bunny.scene"}
+
+
+def frame_ms(binary, graph, scene, size, threads, runs, out_dir):
+    """Median ms of every node but write, over runs after a warm-up."""
+    totals = []
+    for i in range(runs + 1):
+        cmd = [binary, "run", graph, "--scene", scene, "--size", size, "--out", out_dir]
+        if threads:
+            cmd += ["--threads", str(threads)]
+        t = parse_times(run_cmd(cmd))
+        if i:
+            totals.append(sum(ms for name, ms in t.items() if not name.endswith("(write)")))
+    return statistics.median(totals)
+
+
+def table1(binary, size, threads, runs):
+    """The rows of table 1 on its three scenes: ms per frame and error against truth."""
+    reference = os.path.join(ROOT, "bench", "ssdo_reference.graph")
+    print(f"{'scene':<9} {'graph':<16} {'ms':>8} {'rmse':>8} {'ssim':>7} "
+          f"{'full-res ms':>12} {'speed-up':>9} {'full rmse':>10} {'error cost':>10}")
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, scene_file in TABLE1_SCENES.items():
+            scene = os.path.join(ROOT, "examples", scene_file)
+            ref_dir = os.path.join(tmp, "ref_" + label)
+            run_cmd([binary, "run", reference, "--scene", scene, "--size", size,
+                     "--set", "ref.samples=64", "--out", ref_dir, "--quiet"])
+            ref = os.path.join(ref_dir, "reference.exr")
+
+            def score(out_dir):
+                return json.loads(run_cmd([binary, "compare",
+                                           os.path.join(out_dir, "table1.exr"), ref,
+                                           "--mask", ref + ":depth", "--json"]))
+
+            for row in TABLE1_ROWS:
+                graph = os.path.join(ROOT, "graphs", "table1", row + ".graph")
+                out_dir = os.path.join(tmp, "row")
+                ms = frame_ms(binary, graph, scene, size, threads, runs, out_dir)
+                err = score(out_dir)
+                line = f"{label:<9} {row:<16} {ms:>8.1f} {err['rmse']:>8.4f} {err['ssim']:>7.4f}"
+                twin = os.path.join(ROOT, "bench", "table1_twins", row + "_full.graph")
+                if os.path.exists(twin):
+                    full_dir = os.path.join(tmp, "full")
+                    full_ms = frame_ms(binary, twin, scene, size, threads, runs, full_dir)
+                    full = score(full_dir)
+                    cost = (err["rmse"] - full["rmse"]) / full["rmse"] * 100.0
+                    line += (f" {full_ms:>12.1f} {full_ms / ms:>8.2f}x {full['rmse']:>10.4f} "
+                             f"{cost:>+9.1f}%")
+                print(line, flush=True)
+
+
 def parse_times(stdout):
     times, table = {}, False
     for line in stdout.splitlines():
@@ -148,8 +202,14 @@ def main():
                          "against reference_gi on the Cornell box")
     ap.add_argument("--samples", default="12,24,36,64",
                     help="--ssdo: kernel sizes K, comma-separated")
+    ap.add_argument("--table1", action="store_true",
+                    help="table 1 of Szentandrasi: graphs/table1/ on three scenes, ms per "
+                         "frame and error, subsampled rows against full-resolution twins")
     args = ap.parse_args()
     binary = args.bin or build()
+    if args.table1:
+        table1(binary, (args.size or ["1024x768"])[0], args.threads, args.runs)
+        return
     if args.ssdo:
         ssdo_table(binary, args.size or ["1280x720", "1920x1080"], args.threads, args.runs,
                    [int(k) for k in args.samples.split(",")])

@@ -68,7 +68,7 @@ int main(int argc, char **argv)
         }
     }
     struct ssg_node_ctx ctx = {"h", &frame, NULL, "out", &diags, NULL};
-    const struct ssg_image *in[4] = {pos, nrm, hal.images[1], NULL};
+    const struct ssg_image *in[5] = {pos, nrm, hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
     struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};
     if (d->prepare(&ctx, params, consts) != SSG_OK) {

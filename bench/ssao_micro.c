@@ -62,7 +62,7 @@ int main(int argc, char **argv)
             return 2;
         }
     struct ssg_node_ctx ctx = {"ao", &frame, NULL, "out", &diags, NULL};
-    const struct ssg_image *in[5] = {pos, nrm, hal.images[0], hal.images[1], NULL};
+    const struct ssg_image *in[6] = {pos, nrm, hal.images[0], hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
     struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};
     if (d->prepare(&ctx, params, consts) != SSG_OK)

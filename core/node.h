@@ -139,6 +139,31 @@ static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame 
     return p;
 }
 
+/* The projection `p` of a frame_w x frame_h frame as seen by an image of w x h pixels.
+ * An image subsampled by an integer k the way `downsample` does it (ceil(frame / k) on
+ * both axes) gets the frame's projection divided by k, so that its pixel X covers the
+ * frame's pixels [kX, kX + k) exactly, odd frame sizes included; any other size scales
+ * each axis by its size ratio. */
+static inline struct ssg_projection ssg_projection_scaled(const struct ssg_projection *p,
+                                                          int frame_w, int frame_h, int w,
+                                                          int h)
+{
+    struct ssg_projection q = *p;
+    if (w == frame_w && h == frame_h)
+        return q;
+    int k = w > 0 ? (frame_w + w - 1) / w : 1;
+    if (k > 1 && (frame_w + k - 1) / k == w && (frame_h + k - 1) / k == h) {
+        q.f = p->f / (float)k;
+        q.cx = p->cx / (float)k;
+        q.cy = p->cy / (float)k;
+        return q;
+    }
+    q.f = p->f * (float)h / (float)frame_h;
+    q.cx = p->cx * (float)w / (float)frame_w;
+    q.cy = p->cy * (float)h / (float)frame_h;
+    return q;
+}
+
 /* Reports a node's run-time error as "<node> '<instance>': <what>" (no file location:
  * graph-level problems were reported with one before the run) and returns code. */
 enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,

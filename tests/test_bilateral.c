@@ -1,7 +1,10 @@
 /* test_bilateral.c - the `bilateral` node: constants stay constant, the weights are the
  * documented ones, depth steps and normal creases are not blurred across, background
  * passes through untouched, noise on a flat region drops by the factor its spatial
- * weights predict, and the result does not depend on the thread count. */
+ * weights predict, and the result does not depend on the thread count. The separable
+ * form (separable=true) matches the documented two 1D passes, equals the full filter where
+ * the weights factor, stays within the bound its weights give on a tilted noisy plane,
+ * keeps depth steps and is deterministic. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -312,6 +315,237 @@ static void test_threads(void)
     release(&im);
 }
 
+/* --- separable form (Belonogov eq. 4.6, 4.7) --- */
+
+/* Depth d(x, y) = d0 + a x + b y, values 0.5 + 0.1 N(0, 1), normals all +z. */
+static struct images tilted_plane(int w, int h, double a, double b)
+{
+    struct images im = make(w, h, 1);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            size_t o = (size_t)y * (size_t)w + (size_t)x;
+            im.in->data[o] = (float)(0.5 + 0.1 * gaussian());
+            im.depth->data[o] = (float)(3.0 + a * x + b * y);
+            set_normal(im.normal, o, 0, 0, 1);
+        }
+    return im;
+}
+
+/* The weight of tap q seen from centre c without the normal term (normals are equal). */
+static double weight(const struct images *im, size_t c, size_t q, double dist2, double sigma_s,
+                     double sigma_d)
+{
+    double dc = im->depth->data[c], dd = (double)im->depth->data[q] - dc;
+    return exp(-dist2 / (2 * sigma_s * sigma_s)) * exp(-0.5 * pow(dd / (sigma_d * dc), 2));
+}
+
+/* The effective normalised weights of both forms for pixel (x, y), size x size, in double:
+   full[t] = w(p, q) / sum w; sep[t] = v(dy) / V * h_row(dx) / H_row, the row pass centred
+   at (x, y + dy) and the column pass at p (Belonogov eq. 4.6, 4.7). Taps outside the image
+   get 0. */
+static void effective_weights(const struct images *im, int x, int y, int size, double sigma_s,
+                              double sigma_d, double *full, double *sep)
+{
+    const int r = size / 2, w = im->in->width, h = im->in->height;
+    double fsum = 0, vsum = 0, v[64];
+    size_t c = (size_t)y * (size_t)w + (size_t)x;
+    for (int dy = -r; dy <= r; dy++) {
+        int qy = y + dy;
+        v[dy + r] = 0;
+        if (qy < 0 || qy >= h) {
+            for (int dx = -r; dx <= r; dx++)
+                full[(dy + r) * size + dx + r] = sep[(dy + r) * size + dx + r] = 0;
+            continue;
+        }
+        size_t row_c = (size_t)qy * (size_t)w + (size_t)x;
+        v[dy + r] = weight(im, c, row_c, dy * dy, sigma_s, sigma_d);
+        vsum += v[dy + r];
+        double hsum = 0;
+        for (int dx = -r; dx <= r; dx++) {
+            int qx = x + dx;
+            double wf = 0, wh = 0;
+            if (qx >= 0 && qx < w) {
+                size_t q = (size_t)qy * (size_t)w + (size_t)qx;
+                wf = weight(im, c, q, dx * dx + dy * dy, sigma_s, sigma_d);
+                wh = weight(im, row_c, q, dx * dx, sigma_s, sigma_d);
+            }
+            full[(dy + r) * size + dx + r] = wf;
+            sep[(dy + r) * size + dx + r] = wh;
+            fsum += wf;
+            hsum += wh;
+        }
+        for (int dx = -r; dx <= r; dx++)
+            sep[(dy + r) * size + dx + r] *= v[dy + r] / hsum;
+    }
+    for (int t = 0; t < size * size; t++) {
+        full[t] /= fsum;
+        sep[t] /= vsum;
+    }
+}
+
+/* Where the depth varies along x only and the normals are equal, every row pass has the
+   same weights as the matching row of the full window, so the two forms are the same
+   weighted mean (the spatial Gaussian factors exactly, and image borders clip both to
+   the same rectangle): they agree to float rounding and the polynomial exp (a few 1e-7
+   relative per weight; 1e-5 on values within 0.5 +- 0.6). Sizes 11, 21 and the maximum
+   63. */
+static void test_separable_exact(void)
+{
+    enum { WS = 80, HS = 70 };
+    struct images im = tilted_plane(WS, HS, 0.02, 0.0);
+    static const char *const sizes[] = {"size=11", "size=21", "size=63"};
+    for (int k = 0; k < 3; k++) {
+        const char *full_sets[] = {sizes[k]};
+        const char *sep_sets[] = {sizes[k], "separable=true"};
+        struct ssg_image *full = filter(&im, 1, full_sets, 1);
+        struct ssg_image *sep = filter(&im, 1, sep_sets, 2);
+        if (full && sep) {
+            double worst = 0;
+            for (size_t o = 0; o < (size_t)WS * HS; o++)
+                worst = fmax(worst, fabs(full->data[o] - sep->data[o]));
+            CHECK(worst < 1e-5);
+        }
+        ssg_image_destroy(&full);
+        ssg_image_destroy(&sep);
+    }
+    release(&im);
+}
+
+/* A plane tilted in x and y with noise: the depth Gaussian has a cross term in dx dy that
+   no product of 1D weights holds, and each row pass is normalised on its own, so the forms
+   differ. Both node outputs must match their formulas evaluated in double (1e-5, as
+   above); and since both are normalised means of the same values, sep - full =
+   sum (u_q - w_q)(x_q - full), bounded by eps max_q |x_q - full| with eps the largest
+   relative difference |u_q / w_q - 1| of the two effective weights at that pixel. That
+   bound (plus the 2e-5 rounding of the two outputs) is the stated tolerance. */
+static void test_separable_tilt(void)
+{
+    enum { WS = 40, HS = 36, SIZE = 11, R = SIZE / 2 };
+    const double sigma_s = SIZE / 3.0, sigma_d = 0.05;
+    struct images im = tilted_plane(WS, HS, 0.012, 0.008);
+    const char *full_sets[] = {"size=11"};
+    const char *sep_sets[] = {"size=11", "separable=true"};
+    struct ssg_image *full = filter(&im, 0, full_sets, 1);
+    struct ssg_image *sep = filter(&im, 0, sep_sets, 2);
+    if (full && sep) {
+        double err_full = 0, err_sep = 0, excess = -INFINITY, worst_diff = 0;
+        double wf[SIZE * SIZE], ws[SIZE * SIZE];
+        for (int y = 0; y < HS; y++)
+            for (int x = 0; x < WS; x++) {
+                effective_weights(&im, x, y, SIZE, sigma_s, sigma_d, wf, ws);
+                double rf = 0, rs = 0, eps = 0;
+                for (int t = 0; t < SIZE * SIZE; t++) {
+                    int qx = x + t % SIZE - R, qy = y + t / SIZE - R;
+                    if (qx < 0 || qx >= WS || qy < 0 || qy >= HS)
+                        continue;
+                    double v = im.in->data[(size_t)qy * WS + (size_t)qx];
+                    rf += wf[t] * v;
+                    rs += ws[t] * v;
+                    eps = fmax(eps, fabs(ws[t] / wf[t] - 1));
+                }
+                double spread = 0;
+                for (int t = 0; t < SIZE * SIZE; t++) {
+                    int qx = x + t % SIZE - R, qy = y + t / SIZE - R;
+                    if (qx >= 0 && qx < WS && qy >= 0 && qy < HS)
+                        spread = fmax(spread,
+                                      fabs(im.in->data[(size_t)qy * WS + (size_t)qx] - rf));
+                }
+                size_t o = (size_t)y * WS + (size_t)x;
+                double diff = fabs(sep->data[o] - full->data[o]);
+                err_full = fmax(err_full, fabs(full->data[o] - rf));
+                err_sep = fmax(err_sep, fabs(sep->data[o] - rs));
+                excess = fmax(excess, diff - (eps * spread + 2e-5));
+                worst_diff = fmax(worst_diff, diff);
+            }
+        CHECK(err_full < 1e-5);
+        CHECK(err_sep < 1e-5);
+        CHECK(excess <= 0);
+        CHECK(worst_diff > 1e-4); /* the forms really differ here: the test can tell */
+        if (getenv("BILATERAL_DEBUG"))
+            fprintf(stderr, "tilt: full err %.2g, sep err %.2g, max |sep - full| %.4f, "
+                    "excess over bound %.4f\n", err_full, err_sep, worst_diff, excess);
+    }
+    ssg_image_destroy(&full);
+    ssg_image_destroy(&sep);
+    release(&im);
+}
+
+/* A near square (depth 1, value 0) in the top-left quarter of a far plane (depth 2,
+   value 1): edges along both axes, so both passes meet one. Weights across are exp(-200)
+   (seen from the near side) and exp(-50) (from the far side) times a spatial weight
+   <= 1, so nothing crosses: values move only by the rounding of 441-term float sums of
+   values up to 2 (a few 1e-6; tolerance 1e-5, where a crossing moves them by 0.1 and
+   more), in either form. */
+static void test_separable_step(void)
+{
+    enum { WS = 40, HS = 32 };
+    struct images im = make(WS, HS, 3);
+    for (int y = 0; y < HS; y++)
+        for (int x = 0; x < WS; x++) {
+            size_t o = (size_t)y * WS + (size_t)x;
+            int near = x < WS / 2 && y < HS / 2;
+            for (int c = 0; c < 3; c++)
+                im.in->data[(size_t)c * WS * HS + o] = near ? 0.0f : 1.0f + 0.5f * c;
+            im.depth->data[o] = near ? 1.0f : 2.0f;
+            set_normal(im.normal, o, 0, 0, 1);
+        }
+    const char *full_sets[] = {"size=21"};
+    const char *sep_sets[] = {"size=21", "separable=true"};
+    struct ssg_image *full = filter(&im, 1, full_sets, 1);
+    struct ssg_image *sep = filter(&im, 1, sep_sets, 2);
+    if (full && sep) {
+        double worst_full = 0, worst_sep = 0;
+        for (size_t o = 0; o < (size_t)3 * WS * HS; o++) {
+            worst_full = fmax(worst_full, fabs(full->data[o] - im.in->data[o]));
+            worst_sep = fmax(worst_sep, fabs(sep->data[o] - im.in->data[o]));
+        }
+        if (getenv("BILATERAL_DEBUG"))
+            fprintf(stderr, "step: full %.3g, sep %.3g\n", worst_full, worst_sep);
+        CHECK(worst_full < 1e-5);
+        CHECK(worst_sep < 1e-5);
+    }
+    /* Without the depth term it does blur across, in the separable form too. */
+    const char *loose[] = {"size=21", "separable=true", "sigma_depth=1000"};
+    struct ssg_image *blur = filter(&im, 1, loose, 3);
+    if (blur)
+        CHECK(blur->data[(size_t)(HS / 4) * WS + WS / 2 - 1] > 0.1f);
+    ssg_image_destroy(&full);
+    ssg_image_destroy(&sep);
+    ssg_image_destroy(&blur);
+    release(&im);
+}
+
+/* Background passes through the separable form too, and 1 and 2 threads give the same
+   bits (size 21, 3 channels, random depths and normals, some background). */
+static void test_separable_threads(void)
+{
+    enum { WS = 131, HS = 67 };
+    struct images im = make(WS, HS, 3);
+    for (size_t o = 0; o < (size_t)WS * HS; o++) {
+        for (int c = 0; c < 3; c++)
+            im.in->data[(size_t)c * WS * HS + o] = (float)uniform01();
+        im.depth->data[o] = o % 13 == 0 ? 0.0f : (float)(1.0 + 0.2 * uniform01());
+        set_normal(im.normal, o, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    const char *sets[] = {"size=21", "separable=true"};
+    omp_set_num_threads(1);
+    struct ssg_image *one = filter(&im, 1, sets, 2);
+    omp_set_num_threads(2);
+    struct ssg_image *two = filter(&im, 1, sets, 2);
+    if (one && two) {
+        CHECK(memcmp(one->data, two->data, sizeof(float) * 3 * WS * HS) == 0);
+        double worst = 0;
+        for (size_t o = 0; o < (size_t)WS * HS; o += 13)
+            for (int c = 0; c < 3; c++)
+                worst = fmax(worst, fabs(one->data[(size_t)c * WS * HS + o] -
+                                         im.in->data[(size_t)c * WS * HS + o]));
+        CHECK(worst == 0); /* background: passed through untouched */
+    }
+    ssg_image_destroy(&one);
+    ssg_image_destroy(&two);
+    release(&im);
+}
+
 static void test_rejects(void)
 {
     struct images im = make(8, 8, 1);
@@ -336,6 +570,10 @@ int main(void)
     test_background();
     test_noise();
     test_threads();
+    test_separable_exact();
+    test_separable_tilt();
+    test_separable_step();
+    test_separable_threads();
     test_rejects();
     return check_report();
 }

@@ -22,7 +22,7 @@ expect_exit 2 "unknown option '--frob'" "$BIN" run graphs/ssao.graph --frob 1
     || fail "docs/nodes.md is stale: run '$BIN docs > docs/nodes.md' ($(head -c 300 "$TMP/docs.diff"))"
 
 # --- every graph runs end to end, and check agrees ---
-for graph in graphs/*.graph; do
+for graph in graphs/*.graph graphs/*/*.graph; do
     name=$(basename "$graph" .graph)
     expect_exit 0 "ok" "$BIN" check "$graph"
     out="$TMP/e2e_$name"

@@ -354,7 +354,7 @@ static void light_run(double lz, double m[2])
     CHECK_EQ(ssg_node_run("halton", NULL, 0, hsets, 2, &hf, &hal, &d), SSG_OK);
     void *sc_ = calloc(1, ssg_node_ssdo.consts_size), *sp = calloc(1, ssg_node_ssdo.params_size);
     ssg_params_defaults(ssg_node_ssdo.params, sp);
-    const struct ssg_image *in[7] = {gb[0], gb[1], hal.images[0], NULL, gb[2], gb[3], gb[4]};
+    const struct ssg_image *in[8] = {gb[0], gb[1], hal.images[0], NULL, gb[2], gb[3], gb[4], NULL};
     struct ssg_io io = {.in = in, .out = out};
     CHECK_EQ(ssg_node_ssdo.prepare(&ctx, sp, sc_), SSG_OK);
     CHECK_EQ(ssg_node_ssdo.run_cpu(&ctx, sc_, &io), SSG_OK);

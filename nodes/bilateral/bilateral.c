@@ -6,9 +6,10 @@
  * 3D, so the filter is "a modified bilateral filtering on the base of normals and depth
  * value". Belonogov, "Global Illumination methods in simulated VR environments", section
  * 4.3.2, eq. 4.5 (Tomasi and Manduchi's bilateral filter with the range term taken on depth
- * instead of intensity). Both papers then split it into a horizontal and a vertical pass;
- * we keep the exact, non-separable 2D form (Belonogov notes the separation is only an
- * approximation): out(p) = sum_q w(p,q) in(q) / sum_q w(p,q) over a size x size window,
+ * instead of intensity). Both papers then split it into a horizontal and a vertical pass
+ * (Szentandrasi after Reinbothe et al., Hybrid Ambient Occlusion; Belonogov eq. 4.6, 4.7);
+ * the default is the exact, non-separable 2D form (Belonogov notes the separation is only
+ * an approximation): out(p) = sum_q w(p,q) in(q) / sum_q w(p,q) over a size x size window,
  *   w = exp(-|p-q|^2 / (2 sigma_s^2)) * exp(-(d_q - d_p)^2 / (2 (sigma_d d_p)^2))
  *       * max(0, n_p . n_q)^normal_power.
  * The depth term is relative to the centre depth d_p, so a given sigma_depth means the same
@@ -17,7 +18,13 @@
  * contribute nor are filtered: they pass through unchanged.
  * sigma_spatial defaults to size / 3: the window is meant to average away the tiled
  * rotation noise of `ssao`, so the weights stay broad across it (about 0.41 at the window's
- * edge) rather than a narrow Gaussian that would waste most of the window. */
+ * edge) rather than a narrow Gaussian that would waste most of the window.
+ * separable = 1 runs that formula over a 1 x size row, then over a size x 1 column of the
+ * row pass's result, each pass weighing against its own centre pixel's depth and normal:
+ * O(size) instead of O(size^2) per pixel. The spatial Gaussian factors exactly; where the
+ * depth varies along one axis only (and normals are constant) so does everything else and
+ * the two forms agree; elsewhere the row normalisation and the cross term of the depth
+ * Gaussian make the difference, small on smooth surfaces (tests/test_bilateral.c). */
 #include <math.h>
 #include <stdio.h>
 
@@ -63,6 +70,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->depth_scale = 1.0f / p->sigma_depth;
     c->normal_power = p->normal_power;
     c->normal_min = p->normal_power > 0 ? (float)pow(1e-30, 1.0 / p->normal_power) : 0.0f;
+    c->separable = p->separable;
     float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
     float k = -0.5f / (sigma * sigma);
     for (int dy = -c->radius; dy <= c->radius; dy++)
@@ -85,6 +93,9 @@ static const struct ssg_param_desc params[] = {
     {.name = "normal_power", .type = SSG_P_INT,
      .offset = offsetof(struct ssg_bilateral_params, normal_power), .def = 16, .min = 0,
      .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"},
+    {.name = "separable", .type = SSG_P_BOOL,
+     .offset = offsetof(struct ssg_bilateral_params, separable), .def = 0,
+     .help = "horizontal then vertical pass: O(size) per pixel, an approximation"},
 };
 
 static const struct ssg_port_desc inputs[] = {
@@ -101,14 +112,18 @@ static const struct ssg_port_desc outputs[] = {
 
 const struct ssg_node_desc ssg_node_bilateral = {
     .name = "bilateral",
-    .summary = "geometry-aware bilateral filter (depth and normal weights, full 2D window)",
+    .summary = "geometry-aware bilateral filter (depth and normal weights, full 2D window "
+               "or separable)",
     .method = "Szentandrasi, Modern Methods of Realistic Lighting in Real Time, sec. 4.1 "
-              "(geometry-aware bilateral filtering); Belonogov, Global Illumination methods "
-              "in simulated VR environments, sec. 4.3.2, eq. 4.5 with a depth range term",
+              "(geometry-aware bilateral filtering, separated as in Reinbothe et al.); "
+              "Belonogov, Global Illumination methods in simulated VR environments, sec. "
+              "4.3.2, eq. 4.5 with a depth range term, separable form eq. 4.6 and 4.7",
     .doc = "Weighted mean over a size x size window: spatial Gaussian (sigma_spatial px), "
            "relative depth Gaussian exp(-0.5 (dd / (sigma_depth d))^2) and normal weight "
-           "max(0, n.n')^normal_power, normalised. The exact 2D filter, not the separable "
-           "approximation. Background pixels (depth 0) pass through and are never used.",
+           "max(0, n.n')^normal_power, normalised. By default the exact 2D filter; separable=true "
+           "runs the same weights over a row, then over a column of the row pass's result "
+           "(the documents' approximation, O(size) per pixel). Background pixels (depth 0) "
+           "pass through and are never used.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

@@ -16,6 +16,7 @@ struct ssg_bilateral_params {
     float sigma_spatial; /* px; 0 = size / 3; default 0 */
     float sigma_depth;   /* depth difference as a fraction of the centre depth; 0.05 */
     int normal_power;    /* p of max(0, n.n')^p, 0..127, 0 = no normal term; default 16 */
+    int separable;       /* 1 = horizontal then vertical pass (approximation); default 0 */
 };
 
 struct ssg_bilateral_consts {
@@ -24,6 +25,7 @@ struct ssg_bilateral_consts {
     float depth_scale;   /* 1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2 */
     int normal_power;    /* as in the parameters */
     float normal_min;    /* normal cosines below this weigh c^p < 1e-30 and count as 0 */
+    int separable;       /* as in the parameters */
     /* ln of the spatial Gaussian weight, -0.5 (dx^2 + dy^2) / sigma_spatial^2, for
        dy, dx in [-radius, radius]: row (dy + radius) * size + dx + radius. Logarithms, so
        that the three weights multiply by adding exponents and one exp() does it all. */

@@ -7,9 +7,12 @@
  * the sum order per pixel is fixed whatever the threads. The three weights multiply by
  * adding their logarithms (spatial from prepare, depth, p * ln(n.n')) and taking one
  * exp(); exp and ln are small polynomial versions that vectorise (libm's do not without
- * -ffast-math), accurate to a few 1e-7 relative. */
+ * -ffast-math), accurate to a few 1e-7 relative (bilateral_math.h).
+ * The separable form runs the same loops twice with a one-row, then a one-column window
+ * (run_separable): 2 size taps per pixel instead of size^2. */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "bilateral.h"
@@ -21,6 +24,8 @@
 #pragma GCC optimize("no-trapping-math")
 #endif
 
+#include "bilateral_math.h"
+
 enum { CHUNK = 256, ROWS_PER_BAND = 4 };
 
 struct job {
@@ -31,6 +36,8 @@ struct job {
     const float *nrm[3];   /* NULL when there is no normal term */
     float *out[3];
     int w, h;
+    int rx, ry;            /* half-widths of the window walked: radius, or 0 on the axis a
+                              separable pass does not cover */
 };
 
 /* Per-pixel values of one chunk, structure of arrays. */
@@ -42,59 +49,30 @@ struct chunk {
     float wsum[CHUNK];                  /* sum of weights */
 };
 
-/* e^x for x <= 0, clamped at -80 (weights below 1.8e-35 are 0 for every purpose and stay
-   normal floats). x = k ln2 + g with |g| <= ln2 / 2; e^g by its Taylor series to g^6
-   (error below 1.3e-7 relative), 2^k by building the float's exponent bits. */
-static inline float exp_neg(float x)
-{
-    x = x < -80.0f ? -80.0f : x;
-    float t = x * 1.44269504088896341f;
-    float k = floorf(t + 0.5f);
-    float g = (t - k) * 0.693147180559945309f;
-    float p = 1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f +
-              g * (1.0f / 120.0f + g * (1.0f / 720.0f))))));
-    int32_t bits = ((int32_t)k + 127) << 23;
-    float scale;
-    memcpy(&scale, &bits, sizeof scale);
-    return p * scale;
-}
-
-/* ln(c) for a positive normal float: c = 2^e m with m in [sqrt(1/2), sqrt(2)), and
-   ln m = 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.172, by its series to s^9. */
-static inline float log_pos(float c)
-{
-    int32_t bits;
-    memcpy(&bits, &c, sizeof bits);
-    int32_t e = (bits >> 23) - 127;
-    int32_t mbits = (bits & 0x007FFFFF) | 0x3F800000;
-    float m;
-    memcpy(&m, &mbits, sizeof m);
-    int big = m > 1.41421356f;
-    m = big ? 0.5f * m : m;
-    e = big ? e + 1 : e;
-    float s = (m - 1.0f) / (m + 1.0f), s2 = s * s;
-    float lm = 2.0f * s * (1.0f + s2 * (1.0f / 3.0f + s2 * (1.0f / 5.0f + s2 * (1.0f / 7.0f +
-               s2 * (1.0f / 9.0f)))));
-    return (float)e * 0.693147180559945309f + lm;
-}
-
+/* Two straight loops (the normal one only with a normal input) rather than one with a
+   test inside: both vectorise. */
 static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    const float *restrict depth = j->depth + o;
+    const float scale = j->c->depth_scale;
     for (int i = 0; i < len; i++) {
-        float d = j->depth[o + (size_t)i];
+        float d = depth[i];
         k->dc[i] = d;
-        k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
+        k->kd[i] = d > 0.0f ? scale / d : 0.0f;
         k->wsum[i] = 0.0f;
         for (int ch = 0; ch < 3; ch++)
             k->acc[ch][i] = 0.0f;
         k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
-        if (j->nrm[0]) {
-            float nx = j->nrm[0][o + (size_t)i], ny = j->nrm[1][o + (size_t)i];
-            float nz = j->nrm[2][o + (size_t)i], nn = nx * nx + ny * ny + nz * nz;
-            float inv = nn > 0.0f ? 1.0f / sqrtf(nn) : 0.0f;
-            k->nx[i] = nx * inv, k->ny[i] = ny * inv, k->nz[i] = nz * inv;
-        }
+    }
+    if (!j->nrm[0])
+        return;
+    const float *restrict n0 = j->nrm[0] + o, *restrict n1 = j->nrm[1] + o;
+    const float *restrict n2 = j->nrm[2] + o;
+    for (int i = 0; i < len; i++) {
+        float nx = n0[i], ny = n1[i], nz = n2[i], nn = nx * nx + ny * ny + nz * nz;
+        float inv = nn > 0.0f ? 1.0f / sqrtf(nn) : 0.0f;
+        k->nx[i] = nx * inv, k->ny[i] = ny * inv, k->nz[i] = nz * inv;
     }
 }
 
@@ -146,16 +124,17 @@ add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1,
     }
 }
 
-/* All taps of the window for one chunk row, in a fixed order. */
+/* All taps of the window for one chunk row, in a fixed order: dy in [-ry, ry], dx in
+   [-rx, rx]. The full filter has rx = ry = radius; the separable passes one of them 0. */
 static inline __attribute__((always_inline)) void
 taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels, int mode)
 {
-    const int r = j->c->radius, size = j->c->size;
-    for (int dy = -r; dy <= r; dy++) {
+    const int r = j->c->radius, size = j->c->size, rx = j->rx, ry = j->ry;
+    for (int dy = -ry; dy <= ry; dy++) {
         int qy = y + dy;
         if (qy < 0 || qy >= j->h)
             continue;
-        for (int dx = -r; dx <= r; dx++) {
+        for (int dx = -rx; dx <= rx; dx++) {
             /* Chunk pixels whose neighbour x0 + i + dx lies inside the row. */
             int i0 = -dx - x0 > 0 ? -dx - x0 : 0;
             int i1 = j->w - dx - x0 < len ? j->w - dx - x0 : len;
@@ -235,6 +214,32 @@ static void band(void *user, int y0, int y1)
         }
 }
 
+/* The separable approximation (Belonogov eq. 4.6 and 4.7): a horizontal pass into a
+   scratch image, then a vertical pass over it, each with the same weights as the full
+   filter restricted to its axis (the spatial Gaussian factors exactly; the depth and
+   normal terms are taken against each pass's own centre pixel). Each pass is the full
+   kernel with a one-row or one-column window, so it shares its vectorised loops, and the
+   second pass starts only when the first has finished every band. */
+static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
+{
+    size_t plane = (size_t)j->w * (size_t)j->h;
+    float *tmp = malloc(sizeof(float) * plane * (size_t)j->channels);
+    if (!tmp)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "bilateral", "out of memory for the "
+                             "separable pass");
+    struct job h = *j, v = *j;
+    h.ry = 0;
+    v.rx = 0;
+    for (int ch = 0; ch < j->channels; ch++) {
+        h.out[ch] = tmp + (size_t)ch * plane;
+        v.in[ch] = tmp + (size_t)ch * plane;
+    }
+    ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &h);
+    ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &v);
+    free(tmp);
+    return SSG_OK;
+}
+
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io)
 {
@@ -251,14 +256,18 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
                              "normal must be 3-channel, the size of in");
     if (!ssg_image_is(io->out[0], in->width, in->height, in->channels))
         return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "output must have the shape of in");
-    struct job j = {.c = consts, .channels = in->channels, .depth = dep->data,
-                    .w = in->width, .h = in->height};
+    const struct ssg_bilateral_consts *c = consts;
+    struct job j = {.c = c, .channels = in->channels, .depth = dep->data, .w = in->width,
+                    .h = in->height, .rx = c->radius, .ry = c->radius};
     for (int ch = 0; ch < in->channels; ch++) {
         j.in[ch] = ssg_image_plane(in, ch);
         j.out[ch] = ssg_image_plane(io->out[0], ch);
     }
     for (int ch = 0; nrm && ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
-    return SSG_OK;
+    if (!c->separable) {
+        ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+        return SSG_OK;
+    }
+    return run_separable(ctx, &j);
 }

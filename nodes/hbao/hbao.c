@@ -59,11 +59,66 @@
  * angle bias against the self-occlusion of tessellated or noisy surfaces; 0.1 rad ~
  * 5.7 degrees; t + bias beyond pi/2 means no occlusion in that slice).
  * out = clamp(1 - strength * mean over directions of the accumulated terms, 0, 1);
- * background pixels (depth 0 or no normal) get 1. */
+ * background pixels (depth 0 or no normal) get 1.
+ *
+ * Per-pixel counts (optional `count` input; Szentandrasi section 4.3, the `complexity`
+ * node): hbao has no sample kernel, so the count is the number of DIRECTIONS pixel i uses:
+ * n_i = round(count_i) (half up) clamped to [1, directions] (NaN = all), and the mean is
+ * over those n_i. The directions are taken in an order whose prefixes spread round the
+ * circle: with an even number the opposite pairs (k, k + directions/2) stay together
+ * (ranks 2r, 2r + 1) and the pairs are ordered by farthest-point insertion on the half
+ * circle (each next pair the one farthest in angle from those before, ties to the
+ * lowest k); with an odd number the directions themselves are ordered so on the full
+ * circle. For directions = 2^m every prefix of 2^j directions is exactly the set of
+ * directions = 2^j (angles 2 pi k / 2^j, summed in the same order): counts 1, 2, 4, 8 of
+ * 8 directions give the bits of directions = 1, 2, 4, 8. Other counts use a prefix that is
+ * as even as the order allows (3 of 8: 0, 180 and 90 degrees). Unconnected: all. */
 #include <math.h>
 #include <stdio.h>
 
 #include "hbao.h"
+
+/* Farthest-point order of m positions on a circle of m (distance min(|a - b|,
+   m - |a - b|)), starting at 0, ties to the lowest index: order[r] is the r-th. */
+static void spread_order(int m, int *order)
+{
+    int used[SSG_HBAO_MAX_DIRECTIONS] = {0};
+    order[0] = 0;
+    used[0] = 1;
+    for (int r = 1; r < m; r++) {
+        int best = -1, best_dist = -1;
+        for (int k = 0; k < m; k++) {
+            int dist = m;
+            for (int q = 0; !used[k] && q < r; q++) {
+                int d = k > order[q] ? k - order[q] : order[q] - k;
+                d = d < m - d ? d : m - d;
+                dist = d < dist ? d : dist;
+            }
+            if (!used[k] && dist > best_dist)
+                best = k, best_dist = dist;
+        }
+        order[r] = best;
+        used[best] = 1;
+    }
+}
+
+/* dir_rank of the consts (file header): pairs ranked on the half circle, or directions
+   on the whole circle when their number is odd. */
+static void rank_directions(int nd, int *rank)
+{
+    int order[SSG_HBAO_MAX_DIRECTIONS];
+    if (nd % 2 == 0) {
+        spread_order(nd / 2, order);
+        for (int r = 0; r < nd / 2; r++) {
+            rank[order[r]] = 2 * r;
+            rank[order[r] + nd / 2] = 2 * r + 1;
+        }
+    } else {
+        spread_order(nd, order);
+        for (int r = 0; r < nd; r++)
+            rank[order[r]] = r;
+    }
+}
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
@@ -78,6 +133,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
     if (e)
         return e;
+    const struct ssg_shape *cnt = &in[SSG_HBAO_IN_COUNT];
+    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
+        snprintf(why, why_len, "count must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;
@@ -111,6 +171,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         c->dir_cos[k] = (float)cos(a);
         c->dir_sin[k] = (float)sin(a);
     }
+    rank_directions(c->p.directions, c->dir_rank);
     return SSG_OK;
 }
 
@@ -151,6 +212,9 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
     {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "linear depth the points are reconstructed from; none = -position.z"},
+    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
+            "none = all"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -171,7 +235,10 @@ const struct ssg_node_desc ssg_node_hbao = {
            "tangent's elevation t + `bias`) adds (sin h_j - sin h_{j-1}) W(r_j), W = "
            "1 - r/R (falloff linear) or 1 (none: the slice adds sin h - sin(t + bias)). "
            "out = clamp(1 - strength * mean over slices, 0, 1); background pixels are 1. "
-           "A flat open plane gives exactly 1.",
+           "A flat open plane gives exactly 1. With the count input a pixel uses only its "
+           "first round(count) directions (clamped to [1, directions]) in an order whose "
+           "prefixes spread round the circle (for 8: 0, 180, 90, 270, 45, ... degrees) and "
+           "averages over those.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

@@ -10,7 +10,8 @@
 #define SSG_HBAO_MAX_STEPS 64
 
 /* Input ports, in order. */
-enum { SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL, SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH };
+enum { SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL, SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH,
+       SSG_HBAO_IN_COUNT };
 
 enum ssg_hbao_falloff {
     SSG_HBAO_FALLOFF_LINEAR, /* W = max(0, 1 - r / R) (Belonogov eq. 3.2) */
@@ -38,6 +39,8 @@ struct ssg_hbao_consts {
     float cos_bias, sin_bias;    /* of p.bias */
     float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
     float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
+    int dir_rank[SSG_HBAO_MAX_DIRECTIONS];  /* place of direction k in the order the count
+                                               input takes directions in (hbao.c) */
 };
 
 enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

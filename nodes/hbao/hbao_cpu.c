@@ -23,6 +23,12 @@
  *   and the border hold +inf: samples off screen are clamped into the border, and an
  *   infinite depth makes q inf or NaN, which fails q <= R^2: no other test is needed.
  * - The march is not normalised per direction (setup_direction).
+ * Per-pixel counts of directions (the `count` input, hbao.c): a chunk marches only the
+ * directions some lane needs; a lane's direction past its count starts with its horizon
+ * at +inf, so no sample raises it (no term in the linear falloff), and finish_direction
+ * adds 0 for it. Adding 0 leaves a sum's bits unchanged, and the division is by n_i,
+ * so count = directions gives the bits of the path without the input, which stays as it
+ * was (`counted` is a constant at each call site).
  * Bands of 32 rows go to ssg_parallel_rows, chunk columns outside and rows inside, so the
  * depth window around a chunk (the march reaches ~150-300 px at 1080p, more than L2
  * holds) slides down one row at a time: taller bands refill it from L3 less often. Each
@@ -66,6 +72,7 @@ struct job {
     int n;                /* tile side; 1 without a pattern */
     const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (it does not
                                depend on the row) */
+    const float *cnt;     /* per-pixel direction counts, NULL = all directions */
     float *out;
     int w, h;
     float f, cx, cy;      /* projection of this resolution */
@@ -94,6 +101,7 @@ struct chunk {
     int32_t fg[CHUNK];                     /* by column: 1 = surface, 0 = background */
     int32_t xs[CHUNK];                     /* column within the chunk of each lane */
     float occ[CHUNK];                      /* sum of horizon terms over directions */
+    int32_t cnt[CHUNK];                    /* count input: directions n_i of the lane */
     /* per direction (pair) */
     float du[CHUNK], dv[CHUNK];            /* screen step of D, px per step */
     float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f, M = V x D: H.M = dq c,
@@ -399,40 +407,82 @@ horizon_step(const struct job *j, struct chunk *restrict k, int len, int pair, i
    exactly 0 when no sample rose above the tangent (then bv = sin(t + bias) and
    r = sqrt(1) = 1). */
 static inline __attribute__((always_inline)) void
-finish_direction(struct chunk *restrict k, int len, int m)
+finish_direction(struct chunk *restrict k, int len, int m, int counted, int rank)
 {
     for (int i = 0; i < len; i++) {
         float g = k->bv[m][i] / sqrtf(k->bq[m][i]) - k->sin_tb[m][i];
-        k->occ[i] += g > 0.0f ? g : 0.0f;
+        int add = g > 0.0f;
+        if (counted)
+            add &= rank < k->cnt[i]; /* a direction past the count: its bv is +inf */
+        k->occ[i] += add ? g : 0.0f;
     }
+}
+
+/* Count input: member m's direction (place `rank` in the order of hbao.c) is beyond the
+   lanes' counts where rank >= n_i; there its horizon starts at +inf, which no sample
+   rises above (the comparisons of horizon_one are false for it, and its gain is selected
+   away). */
+static inline __attribute__((always_inline)) void
+mask_direction(struct chunk *restrict k, int len, int m, int rank)
+{
+    for (int i = 0; i < len; i++)
+        k->bv[m][i] = rank < k->cnt[i] ? k->bv[m][i] : INFINITY;
+}
+
+/* The count input for the chunk's m surface lanes (columns xs): n_i = round(count) (half
+   up) clamped to [1, directions], NaN = all. Returns the largest (at least 1). */
+static int load_counts(const struct job *j, struct chunk *restrict k, int y, int x0, int m)
+{
+    const float *c = j->cnt + (size_t)y * (size_t)j->w + (size_t)x0;
+    const int nd = j->c->p.directions;
+    const float fmax = (float)nd;
+    int most = 1;
+    for (int i = 0; i < m; i++) {
+        float v = c[k->xs[i]];
+        v = v < 1.0f ? 1.0f : v;
+        v = v <= fmax ? v : fmax; /* NaN fails both compares above: all */
+        int n = (int)(v + 0.5f);
+        n = n < nd ? n : nd;
+        k->cnt[i] = n;
+        most = n > most ? n : most;
+    }
+    return most;
 }
 
 /* One slice direction, or an opposite pair of them. `pair` and `linear` are constants
    at each call site, so each variant is its own straight code. */
 static inline __attribute__((always_inline)) void
 march(const struct job *j, struct chunk *restrict k, int len, float y, int d, int pair,
-      int linear)
+      int linear, int counted)
 {
     const struct ssg_hbao_consts *c = j->c;
+    const int r0 = c->dir_rank[d], r1 = pair ? c->dir_rank[d + c->p.directions / 2] : 0;
     setup_direction(j, k, len, c->dir_cos[d], c->dir_sin[d], linear);
+    if (counted)
+        mask_direction(k, len, 0, r0);
+    if (counted && pair)
+        mask_direction(k, len, 1, r1);
     for (int s = 0; s < c->p.steps; s++) {
         place_step(j, k, len, pair, y, (float)s);
         horizon_step(j, k, len, pair, linear);
     }
     if (!linear)
-        finish_direction(k, len, 0);
+        finish_direction(k, len, 0, counted, r0);
     if (!linear && pair)
-        finish_direction(k, len, 1);
+        finish_direction(k, len, 1, counted, r1);
 }
 
 static inline __attribute__((always_inline)) void
-finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m, float *out)
+finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m, float *out,
+             int counted)
 {
-    const float scale = j->c->p.strength / (float)j->c->p.directions;
+    const float strength = j->c->p.strength;
+    const float scale = strength / (float)j->c->p.directions;
     for (int i = 0; i < len; i++)
         out[i] = 1.0f;
     for (int i = 0; i < m; i++) {
-        float v = 1.0f - k->occ[i] * scale;
+        float sc = counted ? strength / (float)k->cnt[i] : scale;
+        float v = 1.0f - k->occ[i] * sc;
         v = v > 0.0f ? v : 0.0f;
         out[k->xs[i]] = v < 1.0f ? v : 1.0f;
     }
@@ -443,28 +493,45 @@ finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m
    enable it, and C11 mode does not contract), so both versions give the same bits.
    With an even number of directions, k and k + directions / 2 are opposite (theta + pi)
    and go as pairs; their terms are added in the order k, k + directions / 2. */
+static inline __attribute__((always_inline)) void
+chunk_body(const struct job *j, struct chunk *k, int y, int x0, int len, int counted)
+{
+    const int nd = j->c->p.directions;
+    const int linear = j->c->p.falloff == SSG_HBAO_FALLOFF_LINEAR;
+    const int *rank = j->c->dir_rank;
+    const int m = load_chunk(j, k, y, x0, len);
+    /* With counts, directions (pairs: both members) beyond every lane's count are
+       skipped; a skipped one adds nothing to any lane anyway. */
+    const int most = counted ? load_counts(j, k, y, x0, m) : nd;
+    setup_chunk(j, k, y, x0, m);
+    for (int d = 0; nd % 2 == 0 && d < nd / 2; d++) {
+        if (counted && rank[d] >= most && rank[d + nd / 2] >= most)
+            continue;
+        if (linear)
+            march(j, k, m, (float)y, d, 1, 1, counted);
+        else
+            march(j, k, m, (float)y, d, 1, 0, counted);
+    }
+    for (int d = 0; nd % 2 == 1 && d < nd; d++) {
+        if (counted && rank[d] >= most)
+            continue;
+        if (linear)
+            march(j, k, m, (float)y, d, 0, 1, counted);
+        else
+            march(j, k, m, (float)y, d, 0, 0, counted);
+    }
+    finish_chunk(j, k, len, m, j->out + (size_t)y * (size_t)j->w + (size_t)x0, counted);
+}
+
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
-    const int nd = j->c->p.directions;
-    const int linear = j->c->p.falloff == SSG_HBAO_FALLOFF_LINEAR;
-    const int m = load_chunk(j, k, y, x0, len);
-    setup_chunk(j, k, y, x0, m);
-    for (int d = 0; nd % 2 == 0 && d < nd / 2; d++) {
-        if (linear)
-            march(j, k, m, (float)y, d, 1, 1);
-        else
-            march(j, k, m, (float)y, d, 1, 0);
-    }
-    for (int d = 0; nd % 2 == 1 && d < nd; d++) {
-        if (linear)
-            march(j, k, m, (float)y, d, 0, 1);
-        else
-            march(j, k, m, (float)y, d, 0, 0);
-    }
-    finish_chunk(j, k, len, m, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
+    if (j->cnt)
+        chunk_body(j, k, y, x0, len, 1);
+    else
+        chunk_body(j, k, y, x0, len, 0);
 }
 
 /* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
@@ -496,6 +563,10 @@ static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ss
     if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
         return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
                              "depth must be 1-channel, the size of position");
+    if (io->in[SSG_HBAO_IN_COUNT] &&
+        !ssg_image_is(io->in[SSG_HBAO_IN_COUNT], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "count must be 1-channel, the size of position");
     if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
         return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
                              "output must be 1-channel, the size of position");
@@ -575,14 +646,17 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
     const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
     struct job j = {.c = c, .out = io->out[0]->data, .w = pos->width, .h = pos->height};
+    j.cnt = io->in[SSG_HBAO_IN_COUNT] ? io->in[SSG_HBAO_IN_COUNT]->data : NULL;
     for (int ch = 0; ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);
     j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
     j.depth_sign = dep ? 1.0f : -1.0f;
     /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    j.f = c->proj.f * (float)j.h / (float)c->frame_height;
-    j.cx = c->proj.cx * (float)j.w / (float)c->frame_width;
-    j.cy = c->proj.cy * (float)j.h / (float)c->frame_height;
+    struct ssg_projection sp =
+        ssg_projection_scaled(&c->proj, c->frame_width, c->frame_height, j.w, j.h);
+    j.f = sp.f;
+    j.cx = sp.cx;
+    j.cy = sp.cy;
     float *tables = unroll_pattern(rot, j.w, &j);
     if (!tables)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao",

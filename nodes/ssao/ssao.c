@@ -50,6 +50,14 @@
  * plane (where the raw fraction would leave tilted planes half grey, Crytek's known
  * artefact) and darkens creases. The normal input is not read.
  *
+ * All modes, per-pixel sample count (Szentandrasi section 4.3, the `complexity` node):
+ * with the optional `count` input, pixel i uses only the first n_i = round(count_i)
+ * kernel samples (rounded half up, clamped to [1, kernel width]; NaN = all), and every
+ * "count" above is n_i: out = (1 - occluded / n_i)^power, or clamp(2 - occluded / n_i,
+ * 0, 1)^power in the normal-free modes. With a kernel of whole Halton periods (halton
+ * period=N_g) and counts multiple of N_g, each pixel's samples are still quasi-uniform
+ * (eq. 8). Unconnected, every pixel uses the whole kernel.
+ *
  * All modes: max_screen_radius > 0 caps r per pixel at max_screen_radius * depth(P) / f
  * (the capped r is also the range-check distance), so that near pixels do not sample
  * all over the screen: their depth reads would miss the cache (see ssao_cpu.c), and
@@ -85,6 +93,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
     if (e)
         return e;
+    const struct ssg_shape *cnt = &in[SSG_SSAO_IN_COUNT];
+    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
+        snprintf(why, why_len, "count must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;
@@ -140,6 +153,9 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
     {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "linear depth for the occluder lookup; none = -position.z"},
+    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
+            "all"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -169,7 +185,9 @@ const struct ssg_node_desc ssg_node_ssao = {
            "screen disc of radius f radius / depth, occluding when nearer than the pixel "
            "by more than `bias`. Both normal-free modes report clamp(2 (1 - occluded / "
            "samples), 0, 1)^power, so that half the sphere (an open plane) is 1 (Knuth "
-           "and Kohlhammer's clamp). Background pixels are 1.",
+           "and Kohlhammer's clamp). Background pixels are 1. With the count input a pixel "
+           "uses only the first round(count) kernel samples (clamped to [1, kernel "
+           "width]) and divides by that number.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

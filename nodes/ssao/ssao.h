@@ -20,7 +20,7 @@ enum ssg_ssao_mode {
 
 /* Input ports, in order. */
 enum { SSG_SSAO_IN_POSITION, SSG_SSAO_IN_NORMAL, SSG_SSAO_IN_KERNEL, SSG_SSAO_IN_ROTATION,
-       SSG_SSAO_IN_DEPTH };
+       SSG_SSAO_IN_DEPTH, SSG_SSAO_IN_COUNT };
 
 struct ssg_ssao_params {
     float radius;            /* hemisphere radius, scene units, > 0; default 0.5 */

@@ -11,6 +11,12 @@
  * 512 KiB L2 for Rp up to about 130 (radius 0.5 at depth 5 in 1080p), and walking a band's
  * rows inside each chunk column (not columns inside rows) slides that window one row at
  * a time. max_screen_radius bounds Rp where near geometry would blow it up.
+ * Per-pixel counts (the `count` input, ssao.c): a chunk runs the samples up to the largest
+ * count among its surface pixels, and a lane adds a sample's occlusion only while
+ * s < n_i (a select, so the loops still vectorise); the division is by n_i. Adding a
+ * masked 0 leaves a sum's bits unchanged, so count = K everywhere gives the bits of the
+ * path without the input, which itself stays as it was (the flag is a constant at each
+ * call site).
  * Bands of rows go to ssg_parallel_rows; each pixel depends only on the inputs and every
  * per-pixel sum runs in kernel order, so the output does not depend on the thread count
  * (nor on the instruction set: the clones do the same IEEE operations lane by lane). */
@@ -38,6 +44,7 @@ struct job {
     int count;
     const float *rot;             /* planar n x n x 2 (cos, sin), NULL = none */
     int n;
+    const float *cnt;             /* per-pixel sample counts, NULL = the whole kernel */
     float *out;
     int w, h;
     float f, cx, cy;              /* projection of this resolution */
@@ -65,6 +72,8 @@ struct chunk {
     int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
     float rp[CHUNK];                       /* disc: f r / depth, px per kernel unit */
     float xf[CHUNK];                       /* disc: pixel column */
+    int32_t cnt[CHUNK];                    /* count input: samples n_i of the pixel */
+    float icnt[CHUNK];                     /* count input: 1 / n_i */
 };
 
 static void load_rotation(const struct job *j, struct chunk *restrict k, int y, int x0,
@@ -228,7 +237,8 @@ place_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, fl
 /* Looks up the scene depth at each sample placed in k->idx (threshold k->zb) and adds
    its weighted occlusion. */
 static inline __attribute__((always_inline)) void
-lookup_chunk(const struct job *j, struct chunk *restrict k, int len, int range)
+lookup_chunk(const struct job *j, struct chunk *restrict k, int len, int range, int counted,
+             int s)
 {
     const float sign = j->depth_sign;
     /* Occluders within r in depth weigh 1 in every mode (smoothstep of r / |dp - d|
@@ -239,7 +249,10 @@ lookup_chunk(const struct job *j, struct chunk *restrict k, int len, int range)
     for (int i = 0; i < len; i++) {
         float d = sign * plane[k->idx[i]];
         /* d = 0 is background: infinitely far, never in front of the sample. */
-        int occluded = (d > 0.0f) & (d < k->zb[i]);
+        /* With counts, a lane past its n_i samples adds nothing (counted is a constant
+           at each call site: without counts this is the plain test). */
+        int active = counted ? s < k->cnt[i] : 1;
+        int occluded = (d > 0.0f) & (d < k->zb[i]) & active;
         int near = fabsf(k->dp[i] - d) <= k->rr[i];
         int counts = range == SSG_SSAO_RANGE_NONE ? occluded : occluded & near;
         k->occ[i] += counts ? 1.0f : 0.0f;
@@ -264,39 +277,49 @@ lookup_chunk(const struct job *j, struct chunk *restrict k, int len, int range)
 
 static inline __attribute__((always_inline)) void
 sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
-             float sz, int range)
+             float sz, int range, int counted, int s)
 {
     place_chunk(j, k, len, sx, sy, sz);
-    lookup_chunk(j, k, len, range);
+    lookup_chunk(j, k, len, range, counted, s);
 }
 
 /* The hot loop. With GCC on x86-64 it is also compiled for AVX2 and picked at run time:
    the same IEEE operations lane by lane (no FMA: avx2 does not enable it, and C11 mode
    does not contract), so both versions give the same bits. */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-static void sample_all(const struct job *j, struct chunk *k, int len)
+static inline __attribute__((always_inline)) void
+sample_loop(const struct job *j, struct chunk *k, int len, int used, int counted)
 {
     const int count = j->count, sphere = j->c->p.mode == SSG_SSAO_MODE_SPHERE;
     const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
-    for (int s = 0; s < count; s++) {
+    for (int s = 0; s < used; s++) {
         /* The sphere mode adds each sample's point reflection (ssao.c), in this order. */
         for (int m = 0; m <= sphere; m++) {
             float sx = m ? -kx[s] : kx[s], sy = m ? -ky[s] : ky[s], sz = m ? -kz[s] : kz[s];
             switch (j->c->p.range_check) {
             case SSG_SSAO_RANGE_NONE:
-                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_NONE);
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_NONE, counted, s);
                 break;
             case SSG_SSAO_RANGE_HARD:
-                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_HARD);
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_HARD, counted, s);
                 break;
             default:
-                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_SMOOTH);
+                sample_chunk(j, k, len, sx, sy, sz, SSG_SSAO_RANGE_SMOOTH, counted, s);
                 break;
             }
         }
     }
+}
+
+/* Samples 0..used-1 (used: the kernel width, or the chunk's largest count). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sample_all(const struct job *j, struct chunk *k, int len, int used)
+{
+    if (j->cnt)
+        sample_loop(j, k, len, used, 1);
+    else
+        sample_loop(j, k, len, used, 0);
 }
 
 /* Disc mode: per pixel the radius r (capped as in setup_chunk) and f r / depth, the
@@ -337,45 +360,79 @@ place_disc(const struct job *j, struct chunk *restrict k, int len, float y, floa
 }
 
 /* Disc mode: every kernel sample's offset and its opposite. */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-static void sample_disc(const struct job *j, struct chunk *k, int len, int y)
+static inline __attribute__((always_inline)) void
+disc_loop(const struct job *j, struct chunk *k, int len, int y, int used, int counted)
 {
     const int count = j->count;
     const float *kx = j->kernel, *ky = kx + count;
-    for (int s = 0; s < count; s++)
+    for (int s = 0; s < used; s++)
         for (int m = 0; m < 2; m++) {
             place_disc(j, k, len, (float)y, kx[s], ky[s], m ? -1.0f : 1.0f);
             switch (j->c->p.range_check) {
             case SSG_SSAO_RANGE_NONE:
-                lookup_chunk(j, k, len, SSG_SSAO_RANGE_NONE);
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_NONE, counted, s);
                 break;
             case SSG_SSAO_RANGE_HARD:
-                lookup_chunk(j, k, len, SSG_SSAO_RANGE_HARD);
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_HARD, counted, s);
                 break;
             default:
-                lookup_chunk(j, k, len, SSG_SSAO_RANGE_SMOOTH);
+                lookup_chunk(j, k, len, SSG_SSAO_RANGE_SMOOTH, counted, s);
                 break;
             }
         }
 }
 
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sample_disc(const struct job *j, struct chunk *k, int len, int y, int used)
+{
+    if (j->cnt)
+        disc_loop(j, k, len, y, used, 1);
+    else
+        disc_loop(j, k, len, y, used, 0);
+}
+
+/* The count input for the chunk's pixels: n_i = round(count) (half up) clamped to
+   [1, K], NaN = K (selects only, so the loop vectorises), and 1 / n_i. Returns the
+   largest n_i among the surface pixels (at least 1): the samples the chunk must run. */
+static int load_counts(const struct job *j, struct chunk *restrict k, int y, int x0,
+                       int len)
+{
+    const float *restrict c = j->cnt + (size_t)y * (size_t)j->w + (size_t)x0;
+    const float kmax = (float)j->count;
+    int most = 1;
+    for (int i = 0; i < len; i++) {
+        float v = c[i];
+        v = v < 1.0f ? 1.0f : v;
+        v = v <= kmax ? v : kmax; /* NaN fails both compares above: K */
+        int n = (int)(v + 0.5f);
+        n = n < j->count ? n : j->count;
+        k->cnt[i] = n;
+        k->icnt[i] = 1.0f / (float)n;
+        most = k->fg[i] && n > most ? n : most;
+    }
+    return most;
+}
+
 /* out = (1 - occluded / count)^power, or for the normal-free modes, whose 2 count
    samples leave half of them occluded on an open plane, clamp(2 (1 - occluded /
    (2 count)), 0, 1)^power = clamp(2 - occluded / count, 0, 1)^power (ssao.c). */
-static void finish_chunk(const struct job *j, const struct chunk *k, int len, float *out)
+static void finish_chunk(const struct job *j, struct chunk *k, int len, float *out)
 {
     const float inv_count = 1.0f / (float)j->count, power = j->c->p.power;
+    /* Without counts every lane divides by K: the same bits as before counts existed. */
+    for (int i = 0; !j->cnt && i < len; i++)
+        k->icnt[i] = inv_count;
     if (j->c->p.mode == SSG_SSAO_MODE_HEMISPHERE) {
         for (int i = 0; i < len; i++) {
-            float v = 1.0f - k->occ[i] * inv_count;
+            float v = 1.0f - k->occ[i] * k->icnt[i];
             v = v > 0.0f ? v : 0.0f;
             out[i] = k->fg[i] ? v : 1.0f;
         }
     } else {
         for (int i = 0; i < len; i++) {
-            float v = 2.0f - k->occ[i] * inv_count;
+            float v = 2.0f - k->occ[i] * k->icnt[i];
             v = v > 0.0f ? v : 0.0f;
             v = v < 1.0f ? v : 1.0f;
             out[i] = k->fg[i] ? v : 1.0f;
@@ -399,14 +456,16 @@ static void band(void *user, int y0, int y1)
             if (j->c->p.mode == SSG_SSAO_MODE_DISC) {
                 load_chunk_free(j, &k, y, x0, len);
                 setup_disc(j, &k, len);
-                sample_disc(j, &k, len, y);
+                int used = j->cnt ? load_counts(j, &k, y, x0, len) : j->count;
+                sample_disc(j, &k, len, y, used);
             } else {
                 if (j->c->p.mode == SSG_SSAO_MODE_SPHERE)
                     load_chunk_free(j, &k, y, x0, len);
                 else
                     load_chunk(j, &k, y, x0, len);
                 setup_chunk(j, &k, len);
-                sample_all(j, &k, len);
+                int used = j->cnt ? load_counts(j, &k, y, x0, len) : j->count;
+                sample_all(j, &k, len, used);
             }
             finish_chunk(j, &k, len, j->out + (size_t)y * (size_t)j->w + (size_t)x0);
         }
@@ -435,6 +494,10 @@ static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ss
     if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
         return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
                              "depth must be 1-channel, the size of position");
+    if (io->in[SSG_SSAO_IN_COUNT] &&
+        !ssg_image_is(io->in[SSG_SSAO_IN_COUNT], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
+                             "count must be 1-channel, the size of position");
     if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
         return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
                              "output must be 1-channel, the size of position");
@@ -463,10 +526,13 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.depth_sign = dep ? 1.0f : -1.0f;
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
+    j.cnt = io->in[SSG_SSAO_IN_COUNT] ? io->in[SSG_SSAO_IN_COUNT]->data : NULL;
     /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    j.f = c->proj.f * (float)j.h / (float)c->frame_height;
-    j.cx = c->proj.cx * (float)j.w / (float)c->frame_width;
-    j.cy = c->proj.cy * (float)j.h / (float)c->frame_height;
+    struct ssg_projection sp =
+        ssg_projection_scaled(&c->proj, c->frame_width, c->frame_height, j.w, j.h);
+    j.f = sp.f;
+    j.cx = sp.cx;
+    j.cy = sp.cy;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     return SSG_OK;
 }

@@ -28,6 +28,12 @@
  *   input as the senders' radiance (in the one-step graph gbuffer.direct +
  *   gbuffer.environment). Sec. 4.1 darkens the bounce by the modulation factor when
  *   composing; this node leaves that to the composition. bounce=false: the output is 0.
+ * count input (Szentandrasi section 4.3, the `complexity` node; table 1's "SSDO with
+ *   preprocessing 20-50"): pixel i uses only the first n_i = round(count_i) kernel
+ *   samples (half up, clamped to [1, K], NaN = K) and n_i stands for K everywhere above:
+ *   dw = 2 pi / n_i, A_s = strength pi r^2 / n_i, every sum over its first n_i samples.
+ *   With a kernel of whole Halton periods and counts multiple of the period each pixel's
+ *   samples stay quasi-uniform (section 4.2, eq. 8). Unconnected: n_i = K.
  * Without a scene (ctx->scene NULL, e.g. unit tests) there are no lights and the
  * environment is a constant white of radiance 1: plain directional occlusion. dw is
  * computed at run time, from the kernel's width. */
@@ -62,6 +68,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     if (e)
         return e;
     const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION];
+    const struct ssg_shape *cnt = &in[SSG_SSDO_IN_SAMPLE_COUNT];
+    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
+        snprintf(why, why_len, "count must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
     int color = p->mode == SSG_SSDO_MODE_RADIANCE || p->channels == 3;
     out[0] = (struct ssg_shape){pos->width, pos->height, color ? 3 : 1,
                                 color ? SSG_T_COLOR : SSG_T_SCALAR};
@@ -196,6 +207,9 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "diffuse albedo (mode radiance and bounce)"},
     {.name = "light", .types = SSG_T_COLOR, .optional = 1,
      .doc = "outgoing radiance of each pixel, the bounce's senders (bounce)"},
+    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
+            "all"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -228,7 +242,9 @@ const struct ssg_node_desc ssg_node_ssdo = {
            "sample's pixel is a patch of area A_s = strength pi radius^2 / K sending its "
            "`light` with form factor F = A_s cos_r cos_s / (pi max(d^2, min_distance^2)) "
            "(eq. 4 without its extra dw), the F normalised when their sum exceeds 1; "
-           "bounce = albedo sum F L. At most 8 lights.",
+           "bounce = albedo sum F L. At most 8 lights. With the count input a pixel uses "
+           "only the first n = round(count) kernel samples (clamped to [1, K]): dw = 2 pi "
+           "/ n, A_s with n for K, every sum over those n.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

@@ -11,6 +11,9 @@
 
 #define SSG_SSDO_MAX_LIGHTS 8
 
+/* ssdo's own input after the ports it shares with bounce (ssdo_sampling.h). */
+enum { SSG_SSDO_IN_SAMPLE_COUNT = SSG_SSDO_IN_COUNT };
+
 enum ssg_ssdo_mode {
     SSG_SSDO_MODE_MODULATION, /* one-step method (Szentandrasi sec. 4.1): lit / unoccluded */
     SSG_SSDO_MODE_RADIANCE,   /* two-step first pass: albedo / pi * directional light (eq. 2) */

@@ -12,7 +12,13 @@
  * probe is looked up in the view-space cube per sample (a scalar loop). Each pixel depends
  * only on the inputs and every per-pixel sum runs in kernel order: the output does not
  * depend on the thread count nor on the instruction set (the AVX2 clone does the same IEEE
- * operations lane by lane; C11 mode does not contract to FMA). */
+ * operations lane by lane; C11 mode does not contract to FMA).
+ * Per-pixel counts (the `count` input, ssdo.c): a chunk runs the samples up to the largest
+ * count among its surface pixels; a lane past its own count is no candidate of the depth
+ * test (ssdo_sampling.h) and adds 0 to the light and environment sums (selects, so the
+ * loops still vectorise), and its dw and patch area use its count. Adding a masked 0
+ * leaves a sum's bits unchanged, so count = K everywhere gives the bits of the path
+ * without the input, which stays as it was (`counted` is a constant at each call). */
 /* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged.
    Before the includes: the shared sampling code (ssdo_sampling.h) is inlined into the
    AVX2 clone and must be compiled with the same options, or its selects and those of
@@ -40,6 +46,8 @@ struct job {
     float *nw;                     /* per sample: N.w = s.z / |s| (>= 0) */
     float *inv_len;                /* per sample: 1 / |s| (0 for s = 0) */
     float full_w;                  /* sum of nw in kernel order */
+    const float *cnt;              /* per-pixel sample counts, NULL = the whole kernel */
+    float *dw_tab;                 /* count input: dw_tab[n] = 2 pi / n, n = 1..K */
 };
 
 /* The lighting part of a chunk: per light the tangent-space direction to it and its
@@ -56,6 +64,9 @@ struct light_chunk {
     int32_t texel[CHUNK];       /* cube: per sample, the float offset of its texel */
     float num[3][CHUNK], den[3][CHUNK]; /* finish: lit and unoccluded light per channel */
     float vis[CHUNK];           /* finish: vis_l of one light */
+    float dwl[CHUNK];           /* count input: 2 pi / n_i */
+    float fullw[CHUNK];         /* count input, constant environment: sum of nw over the
+                                   pixel's n_i samples */
 };
 
 /* Per light, L in the tangent frame and E / colour; the sums start at 0. */
@@ -108,14 +119,18 @@ static inline __attribute__((always_inline)) float lobe_pow(float cl, float nw, 
     return p;
 }
 
-/* One light's lobe weights in one fused pass, lobe a constant at each call site. */
+/* One light's lobe weights in one fused pass, lobe and counted constants at each call
+   site (counted: lanes past their count weigh 0). */
 static inline __attribute__((always_inline)) void
 add_light_lobe(struct light_chunk *restrict lc, const struct ssg_ssdo_chunk *restrict k,
-               int l, int len, float sx, float sy, float sz, float il, float nw, int lobe)
+               int l, int len, float sx, float sy, float sz, float il, float nw, int lobe,
+               int counted, int s)
 {
     for (int i = 0; i < len; i++) {
         float cl = (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
         float p = lobe_pow(cl, nw, lobe);
+        if (counted)
+            p = s < k->cnt[i] ? p : 0.0f;
         lc->ws[l][i] += p;
         lc->wv[l][i] += p * k->vis[i];
     }
@@ -126,7 +141,8 @@ add_light_lobe(struct light_chunk *restrict lc, const struct ssg_ssdo_chunk *res
    gets w V: with V = 1 exactly w, so an open plane's vis is exactly 1. */
 static inline __attribute__((always_inline)) void
 add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
-           struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s)
+           struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s,
+           int counted)
 {
     const float il = j->inv_len[s], nw = j->nw[s];
     const int lobe = j->c->p.lobe;
@@ -134,7 +150,7 @@ add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
         switch (lobe) {
 #define SSDO_LOBE_CASE(n)                                                                   \
     case n:                                                                                 \
-        add_light_lobe(lc, k, l, len, sx, sy, sz, il, nw, n);                               \
+        add_light_lobe(lc, k, l, len, sx, sy, sz, il, nw, n, counted, s);                   \
         continue;
             SSDO_LOBE_CASE(1) SSDO_LOBE_CASE(2) SSDO_LOBE_CASE(3) SSDO_LOBE_CASE(4)
             SSDO_LOBE_CASE(5) SSDO_LOBE_CASE(6) SSDO_LOBE_CASE(7) SSDO_LOBE_CASE(8)
@@ -155,6 +171,8 @@ add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
                 for (int i = 0; i < len; i++)
                     lc->c[i] *= lc->c[i];
         }
+        for (int i = 0; counted && i < len; i++)
+            lc->p[i] = s < k->cnt[i] ? lc->p[i] : 0.0f;
         for (int i = 0; i < len; i++) {
             lc->ws[l][i] += lc->p[i];
             lc->wv[l][i] += lc->p[i] * k->vis[i];
@@ -166,12 +184,22 @@ add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
    finds every pixel's texel (branch-free face selection), a second gathers and adds. */
 static inline __attribute__((always_inline)) void
 add_environment(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
-                struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s)
+                struct light_chunk *restrict lc, int len, float sx, float sy, float sz, int s,
+                int counted)
 {
     const float nw = j->nw[s];
-    if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+    if (j->c->env == SSG_SSDO_ENV_CONSTANT && !counted) {
         for (int i = 0; i < len; i++)
             lc->litw[i] += nw * k->vis[i];
+        return;
+    }
+    if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+        /* fullw: the pixel's own sum of nw (the whole-kernel path's full_w). */
+        for (int i = 0; i < len; i++) {
+            float w = s < k->cnt[i] ? nw : 0.0f;
+            lc->litw[i] += w * k->vis[i];
+            lc->fullw[i] += w;
+        }
         return;
     }
     for (int i = 0; i < len; i++) {
@@ -184,42 +212,89 @@ add_environment(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
     for (int ch = 0; ch < 3; ch++)
         for (int i = 0; i < len; i++) {
             float v = rgb[lc->texel[i] + ch] * nw;
+            if (counted)
+                v = s < k->cnt[i] ? v : 0.0f;
             lc->full[ch][i] += v;
             lc->lit[ch][i] += v * k->vis[i];
         }
 }
 
-/* The hot loop, per kernel sample in order. */
+/* The hot loop, per kernel sample in order, samples 0..used-1 (used: K, or the chunk's
+   largest count). */
 static inline __attribute__((always_inline)) void
-sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int len)
+sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int len,
+           int used, int counted)
 {
     const int count = j->s.count, bounce = j->s.bounce, own = j->s.own_depth;
     const float *kx = j->s.kernel, *ky = kx + count, *kz = ky + count;
-    for (int s = 0; s < count; s++) {
+    for (int s = 0; s < used; s++) {
         float sx = kx[s], sy = ky[s], sz = kz[s];
         /* constant flags at each call, so each variant is straight code */
         if (own && bounce)
-            ssg_ssdo_sample(&j->s, k, len, s, 1, 1);
+            ssg_ssdo_sample_counted(&j->s, k, len, s, 1, 1, counted);
         else if (own)
-            ssg_ssdo_sample(&j->s, k, len, s, 1, 0);
+            ssg_ssdo_sample_counted(&j->s, k, len, s, 1, 0, counted);
         else if (bounce)
-            ssg_ssdo_sample(&j->s, k, len, s, 0, 1);
+            ssg_ssdo_sample_counted(&j->s, k, len, s, 0, 1, counted);
         else
-            ssg_ssdo_sample(&j->s, k, len, s, 0, 0);
-        add_environment(j, k, lc, len, sx, sy, sz, s);
-        add_lights(j, k, lc, len, sx, sy, sz, s);
+            ssg_ssdo_sample_counted(&j->s, k, len, s, 0, 0, counted);
+        add_environment(j, k, lc, len, sx, sy, sz, s, counted);
+        add_lights(j, k, lc, len, sx, sy, sz, s, counted);
     }
+}
+
+/* The count input for the chunk's pixels: n_i = round(count) (half up) clamped to
+   [1, K], NaN = K (selects only), then what depends on it: dw = 2 pi / n_i and the patch
+   area A_s / pi = strength r^2 / n_i (and min_distance^2 when automatic), the same
+   operations as ssg_ssdo_setup with n_i for K. Returns the largest n_i among the surface
+   pixels (at least 1). */
+static inline __attribute__((always_inline)) int
+load_counts(const struct job *j, struct ssg_ssdo_chunk *restrict k,
+            struct light_chunk *restrict lc, int len, size_t o)
+{
+    const float *restrict c = j->cnt + o;
+    const int kw = j->s.count;
+    const float kmax = (float)kw, strength = j->s.g.strength;
+    const int auto_md = !(j->s.g.min_distance > 0.0f);
+    int most = 1;
+    for (int i = 0; i < len; i++) {
+        float v = c[i];
+        v = v < 1.0f ? 1.0f : v;
+        v = v <= kmax ? v : kmax; /* NaN fails both compares above: K */
+        int n = (int)(v + 0.5f);
+        n = n < kw ? n : kw;
+        k->cnt[i] = n;
+        lc->fullw[i] = 0.0f;
+        lc->dwl[i] = j->dw_tab[n];
+        float per_n = strength / (float)n, rr = k->rr[i];
+        k->ff[i] = per_n * (rr * rr);
+        k->md2[i] = auto_md ? per_n * (rr * rr) : k->md2[i];
+        most = k->fg[i] && n > most ? n : most;
+    }
+    return most;
 }
 
 /* Numerator and denominator of every channel: per pixel and channel the environment
    term, then each light's e vis and e in light order. Vector loops over the chunk (lights
    and channels outside); the same operations in the same order as a per-pixel loop. */
 static inline __attribute__((always_inline)) void
-light_sums(const struct job *j, struct light_chunk *restrict lc, int len)
+light_sums(const struct job *j, struct light_chunk *restrict lc, int len, int counted)
 {
     for (int ch = 0; ch < 3; ch++) {
         float *restrict n = lc->num[ch], *restrict d = lc->den[ch];
-        if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
+        if (counted && j->c->env == SSG_SSDO_ENV_CONSTANT) {
+            /* per pixel what the whole-kernel branch computes once */
+            for (int i = 0; i < len; i++) {
+                float scale = j->c->env_rgb[ch] * lc->dwl[i];
+                n[i] = scale * lc->litw[i];
+                d[i] = scale * lc->fullw[i];
+            }
+        } else if (counted) {
+            for (int i = 0; i < len; i++) {
+                n[i] = lc->lit[ch][i] * lc->dwl[i];
+                d[i] = lc->full[ch][i] * lc->dwl[i];
+            }
+        } else if (j->c->env == SSG_SSDO_ENV_CONSTANT) {
             const float scale = j->c->env_rgb[ch] * j->dw, dfull = scale * j->full_w;
             for (int i = 0; i < len; i++) {
                 n[i] = scale * lc->litw[i];
@@ -253,11 +328,11 @@ light_sums(const struct job *j, struct light_chunk *restrict lc, int len)
    read unconditionally so the loops vectorise. */
 static inline __attribute__((always_inline)) void
 finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
-             struct light_chunk *restrict lc, int len, size_t o)
+             struct light_chunk *restrict lc, int len, size_t o, int counted)
 {
     static const float luma[3] = {0.2126f, 0.7152f, 0.0722f};
     const float inv_pi = (float)(1.0 / M_PI);
-    light_sums(j, lc, len);
+    light_sums(j, lc, len, counted);
     if (j->c->p.mode == SSG_SSDO_MODE_RADIANCE) {
         for (int ch = 0; ch < 3; ch++) {
             const float *restrict a = j->s.alb[ch] + o;
@@ -291,20 +366,31 @@ finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
 /* One chunk of one row, start to end. With GCC on x86-64 also compiled for AVX2 and
    picked at run time (same bits, see the file header): the per-pixel passes (loads,
    frame, lights, finish) are vector loops too, worth the wider vectors. */
+static inline __attribute__((always_inline)) void
+chunk_body(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int y,
+           int x0, int len, int counted)
+{
+    size_t o = (size_t)y * (size_t)j->s.w + (size_t)x0;
+    ssg_ssdo_load(&j->s, k, y, x0, len);
+    ssg_ssdo_setup(&j->s, k, len);
+    setup_lights(j, k, lc, len);
+    int used = counted ? load_counts(j, k, lc, len, o) : j->s.count;
+    sample_all(j, k, lc, len, used, counted);
+    finish_chunk(j, k, lc, len, o, counted);
+    if (j->s.bounce)
+        ssg_ssdo_finish_bounce(&j->s, k, len, o, j->bounce);
+}
+
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
                       int y, int x0, int len)
 {
-    size_t o = (size_t)y * (size_t)j->s.w + (size_t)x0;
-    ssg_ssdo_load(&j->s, k, y, x0, len);
-    ssg_ssdo_setup(&j->s, k, len);
-    setup_lights(j, k, lc, len);
-    sample_all(j, k, lc, len);
-    finish_chunk(j, k, lc, len, o);
-    if (j->s.bounce)
-        ssg_ssdo_finish_bounce(&j->s, k, len, o, j->bounce);
+    if (j->cnt)
+        chunk_body(j, k, lc, y, x0, len, 1);
+    else
+        chunk_body(j, k, lc, y, x0, len, 0);
 }
 
 static void band(void *user, int y0, int y1)
@@ -349,7 +435,11 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         !ssg_image_is(io->out[1], pos->width, pos->height, 3))
         return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo", "outputs must be the size of position "
                              "with the channels check() gave");
-    struct job j = {.c = c, .out_channels = out_channels};
+    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
+    if (cnt && !ssg_image_is(cnt, pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo",
+                             "count must be 1-channel, the size of position");
+    struct job j = {.c = c, .out_channels = out_channels, .cnt = cnt ? cnt->data : NULL};
     ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height,
                       c->p.bounce);
     for (int ch = 0; ch < 3; ch++) {
@@ -357,11 +447,14 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
     j.dw = (float)(2.0 * M_PI / j.s.count);
-    float *per_sample = malloc(sizeof(float) * 2 * (size_t)j.s.count);
+    float *per_sample = malloc(sizeof(float) * (3 * (size_t)j.s.count + 1));
     if (!per_sample)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "ssdo", "out of memory");
     j.nw = per_sample;
     j.inv_len = per_sample + j.s.count;
+    j.dw_tab = per_sample + 2 * (size_t)j.s.count;
+    for (int n = 0; n <= j.s.count; n++) /* the expression of j.dw, n for K */
+        j.dw_tab[n] = n ? (float)(2.0 * M_PI / n) : 0.0f;
     kernel_constants(&j);
     if (!c->p.bounce)
         memset(io->out[1]->data, 0, sizeof(float) * 3 * (size_t)pos->width * pos->height);

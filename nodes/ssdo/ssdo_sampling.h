@@ -102,6 +102,8 @@ struct ssg_ssdo_chunk {
     float md2[SSG_SSDO_CHUNK];                  /* min_distance^2 */
     float fsum[SSG_SSDO_CHUNK];                 /* sum of F_i */
     float br[SSG_SSDO_CHUNK], bg[SSG_SSDO_CHUNK], bb[SSG_SSDO_CHUNK]; /* sum F_i L_i */
+    int32_t cnt[SSG_SSDO_CHUNK];                /* ssdo's count input: samples n_i of the
+                                                   pixel (read only when counted) */
 };
 
 /* The job of a run: planes, kernel, tile and the projection scaled from the frame to the
@@ -132,9 +134,10 @@ static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io
     j->depth_sign = dep ? 1.0f : -1.0f;
     j->rot = rot ? rot->data : NULL;
     j->n = rot ? rot->width : 1;
-    j->f = proj->f * (float)j->h / (float)frame_h;
-    j->cx = proj->cx * (float)j->w / (float)frame_w;
-    j->cy = proj->cy * (float)j->h / (float)frame_h;
+    struct ssg_projection sp = ssg_projection_scaled(proj, frame_w, frame_h, j->w, j->h);
+    j->f = sp.f;
+    j->cx = sp.cx;
+    j->cy = sp.cy;
 }
 
 /* Loads P, N, depth and the tile's rotation. Background (depth 0, normal 0) or garbage
@@ -266,10 +269,12 @@ ssg_ssdo_place(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, 
    is -P_i.z. Only the candidates go on to the range check and the bounce, which need six
    to nine more scattered reads: most samples of a frame are not behind anything (about
    6 % in the closed Cornell box), and they cluster in corners, so the compaction (a
-   serial dependency on n) skips blocks of 8 lanes without one. */
+   serial dependency on n) skips blocks of 8 lanes without one. With `counted` (a constant
+   at each call site) a lane past its count (s >= k->cnt) is no candidate: V = 1 and no
+   bounce; ssdo masks its own sums of such lanes. */
 static inline __attribute__((always_inline)) int
 ssg_ssdo_depth_test(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
-                    int own_depth)
+                    int own_depth, int counted, int s)
 {
     const int32_t *restrict idx = k->idx;
     const float *restrict zbs = k->zb;
@@ -278,7 +283,8 @@ ssg_ssdo_depth_test(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restric
     for (int i = 0; i < len; i++) {
         int id = idx[i];
         float d = own_depth ? dpl[id] : -p2[id];
-        int32_t c = (d > 0.0f) & (d < zbs[i]);
+        int32_t active = counted ? s < k->cnt[i] : 1;
+        int32_t c = (d > 0.0f) & (d < zbs[i]) & active;
         k->cand[i] = c;
         k->vis[i] = 1.0f;
         any |= c;
@@ -355,15 +361,23 @@ ssg_ssdo_range_bounce(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restr
    are constants at each call site. (Software prefetching of the next sample's depths and
    of the candidates' lines was tried: no measurable gain on the Cornell box.) */
 static inline __attribute__((always_inline)) void
-ssg_ssdo_sample(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len, int s,
-                int own_depth, int bounce)
+ssg_ssdo_sample_counted(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k,
+                        int len, int s, int own_depth, int bounce, int counted)
 {
     const int count = j->count;
     const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
     ssg_ssdo_place(j, k, len, kx[s], ky[s], kz[s]);
-    int n = ssg_ssdo_depth_test(j, k, len, own_depth);
+    int n = ssg_ssdo_depth_test(j, k, len, own_depth, counted, s);
     if (n)
         ssg_ssdo_range_bounce(j, k, n, bounce);
+}
+
+/* The same for every lane (no per-pixel counts): what `bounce` runs. */
+static inline __attribute__((always_inline)) void
+ssg_ssdo_sample(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len, int s,
+                int own_depth, int bounce)
+{
+    ssg_ssdo_sample_counted(j, k, len, s, own_depth, bounce, 0);
 }
 
 /* bounce = albedo(P) sum F_i L_i, the F_i scaled by 1 / sum when the sum exceeds 1;

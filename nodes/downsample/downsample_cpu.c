@@ -1,0 +1,121 @@
+/* downsample_cpu.c - CPU kernel of the `downsample` node (method in downsample.c).
+ *
+ * Each band of output rows first picks the representative pixel of each block of its rows
+ * (a tiny sort of at most 16 depths), then copies every connected plane from those pixels
+ * (unconnected ones get zeros: pool images arrive with old contents).
+ * A block depends only on its own input pixels, so the result is the same whatever the
+ * threads. */
+#include <math.h>
+#include <string.h>
+
+#include "downsample.h"
+
+enum { ROWS_PER_BAND = 8, CHUNK = 256, MAX_BLOCK = SSG_DOWNSAMPLE_MAX_FACTOR * SSG_DOWNSAMPLE_MAX_FACTOR };
+
+struct job {
+    const struct ssg_image *in[SSG_DOWNSAMPLE_PORTS]; /* NULL = unconnected */
+    struct ssg_image *out[SSG_DOWNSAMPLE_PORTS];
+    int factor;
+    int w, h;   /* input size */
+    int ow, oh; /* output size */
+};
+
+/* The median of n > 0 values (sorted in place): the middle one, or the mean of the two
+   middle ones for an even count. */
+static float median(float *v, int n)
+{
+    for (int i = 1; i < n; i++) {
+        float t = v[i];
+        int k = i;
+        for (; k > 0 && v[k - 1] > t; k--)
+            v[k] = v[k - 1];
+        v[k] = t;
+    }
+    return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Input pixel index of block (bx, by)'s representative. */
+static size_t representative(const struct job *j, int bx, int by)
+{
+    const float *depth = j->in[SSG_DOWNSAMPLE_DEPTH]->data;
+    int x0 = bx * j->factor, y0 = by * j->factor;
+    int x1 = x0 + j->factor < j->w ? x0 + j->factor : j->w;
+    int y1 = y0 + j->factor < j->h ? y0 + j->factor : j->h;
+    float v[MAX_BLOCK];
+    int n = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            float d = depth[(size_t)y * (size_t)j->w + (size_t)x];
+            if (d > 0.0f)
+                v[n++] = d;
+        }
+    size_t best = (size_t)y0 * (size_t)j->w + (size_t)x0;
+    if (n == 0)
+        return best; /* all background: its first pixel */
+    float m = median(v, n), best_err = INFINITY;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            size_t o = (size_t)y * (size_t)j->w + (size_t)x;
+            float err = fabsf(depth[o] - m);
+            if (depth[o] > 0.0f && err < best_err) { /* strict: ties keep the first */
+                best_err = err;
+                best = o;
+            }
+        }
+    return best;
+}
+
+/* Representatives are picked for a run of CHUNK blocks, then each plane copies that run:
+   one read and one write stream at a time, where copying all planes pixel by pixel would
+   keep 32 streams open. */
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    size_t in_plane = (size_t)j->w * (size_t)j->h, out_plane = (size_t)j->ow * (size_t)j->oh;
+    size_t pick[CHUNK];
+    for (int by = y0; by < y1; by++)
+        for (int bx0 = 0; bx0 < j->ow; bx0 += CHUNK) {
+            int len = j->ow - bx0 < CHUNK ? j->ow - bx0 : CHUNK;
+            for (int i = 0; i < len; i++)
+                pick[i] = representative(j, bx0 + i, by);
+            size_t dst = (size_t)by * (size_t)j->ow + (size_t)bx0;
+            for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++)
+                for (int ch = 0; ch < j->out[k]->channels; ch++) {
+                    float *out = j->out[k]->data + (size_t)ch * out_plane + dst;
+                    if (!j->in[k]) {
+                        memset(out, 0, sizeof(float) * (size_t)len);
+                        continue;
+                    }
+                    const float *in = j->in[k]->data + (size_t)ch * in_plane;
+                    for (int i = 0; i < len; i++)
+                        out[i] = in[pick[i]];
+                }
+        }
+}
+
+enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                    const struct ssg_io *io)
+{
+    const struct ssg_downsample_params *p = consts;
+    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
+    if (p->factor != 2 && p->factor != 4)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "downsample", "factor must be 2 or 4");
+    if (!dep || dep->channels != 1)
+        return ssg_node_fail(ctx, SSG_E_SIZE, "downsample", "depth must be 1-channel");
+    struct job j = {.factor = p->factor, .w = dep->width, .h = dep->height,
+                    .ow = (dep->width + p->factor - 1) / p->factor,
+                    .oh = (dep->height + p->factor - 1) / p->factor};
+    static const int channels[SSG_DOWNSAMPLE_PORTS] = {1, 3, 3, 3, 3, 3};
+    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
+        j.in[k] = io->in[k];
+        j.out[k] = io->out[k];
+        if (j.in[k] && !ssg_image_is(j.in[k], j.w, j.h, channels[k]))
+            return ssg_node_fail(ctx, SSG_E_SIZE, "downsample",
+                                 "every input must have the size of depth");
+        if (!ssg_image_is(j.out[k], j.ow, j.oh, channels[k]))
+            return ssg_node_fail(ctx, SSG_E_SIZE, "downsample",
+                                 "outputs must be ceil(size / factor)");
+    }
+    ssg_parallel_rows(j.oh, ROWS_PER_BAND, band, &j);
+    return SSG_OK;
+}

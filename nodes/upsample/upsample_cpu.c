@@ -1,0 +1,251 @@
+/* upsample_cpu.c - CPU kernel of the `upsample` node (method in upsample.c).
+ *
+ * As in bilateral_cpu.c the loops run over output pixels innermost: a full-res row is cut
+ * into chunks, whose pixels are sorted by phase (x mod k, see struct chunk); for each
+ * low-res tap row the part the chunk reaches is copied once into small arrays padded
+ * with background, then for each tap column and phase one straight loop over contiguous
+ * data adds the weighted values into per-pixel sums. The weights multiply by adding their logarithms and taking
+ * one polynomial exp() (bilateral_math.h); each pixel's sums are independent lanes in a
+ * fixed order, so the result does not depend on the threads or the vector width. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "upsample.h"
+
+/* See bilateral_cpu.c: no float operation here may trap, and saying so lets GCC turn the
+   selects into vector blends. No result changes. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+#include "bilateral/bilateral_math.h"
+
+enum { CHUNK = 256, ROWS_PER_BAND = 4 };
+
+struct job {
+    const struct ssg_upsample_consts *c;
+    const float *in[3];      /* low-res channel planes */
+    int channels;            /* 1 or 3 */
+    const float *depth;      /* full res */
+    const float *nrm[3];     /* full res; NULL = no normal term */
+    const float *ldepth;     /* low res */
+    const float *lnrm[3];    /* low res */
+    float *out[3];           /* full res */
+    int w, h;                /* full-res size */
+    int lw, lh;              /* low-res size */
+    int k;                   /* factor */
+};
+
+/* Low-res columns one chunk can reach: its own (at most CHUNK) plus radius each side. */
+enum { ROW_MAX = CHUNK + 2 * ((SSG_UPSAMPLE_MAX_SIZE - 1) / 2) + 1 };
+
+/* One chunk: full-res pixels x0 .. x0 + len - 1 of a row, x0 a multiple of the factor k,
+   stored by phase: pixel x0 + m + k t sits in slot m * per_phase + t. All pixels of a
+   phase have the same offset from their low-res column (x0 / k + t), so a tap reads the
+   low-res row contiguously (column index t + radius + dx in the row arrays) and its
+   spatial weight is one number per phase: no gathers, no bounds tests. */
+struct chunk {
+    int per_phase;                         /* slots per phase: chunk width / k */
+    int count[SSG_UPSAMPLE_MAX_FACTOR];    /* pixels of each phase in this chunk */
+    float dp[CHUNK], kd[CHUNK];            /* depth, depth_scale / depth */
+    float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
+    float ref[3][CHUNK];                   /* centre tap's value: sums are relative to it */
+    float acc[3][CHUNK], wsum[CHUNK];
+    /* the tap row, low-res columns x0 / k - radius on, background outside the image */
+    float rd[ROW_MAX], rv[3][ROW_MAX], rn[3][ROW_MAX];
+};
+
+static void setup_pixel(const struct job *j, struct chunk *k, int i, size_t o, size_t lo)
+{
+    float d = j->depth[o];
+    k->dp[i] = d;
+    k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
+    k->wsum[i] = 0.0f;
+    for (int ch = 0; ch < 3; ch++) {
+        k->acc[ch][i] = 0.0f;
+        k->ref[ch][i] = ch < j->channels ? j->in[ch][lo] : 0.0f;
+    }
+    k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
+    if (j->nrm[0]) {
+        float nx = j->nrm[0][o], ny = j->nrm[1][o], nz = j->nrm[2][o];
+        float nn = nx * nx + ny * ny + nz * nz, inv = nn > 0.0f ? 1.0f / sqrtf(nn) : 0.0f;
+        k->nx[i] = nx * inv, k->ny[i] = ny * inv, k->nz[i] = nz * inv;
+    }
+}
+
+static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int len, int cw)
+{
+    size_t row = (size_t)y * (size_t)j->w, lrow = (size_t)(y / j->k) * (size_t)j->lw;
+    k->per_phase = cw / j->k;
+    for (int m = 0; m < j->k; m++) {
+        k->count[m] = m < len ? (len - m + j->k - 1) / j->k : 0;
+        for (int t = 0; t < k->count[m]; t++)
+            setup_pixel(j, k, m * k->per_phase + t, row + (size_t)(x0 + m + j->k * t),
+                        lrow + (size_t)(x0 / j->k + t));
+    }
+}
+
+/* Copies low-res row qy, columns x0 / k - radius .. + n - 1, into the chunk's row arrays;
+   columns outside the image get depth 0 (background: no weight) and value 0. */
+static void fill_row(const struct job *j, struct chunk *k, int qy, int x0, int n)
+{
+    size_t row = (size_t)qy * (size_t)j->lw;
+    int base = x0 / j->k - j->c->radius;
+    for (int t = 0; t < n; t++) {
+        int qx = base + t;
+        int inside = qx >= 0 && qx < j->lw;
+        size_t q = row + (size_t)(inside ? qx : 0);
+        k->rd[t] = inside ? j->ldepth[q] : 0.0f;
+        for (int ch = 0; ch < j->channels; ch++)
+            k->rv[ch][t] = inside ? j->in[ch][q] : 0.0f;
+        for (int ch = 0; j->lnrm[0] && ch < 3; ch++)
+            k->rn[ch][t] = inside ? j->lnrm[ch][q] : 0.0f;
+    }
+}
+
+/* Adds one tap to the n pixels of one phase (slots i0 ..): row column q0 + t for slot
+   i0 + t, spatial log-weight es. `channels` and `normals` are constants at each call
+   site, so each variant is its own straight loop. */
+static inline __attribute__((always_inline)) void
+add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, float es,
+        int channels, int normals)
+{
+    const float p = j->c->normal_power, cmin = j->c->normal_min;
+    const float *restrict rd = k->rd + q0;
+    for (int t = 0; t < n; t++) {
+        int i = i0 + t;
+        float delta = (rd[t] - k->dp[i]) * k->kd[i];
+        float e = es - 0.5f * delta * delta;
+        float c0 = 1.0f;
+        if (normals) {
+            c0 = k->nx[i] * k->rn[0][q0 + t] + k->ny[i] * k->rn[1][q0 + t] +
+                 k->nz[i] * k->rn[2][q0 + t];
+            float c = c0 >= cmin ? c0 : 1.0f;
+            e += p * log_pos(c);
+        }
+        float w = exp_neg(e);
+        w = w >= 1e-30f ? w : 0.0f;
+        w = rd[t] > 0.0f ? w : 0.0f; /* background lends nothing */
+        if (normals)
+            w = c0 >= cmin ? w : 0.0f;
+        k->wsum[i] += w;
+        for (int ch = 0; ch < channels; ch++)
+            k->acc[ch][i] += w * (k->rv[ch][q0 + t] - k->ref[ch][i]);
+    }
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void add_taps(const struct job *j, struct chunk *k, int y, int x0)
+{
+    const int r = j->c->radius, ly = y / j->k, normals = j->lnrm[0] && j->c->normal_power > 0;
+    const float ks = j->c->spatial_k, v = ((float)y + 0.5f) / (float)j->k - 0.5f;
+    for (int dy = -r; dy <= r; dy++) {
+        int qy = ly + dy;
+        if (qy < 0 || qy >= j->lh)
+            continue;
+        fill_row(j, k, qy, x0, k->count[0] + 2 * r);
+        float ey = ks * (v - (float)qy) * (v - (float)qy);
+        for (int dx = -r; dx <= r; dx++)
+            for (int m = 0; m < j->k; m++) {
+                /* low-res x of phase m's pixels minus their column, minus dx */
+                float ex = ((float)m + 0.5f) / (float)j->k - 0.5f - (float)dx;
+                float es = ks * ex * ex + ey;
+                int i0 = m * k->per_phase, n = k->count[m], q0 = r + dx;
+                if (j->channels == 1)
+                    normals ? add_tap(j, k, i0, n, q0, es, 1, 1)
+                            : add_tap(j, k, i0, n, q0, es, 1, 0);
+                else
+                    normals ? add_tap(j, k, i0, n, q0, es, 3, 1)
+                            : add_tap(j, k, i0, n, q0, es, 3, 0);
+            }
+    }
+}
+
+/* No tap had weight: the low-res pixel of closest depth among the taps (first in tap
+   order on ties), or the centre tap when all are background. */
+static void fallback(const struct job *j, int x, int y, float dp, float *val)
+{
+    const int r = j->c->radius, lx = x / j->k, ly = y / j->k;
+    size_t best = (size_t)ly * (size_t)j->lw + (size_t)lx;
+    float best_err = INFINITY;
+    for (int qy = ly - r; qy <= ly + r; qy++)
+        for (int qx = lx - r; qx <= lx + r; qx++) {
+            if (qy < 0 || qy >= j->lh || qx < 0 || qx >= j->lw)
+                continue;
+            size_t q = (size_t)qy * (size_t)j->lw + (size_t)qx;
+            float err = fabsf(j->ldepth[q] - dp);
+            if (j->ldepth[q] > 0.0f && err < best_err) {
+                best_err = err;
+                best = q;
+            }
+        }
+    for (int ch = 0; ch < j->channels; ch++)
+        val[ch] = j->in[ch][best];
+}
+
+static void finish_chunk(const struct job *j, const struct chunk *k, int y, int x0)
+{
+    size_t row = (size_t)y * (size_t)j->w;
+    for (int m = 0; m < j->k; m++)
+        for (int t = 0; t < k->count[m]; t++) {
+            int i = m * k->per_phase + t, x = x0 + m + j->k * t;
+            size_t o = row + (size_t)x;
+            float val[3] = {0.0f, 0.0f, 0.0f};
+            if (k->dp[i] > 0.0f && k->wsum[i] > 0.0f) {
+                for (int ch = 0; ch < j->channels; ch++)
+                    val[ch] = k->ref[ch][i] + k->acc[ch][i] / k->wsum[i];
+            } else if (k->dp[i] > 0.0f) {
+                fallback(j, x, y, k->dp[i], val);
+            }
+            for (int ch = 0; ch < j->channels; ch++)
+                j->out[ch][o] = val[ch];
+        }
+}
+
+static void band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    const int cw = CHUNK / j->k * j->k; /* chunk width, a multiple of k */
+    struct chunk k;
+    for (int y = y0; y < y1; y++)
+        for (int x0 = 0; x0 < j->w; x0 += cw) {
+            int len = j->w - x0 < cw ? j->w - x0 : cw;
+            setup_chunk(j, &k, y, x0, len, cw);
+            add_taps(j, &k, y, x0);
+            finish_chunk(j, &k, y, x0);
+        }
+}
+
+enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                  const struct ssg_io *io)
+{
+    const struct ssg_image *in = io->in[SSG_UPSAMPLE_IN], *dep = io->in[SSG_UPSAMPLE_DEPTH];
+    const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_NORMAL];
+    const struct ssg_image *ldep = io->in[SSG_UPSAMPLE_LOW_DEPTH];
+    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
+    if (!in || (in->channels != 1 && in->channels != 3) || !dep || dep->channels != 1)
+        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample",
+                             "in must have 1 or 3 channels, depth 1");
+    int k = ssg_upsample_factor(dep->width, dep->height, in->width, in->height);
+    if (!k || !ssg_image_is(ldep, in->width, in->height, 1) || (!nrm != !lnrm) ||
+        (nrm && (!ssg_image_is(nrm, dep->width, dep->height, 3) ||
+                 !ssg_image_is(lnrm, in->width, in->height, 3))) ||
+        !ssg_image_is(io->out[0], dep->width, dep->height, in->channels))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample", "inconsistent image sizes");
+    struct job j = {.c = consts, .channels = in->channels, .depth = dep->data,
+                    .ldepth = ldep->data, .w = dep->width, .h = dep->height,
+                    .lw = in->width, .lh = in->height, .k = k};
+    for (int ch = 0; ch < in->channels; ch++) {
+        j.in[ch] = ssg_image_plane(in, ch);
+        j.out[ch] = ssg_image_plane(io->out[0], ch);
+    }
+    for (int ch = 0; nrm && ch < 3; ch++) {
+        j.nrm[ch] = ssg_image_plane(nrm, ch);
+        j.lnrm[ch] = ssg_image_plane(lnrm, ch);
+    }
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+    return SSG_OK;
+}

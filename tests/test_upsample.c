@@ -1,0 +1,342 @@
+/* test_upsample.c - the `upsample` node (joint bilateral upsampling, Kopf et al. 2007):
+ * a half-resolution step edge comes back without crossing its depth edge, a smooth ramp
+ * is reproduced within the bias its Gaussian taps give (worked out below), constants stay
+ * exactly constant, the weights are the documented ones (the formula in double), a pixel
+ * none of the taps sampled takes the tap of closest depth, background is 0, and 1 and 2
+ * threads give the same bits. */
+#include <math.h>
+#include <omp.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "check.h"
+#include "node.h"
+#include "ssgraph.h"
+
+/* Full-res guide (depth, normal) and low-res image with its depth and normal. */
+struct set {
+    struct ssg_image *depth, *normal, *in, *low_depth, *low_normal;
+};
+
+static void free_set(struct set *s)
+{
+    ssg_image_destroy(&s->depth);
+    ssg_image_destroy(&s->normal);
+    ssg_image_destroy(&s->in);
+    ssg_image_destroy(&s->low_depth);
+    ssg_image_destroy(&s->low_normal);
+}
+
+static struct ssg_image *upsample(const struct set *s, const char *const *sets, int set_count)
+{
+    struct ssg_binding b[5] = {{"in", s->in}, {"depth", s->depth}, {"low_depth", s->low_depth},
+                               {"normal", s->normal}, {"low_normal", s->low_normal}};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs out;
+    enum ssg_err e = ssg_node_run("upsample", b, s->normal ? 5 : 3, sets, set_count, NULL,
+                                  &out, &diags);
+    CHECK_EQ(e, SSG_OK);
+    if (e != SSG_OK) {
+        ssg_diags_print(&diags, stderr);
+        return NULL;
+    }
+    return out.images[0];
+}
+
+static void set_normal(struct ssg_image *n, size_t o, double x, double y, double z)
+{
+    double len = sqrt(x * x + y * y + z * z);
+    size_t plane = (size_t)n->width * (size_t)n->height;
+    n->data[o] = (float)(x / len);
+    n->data[plane + o] = (float)(y / len);
+    n->data[2 * plane + o] = (float)(z / len);
+}
+
+static uint64_t rng_state = 777;
+static double uniform01(void)
+{
+    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
+    return ((double)(rng_state >> 11) + 0.5) * 0x1.0p-53;
+}
+
+/* A near rectangle (depth 1, value 0) over a far plane (depth 2, value 1), edges at odd
+   columns and rows so that 2 x 2 blocks straddle them. The low-res depth comes from
+   `downsample`, the low-res value matches it (0 where the low depth is 1). Seen from the
+   far side a near tap weighs exp(-0.5 (1 / (0.05 * 2))^2) = exp(-50) ~ 2e-22 of a far one,
+   the other way exp(-200) (below 1e-30: 0); every pixel keeps its side's value exactly up
+   to float rounding (1e-6), so the edge stays where the full-res depth has it, 0 px away.
+   With the depth term switched off (sigma_depth 1000) the edge does blur: the test can
+   fail. */
+static void test_step(void)
+{
+    enum { FW = 40, FH = 30, NX = 17, NY = 13 };
+    struct set s = {.depth = ssg_image_create(FW, FH, 1)};
+    for (int y = 0; y < FH; y++)
+        for (int x = 0; x < FW; x++)
+            s.depth->data[(size_t)y * FW + (size_t)x] = x < NX && y < NY ? 1.0f : 2.0f;
+    struct ssg_binding b[1] = {{"depth", s.depth}};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs low;
+    CHECK_EQ(ssg_node_run("downsample", b, 1, NULL, 0, NULL, &low, &diags), SSG_OK);
+    s.low_depth = low.images[0];
+    low.images[0] = NULL;
+    ssg_outputs_release(&low);
+    int lw = s.low_depth->width, lh = s.low_depth->height;
+    CHECK_EQ(lw, FW / 2);
+    s.in = ssg_image_create(lw, lh, 1);
+    for (int i = 0; i < lw * lh; i++)
+        s.in->data[i] = s.low_depth->data[i] == 1.0f ? 0.0f : 1.0f;
+    struct ssg_image *out = upsample(&s, NULL, 0);
+    if (out) {
+        CHECK_EQ(out->width, FW);
+        CHECK_EQ(out->height, FH);
+        double worst = 0;
+        for (int y = 0; y < FH; y++)
+            for (int x = 0; x < FW; x++) {
+                double want = x < NX && y < NY ? 0.0 : 1.0;
+                worst = fmax(worst, fabs(out->data[(size_t)y * FW + (size_t)x] - want));
+            }
+        CHECK(worst < 1e-6);
+    }
+    const char *loose[] = {"sigma_depth=1000"};
+    struct ssg_image *blur = upsample(&s, loose, 1);
+    if (blur) /* the far pixel beside the edge takes some of the near side's 0 */
+        CHECK(blur->data[(size_t)(NY / 2) * FW + NX] < 0.9f);
+    ssg_image_destroy(&out);
+    ssg_image_destroy(&blur);
+    free_set(&s);
+}
+
+/* A smooth ramp on a plane of constant depth: the low-res pixel (X, Y) holds the ramp
+   r(x, y) = 0.2 + 0.01 x + 0.005 y at its centre, full-res coordinates (2X + 1, 2Y + 1).
+   The depth term is 1, so the output is the ramp at the Gaussian-weighted mean of the tap
+   centres. A full-res pixel sits at low-res offset u = +-0.25 from its block's centre; with
+   3 taps at u - 0.75, u + 0.25, u + 1.25 (or mirrored) and sigma 1 the weights are
+   e^-0.28125, e^-0.03125, e^-0.78125, whose mean offset is 0.1139 low-res px = 0.2278
+   full-res px. So |out - r(x + 0.5, y + 0.5)| <= 0.2278 (0.01 + 0.005) + 1e-6 = 0.003418
+   + 1e-6 away from the border (taps cut off there). It also must not be better than the
+   bound allows by accident: the largest error is that bias, not 0. */
+static void test_ramp(void)
+{
+    enum { FW = 48, FH = 36 };
+    struct set s = {.depth = ssg_image_create(FW, FH, 1),
+                    .in = ssg_image_create(FW / 2, FH / 2, 1),
+                    .low_depth = ssg_image_create(FW / 2, FH / 2, 1)};
+    for (int i = 0; i < FW * FH; i++)
+        s.depth->data[i] = 3.0f;
+    for (int y = 0; y < FH / 2; y++)
+        for (int x = 0; x < FW / 2; x++) {
+            size_t o = (size_t)y * (FW / 2) + (size_t)x;
+            s.low_depth->data[o] = 3.0f;
+            s.in->data[o] = (float)(0.2 + 0.01 * (2 * x + 1) + 0.005 * (2 * y + 1));
+        }
+    struct ssg_image *out = upsample(&s, NULL, 0);
+    if (out) {
+        double worst = 0;
+        for (int y = 4; y < FH - 4; y++)
+            for (int x = 4; x < FW - 4; x++) {
+                double want = 0.2 + 0.01 * (x + 0.5) + 0.005 * (y + 0.5);
+                worst = fmax(worst, fabs(out->data[(size_t)y * FW + (size_t)x] - want));
+            }
+        CHECK(worst <= 0.2278 * 0.015 + 1e-6);
+        CHECK(worst > 0.5 * 0.2278 * 0.015);
+    }
+    ssg_image_destroy(&out);
+    free_set(&s);
+}
+
+/* The documented weights, in double, on random depths and normals (factor 2, size 5, a
+   general normal power and a power of two): |node - formula| < 1e-5 (polynomial exp and
+   ln, a few 1e-7 relative per weight). */
+static void test_formula(void)
+{
+    enum { FW = 21, FH = 15, LW = 11, LH = 8, R = 2 };
+    struct set s = {ssg_image_create(FW, FH, 1), ssg_image_create(FW, FH, 3),
+                    ssg_image_create(LW, LH, 3), ssg_image_create(LW, LH, 1),
+                    ssg_image_create(LW, LH, 3)};
+    for (int i = 0; i < FW * FH; i++) {
+        s.depth->data[i] = (float)(2.0 + 0.1 * uniform01());
+        set_normal(s.normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    for (int i = 0; i < LW * LH; i++) {
+        for (int c = 0; c < 3; c++)
+            s.in->data[(size_t)c * LW * LH + (size_t)i] = (float)uniform01();
+        s.low_depth->data[i] = (float)(2.0 + 0.1 * uniform01());
+        set_normal(s.low_normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    static const int powers[] = {5, 8};
+    for (int k = 0; k < 2; k++) {
+        char power[32];
+        snprintf(power, sizeof power, "normal_power=%d", powers[k]);
+        const char *sets[] = {"size=5", "sigma_spatial=1.3", "sigma_depth=0.03", power};
+        struct ssg_image *out = upsample(&s, sets, 4);
+        if (!out)
+            continue;
+        double worst = 0;
+        size_t fp = FW * FH, lp = LW * LH;
+        for (int y = 0; y < FH; y++)
+            for (int x = 0; x < FW; x++) {
+                size_t o = (size_t)y * FW + (size_t)x;
+                double u = (x + 0.5) / 2 - 0.5, v = (y + 0.5) / 2 - 0.5, dp = s.depth->data[o];
+                double num[3] = {0}, den = 0;
+                for (int qy = y / 2 - R; qy <= y / 2 + R; qy++)
+                    for (int qx = x / 2 - R; qx <= x / 2 + R; qx++) {
+                        if (qx < 0 || qx >= LW || qy < 0 || qy >= LH)
+                            continue;
+                        size_t q = (size_t)qy * LW + (size_t)qx;
+                        double dd = (s.low_depth->data[q] - dp) / (0.03 * dp), c = 0;
+                        for (int ch = 0; ch < 3; ch++)
+                            c += (double)s.normal->data[ch * fp + o] *
+                                 s.low_normal->data[ch * lp + q];
+                        double w = exp(-((u - qx) * (u - qx) + (v - qy) * (v - qy)) /
+                                       (2 * 1.3 * 1.3)) * exp(-0.5 * dd * dd) *
+                                   pow(fmax(c, 0), powers[k]);
+                        for (int ch = 0; ch < 3; ch++)
+                            num[ch] += w * s.in->data[ch * lp + q];
+                        den += w;
+                    }
+                for (int ch = 0; ch < 3; ch++)
+                    worst = fmax(worst, fabs(out->data[ch * fp + o] - num[ch] / den));
+            }
+        CHECK(worst < 1e-5);
+        ssg_image_destroy(&out);
+    }
+    free_set(&s);
+}
+
+/* A constant image stays exactly constant on every surface pixel, whatever the depths,
+   edges and normals (the sums are relative to the centre tap, so equal values add exact
+   zeros); full-res background is 0. Colour input, with normals. */
+static void test_constant(void)
+{
+    enum { FW = 37, FH = 23, LW = 19, LH = 12 };
+    struct set s = {ssg_image_create(FW, FH, 1), ssg_image_create(FW, FH, 3),
+                    ssg_image_create(LW, LH, 3), ssg_image_create(LW, LH, 1),
+                    ssg_image_create(LW, LH, 3)};
+    for (int i = 0; i < FW * FH; i++) {
+        s.depth->data[i] = i % 11 == 0 ? 0.0f : (float)(1.0 + 3.0 * uniform01());
+        set_normal(s.normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    for (int i = 0; i < LW * LH; i++) {
+        const float c[3] = {0.37f, 2.5f, -1.0f};
+        for (int ch = 0; ch < 3; ch++)
+            s.in->data[(size_t)ch * LW * LH + (size_t)i] = c[ch];
+        s.low_depth->data[i] = i % 7 == 0 ? 0.0f : (float)(1.0 + 3.0 * uniform01());
+        set_normal(s.low_normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    struct ssg_image *out = upsample(&s, NULL, 0);
+    if (out) {
+        CHECK_EQ(out->channels, 3);
+        int wrong = 0;
+        size_t fp = FW * FH;
+        for (size_t o = 0; o < fp; o++) {
+            int bg = s.depth->data[o] == 0.0f;
+            wrong += out->data[o] != (bg ? 0.0f : 0.37f);
+            wrong += out->data[fp + o] != (bg ? 0.0f : 2.5f);
+            wrong += out->data[2 * fp + o] != (bg ? 0.0f : -1.0f);
+        }
+        CHECK_EQ(wrong, 0);
+    }
+    ssg_image_destroy(&out);
+    free_set(&s);
+}
+
+/* Pixels none of the taps sampled: over low-res depths 5, 6 / 7, 8 (values 10, 20 / 30,
+   40) the full-res pixel (0,0) at depth 1 has no weight (exp(-0.5 (4 / 0.05)^2) = 0): it
+   takes the tap of closest depth, 10; pixel (1,0) at depth 100 takes the 8, 40. Pixel
+   (2,0) at depth 6 is a normal case: the 6 (value 20) dominates, the 5 and 7 weigh
+   e^-5.6 of it and less, moving it by well under 0.5. Pixel (3,3) is background: 0. With
+   all taps background (low depth 0) the pixel's own block, the centre tap, is taken. */
+static void test_fallback(void)
+{
+    struct set s = {.depth = ssg_image_create(4, 4, 1), .in = ssg_image_create(2, 2, 1),
+                    .low_depth = ssg_image_create(2, 2, 1)};
+    static const float low_depth[4] = {5, 6, 7, 8}, values[4] = {10, 20, 30, 40};
+    for (int i = 0; i < 16; i++)
+        s.depth->data[i] = 6.0f;
+    s.depth->data[0] = 1.0f;
+    s.depth->data[1] = 100.0f;
+    s.depth->data[15] = 0.0f;
+    memcpy(s.low_depth->data, low_depth, sizeof low_depth);
+    memcpy(s.in->data, values, sizeof values);
+    struct ssg_image *out = upsample(&s, NULL, 0);
+    if (out) {
+        CHECK(out->data[0] == 10.0f);
+        CHECK(out->data[1] == 40.0f);
+        CHECK(out->data[15] == 0.0f); /* background */
+        CHECK_NEAR(out->data[2], 20.0, 0.5); /* depth 6: the 6 dominates (others e^-6.9) */
+        ssg_image_destroy(&out);
+    }
+    for (int i = 0; i < 4; i++)
+        s.low_depth->data[i] = 0.0f;
+    out = upsample(&s, NULL, 0);
+    if (out) {
+        CHECK(out->data[0] == 10.0f);  /* block (0,0)'s centre tap */
+        CHECK(out->data[10] == 40.0f); /* pixel (2,2): block (1,1) */
+        ssg_image_destroy(&out);
+    }
+    free_set(&s);
+}
+
+static void test_threads(void)
+{
+    enum { FW = 301, FH = 77, LW = 151, LH = 39 };
+    struct set s = {ssg_image_create(FW, FH, 1), ssg_image_create(FW, FH, 3),
+                    ssg_image_create(LW, LH, 3), ssg_image_create(LW, LH, 1),
+                    ssg_image_create(LW, LH, 3)};
+    for (int i = 0; i < FW * FH; i++) {
+        s.depth->data[i] = (float)(1.0 + 0.2 * uniform01());
+        set_normal(s.normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    for (int i = 0; i < LW * LH; i++) {
+        for (int c = 0; c < 3; c++)
+            s.in->data[(size_t)c * LW * LH + (size_t)i] = (float)uniform01();
+        s.low_depth->data[i] = (float)(1.0 + 0.2 * uniform01());
+        set_normal(s.low_normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    const char *sets[] = {"size=5"};
+    omp_set_num_threads(1);
+    struct ssg_image *one = upsample(&s, sets, 1);
+    omp_set_num_threads(2);
+    struct ssg_image *two = upsample(&s, sets, 1);
+    if (one && two)
+        CHECK(memcmp(one->data, two->data, sizeof(float) * 3 * FW * FH) == 0);
+    ssg_image_destroy(&one);
+    ssg_image_destroy(&two);
+    free_set(&s);
+}
+
+static void test_rejects(void)
+{
+    struct set s = {.depth = ssg_image_create(8, 8, 1), .normal = ssg_image_create(8, 8, 3),
+                    .in = ssg_image_create(3, 3, 1), .low_depth = ssg_image_create(3, 3, 1)};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs out;
+    struct ssg_binding b[4] = {{"in", s.in}, {"depth", s.depth}, {"low_depth", s.low_depth},
+                               {"normal", s.normal}};
+    /* 8 -> 3 is factor 3 (ceil(8 / 3) = 3); 8 -> 5 is no integer factor. */
+    CHECK_EQ(ssg_node_run("upsample", b, 3, NULL, 0, NULL, &out, &diags), SSG_OK);
+    ssg_outputs_release(&out);
+    CHECK_EQ(ssg_node_run("upsample", b, 4, NULL, 0, NULL, &out, &diags),
+             SSG_E_MISSING_INPUT); /* normal without low_normal */
+    struct set t = {.depth = ssg_image_create(8, 8, 1), .in = ssg_image_create(5, 5, 1),
+                    .low_depth = ssg_image_create(5, 5, 1)};
+    struct ssg_binding c[3] = {{"in", t.in}, {"depth", t.depth}, {"low_depth", t.low_depth}};
+    CHECK_EQ(ssg_node_run("upsample", c, 3, NULL, 0, NULL, &out, &diags), SSG_E_SIZE);
+    const char *even[] = {"size=4"};
+    CHECK_EQ(ssg_node_run("upsample", b, 3, even, 1, NULL, &out, &diags), SSG_E_VALUE);
+    free_set(&s);
+    free_set(&t);
+}
+
+int main(void)
+{
+    test_step();
+    test_ramp();
+    test_formula();
+    test_constant();
+    test_fallback();
+    test_threads();
+    test_rejects();
+    return check_report();
+}
