@@ -44,34 +44,12 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     return SSG_OK;
 }
 
-#define GEOM(field) offsetof(struct ssg_bounce_params, g) + offsetof(struct ssg_ssdo_geom, field)
-
 static const struct ssg_param_desc params[] = {
-    {.name = "radius", .type = SSG_P_FLOAT, .offset = GEOM(radius), .def = 0.5, .min = 1e-6,
-     .max = 1e6, .unit = "scene units", .help = "r_max: hemisphere radius around the pixel"},
-    {.name = "bias", .type = SSG_P_FLOAT, .offset = GEOM(bias), .def = 0.02, .min = 0,
-     .max = 1e6, .unit = "scene units",
-     .help = "a sample is occluded only when the surface is this much in front of it"},
-    {.name = "strength", .type = SSG_P_FLOAT, .offset = GEOM(strength), .def = 1, .min = 0,
-     .max = 64, .help = "multiplies the sender patch area A_s = pi radius^2 / K"},
-    {.name = "min_distance", .type = SSG_P_FLOAT, .offset = GEOM(min_distance), .def = 0,
-     .min = 0, .max = 1e6, .unit = "scene units",
-     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "
-             "form factor reaches 1"},
-    {.name = "max_screen_radius", .type = SSG_P_FLOAT, .offset = GEOM(max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius; 0 = no cap"},
+    SSG_SSDO_GEOM_PARAMS(struct ssg_bounce_params),
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
-    {.name = "kernel", .types = SSG_T_KERNEL,
-     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth for the occluder lookup; none = -position.z"},
+    SSG_SSDO_GEOM_INPUTS,
     {.name = "albedo", .types = SSG_T_COLOR, .doc = "diffuse albedo of the receiver"},
     {.name = "light", .types = SSG_T_COLOR,
      .doc = "the senders' radiance: the first pass's direct light (ssdo mode=radiance)"},

@@ -163,14 +163,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 
 static const char *const mode_choices[] = {"modulation", "radiance", NULL};
 
-#define GEOM(field) offsetof(struct ssg_ssdo_params, g) + offsetof(struct ssg_ssdo_geom, field)
-
 static const struct ssg_param_desc params[] = {
-    {.name = "radius", .type = SSG_P_FLOAT, .offset = GEOM(radius), .def = 0.5, .min = 1e-6,
-     .max = 1e6, .unit = "scene units", .help = "r_max: hemisphere radius around the pixel"},
-    {.name = "bias", .type = SSG_P_FLOAT, .offset = GEOM(bias), .def = 0.02, .min = 0,
-     .max = 1e6, .unit = "scene units",
-     .help = "a sample is occluded only when the surface is this much in front of it"},
+    SSG_SSDO_GEOM_PARAMS(struct ssg_ssdo_params),
     {.name = "mode", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_ssdo_params, mode),
      .def = SSG_SSDO_MODE_MODULATION, .choices = mode_choices,
      .help = "modulation: lit / unoccluded light (one-step, sec. 4.1); radiance: albedo/pi "
@@ -180,29 +174,13 @@ static const struct ssg_param_desc params[] = {
      .help = "modulation: 1 = one factor of the luminances, 3 = one per colour channel"},
     {.name = "bounce", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_ssdo_params, bounce),
      .def = 0, .help = "compute the indirect bounce output (needs albedo and light)"},
-    {.name = "strength", .type = SSG_P_FLOAT, .offset = GEOM(strength), .def = 1, .min = 0,
-     .max = 64, .help = "multiplies the sender patch area A_s = pi radius^2 / K"},
-    {.name = "min_distance", .type = SSG_P_FLOAT, .offset = GEOM(min_distance), .def = 0,
-     .min = 0, .max = 1e6, .unit = "scene units",
-     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "
-             "form factor reaches 1"},
     {.name = "lobe", .type = SSG_P_INT, .offset = offsetof(struct ssg_ssdo_params, lobe),
      .def = 4, .min = 1, .max = 64,
      .help = "cosine power of the cone over which a point or directional light is sampled"},
-    {.name = "max_screen_radius", .type = SSG_P_FLOAT, .offset = GEOM(max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius; 0 = no cap"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
-    {.name = "kernel", .types = SSG_T_KERNEL,
-     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth for the occluder lookup; none = -position.z"},
+    SSG_SSDO_GEOM_INPUTS,
     {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
      .doc = "diffuse albedo (mode radiance and bounce)"},
     {.name = "light", .types = SSG_T_COLOR, .optional = 1,

@@ -34,6 +34,7 @@
 #define SSG_SSDO_SAMPLING_H
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -56,6 +57,41 @@ struct ssg_ssdo_geom {
     float min_distance;      /* clamp of the sender distance, scene units; 0 = the radius
                                 of a disc of area A_s; default 0 */
 };
+
+/* The parameters of struct ssg_ssdo_geom, declared once for both nodes' tables: entries
+   of a struct ssg_param_desc array for a params struct `params_type` whose member `g` is the
+   geometry. */
+#define SSG_SSDO_GEOM_OFFSET(params_type, field) \
+    (offsetof(params_type, g) + offsetof(struct ssg_ssdo_geom, field))
+#define SSG_SSDO_GEOM_PARAMS(params_type)                                                           \
+    {.name = "radius", .type = SSG_P_FLOAT, .offset = SSG_SSDO_GEOM_OFFSET(params_type, radius),  \
+     .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",                           \
+     .help = "r_max: hemisphere radius around the pixel"},                                 \
+    {.name = "bias", .type = SSG_P_FLOAT, .offset = SSG_SSDO_GEOM_OFFSET(params_type, bias),      \
+     .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units",                             \
+     .help = "a sample is occluded only when the surface is this much in front of it"},    \
+    {.name = "strength", .type = SSG_P_FLOAT,                                              \
+     .offset = SSG_SSDO_GEOM_OFFSET(params_type, strength), .def = 1, .min = 0, .max = 64,        \
+     .help = "multiplies the sender patch area A_s = pi radius^2 / K"},                    \
+    {.name = "min_distance", .type = SSG_P_FLOAT,                                          \
+     .offset = SSG_SSDO_GEOM_OFFSET(params_type, min_distance), .def = 0, .min = 0, .max = 1e6,   \
+     .unit = "scene units",                                                                \
+     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "   \
+             "form factor reaches 1"},                                                     \
+    {.name = "max_screen_radius", .type = SSG_P_FLOAT,                                     \
+     .offset = SSG_SSDO_GEOM_OFFSET(params_type, max_screen_radius), .def = 0, .min = 0,          \
+     .max = 16384, .unit = "px", .help = "caps the projected radius; 0 = no cap"}
+
+/* The input ports both nodes begin with (SSG_SSDO_IN_POSITION .. SSG_SSDO_IN_DEPTH). */
+#define SSG_SSDO_GEOM_INPUTS                                                                 \
+    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},             \
+    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},            \
+    {.name = "kernel", .types = SSG_T_KERNEL,                                              \
+     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},         \
+    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,                            \
+     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},               \
+    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,                                \
+     .doc = "linear depth for the occluder lookup; none = -position.z"}
 
 /* What one run reads: image planes, the kernel, the projection of this resolution. */
 struct ssg_ssdo_job {
