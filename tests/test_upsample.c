@@ -3,7 +3,8 @@
  * is reproduced within the bias its Gaussian taps give (worked out below), constants stay
  * exactly constant, the weights are the documented ones (the formula in double), a pixel
  * none of the taps sampled takes the tap of closest depth, background is 0, and 1 and 2
- * threads give the same bits. */
+ * threads give the same bits. The second image (in2 -> out2) is exactly what upsampling it
+ * alone gives, `out` does not change with it, and out2 is 0 when in2 is unconnected. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -27,21 +28,89 @@ static void free_set(struct set *s)
     ssg_image_destroy(&s->low_normal);
 }
 
-static struct ssg_image *upsample(const struct set *s, const char *const *sets, int set_count)
+/* Runs upsample on the set, with `in2` bound when not NULL; returns out and, when out2 is
+   not NULL, stores out2 there. */
+static struct ssg_image *upsample2(const struct set *s, const struct ssg_image *in2,
+                                   const char *const *sets, int set_count,
+                                   struct ssg_image **out2)
 {
-    struct ssg_binding b[5] = {{"in", s->in}, {"depth", s->depth}, {"low_depth", s->low_depth},
-                               {"normal", s->normal}, {"low_normal", s->low_normal}};
+    struct ssg_binding b[6] = {{"in", s->in}, {"depth", s->depth}, {"low_depth", s->low_depth}};
+    int n = 3;
+    if (s->normal) {
+        b[n++] = (struct ssg_binding){"normal", s->normal};
+        b[n++] = (struct ssg_binding){"low_normal", s->low_normal};
+    }
+    if (in2)
+        b[n++] = (struct ssg_binding){"in2", in2};
     struct ssg_diags diags = {0};
     struct ssg_outputs out;
-    enum ssg_err e = ssg_node_run("upsample", b, s->normal ? 5 : 3, sets, set_count, NULL,
-                                  &out, &diags);
+    enum ssg_err e = ssg_node_run("upsample", b, n, sets, set_count, NULL, &out, &diags);
     CHECK_EQ(e, SSG_OK);
     if (e != SSG_OK) {
         ssg_diags_print(&diags, stderr);
         return NULL;
     }
-    return out.images[0];
+    CHECK_EQ(out.count, 2);
+    struct ssg_image *first = out.images[0];
+    out.images[0] = NULL;
+    if (out2) {
+        *out2 = out.images[1];
+        out.images[1] = NULL;
+    }
+    ssg_outputs_release(&out);
+    return first;
 }
+
+static struct ssg_image *upsample(const struct set *s, const char *const *sets, int set_count)
+{
+    return upsample2(s, NULL, sets, set_count, NULL);
+}
+
+static int same_bits(const struct ssg_image *a, const struct ssg_image *b)
+{
+    return a && b && a->width == b->width && a->height == b->height &&
+           a->channels == b->channels &&
+           memcmp(a->data, b->data, sizeof(float) * (size_t)a->width * (size_t)a->height *
+                                        (size_t)a->channels) == 0;
+}
+
+/* The second image shares the weights: with in2 connected, out is bit for bit the out of
+   the same set without it, and out2 bit for bit the out of the set with in2 as its `in`
+   (same guides, so the same weights and fallback taps); unconnected, out2 is all 0 in
+   out's shape. Exact equality is the claim (no tolerance): the channels are independent
+   sums of the same float operations. It can fail: a weight computed differently for in2
+   (or a tap read from the wrong plane) changes bits. */
+static void check_second(struct set *s, const struct ssg_image *in2, const char *const *sets,
+                         int set_count)
+{
+    struct ssg_image *alone = upsample2(s, NULL, sets, set_count, NULL), *zero = NULL;
+    struct ssg_image *again = upsample2(s, NULL, sets, set_count, &zero), *out2 = NULL;
+    struct ssg_image *both = upsample2(s, in2, sets, set_count, &out2);
+    struct set t = *s;
+    t.in = (struct ssg_image *)in2;
+    struct ssg_image *ref2 = upsample2(&t, NULL, sets, set_count, NULL);
+    CHECK(same_bits(alone, both));
+    CHECK(same_bits(alone, again));
+    CHECK(same_bits(out2, ref2));
+    if (out2 && ref2) /* not vacuous: in2's upsampled values are not in's */
+        CHECK(out2->channels == 3 && !same_bits(out2, alone));
+    if (zero && alone) {
+        CHECK(zero->width == alone->width && zero->height == alone->height &&
+              zero->channels == alone->channels);
+        int nonzero = 0;
+        for (size_t i = 0; i < (size_t)zero->width * zero->height * zero->channels; i++)
+            nonzero += zero->data[i] != 0.0f;
+        CHECK_EQ(nonzero, 0);
+    }
+    ssg_image_destroy(&alone);
+    ssg_image_destroy(&zero);
+    ssg_image_destroy(&again);
+    ssg_image_destroy(&out2);
+    ssg_image_destroy(&both);
+    ssg_image_destroy(&ref2);
+}
+
+
 
 static void set_normal(struct ssg_image *n, size_t o, double x, double y, double z)
 {
@@ -104,6 +173,13 @@ static void test_step(void)
         CHECK(blur->data[(size_t)(NY / 2) * FW + NX] < 0.9f);
     ssg_image_destroy(&out);
     ssg_image_destroy(&blur);
+    /* a colour in2 beside the scalar in, with and without the depth term */
+    struct ssg_image *in2 = ssg_image_create(lw, lh, 3);
+    for (int i = 0; i < 3 * lw * lh; i++)
+        in2->data[i] = (float)uniform01();
+    check_second(&s, in2, NULL, 0);
+    check_second(&s, in2, loose, 1);
+    ssg_image_destroy(&in2);
     free_set(&s);
 }
 
@@ -306,6 +382,64 @@ static void test_threads(void)
     free_set(&s);
 }
 
+/* The random-depth case of test_threads (random depths and normals, size 5) with a scalar
+   in and a colour in2, and the fallback case (pixels no tap sampled) with a colour in2:
+   see check_second. */
+static void test_second(void)
+{
+    enum { FW = 301, FH = 77, LW = 151, LH = 39 };
+    struct set s = {ssg_image_create(FW, FH, 1), ssg_image_create(FW, FH, 3),
+                    ssg_image_create(LW, LH, 1), ssg_image_create(LW, LH, 1),
+                    ssg_image_create(LW, LH, 3)};
+    struct ssg_image *in2 = ssg_image_create(LW, LH, 3);
+    for (int i = 0; i < FW * FH; i++) {
+        s.depth->data[i] = i % 13 == 0 ? 0.0f : (float)(1.0 + 0.2 * uniform01());
+        set_normal(s.normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    for (int i = 0; i < LW * LH; i++) {
+        s.in->data[i] = (float)uniform01();
+        for (int c = 0; c < 3; c++)
+            in2->data[(size_t)c * LW * LH + (size_t)i] = (float)uniform01();
+        s.low_depth->data[i] = i % 17 == 0 ? 0.0f : (float)(1.0 + 0.2 * uniform01());
+        set_normal(s.low_normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
+    }
+    const char *sets[] = {"size=5"}, *tight[] = {"sigma_depth=0.001"};
+    check_second(&s, in2, sets, 1);
+    check_second(&s, in2, tight, 1); /* many pixels fall back: no tap within ~1% depth */
+    ssg_image_destroy(&in2);
+    free_set(&s);
+
+    struct set f = {.depth = ssg_image_create(4, 4, 1), .in = ssg_image_create(2, 2, 1),
+                    .low_depth = ssg_image_create(2, 2, 1)};
+    static const float low_depth[4] = {5, 6, 7, 8};
+    for (int i = 0; i < 16; i++)
+        f.depth->data[i] = i == 15 ? 0.0f : (float)(1.0 + 9.0 * uniform01());
+    memcpy(f.low_depth->data, low_depth, sizeof low_depth);
+    in2 = ssg_image_create(2, 2, 3);
+    for (int i = 0; i < 4; i++)
+        f.in->data[i] = (float)uniform01();
+    for (int i = 0; i < 12; i++)
+        in2->data[i] = (float)uniform01();
+    check_second(&f, in2, NULL, 0);
+    ssg_image_destroy(&in2);
+    free_set(&f);
+}
+
+/* in2 must be the size of in. */
+static void test_second_rejects(void)
+{
+    struct set s = {.depth = ssg_image_create(8, 8, 1), .in = ssg_image_create(4, 4, 1),
+                    .low_depth = ssg_image_create(4, 4, 1)};
+    struct ssg_image *in2 = ssg_image_create(3, 4, 3);
+    struct ssg_binding b[4] = {{"in", s.in}, {"depth", s.depth}, {"low_depth", s.low_depth},
+                               {"in2", in2}};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs out;
+    CHECK_EQ(ssg_node_run("upsample", b, 4, NULL, 0, NULL, &out, &diags), SSG_E_SIZE);
+    ssg_image_destroy(&in2);
+    free_set(&s);
+}
+
 static void test_rejects(void)
 {
     struct set s = {.depth = ssg_image_create(8, 8, 1), .normal = ssg_image_create(8, 8, 3),
@@ -338,5 +472,7 @@ int main(void)
     test_fallback();
     test_threads();
     test_rejects();
+    test_second();
+    test_second_rejects();
     return check_report();
 }

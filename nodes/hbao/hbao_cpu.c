@@ -1,4 +1,6 @@
-/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c).
+/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c): the march
+ * and its entry point; the image checks, pattern and column tables and the padded depth it
+ * reads are prepared in hbao_pattern.c (the job they share: hbao_cpu.h).
  *
  * Layout for speed, as in ssao_cpu.c. A row is cut into chunks of CHUNK pixels whose
  * surface pixels are packed into the first lanes (background costs nothing); per chunk,
@@ -40,7 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hbao.h"
+#include "hbao_cpu.h"
 
 /* The kernel never unmasks floating-point exceptions, so float operations cannot trap.
    Telling GCC so lets it vectorise loops whose comparisons and selects it would
@@ -57,26 +59,6 @@ enum { CHUNK = 128, ROWS_PER_BAND = 32 };
    between tangent and horizon is a sliver. Such slices add nothing. They exist only
    where V.N < 0.1, i.e. on surfaces seen within 6 degrees of grazing. */
 #define SLICE_MIN 0.01f
-
-struct job {
-    const struct ssg_hbao_consts *c;
-    const float *nrm[3];  /* planes of the normal */
-    const float *depth;   /* plane the depth is read from */
-    float depth_sign;     /* depth = depth_sign * plane: 1 for depth, -1 for z */
-    float *padded;        /* the depth, (w + 2) x (h + 2), with background (0), garbage
-                             (negative, NaN, inf) and a one-pixel border set to +inf */
-    int pw;               /* w + 2, the padded row length */
-    /* The pattern unrolled to full rows, n rows of w: cos and sin of the tile angle at
-       (x mod n, y mod n) and the step jitter u of the cell half a tile away (hbao.c). */
-    const float *rot_c, *rot_s, *jitter;
-    int n;                /* tile side; 1 without a pattern */
-    const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (it does not
-                               depend on the row) */
-    const float *cnt;     /* per-pixel direction counts, NULL = all directions */
-    float *out;
-    int w, h;
-    float f, cx, cy;      /* projection of this resolution */
-};
 
 /* Per-lane values of one chunk, structure of arrays; a lane is a surface pixel (xs).
    Directions come in opposite pairs D, -D (k and k + directions / 2); the arrays
@@ -547,98 +529,12 @@ static void band(void *user, int y0, int y1)
     }
 }
 
-/* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
-   read out of bounds. */
-static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
-{
-    const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
-    const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
-    const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
-    if (!pos || pos->channels != 3 || !ssg_image_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
-                                                pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "position and normal must be 3-channel, one size");
-    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "hbao", "rotation must be n x n x 2");
-    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "depth must be 1-channel, the size of position");
-    if (io->in[SSG_HBAO_IN_COUNT] &&
-        !ssg_image_is(io->in[SSG_HBAO_IN_COUNT], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "count must be 1-channel, the size of position");
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "output must be 1-channel, the size of position");
-    return SSG_OK;
-}
-
-/* The pattern unrolled to n full rows (see struct job; without a pattern one row of
-   cos 1, sin 0, u 1) and the columns' e1. Returns the one allocation holding them, or
-   NULL. Needs j->f and j->cx. */
-static float *unroll_pattern(const struct ssg_image *rot, int w, struct job *j)
-{
-    int n = rot ? rot->width : 1;
-    size_t row = (size_t)w, plane = (size_t)n * row, cells = (size_t)n * (size_t)n;
-    float *mem = malloc((3 * plane + 2 * row) * sizeof *mem);
-    if (!mem)
-        return NULL;
-    float *rc = mem, *rs = mem + plane, *ju = mem + 2 * plane;
-    float *e1x = mem + 3 * plane, *e1z = e1x + row;
-    for (int x = 0; x < w; x++) {
-        float au = ((float)x + 0.5f - j->cx) / j->f;
-        float h = 1.0f / sqrtf(1.0f + au * au);
-        e1x[x] = h;
-        e1z[x] = au * h;
-    }
-    j->e1x = e1x;
-    j->e1z = e1z;
-    for (int y = 0; y < n; y++)
-        for (int x = 0; x < w; x++) {
-            size_t o = (size_t)y * row + (size_t)x;
-            if (!rot) {
-                rc[o] = 1.0f, rs[o] = 0.0f, ju[o] = 1.0f;
-                continue;
-            }
-            size_t cell = (size_t)y * n + (size_t)(x % n);
-            size_t half = (size_t)((y + n / 2) % n) * n + (size_t)((x + n / 2) % n);
-            rc[o] = rot->data[cell];
-            rs[o] = rot->data[cells + cell];
-            /* u = 1 - frac(phi / 2 pi) in (0, 1], phi the angle of the cell half a tile
-               away. */
-            double a = atan2(rot->data[cells + half], rot->data[half]) / (2.0 * M_PI);
-            float u = (float)(1.0 - (a - floor(a)));
-            ju[o] = u > 0.0f ? u : 1.0f;
-        }
-    j->n = n;
-    j->rot_c = rc;
-    j->rot_s = rs;
-    j->jitter = ju;
-    return mem;
-}
-
-/* Fills the padded depth plane (struct job), rows [y0, y1) of the image. */
-static void pad_rows(void *user, int y0, int y1)
-{
-    const struct job *j = user;
-    const float sign = j->depth_sign;
-    for (int y = y0; y < y1; y++) {
-        const float *restrict src = j->depth + (size_t)y * (size_t)j->w;
-        float *restrict dst = j->padded + (size_t)(y + 1) * (size_t)j->pw;
-        dst[0] = INFINITY;
-        dst[j->w + 1] = INFINITY;
-        for (int x = 0; x < j->w; x++) {
-            float d = sign * src[x];
-            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
-        }
-    }
-}
 
 enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io)
 {
     const struct ssg_hbao_consts *c = consts;
-    enum ssg_err e = check_images(ctx, io);
+    enum ssg_err e = ssg_hbao_images_check(ctx, io);
     if (e != SSG_OK)
         return e;
     const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
@@ -657,7 +553,7 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.f = sp.f;
     j.cx = sp.cx;
     j.cy = sp.cy;
-    float *tables = unroll_pattern(rot, j.w, &j);
+    float *tables = ssg_hbao_pattern_unroll(rot, j.w, &j);
     if (!tables)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao",
                              "out of memory for the pattern and column tables");
@@ -670,7 +566,7 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
     for (int x = 0; x < j.pw; x++)
         j.padded[x] = last[x] = INFINITY;
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, pad_rows, &j);
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, ssg_hbao_rows_pad, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     free(j.padded);
     free(tables);

@@ -22,7 +22,11 @@
  * the subsampling) the tap of closest depth is taken as it is (ties: the first in
  * row-major tap order), and the centre tap when all taps are background. Full-res
  * background pixels (d_p = 0) are 0. The sum is formed relative to the centre tap's value,
- * so that a constant image stays exactly constant. */
+ * so that a constant image stays exactly constant.
+ * A second low-res image `in2` (e.g. SSDO's bounce next to its modulation) may ride along:
+ * it is upsampled with the very same weights and fallback taps into `out2`, so one node
+ * does the work of two with the weights computed once; `out2` is all 0 (shaped like
+ * `out`) when in2 is unconnected. */
 #include <math.h>
 #include <stdio.h>
 
@@ -69,7 +73,16 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  dep->height, SSG_UPSAMPLE_MAX_FACTOR);
         return SSG_E_SIZE;
     }
+    const struct ssg_shape *im2 = &in[SSG_UPSAMPLE_IN2];
+    if (im2->channels != 0 && !ssg_shape_same_size(im2, im)) {
+        snprintf(why, why_len, "in2 must be the size of in");
+        return SSG_E_SIZE;
+    }
     out[0] = (struct ssg_shape){dep->width, dep->height, im->channels, im->type};
+    /* out2: in2 upsampled, or (unconnected) zeros shaped like out */
+    out[1] = im2->channels != 0
+                 ? (struct ssg_shape){dep->width, dep->height, im2->channels, im2->type}
+                 : out[0];
     return SSG_OK;
 }
 
@@ -117,11 +130,16 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "the depth `in` was computed on (its size)"},
     {.name = "low_normal", .types = SSG_T_VECTOR, .optional = 1,
      .doc = "the normal `in` was computed on; none = no normal term"},
+    {.name = "in2", .types = SSG_T_SCALAR | SSG_T_COLOR, .optional = 1,
+     .doc = "second low-res image (size of in), upsampled with the same weights"},
 };
 
 static const struct ssg_port_desc outputs[] = {
     {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
      .doc = "full-resolution image (size of depth); background 0"},
+    {.name = "out2", .types = SSG_T_SCALAR, .same_as = "in2",
+     .doc = "in2 upsampled with out's weights (type of in2); all 0, shaped like out, when "
+            "in2 is unconnected"},
 };
 
 const struct ssg_node_desc ssg_node_upsample = {
@@ -137,7 +155,10 @@ const struct ssg_node_desc ssg_node_upsample = {
            "exp(-0.5 ((D - d) / (sigma_depth d))^2) of the tap's low-res depth D against the "
            "pixel's own depth d, times max(0, n.N)^normal_power. When no tap has weight, the "
            "tap of closest depth is copied. Background pixels are 0; low-res background "
-           "lends nothing. The factor is found from the sizes (ceil(full / factor) = low).",
+           "lends nothing. The factor is found from the sizes (ceil(full / factor) = low). An "
+           "optional second image in2 (the size of in) is upsampled with exactly the same "
+           "weights and fallbacks into out2, computing the weights once for both; out2 is "
+           "all 0 (the shape of out) when in2 is unconnected.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .outputs = outputs,

@@ -4,9 +4,13 @@
  * into chunks, whose pixels are sorted by phase (x mod k, see struct chunk); for each
  * low-res tap row the part the chunk reaches is copied once into small arrays padded
  * with background, then for each tap column and phase one straight loop over contiguous
- * data adds the weighted values into per-pixel sums. The weights multiply by adding their logarithms and taking
- * one polynomial exp() (bilateral_math.h); each pixel's sums are independent lanes in a
- * fixed order, so the result does not depend on the threads or the vector width. */
+ * data adds the weighted values into per-pixel sums. The weights multiply by adding their
+ * logarithms and taking one polynomial exp() (bilateral_math.h); each pixel's sums are
+ * independent lanes in a fixed order, so the result does not depend on the threads or the
+ * vector width. The optional second image `in2` is carried as further channels (after
+ * those of `in`) through the same loops: each weight is computed once and applied to all
+ * channels, and since every channel's sum is its own chain of the same operations, `out`
+ * and `out2` are bit for bit what upsampling each image alone gives. */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -23,15 +27,18 @@
 
 enum { CHUNK = 256, ROWS_PER_BAND = 4 };
 
+/* Channels carried at most: in (1 or 3) and in2 (0, 1 or 3). */
+enum { MAX_CH = 6 };
+
 struct job {
     const struct ssg_upsample_consts *c;
-    const float *in[3];      /* low-res channel planes */
-    int channels;            /* 1 or 3 */
+    const float *in[MAX_CH]; /* low-res channel planes: in's, then in2's */
+    int channels;            /* in's and in2's together: 1, 2, 3, 4 or 6 */
     const float *depth;      /* full res */
     const float *nrm[3];     /* full res; NULL = no normal term */
     const float *ldepth;     /* low res */
     const float *lnrm[3];    /* low res */
-    float *out[3];           /* full res */
+    float *out[MAX_CH];      /* full res: out's planes, then out2's */
     int w, h;                /* full-res size */
     int lw, lh;              /* low-res size */
     int k;                   /* factor */
@@ -50,10 +57,10 @@ struct chunk {
     int count[SSG_UPSAMPLE_MAX_FACTOR];    /* pixels of each phase in this chunk */
     float dp[CHUNK], kd[CHUNK];            /* depth, depth_scale / depth */
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
-    float ref[3][CHUNK];                   /* centre tap's value: sums are relative to it */
-    float acc[3][CHUNK], wsum[CHUNK];
+    float ref[MAX_CH][CHUNK];              /* centre tap's value: sums are relative to it */
+    float acc[MAX_CH][CHUNK], wsum[CHUNK];
     /* the tap row, low-res columns x0 / k - radius on, background outside the image */
-    float rd[ROW_MAX], rv[3][ROW_MAX], rn[3][ROW_MAX];
+    float rd[ROW_MAX], rv[MAX_CH][ROW_MAX], rn[3][ROW_MAX];
 };
 
 static void setup_pixel(const struct job *j, struct chunk *k, int i, size_t o, size_t lo)
@@ -62,9 +69,9 @@ static void setup_pixel(const struct job *j, struct chunk *k, int i, size_t o, s
     k->dp[i] = d;
     k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
     k->wsum[i] = 0.0f;
-    for (int ch = 0; ch < 3; ch++) {
+    for (int ch = 0; ch < j->channels; ch++) {
         k->acc[ch][i] = 0.0f;
-        k->ref[ch][i] = ch < j->channels ? j->in[ch][lo] : 0.0f;
+        k->ref[ch][i] = j->in[ch][lo];
     }
     k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
     if (j->nrm[0]) {
@@ -135,6 +142,10 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
     }
 }
 
+/* One straight loop per channel count (in's plus in2's) and normal term. */
+#define TAP(nch)                                                                          \
+    (normals ? add_tap(j, k, i0, n, q0, es, nch, 1) : add_tap(j, k, i0, n, q0, es, nch, 0))
+
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
@@ -154,15 +165,17 @@ static void add_taps(const struct job *j, struct chunk *k, int y, int x0)
                 float ex = ((float)m + 0.5f) / (float)j->k - 0.5f - (float)dx;
                 float es = ks * ex * ex + ey;
                 int i0 = m * k->per_phase, n = k->count[m], q0 = r + dx;
-                if (j->channels == 1)
-                    normals ? add_tap(j, k, i0, n, q0, es, 1, 1)
-                            : add_tap(j, k, i0, n, q0, es, 1, 0);
-                else
-                    normals ? add_tap(j, k, i0, n, q0, es, 3, 1)
-                            : add_tap(j, k, i0, n, q0, es, 3, 0);
+                switch (j->channels) {
+                case 1: TAP(1); break;
+                case 2: TAP(2); break;
+                case 3: TAP(3); break;
+                case 4: TAP(4); break;
+                default: TAP(6); break;
+                }
             }
     }
 }
+#undef TAP
 
 /* No tap had weight: the low-res pixel of closest depth among the taps (first in tap
    order on ties), or the centre tap when all are background. */
@@ -193,7 +206,7 @@ static void finish_chunk(const struct job *j, const struct chunk *k, int y, int 
         for (int t = 0; t < k->count[m]; t++) {
             int i = m * k->per_phase + t, x = x0 + m + j->k * t;
             size_t o = row + (size_t)x;
-            float val[3] = {0.0f, 0.0f, 0.0f};
+            float val[MAX_CH] = {0.0f};
             if (k->dp[i] > 0.0f && k->wsum[i] > 0.0f) {
                 for (int ch = 0; ch < j->channels; ch++)
                     val[ch] = k->ref[ch][i] + k->acc[ch][i] / k->wsum[i];
@@ -226,6 +239,7 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_NORMAL];
     const struct ssg_image *ldep = io->in[SSG_UPSAMPLE_LOW_DEPTH];
     const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
+    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
     if (!in || (in->channels != 1 && in->channels != 3) || !dep || dep->channels != 1)
         return ssg_node_fail(ctx, SSG_E_SIZE, "upsample",
                              "in must have 1 or 3 channels, depth 1");
@@ -233,15 +247,27 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     if (!k || !ssg_image_is(ldep, in->width, in->height, 1) || (!nrm != !lnrm) ||
         (nrm && (!ssg_image_is(nrm, dep->width, dep->height, 3) ||
                  !ssg_image_is(lnrm, in->width, in->height, 3))) ||
-        !ssg_image_is(io->out[0], dep->width, dep->height, in->channels))
+        !ssg_image_is(io->out[0], dep->width, dep->height, in->channels) ||
+        (in2 && ((in2->channels != 1 && in2->channels != 3) ||
+                 !ssg_image_is(in2, in->width, in->height, in2->channels) ||
+                 !ssg_image_is(io->out[1], dep->width, dep->height, in2->channels))))
         return ssg_node_fail(ctx, SSG_E_SIZE, "upsample", "inconsistent image sizes");
-    struct job j = {.c = consts, .channels = in->channels, .depth = dep->data,
+    int n2 = in2 ? in2->channels : 0;
+    struct job j = {.c = consts, .channels = in->channels + n2, .depth = dep->data,
                     .ldepth = ldep->data, .w = dep->width, .h = dep->height,
                     .lw = in->width, .lh = in->height, .k = k};
     for (int ch = 0; ch < in->channels; ch++) {
         j.in[ch] = ssg_image_plane(in, ch);
         j.out[ch] = ssg_image_plane(io->out[0], ch);
     }
+    for (int ch = 0; ch < n2; ch++) {
+        j.in[in->channels + ch] = ssg_image_plane(in2, ch);
+        j.out[in->channels + ch] = ssg_image_plane(io->out[1], ch);
+    }
+    if (!in2) /* out2 is documented as all 0 when in2 is unconnected */
+        memset(io->out[1]->data, 0, sizeof(float) * (size_t)io->out[1]->width *
+                                        (size_t)io->out[1]->height *
+                                        (size_t)io->out[1]->channels);
     for (int ch = 0; nrm && ch < 3; ch++) {
         j.nrm[ch] = ssg_image_plane(nrm, ch);
         j.lnrm[ch] = ssg_image_plane(lnrm, ch);

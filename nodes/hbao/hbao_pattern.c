@@ -1,0 +1,104 @@
+/* hbao_pattern.c - what the CPU kernel of the `hbao` node reads, prepared before the
+ * march (hbao_cpu.c): the checks of the images, the rotation pattern (Bavoil, Sainz and
+ * Dimitrov, "Image-Space Horizon-Based Ambient Occlusion", SIGGRAPH 2008: per-pixel
+ * random rotation of the directions and jitter of the steps, from a tiled n x n texture)
+ * unrolled to full rows, the per-column basis vector e1, and the depth plane padded by
+ * one pixel of +inf. Method and geometry are in hbao.c; the job is in hbao_cpu.h. */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#include "hbao_cpu.h"
+
+/* As in hbao_cpu.c: no float operation here traps, and no result changes (no
+   reassociation, no contraction); it only lets GCC vectorise the selects of ssg_hbao_rows_pad. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+/* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
+   read out of bounds. */
+enum ssg_err ssg_hbao_images_check(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
+{
+    const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
+    const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
+    const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
+    if (!pos || pos->channels != 3 || !ssg_image_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
+                                                pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "position and normal must be 3-channel, one size");
+    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "hbao", "rotation must be n x n x 2");
+    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "depth must be 1-channel, the size of position");
+    if (io->in[SSG_HBAO_IN_COUNT] &&
+        !ssg_image_is(io->in[SSG_HBAO_IN_COUNT], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "count must be 1-channel, the size of position");
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
+                             "output must be 1-channel, the size of position");
+    return SSG_OK;
+}
+
+/* The pattern unrolled to n full rows (see struct job; without a pattern one row of
+   cos 1, sin 0, u 1) and the columns' e1. Returns the one allocation holding them, or
+   NULL. Needs j->f and j->cx. */
+float *ssg_hbao_pattern_unroll(const struct ssg_image *rot, int w, struct job *j)
+{
+    int n = rot ? rot->width : 1;
+    size_t row = (size_t)w, plane = (size_t)n * row, cells = (size_t)n * (size_t)n;
+    float *mem = malloc((3 * plane + 2 * row) * sizeof *mem);
+    if (!mem)
+        return NULL;
+    float *rc = mem, *rs = mem + plane, *ju = mem + 2 * plane;
+    float *e1x = mem + 3 * plane, *e1z = e1x + row;
+    for (int x = 0; x < w; x++) {
+        float au = ((float)x + 0.5f - j->cx) / j->f;
+        float h = 1.0f / sqrtf(1.0f + au * au);
+        e1x[x] = h;
+        e1z[x] = au * h;
+    }
+    j->e1x = e1x;
+    j->e1z = e1z;
+    for (int y = 0; y < n; y++)
+        for (int x = 0; x < w; x++) {
+            size_t o = (size_t)y * row + (size_t)x;
+            if (!rot) {
+                rc[o] = 1.0f, rs[o] = 0.0f, ju[o] = 1.0f;
+                continue;
+            }
+            size_t cell = (size_t)y * n + (size_t)(x % n);
+            size_t half = (size_t)((y + n / 2) % n) * n + (size_t)((x + n / 2) % n);
+            rc[o] = rot->data[cell];
+            rs[o] = rot->data[cells + cell];
+            /* u = 1 - frac(phi / 2 pi) in (0, 1], phi the angle of the cell half a tile
+               away. */
+            double a = atan2(rot->data[cells + half], rot->data[half]) / (2.0 * M_PI);
+            float u = (float)(1.0 - (a - floor(a)));
+            ju[o] = u > 0.0f ? u : 1.0f;
+        }
+    j->n = n;
+    j->rot_c = rc;
+    j->rot_s = rs;
+    j->jitter = ju;
+    return mem;
+}
+
+/* Fills the padded depth plane (struct job), rows [y0, y1) of the image. */
+void ssg_hbao_rows_pad(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    const float sign = j->depth_sign;
+    for (int y = y0; y < y1; y++) {
+        const float *restrict src = j->depth + (size_t)y * (size_t)j->w;
+        float *restrict dst = j->padded + (size_t)(y + 1) * (size_t)j->pw;
+        dst[0] = INFINITY;
+        dst[j->w + 1] = INFINITY;
+        for (int x = 0; x < j->w; x++) {
+            float d = sign * src[x];
+            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
+        }
+    }
+}
