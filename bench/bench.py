@@ -55,7 +55,7 @@ def run_once(binary, graph, size, threads, out_dir):
     table = None
     for line in res.stdout.splitlines():
         parts = line.split()
-        if parts[:3] == ["node", "type", "ms"]:
+        if parts[:4] == ["node", "type", "on", "ms"]:
             table = "times"
         elif parts[:2] == ["metrics", "of"]:
             table = "metrics"
@@ -63,7 +63,7 @@ def run_once(binary, graph, size, threads, out_dir):
             peak = int(parts[1]) / 1024.0
         elif table == "times" and len(parts) >= 2:
             name = parts[0] if parts[0] == "total" else f"{parts[0]} ({parts[1]})"
-            times[name] = float(parts[1] if parts[0] == "total" else parts[2])
+            times[name] = float(parts[1] if parts[0] == "total" else parts[3])
         elif table == "metrics" and len(parts) == 3:
             metrics[f"{parts[0]} {parts[1]}"] = float(parts[2])
     return times, metrics, peak
@@ -183,10 +183,10 @@ def parse_times(stdout):
     times, table = {}, False
     for line in stdout.splitlines():
         parts = line.split()
-        if parts[:3] == ["node", "type", "ms"]:
+        if parts[:4] == ["node", "type", "on", "ms"]:
             table = True
-        elif table and len(parts) >= 3 and parts[0] != "total":
-            times[f"{parts[0]} ({parts[1]})"] = float(parts[2])
+        elif table and len(parts) >= 4 and parts[0] != "total":
+            times[f"{parts[0]} ({parts[1]})"] = float(parts[3])
         elif parts and parts[0] == "total":
             table = False
     return times

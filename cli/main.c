@@ -49,6 +49,9 @@ static const char *const usage_text =
     "  --seed N            seed of every pseudo-random choice (default: the graph's, or 1)\n"
     "  --out DIR           output directory (default out)\n"
     "  --threads N         worker threads (default: all cores); never changes the result\n"
+    "  --backend cpu|gl    run every node there (gl: OpenGL 4.5 through EGL on a GPU, else\n"
+    "                      OSMesa; nodes without GL stay on the CPU); default: the graph's\n"
+    "                      `backend` line and its nodes' backend= arguments, else cpu\n"
     "  --quiet             do not print per-node timings\n"
     "  --in PORT=FILE[:LAYER]  (node) bind an image file, or one EXR layer of it, to a port\n"
     "  --fov DEGREES       (node) vertical field of view of the frame (default 45)\n"
@@ -127,6 +130,10 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         o->fov = strtof(val, &end);
         if (*end || !(o->fov > 0 && o->fov < 180))
             return usage_error("--fov expects degrees in (0, 180), got '%s'", val);
+    } else if (!strcmp(opt, "--backend")) {
+        if (strcmp(val, "cpu") && strcmp(val, "gl"))
+            return usage_error("--backend expects cpu or gl, got '%s'", val);
+        o->ov.backend = val;
     } else if (!strcmp(opt, "--out")) {
         o->out_dir = val;
     } else {
@@ -271,9 +278,16 @@ static int cmd_node(const struct options *o)
     struct ssg_frame frame = {o->ov.width, o->ov.height, o->fov, 0, 0,
                               o->ov.seed >= 0 ? (uint64_t)o->ov.seed : 1};
     struct ssg_outputs out = {0};
+    const char *sets[MAX_SETS + 1];
+    int set_count = o->ov.set_count;
+    memcpy(sets, o->sets, (size_t)set_count * sizeof *sets);
+    char backend[32];
+    if (o->ov.backend) {
+        snprintf(backend, sizeof backend, "backend=%s", o->ov.backend);
+        sets[set_count++] = backend;
+    }
     if (!e)
-        e = ssg_node_run(o->file, bind, o->input_count, o->sets, o->ov.set_count, &frame, &out,
-                         &d);
+        e = ssg_node_run(o->file, bind, o->input_count, sets, set_count, &frame, &out, &d);
     if (!e)
         e = write_outputs(&out, o->out_dir, &d);
     if (!e)

@@ -5,6 +5,7 @@
 #include <time.h>
 
 #include "exec.h"
+#include "gl_backend.h"
 #include "image.h"
 #include "parse.h"
 
@@ -84,12 +85,63 @@ enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *para
     return SSG_OK;
 }
 
+const char *ssg_backend_name(enum ssg_backend b)
+{
+    return b == SSG_BACKEND_CPU ? "cpu" : b == SSG_BACKEND_GL ? "gl" : "default";
+}
+
+int ssg_backend_parse(const char *text, size_t len, enum ssg_backend *out)
+{
+    if (len == 3 && !strncmp(text, "cpu", 3))
+        *out = SSG_BACKEND_CPU;
+    else if (len == 2 && !strncmp(text, "gl", 2))
+        *out = SSG_BACKEND_GL;
+    else
+        return 0;
+    return 1;
+}
+
+/* Makes every input current where the node runs; the transfers' time goes to *ms. */
+static enum ssg_err move_inputs(const struct ssg_node_desc *desc, const struct ssg_io *io,
+                                int on_gl, double *ms, struct ssg_diags *diags)
+{
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < desc->input_count && !e; i++)
+        if (io->in[i])
+            e = on_gl ? ssg_gl_to_gpu(io->in[i], ms, diags) : ssg_gl_to_cpu(io->in[i], ms, diags);
+    for (int i = 0; i < io->extra_count && !e; i++)
+        e = on_gl ? ssg_gl_to_gpu(io->extra_in[i], ms, diags)
+                  : ssg_gl_to_cpu(io->extra_in[i], ms, diags);
+    return e;
+}
+
+static enum ssg_err run_backend(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                                const void *consts, const struct ssg_io *io, int on_gl,
+                                struct ssg_node_timing *t)
+{
+    enum ssg_err e = move_inputs(desc, io, on_gl, &t->transfer_ms, ctx->diags);
+    if (e)
+        return e;
+    if (!on_gl)
+        e = desc->run_cpu(ctx, consts, io);
+    else {
+        ssg_gl_timer_begin();
+        e = desc->run_gl(ctx, consts, io);
+        t->gpu_ms = ssg_gl_timer_end();
+    }
+    for (int i = 0; i < desc->output_count; i++)
+        ssg_gl_mark_written(io->out[i], on_gl);
+    return e;
+}
+
 enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
-                              const void *params, const struct ssg_io *io, double *ms)
+                              const void *params, const struct ssg_io *io,
+                              enum ssg_backend backend, struct ssg_node_timing *timing)
 {
     double t0 = ssg_now_ms();
     void *consts = NULL;
     enum ssg_err e = SSG_OK;
+    *timing = (struct ssg_node_timing){0};
     if (desc->consts_size) {
         consts = calloc(1, desc->consts_size);
         if (!consts) {
@@ -100,10 +152,11 @@ enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg
         if (desc->prepare)
             e = desc->prepare(ctx, params, consts);
     }
+    int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
     if (!e)
-        e = desc->run_cpu(ctx, consts ? consts : params, io);
+        e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
     free(consts);
-    *ms = ssg_now_ms() - t0;
+    timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
     return e;
 }
 

@@ -19,10 +19,27 @@ enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *para
                               const struct ssg_frame *frame, const struct ssg_shape *in,
                               struct ssg_shape *out, char *why, size_t why_len);
 
-/* Runs prepare() and run_cpu() of one node; returns the node's error (its message is in
- * ctx->diags) and the milliseconds the two took. */
+/* Where a node runs. DEFAULT resolves to the graph's backend (CPU unless `backend gl` or
+ * --backend gl), and GL to CPU for a node without a GL side. */
+enum ssg_backend { SSG_BACKEND_DEFAULT, SSG_BACKEND_CPU, SSG_BACKEND_GL };
+/* "cpu", "gl" (DEFAULT: "default"). */
+const char *ssg_backend_name(enum ssg_backend b);
+/* Parses "cpu" or "gl"; returns 1 on success. */
+int ssg_backend_parse(const char *text, size_t len, enum ssg_backend *out);
+
+/* What one node's run cost. */
+struct ssg_node_timing {
+    double ms;          /* wall clock of prepare + run (GL: until the GPU finished) */
+    double gpu_ms;      /* GL: the timer query around the run; CPU: 0 */
+    double transfer_ms; /* uploads or downloads of its inputs before it ran */
+};
+
+/* Runs prepare() and the backend's run of one node (CPU or GL, see gl_backend.h for the
+ * transfers it inserts; GL must be open); returns the node's error (its message is in
+ * ctx->diags) and what it cost. */
 enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
-                              const void *params, const struct ssg_io *io, double *ms);
+                              const void *params, const struct ssg_io *io,
+                              enum ssg_backend backend, struct ssg_node_timing *timing);
 
 /* Wall-clock milliseconds from an arbitrary origin. */
 double ssg_now_ms(void);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl_backend.h"
 #include "graph.h"
 #include "image.h"
 #include "metrics.h"
@@ -111,8 +112,9 @@ struct run {
     struct ssg_pool *pool;
     const struct ssg_run_options *opt;
     struct ssg_diags *diags;
-    double *ms;
+    struct ssg_node_timing *t; /* per run position */
     struct ssg_metrics metrics;
+    int uses_gl;               /* a node runs on GL: the backend is open */
 };
 
 static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
@@ -178,7 +180,7 @@ static enum ssg_err run_node(struct run *r, int p)
     struct ssg_io io = {in, n->out_img, n->extra_count, n->extra_names, extra, n->extra_types};
     struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene, out_dir(r), r->diags,
                                &r->metrics};
-    e = ssg_node_execute(n->desc, &ctx, n->params, &io, &r->ms[p]);
+    e = ssg_node_execute(n->desc, &ctx, n->params, &io, n->runs_on, &r->t[p]);
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
                     ssg_err_text(e));
@@ -189,14 +191,32 @@ static void print_timings(const struct run *r, double total)
 {
     FILE *log = r->opt->log ? r->opt->log : stdout;
     const struct ssg_graph *g = r->g;
-    fprintf(log, "%-16s %-12s %10s\n", "node", "type", "ms");
+    fprintf(log, "%-16s %-12s %-4s %10s %10s %10s\n", "node", "type", "on", "ms", "gpu ms",
+            "xfer ms");
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
-        fprintf(log, "%-16s %-12s %10.2f\n", n->name, n->desc->name, r->ms[p]);
+        const struct ssg_node_timing *t = &r->t[p];
+        char gpu[32] = "-", xfer[32] = "-";
+        if (n->runs_on == SSG_BACKEND_GL)
+            snprintf(gpu, sizeof gpu, "%.2f", t->gpu_ms);
+        if (t->transfer_ms > 0)
+            snprintf(xfer, sizeof xfer, "%.2f", t->transfer_ms);
+        fprintf(log, "%-16s %-12s %-4s %10.2f %10s %10s\n", n->name, n->desc->name,
+                ssg_backend_name(n->runs_on), t->ms, gpu, xfer);
     }
-    fprintf(log, "%-16s %-12s %10.2f   (%dx%d, %d threads, peak images %.1f MB)\n", "total",
-            "", total, g->width, g->height, omp_get_max_threads(),
+    fprintf(log, "%-16s %-12s %-4s %10.2f %10s %10s   (%dx%d, %d threads, peak images %.1f MB)\n",
+            "total", "", "", total, "", "", g->width, g->height, omp_get_max_threads(),
             (double)ssg_pool_peak_bytes(r->pool) / (1024.0 * 1024.0));
+    if (r->uses_gl)
+        fprintf(log, "GL: %s\n", ssg_gl_describe());
+}
+
+static int graph_uses_gl(const struct ssg_graph *g)
+{
+    for (int p = 0; p < g->order_count; p++)
+        if (g->nodes[g->order[p]].runs_on == SSG_BACKEND_GL)
+            return 1;
+    return 0;
 }
 
 enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *options,
@@ -204,12 +224,17 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
 {
     struct ssg_run_options defaults = {0};
     struct run r = {g, ssg_pool_create(), options ? options : &defaults, diags,
-                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof(double)),
-                    {0}};
-    if (!r.pool || !r.ms) {
+                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof *r.t),
+                    {0}, graph_uses_gl(g)};
+    if (!r.pool || !r.t) {
         ssg_pool_destroy(&r.pool);
-        free(r.ms);
+        free(r.t);
         return SSG_E_NOMEM;
+    }
+    if (r.uses_gl && ssg_gl_open(diags)) {
+        ssg_pool_destroy(&r.pool);
+        free(r.t);
+        return SSG_E_BACKEND;
     }
     if (r.opt->threads > 0)
         omp_set_num_threads(r.opt->threads);
@@ -231,7 +256,9 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
             e = ssg_metrics_write_json(&r.metrics, path, diags);
     }
     release_all(&r);
-    ssg_pool_destroy(&r.pool);
-    free(r.ms);
+    ssg_pool_destroy(&r.pool); /* deletes the textures too: GL is still open */
+    if (r.uses_gl)
+        ssg_gl_close();
+    free(r.t);
     return e;
 }

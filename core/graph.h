@@ -37,6 +37,9 @@ struct gnode {
     int last_reader[SSG_MAX_PORTS]; /* run position of the last node reading each output */
     struct ssg_image *out_img[SSG_MAX_PORTS];
     const struct ssg_stmt *stmt; /* the statement that made it */
+    enum ssg_backend backend;  /* backend= of the call; DEFAULT = the graph's */
+    struct ssg_loc backend_loc; /* where backend= was written */
+    enum ssg_backend runs_on;  /* resolved by validation: CPU or GL */
 };
 
 struct ssg_graph {
@@ -53,6 +56,8 @@ struct ssg_graph {
     int order_count;
     struct ssg_scene *scene;
     struct ssg_frame frame;
+    enum ssg_backend backend;  /* `backend` directive; DEFAULT = cpu */
+    enum ssg_backend forced;   /* --backend: every node runs there (DEFAULT = not given) */
 };
 
 /* Reads path (and what it includes), builds nodes, applies `set` lines and overrides.

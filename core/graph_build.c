@@ -166,10 +166,30 @@ static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg 
     connect(b, &n->extra[n->extra_count++], &a->value);
 }
 
+/* backend=cpu|gl on any node: where it runs (graph.h). An identifier, like enum values. */
+static void bind_backend(struct builder *b, struct gnode *n, const struct ssg_value *v)
+{
+    enum ssg_backend backend;
+    if ((v->kind != SSG_V_IDENT && v->kind != SSG_V_STRING) ||
+        !ssg_backend_parse(v->text, v->len, &backend)) {
+        ssg_diag_at(b->diags, SSG_E_VALUE, v->loc, "backend of node '%s' must be cpu or gl",
+                    n->name);
+        fail(b, SSG_E_VALUE);
+        return;
+    }
+    n->backend = backend;
+    n->backend_loc = v->loc;
+}
+
 /* One key=value (from the call, a set line or the command line). */
 static void bind_named(struct builder *b, struct gnode *n, const struct ssg_arg *a)
 {
     const struct ssg_node_desc *d = n->desc;
+    if (ssg_tok_eq(a->key, a->key_len, "backend") &&
+        ssg_param_find(d->params, a->key, a->key_len) < 0) {
+        bind_backend(b, n, &a->value);
+        return;
+    }
     int port = ssg_port_find(d->inputs, d->input_count, a->key, a->key_len);
     int param = port < 0 ? ssg_param_find(d->params, a->key, a->key_len) : -1;
     if (port >= 0)
@@ -264,6 +284,20 @@ static void directive_size(struct builder *b, const struct ssg_stmt *st)
     }
 }
 
+/* backend cpu|gl: where nodes without their own backend= run. */
+static void directive_backend(struct builder *b, const struct ssg_stmt *st)
+{
+    const struct ssg_value *v = st->arg_count == 1 ? &st->args[0].value : NULL;
+    enum ssg_backend backend;
+    if (!v || v->kind != SSG_V_IDENT || !ssg_backend_parse(v->text, v->len, &backend)) {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, v ? v->loc : st->name_loc,
+                    "'backend' expects cpu or gl, e.g. backend gl");
+        fail(b, SSG_E_SYNTAX);
+        return;
+    }
+    b->g->backend = backend;
+}
+
 static void directive(struct builder *b, const struct ssg_stmt *st)
 {
     const char *path;
@@ -279,6 +313,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
     } else if (ssg_tok_eq(st->name, st->name_len, "seed")) {
         if (st->arg_count == 1 && directive_int(b, st, 0, 0, 2147483647LL, &seed))
             b->g->seed = seed;
+    } else if (ssg_tok_eq(st->name, st->name_len, "backend")) {
+        directive_backend(b, st);
     } else if (ssg_tok_eq(st->name, st->name_len, "include")) {
         if ((path = directive_string(b, st))) {
             ssg_path_resolve(st->loc.src->path, path, resolved, sizeof resolved);
@@ -286,7 +322,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
         }
     } else {
         ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' (expected "
-                    "name = node(...), set node.param = value, scene, size, seed or include)",
+                    "name = node(...), set node.param = value, scene, size, seed, backend or "
+                    "include)",
                     (int)st->name_len, st->name);
         fail(b, SSG_E_SYNTAX);
     }
@@ -400,6 +437,11 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
     }
     if (ov->seed >= 0)
         b->g->seed = ov->seed;
+    if (ov->backend && !ssg_backend_parse(ov->backend, strlen(ov->backend), &b->g->forced)) {
+        ssg_diag_at(b->diags, SSG_E_USAGE, (struct ssg_loc){0}, "--backend must be cpu or gl, "
+                    "got '%s'", ov->backend);
+        fail(b, SSG_E_USAGE);
+    }
 }
 
 enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,

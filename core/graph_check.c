@@ -219,6 +219,24 @@ static void last_readers(struct ssg_graph *g)
     }
 }
 
+/* Where each node runs: --backend for all, else the node's backend=, else the graph's
+ * `backend`; GL falls back to the CPU for a node without a GL side unless the node itself
+ * asked for GL. */
+static void resolve_backend(struct checker *c, struct gnode *n)
+{
+    enum ssg_backend want = c->g->forced ? c->g->forced
+                            : n->backend ? n->backend
+                            : c->g->backend ? c->g->backend
+                                            : SSG_BACKEND_CPU;
+    if (want == SSG_BACKEND_GL && !n->desc->run_gl && !c->g->forced && n->backend) {
+        ssg_diag_at(c->diags, SSG_E_BACKEND, n->backend_loc, "node '%s' (%s) has no GL "
+                    "implementation (expected backend=cpu; reference, compare and write nodes "
+                    "run on the CPU)", n->name, n->desc->name);
+        fail(c, SSG_E_BACKEND);
+    }
+    n->runs_on = want == SSG_BACKEND_GL && n->desc->run_gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU;
+}
+
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
 {
     struct checker c = {g, diags, SSG_OK};
@@ -230,6 +248,7 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         for (int k = 0; k < n->extra_count; k++)
             resolve(&c, &n->extra[k]);
         check_required(&c, n);
+        resolve_backend(&c, n);
     }
     for (int i = 0; i < g->count; i++) {
         if (g->nodes[i].desc->is_sink) {

@@ -3,6 +3,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
+#include "gl_backend.h"
 #include "image.h"
 
 enum { HUGE_PAGE = 2 * 1024 * 1024 };
@@ -42,6 +43,7 @@ struct ssg_image *ssg_image_create(int width, int height, int channels)
     im->width = width;
     im->height = height;
     im->channels = channels;
+    im->gpu = NULL;
     im->data = pixels_alloc((size_t)width * (size_t)height * (size_t)channels * sizeof(float));
     if (!im->data) {
         free(im);
@@ -54,6 +56,7 @@ void ssg_image_destroy(struct ssg_image **image)
 {
     if (!image || !*image)
         return;
+    ssg_gl_image_free(*image);
     free((*image)->data);
     free(*image);
     *image = NULL;

@@ -113,6 +113,13 @@ struct ssg_node_desc {
     /* The CPU backend. `consts` is what prepare wrote, or the params when consts_size is 0. */
     enum ssg_err (*run_cpu)(const struct ssg_node_ctx *ctx, const void *consts,
                             const struct ssg_io *io);
+    /* The GL backend (nodes/<name>/<name>_gl.c, through core/gl.h only), NULL = CPU only.
+       Same contract as run_cpu: the runtime has made every input and output image a GL
+       texture (io->in[i]->data must not be read), the same consts; it must write every
+       output pixel. The CPU result is the reference; tests/test_gl_parity.c states how
+       far this one may be from it. */
+    enum ssg_err (*run_gl)(const struct ssg_node_ctx *ctx, const void *consts,
+                           const struct ssg_io *io);
 };
 
 /* The registry, built from nodes/nodes.def. NULL when unknown. */

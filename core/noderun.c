@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "exec.h"
+#include "gl_backend.h"
 #include "image.h"
 #include "metrics.h"
 #include "parse.h"
@@ -94,21 +95,55 @@ static struct ssg_frame make_frame(const struct single *s, const struct ssg_fram
     return f;
 }
 
+/* "backend=cpu|gl" among the sets (as in a graph file); 1 when sets[i] was one. */
+static int backend_set(const struct ssg_node_desc *d, const char *set, enum ssg_backend *b,
+                       enum ssg_err *e, struct ssg_diags *diags)
+{
+    if (strncmp(set, "backend=", 8) != 0 || ssg_param_find(d->params, "backend", 7) >= 0)
+        return 0;
+    *e = SSG_OK;
+    if (!ssg_backend_parse(set + 8, strlen(set + 8), b)) {
+        ssg_diag_file(diags, SSG_E_VALUE, "<--set>", "backend must be cpu or gl, got '%s'",
+                      set + 8);
+        *e = SSG_E_VALUE;
+    } else if (*b == SSG_BACKEND_GL && !d->run_gl) {
+        ssg_diag_file(diags, SSG_E_BACKEND, "<--set>", "node '%s' has no GL implementation "
+                      "(expected backend=cpu)", d->name);
+        *e = SSG_E_BACKEND;
+    }
+    return 1;
+}
+
 static enum ssg_err apply_sets(const struct ssg_node_desc *d, void *params,
-                               const char *const *sets, int count, struct ssg_diags *diags)
+                               const char *const *sets, int count, enum ssg_backend *backend,
+                               struct ssg_diags *diags)
 {
     enum ssg_err first = SSG_OK;
     for (int i = 0; i < count; i++) {
-        enum ssg_err e = ssg_param_set_text(d->params, params, sets[i], "<--set>", d->name,
-                                            diags);
+        enum ssg_err e;
+        if (!backend_set(d, sets[i], backend, &e, diags))
+            e = ssg_param_set_text(d->params, params, sets[i], "<--set>", d->name, diags);
         if (e && !first)
             first = e;
     }
     return first;
 }
 
+/* GL outputs come back to the CPU: the caller reads their pixels. */
+static enum ssg_err outputs_to_cpu(struct ssg_outputs *outputs, struct ssg_diags *diags)
+{
+    double ms = 0;
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < outputs->count && !e; i++)
+        e = ssg_gl_to_cpu(outputs->images[i], &ms, diags);
+    for (int i = 0; i < outputs->count; i++)
+        ssg_gl_image_free(outputs->images[i]);
+    return e;
+}
+
 static enum ssg_err run_single(struct single *s, const void *params, const struct ssg_frame *f,
-                               struct ssg_outputs *outputs, struct ssg_diags *diags)
+                               enum ssg_backend backend, struct ssg_outputs *outputs,
+                               struct ssg_diags *diags)
 {
     struct ssg_shape out_shape[SSG_MAX_PORTS];
     char why[400];
@@ -129,8 +164,21 @@ static enum ssg_err run_single(struct single *s, const void *params, const struc
                         s->extra_types};
     struct ssg_metrics metrics = {0};
     struct ssg_node_ctx ctx = {s->d->name, f, NULL, "out", diags, &metrics};
-    double ms;
-    e = ssg_node_execute(s->d, &ctx, params, &io, &ms);
+    struct ssg_node_timing timing;
+    if (backend == SSG_BACKEND_GL && (e = ssg_gl_open(diags)))
+        return e;
+    e = ssg_node_execute(s->d, &ctx, params, &io, backend, &timing);
+    if (backend == SSG_BACKEND_GL) {
+        enum ssg_err back = outputs_to_cpu(outputs, diags);
+        for (int i = 0; i < s->d->input_count; i++)
+            if (s->in[i])
+                ssg_gl_image_free((struct ssg_image *)s->in[i]); /* the caller's image */
+        for (int i = 0; i < s->extra_count; i++)
+            ssg_gl_image_free((struct ssg_image *)s->extra[i]);
+        ssg_gl_close();
+        if (!e)
+            e = back;
+    }
     for (int i = 0; i < metrics.count && i < 16; i++) {
         snprintf(outputs->metric_names[i], sizeof outputs->metric_names[i], "%s",
                  metrics.items[i].name);
@@ -160,7 +208,8 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
     if (!params)
         return SSG_E_NOMEM;
     ssg_params_defaults(s.d->params, params);
-    enum ssg_err e = apply_sets(s.d, params, sets, set_count, diags);
+    enum ssg_backend backend = SSG_BACKEND_CPU;
+    enum ssg_err e = apply_sets(s.d, params, sets, set_count, &backend, diags);
     enum ssg_err b = bind_inputs(&s, inputs, input_count, diags);
     if (!e)
         e = b;
@@ -168,7 +217,7 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
        the shape check rejects a frame-sized output of a frame without a size. */
     struct ssg_frame f = make_frame(&s, frame);
     if (!e)
-        e = run_single(&s, params, &f, outputs, diags);
+        e = run_single(&s, params, &f, backend, outputs, diags);
     free(params);
     if (e)
         ssg_outputs_release(outputs);

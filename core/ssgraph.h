@@ -65,6 +65,8 @@ struct ssg_image {
     int height;    /* pixels */
     int channels;  /* planes, 1..4 */
     float *data;   /* width * height * channels floats, planar */
+    struct ssg_gl_image *gpu; /* private to the GL backend: its copy of the pixels, NULL =
+                                 none (zero-initialise it) */
 };
 
 /* Allocates a zeroed image; NULL for absurd sizes or when out of memory. */
@@ -113,6 +115,8 @@ struct ssg_overrides {
     const char *const *sets; /* "node.param=value" strings */
     int set_count;
     int64_t seed;            /* -1 = the graph's own seed */
+    const char *backend;     /* "cpu" or "gl": every node runs there (a node without a GL
+                                side stays on the CPU); NULL = the graph's and nodes' own */
 };
 
 struct ssg_graph;
@@ -153,7 +157,8 @@ struct ssg_outputs {
 };
 void ssg_outputs_release(struct ssg_outputs *outputs);
 
-/* Runs one node alone on in-memory images. `sets` are "param=value" strings. The frame
+/* Runs one node alone on in-memory images. `sets` are "param=value" strings, and
+ * "backend=gl" runs the node on the GL backend (outputs come back as CPU images). The frame
  * gives size and camera; its width/height default to the first input's size. */
 enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, int input_count,
                           const char *const *sets, int set_count, const struct ssg_frame *frame,

@@ -163,7 +163,8 @@ static void test_wall(void)
             double v[3];
             int n;
             for (int c = 0; c < 3; c++) {
-                struct ssg_image plane = {W, H, 1, b->data + c * (size_t)W * H};
+                struct ssg_image plane = {.width = W, .height = H, .channels = 1,
+                                          .data = b->data + c * (size_t)W * H};
                 v[c] = mean_over(&plane, g.which, W / 4, y, 3 * W / 4, y + 1, 0, &n);
             }
             if (a >= 0.5) { /* out of reach: nothing */

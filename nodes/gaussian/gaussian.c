@@ -99,4 +99,5 @@ const struct ssg_node_desc ssg_node_gaussian = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_gaussian_run_cpu,
+    .run_gl = ssg_gaussian_run_gl,
 };

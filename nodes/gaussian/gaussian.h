@@ -21,5 +21,7 @@ struct ssg_gaussian_consts {
 
 enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                   const struct ssg_io *io);
+enum ssg_err ssg_gaussian_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                 const struct ssg_io *io);
 
 #endif
