@@ -3,8 +3,10 @@
  *
  * A program's text is: #version 450 core, the stage define (SSG_COMPUTE, SSG_VERTEX or
  * SSG_FRAGMENT), the node's defines, core/common.glsl, then the node's file, with #line
- * directives so that the compiler counts lines in the files themselves: source string 1
- * is common.glsl, 2 the node's file. */
+ * directives so that the compiler counts lines in the files themselves. Drivers differ in
+ * whether they report #line's source-string number (Mesa 22 prints 0), so the parts are
+ * told apart by line number instead: the defines start at DEFINES_BASE + 1, common.glsl at
+ * COMMON_BASE + 1 and the node's file at 1. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,7 +16,7 @@
 #include "parse.h"
 #include "shaders.h"
 
-enum { CACHE_MAX = 128 };
+enum { CACHE_MAX = 128, COMMON_BASE = 10000, DEFINES_BASE = 20000 };
 
 struct cached {
     char shader[64];
@@ -60,7 +62,10 @@ static void report_log(const struct ssg_node_ctx *ctx, const char *shader, const
         if (!line[0])
             continue;
         if (parse_log_line(line, &string, &lineno, &rest)) {
-            const char *file = string == 2 ? shader : string == 1 ? "common.glsl" : "defines";
+            const char *file = lineno > DEFINES_BASE  ? "defines"
+                               : lineno > COMMON_BASE ? "common.glsl"
+                                                      : shader;
+            lineno -= lineno > DEFINES_BASE ? DEFINES_BASE : lineno > COMMON_BASE ? COMMON_BASE : 0;
             ssg_diag_at(ctx->diags, SSG_E_SHADER, (struct ssg_loc){0},
                         "node '%s': %s %s:%d: %s", ctx->instance, what, file, lineno, rest);
         } else {
@@ -78,9 +83,12 @@ static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage, const 
                             const char *shader, const char *source, const char *defines)
 {
     char head[160];
-    snprintf(head, sizeof head, "#version 450 core\n#define %s 1\n", stage_define);
-    const char *parts[] = {head, defines ? defines : "", "\n#line 1 1\n",
-                           ssg_shader_source("common.glsl"), "\n#line 1 2\n", source};
+    snprintf(head, sizeof head, "#version 450 core\n#define %s 1\n#line %d\n", stage_define,
+             DEFINES_BASE + 1);
+    char common_line[32];
+    snprintf(common_line, sizeof common_line, "\n#line %d\n", COMMON_BASE + 1);
+    const char *parts[] = {head, defines ? defines : "", common_line,
+                           ssg_shader_source("common.glsl"), "\n#line 1\n", source};
     GLuint sh = glCreateShader(stage);
     glShaderSource(sh, 6, parts, NULL);
     glCompileShader(sh);

@@ -24,7 +24,7 @@ struct parity_diff {
     int mismatched_nan; /* pixels finite on one backend and not on the other */
 };
 
-static struct parity_diff parity_compare(const struct ssg_image *cpu, const struct ssg_image *gl,
+static inline struct parity_diff parity_compare(const struct ssg_image *cpu, const struct ssg_image *gl,
                                          int border)
 {
     struct parity_diff d = {0, 0, 0};
@@ -50,9 +50,10 @@ static struct parity_diff parity_compare(const struct ssg_image *cpu, const stru
 
 /* Runs `node` on both backends and checks every output; `label` names the case. Returns
  * the largest max_abs seen (for tests that also want to see GL differ from something). */
-static double parity_node(const char *label, const char *node, const struct ssg_binding *in,
-                          int in_count, const char *const *sets, int set_count,
-                          const struct ssg_frame *frame, struct parity_tol tol)
+static inline double parity_node(const char *label, const char *node,
+                                 const struct ssg_binding *in, int in_count,
+                                 const char *const *sets, int set_count,
+                                 const struct ssg_frame *frame, struct parity_tol tol)
 {
     const char *gl_sets[64];
     int n = set_count < 63 ? set_count : 63;
