@@ -3,7 +3,7 @@
 
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
-                           [--ssdo [--samples 12,24,36,64]] [--table1]
+                           [--ssdo [--samples 12,24,36,64]] [--table1] [--backend]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -11,6 +11,9 @@ the peak memory is the process's maximum resident set (getrusage of the child), 
 includes the scene, Embree's BVH and the image pool. Without --bin it builds a Release
 binary into build-bench/ first. Speed is compared by ratios of these medians, never by
 timed assertions in tests.
+
+--backend times each node on both backends (cpu, and gl: a GPU through EGL, else llvmpipe
+through OSMesa), side by side, at 1280x720.
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -36,9 +39,10 @@ def build():
     return os.path.join(bdir, "ssgraph")
 
 
-def run_once(binary, graph, size, threads, out_dir):
-    """One run in a child process: ({node: ms}, peak RSS in MiB of that child)."""
-    cmd = [binary, "run", graph, "--size", size, "--out", out_dir]
+def run_once(binary, graph, size, threads, out_dir, extra=()):
+    """One run in a child process: ({node: ms}, peak RSS in MiB of that child). GL nodes
+    also give "<node> gpu": their timer-query milliseconds."""
+    cmd = [binary, "run", graph, "--size", size, "--out", out_dir] + list(extra)
     if threads:
         cmd += ["--threads", str(threads)]
     # ru_maxrss of RUSAGE_CHILDREN is the largest of all children so far, so each run is
@@ -64,15 +68,18 @@ def run_once(binary, graph, size, threads, out_dir):
         elif table == "times" and len(parts) >= 2:
             name = parts[0] if parts[0] == "total" else f"{parts[0]} ({parts[1]})"
             times[name] = float(parts[1] if parts[0] == "total" else parts[3])
+            if parts[0] != "total" and len(parts) >= 5 and parts[4] != "-":
+                times[name + " gpu"] = float(parts[4])
         elif table == "metrics" and len(parts) == 3:
             metrics[f"{parts[0]} {parts[1]}"] = float(parts[2])
     return times, metrics, peak
 
 
-def bench(binary, graph, size, threads, runs):
+def bench(binary, graph, size, threads, runs, extra=()):
     with tempfile.TemporaryDirectory() as out_dir:
-        run_once(binary, graph, size, threads, out_dir)  # warm-up: page cache, first touch
-        samples = [run_once(binary, graph, size, threads, out_dir) for _ in range(runs)]
+        # warm-up: page cache, first touch (and on GL the driver's shader cache)
+        run_once(binary, graph, size, threads, out_dir, extra)
+        samples = [run_once(binary, graph, size, threads, out_dir, extra) for _ in range(runs)]
     names = list(samples[0][0].keys())
     medians = {n: statistics.median(s[0][n] for s in samples) for n in names}
     spread = {n: (min(s[0][n] for s in samples), max(s[0][n] for s in samples)) for n in names}
@@ -192,6 +199,26 @@ def parse_times(stdout):
     return times
 
 
+def backend_table(binary, graphs, size, threads, runs):
+    """Each node's median ms on the CPU and on GL side by side (GL: wall clock until the
+    GPU finished, and the timer query's GPU ms; llvmpipe through OSMesa without a GPU)."""
+    print(f"{'graph':<22} {'node':<26} {'cpu ms':>9} {'gl ms':>9} {'gl gpu':>9} "
+          f"{'cpu/gl':>7}")
+    for graph in graphs:
+        cpu, _, _, _ = bench(binary, graph, size, threads, runs, ["--backend", "cpu"])
+        gl, _, _, _ = bench(binary, graph, size, threads, runs, ["--backend", "gl"])
+        gname = os.path.relpath(graph, os.path.join(ROOT, "graphs"))
+        for node, ms in cpu.items():
+            if node.endswith(" gpu") or node not in gl:
+                continue
+            gpu = gl.get(node + " gpu")
+            gpu_text = f"{gpu:>9.2f}" if gpu is not None else f"{'-':>9}"
+            ratio = ms / gl[node] if gl[node] > 0 else float("inf")
+            print(f"{gname:<22} {node:<26} {ms:>9.2f} {gl[node]:>9.2f} {gpu_text} "
+                  f"{ratio:>7.2f}", flush=True)
+    print(f"({size}, {runs} runs each after a warm-up; threads: {threads or os.cpu_count()})")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -211,8 +238,16 @@ def main():
     ap.add_argument("--table1", action="store_true",
                     help="table 1 of Szentandrasi: graphs/table1/ on three scenes, ms per "
                          "frame and error, subsampled rows against full-resolution twins")
+    ap.add_argument("--backend", action="store_true",
+                    help="each node's median ms on cpu and on gl side by side (default "
+                         "graphs: ssao, hbao, ssdo at 1280x720)")
     args = ap.parse_args()
     binary = args.bin or build()
+    if args.backend:
+        graphs = args.graph or [os.path.join(ROOT, "graphs", g) for g in
+                                ("ssao.graph", "hbao.graph", "ssdo.graph")]
+        backend_table(binary, graphs, (args.size or ["1280x720"])[0], args.threads, args.runs)
+        return
     if args.table1:
         table1(binary, (args.size or ["1024x768"])[0], args.threads, args.runs)
         return

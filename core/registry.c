@@ -85,12 +85,19 @@ static void describe_ports(const char *title, const struct ssg_port_desc *ports,
     }
 }
 
+static const char *backends(const struct ssg_node_desc *d)
+{
+    return d->run_gl ? "cpu, gl" : "cpu only";
+}
+
 enum ssg_err ssg_node_describe(const char *node, FILE *stream)
 {
     const struct ssg_node_desc *d = ssg_node_find(node, strlen(node));
     if (!d)
         return SSG_E_UNKNOWN_NODE;
-    fprintf(stream, "%s - %s\n\n%s\n\nMethod: %s\n\n", d->name, d->summary, d->doc, d->method);
+    fprintf(stream, "%s - %s\n\n%s\n\nMethod: %s\n\nBackends: %s (backend=cpu|gl on the "
+            "node, `backend` in the graph, --backend)\n\n", d->name, d->summary, d->doc,
+            d->method, backends(d));
     describe_ports("Inputs", d->inputs, d->input_count, 1, stream);
     if (d->extra_inputs)
         fprintf(stream, "  %-16s %-22s %s\n", "<name>=node.port", "any image",
@@ -126,8 +133,8 @@ void ssg_nodes_markdown(FILE *stream)
                     "tables in `nodes/`; do not edit by hand.\n\n");
     for (int i = 0; i < REGISTRY_COUNT; i++) {
         const struct ssg_node_desc *d = registry[i];
-        fprintf(stream, "## %s\n\n%s\n\n%s\n\n*Method:* %s\n\n", d->name, d->summary, d->doc,
-                d->method);
+        fprintf(stream, "## %s\n\n%s\n\n%s\n\n*Method:* %s\n\n*Backends:* %s\n\n", d->name,
+                d->summary, d->doc, d->method, backends(d));
         markdown_ports("Inputs", d->inputs, d->input_count, stream);
         markdown_ports("Outputs", d->outputs, d->output_count, stream);
         if (d->params.count) {
