@@ -70,6 +70,8 @@ def run_once(binary, graph, size, threads, out_dir, extra=()):
             times[name] = float(parts[1] if parts[0] == "total" else parts[3])
             if parts[0] != "total" and len(parts) >= 5 and parts[4] != "-":
                 times[name + " gpu"] = float(parts[4])
+            if parts[0] == "total":  # the table ends here (a "GL: ..." line may follow)
+                table = None
         elif table == "metrics" and len(parts) == 3:
             metrics[f"{parts[0]} {parts[1]}"] = float(parts[2])
     return times, metrics, peak

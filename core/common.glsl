@@ -53,3 +53,58 @@ vec2 ssg_project(vec3 proj, vec3 v)
     float inv = 1.0 / -v.z;
     return vec2(proj.y + proj.x * v.x * inv, proj.z - proj.x * v.y * inv);
 }
+
+// bilateral_math.h's exp_neg: e^x for x <= 0, clamped at -80, Taylor series to g^6, so the
+// filters' weights are the CPU's to the last bit or two. `precise` keeps the compiler from
+// fusing the multiply-adds the CPU rounds twice.
+float ssg_exp_neg(float x)
+{
+    x = x < -80.0 ? -80.0 : x;
+    precise float t = x * 1.44269504088896341;
+    float k = floor(t + 0.5);
+    precise float g = (t - k) * 0.693147180559945309;
+    precise float p = 1.0 + g * (1.0 + g * (0.5 + g * (1.0 / 6.0 + g * (1.0 / 24.0 +
+                      g * (1.0 / 120.0 + g * (1.0 / 720.0))))));
+    precise float r = p * intBitsToFloat((int(k) + 127) << 23);
+    return r;
+}
+
+// bilateral_math.h's log_pos: ln(c) of a positive normal float, atanh series to s^9.
+float ssg_log_pos(float c)
+{
+    int bits = floatBitsToInt(c);
+    int e = (bits >> 23) - 127;
+    float m = intBitsToFloat((bits & 0x007FFFFF) | 0x3F800000);
+    bool big = m > 1.41421356;
+    m = big ? 0.5 * m : m;
+    e = big ? e + 1 : e;
+    precise float s = (m - 1.0) / (m + 1.0), s2 = s * s;
+    precise float lm = 2.0 * s * (1.0 + s2 * (1.0 / 3.0 + s2 * (1.0 / 5.0 + s2 * (1.0 / 7.0 +
+                       s2 * (1.0 / 9.0)))));
+    precise float r = float(e) * 0.693147180559945309 + lm;
+    return r;
+}
+
+// The unit normal of normal image t at p, 0 where it is 0 (the CPU filters' setup).
+vec3 ssg_unit_normal(sampler2DArray t, ivec2 p)
+{
+    precise vec3 n = ssg_load3(t, p);
+    precise float nn = n.x * n.x + n.y * n.y + n.z * n.z;
+    precise float inv = nn > 0.0 ? 1.0 / sqrt(nn) : 0.0;
+    precise vec3 u = n * inv;
+    return u;
+}
+
+// A per-pixel sample count from a `count` input (ao_common.c): round(count) half up,
+// clamped to [1, k]; k when the input is unbound or the value is NaN.
+int ssg_pixel_count(sampler2DArray count, bool bound, ivec2 p, int k)
+{
+    if (!bound)
+        return k;
+    float v = ssg_load1(count, p);
+    if (isnan(v))
+        return k;
+    v = v < 1.0 ? 1.0 : v;
+    v = v <= float(k) ? v : float(k);
+    return min(int(v + 0.5), k);
+}

@@ -236,8 +236,9 @@ void ssg_gl_context_destroy(void)
     }
     if (ctx.egl_display && ctx.egl_terminate)
         ctx.egl_terminate(ctx.egl_display);
-    if (ctx.egl_lib)
-        dlclose(ctx.egl_lib);
+    /* libEGL stays loaded on purpose: Mesa's EGL driver keeps a few allocations until exit, and
+     * once unloaded LeakSanitizer can no longer name (and so suppress) the library they came from.
+     * Unloading it would also gain nothing, as the process is about to end. */
     memset(&ctx, 0, sizeof ctx);
     memset(&ssg_gl_fn, 0, sizeof ssg_gl_fn);
 }

@@ -134,4 +134,5 @@ const struct ssg_node_desc ssg_node_bilateral = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_bilateral_run_cpu,
+    .run_gl = ssg_bilateral_run_gl,
 };

@@ -1,6 +1,6 @@
 /* bilateral.h - parameters and prepared constants of the `bilateral` node, shared by
- * bilateral.c (descriptor, check, prepare) and bilateral_cpu.c (the CPU kernel). Method in
- * bilateral.c. */
+ * bilateral.c (descriptor, check, prepare), bilateral_cpu.c (the CPU kernel) and
+ * bilateral_gl.c (the GL side). Method in bilateral.c. */
 #ifndef SSG_BILATERAL_H
 #define SSG_BILATERAL_H
 
@@ -33,6 +33,9 @@ struct ssg_bilateral_consts {
 };
 
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io);
+/* The GL side (bilateral_gl.c, shader bilateral*.glsl). */
+enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io);
 
 #endif

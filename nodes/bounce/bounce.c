@@ -59,6 +59,18 @@ static const struct ssg_port_desc outputs[] = {
     {.name = "out", .types = SSG_T_COLOR, .doc = "one indirect bounce, albedo * sum F_i L_i"},
 };
 
+enum ssg_err ssg_bounce_check_run(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
+{
+    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "bounce", 1, 1);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bounce",
+                             "output must be 3-channel, the size of position");
+    return SSG_OK;
+}
+
 const struct ssg_node_desc ssg_node_bounce = {
     .name = "bounce",
     .summary = "one screen-space indirect bounce (second pass of two-step SSDO)",
@@ -83,4 +95,5 @@ const struct ssg_node_desc ssg_node_bounce = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_bounce_run_cpu,
+    .run_gl = ssg_bounce_run_gl,
 };

@@ -1,6 +1,7 @@
 /* bounce.h - parameters and prepared constants of the `bounce` node, shared by bounce.c
- * (descriptor, check, prepare) and bounce_cpu.c (the CPU kernel). Method in bounce.c; the
- * per-sample maths is ssdo's (ssdo/ssdo_sampling.h). Read-only after prepare(). */
+ * (descriptor, check, prepare), bounce_cpu.c (the CPU kernel) and bounce_gl.c (the GL
+ * side). Method in bounce.c; the per-sample maths is ssdo's (ssdo/ssdo_sampling.h, and
+ * ssdo/ssdo.glsl on GL). Read-only after prepare(). */
 #ifndef SSG_BOUNCE_H
 #define SSG_BOUNCE_H
 
@@ -19,7 +20,12 @@ struct ssg_bounce_consts {
     int frame_height;           /* px */
 };
 
+/* Both backends' run-time checks of the images (what check() promised). */
+enum ssg_err ssg_bounce_check_run(const struct ssg_node_ctx *ctx, const struct ssg_io *io);
 enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io);
+/* The GL side (bounce_gl.c, ssdo's shader ssdo/ssdo.glsl). */
+enum ssg_err ssg_bounce_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                               const struct ssg_io *io);
 
 #endif

@@ -55,13 +55,9 @@ enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
                                 const struct ssg_io *io)
 {
     const struct ssg_bounce_consts *c = consts;
-    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "bounce", 1, 1);
+    enum ssg_err e = ssg_bounce_check_run(ctx, io);
     if (e != SSG_OK)
         return e;
-    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bounce",
-                             "output must be 3-channel, the size of position");
     struct job j;
     ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height, 1);
     for (int ch = 0; ch < 3; ch++)

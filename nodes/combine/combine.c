@@ -79,4 +79,5 @@ const struct ssg_node_desc ssg_node_combine = {
     .params = SSG_TABLE(param_table),
     .params_size = sizeof(struct ssg_combine_params),
     .run_cpu = ssg_combine_run_cpu,
+    .run_gl = ssg_combine_run_gl,
 };

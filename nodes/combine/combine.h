@@ -1,5 +1,6 @@
 /* combine.h - the parameters and port order of the `combine` node (final shading), shared
- * by combine.c (descriptor), combine_cpu.c (the kernel) and tests/test_combine.c.
+ * by combine.c (descriptor), combine_cpu.c (the kernel), combine_gl.c (the GL side) and
+ * tests/test_combine.c.
  *
  * Method in combine.c: AO darkens the ambient light (Szentandrasi sec. 3.1), SSDO's
  * modulation factor darkens the light it was computed for and the bounce (sec. 4.1). */
@@ -29,5 +30,8 @@ struct ssg_combine_params {
 /* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */
 enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io);
+/* The GL side (combine_gl.c, shader combine.glsl); `consts` as for the CPU. */
+enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io);
 
 #endif

@@ -168,4 +168,5 @@ const struct ssg_node_desc ssg_node_complexity = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_complexity_run_cpu,
+    .run_gl = ssg_complexity_run_gl,
 };

@@ -1,6 +1,7 @@
 /* complexity.h - parameters and prepared constants of the `complexity` node, shared by
- * complexity.c (descriptor, check, prepare) and complexity_cpu.c (the CPU pass). Method
- * and the gradient-to-count mapping are described in complexity.c. Read-only after
+ * complexity.c (descriptor, check, prepare), complexity_cpu.c (the CPU pass) and
+ * complexity_gl.c (the GL side). Method and the gradient-to-count mapping are described
+ * in complexity.c. Read-only after
  * prepare(); the pass is thread-safe. */
 #ifndef SSG_COMPLEXITY_H
 #define SSG_COMPLEXITY_H
@@ -36,5 +37,8 @@ struct ssg_complexity_consts {
 
 enum ssg_err ssg_complexity_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                     const struct ssg_io *io);
+/* The GL side (complexity_gl.c, shaders complexity_*.glsl). */
+enum ssg_err ssg_complexity_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io);
 
 #endif

@@ -85,6 +85,18 @@ static const struct ssg_port_desc outputs[] = {
      .doc = "environment light of the chosen pixel; 0 when unconnected"},
 };
 
+enum ssg_err ssg_downsample_check_run(const struct ssg_node_ctx *ctx,
+                                      const struct ssg_downsample_params *p,
+                                      const struct ssg_io *io)
+{
+    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
+    if (p->factor != 2 && p->factor != 4)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "downsample", "factor must be 2 or 4");
+    if (!dep || dep->channels != 1)
+        return ssg_node_fail(ctx, SSG_E_SIZE, "downsample", "depth must be 1-channel");
+    return SSG_OK;
+}
+
 const struct ssg_node_desc ssg_node_downsample = {
     .name = "downsample",
     .summary = "depth-aware G-buffer subsampling: one representative pixel per block",
@@ -107,4 +119,5 @@ const struct ssg_node_desc ssg_node_downsample = {
     .params_size = sizeof(struct ssg_downsample_params),
     .check = check,
     .run_cpu = ssg_downsample_run_cpu,
+    .run_gl = ssg_downsample_run_gl,
 };

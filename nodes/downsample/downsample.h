@@ -1,5 +1,6 @@
 /* downsample.h - parameters and ports of the `downsample` node, shared by downsample.c
- * (descriptor, check) and downsample_cpu.c (the CPU kernel). Method in downsample.c. */
+ * (descriptor, check), downsample_cpu.c (the CPU kernel) and downsample_gl.c (the GL
+ * side). Method in downsample.c. */
 #ifndef SSG_DOWNSAMPLE_H
 #define SSG_DOWNSAMPLE_H
 
@@ -22,7 +23,14 @@ struct ssg_downsample_params {
     int factor; /* block side, px: 2 or 4; default 2 */
 };
 
+/* Both backends' run-time checks of the factor and the depth input. */
+enum ssg_err ssg_downsample_check_run(const struct ssg_node_ctx *ctx,
+                                      const struct ssg_downsample_params *p,
+                                      const struct ssg_io *io);
 enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                    const struct ssg_io *io);
+/* The GL side (downsample_gl.c, shader downsample*.glsl). */
+enum ssg_err ssg_downsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                     const struct ssg_io *io);
 
 #endif

@@ -97,11 +97,10 @@ enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_downsample_params *p = consts;
+    enum ssg_err e = ssg_downsample_check_run(ctx, p, io);
+    if (e != SSG_OK)
+        return e;
     const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
-    if (p->factor != 2 && p->factor != 4)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "downsample", "factor must be 2 or 4");
-    if (!dep || dep->channels != 1)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "downsample", "depth must be 1-channel");
     struct job j = {.factor = p->factor, .w = dep->width, .h = dep->height,
                     .ow = (dep->width + p->factor - 1) / p->factor,
                     .oh = (dep->height + p->factor - 1) / p->factor};

@@ -23,7 +23,8 @@
  * z = -1 so the ray parameter of a hit is its depth, and position = t * direction
  * reprojects exactly to the pixel centre through ssg_frame_projection. Background
  * pixels are 0 in every output. The camera pose comes from ctx->scene, the intrinsics
- * (fov, near, far, size) from ctx->frame. */
+ * (fov, near, far, size) from ctx->frame. On GL (gbuffer_gl.c) the rasteriser finds each
+ * pixel's triangle and the ray is cast at that triangle alone, with the same formulas. */
 #include "gbuffer.h"
 
 #include "trace.h"
@@ -90,4 +91,5 @@ const struct ssg_node_desc ssg_node_gbuffer = {
     .needs_scene = 1,
     .prepare = prepare,
     .run_cpu = ssg_gbuffer_run_cpu,
+    .run_gl = ssg_gbuffer_run_gl,
 };

@@ -29,5 +29,8 @@ struct ssg_gbuffer_consts {
 
 enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io);
+/* The GL side (gbuffer_gl.c): rasterised visibility, then the same formulas per pixel. */
+enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io);
 
 #endif

@@ -275,4 +275,5 @@ const struct ssg_node_desc ssg_node_halton = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_halton_run_cpu,
+    .run_gl = ssg_halton_run_gl,
 };

@@ -1,6 +1,6 @@
 /* halton.h - the parameters and constants of the `halton` node, and the radical inverse
- * it is built on, shared by halton.c (descriptor, check, prepare), halton_cpu.c (the copy
- * into the outputs) and tests/test_halton.c.
+ * it is built on, shared by halton.c (descriptor, check, prepare), halton_cpu.c and
+ * halton_gl.c (the copies into the outputs) and tests/test_halton.c.
  *
  * Method: Szentandrasi, "Modern Methods of Realistic Lighting in Real Time", section 4.2:
  * the Halton sequence (eq. 5-7) and its period property (eq. 8). Everything here is pure
@@ -61,5 +61,8 @@ struct ssg_node_ctx;
 struct ssg_io;
 enum ssg_err ssg_halton_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io);
+/* The GL backend (halton_gl.c, shader halton_copy.glsl): the same copy on the GPU. */
+enum ssg_err ssg_halton_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                               const struct ssg_io *io);
 
 #endif

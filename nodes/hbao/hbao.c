@@ -249,4 +249,5 @@ const struct ssg_node_desc ssg_node_hbao = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_hbao_run_cpu,
+    .run_gl = ssg_hbao_run_gl,
 };

@@ -1,6 +1,7 @@
 /* hbao.h - parameters and prepared constants of the `hbao` node, shared by hbao.c
- * (descriptor, check, prepare) and hbao_cpu.c (the CPU kernel). Method and conventions
- * are described in hbao.c. Read-only after prepare(); the kernel is thread-safe. */
+ * (descriptor, check, prepare), hbao_cpu.c (the CPU kernel) and hbao_gl.c (the GL side).
+ * Method and conventions are described in hbao.c. Read-only after prepare(); the kernel
+ * is thread-safe. */
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
@@ -45,5 +46,8 @@ struct ssg_hbao_consts {
 
 enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);
+/* The GL side (hbao_gl.c, shader hbao.glsl). */
+enum ssg_err ssg_hbao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io);
 
 #endif

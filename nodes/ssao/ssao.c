@@ -198,4 +198,5 @@ const struct ssg_node_desc ssg_node_ssao = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_ssao_run_cpu,
+    .run_gl = ssg_ssao_run_gl,
 };

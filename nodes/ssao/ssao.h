@@ -1,6 +1,6 @@
 /* ssao.h - parameters and prepared constants of the `ssao` node, shared by ssao.c
- * (descriptor, check, prepare) and ssao_cpu.c (the CPU kernel). Method and conventions are
- * described in ssao.c. */
+ * (descriptor, check, prepare), ssao_cpu.c (the CPU kernel) and ssao_gl.c (the GL side).
+ * Method and conventions are described in ssao.c. */
 #ifndef SSG_SSAO_H
 #define SSG_SSAO_H
 
@@ -42,5 +42,8 @@ struct ssg_ssao_consts {
 
 enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);
+/* The GL side (ssao_gl.c, shader ssao.glsl). */
+enum ssg_err ssg_ssao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io);
 
 #endif

@@ -198,6 +198,28 @@ static const struct ssg_port_desc outputs[] = {
      .doc = "one indirect bounce, albedo * sum F_i L_i; 0 when bounce=false"},
 };
 
+enum ssg_err ssg_ssdo_check_run(const struct ssg_node_ctx *ctx,
+                                const struct ssg_ssdo_consts *c, const struct ssg_io *io,
+                                int *out_channels)
+{
+    const int radiance = c->p.mode == SSG_SSDO_MODE_RADIANCE;
+    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "ssdo", radiance || c->p.bounce,
+                                           c->p.bounce);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    *out_channels = radiance || c->p.channels == 3 ? 3 : 1;
+    if (!ssg_image_is(io->out[0], pos->width, pos->height, *out_channels) ||
+        !ssg_image_is(io->out[1], pos->width, pos->height, 3))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo", "outputs must be the size of position "
+                             "with the channels check() gave");
+    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
+    if (cnt && !ssg_image_is(cnt, pos->width, pos->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo",
+                             "count must be 1-channel, the size of position");
+    return SSG_OK;
+}
+
 const struct ssg_node_desc ssg_node_ssdo = {
     .name = "ssdo",
     .summary = "screen-space directional occlusion (modulation or radiance) with one "
@@ -233,4 +255,5 @@ const struct ssg_node_desc ssg_node_ssdo = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_ssdo_run_cpu,
+    .run_gl = ssg_ssdo_run_gl,
 };

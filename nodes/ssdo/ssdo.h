@@ -1,6 +1,7 @@
 /* ssdo.h - parameters and prepared constants of the `ssdo` node, shared by ssdo.c
- * (descriptor, check, prepare) and ssdo_cpu.c (the CPU kernel). Method and conventions are
- * described in ssdo.c; the per-sample maths it shares with `bounce` in ssdo_sampling.h.
+ * (descriptor, check, prepare), ssdo_cpu.c (the CPU kernel) and ssdo_gl.c (the GL side).
+ * Method and conventions are described in ssdo.c; the per-sample maths it shares with
+ * `bounce` in ssdo_sampling.h (on GL, ssdo.glsl serves both nodes).
  * Read-only after prepare(); the kernel is thread-safe. */
 #ifndef SSG_SSDO_H
 #define SSG_SSDO_H
@@ -50,7 +51,21 @@ struct ssg_ssdo_consts {
     struct ssg_env_cube cube;   /* the probe in view space (env = cube) */
 };
 
+/* Both backends' run-time checks of the images (what check() promised), so a hand-built
+   run cannot read or write out of bounds; sets the colour output's channel count. */
+enum ssg_err ssg_ssdo_check_run(const struct ssg_node_ctx *ctx,
+                                const struct ssg_ssdo_consts *c, const struct ssg_io *io,
+                                int *out_channels);
 enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);
+/* The GL side (ssdo_gl.c, shader ssdo.glsl). */
+enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io);
+/* Binds what ssdo.glsl's sampling reads (the inputs of ssdo_sampling.h's ports, the
+   geometry and the projection scaled to position's size), for ssdo and bounce on GL. */
+struct ssg_gl_pass;
+void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
+                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj,
+                               int frame_w, int frame_h);
 
 #endif

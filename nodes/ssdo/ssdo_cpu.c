@@ -424,21 +424,12 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
                               const struct ssg_io *io)
 {
     const struct ssg_ssdo_consts *c = consts;
-    const int radiance = c->p.mode == SSG_SSDO_MODE_RADIANCE;
-    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "ssdo", radiance || c->p.bounce,
-                                           c->p.bounce);
+    int out_channels;
+    enum ssg_err e = ssg_ssdo_check_run(ctx, c, io, &out_channels);
     if (e != SSG_OK)
         return e;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    const int out_channels = radiance || c->p.channels == 3 ? 3 : 1;
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, out_channels) ||
-        !ssg_image_is(io->out[1], pos->width, pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo", "outputs must be the size of position "
-                             "with the channels check() gave");
     const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
-    if (cnt && !ssg_image_is(cnt, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo",
-                             "count must be 1-channel, the size of position");
     struct job j = {.c = c, .out_channels = out_channels, .cnt = cnt ? cnt->data : NULL};
     ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height,
                       c->p.bounce);

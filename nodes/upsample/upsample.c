@@ -169,4 +169,5 @@ const struct ssg_node_desc ssg_node_upsample = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_upsample_run_cpu,
+    .run_gl = ssg_upsample_run_gl,
 };

@@ -1,6 +1,6 @@
 /* upsample.h - parameters and prepared constants of the `upsample` node, shared by
- * upsample.c (descriptor, check, prepare) and upsample_cpu.c (the CPU kernel). Method in
- * upsample.c. */
+ * upsample.c (descriptor, check, prepare), upsample_cpu.c (the CPU kernel) and
+ * upsample_gl.c (the GL side). Method in upsample.c. */
 #ifndef SSG_UPSAMPLE_H
 #define SSG_UPSAMPLE_H
 
@@ -39,6 +39,9 @@ struct ssg_upsample_consts {
 int ssg_upsample_factor(int width, int height, int low_width, int low_height);
 
 enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                  const struct ssg_io *io);
+/* The GL side (upsample_gl.c, shader upsample*.glsl). */
+enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                   const struct ssg_io *io);
 
 #endif

@@ -1,0 +1,90 @@
+// bilateral.glsl - the `bilateral` node on GL (method in bilateral.c): one invocation per
+// pixel sums the window's taps in the CPU kernel's order (dy, then dx, taps outside the
+// image skipped) with the same weights: spatial log-weight from prepare(), relative depth
+// term, normal term by squarings (power 2^m) or p ln(c), one exp. exp and ln are
+// bilateral_math.h's polynomials (ssg_exp_neg, ssg_log_pos in common.glsl), so weights are
+// the CPU's to the last bit or two;
+// `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
+// separable=true dispatches this twice (REACH (r, 0) into a scratch image, then (0, r)).
+// CHANNELS (1 or 3) and NORMALS (0 or 1) are defines from bilateral_gl.c.
+layout(std430, binding = 0) readonly buffer Spatial { float spatial[]; };
+
+uniform sampler2DArray src;   // the image to smooth (or the row pass's result)
+uniform sampler2DArray depth; // linear depth; 0 = background
+uniform sampler2DArray normal;
+layout(r32f) uniform writeonly image2DArray dst;
+uniform ivec2 reach;          // half-widths walked: (r, r), (r, 0) or (0, r)
+uniform int radius, size;     // of the spatial table: row (dy + radius) * size + dx + radius
+uniform float depth_scale;    // 1 / sigma_depth
+uniform int squarings;        // normal weight c^(2^squarings); -1: p ln(c) in the exponent
+uniform float normal_power, normal_min;
+
+#if CHANNELS == 3
+#define VALUE vec3
+#define LOAD ssg_load3
+#define STORE SSG_STORE3
+#else
+#define VALUE float
+#define LOAD ssg_load1
+#define STORE SSG_STORE1
+#endif
+
+// Weight of tap q with spatial log-weight es for a centre of depth dc, kd = depth_scale /
+// dc and unit normal nc (add_tap).
+float weight(ivec2 q, float es, float dc, float kd, vec3 nc)
+{
+    float dq = ssg_load1(depth, q);
+    precise float delta = (dq - dc) * kd;
+    precise float e = es - 0.5 * delta * delta;
+    precise float wn = 1.0, c0 = 1.0;
+#if NORMALS
+    vec3 nq = ssg_load3(normal, q);
+    c0 = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
+    float c = c0 >= normal_min ? c0 : 1.0;
+    if (squarings < 0) {
+        e += normal_power * ssg_log_pos(c);
+    } else {
+        wn = c;
+        for (int s = 0; s < squarings; s++)
+            wn *= wn;
+    }
+#endif
+    precise float w = ssg_exp_neg(e) * wn;
+    w = w >= 1e-30 ? w : 0.0;
+    w = dq > 0.0 ? w : 0.0; // background lends nothing
+#if NORMALS
+    w = c0 >= normal_min ? w : 0.0;
+#endif
+    return w;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    float dc = ssg_load1(depth, p);
+    float kd = dc > 0.0 ? depth_scale / dc : 0.0;
+    vec3 nc = vec3(0.0);
+#if NORMALS
+    nc = ssg_unit_normal(normal, p);
+#endif
+    precise VALUE acc = VALUE(0.0);
+    precise float wsum = 0.0;
+    ivec2 last = ssg_grid - 1;
+    for (int dy = -reach.y; dy <= reach.y; dy++) {
+        if (p.y + dy < 0 || p.y + dy > last.y)
+            continue;
+        for (int dx = -reach.x; dx <= reach.x; dx++) {
+            ivec2 q = p + ivec2(dx, dy);
+            if (q.x < 0 || q.x > last.x)
+                continue;
+            float w = weight(q, spatial[(dy + radius) * size + dx + radius], dc, kd, nc);
+            wsum += w;
+            acc += w * LOAD(src, q);
+        }
+    }
+    // Background, or nothing with weight (zero normal): pass through.
+    bool keep = !(dc > 0.0) || !(wsum > 0.0);
+    STORE(dst, p, keep ? LOAD(src, p) : acc / wsum);
+}

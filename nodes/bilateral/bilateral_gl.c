@@ -1,0 +1,77 @@
+/* bilateral_gl.c - GL side of the `bilateral` node (method in bilateral.c, shader
+ * bilateral.glsl): the full 2D window in one pass, or separable=true as a row pass into a
+ * scratch image and a column pass over it, as bilateral_cpu.c does. The spatial
+ * log-weights from prepare() go to a storage buffer; the normal term's variant (by
+ * squarings or through ln) is picked the same way as on the CPU. */
+#include <stdio.h>
+
+#include "bilateral.h"
+#include "gl.h"
+
+/* Squarings that make normal_power (a power of two up to 64), else -1 (p ln c). */
+static int squarings(int power)
+{
+    for (int m = 0; m < 7; m++)
+        if (power == 1 << m)
+            return m;
+    return -1;
+}
+
+static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
+                     struct ssg_image *dst, int rx, int ry)
+{
+    ssg_gl_input(p, "src", src);
+    ssg_gl_output(p, "dst", dst);
+    ssg_gl_ivec2(p, "reach", rx, ry);
+    ssg_gl_dispatch(p, src->width, src->height);
+}
+
+/* Binds what both passes share and runs them: the full window into the output, or the
+   row pass into tmp and the column pass from tmp into the output. */
+static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilateral_consts *c,
+                        const struct ssg_io *io, struct ssg_image *tmp)
+{
+    const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
+    char defines[64];
+    snprintf(defines, sizeof defines, "#define CHANNELS %d\n#define NORMALS %d\n",
+             io->in[SSG_BILATERAL_IN]->channels, nrm && c->normal_power > 0);
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "bilateral.glsl", defines);
+    ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->size * (size_t)c->size);
+    ssg_gl_input(&p, "depth", io->in[SSG_BILATERAL_IN_DEPTH]);
+    ssg_gl_input(&p, "normal", nrm);
+    ssg_gl_int(&p, "radius", c->radius);
+    ssg_gl_int(&p, "size", c->size);
+    ssg_gl_float(&p, "depth_scale", c->depth_scale);
+    ssg_gl_int(&p, "squarings", squarings(c->normal_power));
+    ssg_gl_float(&p, "normal_power", (float)c->normal_power);
+    ssg_gl_float(&p, "normal_min", c->normal_min);
+    if (!tmp) {
+        one_pass(&p, io->in[SSG_BILATERAL_IN], io->out[0], c->radius, c->radius);
+    } else {
+        one_pass(&p, io->in[SSG_BILATERAL_IN], tmp, c->radius, 0);
+        one_pass(&p, tmp, io->out[0], 0, c->radius);
+    }
+    return ssg_gl_pass_end(&p);
+}
+
+enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                  const struct ssg_io *io)
+{
+    const struct ssg_bilateral_consts *c = consts;
+    const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
+    const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
+    if (!in || (in->channels != 1 && in->channels != 3) ||
+        !ssg_image_is(io->in[SSG_BILATERAL_IN_DEPTH], in->width, in->height, 1) ||
+        (nrm && !ssg_image_is(nrm, in->width, in->height, 3)) ||
+        !ssg_image_is(io->out[0], in->width, in->height, in->channels))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "inconsistent image sizes");
+    if (!c->separable)
+        return run(ctx, c, io, NULL);
+    struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);
+    if (!tmp)
+        return SSG_E_NOMEM;
+    enum ssg_err e = run(ctx, c, io, tmp);
+    ssg_gl_scratch_release(&tmp);
+    return e;
+}

@@ -1,0 +1,54 @@
+/* combine_gl.c - GL side of the `combine` node (equation in combine.c, shader
+ * combine.glsl): one pass, one invocation per pixel and all three channels. Unconnected
+ * optional inputs are bound as zero images with their `_bound` flag off, and the shader
+ * then uses the CPU's stand-ins (ao and modulation 1, environment and indirect 0). The
+ * ambient factor k = ambient * ambient_color is the CPU's C expression, passed as is. */
+#include "combine.h"
+#include "gl.h"
+
+/* Sizes and channels as the CPU kernel checks them (same message for all: the graph
+   check has already located any real mistake). */
+static int inputs_fit(const struct ssg_io *io, const struct ssg_image *out)
+{
+    const struct ssg_image *mod = io->in[SSG_COMBINE_MODULATION];
+    static const int channels[SSG_COMBINE_INPUTS] = {3, 3, 1, 3, 0, 3};
+    if (!io->in[SSG_COMBINE_DIRECT] || !io->in[SSG_COMBINE_ALBEDO])
+        return 0;
+    for (int i = 0; i < SSG_COMBINE_INPUTS; i++) {
+        const struct ssg_image *in = io->in[i];
+        int ch = i == SSG_COMBINE_MODULATION && mod ? (mod->channels == 1 ? 1 : 3)
+                                                    : channels[i];
+        if (in && !ssg_image_is(in, out->width, out->height, ch))
+            return 0;
+    }
+    return 1;
+}
+
+enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io)
+{
+    const struct ssg_combine_params *prm = consts;
+    struct ssg_image *out = io->out[0];
+    if (!out || out->channels != 3 || !inputs_fit(io, out))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "combine",
+                             "inputs must be connected and match the output's size and "
+                             "their ports' channels");
+    const struct ssg_image *mod = io->in[SSG_COMBINE_MODULATION];
+    float k[3];
+    for (int c = 0; c < 3; c++)
+        k[c] = prm->ambient * prm->ambient_color[c];
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "combine.glsl", NULL);
+    ssg_gl_input(&p, "direct", io->in[SSG_COMBINE_DIRECT]);
+    ssg_gl_input(&p, "albedo", io->in[SSG_COMBINE_ALBEDO]);
+    ssg_gl_input(&p, "ao", io->in[SSG_COMBINE_AO]);
+    ssg_gl_input(&p, "indirect", io->in[SSG_COMBINE_INDIRECT]);
+    ssg_gl_input(&p, "modulation", mod);
+    ssg_gl_input(&p, "environment", io->in[SSG_COMBINE_ENVIRONMENT]);
+    ssg_gl_output(&p, "dst", out);
+    ssg_gl_int(&p, "modulation_last", mod && mod->channels == 3 ? 2 : 0);
+    ssg_gl_int(&p, "darken_indirect", prm->darken_indirect);
+    ssg_gl_vec3(&p, "k", k);
+    ssg_gl_dispatch(&p, out->width, out->height);
+    return ssg_gl_pass_end(&p);
+}

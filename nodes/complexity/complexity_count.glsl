@@ -1,0 +1,44 @@
+// complexity_count.glsl - last pass of the `complexity` node's GL side (mapping in
+// complexity.c, C side complexity_gl.c): per pixel w = the max of its cell's weight over
+// the grids (grid r has cells of side scale << r, nearest, no filtering), then the count
+// levels[min(L - 1, floor(w L))]; background pixels get the lowest level (w = 0).
+uniform sampler2DArray depth, normal;
+uniform sampler2DArray t0, t1, t2, t3; // weights of grids 0..3 (unused ones unbound)
+layout(r32f) uniform writeonly image2DArray dst;
+uniform int scale;      // cell side of grid 0, px
+uniform int grids;      // 1..4
+uniform int levels[8];  // SSG_INTS_MAX counts, ascending
+uniform int level_count;
+
+// A surface pixel (node.h), the CPU's test.
+bool is_surface(float d, vec3 n)
+{
+    precise float nn = n.x * n.x + n.y * n.y + n.z * n.z;
+    return d > 0.0 && d <= 3.0e38 && nn > 1e-12;
+}
+
+// The larger of w and grid r's weight at pixel p; a NaN weight leaves w (as on the CPU).
+float max_cell(float w, sampler2DArray t, ivec2 p, int r)
+{
+    float v = texelFetch(t, ivec3(p / (scale << r), 0), 0).r;
+    return v > w ? v : w;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    float w = 0.0;
+    if (is_surface(ssg_load1(depth, p), ssg_load3(normal, p))) {
+        w = max_cell(w, t0, p, 0);
+        if (grids > 1)
+            w = max_cell(w, t1, p, 1);
+        if (grids > 2)
+            w = max_cell(w, t2, p, 2);
+        if (grids > 3)
+            w = max_cell(w, t3, p, 3);
+    }
+    int level = min(int(w * float(level_count)), level_count - 1);
+    SSG_STORE1(dst, p, float(levels[level]));
+}

@@ -1,0 +1,108 @@
+/* complexity_gl.c - GL side of the `complexity` node (method and mapping in complexity.c,
+ * CPU kernel complexity_cpu.c). The CPU's three steps as passes: per grid the cell means
+ * (complexity_means.glsl, into two scratch images) and the cell weights
+ * (complexity_weight.glsl, one small scratch image per grid), then per pixel the max over
+ * the grids and the level (complexity_count.glsl): 2 resolutions + 1 dispatches. The
+ * projection of the inputs' size is worked out here as on the CPU. */
+#include "complexity.h"
+#include "gl.h"
+
+/* The scratch images of one grid: means (normal + depth, point) and weights. */
+struct grid {
+    int side, gw, gh;
+    struct ssg_image *nd, *pt, *t;
+};
+
+static void release_grid(struct grid *g)
+{
+    ssg_gl_scratch_release(&g->nd);
+    ssg_gl_scratch_release(&g->pt);
+    ssg_gl_scratch_release(&g->t);
+}
+
+/* Means then weights of one grid; its mean images go back to the scratch pool after. */
+static enum ssg_err grid_passes(const struct ssg_node_ctx *ctx,
+                                const struct ssg_complexity_consts *c, const struct ssg_io *io,
+                                const struct ssg_projection *sp, struct grid *g)
+{
+    g->nd = ssg_gl_scratch(ctx, g->gw, g->gh, 4);
+    g->pt = g->nd ? ssg_gl_scratch(ctx, g->gw, g->gh, 3) : NULL;
+    g->t = g->pt ? ssg_gl_scratch(ctx, g->gw, g->gh, 1) : NULL;
+    if (!g->t)
+        return SSG_E_NOMEM;
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "complexity_means.glsl", NULL);
+    ssg_gl_input(&p, "depth", io->in[SSG_COMPLEXITY_IN_DEPTH]);
+    ssg_gl_input(&p, "normal", io->in[SSG_COMPLEXITY_IN_NORMAL]);
+    ssg_gl_output(&p, "nd", g->nd);
+    ssg_gl_output(&p, "pt", g->pt);
+    ssg_gl_int(&p, "side", g->side);
+    ssg_gl_projection(&p, "proj", sp);
+    ssg_gl_dispatch(&p, g->gw, g->gh);
+    enum ssg_err e = ssg_gl_pass_end(&p);
+    if (e == SSG_OK) {
+        ssg_gl_pass_begin(&p, ctx, "complexity_weight.glsl", NULL);
+        ssg_gl_input(&p, "nd", g->nd);
+        ssg_gl_input(&p, "pt", g->pt);
+        ssg_gl_output(&p, "weight", g->t);
+        ssg_gl_float(&p, "normal_threshold", c->p.normal_threshold);
+        ssg_gl_float(&p, "normal_gain", c->p.normal_gain);
+        ssg_gl_float(&p, "depth_threshold", c->p.depth_threshold);
+        ssg_gl_float(&p, "depth_gain", c->p.depth_gain);
+        ssg_gl_dispatch(&p, g->gw, g->gh);
+        e = ssg_gl_pass_end(&p);
+    }
+    ssg_gl_scratch_release(&g->nd);
+    ssg_gl_scratch_release(&g->pt);
+    return e;
+}
+
+static enum ssg_err count_pass(const struct ssg_node_ctx *ctx,
+                               const struct ssg_complexity_consts *c, const struct ssg_io *io,
+                               const struct grid *g)
+{
+    static const char *const names[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {"t0", "t1", "t2", "t3"};
+    struct ssg_image *out = io->out[0];
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "complexity_count.glsl", NULL);
+    ssg_gl_input(&p, "depth", io->in[SSG_COMPLEXITY_IN_DEPTH]);
+    ssg_gl_input(&p, "normal", io->in[SSG_COMPLEXITY_IN_NORMAL]);
+    for (int r = 0; r < SSG_COMPLEXITY_MAX_RESOLUTIONS; r++)
+        ssg_gl_input(&p, names[r], r < c->p.resolutions ? g[r].t : NULL);
+    ssg_gl_output(&p, "dst", out);
+    ssg_gl_int(&p, "scale", c->p.scale);
+    ssg_gl_int(&p, "grids", c->p.resolutions);
+    ssg_gl_ints(&p, "levels", c->p.levels.count, c->p.levels.v);
+    ssg_gl_int(&p, "level_count", c->p.levels.count);
+    ssg_gl_dispatch(&p, out->width, out->height);
+    return ssg_gl_pass_end(&p);
+}
+
+enum ssg_err ssg_complexity_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io)
+{
+    const struct ssg_complexity_consts *c = consts;
+    const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
+    if (!dep || dep->channels != 1 ||
+        !ssg_image_is(io->in[SSG_COMPLEXITY_IN_NORMAL], dep->width, dep->height, 3) ||
+        !ssg_image_is(io->out[0], dep->width, dep->height, 1))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "complexity",
+                             "depth (1 channel), normal (3 channels) and the output must "
+                             "be one size");
+    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
+    struct ssg_projection sp = ssg_projection_scaled(&c->proj, c->frame_width,
+                                                     c->frame_height, dep->width, dep->height);
+    struct grid g[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {{0}};
+    enum ssg_err e = SSG_OK;
+    for (int r = 0; e == SSG_OK && r < c->p.resolutions; r++) {
+        g[r].side = c->p.scale << r;
+        g[r].gw = (dep->width + g[r].side - 1) / g[r].side;
+        g[r].gh = (dep->height + g[r].side - 1) / g[r].side;
+        e = grid_passes(ctx, c, io, &sp, &g[r]);
+    }
+    if (e == SSG_OK)
+        e = count_pass(ctx, c, io, g);
+    for (int r = 0; r < c->p.resolutions; r++)
+        release_grid(&g[r]);
+    return e;
+}

@@ -1,0 +1,71 @@
+// downsample.glsl - the `downsample` node on GL (method in downsample.c): one invocation
+// per output pixel picks its block's representative (the pixel whose depth is closest to
+// the median of the block's surface depths, ties to the first in row-major order, the
+// first pixel when all is background) exactly as downsample_cpu.c does, then copies every
+// port from it; an unconnected port's output is 0.
+uniform sampler2DArray in_depth;
+uniform sampler2DArray in_position, in_normal, in_albedo, in_direct, in_environment;
+uniform bool in_position_bound, in_normal_bound, in_albedo_bound, in_direct_bound,
+    in_environment_bound;
+layout(r32f) uniform writeonly image2DArray out_depth;
+layout(r32f) uniform writeonly image2DArray out_position, out_normal, out_albedo, out_direct,
+    out_environment;
+uniform int factor; // block side: 2 or 4
+
+const int MAX_BLOCK = 16;
+
+// The median of v[0 .. n - 1], n > 0 (insertion sort, as the CPU: the same float ops).
+float median(inout float v[MAX_BLOCK], int n)
+{
+    for (int i = 1; i < n; i++) {
+        float t = v[i];
+        int k = i;
+        for (; k > 0 && v[k - 1] > t; k--)
+            v[k] = v[k - 1];
+        v[k] = t;
+    }
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+ivec2 representative(ivec2 b)
+{
+    ivec2 p0 = b * factor, p1 = min(p0 + factor, textureSize(in_depth, 0).xy);
+    float v[MAX_BLOCK];
+    int n = 0;
+    for (int y = p0.y; y < p1.y; y++)
+        for (int x = p0.x; x < p1.x; x++) {
+            float d = ssg_load1(in_depth, ivec2(x, y));
+            if (d > 0.0)
+                v[n++] = d;
+        }
+    ivec2 best = p0;
+    if (n == 0)
+        return best; // all background: its first pixel
+    float m = median(v, n), best_err = uintBitsToFloat(0x7f800000u); // +inf
+    for (int y = p0.y; y < p1.y; y++)
+        for (int x = p0.x; x < p1.x; x++) {
+            float d = ssg_load1(in_depth, ivec2(x, y)), err = abs(d - m);
+            if (d > 0.0 && err < best_err) { // strict: ties keep the first
+                best_err = err;
+                best = ivec2(x, y);
+            }
+        }
+    return best;
+}
+
+#define COPY3(port, q, p) \
+    SSG_STORE3(out_##port, p, in_##port##_bound ? ssg_load3(in_##port, q) : vec3(0.0))
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    ivec2 q = representative(p);
+    SSG_STORE1(out_depth, p, ssg_load1(in_depth, q));
+    COPY3(position, q, p);
+    COPY3(normal, q, p);
+    COPY3(albedo, q, p);
+    COPY3(direct, q, p);
+    COPY3(environment, q, p);
+}

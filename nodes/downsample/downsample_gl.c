@@ -1,0 +1,40 @@
+/* downsample_gl.c - GL side of the `downsample` node (method in downsample.c, shader
+ * downsample.glsl): one pass over the output, every port copied from the representative
+ * pixel its invocation picks. It only selects pixels, so the result equals the CPU's. */
+#include "downsample.h"
+#include "gl.h"
+
+/* Sampler and image names of port k in downsample.glsl. */
+static const char *const in_names[SSG_DOWNSAMPLE_PORTS] = {
+    "in_depth", "in_position", "in_normal", "in_albedo", "in_direct", "in_environment"};
+static const char *const out_names[SSG_DOWNSAMPLE_PORTS] = {
+    "out_depth", "out_position", "out_normal", "out_albedo", "out_direct", "out_environment"};
+
+enum ssg_err ssg_downsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io)
+{
+    const struct ssg_downsample_params *p = consts;
+    enum ssg_err e = ssg_downsample_check_run(ctx, p, io);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
+    int ow = (dep->width + p->factor - 1) / p->factor;
+    int oh = (dep->height + p->factor - 1) / p->factor;
+    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
+        int ch = k == SSG_DOWNSAMPLE_DEPTH ? 1 : 3;
+        if ((io->in[k] && !ssg_image_is(io->in[k], dep->width, dep->height, ch)) ||
+            !ssg_image_is(io->out[k], ow, oh, ch))
+            return ssg_node_fail(ctx, SSG_E_SIZE, "downsample",
+                                 "inputs must have the size of depth, outputs "
+                                 "ceil(size / factor)");
+    }
+    struct ssg_gl_pass pass;
+    ssg_gl_pass_begin(&pass, ctx, "downsample.glsl", NULL);
+    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
+        ssg_gl_input(&pass, in_names[k], io->in[k]);
+        ssg_gl_output(&pass, out_names[k], io->out[k]);
+    }
+    ssg_gl_int(&pass, "factor", p->factor);
+    ssg_gl_dispatch(&pass, ow, oh);
+    return ssg_gl_pass_end(&pass);
+}

@@ -1,0 +1,227 @@
+// gbuffer.glsl - the G-buffer's shading pass on GL (method in gbuffer.c). Per pixel, the
+// ray through the pixel centre is intersected with the triangle gbuffer_raster.glsl found
+// there (a visibility buffer, core/gl_raster.h), so depth and barycentrics come from the
+// ray as on the CPU; normal, albedo, direct and environment light then follow
+// gbuffer_cpu.c operation by operation, reading the scene's buffers (gl_raster.h).
+struct Mesh { int positions; int normals; int uvs; int indices; int material; };
+struct Material {
+    float albedo[3];
+    float specular[3];
+    float shininess;
+    int texels; // float offset in texel[], -1 = no texture
+    int width;
+    int height;
+};
+layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
+layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
+layout(std430, binding = 2) readonly buffer Texels { float texel[]; };
+layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
+layout(std430, binding = 4) readonly buffer Materials { Material scene_material[]; };
+// Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind
+// (0 point, 1 directional), unused.
+layout(std430, binding = 5) readonly buffer Lights { float light[]; };
+// env.h's irradiance table, 32 rows x 64 columns x rgb (environment mode 2).
+layout(std430, binding = 6) readonly buffer Irradiance { float irradiance[]; };
+
+uniform sampler2DArray ids; // layer 0: mesh + 1 (0 = background), layer 1: triangle
+layout(r32f) uniform writeonly image2DArray position;
+layout(r32f) uniform writeonly image2DArray normal;
+layout(r32f) uniform writeonly image2DArray depth;
+layout(r32f) uniform writeonly image2DArray albedo;
+layout(r32f) uniform writeonly image2DArray direct;
+layout(r32f) uniform writeonly image2DArray environment;
+uniform vec3 proj;          // f, cx, cy
+uniform float inv_f;        // 1 / f rounded on the CPU, as gbuffer_cpu.c has it
+uniform float rot[9];       // world -> view, row-major
+uniform vec3 eye;           // world
+uniform int face;           // 1 = the triangle's own normal
+uniform int light_count;
+uniform int env_mode;       // 0 black, 1 constant, 2 the irradiance table
+uniform vec3 env_constant;  // mode 1: pi * the constant radiance
+uniform float env_pole[6];  // mode 2: the table's values at the north and south pole
+
+const float TINY = 1e-30;                      // gbuffer_cpu.c's
+const float INV_PI = 0.318309886183790671538;  // (float)(1.0 / M_PI)
+const float PI_F = 3.14159265358979323846;
+const float TWO_PI_F = 6.28318530717958647692;
+const int ENV_W = 64, ENV_H = 32;              // SSG_ENV_COARSE_W, _H
+
+vec3 fetch3(int base, uint vertex)
+{
+    int o = base + 3 * int(vertex);
+    return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
+}
+
+vec2 fetch2(int base, uint vertex)
+{
+    int o = base + 2 * int(vertex);
+    return vec2(vdata[o], vdata[o + 1]);
+}
+
+// The floor modulo that C's fmodf plus "add n when negative" gives for integers.
+int wrap(int i, int n)
+{
+    int r = abs(i) % n;
+    return i < 0 && r != 0 ? n - r : r;
+}
+
+// (t, u, v) of the ray eye + t w in the plane of the triangle (Moller and Trumbore 1997).
+// No inside test: the rasteriser put the pixel centre on this triangle, and where it
+// misses by a rounding error the plane and the barycentrics extend continuously.
+vec3 intersect(vec3 w, vec3 p0, vec3 p1, vec3 p2)
+{
+    vec3 e1 = p1 - p0, e2 = p2 - p0, s = eye - p0;
+    vec3 pv = cross(w, e2), qv = cross(s, e1);
+    float inv_det = 1.0 / dot(e1, pv);
+    return vec3(dot(e2, qv), dot(s, pv), dot(w, qv)) * inv_det;
+}
+
+vec3 texel3(Material m, int x, int y)
+{
+    int o = m.texels + 3 * (y * m.width + x);
+    return vec3(texel[o], texel[o + 1], texel[o + 2]);
+}
+
+// core/surface.c's sample_texture: bilinear between texel centres, wrapping around.
+vec3 sample_texture(Material m, vec2 uv)
+{
+    float fx = uv.x * float(m.width) - 0.5, fy = uv.y * float(m.height) - 0.5;
+    float x0f = floor(fx), y0f = floor(fy), ax = fx - x0f, ay = fy - y0f;
+    int x0 = wrap(int(x0f), m.width), y0 = wrap(int(y0f), m.height);
+    int x1 = x0 + 1 < m.width ? x0 + 1 : 0, y1 = y0 + 1 < m.height ? y0 + 1 : 0;
+    vec3 a = texel3(m, x0, y0), b = texel3(m, x1, y0);
+    vec3 c = texel3(m, x0, y1), d = texel3(m, x1, y1);
+    return (1.0 - ay) * ((1.0 - ax) * a + ax * b) + ay * ((1.0 - ax) * c + ax * d);
+}
+
+vec3 env_row(int y, int x0, int x1, float ax)
+{
+    if (y < 0)
+        return vec3(env_pole[0], env_pole[1], env_pole[2]);
+    if (y > ENV_H - 1)
+        return vec3(env_pole[3], env_pole[4], env_pole[5]);
+    int a = 3 * (y * ENV_W + x0), b = 3 * (y * ENV_W + x1);
+    vec3 ta = vec3(irradiance[a], irradiance[a + 1], irradiance[a + 2]);
+    vec3 tb = vec3(irradiance[b], irradiance[b + 1], irradiance[b + 2]);
+    return (1.0 - ax) * ta + ax * tb;
+}
+
+// core/env.c's table_bilinear on the irradiance table, for unit world normal n.
+vec3 env_irradiance(vec3 n)
+{
+    float u = 0.5 + atan(n.x, -n.z) / TWO_PI_F, v = acos(clamp(n.y, -1.0, 1.0)) / PI_F;
+    float fx = u * float(ENV_W) - 0.5, fy = v * float(ENV_H) - 0.5;
+    float x0f = floor(fx), ax = fx - x0f, ay = fy - floor(fy);
+    int x0 = wrap(int(x0f), ENV_W), x1 = (x0 + 1) % ENV_W, y = int(floor(fy));
+    vec3 r0 = env_row(y, x0, x1, ax), r1 = env_row(y + 1, x0, x1, ax);
+    // the poles sit half a texel beyond the outer row centres
+    float w = y < 0 ? 2.0 * ay - 1.0 : y >= ENV_H - 1 ? 2.0 * ay : ay;
+    w = clamp(w, 0.0, 1.0);
+    return (1.0 - w) * r0 + w * r1;
+}
+
+// (N.H)^shininess where the light reaches, as powf has it (0^0 = 1).
+float blinn_phong(vec3 n, vec3 l, vec3 to_eye, float e, float shininess)
+{
+    vec3 h = l + to_eye;
+    float hinv = 1.0 / sqrt(dot(h, h) + TINY);
+    float ndh = max(dot(n, h) * hinv, 0.0);
+    if (!(e > 0.0))
+        return 0.0;
+    return shininess == 0.0 ? 1.0 : ndh > 0.0 ? pow(ndh, shininess) : 0.0;
+}
+
+// Sum over the lights of (albedo / pi + specular * (N.H)^s) * colour * E (gbuffer.c).
+vec3 direct_light(vec3 n, vec3 pw, vec3 w, vec3 alb, Material m)
+{
+    vec3 spec = vec3(m.specular[0], m.specular[1], m.specular[2]);
+    bool shiny = any(greaterThan(spec, vec3(0.0))); // else the term is 0 (the CPU skips it)
+    vec3 to_eye = -w * (1.0 / sqrt(dot(w, w)));
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < light_count; i++) {
+        int o = 12 * i;
+        vec3 l = -vec3(light[o + 3], light[o + 4], light[o + 5]);
+        float inv = 1.0;
+        if (light[o + 10] == 0.0) { // point light: 1 / d^2
+            l = vec3(light[o], light[o + 1], light[o + 2]) - pw;
+            inv = 1.0 / sqrt(dot(l, l) + TINY);
+            l *= inv;
+        }
+        float e = light[o + 9] * max(dot(n, l), 0.0) * inv * inv;
+        float s = shiny ? blinn_phong(n, l, to_eye, e, m.shininess) : 0.0;
+        vec3 color = vec3(light[o + 6], light[o + 7], light[o + 8]);
+        sum += (alb * INV_PI + spec * s) * color * e;
+    }
+    return sum;
+}
+
+vec3 surface_albedo(Mesh me, Material m, uvec3 tri, float u, float v)
+{
+    vec3 a = vec3(m.albedo[0], m.albedo[1], m.albedo[2]);
+    if (m.texels < 0 || me.uvs < 0)
+        return a;
+    float w0 = 1.0 - u - v;
+    vec2 uv = w0 * fetch2(me.uvs, tri.x) + u * fetch2(me.uvs, tri.y) + v * fetch2(me.uvs, tri.z);
+    return sample_texture(m, uv) * a;
+}
+
+void store_background(ivec2 p)
+{
+    SSG_STORE3(position, p, vec3(0.0));
+    SSG_STORE3(normal, p, vec3(0.0));
+    SSG_STORE1(depth, p, 0.0);
+    SSG_STORE3(albedo, p, vec3(0.0));
+    SSG_STORE3(direct, p, vec3(0.0));
+    SSG_STORE3(environment, p, vec3(0.0));
+}
+
+// The surface hit by the pixel's ray w (view direction ray, z = -1) on triangle `tri` of
+// mesh `id`: depth t, unit world and view normals turned to the camera, albedo.
+struct Surface { float t; vec3 n; vec3 nv; vec3 alb; };
+Surface surface_at(int id, int tri, vec2 ray, vec3 w)
+{
+    Mesh me = scene_mesh[id];
+    int i3 = me.indices + 3 * tri;
+    uvec3 v = uvec3(vindex[i3], vindex[i3 + 1], vindex[i3 + 2]);
+    vec3 p0 = fetch3(me.positions, v.x), p1 = fetch3(me.positions, v.y);
+    vec3 p2 = fetch3(me.positions, v.z);
+    vec3 tuv = intersect(w, p0, p1, p2);
+    float w0 = 1.0 - tuv.y - tuv.z;
+    vec3 n = face == 1 ? cross(p1 - p0, p2 - p0)
+                       : w0 * fetch3(me.normals, v.x) + tuv.y * fetch3(me.normals, v.y) +
+                             tuv.z * fetch3(me.normals, v.z);
+    n *= 1.0 / sqrt(dot(n, n) + TINY);
+    vec3 nv = vec3(rot[0] * n.x + rot[1] * n.y + rot[2] * n.z,
+                   rot[3] * n.x + rot[4] * n.y + rot[5] * n.z,
+                   rot[6] * n.x + rot[7] * n.y + rot[8] * n.z);
+    // seen from behind (n . view direction > 0): shade the side facing the camera
+    float flip = nv.x * ray.x + nv.y * ray.y - nv.z > 0.0 ? -1.0 : 1.0;
+    Material m = scene_material[me.material];
+    return Surface(tuv.x, flip * n, flip * nv, surface_albedo(me, m, v, tuv.y, tuv.z));
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    int id = int(texelFetch(ids, ivec3(p, 0), 0).r) - 1;
+    if (id < 0) {
+        store_background(p);
+        return;
+    }
+    // the ray with view z = -1 (gbuffer_cpu.c's make_rays): its parameter is the depth
+    vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
+    vec3 w = vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6],  // world = rot^T view
+                  rot[1] * ray.x + rot[4] * ray.y - rot[7],
+                  rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+    Surface s = surface_at(id, int(texelFetch(ids, ivec3(p, 1), 0).r), ray, w);
+    Material m = scene_material[scene_mesh[id].material];
+    vec3 e_env = env_mode == 2 ? env_irradiance(s.n) : env_mode == 1 ? env_constant : vec3(0.0);
+    SSG_STORE3(position, p, vec3(s.t * ray.x, s.t * ray.y, 0.0 - s.t));
+    SSG_STORE3(normal, p, s.nv);
+    SSG_STORE1(depth, p, s.t);
+    SSG_STORE3(albedo, p, s.alb);
+    SSG_STORE3(direct, p, direct_light(s.n, eye + s.t * w, w, s.alb, m));
+    SSG_STORE3(environment, p, s.alb * INV_PI * e_env);
+}

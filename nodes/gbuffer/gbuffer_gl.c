@@ -1,0 +1,99 @@
+/* gbuffer_gl.c - GL side of the `gbuffer` node (method in gbuffer.c): the scene is
+ * rasterised into a visibility buffer (mesh and triangle per pixel, core/gl_raster.h,
+ * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
+ * its triangle and writes all six outputs with the CPU kernel's formulas. The scene is
+ * uploaded per run; the lights and the environment's irradiance table go in as they are
+ * in the scene. */
+#include <stdlib.h>
+
+#include "env.h"
+#include "gbuffer.h"
+#include "gl.h"
+#include "gl_raster.h"
+#include "scene.h"
+
+enum { LIGHT_FLOATS = 12, LIGHT_BINDING = 5, ENV_BINDING = 6 };
+
+/* The lights as gbuffer.glsl reads them (12 floats each); NULL when out of memory. */
+static float *pack_lights(const struct ssg_scene *s)
+{
+    float *f = calloc((size_t)s->light_count * LIGHT_FLOATS + 1, sizeof *f);
+    for (int i = 0; f && i < s->light_count; i++) {
+        const struct ssg_light *l = &s->lights[i];
+        float *o = &f[i * LIGHT_FLOATS];
+        for (int k = 0; k < 3; k++)
+            o[k] = l->position[k], o[3 + k] = l->direction[k], o[6 + k] = l->color[k];
+        o[9] = l->intensity;
+        o[10] = l->kind == SSG_LIGHT_POINT ? 0.0f : 1.0f;
+    }
+    return f;
+}
+
+/* The environment: black, constant (pi * radiance, as ssg_env_irradiance) or the table. */
+static void set_environment(struct ssg_gl_pass *p, const struct ssg_env *env)
+{
+    int mode = !env || !env->has_light ? 0 : env->has_image ? 2 : 1;
+    float constant[3] = {0, 0, 0};
+    for (int c = 0; mode == 1 && c < 3; c++)
+        constant[c] = (float)M_PI * env->constant[c];
+    ssg_gl_int(p, "env_mode", mode);
+    ssg_gl_vec3(p, "env_constant", constant);
+    if (mode == 2) {
+        ssg_gl_buffer(p, ENV_BINDING, env->irradiance, sizeof env->irradiance);
+        ssg_gl_floats(p, "env_pole", 6, &env->irradiance_pole[0][0]);
+    } else {
+        ssg_gl_buffer(p, ENV_BINDING, NULL, 0);
+    }
+}
+
+static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
+                          const struct ssg_gl_scene *scene, const struct ssg_image *ids,
+                          const struct ssg_io *io)
+{
+    static const char *const names[] = {"position", "normal", "depth", "albedo", "direct",
+                                        "environment"};
+    const struct ssg_scene *s = ctx->scene;
+    float *lights = pack_lights(s);
+    if (!lights)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "gbuffer", "out of memory for the lights");
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "gbuffer.glsl", NULL);
+    ssg_gl_scene_bind(scene);
+    ssg_gl_buffer(&p, LIGHT_BINDING, lights,
+                  (size_t)s->light_count * LIGHT_FLOATS * sizeof(float));
+    set_environment(&p, s->env);
+    ssg_gl_input(&p, "ids", ids);
+    for (int i = 0; i < SSG_COUNT(names); i++)
+        ssg_gl_output(&p, names[i], io->out[i]);
+    ssg_gl_projection(&p, "proj", &c->proj);
+    ssg_gl_float(&p, "inv_f", 1.0f / c->proj.f);
+    ssg_gl_floats(&p, "rot", 9, c->rot);
+    ssg_gl_vec3(&p, "eye", c->eye);
+    ssg_gl_int(&p, "face", c->p.normals == SSG_GBUFFER_NORMALS_FACE);
+    ssg_gl_int(&p, "light_count", s->light_count);
+    ssg_gl_dispatch(&p, ids->width, ids->height);
+    free(lights);
+    return ssg_gl_pass_end(&p);
+}
+
+enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io)
+{
+    const struct ssg_gbuffer_consts *c = consts;
+    int w = io->out[SSG_GBUFFER_OUT_DEPTH]->width, h = io->out[SSG_GBUFFER_OUT_DEPTH]->height;
+    if (w != ctx->frame->width || h != ctx->frame->height)
+        return ssg_node_fail(ctx, SSG_E_SIZE, "gbuffer", "the outputs are not frame-sized");
+    const struct ssg_gl_camera cam = {c->rot, c->eye, c->proj, c->near_z, c->far_z};
+    struct ssg_gl_scene *scene = NULL;
+    struct ssg_image *ids = ssg_gl_scratch(ctx, w, h, 2);
+    if (!ids)
+        return SSG_E_NOMEM;
+    enum ssg_err e = ssg_gl_scene_upload(ctx, ctx->scene, &scene);
+    if (!e)
+        e = ssg_gl_scene_draw(ctx, scene, "gbuffer_raster.glsl", &cam, ids);
+    if (!e)
+        e = shade(ctx, c, scene, ids, io);
+    ssg_gl_scene_free(&scene);
+    ssg_gl_scratch_release(&ids);
+    return e;
+}

@@ -1,0 +1,185 @@
+// ssao.glsl - the `ssao` node on GL (method in ssao.c): one invocation per pixel, all three
+// modes. The maths is ssao_cpu.c's, lane by lane: the same tangent frame folded into the
+// same projective coefficients, the same sums in the same order (`precise`, so that no
+// multiply-add is fused where the CPU rounds twice), samples in kernel order, sphere mode's
+// reflected sample right after its sample, disc mode's opposite offset likewise. Where the
+// CPU masks a lane (off screen, past its count), this skips: adding 0 changes no bits.
+uniform sampler2DArray position;
+uniform sampler2DArray normal;   // read in mode hemisphere only
+uniform sampler2DArray kernel;   // K x 1, 3 layers: the samples
+uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin)
+uniform sampler2DArray depth;
+uniform sampler2DArray count;
+uniform bool rotation_bound;
+uniform bool depth_bound;
+uniform bool count_bound;
+layout(r32f) uniform writeonly image2DArray dst;
+
+uniform int mode;          // enum ssg_ssao_mode: 0 hemisphere, 1 sphere, 2 disc
+uniform int range_check;   // enum ssg_ssao_range: 0 none, 1 hard, 2 smooth
+uniform float radius;      // scene units
+uniform float bias;        // scene units
+uniform float power;
+uniform float cap;         // max_screen_radius / f: r <= cap depth(P) when capped
+uniform bool capped;       // max_screen_radius > 0
+uniform float inv_samples; // 1 / K, rounded as the CPU does
+uniform vec3 proj;         // (f, cx, cy) of this resolution
+
+const int HEMISPHERE = 0, SPHERE = 1, DISC = 2;
+const int RANGE_NONE = 0, RANGE_HARD = 1;
+
+// The scene depth at pixel q: the depth input, or -position.z.
+float scene_depth(ivec2 q)
+{
+    return depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
+}
+
+// The weighted occlusion of one placed sample: scene depth d at its pixel occludes when
+// 0 < d < zb (zb = -S.z - bias, or depth(P) - bias in disc mode), weighted by the range
+// check on |depth(P) - d| against r (ssao_cpu.c lookup_chunk).
+float occlusion(ivec2 q, float zb, float dp, float r)
+{
+    float d = scene_depth(q);
+    if (!(d > 0.0 && d < zb))
+        return 0.0;
+    precise float gap = abs(dp - d);
+    if (range_check == RANGE_NONE || gap <= r)
+        return 1.0;
+    if (range_check == RANGE_HARD)
+        return 0.0;
+    precise float t = r / gap; // smooth: smoothstep(0, 1, r / |dp - d|), gap > r
+    precise float w = t * t * (3.0 - 2.0 * t);
+    return w;
+}
+
+
+vec3 kernel_sample(int s)
+{
+    return vec3(texelFetch(kernel, ivec3(s, 0, 0), 0).r,
+                texelFetch(kernel, ivec3(s, 0, 1), 0).r,
+                texelFetch(kernel, ivec3(s, 0, 2), 0).r);
+}
+
+// Projective coefficients of the sample frame (ssao_cpu.c setup_chunk): for a kernel
+// sample s, Z - bias = dot(cz, (1, s)), u Z = dot(cu, (1, s)), v Z = dot(cv, (1, s)).
+struct frame_coeffs {
+    vec4 cz, cu, cv;
+};
+
+// Duff et al.'s branch-free basis about N (-0 counts as negative, as copysignf does),
+// turned by the tile's (co, si), scaled by r and folded with the projection.
+frame_coeffs setup_frame(vec3 P, vec3 N, vec2 rot, float r)
+{
+    float f = proj.x, cx = proj.y, cy = proj.z;
+    float sgn = (floatBitsToUint(N.z) >> 31) != 0u ? -1.0 : 1.0;
+    precise float a = -1.0 / (sgn + N.z);
+    precise float b = N.x * N.y * a;
+    precise float t0 = 1.0 + sgn * N.x * N.x * a, t1 = sgn * b, t2 = -sgn * N.x;
+    precise float b0 = b, b1 = sgn + N.y * N.y * a, b2 = -N.y;
+    precise float co = r * rot.x, si = r * rot.y;
+    precise float tx = co * t0 + si * b0, ty = co * t1 + si * b1, tz = co * t2 + si * b2;
+    precise float bx = co * b0 - si * t0, by = co * b1 - si * t1, bz = co * b2 - si * t2;
+    precise float nxr = r * N.x, nyr = r * N.y, nzr = r * N.z;
+    precise float qz = -P.z;
+    frame_coeffs k;
+    k.cz = vec4(qz - bias, -tz, -bz, -nzr);
+    precise float cu0 = f * P.x + cx * qz, cu1 = f * tx - cx * tz;
+    precise float cu2 = f * bx - cx * bz, cu3 = f * nxr - cx * nzr;
+    precise float cv0 = cy * qz - f * P.y, cv1 = -cy * tz - f * ty;
+    precise float cv2 = -cy * bz - f * by, cv3 = -cy * nzr - f * nyr;
+    k.cu = vec4(cu0, cu1, cu2, cu3);
+    k.cv = vec4(cv0, cv1, cv2, cv3);
+    return k;
+}
+
+// One sample S = P + r R s of the hemisphere or sphere modes (ssao_cpu.c place_chunk):
+// projected, then tested; behind the camera or off screen it is unoccluded.
+float sample_point(frame_coeffs k, vec3 s, float dp, float r)
+{
+    precise float zb = k.cz.x + k.cz.y * s.x + k.cz.z * s.y + k.cz.w * s.z;
+    precise float z = zb + bias;
+    precise float nu = k.cu.x + k.cu.y * s.x + k.cu.z * s.y + k.cu.w * s.z;
+    precise float nv = k.cv.x + k.cv.y * s.x + k.cv.z * s.y + k.cv.w * s.z;
+    precise float inv = 1.0 / z;
+    precise float u = nu * inv, v = nv * inv;
+    vec2 size = vec2(ssg_grid);
+    if (!(z > 0.0 && u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
+        return 0.0;
+    return occlusion(ivec2(int(u), int(v)), zb, dp, r);
+}
+
+// Disc mode (ssao_cpu.c place_disc): the depth sample at offset sign * rp R (s.x, s.y)
+// px, rounded to whole pixels (ties to even), +y up the screen.
+float sample_disc(ivec2 p, vec2 rot, vec3 s, float sgn, float rp, float dp, float r)
+{
+    precise float ou = roundEven(rp * (rot.x * s.x - rot.y * s.y));
+    precise float ov = roundEven(rp * (rot.y * s.x + rot.x * s.y));
+    precise float u = float(p.x) + sgn * ou, v = float(p.y) - sgn * ov;
+    vec2 size = vec2(ssg_grid);
+    if (!(u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
+        return 0.0;
+    precise float zb = dp - bias;
+    return occlusion(ivec2(int(u), int(v)), zb, dp, r);
+}
+
+// Weighted occluded samples of a surface pixel over its first n kernel samples.
+float occluded_sum(ivec2 p, vec3 N, float dp, int n)
+{
+    vec2 rot = vec2(1.0, 0.0);
+    if (rotation_bound) {
+        int tile = textureSize(rotation, 0).x;
+        rot = ssg_load2(rotation, p % tile);
+    }
+    precise float rcap = cap * dp;
+    float r = capped && rcap < radius ? rcap : radius;
+    precise float occ = 0.0;
+    if (mode == DISC) {
+        precise float rp = proj.x * r / dp;
+        for (int s = 0; s < n; s++) {
+            vec3 ks = kernel_sample(s);
+            occ += sample_disc(p, rot, ks, 1.0, rp, dp, r);
+            occ += sample_disc(p, rot, ks, -1.0, rp, dp, r);
+        }
+        return occ;
+    }
+    frame_coeffs k = setup_frame(ssg_load3(position, p), N, rot, r);
+    for (int s = 0; s < n; s++) {
+        vec3 ks = kernel_sample(s);
+        occ += sample_point(k, ks, dp, r);
+        if (mode == SPHERE)
+            occ += sample_point(k, -ks, dp, r);
+    }
+    return occ;
+}
+
+// (1 - occluded / n)^power, or clamp(2 - occluded / n, 0, 1)^power normal-free.
+float visibility(float occ, int n, int samples)
+{
+    precise float icnt = n == samples ? inv_samples : 1.0 / float(n);
+    precise float v = (mode == HEMISPHERE ? 1.0 : 2.0) - occ * icnt;
+    v = v > 0.0 ? v : 0.0;
+    v = v < 1.0 || mode == HEMISPHERE ? v : 1.0;
+    if (power != 1.0)
+        v = power == 0.0 ? 1.0 : pow(v, power); // powf(x, 0) = 1, even at 0
+    return v;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    float dp = scene_depth(p);
+    vec3 N = mode == HEMISPHERE ? ssg_load3(normal, p) : vec3(0.0, 0.0, 1.0);
+    precise float nn = N.x * N.x + N.y * N.y + N.z * N.z;
+    // Background (depth 0, no normal) or garbage: 1.
+    if (!(dp > 0.0 && dp <= 3.0e38 && nn > 1e-12)) {
+        SSG_STORE1(dst, p, 1.0);
+        return;
+    }
+    if (abs(nn - 1.0) > 1e-5)
+        N *= 1.0 / sqrt(nn);
+    int samples = textureSize(kernel, 0).x;
+    int n = ssg_pixel_count(count, count_bound, p, samples);
+    SSG_STORE1(dst, p, visibility(occluded_sum(p, N, dp, n), n, samples));
+}

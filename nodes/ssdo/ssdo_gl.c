@@ -1,0 +1,93 @@
+/* ssdo_gl.c - GL side of the `ssdo` node (method in ssdo.c, shader ssdo.glsl): one pass,
+ * one invocation per pixel, every mode, the bounce, the lights and the environment. What
+ * the CPU kernel works out once per run (the projection of this resolution, the cap's
+ * factor, dw = 2 pi / n) comes from the same C expressions here, so both backends start
+ * from the same bits. Lights and the environment cube are prepare()'s view-space consts:
+ * the lights as uniform arrays, the cube (18 KiB) in a storage buffer. The `bounce` node
+ * runs the same shader (bounce_gl.c) through ssg_ssdo_gl_bind_geometry. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "gl.h"
+#include "ssdo.h"
+
+void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
+                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj,
+                               int frame_w, int frame_h)
+{
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
+    struct ssg_projection sp = ssg_projection_scaled(proj, frame_w, frame_h, pos->width,
+                                                     pos->height);
+    ssg_gl_input(p, "position", pos);
+    ssg_gl_input(p, "normal", io->in[SSG_SSDO_IN_NORMAL]);
+    ssg_gl_input(p, "kernel", io->in[SSG_SSDO_IN_KERNEL]);
+    ssg_gl_input(p, "rotation", io->in[SSG_SSDO_IN_ROTATION]);
+    ssg_gl_input(p, "depth", io->in[SSG_SSDO_IN_DEPTH]);
+    ssg_gl_input(p, "albedo", io->in[SSG_SSDO_IN_ALBEDO]);
+    ssg_gl_input(p, "light", io->in[SSG_SSDO_IN_LIGHT]);
+    ssg_gl_float(p, "radius", g->radius);
+    ssg_gl_float(p, "bias", g->bias);
+    ssg_gl_float(p, "cap", g->max_screen_radius / sp.f); /* ssg_ssdo_setup's expression */
+    ssg_gl_int(p, "capped", g->max_screen_radius > 0.0f);
+    ssg_gl_float(p, "strength", g->strength);
+    ssg_gl_float(p, "min_distance", g->min_distance);
+    ssg_gl_projection(p, "proj", &sp);
+}
+
+/* Lights as uniform arrays, the environment as a constant or the cube. */
+static void bind_light(struct ssg_gl_pass *p, const struct ssg_ssdo_consts *c)
+{
+    int dir[SSG_SSDO_MAX_LIGHTS];
+    float v[3 * SSG_SSDO_MAX_LIGHTS], rgb[3 * SSG_SSDO_MAX_LIGHTS];
+    for (int l = 0; l < c->light_count; l++) {
+        dir[l] = c->lights[l].directional;
+        for (int i = 0; i < 3; i++) {
+            v[3 * l + i] = c->lights[l].v[i];
+            rgb[3 * l + i] = c->lights[l].rgb[i];
+        }
+    }
+    ssg_gl_int(p, "light_count", c->light_count);
+    ssg_gl_ints(p, "light_dir", c->light_count, dir);
+    ssg_gl_floats(p, "light_v", 3 * c->light_count, v);
+    ssg_gl_floats(p, "light_rgb", 3 * c->light_count, rgb);
+    ssg_gl_int(p, "env", c->env);
+    ssg_gl_vec3(p, "env_rgb", c->env_rgb);
+    if (c->env == SSG_SSDO_ENV_CUBE)
+        ssg_gl_buffer(p, 1, c->cube.rgb, sizeof c->cube.rgb);
+    else
+        ssg_gl_buffer(p, 1, c->env_rgb, sizeof c->env_rgb); /* bound, never read */
+}
+
+enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io)
+{
+    const struct ssg_ssdo_consts *c = consts;
+    int out_channels;
+    enum ssg_err e = ssg_ssdo_check_run(ctx, c, io, &out_channels);
+    if (e != SSG_OK)
+        return e;
+    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
+    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
+    const int k = io->in[SSG_SSDO_IN_KERNEL]->width;
+    float *dw_tab = malloc(sizeof(float) * ((size_t)k + 1));
+    if (!dw_tab)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "ssdo", "out of memory");
+    for (int n = 0; n <= k; n++) /* ssdo_cpu.c's table: 2 pi / n rounded from double */
+        dw_tab[n] = n ? (float)(2.0 * M_PI / n) : 0.0f;
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "ssdo.glsl", NULL);
+    ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj, c->frame_width, c->frame_height);
+    ssg_gl_input(&p, "count", cnt);
+    ssg_gl_output(&p, "dst", io->out[0]);
+    ssg_gl_output(&p, "dst_bounce", io->out[1]);
+    ssg_gl_int(&p, "do_bounce", c->p.bounce);
+    ssg_gl_int(&p, "radiance", c->p.mode == SSG_SSDO_MODE_RADIANCE);
+    ssg_gl_int(&p, "out_channels", out_channels);
+    ssg_gl_int(&p, "lobe", c->p.lobe);
+    ssg_gl_buffer(&p, 0, dw_tab, sizeof(float) * ((size_t)k + 1));
+    bind_light(&p, c);
+    ssg_gl_dispatch(&p, pos->width, pos->height);
+    free(dw_tab);
+    return ssg_gl_pass_end(&p);
+}

@@ -1,0 +1,132 @@
+// upsample.glsl - the `upsample` node on GL (method in upsample.c): one invocation per
+// full-res pixel sums the size x size low-res taps around the one containing it in the
+// CPU kernel's order (dy, then dx), relative to the centre tap's value, with the same
+// log-weights (spatial on the low-res grid, relative depth, p ln(n.N)) and one exp; when
+// no tap has weight it takes the tap of closest depth (first in row-major order), the
+// centre when all are background. exp and ln are bilateral_math.h's polynomials (common.glsl);
+// `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
+// in2 rides along with the same weights into dst2; unconnected, dst2 is written 0.
+// Defines from upsample_gl.c: IN_CH (1 or 3), IN2_CH (0, 1 or 3), NORMALS (0 or 1).
+uniform sampler2DArray src, src2;              // in, in2 (low res)
+uniform sampler2DArray depth, normal;          // full res
+uniform sampler2DArray low_depth, low_normal;  // low res
+layout(r32f) uniform writeonly image2DArray dst, dst2;
+uniform int factor, radius;
+uniform float spatial_k;   // -0.5 / sigma_spatial^2
+uniform float depth_scale; // 1 / sigma_depth
+uniform float normal_power, normal_min;
+
+#if IN_CH == 3
+#define VALUE vec3
+#define LOAD ssg_load3
+#define STORE SSG_STORE3
+#else
+#define VALUE float
+#define LOAD ssg_load1
+#define STORE SSG_STORE1
+#endif
+#if IN2_CH == 3
+#define VALUE2 vec3
+#define LOAD2 ssg_load3
+#define STORE2 SSG_STORE3
+#else
+#define VALUE2 float
+#define LOAD2 ssg_load1
+#define STORE2 SSG_STORE1
+#endif
+
+// Weight of low-res tap q with spatial log-weight es for a pixel of depth dp, kd =
+// depth_scale / dp and unit normal nc (add_tap).
+float weight(ivec2 q, float es, float dp, float kd, vec3 nc)
+{
+    float rd = ssg_load1(low_depth, q);
+    precise float delta = (rd - dp) * kd;
+    precise float e = es - 0.5 * delta * delta;
+    float c0 = 1.0;
+#if NORMALS
+    vec3 nq = ssg_load3(low_normal, q);
+    precise float cp = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
+    c0 = cp;
+    e += normal_power * ssg_log_pos(c0 >= normal_min ? c0 : 1.0);
+#endif
+    float w = ssg_exp_neg(e);
+    w = w >= 1e-30 ? w : 0.0;
+    w = rd > 0.0 ? w : 0.0; // background lends nothing
+#if NORMALS
+    w = c0 >= normal_min ? w : 0.0;
+#endif
+    return w;
+}
+
+// No tap had weight: the tap of closest depth (first in tap order on ties), or the centre.
+ivec2 fallback(ivec2 l, float dp)
+{
+    ivec2 best = l, last = textureSize(low_depth, 0).xy - 1;
+    float best_err = uintBitsToFloat(0x7f800000u); // +inf
+    for (int qy = max(l.y - radius, 0); qy <= min(l.y + radius, last.y); qy++)
+        for (int qx = max(l.x - radius, 0); qx <= min(l.x + radius, last.x); qx++) {
+            float d = ssg_load1(low_depth, ivec2(qx, qy)), err = abs(d - dp);
+            if (d > 0.0 && err < best_err) {
+                best_err = err;
+                best = ivec2(qx, qy);
+            }
+        }
+    return best;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    float dp = ssg_load1(depth, p);
+    VALUE val = VALUE(0.0);
+    VALUE2 val2 = VALUE2(0.0);
+    if (dp > 0.0) { // background pixels stay 0
+        ivec2 l = p / factor, last = textureSize(low_depth, 0).xy - 1;
+        float kd = depth_scale / dp;
+        vec3 nc = vec3(0.0);
+#if NORMALS
+        nc = ssg_unit_normal(normal, p);
+#endif
+        VALUE ref = LOAD(src, l);
+        precise VALUE acc = VALUE(0.0);
+#if IN2_CH
+        VALUE2 ref2 = LOAD2(src2, l);
+        precise VALUE2 acc2 = VALUE2(0.0);
+#endif
+        precise float wsum = 0.0;
+        precise float v = (float(p.y) + 0.5) / float(factor) - 0.5;
+        precise float u = (float(p.x - l.x * factor) + 0.5) / float(factor) - 0.5;
+        for (int dy = -radius; dy <= radius; dy++) {
+            int qy = l.y + dy;
+            if (qy < 0 || qy > last.y)
+                continue;
+            precise float ey = spatial_k * (v - float(qy)) * (v - float(qy));
+            for (int dx = -radius; dx <= radius; dx++) {
+                ivec2 q = ivec2(l.x + dx, qy);
+                if (q.x < 0 || q.x > last.x)
+                    continue; // the CPU's padding: weight 0, adds nothing
+                precise float ex = u - float(dx);
+                precise float es = spatial_k * ex * ex + ey;
+                float w = weight(q, es, dp, kd, nc);
+                wsum += w;
+                acc += w * (LOAD(src, q) - ref);
+#if IN2_CH
+                acc2 += w * (LOAD2(src2, q) - ref2);
+#endif
+            }
+        }
+        ivec2 f = wsum > 0.0 ? l : fallback(l, dp);
+        val = wsum > 0.0 ? ref + acc / wsum : LOAD(src, f);
+#if IN2_CH
+        val2 = wsum > 0.0 ? ref2 + acc2 / wsum : LOAD2(src2, f);
+#endif
+    }
+    STORE(dst, p, val);
+#if IN2_CH
+    STORE2(dst2, p, val2);
+#else
+    STORE(dst2, p, VALUE(0.0)); // out2 is all 0, shaped like out
+#endif
+}

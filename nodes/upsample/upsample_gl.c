@@ -1,0 +1,65 @@
+/* upsample_gl.c - GL side of the `upsample` node (method in upsample.c, shader
+ * upsample.glsl): one pass over the full-res frame, in and the optional in2 upsampled
+ * with the same weights, out2 written 0 when in2 is unconnected. */
+#include <stdio.h>
+
+#include "gl.h"
+#include "upsample.h"
+
+/* The run-time re-check of upsample_cpu.c: the factor, or 0 when the shapes disagree. */
+static int checked_factor(const struct ssg_io *io)
+{
+    const struct ssg_image *in = io->in[SSG_UPSAMPLE_IN], *dep = io->in[SSG_UPSAMPLE_DEPTH];
+    const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_NORMAL];
+    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
+    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
+    if (!in || (in->channels != 1 && in->channels != 3) || !dep || dep->channels != 1)
+        return 0;
+    int k = ssg_upsample_factor(dep->width, dep->height, in->width, in->height);
+    int ok = k && ssg_image_is(io->in[SSG_UPSAMPLE_LOW_DEPTH], in->width, in->height, 1) &&
+             !nrm == !lnrm &&
+             (!nrm || (ssg_image_is(nrm, dep->width, dep->height, 3) &&
+                       ssg_image_is(lnrm, in->width, in->height, 3))) &&
+             ssg_image_is(io->out[0], dep->width, dep->height, in->channels);
+    if (in2)
+        ok = ok && (in2->channels == 1 || in2->channels == 3) &&
+             ssg_image_is(in2, in->width, in->height, in2->channels) &&
+             ssg_image_is(io->out[1], dep->width, dep->height, in2->channels);
+    else
+        ok = ok && ssg_image_is(io->out[1], dep->width, dep->height, in->channels);
+    return ok ? k : 0;
+}
+
+enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                 const struct ssg_io *io)
+{
+    const struct ssg_upsample_consts *c = consts;
+    int k = checked_factor(io);
+    if (!k)
+        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample", "inconsistent image sizes");
+    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
+    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
+    char defines[80];
+    snprintf(defines, sizeof defines,
+             "#define IN_CH %d\n#define IN2_CH %d\n#define NORMALS %d\n",
+             io->in[SSG_UPSAMPLE_IN]->channels, in2 ? in2->channels : 0,
+             lnrm && c->normal_power > 0.0f);
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "upsample.glsl", defines);
+    ssg_gl_input(&p, "src", io->in[SSG_UPSAMPLE_IN]);
+    ssg_gl_input(&p, "src2", in2);
+    ssg_gl_input(&p, "depth", io->in[SSG_UPSAMPLE_DEPTH]);
+    ssg_gl_input(&p, "normal", io->in[SSG_UPSAMPLE_NORMAL]);
+    ssg_gl_input(&p, "low_depth", io->in[SSG_UPSAMPLE_LOW_DEPTH]);
+    ssg_gl_input(&p, "low_normal", lnrm);
+    ssg_gl_output(&p, "dst", io->out[0]);
+    ssg_gl_output(&p, "dst2", io->out[1]);
+    ssg_gl_int(&p, "factor", k);
+    ssg_gl_int(&p, "radius", c->radius);
+    ssg_gl_float(&p, "spatial_k", c->spatial_k);
+    ssg_gl_float(&p, "depth_scale", c->depth_scale);
+    ssg_gl_float(&p, "normal_power", c->normal_power);
+    ssg_gl_float(&p, "normal_min", c->normal_min);
+    ssg_gl_dispatch(&p, io->out[0]->width, io->out[0]->height);
+    return ssg_gl_pass_end(&p);
+}
