@@ -32,7 +32,6 @@ static struct {
     EGLContext egl_context;
     PFNEGLMAKECURRENTPROC egl_make_current;
     PFNEGLDESTROYCONTEXTPROC egl_destroy_context;
-    PFNEGLTERMINATEPROC egl_terminate;
     char renderer[128];
 } ctx;
 
@@ -122,10 +121,8 @@ static int egl_start(int want_gpu, char *why, size_t why_len)
     EGL_LOAD(PFNEGLCREATECONTEXTPROC, create_context, "eglCreateContext");
     EGL_LOAD(PFNEGLMAKECURRENTPROC, make_current, "eglMakeCurrent");
     EGL_LOAD(PFNEGLDESTROYCONTEXTPROC, destroy_context, "eglDestroyContext");
-    EGL_LOAD(PFNEGLTERMINATEPROC, terminate, "eglTerminate");
     ctx.egl_make_current = make_current;
     ctx.egl_destroy_context = destroy_context;
-    ctx.egl_terminate = terminate;
     EGLint major, minor;
     ctx.egl_display = get_display(EGL_PLATFORM_DEVICE_EXT, dev, NULL);
     if (!ctx.egl_display || !initialize(ctx.egl_display, &major, &minor)) {
@@ -234,11 +231,11 @@ void ssg_gl_context_destroy(void)
         ctx.egl_make_current(ctx.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         ctx.egl_destroy_context(ctx.egl_display, ctx.egl_context);
     }
-    if (ctx.egl_display && ctx.egl_terminate)
-        ctx.egl_terminate(ctx.egl_display);
-    /* libEGL stays loaded on purpose: Mesa's EGL driver keeps a few allocations until exit, and
-     * once unloaded LeakSanitizer can no longer name (and so suppress) the library they came from.
-     * Unloading it would also gain nothing, as the process is about to end. */
+    /* The display is not terminated and libEGL stays loaded, on purpose: Mesa's EGL keeps a
+     * few allocations until exit, and eglTerminate unloads its driver (dlclose), after which
+     * LeakSanitizer can no longer name, and so suppress, the library they came from. Both
+     * would gain nothing: the process is about to end, and a later eglInitialize of the
+     * same display is a no-op. */
     memset(&ctx, 0, sizeof ctx);
     memset(&ssg_gl_fn, 0, sizeof ssg_gl_fn);
 }
