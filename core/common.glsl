@@ -108,3 +108,14 @@ int ssg_pixel_count(sampler2DArray count, bool bound, ivec2 p, int k)
     v = v <= float(k) ? v : float(k);
     return min(int(v + 0.5), k);
 }
+
+// core/shadowmap.c's ssg_shadow_frame_make basis (Duff et al. 2017): u, v from the unit
+// light direction l alone; the sign test reads the bit, as copysignf does for -0.
+void ssg_shadow_basis(vec3 l, out vec3 u, out vec3 v)
+{
+    float s = floatBitsToInt(l.z) < 0 ? -1.0 : 1.0;
+    float a = -1.0 / (s + l.z);
+    float b = l.x * l.y * a;
+    u = vec3(1.0 + s * l.x * l.x * a, s * b, -s * l.x);
+    v = vec3(b, s + l.y * l.y * a, -l.y);
+}

@@ -1,7 +1,7 @@
-// halton_copy.glsl - the `halton` node's GL side (halton_gl.c): copies an image prepare()
-// made on the CPU (planar floats, as in ssgraph.h) from a storage buffer into `dst`. A
-// float moved through a buffer and an R32F store keeps its bits, so the kernel and the
-// rotation tile are bit-identical to the CPU's.
+// copy_planes.glsl - ssg_gl_fill (core/gl_pass.c): copies an image a node's prepare() made
+// on the CPU (planar floats, as in ssgraph.h) from a storage buffer into `dst`. A float
+// moved through a buffer and an R32F store keeps its bits, so tables made once (halton's
+// kernel, lightprobe's lights) are bit-identical on both backends.
 layout(std430, binding = 0) readonly buffer Planes { float planes[]; };
 
 layout(r32f) uniform writeonly image2DArray dst;

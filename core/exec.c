@@ -172,5 +172,9 @@ unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image)
         return SSG_T_KERNEL;
     if (image->channels == 2 && (accepted & SSG_T_PATTERN))
         return SSG_T_PATTERN;
+    if (image->channels == 3 && image->height == 2 && (accepted & SSG_T_LIGHTS))
+        return SSG_T_LIGHTS;
+    if (image->width == image->height && (accepted & SSG_T_SHADOWMAPS))
+        return SSG_T_SHADOWMAPS;
     return 0;
 }

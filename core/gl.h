@@ -51,6 +51,12 @@ struct ssg_gl_pass {
 enum ssg_err ssg_gl_pass_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
                                const char *shader, const char *defines);
 
+/* A whole pass of its own: copies prepared planar floats (width x height x channels of each
+ * dst, as in ssgraph.h) into `count` output images, for nodes whose output is a table made
+ * in prepare() (the same bytes as the CPU backend writes). */
+enum ssg_err ssg_gl_fill(const struct ssg_node_ctx *ctx, const float *const *planes,
+                         struct ssg_image *const *dst, int count);
+
 /* Binds an image for reading as `uniform sampler2DArray <name>` (texelFetch, or texture()
  * with linear filtering and clamp-to-edge). NULL (an unconnected optional input) binds a
  * 1x1 image of zeros. Also sets `uniform bool <name>_bound` when the shader declares it. */

@@ -77,6 +77,7 @@ extern struct ssg_gl_fns ssg_gl_fn;
 #define glNamedFramebufferTexture ssg_gl_fn.NamedFramebufferTexture
 #define glNamedFramebufferTextureLayer ssg_gl_fn.NamedFramebufferTextureLayer
 #define glNamedFramebufferDrawBuffers ssg_gl_fn.NamedFramebufferDrawBuffers
+#define glNamedFramebufferDrawBuffer ssg_gl_fn.NamedFramebufferDrawBuffer
 #define glCheckNamedFramebufferStatus ssg_gl_fn.CheckNamedFramebufferStatus
 #define glBindFramebuffer ssg_gl_fn.BindFramebuffer
 #define glClearNamedFramebufferfv ssg_gl_fn.ClearNamedFramebufferfv

@@ -177,6 +177,22 @@ void ssg_gl_dispatch(struct ssg_gl_pass *pass, int width, int height)
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
+enum ssg_err ssg_gl_fill(const struct ssg_node_ctx *ctx, const float *const *planes,
+                         struct ssg_image *const *dst, int count)
+{
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "copy_planes.glsl", NULL);
+    for (int i = 0; i < count; i++) {
+        size_t texels = (size_t)dst[i]->width * (size_t)dst[i]->height *
+                        (size_t)dst[i]->channels;
+        ssg_gl_buffer(&p, 0, planes[i], texels * sizeof(float));
+        ssg_gl_output(&p, "dst", dst[i]);
+        ssg_gl_int(&p, "channels", dst[i]->channels);
+        ssg_gl_dispatch(&p, dst[i]->width, dst[i]->height);
+    }
+    return ssg_gl_pass_end(&p);
+}
+
 enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass)
 {
     GLenum e = glGetError();

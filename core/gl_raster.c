@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl.h"
 #include "gl_fn.h"
 #include "gl_raster.h"
 #include "gl_runtime.h"
@@ -295,6 +296,63 @@ enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(1, &depth);
     return gl_status(ctx, "drawing the scene");
+}
+
+enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                                 const char *shader)
+{
+    memset(pass, 0, sizeof *pass);
+    pass->ctx = ctx;
+    pass->shader = shader;
+    pass->program = ssg_gl_program_get(ctx, shader, NULL, SSG_GL_RASTER);
+    pass->err = pass->program ? SSG_OK : SSG_E_SHADER;
+    return pass->err;
+}
+
+/* A framebuffer with a depth buffer of w x h and no colour attachment yet; 0 on failure. */
+static GLuint make_layer_target(int w, int h, GLuint *depth)
+{
+    GLuint fbo = 0;
+    glCreateFramebuffers(1, &fbo);
+    glCreateRenderbuffers(1, depth);
+    glNamedRenderbufferStorage(*depth, GL_DEPTH_COMPONENT32F, w, h);
+    glNamedFramebufferRenderbuffer(fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth);
+    glNamedFramebufferDrawBuffer(fbo, GL_COLOR_ATTACHMENT0);
+    return fbo;
+}
+
+enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg_gl_scene *s,
+                                      struct ssg_image *target, float clear)
+{
+    if (pass->err)
+        return pass->err;
+    GLuint depth = 0, fbo = make_layer_target(target->width, target->height, &depth);
+    GLuint tex = ssg_gl_texture_of(target), prog = pass->program;
+    GLint layer_at = glGetUniformLocation(prog, "ssg_layer");
+    const float far = 1.0f;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, target->width, target->height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glUseProgram(prog);
+    for (int i = 0; i < target->channels && !pass->err; i++) {
+        glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, tex, 0, i);
+        if (i == 0 && glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) !=
+                          GL_FRAMEBUFFER_COMPLETE)
+            pass->err = fail(pass->ctx, SSG_E_BACKEND, "the GL framebuffer of a layer is "
+                                                       "incomplete");
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &clear);
+        glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
+        if (layer_at >= 0)
+            glProgramUniform1i(prog, layer_at, i);
+        draw_meshes(s, prog);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &depth);
+    enum ssg_err e = gl_status(pass->ctx, "drawing the scene's layers");
+    return pass->err ? pass->err : (pass->err = e);
 }
 
 void ssg_gl_scene_free(struct ssg_gl_scene **scene)

@@ -83,6 +83,22 @@ enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_
                                const char *shader, const struct ssg_gl_camera *camera,
                                struct ssg_image *target);
 
+/* A raster pass whose uniforms the node sets with core/gl.h's calls (ssg_gl_input,
+ * ssg_gl_float, ...) before ssg_gl_scene_draw_layers: compiles (or finds) the program of
+ * `shader`'s SSG_VERTEX and SSG_FRAGMENT halves. Errors are sticky as in gl.h. */
+struct ssg_gl_pass;
+enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                                 const char *shader);
+
+/* Draws every mesh once per layer of `target` (any number of layers, each its own draw):
+ * layer i is cleared to `clear` and a depth buffer of the target's size to 1, the program
+ * gets `uniform int ssg_layer` = i and `layout(location = 0) in vec3 ssg_position` (world)
+ * and makes gl_Position itself (the layer's own projection; NDC x, y in [-1, 1] cover the
+ * image with texel row 0 at y = -1); the nearest fragment's `layout(location = 0) out
+ * float` is kept (depth test LESS, no culling). Shadow maps are drawn this way. */
+enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+                                      struct ssg_image *target, float clear);
+
 void ssg_gl_scene_free(struct ssg_gl_scene **scene);
 
 #endif

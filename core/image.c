@@ -30,7 +30,8 @@ int ssg_image_size_ok(int width, int height, int channels)
 {
     return width > 0 && height > 0 && width <= SSG_IMAGE_MAX_SIDE &&
            height <= SSG_IMAGE_MAX_SIDE && (long long)width * height <= SSG_IMAGE_MAX_PIXELS &&
-           channels >= 1 && channels <= 4;
+           channels >= 1 && channels <= SSG_IMAGE_MAX_CHANNELS &&
+           (long long)width * height * channels <= SSG_IMAGE_MAX_FLOATS;
 }
 
 struct ssg_image *ssg_image_create(int width, int height, int channels)

@@ -12,6 +12,12 @@
 /* Largest side and pixel count an image may have; larger requests are errors. */
 #define SSG_IMAGE_MAX_SIDE 16384
 #define SSG_IMAGE_MAX_PIXELS (64 * 1024 * 1024)
+/* Most channels an image may have: a stack of shadow maps has one per light (2048 is also
+ * the GL 4.5 minimum of GL_MAX_ARRAY_TEXTURE_LAYERS, each channel being one layer). */
+#define SSG_IMAGE_MAX_CHANNELS 2048
+/* Most floats (width x height x channels) one image may hold: 2 GiB, 512 shadow maps of
+ * 1024 x 1024. */
+#define SSG_IMAGE_MAX_FLOATS (512ll * 1024 * 1024)
 
 /* 1 when width x height x channels is a size ssg_image_create accepts. */
 int ssg_image_size_ok(int width, int height, int channels);

@@ -269,7 +269,9 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
         return SSG_E_CHANNELS;
     }
     int nch = (int)idx.size();
-    if (!ssg_image_size_ok(spec.width, spec.height, nch)) {
+    /* Files hold what ports read (1 to 4 channels): a multi-layer EXR read whole is a
+       mistake to report here, not a many-channel image to load. */
+    if (nch > 4 || !ssg_image_size_ok(spec.width, spec.height, nch)) {
         ssg_diag_file(diags, SSG_E_SIZE, path,
                       "unsupported image size %d x %d with %d channels (expected at most %d "
                       "pixels a side, %d pixels and 1..4 channels)",

@@ -37,6 +37,12 @@ enum ssg_type {
     SSG_T_KERNEL = 1u << 3,  /* count x 1, 3 channels: sample offsets in the unit hemisphere
                                 around +z (tangent space), |s| <= 1 */
     SSG_T_PATTERN = 1u << 4, /* n x n tile, 2 channels: per-pixel rotation (cos, sin) */
+    SSG_T_LIGHTS = 1u << 5,  /* count x 2, 3 channels: directional lights; row 0 the unit
+                                world direction towards light i, row 1 its RGB irradiance on
+                                a surface facing it (core/shadowmap.h) */
+    SSG_T_SHADOWMAPS = 1u << 6, /* R x R, one channel per light of a light list: the depth
+                                   of the nearest surface below each texel of light i's
+                                   orthographic map (core/shadowmap.h) */
 };
 #define SSG_T_IMAGE (SSG_T_SCALAR | SSG_T_VECTOR | SSG_T_COLOR)
 

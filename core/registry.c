@@ -49,13 +49,14 @@ int ssg_port_find(const struct ssg_port_desc *ports, int count, const char *name
     return -1;
 }
 
-static const char *const type_names[] = {"scalar", "vector", "color", "kernel", "pattern"};
+static const char *const type_names[] = {"scalar", "vector", "color",     "kernel",
+                                          "pattern", "lights", "shadowmaps"};
 
 void ssg_type_names(unsigned mask, char *buf, size_t len)
 {
     size_t n = 0;
     buf[0] = 0;
-    for (int i = 0; i < 5 && n < len; i++)
+    for (int i = 0; i < SSG_COUNT(type_names) && n < len; i++)
         if (mask & (1u << i))
             n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? "|" : "", type_names[i]);
 }

@@ -34,6 +34,7 @@
 
 #include "halton.h"
 #include "node.h"
+#include "random.h"
 
 double ssg_halton_radical_inverse(uint64_t i, int base)
 {
@@ -97,30 +98,13 @@ static void map_sample(const struct ssg_halton_params *p, const double u[3], dou
     s[2] = len * z;
 }
 
-/* SplitMix64 (Steele et al. 2014): a tiny, well-mixed generator for the seed-derived
-   shift and permutation. */
-static uint64_t splitmix64(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
 static void make_pattern(int n, uint64_t seed, float *pattern)
 {
     int cells = n * n;
     int perm[SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN];
     uint64_t state = seed ^ 0x6A09E667F3BCC909ull;
-    double shift = (double)(splitmix64(&state) >> 11) * 0x1.0p-53;
-    for (int k = 0; k < cells; k++)
-        perm[k] = k;
-    for (int k = cells - 1; k > 0; k--) {
-        int j = (int)(splitmix64(&state) % (uint64_t)(k + 1));
-        int tmp = perm[k];
-        perm[k] = perm[j];
-        perm[j] = tmp;
-    }
+    double shift = ssg_random_unit(&state);
+    ssg_random_permutation(&state, perm, cells);
     for (int k = 0; k < cells; k++) {
         double a = ssg_halton_radical_inverse((uint64_t)k, 2) + shift;
         a = 2.0 * M_PI * (a - floor(a));

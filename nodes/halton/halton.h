@@ -61,7 +61,7 @@ struct ssg_node_ctx;
 struct ssg_io;
 enum ssg_err ssg_halton_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io);
-/* The GL backend (halton_gl.c, shader halton_copy.glsl): the same copy on the GPU. */
+/* The GL backend (halton_gl.c, ssg_gl_fill): the same copy on the GPU. */
 enum ssg_err ssg_halton_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                const struct ssg_io *io);
 

@@ -1,0 +1,70 @@
+// probe_light.glsl - `probe_light` on GL, second pass (probe_light_gl.c): per pixel, the
+// lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, the
+// jittered texel and depth, one comparison against the light's map layer, sums in the same
+// order (`precise` keeps the CPU's roundings).
+uniform sampler2DArray position, normal, albedo, lights, frames, maps;
+uniform bool maps_bound;
+layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
+layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
+layout(r32f) uniform writeonly image2DArray dst, dst_visibility;
+uniform int count, res, tile;
+uniform float noise_radius, offset_world, slope_world;
+const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
+
+float frame(int light, int k)
+{
+    return texelFetch(frames, ivec3(light, 0, k), 0).r;
+}
+
+float luminance(vec3 e)
+{
+    precise float l = 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b;
+    return l;
+}
+
+// V_i of point P (view space) with jitter j (texels) for light i, N.l_i = cosine.
+float visible(int i, vec3 P, vec2 j, float cosine)
+{
+    precise float x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
+    precise float y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
+    precise float d = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
+    precise float jx = cr * j.x - sr * j.y, jy = sr * j.x + cr * j.y;
+    x += jx;
+    y += jy;
+    if (!(x >= 0.0 && y >= 0.0 && x < float(res) && y < float(res)))
+        return 1.0;
+    precise float tangent = cosine > 0.0 ? sqrt(max(0.0, 1.0 - cosine * cosine)) / cosine : 0.0;
+    tangent = tangent < MAX_SLOPE ? tangent : MAX_SLOPE;
+    precise float limit = texelFetch(maps, ivec3(int(x), int(y), i), 0).r +
+                          (offset_world + slope_world * tangent);
+    return d <= limit ? 1.0 : 0.0;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
+    int cell = (p.y % tile) * tile + p.x % tile;
+    precise vec2 j = noise_radius * vec2(noise[cell], noise[tile * tile + cell]);
+    precise vec3 sum = vec3(0.0);
+    precise float lum_lit = 0.0, lum_all = 0.0;
+    for (int i = 0; i < count; i++) {
+        precise float cosine = N.x * frame(i, 12) + N.y * frame(i, 13) + N.z * frame(i, 14);
+        float w = cosine > 0.0 ? cosine : 0.0;
+        float v = maps_bound ? visible(i, P, j, cosine) : 1.0;
+        vec3 e = vec3(texelFetch(lights, ivec3(i, 1, 0), 0).r,
+                      texelFetch(lights, ivec3(i, 1, 1), 0).r,
+                      texelFetch(lights, ivec3(i, 1, 2), 0).r);
+        precise float lit = v * w;
+        sum += lit * e;
+        lum_lit += lit * luminance(e);
+        lum_all += w * luminance(e);
+    }
+    bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
+    precise vec3 out_rgb = ssg_load3(albedo, p) * 0.318309886183790671 * sum;
+    SSG_STORE3(dst, p, bg ? vec3(0.0) : out_rgb);
+    SSG_STORE1(dst_visibility, p, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
+}

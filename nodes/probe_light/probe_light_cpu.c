@@ -1,0 +1,142 @@
+/* probe_light_cpu.c - CPU side of the `probe_light` node (method in probe_light.c). Rows of
+ * the G-buffer in fixed bands; in a band, chunks of CHUNK pixels are loaded once and every
+ * light is applied to the whole chunk before the next, so a light's frame, irradiance and
+ * map stay hot while the inner loop over pixels runs branch-free (vectorisable, the map
+ * read a gather). */
+#include <stdlib.h>
+
+#include "probe_light.h"
+
+enum { CHUNK = 64 };
+
+struct job {
+    const struct ssg_probe_light_consts *c;
+    const struct ssg_io *io;
+    const float *frames;   /* SSG_PROBE_LIGHT_FRAME per light */
+    const float *cos_sin;  /* jitter rotation per light */
+    int count, res, w, h;
+    float offset_world;    /* offset in depth units: offset texels x 2 radius / res */
+    float slope_world;     /* slope_offset texels in depth units */
+};
+
+struct chunk {
+    float px[CHUNK], py[CHUNK], pz[CHUNK], nx[CHUNK], ny[CHUNK], nz[CHUNK];
+    float jx[CHUNK], jy[CHUNK];                    /* the tile's jitter, in texels */
+    float sum[3][CHUNK], lum_lit[CHUNK], lum_all[CHUNK];
+};
+
+static float luminance(float r, float g, float b)
+{
+    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
+}
+
+static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *k)
+{
+    const struct ssg_image *pos = j->io->in[SSG_PROBE_LIGHT_POSITION];
+    const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_NORMAL];
+    size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
+    int tile = j->c->p.noise_tile, row = (y % tile) * tile, cells = tile * tile;
+    for (int i = 0; i < len; i++) {
+        k->px[i] = pos->data[at + i], k->py[i] = pos->data[plane + at + i];
+        k->pz[i] = pos->data[2 * plane + at + i];
+        k->nx[i] = nrm->data[at + i], k->ny[i] = nrm->data[plane + at + i];
+        k->nz[i] = nrm->data[2 * plane + at + i];
+        int cell = row + (x0 + i) % tile;
+        k->jx[i] = j->c->p.noise_radius * j->c->noise[cell];
+        k->jy[i] = j->c->p.noise_radius * j->c->noise[cells + cell];
+        k->sum[0][i] = k->sum[1][i] = k->sum[2][i] = 0.0f;
+        k->lum_lit[i] = k->lum_all[i] = 0.0f;
+    }
+}
+
+/* Light i's share of every pixel of the chunk. */
+static void add_light(const struct job *j, int li, int len, struct chunk *k)
+{
+    const float *f = j->frames + (size_t)li * SSG_PROBE_LIGHT_FRAME;
+    const struct ssg_image *lights = j->io->in[SSG_PROBE_LIGHT_LIGHTS];
+    const struct ssg_image *maps = j->io->in[SSG_PROBE_LIGHT_SHADOWMAPS];
+    int n = j->count, res = j->res;
+    float er = lights->data[n + li], eg = lights->data[3 * n + li], eb = lights->data[5 * n + li];
+    float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
+    const float *map = maps ? ssg_image_plane(maps, li) : NULL;
+    for (int i = 0; i < len; i++) {
+        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+        float w = cosine > 0.0f ? cosine : 0.0f, v = 1.0f;
+        if (map) {
+            float x = k->px[i] * f[0] + k->py[i] * f[1] + k->pz[i] * f[2] + f[3];
+            float y = k->px[i] * f[4] + k->py[i] * f[5] + k->pz[i] * f[6] + f[7];
+            float d = k->px[i] * f[8] + k->py[i] * f[9] + k->pz[i] * f[10] + f[11];
+            x += cr * k->jx[i] - sr * k->jy[i];
+            y += sr * k->jx[i] + cr * k->jy[i];
+            int inside = x >= 0.0f && y >= 0.0f && x < (float)res && y < (float)res;
+            size_t at = inside ? (size_t)(int)y * (size_t)res + (size_t)(int)x : 0;
+            float tangent = cosine > 0.0f ? sqrtf(fmaxf(0.0f, 1.0f - cosine * cosine)) / cosine
+                                          : 0.0f;
+            tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
+            float limit = map[at] + (j->offset_world + j->slope_world * tangent);
+            v = !inside || d <= limit ? 1.0f : 0.0f;
+        }
+        float lit = v * w;
+        k->sum[0][i] += lit * er, k->sum[1][i] += lit * eg, k->sum[2][i] += lit * eb;
+        k->lum_lit[i] += lit * el, k->lum_all[i] += w * el;
+    }
+}
+
+static void store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *k)
+{
+    const struct ssg_image *alb = j->io->in[SSG_PROBE_LIGHT_ALBEDO];
+    size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
+    float *out = j->io->out[0]->data, *vis = j->io->out[1]->data;
+    for (int i = 0; i < len; i++) {
+        int bg = k->nx[i] == 0.0f && k->ny[i] == 0.0f && k->nz[i] == 0.0f;
+        for (int c = 0; c < 3; c++)
+            out[c * plane + at + i] =
+                bg ? 0.0f : alb->data[c * plane + at + i] * (float)(1.0 / M_PI) * k->sum[c][i];
+        vis[at + i] = bg || !(k->lum_all[i] > 0.0f) ? 1.0f : k->lum_lit[i] / k->lum_all[i];
+    }
+}
+
+static void rows(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct chunk k;
+    for (int y = y0; y < y1; y++)
+        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+            int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+            load_chunk(j, y, x0, len, &k);
+            for (int li = 0; li < j->count; li++)
+                add_light(j, li, len, &k);
+            store_chunk(j, y, x0, len, &k);
+        }
+}
+
+enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                     const struct ssg_io *io)
+{
+    const struct ssg_probe_light_consts *c = consts;
+    int count, res;
+    enum ssg_err e = ssg_probe_light_check_run(ctx, io, &count, &res);
+    if (e)
+        return e;
+    float *frames = malloc(sizeof(float) * SSG_PROBE_LIGHT_FRAME * (size_t)count);
+    float *cos_sin = malloc(sizeof(float) * 2 * (size_t)count);
+    if (!frames || !cos_sin) {
+        free(frames);
+        free(cos_sin);
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "probe_light", "out of memory");
+    }
+    const float *l = io->in[SSG_PROBE_LIGHT_LIGHTS]->data;
+    for (int i = 0; i < count; i++) {
+        float dir[3] = {l[i], l[2 * count + i], l[4 * count + i]};
+        ssg_probe_light_frame(c, dir, res ? res : 1, frames + SSG_PROBE_LIGHT_FRAME * i);
+    }
+    ssg_probe_light_rotations(count, cos_sin);
+    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
+    float texel = res ? 2.0f * c->sphere.radius / (float)res : 0.0f;
+    struct job j = {c, io, frames, cos_sin, count, res, pos->width, pos->height,
+                    c->p.offset * texel, c->p.slope_offset * texel};
+    ssg_parallel_rows(pos->height, 4, rows, &j);
+    free(frames);
+    free(cos_sin);
+    return SSG_OK;
+}

@@ -1,0 +1,78 @@
+/* probe_light_gl.c - GL side of the `probe_light` node (method in probe_light.c): a first
+ * pass turns the light list into every light's frame (probe_light_frames.glsl, the floats
+ * of ssg_probe_light_frame) in a scratch image, so the list never returns to the CPU; the
+ * second (probe_light.glsl) lights every pixel. The jitter tile and the per-light
+ * rotations are the CPU's floats, in storage buffers. */
+#include <stdlib.h>
+
+#include "gl.h"
+#include "probe_light.h"
+
+static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_light_consts *c,
+                        const struct ssg_image *lights, int res, struct ssg_image *frames,
+                        struct ssg_gl_pass *p)
+{
+    ssg_gl_pass_begin(p, ctx, "probe_light_frames.glsl", NULL);
+    ssg_gl_input(p, "lights", lights);
+    ssg_gl_output(p, "frames", frames);
+    ssg_gl_floats(p, "rot", 9, c->rot);
+    ssg_gl_vec3(p, "eye", c->eye);
+    ssg_gl_vec3(p, "centre", c->sphere.centre);
+    ssg_gl_float(p, "radius", c->sphere.radius);
+    ssg_gl_int(p, "res", res);
+    ssg_gl_dispatch(p, lights->width, 1);
+}
+
+static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_light_consts *c,
+                       const struct ssg_io *io, const struct ssg_image *frames,
+                       const float *cos_sin, int count, int res, struct ssg_gl_pass *p)
+{
+    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
+    int tile = c->p.noise_tile;
+    ssg_gl_pass_begin(p, ctx, "probe_light.glsl", NULL);
+    ssg_gl_input(p, "position", pos);
+    ssg_gl_input(p, "normal", io->in[SSG_PROBE_LIGHT_NORMAL]);
+    ssg_gl_input(p, "albedo", io->in[SSG_PROBE_LIGHT_ALBEDO]);
+    ssg_gl_input(p, "lights", io->in[SSG_PROBE_LIGHT_LIGHTS]);
+    ssg_gl_input(p, "maps", io->in[SSG_PROBE_LIGHT_SHADOWMAPS]);
+    ssg_gl_input(p, "frames", frames);
+    ssg_gl_output(p, "dst", io->out[0]);
+    ssg_gl_output(p, "dst_visibility", io->out[1]);
+    ssg_gl_buffer(p, 0, cos_sin, sizeof(float) * 2 * (size_t)count);
+    ssg_gl_buffer(p, 1, c->noise, sizeof(float) * 2 * (size_t)tile * (size_t)tile);
+    ssg_gl_int(p, "count", count);
+    ssg_gl_int(p, "res", res);
+    ssg_gl_int(p, "tile", tile);
+    ssg_gl_float(p, "noise_radius", c->p.noise_radius);
+    float texel = res ? 2.0f * c->sphere.radius / (float)res : 0.0f;
+    ssg_gl_float(p, "offset_world", c->p.offset * texel);
+    ssg_gl_float(p, "slope_world", c->p.slope_offset * texel);
+    ssg_gl_dispatch(p, pos->width, pos->height);
+}
+
+enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                    const struct ssg_io *io)
+{
+    const struct ssg_probe_light_consts *c = consts;
+    int count, res;
+    enum ssg_err e = ssg_probe_light_check_run(ctx, io, &count, &res);
+    if (e)
+        return e;
+    float *cos_sin = malloc(sizeof(float) * 2 * (size_t)count);
+    struct ssg_image *frames = ssg_gl_scratch(ctx, count, 1, SSG_PROBE_LIGHT_FRAME);
+    if (!cos_sin || !frames) {
+        free(cos_sin);
+        ssg_gl_scratch_release(&frames);
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "probe_light", "out of memory");
+    }
+    ssg_probe_light_rotations(count, cos_sin);
+    struct ssg_gl_pass p;
+    frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_LIGHTS], res ? res : 1, frames, &p);
+    if (!(e = ssg_gl_pass_end(&p))) {
+        light_pass(ctx, c, io, frames, cos_sin, count, res, &p);
+        e = ssg_gl_pass_end(&p);
+    }
+    free(cos_sin);
+    ssg_gl_scratch_release(&frames);
+    return e;
+}

@@ -1,0 +1,90 @@
+/* shadowmaps.c - the `shadowmaps` node: the shadow buffers of the hybrid AO's global part,
+ * one orthographic depth map per directional light of a light list (`lightprobe`).
+ *
+ * Method: Knuth and Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes",
+ * sec. 3 "Global part" and fig. 5 (a shadow map for every light the probe became, the
+ * whole scene rendered into each). The paper gives neither the fit nor the format: every
+ * map here covers the scene's bounding sphere (core/shadowmap.h), so all maps share one
+ * texel size 2 r / R and one depth offset suits all; a texel holds the distance from the
+ * map's plane to the nearest surface along the light, SSG_SHADOW_EMPTY where there is
+ * none. The CPU casts one Embree ray per texel centre; GL rasterises the scene into each
+ * layer of a texture array with a depth test: both sample the texel centres. */
+#include <stdio.h>
+
+#include "image.h"
+#include "scene.h"
+#include "shadowmaps.h"
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_shadowmaps_params *p = params;
+    (void)frame;
+    long long n = in[0].width, r = p->resolution;
+    if (n * r * r > SSG_IMAGE_MAX_FLOATS) {
+        snprintf(why, why_len, "%lld maps of %lld x %lld need %.1f GiB, over the limit of "
+                 "%.1f GiB (SSG_IMAGE_MAX_FLOATS): lower the resolution or the light count",
+                 n, r, r, (double)(n * r * r) * 4.0 / (1 << 30),
+                 (double)SSG_IMAGE_MAX_FLOATS * 4.0 / (1 << 30));
+        return SSG_E_SIZE;
+    }
+    out[0] = (struct ssg_shape){p->resolution, p->resolution, in[0].width, SSG_T_SHADOWMAPS};
+    return SSG_OK;
+}
+
+enum ssg_err ssg_shadowmaps_check_run(const struct ssg_node_ctx *ctx,
+                                      const struct ssg_shadowmaps_params *p,
+                                      const struct ssg_io *io)
+{
+    const struct ssg_image *lights = io->in[0];
+    if (!ctx->scene)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "shadowmaps", "needs a scene");
+    if (!lights || lights->channels != 3 || lights->height != 2)
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "shadowmaps",
+                             "lights must be a count x 2 x 3 light list");
+    if (!ssg_image_is(io->out[0], p->resolution, p->resolution, lights->width))
+        return ssg_node_fail(ctx, SSG_E_SIZE, "shadowmaps",
+                             "maps must be resolution x resolution, one channel per light");
+    return SSG_OK;
+}
+
+static const struct ssg_param_desc params[] = {
+    {.name = "resolution", .type = SSG_P_INT,
+     .offset = offsetof(struct ssg_shadowmaps_params, resolution), .def = 256,
+     .min = SSG_SHADOW_RES_MIN, .max = SSG_SHADOW_RES_MAX, .unit = "texels",
+     .help = "side of every map (the paper's second knob: fewer texels, more bleeding)"},
+};
+
+static const struct ssg_port_desc inputs[] = {
+    {.name = "lights", .types = SSG_T_LIGHTS, .doc = "light list (lightprobe)"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    {.name = "maps", .types = SSG_T_SHADOWMAPS,
+     .doc = "R x R, channel i the depth map of light i (core/shadowmap.h)"},
+};
+
+const struct ssg_node_desc ssg_node_shadowmaps = {
+    .name = "shadowmaps",
+    .summary = "one orthographic depth map per light of a light list (hybrid AO)",
+    .method = "Knuth and Kohlhammer, A Hybrid Ambient Occlusion Technique for Dynamic Scenes, "
+              "sec. 3 and fig. 5 (a shadow buffer per light); maps fitted to the scene's "
+              "bounding sphere, linear depth (ours: the paper gives no fit or format)",
+    .doc = "Renders the scene's depth as seen by each directional light of a light list: "
+           "an orthographic map of resolution x resolution texels over the scene's bounding "
+           "sphere, holding the distance from the map's plane to the nearest surface (both "
+           "faces of every triangle cast shadows). Memory is lights x resolution^2 floats "
+           "(128 maps of 512^2: 128 MiB; at most 2 GiB). CPU: one Embree ray per texel; GL: "
+           "a depth-tested raster of the scene into each layer of a texture array.",
+    .inputs = inputs,
+    .input_count = SSG_COUNT(inputs),
+    .outputs = outputs,
+    .output_count = SSG_COUNT(outputs),
+    .params = SSG_TABLE(params),
+    .params_size = sizeof(struct ssg_shadowmaps_params),
+    .needs_scene = 1,
+    .check = check,
+    .run_cpu = ssg_shadowmaps_run_cpu,
+    .run_gl = ssg_shadowmaps_run_gl,
+};

@@ -1,0 +1,37 @@
+// shadowmaps.glsl - the `shadowmaps` node on GL (shadowmaps_gl.c): the scene drawn once
+// per light into layer ssg_layer with core/shadowmap.h's orthographic frame, built here
+// from the light's direction as ssg_shadow_frame_make builds it; each texel keeps the
+// nearest surface's distance from the map's plane along -l (linear in an orthographic
+// view, so the interpolated value is the surface's own).
+#ifdef SSG_VERTEX
+layout(location = 0) in vec3 ssg_position;
+uniform sampler2DArray lights; // the light list: row 0 the directions towards the lights
+uniform int ssg_layer;         // the light, and the layer drawn
+uniform vec3 centre;           // the scene's bounding sphere
+uniform float radius;
+out float depth;
+
+void main()
+{
+    vec3 l = vec3(texelFetch(lights, ivec3(ssg_layer, 0, 0), 0).r,
+                  texelFetch(lights, ivec3(ssg_layer, 0, 1), 0).r,
+                  texelFetch(lights, ivec3(ssg_layer, 0, 2), 0).r);
+    vec3 u, v;
+    ssg_shadow_basis(l, u, v);
+    vec3 d = ssg_position - (centre + radius * l);
+    depth = -dot(d, l);
+    // x, y: texel x = (dot(d, u) / radius + 1) R / 2, so NDC is dot(d, u) / radius; depth
+    // in [0, 2 radius] inside the sphere maps to [-1, 1].
+    gl_Position = vec4(dot(d, u) / radius, dot(d, v) / radius, depth / radius - 1.0, 1.0);
+}
+#endif
+
+#ifdef SSG_FRAGMENT
+in float depth;
+layout(location = 0) out float map_depth;
+
+void main()
+{
+    map_depth = depth;
+}
+#endif

@@ -1,0 +1,22 @@
+/* shadowmaps.h - the `shadowmaps` node (shadowmaps.c): one orthographic depth map per
+ * light of a light list, as core/shadowmap.h defines them. */
+#ifndef SSG_SHADOWMAPS_H
+#define SSG_SHADOWMAPS_H
+
+#include "node.h"
+#include "shadowmap.h"
+
+struct ssg_shadowmaps_params {
+    int resolution; /* map side R in texels; default 256 */
+};
+
+enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                    const struct ssg_io *io);
+enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io);
+/* Both backends' run-time checks: a scene, a light list, maps of its count. */
+enum ssg_err ssg_shadowmaps_check_run(const struct ssg_node_ctx *ctx,
+                                      const struct ssg_shadowmaps_params *p,
+                                      const struct ssg_io *io);
+
+#endif

@@ -1,0 +1,28 @@
+/* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in shadowmaps.c): the scene is
+ * uploaded (core/gl_raster.h) and drawn once per light into that light's layer of the
+ * output texture array by shadowmaps.glsl, which reads the light's direction from the
+ * light list itself, so the list never has to come back to the CPU. */
+#include "gl.h"
+#include "gl_raster.h"
+#include "shadowmaps.h"
+
+enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                                   const struct ssg_io *io)
+{
+    const struct ssg_shadowmaps_params *p = consts;
+    enum ssg_err e = ssg_shadowmaps_check_run(ctx, p, io);
+    if (e)
+        return e;
+    struct ssg_gl_scene *scene = NULL;
+    if ((e = ssg_gl_scene_upload(ctx, ctx->scene, &scene)))
+        return e;
+    struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
+    struct ssg_gl_pass pass;
+    ssg_gl_raster_begin(&pass, ctx, "shadowmaps.glsl");
+    ssg_gl_input(&pass, "lights", io->in[0]);
+    ssg_gl_vec3(&pass, "centre", sphere.centre);
+    ssg_gl_float(&pass, "radius", sphere.radius);
+    e = ssg_gl_scene_draw_layers(&pass, scene, io->out[0], SSG_SHADOW_EMPTY);
+    ssg_gl_scene_free(&scene);
+    return e;
+}
