@@ -47,4 +47,6 @@ enum ssg_err ssg_lightprobe_run_cpu(const struct ssg_node_ctx *ctx, const void *
 enum ssg_err ssg_lightprobe_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io);
 
+extern const struct ssg_node_desc ssg_node_lightprobe;
+
 #endif

@@ -19,4 +19,6 @@ enum ssg_err ssg_shadowmaps_check_run(const struct ssg_node_ctx *ctx,
                                       const struct ssg_shadowmaps_params *p,
                                       const struct ssg_io *io);
 
+extern const struct ssg_node_desc ssg_node_shadowmaps;
+
 #endif
