@@ -8,6 +8,7 @@
  *   brighter there than the ray-traced reference), and the local part (ssao mode=sphere,
  *   bilateral) brings it back towards the reference. */
 #include <string.h>
+#include <unistd.h>
 
 #include "check.h"
 #include "imageio.h"
@@ -161,7 +162,7 @@ static double wall_foot(const struct ssg_image *im, const struct ssg_image *pos,
 
 static void test_thin_occluder(void)
 {
-    char text[2048], out[1100];
+    char text[2048], out[1100], cwd[512];
     snprintf(text, sizeof text,
              "scene \"%s/tests/fixtures/hybrid_wall.scene\"\nseed 1\ng = gbuffer()\n"
              "lp = lightprobe(count=128)\nsm = shadowmaps(lp.lights, resolution=256)\n"
@@ -178,7 +179,7 @@ static void test_thin_occluder(void)
              "ref = reference_gi(g.position, g.normal, g.albedo, samples=256, bounce=false)\n"
              "out = write(ref.direct, \"wall\", small=small.out, large=large.out, "
              "hybrid=hyb.out, position=g.position)\n",
-             getenv("PWD") ? getenv("PWD") : ".");
+             getcwd(cwd, sizeof cwd) ? cwd : ".");
     snprintf(out, sizeof out, "%s", scene_node_path("wall"));
     CHECK_EQ(run_graph("wall.graph", text, out), SSG_OK);
     struct ssg_diags d = {0};
