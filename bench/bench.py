@@ -4,6 +4,7 @@
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
                            [--ssdo [--samples 12,24,36,64]] [--table1] [--backend]
+                           [--hybrid]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -14,6 +15,11 @@ timed assertions in tests.
 
 --backend times each node on both backends (cpu, and gl: a GPU through EGL, else llvmpipe
 through OSMesa), side by side, at 1280x720.
+
+--hybrid times graphs/hybrid.graph (Knuth and Kohlhammer's hybrid AO) per frame for 128 and
+512 lights and shadow maps of 256 and 1024 texels on both backends at 1280x720, with the
+error of each image against reference_gi lit by the same probe (bench/hybrid_reference.graph),
+next to the paper's 15 fps (128 lights) and 6 fps (512 lights).
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -126,6 +132,53 @@ def ssdo_table(binary, sizes, threads, runs, samples):
                     print(f"{size:<10} {k:>4} {bounce:>7} {statistics.median(times):>9.2f} "
                           f"{min(times):>8.2f} {max(times):>8.2f} {err['rmse']:>8.4f} "
                           f"{err['ssim']:>7.4f}")
+
+
+PAPER_FPS = {128: 15, 512: 6}  # Knuth and Kohlhammer sec. 5, a GeForce 8 (2007)
+
+
+def hybrid_table(binary, size, threads, runs):
+    """Hybrid AO: median frame ms (every node but write; lightprobe's one-off conversion
+    listed apart) for each light count, map resolution and backend, and the error against
+    the ray-traced reference."""
+    graph = os.path.join(ROOT, "graphs", "hybrid.graph")
+    reference = os.path.join(ROOT, "bench", "hybrid_reference.graph")
+    print(f"{'lights':>6} {'maps':>5} {'backend':<8} {'frame ms':>9} {'fps':>6} {'maps ms':>8} "
+          f"{'global ms':>9} {'probe ms':>8} {'rmse':>8} {'ssim':>7} {'paper fps':>9}")
+    with tempfile.TemporaryDirectory() as tmp:
+        ref_dir = os.path.join(tmp, "ref")
+        run_cmd([binary, "run", reference, "--size", size, "--out", ref_dir, "--quiet"])
+        ref = os.path.join(ref_dir, "reference.exr")
+        for lights in (128, 512):
+            for res in (256, 1024):
+                for backend in ("cpu", "gl"):
+                    out_dir = os.path.join(tmp, "hybrid")
+                    rows = []
+                    for i in range(runs + 1):
+                        cmd = [binary, "run", graph, "--size", size, "--out", out_dir,
+                               "--backend", backend, "--set", f"lp.count={lights}",
+                               "--set", f"sm.resolution={res}"]
+                        if threads:
+                            cmd += ["--threads", str(threads)]
+                        t = parse_times(run_cmd(cmd))
+                        if i:  # the first run warms up (and compiles the shaders)
+                            rows.append(t)
+                    med = lambda key: statistics.median(r[key] for r in rows)
+                    frames = [sum(ms for name, ms in r.items()
+                                  if not name.endswith(("(write)", "(lightprobe)", " gpu")))
+                              for r in rows]
+                    frame = statistics.median(frames)
+                    err = json.loads(run_cmd([binary, "compare",
+                                              os.path.join(out_dir, "hybrid.exr"), ref,
+                                              "--mask", ref + ":depth", "--json"]))
+                    print(f"{lights:>6} {res:>5} {backend:<8} {frame:>9.1f} "
+                          f"{1000 / frame:>6.2f} {med('sm (shadowmaps)'):>8.1f} "
+                          f"{med('glob (probe_light)'):>9.1f} {med('lp (lightprobe)'):>8.1f} "
+                          f"{err['rmse']:>8.4f} {err['ssim']:>7.4f} {PAPER_FPS[lights]:>9}",
+                          flush=True)
+    print(f"({size}, {runs} runs each after a warm-up, medians; threads: "
+          f"{threads or os.cpu_count()}; frame = every node but write and the one-off "
+          f"lightprobe)")
 
 
 TABLE1_ROWS = ["ssao_nosub_10", "ssdo_2step_10", "ssdo_nosub_10", "ssao_20", "ssdo_20",
@@ -243,8 +296,14 @@ def main():
     ap.add_argument("--backend", action="store_true",
                     help="each node's median ms on cpu and on gl side by side (default "
                          "graphs: ssao, hbao, ssdo at 1280x720)")
+    ap.add_argument("--hybrid", action="store_true",
+                    help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
+                         "both backends, error against reference_gi, the paper's fps")
     args = ap.parse_args()
     binary = args.bin or build()
+    if args.hybrid:
+        hybrid_table(binary, (args.size or ["1280x720"])[0], args.threads, args.runs)
+        return
     if args.backend:
         graphs = args.graph or [os.path.join(ROOT, "graphs", g) for g in
                                 ("ssao.graph", "hbao.graph", "ssdo.graph")]
