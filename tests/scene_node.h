@@ -1,7 +1,8 @@
 /* scene_node.h - running one node that reads the scene (ctx->scene), which ssg_node_run
  * (no scene) cannot: a scene from a few lines of text, a node's parameters from "name=value"
- * strings, and a run on either backend with every output back on the CPU. The hybrid AO's
- * tests use it; it goes through the executor (exec.h) as a graph run does. */
+ * strings, a run on either backend with every output back on the CPU (through the
+ * executor, exec.h, as a graph run does), light lists, and whole graphs read back from
+ * their EXR layers. Scenes from text come from scenes.h. */
 #ifndef SSG_TEST_SCENE_NODE_H
 #define SSG_TEST_SCENE_NODE_H
 
@@ -13,33 +14,60 @@
 #include "gl_backend.h"
 #include "node.h"
 #include "scene.h"
+#include "scenes.h"
 
-/* A path in the test's temporary folder (SSG_TMP, made on first use). */
+/* A path in the test's temporary folder (SSG_TMP, else /tmp, as scenes.h's). */
 static inline const char *scene_node_path(const char *name)
 {
     static char path[1024];
-    const char *dir = getenv("SSG_TMP") ? getenv("SSG_TMP") : "/tmp/ssg_scene_node";
+    const char *dir = getenv("SSG_TMP");
+    dir = dir && dir[0] ? dir : "/tmp";
     mkdir(dir, 0755);
     snprintf(path, sizeof path, "%s/%s", dir, name);
     return path;
 }
 
-/* Writes `text` to <tmp>/<name> and loads it with its assets; NULL (and a failed check)
-   when it does not load. */
-static inline struct ssg_scene *scene_from_text(const char *name, const char *text)
+/* A light list of n directions (normalised here) with irradiance (1, 2, 3). */
+static inline struct ssg_image *light_list(const float (*dirs)[3], int n)
 {
-    const char *path = scene_node_path(name);
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (!f)
-        return NULL;
-    fputs(text, f);
-    fclose(f);
+    struct ssg_image *l = ssg_image_create(n, 2, 3);
+    for (int i = 0; i < n; i++) {
+        const float *d = dirs[i];
+        float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int c = 0; c < 3; c++) {
+            l->data[(c * 2) * n + i] = d[c] / len;
+            l->data[(c * 2 + 1) * n + i] = (float)(c + 1);
+        }
+    }
+    return l;
+}
+
+/* Loads and runs a graph file at w x h (scene: NULL = the graph's own) into out_dir. */
+static inline enum ssg_err graph_run(const char *graph, const char *scene, int w, int h,
+                                     const char *out_dir)
+{
+    struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1};
+    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
     struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
+    if (!e)
+        e = ssg_graph_run(g, &opt, &d);
     ssg_diags_print(&d, stderr);
-    return s;
+    ssg_graph_destroy(&g);
+    return e;
+}
+
+/* Layer `name` (NULL = the main image) of dir/file; NULL and a failed check when absent. */
+static inline struct ssg_image *exr_layer(const char *dir, const char *file, const char *name)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    struct ssg_image *im = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_image_read(path, name, &im, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    return im;
 }
 
 /* The node's defaults with `sets` applied; free() it. */

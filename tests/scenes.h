@@ -1,9 +1,8 @@
 /* scenes.h - for the tests of nodes that trace the scene: a scene written from text into
  * $SSG_TMP (or /tmp) and loaded with its assets, so Embree rays are built; a run of a node
  * with that scene the way the executor runs it (prepare, then run_cpu); and the size
- * checks of a node's check(). Header-only, shared by test_reference_ao.c and
- * test_reference_gi.c (test_gbuffer.c, test_ssdo.c and test_env.c write scenes the same
- * way and could use it too).
+ * checks of a node's check(). Header-only, shared by test_reference_ao.c,
+ * test_reference_gi.c and, through scene_node.h, the hybrid AO's tests.
  *
  * Ownership: the returned scene and images are the caller's (ssg_scene_destroy,
  * ssg_image_destroy); the scene file stays in the scratch folder for inspection.
@@ -22,7 +21,7 @@
 
 /* Writes text to <SSG_TMP>/<name>.scene and loads it with its assets; NULL when the file
    cannot be written (or, with a failed CHECK, when the scene does not load). */
-static struct ssg_scene *scene_from_text(const char *name, const char *text)
+static inline struct ssg_scene *scene_from_text(const char *name, const char *text)
 {
     const char *dir = getenv("SSG_TMP");
     char path[600];
@@ -44,7 +43,7 @@ static struct ssg_scene *scene_from_text(const char *name, const char *text)
 /* check() of desc on the input shapes `in` (all of one size w x h, input `bad` one row
    taller): SSG_E_SIZE; with `bad` set right, SSG_OK and every one of `outputs` outputs
    w x h with `channels` channels. */
-static void check_sizes(const struct ssg_node_desc *desc, struct ssg_shape *in, int bad,
+static inline void check_sizes(const struct ssg_node_desc *desc, struct ssg_shape *in, int bad,
                         int outputs, int channels)
 {
     const int w = in[0].width, h = in[0].height;
@@ -62,7 +61,7 @@ static void check_sizes(const struct ssg_node_desc *desc, struct ssg_shape *in, 
 
 /* An output image as the executor hands it over: contents undefined (here -123, so a
    pixel the node forgets to write shows). */
-static struct ssg_image *undefined_image(int width, int height, int channels)
+static inline struct ssg_image *undefined_image(int width, int height, int channels)
 {
     struct ssg_image *im = ssg_image_create(width, height, channels);
     for (size_t i = 0; im && i < (size_t)width * height * channels; i++)
@@ -72,7 +71,7 @@ static struct ssg_image *undefined_image(int width, int height, int channels)
 
 /* Runs desc on in -> out with scene s as the executor does: prepare() into calloc'd
    constants of the descriptor's size, then run_cpu; diagnostics go to stderr. */
-static enum ssg_err run_prepared(const struct ssg_node_desc *desc, const struct ssg_scene *s,
+static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc, const struct ssg_scene *s,
                                  const struct ssg_frame *frame, const void *params,
                                  const struct ssg_image *const *in, struct ssg_image **out)
 {

@@ -27,28 +27,9 @@ static enum ssg_err run_graph(const char *name, const char *text, const char *ou
         return SSG_E_IO;
     fputs(text, f);
     fclose(f);
-    struct ssg_overrides ov = {.width = W, .height = H, .seed = -1};
-    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
-    struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(path, &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    return e;
+    return graph_run(path, NULL, W, H, out_dir);
 }
 
-static struct ssg_image *layer(const char *dir, const char *file, const char *name)
-{
-    char path[1200];
-    snprintf(path, sizeof path, "%s/%s", dir, file);
-    struct ssg_image *im = NULL;
-    struct ssg_diags d = {0};
-    CHECK_EQ(ssg_image_read(path, name, &im, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    return im;
-}
 
 static const char *const GEOMETRY =
     "camera(position=[0, 2, 3], target=[0, 0.2, 0])\n"
@@ -92,7 +73,7 @@ static void test_single_bright_light(void)
     char text[2048], out_a[1100], out_b[1100];
     write_probe("single.exr");
     snprintf(text, sizeof text, "%senvironment(image=\"single.exr\")\n", GEOMETRY);
-    struct ssg_scene *s = scene_from_text("single_probe.scene", text);
+    struct ssg_scene *s = scene_from_text("single_probe", text);
     if (!s)
         return;
     float l[3] = {0, 1, 0}, e = 0;
@@ -100,7 +81,7 @@ static void test_single_bright_light(void)
     ssg_scene_destroy(&s);
     snprintf(text, sizeof text, "%sdirectional_light(direction=[%.9g, %.9g, %.9g], "
              "intensity=%.9g)\n", GEOMETRY, -l[0], -l[1], -l[2], e);
-    s = scene_from_text("single_light.scene", text);
+    s = scene_from_text("single_light", text);
     ssg_scene_destroy(&s);
     snprintf(text, sizeof text,
              "scene \"%s\"\ng = gbuffer()\nlp = lightprobe(count=128)\n"
@@ -117,7 +98,7 @@ static void test_single_bright_light(void)
              scene_node_path("single_light.scene"));
     snprintf(out_b, sizeof out_b, "%s", scene_node_path("single_b"));
     CHECK_EQ(run_graph("single_b.graph", text, out_b), SSG_OK);
-    struct ssg_image *a = layer(out_a, "a.exr", NULL), *b = layer(out_b, "b.exr", NULL);
+    struct ssg_image *a = exr_layer(out_a, "a.exr", NULL), *b = exr_layer(out_b, "b.exr", NULL);
     if (!a || !b)
         return;
     double peak = 0, sum = 0, total = 0;
@@ -185,7 +166,7 @@ static void test_thin_occluder(void)
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
     CHECK_EQ(ssg_scene_load("tests/fixtures/hybrid_wall.scene", 0, &s, &d), SSG_OK);
-    struct ssg_image *pos = layer(out, "wall.exr", "position");
+    struct ssg_image *pos = exr_layer(out, "wall.exr", "position");
     if (!s || !pos)
         return;
     float rot[9], eye[3];
@@ -194,7 +175,7 @@ static void test_thin_occluder(void)
     double mean[4];
     int n = 0;
     for (int k = 0; k < 4; k++) {
-        struct ssg_image *im = layer(out, "wall.exr", names[k]);
+        struct ssg_image *im = exr_layer(out, "wall.exr", names[k]);
         mean[k] = im ? wall_foot(im, pos, rot, eye, &n) : 0;
         ssg_image_destroy(&im);
     }

@@ -59,7 +59,7 @@ static void test_constant_sky(void)
 {
     char text[512];
     snprintf(text, sizeof text, "%senvironment(color=[0.5, 1, 2])\n", GEOMETRY);
-    struct ssg_scene *s = scene_from_text("sky.scene", text);
+    struct ssg_scene *s = scene_from_text("sky", text);
     if (!s)
         return;
     const float L[3] = {0.5f, 1, 2};
@@ -107,7 +107,7 @@ static void test_one_bright_texel(void)
     write_probe("bright.exr", tx, ty, 1000.0f);
     char text[512];
     snprintf(text, sizeof text, "%senvironment(image=\"bright.exr\")\n", GEOMETRY);
-    struct ssg_scene *s = scene_from_text("bright.scene", text);
+    struct ssg_scene *s = scene_from_text("bright", text);
     if (!s)
         return;
     float texel[3];
@@ -210,7 +210,7 @@ static void test_courtyard_probe(void)
 
 static void test_errors(void)
 {
-    struct ssg_scene *s = scene_from_text("dark.scene", GEOMETRY);
+    struct ssg_scene *s = scene_from_text("dark", GEOMETRY);
     if (!s)
         return;
     void *params = node_params(&ssg_node_lightprobe, NULL, 0);

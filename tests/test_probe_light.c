@@ -48,20 +48,6 @@ static void gbuf_free(struct gbuf *g)
         ssg_image_destroy(&g->out[i]);
 }
 
-/* A light list of n directions (normalised here) with irradiance (1, 2, 3). */
-static struct ssg_image *light_list(const float (*dirs)[3], int n)
-{
-    struct ssg_image *l = ssg_image_create(n, 2, 3);
-    for (int i = 0; i < n; i++) {
-        const float *d = dirs[i];
-        float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (int c = 0; c < 3; c++) {
-            l->data[(c * 2) * n + i] = d[c] / len;
-            l->data[(c * 2 + 1) * n + i] = (float)(c + 1);
-        }
-    }
-    return l;
-}
 
 static struct ssg_image *maps_of(const struct ssg_scene *s, const struct ssg_image *lights,
                                  int res)
@@ -119,7 +105,7 @@ static void test_unshadowed_sum(void)
     char text[512];
     snprintf(text, sizeof text, "%splane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
              "box(center=[0, 0.25, 0], size=[0.5, 0.5, 0.5])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("sum.scene", text);
+    struct ssg_scene *s = scene_from_text("sum", text);
     if (!s)
         return;
     struct gbuf g = gbuffer(s);
@@ -172,7 +158,7 @@ static void test_open_floor(void)
     char text[512];
     snprintf(text, sizeof text, "%splane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n",
              CAMERA);
-    struct ssg_scene *s = scene_from_text("open.scene", text);
+    struct ssg_scene *s = scene_from_text("open", text);
     if (!s)
         return;
     struct gbuf g = gbuffer(s);
@@ -211,7 +197,7 @@ static void test_box_shadow(void)
     char text[512];
     snprintf(text, sizeof text, "%splane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
              "box(center=[0, 0.25, 0], size=[0.5, 0.5, 0.5])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("box.scene", text);
+    struct ssg_scene *s = scene_from_text("box", text);
     if (!s)
         return;
     struct gbuf g = gbuffer(s);
@@ -261,7 +247,7 @@ static void test_bleeding(void)
     snprintf(text, sizeof text, "camera(position=[0, 0.06, 2], target=[0, 0.03, 0])\n"
              "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
              "box(center=[0, 0.11, 0], size=[1.5, 0.02, 1.5])\n");
-    struct ssg_scene *s = scene_from_text("plate.scene", text);
+    struct ssg_scene *s = scene_from_text("plate", text);
     if (!s)
         return;
     struct gbuf g = gbuffer(s);

@@ -20,20 +20,6 @@ static const char *const FLOOR_BOX =
     "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n"
     "box(center=[0, 0.25, 0], size=[0.5, 0.5, 0.5])\n";
 
-/* A light list of n directions (normalised here), irradiance 1. */
-static struct ssg_image *light_list(const float (*dirs)[3], int n)
-{
-    struct ssg_image *l = ssg_image_create(n, 2, 3);
-    for (int i = 0; i < n; i++) {
-        const float *d = dirs[i];
-        float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (int c = 0; c < 3; c++) {
-            l->data[(c * 2) * n + i] = d[c] / len;
-            l->data[(c * 2 + 1) * n + i] = 1.0f;
-        }
-    }
-    return l;
-}
 
 static struct ssg_image *run_maps(const struct ssg_scene *s, const struct ssg_image *lights,
                                   int res, enum ssg_backend backend)
@@ -162,7 +148,7 @@ static void test_parity(void)
 
 int main(void)
 {
-    struct ssg_scene *s = scene_from_text("floor_box.scene", FLOOR_BOX);
+    struct ssg_scene *s = scene_from_text("floor_box", FLOOR_BOX);
     if (s) {
         test_straight_down(s);
         test_tilted(s);

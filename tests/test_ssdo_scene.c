@@ -15,6 +15,7 @@
 #include "check.h"
 #include "node.h"
 #include "scene.h"
+#include "scene_node.h"
 
 enum { W = 160, H = 96 };
 
@@ -22,27 +23,12 @@ static char tmp[512];
 
 static enum ssg_err run_graph(const char *graph, const char *scene, const char *out_dir)
 {
-    struct ssg_overrides ov = {.scene = scene, .width = W, .height = H, .seed = -1};
-    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
-    struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    return e;
+    return graph_run(graph, scene, W, H, out_dir);
 }
 
 static struct ssg_image *layer(const char *dir, const char *file, const char *name)
 {
-    char path[800];
-    snprintf(path, sizeof path, "%s/%s", dir, file);
-    struct ssg_image *im = NULL;
-    struct ssg_diags d = {0};
-    CHECK_EQ(ssg_image_read(path, name, &im, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    return im;
+    return exr_layer(dir, file, name);
 }
 
 static float px(const struct ssg_image *im, int c, int x, int y)
