@@ -53,7 +53,9 @@ void main()
     precise float lum_lit = 0.0, lum_all = 0.0;
     for (int i = 0; i < count; i++) {
         precise float cosine = N.x * frame(i, 12) + N.y * frame(i, 13) + N.z * frame(i, 14);
-        float w = cosine > 0.0 ? cosine : 0.0;
+        if (!(cosine > 0.0))
+            continue; // adds exact zeros (as the CPU's skipped lights)
+        float w = cosine;
         float v = maps_bound ? visible(i, P, j, cosine) : 1.0;
         vec3 e = vec3(texelFetch(lights, ivec3(i, 1, 0), 0).r,
                       texelFetch(lights, ivec3(i, 1, 1), 0).r,

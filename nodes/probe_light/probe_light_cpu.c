@@ -59,6 +59,15 @@ static void add_light(const struct job *j, int li, int len, struct chunk *k)
     float er = lights->data[n + li], eg = lights->data[3 * n + li], eb = lights->data[5 * n + li];
     float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
     const float *map = maps ? ssg_image_plane(maps, li) : NULL;
+    /* A light behind every pixel of the chunk adds exact zeros: skip it (half the lights
+       for a floor, whatever the backend, with the same sums). */
+    float most = 0.0f;
+    for (int i = 0; i < len; i++) {
+        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+        most = cosine > most ? cosine : most;
+    }
+    if (!(most > 0.0f))
+        return;
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
         float w = cosine > 0.0f ? cosine : 0.0f, v = 1.0f;
