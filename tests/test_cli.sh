@@ -102,4 +102,26 @@ printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
 expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
     "$BIN" check "$TMP/syntax.graph"
 
+# Hybrid AO: shadow maps of another light list, maps too large for memory, and a scene
+# without an environment to make lights from.
+cat > "$TMP/hybrid_bad.graph" <<EOF
+scene "$PWD/examples/courtyard.scene"
+g  = gbuffer()
+a  = lightprobe(count=16)
+b  = lightprobe(count=32)
+sm = shadowmaps(b.lights, resolution=64)
+pl = probe_light(g.position, g.normal, g.albedo, a.lights, shadowmaps=sm.maps)
+out = write(pl.out, "x")
+EOF
+expect_exit 1 "hybrid_bad.graph:6:6: error: .*shadowmaps has 32 maps but lights has 16" \
+    "$BIN" check "$TMP/hybrid_bad.graph"
+sed -i 's/resolution=64/resolution=4096/; s/count=32/count=2048/' "$TMP/hybrid_bad.graph"
+expect_exit 1 "hybrid_bad.graph:5:6: error: .*2048 maps of 4096 x 4096 need 128.0 GiB" \
+    "$BIN" check "$TMP/hybrid_bad.graph"
+printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\nlp = lightprobe()\npl = probe_light(g.position, g.normal, g.albedo, lp.lights)\nout = write(pl.out, "x")\n' \
+    "$PWD" > "$TMP/noenv.graph"
+expect_exit 1 "lightprobe 'lp': scene .*cornell.scene' has no environment light" \
+    "$BIN" run "$TMP/noenv.graph" --size 32x24 --out "$TMP/noenv_out"
+[ -e "$TMP/noenv_out/x.exr" ] && fail "a run without an environment still produced output"
+
 finish test_cli
