@@ -26,6 +26,8 @@ struct options {
     int threads;
     int quiet;
     float fov;                       /* `node`: vertical fov, degrees */
+    int frames;                      /* `run`: frames to profile, 0 = one */
+    const char *profile_json;        /* `run`: where the profile goes */
 };
 
 static const char *const usage_text =
@@ -53,6 +55,9 @@ static const char *const usage_text =
     "                      OSMesa; nodes without GL stay on the CPU); default: the graph's\n"
     "                      `backend` line and its nodes' backend= arguments, else cpu\n"
     "  --quiet             do not print per-node timings\n"
+    "  --frames N          (run) run the graph N times (each node prepares once) and print\n"
+    "                      a per-node profile: calls, avg/min/max ms, share of the frame\n"
+    "  --profile-json FILE (run) write that profile (or one frame's) as JSON\n"
     "  --in PORT=FILE[:LAYER]  (node) bind an image file, or one EXR layer of it, to a port\n"
     "  --fov DEGREES       (node) vertical field of view of the frame (default 45)\n"
     "  --help, --version\n";
@@ -136,6 +141,12 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         o->ov.backend = val;
     } else if (!strcmp(opt, "--out")) {
         o->out_dir = val;
+    } else if (!strcmp(opt, "--frames")) {
+        if (!parse_int(val, 1, 1000000, &n))
+            return usage_error("--frames expects an integer 1..1000000, got '%s'", val);
+        o->frames = (int)n;
+    } else if (!strcmp(opt, "--profile-json")) {
+        o->profile_json = val;
     } else {
         return usage_error("unknown option '%s'", opt);
     }
@@ -187,7 +198,8 @@ static int cmd_run(const struct options *o, int check_only)
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(o->file, &o->ov, &g, &d);
     if (!e) {
-        struct ssg_run_options ro = {o->out_dir, o->threads, o->quiet, stdout};
+        struct ssg_run_options ro = {o->out_dir, o->threads, o->quiet, stdout, o->frames,
+                                     o->profile_json};
         e = ssg_graph_run(g, &ro, &d);
     }
     ssg_graph_destroy(&g);

@@ -134,29 +134,47 @@ static enum ssg_err run_backend(const struct ssg_node_desc *desc, const struct s
     return e;
 }
 
+enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, void **consts)
+{
+    *consts = NULL;
+    if (!desc->consts_size)
+        return SSG_OK;
+    *consts = calloc(1, desc->consts_size);
+    if (!*consts) {
+        ssg_diag_file(ctx->diags, SSG_E_NOMEM, NULL, "out of memory preparing '%s'",
+                      ctx->instance);
+        return SSG_E_NOMEM;
+    }
+    return desc->prepare ? desc->prepare(ctx, params, *consts) : SSG_OK;
+}
+
+enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
+                                   const struct ssg_node_ctx *ctx, const void *params,
+                                   const void *consts, const struct ssg_io *io,
+                                   enum ssg_backend backend, struct ssg_node_timing *timing)
+{
+    double t0 = ssg_now_ms();
+    *timing = (struct ssg_node_timing){0};
+    int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
+    enum ssg_err e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
+    timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
+    return e;
+}
+
 enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
                               const void *params, const struct ssg_io *io,
                               enum ssg_backend backend, struct ssg_node_timing *timing)
 {
     double t0 = ssg_now_ms();
     void *consts = NULL;
-    enum ssg_err e = SSG_OK;
     *timing = (struct ssg_node_timing){0};
-    if (desc->consts_size) {
-        consts = calloc(1, desc->consts_size);
-        if (!consts) {
-            ssg_diag_file(ctx->diags, SSG_E_NOMEM, NULL, "out of memory preparing '%s'",
-                          ctx->instance);
-            return SSG_E_NOMEM;
-        }
-        if (desc->prepare)
-            e = desc->prepare(ctx, params, consts);
-    }
-    int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
+    enum ssg_err e = ssg_node_prepare(desc, ctx, params, &consts);
+    double prepare_ms = ssg_now_ms() - t0;
     if (!e)
-        e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
+        e = ssg_node_run_prepared(desc, ctx, params, consts, io, backend, timing);
     free(consts);
-    timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
+    timing->ms += prepare_ms;
     return e;
 }
 

@@ -41,6 +41,16 @@ enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg
                               const void *params, const struct ssg_io *io,
                               enum ssg_backend backend, struct ssg_node_timing *timing);
 
+/* The two halves of ssg_node_execute, for running a node many times (--frames): its
+ * constants made once by prepare() (*consts NULL when the node has none: run with the
+ * params; free() them after), then any number of runs with them. */
+enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, void **consts);
+enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
+                                   const struct ssg_node_ctx *ctx, const void *params,
+                                   const void *consts, const struct ssg_io *io,
+                                   enum ssg_backend backend, struct ssg_node_timing *timing);
+
 /* Wall-clock milliseconds from an arbitrary origin. */
 double ssg_now_ms(void);
 

@@ -10,6 +10,7 @@
 #include "graph.h"
 #include "image.h"
 #include "metrics.h"
+#include "profile.h"
 
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
 {
@@ -112,7 +113,9 @@ struct run {
     struct ssg_pool *pool;
     const struct ssg_run_options *opt;
     struct ssg_diags *diags;
-    struct ssg_node_timing *t; /* per run position */
+    struct ssg_node_timing *t; /* per run position, of the last frame */
+    void **consts;             /* per run position: what its prepare() made, once */
+    struct ssg_profile prof;   /* per run position */
     struct ssg_metrics metrics;
     int uses_gl;               /* a node runs on GL: the backend is open */
 };
@@ -164,7 +167,9 @@ static const char *out_dir(const struct run *r)
     return r->opt->out_dir ? r->opt->out_dir : "out";
 }
 
-static enum ssg_err run_node(struct run *r, int p)
+/* Runs the node at position p; in the first frame it prepares it first (the timing of a
+   one-frame run includes prepare, as ssg_node_execute's). */
+static enum ssg_err run_node(struct run *r, int p, int frame)
 {
     struct ssg_graph *g = r->g;
     struct gnode *n = &g->nodes[g->order[p]];
@@ -180,7 +185,18 @@ static enum ssg_err run_node(struct run *r, int p)
     struct ssg_io io = {in, n->out_img, n->extra_count, n->extra_names, extra, n->extra_types};
     struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene, out_dir(r), r->diags,
                                &r->metrics};
-    e = ssg_node_execute(n->desc, &ctx, n->params, &io, n->runs_on, &r->t[p]);
+    double prepare_ms = 0;
+    if (frame == 0) {
+        double t0 = ssg_now_ms();
+        e = ssg_node_prepare(n->desc, &ctx, n->params, &r->consts[p]);
+        prepare_ms = r->prof.rows[p].prepare_ms = ssg_now_ms() - t0;
+    }
+    if (!e)
+        e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
+                                  &r->t[p]);
+    if (!e)
+        ssg_profile_add(&r->prof, p, &r->t[p]);
+    r->t[p].ms += prepare_ms;
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
                     ssg_err_text(e));
@@ -219,46 +235,106 @@ static int graph_uses_gl(const struct ssg_graph *g)
     return 0;
 }
 
+/* The profile's rows and the per-position arrays of a run; 0 on out of memory. */
+static int run_init(struct run *r)
+{
+    const struct ssg_graph *g = r->g;
+    int count = g->order_count ? g->order_count : 1;
+    r->pool = ssg_pool_create();
+    r->t = calloc((size_t)count, sizeof *r->t);
+    r->consts = calloc((size_t)count, sizeof *r->consts);
+    if (!r->pool || !r->t || !r->consts || !ssg_profile_init(&r->prof, g->order_count))
+        return 0;
+    for (int p = 0; p < g->order_count; p++) {
+        const struct gnode *n = &g->nodes[g->order[p]];
+        r->prof.rows[p] = (struct ssg_profile_row){n->name, n->desc->name,
+                                                   ssg_backend_name(n->runs_on), 0,
+                                                   0, r->prof.rows[p].min, 0, 0, 0, 0};
+    }
+    r->prof.width = g->width, r->prof.height = g->height;
+    r->prof.threads = omp_get_max_threads();
+    return 1;
+}
+
+static void run_free(struct run *r)
+{
+    release_all(r);
+    ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
+    for (int p = 0; r->consts && p < r->g->order_count; p++)
+        free(r->consts[p]);
+    free(r->consts);
+    free(r->t);
+    ssg_profile_free(&r->prof);
+}
+
+/* One frame: every node in order, images given back after their last reader. */
+static enum ssg_err run_frame(struct run *r, int frame)
+{
+    enum ssg_err e = SSG_OK;
+    double sum = 0;
+    r->metrics.count = 0; /* each frame reports them anew: keep the last */
+    for (int p = 0; p < r->g->order_count && !e; p++) {
+        e = run_node(r, p, frame);
+        release_after(r, p);
+        sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
+               r->t[p].transfer_ms;
+    }
+    if (!e)
+        ssg_profile_frame(&r->prof, sum);
+    return e;
+}
+
+/* Timings or the profile, metrics, and the files they go to. */
+static enum ssg_err report(struct run *r, int frames, double total)
+{
+    FILE *log = r->opt->log ? r->opt->log : stdout;
+    enum ssg_err e = SSG_OK;
+    if (!r->opt->quiet) {
+        if (frames > 1)
+            ssg_profile_print(&r->prof, log);
+        else
+            print_timings(r, total);
+        if (frames > 1 && r->uses_gl)
+            fprintf(log, "GL: %s\n", ssg_gl_describe());
+        ssg_metrics_print(&r->metrics, log);
+    }
+    if (r->metrics.count) {
+        char path[1100];
+        snprintf(path, sizeof path, "%s/metrics.json", out_dir(r));
+        e = ssg_make_dirs(out_dir(r), r->diags);
+        if (!e)
+            e = ssg_metrics_write_json(&r->metrics, path, r->diags);
+    }
+    if (!e && r->opt->profile_json)
+        e = ssg_profile_write_json(&r->prof, r->opt->profile_json, r->diags);
+    return e;
+}
+
 enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *options,
                            struct ssg_diags *diags)
 {
     struct ssg_run_options defaults = {0};
-    struct run r = {g, ssg_pool_create(), options ? options : &defaults, diags,
-                    calloc((size_t)(g->order_count ? g->order_count : 1), sizeof *r.t),
-                    {0}, graph_uses_gl(g)};
-    if (!r.pool || !r.t) {
-        ssg_pool_destroy(&r.pool);
-        free(r.t);
+    struct run r = {g, NULL, options ? options : &defaults, diags, NULL, NULL, {0}, {0},
+                    graph_uses_gl(g)};
+    if (r.opt->threads > 0)
+        omp_set_num_threads(r.opt->threads);
+    if (!run_init(&r)) {
+        run_free(&r);
         return SSG_E_NOMEM;
     }
     if (r.uses_gl && ssg_gl_open(diags)) {
-        ssg_pool_destroy(&r.pool);
-        free(r.t);
+        run_free(&r);
         return SSG_E_BACKEND;
     }
-    if (r.opt->threads > 0)
-        omp_set_num_threads(r.opt->threads);
+    int frames = r.opt->frames > 1 ? r.opt->frames : 1;
     enum ssg_err e = SSG_OK;
     double t0 = ssg_now_ms();
-    for (int p = 0; p < g->order_count && !e; p++) {
-        e = run_node(&r, p);
-        release_after(&r, p);
-    }
-    if (!e && !r.opt->quiet) {
-        print_timings(&r, ssg_now_ms() - t0);
-        ssg_metrics_print(&r.metrics, r.opt->log ? r.opt->log : stdout);
-    }
-    if (!e && r.metrics.count) {
-        char path[1100];
-        snprintf(path, sizeof path, "%s/metrics.json", out_dir(&r));
-        e = ssg_make_dirs(out_dir(&r), diags);
-        if (!e)
-            e = ssg_metrics_write_json(&r.metrics, path, diags);
-    }
-    release_all(&r);
-    ssg_pool_destroy(&r.pool); /* deletes the textures too: GL is still open */
+    for (int f = 0; f < frames && !e; f++)
+        e = run_frame(&r, f);
+    if (!e)
+        e = report(&r, frames, ssg_now_ms() - t0);
+    run_free(&r);
     if (r.uses_gl)
         ssg_gl_close();
-    free(r.t);
     return e;
 }

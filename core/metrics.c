@@ -1,9 +1,7 @@
 /* metrics.c - collecting, printing and writing node metrics (metrics.h). */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "metrics.h"
 #include "node.h"
@@ -45,8 +43,9 @@ static void json_number(FILE *f, double v)
 }
 
 /* Metrics arrive grouped by node (a node reports all of its own at once). */
-static void write_groups(const struct ssg_metrics *metrics, FILE *f)
+static void write_groups(FILE *f, const void *user)
 {
+    const struct ssg_metrics *metrics = user;
     fputs("{", f);
     for (int i = 0; i < metrics->count; i++) {
         const struct ssg_metric *m = &metrics->items[i];
@@ -62,20 +61,5 @@ static void write_groups(const struct ssg_metrics *metrics, FILE *f)
 enum ssg_err ssg_metrics_write_json(const struct ssg_metrics *metrics, const char *path,
                                     struct ssg_diags *diags)
 {
-    char tmp[1100];
-    snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot write metrics: %s", strerror(errno));
-        return SSG_E_IO;
-    }
-    write_groups(metrics, f);
-    int failed = ferror(f);
-    failed |= fclose(f) != 0;
-    if (failed || rename(tmp, path) != 0) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot write metrics: %s", strerror(errno));
-        remove(tmp);
-        return SSG_E_IO;
-    }
-    return SSG_OK;
+    return ssg_write_text_file(path, "metrics", write_groups, metrics, diags);
 }

@@ -106,6 +106,9 @@ struct ssg_run_options {
     int threads;           /* OpenMP threads; 0 = all cores */
     int quiet;             /* 1 = do not print the per-node timing table */
     FILE *log;             /* where timings go; default stdout */
+    int frames;            /* run the graph this many times (0 = 1): every node prepares
+                              once, then runs every frame; > 1 prints a per-node profile */
+    const char *profile_json; /* where to write the profile as JSON; NULL = nowhere */
 };
 
 /* Command-line style overrides applied after the graph file is read. */

@@ -124,4 +124,22 @@ expect_exit 1 "lightprobe 'lp': scene .*cornell.scene' has no environment light"
     "$BIN" run "$TMP/noenv.graph" --size 32x24 --out "$TMP/noenv_out"
 [ -e "$TMP/noenv_out/x.exr" ] && fail "a run without an environment still produced output"
 
+# --frames: every node runs N times (prepared once) and the profile lists each with N
+# calls; --profile-json writes the same numbers; the images equal a one-frame run's.
+expect_exit 0 "^frame +3 " "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 \
+    --out "$TMP/frames3" --profile-json "$TMP/frames3/profile.json"
+"$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/frames1" --quiet || fail "one frame run"
+cmp -s "$TMP/frames1/ssao.exr" "$TMP/frames3/ssao.exr" || fail "--frames 3 changed the image"
+python3 - "$TMP/frames3/profile.json" <<'PY' || fail "profile.json is wrong"
+import json, sys
+p = json.load(open(sys.argv[1]))
+names = [n["name"] for n in p["nodes"]]
+assert p["frames"] == 3 and names == ["g", "k", "ao", "b", "img", "out"], names
+assert all(n["calls"] == 3 and n["min_ms"] <= n["avg_ms"] <= n["max_ms"] for n in p["nodes"])
+assert abs(sum(n["share"] for n in p["nodes"]) - 1) < 0.05
+PY
+expect_exit 2 "--frames expects an integer" "$BIN" run graphs/ssao.graph --frames 0
+expect_exit 1 "nope/p.json.*cannot write profile" "$BIN" run graphs/ssao.graph --size 32x24 \
+    --out "$TMP/frames_bad" --profile-json "$TMP/nope/p.json" --quiet
+
 finish test_cli

@@ -21,8 +21,8 @@
 #include <math.h>
 
 #include "check.h"
-#include "gl_parity.h"
 #include "planes.h"
+#include "gl_parity.h" /* after planes.h: its G-buffer helpers */
 
 static const struct parity_tol EXACT = {.border = 0, .max_abs = 0.0, .mean_abs = 0.0};
 
@@ -57,14 +57,6 @@ static void depth_step(struct gbuf *g)
             g->depth->data[o] = x < 37 ? 5.0f : 6.0f;
             g->nrm->data[2 * (size_t)W * H + o] = 1.0f;
         }
-}
-
-/* A floor with a wall on the left under an open sky (background pixels). */
-static void sky_scene(struct scene *s)
-{
-    *s = (struct scene){.count = 2};
-    plane_at(&s->pl[0], 0, 1, 0.2, 0, -1, -5);
-    plane_at(&s->pl[1], 1, 0, 0.3, -1.5, 0, -5);
 }
 
 /* A wavy surface with smoothly turning normals (intermediate weights), a background
@@ -125,30 +117,23 @@ static void complexity_case(const char *label, struct gbuf *g, const char *const
     release(g);
 }
 
-static void scene_gbuf(void (*scene_fn)(struct scene *), struct gbuf *g)
-{
-    struct scene s;
-    scene_fn(&s);
-    cast(&s, g);
-}
-
 static void complexity_cases(void)
 {
     W = 100, H = 75; /* cells cut at the right and bottom edges for every scale */
     struct ssg_frame f = frame();
     struct gbuf g;
     const char *def[] = {"period=10"};
-    scene_gbuf(corner_scene, &g);
+    parity_cast(corner_scene, &g);
     complexity_case("corner default", &g, def, 1, &f, 2);
     const char *fine[] = {"scale=1", "resolutions=4", "levels=[10, 20]"};
-    scene_gbuf(corner_scene, &g);
+    parity_cast(corner_scene, &g);
     complexity_case("corner s1 r4", &g, fine, 3, &f, 2);
     const char *step[] = {"scale=2", "resolutions=2", "normal_gain=0"};
     depth_step(&g);
     complexity_case("step s2 r2", &g, step, 3, &f, 2);
     const char *sky[] = {"scale=8", "resolutions=3", "levels=[8, 16, 24, 32, 40, 48, 56, 64]",
                          "period=8"};
-    scene_gbuf(sky_scene, &g);
+    parity_cast(parity_sky_scene, &g);
     complexity_case("sky s8 r3 L8", &g, sky, 4, &f, 2);
     const char *soft[] = {"scale=2", "normal_gain=1.3", "depth_gain=3",
                           "levels=[10, 20, 30, 40, 50, 60, 70]"};
@@ -167,7 +152,7 @@ static void complexity_cases(void)
     wavy(&g);
     complexity_case("wavy subsampled", &g, soft, 4, &big, 7);
     const char *sub[] = {"scale=1", "resolutions=2"};
-    scene_gbuf(corner_scene, &g);
+    parity_cast(corner_scene, &g);
     complexity_case("corner subsampled", &g, sub, 2, &big, 2);
 }
 
@@ -191,20 +176,16 @@ struct combine_inputs {
    "m" 1-channel modulation, "M" 3-channel modulation, "e" environment. */
 static int bind_combine(const struct combine_inputs *in, const char *opt, struct ssg_binding *b)
 {
-    int n = 0;
-    b[n++] = (struct ssg_binding){"direct", in->direct};
-    b[n++] = (struct ssg_binding){"albedo", in->albedo};
-    if (strchr(opt, 'a'))
-        b[n++] = (struct ssg_binding){"ambient_occlusion", in->ao};
-    if (strchr(opt, 'i'))
-        b[n++] = (struct ssg_binding){"indirect", in->indirect};
-    if (strchr(opt, 'm'))
-        b[n++] = (struct ssg_binding){"modulation", in->mod1};
-    if (strchr(opt, 'M'))
-        b[n++] = (struct ssg_binding){"modulation", in->mod3};
-    if (strchr(opt, 'e'))
-        b[n++] = (struct ssg_binding){"environment", in->env};
-    return n;
+    const struct parity_input t[] = {
+        {0, "direct", in->direct},
+        {0, "albedo", in->albedo},
+        {'a', "ambient_occlusion", in->ao},
+        {'i', "indirect", in->indirect},
+        {'m', "modulation", in->mod1},
+        {'M', "modulation", in->mod3},
+        {'e', "environment", in->env},
+    };
+    return parity_bind(t, 7, opt, b);
 }
 
 static void combine_case(const struct combine_inputs *in, const char *label, const char *opt,
@@ -212,7 +193,7 @@ static void combine_case(const struct combine_inputs *in, const char *label, con
 {
     /* One ulp at the largest outputs (below 16): room for a last-bit rounding only. */
     const struct parity_tol ulp = {.border = 0, .max_abs = 9.6e-7, .mean_abs = 1e-8};
-    struct ssg_binding b[6];
+    struct ssg_binding b[7];
     struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1};
     parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, ulp);
 }
@@ -247,8 +228,6 @@ static void combine_cases(void)
 
 int main(void)
 {
-    (void)count_not_one; /* planes.h helpers this test does not need */
-    (void)mean_over;
     halton_cases();
     complexity_cases();
     combine_cases();

@@ -23,95 +23,40 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "check.h"
 #include "exec.h"
 #include "gl_backend.h"
-#include "gl_parity.h"
 #include "planes.h"
+#include "gl_parity.h" /* after planes.h: its G-buffer helpers */
 #include "scene.h"
+#include "scenes.h"
 #include "ssdo/ssdo.h"
 
 extern const struct ssg_node_desc ssg_node_ssdo;
 
-/* The corner of planes.h plus, for background pixels, a floor with a wall on its left
-   under an open sky. */
-static void sky_scene(struct scene *s)
-{
-    *s = (struct scene){.count = 2};
-    plane_at(&s->pl[0], 0, 1, 0.2, 0, -1, -5);   /* floor */
-    plane_at(&s->pl[1], 1, 0, 0.3, -1.5, 0, -5); /* wall on the left, facing right */
-}
-
-static void halton(const char *count, struct ssg_image **kernel, struct ssg_image **rot)
-{
-    struct ssg_diags d = {0};
-    struct ssg_frame f = frame();
-    struct ssg_outputs out = {0};
-    const char *sets[] = {count, "mapping=uniform"};
-    CHECK_EQ(ssg_node_run("halton", NULL, 0, sets, 2, &f, &out, &d), SSG_OK);
-    *kernel = out.images[0];
-    *rot = out.images[1];
-}
-
-/* Per-pixel counts over the whole range the node accepts: below 1, fractions (half up),
-   above the kernel, NaN. */
-static struct ssg_image *count_image(int k)
-{
-    struct ssg_image *c = ssg_image_create(W, H, 1);
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            float v = (float)((x * 7 + y * 3) % (k + 4)) - 1.5f;
-            c->data[y * W + x] = (x + y) % 23 == 0 ? NAN : v;
-        }
-    return c;
-}
-
-/* A smooth colour field, so that each sender's light and each receiver differ. */
-static struct ssg_image *colour_field(float base, float gain)
-{
-    struct ssg_image *im = ssg_image_create(W, H, 3);
-    for (int c = 0; c < 3; c++)
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++)
-                im->data[((size_t)c * H + y) * W + x] =
-                    base + gain * (float)((x * (c + 1) + y * (3 - c)) % 17) / 17.0f;
-    return im;
-}
-
-struct inputs {
-    struct gbuf g;
-    struct ssg_image *kernel, *rot, *count, *nrm2; /* nrm2: normals scaled by 2 */
-    struct ssg_image *albedo, *light;
-};
-
 /* Binds position, normal, kernel, then the optional inputs asked for in `opt` ("r"
    rotation, "d" depth, "c" count, "a" albedo, "l" light, "2" the non-unit normals), in
    the node's port order. */
-static int bind(const struct inputs *in, const char *opt, struct ssg_binding *b)
+static int bind(const struct parity_inputs *in, const char *opt, struct ssg_binding *b)
 {
-    int n = 0;
-    b[n++] = (struct ssg_binding){"position", in->g.pos};
-    b[n++] = (struct ssg_binding){"normal", strchr(opt, '2') ? in->nrm2 : in->g.nrm};
-    b[n++] = (struct ssg_binding){"kernel", in->kernel};
-    if (strchr(opt, 'r'))
-        b[n++] = (struct ssg_binding){"rotation", in->rot};
-    if (strchr(opt, 'd'))
-        b[n++] = (struct ssg_binding){"depth", in->g.depth};
-    if (strchr(opt, 'a'))
-        b[n++] = (struct ssg_binding){"albedo", in->albedo};
-    if (strchr(opt, 'l'))
-        b[n++] = (struct ssg_binding){"light", in->light};
-    if (strchr(opt, 'c'))
-        b[n++] = (struct ssg_binding){"count", in->count};
-    return n;
+    const struct parity_input t[] = {
+        {0, "position", in->g.pos},
+        {0, "normal", strchr(opt, '2') ? in->nrm2 : in->g.nrm},
+        {0, "kernel", in->kernel},
+        {'r', "rotation", in->rot},
+        {'d', "depth", in->g.depth},
+        {'a', "albedo", in->albedo},
+        {'l', "light", in->light},
+        {'c', "count", in->count},
+    };
+    return parity_bind(t, 8, opt, b);
 }
 
 /* Parity of one case; the CPU's out must not be flat (not all 1 in modulation, some
    bounce where asked for), or parity would prove nothing. */
-static void run_case(const struct inputs *in, const char *label, const char *opt,
+static void run_case(const struct parity_inputs *in, const char *label, const char *opt,
                      const char *const *sets, int set_count, const struct ssg_frame *f,
                      struct parity_tol tol)
 {
@@ -135,33 +80,21 @@ static void run_case(const struct inputs *in, const char *label, const char *opt
     ssg_outputs_release(&cpu);
 }
 
-static void load_inputs(struct inputs *in, void (*scene_fn)(struct scene *))
+static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
 {
-    struct scene s;
-    scene_fn(&s);
-    cast(&s, &in->g);
-    halton("count=16", &in->kernel, &in->rot);
-    in->count = count_image(16);
-    in->nrm2 = ssg_image_create(W, H, 3);
-    for (size_t i = 0; i < (size_t)W * H * 3; i++)
-        in->nrm2->data[i] = 2.0f * in->g.nrm->data[i];
-    in->albedo = colour_field(0.2f, 0.6f);
-    in->light = colour_field(0.5f, 2.0f);
-}
-
-static void free_inputs(struct inputs *in)
-{
-    release(&in->g);
-    ssg_image_destroy(&in->kernel);
-    ssg_image_destroy(&in->rot);
-    ssg_image_destroy(&in->count);
-    ssg_image_destroy(&in->nrm2);
-    ssg_image_destroy(&in->albedo);
-    ssg_image_destroy(&in->light);
+    *in = (struct parity_inputs){0};
+    struct ssg_frame f = frame();
+    const char *sets[] = {"count=16", "mapping=uniform"};
+    parity_cast(scene_fn, &in->g);
+    parity_halton(&f, sets, 2, &in->kernel, &in->rot);
+    in->count = parity_count_image(W, H, 16);
+    in->nrm2 = parity_scaled(in->g.nrm, 2.0f);
+    in->albedo = parity_colour_field(W, H, 0.2f, 0.6f);
+    in->light = parity_colour_field(W, H, 0.5f, 2.0f);
 }
 
 /* The cases without a scene (constant white environment, no lights). */
-static void plain_cases(const struct inputs *in, struct parity_tol tol)
+static void plain_cases(const struct parity_inputs *in, struct parity_tol tol)
 {
     const char *def[] = {"radius=1.5"};
     run_case(in, "mod1 rot", "r", def, 1, NULL, tol);
@@ -179,27 +112,19 @@ static void plain_cases(const struct inputs *in, struct parity_tol tol)
 
 /* ---- Lights and environment: a scene's, through the node's descriptor. ---- */
 
-static char tmp[512];
-
 /* A scene whose camera is the planes' (view space = world space) with the given light
-   lines; one far plane, since the lights and environment are all prepare() reads. */
+   lines; one far plane, since the lights and environment are all prepare() reads. Written
+   to $SSG_TMP/gl_ssdo.scene by scenes.h; an unwritable file fails a CHECK too. */
 static struct ssg_scene *load_scene(const char *lights)
 {
-    char path[700];
-    snprintf(path, sizeof path, "%s/gl_ssdo.scene", tmp);
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (!f)
-        return NULL;
-    fprintf(f, "camera(position=[0, 0, 0], target=[0, 0, -1], up=[0, 1, 0], fov=45, "
-               "near=0.05, far=100)\n"
-               "plane(center=[0, 0, -50], normal=[0, 0, 1], size=[1, 0, 1])\n%s",
-            lights);
-    fclose(f);
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
+    char text[1200];
+    snprintf(text, sizeof text,
+             "camera(position=[0, 0, 0], target=[0, 0, -1], up=[0, 1, 0], fov=45, "
+             "near=0.05, far=100)\n"
+             "plane(center=[0, 0, -50], normal=[0, 0, 1], size=[1, 0, 1])\n%s",
+             lights);
+    struct ssg_scene *s = scene_from_text("gl_ssdo", text);
+    CHECK(s != NULL);
     return s;
 }
 
@@ -245,20 +170,8 @@ static void *ssdo_params(const char *const *sets, int set_count)
     return params;
 }
 
-/* gl_parity.h's check of one output, for runs it does not make. */
-static void compare_output(const char *label, const char *name, const struct ssg_image *cpu,
-                           const struct ssg_image *gl, struct parity_tol tol)
-{
-    struct parity_diff p = parity_compare(cpu, gl, tol.border);
-    fprintf(stderr, "parity ssdo     %-24s %-10s max %.3g (tol %.3g) mean %.3g (tol %.3g)\n",
-            label, name, p.max_abs, tol.max_abs, p.mean_abs, tol.mean_abs);
-    CHECK_EQ(p.mismatched_nan, 0);
-    CHECK(p.max_abs <= tol.max_abs);
-    CHECK(p.mean_abs <= tol.mean_abs);
-}
-
 /* One case with a scene: params from `sets`, inputs from `opt` as bind() reads it. */
-static void scene_case(const struct inputs *in, const struct ssg_scene *scene,
+static void scene_case(const struct parity_inputs *in, const struct ssg_scene *scene,
                        const char *label, const char *opt, const char *const *sets,
                        int set_count, struct parity_tol tol)
 {
@@ -276,8 +189,8 @@ static void scene_case(const struct inputs *in, const struct ssg_scene *scene,
     struct ssg_io io_cpu = {.in = ins, .out = cpu}, io_gl = {.in = ins, .out = gl};
     CHECK_EQ(run_with_scene(scene, &io_cpu, params, SSG_BACKEND_CPU), SSG_OK);
     CHECK_EQ(run_with_scene(scene, &io_gl, params, SSG_BACKEND_GL), SSG_OK);
-    compare_output(label, "out", cpu[0], gl[0], tol);
-    compare_output(label, "bounce", cpu[1], gl[1], tol);
+    parity_check_output("ssdo", label, "out", cpu[0], gl[0], tol);
+    parity_check_output("ssdo", label, "bounce", cpu[1], gl[1], tol);
     int dark = count_not_one(&in->g, cpu[0]);
     fprintf(stderr, "    out: %d of %d not 1\n", dark, W * H);
     CHECK(dark > W * H / 200);
@@ -288,7 +201,7 @@ static void scene_case(const struct inputs *in, const struct ssg_scene *scene,
     free(params);
 }
 
-static void scene_cases(const struct inputs *in, struct parity_tol tol)
+static void scene_cases(const struct parity_inputs *in, struct parity_tol tol)
 {
     struct ssg_scene *lights = load_scene(
         "point_light(position=[1, 2, -3], color=[1, 0.8, 0.6], intensity=5)\n"
@@ -303,7 +216,7 @@ static void scene_cases(const struct inputs *in, struct parity_tol tol)
         scene_case(in, lights, "radiance lights count", "rca", rc, 3, tol);
     }
     ssg_scene_destroy(&lights);
-    char cwd[400], text[800]; /* the probe by absolute path: the scene is in tmp */
+    char cwd[400], text[800]; /* the probe by absolute path: the scene is in $SSG_TMP */
     if (!getcwd(cwd, sizeof cwd))
         cwd[0] = '\0';
     snprintf(text, sizeof text,
@@ -323,27 +236,21 @@ static void scene_cases(const struct inputs *in, struct parity_tol tol)
 
 int main(void)
 {
-    const char *t = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", t && t[0] ? t : "/tmp/test_gl_ssdo");
-    mkdir(tmp, 0755);
     W = 96, H = 72;
     /* Measured on llvmpipe (Mesa): bit-exact (max 0) in every case (file header). */
     const struct parity_tol tol = {.border = 0, .max_abs = 1e-6, .mean_abs = 1e-7};
-    struct inputs in;
+    struct parity_inputs in;
     load_inputs(&in, corner_scene);
     plain_cases(&in, tol);
     scene_cases(&in, tol);
-    free_inputs(&in);
+    parity_inputs_free(&in);
 
-    load_inputs(&in, sky_scene);
+    load_inputs(&in, parity_sky_scene);
     plain_cases(&in, tol);
     scene_cases(&in, tol);
-    /* The G-buffer as a 2x subsampled frame: the projection scaled by 2 is the one it
-       was cast with. */
-    struct ssg_frame big = frame();
-    big.width *= 2, big.height *= 2;
+    struct ssg_frame big = parity_subsampled_frame();
     const char *def[] = {"radius=1.5", "bounce=true"};
     run_case(&in, "mod1 subsampled", "rdal", def, 2, &big, tol);
-    free_inputs(&in);
+    parity_inputs_free(&in);
     return check_report();
 }
