@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench.h"
 #include "ssgraph.h"
 
 enum { MAX_SETS = 256, MAX_INPUTS = 24, EXIT_INVALID = 1, EXIT_USAGE = 2 };
@@ -28,6 +29,9 @@ struct options {
     float fov;                       /* `node`: vertical fov, degrees */
     int frames;                      /* `run`: frames to profile, 0 = one */
     const char *profile_json;        /* `run`: where the profile goes */
+    const char *sweeps[SSG_BENCH_MAX_SWEEPS]; /* `bench`: node.param=v1,v2,... */
+    int sweep_count;
+    const char *time_node;           /* `bench`: the node bench.md times */
 };
 
 static const char *const usage_text =
@@ -40,6 +44,10 @@ static const char *const usage_text =
     "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
     "  compare A B     RMSE, MAE, PSNR, SSIM of image A against reference B (FILE[:LAYER];\n"
     "                  --mask M, --json, --peak P; diff image: node compare --in ...)\n"
+    "  bench FILE      run a graph for every combination of --sweep NODE.PARAM=V1,V2,...\n"
+    "                  (up to 4; --frames N each, default 5); writes bench.csv, bench.md\n"
+    "                  and bench.json into --out, a row per cell as it finishes; the\n"
+    "                  table shows --time NODE's ms (default: the whole frame)\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n"
@@ -145,6 +153,12 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         if (!parse_int(val, 1, 1000000, &n))
             return usage_error("--frames expects an integer 1..1000000, got '%s'", val);
         o->frames = (int)n;
+    } else if (!strcmp(opt, "--sweep")) {
+        if (o->sweep_count == SSG_BENCH_MAX_SWEEPS)
+            return usage_error("at most 4 --sweep options, at '%s'", val);
+        o->sweeps[o->sweep_count++] = val;
+    } else if (!strcmp(opt, "--time")) {
+        o->time_node = val;
     } else if (!strcmp(opt, "--profile-json")) {
         o->profile_json = val;
     } else {
@@ -198,8 +212,9 @@ static int cmd_run(const struct options *o, int check_only)
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(o->file, &o->ov, &g, &d);
     if (!e) {
-        struct ssg_run_options ro = {o->out_dir, o->threads, o->quiet, stdout, o->frames,
-                                     o->profile_json};
+        struct ssg_run_options ro = {.out_dir = o->out_dir, .threads = o->threads,
+                                     .quiet = o->quiet, .log = stdout, .frames = o->frames,
+                                     .profile_json = o->profile_json};
         e = ssg_graph_run(g, &ro, &d);
     }
     ssg_graph_destroy(&g);
@@ -418,7 +433,8 @@ int main(int argc, char **argv)
         return argc == 3 ? cmd_describe(argv[2]) : usage_error("%s", "describe expects NODE");
     if (!strcmp(cmd, "compare"))
         return cmd_compare(argc - 2, argv + 2);
-    if (strcmp(cmd, "run") && strcmp(cmd, "check") && strcmp(cmd, "node"))
+    if (strcmp(cmd, "run") && strcmp(cmd, "check") && strcmp(cmd, "node") &&
+        strcmp(cmd, "bench"))
         return usage_error("unknown command '%s'", cmd);
     struct options o;
     int rc = parse_options(&o, argc - 2, argv + 2);
@@ -426,5 +442,10 @@ int main(int argc, char **argv)
         return rc;
     if (!strcmp(cmd, "node"))
         return cmd_node(&o);
+    if (!strcmp(cmd, "bench")) {
+        struct ssg_bench_request req = {o.file, &o.ov, o.sweeps, o.sweep_count, o.frames,
+                                        o.threads, o.out_dir, o.time_node};
+        return ssg_bench_main(&req);
+    }
     return cmd_run(&o, !strcmp(cmd, "check"));
 }

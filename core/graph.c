@@ -284,6 +284,27 @@ static enum ssg_err run_frame(struct run *r, int frame)
     return e;
 }
 
+static void fill_stats(const struct run *r, struct ssg_run_stats *s)
+{
+    const struct ssg_profile *p = &r->prof;
+    memset(s, 0, sizeof *s);
+    s->frames = p->frames;
+    s->frame_avg_ms = p->frames ? p->frame_sum / p->frames : 0;
+    s->frame_min_ms = p->frames ? p->frame_min : 0;
+    s->frame_max_ms = p->frame_max;
+    for (int i = 0; i < p->rows_count && i < SSG_RUN_NODES_MAX; i++) {
+        struct ssg_run_node_time *n = &s->nodes[s->node_count++];
+        snprintf(n->name, sizeof n->name, "%s", p->rows[i].name);
+        n->avg_ms = p->rows[i].calls ? p->rows[i].sum / p->rows[i].calls : 0;
+    }
+    for (int i = 0; i < r->metrics.count && i < SSG_RUN_METRICS_MAX; i++) {
+        struct ssg_run_metric *m = &s->metrics[s->metric_count++];
+        snprintf(m->node, sizeof m->node, "%s", r->metrics.items[i].node);
+        snprintf(m->name, sizeof m->name, "%s", r->metrics.items[i].name);
+        m->value = r->metrics.items[i].value;
+    }
+}
+
 /* Timings or the profile, metrics, and the files they go to. */
 static enum ssg_err report(struct run *r, int frames, double total)
 {
@@ -307,6 +328,8 @@ static enum ssg_err report(struct run *r, int frames, double total)
     }
     if (!e && r->opt->profile_json)
         e = ssg_profile_write_json(&r->prof, r->opt->profile_json, r->diags);
+    if (!e && r->opt->stats)
+        fill_stats(r, r->opt->stats);
     return e;
 }
 

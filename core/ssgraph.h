@@ -100,6 +100,27 @@ struct ssg_frame {
     uint64_t seed;      /* seed for every pseudo-random choice; default 1 */
 };
 
+/* What a run measured, for programs that time graphs (`ssgraph bench`): the frame times
+ * over its frames and the metrics its nodes reported (compare's rmse, ...). */
+#define SSG_RUN_METRICS_MAX 32
+struct ssg_run_metric {
+    char node[64], name[32];
+    double value;
+};
+#define SSG_RUN_NODES_MAX 64
+struct ssg_run_node_time {
+    char name[64];
+    double avg_ms;   /* over the frames, prepare excluded */
+};
+struct ssg_run_stats {
+    int frames;
+    double frame_avg_ms, frame_min_ms, frame_max_ms; /* every node's run, prepare excluded */
+    int metric_count;
+    struct ssg_run_metric metrics[SSG_RUN_METRICS_MAX];
+    int node_count;                                  /* in run order */
+    struct ssg_run_node_time nodes[SSG_RUN_NODES_MAX];
+};
+
 /* Options of a graph run; zero means default. */
 struct ssg_run_options {
     const char *out_dir;   /* directory for written files; default "out" */
@@ -109,6 +130,7 @@ struct ssg_run_options {
     int frames;            /* run the graph this many times (0 = 1): every node prepares
                               once, then runs every frame; > 1 prints a per-node profile */
     const char *profile_json; /* where to write the profile as JSON; NULL = nowhere */
+    struct ssg_run_stats *stats; /* filled after a successful run when not NULL */
 };
 
 /* Command-line style overrides applied after the graph file is read. */

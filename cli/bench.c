@@ -1,0 +1,414 @@
+/* bench.c - `ssgraph bench FILE --sweep node.param=v1,v2,... [--sweep ...]`: the graph is
+ * loaded and run for every combination of the sweeps' values (the cross product, first
+ * sweep outermost), each cell over `frames` frames with every node prepared once; its
+ * frame time (average, min, max) and the metrics its compare nodes report go to
+ * <out>/bench.csv (a row appended and flushed per cell, so an interrupted bench keeps the
+ * cells it finished), <out>/bench.json and <out>/bench.md (rewritten whole after every
+ * cell; the table is shaped like the documents': rows the first sweep, columns the
+ * second, one table per value of the others). A cell that fails is reported and recorded
+ * with its message; the others still run. Progress: a bar on a terminal, lines
+ * otherwise. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench.h"
+#include "parse.h"
+
+enum { MAX_VALUES = 64 };
+
+struct sweep {
+    char key[128];                    /* node.param */
+    char text[1024];                  /* the values, split in place */
+    const char *values[MAX_VALUES];
+    int count;
+};
+
+struct cell {
+    int index[SSG_BENCH_MAX_SWEEPS];  /* value index per sweep */
+    int ok;
+    char error[512];
+    struct ssg_run_stats stats;
+};
+
+struct bench {
+    const struct ssg_bench_request *req;
+    struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
+    int n;                            /* sweeps */
+    struct cell *cells;
+    int cell_count, done;
+};
+
+/* "node.param=v1,v2" into a sweep; 0 with a message when malformed. */
+static int parse_sweep(const char *spec, struct sweep *s)
+{
+    const char *eq = strchr(spec, '=');
+    size_t klen = eq ? (size_t)(eq - spec) : 0;
+    if (!eq || klen == 0 || klen >= sizeof s->key || !memchr(spec, '.', klen) ||
+        strlen(eq + 1) >= sizeof s->text) {
+        fprintf(stderr, "ssgraph: error: --sweep expects node.param=v1,v2,..., got '%s'\n",
+                spec);
+        return 0;
+    }
+    memcpy(s->key, spec, klen);
+    s->key[klen] = 0;
+    snprintf(s->text, sizeof s->text, "%s", eq + 1);
+    s->count = 0;
+    for (char *tok = strtok(s->text, ","); tok; tok = strtok(NULL, ",")) {
+        if (s->count == MAX_VALUES || !*tok) {
+            fprintf(stderr, "ssgraph: error: --sweep '%s': 1 to %d non-empty values\n", spec,
+                    MAX_VALUES);
+            return 0;
+        }
+        s->values[s->count++] = tok;
+    }
+    if (s->count == 0)
+        fprintf(stderr, "ssgraph: error: --sweep '%s' has no values\n", spec);
+    return s->count > 0;
+}
+
+/* The cells of the cross product, first sweep outermost. */
+static int make_cells(struct bench *b)
+{
+    b->cell_count = 1;
+    for (int k = 0; k < b->n; k++)
+        b->cell_count *= b->sweeps[k].count;
+    b->cells = calloc((size_t)b->cell_count, sizeof *b->cells);
+    if (!b->cells)
+        return 0;
+    for (int c = 0; c < b->cell_count; c++) {
+        int rest = c;
+        for (int k = b->n - 1; k >= 0; k--) {
+            b->cells[c].index[k] = rest % b->sweeps[k].count;
+            rest /= b->sweeps[k].count;
+        }
+    }
+    return 1;
+}
+
+static const char *value_of(const struct bench *b, const struct cell *c, int k)
+{
+    return b->sweeps[k].values[c->index[k]];
+}
+
+/* One cell: the graph with the user's --set and the cell's values, run `frames` times. */
+static void run_cell(const struct bench *b, int ci, struct cell *c)
+{
+    const struct ssg_bench_request *q = b->req;
+    const char *sets[256 + SSG_BENCH_MAX_SWEEPS];
+    char own[SSG_BENCH_MAX_SWEEPS][1200], dir[1100];
+    int n = 0;
+    for (int i = 0; i < q->ov->set_count && n < 256; i++)
+        sets[n++] = q->ov->sets[i];
+    for (int k = 0; k < b->n; k++) {
+        snprintf(own[k], sizeof own[k], "%s=%s", b->sweeps[k].key, value_of(b, c, k));
+        sets[n++] = own[k];
+    }
+    struct ssg_overrides ov = *q->ov;
+    ov.sets = sets;
+    ov.set_count = n;
+    snprintf(dir, sizeof dir, "%s/cells/%d", q->out_dir, ci);
+    struct ssg_run_options ro = {.out_dir = dir, .threads = q->threads, .quiet = 1,
+                                 .frames = q->frames > 0 ? q->frames : 5, .stats = &c->stats};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(q->graph, &ov, &g, &d);
+    if (!e)
+        e = ssg_graph_run(g, &ro, &d);
+    ssg_graph_destroy(&g);
+    c->ok = e == SSG_OK;
+    if (!c->ok)
+        snprintf(c->error, sizeof c->error, "%s", d.count ? d.items[0].message : ssg_err_text(e));
+}
+
+/* "rmse=0.0213;ssim=0.91" style: every metric of a cell as node.name=value. */
+static void metrics_text(const struct cell *c, char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    for (int i = 0; i < c->stats.metric_count && used < len; i++) {
+        const struct ssg_run_metric *m = &c->stats.metrics[i];
+        used += (size_t)snprintf(buf + used, len - used, "%s%s.%s=%.6g", i ? ";" : "",
+                                 m->node, m->name, m->value);
+    }
+}
+
+static void csv_field(FILE *f, const char *text)
+{
+    fputc('"', f);
+    for (; *text; text++) {
+        if (*text == '"')
+            fputc('"', f);
+        fputc(*text, f);
+    }
+    fputc('"', f);
+}
+
+static void csv_header(const struct bench *b, FILE *f)
+{
+    fputs("cell", f);
+    for (int k = 0; k < b->n; k++)
+        fprintf(f, ",%s", b->sweeps[k].key);
+    fputs(",status,frames,frame_avg_ms,frame_min_ms,frame_max_ms,node_ms,metrics,error\n", f);
+}
+
+/* "g=1.2;ao=0.7": every node's average ms of a cell. */
+static void nodes_text(const struct cell *c, char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    for (int i = 0; i < c->stats.node_count && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s=%.4f", i ? ";" : "",
+                                 c->stats.nodes[i].name, c->stats.nodes[i].avg_ms);
+}
+
+static void csv_row(const struct bench *b, int ci, FILE *f)
+{
+    const struct cell *c = &b->cells[ci];
+    char metrics[2048], nodes[2048];
+    metrics_text(c, metrics, sizeof metrics);
+    nodes_text(c, nodes, sizeof nodes);
+    fprintf(f, "%d", ci);
+    for (int k = 0; k < b->n; k++) {
+        fputc(',', f);
+        csv_field(f, value_of(b, c, k));
+    }
+    fprintf(f, ",%s,%d,%.4f,%.4f,%.4f,", c->ok ? "ok" : "error", c->stats.frames,
+            c->stats.frame_avg_ms, c->stats.frame_min_ms, c->stats.frame_max_ms);
+    csv_field(f, nodes);
+    fputc(',', f);
+    csv_field(f, metrics);
+    fputc(',', f);
+    csv_field(f, c->ok ? "" : c->error);
+    fputc('\n', f);
+}
+
+static void json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void json_cell(const struct bench *b, int ci, FILE *f)
+{
+    const struct cell *c = &b->cells[ci];
+    fprintf(f, "    {\"cell\": %d, \"values\": {", ci);
+    for (int k = 0; k < b->n; k++) {
+        fprintf(f, "%s", k ? ", " : "");
+        json_string(f, b->sweeps[k].key);
+        fputs(": ", f);
+        json_string(f, value_of(b, c, k));
+    }
+    fprintf(f, "}, \"status\": \"%s\", \"frames\": %d, \"frame_avg_ms\": %.6g, "
+            "\"frame_min_ms\": %.6g, \"frame_max_ms\": %.6g, \"metrics\": {",
+            c->ok ? "ok" : "error", c->stats.frames, c->stats.frame_avg_ms,
+            c->stats.frame_min_ms, c->stats.frame_max_ms);
+    for (int i = 0; i < c->stats.metric_count; i++) {
+        const struct ssg_run_metric *m = &c->stats.metrics[i];
+        fprintf(f, "%s\"%s.%s\": %.9g", i ? ", " : "", m->node, m->name, m->value);
+    }
+    fputs("}, \"node_ms\": {", f);
+    for (int i = 0; i < c->stats.node_count; i++)
+        fprintf(f, "%s\"%s\": %.6g", i ? ", " : "", c->stats.nodes[i].name,
+                c->stats.nodes[i].avg_ms);
+    fputs("}, \"error\": ", f);
+    json_string(f, c->ok ? "" : c->error);
+    fputs("}", f);
+}
+
+static void write_json(FILE *f, const void *user)
+{
+    const struct bench *b = user;
+    fputs("{\n  \"graph\": ", f);
+    json_string(f, b->req->graph);
+    fputs(",\n  \"sweeps\": [", f);
+    for (int k = 0; k < b->n; k++) {
+        fprintf(f, "%s{\"key\": ", k ? ", " : "");
+        json_string(f, b->sweeps[k].key);
+        fputs(", \"values\": [", f);
+        for (int v = 0; v < b->sweeps[k].count; v++) {
+            fputs(v ? ", " : "", f);
+            json_string(f, b->sweeps[k].values[v]);
+        }
+        fputs("]}", f);
+    }
+    fprintf(f, "],\n  \"cells_total\": %d,\n  \"cells\": [\n", b->cell_count);
+    for (int ci = 0; ci < b->done; ci++) {
+        json_cell(b, ci, f);
+        fputs(ci + 1 < b->done ? ",\n" : "\n", f);
+    }
+    fputs("  ]\n}\n", f);
+}
+
+/* The ms a table shows for a cell: the --time node's average, else the frame's. */
+static double shown_ms(const struct bench *b, const struct cell *c)
+{
+    for (int i = 0; b->req->time_node && i < c->stats.node_count; i++)
+        if (!strcmp(c->stats.nodes[i].name, b->req->time_node))
+            return c->stats.nodes[i].avg_ms;
+    return c->stats.frame_avg_ms;
+}
+
+/* One Markdown cell: "12.34 ms" plus the first metric, or the failure. */
+static void md_cell(const struct bench *b, const struct cell *c, FILE *f)
+{
+    if (!c->ok) {
+        fputs(" failed |", f);
+        return;
+    }
+    fprintf(f, " %.2f ms", shown_ms(b, c));
+    if (c->stats.metric_count)
+        fprintf(f, ", %s %.4g", c->stats.metrics[0].name, c->stats.metrics[0].value);
+    fputs(" |", f);
+}
+
+/* The values of sweeps 2.. that table t (of their combinations, last sweep fastest) shows. */
+static void md_title(const struct bench *b, int t, FILE *f)
+{
+    int stride = 1;
+    for (int k = b->n - 1; k >= 2; k--)
+        stride *= b->sweeps[k].count;
+    for (int k = 2; k < b->n; k++) {
+        stride /= b->sweeps[k].count;
+        fprintf(f, "%s%s = %s", k > 2 ? ", " : "\n", b->sweeps[k].key,
+                b->sweeps[k].values[(t / stride) % b->sweeps[k].count]);
+    }
+    fputs(b->n > 2 ? ":\n" : "", f);
+}
+
+/* Tables: rows the first sweep, columns the second (or one column), one table per value
+   combination of the other sweeps; cells not run yet are blank. Cell (i0, i1, t) is
+   (i0 * columns + i1) * tables + t, as make_cells numbers them. */
+static void write_md(FILE *f, const void *user)
+{
+    const struct bench *b = user;
+    int rows = b->n ? b->sweeps[0].count : 1, cols = b->n > 1 ? b->sweeps[1].count : 1;
+    int tables = b->cell_count / (rows * cols);
+    fprintf(f, "# ssgraph bench %s\n\nms %s%s (average over each cell's frames) and the "
+            "first metric a compare node reported, if any.\n", b->req->graph,
+            b->req->time_node ? "of node " : "per frame", b->req->time_node ? b->req->time_node
+                                                                             : "");
+    for (int t = 0; t < tables; t++) {
+        md_title(b, t, f);
+        fprintf(f, "\n| %s |", b->n ? b->sweeps[0].key : "graph");
+        for (int col = 0; col < cols; col++)
+            fprintf(f, " %s%s%s |", b->n > 1 ? b->sweeps[1].key : "ms", b->n > 1 ? " = " : "",
+                    b->n > 1 ? b->sweeps[1].values[col] : "");
+        fputs("\n|---|", f);
+        for (int col = 0; col < cols; col++)
+            fputs("---|", f);
+        for (int r = 0; r < rows; r++) {
+            fprintf(f, "\n| %s |", b->n ? b->sweeps[0].values[r] : "");
+            for (int col = 0; col < cols; col++) {
+                int ci = (r * cols + col) * tables + t;
+                if (ci < b->done)
+                    md_cell(b, &b->cells[ci], f);
+                else
+                    fputs(" |", f);
+            }
+        }
+        fputc('\n', f);
+    }
+}
+
+static void progress(const struct bench *b, int ci, FILE *f, int tty)
+{
+    const struct cell *c = &b->cells[ci];
+    char what[512] = "";
+    size_t used = 0;
+    for (int k = 0; k < b->n && used < sizeof what; k++)
+        used += (size_t)snprintf(what + used, sizeof what - used, "%s%s=%s", k ? " " : "",
+                                 b->sweeps[k].key, value_of(b, c, k));
+    char result[600];
+    if (c->ok)
+        snprintf(result, sizeof result, "%.2f ms", c->stats.frame_avg_ms);
+    else
+        snprintf(result, sizeof result, "FAILED: %s", c->error);
+    if (!tty) {
+        fprintf(f, "bench: cell %d/%d %s: %s\n", ci + 1, b->cell_count, what, result);
+        return;
+    }
+    int width = 30, filled = width * (ci + 1) / b->cell_count;
+    fprintf(f, "\r[%.*s%*s] %d/%d %s: %s\033[K", filled, "##############################",
+            width - filled, "", ci + 1, b->cell_count, what, result);
+    if (ci + 1 == b->cell_count || !c->ok)
+        fputc('\n', f);
+    fflush(f);
+}
+
+/* After each cell: its CSV row, and bench.json and bench.md rewritten whole. */
+static enum ssg_err save(const struct bench *b, FILE *csv, struct ssg_diags *d)
+{
+    char path[1200];
+    csv_row(b, b->done - 1, csv);
+    fflush(csv);
+    snprintf(path, sizeof path, "%s/bench.json", b->req->out_dir);
+    enum ssg_err e = ssg_write_text_file(path, "bench results", write_json, b, d);
+    snprintf(path, sizeof path, "%s/bench.md", b->req->out_dir);
+    return e ? e : ssg_write_text_file(path, "bench table", write_md, b, d);
+}
+
+static FILE *open_csv(const struct bench *b, struct ssg_diags *d)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/bench.csv", b->req->out_dir);
+    if (ssg_make_dirs(b->req->out_dir, d))
+        return NULL;
+    FILE *f = fopen(path, "w");
+    if (!f)
+        ssg_diag_file(d, SSG_E_IO, path, "cannot write the bench table");
+    else
+        csv_header(b, f);
+    return f;
+}
+
+/* Whether the --time node (if any) is among the nodes a cell ran. */
+static int knows_time_node(const struct bench *b, const struct cell *c)
+{
+    int found = !b->req->time_node;
+    for (int i = 0; i < c->stats.node_count && !found; i++)
+        found = !strcmp(c->stats.nodes[i].name, b->req->time_node);
+    return found;
+}
+
+int ssg_bench_main(const struct ssg_bench_request *req)
+{
+    struct bench b = {.req = req, .n = req->sweep_count};
+    for (int k = 0; k < b.n; k++)
+        if (!parse_sweep(req->sweeps[k], &b.sweeps[k]))
+            return 2;
+    struct ssg_diags d = {0};
+    FILE *csv = make_cells(&b) ? open_csv(&b, &d) : NULL;
+    int tty = isatty(fileno(stderr)), failed = 0;
+    enum ssg_err e = csv ? SSG_OK : SSG_E_IO;
+    for (int ci = 0; ci < b.cell_count && !e; ci++) {
+        run_cell(&b, ci, &b.cells[ci]);
+        b.done = ci + 1;
+        failed += !b.cells[ci].ok;
+        progress(&b, ci, stderr, tty);
+        e = save(&b, csv, &d);
+        if (!e && b.cells[ci].ok && !knows_time_node(&b, &b.cells[ci])) {
+            fprintf(stderr, "ssgraph: error: --time '%s' is not a node of %s\n",
+                    req->time_node, req->graph);
+            failed = -1;
+            break;
+        }
+    }
+    if (csv)
+        fclose(csv);
+    ssg_diags_print(&d, stderr);
+    if (!e && failed >= 0)
+        fprintf(stderr, "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",
+                b.cell_count, failed, req->out_dir);
+    free(b.cells);
+    return failed < 0 ? 2 : e || failed ? 1 : 0;
+}

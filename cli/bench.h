@@ -1,0 +1,25 @@
+/* bench.h - `ssgraph bench` (bench.c): a graph run over the cross product of parameter
+ * sweeps, each cell timed over several frames, written as CSV, Markdown and JSON. */
+#ifndef SSG_CLI_BENCH_H
+#define SSG_CLI_BENCH_H
+
+#include "ssgraph.h"
+
+#define SSG_BENCH_MAX_SWEEPS 4
+
+struct ssg_bench_request {
+    const char *graph;                /* the graph file */
+    const struct ssg_overrides *ov;   /* --scene, --size, --set, --seed, --backend */
+    const char *const *sweeps;        /* "node.param=v1,v2,..." */
+    int sweep_count;
+    int frames;                       /* per cell; 0 = 5 */
+    int threads;
+    const char *out_dir;              /* bench.csv, bench.md, bench.json, cells/ */
+    const char *time_node;            /* the node whose ms bench.md shows; NULL = frame */
+};
+
+/* Runs every cell; returns the process exit code (0: all cells ran, 1: some failed or
+ * the files could not be written, 2: a malformed sweep). */
+int ssg_bench_main(const struct ssg_bench_request *req);
+
+#endif

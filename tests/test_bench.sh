@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# `ssgraph bench`: the sweep runs exactly the cross product; bench.csv and bench.json
+# parse and agree; a failed cell is reported and recorded while the others complete; an
+# interrupted bench leaves the rows it finished on disk; bad sweeps and an unknown --time
+# node are usage errors.
+set -u
+source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_bench"
+
+expect_exit 1 "6 cells, 2 failed" "$BIN" bench graphs/ssao.graph --size 48x32 --frames 2 \
+    --sweep k.count=4,8 --sweep ao.radius=0.25,0.5,9x --time ao --out "$TMP/b"
+python3 - "$TMP/b" <<'PY' || fail "bench files disagree with the cross product"
+import csv, itertools, json, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/bench.csv")))
+cells = json.load(open(d + "/bench.json"))["cells"]
+want = list(itertools.product(["4", "8"], ["0.25", "0.5", "9x"]))
+got = [(r["k.count"], r["ao.radius"]) for r in rows]
+assert got == want, got
+assert [(c["values"]["k.count"], c["values"]["ao.radius"]) for c in cells] == want
+for r, c in zip(rows, cells):
+    assert r["status"] == c["status"]
+    ok = r["ao.radius"] != "9x"
+    assert (r["status"] == "ok") == ok, r
+    if ok:
+        assert c["frames"] == 2 and abs(float(r["frame_avg_ms"]) - c["frame_avg_ms"]) < 1e-3
+        assert abs(c["node_ms"]["ao"] - float(r["node_ms"].split("ao=")[1].split(";")[0])) < 1e-3
+    else:
+        assert "9x" in r["error"] or r["error"], r
+md = open(d + "/bench.md").read()
+assert "| k.count | ao.radius = 0.25 | ao.radius = 0.5 | ao.radius = 9x |" in md, md
+assert md.count("failed") == 2, md
+PY
+
+# Interrupted: stop a slow bench (SIGTERM) once its first row is on disk.
+"$BIN" bench graphs/reference_ao.graph --size 320x240 --frames 1 \
+    --sweep ref.rays=256,512,768,1024,1280,1536,1792,2048 --out "$TMP/int" > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    [ -f "$TMP/int/bench.csv" ] && [ "$(wc -l < "$TMP/int/bench.csv")" -ge 2 ] && break
+    sleep 0.1
+done
+kill -TERM $pid 2> /dev/null
+wait $pid 2> /dev/null
+python3 - "$TMP/int" <<'PY' || fail "an interrupted bench lost its finished rows"
+import csv, json, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/bench.csv")))
+assert 1 <= len(rows) < 8 and all(r["status"] == "ok" and r["error"] == "" for r in rows), rows
+cells = json.load(open(d + "/bench.json"))["cells"]
+assert len(cells) >= 1
+PY
+
+expect_exit 2 "--sweep expects node.param=v1,v2" "$BIN" bench graphs/ssao.graph --sweep radius=1
+expect_exit 2 "--time 'nope' is not a node" "$BIN" bench graphs/ssao.graph --size 32x24 \
+    --frames 1 --sweep k.count=4 --time nope --out "$TMP/t"
+finish test_bench
