@@ -8,6 +8,7 @@
  * second, one table per value of the others). A cell that fails is reported and recorded
  * with its message; the others still run. Progress: a bar on a terminal, lines
  * otherwise. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +16,7 @@
 
 #include "bench.h"
 #include "parse.h"
+#include "plot.h"
 
 enum { MAX_VALUES = 64 };
 
@@ -380,6 +382,81 @@ static int knows_time_node(const struct bench *b, const struct cell *c)
     return found;
 }
 
+/* The cell's value of --error (or its first metric); NAN when it has none. */
+static double error_of(const struct bench *b, const struct cell *c)
+{
+    for (int i = 0; i < c->stats.metric_count; i++) {
+        char key[100];
+        snprintf(key, sizeof key, "%s.%s", c->stats.metrics[i].node, c->stats.metrics[i].name);
+        if (!b->req->error_metric || !strcmp(key, b->req->error_metric))
+            return c->stats.metrics[i].value;
+    }
+    return NAN;
+}
+
+static int by_series(const void *a, const void *b)
+{
+    const struct ssg_plot_point *p = a, *q = b;
+    int s = strcmp(p->series, q->series);
+    return s ? s : (p->x > q->x) - (p->x < q->x);
+}
+
+/* The successful cells as plot points: x the first sweep's value (must be a number),
+   series the other sweeps' values. */
+static int plot_points(const struct bench *b, struct ssg_plot_point *pts, char (*series)[300])
+{
+    int n = 0;
+    for (int ci = 0; ci < b->done; ci++) {
+        const struct cell *c = &b->cells[ci];
+        char *end;
+        double x = b->n ? strtod(value_of(b, c, 0), &end) : ci;
+        if (!c->ok || (b->n && *end))
+            continue;
+        size_t used = 0;
+        series[n][0] = 0;
+        for (int k = 1; k < b->n; k++)
+            used += (size_t)snprintf(series[n] + used, 300 - used, "%s%s=%s", k > 1 ? " " : "",
+                                     b->sweeps[k].key, value_of(b, c, k));
+        if (b->n < 2)
+            snprintf(series[n], 300, "%s", b->req->time_node ? b->req->time_node : "frame");
+        pts[n] = (struct ssg_plot_point){x, shown_ms(b, c), error_of(b, c), series[n], ""};
+        used = 0;
+        for (int k = 0; k < b->n; k++)
+            used += (size_t)snprintf(pts[n].label + used, sizeof pts[n].label - used, "%s%s",
+                                     k ? "," : "", value_of(b, c, k));
+        n++;
+    }
+    return n;
+}
+
+static int draw_plots(const struct bench *b)
+{
+    struct ssg_plot_point *pts = calloc((size_t)b->done + 1, sizeof *pts);
+    char(*series)[300] = calloc((size_t)b->done + 1, sizeof *series);
+    int n = pts && series ? plot_points(b, pts, series) : 0, rc = 0;
+    if (n == 0) {
+        fprintf(stderr, "ssgraph: error: nothing to plot (no finished cell, or the first "
+                "sweep's values are not numbers)\n");
+        rc = 1;
+    } else {
+        qsort(pts, (size_t)n, sizeof *pts, by_series);
+        char title[600], ylabel[200];
+        snprintf(title, sizeof title, "%s: ms against %s", b->req->graph,
+                 b->n ? b->sweeps[0].key : "cell");
+        snprintf(ylabel, sizeof ylabel, "ms (%s)", b->req->time_node ? b->req->time_node
+                                                                     : "frame");
+        rc |= ssg_plot_ms(b->req->out_dir, "bench_ms", title, b->n ? b->sweeps[0].key : "cell",
+                          ylabel, pts, n);
+        snprintf(title, sizeof title, "%s: error against ms (Pareto view)", b->req->graph);
+        rc |= ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
+                              b->req->error_metric ? b->req->error_metric : "first metric",
+                              pts, n);
+    }
+    free(pts);
+    free(series);
+    return rc;
+}
+
 int ssg_bench_main(const struct ssg_bench_request *req)
 {
     struct bench b = {.req = req, .n = req->sweep_count};
@@ -409,6 +486,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     if (!e && failed >= 0)
         fprintf(stderr, "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",
                 b.cell_count, failed, req->out_dir);
+    if (!e && failed >= 0 && req->plot && draw_plots(&b))
+        e = SSG_E_IO;
     free(b.cells);
     return failed < 0 ? 2 : e || failed ? 1 : 0;
 }

@@ -16,6 +16,8 @@ struct ssg_bench_request {
     int threads;
     const char *out_dir;              /* bench.csv, bench.md, bench.json, cells/ */
     const char *time_node;            /* the node whose ms bench.md shows; NULL = frame */
+    const char *error_metric;         /* "node.metric" the Pareto plot uses; NULL = first */
+    int plot;                         /* 1 = bench_ms.png and bench_pareto.png (gnuplot) */
 };
 
 /* Runs every cell; returns the process exit code (0: all cells ran, 1: some failed or

@@ -32,6 +32,8 @@ struct options {
     const char *sweeps[SSG_BENCH_MAX_SWEEPS]; /* `bench`: node.param=v1,v2,... */
     int sweep_count;
     const char *time_node;           /* `bench`: the node bench.md times */
+    const char *error_metric;        /* `bench`: node.metric of the Pareto plot */
+    int plot;                        /* `bench`: draw the plots */
 };
 
 static const char *const usage_text =
@@ -47,7 +49,9 @@ static const char *const usage_text =
     "  bench FILE      run a graph for every combination of --sweep NODE.PARAM=V1,V2,...\n"
     "                  (up to 4; --frames N each, default 5); writes bench.csv, bench.md\n"
     "                  and bench.json into --out, a row per cell as it finishes; the\n"
-    "                  table shows --time NODE's ms (default: the whole frame)\n"
+    "                  table shows --time NODE's ms (default: the whole frame); --plot\n"
+    "                  draws ms against the first sweep and --error NODE.METRIC against\n"
+    "                  ms (a Pareto view) as PNG with gnuplot\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n"
@@ -109,8 +113,8 @@ static int parse_size(const char *s, int *w, int *h)
 static int take_option(struct options *o, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
-    if (!strcmp(opt, "--quiet")) {
-        o->quiet = 1;
+    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--plot")) {
+        *(opt[2] == 'q' ? &o->quiet : &o->plot) = 1;
         return 0;
     }
     if (*i + 1 >= argc)
@@ -159,6 +163,8 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         o->sweeps[o->sweep_count++] = val;
     } else if (!strcmp(opt, "--time")) {
         o->time_node = val;
+    } else if (!strcmp(opt, "--error")) {
+        o->error_metric = val;
     } else if (!strcmp(opt, "--profile-json")) {
         o->profile_json = val;
     } else {
@@ -444,7 +450,8 @@ int main(int argc, char **argv)
         return cmd_node(&o);
     if (!strcmp(cmd, "bench")) {
         struct ssg_bench_request req = {o.file, &o.ov, o.sweeps, o.sweep_count, o.frames,
-                                        o.threads, o.out_dir, o.time_node};
+                                        o.threads, o.out_dir, o.time_node, o.error_metric,
+                                        o.plot};
         return ssg_bench_main(&req);
     }
     return cmd_run(&o, !strcmp(cmd, "check"));

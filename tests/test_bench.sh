@@ -50,6 +50,16 @@ cells = json.load(open(d + "/bench.json"))["cells"]
 assert len(cells) >= 1
 PY
 
+# --plot: ms against the first sweep and error against ms, as PNG through gnuplot.
+expect_exit 0 "8 cells, 0 failed" "$BIN" bench graphs/ao_error.graph --size 48x32 --frames 1 \
+    --sweep k.count=4,8,16,32 --sweep ao.radius=0.25,0.5 --time ao --error c_ssao.rmse --plot \
+    --out "$TMP/plot"
+for png in bench_ms bench_pareto; do
+    oiiotool --info "$TMP/plot/$png.png" 2>&1 | grep -q "900 x  600" ||
+        fail "$png.png is not a 900x600 image: $(oiiotool --info "$TMP/plot/$png.png" 2>&1)"
+done
+grep -q "Pareto front" "$TMP/plot/bench_pareto.dat" || fail "no Pareto front in the plot data"
+
 expect_exit 2 "--sweep expects node.param=v1,v2" "$BIN" bench graphs/ssao.graph --sweep radius=1
 expect_exit 2 "--time 'nope' is not a node" "$BIN" bench graphs/ssao.graph --size 32x24 \
     --frames 1 --sweep k.count=4 --time nope --out "$TMP/t"
