@@ -332,7 +332,8 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
                                  b->sweeps[k].key, value_of(b, c, k));
     char result[600];
     if (c->ok)
-        snprintf(result, sizeof result, "%.2f ms", c->stats.frame_avg_ms);
+        snprintf(result, sizeof result, "%.2f ms%s%s", shown_ms(b, c),
+                 b->req->time_node ? " " : "", b->req->time_node ? b->req->time_node : "");
     else
         snprintf(result, sizeof result, "FAILED: %s", c->error);
     if (!tty) {
@@ -447,10 +448,17 @@ static int draw_plots(const struct bench *b)
                                                                      : "frame");
         rc |= ssg_plot_ms(b->req->out_dir, "bench_ms", title, b->n ? b->sweeps[0].key : "cell",
                           ylabel, pts, n);
+        int errors = 0;
+        for (int i = 0; i < n; i++)
+            errors += !isnan(pts[i].err);
         snprintf(title, sizeof title, "%s: error against ms (Pareto view)", b->req->graph);
-        rc |= ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
-                              b->req->error_metric ? b->req->error_metric : "first metric",
-                              pts, n);
+        if (errors)
+            rc |= ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
+                                  b->req->error_metric ? b->req->error_metric
+                                                       : "first metric", pts, n);
+        else
+            fprintf(stderr, "bench: no %s in the cells: no Pareto plot (add a compare node)\n",
+                    b->req->error_metric ? b->req->error_metric : "metric");
     }
     free(pts);
     free(series);

@@ -267,17 +267,21 @@ static void run_free(struct run *r)
     ssg_profile_free(&r->prof);
 }
 
-/* One frame: every node in order, images given back after their last reader. */
-static enum ssg_err run_frame(struct run *r, int frame)
+/* One frame: every node in order, images given back after their last reader. Sinks
+   (write, compare) run in the last frame only: a real-time frame shows its image rather
+   than writing files, and the frame time is that of the passes. */
+static enum ssg_err run_frame(struct run *r, int frame, int frames)
 {
     enum ssg_err e = SSG_OK;
     double sum = 0;
-    r->metrics.count = 0; /* each frame reports them anew: keep the last */
     for (int p = 0; p < r->g->order_count && !e; p++) {
-        e = run_node(r, p, frame);
+        int sink = r->g->nodes[r->g->order[p]].desc->is_sink;
+        if (!sink || frame == frames - 1)
+            e = run_node(r, p, frame);
         release_after(r, p);
-        sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
-               r->t[p].transfer_ms;
+        if (!sink)
+            sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
+                   r->t[p].transfer_ms;
     }
     if (!e)
         ssg_profile_frame(&r->prof, sum);
@@ -353,7 +357,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     enum ssg_err e = SSG_OK;
     double t0 = ssg_now_ms();
     for (int f = 0; f < frames && !e; f++)
-        e = run_frame(&r, f);
+        e = run_frame(&r, f, frames);
     if (!e)
         e = report(&r, frames, ssg_now_ms() - t0);
     run_free(&r);

@@ -57,9 +57,12 @@ void ssg_profile_print(const struct ssg_profile *p, FILE *f)
         char gpu[32] = "-";
         if (row->backend[0] == 'g')
             snprintf(gpu, sizeof gpu, "%.2f", average(row->gpu_sum, row->calls));
-        fprintf(f, "%-16s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%% %10s %10.2f\n", row->name,
+        char share[16] = "     -";
+        if (row->calls == p->frames && frame > 0)
+            snprintf(share, sizeof share, "%5.1f%%", 100.0 * avg / frame);
+        fprintf(f, "%-16s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", row->name,
                 row->type, row->backend, row->calls, avg, row->calls ? row->min : 0.0,
-                row->max, frame > 0 ? 100.0 * avg / frame : 0.0, gpu, row->prepare_ms);
+                row->max, share, gpu, row->prepare_ms);
     }
     fprintf(f, "%-16s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
             "%.1f fps)\n", "frame", "", "", p->frames, frame, p->frames ? p->frame_min : 0.0,
@@ -79,12 +82,15 @@ static void write_json(FILE *f, const void *user)
     for (int r = 0; r < p->rows_count; r++) {
         const struct ssg_profile_row *row = &p->rows[r];
         double avg = average(row->sum, row->calls);
+        char share[32] = "null"; /* sinks run once, outside the frame */
+        if (row->calls == p->frames && frame > 0)
+            snprintf(share, sizeof share, "%.6g", avg / frame);
         fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
                 "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
-                "\"share\": %.6g, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
+                "\"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
                 "\"prepare_ms\": %.6g}", r ? "," : "", row->name, row->type, row->backend,
-                row->calls, avg, row->calls ? row->min : 0.0, row->max,
-                frame > 0 ? avg / frame : 0.0, average(row->gpu_sum, row->calls),
+                row->calls, avg, row->calls ? row->min : 0.0, row->max, share,
+                average(row->gpu_sum, row->calls),
                 average(row->xfer_sum, row->calls), row->prepare_ms);
     }
     fputs("\n  ]\n}\n", f);

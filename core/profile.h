@@ -1,6 +1,7 @@
 /* profile.h - the per-node profile of a graph run over several frames (`ssgraph run
  * --frames N`): for every node its calls, average, minimum and maximum milliseconds, its
- * share of the frame, its one-off prepare() time, and on GL the timer queries' average,
+ * share of the frame (sinks, which run in the last frame only, have none), its one-off
+ * prepare() time, and on GL the timer queries' average,
  * printed as a table like a GPU profiler's and written as JSON (--profile-json). */
 #ifndef SSG_PROFILE_H
 #define SSG_PROFILE_H

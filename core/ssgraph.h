@@ -128,7 +128,8 @@ struct ssg_run_options {
     int quiet;             /* 1 = do not print the per-node timing table */
     FILE *log;             /* where timings go; default stdout */
     int frames;            /* run the graph this many times (0 = 1): every node prepares
-                              once, then runs every frame; > 1 prints a per-node profile */
+                              once, then runs every frame, but sinks (write, compare) only
+                              in the last; > 1 prints a per-node profile */
     const char *profile_json; /* where to write the profile as JSON; NULL = nowhere */
     struct ssg_run_stats *stats; /* filled after a successful run when not NULL */
 };

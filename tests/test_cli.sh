@@ -124,8 +124,8 @@ expect_exit 1 "lightprobe 'lp': scene .*cornell.scene' has no environment light"
     "$BIN" run "$TMP/noenv.graph" --size 32x24 --out "$TMP/noenv_out"
 [ -e "$TMP/noenv_out/x.exr" ] && fail "a run without an environment still produced output"
 
-# --frames: every node runs N times (prepared once) and the profile lists each with N
-# calls; --profile-json writes the same numbers; the images equal a one-frame run's.
+# --frames: every node runs N times (prepared once; the write only in the last frame) and
+# the profile lists each with its calls; --profile-json writes the same numbers; the images equal a one-frame run's.
 expect_exit 0 "^frame +3 " "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 \
     --out "$TMP/frames3" --profile-json "$TMP/frames3/profile.json"
 "$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/frames1" --quiet || fail "one frame run"
@@ -135,8 +135,10 @@ import json, sys
 p = json.load(open(sys.argv[1]))
 names = [n["name"] for n in p["nodes"]]
 assert p["frames"] == 3 and names == ["g", "k", "ao", "b", "img", "out"], names
-assert all(n["calls"] == 3 and n["min_ms"] <= n["avg_ms"] <= n["max_ms"] for n in p["nodes"])
-assert abs(sum(n["share"] for n in p["nodes"]) - 1) < 0.05
+passes = [n for n in p["nodes"] if n["name"] != "out"]
+assert all(n["calls"] == 3 and n["min_ms"] <= n["avg_ms"] <= n["max_ms"] for n in passes)
+assert p["nodes"][-1]["calls"] == 1 and p["nodes"][-1]["share"] is None  # write: last frame
+assert abs(sum(n["share"] for n in passes) - 1) < 0.05
 PY
 expect_exit 2 "--frames expects an integer" "$BIN" run graphs/ssao.graph --frames 0
 expect_exit 1 "nope/p.json.*cannot write profile" "$BIN" run graphs/ssao.graph --size 32x24 \

@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""The tables of section 5.1.1 of the thesis (Belonogov, "Global Illumination methods in
+simulated VR environments"): ms of SSAO, HBAO, SSDO and SSDO with one bounce over the
+kernel size N = 12, 24, 36, 64 and the radius r at 800x600, and figure 5.2 (ms against N
+per method, averaged over r), measured with `ssgraph bench` on the Cornell box.
+
+    python3 bench/thesis_tables.py [--bin build-bench/ssgraph] [--frames 5]
+                                   [--out bench/results/thesis]
+
+Each method is one `ssgraph bench` (its bench.csv, bench.md, bench.json and plots stay in
+OUT/<method>/); OUT/README.md puts our tables next to the thesis's and OUT/fig52.png draws
+the figure with gnuplot. Radii: the thesis's r = 2, 4, 8 are units of its city scene; the
+Cornell box is 2 units wide, so r = 0.1, 0.2, 0.4 here (the same doubling). HBAO's N is
+directions x steps: 4 steps and 3, 6, 9, 16 directions. The timed node is the method's own
+pass (--time), as the thesis's profiler timed the method's shader calls."""
+import argparse
+import csv
+import os
+import platform
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+N = [12, 24, 36, 64]
+R = ["0.1", "0.2", "0.4"]
+# method: (graph, timed node, kernel sweep, radius key, extra --set)
+METHODS = {
+    "SSAO": ("ssao.graph", "ao", "k.count=12,24,36,64", "ao.radius", []),
+    "HBAO": ("hbao.graph", "h", "h.directions=3,6,9,16", "h.radius", ["h.steps=4"]),
+    "SSDO": ("ssdo.graph", "do", "k.count=12,24,36,64", "do.radius", ["do.bounce=false"]),
+    "SSDO+": ("ssdo.graph", "do", "k.count=12,24,36,64", "do.radius", ["do.bounce=true"]),
+}
+# The thesis's table values (ms, GeForce GTX 960, Halifaxstrasse scene), rows N, columns r.
+THESIS = {
+    "SSAO": [[0.78, 1.03, 1.2], [1.14, 1.61, 2], [1.36, 2, 2.4], [2.28, 3.46, 4.3]],
+    "HBAO": [[1.2, 1.44, 1.54], [1.7, 2.16, 2.55], [2.14, 2.8, 3.35], [3.14, 4.3, 5.36]],
+    "SSDO": [[1.6, 2.8, 2.5], [3.2, 4, 4.9], [4.5, 5.1, 6.52], [8.2, 10.4, 11.8]],
+    "SSDO+": [[1.9, 2.5, 3.08], [3.8, 5, 5.9], [5.1, 6.7, 7.9], [10.2, 13.2, 15.6]],
+}
+
+
+def build():
+    bdir = os.path.join(ROOT, "build-bench")
+    subprocess.run(["cmake", "-S", ROOT, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", bdir, "-j", str(os.cpu_count() or 2)], check=True,
+                   stdout=subprocess.DEVNULL)
+    return os.path.join(bdir, "ssgraph")
+
+
+def run_method(binary, name, out, frames):
+    graph, node, kernel, radius, sets = METHODS[name]
+    cmd = [binary, "bench", os.path.join(ROOT, "graphs", graph), "--size", "800x600",
+           "--frames", str(frames), "--sweep", kernel, "--sweep", f"{radius}=" + ",".join(R),
+           "--time", node, "--plot", "--out", os.path.join(out, name.replace("+", "_bounce"))]
+    for s in sets:
+        cmd += ["--set", s]
+    subprocess.run(cmd, check=True)
+    method_dir = os.path.join(out, name.replace("+", "_bounce"))
+    shutil.rmtree(os.path.join(method_dir, "cells"), ignore_errors=True)  # the images: MBs
+    with open(os.path.join(method_dir, "bench.csv")) as f:
+        rows = list(csv.DictReader(f))
+    ms = {}
+    for row in rows:
+        times = dict(kv.split("=") for kv in row["node_ms"].split(";"))
+        ms[(row[kernel.split("=")[0]], row[radius])] = float(times[node])
+    kvals = kernel.split("=")[1].split(",")
+    return [[ms[(k, r)] for r in R] for k in kvals]
+
+
+def table(name, ours):
+    lines = [f"| {name} | " + " | ".join(f"r = {r} (thesis r = {t})" for r, t in
+                                        zip(R, (2, 4, 8))) + " |",
+             "|---|---|---|---|"]
+    for i, n in enumerate(N):
+        cells = [f"{ours[i][j]:.2f} ({THESIS[name][i][j]})" for j in range(3)]
+        lines.append(f"| N = {n} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def figure(out, results):
+    dat = os.path.join(out, "fig52.dat")
+    with open(dat, "w") as f:
+        for name, ours in results.items():
+            f.write(f'"{name} (ssgraph, CPU)"\n')
+            for i, n in enumerate(N):
+                f.write(f"{n} {sum(ours[i]) / 3:.4f}\n")
+            f.write("\n\n")
+        for name in results:
+            f.write(f'"{name} (thesis, GTX 960)"\n')
+            for i, n in enumerate(N):
+                f.write(f"{n} {sum(THESIS[name][i]) / 3:.4f}\n")
+            f.write("\n\n")
+    gp = os.path.join(out, "fig52.gp")
+    count = 2 * len(results)
+    with open(gp, "w") as f:
+        f.write("set terminal pngcairo size 900,600 enhanced font 'sans,11'\n"
+                "set output 'fig52.png'\nset title 'ms against N, averaged over r "
+                "(thesis figure 5.2), 800x600'\nset xlabel 'N'\nset ylabel 'ms'\n"
+                "set grid\nset key outside right top noenhanced\nset logscale y\n")
+        series = [f"'fig52.dat' index {i} using 1:2 with linespoints lw 2 "
+                  f"dt {1 if i < count // 2 else 2} lc {i % (count // 2) + 1} "
+                  "title columnheader(1)" for i in range(count)]
+        f.write("plot " + ", ".join(series) + "\n")
+    subprocess.run(["gnuplot", "fig52.gp"], cwd=out, check=True)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin")
+    ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "thesis"))
+    args = ap.parse_args()
+    binary = args.bin or build()
+    os.makedirs(args.out, exist_ok=True)
+    results = {name: run_method(binary, name, args.out, args.frames) for name in METHODS}
+    figure(args.out, results)
+    cpu = platform.processor() or platform.machine()
+    with open(os.path.join(args.out, "README.md"), "w") as f:
+        f.write("# Thesis section 5.1.1 on ssgraph\n\nms of each method's own pass at 800x600 "
+                f"on the Cornell box, ssgraph's CPU backend, {os.cpu_count()} threads "
+                f"({cpu}), average of {args.frames} frames per cell after the nodes were "
+                "prepared; in brackets the thesis's ms (GeForce GTX 960, its city scene). "
+                "Made by `python3 bench/thesis_tables.py`.\n\n")
+        for name, ours in results.items():
+            f.write(table(name, ours) + "\n\n")
+        f.write("![ms against N](fig52.png)\n")
+    print(open(os.path.join(args.out, "README.md")).read())
+
+
+if __name__ == "__main__":
+    sys.exit(main())
