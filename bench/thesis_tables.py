@@ -22,6 +22,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench import build  # noqa: E402  (the one Release build of the benchmarks)
 N = [12, 24, 36, 64]
 R = ["0.1", "0.2", "0.4"]
 # method: (graph, timed node, kernel sweep, radius key, extra --set)
@@ -38,15 +40,6 @@ THESIS = {
     "SSDO": [[1.6, 2.8, 2.5], [3.2, 4, 4.9], [4.5, 5.1, 6.52], [8.2, 10.4, 11.8]],
     "SSDO+": [[1.9, 2.5, 3.08], [3.8, 5, 5.9], [5.1, 6.7, 7.9], [10.2, 13.2, 15.6]],
 }
-
-
-def build():
-    bdir = os.path.join(ROOT, "build-bench")
-    subprocess.run(["cmake", "-S", ROOT, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release"],
-                   check=True, stdout=subprocess.DEVNULL)
-    subprocess.run(["cmake", "--build", bdir, "-j", str(os.cpu_count() or 2)], check=True,
-                   stdout=subprocess.DEVNULL)
-    return os.path.join(bdir, "ssgraph")
 
 
 def run_method(binary, name, out, frames):
