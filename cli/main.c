@@ -34,6 +34,8 @@ struct options {
     const char *time_node;           /* `bench`: the node bench.md times */
     const char *error_metric;        /* `bench`: node.metric of the Pareto plot */
     int plot;                        /* `bench`: draw the plots */
+    int stereo;                      /* `run`: two eyes */
+    float ipd;                       /* `run --stereo`: eye distance, scene units */
 };
 
 static const char *const usage_text =
@@ -70,6 +72,9 @@ static const char *const usage_text =
     "  --frames N          (run) run the graph N times (each node prepares once) and print\n"
     "                      a per-node profile: calls, avg/min/max ms, share of the frame\n"
     "  --profile-json FILE (run) write that profile (or one frame's) as JSON\n"
+    "  --stereo            (run) both eyes of a head-mounted display, 1080x1200 each unless\n"
+    "                      --size, into --out/left and --out/right; prints both eyes' time\n"
+    "  --ipd D             (run --stereo) distance between the eyes, scene units (0.064)\n"
     "  --in PORT=FILE[:LAYER]  (node) bind an image file, or one EXR layer of it, to a port\n"
     "  --fov DEGREES       (node) vertical field of view of the frame (default 45)\n"
     "  --help, --version\n";
@@ -113,8 +118,8 @@ static int parse_size(const char *s, int *w, int *h)
 static int take_option(struct options *o, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
-    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--plot")) {
-        *(opt[2] == 'q' ? &o->quiet : &o->plot) = 1;
+    if (!strcmp(opt, "--quiet") || !strcmp(opt, "--plot") || !strcmp(opt, "--stereo")) {
+        *(opt[2] == 'q' ? &o->quiet : opt[2] == 'p' ? &o->plot : &o->stereo) = 1;
         return 0;
     }
     if (*i + 1 >= argc)
@@ -161,6 +166,11 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         if (o->sweep_count == SSG_BENCH_MAX_SWEEPS)
             return usage_error("at most 4 --sweep options, at '%s'", val);
         o->sweeps[o->sweep_count++] = val;
+    } else if (!strcmp(opt, "--ipd")) {
+        char *end;
+        o->ipd = strtof(val, &end);
+        if (*end || !(o->ipd > 0 && o->ipd < 1e6))
+            return usage_error("--ipd expects a positive distance in scene units, got '%s'", val);
     } else if (!strcmp(opt, "--time")) {
         o->time_node = val;
     } else if (!strcmp(opt, "--error")) {
@@ -179,6 +189,7 @@ static int parse_options(struct options *o, int argc, char **argv)
     o->ov.seed = -1;
     o->ov.sets = o->sets;
     o->out_dir = "out";
+    o->ipd = 0.064f;
     for (int i = 0; i < argc; i++) {
         if (argv[i][0] == '-' && argv[i][1] == '-') {
             int rc = take_option(o, argc, argv, &i);
@@ -203,6 +214,53 @@ static int report(struct ssg_diags *d, enum ssg_err e)
     return e ? EXIT_INVALID : 0;
 }
 
+/* One graph run with the command line's options into out_dir (eye: 0, or -1/+1 for the
+   left/right eye of --stereo); stats as the run measured them. */
+static enum ssg_err run_once(const struct options *o, float eye, const char *out_dir,
+                             struct ssg_run_stats *stats, struct ssg_diags *d)
+{
+    struct ssg_overrides ov = o->ov;
+    ov.eye_offset = eye * 0.5f * o->ipd;
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(o->file, &ov, &g, d);
+    if (!e) {
+        struct ssg_run_options ro = {.out_dir = out_dir, .threads = o->threads,
+                                     .quiet = o->quiet, .log = stdout, .frames = o->frames,
+                                     .profile_json = o->profile_json, .stats = stats};
+        e = ssg_graph_run(g, &ro, d);
+    }
+    ssg_graph_destroy(&g);
+    return e;
+}
+
+/* --stereo: the graph for the left and the right eye (1080 x 1200 each unless --size, as
+   the HTC Vive's panels in the thesis's section 5.2), each into its own folder, and the
+   time of both. */
+static int cmd_stereo(struct options o)
+{
+    struct ssg_diags d = {0};
+    struct ssg_run_stats st[2];
+    char dir[2][1100];
+    const char *names[2] = {"left", "right"};
+    if (!o.ov.width)
+        o.ov.width = 1080, o.ov.height = 1200;
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < 2 && !e; i++) {
+        snprintf(dir[i], sizeof dir[i], "%s/%s", o.out_dir, names[i]);
+        if (!o.quiet)
+            printf("%s eye (camera moved %+g along its right axis):\n", names[i],
+                   (i ? 0.5 : -0.5) * o.ipd);
+        e = run_once(&o, i ? 1.0f : -1.0f, dir[i], &st[i], &d);
+    }
+    if (!e) {
+        double both = st[0].frame_avg_ms + st[1].frame_avg_ms;
+        printf("stereo %dx%d per eye, ipd %g: left %.2f ms + right %.2f ms = %.2f ms per "
+               "stereo frame (%.1f fps)\n", o.ov.width, o.ov.height, o.ipd,
+               st[0].frame_avg_ms, st[1].frame_avg_ms, both, both > 0 ? 1000.0 / both : 0.0);
+    }
+    return report(&d, e);
+}
+
 static int cmd_run(const struct options *o, int check_only)
 {
     struct ssg_diags d = {0};
@@ -215,16 +273,9 @@ static int cmd_run(const struct options *o, int check_only)
             printf("%s: ok\n", o->file);
         return report(&d, e);
     }
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(o->file, &o->ov, &g, &d);
-    if (!e) {
-        struct ssg_run_options ro = {.out_dir = o->out_dir, .threads = o->threads,
-                                     .quiet = o->quiet, .log = stdout, .frames = o->frames,
-                                     .profile_json = o->profile_json};
-        e = ssg_graph_run(g, &ro, &d);
-    }
-    ssg_graph_destroy(&g);
-    return report(&d, e);
+    if (o->stereo)
+        return cmd_stereo(*o);
+    return report(&d, run_once(o, 0.0f, o->out_dir, NULL, &d));
 }
 
 /* `--in port=file[:layer]` into a binding; the image is owned by the caller. The spec's

@@ -1,6 +1,7 @@
 /* graph.c - the public graph API (ssgraph.h): load = build + scene + validate; run = every
  * live node in order, images from a pool, each freed after its last reader, each node
  * timed. */
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,8 +24,25 @@ static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
     return 0;
 }
 
+/* Moves the camera and its target along the camera's right axis (parallel stereo eyes). */
+static void shift_camera(struct ssg_camera *c, float offset)
+{
+    float f[3], r[3];
+    for (int k = 0; k < 3; k++)
+        f[k] = c->target[k] - c->position[k];
+    r[0] = f[1] * c->up[2] - f[2] * c->up[1];
+    r[1] = f[2] * c->up[0] - f[0] * c->up[2];
+    r[2] = f[0] * c->up[1] - f[1] * c->up[0];
+    float len = sqrtf(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int k = 0; k < 3 && len > 0; k++) {
+        c->position[k] += offset * r[k] / len;
+        c->target[k] += offset * r[k] / len;
+    }
+}
+
 /* Loads the scene (assets too when load_assets) and derives the frame from its camera. */
-static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, struct ssg_diags *diags)
+static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_offset,
+                                struct ssg_diags *diags)
 {
     struct ssg_loc where = {0};
     g->frame = (struct ssg_frame){.width = g->width, .height = g->height, .fov_y = 45.0f,
@@ -45,6 +63,8 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, struct ssg
     enum ssg_err e = ssg_scene_load(g->scene_path, load_assets, &g->scene, diags);
     if (e)
         return e;
+    if (eye_offset != 0.0f)
+        shift_camera(&g->scene->camera, eye_offset);
     g->frame.fov_y = g->scene->camera.fov_y;
     g->frame.near_z = g->scene->camera.near_z;
     g->frame.far_z = g->scene->camera.far_z;
@@ -60,7 +80,7 @@ static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int l
         return SSG_E_NOMEM;
     enum ssg_err e = ssg_graph_build(g, path, ov, diags);
     /* The scene is checked even when the graph has errors, so one run reports both. */
-    enum ssg_err scene = setup_frame(g, load_assets, diags);
+    enum ssg_err scene = setup_frame(g, load_assets, ov ? ov->eye_offset : 0.0f, diags);
     if (!e)
         e = scene;
     if (!e)

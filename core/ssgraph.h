@@ -143,6 +143,8 @@ struct ssg_overrides {
     int64_t seed;            /* -1 = the graph's own seed */
     const char *backend;     /* "cpu" or "gl": every node runs there (a node without a GL
                                 side stays on the CPU); NULL = the graph's and nodes' own */
+    float eye_offset;        /* the camera (and its target) moved this far along its right
+                                axis, scene units: one eye of a stereo pair; 0 = none */
 };
 
 struct ssg_graph;

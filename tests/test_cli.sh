@@ -144,4 +144,15 @@ expect_exit 2 "--frames expects an integer" "$BIN" run graphs/ssao.graph --frame
 expect_exit 1 "nope/p.json.*cannot write profile" "$BIN" run graphs/ssao.graph --size 32x24 \
     --out "$TMP/frames_bad" --profile-json "$TMP/nope/p.json" --quiet
 
+# --stereo: both eyes through the same graph, each in its own folder, the pair's time.
+expect_exit 0 "stereo 60x64 per eye, ipd 0.2: left .* ms \+ right .* ms = .* ms per stereo frame" \
+    "$BIN" run graphs/ssao.graph --stereo --ipd 0.2 --size 60x64 --out "$TMP/stereo"
+"$BIN" run graphs/ssao.graph --size 60x64 --out "$TMP/mono" --quiet || fail "mono run failed"
+for eye in left right; do
+    [ -f "$TMP/stereo/$eye/ssao.exr" ] || fail "--stereo wrote no $eye/ssao.exr"
+    cmp -s "$TMP/stereo/$eye/ssao.exr" "$TMP/mono/ssao.exr" && fail "the $eye eye sees the mono view"
+done
+cmp -s "$TMP/stereo/left/ssao.exr" "$TMP/stereo/right/ssao.exr" && fail "both eyes see the same"
+expect_exit 2 "--ipd expects a positive distance" "$BIN" run graphs/ssao.graph --stereo --ipd 0
+
 finish test_cli
