@@ -8,6 +8,7 @@
  * second, one table per value of the others). A cell that fails is reported and recorded
  * with its message; the others still run. Progress: a bar on a terminal, lines
  * otherwise. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,6 +37,8 @@ struct cell {
 
 struct bench {
     const struct ssg_bench_request *req;
+    const char *graph;                /* what runs: the graph, or bench.graph around it */
+    char graph_buf[1200];
     struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
     int n;                            /* sweeps */
     struct cell *cells;
@@ -94,6 +97,27 @@ static const char *value_of(const struct bench *b, const struct cell *c, int k)
     return b->sweeps[k].values[c->index[k]];
 }
 
+/* With --reference: <out>/bench.graph, the graph plus a compare node `bench_reference` of
+   --image against --reference, whose metrics every cell then reports. */
+static int write_reference_graph(const struct ssg_bench_request *q, char *path, size_t len)
+{
+    char abs[4096];
+    if (!realpath(q->graph, abs)) {
+        fprintf(stderr, "ssgraph: error: %s: cannot open the graph\n", q->graph);
+        return 0;
+    }
+    snprintf(path, len, "%s/bench.graph", q->out_dir);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "ssgraph: error: cannot write %s\n", path);
+        return 0;
+    }
+    fprintf(f, "# made by ssgraph bench --reference: the graph, and its image compared with "
+               "the reference\ninclude \"%s\"\nbench_reference = compare(%s, %s)\n", abs,
+            q->image, q->reference);
+    return fclose(f) == 0;
+}
+
 /* One cell: the graph with the user's --set and the cell's values, run `frames` times. */
 static void run_cell(const struct bench *b, int ci, struct cell *c)
 {
@@ -115,7 +139,7 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
                                  .frames = q->frames > 0 ? q->frames : 5, .stats = &c->stats};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(q->graph, &ov, &g, &d);
+    enum ssg_err e = ssg_graph_load(b->graph, &ov, &g, &d);
     if (!e)
         e = ssg_graph_run(g, &ro, &d);
     ssg_graph_destroy(&g);
@@ -216,7 +240,11 @@ static void json_cell(const struct bench *b, int ci, FILE *f)
             c->stats.frame_min_ms, c->stats.frame_max_ms);
     for (int i = 0; i < c->stats.metric_count; i++) {
         const struct ssg_run_metric *m = &c->stats.metrics[i];
-        fprintf(f, "%s\"%s.%s\": %.9g", i ? ", " : "", m->node, m->name, m->value);
+        fprintf(f, "%s\"%s.%s\": ", i ? ", " : "", m->node, m->name);
+        if (isfinite(m->value)) /* JSON has no inf: a PSNR of identical images is null */
+            fprintf(f, "%.9g", m->value);
+        else
+            fputs("null", f);
     }
     fputs("}, \"node_ms\": {", f);
     for (int i = 0; i < c->stats.node_count; i++)
@@ -260,7 +288,9 @@ static double shown_ms(const struct bench *b, const struct cell *c)
     return c->stats.frame_avg_ms;
 }
 
-/* One Markdown cell: "12.34 ms" plus the first metric, or the failure. */
+static double error_of(const struct bench *b, const struct cell *c);
+
+/* One Markdown cell: "12.34 ms" plus the error metric (error_of), or the failure. */
 static void md_cell(const struct bench *b, const struct cell *c, FILE *f)
 {
     if (!c->ok) {
@@ -268,8 +298,9 @@ static void md_cell(const struct bench *b, const struct cell *c, FILE *f)
         return;
     }
     fprintf(f, " %.2f ms", shown_ms(b, c));
-    if (c->stats.metric_count)
-        fprintf(f, ", %s %.4g", c->stats.metrics[0].name, c->stats.metrics[0].value);
+    double err = error_of(b, c);
+    if (!isnan(err))
+        fprintf(f, ", %.4g", err);
     fputs(" |", f);
 }
 
@@ -295,10 +326,12 @@ static void write_md(FILE *f, const void *user)
     const struct bench *b = user;
     int rows = b->n ? b->sweeps[0].count : 1, cols = b->n > 1 ? b->sweeps[1].count : 1;
     int tables = b->cell_count / (rows * cols);
-    fprintf(f, "# ssgraph bench %s\n\nms %s%s (average over each cell's frames) and the "
-            "first metric a compare node reported, if any.\n", b->req->graph,
-            b->req->time_node ? "of node " : "per frame", b->req->time_node ? b->req->time_node
-                                                                             : "");
+    const char *err = b->req->error_metric ? b->req->error_metric
+                      : b->req->reference ? "bench_reference.rmse"
+                                          : "the first metric a compare node reported";
+    fprintf(f, "# ssgraph bench %s\n\nms %s%s (average over each cell's frames) and %s, if "
+            "any.\n", b->req->graph, b->req->time_node ? "of node " : "per frame",
+            b->req->time_node ? b->req->time_node : "", err);
     for (int t = 0; t < tables; t++) {
         md_title(b, t, f);
         fprintf(f, "\n| %s |", b->n ? b->sweeps[0].key : "graph");
@@ -389,7 +422,9 @@ static double error_of(const struct bench *b, const struct cell *c)
     for (int i = 0; i < c->stats.metric_count; i++) {
         char key[100];
         snprintf(key, sizeof key, "%s.%s", c->stats.metrics[i].node, c->stats.metrics[i].name);
-        if (!b->req->error_metric || !strcmp(key, b->req->error_metric))
+        const char *want = b->req->error_metric ? b->req->error_metric
+                           : b->req->reference ? "bench_reference.rmse" : NULL;
+        if (!want || !strcmp(key, want))
             return c->stats.metrics[i].value;
     }
     return NAN;
@@ -467,12 +502,25 @@ static int draw_plots(const struct bench *b)
 
 int ssg_bench_main(const struct ssg_bench_request *req)
 {
-    struct bench b = {.req = req, .n = req->sweep_count};
+    struct bench b = {.req = req, .n = req->sweep_count, .graph = req->graph};
+    if (!req->reference != !req->image) {
+        fprintf(stderr, "ssgraph: error: --reference NODE.PORT and --image NODE.PORT go "
+                "together (the image each cell makes and the truth it is compared with)\n");
+        return 2;
+    }
     for (int k = 0; k < b.n; k++)
         if (!parse_sweep(req->sweeps[k], &b.sweeps[k]))
             return 2;
     struct ssg_diags d = {0};
     FILE *csv = make_cells(&b) ? open_csv(&b, &d) : NULL;
+    if (csv && req->reference) {
+        if (!write_reference_graph(req, b.graph_buf, sizeof b.graph_buf)) {
+            fclose(csv);
+            free(b.cells);
+            return 1;
+        }
+        b.graph = b.graph_buf;
+    }
     int tty = isatty(fileno(stderr)), failed = 0;
     enum ssg_err e = csv ? SSG_OK : SSG_E_IO;
     for (int ci = 0; ci < b.cell_count && !e; ci++) {

@@ -18,6 +18,8 @@ struct ssg_bench_request {
     const char *time_node;            /* the node whose ms bench.md shows; NULL = frame */
     const char *error_metric;         /* "node.metric" the Pareto plot uses; NULL = first */
     int plot;                         /* 1 = bench_ms.png and bench_pareto.png (gnuplot) */
+    const char *reference;            /* NODE.PORT every cell's image is compared with */
+    const char *image;                /* NODE.PORT: that image (with --reference) */
 };
 
 /* Runs every cell; returns the process exit code (0: all cells ran, 1: some failed or

@@ -34,6 +34,7 @@ struct options {
     const char *time_node;           /* `bench`: the node bench.md times */
     const char *error_metric;        /* `bench`: node.metric of the Pareto plot */
     int plot;                        /* `bench`: draw the plots */
+    const char *reference, *image;   /* `bench`: NODE.PORT truth and image to compare */
     int stereo;                      /* `run`: two eyes */
     float ipd;                       /* `run --stereo`: eye distance, scene units */
 };
@@ -53,7 +54,8 @@ static const char *const usage_text =
     "                  and bench.json into --out, a row per cell as it finishes; the\n"
     "                  table shows --time NODE's ms (default: the whole frame); --plot\n"
     "                  draws ms against the first sweep and --error NODE.METRIC against\n"
-    "                  ms (a Pareto view) as PNG with gnuplot\n"
+    "                  ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
+    "                  --image NODE.PORT adds each cell's error against that truth\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n"
@@ -171,6 +173,10 @@ static int take_option(struct options *o, int argc, char **argv, int *i)
         o->ipd = strtof(val, &end);
         if (*end || !(o->ipd > 0 && o->ipd < 1e6))
             return usage_error("--ipd expects a positive distance in scene units, got '%s'", val);
+    } else if (!strcmp(opt, "--reference")) {
+        o->reference = val;
+    } else if (!strcmp(opt, "--image")) {
+        o->image = val;
     } else if (!strcmp(opt, "--time")) {
         o->time_node = val;
     } else if (!strcmp(opt, "--error")) {
@@ -502,7 +508,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "bench")) {
         struct ssg_bench_request req = {o.file, &o.ov, o.sweeps, o.sweep_count, o.frames,
                                         o.threads, o.out_dir, o.time_node, o.error_metric,
-                                        o.plot};
+                                        o.plot, o.reference, o.image};
         return ssg_bench_main(&req);
     }
     return cmd_run(&o, !strcmp(cmd, "check"));

@@ -60,6 +60,24 @@ for png in bench_ms bench_pareto; do
 done
 grep -q "Pareto front" "$TMP/plot/bench_pareto.dat" || fail "no Pareto front in the plot data"
 
+# --reference/--image: every cell carries the error of its image against the truth (0
+# against itself), and bench.md shows it.
+expect_exit 0 "4 cells, 0 failed" "$BIN" bench graphs/ao_error.graph --size 48x32 --frames 1 \
+    --sweep k.count=4,16 --sweep ao.radius=0.25,0.5 --reference ref.out --image aob.out \
+    --out "$TMP/ref"
+expect_exit 0 "2 cells, 0 failed" "$BIN" bench graphs/ao_error.graph --size 48x32 --frames 1 \
+    --sweep k.count=4,16 --reference aob.out --image aob.out --out "$TMP/self"
+python3 - "$TMP" <<'PY' || fail "--reference errors are missing or wrong"
+import json, sys
+ref = json.load(open(sys.argv[1] + "/ref/bench.json"))["cells"]
+assert len(ref) == 4 and all(c["metrics"]["bench_reference.rmse"] > 0.01 for c in ref)
+self = json.load(open(sys.argv[1] + "/self/bench.json"))["cells"]
+assert all(c["metrics"]["bench_reference.rmse"] == 0 for c in self)
+assert "bench_reference.rmse" in open(sys.argv[1] + "/ref/bench.md").read()
+PY
+expect_exit 2 "--reference NODE.PORT and --image NODE.PORT go together" "$BIN" bench \
+    graphs/ao_error.graph --sweep k.count=4 --reference ref.out
+
 expect_exit 2 "--sweep expects node.param=v1,v2" "$BIN" bench graphs/ssao.graph --sweep radius=1
 expect_exit 2 "--time 'nope' is not a node" "$BIN" bench graphs/ssao.graph --size 32x24 \
     --frames 1 --sweep k.count=4 --time nope --out "$TMP/t"
