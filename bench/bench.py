@@ -274,6 +274,22 @@ def backend_table(binary, graphs, size, threads, runs):
     print(f"({size}, {runs} runs each after a warm-up; threads: {threads or os.cpu_count()})")
 
 
+class Tee:
+    """stdout that also goes, line by line, to a file (so a long run keeps its rows)."""
+
+    def __init__(self, stream, path):
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+        self.stream, self.file = stream, open(path, "w")
+
+    def write(self, text):
+        self.stream.write(text)
+        self.file.write(text)
+        self.file.flush()
+
+    def flush(self):
+        self.stream.flush()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -296,10 +312,14 @@ def main():
     ap.add_argument("--backend", action="store_true",
                     help="each node's median ms on cpu and on gl side by side (default "
                          "graphs: ssao, hbao, ssdo at 1280x720)")
+    ap.add_argument("--save", metavar="FILE",
+                    help="also write what is printed to FILE (e.g. bench/results/table1.txt)")
     ap.add_argument("--hybrid", action="store_true",
                     help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
                          "both backends, error against reference_gi, the paper's fps")
     args = ap.parse_args()
+    if args.save:
+        sys.stdout = Tee(sys.stdout, args.save)
     binary = args.bin or build()
     if args.hybrid:
         hybrid_table(binary, (args.size or ["1280x720"])[0], args.threads, args.runs)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""The tables of section 5.1.1 of the thesis (Belonogov, "Global Illumination methods in
+"""The tables of sections 5.1.1 and 5.2 of the thesis (Belonogov, "Global Illumination methods in
 simulated VR environments"): ms of SSAO, HBAO, SSDO and SSDO with one bounce over the
-kernel size N = 12, 24, 36, 64 and the radius r at 800x600, and figure 5.2 (ms against N
+kernel size N = 12, 24, 36, 64 and the radius r at 800x600 and for both eyes of a
+head-mounted display at 1080x1200 (--stereo), and figure 5.2 (ms against N
 per method, averaged over r), measured with `ssgraph bench` on the Cornell box.
 
     python3 bench/thesis_tables.py [--bin build-bench/ssgraph] [--frames 5]
@@ -33,6 +34,13 @@ METHODS = {
     "SSDO": ("ssdo.graph", "do", "k.count=12,24,36,64", "do.radius", ["do.bounce=false"]),
     "SSDO+": ("ssdo.graph", "do", "k.count=12,24,36,64", "do.radius", ["do.bounce=true"]),
 }
+# The thesis's section 5.2 values: both eyes of an HTC Vive, 1080x1200 each (GTX 1080 Ti).
+THESIS_VR = {
+    "SSAO": [[1.7, 1.8, 1.7], [3, 3.1, 3.2], [4.2, 4.3, 4.6], [6.6, 7.4, 7.8]],
+    "HBAO": [[2.03, 2.3, 2.49], [3.13, 4.5, 4.92], [4.15, 6.4, 6.9], [7, 9.8, 10.8]],
+    "SSDO": [[7, 7.36, 8], [11, 13.2, 14.1], [16.6, 17.7, 18.2], [31, 31.92, 32.71]],
+    "SSDO+": [[8.2, 9.2, 9.4], [14.9, 17.9, 18.1], [21.4, 23.3, 23.7], [37.7, 41.1, 43.7]],
+}
 # The thesis's table values (ms, GeForce GTX 960, Halifaxstrasse scene), rows N, columns r.
 THESIS = {
     "SSAO": [[0.78, 1.03, 1.2], [1.14, 1.61, 2], [1.36, 2, 2.4], [2.28, 3.46, 4.3]],
@@ -42,9 +50,11 @@ THESIS = {
 }
 
 
-def run_method(binary, name, out, frames):
+def run_method(binary, name, out, frames, stereo=False):
     graph, node, kernel, radius, sets = METHODS[name]
-    cmd = [binary, "bench", os.path.join(ROOT, "graphs", graph), "--size", "800x600",
+    out = os.path.join(out, "vr") if stereo else out
+    size = ["--stereo"] if stereo else ["--size", "800x600"]
+    cmd = [binary, "bench", os.path.join(ROOT, "graphs", graph)] + size + [
            "--frames", str(frames), "--sweep", kernel, "--sweep", f"{radius}=" + ",".join(R),
            "--time", node, "--plot", "--out", os.path.join(out, name.replace("+", "_bounce"))]
     for s in sets:
@@ -62,12 +72,12 @@ def run_method(binary, name, out, frames):
     return [[ms[(k, r)] for r in R] for k in kvals]
 
 
-def table(name, ours):
+def table(name, ours, thesis=THESIS):
     lines = [f"| {name} | " + " | ".join(f"r = {r} (thesis r = {t})" for r, t in
                                         zip(R, (2, 4, 8))) + " |",
              "|---|---|---|---|"]
     for i, n in enumerate(N):
-        cells = [f"{ours[i][j]:.2f} ({THESIS[name][i][j]})" for j in range(3)]
+        cells = [f"{ours[i][j]:.2f} ({thesis[name][i][j]})" for j in range(3)]
         lines.append(f"| N = {n} | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
@@ -109,17 +119,24 @@ def main():
     binary = args.bin or build()
     os.makedirs(args.out, exist_ok=True)
     results = {name: run_method(binary, name, args.out, args.frames) for name in METHODS}
+    vr = {name: run_method(binary, name, args.out, args.frames, stereo=True)
+          for name in METHODS}
     figure(args.out, results)
     cpu = platform.processor() or platform.machine()
     with open(os.path.join(args.out, "README.md"), "w") as f:
-        f.write("# Thesis section 5.1.1 on ssgraph\n\nms of each method's own pass at 800x600 "
+        f.write("# Thesis sections 5.1.1 and 5.2 on ssgraph\n\nms of each method's own pass at 800x600 "
                 f"on the Cornell box, ssgraph's CPU backend, {os.cpu_count()} threads "
                 f"({cpu}), average of {args.frames} frames per cell after the nodes were "
                 "prepared; in brackets the thesis's ms (GeForce GTX 960, its city scene). "
                 "Made by `python3 bench/thesis_tables.py`.\n\n")
         for name, ours in results.items():
             f.write(table(name, ours) + "\n\n")
-        f.write("![ms against N](fig52.png)\n")
+        f.write("![ms against N](fig52.png)\n\n## Section 5.2: both eyes of a head-mounted "
+                "display\n\n`--stereo`: each pass for both eyes, 1080x1200 each (the HTC "
+                "Vive's panels), camera moved 0.032 left and right; in brackets the thesis's "
+                "(GTX 1080 Ti).\n\n")
+        for name, ours in vr.items():
+            f.write(table(name, ours, THESIS_VR) + "\n\n")
     print(open(os.path.join(args.out, "README.md")).read())
 
 

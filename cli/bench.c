@@ -118,7 +118,33 @@ static int write_reference_graph(const struct ssg_bench_request *q, char *path, 
     return fclose(f) == 0;
 }
 
-/* One cell: the graph with the user's --set and the cell's values, run `frames` times. */
+static enum ssg_err run_graph_once(const char *graph, const struct ssg_overrides *ov,
+                                   const struct ssg_bench_request *q, const char *dir,
+                                   struct ssg_run_stats *stats, struct ssg_diags *d)
+{
+    struct ssg_run_options ro = {.out_dir = dir, .threads = q->threads, .quiet = 1,
+                                 .frames = q->frames > 0 ? q->frames : 5, .stats = stats};
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(graph, ov, &g, d);
+    if (!e)
+        e = ssg_graph_run(g, &ro, d);
+    ssg_graph_destroy(&g);
+    return e;
+}
+
+/* A stereo cell's times are both eyes' (a stereo frame renders both); its metrics are
+   the left eye's. */
+static void add_eye(struct ssg_run_stats *both, const struct ssg_run_stats *right)
+{
+    both->frame_avg_ms += right->frame_avg_ms;
+    both->frame_min_ms += right->frame_min_ms;
+    both->frame_max_ms += right->frame_max_ms;
+    for (int i = 0; i < both->node_count && i < right->node_count; i++)
+        both->nodes[i].avg_ms += right->nodes[i].avg_ms;
+}
+
+/* One cell: the graph with the user's --set and the cell's values, run `frames` times
+   (for each eye with --stereo). */
 static void run_cell(const struct bench *b, int ci, struct cell *c)
 {
     const struct ssg_bench_request *q = b->req;
@@ -134,15 +160,17 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
     struct ssg_overrides ov = *q->ov;
     ov.sets = sets;
     ov.set_count = n;
-    snprintf(dir, sizeof dir, "%s/cells/%d", q->out_dir, ci);
-    struct ssg_run_options ro = {.out_dir = dir, .threads = q->threads, .quiet = 1,
-                                 .frames = q->frames > 0 ? q->frames : 5, .stats = &c->stats};
     struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(b->graph, &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &ro, &d);
-    ssg_graph_destroy(&g);
+    enum ssg_err e = SSG_OK;
+    for (int eye = 0; eye < (q->stereo ? 2 : 1) && !e; eye++) {
+        struct ssg_run_stats st;
+        snprintf(dir, sizeof dir, "%s/cells/%d%s", q->out_dir, ci,
+                 q->stereo ? (eye ? "/right" : "/left") : "");
+        ov.eye_offset = q->stereo ? (eye ? 0.5f : -0.5f) * q->ipd : 0.0f;
+        e = run_graph_once(b->graph, &ov, q, dir, eye ? &st : &c->stats, &d);
+        if (!e && eye)
+            add_eye(&c->stats, &st);
+    }
     c->ok = e == SSG_OK;
     if (!c->ok)
         snprintf(c->error, sizeof c->error, "%s", d.count ? d.items[0].message : ssg_err_text(e));

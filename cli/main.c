@@ -55,7 +55,8 @@ static const char *const usage_text =
     "                  table shows --time NODE's ms (default: the whole frame); --plot\n"
     "                  draws ms against the first sweep and --error NODE.METRIC against\n"
     "                  ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
-    "                  --image NODE.PORT adds each cell's error against that truth\n"
+    "                  --image NODE.PORT adds each cell's error against that truth;\n"
+    "                  --stereo times both eyes of every cell (1080x1200 unless --size)\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n"
@@ -508,7 +509,9 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "bench")) {
         struct ssg_bench_request req = {o.file, &o.ov, o.sweeps, o.sweep_count, o.frames,
                                         o.threads, o.out_dir, o.time_node, o.error_metric,
-                                        o.plot, o.reference, o.image};
+                                        o.plot, o.reference, o.image, o.stereo, o.ipd};
+        if (o.stereo && !o.ov.width)
+            o.ov.width = 1080, o.ov.height = 1200;
         return ssg_bench_main(&req);
     }
     return cmd_run(&o, !strcmp(cmd, "check"));

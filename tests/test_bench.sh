@@ -78,6 +78,13 @@ PY
 expect_exit 2 "--reference NODE.PORT and --image NODE.PORT go together" "$BIN" bench \
     graphs/ao_error.graph --sweep k.count=4 --reference ref.out
 
+# --stereo: each cell renders both eyes (own folders); its times are the pair's.
+expect_exit 0 "2 cells, 0 failed" "$BIN" bench graphs/ssao.graph --stereo --size 40x44 \
+    --frames 2 --sweep k.count=4,8 --time ao --out "$TMP/stereo"
+for eye in left right; do
+    [ -f "$TMP/stereo/cells/1/$eye/ssao.exr" ] || fail "bench --stereo wrote no $eye eye"
+done
+
 expect_exit 2 "--sweep expects node.param=v1,v2" "$BIN" bench graphs/ssao.graph --sweep radius=1
 expect_exit 2 "--time 'nope' is not a node" "$BIN" bench graphs/ssao.graph --size 32x24 \
     --frames 1 --sweep k.count=4 --time nope --out "$TMP/t"
