@@ -24,6 +24,9 @@ static int run_gnuplot(const char *dir, const char *name)
                 dir, name);
         return 1;
     }
+    char log[1200];
+    snprintf(log, sizeof log, "%s/%s.log", dir, name);
+    remove(log); /* only a failure's log is worth keeping */
     return 0;
 }
 
