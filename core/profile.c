@@ -46,28 +46,34 @@ static double average(double sum, int n)
     return n ? sum / n : 0.0;
 }
 
+/* A profiler's tree: the frame at the root, the passes under it, then the sinks that ran
+   once after the last frame. */
 void ssg_profile_print(const struct ssg_profile *p, FILE *f)
 {
     double frame = average(p->frame_sum, p->frames);
-    fprintf(f, "%-16s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s\n", "node", "type", "on",
+    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s\n", "node", "type", "on",
             "calls", "avg ms", "min ms", "max ms", "share", "gpu ms", "prepare ms");
-    for (int r = 0; r < p->rows_count; r++) {
-        const struct ssg_profile_row *row = &p->rows[r];
-        double avg = average(row->sum, row->calls);
-        char gpu[32] = "-";
-        if (row->backend[0] == 'g')
-            snprintf(gpu, sizeof gpu, "%.2f", average(row->gpu_sum, row->calls));
-        char share[16] = "     -";
-        if (row->calls == p->frames && frame > 0)
-            snprintf(share, sizeof share, "%5.1f%%", 100.0 * avg / frame);
-        fprintf(f, "%-16s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", row->name,
-                row->type, row->backend, row->calls, avg, row->calls ? row->min : 0.0,
-                row->max, share, gpu, row->prepare_ms);
-    }
-    fprintf(f, "%-16s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
+    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
             "%.1f fps)\n", "frame", "", "", p->frames, frame, p->frames ? p->frame_min : 0.0,
             p->frame_max, 100.0, p->width, p->height, p->threads,
             frame > 0 ? 1000.0 / frame : 0.0);
+    for (int pass = 0; pass < 2; pass++)
+        for (int r = 0; r < p->rows_count; r++) {
+            const struct ssg_profile_row *row = &p->rows[r];
+            int in_frame = row->calls == p->frames;
+            if (in_frame != !pass)
+                continue;
+            double avg = average(row->sum, row->calls);
+            char gpu[32] = "-", share[16] = "     -", name[64];
+            if (row->backend[0] == 'g')
+                snprintf(gpu, sizeof gpu, "%.2f", average(row->gpu_sum, row->calls));
+            if (in_frame && frame > 0)
+                snprintf(share, sizeof share, "%5.1f%%", 100.0 * avg / frame);
+            snprintf(name, sizeof name, "%s%s", in_frame ? "  " : "", row->name);
+            fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", name,
+                    row->type, row->backend, row->calls, avg, row->calls ? row->min : 0.0,
+                    row->max, share, gpu, row->prepare_ms);
+        }
 }
 
 static void write_json(FILE *f, const void *user)
