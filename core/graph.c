@@ -135,6 +135,8 @@ struct run {
     struct ssg_diags *diags;
     struct ssg_node_timing *t; /* per run position, of the last frame */
     void **consts;             /* per run position: what its prepare() made, once */
+    unsigned char *prepared;   /* per run position: 1 once prepare() ran (a sink runs in
+                                  the last frame only, so not always in frame 0) */
     struct ssg_profile prof;   /* per run position */
     struct ssg_metrics metrics;
     int uses_gl;               /* a node runs on GL: the backend is open */
@@ -155,19 +157,28 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
     return SSG_OK;
 }
 
-/* Gives back every image whose last reader ran at position p (and unread outputs of the
- * node at p itself). */
+static void release_output(struct run *r, struct gnode *n, int port)
+{
+    if (n->out_img[port]) {
+        ssg_pool_release(r->pool, n->out_img[port]);
+        n->out_img[port] = NULL;
+    }
+}
+
+/* Gives back every image whose last reader ran at position p, and unread outputs of the
+ * node at p itself. An image's last reader is one of the nodes reading it, so looking at
+ * p's own inputs is enough: constant work per position, linear in the graph. */
 static void release_after(struct run *r, int p)
 {
     struct ssg_graph *g = r->g;
-    for (int q = 0; q <= p; q++) {
-        struct gnode *n = &g->nodes[g->order[q]];
-        for (int k = 0; k < n->desc->output_count; k++) {
-            if (n->out_img[k] && (n->last_reader[k] == p || n->last_reader[k] < 0)) {
-                ssg_pool_release(r->pool, n->out_img[k]);
-                n->out_img[k] = NULL;
-            }
-        }
+    struct gnode *n = &g->nodes[g->order[p]];
+    for (int k = 0; k < n->desc->output_count; k++)
+        if (n->last_reader[k] < 0)
+            release_output(r, n, k);
+    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
+        const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+        if (c->node >= 0 && g->nodes[c->node].last_reader[c->port] == p)
+            release_output(r, &g->nodes[c->node], c->port);
     }
 }
 
@@ -188,7 +199,8 @@ static const char *out_dir(const struct run *r)
 }
 
 /* Runs the node at position p; in the first frame it prepares it first (the timing of a
-   one-frame run includes prepare, as ssg_node_execute's). */
+   one-frame run includes prepare, as ssg_node_execute's). A sink first runs in the last
+   frame and is prepared there. */
 static enum ssg_err run_node(struct run *r, int p, int frame)
 {
     struct ssg_graph *g = r->g;
@@ -206,10 +218,11 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene, out_dir(r), r->diags,
                                &r->metrics};
     double prepare_ms = 0;
-    if (frame == 0) {
+    if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
         e = ssg_node_prepare(n->desc, &ctx, n->params, &r->consts[p]);
         prepare_ms = r->prof.rows[p].prepare_ms = ssg_now_ms() - t0;
+        r->prepared[p] = 1;
     }
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
@@ -263,7 +276,8 @@ static int run_init(struct run *r)
     r->pool = ssg_pool_create();
     r->t = calloc((size_t)count, sizeof *r->t);
     r->consts = calloc((size_t)count, sizeof *r->consts);
-    if (!r->pool || !r->t || !r->consts || !ssg_profile_init(&r->prof, g->order_count))
+    r->prepared = calloc((size_t)count, 1);
+    if (!r->pool || !r->t || !r->consts || !r->prepared || !ssg_profile_init(&r->prof, g->order_count))
         return 0;
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
@@ -283,6 +297,7 @@ static void run_free(struct run *r)
     for (int p = 0; r->consts && p < r->g->order_count; p++)
         free(r->consts[p]);
     free(r->consts);
+    free(r->prepared);
     free(r->t);
     ssg_profile_free(&r->prof);
 }
@@ -361,8 +376,8 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
                            struct ssg_diags *diags)
 {
     struct ssg_run_options defaults = {0};
-    struct run r = {g, NULL, options ? options : &defaults, diags, NULL, NULL, {0}, {0},
-                    graph_uses_gl(g)};
+    struct run r = {.g = g, .opt = options ? options : &defaults, .diags = diags,
+                    .uses_gl = graph_uses_gl(g)};
     if (r.opt->threads > 0)
         omp_set_num_threads(r.opt->threads);
     if (!run_init(&r)) {

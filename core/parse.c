@@ -9,7 +9,14 @@
 
 #include "parse.h"
 
-enum { MAX_FILE_BYTES = 16 * 1024 * 1024 };
+/* Limits on what a text may ask of the parser, each refused with a located message: lists
+   are parsed recursively with a 64-value frame on the stack, so nesting is bounded; no real
+   file comes near either limit. */
+enum {
+    MAX_FILE_BYTES = 16 * 1024 * 1024,
+    MAX_LIST_NESTING = 16,   /* [[...]] levels in one value */
+    MAX_LINE_BYTES = 65536,  /* bytes in one physical line */
+};
 
 enum tok_kind {
     T_EOF,
@@ -44,6 +51,7 @@ struct parser {
     struct token *toks;
     int count, cap, pos;
     int errors;
+    int nesting;  /* lists open around the value being parsed */
 };
 
 int ssg_tok_eq(const char *tok, size_t len, const char *s)
@@ -166,9 +174,15 @@ static enum tok_kind punct_kind(char c)
 static int tokenize(struct parser *ps, const char *p, const char *end)
 {
     int depth = 0;
+    const char *line = p;
     while (p < end) {
         char c = *p;
         size_t n;
+        if (p - line > MAX_LINE_BYTES) {
+            error_at(ps, line, "line longer than %d bytes (expected a text file of "
+                     "statements)", MAX_LINE_BYTES);
+            break; /* reported: the rest of such a file is not worth reading */
+        }
         if (c == ' ' || c == '\t' || c == '\r') {
             p++;
         } else if (c == '#') {
@@ -178,6 +192,7 @@ static int tokenize(struct parser *ps, const char *p, const char *end)
             if (depth == 0 && !push_token(ps, T_NEWLINE, p, 1))
                 return 0;
             p++;
+            line = p;
         } else if (is_ident_start(c)) {
             const char *s = p;
             while (is_ident_start(*p) || is_digit(*p))
@@ -275,22 +290,38 @@ static const char *unescape(struct parser *ps, const struct token *t, size_t *le
 
 static int parse_value(struct parser *ps, struct ssg_value *v);
 
-static int parse_list(struct parser *ps, struct ssg_value *v)
+/* The values of a list up to its ']' (left for the caller), at most 64. */
+static int parse_items(struct parser *ps, struct ssg_value *items, int *count)
 {
-    struct ssg_value items[64];
-    int count = 0;
-    next(ps); /* '[' */
     while (peek(ps, 0)->kind != T_RBRACK) {
-        if (count == 64) {
+        if (*count == 64) {
             error_at(ps, peek(ps, 0)->at, "list too long (at most 64 values)");
             return 0;
         }
-        if (!parse_value(ps, &items[count++]))
+        if (!parse_value(ps, &items[(*count)++]))
             return 0;
         if (peek(ps, 0)->kind != T_COMMA)
             break;
         next(ps);
     }
+    return 1;
+}
+
+static int parse_list(struct parser *ps, struct ssg_value *v)
+{
+    struct ssg_value items[64];
+    int count = 0;
+    if (ps->nesting == MAX_LIST_NESTING) {
+        error_at(ps, peek(ps, 0)->at, "lists nested deeper than %d levels (expected a value "
+                 "or a list of values)", MAX_LIST_NESTING);
+        return 0;
+    }
+    next(ps); /* '[' */
+    ps->nesting++;
+    int ok = parse_items(ps, items, &count);
+    ps->nesting--;
+    if (!ok)
+        return 0;
     if (!expect(ps, T_RBRACK, "to close the list"))
         return 0;
     v->kind = SSG_V_LIST;
