@@ -54,12 +54,14 @@ def run_method(binary, name, out, frames, stereo=False):
     graph, node, kernel, radius, sets = METHODS[name]
     out = os.path.join(out, "vr") if stereo else out
     size = ["--stereo"] if stereo else ["--size", "800x600"]
-    cmd = [binary, "bench", os.path.join(ROOT, "graphs", graph)] + size + [
+    # The graph as a path relative to the repository (the command runs there): bench
+    # records it as given, and committed results must not name this machine's folders.
+    cmd = [binary, "bench", os.path.join("graphs", graph)] + size + [
            "--frames", str(frames), "--sweep", kernel, "--sweep", f"{radius}=" + ",".join(R),
            "--time", node, "--plot", "--out", os.path.join(out, name.replace("+", "_bounce"))]
     for s in sets:
         cmd += ["--set", s]
-    subprocess.run(cmd, check=True)
+    subprocess.run(cmd, check=True, cwd=ROOT)
     method_dir = os.path.join(out, name.replace("+", "_bounce"))
     shutil.rmtree(os.path.join(method_dir, "cells"), ignore_errors=True)  # the images: MBs
     with open(os.path.join(method_dir, "bench.csv")) as f:
@@ -116,7 +118,8 @@ def main():
     ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "thesis"))
     args = ap.parse_args()
-    binary = args.bin or build()
+    binary = os.path.abspath(args.bin) if args.bin else build()  # the bench runs in ROOT
+    args.out = os.path.abspath(args.out)
     os.makedirs(args.out, exist_ok=True)
     results = {name: run_method(binary, name, args.out, args.frames) for name in METHODS}
     vr = {name: run_method(binary, name, args.out, args.frames, stereo=True)

@@ -19,7 +19,10 @@
 #include "parse.h"
 #include "plot.h"
 
-enum { MAX_VALUES = 64 };
+/* At most 64 values a sweep, and at most MAX_CELLS cells in one bench: each finished cell
+   rewrites bench.json and bench.md whole, and a sweep that big is hours of work that is
+   better split (checked before anything is allocated). */
+enum { MAX_VALUES = 64, MAX_CELLS = 10000 };
 
 struct sweep {
     char key[128];                    /* node.param */
@@ -73,15 +76,27 @@ static int parse_sweep(const char *spec, struct sweep *s)
     return s->count > 0;
 }
 
+/* The number of cells of the cross product; 0 with a message past MAX_CELLS. */
+static int count_cells(const struct bench *b)
+{
+    long long cells = 1;
+    for (int k = 0; k < b->n; k++)
+        cells *= b->sweeps[k].count;
+    if (cells <= MAX_CELLS)
+        return (int)cells;
+    fprintf(stderr, "ssgraph: error: the sweeps make %lld cells; at most %d in one bench "
+            "(expected fewer values, or several benches)\n", cells, MAX_CELLS);
+    return 0;
+}
+
 /* The cells of the cross product, first sweep outermost. */
 static int make_cells(struct bench *b)
 {
-    b->cell_count = 1;
-    for (int k = 0; k < b->n; k++)
-        b->cell_count *= b->sweeps[k].count;
     b->cells = calloc((size_t)b->cell_count, sizeof *b->cells);
-    if (!b->cells)
+    if (!b->cells) {
+        fprintf(stderr, "ssgraph: error: out of memory for %d bench cells\n", b->cell_count);
         return 0;
+    }
     for (int c = 0; c < b->cell_count; c++) {
         int rest = c;
         for (int k = b->n - 1; k >= 0; k--) {
@@ -143,23 +158,64 @@ static void add_eye(struct ssg_run_stats *both, const struct ssg_run_stats *righ
         both->nodes[i].avg_ms += right->nodes[i].avg_ms;
 }
 
+/* The --set lines of a run: the user's, then key=value of each sweep k whose index[k] is
+   not negative. */
+struct cell_sets {
+    const char *sets[256 + SSG_BENCH_MAX_SWEEPS];
+    char own[SSG_BENCH_MAX_SWEEPS][1200];
+};
+
+static struct ssg_overrides cell_overrides(const struct bench *b, const int *index,
+                                           struct cell_sets *cs)
+{
+    const struct ssg_bench_request *q = b->req;
+    int n = 0;
+    for (int i = 0; i < q->ov->set_count && n < 256; i++)
+        cs->sets[n++] = q->ov->sets[i];
+    for (int k = 0; k < b->n; k++) {
+        if (index[k] < 0)
+            continue;
+        snprintf(cs->own[k], sizeof cs->own[k], "%s=%s", b->sweeps[k].key,
+                 b->sweeps[k].values[index[k]]);
+        cs->sets[n++] = cs->own[k];
+    }
+    struct ssg_overrides ov = *q->ov;
+    ov.sets = cs->sets;
+    ov.set_count = n;
+    return ov;
+}
+
+/* Every sweep key and value checked against the graph (each value alone, the others at
+   the graph's own) before the first cell runs: a typo fails at once, not in every cell. */
+static int check_sweeps(const struct bench *b)
+{
+    for (int k = 0; k < b->n; k++) {
+        for (int v = 0; v < b->sweeps[k].count; v++) {
+            int index[SSG_BENCH_MAX_SWEEPS];
+            for (int i = 0; i < SSG_BENCH_MAX_SWEEPS; i++)
+                index[i] = i == k ? v : -1;
+            struct cell_sets cs;
+            struct ssg_overrides ov = cell_overrides(b, index, &cs);
+            struct ssg_diags d = {0};
+            if (ssg_graph_check(b->graph, &ov, &d) == SSG_OK)
+                continue;
+            fprintf(stderr, "ssgraph: error: --sweep %s: value '%s' does not fit the graph "
+                    "%s:\n", b->sweeps[k].key, b->sweeps[k].values[v], b->req->graph);
+            ssg_diags_print(&d, stderr);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* One cell: the graph with the user's --set and the cell's values, run `frames` times
    (for each eye with --stereo). */
 static void run_cell(const struct bench *b, int ci, struct cell *c)
 {
     const struct ssg_bench_request *q = b->req;
-    const char *sets[256 + SSG_BENCH_MAX_SWEEPS];
-    char own[SSG_BENCH_MAX_SWEEPS][1200], dir[1100];
-    int n = 0;
-    for (int i = 0; i < q->ov->set_count && n < 256; i++)
-        sets[n++] = q->ov->sets[i];
-    for (int k = 0; k < b->n; k++) {
-        snprintf(own[k], sizeof own[k], "%s=%s", b->sweeps[k].key, value_of(b, c, k));
-        sets[n++] = own[k];
-    }
-    struct ssg_overrides ov = *q->ov;
-    ov.sets = sets;
-    ov.set_count = n;
+    char dir[1100];
+    struct cell_sets cs;
+    struct ssg_overrides ov = cell_overrides(b, c->index, &cs);
     struct ssg_diags d = {0};
     enum ssg_err e = SSG_OK;
     for (int eye = 0; eye < (q->stereo ? 2 : 1) && !e; eye++) {
@@ -539,16 +595,22 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     for (int k = 0; k < b.n; k++)
         if (!parse_sweep(req->sweeps[k], &b.sweeps[k]))
             return 2;
+    if (!(b.cell_count = count_cells(&b)))
+        return 2;
     struct ssg_diags d = {0};
-    FILE *csv = make_cells(&b) ? open_csv(&b, &d) : NULL;
-    if (csv && req->reference) {
-        if (!write_reference_graph(req, b.graph_buf, sizeof b.graph_buf)) {
-            fclose(csv);
-            free(b.cells);
+    if (req->reference) {
+        if (ssg_make_dirs(req->out_dir, &d) ||
+            !write_reference_graph(req, b.graph_buf, sizeof b.graph_buf)) {
+            ssg_diags_print(&d, stderr);
             return 1;
         }
         b.graph = b.graph_buf;
     }
+    if (!check_sweeps(&b))
+        return 2;
+    if (!make_cells(&b))
+        return 1;
+    FILE *csv = open_csv(&b, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
     enum ssg_err e = csv ? SSG_OK : SSG_E_IO;
     for (int ci = 0; ci < b.cell_count && !e; ci++) {

@@ -181,6 +181,23 @@ static int check_type(struct checker *c, const struct gnode *n, const char *port
     return 0;
 }
 
+/* An extra input of a node that wants them all at its first input's size (write's
+   layers in one EXR part): refused here, before anything runs. */
+static int check_extra_size(struct checker *c, const struct gnode *n, int i,
+                            const struct ssg_shape *s)
+{
+    const struct ssg_shape *main = &n->in_shape[0];
+    if (!n->desc->extra_same_size || n->in[0].node < 0 ||
+        (s->width == main->width && s->height == main->height))
+        return 1;
+    ssg_diag_at(c->diags, SSG_E_SIZE, n->extra[i].value.loc, "input '%s' of node '%s' (%s) "
+                "is %dx%d, but its first input '%s' is %dx%d (expected every input at the "
+                "same size; upsample or downsample it first)", n->extra_names[i], n->name,
+                n->desc->name, s->width, s->height, n->in[0].ref, main->width, main->height);
+    fail(c, SSG_E_SIZE);
+    return 0;
+}
+
 static void infer_node(struct checker *c, struct gnode *n)
 {
     const struct ssg_node_desc *d = n->desc;
@@ -192,7 +209,8 @@ static void infer_node(struct checker *c, struct gnode *n)
     for (int i = 0; i < n->extra_count; i++) {
         struct ssg_shape s;
         if (n->extra[i].node >= 0 && check_type(c, n, n->extra_names[i], SSG_T_IMAGE,
-                                                &n->extra[i], &s))
+                                                &n->extra[i], &s) &&
+            check_extra_size(c, n, i, &s))
             n->extra_types[i] = s.type;
         else
             ok = 0;

@@ -100,6 +100,8 @@ struct ssg_node_desc {
     const struct ssg_port_desc *outputs;
     int output_count;
     int extra_inputs;    /* 1 = accepts further key=port arguments as named inputs */
+    int extra_same_size; /* 1 = every extra input must have input 0's width and height
+                            (checked with the graph, before anything runs) */
     struct ssg_param_table params;
     size_t params_size;  /* sizeof the params struct */
     size_t consts_size;  /* sizeof what prepare() writes; 0 = none */

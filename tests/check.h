@@ -7,6 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* Where a test writes scratch files when ctest gave it no SSG_TMP folder. */
+#define CHECK_TMP_ROOT "/tmp"
+
 static int check_failures;
 static int check_count;
 

@@ -1,8 +1,8 @@
 # lib.sh - what the shell tests share; source it after `set -u`. Sets BIN (the ssgraph
-# executable, from SSG_BIN) and TMP (an emptied scratch directory, from SSG_TMP or the
-# default given as $1), counts failures, and `finish NAME` exits with the verdict.
+# executable, from SSG_BIN) and TMP (an emptied scratch directory, from SSG_TMP, else the
+# folder named $1 in $TMPDIR or /tmp), counts failures, and `finish NAME` exits with the verdict.
 BIN=${SSG_BIN:?SSG_BIN must point at the ssgraph executable}
-TMP=${SSG_TMP:-$1}
+TMP=${SSG_TMP:-${TMPDIR:-/tmp}/$1}
 rm -rf "$TMP" && mkdir -p "$TMP"
 fails=0
 

@@ -1,35 +1,55 @@
 #!/usr/bin/env bash
 # `ssgraph bench`: the sweep runs exactly the cross product; bench.csv and bench.json
 # parse and agree; a failed cell is reported and recorded while the others complete; an
-# interrupted bench leaves the rows it finished on disk; bad sweeps and an unknown --time
-# node are usage errors.
+# interrupted bench leaves the rows it finished on disk; bad sweeps (a key or value the
+# graph refuses, too many cells) and an unknown --time node are usage errors found before
+# any cell runs; the graph is recorded as the user named it.
 set -u
-source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_bench"
+source "$(dirname "$0")/lib.sh" "ssg_test_bench"
 
-expect_exit 1 "6 cells, 2 failed" "$BIN" bench graphs/ssao.graph --size 48x32 --frames 2 \
-    --sweep k.count=4,8 --sweep ao.radius=0.25,0.5,9x --time ao --out "$TMP/b"
+# A cell that fails only when it runs: GL cells with no GL platform to open.
+SSG_GL_PLATFORM=nope expect_exit 1 "6 cells, 2 failed" "$BIN" bench graphs/ssao.graph \
+    --size 48x32 --frames 2 --sweep k.count=4,8 --sweep ao.backend=cpu,gl,cpu --time ao \
+    --out "$TMP/b"
 python3 - "$TMP/b" <<'PY' || fail "bench files disagree with the cross product"
 import csv, itertools, json, sys
 d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/bench.csv")))
-cells = json.load(open(d + "/bench.json"))["cells"]
-want = list(itertools.product(["4", "8"], ["0.25", "0.5", "9x"]))
-got = [(r["k.count"], r["ao.radius"]) for r in rows]
+bench = json.load(open(d + "/bench.json"))
+cells = bench["cells"]
+assert bench["graph"] == "graphs/ssao.graph", bench["graph"]  # as given, not absolute
+want = list(itertools.product(["4", "8"], ["cpu", "gl", "cpu"]))
+got = [(r["k.count"], r["ao.backend"]) for r in rows]
 assert got == want, got
-assert [(c["values"]["k.count"], c["values"]["ao.radius"]) for c in cells] == want
+assert [(c["values"]["k.count"], c["values"]["ao.backend"]) for c in cells] == want
 for r, c in zip(rows, cells):
     assert r["status"] == c["status"]
-    ok = r["ao.radius"] != "9x"
+    ok = r["ao.backend"] != "gl"
     assert (r["status"] == "ok") == ok, r
     if ok:
         assert c["frames"] == 2 and abs(float(r["frame_avg_ms"]) - c["frame_avg_ms"]) < 1e-3
         assert abs(c["node_ms"]["ao"] - float(r["node_ms"].split("ao=")[1].split(";")[0])) < 1e-3
     else:
-        assert "9x" in r["error"] or r["error"], r
+        assert "SSG_GL_PLATFORM" in r["error"], r
 md = open(d + "/bench.md").read()
-assert "| k.count | ao.radius = 0.25 | ao.radius = 0.5 | ao.radius = 9x |" in md, md
+assert md.startswith("# ssgraph bench graphs/ssao.graph\n"), md
+assert "| k.count | ao.backend = cpu | ao.backend = gl | ao.backend = cpu |" in md, md
 assert md.count("failed") == 2, md
 PY
+
+# Sweep keys and values are checked against the graph before the first cell: nothing runs,
+# nothing is written, the message names the key, the value and the graph's complaint.
+for bad in "ao.radus=0.5,1" "nope.radius=1" "ao.radius=0.5,-2" "ao.radius=0.5,9x"; do
+    expect_exit 2 "--sweep ${bad%%=*}: value .* does not fit the graph graphs/ssao.graph" \
+        "$BIN" bench graphs/ssao.graph --size 32x24 --sweep k.count=4,8 --sweep "$bad" \
+        --out "$TMP/badsweep"
+    [ -e "$TMP/badsweep" ] && fail "a refused sweep ($bad) still wrote $TMP/badsweep"
+done
+# Too many cells: refused with a message before anything is allocated (4 x 64 values).
+v=$(seq -s, 1 64)
+expect_exit 2 "the sweeps make 16777216 cells; at most 10000" "$BIN" bench graphs/ssao.graph \
+    --sweep ao.radius=$v --sweep ao.bias=$v --sweep k.count=$v --sweep b.size=$v --out "$TMP/huge"
+[ -e "$TMP/huge" ] && fail "a refused bench still wrote $TMP/huge"
 
 # Interrupted: stop a slow bench (SIGTERM) once its first row is on disk.
 "$BIN" bench graphs/reference_ao.graph --size 320x240 --frames 1 \

@@ -6,7 +6,7 @@
  *   on the wall, 0 on the floor): every sender has radiance L, so bounce = albedo L sum F_i
  *   and its channel ratios are those of albedo x L (1e-4: float rounding of sums of equal
  *   colours). Magnitude: within a factor 1.5 of the patch model of exact geometry
- *   (wall_expectation) and between 1/20 and 1 times ANALYTIC.md case 3's form factor.
+ *   (wall_expectation) and between 1/20 and 1 times docs/analytic.md case 3's form factor.
  * - Energy: over corner and box scenes with irregular light and albedo images and a strong
  *   bounce (strength 8, so the F_i normalisation acts), bounce <= albedo max(light) per
  *   channel (1e-6 relative: the normalised sum is computed as (sum F L) / sum F), and the
@@ -127,7 +127,7 @@ static double wall_expectation(const struct ssg_image *k, double a, double r)
     return r * r / n * sum / (2 * M_PI);
 }
 
-/* ANALYTIC.md case 3: the cosine-weighted fraction of the hemisphere taken by the wall
+/* docs/analytic.md case 3: the cosine-weighted fraction of the hemisphere taken by the wall
    within distance d, i.e. the form factor of that wall portion. */
 static double wall_form_factor(double a, double d)
 {
@@ -195,7 +195,7 @@ static void test_wall(void)
         /* For 0.2 <= a <= 0.35 the screen-space sender position and the quasi-random
            quadrature (see wall_expectation) must not move the result by more than a
            factor 1.5 either way from the patch model of exact geometry (observed 0.74 to
-           1.19). The patch model itself is far below ANALYTIC.md case 3's form factor
+           1.19). The patch model itself is far below docs/analytic.md case 3's form factor
            (0.06 against 0.24 at a = 0.21): A_s = pi r^2 / K spreads the K samples over
            the base disc, but a kernel packed towards the centre (halton falloff 2) sends
            few of them as far as the wall; SSDO_DEBUG prints all three. */

@@ -2,7 +2,7 @@
 # The ssgraph command line from the outside: results do not depend on the thread count,
 # single nodes run on EXR files, and bad input gets a located message, a non-zero exit and no output file.
 set -u
-source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_cli"
+source "$(dirname "$0")/lib.sh" "ssg_test_cli"
 
 # --- help, version, listing ---
 expect_exit 0 "usage: ssgraph" "$BIN" --help
@@ -22,6 +22,15 @@ expect_exit 2 "unknown option '--frob'" "$BIN" run graphs/ssao.graph --frob 1
 
 # Every graph end to end (check, run, metrics over frames) is a ctest case of its own:
 # tests/graphs/run.sh, registered per graph file in tests/CMakeLists.txt.
+
+# --- ssao_unfiltered shows the unfiltered occlusion: its ao layer is ao_raw, no filter runs ---
+"$BIN" run graphs/ssao_unfiltered.graph --size 64x40 --out "$TMP/unf" > "$TMP/unf.log" 2>&1 \
+    || fail "ssao_unfiltered run: $(tail -3 "$TMP/unf.log")"
+grep -q bilateral "$TMP/unf.log" && fail "ssao_unfiltered still runs the bilateral filter"
+oiiotool "$TMP/unf/ssao_unfiltered.exr" --ch ao.Y -o "$TMP/unf_ao.exr" \
+    && oiiotool "$TMP/unf/ssao_unfiltered.exr" --ch ao_raw.Y --chnames ao.Y -o "$TMP/unf_raw.exr" \
+    && oiiotool "$TMP/unf_ao.exr" "$TMP/unf_raw.exr" --fail 0 --diff > /dev/null \
+    || fail "ssao_unfiltered's ao layer is not the unfiltered ao_raw"
 
 # --- determinism: same bytes with 1 and 2 threads, and across runs ---
 "$BIN" run graphs/ssao.graph --size 160x90 --threads 1 --out "$TMP/t1" --quiet || fail "t1 run"
@@ -87,6 +96,11 @@ for img in "$TMP/notprobe/samples.exr" "$PWD/tests/fixtures/garbage.png"; do
         "$BIN" run "$TMP/badenv.graph" --out "$TMP/badenv_out"
     [ -e "$TMP/badenv_out/x.exr" ] && fail "a bad environment image still produced output"
 done
+# A layer of another size than the main image is refused by check, before anything runs.
+printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\nd = downsample(depth=g.depth, position=g.position, normal=g.normal, albedo=g.albedo)\nout = write(g.direct, "x", half=d.depth)\n' \
+    "$PWD" > "$TMP/half.graph"
+expect_exit 1 "half.graph:4:33: error: input 'half' of node 'out' \(write\) is 640x360, but its first input 'g.direct' is 1280x720" \
+    "$BIN" check "$TMP/half.graph"
 printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
 expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
     "$BIN" check "$TMP/syntax.graph"

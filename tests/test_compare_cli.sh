@@ -5,7 +5,7 @@
 # non-zero with a message naming the problem, and `ssgraph run` writes compare's metrics to
 # out/metrics.json.
 set -u
-source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_compare_cli"
+source "$(dirname "$0")/lib.sh" "ssg_test_compare_cli"
 
 # Images to compare: the layers of one small SSAO run (ao = filtered, ao_raw = unfiltered).
 "$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/run" --quiet || fail "ssao run"

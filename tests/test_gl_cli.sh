@@ -5,7 +5,7 @@
 # made (the message names the cause and suggests --backend cpu; nothing is written).
 # Whole graphs on both backends: test_gl_graphs.sh.
 set -u
-source "$(dirname "$0")/lib.sh" "/tmp/ssg_test_gl_cli"
+source "$(dirname "$0")/lib.sh" "ssg_test_gl_cli"
 
 g=graphs/ssao_gaussian.graph
 expect_exit 0 "gb +gaussian +gl " "$BIN" run $g --size 64x48 --out "$TMP/a" --set gb.backend=gl

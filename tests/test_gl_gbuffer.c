@@ -158,7 +158,7 @@ static void parity_scene(const char *label, const char *scene, const char *const
 int main(void)
 {
     const char *dir = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : "/tmp/test_gl_gbuffer");
+    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_gl_gbuffer");
     mkdir(tmp, 0755);
     CHECK(ssg_node_gbuffer.run_gl != NULL); /* else "gl" would quietly run the CPU twice */
     /* measured: other surface at most 0.043 % of the pixels, mean at most 9.3e-5 */

@@ -240,7 +240,7 @@ static void test_no_sink(void)
 int main(void)
 {
     const char *t = getenv("SSG_TMP");
-    snprintf(tmpdir, sizeof tmpdir, "%s", t ? t : "/tmp/ssg_test_graph");
+    snprintf(tmpdir, sizeof tmpdir, "%s", t ? t : CHECK_TMP_ROOT "/ssg_test_graph");
     mkdir(tmpdir, 0777);
     char cwd[512];
     if (!getcwd(cwd, sizeof cwd))

@@ -178,7 +178,7 @@ static void test_kernel_geometry(void)
 
 /* Mean cos(theta) of the directions. Cosine-weighted: E = 2/3, Var = 1/2 - 4/9 = 1/18;
    uniform: E = 1/2, Var = 1/3 - 1/4 = 1/12. Tolerance: four standard errors of an
-   N-sample mean (ANALYTIC.md 5); a quasi-random set does at least as well as random. */
+   N-sample mean (docs/analytic.md 5); a quasi-random set does at least as well as random. */
 static void test_direction_density(void)
 {
     const int n = 1024;

@@ -12,7 +12,7 @@
  * the reconstruction; any bias above that rounding leaves no slice term, and the node
  * adds exact zeros.
  *
- * The wall (ANALYTIC.md case 3 geometry): a floor point at distance a from an infinite
+ * The wall (docs/analytic.md case 3 geometry): a floor point at distance a from an infinite
  * wall, seen in the inner corner of two planes at 45 degrees to the view axis. In the
  * image's centre column (an odd frame width puts a pixel centre on the axis) V has no x
  * component, so e1 = x (the edge direction) and the slice of azimuth pi/2 is the vertical
@@ -467,7 +467,7 @@ static double case3(double c)
       is projected back along the tangent plane, which is exact for the floor but moves
       a wall sample's elevation by up to a few hundredths in one slice, with either sign
       from slice to slice (an estimate, not a proof: observed at most 0.005);
-   3. against ANALYTIC.md case 3: equal at the edge (both 1/2, within the allowances),
+   3. against docs/analytic.md case 3: equal at the edge (both 1/2, within the allowances),
       and darker (uniform weighting) for 0.1 <= c <= 0.9, where case 3 exceeds
       (1 + c) / 2 by 0.02 to 0.06. */
 static void test_wall_limit(void)

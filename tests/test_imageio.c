@@ -41,7 +41,7 @@ static void setup_tmp(void)
     if (env && env[0])
         snprintf(tmpdir, sizeof tmpdir, "%s", env);
     else
-        snprintf(tmpdir, sizeof tmpdir, "/tmp/ssg_test_imageio_%ld", (long)getpid());
+        snprintf(tmpdir, sizeof tmpdir, CHECK_TMP_ROOT "/ssg_test_imageio_%ld", (long)getpid());
     mkdir(tmpdir, 0777);
 }
 

@@ -1,5 +1,5 @@
 /* test_reference_ao.c - the `reference_ao` node against the closed forms of
- * /work/shared/ANALYTIC.md, on scenes written here as .scene files into SSG_TMP.
+ * docs/analytic.md, on scenes written here as .scene files into SSG_TMP.
  *
  * "Infinite" planes are 1000 x 1000 scene units, centred near the tested points (which
  * lie within 1.5 units of the origin): a ray would have to travel about 500 units to see
@@ -13,7 +13,7 @@
  * obscurance of o; the expected values below are the closed forms evaluated at o (for
  * the default e = 1e-3 that moves them by ~1e-3, within the tolerances anyway).
  *
- * Tolerances (ANALYTIC.md case 5): a pixel's estimate from N rays has standard error at
+ * Tolerances (docs/analytic.md case 5): a pixel's estimate from N rays has standard error at
  * most sqrt(V (1 - V) / N), and the mean over P pixels at most sqrt(sum V (1 - V)) /
  * (P sqrt N); both are checked within 4 standard errors. (The node's stratified samples
  * do better than independent ones; the bound holds a fortiori. Sampling is
@@ -162,13 +162,13 @@ static void floor_grid(struct points *pts, double x_fixed, int fix_x)
         }
 }
 
-/* ANALYTIC.md case 2: V = (h / D)^2 under a parallel ceiling at height h (D > h). */
+/* docs/analytic.md case 2: V = (h / D)^2 under a parallel ceiling at height h (D > h). */
 static double ceiling_v(double h, double d)
 {
     return d > h ? (h / d) * (h / d) : 1.0;
 }
 
-/* ANALYTIC.md case 3: a point at distance a from an infinitely tall wall. */
+/* docs/analytic.md case 3: a point at distance a from an infinitely tall wall. */
 static double wall_v(double a, double d)
 {
     double c = a / d;
@@ -209,7 +209,7 @@ static void test_ceiling(void)
     double want[P];
     floor_grid(&pts, 0, 0);
     make_input(s, &pts, 1e-3, &in);
-    CHECK_NEAR(ceiling_v(0.5, 1), 0.25, 1e-12); /* the examples of ANALYTIC.md */
+    CHECK_NEAR(ceiling_v(0.5, 1), 0.25, 1e-12); /* the examples of docs/analytic.md */
     CHECK_NEAR(ceiling_v(0.5, 2), 0.0625, 1e-12);
     const double distances[] = {1.0, 2.0};
     for (int k = 0; k < 2; k++) {
@@ -241,7 +241,7 @@ static void test_wall(void)
     struct input in;
     struct ssg_image *out = NULL;
     double want[P];
-    CHECK_NEAR(wall_v(0.3, 0.5), 0.8576, 5e-5); /* the examples of ANALYTIC.md */
+    CHECK_NEAR(wall_v(0.3, 0.5), 0.8576, 5e-5); /* the examples of docs/analytic.md */
     CHECK_NEAR(wall_v(0.3, 1.0), 0.6881, 5e-5);
     floor_grid(&pts, 0.3, 1); /* every point 0.3 from the wall, z spread over [-0.5, 0.5] */
     make_input(s, &pts, 1e-3, &in);
@@ -275,7 +275,7 @@ static void test_wall(void)
     ssg_scene_destroy(&s);
 }
 
-/* ANALYTIC.md case 4, seen by a camera straight above the floor centre (so o = p + 2e n
+/* docs/analytic.md case 4, seen by a camera straight above the floor centre (so o = p + 2e n
    exactly there): nothing within L/2, everything within sqrt(3/2) L. */
 static void test_box(double side)
 {

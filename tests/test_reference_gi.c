@@ -22,7 +22,7 @@
  * - A floor beside an infinite wall x = 0 lit by a horizontal directional light of
  *   irradiance E_w along -x: the wall sends radiance rho_w E_w / pi from every point; from
  *   any floor point exactly half of the cosine-weighted hemisphere (the directions with
- *   x < 0) meets the wall (ANALYTIC.md case 3 with D -> infinity: V = 1/2), so
+ *   x < 0) meets the wall (docs/analytic.md case 3 with D -> infinity: V = 1/2), so
  *   bounce = rho_f * 1/2 * rho_w E_w / pi at every distance from the wall. One path gives
  *   rho_f rho_w E_w / pi or 0, a Bernoulli(1/2) variable: standard error
  *   rho_f rho_w E_w / (2 pi sqrt(N)) per pixel, checked within 4, and the mean within 4

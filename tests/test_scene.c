@@ -22,7 +22,7 @@ static void make_tmp_dir(void)
     if (env && env[0])
         snprintf(tmp_dir, sizeof tmp_dir, "%s", env);
     else
-        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/ssg_test_scene_%d", (int)getpid());
+        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_scene_%d", (int)getpid());
     mkdir(tmp_dir, 0755);
 }
 

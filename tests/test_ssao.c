@@ -14,11 +14,11 @@
  * Why the corner has a closed form: a sample S = P + l R w is behind a plane at
  * perpendicular distance a from P exactly when the ray from P along w meets the plane
  * within l R, so the fraction of unoccluded samples is, in expectation over cosine
- * directions, ANALYTIC.md case 3 with D = l R, averaged over the kernel's lengths. The
+ * directions, docs/analytic.md case 3 with D = l R, averaged over the kernel's lengths. The
  * bias and the pixel lookup can only spare samples that are behind the plane by less than
  * (bias + bound) * |ray|, so the node's value lies between that average at a and at
  * a + that margin, up to the Monte Carlo error of the kernel (four standard errors,
- * ANALYTIC.md 5). */
+ * docs/analytic.md 5). */
 #include <math.h>
 #include <omp.h>
 #include <string.h>
@@ -161,7 +161,7 @@ static void test_open_planes(const struct ssg_image *kernel, const struct ssg_im
     }
 }
 
-/* ANALYTIC.md case 3: visibility at horizontal distance a from an infinite wall with a
+/* docs/analytic.md case 3: visibility at horizontal distance a from an infinite wall with a
    hard maximum distance D (cosine weighting). */
 static double wall_visibility(double a, double d)
 {
@@ -196,7 +196,7 @@ static double wall_model_all(struct ssg_image *const *k, int nk, double a, doubl
     return v / nk;
 }
 
-/* The corner against ANALYTIC.md case 3. Four kernels of 1024 samples at consecutive
+/* The corner against docs/analytic.md case 3. Four kernels of 1024 samples at consecutive
    Halton blocks (offsets 1, 1025, ...) make one 4096-sample estimate per pixel (the mean
    of their results), for a tolerance of four standard errors of 4096 samples. A frame
    64 px wide suffices: the floor's rows each lie at one distance from the wall (the
@@ -329,7 +329,7 @@ static void test_corner(const struct ssg_image *kernel, const struct ssg_image *
 
 
 /* A floor 0.3 below the camera, open or under a ceiling 0.3 above it (h = 0.6 < radius 2,
-   so case 2 of ANALYTIC.md predicts occlusion). The floor is seen at a grazing angle
+   so case 2 of docs/analytic.md predicts occlusion). The floor is seen at a grazing angle
    (depth_bound is far above any bias) and many samples over the ceiling leave the screen,
    so the closed form does not predict SSAO here: only the ordering is claimed, with the
    same parameters for both. Also: the background above the open floor's horizon is 1. */

@@ -15,7 +15,7 @@
  *   quadrature error being 1/K - 1/K^2 (0.0586 for K = 16). Tolerance: float rounding,
  *   2e-6 relative.
  * - The corner: modulation below 1 near the edge, rising with the distance a to the wall,
- *   and exactly 1 beyond the radius; against ANALYTIC.md case 3 as in test_ssao.c.
+ *   and exactly 1 beyond the radius; against docs/analytic.md case 3 as in test_ssao.c.
  * - A scene with a box on a floor and a point light to its left or right: the floor
  *   beside the box on the side away from the light is darker, so shadows move with it.
  * - Thread-count determinism, and check() errors. */
@@ -161,7 +161,7 @@ static void test_radiance_open(void)
     ssg_image_destroy(&alb);
 }
 
-/* ANALYTIC.md case 3: cosine-weighted visibility at distance a from a wall, limit d. */
+/* docs/analytic.md case 3: cosine-weighted visibility at distance a from a wall, limit d. */
 static double wall_visibility(double a, double d)
 {
     double c = a / d;
@@ -188,7 +188,7 @@ static double wall_model(const struct ssg_image *k, double a, double radius)
    within the case-3 model at a and at a + margin (the bias and the lookup can spare samples
    behind the wall by less than (bias + lookup error) |ray|; 0.03 covers 0.02 + the
    corner's lookup error, below 0.005 by test_ssao.c's depth_bound, times |ray| < 1.2),
-   widened by four standard errors of a 1024-sample estimate (ANALYTIC.md 5); rows with
+   widened by four standard errors of a 1024-sample estimate (docs/analytic.md 5); rows with
    a >= radius are exactly 1, rows nearer the edge darker. */
 static void test_corner(void)
 {

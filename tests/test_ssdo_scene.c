@@ -202,7 +202,7 @@ static void test_one_and_two_steps(void)
 int main(void)
 {
     const char *dir = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : "/tmp/test_ssdo_scene");
+    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_ssdo_scene");
     mkdir(tmp, 0755);
     test_colour_bleeding();
     test_shadow_follows_light();

@@ -270,7 +270,7 @@ int main(void)
     if (env && env[0])
         snprintf(tmpdir, sizeof tmpdir, "%s", env);
     else
-        snprintf(tmpdir, sizeof tmpdir, "/tmp/ssg_test_write_%ld", (long)getpid());
+        snprintf(tmpdir, sizeof tmpdir, CHECK_TMP_ROOT "/ssg_test_write_%ld", (long)getpid());
     mkdir(tmpdir, 0777);
     test_descriptor();
     test_names();

@@ -40,7 +40,7 @@
  * tends to 1 - (solid angle above the tangent plane occluded within R) / (2 pi) when the
  * occluders are height fields: uniform weighting, not cosine weighting. For a floor at
  * distance a from an infinite wall that is (1 + a/R) / 2 for a < R (tests/test_hbao.c
- * derives it), where the cosine-weighted ANALYTIC.md case 3 gives
+ * derives it), where the cosine-weighted docs/analytic.md case 3 gives
  * 1 - (acos c - c sqrt(1 - c^2)) / pi, c = a/R: both 1/2 at the edge, both 1 at a >= R,
  * the uniform weighting darker in between (0.8 against 0.858 at c = 0.6).
  *

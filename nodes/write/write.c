@@ -86,12 +86,15 @@ const struct ssg_node_desc ssg_node_write = {
            "<out>/<name>.png (main image x 2^exposure, tone-mapped, sRGB-encoded 8-bit; gray "
            "for a scalar image). The tone curve defaults to aces, which keeps the highlights "
            "of a shaded frame from clipping; tonemap=clamp shows data in [0, 1] (AO, albedo) "
-           "unchanged. The output directory is created if missing. Files are written under a "
+           "unchanged. Every layer must have the main image's size (a half-resolution result "
+           "is an error when the graph is checked: upsample it first). The output directory "
+           "is created if missing. Files are written under a "
            "temporary name and renamed, so a failed run leaves no partial file; the same "
            "pixels always give the same bytes.",
     .inputs = inputs,
     .input_count = SSG_COUNT(inputs),
     .extra_inputs = 1,
+    .extra_same_size = 1, /* one EXR part: every layer has the frame's size */
     .params = SSG_TABLE(param_table),
     .params_size = sizeof(struct ssg_write_params),
     .is_sink = 1,

@@ -11,7 +11,7 @@
 set -u
 graph=${1:?usage: parity.sh GRAPH}
 name=$(echo "$graph" | tr '/' '_')
-source "$(dirname "$0")/../lib.sh" "/tmp/ssg_parity_$name"
+source "$(dirname "$0")/../lib.sh" "ssg_parity_$name"
 FAIL_ABS=${FAIL_ABS:-0.05}
 FAIL_PERCENT=${FAIL_PERCENT:-3}
 MEAN_MAX=${MEAN_MAX:-0.005}

@@ -6,7 +6,7 @@
 set -u
 graph=${1:?usage: run.sh GRAPH}
 name=$(echo "$graph" | tr '/' '_')
-source "$(dirname "$0")/../lib.sh" "/tmp/ssg_graph_$name"
+source "$(dirname "$0")/../lib.sh" "ssg_graph_$name"
 
 expect_exit 0 "ok" "$BIN" check "$graph"
 out="$TMP/f1"

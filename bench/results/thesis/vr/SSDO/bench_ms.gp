@@ -1,6 +1,6 @@
 set terminal pngcairo size 900,600 enhanced font 'sans,11'
 set output 'bench_ms.png.tmp'
-set title "/work/main/graphs/ssdo.graph: ms against k.count" noenhanced
+set title "graphs/ssdo.graph: ms against k.count" noenhanced
 set grid
 set key outside right top noenhanced
 set xlabel "k.count" noenhanced
