@@ -2,7 +2,7 @@
  * loaded and run for every combination of the sweeps' values (the cross product, first
  * sweep outermost), each cell over `frames` frames with every node prepared once; its
  * frame time (average, min, max) and the metrics its compare nodes report go to
- * <out>/bench.csv (a row appended and flushed per cell, so an interrupted bench keeps the
+ * <out>/bench.csv (rewritten whole after every cell, so an interrupted bench keeps the
  * cells it finished), <out>/bench.json and <out>/bench.md (rewritten whole after every
  * cell; the table is shaped like the documents': rows the first sweep, columns the
  * second, one table per value of the others). A cell that fails is reported and recorded
@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "files.h"
 #include "parse.h"
 #include "plot.h"
 
@@ -465,30 +466,27 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
     fflush(f);
 }
 
-/* After each cell: its CSV row, and bench.json and bench.md rewritten whole. */
-static enum ssg_err save(const struct bench *b, FILE *csv, struct ssg_diags *d)
+static void write_csv(FILE *f, const void *user)
+{
+    const struct bench *b = user;
+    csv_header(b, f);
+    for (int ci = 0; ci < b->done; ci++)
+        csv_row(b, ci, f);
+}
+
+/* After each cell: bench.csv, bench.json and bench.md rewritten whole, each through a
+   temporary and a rename (files.h), so an interrupted bench keeps every finished cell and
+   no file is ever half-written or written through a planted link. */
+static enum ssg_err save(const struct bench *b, struct ssg_diags *d)
 {
     char path[1200];
-    csv_row(b, b->done - 1, csv);
-    fflush(csv);
+    snprintf(path, sizeof path, "%s/bench.csv", b->req->out_dir);
+    if (ssg_write_text_file(path, "bench table", write_csv, b, d))
+        return SSG_E_IO;
     snprintf(path, sizeof path, "%s/bench.json", b->req->out_dir);
     enum ssg_err e = ssg_write_text_file(path, "bench results", write_json, b, d);
     snprintf(path, sizeof path, "%s/bench.md", b->req->out_dir);
     return e ? e : ssg_write_text_file(path, "bench table", write_md, b, d);
-}
-
-static FILE *open_csv(const struct bench *b, struct ssg_diags *d)
-{
-    char path[1200];
-    snprintf(path, sizeof path, "%s/bench.csv", b->req->out_dir);
-    if (ssg_make_dirs(b->req->out_dir, d))
-        return NULL;
-    FILE *f = fopen(path, "w");
-    if (!f)
-        ssg_diag_file(d, SSG_E_IO, path, "cannot write the bench table");
-    else
-        csv_header(b, f);
-    return f;
 }
 
 /* Whether the --time node (if any) is among the nodes a cell ran. */
@@ -610,15 +608,14 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         return 2;
     if (!make_cells(&b))
         return 1;
-    FILE *csv = open_csv(&b, &d);
+    enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
-    enum ssg_err e = csv ? SSG_OK : SSG_E_IO;
     for (int ci = 0; ci < b.cell_count && !e; ci++) {
         run_cell(&b, ci, &b.cells[ci]);
         b.done = ci + 1;
         failed += !b.cells[ci].ok;
         progress(&b, ci, stderr, tty);
-        e = save(&b, csv, &d);
+        e = save(&b, &d);
         if (!e && b.cells[ci].ok && !knows_time_node(&b, &b.cells[ci])) {
             fprintf(stderr, "ssgraph: error: --time '%s' is not a node of %s\n",
                     req->time_node, req->graph);
@@ -626,8 +623,6 @@ int ssg_bench_main(const struct ssg_bench_request *req)
             break;
         }
     }
-    if (csv)
-        fclose(csv);
     ssg_diags_print(&d, stderr);
     if (!e && failed >= 0)
         fprintf(stderr, "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "files.h"
 #include "ssgraph.h"
 
 enum { MAX_SETS = 256, MAX_INPUTS = 24, EXIT_INVALID = 1, EXIT_USAGE = 2 };
@@ -478,6 +479,7 @@ static int wants_help(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    ssg_tmp_remove_on_signals(); /* a killed run leaves no half-written temporary */
     if (argc < 2 || wants_help(argc, argv)) {
         fputs(usage_text, argc < 2 ? stderr : stdout);
         return argc < 2 ? EXIT_USAGE : 0;

@@ -1,11 +1,18 @@
-/* files.c - ssg_make_dirs (ssgraph.h): mkdir -p for output directories; and
- * ssg_write_text_file (parse.h): a text file written whole or not at all. */
+/* files.c - input checks, staged outputs and their registry (files.h), and ssg_make_dirs
+ * (ssgraph.h): mkdir -p for output directories. */
+#define _DEFAULT_SOURCE /* DT_* and O_NOFOLLOW/O_CLOEXEC names in glibc's headers */
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
-#include <unistd.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include "files.h"
 #include "parse.h"
 
 enum { PATH_MAX_LEN = 4096 };
@@ -40,24 +47,305 @@ enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags)
     return SSG_OK;
 }
 
+/* ---- inputs ---- */
+
+static const char *file_kind(mode_t mode)
+{
+    return S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO" : S_ISCHR(mode) ?
+           "a character device" : S_ISBLK(mode) ? "a block device" : S_ISSOCK(mode) ?
+           "a socket" : "not a plain file";
+}
+
+int ssg_input_open(const char *path, long long max_bytes, char *why, size_t why_len)
+{
+    /* O_NONBLOCK: opening a FIFO with no writer must not wait; a regular file ignores it. */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        snprintf(why, why_len, "cannot open: %s", strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        snprintf(why, why_len, "cannot read its status: %s", strerror(errno));
+    } else if (!S_ISREG(st.st_mode)) {
+        snprintf(why, why_len, "not a regular file (it is %s)", file_kind(st.st_mode));
+    } else if ((long long)st.st_size > max_bytes) {
+        snprintf(why, why_len, "file of %lld bytes is larger than the limit of %lld MiB",
+                 (long long)st.st_size, max_bytes >> 20);
+        errno = EFBIG;
+    } else {
+        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+        return fd;
+    }
+    int saved = errno;
+    close(fd);
+    errno = saved;
+    return -1;
+}
+
+enum ssg_err ssg_input_check(const char *path, long long max_bytes, char *why,
+                             size_t why_len)
+{
+    int fd = ssg_input_open(path, max_bytes, why, why_len);
+    if (fd < 0)
+        return errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
+    close(fd);
+    return SSG_OK;
+}
+
+enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, size_t *len,
+                            char *why, size_t why_len)
+{
+    *data = NULL;
+    *len = 0;
+    int fd = ssg_input_open(path, max_bytes, why, why_len);
+    if (fd < 0)
+        return errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
+    struct stat st;
+    fstat(fd, &st);
+    /* Read at most the size fstat gave plus one byte: a file that grows while it is read
+       is cut there, never read without end. */
+    size_t cap = (size_t)st.st_size + 1, got = 0;
+    char *buf = malloc(cap + 1);
+    enum ssg_err e = buf ? SSG_OK : SSG_E_NOMEM;
+    while (!e && got < cap) {
+        ssize_t n = read(fd, buf + got, cap - got);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            snprintf(why, why_len, "cannot read: %s", strerror(errno));
+            e = SSG_E_IO;
+        }
+        if (n <= 0)
+            break;
+        got += (size_t)n;
+    }
+    close(fd);
+    if (e == SSG_E_NOMEM)
+        snprintf(why, why_len, "out of memory for %lld bytes", (long long)st.st_size);
+    if (!e && got > (size_t)max_bytes) {
+        snprintf(why, why_len, "file grew past the limit of %lld MiB while read",
+                 max_bytes >> 20);
+        e = SSG_E_SIZE;
+    }
+    if (e) {
+        free(buf);
+        return e;
+    }
+    buf[got] = 0;
+    *data = buf;
+    *len = got;
+    return SSG_OK;
+}
+
+/* ---- the registry of live temporaries ---- */
+
+static char tmp_paths[SSG_TMP_MAX][4200];
+static volatile sig_atomic_t tmp_live[SSG_TMP_MAX];
+static atomic_flag tmp_lock = ATOMIC_FLAG_INIT;
+
+static int registry_add(const char *path)
+{
+    while (atomic_flag_test_and_set(&tmp_lock))
+        ;
+    int slot = -1;
+    for (int i = 0; i < SSG_TMP_MAX && slot < 0; i++) {
+        if (!tmp_live[i]) {
+            snprintf(tmp_paths[i], sizeof tmp_paths[i], "%s", path);
+            tmp_live[i] = 1; /* after the path: a handler sees a whole one */
+            slot = i;
+        }
+    }
+    atomic_flag_clear(&tmp_lock);
+    return slot;
+}
+
+static void registry_remove(int slot)
+{
+    if (slot >= 0)
+        tmp_live[slot] = 0;
+}
+
+void ssg_tmp_remove_all(void)
+{
+    for (int i = 0; i < SSG_TMP_MAX; i++)
+        if (tmp_live[i])
+            unlink(tmp_paths[i]);
+}
+
+static void on_signal(int sig)
+{
+    ssg_tmp_remove_all();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+void ssg_tmp_remove_on_signals(void)
+{
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
+}
+
+/* ---- staged outputs ---- */
+
+/* "<dir>/" of path ("" for a bare name) and its file name. */
+static void split_path(const char *path, char *dir, size_t dir_len, const char **base)
+{
+    const char *slash = strrchr(path, '/');
+    *base = slash ? slash + 1 : path;
+    snprintf(dir, dir_len, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
+}
+
+/* A temporary of ours is ".<anything>.tmp-<pid>-<n>[.ext]"; its pid, or 0 for other names. */
+static long tmp_owner(const char *name)
+{
+    const char *tag = name[0] == '.' ? strstr(name, ".tmp-") : NULL;
+    if (!tag)
+        return 0;
+    char *end;
+    long pid = strtol(tag + 5, &end, 10);
+    return pid > 0 && *end == '-' ? pid : 0;
+}
+
+/* Removes temporaries in dir left by processes that no longer exist (killed outright, so
+   their handler never ran). */
+static void remove_stale(const char *dir)
+{
+    DIR *d = opendir(dir[0] ? dir : ".");
+    if (!d)
+        return;
+    for (struct dirent *e; (e = readdir(d));) {
+        long pid = tmp_owner(e->d_name);
+        if (pid <= 0 || pid == (long)getpid() || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue;
+        char path[PATH_MAX_LEN + 256];
+        snprintf(path, sizeof path, "%s%s", dir, e->d_name);
+        struct stat st;
+        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode))
+            unlink(path);
+    }
+    closedir(d);
+}
+
+enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
+                            struct ssg_tmp *t, struct ssg_diags *diags)
+{
+    static atomic_uint counter;
+    char dir[PATH_MAX_LEN];
+    const char *base;
+    t->fd = -1;
+    t->slot = -1;
+    if (strlen(target) >= sizeof t->target) {
+        ssg_diag_file(diags, SSG_E_IO, target, "output path is too long");
+        return SSG_E_IO;
+    }
+    snprintf(t->target, sizeof t->target, "%s", target);
+    split_path(target, dir, sizeof dir, &base);
+    remove_stale(dir);
+    snprintf(t->path, sizeof t->path, "%s.%s.tmp-%ld-%u%s", dir, base, (long)getpid(),
+             atomic_fetch_add(&counter, 1u), ext);
+    t->slot = registry_add(t->path);
+    if (t->slot < 0) {
+        ssg_diag_file(diags, SSG_E_IO, target, "more than %d outputs written at once",
+                      SSG_TMP_MAX);
+        return SSG_E_IO;
+    }
+    t->fd = open(t->path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (t->fd < 0) {
+        ssg_diag_file(diags, SSG_E_IO, target, "cannot write %s: cannot create a file in "
+                      "'%s': %s", what, dir[0] ? dir : ".", strerror(errno));
+        registry_remove(t->slot);
+        t->slot = -1;
+        return SSG_E_IO;
+    }
+    return SSG_OK;
+}
+
+enum ssg_err ssg_tmp_close(struct ssg_tmp *t, struct ssg_diags *diags)
+{
+    if (t->fd < 0)
+        return SSG_OK;
+    int failed = fsync(t->fd) != 0;
+    int saved = errno;
+    failed |= close(t->fd) != 0;
+    if (!failed)
+        saved = 0;
+    else if (!saved)
+        saved = errno;
+    t->fd = -1;
+    if (failed) {
+        ssg_diag_file(diags, SSG_E_IO, t->target, "cannot write: %s", strerror(saved));
+        return SSG_E_IO;
+    }
+    return SSG_OK;
+}
+
+void ssg_tmp_discard(struct ssg_tmp *t, int count)
+{
+    for (int i = 0; i < count; i++) {
+        if (t[i].fd >= 0)
+            close(t[i].fd);
+        t[i].fd = -1;
+        if (t[i].slot >= 0) {
+            unlink(t[i].path);
+            registry_remove(t[i].slot);
+            t[i].slot = -1;
+        }
+    }
+}
+
+enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diags)
+{
+    /* Every file complete on disk before the first rename, so a failure or a kill leaves
+       as few mixed outputs as it can. */
+    for (int i = 0; i < count; i++) {
+        if (ssg_tmp_close(&t[i], diags) != SSG_OK) {
+            ssg_tmp_discard(t, count);
+            return SSG_E_IO;
+        }
+    }
+    for (int i = 0; i < count; i++) {
+        if (rename(t[i].path, t[i].target) != 0) {
+            ssg_diag_file(diags, SSG_E_IO, t[i].target, "cannot rename the finished file "
+                          "into place: %s", strerror(errno));
+            ssg_tmp_discard(t + i, count - i);
+            return SSG_E_IO;
+        }
+        registry_remove(t[i].slot);
+        t[i].slot = -1;
+    }
+    return SSG_OK;
+}
+
 enum ssg_err ssg_write_text_file(const char *path, const char *what,
                                  void (*fill)(FILE *f, const void *user), const void *user,
                                  struct ssg_diags *diags)
 {
-    char tmp[PATH_MAX_LEN + 32];
-    snprintf(tmp, sizeof tmp, "%s.tmp-%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
+    struct ssg_tmp t;
+    if (ssg_tmp_create(path, "", what, &t, diags))
+        return SSG_E_IO;
+    FILE *f = fdopen(t.fd, "w");
     if (!f) {
         ssg_diag_file(diags, SSG_E_IO, path, "cannot write %s: %s", what, strerror(errno));
+        ssg_tmp_discard(&t, 1);
         return SSG_E_IO;
     }
     fill(f, user);
-    int failed = ferror(f);
-    failed |= fclose(f) != 0;
-    if (failed || rename(tmp, path) != 0) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot write %s: %s", what, strerror(errno));
-        remove(tmp);
+    int failed = fflush(f) != 0 || ferror(f) || fsync(t.fd) != 0;
+    int saved = errno;
+    failed |= fclose(f) != 0; /* closes t.fd too */
+    t.fd = -1;
+    if (failed) {
+        ssg_diag_file(diags, SSG_E_IO, path, "cannot write %s: %s", what,
+                      strerror(saved ? saved : errno));
+        ssg_tmp_discard(&t, 1);
         return SSG_E_IO;
     }
-    return SSG_OK;
+    return ssg_tmp_commit(&t, 1, diags);
 }

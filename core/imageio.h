@@ -25,6 +25,7 @@
 #ifndef SSG_IMAGEIO_H
 #define SSG_IMAGEIO_H
 
+#include "files.h"
 #include "ssgraph.h"
 
 #ifdef __cplusplus
@@ -67,6 +68,14 @@ enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_lay
                                       int count, enum ssg_exr_compression compression,
                                       struct ssg_diags *diags);
 
+/* Staged writes (files.h): the file is written whole under its temporary name, synced,
+ * and left for ssg_tmp_commit (or ssg_tmp_discard) with the other outputs of the same
+ * node, so that no output is renamed into place before all of them are complete. On an
+ * error the temporary is already gone. */
+enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
+                           enum ssg_exr_compression compression, struct ssg_tmp *t,
+                           struct ssg_diags *diags);
+
 /* Tone mapping of the PNG preview, applied to exposure-scaled linear values. The order
  * matches the `tonemap` choices of the write node. */
 enum ssg_tonemap {
@@ -87,6 +96,10 @@ unsigned char ssg_tonemap_to_srgb8(enum ssg_tonemap tonemap, float exposure, flo
  * mapped by ssg_tonemap_to_srgb8. */
 enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
                            enum ssg_tonemap tonemap, float exposure, struct ssg_diags *diags);
+/* The same, staged (see ssg_exr_stage). */
+enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
+                           enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
+                           struct ssg_diags *diags);
 
 #ifdef __cplusplus
 }

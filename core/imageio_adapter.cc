@@ -18,10 +18,12 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 extern "C" {
 #include "image.h"
+#include "files.h"
 #include "imageio.h"
 #include "parse.h"
 }
@@ -168,25 +170,15 @@ std::string layer_list(const ImageSpec &spec)
 }
 
 /* A missing or unreadable file is an I/O error, not an image error: tell them apart before
-   OpenImageIO, whose messages do not say which it was. */
+   OpenImageIO, whose messages do not say which it was. A FIFO, a device or anything but a
+   regular file of a sane size is refused here (files.h): /dev/zero would never end. */
 enum ssg_err check_readable(const char *path, struct ssg_diags *diags)
 {
-    struct stat st;
-    if (stat(path, &st) != 0) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot open image: %s", std::strerror(errno));
-        return SSG_E_IO;
-    }
-    if (S_ISDIR(st.st_mode)) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot open image: it is a directory");
-        return SSG_E_IO;
-    }
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot open image: %s", std::strerror(errno));
-        return SSG_E_IO;
-    }
-    close(fd);
-    return SSG_OK;
+    char why[256];
+    enum ssg_err e = ssg_input_check(path, SSG_MAX_IMAGE_BYTES, why, sizeof why);
+    if (e)
+        ssg_diag_file(diags, e, path, "cannot read image: %s", why);
+    return e;
 }
 
 /* Copies the selected channels of an interleaved band (chbegin..chend of the file) into
@@ -211,6 +203,28 @@ void scatter_band(const std::vector<float> &band, int nread, int chbegin,
     }
 }
 
+/* A tiled file (OpenEXR allows tiles as well as scanlines): each selected channel is read
+   whole, straight into its plane. OpenImageIO 2.4's read_scanlines divides by zero on
+   tiled files, and read_image reads either layout. */
+enum ssg_err read_tiled(ImageInput *in, const char *path, const std::vector<int> &idx,
+                        const std::vector<char> &decode, struct ssg_image *im,
+                        struct ssg_diags *diags)
+{
+    size_t pixels = (size_t)im->width * (size_t)im->height;
+    for (size_t k = 0; k < idx.size(); k++) {
+        float *plane = ssg_image_plane(im, (int)k);
+        if (!in->read_image(0, 0, idx[k], idx[k] + 1, TypeDesc::FLOAT, plane)) {
+            ssg_diag_file(diags, SSG_E_IMAGE, path, "cannot decode image: %s",
+                          oiio_error(in).c_str());
+            return SSG_E_IMAGE;
+        }
+        if (decode[k])
+            for (size_t i = 0; i < pixels; i++)
+                plane[i] = srgb_decode(plane[i]);
+    }
+    return SSG_OK;
+}
+
 enum ssg_err read_pixels(ImageInput *in, const char *path, const std::vector<int> &idx,
                          struct ssg_image *im, struct ssg_diags *diags)
 {
@@ -223,6 +237,8 @@ enum ssg_err read_pixels(ImageInput *in, const char *path, const std::vector<int
     std::vector<char> decode(idx.size());
     for (size_t k = 0; k < idx.size(); k++)
         decode[k] = srgb && idx[k] != spec.alpha_channel;
+    if (spec.tile_width > 0)
+        return read_tiled(in, path, idx, decode, im, diags);
     /* The channel range read may hold many unwanted channels: keep the band under 64 MB. */
     size_t row_floats = (size_t)spec.width * (size_t)nread;
     int band_rows =
@@ -296,48 +312,30 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
 
 /* ---- writing ----------------------------------------------------------------------- */
 
-/* A hidden sibling of `path`, unique in this process and created here (O_EXCL) so that
-   two writers never share it; its extension makes OpenImageIO pick the format. */
-enum ssg_err make_temp(const char *path, const char *ext, std::string &tmp,
-                       struct ssg_diags *diags)
-{
-    static std::atomic<unsigned> counter{0};
-    std::string p = path;
-    size_t slash = p.rfind('/');
-    std::string dir = slash == std::string::npos ? "" : p.substr(0, slash + 1);
-    std::string base = slash == std::string::npos ? p : p.substr(slash + 1);
-    size_t dot = base.rfind('.');
-    if (dot != std::string::npos && dot > 0)
-        base.resize(dot);
-    tmp = dir + "." + base + ".tmp-" + std::to_string((long)getpid()) + "-" +
-          std::to_string(counter++) + ext;
-    int fd = open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0) {
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot create a file in '%s': %s",
-                      dir.empty() ? "." : dir.c_str(), std::strerror(errno));
-        return SSG_E_IO;
-    }
-    close(fd);
-    return SSG_OK;
-}
-
 /* Fills `band` with `rows` interleaved scanlines starting at y0. */
 using FillBand = void (*)(const void *user, int y0, int rows, void *band);
 
-/* Writes spec through a temporary file and renames it over `path`; the temporary file is
-   removed on every failure. */
-enum ssg_err write_file(const char *path, const char *ext, const ImageSpec &spec,
-                        TypeDesc format, FillBand fill, const void *user,
-                        struct ssg_diags *diags)
+/* Writes spec into the staged temporary t (files.h), through a FILE* of ours that
+   OpenImageIO writes via an I/O proxy: so every write error (a full disk, a file size
+   limit) is seen here, which OpenImageIO's PNG writer would otherwise drop. On return t
+   is closed and synced (SSG_OK) or discarded. */
+enum ssg_err write_staged(const ImageSpec &spec, TypeDesc format, FillBand fill,
+                          const void *user, struct ssg_tmp *t, struct ssg_diags *diags)
 {
-    std::string tmp;
-    enum ssg_err err = make_temp(path, ext, tmp, diags);
-    if (err)
-        return err;
     std::string why;
+    FILE *f = fdopen(t->fd, "wb");
+    if (!f) {
+        ssg_diag_file(diags, SSG_E_IO, t->target, "cannot write image: %s",
+                      std::strerror(errno));
+        ssg_tmp_discard(t, 1);
+        return SSG_E_IO;
+    }
+    t->fd = -1; /* f owns the descriptor now */
     try {
-        std::unique_ptr<ImageOutput> out = ImageOutput::create(tmp);
-        bool ok = out && out->open(tmp, spec);
+        OIIO::Filesystem::IOFile proxy(f, OIIO::Filesystem::IOProxy::Write);
+        std::unique_ptr<ImageOutput> out = ImageOutput::create(t->path);
+        bool ok = out && out->supports("ioproxy") && out->set_ioproxy(&proxy) &&
+                  out->open(t->path, spec);
         size_t row_bytes = (size_t)spec.width * (size_t)spec.nchannels * format.size();
         std::vector<unsigned char> band(ok ? row_bytes * BAND_ROWS : 0);
         for (int y0 = 0; ok && y0 < spec.height; y0 += BAND_ROWS) {
@@ -347,15 +345,18 @@ enum ssg_err write_file(const char *path, const char *ext, const ImageSpec &spec
         }
         ok = ok && out->close();
         if (!ok)
-            why = oiio_error(out.get());
+            why = out ? oiio_error(out.get()) : "no writer for this format";
     } catch (const std::exception &e) {
         why = e.what()[0] ? e.what() : "unknown C++ exception";
     }
-    if (why.empty() && rename(tmp.c_str(), path) != 0)
-        why = std::string("cannot rename the finished file into place: ") + std::strerror(errno);
+    bool flushed = fflush(f) == 0 && !ferror(f) && fsync(fileno(f)) == 0;
+    int saved = errno;
+    flushed = (fclose(f) == 0) && flushed;
+    if (why.empty() && !flushed)
+        why = std::strerror(saved ? saved : errno);
     if (!why.empty()) {
-        unlink(tmp.c_str());
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot write image: %s", why.c_str());
+        ssg_diag_file(diags, SSG_E_IO, t->target, "cannot write image: %s", why.c_str());
+        ssg_tmp_discard(t, 1);
         return SSG_E_IO;
     }
     return SSG_OK;
@@ -465,8 +466,9 @@ const char *compression_name(enum ssg_exr_compression c)
     return "zip:1";
 }
 
-enum ssg_err write_exr(const char *path, const struct ssg_exr_layer *layers, int count,
-                       enum ssg_exr_compression compression, struct ssg_diags *diags)
+enum ssg_err stage_exr(const char *path, const struct ssg_exr_layer *layers, int count,
+                       enum ssg_exr_compression compression, struct ssg_tmp *t,
+                       struct ssg_diags *diags)
 {
     enum ssg_err err = check_layers(path, layers, count, diags);
     if (err)
@@ -488,7 +490,9 @@ enum ssg_err write_exr(const char *path, const struct ssg_exr_layer *layers, int
     /* OpenImageIO stamps the current time as capDate unless DateTime is set: an empty one
        keeps the bytes the same from run to run. */
     spec.attribute("DateTime", "");
-    return write_file(path, ".exr", spec, TypeDesc::FLOAT, fill_exr_band, &src, diags);
+    if (ssg_tmp_create(path, ".exr", "image", t, diags))
+        return SSG_E_IO;
+    return write_staged(spec, TypeDesc::FLOAT, fill_exr_band, &src, t, diags);
 }
 
 struct PngSource {
@@ -513,8 +517,9 @@ void fill_png_band(const void *user, int y0, int rows, void *band)
     }
 }
 
-enum ssg_err write_png(const char *path, const struct ssg_image *image,
-                       enum ssg_tonemap tonemap, float exposure, struct ssg_diags *diags)
+enum ssg_err stage_png(const char *path, const struct ssg_image *image,
+                       enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
+                       struct ssg_diags *diags)
 {
     if (!image || !image->data || (image->channels != 1 && image->channels != 3)) {
         ssg_diag_file(diags, SSG_E_CHANNELS, path,
@@ -527,7 +532,9 @@ enum ssg_err write_png(const char *path, const struct ssg_image *image,
     /* Nothing time- or host-dependent: OpenImageIO writes a tIME chunk only from DateTime. */
     spec.erase_attribute("DateTime");
     spec.erase_attribute("Software");
-    return write_file(path, ".png", spec, TypeDesc::UINT8, fill_png_band, &src, diags);
+    if (ssg_tmp_create(path, ".png", "image", t, diags))
+        return SSG_E_IO;
+    return write_staged(spec, TypeDesc::UINT8, fill_png_band, &src, t, diags);
 }
 
 } /* namespace */
@@ -564,6 +571,45 @@ extern "C" enum ssg_err ssg_image_read(const char *path, const char *layer,
     }
 }
 
+/* A C++ exception from staging becomes a diagnostic; the temporary goes with it. */
+template <class F>
+enum ssg_err guarded_stage(const char *path, struct ssg_tmp *t, struct ssg_diags *diags,
+                           F stage)
+{
+    t->fd = -1;
+    t->slot = -1;
+    enum ssg_err e;
+    try {
+        return stage();
+    } catch (const std::bad_alloc &) {
+        e = report_exception(diags, path, SSG_E_NOMEM, "out of memory while writing");
+    } catch (const std::exception &ex) {
+        e = report_exception(diags, path, SSG_E_IO, ex.what());
+    } catch (...) {
+        e = report_exception(diags, path, SSG_E_IO, "unknown error while writing");
+    }
+    ssg_tmp_discard(t, 1);
+    return e;
+}
+
+extern "C" enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers,
+                                      int count, enum ssg_exr_compression compression,
+                                      struct ssg_tmp *t, struct ssg_diags *diags)
+{
+    return guarded_stage(path, t, diags, [&] {
+        return stage_exr(path, layers, count, compression, t, diags);
+    });
+}
+
+extern "C" enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
+                                      enum ssg_tonemap tonemap, float exposure,
+                                      struct ssg_tmp *t, struct ssg_diags *diags)
+{
+    return guarded_stage(path, t, diags, [&] {
+        return stage_png(path, image, tonemap, exposure, t, diags);
+    });
+}
+
 extern "C" enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers,
                                       int count, struct ssg_diags *diags)
 {
@@ -575,28 +621,16 @@ extern "C" enum ssg_err ssg_exr_write_compressed(const char *path,
                                                  enum ssg_exr_compression compression,
                                                  struct ssg_diags *diags)
 {
-    try {
-        return write_exr(path, layers, count, compression, diags);
-    } catch (const std::bad_alloc &) {
-        return report_exception(diags, path, SSG_E_NOMEM, "out of memory while writing");
-    } catch (const std::exception &e) {
-        return report_exception(diags, path, SSG_E_IO, e.what());
-    } catch (...) {
-        return report_exception(diags, path, SSG_E_IO, "unknown error while writing");
-    }
+    struct ssg_tmp t;
+    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, &t, diags);
+    return e ? e : ssg_tmp_commit(&t, 1, diags);
 }
 
 extern "C" enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
                                       enum ssg_tonemap tonemap, float exposure,
                                       struct ssg_diags *diags)
 {
-    try {
-        return write_png(path, image, tonemap, exposure, diags);
-    } catch (const std::bad_alloc &) {
-        return report_exception(diags, path, SSG_E_NOMEM, "out of memory while writing");
-    } catch (const std::exception &e) {
-        return report_exception(diags, path, SSG_E_IO, e.what());
-    } catch (...) {
-        return report_exception(diags, path, SSG_E_IO, "unknown error while writing");
-    }
+    struct ssg_tmp t;
+    enum ssg_err e = ssg_png_stage(path, image, tonemap, exposure, &t, diags);
+    return e ? e : ssg_tmp_commit(&t, 1, diags);
 }

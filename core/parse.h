@@ -18,6 +18,7 @@
 #include <stdio.h>
 
 #include "arena.h"
+#include "files.h"
 #include "ssgraph.h"
 
 /* One loaded text: a file, or a command-line string. */
@@ -44,13 +45,6 @@ void ssg_diag_vat(struct ssg_diags *diags, enum ssg_err code, struct ssg_loc loc
 /* Appends a diagnostic naming a file but no line (I/O errors, image errors). */
 void ssg_diag_file(struct ssg_diags *diags, enum ssg_err code, const char *file,
                    const char *fmt, ...) __attribute__((format(printf, 4, 5)));
-
-/* Writes a text file whole or not at all: fill() writes into a temporary file next to
- * path, which is renamed over path only when every write succeeded (files.c). `what`
- * names the content in error messages ("metrics", "profile"). */
-enum ssg_err ssg_write_text_file(const char *path, const char *what,
-                                 void (*fill)(FILE *f, const void *user), const void *user,
-                                 struct ssg_diags *diags);
 
 enum ssg_value_kind {
     SSG_V_NUMBER,

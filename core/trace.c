@@ -5,7 +5,9 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "rt.h"
 #include "scene.h"
+#include "surface.h"
 #include "trace.h"
 
 enum { BAR = 30 }; /* width of the progress bar in characters */
@@ -60,6 +62,28 @@ int ssg_trace_point(const float rot[9], const float eye[3], float offset,
     for (int i = 0; i < 3; i++) /* off the own surface (n) and any adjacent one (v) */
         pt->o[i] = pt->p[i] + e * (pt->n[i] + v[i]);
     return 1;
+}
+
+void ssg_trace_face_normal(const struct ssg_scene *scene, const float eye[3],
+                           const struct ssg_trace_point *pt, float ng[3])
+{
+    float dir[3] = {pt->p[0] - eye[0], pt->p[1] - eye[1], pt->p[2] - eye[2]};
+    struct ssg_hit hit;
+    ssg_rt_intersect(scene->rt, eye, dir, 0.0f, 1.001f, &hit);
+    float len = 0.0f;
+    if (hit.mesh >= 0 && hit.t > 0.999f) {
+        ssg_hit_normal(scene, &hit, 1, ng);
+        len = sqrtf(ng[0] * ng[0] + ng[1] * ng[1] + ng[2] * ng[2]);
+    }
+    if (!(len > 0.0f)) {
+        for (int i = 0; i < 3; i++)
+            ng[i] = pt->n[i];
+        return;
+    }
+    /* On the camera's side: dir points away from the eye. */
+    float side = ng[0] * dir[0] + ng[1] * dir[1] + ng[2] * dir[2] > 0.0f ? -1.0f : 1.0f;
+    for (int i = 0; i < 3; i++)
+        ng[i] *= side / len;
 }
 
 double ssg_radical_inverse(uint32_t i, uint32_t base)

@@ -26,6 +26,7 @@
 #include "node.h"
 
 struct ssg_camera;
+struct ssg_scene;
 
 /* The view -> world transform: world = eye + rot^T view, rot the row-major world -> view
  * rotation of ssg_camera_view_matrix (view = rot * (world - eye)). */
@@ -58,6 +59,16 @@ struct ssg_trace_point {
 int ssg_trace_point(const float rot[9], const float eye[3], float offset,
                     const float *const pos[3], const float *const nrm[3], size_t at,
                     struct ssg_trace_point *pt);
+
+/* The geometric (face) normal, world, unit, on the camera's side, of the surface that the
+ * G-buffer point pt lies on: the primary ray from the eye through pt->p is traced and the
+ * hit triangle's own normal taken (surface.h). Interpolated normals may point below that
+ * surface at grazing angles, and a ray that leaves below it enters the object, so the
+ * hemisphere's horizon comes from this normal and the cosine from the shading one. When
+ * the ray finds no surface within 0.1 % of the point's distance (a G-buffer from another
+ * source), ng is pt->n. */
+void ssg_trace_face_normal(const struct ssg_scene *scene, const float eye[3],
+                           const struct ssg_trace_point *pt, float ng[3]);
 
 /* Radical inverse of i in the given base (Szentandrasi eq. 6): its digits mirrored about the
  * point. Exact in double for base 2 (32 bits). */

@@ -335,6 +335,45 @@ static void test_read_errors(void)
     CHECK(im == NULL);
 }
 
+/* OpenEXR files may be tiled as well as scanline: both read to the same pixels (the
+   fixtures are one gradient written both ways by oiiotool, 16 x 16 tiles over 40 x 24, so
+   the last tiles are partial), a named layer too. */
+static void test_tiled_reads(void)
+{
+    struct ssg_image *scan = NULL, *tiled = NULL, *layer = NULL, *red = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_image_read("tests/fixtures/images/scanline.exr", NULL, &scan, &d), SSG_OK);
+    CHECK_EQ(ssg_image_read("tests/fixtures/images/tiled.exr", NULL, &tiled, &d), SSG_OK);
+    CHECK_EQ(ssg_image_read("tests/fixtures/images/tiled_layer.exr", "depth", &layer, &d),
+             SSG_OK);
+    CHECK_EQ(ssg_image_read("tests/fixtures/images/scanline_layer.exr", "depth", &red, &d), SSG_OK);
+    CHECK(scan && tiled && images_equal(scan, tiled));
+    CHECK(layer && red && images_equal(layer, red));
+    CHECK(scan && ssg_image_plane(scan, 0)[39] > 0.9f); /* a gradient, not zeros */
+    ssg_image_destroy(&scan);
+    ssg_image_destroy(&tiled);
+    ssg_image_destroy(&layer);
+    ssg_image_destroy(&red);
+}
+
+/* Endless streams and special files are refused before anything reads them: a FIFO with
+   no writer would block open(), /dev/zero would never end. */
+static void test_special_files(void)
+{
+    struct ssg_image *im = NULL;
+    struct ssg_diags d = {0};
+    check_error(&d, ssg_image_read("/dev/zero", NULL, &im, &d), SSG_E_IO, "/dev/zero");
+    CHECK(d.count && strstr(d.items[0].message, "not a regular file") != NULL);
+    CHECK(im == NULL);
+    const char *fifo = tmp_path("fifo.exr");
+    unlink(fifo);
+    CHECK(mkfifo(fifo, 0600) == 0);
+    struct ssg_diags d2 = {0};
+    check_error(&d2, ssg_image_read(fifo, NULL, &im, &d2), SSG_E_IO, "fifo.exr");
+    CHECK(im == NULL);
+    unlink(fifo);
+}
+
 static void test_size_errors(void)
 {
     /* Wider than ssg_image_create allows: built by hand, since only the reader refuses. */
@@ -414,6 +453,8 @@ int main(void)
     test_png_codes();
     test_determinism();
     test_read_errors();
+    test_tiled_reads();
+    test_special_files();
     test_size_errors();
     test_failed_writes();
     return check_report();

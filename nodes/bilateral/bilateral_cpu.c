@@ -163,7 +163,7 @@ static int normal_mode(const struct job *j)
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void add_taps(const struct job *j, struct chunk *k, int y, int x0, int len)
+static void bilateral_add_taps(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
 #define VARIANTS(ch)                                                                    \
     switch (normal_mode(j)) {                                                          \
@@ -209,7 +209,7 @@ static void band(void *user, int y0, int y1)
         for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
             int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
             setup_chunk(j, &k, y, x0, len);
-            add_taps(j, &k, y, x0, len);
+            bilateral_add_taps(j, &k, y, x0, len);
             finish_chunk(j, &k, y, x0, len);
         }
 }

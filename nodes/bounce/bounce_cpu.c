@@ -25,7 +25,7 @@ struct job {
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
+static void bounce_chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
 {
     const struct ssg_ssdo_job *j = &jb->s;
     const int count = j->count, own = j->own_depth;
@@ -47,7 +47,7 @@ static void band(void *user, int y0, int y1)
     for (int x0 = 0; x0 < j->s.w; x0 += SSG_SSDO_CHUNK) {
         int len = j->s.w - x0 < SSG_SSDO_CHUNK ? j->s.w - x0 : SSG_SSDO_CHUNK;
         for (int y = y0; y < y1; y++)
-            chunk_row(j, &k, y, x0, len);
+            bounce_chunk_row(j, &k, y, x0, len);
     }
 }
 

@@ -508,7 +508,7 @@ chunk_body(const struct job *j, struct chunk *k, int y, int x0, int len, int cou
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
+static void hbao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     if (j->cnt)
         chunk_body(j, k, y, x0, len, 1);
@@ -525,7 +525,7 @@ static void band(void *user, int y0, int y1)
     for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
         int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
         for (int y = y0; y < y1; y++)
-            chunk_row(j, &k, y, x0, len);
+            hbao_chunk_row(j, &k, y, x0, len);
     }
 }
 

@@ -37,7 +37,14 @@
  * receding edges, and without v those pixels came out 0). e = max(offset, 1024 float
  * ulps of the point's largest world coordinate or depth), as precision falls with the
  * scene's scale. Background pixels (normal 0) are 1. Normals that are not unit are
- * normalised. */
+ * normalised.
+ *
+ * Horizon: the G-buffer's normal is the interpolated (shading) normal; on a smooth-shaded
+ * mesh seen at a grazing angle it can lean past the triangle's own plane, and directions
+ * of its hemisphere then leave below the surface, into the object. A path tracer counts
+ * those as blocked; so does this node: each pixel traces its primary ray once more for the
+ * triangle's face normal (core/trace.h), weights directions by the shading normal's cosine
+ * and counts every direction below the face's plane as occluded. */
 #include <stdio.h>
 
 #include "reference_ao.h"
@@ -118,7 +125,9 @@ const struct ssg_node_desc ssg_node_reference_ao = {
            "Hammersley set mapped by Malley's method, shifted per pixel by a hash of x, y "
            "and the seed) are traced from the world-space point moved by `offset` along "
            "the normal and towards the camera; a ray is occluded when any surface lies within `max_distance` on "
-           "it. out = 1 - occluded / rays: 1 = unoccluded, comparable with ssao and hbao "
+           "it, or when it leaves below the plane of the hit triangle itself (its face normal "
+           "is the horizon, the shading normal only weights). out = 1 - occluded / rays: "
+           "1 = unoccluded, comparable with ssao and hbao "
            "at radius = max_distance. Deterministic for a seed, whatever the threads. "
            "Background pixels (normal 0) are 1. Shows a progress bar when stderr is a "
            "terminal.",

@@ -21,6 +21,7 @@ enum { ROWS_PER_BAND = 2, BATCH = 256 };
 struct job {
     const struct ssg_reference_ao_consts *c;
     const struct ssg_rt *rt;
+    const struct ssg_scene *scene;
     const float *pos[3], *nrm[3]; /* input planes */
     float *out;
     int w, h;
@@ -31,7 +32,9 @@ struct job {
 struct pixel {
     float o[3];       /* ray origin, world */
     float t[3], b[3]; /* tangent frame, turned by the pixel's angle */
-    float n[3];       /* unit normal, world */
+    float n[3];       /* unit shading normal, world: the cosine */
+    float ng[3];      /* unit face normal, world: the horizon (ssg_trace_face_normal) */
+    int clipped;      /* 1 = n and ng differ, so some directions leave below the surface */
     float shift;      /* Cranley-Patterson shift of u, [0, 1) */
 };
 
@@ -39,7 +42,23 @@ struct pixel {
 struct batch {
     float ox[BATCH], oy[BATCH], oz[BATCH];
     float dx[BATCH], dy[BATCH], dz[BATCH];
+    unsigned char occluded[BATCH];
 };
+
+/* Occluded rays of a batch when the shading normal tilts away from the face: a direction
+   below the face's plane enters the object, so it counts as blocked whatever Embree finds
+   beyond the raised origin (a path tracer's answer). */
+static int occluded_clipped(const struct job *j, const struct pixel *px, struct batch *k,
+                            const struct ssg_rays *rays)
+{
+    ssg_rt_occluded_rays(j->rt, rays, k->occluded);
+    int occluded = 0;
+    for (int i = 0; i < rays->count; i++) {
+        float up = k->dx[i] * px->ng[0] + k->dy[i] * px->ng[1] + k->dz[i] * px->ng[2];
+        occluded += k->occluded[i] | (up <= 0.0f);
+    }
+    return occluded;
+}
 
 /* Per-pixel setup; 0 for background (a zero normal). */
 static int setup_pixel(const struct job *j, int x, int y, struct pixel *px)
@@ -55,6 +74,8 @@ static int setup_pixel(const struct job *j, int x, int y, struct pixel *px)
     ssg_turned_basis(pt.n, sa[1], px->t, px->b);
     for (int i = 0; i < 3; i++)
         px->o[i] = pt.o[i], px->n[i] = pt.n[i];
+    ssg_trace_face_normal(j->scene, c->eye, &pt, px->ng);
+    px->clipped = px->ng[0] != px->n[0] || px->ng[1] != px->n[1] || px->ng[2] != px->n[2];
     return 1;
 }
 
@@ -72,7 +93,8 @@ static float trace_pixel(const struct job *j, const struct pixel *px, struct bat
                         px->b, px->n, k->dx, k->dy, k->dz);
         struct ssg_rays rays = {count, k->ox, k->oy, k->oz, k->dx, k->dy, k->dz, 0.0f,
                                 j->c->p.max_distance};
-        occluded += ssg_rt_occluded_rays(j->rt, &rays, NULL);
+        occluded += px->clipped ? occluded_clipped(j, px, k, &rays)
+                                : ssg_rt_occluded_rays(j->rt, &rays, NULL);
     }
     return (float)(n - occluded) / (float)n;
 }
@@ -102,7 +124,7 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
                     ctx->instance ? ctx->instance : "");
         return SSG_E_SIZE;
     }
-    struct job j = {.c = consts, .rt = ctx->scene->rt, .out = out->data, .w = pos->width,
+    struct job j = {.c = consts, .rt = ctx->scene->rt, .scene = ctx->scene, .out = out->data, .w = pos->width,
                     .h = pos->height};
     for (int i = 0; i < 3; i++) {
         j.pos[i] = ssg_image_plane(pos, i);

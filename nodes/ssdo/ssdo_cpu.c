@@ -384,7 +384,7 @@ chunk_body(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
+static void ssdo_chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
                       int y, int x0, int len)
 {
     if (j->cnt)
@@ -401,7 +401,7 @@ static void band(void *user, int y0, int y1)
     for (int x0 = 0; x0 < j->s.w; x0 += CHUNK) {
         int len = j->s.w - x0 < CHUNK ? j->s.w - x0 : CHUNK;
         for (int y = y0; y < y1; y++)
-            chunk_row(j, &k, &lc, y, x0, len);
+            ssdo_chunk_row(j, &k, &lc, y, x0, len);
     }
 }
 

@@ -149,7 +149,7 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void add_taps(const struct job *j, struct chunk *k, int y, int x0)
+static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x0)
 {
     const int r = j->c->radius, ly = y / j->k, normals = j->lnrm[0] && j->c->normal_power > 0;
     const float ks = j->c->spatial_k, v = ((float)y + 0.5f) / (float)j->k - 0.5f;
@@ -227,7 +227,7 @@ static void band(void *user, int y0, int y1)
         for (int x0 = 0; x0 < j->w; x0 += cw) {
             int len = j->w - x0 < cw ? j->w - x0 : cw;
             setup_chunk(j, &k, y, x0, len, cw);
-            add_taps(j, &k, y, x0);
+            upsample_add_taps(j, &k, y, x0);
             finish_chunk(j, &k, y, x0);
         }
 }

@@ -33,9 +33,10 @@ static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
     }
 }
 
-/* The EXR: the main image, then each extra input as a layer named by its key. */
-static enum ssg_err write_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                              const struct ssg_write_params *p, const char *path)
+/* The EXR, staged: the main image, then each extra input as a layer named by its key. */
+static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                              const struct ssg_write_params *p, const char *path,
+                              struct ssg_tmp *t)
 {
     enum { MAX_LAYERS = 64 };
     struct ssg_exr_layer layers[MAX_LAYERS];
@@ -57,8 +58,8 @@ static enum ssg_err write_exr(const struct ssg_node_ctx *ctx, const struct ssg_i
             return SSG_E_TYPE;
         }
     }
-    return ssg_exr_write_compressed(path, layers, io->extra_count + 1,
-                                    (enum ssg_exr_compression)p->compression, ctx->diags);
+    return ssg_exr_stage(path, layers, io->extra_count + 1,
+                         (enum ssg_exr_compression)p->compression, t, ctx->diags);
 }
 
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -76,11 +77,22 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
         return SSG_E_MISSING_INPUT;
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
+    /* Both files are staged before either is renamed into place: a failure (or a kill)
+       while writing leaves the previous EXR and PNG together, never a new EXR beside an
+       old PNG. */
+    struct ssg_tmp staged[2];
+    int n = 0;
     enum ssg_err err = ssg_make_dirs(dir, ctx->diags);
     if (!err && p->exr && !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
-        err = write_exr(ctx, io, p, path);
+        if (!(err = stage_exr(ctx, io, p, path, &staged[n])))
+            n++;
     if (!err && p->png && !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
-        err = ssg_png_write(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
-                            ctx->diags);
-    return err;
+        if (!(err = ssg_png_stage(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
+                                  &staged[n], ctx->diags)))
+            n++;
+    if (err) {
+        ssg_tmp_discard(staged, n);
+        return err;
+    }
+    return ssg_tmp_commit(staged, n, ctx->diags);
 }

@@ -1,0 +1,82 @@
+/* files.h - the rules every file ssgraph reads or writes follows, in one place.
+ *
+ * Reading: an input must be a regular file (a FIFO would block, /dev/zero never ends, a
+ * directory is no image) and no larger than the limit of its kind; the check happens on
+ * the open descriptor, so a file swapped after a stat cannot slip through.
+ *
+ * Writing: an output appears whole or not at all. It is written under a hidden temporary
+ * name in its own folder, created with O_EXCL | O_NOFOLLOW (a symbolic link planted there
+ * is never followed, a name never shared), flushed and synced with every error checked
+ * (a full disk is an error, not a short file), and renamed over the target only then; a
+ * rename replaces a link at the target rather than writing through it. Several outputs of
+ * one node are all staged before any is renamed. Temporaries are registered: the CLI's
+ * signal handler removes them (ssg_tmp_remove_all), and a temporary left by a process that
+ * was killed outright (SIGKILL) is removed by the next write into that folder.
+ *
+ * Thread safety: staging and committing may run on any thread; the registry holds at most
+ * SSG_TMP_MAX live temporaries at once (more is an error, not a leak). */
+#ifndef SSG_FILES_H
+#define SSG_FILES_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "ssgraph.h"
+
+/* Largest files read, bytes: each kind is refused past its limit before it is read. */
+#define SSG_MAX_TEXT_BYTES (16LL << 20)   /* graph and scene files */
+#define SSG_MAX_MODEL_BYTES (1LL << 30)   /* a glTF, .glb or one of its buffers/images */
+#define SSG_MAX_IMAGE_BYTES (2LL << 30)   /* an image: EXR, PNG, HDR, ... */
+
+/* Opens path for reading when it is a regular file of at most max_bytes; -1 with the
+ * reason in why (e.g. "not a regular file (a FIFO)") otherwise. The caller closes it. */
+int ssg_input_open(const char *path, long long max_bytes, char *why, size_t why_len);
+
+/* ssg_input_open and close: SSG_OK, or SSG_E_IO (cannot open, not regular) or SSG_E_SIZE
+ * (too large) with the reason in why. */
+enum ssg_err ssg_input_check(const char *path, long long max_bytes, char *why,
+                             size_t why_len);
+
+/* Reads a whole input (ssg_input_open's rules) into malloc'd memory with a NUL after the
+ * last byte; *len excludes it. */
+enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, size_t *len,
+                            char *why, size_t why_len);
+
+#define SSG_TMP_MAX 64
+
+/* One output being written: the temporary (open as fd until ssg_tmp_close) and its
+ * target. */
+struct ssg_tmp {
+    char path[4200];  /* the temporary: <dir>/.<stem>.tmp-<pid>-<n><ext> */
+    char target[4096];
+    int fd;           /* -1 once closed */
+    int slot;         /* registry slot, -1 = none */
+};
+
+/* Creates the temporary of `target` (ext: its extension with the dot, which OpenImageIO
+ * reads to pick the format; "" for none; `what` names the content in messages, "image"),
+ * registered for removal on a signal. Also removes temporaries of dead processes in that
+ * folder. */
+enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
+                            struct ssg_tmp *t, struct ssg_diags *diags);
+/* Flushes, syncs and closes t's descriptor: SSG_OK only if every byte reached the disk. */
+enum ssg_err ssg_tmp_close(struct ssg_tmp *t, struct ssg_diags *diags);
+/* Renames every closed temporary over its target, in order; on any failure the rest are
+ * discarded. */
+enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diags);
+/* Removes the temporaries (closing them first) and unregisters them. */
+void ssg_tmp_discard(struct ssg_tmp *t, int count);
+
+/* Async-signal-safe: unlinks every registered temporary. For a signal handler. */
+void ssg_tmp_remove_all(void);
+/* Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporaries,
+ * then die of the same signal. For programs (the CLI); a library user keeps its own. */
+void ssg_tmp_remove_on_signals(void);
+
+/* Writes a text file whole or not at all through a temporary (above): fill() writes into
+ * it. `what` names the content in error messages ("metrics", "profile"). */
+enum ssg_err ssg_write_text_file(const char *path, const char *what,
+                                 void (*fill)(FILE *f, const void *user), const void *user,
+                                 struct ssg_diags *diags);
+
+#endif
