@@ -7,6 +7,10 @@
  * Failure inside this file and caught in ssg_gltf_load: no exception leaves it. */
 #include "gltf.h"
 
+extern "C" {
+#include "files.h"
+}
+
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -14,6 +18,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <new>
 #include <string>
 #include <vector>
@@ -110,6 +115,22 @@ std::string accessor_name(int index)
     return "accessor " + std::to_string(index);
 }
 
+/* Elements one accessor may hold: a scene takes at most 16 M triangles (scene_build.h),
+   so 64 M vertices or indices is past anything it could use; the limit keeps a forged
+   count from asking for gigabytes before anything is read. */
+const size_t MAX_ACCESSOR_ELEMENTS = (size_t)64 << 20;
+
+/* a + b and a * b into *out; false when they overflow size_t (a forged count or offset). */
+bool add_ok(size_t a, size_t b, size_t *out)
+{
+    return !__builtin_add_overflow(a, b, out);
+}
+
+bool mul_ok(size_t a, size_t b, size_t *out)
+{
+    return !__builtin_mul_overflow(a, b, out);
+}
+
 AccessorView view_accessor(const tinygltf::Model &model, int index)
 {
     if (index < 0 || (size_t)index >= model.accessors.size())
@@ -129,9 +150,24 @@ AccessorView view_accessor(const tinygltf::Model &model, int index)
     if (stride <= 0 || comp_size <= 0 || comps <= 0)
         fail(accessor_name(index) + " has an invalid type or stride");
     size_t elem = (size_t)comp_size * (size_t)comps;
-    size_t need = acc.count ? acc.byteOffset + (acc.count - 1) * (size_t)stride + elem : 0;
-    if (bv.byteOffset + bv.byteLength > buf.size() || need > bv.byteLength)
-        fail(accessor_name(index) + " reads past the end of its buffer (missing or short .bin?)");
+    if ((size_t)stride < elem)
+        fail(accessor_name(index) + ": byteStride " + std::to_string(stride) +
+             " is smaller than its element of " + std::to_string(elem) + " bytes");
+    if (acc.count > MAX_ACCESSOR_ELEMENTS)
+        fail(accessor_name(index) + " has " + std::to_string(acc.count) +
+             " elements (expected at most " + std::to_string(MAX_ACCESSOR_ELEMENTS) + ")");
+    /* Every byte the accessor reads lies inside its view, and the view inside its buffer,
+       computed without overflow whatever the file claims. */
+    size_t need = 0, view_end = 0, span = 0;
+    bool ok = acc.count == 0 ||
+              (mul_ok(acc.count - 1, (size_t)stride, &span) && add_ok(span, elem, &span) &&
+               add_ok(span, acc.byteOffset, &need));
+    ok = ok && add_ok(bv.byteOffset, bv.byteLength, &view_end) && view_end <= buf.size() &&
+         need <= bv.byteLength;
+    if (!ok)
+        fail(accessor_name(index) + " reads past the end of its buffer (count " +
+             std::to_string(acc.count) + ", stride " + std::to_string(stride) +
+             "; a missing or short .bin, or a forged count?)");
     return {buf.data() + bv.byteOffset + acc.byteOffset, acc.count, (size_t)stride,
             acc.componentType, comps, acc.normalized};
 }
@@ -166,10 +202,19 @@ std::vector<float> read_floats(const tinygltf::Model &model, int index, int comp
              " components, expected " + std::to_string(components));
     int size = tinygltf::GetComponentSizeInBytes((uint32_t)v.component_type);
     std::vector<float> out(v.count * (size_t)components);
-    for (size_t i = 0; i < v.count; i++)
-        for (int c = 0; c < components; c++)
-            out[i * (size_t)components + (size_t)c] = (float)read_component(
-                v.data + i * v.stride + (size_t)(c * size), v.component_type, v.normalized);
+    for (size_t i = 0; i < v.count; i++) {
+        for (int c = 0; c < components; c++) {
+            float x = (float)read_component(v.data + i * v.stride + (size_t)(c * size),
+                                            v.component_type, v.normalized);
+            /* NaN or infinity in a vertex would vanish into the ray tracer (or poison the
+               bounds and the camera): refused, with where it is. */
+            if (!std::isfinite(x))
+                fail(accessor_name(index) + " element " + std::to_string(i) + " component " +
+                     std::to_string(c) + " is " + (std::isnan(x) ? "NaN" : "infinite") +
+                     " (expected finite values)");
+            out[i * (size_t)components + (size_t)c] = x;
+        }
+    }
     return out;
 }
 
@@ -526,25 +571,68 @@ void free_partial(ssg_gltf *g)
     std::free(g);
 }
 
-/* Opens the file first so a missing one is an I/O error, and sniffs the binary magic. */
-bool is_binary_gltf(const char *path)
+/* tinygltf reads the buffers and images a glTF names through this: the same rules as
+   every input (files.h): a regular file, at most SSG_MAX_MODEL_BYTES. A buffer URI naming
+   /dev/zero or a FIFO is refused instead of read without end. */
+bool read_whole_file(std::vector<unsigned char> *out, std::string *err,
+                     const std::string &path, void *)
 {
-    FILE *f = std::fopen(path, "rb");
-    if (!f)
-        throw Failure{SSG_E_IO, std::string("cannot open: ") + std::strerror(errno)};
-    char magic[4] = {0, 0, 0, 0};
-    size_t n = std::fread(magic, 1, 4, f);
-    std::fclose(f);
-    return n == 4 && std::memcmp(magic, "glTF", 4) == 0;
+    char *data = nullptr, why[256];
+    size_t len = 0;
+    if (ssg_input_read(path.c_str(), SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why)) {
+        if (err)
+            *err += path + ": " + why + "\n";
+        return false;
+    }
+    out->assign(data, data + len);
+    std::free(data);
+    return true;
+}
+
+bool file_exists(const std::string &path, void *)
+{
+    char why[256];
+    return ssg_input_check(path.c_str(), SSG_MAX_MODEL_BYTES, why, sizeof why) == SSG_OK;
+}
+
+std::string expand_nothing(const std::string &path, void *)
+{
+    return path;
+}
+
+bool write_nothing(std::string *err, const std::string &, const std::vector<unsigned char> &,
+                   void *)
+{
+    if (err)
+        *err += "ssgraph does not write glTF files";
+    return false;
+}
+
+std::string base_dir(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    return slash ? std::string(path, (size_t)(slash - path)) : std::string(".");
 }
 
 ssg_gltf *load(const char *path)
 {
+    char *data = nullptr, why[256];
+    size_t len = 0;
+    enum ssg_err e = ssg_input_read(path, SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why);
+    if (e)
+        throw Failure{e, why};
+    std::unique_ptr<char, decltype(&std::free)> owned(data, &std::free);
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
-    std::string err, warn;
-    bool ok = is_binary_gltf(path) ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    loader.SetFsCallbacks({file_exists, expand_nothing, read_whole_file, write_nothing, nullptr});
+    std::string err, warn, dir = base_dir(path);
+    const unsigned char *bytes = reinterpret_cast<const unsigned char *>(data);
+    bool binary = len >= 4 && std::memcmp(data, "glTF", 4) == 0;
+    if (len > 0xffffffffu)
+        fail("file too large for tinygltf (4 GiB)");
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes,
+                                                   (unsigned)len, dir)
+                     : loader.LoadASCIIFromString(&model, &err, &warn, data, (unsigned)len, dir);
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
         for (char &c : err) /* one printable line: JSON errors quote raw bytes of the file */

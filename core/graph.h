@@ -52,6 +52,10 @@ struct ssg_graph {
     int64_t seed;
     struct gnode *nodes;
     int count, cap;
+    int *name_slots;           /* open-addressing table of node index + 1 by name (0 =
+                                  empty), name_cap slots, at most half full: a lookup is
+                                  O(1), so building and checking stay linear */
+    int name_cap;
     int *order;                /* run order: node indices, live nodes only */
     int order_count;
     struct ssg_scene *scene;

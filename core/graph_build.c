@@ -10,15 +10,21 @@
 
 #include "graph.h"
 
-enum { MAX_INCLUDE_DEPTH = 16 };
+/* What one graph may ask of the builder, each refused with a message: includes nest at
+   most MAX_INCLUDE_DEPTH deep; at most MAX_FILES_READ file reads in all (the same file
+   included twice counts twice, so 15 levels of 8 includes of one file stop early rather
+   than reading 8^15 copies); at most MAX_STATEMENTS statements in all. */
+enum { MAX_INCLUDE_DEPTH = 16, MAX_FILES_READ = 1024, MAX_STATEMENTS = 200000 };
 
 struct builder {
     struct ssg_graph *g;
     struct ssg_diags *diags;
-    const struct ssg_stmt *sets[1024];
-    int set_count;
+    const struct ssg_stmt **sets; /* set lines in file order, applied after every call */
+    int set_count, set_cap;
     const char *stack[MAX_INCLUDE_DEPTH]; /* files being read, for include cycles */
     int depth;
+    int files_read, statements;         /* against the limits above */
+    int limit_hit;                        /* 1 = a limit was reported: read nothing more */
     int anonymous;
     enum ssg_err first;
 };
@@ -29,12 +35,51 @@ static void fail(struct builder *b, enum ssg_err e)
         b->first = e;
 }
 
+static unsigned name_hash(const char *name, size_t len)
+{
+    unsigned h = 2166136261u; /* FNV-1a */
+    for (size_t i = 0; i < len; i++)
+        h = (h ^ (unsigned char)name[i]) * 16777619u;
+    return h;
+}
+
 int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len)
 {
-    for (int i = 0; i < g->count; i++)
-        if (ssg_tok_eq(name, len, g->nodes[i].name))
-            return i;
+    if (!g->name_cap)
+        return -1;
+    unsigned mask = (unsigned)g->name_cap - 1;
+    for (unsigned s = name_hash(name, len) & mask; g->name_slots[s]; s = (s + 1) & mask)
+        if (ssg_tok_eq(name, len, g->nodes[g->name_slots[s] - 1].name))
+            return g->name_slots[s] - 1;
     return -1;
+}
+
+static void name_insert(struct ssg_graph *g, int index)
+{
+    const char *name = g->nodes[index].name;
+    unsigned mask = (unsigned)g->name_cap - 1;
+    unsigned s = name_hash(name, strlen(name)) & mask;
+    while (g->name_slots[s])
+        s = (s + 1) & mask;
+    g->name_slots[s] = index + 1;
+}
+
+/* Adds node `index` (named) to the name table, growing it to keep it at most half full. */
+static int name_add(struct ssg_graph *g, int index)
+{
+    if (2 * (index + 1) > g->name_cap) {
+        int cap = g->name_cap ? 2 * g->name_cap : 64;
+        int *slots = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *slots);
+        if (!slots)
+            return 0;
+        memset(slots, 0, (size_t)cap * sizeof *slots);
+        g->name_slots = slots;
+        g->name_cap = cap;
+        for (int i = 0; i < index; i++)
+            name_insert(g, i);
+    }
+    name_insert(g, index);
+    return 1;
 }
 
 static void node_list(char *buf, size_t len)
@@ -86,6 +131,11 @@ static struct gnode *add_node(struct builder *b, const struct ssg_stmt *st)
         char anon[96];
         snprintf(anon, sizeof anon, "%s_%d", desc->name, ++b->anonymous);
         n->name = ssg_arena_strndup(&g->arena, anon, strlen(anon));
+    }
+    if (!n->name || !name_add(g, g->count - 1)) {
+        g->count--;
+        fail(b, SSG_E_NOMEM);
+        return NULL;
     }
     n->params = ssg_arena_alloc(&g->arena, desc->params_size ? desc->params_size : 1);
     if (n->params)
@@ -329,6 +379,54 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
     }
 }
 
+/* "a.graph -> b.graph -> c.graph": the files being read, for messages. */
+static void include_chain(const struct builder *b, char *buf, size_t len)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < b->depth && n < len; i++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", i ? " -> " : "", b->stack[i]);
+}
+
+/* 0 with a message once the graph asks for more files or statements than allowed. */
+static int within_limits(struct builder *b, struct ssg_loc from, int more_statements)
+{
+    if (b->limit_hit)
+        return 0;
+    const char *what = NULL;
+    int limit = 0;
+    if (b->files_read > MAX_FILES_READ)
+        what = "files read (includes, counting repeats)", limit = MAX_FILES_READ;
+    else if ((b->statements += more_statements) > MAX_STATEMENTS)
+        what = "statements", limit = MAX_STATEMENTS;
+    if (!what)
+        return 1;
+    char chain[1024];
+    include_chain(b, chain, sizeof chain);
+    ssg_diag_at(b->diags, SSG_E_INCLUDE, from, "the graph needs more than %d %s (expected a "
+                "graph that includes fewer files; reading %s)", limit, what, chain);
+    fail(b, SSG_E_INCLUDE);
+    b->limit_hit = 1;
+    return 0;
+}
+
+static void add_set(struct builder *b, const struct ssg_stmt *st)
+{
+    if (b->set_count == b->set_cap) {
+        int cap = b->set_cap ? 2 * b->set_cap : 64;
+        const struct ssg_stmt **sets = ssg_arena_alloc(&b->g->arena, (size_t)cap * sizeof *sets);
+        if (!sets) {
+            fail(b, SSG_E_NOMEM);
+            return;
+        }
+        if (b->set_count)
+            memcpy(sets, b->sets, (size_t)b->set_count * sizeof *sets);
+        b->sets = sets;
+        b->set_cap = cap;
+    }
+    b->sets[b->set_count++] = st;
+}
+
 static int include_cycle(struct builder *b, const char *path, struct ssg_loc from)
 {
     for (int i = 0; i < b->depth; i++) {
@@ -352,6 +450,9 @@ static void read_file(struct builder *b, const char *path, struct ssg_loc from)
         fail(b, SSG_E_INCLUDE);
         return;
     }
+    b->files_read++;
+    if (!within_limits(b, from, 0))
+        return;
     struct ssg_file file;
     enum ssg_err e = ssg_parse_file(&b->g->arena, path, from, &file, b->diags);
     if (e)
@@ -359,14 +460,16 @@ static void read_file(struct builder *b, const char *path, struct ssg_loc from)
     if (!file.src)
         return;
     b->stack[b->depth++] = file.src->path;
-    for (int i = 0; i < file.count; i++) {
-        const struct ssg_stmt *st = &file.stmts[i];
-        if (st->kind == SSG_S_DIRECTIVE)
-            directive(b, st);
-        else if (st->kind == SSG_S_CALL)
-            add_node(b, st);
-        else if (b->set_count < (int)(sizeof b->sets / sizeof b->sets[0]))
-            b->sets[b->set_count++] = st;
+    if (within_limits(b, from, file.count)) {
+        for (int i = 0; i < file.count && !b->limit_hit; i++) {
+            const struct ssg_stmt *st = &file.stmts[i];
+            if (st->kind == SSG_S_DIRECTIVE)
+                directive(b, st);
+            else if (st->kind == SSG_S_CALL)
+                add_node(b, st);
+            else
+                add_set(b, st);
+        }
     }
     b->depth--;
 }

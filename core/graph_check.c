@@ -89,13 +89,37 @@ static void check_required(struct checker *c, struct gnode *n)
              conn; conn = NULL)                                                             \
             if (conn->node >= 0)
 
-static void mark_live(struct ssg_graph *g, int i)
+/* Marks node i and everything it reads as live, with an explicit stack: a chain of a
+   hundred thousand nodes must not recurse that deep. */
+static int mark_live(struct ssg_graph *g, int i)
 {
-    struct gnode *n = &g->nodes[i];
-    if (n->live)
-        return;
-    n->live = 1;
-    FOR_EACH_INPUT(n, conn) mark_live(g, conn->node);
+    size_t cap = 64, top = 0;
+    int *stack = malloc(cap * sizeof *stack);
+    if (!stack)
+        return 0;
+    stack[top++] = i;
+    while (top) {
+        struct gnode *n = &g->nodes[stack[--top]];
+        if (n->live)
+            continue;
+        n->live = 1;
+        FOR_EACH_INPUT(n, conn) {
+            if (g->nodes[conn->node].live)
+                continue;
+            if (top == cap) {
+                int *grown = realloc(stack, 2 * cap * sizeof *stack);
+                if (!grown) {
+                    free(stack);
+                    return 0;
+                }
+                stack = grown;
+                cap *= 2;
+            }
+            stack[top++] = conn->node;
+        }
+    }
+    free(stack);
+    return 1;
 }
 
 /* Follows inputs among unordered nodes from `start` until one repeats: that is a cycle. */
@@ -128,42 +152,104 @@ static void report_cycle(struct checker *c, const int *unordered, int start)
     free(seen);
 }
 
+/* A binary min-heap of node indices: the ready nodes, earliest-defined first. */
+struct heap {
+    int *v;
+    int n;
+};
+
+static void heap_push(struct heap *h, int x)
+{
+    int i = h->n++;
+    for (; i > 0 && h->v[(i - 1) / 2] > x; i = (i - 1) / 2)
+        h->v[i] = h->v[(i - 1) / 2];
+    h->v[i] = x;
+}
+
+static int heap_pop(struct heap *h)
+{
+    int top = h->v[0], last = h->v[--h->n], i = 0;
+    for (;;) {
+        int c = 2 * i + 1;
+        if (c >= h->n)
+            break;
+        if (c + 1 < h->n && h->v[c + 1] < h->v[c])
+            c++;
+        if (h->v[c] >= last)
+            break;
+        h->v[i] = h->v[c];
+        i = c;
+    }
+    if (h->n)
+        h->v[i] = last;
+    return top;
+}
+
+/* The consumers of every node, as one array (CSR): the readers of node p are
+   reader[first[p]] .. reader[first[p + 1] - 1], one entry per connection. */
+struct readers {
+    int *first, *reader;
+};
+
+static int readers_build(const struct ssg_graph *g, struct readers *r)
+{
+    r->first = calloc((size_t)g->count + 1, sizeof *r->first);
+    size_t edges = 0;
+    for (int i = 0; r->first && i < g->count; i++)
+        FOR_EACH_INPUT(&g->nodes[i], conn) r->first[conn->node + 1]++, edges++;
+    r->reader = malloc((edges ? edges : 1) * sizeof *r->reader);
+    int *fill = calloc((size_t)g->count + 1, sizeof *fill);
+    if (!r->first || !r->reader || !fill) {
+        free(fill);
+        return 0;
+    }
+    for (int p = 0; p < g->count; p++)
+        r->first[p + 1] += r->first[p];
+    for (int i = 0; i < g->count; i++)
+        FOR_EACH_INPUT(&g->nodes[i], conn) r->reader[r->first[conn->node] + fill[conn->node]++] = i;
+    free(fill);
+    return 1;
+}
+
 /* Kahn's algorithm over live nodes, taking the earliest-defined ready node first so the
- * run order is stable and follows the file where it can. */
+ * run order is stable and follows the file where it can; O(E log V) with the heap. */
 static void order_nodes(struct checker *c)
 {
     struct ssg_graph *g = c->g;
-    int *done = calloc((size_t)g->count, sizeof *done);
+    int *waiting = calloc((size_t)g->count + 1, sizeof *waiting); /* unfinished inputs */
+    struct heap ready = {malloc(((size_t)g->count + 1) * sizeof(int)), 0};
+    struct readers r = {0};
     g->order = ssg_arena_alloc(&g->arena, (size_t)(g->count ? g->count : 1) * sizeof *g->order);
-    if (!done || !g->order) {
-        free(done);
+    if (!waiting || !ready.v || !g->order || !readers_build(g, &r)) {
         fail(c, SSG_E_NOMEM);
-        return;
+        goto done;
+    }
+    for (int i = 0; i < g->count; i++) {
+        FOR_EACH_INPUT(&g->nodes[i], conn) waiting[i]++;
+        if (g->nodes[i].live && !waiting[i])
+            heap_push(&ready, i);
     }
     g->order_count = 0;
-    for (int progress = 1; progress;) {
-        progress = 0;
-        for (int i = 0; i < g->count; i++) {
-            struct gnode *n = &g->nodes[i];
-            int ready = n->live && !done[i];
-            FOR_EACH_INPUT(n, conn) ready = ready && done[conn->node];
-            if (ready) {
-                done[i] = 1;
-                g->order[g->order_count++] = i;
-                progress = 1;
-                break;
-            }
-        }
+    while (ready.n) {
+        int i = heap_pop(&ready);
+        g->order[g->order_count++] = i;
+        for (int k = r.first[i]; k < r.first[i + 1]; k++)
+            if (--waiting[r.reader[k]] == 0 && g->nodes[r.reader[k]].live)
+                heap_push(&ready, r.reader[k]);
     }
     for (int i = 0; i < g->count; i++)
-        done[i] = g->nodes[i].live && !done[i]; /* now: 1 = stuck on a cycle */
+        waiting[i] = g->nodes[i].live && waiting[i] > 0; /* now: 1 = stuck on a cycle */
     for (int i = 0; i < g->count; i++) {
-        if (done[i]) {
-            report_cycle(c, done, i);
+        if (waiting[i]) {
+            report_cycle(c, waiting, i);
             break;
         }
     }
-    free(done);
+done:
+    free(waiting);
+    free(ready.v);
+    free(r.first);
+    free(r.reader);
 }
 
 static int check_type(struct checker *c, const struct gnode *n, const char *port,
@@ -255,6 +341,52 @@ static void resolve_backend(struct checker *c, struct gnode *n)
     n->runs_on = want == SSG_BACKEND_GL && n->desc->run_gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU;
 }
 
+/* Live nodes that would write the same files (output_stem): sorted by stem, then by
+   position in the file, so each clash is reported once, at its later node. */
+struct writer {
+    const char *stem;
+    int node;
+};
+
+static int by_stem(const void *a, const void *b)
+{
+    const struct writer *wa = a, *wb = b;
+    int s = strcmp(wa->stem, wb->stem);
+    return s ? s : wa->node - wb->node;
+}
+
+static void check_output_clash(struct checker *c)
+{
+    struct ssg_graph *g = c->g;
+    struct writer *w = malloc(((size_t)g->count + 1) * sizeof *w);
+    int n = 0;
+    if (!w) {
+        fail(c, SSG_E_NOMEM);
+        return;
+    }
+    for (int i = 0; i < g->count; i++) {
+        const struct gnode *node = &g->nodes[i];
+        const char *stem = node->live && node->desc->output_stem
+                               ? node->desc->output_stem(node->params) : NULL;
+        if (stem)
+            w[n++] = (struct writer){stem, i};
+    }
+    qsort(w, (size_t)n, sizeof *w, by_stem);
+    for (int k = 1; k < n; k++) {
+        if (strcmp(w[k - 1].stem, w[k].stem))
+            continue;
+        const struct gnode *first = &g->nodes[w[k - 1].node], *again = &g->nodes[w[k].node];
+        int line, col;
+        ssg_loc_linecol(first->loc, &line, &col);
+        ssg_diag_at(c->diags, SSG_E_DUPLICATE, again->loc, "node '%s' (%s) writes '%s', as "
+                    "node '%s' at %s:%d:%d does: its files would replace the other's "
+                    "(expected a different name)", again->name, again->desc->name, w[k].stem,
+                    first->name, first->loc.src ? first->loc.src->path : "?", line, col);
+        fail(c, SSG_E_DUPLICATE);
+    }
+    free(w);
+}
+
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
 {
     struct checker c = {g, diags, SSG_OK};
@@ -271,7 +403,8 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
     for (int i = 0; i < g->count; i++) {
         if (g->nodes[i].desc->is_sink) {
             sinks++;
-            mark_live(g, i);
+            if (!mark_live(g, i))
+                fail(&c, SSG_E_NOMEM);
         }
     }
     if (!sinks) {
@@ -280,6 +413,7 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         fail(&c, SSG_E_VALUE);
     }
     order_nodes(&c);
+    check_output_clash(&c);
     if (c.first)
         return c.first;
     for (int p = 0; p < g->order_count; p++)

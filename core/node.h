@@ -115,6 +115,11 @@ struct ssg_node_desc {
     enum ssg_err (*check)(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len);
+    /* Optional, sinks that write files: the file stem the node writes into the output
+       folder under these parameters (write: <name>.exr and <name>.png). Two live nodes
+       with one stem are refused when the graph is checked: the second would silently
+       replace the first's files. */
+    const char *(*output_stem)(const void *params);
     /* Optional. Turns parameters into the constants both backends read (sample kernels,
        projection factors). Called once before run. */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);

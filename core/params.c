@@ -22,6 +22,19 @@ static int bounded(const struct ssg_param_desc *p)
     return !(p->min == 0 && p->max == 0);
 }
 
+/* The range a number must lie in: its own, or for a parameter declared without one
+   (coordinates, offsets) +-SSG_PARAM_ABS_MAX: a float must hold it, and so must its
+   square, or ray tracing and projection overflow (a camera at 3e38 crashed Embree). */
+static double lowest(const struct ssg_param_desc *p)
+{
+    return bounded(p) ? p->min : -SSG_PARAM_ABS_MAX;
+}
+
+static double highest(const struct ssg_param_desc *p)
+{
+    return bounded(p) ? p->max : SSG_PARAM_ABS_MAX;
+}
+
 void ssg_params_defaults(struct ssg_param_table table, void *params)
 {
     for (int i = 0; i < table.count; i++) {
@@ -51,9 +64,8 @@ void ssg_params_defaults(struct ssg_param_table table, void *params)
 /* "a number in [0, 10] px" and the like: what the parameter expects, for messages. */
 static void expected_text(const struct ssg_param_desc *p, char *buf, size_t len)
 {
-    char range[96] = "";
-    if (bounded(p))
-        snprintf(range, sizeof range, " in [%g, %g]", p->min, p->max);
+    char range[96];
+    snprintf(range, sizeof range, " in [%g, %g]", lowest(p), highest(p));
     const char *unit = p->unit ? p->unit : "";
     const char *sp = p->unit ? " " : "";
     switch (p->type) {
@@ -102,7 +114,7 @@ static enum ssg_err check_number(const struct ssg_param_desc *p, const struct ss
         snprintf(got, sizeof got, "%g", v->number);
         return bad_value(p, v, SSG_E_TYPE, owner, got, diags);
     }
-    if (!isfinite(v->number) || (bounded(p) && (v->number < p->min || v->number > p->max)) ||
+    if (!isfinite(v->number) || v->number < lowest(p) || v->number > highest(p) ||
         (want_integer && fabs(v->number) > 2e9)) {
         snprintf(got, sizeof got, "%g", v->number);
         return bad_value(p, v, SSG_E_RANGE, owner, got, diags);

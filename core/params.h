@@ -21,6 +21,10 @@
 #define SSG_NAME_MAX 64
 #define SSG_INTS_MAX 8
 
+/* The magnitude limit of a number parameter declared without a range (min = max = 0):
+ * scene coordinates and the like; past it a value is refused as out of range. */
+#define SSG_PARAM_ABS_MAX 1e9
+
 enum ssg_param_type {
     SSG_P_FLOAT,
     SSG_P_INT,

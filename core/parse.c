@@ -597,28 +597,19 @@ enum ssg_err ssg_parse_text(struct ssg_arena *arena, const char *origin, const c
     return parse_source(arena, src, out, diags);
 }
 
-/* Reads a whole file into the arena; reports at `from` when it cannot. */
+/* Reads a whole file into the arena; reports at `from` when it cannot. Only a regular
+   file of at most MAX_FILE_BYTES is read (files.h): a FIFO or /dev/zero is refused. */
 static struct ssg_source *read_source(struct ssg_arena *arena, const char *path,
                                       struct ssg_loc from, struct ssg_diags *diags)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        if (from.src)
-            ssg_diag_at(diags, SSG_E_IO, from, "cannot open '%s': %s", path, strerror(errno));
-        else
-            ssg_diag_file(diags, SSG_E_IO, path, "cannot open file: %s", strerror(errno));
-        return NULL;
-    }
-    char *buf = malloc(MAX_FILE_BYTES + 1);
-    size_t len = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, f) : 0;
-    int failed = !buf || ferror(f);
-    fclose(f);
+    char *buf = NULL, why[256];
+    size_t len = 0;
+    enum ssg_err e = ssg_input_read(path, MAX_FILE_BYTES, &buf, &len, why, sizeof why);
     struct ssg_source *src = NULL;
-    if (failed)
-        ssg_diag_file(diags, SSG_E_IO, path, "cannot read file");
-    else if (len > MAX_FILE_BYTES)
-        ssg_diag_file(diags, SSG_E_SIZE, path, "file is larger than %d MiB; expected a "
-                      "small text file", MAX_FILE_BYTES >> 20);
+    if (e && from.src)
+        ssg_diag_at(diags, e, from, "cannot read '%s': %s", path, why);
+    else if (e)
+        ssg_diag_file(diags, e, path, "cannot read file: %s", why);
     else if (memchr(buf, 0, len))
         ssg_diag_file(diags, SSG_E_SYNTAX, path, "file contains NUL bytes; expected text");
     else if (!(src = make_source(arena, path, buf, len)))

@@ -76,6 +76,26 @@ static int add_texture(struct scene_loader *l, int width, int height, float *rgb
     return s->texture_count++;
 }
 
+/* A texture with a NaN or infinite pixel would put NaN into every image it shades: it is
+   refused with the file and the first such pixel. */
+static int texture_finite(struct scene_loader *l, const char *path, const struct ssg_image *im)
+{
+    size_t px = (size_t)im->width * (size_t)im->height;
+    for (int c = 0; c < im->channels; c++) {
+        const float *plane = ssg_image_plane(im, c);
+        for (size_t i = 0; i < px; i++) {
+            if (isfinite(plane[i]))
+                continue;
+            ssg_diag_file(l->diags, SSG_E_IMAGE, path, "pixel (%zu, %zu) channel %d is %s "
+                          "(expected finite colours)", i % (size_t)im->width,
+                          i / (size_t)im->width, c, isnan(plane[i]) ? "NaN" : "infinite");
+            ssg_scene_fail(l, SSG_E_IMAGE);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* Reads an image file into an interleaved RGB texture; gray images fill all three. */
 static int load_texture(struct scene_loader *l, const char *rel)
 {
@@ -85,6 +105,10 @@ static int load_texture(struct scene_loader *l, const char *rel)
     enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
     if (e) {
         ssg_scene_fail(l, e);
+        return -1;
+    }
+    if (!texture_finite(l, path, im)) {
+        ssg_image_destroy(&im);
         return -1;
     }
     size_t px = (size_t)im->width * (size_t)im->height;
@@ -155,11 +179,29 @@ static int material_for(struct scene_loader *l, const struct scene_entity *e)
     return e->material >= 0 ? l->material_of[e->material] : default_material(l);
 }
 
+/* 0 with a message at `at` when `more` triangles would take the scene past its limit. */
+static int triangles_fit(struct scene_loader *l, struct ssg_loc at, long long more,
+                         const char *what)
+{
+    if (l->triangles + more <= SSG_SCENE_MAX_TRIANGLES) {
+        l->triangles += more;
+        return 1;
+    }
+    ssg_diag_at(l->diags, SSG_E_SIZE, at, "%s has %lld triangles, which takes the scene past "
+                "its limit of %lld (expected fewer subdivisions or a lighter model)", what,
+                more, SSG_SCENE_MAX_TRIANGLES);
+    ssg_scene_fail(l, SSG_E_SIZE);
+    return 0;
+}
+
 static void build_shape(struct scene_loader *l, const struct scene_entity *e)
 {
     const struct shape_args *a = e->args;
     struct ssg_mesh mesh;
     enum ssg_err err;
+    long long tris = e->kind == SK_SPHERE ? 4LL * a->subdivisions * (a->subdivisions - 1) : 12;
+    if (!triangles_fit(l, e->stmt->callee_loc, tris, "this shape"))
+        return;
     if (e->kind == SK_PLANE)
         err = ssg_shape_plane(a->center, a->size, a->normal, &mesh);
     else if (e->kind == SK_BOX)
@@ -215,6 +257,26 @@ static void place_camera(struct ssg_camera *c, const struct mesh_args *a)
         c->up[i] = r[3 * i] * u[0] + r[3 * i + 1] * u[1] + r[3 * i + 2] * u[2];
 }
 
+/* Placed vertices must be finite and within +-SSG_PARAM_ABS_MAX, like every coordinate
+   a scene file may write: past that, ray tracing and projection overflow. */
+static int vertices_in_range(struct scene_loader *l, const struct scene_entity *e,
+                             const struct ssg_mesh *m, int index)
+{
+    const struct mesh_args *a = e->args;
+    for (size_t i = 0; i < 3 * (size_t)m->vertex_count; i++) {
+        if (fabsf(m->positions[i]) <= SSG_PARAM_ABS_MAX)
+            continue;
+        ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: primitive %d vertex %zu is at "
+                    "(%g, %g, %g) after translate, rotate and scale (expected finite "
+                    "coordinates within +-%g)", a->file, index, i / 3,
+                    (double)m->positions[i - i % 3], (double)m->positions[i - i % 3 + 1],
+                    (double)m->positions[i - i % 3 + 2], SSG_PARAM_ABS_MAX);
+        ssg_scene_fail(l, SSG_E_VALUE);
+        return 0;
+    }
+    return 1;
+}
+
 static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int *camera_set)
 {
     const struct mesh_args *a = e->args;
@@ -227,21 +289,44 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
         ssg_scene_fail(l, err);
         return;
     }
+    long long tris = 0;
+    for (int i = 0; i < g->mesh_count; i++)
+        tris += g->meshes[i].triangle_count;
+    if (!triangles_fit(l, e->at[0], tris, a->file)) {
+        ssg_gltf_destroy(&g);
+        return;
+    }
     int first = e->material < 0 ? import_gltf_materials(l, g, a->file) : 0;
     for (int i = 0; i < g->mesh_count && !l->first; i++) {
         struct ssg_mesh mesh = g->meshes[i];
         memset(&g->meshes[i], 0, sizeof g->meshes[i]); /* the arrays are now ours */
         ssg_mesh_place(&mesh, a->translate, a->rotate, a->scale);
+        if (!vertices_in_range(l, e, &mesh, i)) {
+            ssg_mesh_free(&mesh);
+            break;
+        }
         if (e->material >= 0)
             mesh.material = l->material_of[e->material];
         else
             mesh.material = mesh.material >= 0 ? first + mesh.material : default_material(l);
         add_mesh(l, &mesh);
     }
-    if (g->has_camera && !*camera_set) {
+    if (g->has_camera && !*camera_set && !l->first) {
         l->scene->camera = g->camera;
         place_camera(&l->scene->camera, a);
         *camera_set = 1;
+        const struct ssg_camera *c = &l->scene->camera;
+        for (int i = 0; i < 3; i++) {
+            if (fabsf(c->position[i]) <= SSG_PARAM_ABS_MAX &&
+                fabsf(c->target[i]) <= SSG_PARAM_ABS_MAX)
+                continue;
+            ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: its camera is at (%g, %g, %g) "
+                        "(expected finite coordinates within +-%g)", a->file,
+                        (double)c->position[0], (double)c->position[1],
+                        (double)c->position[2], SSG_PARAM_ABS_MAX);
+            ssg_scene_fail(l, SSG_E_VALUE);
+            break;
+        }
     }
     ssg_gltf_destroy(&g);
 }

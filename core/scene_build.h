@@ -82,7 +82,12 @@ struct scene_loader {
     int mesh_cap, material_cap, texture_cap;
     int default_material;           /* index in scene->materials, -1 until first needed */
     int *material_of;               /* entity index -> scene material index */
+    long long triangles;            /* in the scene so far, against SSG_SCENE_MAX_TRIANGLES */
 };
+
+/* At most this many triangles in one scene (about 150 bytes each with the ray-tracing
+ * structure: 2.4 GB), checked before a shape is tessellated and as each glTF is added. */
+#define SSG_SCENE_MAX_TRIANGLES (16LL << 20)
 
 /* Records e as the loader's result if it is the first error. */
 void ssg_scene_fail(struct scene_loader *l, enum ssg_err e);

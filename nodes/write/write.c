@@ -76,6 +76,11 @@ static enum ssg_err write_check(const void *params, const struct ssg_frame *fram
     return SSG_OK;
 }
 
+static const char *output_stem(const void *params)
+{
+    return ((const struct ssg_write_params *)params)->name;
+}
+
 const struct ssg_node_desc ssg_node_write = {
     .name = "write",
     .summary = "write the image as a float EXR with named layers and an 8-bit PNG preview",
@@ -99,5 +104,6 @@ const struct ssg_node_desc ssg_node_write = {
     .params_size = sizeof(struct ssg_write_params),
     .is_sink = 1,
     .check = write_check,
+    .output_stem = output_stem,
     .run_cpu = ssg_write_run_cpu,
 };
