@@ -248,20 +248,27 @@ enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *wha
     snprintf(t->target, sizeof t->target, "%s", target);
     split_path(target, dir, sizeof dir, &base);
     remove_stale(dir);
-    snprintf(t->path, sizeof t->path, "%s.%s.tmp-%ld-%u%s", dir, base, (long)getpid(),
-             atomic_fetch_add(&counter, 1u), ext);
-    t->slot = registry_add(t->path);
-    if (t->slot < 0) {
+    /* A name that exists already (planted, or left by a process with a reused pid) is
+       skipped, never opened: O_EXCL | O_NOFOLLOW. */
+    for (int tries = 0; tries < 100 && t->fd < 0; tries++) {
+        snprintf(t->path, sizeof t->path, "%s.%s.tmp-%ld-%u%s", dir, base, (long)getpid(),
+                 atomic_fetch_add(&counter, 1u), ext);
+        t->fd = open(t->path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (t->fd < 0 && errno != EEXIST)
+            break;
+    }
+    /* Registered once it is ours: a signal before this leaves it for remove_stale. */
+    if (t->fd >= 0 && (t->slot = registry_add(t->path)) < 0) {
+        close(t->fd);
+        unlink(t->path);
+        t->fd = -1;
         ssg_diag_file(diags, SSG_E_IO, target, "more than %d outputs written at once",
                       SSG_TMP_MAX);
         return SSG_E_IO;
     }
-    t->fd = open(t->path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (t->fd < 0) {
         ssg_diag_file(diags, SSG_E_IO, target, "cannot write %s: cannot create a file in "
                       "'%s': %s", what, dir[0] ? dir : ".", strerror(errno));
-        registry_remove(t->slot);
-        t->slot = -1;
         return SSG_E_IO;
     }
     return SSG_OK;

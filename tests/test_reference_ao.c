@@ -363,9 +363,52 @@ static void test_errors(void)
     ssg_scene_destroy(&s);
 }
 
+/* Shading normals that lean past the surface (smooth-shaded meshes at grazing angles):
+   points on a small floating square whose given normal is tilted by alpha from its face.
+   A direction below the square's plane enters the surface, so it is blocked; nothing else
+   is in the scene, so every direction above it is open. Projected onto the shading
+   normal's disk (Malley), the blocked directions are the points with x > 0 outside the
+   ellipse x^2 / cos^2(alpha) + y^2 = 1: area pi/2 - pi cos(alpha)/2, so
+   V = (1 + cos alpha) / 2 exactly (0.75 at 60 degrees), whatever the distance limit and
+   the origin offset. The offset is large here (0.05, over the square's 0.1 half-size
+   for the rays leaving below at under 27 degrees): traced from the raised origin, those
+   rays pass beside the square, which is what counted them as open before the horizon
+   came from the face normal. */
+static void test_tilted_normals(void)
+{
+    const double alpha = 60.0 * M_PI / 180.0, offset = 0.05;
+    struct ssg_scene *s = load_scene("tilted", oblique_camera,
+        "plane(material=m, center=[0, 0.2, 0], normal=[0, 1, 0], size=[0.2, 0, 0.2])\n");
+    if (!s)
+        return;
+    struct points pts;
+    memset(&pts, 0, sizeof pts);
+    double want[P];
+    for (int i = 0; i < P; i++) {
+        pts.fg[i] = 1;
+        pts.p[i][0] = -0.06 + 0.12 * ((i % W) + 0.5) / W;
+        pts.p[i][1] = 0.2;
+        pts.p[i][2] = -0.06 + 0.12 * ((i / W) + 0.5) / H;
+        /* tilted about z, towards +x or -x: both sides of the square */
+        pts.n[i][0] = (i % 2 ? 1 : -1) * sin(alpha);
+        pts.n[i][1] = cos(alpha);
+        want[i] = 0.5 * (1.0 + cos(alpha));
+    }
+    struct input in;
+    struct ssg_image *out = NULL;
+    make_input(s, &pts, offset, &in);
+    CHECK_EQ(run(s, &in, 4096, 1e4, offset, 1, &out), SSG_OK);
+    if (out)
+        check_stat(out, &pts, want, 4096);
+    ssg_image_destroy(&out);
+    free_input(&in);
+    ssg_scene_destroy(&s);
+}
+
 int main(void)
 {
     test_open_plane();
+    test_tilted_normals();
     test_ceiling();
     test_wall();
     test_box(1.0);

@@ -1,0 +1,17 @@
+/* fuzz_scene.c - libFuzzer target for the scene format: the input is loaded as a scene
+ * file with its assets (entities, materials, shapes tessellated, meshes and images it
+ * names read, the ray-tracing scene built). See fuzz_input.h. */
+#define _DEFAULT_SOURCE /* mkstemps */
+#include "fuzz_input.h"
+#include "ssgraph.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    char path[4096];
+    if (!fuzz_write_temp(data, size, ".scene", path))
+        return 0;
+    struct ssg_diags diags = {0};
+    ssg_scene_check(path, &diags);
+    unlink(path);
+    return 0;
+}
