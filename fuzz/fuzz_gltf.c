@@ -6,15 +6,17 @@
 #include "fuzz_input.h"
 #include "gltf.h"
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+static void load_gltf(const char *path)
 {
-    char path[4096], why[512];
-    const char *suffix = fuzz_has_magic(data, size, "glTF", 4) ? ".glb" : ".gltf";
-    if (!fuzz_write_temp(data, size, suffix, path))
-        return 0;
+    char why[512];
     struct ssg_gltf *g = NULL;
     if (ssg_gltf_load(path, &g, why, sizeof why) == SSG_OK)
         ssg_gltf_destroy(&g);
-    unlink(path);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_on_file(data, size, fuzz_has_magic(data, size, "glTF", 4) ? ".glb" : ".gltf",
+                 load_gltf);
     return 0;
 }

@@ -5,13 +5,14 @@
 #include "fuzz_input.h"
 #include "ssgraph.h"
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+static void check_graph(const char *path)
 {
-    char path[4096];
-    if (!fuzz_write_temp(data, size, ".graph", path))
-        return 0;
     struct ssg_diags diags = {0};
     ssg_graph_check(path, NULL, &diags);
-    unlink(path);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_on_file(data, size, ".graph", check_graph);
     return 0;
 }

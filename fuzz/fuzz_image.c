@@ -35,17 +35,18 @@ static void load_as_probe(const char *image)
     unlink(scene);
 }
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+static void load_image(const char *path)
 {
-    char path[4096];
-    if (!fuzz_write_temp(data, size, suffix_of(data, size), path))
-        return 0;
     struct ssg_diags diags = {0};
     struct ssg_image *im = NULL;
     if (ssg_image_read(path, NULL, &im, &diags) == SSG_OK) {
         ssg_image_destroy(&im);
         load_as_probe(path);
     }
-    unlink(path);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_on_file(data, size, suffix_of(data, size), load_image);
     return 0;
 }

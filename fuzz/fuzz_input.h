@@ -35,6 +35,17 @@ static inline int fuzz_write_temp(const uint8_t *data, size_t size, const char *
     return ok;
 }
 
+/* Writes data to a temporary file with the given suffix, calls use(path), removes it. */
+static inline void fuzz_on_file(const uint8_t *data, size_t size, const char *suffix,
+                                void (*use)(const char *path))
+{
+    char path[4096];
+    if (!fuzz_write_temp(data, size, suffix, path))
+        return;
+    use(path);
+    unlink(path);
+}
+
 /* 1 when data starts with the given magic bytes. */
 static inline int fuzz_has_magic(const uint8_t *data, size_t size, const char *magic, size_t len)
 {

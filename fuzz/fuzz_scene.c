@@ -5,13 +5,14 @@
 #include "fuzz_input.h"
 #include "ssgraph.h"
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+static void load_scene(const char *path)
 {
-    char path[4096];
-    if (!fuzz_write_temp(data, size, ".scene", path))
-        return 0;
     struct ssg_diags diags = {0};
     ssg_scene_check(path, &diags);
-    unlink(path);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_on_file(data, size, ".scene", load_scene);
     return 0;
 }
