@@ -186,27 +186,65 @@ static struct ssg_overrides cell_overrides(const struct bench *b, const int *ind
     return ov;
 }
 
-/* Every sweep key and value checked against the graph (each value alone, the others at
-   the graph's own) before the first cell runs: a typo fails at once, not in every cell. */
-static int check_sweeps(const struct bench *b)
+/* With only_alone: reports value v of sweep k and returns 1 if it fails with the other
+   sweeps at the graph's own values, else 0; without: reports it with the first cell of it
+   that fails. */
+static int refuse_value(const struct bench *b, int k, int v, int only_alone)
 {
-    for (int k = 0; k < b->n; k++) {
-        for (int v = 0; v < b->sweeps[k].count; v++) {
-            int index[SSG_BENCH_MAX_SWEEPS];
-            for (int i = 0; i < SSG_BENCH_MAX_SWEEPS; i++)
-                index[i] = i == k ? v : -1;
-            struct cell_sets cs;
-            struct ssg_overrides ov = cell_overrides(b, index, &cs);
-            struct ssg_diags d = {0};
-            if (ssg_graph_check(b->graph, &ov, &d) == SSG_OK)
-                continue;
-            fprintf(stderr, "ssgraph: error: --sweep %s: value '%s' does not fit the graph "
-                    "%s:\n", b->sweeps[k].key, b->sweeps[k].values[v], b->req->graph);
-            ssg_diags_print(&d, stderr);
-            return 0;
+    int index[SSG_BENCH_MAX_SWEEPS];
+    for (int i = 0; i < SSG_BENCH_MAX_SWEEPS; i++)
+        index[i] = i == k ? v : -1;
+    for (int ci = 0; !only_alone && ci < b->cell_count; ci++) {
+        if (b->cells[ci].index[k] == v) {
+            memcpy(index, b->cells[ci].index, sizeof index);
+            break;
         }
     }
+    struct cell_sets cs;
+    struct ssg_overrides ov = cell_overrides(b, index, &cs);
+    struct ssg_diags d = {0};
+    if (ssg_graph_check(b->graph, &ov, &d) == SSG_OK)
+        return 0;
+    fprintf(stderr, "ssgraph: error: --sweep %s: value '%s' does not fit the graph %s in "
+            "any cell:\n", b->sweeps[k].key, b->sweeps[k].values[v], b->req->graph);
+    ssg_diags_print(&d, stderr);
     return 1;
+}
+
+/* Every cell is checked against the graph (its scene's text too, not its assets) before
+   the first one runs, and a sweep value that fits in no cell is refused with the graph's
+   complaint: a typo in a key, a value out of range. A value that only some combinations
+   refuse (two parameters that must agree) still runs; those cells are recorded as failed. */
+static int check_sweeps(const struct bench *b)
+{
+    unsigned char *fits = calloc((size_t)b->cell_count, 1);
+    if (!fits) {
+        fprintf(stderr, "ssgraph: error: out of memory checking %d cells\n", b->cell_count);
+        return 0;
+    }
+    for (int ci = 0; ci < b->cell_count; ci++) {
+        struct cell_sets cs;
+        struct ssg_overrides ov = cell_overrides(b, b->cells[ci].index, &cs);
+        struct ssg_diags d = {0};
+        fits[ci] = ssg_graph_check(b->graph, &ov, &d) == SSG_OK;
+    }
+    /* Of the values that fit no cell, blame first one that fails even alone (the others
+       at the graph's own values): with a misspelt key every cell fails, and the values of
+       the other sweeps are not to blame. */
+    int ok = 1;
+    for (int pass = 0; pass < 2 && ok; pass++) {
+        for (int k = 0; k < b->n && ok; k++) {
+            for (int v = 0; v < b->sweeps[k].count && ok; v++) {
+                int any = 0;
+                for (int ci = 0; ci < b->cell_count && !any; ci++)
+                    any = b->cells[ci].index[k] == v && fits[ci];
+                if (!any)
+                    ok = !refuse_value(b, k, v, pass == 0);
+            }
+        }
+    }
+    free(fits);
+    return ok;
 }
 
 /* One cell: the graph with the user's --set and the cell's values, run `frames` times
@@ -590,6 +628,12 @@ int ssg_bench_main(const struct ssg_bench_request *req)
                 "together (the image each cell makes and the truth it is compared with)\n");
         return 2;
     }
+    /* Paths inside it are built in fixed buffers of 1100 to 1200 bytes: refuse a longer one
+       rather than write to a truncated name. */
+    if (strlen(req->out_dir) > 1000) {
+        fprintf(stderr, "ssgraph: error: --out path is longer than 1000 bytes\n");
+        return 2;
+    }
     for (int k = 0; k < b.n; k++)
         if (!parse_sweep(req->sweeps[k], &b.sweeps[k]))
             return 2;
@@ -604,10 +648,12 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         }
         b.graph = b.graph_buf;
     }
-    if (!check_sweeps(&b))
-        return 2;
     if (!make_cells(&b))
         return 1;
+    if (!check_sweeps(&b)) {
+        free(b.cells);
+        return 2;
+    }
     enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
     for (int ci = 0; ci < b.cell_count && !e; ci++) {

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -69,6 +70,7 @@ int ssg_input_open(const char *path, long long max_bytes, char *why, size_t why_
         snprintf(why, why_len, "cannot read its status: %s", strerror(errno));
     } else if (!S_ISREG(st.st_mode)) {
         snprintf(why, why_len, "not a regular file (it is %s)", file_kind(st.st_mode));
+        errno = EINVAL; /* never a stale EFBIG: the callers map EFBIG to "too large" */
     } else if ((long long)st.st_size > max_bytes) {
         snprintf(why, why_len, "file of %lld bytes is larger than the limit of %lld MiB",
                  (long long)st.st_size, max_bytes >> 20);
@@ -140,7 +142,7 @@ enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, 
 
 /* ---- the registry of live temporaries ---- */
 
-static char tmp_paths[SSG_TMP_MAX][4200];
+static char tmp_paths[SSG_TMP_MAX][4352];
 static volatile sig_atomic_t tmp_live[SSG_TMP_MAX];
 static atomic_flag tmp_lock = ATOMIC_FLAG_INIT;
 
@@ -184,7 +186,11 @@ void ssg_tmp_remove_on_signals(void)
 {
     const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
     for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
-        struct sigaction sa;
+        struct sigaction sa, old;
+        /* A signal the parent ignores stays ignored (nohup, background jobs, SIGPIPE for
+           EPIPE): handling it would turn it into a death. */
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = on_signal;
         sigemptyset(&sa.sa_mask);
@@ -202,19 +208,28 @@ static void split_path(const char *path, char *dir, size_t dir_len, const char *
     snprintf(dir, dir_len, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
 }
 
-/* A temporary of ours is ".<anything>.tmp-<pid>-<n>[.ext]"; its pid, or 0 for other names. */
+/* A temporary of ours is exactly ".<base>.tmp-<pid>-<n>[.exr|.png]": its pid, or 0 for any
+   other name (a user's ".notes.tmp-42-draft.txt" is not ours). */
 static long tmp_owner(const char *name)
 {
     const char *tag = name[0] == '.' ? strstr(name, ".tmp-") : NULL;
-    if (!tag)
+    if (!tag || tag == name)
         return 0;
-    char *end;
-    long pid = strtol(tag + 5, &end, 10);
-    return pid > 0 && *end == '-' ? pid : 0;
+    const char *p = tag + 5;
+    long pid = 0;
+    for (; *p >= '0' && *p <= '9' && pid < 100000000; p++)
+        pid = 10 * pid + (*p - '0');
+    if (*p++ != '-' || *p < '0' || *p > '9')
+        return 0;
+    while (*p >= '0' && *p <= '9')
+        p++;
+    return *p == 0 || !strcmp(p, ".exr") || !strcmp(p, ".png") ? pid : 0;
 }
 
-/* Removes temporaries in dir left by processes that no longer exist (killed outright, so
-   their handler never ran). */
+/* Removes temporaries in dir left by processes that were killed outright (their handler
+   never ran). Stale means both: its pid is not a live process here, and nobody holds the
+   lock its writer takes for as long as it lives (ssg_tmp_create), which also protects a
+   live writer in another PID namespace (a container sharing the folder). */
 static void remove_stale(const char *dir)
 {
     DIR *d = opendir(dir[0] ? dir : ".");
@@ -226,9 +241,13 @@ static void remove_stale(const char *dir)
             continue;
         char path[PATH_MAX_LEN + 256];
         snprintf(path, sizeof path, "%s%s", dir, e->d_name);
+        int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
         struct stat st;
-        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode))
+        if (fd < 0)
+            continue;
+        if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && flock(fd, LOCK_EX | LOCK_NB) == 0)
             unlink(path);
+        close(fd);
     }
     closedir(d);
 }
@@ -239,7 +258,7 @@ enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *wha
     static atomic_uint counter;
     char dir[PATH_MAX_LEN];
     const char *base;
-    t->fd = -1;
+    t->fd = t->lock_fd = -1;
     t->slot = -1;
     if (strlen(target) >= sizeof t->target) {
         ssg_diag_file(diags, SSG_E_IO, target, "output path is too long");
@@ -251,17 +270,24 @@ enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *wha
     /* A name that exists already (planted, or left by a process with a reused pid) is
        skipped, never opened: O_EXCL | O_NOFOLLOW. */
     for (int tries = 0; tries < 100 && t->fd < 0; tries++) {
-        snprintf(t->path, sizeof t->path, "%s.%s.tmp-%ld-%u%s", dir, base, (long)getpid(),
-                 atomic_fetch_add(&counter, 1u), ext);
+        /* at most 100 bytes of the target's name: the temporary's stays under NAME_MAX */
+        snprintf(t->path, sizeof t->path, "%s.%.100s.tmp-%ld-%u%s", dir, base,
+                 (long)getpid(), atomic_fetch_add(&counter, 1u), ext);
         t->fd = open(t->path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (t->fd < 0 && errno != EEXIST)
             break;
     }
-    /* Registered once it is ours: a signal before this leaves it for remove_stale. */
-    if (t->fd >= 0 && (t->slot = registry_add(t->path)) < 0) {
-        close(t->fd);
+    /* Locked while this process lives (the lock belongs to the open file, kept open by
+       lock_fd until commit or discard), and registered for the signal handler. */
+    t->lock_fd = t->fd >= 0 ? dup(t->fd) : -1;
+    if (t->lock_fd >= 0)
+        flock(t->lock_fd, LOCK_EX | LOCK_NB);
+    if (t->fd >= 0 && (t->lock_fd < 0 || (t->slot = registry_add(t->path)) < 0)) {
         unlink(t->path);
-        t->fd = -1;
+        close(t->fd);
+        if (t->lock_fd >= 0)
+            close(t->lock_fd);
+        t->fd = t->lock_fd = -1;
         ssg_diag_file(diags, SSG_E_IO, target, "more than %d outputs written at once",
                       SSG_TMP_MAX);
         return SSG_E_IO;
@@ -293,6 +319,13 @@ enum ssg_err ssg_tmp_close(struct ssg_tmp *t, struct ssg_diags *diags)
     return SSG_OK;
 }
 
+static void release_lock(struct ssg_tmp *t)
+{
+    if (t->lock_fd >= 0)
+        close(t->lock_fd);
+    t->lock_fd = -1;
+}
+
 void ssg_tmp_discard(struct ssg_tmp *t, int count)
 {
     for (int i = 0; i < count; i++) {
@@ -304,6 +337,7 @@ void ssg_tmp_discard(struct ssg_tmp *t, int count)
             registry_remove(t[i].slot);
             t[i].slot = -1;
         }
+        release_lock(&t[i]);
     }
 }
 
@@ -326,6 +360,7 @@ enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diag
         }
         registry_remove(t[i].slot);
         t[i].slot = -1;
+        release_lock(&t[i]);
     }
     return SSG_OK;
 }

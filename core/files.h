@@ -2,7 +2,9 @@
  *
  * Reading: an input must be a regular file (a FIFO would block, /dev/zero never ends, a
  * directory is no image) and no larger than the limit of its kind; the check happens on
- * the open descriptor, so a file swapped after a stat cannot slip through.
+ * the open descriptor. Text files and glTF files are read from that descriptor; images
+ * are then opened again by name by OpenImageIO, so swapping a file in between is not
+ * guarded against there (a race with someone who can write the folder anyway).
  *
  * Writing: an output appears whole or not at all. It is written under a hidden temporary
  * name in its own folder, created with O_EXCL | O_NOFOLLOW (a symbolic link planted there
@@ -11,7 +13,8 @@
  * rename replaces a link at the target rather than writing through it. Several outputs of
  * one node are all staged before any is renamed. Temporaries are registered: the CLI's
  * signal handler removes them (ssg_tmp_remove_all), and a temporary left by a process that
- * was killed outright (SIGKILL) is removed by the next write into that folder.
+ * was killed outright (SIGKILL) is removed by the next write into that folder: one whose
+ * pid is gone and whose lock (flock, held by its writer until the rename) is free.
  *
  * Thread safety: staging and committing may run on any thread; the registry holds at most
  * SSG_TMP_MAX live temporaries at once (more is an error, not a leak). */
@@ -47,9 +50,10 @@ enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, 
 /* One output being written: the temporary (open as fd until ssg_tmp_close) and its
  * target. */
 struct ssg_tmp {
-    char path[4200];  /* the temporary: <dir>/.<stem>.tmp-<pid>-<n><ext> */
+    char path[4352];  /* the temporary: <dir>/.<stem>.tmp-<pid>-<n><ext> */
     char target[4096];
     int fd;           /* -1 once closed */
+    int lock_fd;      /* holds the temporary's lock until commit or discard, -1 = none */
     int slot;         /* registry slot, -1 = none */
 };
 

@@ -13,6 +13,7 @@ extern "C" {
 
 #include <array>
 #include <cerrno>
+#include <sys/stat.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -589,10 +590,12 @@ bool read_whole_file(std::vector<unsigned char> *out, std::string *err,
     return true;
 }
 
+/* Anything that exists "exists": read_whole_file then refuses what is not a plain file
+   with its reason, rather than tinygltf falling back to a file of that name elsewhere. */
 bool file_exists(const std::string &path, void *)
 {
-    char why[256];
-    return ssg_input_check(path.c_str(), SSG_MAX_MODEL_BYTES, why, sizeof why) == SSG_OK;
+    struct stat st;
+    return stat(path.c_str(), &st) == 0;
 }
 
 std::string expand_nothing(const std::string &path, void *)
@@ -611,6 +614,8 @@ bool write_nothing(std::string *err, const std::string &, const std::vector<unsi
 std::string base_dir(const char *path)
 {
     const char *slash = std::strrchr(path, '/');
+    if (slash == path)
+        return "/";
     return slash ? std::string(path, (size_t)(slash - path)) : std::string(".");
 }
 

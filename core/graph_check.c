@@ -341,24 +341,30 @@ static void resolve_backend(struct checker *c, struct gnode *n)
     n->runs_on = want == SSG_BACKEND_GL && n->desc->run_gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU;
 }
 
-/* Live nodes that would write the same files (output_stem): sorted by stem, then by
-   position in the file, so each clash is reported once, at its later node. */
-struct writer {
-    const char *stem;
+/* Live nodes that would write the same file (output_files): every file they name,
+   sorted by name, then by position in the file, so each clash is reported once, at its
+   later node. */
+struct written {
+    char file[SSG_FILE_NAME_MAX];
     int node;
 };
 
-static int by_stem(const void *a, const void *b)
+static int by_file(const void *a, const void *b)
 {
-    const struct writer *wa = a, *wb = b;
-    int s = strcmp(wa->stem, wb->stem);
+    const struct written *wa = a, *wb = b;
+    int s = strcmp(wa->file, wb->file);
     return s ? s : wa->node - wb->node;
 }
+
+enum { FILES_PER_NODE = 4 };
 
 static void check_output_clash(struct checker *c)
 {
     struct ssg_graph *g = c->g;
-    struct writer *w = malloc(((size_t)g->count + 1) * sizeof *w);
+    int writers = 0;
+    for (int i = 0; i < g->count; i++)
+        writers += g->nodes[i].live && g->nodes[i].desc->output_files;
+    struct written *w = malloc(((size_t)writers * FILES_PER_NODE + 1) * sizeof *w);
     int n = 0;
     if (!w) {
         fail(c, SSG_E_NOMEM);
@@ -366,21 +372,25 @@ static void check_output_clash(struct checker *c)
     }
     for (int i = 0; i < g->count; i++) {
         const struct gnode *node = &g->nodes[i];
-        const char *stem = node->live && node->desc->output_stem
-                               ? node->desc->output_stem(node->params) : NULL;
-        if (stem)
-            w[n++] = (struct writer){stem, i};
+        if (!node->live || !node->desc->output_files)
+            continue;
+        char files[FILES_PER_NODE][SSG_FILE_NAME_MAX];
+        int k = node->desc->output_files(node->params, files, FILES_PER_NODE);
+        for (int f = 0; f < k; f++) {
+            memcpy(w[n].file, files[f], sizeof w[n].file);
+            w[n++].node = i;
+        }
     }
-    qsort(w, (size_t)n, sizeof *w, by_stem);
+    qsort(w, (size_t)n, sizeof *w, by_file);
     for (int k = 1; k < n; k++) {
-        if (strcmp(w[k - 1].stem, w[k].stem))
+        if (strcmp(w[k - 1].file, w[k].file) || w[k - 1].node == w[k].node)
             continue;
         const struct gnode *first = &g->nodes[w[k - 1].node], *again = &g->nodes[w[k].node];
         int line, col;
         ssg_loc_linecol(first->loc, &line, &col);
         ssg_diag_at(c->diags, SSG_E_DUPLICATE, again->loc, "node '%s' (%s) writes '%s', as "
-                    "node '%s' at %s:%d:%d does: its files would replace the other's "
-                    "(expected a different name)", again->name, again->desc->name, w[k].stem,
+                    "node '%s' at %s:%d:%d does: its file would replace the other's "
+                    "(expected a different name)", again->name, again->desc->name, w[k].file,
                     first->name, first->loc.src ? first->loc.src->path : "?", line, col);
         fail(c, SSG_E_DUPLICATE);
     }

@@ -346,8 +346,12 @@ enum ssg_err write_staged(const ImageSpec &spec, TypeDesc format, FillBand fill,
         ok = ok && out->close();
         if (!ok)
             why = out ? oiio_error(out.get()) : "no writer for this format";
+    } catch (const std::bad_alloc &) {
+        why = "out of memory";
     } catch (const std::exception &e) {
         why = e.what()[0] ? e.what() : "unknown C++ exception";
+    } catch (...) {
+        why = "unknown C++ exception";
     }
     bool flushed = fflush(f) == 0 && !ferror(f) && fsync(fileno(f)) == 0;
     int saved = errno;
@@ -576,7 +580,7 @@ template <class F>
 enum ssg_err guarded_stage(const char *path, struct ssg_tmp *t, struct ssg_diags *diags,
                            F stage)
 {
-    t->fd = -1;
+    t->fd = t->lock_fd = -1;
     t->slot = -1;
     enum ssg_err e;
     try {

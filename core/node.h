@@ -28,6 +28,8 @@
 struct ssg_scene;
 struct ssg_metrics;
 
+#define SSG_FILE_NAME_MAX 256 /* bytes of an output file name, NUL included */
+
 /* Port types. An input port accepts a mask of them; an output produces one (or copies the
  * type of an input, see same_as). */
 enum ssg_type {
@@ -115,11 +117,12 @@ struct ssg_node_desc {
     enum ssg_err (*check)(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len);
-    /* Optional, sinks that write files: the file stem the node writes into the output
-       folder under these parameters (write: <name>.exr and <name>.png). Two live nodes
-       with one stem are refused when the graph is checked: the second would silently
-       replace the first's files. */
-    const char *(*output_stem)(const void *params);
+    /* Optional, sinks that write files: the names of the files the node writes into the
+       output folder under these parameters (write: <name>.exr, <name>.png), at most `max`
+       names of SSG_FILE_NAME_MAX bytes; returns how many. Two live nodes that would write
+       one file are refused when the graph is checked: the second would silently replace
+       the first's. */
+    int (*output_files)(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max);
     /* Optional. Turns parameters into the constants both backends read (sample kernels,
        projection factors). Called once before run. */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);

@@ -84,6 +84,11 @@ void ssg_trace_face_normal(const struct ssg_scene *scene, const float eye[3],
     float side = ng[0] * dir[0] + ng[1] * dir[1] + ng[2] * dir[2] > 0.0f ? -1.0f : 1.0f;
     for (int i = 0; i < 3; i++)
         ng[i] *= side / len;
+    /* At a crease the re-traced ray (p rebuilt from float view space) may hit the
+       neighbouring face: a face normal far from the shading one is that, not a lean. */
+    if (ng[0] * pt->n[0] + ng[1] * pt->n[1] + ng[2] * pt->n[2] < 0.1f)
+        for (int i = 0; i < 3; i++)
+            ng[i] = pt->n[i];
 }
 
 double ssg_radical_inverse(uint32_t i, uint32_t base)

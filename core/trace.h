@@ -66,7 +66,8 @@ int ssg_trace_point(const float rot[9], const float eye[3], float offset,
  * surface at grazing angles, and a ray that leaves below it enters the object, so the
  * hemisphere's horizon comes from this normal and the cosine from the shading one. When
  * the ray finds no surface within 0.1 % of the point's distance (a G-buffer from another
- * source), ng is pt->n. */
+ * source), or a face whose normal is nearly perpendicular to pt->n (the neighbour at a
+ * crease), ng is pt->n. */
 void ssg_trace_face_normal(const struct ssg_scene *scene, const float eye[3],
                            const struct ssg_trace_point *pt, float ng[3]);
 

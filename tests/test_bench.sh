@@ -45,6 +45,10 @@ for bad in "ao.radus=0.5,1" "nope.radius=1" "ao.radius=0.5,-2" "ao.radius=0.5,9x
         --out "$TMP/badsweep"
     [ -e "$TMP/badsweep" ] && fail "a refused sweep ($bad) still wrote $TMP/badsweep"
 done
+# A value that only some combinations refuse still runs: those cells are recorded as failed
+# (period 16 does not divide level 24; every other pair fits).
+expect_exit 1 "4 cells, 1 failed" "$BIN" bench graphs/table1/ssdo_pre_20_50.graph --size 32x24 \
+    --frames 1 --sweep c.period=8,16 --sweep c.levels=[16],[24] --out "$TMP/pairs"
 # Too many cells: refused with a message before anything is allocated (4 x 64 values).
 v=$(seq -s, 1 64)
 expect_exit 2 "the sweeps make 16777216 cells; at most 10000" "$BIN" bench graphs/ssao.graph \

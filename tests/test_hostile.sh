@@ -31,8 +31,12 @@ expect_exit 1 "sets.graph:1105:17: error: parameter 'radius' of 'ao' expects" \
 # Two write nodes with one name: refused with both places.
 printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\na = write(g.direct, "x")\nb = write(g.depth, "x")\n' \
     "$PWD" > "$TMP/twice.graph"
-expect_exit 1 "twice.graph:4:5: error: node 'b' \(write\) writes 'x', as node 'a' at .*twice.graph:3:5 does" \
+expect_exit 1 "twice.graph:4:5: error: node 'b' \(write\) writes 'x.exr', as node 'a' at .*twice.graph:3:5 does" \
     $T "$BIN" check "$TMP/twice.graph"
+# ... but one writing only the EXR and one only the PNG of a name do not clash.
+printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\na = write(g.direct, "x", png=false)\nb = write(g.depth, "x", exr=false)\n' \
+    "$PWD" > "$TMP/halves.graph"
+expect_exit 0 "ok" $T "$BIN" check "$TMP/halves.graph"
 # Checking is linear in the node count: a chain of 100,000 filters is checked in seconds
 # (about 4 s in a release build; quadratic checking took 312 s, past the 120 s allowed).
 awk -v cwd="$PWD" 'BEGIN {

@@ -76,9 +76,15 @@ static enum ssg_err write_check(const void *params, const struct ssg_frame *fram
     return SSG_OK;
 }
 
-static const char *output_stem(const void *params)
+static int output_files(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max)
 {
-    return ((const struct ssg_write_params *)params)->name;
+    const struct ssg_write_params *p = params;
+    int n = 0;
+    if (p->exr && n < max)
+        snprintf(files[n++], SSG_FILE_NAME_MAX, "%.200s.exr", p->name);
+    if (p->png && n < max)
+        snprintf(files[n++], SSG_FILE_NAME_MAX, "%.200s.png", p->name);
+    return n;
 }
 
 const struct ssg_node_desc ssg_node_write = {
@@ -104,6 +110,6 @@ const struct ssg_node_desc ssg_node_write = {
     .params_size = sizeof(struct ssg_write_params),
     .is_sink = 1,
     .check = write_check,
-    .output_stem = output_stem,
+    .output_files = output_files,
     .run_cpu = ssg_write_run_cpu,
 };
