@@ -22,6 +22,7 @@
 #include <OpenImageIO/imageio.h>
 
 extern "C" {
+#include "exr_guard.h"
 #include "image.h"
 #include "files.h"
 #include "imageio.h"
@@ -174,11 +175,21 @@ std::string layer_list(const ImageSpec &spec)
    regular file of a sane size is refused here (files.h): /dev/zero would never end. */
 enum ssg_err check_readable(const char *path, struct ssg_diags *diags)
 {
-    char why[256];
-    enum ssg_err e = ssg_input_check(path, SSG_MAX_IMAGE_BYTES, why, sizeof why);
-    if (e)
+    char why[320];
+    int fd = ssg_input_open(path, SSG_MAX_IMAGE_BYTES, why, sizeof why);
+    if (fd < 0) {
+        enum ssg_err e = errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
         ssg_diag_file(diags, e, path, "cannot read image: %s", why);
-    return e;
+        return e;
+    }
+    /* OpenEXR believes its header's sizes before it finds the file's end (exr_guard.h). */
+    int sane = ssg_exr_guard(fd, why, sizeof why);
+    close(fd);
+    if (!sane) {
+        ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s", why);
+        return SSG_E_IMAGE;
+    }
+    return SSG_OK;
 }
 
 /* Copies the selected channels of an interleaved band (chbegin..chend of the file) into

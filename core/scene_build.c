@@ -96,8 +96,10 @@ static int texture_finite(struct scene_loader *l, const char *path, const struct
     return 1;
 }
 
-/* Reads an image file into an interleaved RGB texture; gray images fill all three. */
-static int load_texture(struct scene_loader *l, const char *rel)
+/* Reads an image file into an interleaved RGB texture; gray images fill all three. A
+   material texture must be finite here; a probe is checked by core/env.c (finite_only 0),
+   which names its own rules. */
+static int load_texture(struct scene_loader *l, const char *rel, int finite_only)
 {
     char path[1024];
     struct ssg_image *im = NULL;
@@ -107,7 +109,7 @@ static int load_texture(struct scene_loader *l, const char *rel)
         ssg_scene_fail(l, e);
         return -1;
     }
-    if (!texture_finite(l, path, im)) {
+    if (finite_only && !texture_finite(l, path, im)) {
         ssg_image_destroy(&im);
         return -1;
     }
@@ -143,7 +145,7 @@ static void build_material(struct scene_loader *l, int ent)
     m->shininess = a->shininess;
     l->material_of[ent] = l->scene->material_count - 1;
     if (a->texture[0])
-        m->texture = load_texture(l, a->texture);
+        m->texture = load_texture(l, a->texture, 1);
 }
 
 static void build_light(struct scene_loader *l, const struct scene_entity *e)
@@ -375,7 +377,7 @@ static void build_environment(struct scene_loader *l)
     for (int i = 0; i < l->count; i++) {
         const struct environment_args *a = l->ents[i].args;
         if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
-            l->scene->environment.image = load_texture(l, a->image);
+            l->scene->environment.image = load_texture(l, a->image, 0);
             ssg_scene_path(l, a->image, path, sizeof path);
         }
     }

@@ -97,6 +97,15 @@ expect_exit 0 "wrote" $T "$BIN" node gaussian --in "in=tests/fixtures/images/til
     --out "$TMP/tiled_node"
 expect_exit 0 "rmse" $T "$BIN" compare tests/fixtures/images/tiled.exr \
     tests/fixtures/images/scanline.exr
+# OpenEXR headers that claim more than the file holds (fuzz_image found a 1 KB file whose
+# attribute claims 2 GB: seconds and gigabytes inside OpenEXR before it failed) are refused
+# from their sizes alone.
+for f in fuzz/corpus/image/exr_header_bomb_1.exr fuzz/corpus/image/exr_header_bomb_2.exr; do
+    expect_exit 1 "$(basename $f): error: not a readable image: OpenEXR attribute .* claims [0-9]+ bytes, but the file has" \
+        $T "$BIN" node gaussian --in "in=$f" --out "$TMP/bomb_out"
+done
+expect_exit 1 "truncated_8k.exr: error: not a readable image: OpenEXR header declares 512 chunks" \
+    $T "$BIN" node gaussian --in "in=$H/truncated_8k.exr" --out "$TMP/bomb_out"
 printf 'material(albedo=[1, 1, 1], texture="%s/%s/inf_texture.exr")\nplane()\n' "$PWD" $H \
     > "$TMP/inf_tex.scene"
 expect_exit 1 "inf_texture.exr: error: pixel \(0, 0\) channel 0 is infinite" \
