@@ -250,7 +250,7 @@ ssg_ssdo_setup(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, 
         k->tx[i] = tx, k->ty[i] = ty, k->tz[i] = tz;
         k->bx[i] = bx, k->by[i] = by, k->bz[i] = bz;
         float rcap = cap * k->dp[i];
-        float r = capped & (rcap < radius) ? rcap : radius;
+        float r = (capped & (rcap < radius)) ? rcap : radius;
         float qx = k->px[i], qy = k->py[i], qz = -k->pz[i];
         float rtz = r * tz, rbz = r * bz, rnz = r * nz;
         k->cz[0][i] = qz - bias;
