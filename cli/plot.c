@@ -1,61 +1,130 @@
 /* plot.c - PNG plots through gnuplot (plot.h). The numbers go to <name>.dat, the drawing
- * instructions to <name>.gp (kept, so a user can restyle and rerun them), and gnuplot
- * writes <name>.png.tmp, renamed to <name>.png once it succeeded. */
+ * instructions to <name>.gp (kept, so a user can restyle and rerun them: `gnuplot
+ * name.gp` writes name.png), both written whole through temporaries (files.h). gnuplot
+ * runs as a child process in the output folder (no shell: a folder name is never parsed)
+ * and draws into a temporary made by ssg_tmp_create, renamed to <name>.png once it
+ * succeeded; its messages are kept in <name>.log only when it fails. */
+#define _DEFAULT_SOURCE /* open_memstream */
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include "files.h"
 #include "plot.h"
+
+static void print_diags(struct ssg_diags *d)
+{
+    ssg_diags_print(d, stderr);
+}
+
+/* Runs `gnuplot -e "outfile='TMP'" NAME.gp` in dir, stderr into the log temporary. */
+static int gnuplot_child(const char *dir, const char *name, const char *out, int log_fd)
+{
+    char script[300], set_out[4500];
+    snprintf(script, sizeof script, "%s.gp", name);
+    snprintf(set_out, sizeof set_out, "outfile='%s'", out);
+    pid_t pid = fork();
+    if (pid == 0) {
+        if (chdir(dir) != 0 || dup2(log_fd, 2) < 0)
+            _exit(126);
+        execlp("gnuplot", "gnuplot", "-e", set_out, script, (char *)NULL);
+        _exit(127);
+    }
+    int status = -1;
+    if (pid < 0 || waitpid(pid, &status, 0) < 0)
+        return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
 
 static int run_gnuplot(const char *dir, const char *name)
 {
-    char cmd[2400], tmp[1200], png[1200];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot '%s.gp' 2> '%s.log'", dir, name, name);
-    int rc = system(cmd);
-    snprintf(tmp, sizeof tmp, "%s/%s.png.tmp", dir, name);
+    char png[1200], log[1200];
     snprintf(png, sizeof png, "%s/%s.png", dir, name);
-    if (rc != 0 || rename(tmp, png) != 0) {
-        remove(tmp);
-        int status = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-        fprintf(stderr, "ssgraph: error: %s: gnuplot failed (%s; see %s/%s.log)\n", png,
-                status == 127 ? "not installed: Debian package gnuplot-nox" : "exit status",
-                dir, name);
+    snprintf(log, sizeof log, "%s/%s.log", dir, name);
+    struct ssg_diags d = {0};
+    struct ssg_tmp t[2];
+    if (ssg_tmp_create(png, ".png", "plot", &t[0], &d) ||
+        ssg_tmp_create(log, "", "gnuplot's messages", &t[1], &d)) {
+        ssg_tmp_discard(t, t[0].slot >= 0 ? 1 : 0);
+        print_diags(&d);
         return 1;
     }
-    char log[1200];
-    snprintf(log, sizeof log, "%s/%s.log", dir, name);
-    remove(log); /* only a failure's log is worth keeping */
-    return 0;
+    /* gnuplot opens the temporary by its name (relative to dir): it exists, made here. */
+    const char *base = strrchr(t[0].path, '/');
+    int status = gnuplot_child(dir, name, base ? base + 1 : t[0].path, t[1].fd);
+    if (status == 0 && ssg_tmp_commit(&t[0], 1, &d) == SSG_OK) {
+        ssg_tmp_discard(&t[1], 1); /* only a failure's log is worth keeping */
+        return 0;
+    }
+    ssg_tmp_discard(&t[0], 1);
+    ssg_tmp_commit(&t[1], 1, &d);
+    print_diags(&d);
+    fprintf(stderr, "ssgraph: error: %s: gnuplot failed (%s; see %s)\n", png,
+            status == 127 ? "not installed: Debian package gnuplot-nox" : "exit status", log);
+    return 1;
 }
 
-static FILE *open_in(const char *dir, const char *name, const char *ext)
+static void put_text(FILE *f, const void *user)
+{
+    fputs(user, f);
+}
+
+/* A memory stream for a file's text. */
+struct text {
+    FILE *f;
+    char *buf;
+    size_t len;
+};
+
+static int text_open(struct text *t)
+{
+    t->buf = NULL;
+    t->f = open_memstream(&t->buf, &t->len);
+    if (!t->f)
+        fprintf(stderr, "ssgraph: error: out of memory for a plot\n");
+    return t->f != NULL;
+}
+
+/* Closes the stream (which settles buf) and, when `save`, writes its text to
+   <dir>/<name>.<ext> whole or not at all; frees it. 0 on success. */
+static int text_close(struct text *t, int save, const char *dir, const char *name,
+                      const char *ext)
 {
     char path[1200];
+    struct ssg_diags d = {0};
+    int failed = fclose(t->f) != 0 || !t->buf;
     snprintf(path, sizeof path, "%s/%s.%s", dir, name, ext);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        fprintf(stderr, "ssgraph: error: cannot write %s\n", path);
-    return f;
+    if (save && !failed)
+        failed = ssg_write_text_file(path, "plot data", put_text, t->buf, &d) != SSG_OK;
+    print_diags(&d);
+    free(t->buf);
+    t->buf = NULL;
+    return failed;
 }
 
 static void header(FILE *gp, const char *name, const char *title)
 {
     fprintf(gp, "set terminal pngcairo size 900,600 enhanced font 'sans,11'\n"
-                "set output '%s.png.tmp'\nset title \"%s\" noenhanced\nset grid\n"
+                "if (!exists('outfile')) outfile = '%s.png'\n"
+                "set output outfile\nset title \"%s\" noenhanced\nset grid\n"
                 "set key outside right top noenhanced\n", name, title);
 }
 
 int ssg_plot_ms(const char *dir, const char *name, const char *title, const char *xlabel,
                 const char *ylabel, const struct ssg_plot_point *pts, int count)
 {
-    FILE *dat = open_in(dir, name, "dat"), *gp = open_in(dir, name, "gp");
-    if (!dat || !gp) {
-        if (dat) fclose(dat);
-        if (gp) fclose(gp);
+    struct text td, tg;
+    if (!text_open(&td))
+        return 1;
+    if (!text_open(&tg)) {
+        text_close(&td, 0, dir, name, "dat");
         return 1;
     }
+    FILE *dat = td.f, *gp = tg.f;
     double lo = INFINITY, hi = -INFINITY;
     int series = 0;
     for (int i = 0; i < count; i++) {
@@ -70,9 +139,9 @@ int ssg_plot_ms(const char *dir, const char *name, const char *title, const char
                 "plot for [i=0:%d] '%s.dat' index i using 1:2 with linespoints lw 2 pt 7 "
                 "title columnheader(1)\n", xlabel, ylabel,
             lo > 0 && hi > 8 * lo ? "set logscale x 2\n" : "", series - 1, name);
-    fclose(dat);
-    fclose(gp);
-    return run_gnuplot(dir, name);
+    int failed = text_close(&td, 1, dir, name, "dat");
+    failed |= text_close(&tg, 1, dir, name, "gp");
+    return failed ? 1 : run_gnuplot(dir, name);
 }
 
 /* 1 when no other point is at least as fast and as accurate, and better in one. */
@@ -95,13 +164,17 @@ int ssg_plot_pareto(const char *dir, const char *name, const char *title,
                     const char *errlabel, const struct ssg_plot_point *pts, int count)
 {
     struct ssg_plot_point *front = malloc(sizeof *front * (size_t)(count ? count : 1));
-    FILE *dat = open_in(dir, name, "dat"), *gp = front ? open_in(dir, name, "gp") : NULL;
-    if (!dat || !gp) {
-        if (dat) fclose(dat);
-        if (gp) fclose(gp);
+    struct text td, tg;
+    if (!front || !text_open(&td)) {
         free(front);
         return 1;
     }
+    if (!text_open(&tg)) {
+        text_close(&td, 0, dir, name, "dat");
+        free(front);
+        return 1;
+    }
+    FILE *dat = td.f, *gp = tg.f;
     int n = 0;
     fputs("\"points\"\n", dat);
     for (int i = 0; i < count; i++)
@@ -119,8 +192,8 @@ int ssg_plot_pareto(const char *dir, const char *name, const char *title,
                 "plot '%s.dat' index 0 using 1:2 with points pt 7 ps 1.3 title 'cells', "
                 "'' index 0 using 1:2:3 with labels offset 0,1 font ',8' notitle noenhanced, "
                 "'' index 1 using 1:2 with lines lw 2 title 'Pareto front'\n", errlabel, name);
-    fclose(dat);
-    fclose(gp);
     free(front);
-    return run_gnuplot(dir, name);
+    int failed = text_close(&td, 1, dir, name, "dat");
+    failed |= text_close(&tg, 1, dir, name, "gp");
+    return failed ? 1 : run_gnuplot(dir, name);
 }

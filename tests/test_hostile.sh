@@ -138,6 +138,16 @@ for f in bench.csv bench.json bench.md; do rm -f "$TMP/benchlinks/$f"; ln -s "$T
 "$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4 --out "$TMP/benchlinks" \
     > /dev/null 2>&1 || fail "bench over planted links failed"
 [ "$(cat "$TMP/victim")" = "precious" ] || fail "bench wrote through a planted link"
+# Plots too, in a folder whose name a shell would parse (gnuplot runs without a shell).
+plots="$TMP/it's \$(plots)"
+mkdir -p "$plots"
+for f in bench_ms.dat bench_ms.gp bench_ms.png bench_ms.log bench_ms.png.tmp; do
+    ln -s "$TMP/victim" "$plots/$f"
+done
+expect_exit 0 "2 cells, 0 failed" "$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 \
+    --sweep k.count=4,8 --plot --out "$plots"
+[ "$(cat "$TMP/victim")" = "precious" ] || fail "a plot was written through a planted link"
+[ -f "$plots/bench_ms.png" ] && [ ! -L "$plots/bench_ms.png" ] || fail "no bench_ms.png drawn"
 
 # A file size limit (RLIMIT_FSIZE; SIGXFSZ ignored, so writes fail with EFBIG): exit 1 with
 # a message, the earlier outputs untouched, no temporary left.
