@@ -17,7 +17,7 @@
 
 #include "bench.h"
 #include "files.h"
-#include "parse.h"
+#include "diag.h"
 #include "plot.h"
 
 /* At most 64 values a sweep, and at most MAX_CELLS cells in one bench: each finished cell

@@ -1,11 +1,11 @@
 /* diag.c - error codes and the diagnostics list. Messages are formatted like a compiler's:
  * `file:line:column: error: message`. Locations are computed from a token pointer only
- * here, when a message is made (see parse.h). */
+ * here, when a message is made (see diag.h). */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "parse.h"
+#include "diag.h"
 
 static const char *const err_names[] = {
 #define X(code, text) #code,

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "files.h"
-#include "parse.h"
+#include "diag.h"
 
 enum { PATH_MAX_LEN = 4096 };
 

@@ -1,6 +1,6 @@
 /* image_write.c - ssg_image_write (ssgraph.h): one image as the main layer of an EXR. */
 #include "imageio.h"
-#include "parse.h"
+#include "diag.h"
 
 enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
                              struct ssg_diags *diags)

@@ -26,7 +26,7 @@ extern "C" {
 #include "image.h"
 #include "files.h"
 #include "imageio.h"
-#include "parse.h"
+#include "diag.h"
 }
 
 using OIIO::ImageInput;

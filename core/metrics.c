@@ -5,7 +5,7 @@
 
 #include "metrics.h"
 #include "node.h"
-#include "parse.h"
+#include "diag.h"
 
 void ssg_metric_report(const struct ssg_node_ctx *ctx, const char *name, double value)
 {

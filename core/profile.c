@@ -2,7 +2,7 @@
 #include <float.h>
 #include <stdlib.h>
 
-#include "parse.h"
+#include "diag.h"
 #include "profile.h"
 
 int ssg_profile_init(struct ssg_profile *p, int count)

@@ -4,7 +4,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 extern "C" {
-#include "parse.h"
+#include "diag.h"
 #include "text.h"
 }
 
