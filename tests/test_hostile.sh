@@ -104,6 +104,10 @@ for f in fuzz/corpus/image/exr_header_bomb_1.exr fuzz/corpus/image/exr_header_bo
     expect_exit 1 "$(basename $f): error: not a readable image: OpenEXR attribute .* claims [0-9]+ bytes, but the file has" \
         $T "$BIN" node gaussian --in "in=$f" --out "$TMP/bomb_out"
 done
+# Any format: a 23-byte file whose header declares 3921 x 14887 pixels (found by fuzz_image:
+# 9 s and 1.3 GB before the decoder failed) is refused before the image is allocated.
+expect_exit 1 "header_declares_gigabyte.img: error: not a readable image: its header declares 3921 x 14887 pixels" \
+    $T "$BIN" node gaussian --in "in=fuzz/corpus/image/header_declares_gigabyte.img" --out "$TMP/bomb_out"
 expect_exit 1 "truncated_8k.exr: error: not a readable image: OpenEXR header declares 512 chunks" \
     $T "$BIN" node gaussian --in "in=$H/truncated_8k.exr" --out "$TMP/bomb_out"
 printf 'material(albedo=[1, 1, 1], texture="%s/%s/inf_texture.exr")\nplane()\n' "$PWD" $H \
