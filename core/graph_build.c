@@ -69,10 +69,9 @@ static int name_add(struct ssg_graph *g, int index)
 {
     if (2 * (index + 1) > g->name_cap) {
         int cap = g->name_cap ? 2 * g->name_cap : 64;
-        int *slots = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *slots);
+        int *slots = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *slots); /* zeroed */
         if (!slots)
             return 0;
-        memset(slots, 0, (size_t)cap * sizeof *slots);
         g->name_slots = slots;
         g->name_cap = cap;
         for (int i = 0; i < index; i++)
