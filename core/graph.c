@@ -41,8 +41,10 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
                                 struct ssg_diags *diags)
 {
     struct ssg_loc where = {0};
-    g->frame = (struct ssg_frame){.width = g->width, .height = g->height, .fov_y = 45.0f,
-                                  .near_z = 0.05f, .far_z = 100.0f, .seed = (uint64_t)g->seed};
+    g->frame = SSG_FRAME_DEFAULTS;
+    g->frame.width = g->width;
+    g->frame.height = g->height;
+    g->frame.seed = (uint64_t)g->seed;
     if (!ssg_image_size_ok(g->width, g->height, 1)) {
         ssg_diag_at(diags, SSG_E_SIZE, g->size_loc, "frame size %dx%d is out of range "
                     "(expected 1 to %d per side, at most %d pixels)", g->width, g->height,

@@ -77,15 +77,14 @@ static enum ssg_err bind_inputs(struct single *s, const struct ssg_binding *inpu
 /* The frame: the caller's, with size defaulting to the first frame-sized input's. */
 static struct ssg_frame make_frame(const struct single *s, const struct ssg_frame *given)
 {
-    struct ssg_frame f = {0, 0, 45.0f, 0.05f, 100.0f, 1};
-    if (given)
-        f = *given;
+    const struct ssg_frame def = SSG_FRAME_DEFAULTS;
+    struct ssg_frame f = given ? *given : def;
     if (f.fov_y <= 0)
-        f.fov_y = 45.0f;
+        f.fov_y = def.fov_y;
     if (f.near_z <= 0)
-        f.near_z = 0.05f;
+        f.near_z = def.near_z;
     if (f.far_z <= 0)
-        f.far_z = 100.0f;
+        f.far_z = def.far_z;
     for (int i = 0; i < s->d->input_count && f.width <= 0; i++) {
         if (s->in[i] && (s->in_shape[i].type & SSG_T_IMAGE)) {
             f.width = s->in[i]->width;

@@ -41,9 +41,12 @@ static const struct ssg_param_desc camera_params[] = {
     VEC3("position", camera_args, position, 0, 0, 5, 0, 0, "scene units", "eye position"),
     VEC3("target", camera_args, target, 0, 0, 0, 0, 0, "scene units", "point looked at"),
     VEC3("up", camera_args, up, 0, 1, 0, 0, 0, NULL, "up direction hint"),
-    FLOAT("fov", camera_args, fov, 45, 1, 179, "degrees", "vertical field of view"),
-    FLOAT("near", camera_args, near_z, 0.05, 1e-6, BIG, "scene units", "near plane distance"),
-    FLOAT("far", camera_args, far_z, 100, 1e-6, BIG, "scene units", "far plane distance"),
+    FLOAT("fov", camera_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
+          "vertical field of view"),
+    FLOAT("near", camera_args, near_z, SSG_DEFAULT_NEAR, 1e-6, BIG, "scene units",
+          "near plane distance"),
+    FLOAT("far", camera_args, far_z, SSG_DEFAULT_FAR, 1e-6, BIG, "scene units",
+          "far plane distance"),
 };
 static const struct ssg_param_desc material_params[] = {
     VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,

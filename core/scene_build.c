@@ -348,14 +348,14 @@ static void default_camera(struct ssg_scene *s)
         r += 0.25f * (hi[i] - lo[i]) * (hi[i] - lo[i]);
     }
     r = fmaxf(sqrtf(r), 1e-3f);
-    float dist = 1.1f * r / sinf(0.5f * 45.0f * 3.14159265f / 180.0f);
+    float dist = 1.1f * r / sinf(0.5f * SSG_DEFAULT_FOV_Y * 3.14159265f / 180.0f);
     const float dir[3] = {0.0f, 0.24253563f, 0.97014250f}; /* (0, 1, 4) normalised */
     for (int i = 0; i < 3; i++) {
         s->camera.position[i] = c[i] + dist * dir[i];
         s->camera.target[i] = c[i];
         s->camera.up[i] = i == 1 ? 1.0f : 0.0f;
     }
-    s->camera.fov_y = 45.0f;
+    s->camera.fov_y = SSG_DEFAULT_FOV_Y;
     s->camera.near_z = fmaxf(0.01f * dist, dist - 1.5f * r);
     s->camera.far_z = dist + 2.0f * r;
 }

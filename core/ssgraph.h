@@ -94,11 +94,20 @@ enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
 /* What a screen-space node needs to know about the frame besides its images. */
 struct ssg_frame {
     int width, height;  /* pixels of the full-resolution frame */
-    float fov_y;        /* vertical field of view, degrees; default 45 */
-    float near_z;       /* near plane distance, scene units; default 0.05 */
-    float far_z;        /* far plane distance, scene units; default 100 */
+    float fov_y;        /* vertical field of view, degrees; default SSG_DEFAULT_FOV_Y */
+    float near_z;       /* near plane distance, scene units; default SSG_DEFAULT_NEAR */
+    float far_z;        /* far plane distance, scene units; default SSG_DEFAULT_FAR */
     uint64_t seed;      /* seed for every pseudo-random choice; default 1 */
 };
+
+/* The camera's defaults, written once: a scene's camera() without them, a scene without a
+ * camera, a graph without a scene and a single-node run all use these. */
+#define SSG_DEFAULT_FOV_Y 45.0f /* degrees */
+#define SSG_DEFAULT_NEAR 0.05f  /* scene units */
+#define SSG_DEFAULT_FAR 100.0f  /* scene units */
+#define SSG_FRAME_DEFAULTS                                                                 \
+    ((struct ssg_frame){.fov_y = SSG_DEFAULT_FOV_Y, .near_z = SSG_DEFAULT_NEAR,           \
+                        .far_z = SSG_DEFAULT_FAR, .seed = 1})
 
 /* What a run measured, for programs that time graphs (`ssgraph bench`): the frame times
  * over its frames and the metrics its nodes reported (compare's rmse, ...). */
