@@ -16,11 +16,6 @@
 #include "files.h"
 #include "plot.h"
 
-static void print_diags(struct ssg_diags *d)
-{
-    ssg_diags_print(d, stderr);
-}
-
 /* Runs `gnuplot -e "outfile='TMP'" NAME.gp` in dir, stderr into the log temporary. */
 static int gnuplot_child(const char *dir, const char *name, const char *out, int log_fd)
 {
@@ -50,7 +45,7 @@ static int run_gnuplot(const char *dir, const char *name)
     if (ssg_tmp_create(png, ".png", "plot", &t[0], &d) ||
         ssg_tmp_create(log, "", "gnuplot's messages", &t[1], &d)) {
         ssg_tmp_discard(t, t[0].slot >= 0 ? 1 : 0);
-        print_diags(&d);
+        ssg_diags_print(&d, stderr);
         return 1;
     }
     /* gnuplot opens the temporary by its name (relative to dir): it exists, made here. */
@@ -62,7 +57,7 @@ static int run_gnuplot(const char *dir, const char *name)
     }
     ssg_tmp_discard(&t[0], 1);
     ssg_tmp_commit(&t[1], 1, &d);
-    print_diags(&d);
+    ssg_diags_print(&d, stderr);
     fprintf(stderr, "ssgraph: error: %s: gnuplot failed (%s; see %s)\n", png,
             status == 127 ? "not installed: Debian package gnuplot-nox" : "exit status", log);
     return 1;
@@ -100,7 +95,7 @@ static int text_close(struct text *t, int save, const char *dir, const char *nam
     snprintf(path, sizeof path, "%s/%s.%s", dir, name, ext);
     if (save && !failed)
         failed = ssg_write_text_file(path, "plot data", put_text, t->buf, &d) != SSG_OK;
-    print_diags(&d);
+    ssg_diags_print(&d, stderr);
     free(t->buf);
     t->buf = NULL;
     return failed;

@@ -57,42 +57,42 @@ static const char *file_kind(mode_t mode)
            "a socket" : "not a plain file";
 }
 
-int ssg_input_open(const char *path, long long max_bytes, char *why, size_t why_len)
+enum ssg_err ssg_input_open(const char *path, long long max_bytes, int *fd, char *why,
+                            size_t why_len)
 {
     /* O_NONBLOCK: opening a FIFO with no writer must not wait; a regular file ignores it. */
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
+    *fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (*fd < 0) {
         snprintf(why, why_len, "cannot open: %s", strerror(errno));
-        return -1;
+        return SSG_E_IO;
     }
     struct stat st;
-    if (fstat(fd, &st) != 0) {
+    enum ssg_err e = SSG_E_IO;
+    if (fstat(*fd, &st) != 0) {
         snprintf(why, why_len, "cannot read its status: %s", strerror(errno));
     } else if (!S_ISREG(st.st_mode)) {
         snprintf(why, why_len, "not a regular file (it is %s)", file_kind(st.st_mode));
-        errno = EINVAL; /* never a stale EFBIG: the callers map EFBIG to "too large" */
     } else if ((long long)st.st_size > max_bytes) {
         snprintf(why, why_len, "file of %lld bytes is larger than the limit of %lld MiB",
                  (long long)st.st_size, max_bytes >> 20);
-        errno = EFBIG;
+        e = SSG_E_SIZE;
     } else {
-        fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-        return fd;
+        fcntl(*fd, F_SETFL, fcntl(*fd, F_GETFL) & ~O_NONBLOCK);
+        return SSG_OK;
     }
-    int saved = errno;
-    close(fd);
-    errno = saved;
-    return -1;
+    close(*fd);
+    *fd = -1;
+    return e;
 }
 
 enum ssg_err ssg_input_check(const char *path, long long max_bytes, char *why,
                              size_t why_len)
 {
-    int fd = ssg_input_open(path, max_bytes, why, why_len);
-    if (fd < 0)
-        return errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
-    close(fd);
-    return SSG_OK;
+    int fd;
+    enum ssg_err e = ssg_input_open(path, max_bytes, &fd, why, why_len);
+    if (!e)
+        close(fd);
+    return e;
 }
 
 enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, size_t *len,
@@ -100,9 +100,10 @@ enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, 
 {
     *data = NULL;
     *len = 0;
-    int fd = ssg_input_open(path, max_bytes, why, why_len);
-    if (fd < 0)
-        return errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
+    int fd;
+    enum ssg_err opened = ssg_input_open(path, max_bytes, &fd, why, why_len);
+    if (opened)
+        return opened;
     struct stat st;
     fstat(fd, &st);
     /* Read at most the size fstat gave plus one byte: a file that grows while it is read

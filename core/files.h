@@ -31,9 +31,11 @@
 #define SSG_MAX_MODEL_BYTES (1LL << 30)   /* a glTF, .glb or one of its buffers/images */
 #define SSG_MAX_IMAGE_BYTES (2LL << 30)   /* an image: EXR, PNG, HDR, ... */
 
-/* Opens path for reading when it is a regular file of at most max_bytes; -1 with the
- * reason in why (e.g. "not a regular file (a FIFO)") otherwise. The caller closes it. */
-int ssg_input_open(const char *path, long long max_bytes, char *why, size_t why_len);
+/* Opens path for reading into *fd when it is a regular file of at most max_bytes: SSG_OK
+ * (the caller closes *fd), else SSG_E_IO (cannot open, not a regular file) or SSG_E_SIZE
+ * (too large) with the reason in why, e.g. "not a regular file (it is a FIFO)". */
+enum ssg_err ssg_input_open(const char *path, long long max_bytes, int *fd, char *why,
+                            size_t why_len);
 
 /* ssg_input_open and close: SSG_OK, or SSG_E_IO (cannot open, not regular) or SSG_E_SIZE
  * (too large) with the reason in why. */

@@ -176,9 +176,9 @@ std::string layer_list(const ImageSpec &spec)
 enum ssg_err check_readable(const char *path, struct ssg_diags *diags)
 {
     char why[320];
-    int fd = ssg_input_open(path, SSG_MAX_IMAGE_BYTES, why, sizeof why);
-    if (fd < 0) {
-        enum ssg_err e = errno == EFBIG ? SSG_E_SIZE : SSG_E_IO;
+    int fd;
+    enum ssg_err e = ssg_input_open(path, SSG_MAX_IMAGE_BYTES, &fd, why, sizeof why);
+    if (e) {
         ssg_diag_file(diags, e, path, "cannot read image: %s", why);
         return e;
     }
