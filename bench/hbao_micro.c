@@ -21,7 +21,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 #include "micro.h"

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 enum { W = 1920, H = 1080 };

@@ -16,8 +16,8 @@
 #include <unistd.h>
 
 #include "bench.h"
-#include "files.h"
-#include "diag.h"
+#include "lang/files.h"
+#include "lang/diag.h"
 #include "plot.h"
 
 /* At most 64 values a sweep, and at most MAX_CELLS cells in one bench: each finished cell

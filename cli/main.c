@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "bench.h"
-#include "files.h"
+#include "lang/files.h"
 #include "ssgraph.h"
 
 enum { MAX_SETS = 256, MAX_INPUTS = 24, EXIT_INVALID = 1, EXIT_USAGE = 2 };

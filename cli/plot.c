@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "files.h"
+#include "lang/files.h"
 #include "plot.h"
 
 /* Runs `gnuplot -e "outfile='TMP'" NAME.gp` in dir, stderr into the log temporary. */

@@ -1,10 +1,10 @@
 /* fuzz_gltf.c - libFuzzer target for glTF loading: the input is a .glb (binary magic) or a
  * .gltf (JSON) file, read through tinygltf and flattened into meshes, materials, textures
- * and a camera (core/gltf.h). Buffers it names resolve next to the temporary file, so a
+ * and a camera (core/scene/gltf.h). Buffers it names resolve next to the temporary file, so a
  * finding that needs one names a missing or special file (a URI of /dev/zero, say). */
 #define _DEFAULT_SOURCE /* mkstemps */
 #include "fuzz_input.h"
-#include "gltf.h"
+#include "scene/gltf.h"
 
 static void load_gltf(const char *path)
 {

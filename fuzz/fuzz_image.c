@@ -1,7 +1,7 @@
 /* fuzz_image.c - libFuzzer target for image and light-probe loading: the input, named by
  * its magic bytes (.exr, .png, .hdr, else .img), is read as an image by OpenImageIO
  * (ssg_image_read: every layout, tiled or scanline, every channel count) and then as a
- * scene's environment probe (the probe checks and tables of core/env.h). See
+ * scene's environment probe (the probe checks and tables of core/scene/env.h). See
  * fuzz_input.h. */
 #define _DEFAULT_SOURCE /* mkstemps */
 #include "fuzz_input.h"

@@ -1,5 +1,5 @@
 /* planes.h - synthetic G-buffers for AO tests: a scene of up to MAX_PLANES infinite planes,
- * ray cast analytically at pixel centres with the frame conventions of core/node.h
+ * ray cast analytically at pixel centres with the frame conventions of core/graph/node.h
  * (view-space position and normal, linear depth, background 0) and the exact projection of
  * ssg_frame_projection. Header-only, shared by the ssao and hbao tests; W and H are each
  * test's own frame size. */
@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 enum { MAX_PLANES = 3 };

@@ -10,10 +10,10 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "exec.h"
-#include "gl_backend.h"
-#include "node.h"
-#include "scene.h"
+#include "graph/exec.h"
+#include "gl/gl_backend.h"
+#include "graph/node.h"
+#include "scene/scene.h"
 #include "scenes.h"
 
 /* A path in the test's temporary folder (SSG_TMP, else /tmp, as scenes.h's). */

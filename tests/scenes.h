@@ -16,8 +16,8 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "node.h"
-#include "scene.h"
+#include "graph/node.h"
+#include "scene/scene.h"
 
 /* Writes text to <SSG_TMP>/<name>.scene and loads it with its assets; NULL when the file
    cannot be written (or, with a failed CHECK, when the scene does not load). */

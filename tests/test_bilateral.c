@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 struct images {

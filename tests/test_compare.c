@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 /* Runs compare; mask may be NULL. Returns the error code; out is filled on success. */

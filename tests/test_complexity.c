@@ -17,7 +17,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 #include "planes.h"

@@ -1,4 +1,4 @@
-/* test_env.c - the environment light (core/env.h) on light probes with known integrals,
+/* test_env.c - the environment light (core/scene/env.h) on light probes with known integrals,
  * written as EXR files and loaded through scene files like a user's:
  * - the lat-long convention (image centre looks down -z, row 0 straight up);
  * - a "sky" probe (radiance 1 above the horizon, 0 below): irradiance pi (1 + cos t) / 2
@@ -13,9 +13,9 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "env.h"
-#include "node.h"
-#include "scene.h"
+#include "scene/env.h"
+#include "graph/node.h"
+#include "scene/scene.h"
 
 static char tmp[512];
 

@@ -12,7 +12,7 @@
 
 #include "check.h"
 #include "gbuffer/gbuffer.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 extern const struct ssg_node_desc ssg_node_gbuffer;
 

@@ -26,7 +26,7 @@
 
 #include "check.h"
 #include "gl_parity.h"
-#include "node.h"
+#include "graph/node.h"
 
 extern const struct ssg_node_desc ssg_node_gbuffer;
 

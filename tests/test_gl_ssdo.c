@@ -26,11 +26,11 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "exec.h"
-#include "gl_backend.h"
+#include "graph/exec.h"
+#include "gl/gl_backend.h"
 #include "planes.h"
 #include "gl_parity.h" /* after planes.h: its G-buffer helpers */
-#include "scene.h"
+#include "scene/scene.h"
 #include "scenes.h"
 #include "ssdo/ssdo.h"
 

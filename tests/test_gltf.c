@@ -1,11 +1,11 @@
-/* test_gltf.c - the glTF adapter (core/gltf.h): the bundled bunny loads with the OBJ's
+/* test_gltf.c - the glTF adapter (core/scene/gltf.h): the bundled bunny loads with the OBJ's
  * vertex and triangle counts; a small fixture checks transforms, computed normals,
  * materials, sRGB texture decoding and the camera; broken files give SSG_E_GLTF (or
  * SSG_E_IO) with the file name in the message, and never crash. */
 #include <string.h>
 
 #include "check.h"
-#include "gltf.h"
+#include "scene/gltf.h"
 
 #define OBJ_PATH "/usr/share/glmark2/models/bunny.obj"
 

@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "graph.h"
+#include "graph/graph.h"
 
 static char tmpdir[512];
 static char scene[1024];

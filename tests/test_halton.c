@@ -6,7 +6,7 @@
 
 #include "check.h"
 #include "halton/halton.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 static struct ssg_frame frame_seed(uint64_t seed)

@@ -3,7 +3,7 @@
  *
  * Scenes are convex "air" regions bounded by planes (the camera inside), so the visible
  * surface along a ray is the nearest plane the ray leaves the region through. Pixels are
- * cast through their centres with the inverse of the projection in core/node.h.
+ * cast through their centres with the inverse of the projection in core/graph/node.h.
  *
  * Why HBAO is exactly 1 on an open plane: every sample is a point of the plane, so its
  * offset H from the pixel's point lies in the tangent plane; the node brings samples
@@ -40,7 +40,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 #include "planes.h"

@@ -11,10 +11,10 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "imageio.h"
+#include "io/imageio.h"
 #include "lightprobe/lightprobe.h"
 #include "scene_node.h"
-#include "trace.h"
+#include "common/trace.h"
 
 enum { W = 160, H = 100 };
 

@@ -1,4 +1,4 @@
-/* test_imageio.c - image files (core/imageio.h, ssg_image_read): multi-layer EXR round
+/* test_imageio.c - image files (core/io/imageio.h, ssg_image_read): multi-layer EXR round
  * trip with exact floats, PNG codes of known inputs per tone curve (decoded with stb_image,
  * independently of our reader), byte determinism, error codes with file names for corrupt,
  * missing and oversized files, and no file left behind by a failed write.
@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "imageio.h"
+#include "io/imageio.h"
 
 /* stb_image, static and PNG only, decodes our PNGs independently of our own reader. Its
    unused static functions are reported at the end of the file, so that warning stays off

@@ -12,8 +12,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "env.h"
-#include "imageio.h"
+#include "scene/env.h"
+#include "io/imageio.h"
 #include "lightprobe/lightprobe.h"
 #include "scene_node.h"
 

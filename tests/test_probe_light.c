@@ -17,7 +17,7 @@
 #include "probe_light/probe_light.h"
 #include "scene_node.h"
 #include "shadowmaps/shadowmaps.h"
-#include "trace.h"
+#include "common/trace.h"
 
 extern const struct ssg_node_desc ssg_node_gbuffer;
 

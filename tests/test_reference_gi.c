@@ -43,7 +43,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "env.h"
+#include "scene/env.h"
 #include "gbuffer/gbuffer.h"
 #include "reference_gi/reference_gi.h"
 #include "scenes.h"

@@ -1,4 +1,4 @@
-/* test_scene.c - scene files (core/scene.h): every kind of mistake is reported with its
+/* test_scene.c - scene files (core/scene/scene.h): every kind of mistake is reported with its
  * code at its exact line and column, all in one pass; the Cornell box loads with the
  * expected entities; primitives tessellate as documented; glTF meshes are placed and
  * their camera used; the default camera frames the scene; check mode opens no assets;
@@ -9,10 +9,10 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "imageio.h"
-#include "node.h"
-#include "rt.h"
-#include "scene.h"
+#include "io/imageio.h"
+#include "graph/node.h"
+#include "scene/rt.h"
+#include "scene/scene.h"
 
 static char tmp_dir[512];
 

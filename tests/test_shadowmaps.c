@@ -1,5 +1,5 @@
 /* test_shadowmaps.c - the `shadowmaps` node against the analytic depths of a floor and a
- * box (core/shadowmap.h's frame: map plane at centre + radius l, depth along -l):
+ * box (nodes/common/shadowmap.h's frame: map plane at centre + radius l, depth along -l):
  * - light straight down: floor texels hold radius + centre.y, the box's top radius +
  *   centre.y - 0.5, texels beyond the floor hold SSG_SHADOW_EMPTY, and the box covers as
  *   many texels as its top's area says;

@@ -3,7 +3,7 @@
  *
  * Scenes are convex "air" regions bounded by planes (the camera inside), so the visible
  * surface along a ray is the nearest plane the ray leaves the region through. Pixels are
- * cast through their centres with the inverse of the projection in core/node.h.
+ * cast through their centres with the inverse of the projection in core/graph/node.h.
  *
  * Why SSAO can be exactly 1 on an open plane: a sample S above the plane lies between the
  * camera and the plane along its own ray, so the true depth there is >= -S.z. The node
@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "node.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 #include "planes.h"

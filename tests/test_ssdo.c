@@ -27,8 +27,8 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "node.h"
-#include "scene.h"
+#include "graph/node.h"
+#include "scene/scene.h"
 #include "ssgraph.h"
 
 #include "planes.h"

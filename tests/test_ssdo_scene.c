@@ -13,8 +13,8 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "node.h"
-#include "scene.h"
+#include "graph/node.h"
+#include "scene/scene.h"
 #include "scene_node.h"
 
 enum { W = 160, H = 96 };

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "imageio.h"
+#include "io/imageio.h"
 #include "write/write.h"
 
 extern const struct ssg_node_desc ssg_node_write;

@@ -4,7 +4,7 @@
 #ifndef SSG_BILATERAL_H
 #define SSG_BILATERAL_H
 
-#include "node.h"
+#include "graph/node.h"
 
 #define SSG_BILATERAL_MAX_SIZE 63
 

@@ -6,7 +6,7 @@
 #include <stdio.h>
 
 #include "bilateral.h"
-#include "gl.h"
+#include "gl/gl.h"
 
 /* Squarings that make normal_power (a power of two up to 64), else -1 (p ln c). */
 static int squarings(int power)

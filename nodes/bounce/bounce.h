@@ -5,7 +5,7 @@
 #ifndef SSG_BOUNCE_H
 #define SSG_BOUNCE_H
 
-#include "node.h"
+#include "graph/node.h"
 #include "ssdo/ssdo_sampling.h"
 
 struct ssg_bounce_params {

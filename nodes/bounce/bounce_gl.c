@@ -3,7 +3,7 @@
  * bounce, as bounce_cpu.c runs only ssdo_sampling.h's part of ssdo; the inputs and the
  * geometry's uniforms are bound by ssdo_gl.c's ssg_ssdo_gl_bind_geometry. */
 #include "bounce.h"
-#include "gl.h"
+#include "gl/gl.h"
 #include "ssdo/ssdo.h"
 
 enum ssg_err ssg_bounce_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

@@ -7,7 +7,7 @@
 #ifndef SSG_COMBINE_H
 #define SSG_COMBINE_H
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Input ports, in the order of the descriptor's table. */
 enum ssg_combine_input {

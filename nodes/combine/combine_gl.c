@@ -4,7 +4,7 @@
  * then uses the CPU's stand-ins (ao and modulation 1, environment and indirect 0). The
  * ambient factor k = ambient * ambient_color is the CPU's C expression, passed as is. */
 #include "combine.h"
-#include "gl.h"
+#include "gl/gl.h"
 
 /* Sizes and channels as the CPU kernel checks them (same message for all: the graph
    check has already located any real mistake). */

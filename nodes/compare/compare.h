@@ -3,7 +3,7 @@
 #ifndef SSG_COMPARE_H
 #define SSG_COMPARE_H
 
-#include "node.h"
+#include "graph/node.h"
 
 /* SSIM window: 11 x 11 taps (Wang et al. 2004, section III-C). */
 #define SSG_COMPARE_RADIUS 5

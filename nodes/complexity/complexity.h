@@ -6,7 +6,7 @@
 #ifndef SSG_COMPLEXITY_H
 #define SSG_COMPLEXITY_H
 
-#include "node.h"
+#include "graph/node.h"
 
 #define SSG_COMPLEXITY_MAX_SCALE 8       /* largest base cell side, px */
 #define SSG_COMPLEXITY_MAX_RESOLUTIONS 4 /* scales combined: scale, 2 scale, 4, 8 scale */

@@ -5,7 +5,7 @@
  * the grids and the level (complexity_count.glsl): 2 resolutions + 1 dispatches. The
  * projection of the inputs' size is worked out here as on the CPU. */
 #include "complexity.h"
-#include "gl.h"
+#include "gl/gl.h"
 
 /* The scratch images of one grid: means (normal + depth, point) and weights. */
 struct grid {

@@ -4,7 +4,7 @@
 #ifndef SSG_DOWNSAMPLE_H
 #define SSG_DOWNSAMPLE_H
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Ports, in order; output k copies input k. */
 enum {

@@ -2,7 +2,7 @@
  * downsample.glsl): one pass over the output, every port copied from the representative
  * pixel its invocation picks. It only selects pixels, so the result equals the CPU's. */
 #include "downsample.h"
-#include "gl.h"
+#include "gl/gl.h"
 
 /* Sampler and image names of port k in downsample.glsl. */
 static const char *const in_names[SSG_DOWNSAMPLE_PORTS] = {

@@ -4,7 +4,7 @@
 #ifndef SSG_GAUSSIAN_H
 #define SSG_GAUSSIAN_H
 
-#include "node.h"
+#include "graph/node.h"
 
 #define SSG_GAUSSIAN_MAX_SIZE 1023 /* widest window, px */
 

@@ -2,7 +2,7 @@
  * pass into a scratch image, then the vertical one, one dispatch per channel, the weights
  * from prepare() in a storage buffer. */
 #include "gaussian.h"
-#include "gl.h"
+#include "gl/gl.h"
 
 static void one_axis(struct ssg_gl_pass *p, const struct ssg_image *src, struct ssg_image *dst,
                      int ax, int ay)

@@ -6,7 +6,7 @@
  * Architecture, figure 10; Belonogov, "Global Illumination methods in simulated VR
  * environments", section 4.5, geometry pass): per pixel the view-space position, normal
  * and linear depth of the nearest surface, its albedo, and direct light. Visibility: one
- * primary ray per pixel centre through Embree (core/rt.h). Direct light: Lambert diffuse
+ * primary ray per pixel centre through Embree (core/scene/rt.h). Direct light: Lambert diffuse
  * plus the Blinn-Phong specular term (Blinn, "Models of light reflection for computer
  * synthesized pictures", SIGGRAPH 1977, the half-vector form N.H), without shadows:
  *   direct = sum over lights of (albedo / pi + specular * max(0, N.H)^shininess) * E,
@@ -15,7 +15,7 @@
  * with N the shading normal turned towards the camera and H = normalize(L + V).
  * Environment light (a separate output, so occlusion methods can darken it alone): the
  * unoccluded diffuse reflection of the scene's environment, albedo / pi * E_env(N), with
- * E_env the cosine convolution of the light probe (core/env.h), the term SSDO's
+ * E_env the cosine convolution of the light probe (core/scene/env.h), the term SSDO's
  * modulation factor darkens (Szentandrasi sec. 4.1: "equation (1) without the
  * visibility function").
  *
@@ -27,7 +27,7 @@
  * pixel's triangle and the ray is cast at that triangle alone, with the same formulas. */
 #include "gbuffer.h"
 
-#include "trace.h"
+#include "common/trace.h"
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {

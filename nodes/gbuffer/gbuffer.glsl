@@ -1,6 +1,6 @@
 // gbuffer.glsl - the G-buffer's shading pass on GL (method in gbuffer.c). Per pixel, the
 // ray through the pixel centre is intersected with the triangle gbuffer_raster.glsl found
-// there (a visibility buffer, core/gl_raster.h), so depth and barycentrics come from the
+// there (a visibility buffer, nodes/common/gl_raster.h), so depth and barycentrics come from the
 // ray as on the CPU; normal, albedo, direct and environment light then follow
 // gbuffer_cpu.c operation by operation, reading the scene's buffers (gl_raster.h).
 struct Mesh { int positions; int normals; int uvs; int indices; int material; };
@@ -82,7 +82,7 @@ vec3 texel3(Material m, int x, int y)
     return vec3(texel[o], texel[o + 1], texel[o + 2]);
 }
 
-// core/surface.c's sample_texture: bilinear between texel centres, wrapping around.
+// nodes/common/surface.c's sample_texture: bilinear between texel centres, wrapping around.
 vec3 sample_texture(Material m, vec2 uv)
 {
     float fx = uv.x * float(m.width) - 0.5, fy = uv.y * float(m.height) - 0.5;
@@ -106,7 +106,7 @@ vec3 env_row(int y, int x0, int x1, float ax)
     return (1.0 - ax) * ta + ax * tb;
 }
 
-// core/env.c's table_bilinear on the irradiance table, for unit world normal n.
+// core/scene/env.c's table_bilinear on the irradiance table, for unit world normal n.
 vec3 env_irradiance(vec3 n)
 {
     float u = 0.5 + atan(n.x, -n.z) / TWO_PI_F, v = acos(clamp(n.y, -1.0, 1.0)) / PI_F;

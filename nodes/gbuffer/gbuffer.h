@@ -4,7 +4,7 @@
 #ifndef SSG_GBUFFER_H
 #define SSG_GBUFFER_H
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Output ports, in order. */
 enum { SSG_GBUFFER_OUT_POSITION, SSG_GBUFFER_OUT_NORMAL, SSG_GBUFFER_OUT_DEPTH,

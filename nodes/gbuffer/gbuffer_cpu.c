@@ -12,10 +12,10 @@
 #include <string.h>
 
 #include "gbuffer.h"
-#include "env.h"
-#include "rt.h"
-#include "surface.h"
-#include "scene.h"
+#include "scene/env.h"
+#include "scene/rt.h"
+#include "common/surface.h"
+#include "scene/scene.h"
 
 enum { ROWS_PER_BAND = 4, CHUNK = 128 };
 

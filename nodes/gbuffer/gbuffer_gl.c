@@ -1,16 +1,16 @@
 /* gbuffer_gl.c - GL side of the `gbuffer` node (method in gbuffer.c): the scene is
- * rasterised into a visibility buffer (mesh and triangle per pixel, core/gl_raster.h,
+ * rasterised into a visibility buffer (mesh and triangle per pixel, nodes/common/gl_raster.h,
  * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
  * its triangle and writes all six outputs with the CPU kernel's formulas. The scene is
  * uploaded per run; the lights and the environment's irradiance table go in as they are
  * in the scene. */
 #include <stdlib.h>
 
-#include "env.h"
+#include "scene/env.h"
 #include "gbuffer.h"
-#include "gl.h"
-#include "gl_raster.h"
-#include "scene.h"
+#include "gl/gl.h"
+#include "common/gl_raster.h"
+#include "scene/scene.h"
 
 enum { LIGHT_FLOATS = 12, LIGHT_BINDING = 5, ENV_BINDING = 6 };
 

@@ -1,4 +1,4 @@
-// gbuffer_raster.glsl - the G-buffer's visibility pass on GL (core/gl_raster.h): each
+// gbuffer_raster.glsl - the G-buffer's visibility pass on GL (nodes/common/gl_raster.h): each
 // pixel centre gets the mesh (+1, 0 = background) and the triangle of the nearest surface
 // there; gbuffer.glsl does the rest from the scene's own data.
 #ifdef SSG_VERTEX

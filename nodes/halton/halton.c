@@ -33,8 +33,8 @@
 #include <string.h>
 
 #include "halton.h"
-#include "node.h"
-#include "random.h"
+#include "graph/node.h"
+#include "common/random.h"
 
 double ssg_halton_radical_inverse(uint64_t i, int base)
 {

@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "params.h"
+#include "lang/params.h"
 
 #define SSG_HALTON_MAX_COUNT 1024  /* most kernel samples */
 #define SSG_HALTON_MAX_PATTERN 64  /* largest rotation tile side */

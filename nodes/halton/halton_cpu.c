@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "halton.h"
-#include "node.h"
+#include "graph/node.h"
 
 static int shape_is(const struct ssg_image *im, int w, int h, int ch)
 {

@@ -2,7 +2,7 @@
  * the kernel and the rotation tile on the CPU, as for the CPU backend, so running is
  * copying those bytes into the two outputs (ssg_gl_fill). No Halton maths runs in GLSL:
  * both backends hold the very same floats. */
-#include "gl.h"
+#include "gl/gl.h"
 #include "halton.h"
 
 enum ssg_err ssg_halton_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

@@ -5,7 +5,7 @@
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
-#include "node.h"
+#include "graph/node.h"
 
 #define SSG_HBAO_MAX_DIRECTIONS 64
 #define SSG_HBAO_MAX_STEPS 64

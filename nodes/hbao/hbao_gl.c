@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "hbao_cpu.h"
 
 /* e1 = (1, 0, a_u) / sqrt(1 + a_u^2) per column, as hbao_pattern.c computes it: e1x for

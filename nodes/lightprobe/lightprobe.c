@@ -15,7 +15,7 @@
 #include <stdlib.h>
 
 #include "lightprobe.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,

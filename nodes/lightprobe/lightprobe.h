@@ -1,6 +1,6 @@
 /* lightprobe.h - the `lightprobe` node's parameters and constants (lightprobe.c), shared by
  * its backends and tests: the scene's environment turned into a light list (SSG_T_LIGHTS,
- * core/shadowmap.h) once, in prepare().
+ * nodes/common/shadowmap.h) once, in prepare().
  *
  * Method: Knuth and Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes",
  * sec. 3 and 4 ("Global part": the light probe is converted into directional lights by
@@ -8,9 +8,9 @@
 #ifndef SSG_LIGHTPROBE_H
 #define SSG_LIGHTPROBE_H
 
-#include "env.h"
-#include "node.h"
-#include "shadowmap.h"
+#include "scene/env.h"
+#include "graph/node.h"
+#include "common/shadowmap.h"
 
 enum ssg_lightprobe_sampling {
     SSG_LIGHTPROBE_UNIFORM,    /* a spherical Fibonacci set: near-equal areas 4 pi / N */

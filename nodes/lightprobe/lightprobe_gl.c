@@ -1,6 +1,6 @@
 /* lightprobe_gl.c - GL side of the `lightprobe` node (lightprobe.c): the light list made in
  * prepare() copied into the output texture (ssg_gl_fill), the CPU's very bytes. */
-#include "gl.h"
+#include "gl/gl.h"
 #include "lightprobe.h"
 
 enum ssg_err ssg_lightprobe_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

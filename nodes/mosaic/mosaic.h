@@ -2,7 +2,7 @@
 #ifndef SSG_MOSAIC_H
 #define SSG_MOSAIC_H
 
-#include "node.h"
+#include "graph/node.h"
 
 struct ssg_mosaic_params {
     int columns;   /* 0 = about square: ceil(sqrt(images)) */

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "mosaic.h"
-#include "text.h"
+#include "io/text.h"
 
 struct cell {
     int x, y, w, h; /* where the image lands (aspect kept, centred in its cell) */

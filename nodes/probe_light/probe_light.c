@@ -11,7 +11,7 @@
  * does not shadow itself: lit when depth <= map + offset) and fig. 8 (noise added to the
  * shadow map sample position, stored in a small tiled texture, for smoother shadows at the
  * price of a larger offset). The paper gives no values and no formula: the offset and the
- * noise radius are in map texels (every map has the same texel, core/shadowmap.h). A
+ * noise radius are in map texels (every map has the same texel, nodes/common/shadowmap.h). A
  * constant offset alone leaves surfaces that a light grazes shadowing themselves (the
  * map's depth changes by tan(N, l) per texel of lookup error: up to 0.7 texel of rounding
  * plus the jitter), so the offset grows by slope_offset x tan(N, l) texels, the usual
@@ -23,9 +23,9 @@
 #include <stdio.h>
 
 #include "probe_light.h"
-#include "random.h"
-#include "scene.h"
-#include "trace.h"
+#include "common/random.h"
+#include "scene/scene.h"
+#include "common/trace.h"
 
 static const double GOLDEN_ANGLE = 2.39996322972865332; /* pi (3 - sqrt 5) */
 

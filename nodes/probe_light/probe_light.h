@@ -4,8 +4,8 @@
 #ifndef SSG_PROBE_LIGHT_H
 #define SSG_PROBE_LIGHT_H
 
-#include "node.h"
-#include "shadowmap.h"
+#include "graph/node.h"
+#include "common/shadowmap.h"
 
 enum { SSG_PROBE_LIGHT_MAX_TILE = 16 };
 /* The largest tan(angle of N to l) the slope offset grows to (84 degrees). */
@@ -29,7 +29,7 @@ struct ssg_probe_light_params {
 struct ssg_probe_light_consts {
     struct ssg_probe_light_params p;
     float rot[9], eye[3];               /* view -> world: world = eye + rot^T view */
-    struct ssg_bounding_sphere sphere;  /* the maps' fit (core/shadowmap.h) */
+    struct ssg_bounding_sphere sphere;  /* the maps' fit (nodes/common/shadowmap.h) */
     /* the jitter tile: offsets in the unit disc, x plane then y plane, tile^2 each */
     float noise[2 * SSG_PROBE_LIGHT_MAX_TILE * SSG_PROBE_LIGHT_MAX_TILE];
 };

@@ -5,7 +5,7 @@
  * rotations are the CPU's floats, in storage buffers. */
 #include <stdlib.h>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "probe_light.h"
 
 static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_light_consts *c,

@@ -22,7 +22,7 @@
  * table of cos and sin made here once serves every pixel and no ray needs a sine. The
  * tangent frame comes from the normal by Duff et al., "Building an Orthonormal Basis,
  * Revisited" (JCGT 2017). Everything depends only on (x, y, seed, rays), never on the
- * threads. The table, the hash, the frame and the ray origin below are core/trace.h's,
+ * threads. The table, the hash, the frame and the ray origin below are nodes/common/trace.h's,
  * shared with reference_gi.
  *
  * Geometry: G-buffer positions and normals are in view space (node.h); world = eye +
@@ -43,12 +43,12 @@
  * mesh seen at a grazing angle it can lean past the triangle's own plane, and directions
  * of its hemisphere then leave below the surface, into the object. A path tracer counts
  * those as blocked; so does this node: each pixel traces its primary ray once more for the
- * triangle's face normal (core/trace.h), weights directions by the shading normal's cosine
+ * triangle's face normal (nodes/common/trace.h), weights directions by the shading normal's cosine
  * and counts every direction below the face's plane as occluded. */
 #include <stdio.h>
 
 #include "reference_ao.h"
-#include "trace.h"
+#include "common/trace.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,

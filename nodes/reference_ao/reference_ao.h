@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Input ports, in order. */
 enum { SSG_REFERENCE_AO_IN_POSITION, SSG_REFERENCE_AO_IN_NORMAL };

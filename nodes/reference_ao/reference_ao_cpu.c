@@ -2,7 +2,7 @@
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a short scalar setup
  * (world point and normal, raised origin, rotated tangent frame, the hashed shift of u:
- * the helpers of core/trace.h, shared with reference_gi) is followed by the rays in
+ * the helpers of nodes/common/trace.h, shared with reference_gi) is followed by the rays in
  * batches of BATCH: ssg_malley_dirs builds the directions from the prepared table (two
  * square roots, no trigonometry; the compiler vectorises it) into structure-of-arrays
  * scratch, and the batch goes to Embree as one occlusion query
@@ -12,9 +12,9 @@
  * (struct ssg_progress: stderr, only when it is a terminal) is advanced by whichever
  * thread finishes a band; nothing in the output depends on it. */
 #include "reference_ao.h"
-#include "rt.h"
-#include "scene.h"
-#include "trace.h"
+#include "scene/rt.h"
+#include "scene/scene.h"
+#include "common/trace.h"
 
 enum { ROWS_PER_BAND = 2, BATCH = 256 };
 

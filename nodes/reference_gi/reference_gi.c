@@ -29,7 +29,7 @@
  *   paths of a pixel draw different, stratified directions). A path that escapes adds
  *   nothing: the environment seen directly is the direct term's. At y the normal is the
  *   scene's shading normal (interpolated, as the G-buffer's default), normalised and
- *   turned to face the arriving ray; albedo is material times texture (core/surface.h).
+ *   turned to face the arriving ray; albedo is material times texture (nodes/common/surface.h).
  *   out = direct + bounce. Background pixels (normal 0) are 0 in every output.
  *
  * Sampling (quasi-Monte Carlo, Szentandrasi sec. 4.2, eq. 5-7): the Hammersley set
@@ -45,7 +45,7 @@
  * sin serve every pixel). Tangent frames: Duff et al., "Building an Orthonormal Basis,
  * Revisited" (JCGT 2017). A pixel depends only on (x, y, seed, samples) and its inputs,
  * never on the threads. The Hammersley disk, the hash, the frame and the ray origin at x
- * are core/trace.h's, shared with reference_ao.
+ * are nodes/common/trace.h's, shared with reference_ao.
  *
  * Geometry (as reference_ao.c): world = eye + R^T view, R the rotation of
  * ssg_camera_view_matrix. Rays from x start at o = p + e (n + v), v the unit vector to the
@@ -58,10 +58,10 @@
  * light (t in [0, 1] of the unnormalised direction); others run to infinity. */
 #include <stdio.h>
 
-#include "env.h"
+#include "scene/env.h"
 #include "reference_gi.h"
-#include "scene.h"
-#include "trace.h"
+#include "scene/scene.h"
+#include "common/trace.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,

@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Ports, in order. */
 enum { SSG_REFERENCE_GI_IN_POSITION, SSG_REFERENCE_GI_IN_NORMAL, SSG_REFERENCE_GI_IN_ALBEDO };

@@ -3,7 +3,7 @@
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a scalar setup (world
  * point, normal and albedo, raised origin, rotated tangent frame, the hashed
- * Cranley-Patterson shifts: the helpers of core/trace.h, shared with reference_ao) is
+ * Cranley-Patterson shifts: the helpers of nodes/common/trace.h, shared with reference_ao) is
  * followed by the estimators, each in batches of BATCH:
  * - the lights' shadow rays from x, one scalar occlusion query each;
  * - the environment samples: drawn into structure-of-arrays scratch, those above the
@@ -20,12 +20,12 @@
  * the output depends on it. */
 #include <math.h>
 
-#include "env.h"
+#include "scene/env.h"
 #include "reference_gi.h"
-#include "rt.h"
-#include "scene.h"
-#include "surface.h"
-#include "trace.h"
+#include "scene/rt.h"
+#include "scene/scene.h"
+#include "common/surface.h"
+#include "common/trace.h"
 
 enum { ROWS_PER_BAND = 2, BATCH = 128 };
 

@@ -4,15 +4,15 @@
  * Method: Knuth and Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes",
  * sec. 3 "Global part" and fig. 5 (a shadow map for every light the probe became, the
  * whole scene rendered into each). The paper gives neither the fit nor the format: every
- * map here covers the scene's bounding sphere (core/shadowmap.h), so all maps share one
+ * map here covers the scene's bounding sphere (nodes/common/shadowmap.h), so all maps share one
  * texel size 2 r / R and one depth offset suits all; a texel holds the distance from the
  * map's plane to the nearest surface along the light, SSG_SHADOW_EMPTY where there is
  * none. The CPU casts one Embree ray per texel centre; GL rasterises the scene into each
  * layer of a texture array with a depth test: both sample the texel centres. */
 #include <stdio.h>
 
-#include "image.h"
-#include "scene.h"
+#include "graph/image.h"
+#include "scene/scene.h"
 #include "shadowmaps.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
@@ -62,7 +62,7 @@ static const struct ssg_port_desc inputs[] = {
 
 static const struct ssg_port_desc outputs[] = {
     {.name = "maps", .types = SSG_T_SHADOWMAPS,
-     .doc = "R x R, channel i the depth map of light i (core/shadowmap.h)"},
+     .doc = "R x R, channel i the depth map of light i (nodes/common/shadowmap.h)"},
 };
 
 const struct ssg_node_desc ssg_node_shadowmaps = {

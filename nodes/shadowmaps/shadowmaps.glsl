@@ -1,5 +1,5 @@
 // shadowmaps.glsl - the `shadowmaps` node on GL (shadowmaps_gl.c): the scene drawn once
-// per light into layer ssg_layer with core/shadowmap.h's orthographic frame, built here
+// per light into layer ssg_layer with nodes/common/shadowmap.h's orthographic frame, built here
 // from the light's direction as ssg_shadow_frame_make builds it; each texel keeps the
 // nearest surface's distance from the map's plane along -l (linear in an orthographic
 // view, so the interpolated value is the surface's own).

@@ -1,10 +1,10 @@
 /* shadowmaps.h - the `shadowmaps` node (shadowmaps.c): one orthographic depth map per
- * light of a light list, as core/shadowmap.h defines them. */
+ * light of a light list, as nodes/common/shadowmap.h defines them. */
 #ifndef SSG_SHADOWMAPS_H
 #define SSG_SHADOWMAPS_H
 
-#include "node.h"
-#include "shadowmap.h"
+#include "graph/node.h"
+#include "common/shadowmap.h"
 
 struct ssg_shadowmaps_params {
     int resolution; /* map side R in texels; default 256 */

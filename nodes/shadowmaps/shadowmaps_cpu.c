@@ -3,8 +3,8 @@
  * all maps run in parallel. */
 #include <stdlib.h>
 
-#include "rt.h"
-#include "scene.h"
+#include "scene/rt.h"
+#include "scene/scene.h"
 #include "shadowmaps.h"
 
 enum { MAX_RES = SSG_SHADOW_RES_MAX };

@@ -1,9 +1,9 @@
 /* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in shadowmaps.c): the scene is
- * uploaded (core/gl_raster.h) and drawn once per light into that light's layer of the
+ * uploaded (nodes/common/gl_raster.h) and drawn once per light into that light's layer of the
  * output texture array by shadowmaps.glsl, which reads the light's direction from the
  * light list itself, so the list never has to come back to the CPU. */
-#include "gl.h"
-#include "gl_raster.h"
+#include "gl/gl.h"
+#include "common/gl_raster.h"
 #include "shadowmaps.h"
 
 enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

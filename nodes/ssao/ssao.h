@@ -4,7 +4,7 @@
 #ifndef SSG_SSAO_H
 #define SSG_SSAO_H
 
-#include "node.h"
+#include "graph/node.h"
 
 enum ssg_ssao_range {
     SSG_SSAO_RANGE_NONE,   /* every occluder counts fully */

@@ -3,7 +3,7 @@
  * kernel works out once per run (the projection of this resolution, the cap's factor,
  * 1 / K) is worked out here the same way and passed as uniforms, so both backends start
  * from the same bits. */
-#include "gl.h"
+#include "gl/gl.h"
 #include "ssao.h"
 
 enum ssg_err ssg_ssao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

@@ -10,7 +10,7 @@
  * with direction w = s / |s| (N.w = s.z / |s|), and dw = 2 pi / K (eq. 2: the kernel must
  * be uniform over the hemisphere, `halton(mapping=uniform)`):
  *   environment: lit += L_env(w) (N.w) V dw, full += L_env(w) (N.w) dw (eq. 2), L_env from
- *     the scene's environment as a view-space cube (core/env.h, no trigonometry per sample);
+ *     the scene's environment as a view-space cube (core/scene/env.h, no trigonometry per sample);
  *   point and directional lights l: E_l = colour intensity max(0, N.L_l) (/ d^2 for a
  *     point light), the unshadowed irradiance gbuffer computes. A delta light cannot be hit
  *     by hemisphere samples, so its visibility is estimated from the samples near its
@@ -40,7 +40,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scene.h"
+#include "scene/scene.h"
 #include "ssdo.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,

@@ -31,7 +31,7 @@ uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst;
 // dw_tab[n] = 2 pi / n rounded from double as the CPU does, n = 0..K.
 layout(std430, binding = 0) readonly buffer DwTable { float dw_tab[]; };
-// The environment as a view-space cube (core/env.h), RGB per texel (env = ENV_CUBE).
+// The environment as a view-space cube (core/scene/env.h), RGB per texel (env = ENV_CUBE).
 layout(std430, binding = 1) readonly buffer EnvCube { float cube_rgb[]; };
 
 const int MAX_LIGHTS = 8;   // SSG_SSDO_MAX_LIGHTS
@@ -261,7 +261,7 @@ float lobe_pow(float cl, float nw)
     return p;
 }
 
-// The nearest cube texel's float offset for direction d (core/env.h ssg_env_cube_index).
+// The nearest cube texel's float offset for direction d (core/scene/env.h ssg_env_cube_index).
 int cube_offset(vec3 d)
 {
     const int n = CUBE_SIZE;

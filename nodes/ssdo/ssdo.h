@@ -6,8 +6,8 @@
 #ifndef SSG_SSDO_H
 #define SSG_SSDO_H
 
-#include "env.h"
-#include "node.h"
+#include "scene/env.h"
+#include "graph/node.h"
 #include "ssdo_sampling.h"
 
 #define SSG_SSDO_MAX_LIGHTS 8

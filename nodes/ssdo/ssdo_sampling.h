@@ -38,7 +38,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Input ports of both nodes, in order (bounce has the same ports, albedo and light
    required there). */

@@ -4,7 +4,7 @@
 #ifndef SSG_UPSAMPLE_H
 #define SSG_UPSAMPLE_H
 
-#include "node.h"
+#include "graph/node.h"
 
 #define SSG_UPSAMPLE_MAX_SIZE 9
 #define SSG_UPSAMPLE_MAX_FACTOR 16

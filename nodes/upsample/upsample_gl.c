@@ -3,7 +3,7 @@
  * with the same weights, out2 written 0 when in2 is unconnected. */
 #include <stdio.h>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "upsample.h"
 
 /* The run-time re-check of upsample_cpu.c: the factor, or 0 when the shapes disagree. */

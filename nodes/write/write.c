@@ -6,11 +6,11 @@
  * named layers: a scalar becomes <key>.Y, a vector <key>.X/Y/Z, a colour <key>.R/G/B.
  * The PNG's tone curve defaults to ACES (Narkowicz 2015 fit): it keeps highlights of the
  * shaded frame from clipping; `tonemap=clamp` shows data in [0, 1] (AO, albedo) unchanged.
- * Files appear complete or not at all (temporary name, then rename; core/imageio.h). */
+ * Files appear complete or not at all (temporary name, then rename; core/io/imageio.h). */
 #include <stdio.h>
 #include <string.h>
 
-#include "imageio.h"
+#include "io/imageio.h"
 #include "write.h"
 
 static const struct ssg_port_desc inputs[] = {

@@ -1,12 +1,12 @@
 /* write.h - the parameters of the `write` sink node, shared by write.c (descriptor,
  * check), write_cpu.c (writing the files) and tests/test_write.c.
- * The files themselves are written by core/imageio.h. */
+ * The files themselves are written by core/io/imageio.h. */
 #ifndef SSG_WRITE_H
 #define SSG_WRITE_H
 
 #include <stddef.h>
 
-#include "node.h"
+#include "graph/node.h"
 
 /* Parameters as the graph file sets them (see the table in write.c). */
 struct ssg_write_params {

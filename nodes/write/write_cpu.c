@@ -1,10 +1,10 @@
 /* write_cpu.c - what the `write` node does when it runs (method and layout in write.c):
- * create the output directory, gather the layers, hand them to core/imageio.h. */
+ * create the output directory, gather the layers, hand them to core/io/imageio.h. */
 #include <errno.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "imageio.h"
+#include "io/imageio.h"
 #include "write.h"
 
 enum { PATH_MAX_LEN = 4096 };

@@ -1,0 +1,105 @@
+/* gl.h - what a node's GL side (nodes/<name>/<name>_gl.c) may use: compute passes over the
+ * frame's images, written in GLSL files next to the node. A node never calls GL itself;
+ * this header is its whole view of the GL backend.
+ *
+ * Images on the GL backend. Every image (1 to 4 channels) is one GL_TEXTURE_2D_ARRAY of
+ * format R32F with one layer per channel, so its memory is the CPU's planar layout and a
+ * transfer is one copy. Texel (x, y) is pixel (x, y): row 0 is the top, as on the CPU. The
+ * runtime (core/gl/gl_runtime.c) uploads an input that was produced on the CPU before the node
+ * runs and downloads an output when a CPU node reads it; a node sees only its images.
+ *
+ * A pass: one compute shader over a w x h grid of invocations (8 x 8 per work group, see
+ * core/gl/common.glsl, which every shader gets first). Shaders are the files
+ * nodes/<name>/<file>.glsl, compiled into the binary and found by file name ("ssao.glsl").
+ * Compile and link errors are reported with node, file and line. Programs are compiled once
+ * per process for each (file, defines) and cached.
+ *
+ *   struct ssg_gl_pass p;
+ *   ssg_gl_pass_begin(&p, ctx, "gaussian.glsl", "#define HORIZONTAL 1\n");
+ *   ssg_gl_input(&p, "src", io->in[0]);          // uniform sampler2DArray src;
+ *   ssg_gl_output(&p, "dst", tmp);               // layout(r32f) uniform image2DArray dst;
+ *   ssg_gl_int(&p, "radius", c->radius);         // uniform int radius;
+ *   ssg_gl_floats(&p, "weight", 2 * r + 1, c->weight);
+ *   ssg_gl_dispatch(&p, w, h);
+ *   return ssg_gl_pass_end(&p);
+ *
+ * Errors are sticky: after the first failing call the pass does nothing and
+ * ssg_gl_pass_end returns that error (already reported through ctx->diags), so a node can
+ * chain calls and check once. Uniforms the shader does not use (optimised away) are
+ * ignored. One thread (the executor's) uses GL at a time. */
+#ifndef SSG_GL_H
+#define SSG_GL_H
+
+#include <stddef.h>
+
+#include "graph/node.h"
+
+/* Invocations per work group on each axis (core/gl/common.glsl's local_size). */
+#define SSG_GL_GROUP 8
+
+struct ssg_gl_pass {
+    const struct ssg_node_ctx *ctx; /* the node running the pass (for messages) */
+    const char *shader;             /* file name, for messages */
+    unsigned program;               /* GL program, 0 after an error */
+    int next_unit;                  /* next free texture unit */
+    int next_image;                 /* next free image unit */
+    enum ssg_err err;               /* first error, SSG_OK while all went well */
+};
+
+/* Compiles (or finds in the cache) the shader file with `defines` (GLSL lines inserted
+ * after #version, NULL = none) and makes it current. */
+enum ssg_err ssg_gl_pass_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                               const char *shader, const char *defines);
+
+/* A whole pass of its own: copies prepared planar floats (width x height x channels of each
+ * dst, as in ssgraph.h) into `count` output images, for nodes whose output is a table made
+ * in prepare() (the same bytes as the CPU backend writes). */
+enum ssg_err ssg_gl_fill(const struct ssg_node_ctx *ctx, const float *const *planes,
+                         struct ssg_image *const *dst, int count);
+
+/* Binds an image for reading as `uniform sampler2DArray <name>` (texelFetch, or texture()
+ * with linear filtering and clamp-to-edge). NULL (an unconnected optional input) binds a
+ * 1x1 image of zeros. Also sets `uniform bool <name>_bound` when the shader declares it. */
+void ssg_gl_input(struct ssg_gl_pass *pass, const char *name, const struct ssg_image *image);
+/* Binds an image for writing as `layout(r32f) uniform image2DArray <name>` (imageStore;
+ * also readable with imageLoad when declared without writeonly). */
+void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image *image);
+
+/* Uniforms. Arrays: `count` values into `uniform float name[N]` (count <= N). */
+void ssg_gl_int(struct ssg_gl_pass *pass, const char *name, int value);
+void ssg_gl_ivec2(struct ssg_gl_pass *pass, const char *name, int x, int y);
+void ssg_gl_float(struct ssg_gl_pass *pass, const char *name, float value);
+void ssg_gl_vec2(struct ssg_gl_pass *pass, const char *name, float x, float y);
+void ssg_gl_vec3(struct ssg_gl_pass *pass, const char *name, const float v[3]);
+void ssg_gl_vec4(struct ssg_gl_pass *pass, const char *name, const float v[4]);
+void ssg_gl_floats(struct ssg_gl_pass *pass, const char *name, int count, const float *v);
+void ssg_gl_ints(struct ssg_gl_pass *pass, const char *name, int count, const int *v);
+/* Sets every parameter of a node's table as a uniform named after it: float -> float,
+ * int/bool/enum -> int, vec3 -> vec3 (strings, names and int lists are skipped). */
+void ssg_gl_params(struct ssg_gl_pass *pass, struct ssg_param_table table, const void *params);
+/* The projection of node.h as `uniform vec3 <name>` = (f, cx, cy). */
+void ssg_gl_projection(struct ssg_gl_pass *pass, const char *name,
+                       const struct ssg_projection *p);
+
+/* Read-only data too large or too irregular for uniforms (tables, light lists, a cube map
+ * of the environment): `bytes` copied into a shader storage buffer at `binding`, i.e.
+ * `layout(std430, binding = B) readonly buffer Name { float v[]; };`. Lay the C data out as
+ * std430 does: scalars and float arrays match C; a vec3 does not (use float triples). */
+void ssg_gl_buffer(struct ssg_gl_pass *pass, int binding, const void *data, size_t bytes);
+
+/* Runs the shader over a width x height grid (ceil(width / 8) x ceil(height / 8) work
+ * groups; the shader returns early outside the grid) and makes its image writes visible to
+ * the next pass. May be called several times in one pass with different uniforms. */
+void ssg_gl_dispatch(struct ssg_gl_pass *pass, int width, int height);
+
+/* Checks for GL errors and returns the pass's first error. */
+enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass);
+
+/* A GL-only image for a node's intermediate results (a separable filter's middle): it has
+ * no CPU pixels (data is NULL) and lives until ssg_gl_scratch_release. NULL when out of
+ * memory (reported). Scratch images of the same shape are reused across nodes. */
+struct ssg_image *ssg_gl_scratch(const struct ssg_node_ctx *ctx, int width, int height,
+                                 int channels);
+void ssg_gl_scratch_release(struct ssg_image **image);
+
+#endif

@@ -1,0 +1,213 @@
+/* gl_pass.c - compute passes for the nodes' GL sides (gl.h): a program, its images and
+ * uniforms, and dispatches. Errors are sticky per pass (see gl.h). */
+#include <stdio.h>
+#include <string.h>
+
+#include "gl/gl.h"
+#include "gl/gl_fn.h"
+#include "gl/gl_runtime.h"
+#include "lang/parse.h"
+
+enum { MAX_BUFFERS = 8 };
+static GLuint buffers[MAX_BUFFERS]; /* one storage buffer per binding, reused */
+
+static int usable(const struct ssg_gl_pass *p)
+{
+    return p->err == SSG_OK && p->program != 0;
+}
+
+static GLint where(const struct ssg_gl_pass *p, const char *name)
+{
+    return usable(p) ? glGetUniformLocation(p->program, name) : -1;
+}
+
+enum ssg_err ssg_gl_pass_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                               const char *shader, const char *defines)
+{
+    memset(pass, 0, sizeof *pass);
+    pass->ctx = ctx;
+    pass->shader = shader;
+    pass->program = ssg_gl_program_get(ctx, shader, defines, SSG_GL_COMPUTE);
+    if (!pass->program) {
+        pass->err = SSG_E_SHADER;
+        return pass->err;
+    }
+    glUseProgram(pass->program);
+    return SSG_OK;
+}
+
+void ssg_gl_input(struct ssg_gl_pass *pass, const char *name, const struct ssg_image *image)
+{
+    GLint loc = where(pass, name);
+    char bound[96];
+    snprintf(bound, sizeof bound, "%s_bound", name);
+    GLint bound_loc = where(pass, bound);
+    if (bound_loc >= 0)
+        glProgramUniform1i(pass->program, bound_loc, image != NULL);
+    if (loc < 0)
+        return;
+    int unit = pass->next_unit++;
+    glBindTextureUnit((GLuint)unit, image ? ssg_gl_texture_of(image) : ssg_gl_zero_texture());
+    glProgramUniform1i(pass->program, loc, unit);
+}
+
+void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image *image)
+{
+    GLint loc = where(pass, name);
+    if (loc < 0 || !image)
+        return;
+    int unit = pass->next_image++;
+    glBindImageTexture((GLuint)unit, ssg_gl_texture_of(image), 0, GL_TRUE, 0, GL_READ_WRITE,
+                       GL_R32F);
+    glProgramUniform1i(pass->program, loc, unit);
+}
+
+void ssg_gl_int(struct ssg_gl_pass *pass, const char *name, int value)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform1i(pass->program, loc, value);
+}
+
+void ssg_gl_ivec2(struct ssg_gl_pass *pass, const char *name, int x, int y)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform2i(pass->program, loc, x, y);
+}
+
+void ssg_gl_float(struct ssg_gl_pass *pass, const char *name, float value)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform1f(pass->program, loc, value);
+}
+
+void ssg_gl_vec2(struct ssg_gl_pass *pass, const char *name, float x, float y)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform2f(pass->program, loc, x, y);
+}
+
+void ssg_gl_vec3(struct ssg_gl_pass *pass, const char *name, const float v[3])
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform3f(pass->program, loc, v[0], v[1], v[2]);
+}
+
+void ssg_gl_vec4(struct ssg_gl_pass *pass, const char *name, const float v[4])
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0)
+        glProgramUniform4f(pass->program, loc, v[0], v[1], v[2], v[3]);
+}
+
+void ssg_gl_floats(struct ssg_gl_pass *pass, const char *name, int count, const float *v)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0 && count > 0)
+        glProgramUniform1fv(pass->program, loc, count, v);
+}
+
+void ssg_gl_ints(struct ssg_gl_pass *pass, const char *name, int count, const int *v)
+{
+    GLint loc = where(pass, name);
+    if (loc >= 0 && count > 0)
+        glProgramUniform1iv(pass->program, loc, count, v);
+}
+
+void ssg_gl_params(struct ssg_gl_pass *pass, struct ssg_param_table table, const void *params)
+{
+    char name[96];
+    for (int i = 0; i < table.count; i++) {
+        const struct ssg_param_desc *d = &table.params[i];
+        const char *at = (const char *)params + d->offset;
+        snprintf(name, sizeof name, "p_%s", d->name);
+        switch (d->type) {
+        case SSG_P_FLOAT:
+            ssg_gl_float(pass, name, *(const float *)(const void *)at);
+            break;
+        case SSG_P_INT:
+        case SSG_P_BOOL:
+        case SSG_P_ENUM:
+            ssg_gl_int(pass, name, *(const int *)(const void *)at);
+            break;
+        case SSG_P_VEC3:
+            ssg_gl_vec3(pass, name, (const float *)(const void *)at);
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+void ssg_gl_projection(struct ssg_gl_pass *pass, const char *name,
+                       const struct ssg_projection *p)
+{
+    const float v[3] = {p->f, p->cx, p->cy};
+    ssg_gl_vec3(pass, name, v);
+}
+
+void ssg_gl_buffer(struct ssg_gl_pass *pass, int binding, const void *data, size_t bytes)
+{
+    if (!usable(pass))
+        return;
+    if (binding < 0 || binding >= MAX_BUFFERS) {
+        pass->err = ssg_node_fail(pass->ctx, SSG_E_BACKEND, "gl", "storage buffer binding "
+                                  "out of range (0 to 7)");
+        return;
+    }
+    if (!buffers[binding])
+        glCreateBuffers(1, &buffers[binding]);
+    glNamedBufferData(buffers[binding], (GLsizeiptr)(bytes ? bytes : 4), data, GL_STREAM_DRAW);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)binding, buffers[binding]);
+}
+
+void ssg_gl_dispatch(struct ssg_gl_pass *pass, int width, int height)
+{
+    GLint loc = where(pass, "ssg_grid");
+    if (!usable(pass) || width < 1 || height < 1)
+        return;
+    if (loc >= 0)
+        glProgramUniform2i(pass->program, loc, width, height);
+    glDispatchCompute((GLuint)((width + SSG_GL_GROUP - 1) / SSG_GL_GROUP),
+                      (GLuint)((height + SSG_GL_GROUP - 1) / SSG_GL_GROUP), 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+enum ssg_err ssg_gl_fill(const struct ssg_node_ctx *ctx, const float *const *planes,
+                         struct ssg_image *const *dst, int count)
+{
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "copy_planes.glsl", NULL);
+    for (int i = 0; i < count; i++) {
+        size_t texels = (size_t)dst[i]->width * (size_t)dst[i]->height *
+                        (size_t)dst[i]->channels;
+        ssg_gl_buffer(&p, 0, planes[i], texels * sizeof(float));
+        ssg_gl_output(&p, "dst", dst[i]);
+        ssg_gl_int(&p, "channels", dst[i]->channels);
+        ssg_gl_dispatch(&p, dst[i]->width, dst[i]->height);
+    }
+    return ssg_gl_pass_end(&p);
+}
+
+enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass)
+{
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR && pass->err == SSG_OK) {
+        char what[160];
+        snprintf(what, sizeof what, "GL error 0x%04x in a pass of %s", (unsigned)e,
+                 pass->shader ? pass->shader : "?");
+        pass->err = ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND,
+                                  "gl", what);
+    }
+    return pass->err;
+}
+
+void ssg_gl_buffers_free(void)
+{
+    glDeleteBuffers(MAX_BUFFERS, buffers);
+    memset(buffers, 0, sizeof buffers);
+}

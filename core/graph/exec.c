@@ -1,0 +1,198 @@
+/* exec.c - output shapes and the timed execution of one node (exec.h). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "graph/exec.h"
+#include "gl/gl_backend.h"
+#include "graph/image.h"
+#include "lang/parse.h"
+
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
+                           const char *what)
+{
+    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "%s '%s': %s", node,
+                ctx->instance ? ctx->instance : "", what);
+    return code;
+}
+
+double ssg_now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
+                                      const struct ssg_shape *rotation,
+                                      const struct ssg_shape *depth, char *why, size_t why_len)
+{
+    if (rotation->channels != 0 &&
+        (rotation->channels != 2 || rotation->width != rotation->height)) {
+        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
+                 "%dx%dx%d", rotation->width, rotation->height, rotation->channels);
+        return SSG_E_CHANNELS;
+    }
+    if (depth->channels != 0 &&
+        (depth->channels != 1 || !ssg_shape_same_size(depth, position))) {
+        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    return SSG_OK;
+}
+
+static void default_shape(const struct ssg_node_desc *desc, int port,
+                          const struct ssg_frame *frame, const struct ssg_shape *in,
+                          struct ssg_shape *out)
+{
+    const struct ssg_port_desc *p = &desc->outputs[port];
+    if (p->same_as) {
+        int src = ssg_port_find(desc->inputs, desc->input_count, p->same_as, strlen(p->same_as));
+        if (src >= 0) {
+            *out = in[src];
+            return;
+        }
+    }
+    out->width = frame->width;
+    out->height = frame->height;
+    out->channels = ssg_type_channels(p->types);
+    out->type = p->types;
+}
+
+enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *params,
+                              const struct ssg_frame *frame, const struct ssg_shape *in,
+                              struct ssg_shape *out, char *why, size_t why_len)
+{
+    why[0] = 0;
+    for (int i = 0; i < desc->output_count; i++)
+        default_shape(desc, i, frame, in, &out[i]);
+    if (desc->check) {
+        enum ssg_err e = desc->check(params, frame, in, out, why, why_len);
+        if (e)
+            return e;
+    }
+    for (int i = 0; i < desc->output_count; i++) {
+        if (!ssg_image_size_ok(out[i].width, out[i].height, out[i].channels)) {
+            snprintf(why, why_len, "output '%s' would be %dx%d with %d channels (at most "
+                     "%dx%d, %d pixels, 1-4 channels; a frame needs a size or a frame-sized input)",
+                     desc->outputs[i].name, out[i].width,
+                     out[i].height, out[i].channels, SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_SIDE,
+                     SSG_IMAGE_MAX_PIXELS);
+            return SSG_E_SIZE;
+        }
+    }
+    return SSG_OK;
+}
+
+const char *ssg_backend_name(enum ssg_backend b)
+{
+    return b == SSG_BACKEND_CPU ? "cpu" : b == SSG_BACKEND_GL ? "gl" : "default";
+}
+
+int ssg_backend_parse(const char *text, size_t len, enum ssg_backend *out)
+{
+    if (len == 3 && !strncmp(text, "cpu", 3))
+        *out = SSG_BACKEND_CPU;
+    else if (len == 2 && !strncmp(text, "gl", 2))
+        *out = SSG_BACKEND_GL;
+    else
+        return 0;
+    return 1;
+}
+
+/* Makes every input current where the node runs; the transfers' time goes to *ms. */
+static enum ssg_err move_inputs(const struct ssg_node_desc *desc, const struct ssg_io *io,
+                                int on_gl, double *ms, struct ssg_diags *diags)
+{
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < desc->input_count && !e; i++)
+        if (io->in[i])
+            e = on_gl ? ssg_gl_to_gpu(io->in[i], ms, diags) : ssg_gl_to_cpu(io->in[i], ms, diags);
+    for (int i = 0; i < io->extra_count && !e; i++)
+        e = on_gl ? ssg_gl_to_gpu(io->extra_in[i], ms, diags)
+                  : ssg_gl_to_cpu(io->extra_in[i], ms, diags);
+    return e;
+}
+
+static enum ssg_err run_backend(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                                const void *consts, const struct ssg_io *io, int on_gl,
+                                struct ssg_node_timing *t)
+{
+    enum ssg_err e = move_inputs(desc, io, on_gl, &t->transfer_ms, ctx->diags);
+    if (e)
+        return e;
+    if (!on_gl)
+        e = desc->run_cpu(ctx, consts, io);
+    else {
+        ssg_gl_timer_begin();
+        e = desc->run_gl(ctx, consts, io);
+        t->gpu_ms = ssg_gl_timer_end();
+    }
+    for (int i = 0; i < desc->output_count; i++)
+        ssg_gl_mark_written(io->out[i], on_gl);
+    return e;
+}
+
+enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, void **consts)
+{
+    *consts = NULL;
+    if (!desc->consts_size)
+        return SSG_OK;
+    *consts = calloc(1, desc->consts_size);
+    if (!*consts) {
+        ssg_diag_file(ctx->diags, SSG_E_NOMEM, NULL, "out of memory preparing '%s'",
+                      ctx->instance);
+        return SSG_E_NOMEM;
+    }
+    return desc->prepare ? desc->prepare(ctx, params, *consts) : SSG_OK;
+}
+
+enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
+                                   const struct ssg_node_ctx *ctx, const void *params,
+                                   const void *consts, const struct ssg_io *io,
+                                   enum ssg_backend backend, struct ssg_node_timing *timing)
+{
+    double t0 = ssg_now_ms();
+    *timing = (struct ssg_node_timing){0};
+    int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
+    enum ssg_err e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
+    timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
+    return e;
+}
+
+enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, const struct ssg_io *io,
+                              enum ssg_backend backend, struct ssg_node_timing *timing)
+{
+    double t0 = ssg_now_ms();
+    void *consts = NULL;
+    *timing = (struct ssg_node_timing){0};
+    enum ssg_err e = ssg_node_prepare(desc, ctx, params, &consts);
+    double prepare_ms = ssg_now_ms() - t0;
+    if (!e)
+        e = ssg_node_run_prepared(desc, ctx, params, consts, io, backend, timing);
+    free(consts);
+    timing->ms += prepare_ms;
+    return e;
+}
+
+unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image)
+{
+    if (image->channels == 1 && (accepted & SSG_T_SCALAR))
+        return SSG_T_SCALAR;
+    if (image->channels == 3 && (accepted & SSG_T_VECTOR))
+        return SSG_T_VECTOR;
+    if (image->channels == 3 && (accepted & SSG_T_COLOR))
+        return SSG_T_COLOR;
+    if (image->channels == 3 && image->height == 1 && (accepted & SSG_T_KERNEL))
+        return SSG_T_KERNEL;
+    if (image->channels == 2 && (accepted & SSG_T_PATTERN))
+        return SSG_T_PATTERN;
+    if (image->channels == 3 && image->height == 2 && (accepted & SSG_T_LIGHTS))
+        return SSG_T_LIGHTS;
+    if (image->width == image->height && (accepted & SSG_T_SHADOWMAPS))
+        return SSG_T_SHADOWMAPS;
+    return 0;
+}

@@ -1,0 +1,61 @@
+/* exec.h - what the graph executor and the single-node runner share: working out output
+ * shapes from input shapes, and running one node (prepare, then its CPU kernel, timed).
+ * Internal to libssgraph. */
+#ifndef SSG_EXEC_H
+#define SSG_EXEC_H
+
+#include "graph/node.h"
+
+/* Most ports a node may have on either side. */
+#define SSG_MAX_PORTS 8
+/* Most extra named inputs (write's layers). */
+#define SSG_MAX_EXTRA 16
+
+/* Fills out[] with the default shapes (frame size and type channels, or the shape of the
+ * same_as input), then lets the node's check() adjust and validate them. `in` holds the
+ * shapes of connected inputs (channels 0 = unconnected). Returns SSG_OK or the node's error
+ * code with a message in why. Also rejects absurd output sizes (SSG_E_SIZE). */
+enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *params,
+                              const struct ssg_frame *frame, const struct ssg_shape *in,
+                              struct ssg_shape *out, char *why, size_t why_len);
+
+/* Where a node runs. DEFAULT resolves to the graph's backend (CPU unless `backend gl` or
+ * --backend gl), and GL to CPU for a node without a GL side. */
+enum ssg_backend { SSG_BACKEND_DEFAULT, SSG_BACKEND_CPU, SSG_BACKEND_GL };
+/* "cpu", "gl" (DEFAULT: "default"). */
+const char *ssg_backend_name(enum ssg_backend b);
+/* Parses "cpu" or "gl"; returns 1 on success. */
+int ssg_backend_parse(const char *text, size_t len, enum ssg_backend *out);
+
+/* What one node's run cost. */
+struct ssg_node_timing {
+    double ms;          /* wall clock of prepare + run (GL: until the GPU finished) */
+    double gpu_ms;      /* GL: the timer query around the run; CPU: 0 */
+    double transfer_ms; /* uploads or downloads of its inputs before it ran */
+};
+
+/* Runs prepare() and the backend's run of one node (CPU or GL, see gl_backend.h for the
+ * transfers it inserts; GL must be open); returns the node's error (its message is in
+ * ctx->diags) and what it cost. */
+enum ssg_err ssg_node_execute(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, const struct ssg_io *io,
+                              enum ssg_backend backend, struct ssg_node_timing *timing);
+
+/* The two halves of ssg_node_execute, for running a node many times (--frames): its
+ * constants made once by prepare() (*consts NULL when the node has none: run with the
+ * params; free() them after), then any number of runs with them. */
+enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                              const void *params, void **consts);
+enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
+                                   const struct ssg_node_ctx *ctx, const void *params,
+                                   const void *consts, const struct ssg_io *io,
+                                   enum ssg_backend backend, struct ssg_node_timing *timing);
+
+/* Wall-clock milliseconds from an arbitrary origin. */
+double ssg_now_ms(void);
+
+/* The type of an image bound to an input port that accepts `accepted`, inferred from its
+ * shape: 0 when its channel count fits none of them. */
+unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image);
+
+#endif

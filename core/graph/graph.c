@@ -1,0 +1,125 @@
+/* graph.c - the public graph API's loading half (ssgraph.h): load = build (graph_build.c)
+ * + scene + validate (graph_check.c); check = the same without the scene's assets. Running
+ * a loaded graph is graph_run.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "graph/graph.h"
+#include "graph/image.h"
+
+static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
+{
+    for (int i = 0; i < g->count; i++) {
+        if (g->nodes[i].desc->needs_scene) {
+            *where = g->nodes[i].loc;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Moves the camera and its target along the camera's right axis (parallel stereo eyes). */
+static void shift_camera(struct ssg_camera *c, float offset)
+{
+    float f[3], r[3];
+    for (int k = 0; k < 3; k++)
+        f[k] = c->target[k] - c->position[k];
+    r[0] = f[1] * c->up[2] - f[2] * c->up[1];
+    r[1] = f[2] * c->up[0] - f[0] * c->up[2];
+    r[2] = f[0] * c->up[1] - f[1] * c->up[0];
+    float len = sqrtf(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int k = 0; k < 3 && len > 0; k++) {
+        c->position[k] += offset * r[k] / len;
+        c->target[k] += offset * r[k] / len;
+    }
+}
+
+/* Loads the scene (assets too when load_assets) and derives the frame from its camera. */
+static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_offset,
+                                struct ssg_diags *diags)
+{
+    struct ssg_loc where = {0};
+    g->frame = SSG_FRAME_DEFAULTS;
+    g->frame.width = g->width;
+    g->frame.height = g->height;
+    g->frame.seed = (uint64_t)g->seed;
+    if (!ssg_image_size_ok(g->width, g->height, 1)) {
+        ssg_diag_at(diags, SSG_E_SIZE, g->size_loc, "frame size %dx%d is out of range "
+                    "(expected 1 to %d per side, at most %d pixels)", g->width, g->height,
+                    SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_PIXELS);
+        return SSG_E_SIZE;
+    }
+    if (!g->scene_path[0]) {
+        if (!needs_scene(g, &where))
+            return SSG_OK;
+        ssg_diag_at(diags, SSG_E_SCENE, where, "this node needs a scene (expected a line "
+                    "scene \"file.scene\" in the graph, or --scene FILE)");
+        return SSG_E_SCENE;
+    }
+    enum ssg_err e = ssg_scene_load(g->scene_path, load_assets, &g->scene, diags);
+    if (e)
+        return e;
+    if (eye_offset != 0.0f)
+        shift_camera(&g->scene->camera, eye_offset);
+    g->frame.fov_y = g->scene->camera.fov_y;
+    g->frame.near_z = g->scene->camera.near_z;
+    g->frame.far_z = g->scene->camera.far_z;
+    return SSG_OK;
+}
+
+static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,
+                         struct ssg_graph **out, struct ssg_diags *diags)
+{
+    struct ssg_graph *g = calloc(1, sizeof *g);
+    *out = NULL;
+    if (!g)
+        return SSG_E_NOMEM;
+    enum ssg_err e = ssg_graph_build(g, path, ov, diags);
+    /* The scene is checked even when the graph has errors, so one run reports both. */
+    enum ssg_err scene = setup_frame(g, load_assets, ov ? ov->eye_offset : 0.0f, diags);
+    if (!e)
+        e = scene;
+    if (!e)
+        e = ssg_graph_validate(g, diags);
+    if (e) {
+        ssg_graph_destroy(&g);
+        return e;
+    }
+    *out = g;
+    return SSG_OK;
+}
+
+enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *ov,
+                            struct ssg_graph **out, struct ssg_diags *diags)
+{
+    return load(path, ov, 1, out, diags);
+}
+
+enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
+                             struct ssg_diags *diags)
+{
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = load(path, ov, 0, &g, diags);
+    ssg_graph_destroy(&g);
+    return e;
+}
+
+enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags)
+{
+    struct ssg_scene *scene = NULL;
+    enum ssg_err e = ssg_scene_load(path, 1, &scene, diags);
+    ssg_scene_destroy(&scene);
+    return e;
+}
+
+void ssg_graph_destroy(struct ssg_graph **graph)
+{
+    if (!graph || !*graph)
+        return;
+    ssg_scene_destroy(&(*graph)->scene);
+    ssg_arena_free(&(*graph)->arena);
+    free(*graph);
+    *graph = NULL;
+}

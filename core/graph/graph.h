@@ -1,0 +1,77 @@
+/* graph.h - the in-memory graph between loading and running. Internal to libssgraph.
+ *
+ * graph_build.c turns parsed statements (with includes, `set` lines and command-line
+ * overrides) into nodes with parameters and connections; graph_check.c validates the whole
+ * graph and orders it; graph.c loads the scene and runs the nodes. Everything a graph owns
+ * lives in its arena, except the scene and the pool. */
+#ifndef SSG_GRAPH_H
+#define SSG_GRAPH_H
+
+#include "lang/arena.h"
+#include "graph/exec.h"
+#include "lang/parse.h"
+#include "scene/scene.h"
+
+/* An input connection: which node's output feeds it. */
+struct gconn {
+    int node;            /* producer index, -1 = unconnected */
+    int port;            /* producer output port */
+    const char *ref;     /* "g.position" as written, for messages */
+    struct ssg_value value; /* the reference value (locations of node and port names) */
+};
+
+struct gnode {
+    const struct ssg_node_desc *desc;
+    const char *name;          /* instance name ("ao"; "write_1" when anonymous) */
+    struct ssg_loc loc;        /* the callee token, where node-level errors point */
+    void *params;              /* desc->params_size bytes */
+    unsigned char param_set[64]; /* 1 = given explicitly (required-parameter check) */
+    struct gconn in[SSG_MAX_PORTS];
+    int extra_count;
+    const char *extra_names[SSG_MAX_EXTRA];
+    struct gconn extra[SSG_MAX_EXTRA];
+    unsigned extra_types[SSG_MAX_EXTRA];
+    struct ssg_shape in_shape[SSG_MAX_PORTS];
+    struct ssg_shape out_shape[SSG_MAX_PORTS];
+    int live;                  /* 1 = contributes to a sink */
+    int last_reader[SSG_MAX_PORTS]; /* run position of the last node reading each output */
+    struct ssg_image *out_img[SSG_MAX_PORTS];
+    const struct ssg_stmt *stmt; /* the statement that made it */
+    enum ssg_backend backend;  /* backend= of the call; DEFAULT = the graph's */
+    struct ssg_loc backend_loc; /* where backend= was written */
+    enum ssg_backend runs_on;  /* resolved by validation: CPU or GL */
+};
+
+struct ssg_graph {
+    struct ssg_arena arena;
+    const char *path;          /* the top graph file */
+    char scene_path[512];      /* resolved scene file, "" = none */
+    struct ssg_loc scene_loc;  /* where it was named */
+    int width, height;
+    struct ssg_loc size_loc;
+    int64_t seed;
+    struct gnode *nodes;
+    int count, cap;
+    int *name_slots;           /* open-addressing table of node index + 1 by name (0 =
+                                  empty), name_cap slots, at most half full: a lookup is
+                                  O(1), so building and checking stay linear */
+    int name_cap;
+    int *order;                /* run order: node indices, live nodes only */
+    int order_count;
+    struct ssg_scene *scene;
+    struct ssg_frame frame;
+    enum ssg_backend backend;  /* `backend` directive; DEFAULT = cpu */
+    enum ssg_backend forced;   /* --backend: every node runs there (DEFAULT = not given) */
+};
+
+/* Reads path (and what it includes), builds nodes, applies `set` lines and overrides.
+ * Reports every problem; returns the first error code. */
+enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
+                             const struct ssg_overrides *ov, struct ssg_diags *diags);
+/* Checks connections, types, required inputs, cycles and shapes; fills the run order and
+ * each output's last reader. Needs g->frame. */
+enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags);
+/* Index of the node with that name, or -1. */
+int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len);
+
+#endif

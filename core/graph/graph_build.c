@@ -1,0 +1,569 @@
+/* graph_build.c - from statements to nodes (graph.h). Includes are expanded in place;
+ * node calls are collected first and bound afterwards, so a node may name one defined
+ * later; `set` lines then override arguments, and command-line --set last of all.
+ *
+ * Argument rules: a positional node.port fills the next input port in declared order, a
+ * positional literal the next parameter; `key=value` names a port or a parameter; nodes
+ * with extra inputs take unknown `key=node.port` as a named extra input. */
+#include <stdio.h>
+#include <string.h>
+
+#include "graph/graph.h"
+
+/* What one graph may ask of the builder, each refused with a message: includes nest at
+   most MAX_INCLUDE_DEPTH deep; at most MAX_FILES_READ file reads in all (the same file
+   included twice counts twice, so 15 levels of 8 includes of one file stop early rather
+   than reading 8^15 copies); at most MAX_STATEMENTS statements in all. */
+enum { MAX_INCLUDE_DEPTH = 16, MAX_FILES_READ = 1024, MAX_STATEMENTS = 200000 };
+
+struct builder {
+    struct ssg_graph *g;
+    struct ssg_diags *diags;
+    const struct ssg_stmt **sets; /* set lines in file order, applied after every call */
+    int set_count, set_cap;
+    const char *stack[MAX_INCLUDE_DEPTH]; /* files being read, for include cycles */
+    int depth;
+    int files_read, statements;         /* against the limits above */
+    int limit_hit;                        /* 1 = a limit was reported: read nothing more */
+    int anonymous;
+    enum ssg_err first;
+};
+
+static void fail(struct builder *b, enum ssg_err e)
+{
+    if (!b->first)
+        b->first = e;
+}
+
+static unsigned name_hash(const char *name, size_t len)
+{
+    unsigned h = 2166136261u; /* FNV-1a */
+    for (size_t i = 0; i < len; i++)
+        h = (h ^ (unsigned char)name[i]) * 16777619u;
+    return h;
+}
+
+int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len)
+{
+    if (!g->name_cap)
+        return -1;
+    unsigned mask = (unsigned)g->name_cap - 1;
+    for (unsigned s = name_hash(name, len) & mask; g->name_slots[s]; s = (s + 1) & mask)
+        if (ssg_tok_eq(name, len, g->nodes[g->name_slots[s] - 1].name))
+            return g->name_slots[s] - 1;
+    return -1;
+}
+
+static void name_insert(struct ssg_graph *g, int index)
+{
+    const char *name = g->nodes[index].name;
+    unsigned mask = (unsigned)g->name_cap - 1;
+    unsigned s = name_hash(name, strlen(name)) & mask;
+    while (g->name_slots[s])
+        s = (s + 1) & mask;
+    g->name_slots[s] = index + 1;
+}
+
+/* Adds node `index` (named) to the name table, growing it to keep it at most half full. */
+static int name_add(struct ssg_graph *g, int index)
+{
+    if (2 * (index + 1) > g->name_cap) {
+        int cap = g->name_cap ? 2 * g->name_cap : 64;
+        int *slots = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *slots); /* zeroed */
+        if (!slots)
+            return 0;
+        g->name_slots = slots;
+        g->name_cap = cap;
+        for (int i = 0; i < index; i++)
+            name_insert(g, i);
+    }
+    name_insert(g, index);
+    return 1;
+}
+
+static void node_list(char *buf, size_t len)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < ssg_node_count() && n < len; i++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", i ? ", " : "", ssg_node_name(i));
+}
+
+static struct gnode *add_node(struct builder *b, const struct ssg_stmt *st)
+{
+    struct ssg_graph *g = b->g;
+    const struct ssg_node_desc *desc = ssg_node_find(st->callee, st->callee_len);
+    if (!desc) {
+        char names[512];
+        node_list(names, sizeof names);
+        ssg_diag_at(b->diags, SSG_E_UNKNOWN_NODE, st->callee_loc,
+                    "unknown node '%.*s' (expected one of: %s)", (int)st->callee_len,
+                    st->callee, names);
+        fail(b, SSG_E_UNKNOWN_NODE);
+        return NULL;
+    }
+    if (st->name && ssg_graph_find(g, st->name, st->name_len) >= 0) {
+        ssg_diag_at(b->diags, SSG_E_DUPLICATE, st->name_loc, "node '%.*s' is defined twice "
+                    "(use 'set %.*s.param = value' to change it)", (int)st->name_len, st->name,
+                    (int)st->name_len, st->name);
+        fail(b, SSG_E_DUPLICATE);
+        return NULL;
+    }
+    if (g->count == g->cap) {
+        int cap = g->cap ? g->cap * 2 : 16;
+        struct gnode *nodes = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *nodes);
+        if (!nodes)
+            return NULL;
+        if (g->count)
+            memcpy(nodes, g->nodes, (size_t)g->count * sizeof *nodes);
+        g->nodes = nodes;
+        g->cap = cap;
+    }
+    struct gnode *n = &g->nodes[g->count++];
+    memset(n, 0, sizeof *n);
+    n->desc = desc;
+    n->stmt = st;
+    n->loc = st->callee_loc;
+    if (st->name) {
+        n->name = ssg_arena_strndup(&g->arena, st->name, st->name_len);
+    } else {
+        char anon[96];
+        snprintf(anon, sizeof anon, "%s_%d", desc->name, ++b->anonymous);
+        n->name = ssg_arena_strndup(&g->arena, anon, strlen(anon));
+    }
+    if (!n->name || !name_add(g, g->count - 1)) {
+        g->count--;
+        fail(b, SSG_E_NOMEM);
+        return NULL;
+    }
+    n->params = ssg_arena_alloc(&g->arena, desc->params_size ? desc->params_size : 1);
+    if (n->params)
+        ssg_params_defaults(desc->params, n->params);
+    for (int i = 0; i < SSG_MAX_PORTS; i++)
+        n->in[i].node = -1;
+    return n;
+}
+
+static void connect(struct builder *b, struct gconn *c, const struct ssg_value *v)
+{
+    c->node = -1; /* resolved by ssg_graph_validate once every node exists */
+    c->value = *v;
+    char ref[160];
+    snprintf(ref, sizeof ref, "%.*s.%.*s", (int)v->len, v->text, (int)v->member_len, v->member);
+    c->ref = ssg_arena_strndup(&b->g->arena, ref, strlen(ref));
+}
+
+static void unknown_key(struct builder *b, const struct gnode *n, const char *key, size_t len,
+                        struct ssg_loc loc)
+{
+    char params[512], ports[256] = "";
+    size_t k = 0;
+    ssg_param_names(n->desc->params, params, sizeof params);
+    for (int i = 0; i < n->desc->input_count && k < sizeof ports; i++)
+        k += (size_t)snprintf(ports + k, sizeof ports - k, "%s%s", i ? ", " : "",
+                              n->desc->inputs[i].name);
+    ssg_diag_at(b->diags, SSG_E_UNKNOWN_PARAM, loc, "unknown parameter or input '%.*s' for "
+                "node '%s' (%s) (expected an input: %s; or a parameter: %s)", (int)len, key,
+                n->name, n->desc->name, k ? ports : "(none)", params);
+    fail(b, SSG_E_UNKNOWN_PARAM);
+}
+
+static void bind_input(struct builder *b, struct gnode *n, int port, const struct ssg_value *v)
+{
+    if (v->kind != SSG_V_REF) {
+        char types[64];
+        ssg_type_names(n->desc->inputs[port].types, types, sizeof types);
+        ssg_diag_at(b->diags, SSG_E_TYPE, v->loc, "input '%s' of node '%s' expects a port "
+                    "reference node.port (%s), got %s", n->desc->inputs[port].name, n->name,
+                    types, ssg_value_kind_text(v->kind));
+        fail(b, SSG_E_TYPE);
+        return;
+    }
+    connect(b, &n->in[port], v);
+}
+
+static void bind_param(struct builder *b, struct gnode *n, int index, const struct ssg_value *v)
+{
+    if (v->kind == SSG_V_REF) {
+        ssg_diag_at(b->diags, SSG_E_TYPE, v->loc, "parameter '%s' of node '%s' takes a value, "
+                    "not a port reference", n->desc->params.params[index].name, n->name);
+        fail(b, SSG_E_TYPE);
+        return;
+    }
+    enum ssg_err e = ssg_param_set(n->desc->params, index, n->params, v, n->name, b->diags);
+    if (e)
+        fail(b, e);
+    else if (index < (int)sizeof n->param_set)
+        n->param_set[index] = 1;
+}
+
+static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg *a)
+{
+    for (int i = 0; i < n->extra_count; i++) {
+        if (ssg_tok_eq(a->key, a->key_len, n->extra_names[i])) {
+            connect(b, &n->extra[i], &a->value);
+            return;
+        }
+    }
+    if (n->extra_count == SSG_MAX_EXTRA) {
+        ssg_diag_at(b->diags, SSG_E_RANGE, a->key_loc, "too many extra inputs for node '%s' "
+                    "(at most %d)", n->name, SSG_MAX_EXTRA);
+        fail(b, SSG_E_RANGE);
+        return;
+    }
+    n->extra_names[n->extra_count] = ssg_arena_strndup(&b->g->arena, a->key, a->key_len);
+    connect(b, &n->extra[n->extra_count++], &a->value);
+}
+
+/* backend=cpu|gl on any node: where it runs (graph.h). An identifier, like enum values. */
+static void bind_backend(struct builder *b, struct gnode *n, const struct ssg_value *v)
+{
+    enum ssg_backend backend;
+    if ((v->kind != SSG_V_IDENT && v->kind != SSG_V_STRING) ||
+        !ssg_backend_parse(v->text, v->len, &backend)) {
+        ssg_diag_at(b->diags, SSG_E_VALUE, v->loc, "backend of node '%s' must be cpu or gl",
+                    n->name);
+        fail(b, SSG_E_VALUE);
+        return;
+    }
+    n->backend = backend;
+    n->backend_loc = v->loc;
+}
+
+/* One key=value (from the call, a set line or the command line). */
+static void bind_named(struct builder *b, struct gnode *n, const struct ssg_arg *a)
+{
+    const struct ssg_node_desc *d = n->desc;
+    if (ssg_tok_eq(a->key, a->key_len, "backend") &&
+        ssg_param_find(d->params, a->key, a->key_len) < 0) {
+        bind_backend(b, n, &a->value);
+        return;
+    }
+    int port = ssg_port_find(d->inputs, d->input_count, a->key, a->key_len);
+    int param = port < 0 ? ssg_param_find(d->params, a->key, a->key_len) : -1;
+    if (port >= 0)
+        bind_input(b, n, port, &a->value);
+    else if (param >= 0)
+        bind_param(b, n, param, &a->value);
+    else if (d->extra_inputs && a->value.kind == SSG_V_REF)
+        bind_extra(b, n, a);
+    else
+        unknown_key(b, n, a->key, a->key_len, a->key_loc);
+}
+
+static void bind_call(struct builder *b, struct gnode *n)
+{
+    const struct ssg_stmt *st = n->stmt;
+    int next_port = 0, next_param = 0, named = 0;
+    for (int i = 0; i < st->arg_count; i++) {
+        const struct ssg_arg *a = &st->args[i];
+        if (a->key) {
+            named = 1;
+            bind_named(b, n, a);
+            continue;
+        }
+        if (named) {
+            ssg_diag_at(b->diags, SSG_E_SYNTAX, a->value.loc, "positional argument after a "
+                        "named one (expected name=value)");
+            fail(b, SSG_E_SYNTAX);
+        } else if (a->value.kind == SSG_V_REF && next_port < n->desc->input_count) {
+            bind_input(b, n, next_port++, &a->value);
+        } else if (a->value.kind != SSG_V_REF && next_param < n->desc->params.count) {
+            bind_param(b, n, next_param++, &a->value);
+        } else {
+            ssg_diag_at(b->diags, SSG_E_VALUE, a->value.loc, "too many positional arguments "
+                        "for node '%s' (it has %d inputs and %d parameters)", n->name,
+                        n->desc->input_count, n->desc->params.count);
+            fail(b, SSG_E_VALUE);
+        }
+    }
+}
+
+/* ---- directives ---- */
+
+static int directive_int(struct builder *b, const struct ssg_stmt *st, int i, long long lo,
+                         long long hi, long long *out)
+{
+    if (i >= st->arg_count || st->args[i].value.kind != SSG_V_NUMBER ||
+        !st->args[i].value.is_integer) {
+        struct ssg_loc at = i < st->arg_count ? st->args[i].value.loc : st->name_loc;
+        ssg_diag_at(b->diags, SSG_E_TYPE, at, "'%.*s' expects an integer here",
+                    (int)st->name_len, st->name);
+        fail(b, SSG_E_TYPE);
+        return 0;
+    }
+    double v = st->args[i].value.number;
+    if (v < (double)lo || v > (double)hi) {
+        ssg_diag_at(b->diags, SSG_E_SIZE, st->args[i].value.loc, "'%.*s' value %g is out of "
+                    "range (expected %lld to %lld)", (int)st->name_len, st->name, v, lo, hi);
+        fail(b, SSG_E_SIZE);
+        return 0;
+    }
+    *out = (long long)v;
+    return 1;
+}
+
+static const char *directive_string(struct builder *b, const struct ssg_stmt *st)
+{
+    if (st->arg_count != 1 || st->args[0].value.kind != SSG_V_STRING) {
+        ssg_diag_at(b->diags, SSG_E_TYPE, st->arg_count ? st->args[0].value.loc : st->name_loc,
+                    "'%.*s' expects one quoted path, e.g. %.*s \"file\"", (int)st->name_len,
+                    st->name, (int)st->name_len, st->name);
+        fail(b, SSG_E_TYPE);
+        return NULL;
+    }
+    return st->args[0].value.text;
+}
+
+static void read_file(struct builder *b, const char *path, struct ssg_loc from);
+
+static void directive_size(struct builder *b, const struct ssg_stmt *st)
+{
+    long long w, h;
+    if (st->arg_count != 2) {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "'size' expects a width and a "
+                    "height in pixels, e.g. size 1280 720");
+        fail(b, SSG_E_SYNTAX);
+        return;
+    }
+    if (directive_int(b, st, 0, 1, 16384, &w) && directive_int(b, st, 1, 1, 16384, &h)) {
+        b->g->width = (int)w;
+        b->g->height = (int)h;
+        b->g->size_loc = st->args[0].value.loc;
+    }
+}
+
+/* backend cpu|gl: where nodes without their own backend= run. */
+static void directive_backend(struct builder *b, const struct ssg_stmt *st)
+{
+    const struct ssg_value *v = st->arg_count == 1 ? &st->args[0].value : NULL;
+    enum ssg_backend backend;
+    if (!v || v->kind != SSG_V_IDENT || !ssg_backend_parse(v->text, v->len, &backend)) {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, v ? v->loc : st->name_loc,
+                    "'backend' expects cpu or gl, e.g. backend gl");
+        fail(b, SSG_E_SYNTAX);
+        return;
+    }
+    b->g->backend = backend;
+}
+
+static void directive(struct builder *b, const struct ssg_stmt *st)
+{
+    const char *path;
+    long long seed;
+    char resolved[512];
+    if (ssg_tok_eq(st->name, st->name_len, "scene")) {
+        if ((path = directive_string(b, st))) {
+            ssg_path_resolve(st->loc.src->path, path, b->g->scene_path, sizeof b->g->scene_path);
+            b->g->scene_loc = st->args[0].value.loc;
+        }
+    } else if (ssg_tok_eq(st->name, st->name_len, "size")) {
+        directive_size(b, st);
+    } else if (ssg_tok_eq(st->name, st->name_len, "seed")) {
+        if (st->arg_count == 1 && directive_int(b, st, 0, 0, 2147483647LL, &seed))
+            b->g->seed = seed;
+    } else if (ssg_tok_eq(st->name, st->name_len, "backend")) {
+        directive_backend(b, st);
+    } else if (ssg_tok_eq(st->name, st->name_len, "include")) {
+        if ((path = directive_string(b, st))) {
+            ssg_path_resolve(st->loc.src->path, path, resolved, sizeof resolved);
+            read_file(b, resolved, st->args[0].value.loc);
+        }
+    } else {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' (expected "
+                    "name = node(...), set node.param = value, scene, size, seed, backend or "
+                    "include)",
+                    (int)st->name_len, st->name);
+        fail(b, SSG_E_SYNTAX);
+    }
+}
+
+/* "a.graph -> b.graph -> c.graph": the files being read, for messages. */
+static void include_chain(const struct builder *b, char *buf, size_t len)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < b->depth && n < len; i++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", i ? " -> " : "", b->stack[i]);
+}
+
+/* 0 with a message once the graph asks for more files or statements than allowed. */
+static int within_limits(struct builder *b, struct ssg_loc from, int more_statements)
+{
+    if (b->limit_hit)
+        return 0;
+    const char *what = NULL;
+    int limit = 0;
+    if (b->files_read > MAX_FILES_READ)
+        what = "files read (includes, counting repeats)", limit = MAX_FILES_READ;
+    else if ((b->statements += more_statements) > MAX_STATEMENTS)
+        what = "statements", limit = MAX_STATEMENTS;
+    if (!what)
+        return 1;
+    char chain[1024];
+    include_chain(b, chain, sizeof chain);
+    ssg_diag_at(b->diags, SSG_E_INCLUDE, from, "the graph needs more than %d %s (expected a "
+                "graph that includes fewer files; reading %s)", limit, what, chain);
+    fail(b, SSG_E_INCLUDE);
+    b->limit_hit = 1;
+    return 0;
+}
+
+static void add_set(struct builder *b, const struct ssg_stmt *st)
+{
+    if (b->set_count == b->set_cap) {
+        int cap = b->set_cap ? 2 * b->set_cap : 64;
+        const struct ssg_stmt **sets = ssg_arena_alloc(&b->g->arena, (size_t)cap * sizeof *sets);
+        if (!sets) {
+            fail(b, SSG_E_NOMEM);
+            return;
+        }
+        if (b->set_count)
+            memcpy(sets, b->sets, (size_t)b->set_count * sizeof *sets);
+        b->sets = sets;
+        b->set_cap = cap;
+    }
+    b->sets[b->set_count++] = st;
+}
+
+static int include_cycle(struct builder *b, const char *path, struct ssg_loc from)
+{
+    for (int i = 0; i < b->depth; i++) {
+        if (strcmp(b->stack[i], path) == 0) {
+            ssg_diag_at(b->diags, SSG_E_INCLUDE, from, "'%s' includes itself (through %s)",
+                        path, b->stack[b->depth - 1]);
+            return 1;
+        }
+    }
+    if (b->depth == MAX_INCLUDE_DEPTH) {
+        ssg_diag_at(b->diags, SSG_E_INCLUDE, from, "includes nested deeper than %d",
+                    MAX_INCLUDE_DEPTH);
+        return 1;
+    }
+    return 0;
+}
+
+static void read_file(struct builder *b, const char *path, struct ssg_loc from)
+{
+    if (include_cycle(b, path, from)) {
+        fail(b, SSG_E_INCLUDE);
+        return;
+    }
+    b->files_read++;
+    if (!within_limits(b, from, 0))
+        return;
+    struct ssg_file file;
+    enum ssg_err e = ssg_parse_file(&b->g->arena, path, from, &file, b->diags);
+    if (e)
+        fail(b, e);
+    if (!file.src)
+        return;
+    b->stack[b->depth++] = file.src->path;
+    if (within_limits(b, from, file.count)) {
+        for (int i = 0; i < file.count && !b->limit_hit; i++) {
+            const struct ssg_stmt *st = &file.stmts[i];
+            if (st->kind == SSG_S_DIRECTIVE)
+                directive(b, st);
+            else if (st->kind == SSG_S_CALL)
+                add_node(b, st);
+            else
+                add_set(b, st);
+        }
+    }
+    b->depth--;
+}
+
+/* ---- set lines and overrides ---- */
+
+static void apply_set(struct builder *b, const struct ssg_stmt *st)
+{
+    int i = ssg_graph_find(b->g, st->name, st->name_len);
+    if (i < 0) {
+        ssg_diag_at(b->diags, SSG_E_UNKNOWN_NAME, st->name_loc, "'set' names node '%.*s', "
+                    "which is not defined (define it with %.*s = node(...))", (int)st->name_len,
+                    st->name, (int)st->name_len, st->name);
+        fail(b, SSG_E_UNKNOWN_NAME);
+        return;
+    }
+    bind_named(b, &b->g->nodes[i], &st->args[0]);
+}
+
+/* "node.param=value" from the command line, parsed as a set line of its own source. */
+static void apply_override(struct builder *b, const char *text)
+{
+    struct ssg_source *src = ssg_arena_alloc(&b->g->arena, sizeof *src);
+    if (!src)
+        return;
+    src->path = "<command line --set>";
+    src->text = ssg_arena_strndup(&b->g->arena, text, strlen(text));
+    src->len = strlen(text);
+    const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
+    struct ssg_loc at = {src, src->text};
+    if (!dot || !eq || dot > eq) {
+        ssg_diag_at(b->diags, SSG_E_USAGE, at, "expected --set node.param=value, got '%s'", text);
+        fail(b, SSG_E_USAGE);
+        return;
+    }
+    struct ssg_stmt *st = ssg_arena_alloc(&b->g->arena, sizeof *st);
+    struct ssg_arg *arg = ssg_arena_alloc(&b->g->arena, sizeof *arg);
+    if (!st || !arg)
+        return;
+    st->kind = SSG_S_SET;
+    st->name = src->text;
+    st->name_len = (size_t)(dot - src->text);
+    st->name_loc = at;
+    arg->key = dot + 1;
+    arg->key_len = (size_t)(eq - dot - 1);
+    arg->key_loc = (struct ssg_loc){src, dot + 1};
+    enum ssg_err e = ssg_parse_value(&b->g->arena, src, eq + 1, &arg->value, b->diags);
+    if (e) {
+        fail(b, e);
+        return;
+    }
+    st->args = arg;
+    st->arg_count = 1;
+    apply_set(b, st);
+}
+
+static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
+{
+    if (!ov)
+        return;
+    for (int i = 0; i < ov->set_count; i++)
+        apply_override(b, ov->sets[i]);
+    if (ov->scene)
+        snprintf(b->g->scene_path, sizeof b->g->scene_path, "%s", ov->scene);
+    if (ov->width > 0 && ov->height > 0) {
+        b->g->width = ov->width;
+        b->g->height = ov->height;
+    }
+    if (ov->seed >= 0)
+        b->g->seed = ov->seed;
+    if (ov->backend && !ssg_backend_parse(ov->backend, strlen(ov->backend), &b->g->forced)) {
+        ssg_diag_at(b->diags, SSG_E_USAGE, (struct ssg_loc){0}, "--backend must be cpu or gl, "
+                    "got '%s'", ov->backend);
+        fail(b, SSG_E_USAGE);
+    }
+}
+
+enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
+                             const struct ssg_overrides *ov, struct ssg_diags *diags)
+{
+    struct builder *b = ssg_arena_alloc(&g->arena, sizeof *b);
+    if (!b)
+        return SSG_E_NOMEM;
+    b->g = g;
+    b->diags = diags;
+    g->path = ssg_arena_strndup(&g->arena, path, strlen(path));
+    g->width = 1280;
+    g->height = 720;
+    g->seed = 1;
+    struct ssg_loc none = {0};
+    read_file(b, path, none);
+    for (int i = 0; i < g->count; i++)
+        bind_call(b, &g->nodes[i]);
+    for (int i = 0; i < b->set_count; i++)
+        apply_set(b, b->sets[i]);
+    apply_overrides(b, ov);
+    return b->first;
+}

@@ -1,0 +1,218 @@
+/* node.h - what a node is: one descriptor table (name, method, ports, parameters,
+ * prepare and backend entries), exported from nodes/<name>/<name>.c and listed once in
+ * nodes/nodes.def.
+ *
+ * A node never calls threads or GL directly: it sees image views, the constants its
+ * prepare() made from the parameters, and ssg_parallel_rows(). Core never names a node.
+ *
+ * Frame conventions every node shares (view space, right-handed, OpenGL style):
+ *   the camera looks down -z, x right, y up; `position` is the view-space point, `normal`
+ *   the unit view-space normal, `depth` the linear distance along the view axis (-z).
+ *   A pixel with no surface (background) has depth 0, position 0 and normal 0.
+ *   Pixel (x, y) has its centre at (x + 0.5, y + 0.5); row 0 is the top.
+ *   Projection: px = cx + f * x / -z, py = cy - f * y / -z with cx = width/2,
+ *   cy = height/2, f = (height / 2) / tan(fov_y / 2) (see ssg_frame_project). */
+#ifndef SSG_NODE_H
+#define SSG_NODE_H
+
+#include <math.h>
+#include <stddef.h>
+
+#include "lang/params.h"
+#include "ssgraph.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+struct ssg_scene;
+struct ssg_metrics;
+
+#define SSG_FILE_NAME_MAX 256 /* bytes of an output file name, NUL included */
+
+/* Port types. An input port accepts a mask of them; an output produces one (or copies the
+ * type of an input, see same_as). */
+enum ssg_type {
+    SSG_T_SCALAR = 1u << 0,  /* 1 channel, frame sized: depth, occlusion */
+    SSG_T_VECTOR = 1u << 1,  /* 3 channels, frame sized: view-space position or normal */
+    SSG_T_COLOR = 1u << 2,   /* 3 channels, frame sized: linear RGB */
+    SSG_T_KERNEL = 1u << 3,  /* count x 1, 3 channels: sample offsets in the unit hemisphere
+                                around +z (tangent space), |s| <= 1 */
+    SSG_T_PATTERN = 1u << 4, /* n x n tile, 2 channels: per-pixel rotation (cos, sin) */
+    SSG_T_LIGHTS = 1u << 5,  /* count x 2, 3 channels: directional lights; row 0 the unit
+                                world direction towards light i, row 1 its RGB irradiance on
+                                a surface facing it (nodes/common/shadowmap.h) */
+    SSG_T_SHADOWMAPS = 1u << 6, /* R x R, one channel per light of a light list: the depth
+                                   of the nearest surface below each texel of light i's
+                                   orthographic map (nodes/common/shadowmap.h) */
+};
+#define SSG_T_IMAGE (SSG_T_SCALAR | SSG_T_VECTOR | SSG_T_COLOR)
+
+/* "scalar", "vector", "color|scalar", ... into buf. */
+void ssg_type_names(unsigned mask, char *buf, size_t len);
+/* Channels of a frame-sized type (1 or 3); 0 for kernel and pattern. */
+int ssg_type_channels(unsigned type);
+
+struct ssg_port_desc {
+    const char *name;    /* as written in files: g.position */
+    unsigned types;      /* input: accepted types; output: the produced type (one bit) */
+    int optional;        /* input only: may stay unconnected */
+    const char *same_as; /* output only: takes type and shape of this input port */
+    const char *doc;     /* one line */
+};
+
+/* Shape of an image flowing along an edge. */
+struct ssg_shape {
+    int width, height, channels;
+    unsigned type; /* one SSG_T_* bit */
+};
+
+/* Everything a node's functions may look at besides images and constants. */
+struct ssg_node_ctx {
+    const char *instance;          /* node name in the graph ("ao") */
+    const struct ssg_frame *frame; /* size, camera intrinsics, seed */
+    const struct ssg_scene *scene; /* NULL when running without a scene */
+    const char *out_dir;           /* where sink nodes write files */
+    struct ssg_diags *diags;       /* for errors while running */
+    struct ssg_metrics *metrics;   /* where ssg_metric_report goes; NULL = discarded */
+};
+
+/* Reports a named scalar result of this node (e.g. "rmse"); printed after the run and
+ * written to <out>/metrics.json. Call from the node's thread, not inside row bands. */
+void ssg_metric_report(const struct ssg_node_ctx *ctx, const char *name, double value);
+
+/* The images of one run: inputs in port order (NULL = unconnected optional), outputs in
+ * port order (allocated by the executor to the shape check() gave), then extra inputs. */
+struct ssg_io {
+    const struct ssg_image *const *in;
+    struct ssg_image *const *out;
+    int extra_count;                         /* extra named inputs (write's layers) */
+    const char *const *extra_names;
+    const struct ssg_image *const *extra_in;
+    const unsigned *extra_types;             /* type of each extra input */
+};
+
+struct ssg_node_desc {
+    const char *name;    /* "ssao" */
+    const char *summary; /* one line for `ssgraph nodes` */
+    const char *method;  /* paper, section and equation implemented */
+    const char *doc;     /* a paragraph for `describe` and docs */
+    const struct ssg_port_desc *inputs;
+    int input_count;
+    const struct ssg_port_desc *outputs;
+    int output_count;
+    int extra_inputs;    /* 1 = accepts further key=port arguments as named inputs */
+    int extra_same_size; /* 1 = every extra input must have input 0's width and height
+                            (checked with the graph, before anything runs) */
+    struct ssg_param_table params;
+    size_t params_size;  /* sizeof the params struct */
+    size_t consts_size;  /* sizeof what prepare() writes; 0 = none */
+    int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
+    int is_sink;         /* 1 = always runs (writes files or reports metrics); the
+                            runtime keeps what it reads and prunes what no sink reads */
+
+    /* Optional. Cross-parameter checks and output shapes. `out` arrives filled with the
+       default shapes (frame size, type channels, or same_as); a node with kernel or pattern
+       outputs sets them here. Return SSG_OK or an error code with a message in why. */
+    enum ssg_err (*check)(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len);
+    /* Optional, sinks that write files: the names of the files the node writes into the
+       output folder under these parameters (write: <name>.exr, <name>.png), at most `max`
+       names of SSG_FILE_NAME_MAX bytes; returns how many. Two live nodes that would write
+       one file are refused when the graph is checked: the second would silently replace
+       the first's. */
+    int (*output_files)(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max);
+    /* Optional. Turns parameters into the constants both backends read (sample kernels,
+       projection factors). Called once before run. */
+    enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);
+    /* The CPU backend. `consts` is what prepare wrote, or the params when consts_size is 0. */
+    enum ssg_err (*run_cpu)(const struct ssg_node_ctx *ctx, const void *consts,
+                            const struct ssg_io *io);
+    /* The GL backend (nodes/<name>/<name>_gl.c, through core/gl/gl.h only), NULL = CPU only.
+       Same contract as run_cpu: the runtime has made every input and output image a GL
+       texture (io->in[i]->data must not be read), the same consts; it must write every
+       output pixel. The CPU result is the reference; tests/test_gl_parity.c states how
+       far this one may be from it. */
+    enum ssg_err (*run_gl)(const struct ssg_node_ctx *ctx, const void *consts,
+                           const struct ssg_io *io);
+};
+
+/* The registry, built from nodes/nodes.def. NULL when unknown. */
+const struct ssg_node_desc *ssg_node_find(const char *name, size_t len);
+int ssg_port_find(const struct ssg_port_desc *ports, int count, const char *name, size_t len);
+
+/* Runs fn over fixed bands of `rows_per_band` rows, in parallel (OpenMP). The bands do not
+ * depend on the thread count, so a node whose pixels depend only on its band is
+ * deterministic whatever the threads. fn(user, y0, y1) covers rows [y0, y1). */
+typedef void (*ssg_rows_fn)(void *user, int y0, int y1);
+void ssg_parallel_rows(int height, int rows_per_band, ssg_rows_fn fn, void *user);
+
+/* Camera intrinsics of the frame in the form the projection above uses. */
+struct ssg_projection {
+    float f;       /* focal length in pixels */
+    float cx, cy;  /* principal point in pixels */
+};
+static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame *frame)
+{
+    struct ssg_projection p;
+    p.f = 0.5f * (float)frame->height / tanf(0.5f * frame->fov_y * (float)M_PI / 180.0f);
+    p.cx = 0.5f * (float)frame->width;
+    p.cy = 0.5f * (float)frame->height;
+    return p;
+}
+
+/* The projection `p` of a frame_w x frame_h frame as seen by an image of w x h pixels.
+ * An image subsampled by an integer k the way `downsample` does it (ceil(frame / k) on
+ * both axes) gets the frame's projection divided by k, so that its pixel X covers the
+ * frame's pixels [kX, kX + k) exactly, odd frame sizes included; any other size scales
+ * each axis by its size ratio. */
+static inline struct ssg_projection ssg_projection_scaled(const struct ssg_projection *p,
+                                                          int frame_w, int frame_h, int w,
+                                                          int h)
+{
+    struct ssg_projection q = *p;
+    if (w == frame_w && h == frame_h)
+        return q;
+    int k = w > 0 ? (frame_w + w - 1) / w : 1;
+    if (k > 1 && (frame_w + k - 1) / k == w && (frame_h + k - 1) / k == h) {
+        q.f = p->f / (float)k;
+        q.cx = p->cx / (float)k;
+        q.cy = p->cy / (float)k;
+        return q;
+    }
+    q.f = p->f * (float)h / (float)frame_h;
+    q.cx = p->cx * (float)w / (float)frame_w;
+    q.cy = p->cy * (float)h / (float)frame_h;
+    return q;
+}
+
+/* Reports a node's run-time error as "<node> '<instance>': <what>" (no file location:
+ * graph-level problems were reported with one before the run) and returns code. */
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
+                           const char *what);
+
+/* 1 when the image exists and has exactly this shape (run-time re-check of what check()
+ * promised, so a hand-built run cannot read out of bounds). */
+static inline int ssg_image_is(const struct ssg_image *im, int width, int height, int channels)
+{
+    return im && im->width == width && im->height == height && im->channels == channels;
+}
+
+/* 1 when two shapes have the same width and height. */
+static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ssg_shape *b)
+{
+    return a->width == b->width && a->height == b->height;
+}
+
+/* check() of the screen-space AO nodes: the optional rotation tile (n x n, 2 channels) and
+ * the optional depth (1 channel, the size of position); channels 0 = unconnected. Returns
+ * SSG_OK, or the error code with the reason in why. */
+enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
+                                      const struct ssg_shape *rotation,
+                                      const struct ssg_shape *depth, char *why, size_t why_len);
+
+/* Convenience for node files. */
+#define SSG_COUNT(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
+
+#endif

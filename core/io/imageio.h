@@ -1,0 +1,107 @@
+/* imageio.h - image files through OpenImageIO (core/io/imageio_adapter.cc), behind a C header.
+ *
+ * Reading is ssg_image_read (ssgraph.h). Writing covers what the `write` node needs: a
+ * multi-layer 32-bit float EXR (ZIP, zlib level 1) and an 8-bit PNG preview whose tone
+ * mapping and sRGB encoding happen here, in one place, so every caller previews images the
+ * same way.
+ *
+ * Both writers write a hidden temporary file next to the target (".stem.tmp-PID-N.ext",
+ * same directory, so rename() is atomic) and rename it into place only once it is complete;
+ * on any failure the temporary file is removed and the target is left untouched. Output is
+ * byte-deterministic: the same pixels give the same bytes (no time stamps, no software
+ * name in the headers).
+ *
+ * Colour: EXR data is written and read as is (linear). PNG is written sRGB-encoded; files
+ * OpenImageIO reports as sRGB (8-bit PNG, JPEG, ...) are decoded to linear on reading, so
+ * every image inside ssgraph is linear. Alpha is read as stored (not premultiplied).
+ *
+ * Errors go to diags with the file name: SSG_E_IO (cannot open, create, write or rename),
+ * SSG_E_IMAGE (unreadable or malformed file), SSG_E_SIZE (absurd size), SSG_E_CHANNELS
+ * (no such layer, or a layer whose channel count does not fit its kind), SSG_E_VALUE and
+ * SSG_E_DUPLICATE (bad or repeated layer names), SSG_E_NOMEM. No C++ exception ever leaves
+ * these functions.
+ * Thread safety: no state but an atomic counter for temporary names; separate calls may
+ * run in separate threads. */
+#ifndef SSG_IMAGEIO_H
+#define SSG_IMAGEIO_H
+
+#include "lang/files.h"
+#include "ssgraph.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What a layer's channels mean; decides their names in the EXR. */
+enum ssg_layer_kind {
+    SSG_LAYER_SCALAR, /* 1 channel:  name.Y */
+    SSG_LAYER_VECTOR, /* 3 channels: name.X, name.Y, name.Z */
+    SSG_LAYER_COLOR,  /* 3 channels: name.R, name.G, name.B */
+};
+
+/* One layer of an EXR to write. */
+struct ssg_exr_layer {
+    const char *name;              /* layer name; NULL or "" = the main image, plain
+                                      channels whatever the kind: Y (1 channel), R,G (2),
+                                      R,G,B (3) or R,G,B,A (4) */
+    const struct ssg_image *image; /* planar float; all layers share width and height */
+    enum ssg_layer_kind kind;      /* how the channels are named; default SSG_LAYER_SCALAR */
+};
+
+/* Lossless EXR compressions, in the order of the write node's `compression` choices.
+ * Measured on an 18-channel 1080p frame: none ~0.4 s (150 MB), rle ~1.3 s (136 MB),
+ * zip ~2 s (70 MB), piz ~4 s (53 MB) on the 2-core development machine. */
+enum ssg_exr_compression {
+    SSG_EXR_ZIP,  /* zlib level 1, 16-line blocks (the default) */
+    SSG_EXR_NONE,
+    SSG_EXR_RLE,
+    SSG_EXR_PIZ,
+};
+
+/* Writes all layers into one scanline EXR with 32-bit float channels and ZIP compression.
+ * Layer names must be unique, non-empty except for at most one main image, and must not
+ * contain '.'. */
+enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers, int count,
+                           struct ssg_diags *diags);
+/* The same with a chosen compression. */
+enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_layer *layers,
+                                      int count, enum ssg_exr_compression compression,
+                                      struct ssg_diags *diags);
+
+/* Staged writes (files.h): the file is written whole under its temporary name, synced,
+ * and left for ssg_tmp_commit (or ssg_tmp_discard) with the other outputs of the same
+ * node, so that no output is renamed into place before all of them are complete. On an
+ * error the temporary is already gone. */
+enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
+                           enum ssg_exr_compression compression, struct ssg_tmp *t,
+                           struct ssg_diags *diags);
+
+/* Tone mapping of the PNG preview, applied to exposure-scaled linear values. The order
+ * matches the `tonemap` choices of the write node. */
+enum ssg_tonemap {
+    SSG_TONEMAP_CLAMP,    /* min(x, 1): values in [0, 1] shown unchanged */
+    SSG_TONEMAP_REINHARD, /* x / (1 + x) (Reinhard et al. 2002, eq. 3) */
+    SSG_TONEMAP_ACES,     /* Narkowicz 2015 fit of the ACES filmic curve, clamped to 1 */
+};
+
+/* The display value in [0, 1] (linear, before sRGB encoding) of a linear value x scaled
+ * by 2^exposure. Negative values and NaN give 0, +inf gives the curve's limit. */
+float ssg_tonemap_apply(enum ssg_tonemap tonemap, float exposure, float x);
+
+/* The 8-bit code of a linear value: tone mapped as above, sRGB-encoded (IEC 61966-2-1)
+ * and rounded to nearest. */
+unsigned char ssg_tonemap_to_srgb8(enum ssg_tonemap tonemap, float exposure, float x);
+
+/* Writes an 8-bit PNG preview of a 1-channel (gray) or 3-channel (RGB) image, every value
+ * mapped by ssg_tonemap_to_srgb8. */
+enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
+                           enum ssg_tonemap tonemap, float exposure, struct ssg_diags *diags);
+/* The same, staged (see ssg_exr_stage). */
+enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
+                           enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
+                           struct ssg_diags *diags);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

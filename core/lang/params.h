@@ -1,0 +1,97 @@
+/* params.h - parameter tables: declared once per node (or scene entity) in C, with offsetof
+ * into the owner's params struct. The same table parses the graph and scene files, checks
+ * ranges, fills defaults, prints `ssgraph describe` and writes the Markdown docs.
+ *
+ * Storage of each type inside the params struct:
+ *   SSG_P_FLOAT  float          SSG_P_INT   int        SSG_P_BOOL  int (0/1)
+ *   SSG_P_ENUM   int (index into .choices)             SSG_P_STRING char[SSG_STR_MAX]
+ *   SSG_P_VEC3   float[3]       SSG_P_INTS  struct ssg_ints
+ *   SSG_P_NAME   char[SSG_NAME_MAX] (an identifier naming another entity, e.g. a material)
+ * Tables are read-only and thread-safe. */
+#ifndef SSG_PARAMS_H
+#define SSG_PARAMS_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "lang/parse.h"
+#include "ssgraph.h"
+
+#define SSG_STR_MAX 256
+#define SSG_NAME_MAX 64
+#define SSG_INTS_MAX 8
+
+/* The magnitude limit of a number parameter declared without a range (min = max = 0):
+ * scene coordinates and the like; past it a value is refused as out of range. */
+#define SSG_PARAM_ABS_MAX 1e9
+
+enum ssg_param_type {
+    SSG_P_FLOAT,
+    SSG_P_INT,
+    SSG_P_BOOL,
+    SSG_P_ENUM,
+    SSG_P_STRING,
+    SSG_P_VEC3,
+    SSG_P_INTS,
+    SSG_P_NAME,
+};
+
+struct ssg_ints {
+    int count;              /* values used */
+    int v[SSG_INTS_MAX];    /* the values */
+};
+
+struct ssg_param_desc {
+    const char *name;           /* as written in files, e.g. "radius" */
+    enum ssg_param_type type;
+    size_t offset;              /* offsetof(params struct, field) */
+    double def;                 /* default for FLOAT/INT/BOOL/ENUM (ENUM: choice index) */
+    double min, max;            /* inclusive range for FLOAT/INT/VEC3 components/INTS values;
+                                   min == max == 0 means unbounded */
+    const char *unit;           /* "px", "scene units", "degrees", ... or NULL */
+    const char *help;           /* one line */
+    const char *const *choices; /* ENUM: NULL-terminated names */
+    float def3[3];              /* VEC3 default */
+    const char *def_str;        /* STRING/NAME default, NULL = "" */
+    int def_ints[SSG_INTS_MAX]; /* INTS default values ... */
+    int def_ints_count;         /* ... and how many */
+    int min_count, max_count;   /* INTS: allowed number of values (max <= SSG_INTS_MAX) */
+    int required;               /* 1 = must be given (no default) */
+};
+
+/* A table and its length, so callers pass one thing. */
+struct ssg_param_table {
+    const struct ssg_param_desc *params;
+    int count;
+};
+#define SSG_TABLE(arr) {(arr), (int)(sizeof(arr) / sizeof((arr)[0]))}
+
+/* Index of the named parameter, or -1. */
+int ssg_param_find(struct ssg_param_table table, const char *name, size_t name_len);
+
+/* Writes every default into the params struct (zeroes it first). */
+void ssg_params_defaults(struct ssg_param_table table, void *params);
+
+/* Parses `value` into parameter `index` of params, checking type and range. On failure
+ * reports (code SSG_E_TYPE, SSG_E_RANGE or SSG_E_VALUE) at the value's location with what
+ * was expected, and returns that code. `owner` names the node or entity in messages. */
+enum ssg_err ssg_param_set(struct ssg_param_table table, int index, void *params,
+                           const struct ssg_value *value, const char *owner,
+                           struct ssg_diags *diags);
+
+/* Parses a "param=value" string (command line) with the same lexer and rules; locations
+ * in messages are columns in `text`, file `origin`. */
+enum ssg_err ssg_param_set_text(struct ssg_param_table table, void *params, const char *text,
+                                const char *origin, const char *owner, struct ssg_diags *diags);
+
+/* Comma-separated list of parameter names ("radius, bias, samples") for messages. */
+void ssg_param_names(struct ssg_param_table table, char *buf, size_t len);
+
+/* Prints one parameter line for `describe`: name, type, default, range, unit, help. */
+void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream);
+/* Same as a Markdown table row. */
+void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream);
+/* Formats the current value of parameter p in params as it would be written in a file. */
+void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *buf, size_t len);
+
+#endif

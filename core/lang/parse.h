@@ -1,0 +1,104 @@
+/* parse.h - the one lexer and statement parser behind both text formats (graphs, scenes).
+ *
+ * A file is a list of line-oriented statements; `#` starts a comment; newlines end a
+ * statement except inside (...) or [...]. Three statement shapes:
+ *   [name =] callee(arg, key=value, ...)     a call: a graph node or a scene entity
+ *   set name.member = value                  an override of an earlier call's argument
+ *   keyword value value ...                  a directive: scene "x", size 640 480, include "y"
+ * Values: numbers (12, -0.5, 1e-3), strings ("..." with \" and \\), identifiers (true,
+ * cosine, white), references (node.port) and lists ([2, 3]).
+ *
+ * Tokens point into the source text; line and column are worked out only when a message is
+ * printed. Everything parsed lives in the caller's arena. */
+#ifndef SSG_PARSE_H
+#define SSG_PARSE_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "lang/arena.h"
+#include "lang/diag.h"
+#include "lang/files.h"
+#include "ssgraph.h"
+
+enum ssg_value_kind {
+    SSG_V_NUMBER,
+    SSG_V_STRING,
+    SSG_V_IDENT,
+    SSG_V_REF,
+    SSG_V_LIST,
+};
+
+struct ssg_value {
+    enum ssg_value_kind kind;
+    struct ssg_loc loc;        /* first character of the value */
+    double number;             /* NUMBER */
+    int is_integer;            /* NUMBER written without '.', 'e' */
+    const char *text;          /* STRING (unescaped, NUL-terminated), IDENT, REF: node name */
+    size_t len;                /* bytes of text */
+    const char *member;        /* REF: the port after the dot */
+    size_t member_len;
+    struct ssg_loc member_loc; /* REF: where the port name starts */
+    struct ssg_value *items;   /* LIST */
+    int count;                 /* LIST */
+};
+
+struct ssg_arg {
+    const char *key;        /* NULL for a positional argument */
+    size_t key_len;
+    struct ssg_loc key_loc;
+    struct ssg_value value;
+};
+
+enum ssg_stmt_kind {
+    SSG_S_CALL,
+    SSG_S_SET,
+    SSG_S_DIRECTIVE,
+};
+
+struct ssg_stmt {
+    enum ssg_stmt_kind kind;
+    struct ssg_loc loc;        /* first token of the statement */
+    /* CALL: the assigned name (NULL when anonymous); SET: the target name;
+       DIRECTIVE: the keyword */
+    const char *name;
+    size_t name_len;
+    struct ssg_loc name_loc;
+    /* CALL: callee; SET: the member after the dot */
+    const char *callee;
+    size_t callee_len;
+    struct ssg_loc callee_loc;
+    /* CALL: arguments; DIRECTIVE: its values as positional arguments;
+       SET: one argument, keyed by the member */
+    struct ssg_arg *args;
+    int arg_count;
+};
+
+struct ssg_file {
+    const struct ssg_source *src;
+    struct ssg_stmt *stmts;
+    int count;
+};
+
+/* Reads and parses a file. A missing file is reported at `from` (an include or scene
+ * statement) or without location. Syntax errors are all reported; returns the first code. */
+enum ssg_err ssg_parse_file(struct ssg_arena *arena, const char *path, struct ssg_loc from,
+                            struct ssg_file *out, struct ssg_diags *diags);
+/* Parses text already in memory (copied into the arena) under the name `origin`. */
+enum ssg_err ssg_parse_text(struct ssg_arena *arena, const char *origin, const char *text,
+                            struct ssg_file *out, struct ssg_diags *diags);
+/* Parses a single value, e.g. the right side of a command-line `--set a.b=VALUE`. */
+enum ssg_err ssg_parse_value(struct ssg_arena *arena, const struct ssg_source *src,
+                             const char *start, struct ssg_value *out, struct ssg_diags *diags);
+
+/* Compares a (pointer, length) token with a C string. */
+int ssg_tok_eq(const char *tok, size_t len, const char *s);
+
+/* Human name of a value kind for messages: "a number", "a string", ... */
+const char *ssg_value_kind_text(enum ssg_value_kind kind);
+
+/* Resolves `rel` against the directory of `base_file` into out (absolute paths kept). */
+void ssg_path_resolve(const char *base_file, const char *rel, char *out, size_t len);
+
+#endif

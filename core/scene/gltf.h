@@ -1,0 +1,54 @@
+/* gltf.h - loads a glTF 2.0 file (.gltf with its buffers, or .glb) into plain C structs:
+ * the triangles of every node of the default scene with the node's world transform
+ * applied, the base colours and decoded base-colour textures of its materials, and its
+ * first perspective camera. The C++ adapter over tinygltf (gltf_adapter.cc) lives behind
+ * this header and never lets an exception cross it.
+ *
+ * Ownership: ssg_gltf_load returns a struct the caller frees with ssg_gltf_destroy. Every
+ * array in it comes from malloc, so the caller may take an array over (set the pointer in
+ * the struct to NULL) and free it later itself. Thread-safe: no shared state. */
+#ifndef SSG_GLTF_H
+#define SSG_GLTF_H
+
+#include <stddef.h>
+
+#include "scene/scene.h"
+#include "ssgraph.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A glTF material, reduced to what the renderer honours. */
+struct ssg_gltf_material {
+    char name[64];       /* glTF name, "" when it has none */
+    float base_color[4]; /* baseColorFactor, linear RGBA; default 1,1,1,1 */
+    int texture;         /* baseColorTexture: index into textures, -1 = none */
+    int texcoord;        /* TEXCOORD_n set the texture reads; default 0 */
+};
+
+struct ssg_gltf {
+    /* One mesh per triangle primitive instance, in the file's world space. `material`
+       indexes materials (-1 = the primitive names none); `uvs` holds the set the
+       material's texture reads (TEXCOORD_0 without a texture), or NULL. */
+    int mesh_count;
+    struct ssg_mesh *meshes;
+    int material_count;
+    struct ssg_gltf_material *materials;
+    /* Base-colour textures, decoded and converted from sRGB to linear RGB. */
+    int texture_count;
+    struct ssg_texture *textures;
+    int has_camera;            /* 1 = a node of the default scene carries a perspective camera */
+    struct ssg_camera camera;  /* that node's camera in world space (yfov in degrees) */
+};
+
+/* Loads path. On failure returns SSG_E_IO (cannot read the file), SSG_E_GLTF (malformed or
+ * unsupported content) or SSG_E_NOMEM, writes a message that names the file into why, and
+ * sets *out to NULL. */
+enum ssg_err ssg_gltf_load(const char *path, struct ssg_gltf **out, char *why, size_t why_len);
+void ssg_gltf_destroy(struct ssg_gltf **gltf);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,690 @@
+/* gltf_adapter.cc - the C++ side of gltf.h: reads a glTF 2.0 file with the Debian build of
+ * tinygltf (libtinygltf.so, images decoded by its built-in stb loader) and flattens the
+ * default scene into world-space triangle meshes, materials, textures and a camera.
+ *
+ * Everything is gathered in std::vector first and copied into malloc'd C arrays only once
+ * the whole file has been read, so a failure half-way frees itself. Problems are thrown as
+ * Failure inside this file and caught in ssg_gltf_load: no exception leaves it. */
+#include "scene/gltf.h"
+
+extern "C" {
+#include "lang/files.h"
+}
+
+#include <array>
+#include <cerrno>
+#include <sys/stat.h>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+namespace {
+
+struct Failure {
+    ssg_err code;
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string &message)
+{
+    throw Failure{SSG_E_GLTF, message};
+}
+
+using Mat4 = std::array<double, 16>; /* column-major, as glTF stores it */
+
+Mat4 identity()
+{
+    return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+}
+
+Mat4 multiply(const Mat4 &a, const Mat4 &b)
+{
+    Mat4 r{};
+    for (int c = 0; c < 4; c++)
+        for (int row = 0; row < 4; row++)
+            for (int k = 0; k < 4; k++)
+                r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
+    return r;
+}
+
+/* T * R * S, the order glTF defines for a node's TRS properties. */
+Mat4 trs_matrix(const tinygltf::Node &node)
+{
+    double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
+    if (node.translation.size() == 3)
+        for (int i = 0; i < 3; i++) t[i] = node.translation[i];
+    if (node.rotation.size() == 4)
+        for (int i = 0; i < 4; i++) q[i] = node.rotation[i];
+    if (node.scale.size() == 3)
+        for (int i = 0; i < 3; i++) s[i] = node.scale[i];
+    const double x = q[0], y = q[1], z = q[2], w = q[3];
+    const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
+                         2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                         2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y)};
+    Mat4 m = identity();
+    for (int c = 0; c < 3; c++)
+        for (int row = 0; row < 3; row++) m[c * 4 + row] = r[c * 3 + row] * s[c];
+    for (int i = 0; i < 3; i++) m[12 + i] = t[i];
+    return m;
+}
+
+Mat4 local_matrix(const tinygltf::Node &node)
+{
+    if (node.matrix.size() == 16) {
+        Mat4 m;
+        for (int i = 0; i < 16; i++) m[i] = node.matrix[i];
+        return m;
+    }
+    return trs_matrix(node);
+}
+
+/* Cofactor matrix of the upper 3x3: proportional to the inverse transpose, which is what
+ * carries normals through a non-uniform scale. */
+std::array<double, 9> normal_matrix(const Mat4 &m, double *det)
+{
+    auto e = [&](int row, int col) { return m[col * 4 + row]; };
+    std::array<double, 9> c;
+    for (int row = 0; row < 3; row++)
+        for (int col = 0; col < 3; col++) {
+            int r1 = (row + 1) % 3, r2 = (row + 2) % 3, c1 = (col + 1) % 3, c2 = (col + 2) % 3;
+            c[col * 3 + row] = e(r1, c1) * e(r2, c2) - e(r1, c2) * e(r2, c1);
+        }
+    *det = e(0, 0) * c[0] + e(0, 1) * c[3] + e(0, 2) * c[6];
+    return c;
+}
+
+/* Bounds-checked view of one accessor's elements. */
+struct AccessorView {
+    const unsigned char *data;
+    size_t count;
+    size_t stride;
+    int component_type;
+    int components;
+    bool normalized;
+};
+
+std::string accessor_name(int index)
+{
+    return "accessor " + std::to_string(index);
+}
+
+/* Elements one accessor may hold: a scene takes at most 16 M triangles (scene_build.h),
+   so 64 M vertices or indices is past anything it could use; the limit keeps a forged
+   count from asking for gigabytes before anything is read. */
+const size_t MAX_ACCESSOR_ELEMENTS = (size_t)64 << 20;
+
+/* a + b and a * b into *out; false when they overflow size_t (a forged count or offset). */
+bool add_ok(size_t a, size_t b, size_t *out)
+{
+    return !__builtin_add_overflow(a, b, out);
+}
+
+bool mul_ok(size_t a, size_t b, size_t *out)
+{
+    return !__builtin_mul_overflow(a, b, out);
+}
+
+AccessorView view_accessor(const tinygltf::Model &model, int index)
+{
+    if (index < 0 || (size_t)index >= model.accessors.size())
+        fail(accessor_name(index) + " does not exist");
+    const tinygltf::Accessor &acc = model.accessors[(size_t)index];
+    if (acc.sparse.isSparse)
+        fail(accessor_name(index) + " is sparse (not supported)");
+    if (acc.bufferView < 0 || (size_t)acc.bufferView >= model.bufferViews.size())
+        fail(accessor_name(index) + " has no valid bufferView");
+    const tinygltf::BufferView &bv = model.bufferViews[(size_t)acc.bufferView];
+    if (bv.buffer < 0 || (size_t)bv.buffer >= model.buffers.size())
+        fail(accessor_name(index) + ": bufferView names a missing buffer");
+    const std::vector<unsigned char> &buf = model.buffers[(size_t)bv.buffer].data;
+    int stride = acc.ByteStride(bv);
+    int comp_size = tinygltf::GetComponentSizeInBytes((uint32_t)acc.componentType);
+    int comps = tinygltf::GetNumComponentsInType((uint32_t)acc.type);
+    if (stride <= 0 || comp_size <= 0 || comps <= 0)
+        fail(accessor_name(index) + " has an invalid type or stride");
+    size_t elem = (size_t)comp_size * (size_t)comps;
+    if ((size_t)stride < elem)
+        fail(accessor_name(index) + ": byteStride " + std::to_string(stride) +
+             " is smaller than its element of " + std::to_string(elem) + " bytes");
+    if (acc.count > MAX_ACCESSOR_ELEMENTS)
+        fail(accessor_name(index) + " has " + std::to_string(acc.count) +
+             " elements (expected at most " + std::to_string(MAX_ACCESSOR_ELEMENTS) + ")");
+    /* Every byte the accessor reads lies inside its view, and the view inside its buffer,
+       computed without overflow whatever the file claims. */
+    size_t need = 0, view_end = 0, span = 0;
+    bool ok = acc.count == 0 ||
+              (mul_ok(acc.count - 1, (size_t)stride, &span) && add_ok(span, elem, &span) &&
+               add_ok(span, acc.byteOffset, &need));
+    ok = ok && add_ok(bv.byteOffset, bv.byteLength, &view_end) && view_end <= buf.size() &&
+         need <= bv.byteLength;
+    if (!ok)
+        fail(accessor_name(index) + " reads past the end of its buffer (count " +
+             std::to_string(acc.count) + ", stride " + std::to_string(stride) +
+             "; a missing or short .bin, or a forged count?)");
+    return {buf.data() + bv.byteOffset + acc.byteOffset, acc.count, (size_t)stride,
+            acc.componentType, comps, acc.normalized};
+}
+
+double read_component(const unsigned char *p, int type, bool normalized)
+{
+    switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0 : p[0];
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        double v = (signed char)p[0];
+        return normalized ? std::fmax(v / 127.0, -1.0) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t u; std::memcpy(&u, p, 2); return normalized ? u / 65535.0 : u;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        int16_t s; std::memcpy(&s, p, 2);
+        return normalized ? std::fmax(s / 32767.0, -1.0) : s;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t u; std::memcpy(&u, p, 4); return u; }
+    default: fail("unsupported component type " + std::to_string(type));
+    }
+}
+
+/* The accessor's elements as `components` floats each (VEC2 texcoords, VEC3 positions). */
+std::vector<float> read_floats(const tinygltf::Model &model, int index, int components)
+{
+    AccessorView v = view_accessor(model, index);
+    if (v.components != components)
+        fail(accessor_name(index) + " has " + std::to_string(v.components) +
+             " components, expected " + std::to_string(components));
+    int size = tinygltf::GetComponentSizeInBytes((uint32_t)v.component_type);
+    std::vector<float> out(v.count * (size_t)components);
+    for (size_t i = 0; i < v.count; i++) {
+        for (int c = 0; c < components; c++) {
+            float x = (float)read_component(v.data + i * v.stride + (size_t)(c * size),
+                                            v.component_type, v.normalized);
+            /* NaN or infinity in a vertex would vanish into the ray tracer (or poison the
+               bounds and the camera): refused, with where it is. */
+            if (!std::isfinite(x))
+                fail(accessor_name(index) + " element " + std::to_string(i) + " component " +
+                     std::to_string(c) + " is " + (std::isnan(x) ? "NaN" : "infinite") +
+                     " (expected finite values)");
+            out[i * (size_t)components + (size_t)c] = x;
+        }
+    }
+    return out;
+}
+
+std::vector<uint32_t> read_indices(const tinygltf::Model &model, int index)
+{
+    AccessorView v = view_accessor(model, index);
+    int t = v.component_type;
+    if (v.components != 1 || (t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                              t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                              t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        fail(accessor_name(index) + " is not a scalar unsigned index accessor");
+    std::vector<uint32_t> out(v.count);
+    for (size_t i = 0; i < v.count; i++)
+        out[i] = (uint32_t)read_component(v.data + i * v.stride, t, false);
+    return out;
+}
+
+/* Turns strips and fans into a triangle list; lines and points are not surfaces. */
+std::vector<uint32_t> triangle_list(const std::vector<uint32_t> &idx, int mode,
+                                    const std::string &where)
+{
+    std::vector<uint32_t> tris;
+    size_t n = idx.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (n % 3)
+            fail(where + ": index count " + std::to_string(n) + " is not a multiple of 3");
+        return idx;
+    }
+    if (mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(where + ": mode " + std::to_string(mode) +
+             " is not a triangle mode (expected 4 TRIANGLES, 5 STRIP or 6 FAN)");
+    for (size_t i = 0; i + 2 < n; i++) {
+        uint32_t a = idx[i], b = idx[i + 1], c = idx[i + 2];
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+            a = idx[0];
+        else if (i % 2)
+            std::swap(a, b); /* keep the winding of odd strip triangles */
+        tris.insert(tris.end(), {a, b, c});
+    }
+    return tris;
+}
+
+/* Area-weighted smooth normals for primitives that come without any. */
+std::vector<float> compute_normals(const std::vector<float> &p, const std::vector<uint32_t> &idx)
+{
+    std::vector<float> n(p.size(), 0.0f);
+    for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+        const float *a = &p[3 * idx[t]], *b = &p[3 * idx[t + 1]], *c = &p[3 * idx[t + 2]];
+        float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        float e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        float f[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                      e1[0] * e2[1] - e1[1] * e2[0]};
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++) n[3 * idx[t + (size_t)k] + (size_t)j] += f[j];
+    }
+    return n;
+}
+
+float srgb_to_linear(float c)
+{
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+template <typename T> T *c_array(const std::vector<T> &v)
+{
+    if (v.empty())
+        return nullptr;
+    T *p = static_cast<T *>(std::malloc(v.size() * sizeof(T)));
+    if (!p)
+        throw std::bad_alloc();
+    std::memcpy(p, v.data(), v.size() * sizeof(T));
+    return p;
+}
+
+/* A primitive gathered in C++ containers until the whole file has loaded. */
+struct Prim {
+    std::vector<float> positions, normals, uvs;
+    std::vector<uint32_t> indices;
+    int material;
+};
+
+struct Tex {
+    int width, height;
+    std::vector<float> rgb;
+};
+
+class Flattener {
+  public:
+    explicit Flattener(const tinygltf::Model &model) : m(model) {}
+    void run();
+    ssg_gltf *to_c() const;
+
+  private:
+    const tinygltf::Model &m;
+    std::vector<Prim> prims;
+    std::vector<ssg_gltf_material> materials;
+    std::vector<Tex> textures;
+    std::vector<int> texture_slot; /* glTF texture index -> textures index, -1 = not yet */
+    bool has_camera = false;
+    ssg_camera camera{};
+    size_t visits = 0; /* node instances seen, against shared subtrees blowing up */
+
+    void visit(int node, const Mat4 &parent, int depth);
+    void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
+    void add_camera(const tinygltf::Camera &cam, const Mat4 &world);
+    void convert_materials();
+    int texture(int gltf_index);
+};
+
+void Flattener::run()
+{
+    texture_slot.assign(m.textures.size(), -1);
+    convert_materials();
+    std::vector<int> roots;
+    if (!m.scenes.empty()) {
+        size_t s = m.defaultScene >= 0 ? (size_t)m.defaultScene : 0;
+        if (s >= m.scenes.size())
+            fail("default scene " + std::to_string(s) + " does not exist");
+        roots = m.scenes[s].nodes;
+    } else { /* no scene at all: every node that is nobody's child is a root */
+        std::vector<bool> child(m.nodes.size(), false);
+        for (const tinygltf::Node &n : m.nodes)
+            for (int c : n.children)
+                if (c >= 0 && (size_t)c < child.size()) child[(size_t)c] = true;
+        for (size_t i = 0; i < m.nodes.size(); i++)
+            if (!child[i]) roots.push_back((int)i);
+    }
+    for (int r : roots) visit(r, identity(), 0);
+}
+
+void Flattener::visit(int index, const Mat4 &parent, int depth)
+{
+    if (index < 0 || (size_t)index >= m.nodes.size())
+        fail("node " + std::to_string(index) + " does not exist");
+    if (depth > 64 || ++visits > (1u << 20))
+        fail("node hierarchy deeper than 64 levels or over 2^20 node instances (a cycle?)");
+    const tinygltf::Node &node = m.nodes[(size_t)index];
+    Mat4 world = multiply(parent, local_matrix(node));
+    if (node.mesh >= 0) {
+        if ((size_t)node.mesh >= m.meshes.size())
+            fail("node " + std::to_string(index) + " names missing mesh " +
+                 std::to_string(node.mesh));
+        const tinygltf::Mesh &mesh = m.meshes[(size_t)node.mesh];
+        for (size_t p = 0; p < mesh.primitives.size(); p++)
+            add_primitive(mesh.primitives[p], world,
+                          "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p));
+    }
+    if (node.camera >= 0 && (size_t)node.camera < m.cameras.size() && !has_camera &&
+        m.cameras[(size_t)node.camera].type == "perspective")
+        add_camera(m.cameras[(size_t)node.camera], world);
+    for (int c : node.children) visit(c, world, depth + 1);
+}
+
+int attribute(const tinygltf::Primitive &p, const std::string &name)
+{
+    auto it = p.attributes.find(name);
+    return it == p.attributes.end() ? -1 : it->second;
+}
+
+void transform_points(std::vector<float> &v, const Mat4 &m)
+{
+    for (size_t i = 0; i + 2 < v.size(); i += 3) {
+        double x = v[i], y = v[i + 1], z = v[i + 2];
+        for (int r = 0; r < 3; r++)
+            v[i + (size_t)r] = (float)(m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
+    }
+}
+
+void transform_normals(std::vector<float> &v, const Mat4 &m)
+{
+    double det;
+    std::array<double, 9> c = normal_matrix(m, &det);
+    double sign = det < 0 ? -1.0 : 1.0;
+    for (size_t i = 0; i + 2 < v.size(); i += 3) {
+        double n[3];
+        for (int r = 0; r < 3; r++)
+            n[r] = c[(size_t)r] * v[i] + c[3 + (size_t)r] * v[i + 1] + c[6 + (size_t)r] * v[i + 2];
+        double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        double s = len > 0 ? sign / len : 0.0;
+        if (len <= 0) /* a degenerate normal still has to be a unit vector */
+            n[1] = 1.0, s = 1.0;
+        for (int r = 0; r < 3; r++) v[i + (size_t)r] = (float)(n[r] * s);
+    }
+}
+
+void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
+                              const std::string &where)
+{
+    int pos = attribute(p, "POSITION");
+    if (pos < 0)
+        fail(where + " has no POSITION attribute");
+    Prim out;
+    out.positions = read_floats(m, pos, 3);
+    size_t nv = out.positions.size() / 3;
+    std::vector<uint32_t> idx;
+    if (p.indices >= 0)
+        idx = read_indices(m, p.indices);
+    else
+        for (size_t i = 0; i < nv; i++) idx.push_back((uint32_t)i);
+    out.indices = triangle_list(idx, p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode, where);
+    for (uint32_t i : out.indices)
+        if (i >= nv)
+            fail(where + ": index " + std::to_string(i) + " out of range (" +
+                 std::to_string(nv) + " vertices)");
+    if (out.indices.empty())
+        return;
+    int nrm = attribute(p, "NORMAL");
+    out.normals = nrm >= 0 ? read_floats(m, nrm, 3) : compute_normals(out.positions, out.indices);
+    if (out.normals.size() != out.positions.size())
+        fail(where + ": NORMAL count differs from POSITION count");
+    out.material = p.material >= 0 && (size_t)p.material < materials.size() ? p.material : -1;
+    int set = out.material >= 0 ? materials[(size_t)out.material].texcoord : 0;
+    int uv = attribute(p, "TEXCOORD_" + std::to_string(set));
+    if (uv >= 0) {
+        out.uvs = read_floats(m, uv, 2);
+        if (out.uvs.size() / 2 != nv)
+            fail(where + ": TEXCOORD count differs from POSITION count");
+    }
+    transform_points(out.positions, world);
+    transform_normals(out.normals, world);
+    double det;
+    normal_matrix(world, &det);
+    if (det < 0) /* a mirroring transform flips the winding; flip it back */
+        for (size_t t = 0; t < out.indices.size(); t += 3)
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
+    prims.push_back(std::move(out));
+}
+
+void Flattener::add_camera(const tinygltf::Camera &cam, const Mat4 &w)
+{
+    const tinygltf::PerspectiveCamera &p = cam.perspective;
+    double fwd[3] = {-w[8], -w[9], -w[10]}, up[3] = {w[4], w[5], w[6]};
+    double fl = std::sqrt(fwd[0] * fwd[0] + fwd[1] * fwd[1] + fwd[2] * fwd[2]);
+    double ul = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+    if (fl <= 0 || ul <= 0 || p.yfov <= 0 || p.znear <= 0)
+        return; /* a degenerate camera is ignored rather than failing the whole file */
+    for (int i = 0; i < 3; i++) {
+        camera.position[i] = (float)w[12 + i];
+        camera.target[i] = (float)(w[12 + i] + fwd[i] / fl);
+        camera.up[i] = (float)(up[i] / ul);
+    }
+    camera.fov_y = (float)(p.yfov * 180.0 / 3.14159265358979323846);
+    camera.near_z = (float)p.znear;
+    /* zfar absent means an infinite projection; use a far plane well past the near one */
+    camera.far_z = (float)(p.zfar > p.znear ? p.zfar : std::fmax(100.0, p.znear * 1e4));
+    has_camera = true;
+}
+
+void Flattener::convert_materials()
+{
+    for (const tinygltf::Material &src : m.materials) {
+        ssg_gltf_material mat{};
+        std::snprintf(mat.name, sizeof mat.name, "%s", src.name.c_str());
+        const std::vector<double> &f = src.pbrMetallicRoughness.baseColorFactor;
+        for (int i = 0; i < 4; i++) mat.base_color[i] = f.size() == 4 ? (float)f[(size_t)i] : 1.0f;
+        mat.texture = texture(src.pbrMetallicRoughness.baseColorTexture.index);
+        mat.texcoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
+        materials.push_back(mat);
+    }
+}
+
+/* Decodes glTF texture `gltf_index` once; baseColor textures are sRGB-encoded (glTF 2.0
+ * spec, 3.9.2), so 8- and 16-bit values are converted to linear here. */
+int Flattener::texture(int gltf_index)
+{
+    if (gltf_index < 0)
+        return -1;
+    if ((size_t)gltf_index >= m.textures.size())
+        fail("texture " + std::to_string(gltf_index) + " does not exist");
+    if (texture_slot[(size_t)gltf_index] >= 0)
+        return texture_slot[(size_t)gltf_index];
+    int source = m.textures[(size_t)gltf_index].source;
+    if (source < 0 || (size_t)source >= m.images.size())
+        fail("texture " + std::to_string(gltf_index) + " has no valid image");
+    const tinygltf::Image &img = m.images[(size_t)source];
+    size_t bytes = img.bits == 16 ? 2 : 1;
+    size_t px = (size_t)img.width * (size_t)img.height;
+    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 ||
+        (img.bits != 8 && img.bits != 16) || img.image.size() < px * (size_t)img.component * bytes)
+        fail("image " + std::to_string(source) + " ('" + img.uri + "') was not decoded");
+    float lut[256];
+    for (int i = 0; i < 256; i++) lut[i] = srgb_to_linear((float)i / 255.0f);
+    Tex tex{img.width, img.height, std::vector<float>(px * 3)};
+    for (size_t i = 0; i < px; i++)
+        for (int c = 0; c < 3; c++) {
+            size_t at = i * (size_t)img.component + (size_t)(img.component < 3 ? 0 : c);
+            float v;
+            if (bytes == 1) {
+                v = lut[img.image[at]];
+            } else {
+                uint16_t u;
+                std::memcpy(&u, &img.image[at * 2], 2);
+                v = srgb_to_linear((float)u / 65535.0f);
+            }
+            tex.rgb[i * 3 + (size_t)c] = v;
+        }
+    textures.push_back(std::move(tex));
+    texture_slot[(size_t)gltf_index] = (int)textures.size() - 1;
+    return texture_slot[(size_t)gltf_index];
+}
+
+void free_partial(ssg_gltf *g);
+
+ssg_gltf *Flattener::to_c() const
+{
+    ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
+    if (!g)
+        throw std::bad_alloc();
+    try {
+        g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
+        g->materials = c_array(materials);
+        g->textures =
+            static_cast<ssg_texture *>(std::calloc(textures.size() + 1, sizeof(ssg_texture)));
+        if (!g->meshes || !g->textures || (!materials.empty() && !g->materials))
+            throw std::bad_alloc();
+        g->material_count = (int)materials.size();
+        for (const Prim &p : prims) {
+            ssg_mesh &o = g->meshes[g->mesh_count++];
+            o.vertex_count = (int)(p.positions.size() / 3);
+            o.triangle_count = (int)(p.indices.size() / 3);
+            o.material = p.material;
+            o.positions = c_array(p.positions);
+            o.normals = c_array(p.normals);
+            o.uvs = c_array(p.uvs);
+            o.indices = c_array(p.indices);
+        }
+        for (const Tex &t : textures) {
+            ssg_texture &o = g->textures[g->texture_count++];
+            o.width = t.width;
+            o.height = t.height;
+            o.rgb = c_array(t.rgb);
+        }
+    } catch (...) {
+        free_partial(g);
+        throw;
+    }
+    g->has_camera = has_camera;
+    g->camera = camera;
+    return g;
+}
+
+void free_partial(ssg_gltf *g)
+{
+    for (int i = 0; g->meshes && i < g->mesh_count; i++) {
+        std::free(g->meshes[i].positions);
+        std::free(g->meshes[i].normals);
+        std::free(g->meshes[i].uvs);
+        std::free(g->meshes[i].indices);
+    }
+    for (int i = 0; g->textures && i < g->texture_count; i++) std::free(g->textures[i].rgb);
+    std::free(g->meshes);
+    std::free(g->materials);
+    std::free(g->textures);
+    std::free(g);
+}
+
+/* tinygltf reads the buffers and images a glTF names through this: the same rules as
+   every input (files.h): a regular file, at most SSG_MAX_MODEL_BYTES. A buffer URI naming
+   /dev/zero or a FIFO is refused instead of read without end. */
+bool read_whole_file(std::vector<unsigned char> *out, std::string *err,
+                     const std::string &path, void *)
+{
+    char *data = nullptr, why[256];
+    size_t len = 0;
+    if (ssg_input_read(path.c_str(), SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why)) {
+        if (err)
+            *err += path + ": " + why + "\n";
+        return false;
+    }
+    out->assign(data, data + len);
+    std::free(data);
+    return true;
+}
+
+/* Anything that exists "exists": read_whole_file then refuses what is not a plain file
+   with its reason, rather than tinygltf falling back to a file of that name elsewhere. */
+bool file_exists(const std::string &path, void *)
+{
+    struct stat st;
+    return stat(path.c_str(), &st) == 0;
+}
+
+std::string expand_nothing(const std::string &path, void *)
+{
+    return path;
+}
+
+bool write_nothing(std::string *err, const std::string &, const std::vector<unsigned char> &,
+                   void *)
+{
+    if (err)
+        *err += "ssgraph does not write glTF files";
+    return false;
+}
+
+std::string base_dir(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    if (slash == path)
+        return "/";
+    return slash ? std::string(path, (size_t)(slash - path)) : std::string(".");
+}
+
+ssg_gltf *load(const char *path)
+{
+    char *data = nullptr, why[256];
+    size_t len = 0;
+    enum ssg_err e = ssg_input_read(path, SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why);
+    if (e)
+        throw Failure{e, why};
+    std::unique_ptr<char, decltype(&std::free)> owned(data, &std::free);
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({file_exists, expand_nothing, read_whole_file, write_nothing, nullptr});
+    std::string err, warn, dir = base_dir(path);
+    const unsigned char *bytes = reinterpret_cast<const unsigned char *>(data);
+    bool binary = len >= 4 && std::memcmp(data, "glTF", 4) == 0;
+    if (len > 0xffffffffu)
+        fail("file too large for tinygltf (4 GiB)");
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes,
+                                                   (unsigned)len, dir)
+                     : loader.LoadASCIIFromString(&model, &err, &warn, data, (unsigned)len, dir);
+    if (!ok) {
+        while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+        for (char &c : err) /* one printable line: JSON errors quote raw bytes of the file */
+            if (c == '\n')
+                c = ';';
+            else if ((unsigned char)c < 32 || (unsigned char)c > 126)
+                c = '?';
+        fail(err.empty() ? "tinygltf could not parse it" : err);
+    }
+    Flattener flat(model);
+    flat.run();
+    return flat.to_c();
+}
+
+void report(char *why, size_t why_len, const char *path, const std::string &message)
+{
+    if (why && why_len)
+        std::snprintf(why, why_len, "%s: %s", path, message.c_str());
+}
+
+} // namespace
+
+extern "C" enum ssg_err ssg_gltf_load(const char *path, struct ssg_gltf **out, char *why,
+                                      size_t why_len)
+{
+    *out = nullptr;
+    try {
+        *out = load(path);
+        return SSG_OK;
+    } catch (const Failure &f) {
+        report(why, why_len, path, f.message);
+        return f.code;
+    } catch (const std::bad_alloc &) {
+        report(why, why_len, path, "out of memory");
+        return SSG_E_NOMEM;
+    } catch (const std::exception &e) {
+        report(why, why_len, path, e.what());
+    } catch (...) {
+        report(why, why_len, path, "unexpected failure inside tinygltf");
+    }
+    return SSG_E_GLTF;
+}
+
+extern "C" void ssg_gltf_destroy(struct ssg_gltf **gltf)
+{
+    if (!gltf || !*gltf)
+        return;
+    free_partial(*gltf);
+    *gltf = nullptr;
+}

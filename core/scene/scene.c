@@ -1,0 +1,562 @@
+/* scene.c - scene files: statements to validated entities (scene_build.h), then the scene.
+ *
+ * Each entity kind (camera, material, lights, environment, plane, box, sphere, mesh) is a
+ * parameter table, so arguments are parsed, range-checked, defaulted and documented the
+ * same way as node parameters. Positional arguments fill parameters in table order
+ * (mesh("bunny.gltf") sets `file`); `name = kind(...)` names an entity, materials are
+ * referred to by name from anywhere in the file; `set name.arg = value` overrides an
+ * argument of an entity defined above it. Every problem is reported with its location;
+ * assets are loaded only when the whole file is valid. */
+#include <errno.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "scene/env.h"
+#include "scene/rt.h"
+#include "scene/scene_build.h"
+#include "scene/scene_shapes.h"
+
+#define BIG 1e9
+
+/* ---- parameter tables ---- */
+
+#define VEC3(nm, st, fld, x, y, z, lo, hi, u, h)                                          \
+    {.name = nm, .type = SSG_P_VEC3, .offset = offsetof(struct st, fld), .def3 = {x, y, z}, \
+     .min = lo, .max = hi, .unit = u, .help = h}
+#define REQ_VEC3(nm, st, fld, u, h)                                                      \
+    {.name = nm, .type = SSG_P_VEC3, .offset = offsetof(struct st, fld), .unit = u,       \
+     .help = h, .required = 1}
+#define FLOAT(nm, st, fld, d, lo, hi, u, h)                                              \
+    {.name = nm, .type = SSG_P_FLOAT, .offset = offsetof(struct st, fld), .def = d,       \
+     .min = lo, .max = hi, .unit = u, .help = h}
+#define TEXT(nm, ty, st, fld, req, h)                                                    \
+    {.name = nm, .type = ty, .offset = offsetof(struct st, fld), .help = h, .required = req}
+#define MATERIAL(st) TEXT("material", SSG_P_NAME, st, material, 0, \
+                          "name of a material defined in this file; default: white 0.8")
+
+static const struct ssg_param_desc camera_params[] = {
+    VEC3("position", camera_args, position, 0, 0, 5, 0, 0, "scene units", "eye position"),
+    VEC3("target", camera_args, target, 0, 0, 0, 0, 0, "scene units", "point looked at"),
+    VEC3("up", camera_args, up, 0, 1, 0, 0, 0, NULL, "up direction hint"),
+    FLOAT("fov", camera_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
+          "vertical field of view"),
+    FLOAT("near", camera_args, near_z, SSG_DEFAULT_NEAR, 1e-6, BIG, "scene units",
+          "near plane distance"),
+    FLOAT("far", camera_args, far_z, SSG_DEFAULT_FAR, 1e-6, BIG, "scene units",
+          "far plane distance"),
+};
+static const struct ssg_param_desc material_params[] = {
+    VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,
+         "diffuse reflectance, linear RGB (multiplies the texture)"),
+    VEC3("specular", material_args, specular, 0, 0, 0, 0, 1, NULL,
+         "Blinn-Phong specular colour, linear RGB"),
+    FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
+    TEXT("texture", SSG_P_STRING, material_args, texture, 0,
+         "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
+};
+static const struct ssg_param_desc point_light_params[] = {
+    REQ_VEC3("position", light_args, position, "scene units", "light position"),
+    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
+    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/sr",
+          "radiant intensity; irradiance falls off as 1/d^2"),
+};
+static const struct ssg_param_desc directional_light_params[] = {
+    REQ_VEC3("direction", light_args, direction, NULL, "direction the light travels"),
+    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
+    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/m^2",
+          "irradiance on a surface facing the light"),
+};
+static const struct ssg_param_desc environment_params[] = {
+    VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL, "constant radiance, linear RGB"),
+    FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL, "multiplies color and image"),
+    TEXT("image", SSG_P_STRING, environment_args, image, 0,
+         "lat-long HDR image (multiplied by color), relative to the scene"),
+};
+static const struct ssg_param_desc plane_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the rectangle"),
+    VEC3("size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
+         "[width, unused, depth]: extents along the plane's x and z axes (its y is the normal)"),
+    VEC3("normal", shape_args, normal, 0, 1, 0, 0, 0, NULL,
+         "facing direction; the plane's frame is the shortest rotation of +y onto it"),
+};
+static const struct ssg_param_desc box_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the box"),
+    VEC3("size", shape_args, size, 1, 1, 1, 1e-6, BIG, "scene units", "extents along x, y, z"),
+    VEC3("rotate", shape_args, rotate, 0, 0, 0, 0, 0, "degrees",
+         "rotation about the centre: about x, then y, then z (world axes)"),
+};
+static const struct ssg_param_desc sphere_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the sphere"),
+    FLOAT("radius", shape_args, radius, 1, 1e-6, BIG, "scene units", "radius"),
+    {.name = "subdivisions", .type = SSG_P_INT, .offset = offsetof(struct shape_args, subdivisions),
+     .def = 32, .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
+};
+static const struct ssg_param_desc mesh_params[] = {
+    TEXT("file", SSG_P_STRING, mesh_args, file, 1, "glTF 2.0 file (.gltf or .glb), relative to "
+         "the scene"),
+    TEXT("material", SSG_P_NAME, mesh_args, material, 0,
+         "material overriding the file's own; default: the glTF materials"),
+    VEC3("translate", mesh_args, translate, 0, 0, 0, 0, 0, "scene units", "moves the mesh"),
+    VEC3("rotate", mesh_args, rotate, 0, 0, 0, 0, 0, "degrees",
+         "about x, then y, then z (world axes), before translate"),
+    VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first"),
+};
+
+struct kind_desc {
+    const char *name;
+    struct ssg_param_table table;
+    size_t size;
+};
+
+static const struct kind_desc kinds[SK_COUNT] = {
+    [SK_CAMERA] = {"camera", SSG_TABLE(camera_params), sizeof(struct camera_args)},
+    [SK_MATERIAL] = {"material", SSG_TABLE(material_params), sizeof(struct material_args)},
+    [SK_POINT_LIGHT] = {"point_light", SSG_TABLE(point_light_params), sizeof(struct light_args)},
+    [SK_DIRECTIONAL_LIGHT] = {"directional_light", SSG_TABLE(directional_light_params),
+                              sizeof(struct light_args)},
+    [SK_ENVIRONMENT] = {"environment", SSG_TABLE(environment_params),
+                        sizeof(struct environment_args)},
+    [SK_PLANE] = {"plane", SSG_TABLE(plane_params), sizeof(struct shape_args)},
+    [SK_BOX] = {"box", SSG_TABLE(box_params), sizeof(struct shape_args)},
+    [SK_SPHERE] = {"sphere", SSG_TABLE(sphere_params), sizeof(struct shape_args)},
+    [SK_MESH] = {"mesh", SSG_TABLE(mesh_params), sizeof(struct mesh_args)},
+};
+
+/* ---- helpers shared with scene_build.c ---- */
+
+void ssg_scene_fail(struct scene_loader *l, enum ssg_err e)
+{
+    if (!l->first)
+        l->first = e;
+}
+
+void ssg_scene_path(const struct scene_loader *l, const char *rel, char *out, size_t len)
+{
+    ssg_path_resolve(l->path, rel, out, len);
+}
+
+static void kind_names(char *buf, size_t len)
+{
+    size_t n = 0;
+    for (int k = 0; k < SK_COUNT && n < len; k++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", k ? ", " : "", kinds[k].name);
+}
+
+static const char *entity_name(const struct scene_entity *e)
+{
+    return kinds[e->kind].name;
+}
+
+/* ---- binding arguments ---- */
+
+static void bind_arg(struct scene_loader *l, struct scene_entity *e, int index,
+                     const struct ssg_value *v)
+{
+    const struct kind_desc *k = &kinds[e->kind];
+    enum ssg_err err = ssg_param_set(k->table, index, e->args, v, k->name, l->diags);
+    if (err)
+        ssg_scene_fail(l, err);
+    else
+        e->at[index] = v->loc;
+}
+
+static void bind_named(struct scene_loader *l, struct scene_entity *e, const struct ssg_arg *a)
+{
+    const struct kind_desc *k = &kinds[e->kind];
+    int index = ssg_param_find(k->table, a->key, a->key_len);
+    if (index >= 0) {
+        bind_arg(l, e, index, &a->value);
+        return;
+    }
+    char names[256];
+    ssg_param_names(k->table, names, sizeof names);
+    ssg_diag_at(l->diags, SSG_E_UNKNOWN_PARAM, a->key_loc, "unknown argument '%.*s' for '%s' "
+                "(expected one of: %s)", (int)a->key_len, a->key, k->name, names);
+    ssg_scene_fail(l, SSG_E_UNKNOWN_PARAM);
+}
+
+static void bind_call(struct scene_loader *l, struct scene_entity *e)
+{
+    const struct ssg_stmt *st = e->stmt;
+    int next = 0, named = 0;
+    for (int i = 0; i < st->arg_count; i++) {
+        const struct ssg_arg *a = &st->args[i];
+        if (a->key) {
+            named = 1;
+            bind_named(l, e, a);
+        } else if (named) {
+            ssg_diag_at(l->diags, SSG_E_SYNTAX, a->value.loc, "positional argument after a "
+                        "named one (expected name=value)");
+            ssg_scene_fail(l, SSG_E_SYNTAX);
+        } else if (next < kinds[e->kind].table.count) {
+            bind_arg(l, e, next++, &a->value);
+        } else {
+            ssg_diag_at(l->diags, SSG_E_VALUE, a->value.loc, "too many positional arguments "
+                        "for '%s' (it has %d arguments)", entity_name(e),
+                        kinds[e->kind].table.count);
+            ssg_scene_fail(l, SSG_E_VALUE);
+        }
+    }
+}
+
+static int find_entity(const struct scene_loader *l, const char *name, size_t len)
+{
+    for (int i = 0; i < l->count; i++) {
+        const struct ssg_stmt *st = l->ents[i].stmt;
+        if (st->name && st->name_len == len && memcmp(st->name, name, len) == 0)
+            return i;
+    }
+    return -1;
+}
+
+static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
+{
+    int kind = 0;
+    while (kind < SK_COUNT && !ssg_tok_eq(st->callee, st->callee_len, kinds[kind].name))
+        kind++;
+    if (kind == SK_COUNT) {
+        char names[256];
+        kind_names(names, sizeof names);
+        ssg_diag_at(l->diags, SSG_E_UNKNOWN_NODE, st->callee_loc, "unknown scene entity '%.*s' "
+                    "(expected one of: %s)", (int)st->callee_len, st->callee, names);
+        ssg_scene_fail(l, SSG_E_UNKNOWN_NODE);
+        return;
+    }
+    if (st->name && find_entity(l, st->name, st->name_len) >= 0) {
+        ssg_diag_at(l->diags, SSG_E_DUPLICATE, st->name_loc, "'%.*s' is defined twice",
+                    (int)st->name_len, st->name);
+        ssg_scene_fail(l, SSG_E_DUPLICATE);
+        return;
+    }
+    struct scene_entity *e = &l->ents[l->count];
+    e->args = ssg_arena_alloc(&l->arena, kinds[kind].size);
+    if (!e->args) {
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return;
+    }
+    l->count++;
+    e->kind = (enum scene_kind)kind;
+    e->stmt = st;
+    e->material = -1;
+    ssg_params_defaults(kinds[kind].table, e->args);
+    bind_call(l, e);
+}
+
+static void apply_set(struct scene_loader *l, const struct ssg_stmt *st)
+{
+    int i = find_entity(l, st->name, st->name_len);
+    if (i < 0) {
+        ssg_diag_at(l->diags, SSG_E_UNKNOWN_NAME, st->name_loc, "'set' names '%.*s', which is "
+                    "not defined above (define it with %.*s = kind(...))", (int)st->name_len,
+                    st->name, (int)st->name_len, st->name);
+        ssg_scene_fail(l, SSG_E_UNKNOWN_NAME);
+        return;
+    }
+    bind_named(l, &l->ents[i], &st->args[0]);
+}
+
+static void read_statements(struct scene_loader *l, const struct ssg_file *file)
+{
+    for (int i = 0; i < file->count; i++) {
+        const struct ssg_stmt *st = &file->stmts[i];
+        if (st->kind == SSG_S_CALL) {
+            add_entity(l, st);
+        } else if (st->kind == SSG_S_SET) {
+            apply_set(l, st);
+        } else {
+            char names[256];
+            kind_names(names, sizeof names);
+            ssg_diag_at(l->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' in a "
+                        "scene (expected an entity call: %s; or set name.arg = value)",
+                        (int)st->name_len, st->name, names);
+            ssg_scene_fail(l, SSG_E_SYNTAX);
+        }
+    }
+}
+
+/* ---- validation ---- */
+
+static int param_index(const struct scene_entity *e, const char *name)
+{
+    return ssg_param_find(kinds[e->kind].table, name, strlen(name));
+}
+
+/* Where to point at for a problem with argument `name`: its value, else the call. */
+static struct ssg_loc arg_loc(const struct scene_entity *e, const char *name)
+{
+    int i = param_index(e, name);
+    return i >= 0 && e->at[i].src ? e->at[i] : e->stmt->callee_loc;
+}
+
+static void problem(struct scene_loader *l, const struct scene_entity *e, const char *arg,
+                    enum ssg_err code, const char *what)
+{
+    ssg_diag_at(l->diags, code, arg_loc(e, arg), "'%s' argument '%s': %s", entity_name(e), arg,
+                what);
+    ssg_scene_fail(l, code);
+}
+
+static void check_required(struct scene_loader *l, const struct scene_entity *e)
+{
+    const struct ssg_param_table t = kinds[e->kind].table;
+    for (int i = 0; i < t.count; i++)
+        if (t.params[i].required && !e->at[i].src) {
+            ssg_diag_at(l->diags, SSG_E_MISSING_INPUT, e->stmt->callee_loc, "'%s' needs "
+                        "argument '%s' (%s)", entity_name(e), t.params[i].name, t.params[i].help);
+            ssg_scene_fail(l, SSG_E_MISSING_INPUT);
+        }
+}
+
+static int is_zero3(const float v[3])
+{
+    return v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f;
+}
+
+/* A referenced file must be readable; checked without opening it (check mode opens
+ * nothing but the scene file). */
+static void check_file(struct scene_loader *l, const struct scene_entity *e, const char *arg,
+                       const char *rel)
+{
+    char path[1024], what[1200];
+    if (!rel[0])
+        return;
+    ssg_scene_path(l, rel, path, sizeof path);
+    if (access(path, R_OK) == 0)
+        return;
+    snprintf(what, sizeof what, "cannot read '%s' (%s)", path, strerror(errno));
+    problem(l, e, arg, SSG_E_IO, what);
+}
+
+static void check_material_ref(struct scene_loader *l, struct scene_entity *e, const char *name)
+{
+    if (!name[0])
+        return;
+    int i = find_entity(l, name, strlen(name));
+    if (i >= 0 && l->ents[i].kind == SK_MATERIAL) {
+        e->material = i;
+        return;
+    }
+    char names[512] = "";
+    size_t n = 0;
+    for (int k = 0; k < l->count && n < sizeof names; k++)
+        if (l->ents[k].kind == SK_MATERIAL && l->ents[k].stmt->name)
+            n += (size_t)snprintf(names + n, sizeof names - n, "%s%.*s", n ? ", " : "",
+                                  (int)l->ents[k].stmt->name_len, l->ents[k].stmt->name);
+    char what[800];
+    snprintf(what, sizeof what, "%s '%s' (expected a material: %s)",
+             i >= 0 ? "not a material:" : "no material named", name, n ? names : "none defined");
+    problem(l, e, "material", i >= 0 ? SSG_E_TYPE : SSG_E_UNKNOWN_NAME, what);
+}
+
+static void check_camera(struct scene_loader *l, const struct scene_entity *e)
+{
+    const struct camera_args *c = e->args;
+    float f[3] = {c->target[0] - c->position[0], c->target[1] - c->position[1],
+                  c->target[2] - c->position[2]};
+    float x[3] = {f[1] * c->up[2] - f[2] * c->up[1], f[2] * c->up[0] - f[0] * c->up[2],
+                  f[0] * c->up[1] - f[1] * c->up[0]};
+    if (is_zero3(f))
+        problem(l, e, "target", SSG_E_VALUE, "the target equals the position");
+    else if (sqrtf(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <=
+             1e-6f * sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) *
+                 sqrtf(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]))
+        problem(l, e, "up", SSG_E_VALUE, "'up' is zero or parallel to the view direction");
+    if (c->near_z >= c->far_z)
+        problem(l, e, "far", SSG_E_RANGE, "'far' must be greater than 'near'");
+}
+
+static void check_plane(struct scene_loader *l, struct scene_entity *e)
+{
+    const struct shape_args *s = e->args;
+    if (is_zero3(s->normal))
+        problem(l, e, "normal", SSG_E_VALUE, "the normal is zero");
+    if (s->size[0] <= 0.0f || s->size[2] <= 0.0f)
+        problem(l, e, "size", SSG_E_RANGE, "width (size[0]) and depth (size[2]) must be > 0");
+}
+
+static void check_entity(struct scene_loader *l, struct scene_entity *e)
+{
+    check_required(l, e);
+    switch (e->kind) {
+    case SK_CAMERA: check_camera(l, e); break;
+    case SK_MATERIAL:
+        check_file(l, e, "texture", ((const struct material_args *)e->args)->texture);
+        break;
+    case SK_POINT_LIGHT: break;
+    case SK_DIRECTIONAL_LIGHT:
+        if (e->at[param_index(e, "direction")].src &&
+            is_zero3(((const struct light_args *)e->args)->direction))
+            problem(l, e, "direction", SSG_E_VALUE, "the direction is zero");
+        break;
+    case SK_ENVIRONMENT:
+        check_file(l, e, "image", ((const struct environment_args *)e->args)->image);
+        break;
+    case SK_PLANE:
+    case SK_BOX:
+    case SK_SPHERE:
+        if (e->kind == SK_PLANE)
+            check_plane(l, e);
+        check_material_ref(l, e, ((const struct shape_args *)e->args)->material);
+        break;
+    case SK_MESH:
+        check_file(l, e, "file", ((const struct mesh_args *)e->args)->file);
+        check_material_ref(l, e, ((const struct mesh_args *)e->args)->material);
+        break;
+    case SK_COUNT: break;
+    }
+}
+
+/* At most one camera and one environment: a second one is surely a mistake. */
+static void check_unique(struct scene_loader *l, enum scene_kind kind)
+{
+    int seen = -1;
+    for (int i = 0; i < l->count; i++) {
+        if (l->ents[i].kind != kind)
+            continue;
+        if (seen >= 0) {
+            int line, col;
+            ssg_loc_linecol(l->ents[seen].stmt->callee_loc, &line, &col);
+            ssg_diag_at(l->diags, SSG_E_DUPLICATE, l->ents[i].stmt->callee_loc, "a second "
+                        "'%s' (the first is on line %d; a scene has at most one)",
+                        kinds[kind].name, line);
+            ssg_scene_fail(l, SSG_E_DUPLICATE);
+        }
+        seen = i;
+    }
+}
+
+/* ---- public API ---- */
+
+static enum ssg_err read_scene(struct scene_loader *l, const char *path)
+{
+    struct ssg_file file;
+    enum ssg_err e = ssg_parse_file(&l->arena, path, (struct ssg_loc){0}, &file, l->diags);
+    if (e)
+        ssg_scene_fail(l, e);
+    if (!file.src)
+        return l->first;
+    l->path = file.src->path;
+    l->ents = ssg_arena_alloc(&l->arena, sizeof *l->ents * (size_t)(file.count + 1));
+    if (!l->ents) {
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return l->first;
+    }
+    read_statements(l, &file);
+    for (int i = 0; i < l->count; i++)
+        check_entity(l, &l->ents[i]);
+    check_unique(l, SK_CAMERA);
+    check_unique(l, SK_ENVIRONMENT);
+    return l->first;
+}
+
+/* What a scene holds before any asset is loaded: the file's camera and environment. */
+static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
+{
+    struct camera_args c;
+    ssg_params_defaults(kinds[SK_CAMERA].table, &c);
+    s->environment.intensity = 1.0f; /* color 0: no environment light unless one is given */
+    s->environment.image = -1;
+    for (int i = 0; i < l->count; i++) {
+        const struct scene_entity *e = &l->ents[i];
+        if (e->kind == SK_CAMERA) {
+            c = *(const struct camera_args *)e->args;
+            s->has_camera = 1;
+        } else if (e->kind == SK_ENVIRONMENT) {
+            const struct environment_args *env = e->args;
+            memcpy(s->environment.color, env->color, sizeof env->color);
+            s->environment.intensity = env->intensity;
+        }
+    }
+    memcpy(s->camera.position, c.position, sizeof c.position);
+    memcpy(s->camera.target, c.target, sizeof c.target);
+    memcpy(s->camera.up, c.up, sizeof c.up);
+    s->camera.fov_y = c.fov;
+    s->camera.near_z = c.near_z;
+    s->camera.far_z = c.far_z;
+}
+
+enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
+                            struct ssg_diags *diags)
+{
+    *out = NULL;
+    struct scene_loader l = {.diags = diags, .default_material = -1};
+    struct ssg_scene *s = calloc(1, sizeof *s);
+    if (!s)
+        return SSG_E_NOMEM;
+    snprintf(s->path, sizeof s->path, "%s", path);
+    l.scene = s;
+    if (read_scene(&l, path) == SSG_OK) {
+        scene_defaults(s, &l);
+        if (load_assets)
+            ssg_scene_build(&l);
+    }
+    ssg_arena_free(&l.arena);
+    if (l.first) {
+        ssg_scene_destroy(&s);
+        return l.first;
+    }
+    *out = s;
+    return SSG_OK;
+}
+
+void ssg_scene_destroy(struct ssg_scene **scene)
+{
+    if (!scene || !*scene)
+        return;
+    struct ssg_scene *s = *scene;
+    ssg_rt_destroy(&s->rt);
+    ssg_env_destroy(&s->env);
+    for (int i = 0; i < s->mesh_count; i++)
+        ssg_mesh_free(&s->meshes[i]);
+    for (int i = 0; i < s->texture_count; i++)
+        free(s->textures[i].rgb);
+    free(s->meshes);
+    free(s->textures);
+    free(s->materials);
+    free(s->lights);
+    free(s);
+    *scene = NULL;
+}
+
+void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16])
+{
+    const float *eye = camera->position;
+    float f[3], s[3], u[3];
+    for (int i = 0; i < 3; i++)
+        f[i] = camera->target[i] - eye[i];
+    float fl = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (int i = 0; i < 3; i++)
+        f[i] = fl > 0.0f ? f[i] / fl : (i == 2 ? -1.0f : 0.0f);
+    const float *up = camera->up;
+    const float alt[3] = {fabsf(f[1]) < 0.9f ? 0.0f : 1.0f, fabsf(f[1]) < 0.9f ? 1.0f : 0.0f, 0};
+    for (int attempt = 0; attempt < 2; attempt++, up = alt) {
+        s[0] = f[1] * up[2] - f[2] * up[1];
+        s[1] = f[2] * up[0] - f[0] * up[2];
+        s[2] = f[0] * up[1] - f[1] * up[0];
+        float sl = sqrtf(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        if (sl > 1e-8f) { /* else up is parallel to the view: retry with another axis */
+            s[0] /= sl, s[1] /= sl, s[2] /= sl;
+            break;
+        }
+    }
+    u[0] = s[1] * f[2] - s[2] * f[1];
+    u[1] = s[2] * f[0] - s[0] * f[2];
+    u[2] = s[0] * f[1] - s[1] * f[0];
+    /* rows: x = s, y = u, z = -f (the camera looks down -z) */
+    for (int i = 0; i < 3; i++) {
+        m[4 * i] = s[i];
+        m[4 * i + 1] = u[i];
+        m[4 * i + 2] = -f[i];
+        m[4 * i + 3] = 0.0f;
+    }
+    m[12] = -(s[0] * eye[0] + s[1] * eye[1] + s[2] * eye[2]);
+    m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
+    m[14] = f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2];
+    m[15] = 1.0f;
+}

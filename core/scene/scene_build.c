@@ -1,0 +1,417 @@
+/* scene_build.c - turns the validated entities of a scene file into a struct ssg_scene:
+ * materials and their textures, lights, the environment, tessellated primitives, glTF
+ * meshes placed by their transform, the camera, and finally the Embree scene.
+ *
+ * Textures: images come through ssg_image_read, which linearises files OpenImageIO reports
+ * as sRGB (8-bit PNG, JPEG) and leaves EXR/HDR as they are, so no colour conversion
+ * happens here; glTF base-colour textures are linearised by the glTF adapter. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/env.h"
+#include "scene/gltf.h"
+#include "scene/rt.h"
+#include "scene/scene_build.h"
+#include "scene/scene_shapes.h"
+
+/* The array, grown when needed to hold count + 1 items of `size` bytes; NULL (the
+ * array left as it was) when out of memory. */
+static void *reserve(struct scene_loader *l, void *array, int count, int *cap, size_t size)
+{
+    if (count < *cap)
+        return array;
+    int want = *cap ? 2 * *cap : 16;
+    void *p = realloc(array, (size_t)want * size);
+    if (!p) {
+        ssg_diag_at(l->diags, SSG_E_NOMEM, (struct ssg_loc){0}, "out of memory loading the scene");
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return NULL;
+    }
+    *cap = want;
+    return p;
+}
+
+static struct ssg_material *new_material(struct scene_loader *l, const char *name)
+{
+    struct ssg_scene *s = l->scene;
+    struct ssg_material *grown = reserve(l, s->materials, s->material_count, &l->material_cap,
+                                         sizeof *s->materials);
+    if (!grown)
+        return NULL;
+    s->materials = grown;
+    struct ssg_material *m = &s->materials[s->material_count++];
+    memset(m, 0, sizeof *m);
+    snprintf(m->name, sizeof m->name, "%s", name);
+    m->shininess = 32.0f;
+    m->texture = -1;
+    return m;
+}
+
+/* The white 0.8 material of everything that names none; made when first needed. */
+static int default_material(struct scene_loader *l)
+{
+    if (l->default_material < 0) {
+        struct ssg_material *m = new_material(l, "default");
+        if (!m)
+            return -1; /* l->first is set: the scene is discarded */
+        m->albedo[0] = m->albedo[1] = m->albedo[2] = 0.8f;
+        l->default_material = l->scene->material_count - 1;
+    }
+    return l->default_material;
+}
+
+/* Adds a texture; takes ownership of rgb. Returns its index or -1. */
+static int add_texture(struct scene_loader *l, int width, int height, float *rgb)
+{
+    struct ssg_scene *s = l->scene;
+    struct ssg_texture *grown = reserve(l, s->textures, s->texture_count, &l->texture_cap,
+                                        sizeof *s->textures);
+    if (!grown) {
+        free(rgb);
+        return -1;
+    }
+    s->textures = grown;
+    s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb};
+    return s->texture_count++;
+}
+
+/* A texture with a NaN or infinite pixel would put NaN into every image it shades: it is
+   refused with the file and the first such pixel. */
+static int texture_finite(struct scene_loader *l, const char *path, const struct ssg_image *im)
+{
+    size_t px = (size_t)im->width * (size_t)im->height;
+    for (int c = 0; c < im->channels; c++) {
+        const float *plane = ssg_image_plane(im, c);
+        for (size_t i = 0; i < px; i++) {
+            if (isfinite(plane[i]))
+                continue;
+            ssg_diag_file(l->diags, SSG_E_IMAGE, path, "pixel (%zu, %zu) channel %d is %s "
+                          "(expected finite colours)", i % (size_t)im->width,
+                          i / (size_t)im->width, c, isnan(plane[i]) ? "NaN" : "infinite");
+            ssg_scene_fail(l, SSG_E_IMAGE);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Reads an image file into an interleaved RGB texture; gray images fill all three. A
+   material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
+   which names its own rules. */
+static int load_texture(struct scene_loader *l, const char *rel, int finite_only)
+{
+    char path[1024];
+    struct ssg_image *im = NULL;
+    ssg_scene_path(l, rel, path, sizeof path);
+    enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
+    if (e) {
+        ssg_scene_fail(l, e);
+        return -1;
+    }
+    if (finite_only && !texture_finite(l, path, im)) {
+        ssg_image_destroy(&im);
+        return -1;
+    }
+    size_t px = (size_t)im->width * (size_t)im->height;
+    float *rgb = malloc(px * 3 * sizeof(float));
+    if (!rgb) {
+        ssg_image_destroy(&im);
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return -1;
+    }
+    for (int c = 0; c < 3; c++) {
+        const float *plane = ssg_image_plane(im, im->channels >= 3 ? c : 0);
+        for (size_t i = 0; i < px; i++)
+            rgb[3 * i + (size_t)c] = plane[i];
+    }
+    int width = im->width, height = im->height;
+    ssg_image_destroy(&im);
+    return add_texture(l, width, height, rgb);
+}
+
+static void build_material(struct scene_loader *l, int ent)
+{
+    const struct scene_entity *e = &l->ents[ent];
+    const struct material_args *a = e->args;
+    char name[SSG_NAME_MAX];
+    snprintf(name, sizeof name, "%.*s", (int)(e->stmt->name ? e->stmt->name_len : 0),
+             e->stmt->name ? e->stmt->name : "");
+    struct ssg_material *m = new_material(l, name);
+    if (!m)
+        return;
+    memcpy(m->albedo, a->albedo, sizeof m->albedo);
+    memcpy(m->specular, a->specular, sizeof m->specular);
+    m->shininess = a->shininess;
+    l->material_of[ent] = l->scene->material_count - 1;
+    if (a->texture[0])
+        m->texture = load_texture(l, a->texture, 1);
+}
+
+static void build_light(struct scene_loader *l, const struct scene_entity *e)
+{
+    const struct light_args *a = e->args;
+    struct ssg_light *li = &l->scene->lights[l->scene->light_count++];
+    memset(li, 0, sizeof *li);
+    li->kind = e->kind == SK_POINT_LIGHT ? SSG_LIGHT_POINT : SSG_LIGHT_DIRECTIONAL;
+    memcpy(li->position, a->position, sizeof li->position);
+    memcpy(li->color, a->color, sizeof li->color);
+    li->intensity = a->intensity;
+    float len = sqrtf(a->direction[0] * a->direction[0] + a->direction[1] * a->direction[1] +
+                      a->direction[2] * a->direction[2]);
+    for (int i = 0; i < 3 && len > 0.0f; i++)
+        li->direction[i] = a->direction[i] / len;
+}
+
+/* Appends a mesh (taking over its arrays); frees them when the scene cannot grow. */
+static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
+{
+    struct ssg_scene *s = l->scene;
+    struct ssg_mesh *grown = reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
+    if (!grown) {
+        ssg_mesh_free(mesh);
+        return;
+    }
+    s->meshes = grown;
+    s->meshes[s->mesh_count++] = *mesh;
+}
+
+static int material_for(struct scene_loader *l, const struct scene_entity *e)
+{
+    return e->material >= 0 ? l->material_of[e->material] : default_material(l);
+}
+
+/* 0 with a message at `at` when `more` triangles would take the scene past its limit. */
+static int triangles_fit(struct scene_loader *l, struct ssg_loc at, long long more,
+                         const char *what)
+{
+    if (l->triangles + more <= SSG_SCENE_MAX_TRIANGLES) {
+        l->triangles += more;
+        return 1;
+    }
+    ssg_diag_at(l->diags, SSG_E_SIZE, at, "%s has %lld triangles, which takes the scene past "
+                "its limit of %lld (expected fewer subdivisions or a lighter model)", what,
+                more, SSG_SCENE_MAX_TRIANGLES);
+    ssg_scene_fail(l, SSG_E_SIZE);
+    return 0;
+}
+
+static void build_shape(struct scene_loader *l, const struct scene_entity *e)
+{
+    const struct shape_args *a = e->args;
+    struct ssg_mesh mesh;
+    enum ssg_err err;
+    long long tris = e->kind == SK_SPHERE ? 4LL * a->subdivisions * (a->subdivisions - 1) : 12;
+    if (!triangles_fit(l, e->stmt->callee_loc, tris, "this shape"))
+        return;
+    if (e->kind == SK_PLANE)
+        err = ssg_shape_plane(a->center, a->size, a->normal, &mesh);
+    else if (e->kind == SK_BOX)
+        err = ssg_shape_box(a->center, a->size, a->rotate, &mesh);
+    else
+        err = ssg_shape_sphere(a->center, a->radius, a->subdivisions, &mesh);
+    if (err) {
+        ssg_diag_at(l->diags, err, e->stmt->callee_loc, "out of memory tessellating '%.*s'",
+                    (int)e->stmt->callee_len, e->stmt->callee);
+        ssg_scene_fail(l, err);
+        return;
+    }
+    mesh.material = material_for(l, e);
+    add_mesh(l, &mesh);
+}
+
+/* Brings the glTF's materials and textures into the scene; returns the scene index of its
+ * material 0 (materials keep their order). */
+static int import_gltf_materials(struct scene_loader *l, struct ssg_gltf *g, const char *file)
+{
+    int first_texture = l->scene->texture_count, first = l->scene->material_count;
+    for (int i = 0; i < g->texture_count; i++) {
+        add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb);
+        g->textures[i].rgb = NULL; /* now the scene's */
+    }
+    for (int i = 0; i < g->material_count; i++) {
+        const struct ssg_gltf_material *gm = &g->materials[i];
+        char name[SSG_NAME_MAX];
+        snprintf(name, sizeof name, "%.63s", gm->name[0] ? gm->name : file);
+        struct ssg_material *m = new_material(l, name);
+        if (!m)
+            return first;
+        memcpy(m->albedo, gm->base_color, sizeof m->albedo);
+        m->texture = gm->texture >= 0 ? first_texture + gm->texture : -1;
+    }
+    return first;
+}
+
+static void place_camera(struct ssg_camera *c, const struct mesh_args *a)
+{
+    float r[9];
+    ssg_euler_matrix(a->rotate, r);
+    float *pts[2] = {c->position, c->target};
+    for (int k = 0; k < 2; k++) {
+        float p[3] = {pts[k][0] * a->scale[0], pts[k][1] * a->scale[1], pts[k][2] * a->scale[2]};
+        for (int i = 0; i < 3; i++)
+            pts[k][i] = r[3 * i] * p[0] + r[3 * i + 1] * p[1] + r[3 * i + 2] * p[2];
+        for (int i = 0; i < 3; i++)
+            pts[k][i] += a->translate[i];
+    }
+    float u[3] = {c->up[0], c->up[1], c->up[2]};
+    for (int i = 0; i < 3; i++)
+        c->up[i] = r[3 * i] * u[0] + r[3 * i + 1] * u[1] + r[3 * i + 2] * u[2];
+}
+
+/* Placed vertices must be finite and within +-SSG_PARAM_ABS_MAX, like every coordinate
+   a scene file may write: past that, ray tracing and projection overflow. */
+static int vertices_in_range(struct scene_loader *l, const struct scene_entity *e,
+                             const struct ssg_mesh *m, int index)
+{
+    const struct mesh_args *a = e->args;
+    for (size_t i = 0; i < 3 * (size_t)m->vertex_count; i++) {
+        if (fabsf(m->positions[i]) <= SSG_PARAM_ABS_MAX)
+            continue;
+        ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: primitive %d vertex %zu is at "
+                    "(%g, %g, %g) after translate, rotate and scale (expected finite "
+                    "coordinates within +-%g)", a->file, index, i / 3,
+                    (double)m->positions[i - i % 3], (double)m->positions[i - i % 3 + 1],
+                    (double)m->positions[i - i % 3 + 2], SSG_PARAM_ABS_MAX);
+        ssg_scene_fail(l, SSG_E_VALUE);
+        return 0;
+    }
+    return 1;
+}
+
+static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int *camera_set)
+{
+    const struct mesh_args *a = e->args;
+    char path[1024], why[768];
+    struct ssg_gltf *g = NULL;
+    ssg_scene_path(l, a->file, path, sizeof path);
+    enum ssg_err err = ssg_gltf_load(path, &g, why, sizeof why);
+    if (err) {
+        ssg_diag_at(l->diags, err, e->at[0], "%s", why);
+        ssg_scene_fail(l, err);
+        return;
+    }
+    long long tris = 0;
+    for (int i = 0; i < g->mesh_count; i++)
+        tris += g->meshes[i].triangle_count;
+    if (!triangles_fit(l, e->at[0], tris, a->file)) {
+        ssg_gltf_destroy(&g);
+        return;
+    }
+    int first = e->material < 0 ? import_gltf_materials(l, g, a->file) : 0;
+    for (int i = 0; i < g->mesh_count && !l->first; i++) {
+        struct ssg_mesh mesh = g->meshes[i];
+        memset(&g->meshes[i], 0, sizeof g->meshes[i]); /* the arrays are now ours */
+        ssg_mesh_place(&mesh, a->translate, a->rotate, a->scale);
+        if (!vertices_in_range(l, e, &mesh, i)) {
+            ssg_mesh_free(&mesh);
+            break;
+        }
+        if (e->material >= 0)
+            mesh.material = l->material_of[e->material];
+        else
+            mesh.material = mesh.material >= 0 ? first + mesh.material : default_material(l);
+        add_mesh(l, &mesh);
+    }
+    if (g->has_camera && !*camera_set && !l->first) {
+        l->scene->camera = g->camera;
+        place_camera(&l->scene->camera, a);
+        *camera_set = 1;
+        const struct ssg_camera *c = &l->scene->camera;
+        for (int i = 0; i < 3; i++) {
+            if (fabsf(c->position[i]) <= SSG_PARAM_ABS_MAX &&
+                fabsf(c->target[i]) <= SSG_PARAM_ABS_MAX)
+                continue;
+            ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: its camera is at (%g, %g, %g) "
+                        "(expected finite coordinates within +-%g)", a->file,
+                        (double)c->position[0], (double)c->position[1],
+                        (double)c->position[2], SSG_PARAM_ABS_MAX);
+            ssg_scene_fail(l, SSG_E_VALUE);
+            break;
+        }
+    }
+    ssg_gltf_destroy(&g);
+}
+
+/* No camera anywhere: look at the middle of the scene's bounds from the front (+z),
+ * slightly above, far enough for the bounding sphere to fit the 45-degree view. */
+static void default_camera(struct ssg_scene *s)
+{
+    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+    for (int i = 0; i < s->mesh_count; i++)
+        ssg_mesh_bounds(&s->meshes[i], lo, hi);
+    if (!(lo[0] <= hi[0]))
+        return; /* nothing to look at: keep the camera table's defaults */
+    float c[3], r = 0.0f;
+    for (int i = 0; i < 3; i++) {
+        c[i] = 0.5f * (lo[i] + hi[i]);
+        r += 0.25f * (hi[i] - lo[i]) * (hi[i] - lo[i]);
+    }
+    r = fmaxf(sqrtf(r), 1e-3f);
+    float dist = 1.1f * r / sinf(0.5f * SSG_DEFAULT_FOV_Y * 3.14159265f / 180.0f);
+    const float dir[3] = {0.0f, 0.24253563f, 0.97014250f}; /* (0, 1, 4) normalised */
+    for (int i = 0; i < 3; i++) {
+        s->camera.position[i] = c[i] + dist * dir[i];
+        s->camera.target[i] = c[i];
+        s->camera.up[i] = i == 1 ? 1.0f : 0.0f;
+    }
+    s->camera.fov_y = SSG_DEFAULT_FOV_Y;
+    s->camera.near_z = fmaxf(0.01f * dist, dist - 1.5f * r);
+    s->camera.far_z = dist + 2.0f * r;
+}
+
+static void build_geometry(struct scene_loader *l, int *camera_set)
+{
+    for (int i = 0; i < l->count && !l->first; i++) {
+        const struct scene_entity *e = &l->ents[i];
+        if (e->kind == SK_PLANE || e->kind == SK_BOX || e->kind == SK_SPHERE)
+            build_shape(l, e);
+        else if (e->kind == SK_MESH)
+            build_mesh(l, e, camera_set);
+    }
+}
+
+static void build_environment(struct scene_loader *l)
+{
+    char path[1024] = "";
+    for (int i = 0; i < l->count; i++) {
+        const struct environment_args *a = l->ents[i].args;
+        if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
+            l->scene->environment.image = load_texture(l, a->image, 0);
+            ssg_scene_path(l, a->image, path, sizeof path);
+        }
+    }
+    if (l->first)
+        return;
+    enum ssg_err e = ssg_env_build(l->scene, path, &l->scene->env, l->diags);
+    if (e)
+        ssg_scene_fail(l, e);
+}
+
+void ssg_scene_build(struct scene_loader *l)
+{
+    struct ssg_scene *s = l->scene;
+    l->material_of = ssg_arena_alloc(&l->arena, sizeof(int) * (size_t)(l->count + 1));
+    s->lights = calloc((size_t)l->count + 1, sizeof *s->lights);
+    if (!l->material_of || !s->lights) {
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return;
+    }
+    for (int i = 0; i < l->count; i++) {
+        if (l->ents[i].kind == SK_MATERIAL)
+            build_material(l, i);
+        else if (l->ents[i].kind == SK_POINT_LIGHT || l->ents[i].kind == SK_DIRECTIONAL_LIGHT)
+            build_light(l, &l->ents[i]);
+    }
+    build_environment(l);
+    int camera_set = s->has_camera;
+    build_geometry(l, &camera_set);
+    if (l->first)
+        return;
+    if (!camera_set)
+        default_camera(s);
+    s->has_camera = camera_set;
+    enum ssg_err e = ssg_rt_build(s, &s->rt, l->diags);
+    if (e)
+        ssg_scene_fail(l, e);
+}

@@ -1,0 +1,100 @@
+/* scene_build.h - private to the scene loader: what scene.c makes of a scene file (one
+ * validated entity per statement, with its arguments bound through the entity kind's
+ * parameter table) and what scene_build.c turns into a struct ssg_scene.
+ *
+ * The loader and everything it points at live in its arena; the scene it fills owns its
+ * own malloc'd arrays. One loader per call of ssg_scene_load; not shared. */
+#ifndef SSG_SCENE_BUILD_H
+#define SSG_SCENE_BUILD_H
+
+#include "lang/arena.h"
+#include "lang/params.h"
+#include "lang/parse.h"
+#include "scene/scene.h"
+
+enum scene_kind {
+    SK_CAMERA,
+    SK_MATERIAL,
+    SK_POINT_LIGHT,
+    SK_DIRECTIONAL_LIGHT,
+    SK_ENVIRONMENT,
+    SK_PLANE,
+    SK_BOX,
+    SK_SPHERE,
+    SK_MESH,
+    SK_COUNT
+};
+
+/* The arguments of each kind, as its parameter table (scene.c) fills them. */
+struct camera_args {
+    float position[3], target[3], up[3]; /* world, scene units */
+    float fov;                           /* vertical, degrees */
+    float near_z, far_z;                 /* scene units */
+};
+struct material_args {
+    float albedo[3], specular[3]; /* linear reflectances */
+    float shininess;              /* Blinn-Phong exponent */
+    char texture[SSG_STR_MAX];    /* albedo texture path, "" = none */
+};
+struct light_args {
+    float position[3];  /* point light, world */
+    float direction[3]; /* directional light: the way the light travels */
+    float color[3];
+    float intensity;
+};
+struct environment_args {
+    float color[3];
+    float intensity;
+    char image[SSG_STR_MAX]; /* lat-long HDR path, "" = none */
+};
+struct shape_args {
+    char material[SSG_NAME_MAX]; /* "" = the default material */
+    float center[3], size[3], normal[3], rotate[3];
+    float radius;
+    int subdivisions;
+};
+struct mesh_args {
+    char file[SSG_STR_MAX];
+    char material[SSG_NAME_MAX]; /* "" = the glTF file's own materials */
+    float translate[3], rotate[3], scale[3];
+};
+
+#define SCENE_MAX_ARGS 8
+
+/* One statement of the scene file. */
+struct scene_entity {
+    enum scene_kind kind;
+    const struct ssg_stmt *stmt;
+    void *args;                       /* one of the *_args structs above */
+    struct ssg_loc at[SCENE_MAX_ARGS]; /* where argument i was written; src NULL = default */
+    int material;                     /* shapes, meshes: entity index of the named material,
+                                         -1 = none named */
+};
+
+struct scene_loader {
+    struct ssg_arena arena;
+    struct ssg_diags *diags;
+    enum ssg_err first;             /* first error reported, SSG_OK while none */
+    const char *path;               /* the scene file, for resolving relative paths */
+    struct scene_entity *ents;
+    int count;
+    struct ssg_scene *scene;        /* being filled by scene_build.c */
+    int mesh_cap, material_cap, texture_cap;
+    int default_material;           /* index in scene->materials, -1 until first needed */
+    int *material_of;               /* entity index -> scene material index */
+    long long triangles;            /* in the scene so far, against SSG_SCENE_MAX_TRIANGLES */
+};
+
+/* At most this many triangles in one scene (about 150 bytes each with the ray-tracing
+ * structure: 2.4 GB), checked before a shape is tessellated and as each glTF is added. */
+#define SSG_SCENE_MAX_TRIANGLES (16LL << 20)
+
+/* Records e as the loader's result if it is the first error. */
+void ssg_scene_fail(struct scene_loader *l, enum ssg_err e);
+/* Resolves a path written in the scene file against the scene file's directory. */
+void ssg_scene_path(const struct scene_loader *l, const char *rel, char *out, size_t len);
+/* Loads textures, tessellates shapes, reads glTF files, picks the camera and builds the
+ * Embree scene, for entities scene.c has validated. Problems go to l->diags. */
+void ssg_scene_build(struct scene_loader *l);
+
+#endif

@@ -1,0 +1,104 @@
+/* gl_raster.h - a loaded scene on the GL backend: its meshes, materials and textures in
+ * storage buffers that compute passes read, and the one drawing ssgraph does, rasterising
+ * the scene's triangles with a depth test into an image's layers. Nodes that need the
+ * scene on GL (gbuffer) use this instead of GL; everything else is compute (core/gl/gl.h).
+ *
+ * The usual use is a visibility buffer (Burns and Hunt, "The Visibility Buffer: A
+ * Cache-Friendly Approach to Deferred Shading", JCGT 2(2), 2013): the rasteriser finds
+ * the nearest triangle at each pixel centre and writes only its mesh and triangle index;
+ * a compute pass then intersects the pixel's ray with that triangle and reads everything
+ * else from the buffers below, so its attributes come from the same formulas the CPU's
+ * ray caster uses.
+ *
+ * Storage buffers (std430), bound by ssg_gl_scene_bind at SSG_GL_SCENE_BINDING + i:
+ *   +0 float vdata[]: every mesh's positions (xyz), normals (xyz) and uvs (uv, only where
+ *      its material has a texture) as in the scene, at the offsets its Mesh record gives
+ *   +1 uint index[]: every mesh's indices (3 per triangle, the mesh's own vertex numbers)
+ *   +2 float texel[]: the textures materials use, linear RGB interleaved, row 0 at the top
+ *   +3 Mesh mesh[]: struct ssg_gl_mesh below, one per scene mesh, in scene order
+ *   +4 Material material[]: struct ssg_gl_material below, in scene order
+ * A shader declares them with the same fields, e.g.
+ *   struct Mesh { int positions; int normals; int uvs; int indices; int material; };
+ *   layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
+ * core/gl/gl.h's ssg_gl_buffer bindings from SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS on
+ * stay free for the node's own data.
+ *
+ * An uploaded scene is the caller's until ssg_gl_scene_free; it is uploaded per run (a
+ * memcpy-speed copy from the scene's arrays), so it never outlives the scene it came from.
+ * Call on the executor's thread with the GL lock held (gl_backend.h), like all GL code. */
+#ifndef SSG_GL_RASTER_H
+#define SSG_GL_RASTER_H
+
+#include <stdint.h>
+
+#include "graph/node.h"
+
+enum { SSG_GL_SCENE_BINDING = 0, SSG_GL_SCENE_BUFFERS = 5 };
+
+/* One mesh on GL: float offsets into vdata (uvs -1 = none, or no texture to look up), the
+ * offset of its first index in index[], and its material. */
+struct ssg_gl_mesh {
+    int32_t positions, normals, uvs, indices, material;
+};
+
+/* One material on GL (scene.h's fields); texels is the float offset of its texture in
+ * texel[], -1 = none, width and height its size in texels. */
+struct ssg_gl_material {
+    float albedo[3];
+    float specular[3];
+    float shininess;
+    int32_t texels, width, height;
+};
+
+/* The camera the scene is drawn from: the pose of ssg_camera_frame (view = rot * (world -
+ * eye), rot row-major), the frame's projection (node.h) and its visible depth range. */
+struct ssg_gl_camera {
+    const float *rot;            /* 9 floats */
+    const float *eye;            /* 3 floats */
+    struct ssg_projection proj;  /* f, cx, cy in pixels of the target */
+    float near_z, far_z;         /* scene units; nearer and farther surfaces are clipped */
+};
+
+struct ssg_scene;
+struct ssg_gl_scene;
+
+/* Uploads the scene's meshes, materials and the textures they use. SSG_E_NOMEM or
+ * SSG_E_BACKEND (reported as the node's error) when they do not fit the GL limits. */
+enum ssg_err ssg_gl_scene_upload(const struct ssg_node_ctx *ctx, const struct ssg_scene *scene,
+                                 struct ssg_gl_scene **out);
+
+/* Binds the buffers above for the compute passes that follow. */
+void ssg_gl_scene_bind(const struct ssg_gl_scene *scene);
+
+/* Clears `target` (a frame-sized image, one colour attachment per layer, at most 8) to 0
+ * and draws every mesh with the raster program of `shader` (its SSG_VERTEX and
+ * SSG_FRAGMENT halves, gl_fn.h) and a depth test, nearest surface wins, no culling: the
+ * rasteriser samples at pixel centres (x + 0.5, y + 0.5) and the projection is flipped so
+ * row 0 is the top, as everywhere in ssgraph. The program gets
+ *   layout(location = 0) in vec3 ssg_position;   world position
+ *   uniform mat4 ssg_world_to_clip;              the camera's projection
+ *   uniform int ssg_mesh;                        index of the mesh being drawn
+ * and writes `layout(location = i) out float` for layer i. */
+enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *scene,
+                               const char *shader, const struct ssg_gl_camera *camera,
+                               struct ssg_image *target);
+
+/* A raster pass whose uniforms the node sets with core/gl/gl.h's calls (ssg_gl_input,
+ * ssg_gl_float, ...) before ssg_gl_scene_draw_layers: compiles (or finds) the program of
+ * `shader`'s SSG_VERTEX and SSG_FRAGMENT halves. Errors are sticky as in gl.h. */
+struct ssg_gl_pass;
+enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                                 const char *shader);
+
+/* Draws every mesh once per layer of `target` (any number of layers, each its own draw):
+ * layer i is cleared to `clear` and a depth buffer of the target's size to 1, the program
+ * gets `uniform int ssg_layer` = i and `layout(location = 0) in vec3 ssg_position` (world)
+ * and makes gl_Position itself (the layer's own projection; NDC x, y in [-1, 1] cover the
+ * image with texel row 0 at y = -1); the nearest fragment's `layout(location = 0) out
+ * float` is kept (depth test LESS, no culling). Shadow maps are drawn this way. */
+enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+                                      struct ssg_image *target, float clear);
+
+void ssg_gl_scene_free(struct ssg_gl_scene **scene);
+
+#endif
