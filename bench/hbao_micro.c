@@ -21,6 +21,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "graph/exec.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -67,10 +68,14 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    struct ssg_node_ctx ctx = {"h", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.desc = d, .instance = "h", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *in[5] = {pos, nrm, hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
-    struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};
+    struct ssg_io io = {.in = in, .out = outs};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(d, &io, &shapes);
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     if (d->prepare(&ctx, params, consts) != SSG_OK) {
         ssg_diags_print(&diags, stderr);
         return 1;

@@ -19,6 +19,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "graph/exec.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -61,10 +62,14 @@ int main(int argc, char **argv)
             ssg_diags_print(&diags, stderr);
             return 2;
         }
-    struct ssg_node_ctx ctx = {"ao", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.desc = d, .instance = "ao", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *in[6] = {pos, nrm, hal.images[0], hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
-    struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};
+    struct ssg_io io = {.in = in, .out = outs};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(d, &io, &shapes);
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     if (d->prepare(&ctx, params, consts) != SSG_OK)
         return 1;
 

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "graph/exec.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -93,11 +94,15 @@ static int time_one(const struct inputs *in, int k, int bounce, int runs, int ar
         }
     struct ssg_image *out = ssg_image_create(in->w, in->h, 1);
     struct ssg_image *bo = ssg_image_create(in->w, in->h, 3);
-    struct ssg_node_ctx ctx = {"ssdo", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.desc = d, .instance = "ssdo", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *ins[8] = {in->pos, in->nrm, hal.images[0], hal.images[1], NULL,
                                       in->alb, in->light};
     struct ssg_image *outs[2] = {out, bo};
-    struct ssg_io io = {ins, outs, 0, NULL, NULL, NULL};
+    struct ssg_io io = {.in = ins, .out = outs};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(d, &io, &shapes);
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     if (d->prepare(&ctx, params, consts) != SSG_OK || d->run_cpu(&ctx, consts, &io)) {
         ssg_diags_print(&diags, stderr);
         return 1;

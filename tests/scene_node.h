@@ -95,8 +95,12 @@ static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
                                           enum ssg_backend backend)
 {
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {desc->name, frame, scene, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,
+                               .scene = scene, .out_dir = ".", .diags = &d};
     struct ssg_io io = {.in = in, .out = out};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(desc, &io, &shapes);
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     struct ssg_node_timing t;
     enum ssg_err e = backend == SSG_BACKEND_GL ? ssg_gl_open(&d) : SSG_OK;
     if (!e)

@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "graph/exec.h"
 #include "graph/node.h"
 #include "scene/scene.h"
 
@@ -76,10 +77,13 @@ static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc, const 
                                  const struct ssg_image *const *in, struct ssg_image **out)
 {
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {.instance = desc->name, .frame = frame, .scene = s,
-                               .out_dir = ".", .diags = &d};
+    struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,
+                               .scene = s, .out_dir = ".", .diags = &d};
     void *c = calloc(1, desc->consts_size);
     struct ssg_io io = {.in = in, .out = out};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(desc, &io, &shapes);
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     enum ssg_err e = c ? desc->prepare(&ctx, params, c) : SSG_E_NOMEM;
     if (!e)
         e = desc->run_cpu(&ctx, c, &io);

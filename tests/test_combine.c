@@ -8,6 +8,8 @@
 
 #include "check.h"
 #include "combine/combine.h"
+#include "graph/exec.h"
+#include "lang/diag.h"
 
 extern const struct ssg_node_desc ssg_node_combine;
 
@@ -36,14 +38,27 @@ static void run_init(struct run *r, int w, int h)
     memset(r, 0, sizeof *r);
     r->frame = (struct ssg_frame){.width = w, .height = h, .fov_y = 45, .near_z = 0.05f,
                                   .far_z = 100, .seed = 1};
-    r->ctx = (struct ssg_node_ctx){.instance = "img", .frame = &r->frame, .diags = &r->diags};
+    r->ctx = (struct ssg_node_ctx){.desc = &ssg_node_combine, .instance = "img", .frame = &r->frame, .diags = &r->diags};
     r->out[0] = ssg_image_create(w, h, 3);
     r->io = (struct ssg_io){.in = r->in, .out = r->out};
 }
 
+/* As the executor runs it: shapes read off the bound images and checked by check(), then
+   the images verified against them and the kernel run. */
 static enum ssg_err run_combine(struct run *r, const struct ssg_combine_params *p)
 {
-    return ssg_node_combine.run_cpu(&r->ctx, p, &r->io);
+    static struct ssg_io_shapes s;
+    char why[256];
+    ssg_io_shapes_of(&ssg_node_combine, &r->io, &s);
+    enum ssg_err e = ssg_shapes_infer(&ssg_node_combine, p, &r->frame, s.in, s.out, why,
+                                      sizeof why);
+    if (e) {
+        ssg_diag_at(&r->diags, e, (struct ssg_loc){0}, "%s", why);
+        return e;
+    }
+    ssg_node_ctx_set_shapes(&r->ctx, &s);
+    struct ssg_node_timing t;
+    return ssg_node_execute(&ssg_node_combine, &r->ctx, p, &r->io, SSG_BACKEND_CPU, &t);
 }
 
 static void test_descriptor(void)

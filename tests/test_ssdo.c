@@ -27,6 +27,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "graph/exec.h"
 #include "graph/node.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
@@ -337,7 +338,8 @@ static void light_run(double lz, double m[2])
     if (!sc)
         return;
     struct ssg_frame fr = {SW, SH, sc->camera.fov_y, sc->camera.near_z, sc->camera.far_z, 1};
-    struct ssg_node_ctx ctx = {"s", &fr, sc, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.desc = &ssg_node_gbuffer, .instance = "s", .frame = &fr,
+                               .scene = sc, .out_dir = ".", .diags = &d};
     static const int gch[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_image *gb[6], *out[2] = {ssg_image_create(SW, SH, 1), ssg_image_create(SW, SH, 3)};
     for (int i = 0; i < 6; i++)
@@ -356,6 +358,10 @@ static void light_run(double lz, double m[2])
     ssg_params_defaults(ssg_node_ssdo.params, sp);
     const struct ssg_image *in[8] = {gb[0], gb[1], hal.images[0], NULL, gb[2], gb[3], gb[4], NULL};
     struct ssg_io io = {.in = in, .out = out};
+    struct ssg_io_shapes shapes;
+    ssg_io_shapes_of(&ssg_node_ssdo, &io, &shapes);
+    ctx.desc = &ssg_node_ssdo;
+    ssg_node_ctx_set_shapes(&ctx, &shapes);
     CHECK_EQ(ssg_node_ssdo.prepare(&ctx, sp, sc_), SSG_OK);
     CHECK_EQ(ssg_node_ssdo.run_cpu(&ctx, sc_, &io), SSG_OK);
     /* project the two floor points with the scene camera */

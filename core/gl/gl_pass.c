@@ -155,7 +155,7 @@ void ssg_gl_buffer(struct ssg_gl_pass *pass, int binding, const void *data, size
     if (!usable(pass))
         return;
     if (binding < 0 || binding >= MAX_BUFFERS) {
-        pass->err = ssg_node_fail(pass->ctx, SSG_E_BACKEND, "gl", "storage buffer binding "
+        pass->err = ssg_node_fail(pass->ctx, SSG_E_BACKEND, "storage buffer binding "
                                   "out of range (0 to 7)");
         return;
     }
@@ -200,8 +200,7 @@ enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass)
         char what[160];
         snprintf(what, sizeof what, "GL error 0x%04x in a pass of %s", (unsigned)e,
                  pass->shader ? pass->shader : "?");
-        pass->err = ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND,
-                                  "gl", what);
+        pass->err = ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND, what);
     }
     return pass->err;
 }

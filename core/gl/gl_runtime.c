@@ -221,7 +221,7 @@ struct ssg_image *ssg_gl_scratch(const struct ssg_node_ctx *ctx, int width, int 
     if (!s || gl_failure(ctx->diags, "creating a scratch image")) {
         if (s)
             ssg_image_destroy(&s);
-        ssg_node_fail(ctx, SSG_E_NOMEM, "gl", "out of memory for a scratch image");
+        ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for a scratch image");
         return NULL;
     }
     s->gpu->cpu_valid = 0;

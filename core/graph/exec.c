@@ -1,4 +1,5 @@
 /* exec.c - output shapes and the timed execution of one node (exec.h). */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,11 +10,16 @@
 #include "graph/image.h"
 #include "lang/parse.h"
 
-enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
-                           const char *what)
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *fmt,
+                           ...)
 {
-    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "%s '%s': %s", node,
-                ctx->instance ? ctx->instance : "", what);
+    char what[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "%s '%s': %s",
+                ctx->desc ? ctx->desc->name : "node", ctx->instance ? ctx->instance : "", what);
     return code;
 }
 
@@ -22,24 +28,6 @@ double ssg_now_ms(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
-}
-
-enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
-                                      const struct ssg_shape *rotation,
-                                      const struct ssg_shape *depth, char *why, size_t why_len)
-{
-    if (rotation->channels != 0 &&
-        (rotation->channels != 2 || rotation->width != rotation->height)) {
-        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
-                 "%dx%dx%d", rotation->width, rotation->height, rotation->channels);
-        return SSG_E_CHANNELS;
-    }
-    if (depth->channels != 0 &&
-        (depth->channels != 1 || !ssg_shape_same_size(depth, position))) {
-        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
-    return SSG_OK;
 }
 
 static void default_shape(const struct ssg_node_desc *desc, int port,
@@ -149,6 +137,101 @@ enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg
     return desc->prepare ? desc->prepare(ctx, params, *consts) : SSG_OK;
 }
 
+/* "96x64 with 3 channels", or "unconnected". */
+static void shape_text(int width, int height, int channels, char *buf, size_t len)
+{
+    if (channels == 0)
+        snprintf(buf, len, "unconnected");
+    else
+        snprintf(buf, len, "%dx%d with %d channel%s", width, height, channels,
+                 channels == 1 ? "" : "s");
+}
+
+/* One bound image against the shape it was checked with; SSG_OK or a reported error. */
+static enum ssg_err verify_one(const struct ssg_node_ctx *ctx, const char *side,
+                               const char *port, const struct ssg_image *im,
+                               const struct ssg_shape *want)
+{
+    int w = im ? im->width : 0, h = im ? im->height : 0, c = im ? im->channels : 0;
+    if (w == want->width && h == want->height && c == want->channels)
+        return SSG_OK;
+    if (!im && want->channels == 0)
+        return SSG_OK;
+    char got[64], expected[64];
+    shape_text(w, h, c, got, sizeof got);
+    shape_text(want->width, want->height, want->channels, expected, sizeof expected);
+    enum ssg_err code = c != want->channels ? SSG_E_CHANNELS : SSG_E_SIZE;
+    ssg_diag_at(ctx->diags, code, (struct ssg_loc){0}, "node '%s' (%s): %s '%s' is %s, "
+                "expected %s (the shape the graph was checked with)",
+                ctx->instance ? ctx->instance : "", ctx->desc->name, side, port,
+                im ? got : "missing", expected);
+    return code;
+}
+
+/* A bound input's type must be one its port accepts (a graph types every edge; shapes
+   read off hand-bound images carry type 0 when the channels fit none). */
+static enum ssg_err verify_type(const struct ssg_node_ctx *ctx, const struct ssg_port_desc *port,
+                                const struct ssg_shape *shape)
+{
+    if (shape->type & port->types)
+        return SSG_OK;
+    char want[64];
+    ssg_type_names(port->types, want, sizeof want);
+    ssg_diag_at(ctx->diags, SSG_E_CHANNELS, (struct ssg_loc){0}, "node '%s' (%s): input '%s' "
+                "has %d channels, which fits none of its types (%s)",
+                ctx->instance ? ctx->instance : "", ctx->desc->name, port->name,
+                shape->channels, want);
+    return SSG_E_CHANNELS;
+}
+
+enum ssg_err ssg_node_verify_io(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
+{
+    const struct ssg_node_desc *d = ctx->desc;
+    if (!ctx->in_shape || !ctx->out_shape || (io->extra_count && !ctx->extra_shape)) {
+        ssg_diag_at(ctx->diags, SSG_E_RUN, (struct ssg_loc){0}, "node '%s' (%s): run "
+                    "without the shapes it was checked with", ctx->instance, d->name);
+        return SSG_E_RUN;
+    }
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < d->input_count && !e; i++) {
+        e = verify_one(ctx, "input", d->inputs[i].name, io->in[i], &ctx->in_shape[i]);
+        if (!e && io->in[i])
+            e = verify_type(ctx, &d->inputs[i], &ctx->in_shape[i]);
+    }
+    for (int i = 0; i < d->output_count && !e; i++)
+        e = verify_one(ctx, "output", d->outputs[i].name, io->out[i], &ctx->out_shape[i]);
+    for (int i = 0; i < io->extra_count && !e; i++)
+        e = verify_one(ctx, "input", io->extra_names[i], io->extra_in[i], &ctx->extra_shape[i]);
+    return e;
+}
+
+void ssg_io_shapes_of(const struct ssg_node_desc *desc, const struct ssg_io *io,
+                      struct ssg_io_shapes *s)
+{
+    memset(s, 0, sizeof *s);
+    for (int i = 0; i < desc->input_count; i++)
+        if (io->in[i])
+            s->in[i] = ssg_shape_of_image(io->in[i], desc->inputs[i].types);
+    for (int i = 0; i < desc->output_count; i++)
+        if (io->out[i])
+            s->out[i] = ssg_shape_of_image(io->out[i], desc->outputs[i].types);
+    for (int i = 0; i < io->extra_count && i < SSG_MAX_EXTRA; i++)
+        s->extra[i] = ssg_shape_of_image(io->extra_in[i], SSG_T_IMAGE);
+}
+
+void ssg_node_ctx_set_shapes(struct ssg_node_ctx *ctx, const struct ssg_io_shapes *s)
+{
+    ctx->in_shape = s->in;
+    ctx->out_shape = s->out;
+    ctx->extra_shape = s->extra;
+}
+
+struct ssg_shape ssg_shape_of_image(const struct ssg_image *image, unsigned accepted)
+{
+    unsigned type = ssg_type_of_image(accepted, image);
+    return (struct ssg_shape){image->width, image->height, image->channels, type};
+}
+
 enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
                                    const struct ssg_node_ctx *ctx, const void *params,
                                    const void *consts, const struct ssg_io *io,
@@ -157,7 +240,9 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
     double t0 = ssg_now_ms();
     *timing = (struct ssg_node_timing){0};
     int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
-    enum ssg_err e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
+    enum ssg_err e = ssg_node_verify_io(ctx, io);
+    if (!e)
+        e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
     timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
     return e;
 }

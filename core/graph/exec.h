@@ -51,6 +51,25 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
                                    const void *consts, const struct ssg_io *io,
                                    enum ssg_backend backend, struct ssg_node_timing *timing);
 
+/* Verifies every image bound in io against the shapes in ctx (in_shape, out_shape,
+ * extra_shape): same width, height and channels, unconnected where the shape has none.
+ * On a difference reports "node 'ao' (ssao): input 'depth' is 48x32 with 1 channel,
+ * expected 96x64 with 1 channel (...)" and returns SSG_E_SIZE or SSG_E_CHANNELS. Called by
+ * ssg_node_run_prepared before every run, so no node checks its own images. */
+enum ssg_err ssg_node_verify_io(const struct ssg_node_ctx *ctx, const struct ssg_io *io);
+
+/* The shapes of images bound by hand (tests, micro-benchmarks, ssg_node_run), for a ctx:
+ * ssg_io_shapes_of reads them off the images, ssg_node_ctx_set_shapes points ctx at them
+ * (s must outlive the runs). */
+struct ssg_io_shapes {
+    struct ssg_shape in[SSG_MAX_PORTS], out[SSG_MAX_PORTS], extra[SSG_MAX_EXTRA];
+};
+void ssg_io_shapes_of(const struct ssg_node_desc *desc, const struct ssg_io *io,
+                      struct ssg_io_shapes *s);
+void ssg_node_ctx_set_shapes(struct ssg_node_ctx *ctx, const struct ssg_io_shapes *s);
+/* An image's shape with its type among `accepted` (ssg_type_of_image; 0 when none). */
+struct ssg_shape ssg_shape_of_image(const struct ssg_image *image, unsigned accepted);
+
 /* Wall-clock milliseconds from an arbitrary origin. */
 double ssg_now_ms(void);
 

@@ -95,14 +95,22 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     for (int k = 0; k < n->desc->input_count; k++)
         if (n->in[k].node >= 0)
             in[k] = g->nodes[n->in[k].node].out_img[n->in[k].port];
-    for (int k = 0; k < n->extra_count; k++)
-        extra[k] = g->nodes[n->extra[k].node].out_img[n->extra[k].port];
+    struct ssg_shape extra_shape[SSG_MAX_EXTRA];
+    for (int k = 0; k < n->extra_count; k++) {
+        const struct gnode *src = &g->nodes[n->extra[k].node];
+        extra[k] = src->out_img[n->extra[k].port];
+        extra_shape[k] = src->out_shape[n->extra[k].port];
+    }
     enum ssg_err e = allocate_outputs(r, n);
     if (e)
         return e;
-    struct ssg_io io = {in, n->out_img, n->extra_count, n->extra_names, extra, n->extra_types};
-    struct ssg_node_ctx ctx = {n->name, &g->frame, g->scene, out_dir(r), r->diags,
-                               &r->metrics};
+    struct ssg_io io = {.in = in, .out = n->out_img, .extra_count = n->extra_count,
+                        .extra_names = n->extra_names, .extra_in = extra,
+                        .extra_types = n->extra_types};
+    struct ssg_node_ctx ctx = {.desc = n->desc, .instance = n->name, .frame = &g->frame,
+                               .scene = g->scene, .out_dir = out_dir(r), .diags = r->diags,
+                               .metrics = &r->metrics, .in_shape = n->in_shape,
+                               .out_shape = n->out_shape, .extra_shape = extra_shape};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();

@@ -69,12 +69,21 @@ struct ssg_shape {
 
 /* Everything a node's functions may look at besides images and constants. */
 struct ssg_node_ctx {
+    const struct ssg_node_desc *desc; /* the node's type; messages name it (desc->name) */
     const char *instance;          /* node name in the graph ("ao") */
     const struct ssg_frame *frame; /* size, camera intrinsics, seed */
     const struct ssg_scene *scene; /* NULL when running without a scene */
     const char *out_dir;           /* where sink nodes write files */
     struct ssg_diags *diags;       /* for errors while running */
     struct ssg_metrics *metrics;   /* where ssg_metric_report goes; NULL = discarded */
+    /* The shapes the graph was checked with (ssg_shapes_infer): inputs in port order
+       (channels 0 = unconnected), outputs in port order, then the extra inputs. prepare()
+       derives its per-resolution constants from them, once, for both backends. Before
+       run_cpu or run_gl is called the executor has verified every bound image against
+       them (ssg_node_verify_io), so a kernel reads its images without re-checking them. */
+    const struct ssg_shape *in_shape;
+    const struct ssg_shape *out_shape;
+    const struct ssg_shape *extra_shape;
 };
 
 /* Reports a named scalar result of this node (e.g. "rmse"); printed after the run and
@@ -187,30 +196,23 @@ static inline struct ssg_projection ssg_projection_scaled(const struct ssg_proje
     return q;
 }
 
-/* Reports a node's run-time error as "<node> '<instance>': <what>" (no file location:
- * graph-level problems were reported with one before the run) and returns code. */
-enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *node,
-                           const char *what);
-
-/* 1 when the image exists and has exactly this shape (run-time re-check of what check()
- * promised, so a hand-built run cannot read out of bounds). */
-static inline int ssg_image_is(const struct ssg_image *im, int width, int height, int channels)
-{
-    return im && im->width == width && im->height == height && im->channels == channels;
-}
+/* Reports a node's run-time error (out of memory, a file it cannot write, a scene it
+ * needs) as "<node> '<instance>': <what>", what formatted like printf, and returns code.
+ * No file location: graph-level problems were reported with one before the run. Shapes
+ * are never a run-time error of a node: check() refuses them before anything runs and
+ * the executor verifies the images against them. */
+enum ssg_err ssg_node_fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *fmt,
+                           ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 
 /* 1 when two shapes have the same width and height. */
 static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ssg_shape *b)
 {
     return a->width == b->width && a->height == b->height;
 }
-
-/* check() of the screen-space AO nodes: the optional rotation tile (n x n, 2 channels) and
- * the optional depth (1 channel, the size of position); channels 0 = unconnected. Returns
- * SSG_OK, or the error code with the reason in why. */
-enum ssg_err ssg_check_rotation_depth(const struct ssg_shape *position,
-                                      const struct ssg_shape *rotation,
-                                      const struct ssg_shape *depth, char *why, size_t why_len);
 
 /* Convenience for node files. */
 #define SSG_COUNT(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))

@@ -159,10 +159,17 @@ static enum ssg_err run_single(struct single *s, const void *params, const struc
         if (!outputs->images[i])
             return SSG_E_NOMEM;
     }
-    struct ssg_io io = {s->in, outputs->images, s->extra_count, s->extra_names, s->extra,
-                        s->extra_types};
+    struct ssg_io io = {.in = s->in, .out = outputs->images, .extra_count = s->extra_count,
+                        .extra_names = s->extra_names, .extra_in = s->extra,
+                        .extra_types = s->extra_types};
+    struct ssg_shape extra_shape[SSG_MAX_EXTRA];
+    for (int i = 0; i < s->extra_count; i++)
+        extra_shape[i] = ssg_shape_of_image(s->extra[i], s->extra_types[i]);
     struct ssg_metrics metrics = {0};
-    struct ssg_node_ctx ctx = {s->d->name, f, NULL, "out", diags, &metrics};
+    struct ssg_node_ctx ctx = {.desc = s->d, .instance = s->d->name, .frame = f,
+                               .out_dir = "out", .diags = diags, .metrics = &metrics,
+                               .in_shape = s->in_shape, .out_shape = out_shape,
+                               .extra_shape = extra_shape};
     struct ssg_node_timing timing;
     if (backend == SSG_BACKEND_GL && (e = ssg_gl_open(diags)))
         return e;

@@ -7,12 +7,12 @@
 #include "graph/node.h"
 
 #define X(name) extern const struct ssg_node_desc ssg_node_##name;
-#include "../nodes/nodes.def"
+#include "nodes.def"
 #undef X
 
 static const struct ssg_node_desc *const registry[] = {
 #define X(name) &ssg_node_##name,
-#include "../nodes/nodes.def"
+#include "nodes.def"
 #undef X
 };
 

@@ -59,6 +59,37 @@ struct ssg_param_desc {
     int required;               /* 1 = must be given (no default) */
 };
 
+/* The storage of a parameter: its type and its offset in the owner's params struct, e.g.
+ *   {.name = "radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, radius), .def = 0.5, ...}
+ * Each macro compiles only when the field has the C type its parameter type stores
+ * (table above): a table entry that names a field of the wrong type is a compile error
+ * ("parameter field has the wrong C type"), never a write of the wrong size at run time.
+ * The check is _Generic on a pointer to the field inside a static assertion (the idea of
+ * libplacebo's option tables); it costs nothing at run time. */
+#define SSG_FIELD_OFFSET(owner, field, field_ptr_type)                                     \
+    (offsetof(owner, field) +                                                            \
+     0 * sizeof(struct {                                                                 \
+         _Static_assert(_Generic(&((owner *)0)->field, field_ptr_type: 1, default: 0),   \
+                        "parameter field has the wrong C type");                         \
+         int checked;                                                                    \
+     }))
+#define SSG_FIELD_FLOAT(owner, field) \
+    .type = SSG_P_FLOAT, .offset = SSG_FIELD_OFFSET(owner, field, float *)
+#define SSG_FIELD_INT(owner, field) \
+    .type = SSG_P_INT, .offset = SSG_FIELD_OFFSET(owner, field, int *)
+#define SSG_FIELD_BOOL(owner, field) \
+    .type = SSG_P_BOOL, .offset = SSG_FIELD_OFFSET(owner, field, int *)
+#define SSG_FIELD_ENUM(owner, field) \
+    .type = SSG_P_ENUM, .offset = SSG_FIELD_OFFSET(owner, field, int *)
+#define SSG_FIELD_STRING(owner, field) \
+    .type = SSG_P_STRING, .offset = SSG_FIELD_OFFSET(owner, field, char(*)[SSG_STR_MAX])
+#define SSG_FIELD_NAME(owner, field) \
+    .type = SSG_P_NAME, .offset = SSG_FIELD_OFFSET(owner, field, char(*)[SSG_NAME_MAX])
+#define SSG_FIELD_VEC3(owner, field) \
+    .type = SSG_P_VEC3, .offset = SSG_FIELD_OFFSET(owner, field, float(*)[3])
+#define SSG_FIELD_INTS(owner, field) \
+    .type = SSG_P_INTS, .offset = SSG_FIELD_OFFSET(owner, field, struct ssg_ints *)
+
 /* A table and its length, so callers pass one thing. */
 struct ssg_param_table {
     const struct ssg_param_desc *params;

@@ -23,18 +23,18 @@
 
 /* ---- parameter tables ---- */
 
-#define VEC3(nm, st, fld, x, y, z, lo, hi, u, h)                                          \
-    {.name = nm, .type = SSG_P_VEC3, .offset = offsetof(struct st, fld), .def3 = {x, y, z}, \
+#define VEC3(nm, st, fld, x, y, z, lo, hi, u, h)                                         \
+    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .def3 = {x, y, z},                      \
      .min = lo, .max = hi, .unit = u, .help = h}
 #define REQ_VEC3(nm, st, fld, u, h)                                                      \
-    {.name = nm, .type = SSG_P_VEC3, .offset = offsetof(struct st, fld), .unit = u,       \
+    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .unit = u,                              \
      .help = h, .required = 1}
 #define FLOAT(nm, st, fld, d, lo, hi, u, h)                                              \
-    {.name = nm, .type = SSG_P_FLOAT, .offset = offsetof(struct st, fld), .def = d,       \
+    {.name = nm, SSG_FIELD_FLOAT(struct st, fld), .def = d,                              \
      .min = lo, .max = hi, .unit = u, .help = h}
 #define TEXT(nm, ty, st, fld, req, h)                                                    \
-    {.name = nm, .type = ty, .offset = offsetof(struct st, fld), .help = h, .required = req}
-#define MATERIAL(st) TEXT("material", SSG_P_NAME, st, material, 0, \
+    {.name = nm, SSG_FIELD_##ty(struct st, fld), .help = h, .required = req}
+#define MATERIAL(st) TEXT("material", NAME, st, material, 0,                             \
                           "name of a material defined in this file; default: white 0.8")
 
 static const struct ssg_param_desc camera_params[] = {
@@ -54,7 +54,7 @@ static const struct ssg_param_desc material_params[] = {
     VEC3("specular", material_args, specular, 0, 0, 0, 0, 1, NULL,
          "Blinn-Phong specular colour, linear RGB"),
     FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
-    TEXT("texture", SSG_P_STRING, material_args, texture, 0,
+    TEXT("texture", STRING, material_args, texture, 0,
          "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
 };
 static const struct ssg_param_desc point_light_params[] = {
@@ -72,7 +72,7 @@ static const struct ssg_param_desc directional_light_params[] = {
 static const struct ssg_param_desc environment_params[] = {
     VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL, "constant radiance, linear RGB"),
     FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL, "multiplies color and image"),
-    TEXT("image", SSG_P_STRING, environment_args, image, 0,
+    TEXT("image", STRING, environment_args, image, 0,
          "lat-long HDR image (multiplied by color), relative to the scene"),
 };
 static const struct ssg_param_desc plane_params[] = {
@@ -94,13 +94,13 @@ static const struct ssg_param_desc sphere_params[] = {
     MATERIAL(shape_args),
     VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the sphere"),
     FLOAT("radius", shape_args, radius, 1, 1e-6, BIG, "scene units", "radius"),
-    {.name = "subdivisions", .type = SSG_P_INT, .offset = offsetof(struct shape_args, subdivisions),
+    {.name = "subdivisions", SSG_FIELD_INT(struct shape_args, subdivisions),
      .def = 32, .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
 };
 static const struct ssg_param_desc mesh_params[] = {
-    TEXT("file", SSG_P_STRING, mesh_args, file, 1, "glTF 2.0 file (.gltf or .glb), relative to "
+    TEXT("file", STRING, mesh_args, file, 1, "glTF 2.0 file (.gltf or .glb), relative to "
          "the scene"),
-    TEXT("material", SSG_P_NAME, mesh_args, material, 0,
+    TEXT("material", NAME, mesh_args, material, 0,
          "material overriding the file's own; default: the glTF materials"),
     VEC3("translate", mesh_args, translate, 0, 0, 0, 0, 0, "scene units", "moves the mesh"),
     VEC3("rotate", mesh_args, rotate, 0, 0, 0, 0, 0, "degrees",

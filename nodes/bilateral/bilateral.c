@@ -61,9 +61,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (p->size < 1 || p->size > SSG_BILATERAL_MAX_SIZE || p->size % 2 == 0 ||
         !(p->sigma_depth > 0) || !(p->sigma_spatial >= 0) || p->normal_power < 0 ||
         p->normal_power > 127) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "bilateral '%s': invalid parameters", ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
     }
     c->radius = (p->size - 1) / 2;
     c->size = p->size;
@@ -81,20 +79,16 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "size", .type = SSG_P_INT, .offset = offsetof(struct ssg_bilateral_params, size),
+    {.name = "size", SSG_FIELD_INT(struct ssg_bilateral_params, size),
      .def = 9, .min = 1, .max = SSG_BILATERAL_MAX_SIZE, .unit = "px",
      .help = "window diameter, odd"},
-    {.name = "sigma_spatial", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_bilateral_params, sigma_spatial), .def = 0, .min = 0,
+    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_spatial), .def = 0, .min = 0,
      .max = 1000, .unit = "px", .help = "spatial Gaussian sigma; 0 = size / 3"},
-    {.name = "sigma_depth", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_bilateral_params, sigma_depth), .def = 0.05, .min = 1e-6,
+    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_depth), .def = 0.05, .min = 1e-6,
      .max = 1000, .help = "depth sigma as a fraction of the centre pixel's depth"},
-    {.name = "normal_power", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_bilateral_params, normal_power), .def = 16, .min = 0,
+    {.name = "normal_power", SSG_FIELD_INT(struct ssg_bilateral_params, normal_power), .def = 16, .min = 0,
      .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"},
-    {.name = "separable", .type = SSG_P_BOOL,
-     .offset = offsetof(struct ssg_bilateral_params, separable), .def = 0,
+    {.name = "separable", SSG_FIELD_BOOL(struct ssg_bilateral_params, separable), .def = 0,
      .help = "horizontal then vertical pass: O(size) per pixel, an approximation"},
 };
 

@@ -225,7 +225,7 @@ static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
     size_t plane = (size_t)j->w * (size_t)j->h;
     float *tmp = malloc(sizeof(float) * plane * (size_t)j->channels);
     if (!tmp)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "bilateral", "out of memory for the "
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the "
                              "separable pass");
     struct job h = *j, v = *j;
     h.ry = 0;
@@ -246,16 +246,6 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
     const struct ssg_image *dep = io->in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
-    if (!in || (in->channels != 1 && in->channels != 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "in must have 1 or 3 channels");
-    if (!ssg_image_is(dep, in->width, in->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral",
-                             "depth must be 1-channel, the size of in");
-    if (nrm && !ssg_image_is(nrm, in->width, in->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral",
-                             "normal must be 3-channel, the size of in");
-    if (!ssg_image_is(io->out[0], in->width, in->height, in->channels))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "output must have the shape of in");
     const struct ssg_bilateral_consts *c = consts;
     struct job j = {.c = c, .channels = in->channels, .depth = dep->data, .w = in->width,
                     .h = in->height, .rx = c->radius, .ry = c->radius};

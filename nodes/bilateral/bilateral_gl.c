@@ -60,12 +60,6 @@ enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *co
 {
     const struct ssg_bilateral_consts *c = consts;
     const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
-    const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
-    if (!in || (in->channels != 1 && in->channels != 3) ||
-        !ssg_image_is(io->in[SSG_BILATERAL_IN_DEPTH], in->width, in->height, 1) ||
-        (nrm && !ssg_image_is(nrm, in->width, in->height, 3)) ||
-        !ssg_image_is(io->out[0], in->width, in->height, in->channels))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bilateral", "inconsistent image sizes");
     if (!c->separable)
         return run(ctx, c, io, NULL);
     struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);

@@ -19,7 +19,15 @@
  * Background pixels (albedo 0, light 0) stay 0. */
 #include <stddef.h>
 
+#include <stdio.h>
+
 #include "combine.h"
+
+/* Every connected input must have the output's size (the frame's): combine reads them
+   pixel by pixel. Channels follow from the ports' types. */
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len);
 
 static const struct ssg_port_desc inputs[] = {
     {.name = "direct", .types = SSG_T_COLOR,
@@ -43,14 +51,12 @@ static const struct ssg_port_desc outputs[] = {
 };
 
 static const struct ssg_param_desc param_table[] = {
-    {.name = "ambient", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_combine_params, ambient),
+    {.name = "ambient", SSG_FIELD_FLOAT(struct ssg_combine_params, ambient),
      .def = 0.3, .min = 0, .max = 10,
      .help = "strength of the uniform ambient light that AO darkens (linear, like direct)"},
-    {.name = "ambient_color", .type = SSG_P_VEC3,
-     .offset = offsetof(struct ssg_combine_params, ambient_color), .min = 0, .max = 100,
+    {.name = "ambient_color", SSG_FIELD_VEC3(struct ssg_combine_params, ambient_color), .min = 0, .max = 100,
      .def3 = {1, 1, 1}, .unit = "linear RGB", .help = "tint of the ambient light"},
-    {.name = "darken_indirect", .type = SSG_P_BOOL,
-     .offset = offsetof(struct ssg_combine_params, darken_indirect), .def = 1,
+    {.name = "darken_indirect", SSG_FIELD_BOOL(struct ssg_combine_params, darken_indirect), .def = 1,
      .help = "the modulation factor darkens the indirect light too (the one-step SSDO rule "
              "against over-bright corners)"},
 };
@@ -78,6 +84,22 @@ const struct ssg_node_desc ssg_node_combine = {
     .output_count = SSG_COUNT(outputs),
     .params = SSG_TABLE(param_table),
     .params_size = sizeof(struct ssg_combine_params),
+    .check = check,
     .run_cpu = ssg_combine_run_cpu,
     .run_gl = ssg_combine_run_gl,
 };
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    for (int i = 0; i < SSG_COMBINE_INPUTS; i++) {
+        if (in[i].channels != 0 && !ssg_shape_same_size(&in[i], &out[0])) {
+            snprintf(why, why_len, "input '%s' is %dx%d, expected the frame's %dx%d",
+                     inputs[i].name, in[i].width, in[i].height, out[0].width,
+                     out[0].height);
+            return SSG_E_SIZE;
+        }
+    }
+    return SSG_OK;
+}

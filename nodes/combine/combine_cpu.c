@@ -42,31 +42,6 @@ static void combine_rows(void *user, int y0, int y1)
         combine_channel(j, c, (size_t)y0 * w, (size_t)y1 * w);
 }
 
-/* An input must have the output's size and its port's channel count. */
-static enum ssg_err check_input(const struct ssg_node_ctx *ctx, const struct ssg_image *in,
-                                const char *port, int channels, const struct ssg_image *out)
-{
-    static const struct ssg_loc nowhere = {0};
-    if (!in) {
-        ssg_diag_at(ctx->diags, SSG_E_MISSING_INPUT, nowhere,
-                    "combine '%s': input '%s' is not connected", ctx->instance, port);
-        return SSG_E_MISSING_INPUT;
-    }
-    if (in->width != out->width || in->height != out->height) {
-        ssg_diag_at(ctx->diags, SSG_E_SIZE, nowhere,
-                    "combine '%s': input '%s' is %d x %d, expected %d x %d", ctx->instance,
-                    port, in->width, in->height, out->width, out->height);
-        return SSG_E_SIZE;
-    }
-    if (in->channels != channels) {
-        ssg_diag_at(ctx->diags, SSG_E_CHANNELS, nowhere,
-                    "combine '%s': input '%s' has %d channels, expected %d", ctx->instance,
-                    port, in->channels, channels);
-        return SSG_E_CHANNELS;
-    }
-    return SSG_OK;
-}
-
 enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io)
 {
@@ -78,15 +53,6 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *modulation = io->in[SSG_COMBINE_MODULATION];
     const struct ssg_image *environment = io->in[SSG_COMBINE_ENVIRONMENT];
     struct ssg_image *out = io->out[0];
-    enum ssg_err err = SSG_OK;
-    if ((err = check_input(ctx, direct, "direct", 3, out)) ||
-        (err = check_input(ctx, albedo, "albedo", 3, out)) ||
-        (ao && (err = check_input(ctx, ao, "ambient_occlusion", 1, out))) ||
-        (indirect && (err = check_input(ctx, indirect, "indirect", 3, out))) ||
-        (environment && (err = check_input(ctx, environment, "environment", 3, out))) ||
-        (modulation && (err = check_input(ctx, modulation, "modulation",
-                                          modulation->channels == 1 ? 1 : 3, out))))
-        return err;
     struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width,
                               .darken_indirect = p->darken_indirect};
     for (int c = 0; c < 3; c++) {

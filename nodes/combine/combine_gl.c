@@ -6,33 +6,11 @@
 #include "combine.h"
 #include "gl/gl.h"
 
-/* Sizes and channels as the CPU kernel checks them (same message for all: the graph
-   check has already located any real mistake). */
-static int inputs_fit(const struct ssg_io *io, const struct ssg_image *out)
-{
-    const struct ssg_image *mod = io->in[SSG_COMBINE_MODULATION];
-    static const int channels[SSG_COMBINE_INPUTS] = {3, 3, 1, 3, 0, 3};
-    if (!io->in[SSG_COMBINE_DIRECT] || !io->in[SSG_COMBINE_ALBEDO])
-        return 0;
-    for (int i = 0; i < SSG_COMBINE_INPUTS; i++) {
-        const struct ssg_image *in = io->in[i];
-        int ch = i == SSG_COMBINE_MODULATION && mod ? (mod->channels == 1 ? 1 : 3)
-                                                    : channels[i];
-        if (in && !ssg_image_is(in, out->width, out->height, ch))
-            return 0;
-    }
-    return 1;
-}
-
 enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
     const struct ssg_combine_params *prm = consts;
     struct ssg_image *out = io->out[0];
-    if (!out || out->channels != 3 || !inputs_fit(io, out))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "combine",
-                             "inputs must be connected and match the output's size and "
-                             "their ports' channels");
     const struct ssg_image *mod = io->in[SSG_COMBINE_MODULATION];
     float k[3];
     for (int c = 0; c < 3; c++)

@@ -27,7 +27,7 @@ struct ssg_gl_scene {
 
 static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
 {
-    return ssg_node_fail(ctx, code, "gl", what);
+    return ssg_node_fail(ctx, code, "%s", what);
 }
 
 /* Float offsets of every mesh's arrays in vdata and of its indices; sizes into s->bytes. */

@@ -23,12 +23,11 @@ void ssg_camera_frame(const struct ssg_camera *camera, float rot[9], float eye[3
         eye[i] = camera->position[i];
 }
 
-enum ssg_err ssg_trace_camera(const struct ssg_node_ctx *ctx, const char *node, float rot[9],
-                              float eye[3])
+enum ssg_err ssg_trace_camera(const struct ssg_node_ctx *ctx, float rot[9], float eye[3])
 {
     const struct ssg_scene *s = ctx->scene;
     if (!s || !s->rt)
-        return ssg_node_fail(ctx, SSG_E_SCENE, node,
+        return ssg_node_fail(ctx, SSG_E_SCENE,
                              "needs a loaded scene (a `scene` line in the graph, or --scene)");
     ssg_camera_frame(&s->camera, rot, eye);
     return SSG_OK;

@@ -35,8 +35,7 @@ void ssg_camera_frame(const struct ssg_camera *camera, float rot[9], float eye[3
 /* The start of prepare() of a node that traces the scene: SSG_E_SCENE, reported as
  * "<node> '<instance>': needs a loaded scene ...", when ctx has no scene with built rays;
  * otherwise SSG_OK with rot and eye of its camera (ssg_camera_frame). */
-enum ssg_err ssg_trace_camera(const struct ssg_node_ctx *ctx, const char *node, float rot[9],
-                              float eye[3]);
+enum ssg_err ssg_trace_camera(const struct ssg_node_ctx *ctx, float rot[9], float eye[3]);
 
 /* The self-intersection offset at a point whose coordinates (or distance) reach `scale`:
  * max(offset, 1024 float ulps of scale), since float precision falls with the scene's

@@ -73,10 +73,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     const struct ssg_compare_params *p = params;
     struct ssg_compare_consts *c = consts;
     if (!(p->scale > 0) || !(p->peak > 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "compare '%s': scale and peak must be positive",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "scale and peak must be positive");
     }
     /* Section III-C: "an 11 x 11 circular-symmetric Gaussian weighting function ... with
        standard deviation of 1.5 samples, normalized to unit sum". */
@@ -96,10 +93,10 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "scale", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_compare_params, scale),
+    {.name = "scale", SSG_FIELD_FLOAT(struct ssg_compare_params, scale),
      .def = 0.25, .min = 1e-6, .max = 1e6,
      .help = "diff image: |a - b| at which the colour is pure red or blue"},
-    {.name = "peak", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_compare_params, peak),
+    {.name = "peak", SSG_FIELD_FLOAT(struct ssg_compare_params, peak),
      .def = 1, .min = 1e-6, .max = 1e6,
      .help = "signal peak: PSNR's maximum and SSIM's dynamic range L (1 for AO, [0,1] data)"},
 };

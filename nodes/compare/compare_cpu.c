@@ -268,8 +268,7 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
     for (int i = 0; i < bands; i++) {
         const struct partial *p = &j->parts[i];
         if (p->failed)
-            return ssg_node_fail(ctx, SSG_E_NOMEM, "compare",
-                                 "out of memory for the SSIM window buffers");
+            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the SSIM window buffers");
         t.sq += p->sq;
         t.abs += p->abs;
         t.count += p->count;
@@ -290,32 +289,17 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
     return SSG_OK;
 }
 
-static int shape_is(const struct ssg_image *im, int w, int h, int ch)
-{
-    return im && im->width == w && im->height == h && im->channels == ch;
-}
-
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io)
 {
     const struct ssg_image *a = io->in[SSG_COMPARE_IN_A], *b = io->in[SSG_COMPARE_IN_B];
     const struct ssg_image *mask = io->in[SSG_COMPARE_IN_MASK];
-    if (!a || a->channels < 1 || a->channels > SSG_COMPARE_MAX_CHANNELS)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "compare", "a must have 1 to 4 channels");
-    if (!shape_is(b, a->width, a->height, a->channels))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "compare", "b must have the shape of a");
-    if (mask && !shape_is(mask, a->width, a->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "compare",
-                             "mask must be 1-channel, the size of a");
-    if (!shape_is(io->out[0], a->width, a->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "compare",
-                             "diff must be 3-channel, the size of a");
     int bands = (a->height + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
     struct job j = {.c = consts, .mask = mask ? mask->data : NULL, .w = a->width,
                     .h = a->height, .channels = a->channels,
                     .parts = calloc(bands > 0 ? (size_t)bands : 1, sizeof(struct partial))};
     if (!j.parts)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "compare", "out of memory for the partial sums");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the partial sums");
     for (int ch = 0; ch < a->channels; ch++) {
         j.a[ch] = ssg_image_plane(a, ch);
         j.b[ch] = ssg_image_plane(b, ch);

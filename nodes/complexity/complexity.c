@@ -33,6 +33,7 @@
  * Deterministic: every value depends on the inputs only, sums run in pixel order. */
 #include <stdio.h>
 
+#include "common/sampling.h"
 #include "complexity.h"
 
 static enum ssg_err check_levels(const struct ssg_complexity_params *p, char *why,
@@ -82,54 +83,38 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_complexity_consts *c = consts;
     char why[256];
     c->p = *(const struct ssg_complexity_params *)params;
-    c->proj = ssg_frame_projection(ctx->frame);
-    c->frame_width = ctx->frame->width;
-    c->frame_height = ctx->frame->height;
     /* prepare() may be reached without check() (a hand-built run). */
     if (c->p.levels.count < 1 || c->p.levels.count > SSG_INTS_MAX || c->p.period < 1 ||
         (c->p.scale != 1 && c->p.scale != 2 && c->p.scale != 4 && c->p.scale != 8) ||
         c->p.resolutions < 1 || c->p.resolutions > SSG_COMPLEXITY_MAX_RESOLUTIONS ||
-        check_levels(&c->p, why, sizeof why) != SSG_OK || c->frame_width < 1 ||
-        c->frame_height < 1 || !(c->proj.f > 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "complexity '%s': invalid parameters or frame",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
-    }
-    return SSG_OK;
+        check_levels(&c->p, why, sizeof why) != SSG_OK)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
+    return ssg_sampling_projection(ctx, &ctx->in_shape[SSG_COMPLEXITY_IN_DEPTH], &c->proj);
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "levels", .type = SSG_P_INTS,
-     .offset = offsetof(struct ssg_complexity_params, levels), .def_ints = {20, 30, 40, 50},
+    {.name = "levels", SSG_FIELD_INTS(struct ssg_complexity_params, levels), .def_ints = {20, 30, 40, 50},
      .def_ints_count = 4, .min_count = 1, .max_count = SSG_INTS_MAX, .min = 1, .max = 1024,
      .unit = "samples",
      .help = "sample counts, ascending, each a multiple of period (Szentandrasi table 1)"},
-    {.name = "period", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_complexity_params, period), .def = 10, .min = 1,
+    {.name = "period", SSG_FIELD_INT(struct ssg_complexity_params, period), .def = 10, .min = 1,
      .max = 1024, .unit = "samples",
      .help = "Halton period N_g of the kernel (eq. 8): counts are whole periods"},
-    {.name = "scale", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_complexity_params, scale), .def = 4, .min = 1,
+    {.name = "scale", SSG_FIELD_INT(struct ssg_complexity_params, scale), .def = 4, .min = 1,
      .max = SSG_COMPLEXITY_MAX_SCALE, .unit = "px",
      .help = "cell side of the grid the gradients are taken on: 1, 2, 4 or 8"},
-    {.name = "resolutions", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_complexity_params, resolutions), .def = 1, .min = 1,
+    {.name = "resolutions", SSG_FIELD_INT(struct ssg_complexity_params, resolutions), .def = 1, .min = 1,
      .max = SSG_COMPLEXITY_MAX_RESOLUTIONS,
      .help = "grids combined by max: cells of scale, 2 scale, ... px"},
-    {.name = "normal_threshold", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_complexity_params, normal_threshold), .def = 0.1,
+    {.name = "normal_threshold", SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_threshold), .def = 0.1,
      .min = 0, .max = 8, .help = "sum over neighbour cells of |n - n_nb| below which a cell "
      "is flat"},
-    {.name = "normal_gain", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_complexity_params, normal_gain), .def = 2, .min = 0,
+    {.name = "normal_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_gain), .def = 2, .min = 0,
      .max = 1e6, .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
-    {.name = "depth_threshold", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_complexity_params, depth_threshold), .def = 0.02,
+    {.name = "depth_threshold", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_threshold), .def = 0.02,
      .min = 0, .max = 1e6, .help = "sum of |n . (P_nb - P)| / depth (depth change off the "
      "tangent plane, relative) below which a cell is flat"},
-    {.name = "depth_gain", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_complexity_params, depth_gain), .def = 10, .min = 0,
+    {.name = "depth_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_gain), .def = 10, .min = 0,
      .max = 1e6, .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
 };
 

@@ -29,10 +29,8 @@ struct ssg_complexity_params {
 
 struct ssg_complexity_consts {
     struct ssg_complexity_params p; /* the parameters as given */
-    struct ssg_projection proj;     /* ssg_frame_projection of the frame */
-    int frame_width;                /* px, the frame proj belongs to; inputs of another
-                                       size (a subsampled G-buffer) get proj scaled */
-    int frame_height;               /* px */
+    struct ssg_projection proj;     /* the frame's camera as the G-buffer's resolution
+                                       sees it (ssg_sampling_projection) */
 };
 
 enum ssg_err ssg_complexity_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -146,19 +146,6 @@ static void pixel_rows(void *user, int y0, int y1)
         }
 }
 
-static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
-{
-    const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
-    if (!dep || dep->channels != 1 ||
-        !ssg_image_is(io->in[SSG_COMPLEXITY_IN_NORMAL], dep->width, dep->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "complexity",
-                             "depth (1 channel) and normal (3 channels) must be one size");
-    if (!ssg_image_is(io->out[0], dep->width, dep->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "complexity",
-                             "output must be 1-channel, the size of depth");
-    return SSG_OK;
-}
-
 /* One allocation for every grid's planes (8 floats a cell); NULL when out of memory. */
 static float *alloc_grids(struct job *j)
 {
@@ -189,24 +176,18 @@ enum ssg_err ssg_complexity_run_cpu(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_complexity_consts *c = consts;
-    enum ssg_err e = check_images(ctx, io);
-    if (e != SSG_OK)
-        return e;
     const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_COMPLEXITY_IN_NORMAL];
     struct job j = {.c = c, .depth = dep->data, .out = io->out[0]->data, .w = dep->width,
                     .h = dep->height, .grids = c->p.resolutions};
     for (int ch = 0; ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp =
-        ssg_projection_scaled(&c->proj, c->frame_width, c->frame_height, j.w, j.h);
-    j.f = sp.f;
-    j.cx = sp.cx;
-    j.cy = sp.cy;
+    j.f = c->proj.f;
+    j.cx = c->proj.cx;
+    j.cy = c->proj.cy;
     float *mem = alloc_grids(&j);
     if (!mem)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "complexity", "out of memory for the grids");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the grids");
     for (j.cur = 0; j.cur < j.grids; j.cur++) {
         ssg_parallel_rows(j.g[j.cur].gh, CELL_ROWS_PER_BAND, means_rows, &j);
         ssg_parallel_rows(j.g[j.cur].gh, CELL_ROWS_PER_BAND, weight_rows, &j);

@@ -83,15 +83,7 @@ enum ssg_err ssg_complexity_run_gl(const struct ssg_node_ctx *ctx, const void *c
 {
     const struct ssg_complexity_consts *c = consts;
     const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
-    if (!dep || dep->channels != 1 ||
-        !ssg_image_is(io->in[SSG_COMPLEXITY_IN_NORMAL], dep->width, dep->height, 3) ||
-        !ssg_image_is(io->out[0], dep->width, dep->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "complexity",
-                             "depth (1 channel), normal (3 channels) and the output must "
-                             "be one size");
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp = ssg_projection_scaled(&c->proj, c->frame_width,
-                                                     c->frame_height, dep->width, dep->height);
+    const struct ssg_projection sp = c->proj;
     struct grid g[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {{0}};
     enum ssg_err e = SSG_OK;
     for (int r = 0; e == SSG_OK && r < c->p.resolutions; r++) {

@@ -54,8 +54,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "factor", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_downsample_params, factor), .def = 2, .min = 2,
+    {.name = "factor", SSG_FIELD_INT(struct ssg_downsample_params, factor), .def = 2, .min = 2,
      .max = SSG_DOWNSAMPLE_MAX_FACTOR, .unit = "px",
      .help = "block side: 2 (half resolution) or 4"},
 };
@@ -84,18 +83,6 @@ static const struct ssg_port_desc outputs[] = {
     {.name = "environment", .types = SSG_T_COLOR,
      .doc = "environment light of the chosen pixel; 0 when unconnected"},
 };
-
-enum ssg_err ssg_downsample_check_run(const struct ssg_node_ctx *ctx,
-                                      const struct ssg_downsample_params *p,
-                                      const struct ssg_io *io)
-{
-    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
-    if (p->factor != 2 && p->factor != 4)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "downsample", "factor must be 2 or 4");
-    if (!dep || dep->channels != 1)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "downsample", "depth must be 1-channel");
-    return SSG_OK;
-}
 
 const struct ssg_node_desc ssg_node_downsample = {
     .name = "downsample",

@@ -22,11 +22,6 @@ enum {
 struct ssg_downsample_params {
     int factor; /* block side, px: 2 or 4; default 2 */
 };
-
-/* Both backends' run-time checks of the factor and the depth input. */
-enum ssg_err ssg_downsample_check_run(const struct ssg_node_ctx *ctx,
-                                      const struct ssg_downsample_params *p,
-                                      const struct ssg_io *io);
 enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                     const struct ssg_io *io);
 /* The GL side (downsample_gl.c, shader downsample*.glsl). */

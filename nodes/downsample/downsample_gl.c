@@ -14,20 +14,8 @@ enum ssg_err ssg_downsample_run_gl(const struct ssg_node_ctx *ctx, const void *c
                                    const struct ssg_io *io)
 {
     const struct ssg_downsample_params *p = consts;
-    enum ssg_err e = ssg_downsample_check_run(ctx, p, io);
-    if (e != SSG_OK)
-        return e;
-    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
-    int ow = (dep->width + p->factor - 1) / p->factor;
-    int oh = (dep->height + p->factor - 1) / p->factor;
-    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
-        int ch = k == SSG_DOWNSAMPLE_DEPTH ? 1 : 3;
-        if ((io->in[k] && !ssg_image_is(io->in[k], dep->width, dep->height, ch)) ||
-            !ssg_image_is(io->out[k], ow, oh, ch))
-            return ssg_node_fail(ctx, SSG_E_SIZE, "downsample",
-                                 "inputs must have the size of depth, outputs "
-                                 "ceil(size / factor)");
-    }
+    const int ow = ctx->out_shape[SSG_DOWNSAMPLE_DEPTH].width;
+    const int oh = ctx->out_shape[SSG_DOWNSAMPLE_DEPTH].height;
     struct ssg_gl_pass pass;
     ssg_gl_pass_begin(&pass, ctx, "downsample.glsl", NULL);
     for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {

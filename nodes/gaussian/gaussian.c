@@ -48,10 +48,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_gaussian_consts *c = consts;
     int size = p->sigma > 0 ? window_size(p) : 0;
     if (!(p->sigma > 0) || size < 1 || size > SSG_GAUSSIAN_MAX_SIZE || size % 2 == 0) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "gaussian '%s': needs sigma > 0 and an odd size up to %d",
-                    ctx->instance ? ctx->instance : "", SSG_GAUSSIAN_MAX_SIZE);
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs sigma > 0 and an odd size up to %d", SSG_GAUSSIAN_MAX_SIZE);
     }
     c->radius = (size - 1) / 2;
     double w[SSG_GAUSSIAN_MAX_SIZE], sum = 0;
@@ -65,9 +62,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "sigma", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_gaussian_params, sigma),
+    {.name = "sigma", SSG_FIELD_FLOAT(struct ssg_gaussian_params, sigma),
      .def = 2, .min = 0.01, .max = 170, .unit = "px", .help = "standard deviation"},
-    {.name = "size", .type = SSG_P_INT, .offset = offsetof(struct ssg_gaussian_params, size),
+    {.name = "size", SSG_FIELD_INT(struct ssg_gaussian_params, size),
      .def = 0, .min = 0, .max = SSG_GAUSSIAN_MAX_SIZE, .unit = "px",
      .help = "window diameter, odd; 0 = 2 ceil(3 sigma) + 1"},
 };

@@ -33,16 +33,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_gbuffer_consts *c = consts;
     c->p = *(const struct ssg_gbuffer_params *)params;
-    enum ssg_err e = ssg_trace_camera(ctx, "gbuffer", c->rot, c->eye);
+    enum ssg_err e = ssg_trace_camera(ctx, c->rot, c->eye);
     if (e)
         return e;
     c->proj = ssg_frame_projection(ctx->frame);
     if (ctx->frame->width < 1 || ctx->frame->height < 1 || !(c->proj.f > 0) ||
         !(ctx->frame->near_z > 0) || !(ctx->frame->far_z > ctx->frame->near_z)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "gbuffer '%s': the frame "
-                    "needs a size, a field of view and 0 < near < far",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "the frame "
+                    "needs a size, a field of view and 0 < near < far");
     }
     c->near_z = ctx->frame->near_z;
     c->far_z = ctx->frame->far_z;
@@ -52,7 +50,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 static const char *const normals_choices[] = {"smooth", "face", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "normals", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_gbuffer_params, normals),
+    {.name = "normals", SSG_FIELD_ENUM(struct ssg_gbuffer_params, normals),
      .def = SSG_GBUFFER_NORMALS_SMOOTH, .choices = normals_choices,
      .help = "smooth: interpolated vertex normals; face: the triangle's own normal (no "
              "self-occlusion of flat-shaded meshes in SSAO)"},

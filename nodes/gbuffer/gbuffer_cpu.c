@@ -268,12 +268,6 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     struct ssg_image *const *out = io->out;
     j.w = out[SSG_GBUFFER_OUT_DEPTH]->width;
     j.h = out[SSG_GBUFFER_OUT_DEPTH]->height;
-    if (j.w != ctx->frame->width || j.h != ctx->frame->height) {
-        ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0}, "gbuffer '%s': outputs are "
-                    "%dx%d but the frame is %dx%d", ctx->instance ? ctx->instance : "", j.w,
-                    j.h, ctx->frame->width, ctx->frame->height);
-        return SSG_E_SIZE;
-    }
     for (int a = 0; a < 3; a++) {
         j.pos[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_POSITION], a);
         j.nrm[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_NORMAL], a);

@@ -55,7 +55,7 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
     const struct ssg_scene *s = ctx->scene;
     float *lights = pack_lights(s);
     if (!lights)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "gbuffer", "out of memory for the lights");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the lights");
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "gbuffer.glsl", NULL);
     ssg_gl_scene_bind(scene);
@@ -81,8 +81,6 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
 {
     const struct ssg_gbuffer_consts *c = consts;
     int w = io->out[SSG_GBUFFER_OUT_DEPTH]->width, h = io->out[SSG_GBUFFER_OUT_DEPTH]->height;
-    if (w != ctx->frame->width || h != ctx->frame->height)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "gbuffer", "the outputs are not frame-sized");
     const struct ssg_gl_camera cam = {c->rot, c->eye, c->proj, c->near_z, c->far_z};
     struct ssg_gl_scene *scene = NULL;
     struct ssg_image *ids = ssg_gl_scratch(ctx, w, h, 2);

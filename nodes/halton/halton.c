@@ -186,9 +186,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (p->count < 1 || p->count > SSG_HALTON_MAX_COUNT || p->pattern < 1 ||
         p->pattern > SSG_HALTON_MAX_PATTERN || p->bases.count < 2 || p->bases.count > 3 ||
         check(params, ctx->frame, NULL, shapes, why, sizeof why) != SSG_OK) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "halton '%s': invalid parameters", ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
     }
     c->count = p->count;
     c->n = p->pattern;
@@ -206,29 +204,26 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 static const char *const mapping_choices[] = {"cosine", "uniform", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "count", .type = SSG_P_INT, .offset = offsetof(struct ssg_halton_params, count),
+    {.name = "count", SSG_FIELD_INT(struct ssg_halton_params, count),
      .def = 16, .min = 1, .max = SSG_HALTON_MAX_COUNT, .unit = "samples",
      .help = "kernel samples"},
-    {.name = "bases", .type = SSG_P_INTS, .offset = offsetof(struct ssg_halton_params, bases),
+    {.name = "bases", SSG_FIELD_INTS(struct ssg_halton_params, bases),
      .def_ints = {2, 3}, .def_ints_count = 2, .min_count = 2, .max_count = 3, .min = 2,
      .max = 997,
      .help = "distinct primes: elevation, azimuth, optional length (eq. 7)"},
-    {.name = "offset", .type = SSG_P_INT, .offset = offsetof(struct ssg_halton_params, offset),
+    {.name = "offset", SSG_FIELD_INT(struct ssg_halton_params, offset),
      .def = 1, .min = 0, .max = 1000000000,
      .help = "first sequence index (0 is the point 0,0,0)"},
-    {.name = "period", .type = SSG_P_INT, .offset = offsetof(struct ssg_halton_params, period),
+    {.name = "period", SSG_FIELD_INT(struct ssg_halton_params, period),
      .def = 0, .min = 0, .max = SSG_HALTON_MAX_COUNT, .unit = "samples",
      .help = "eq. 8 period N_g: blocks of N_g samples alike, prefixes quasi-uniform; 0 = off"},
-    {.name = "mapping", .type = SSG_P_ENUM,
-     .offset = offsetof(struct ssg_halton_params, mapping), .def = SSG_HALTON_COSINE,
+    {.name = "mapping", SSG_FIELD_ENUM(struct ssg_halton_params, mapping), .def = SSG_HALTON_COSINE,
      .choices = mapping_choices, .help = "direction density over the hemisphere"},
-    {.name = "falloff", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_halton_params, falloff), .def = 2, .min = 0.01, .max = 16,
+    {.name = "falloff", SSG_FIELD_FLOAT(struct ssg_halton_params, falloff), .def = 2, .min = 0.01, .max = 16,
      .help = "length = lerp(min_scale, 1, t^falloff): > 1 packs samples near the centre"},
-    {.name = "min_scale", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_halton_params, min_scale), .def = 0.1, .min = 0, .max = 1,
+    {.name = "min_scale", SSG_FIELD_FLOAT(struct ssg_halton_params, min_scale), .def = 0.1, .min = 0, .max = 1,
      .help = "shortest sample length as a fraction of the radius"},
-    {.name = "pattern", .type = SSG_P_INT, .offset = offsetof(struct ssg_halton_params, pattern),
+    {.name = "pattern", SSG_FIELD_INT(struct ssg_halton_params, pattern),
      .def = 4, .min = 1, .max = SSG_HALTON_MAX_PATTERN, .unit = "px",
      .help = "side of the tiled rotation pattern"},
 };

@@ -6,22 +6,11 @@
 #include "halton.h"
 #include "graph/node.h"
 
-static int shape_is(const struct ssg_image *im, int w, int h, int ch)
-{
-    return im && im->width == w && im->height == h && im->channels == ch;
-}
-
 enum ssg_err ssg_halton_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
     const struct ssg_halton_consts *c = consts;
     struct ssg_image *kernel = io->out[0], *rotation = io->out[1];
-    if (!shape_is(kernel, c->count, 1, 3) || !shape_is(rotation, c->n, c->n, 2)) {
-        ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0},
-                    "halton '%s': outputs must be %dx1x3 and %dx%dx2",
-                    ctx->instance ? ctx->instance : "", c->count, c->n, c->n);
-        return SSG_E_SIZE;
-    }
     memcpy(kernel->data, c->kernel, sizeof(float) * 3 * (size_t)c->count);
     memcpy(rotation->data, c->pattern, sizeof(float) * 2 * (size_t)c->n * (size_t)c->n);
     return SSG_OK;

@@ -76,6 +76,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "common/sampling.h"
 #include "hbao.h"
 
 /* Farthest-point order of m positions on a circle of m (distance min(|a - b|,
@@ -130,7 +131,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
+    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, rot, dep, why, why_len);
     if (e)
         return e;
     const struct ssg_shape *cnt = &in[SSG_HBAO_IN_COUNT];
@@ -143,27 +144,36 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
+/* e1 = (1, 0, a_u) / sqrt(1 + a_u^2) per column of a w-pixel row (it does not depend on
+   the row): e1x for the w columns, then e1z, the layout both backends read. */
+static void column_basis(const struct ssg_projection *sp, int w, float *e1)
+{
+    for (int x = 0; x < w; x++) {
+        float au = ((float)x + 0.5f - sp->cx) / sp->f;
+        float h = 1.0f / sqrtf(1.0f + au * au);
+        e1[x] = h;
+        e1[w + x] = au * h;
+    }
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_hbao_consts *c = consts;
     c->p = *(const struct ssg_hbao_params *)params;
-    c->proj = ssg_frame_projection(ctx->frame);
-    c->frame_width = ctx->frame->width;
-    c->frame_height = ctx->frame->height;
     /* prepare() may be reached without the table's range checks (a hand-built run):
        never index past the fixed arrays. */
     if (!(c->p.radius > 0) || c->p.directions < 1 ||
         c->p.directions > SSG_HBAO_MAX_DIRECTIONS || c->p.steps < 1 ||
         c->p.steps > SSG_HBAO_MAX_STEPS || !(c->p.bias >= 0) || !(c->p.strength >= 0) ||
-        !(c->p.max_screen_radius >= 0) || c->frame_width < 1 || c->frame_height < 1 ||
-        !(c->proj.f > 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "hbao '%s': needs radius > 0, 1..%d directions, 1..%d steps, bias and "
-                    "strength >= 0, and a frame with size and field of view",
-                    ctx->instance ? ctx->instance : "", SSG_HBAO_MAX_DIRECTIONS,
-                    SSG_HBAO_MAX_STEPS);
-        return SSG_E_VALUE;
-    }
+        !(c->p.max_screen_radius >= 0))
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, 1..%d directions, 1..%d "
+                             "steps, bias and strength >= 0", SSG_HBAO_MAX_DIRECTIONS,
+                             SSG_HBAO_MAX_STEPS);
+    const struct ssg_shape *pos = &ctx->in_shape[SSG_HBAO_IN_POSITION];
+    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
+    if (e)
+        return e;
+    column_basis(&c->proj, pos->width, c->e1);
     c->cos_bias = (float)cos(c->p.bias);
     c->sin_bias = (float)sin(c->p.bias);
     for (int k = 0; k < c->p.directions; k++) {
@@ -178,28 +188,24 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 static const char *const falloff_choices[] = {"linear", "none", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "directions", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_hbao_params, directions), .def = 8, .min = 1,
+    {.name = "directions", SSG_FIELD_INT(struct ssg_hbao_params, directions), .def = 8, .min = 1,
      .max = SSG_HBAO_MAX_DIRECTIONS, .help = "azimuths per pixel (uniform about the view "
      "vector, turned by the rotation pattern)"},
-    {.name = "steps", .type = SSG_P_INT, .offset = offsetof(struct ssg_hbao_params, steps),
+    {.name = "steps", SSG_FIELD_INT(struct ssg_hbao_params, steps),
      .def = 4, .min = 1, .max = SSG_HBAO_MAX_STEPS,
      .help = "depth samples marched along each direction"},
-    {.name = "radius", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_hbao_params, radius),
+    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, radius),
      .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",
      .help = "R: occluders farther than this from the pixel are ignored"},
-    {.name = "bias", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_hbao_params, bias),
+    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_hbao_params, bias),
      .def = 0.1, .min = 0, .max = 1.5, .unit = "radians",
      .help = "tangent-angle bias against self occlusion (0.1 rad ~ 5.7 degrees)"},
-    {.name = "strength", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_hbao_params, strength), .def = 1, .min = 0, .max = 16,
+    {.name = "strength", SSG_FIELD_FLOAT(struct ssg_hbao_params, strength), .def = 1, .min = 0, .max = 16,
      .help = "out = 1 - strength * occlusion, clamped to [0, 1]"},
-    {.name = "falloff", .type = SSG_P_ENUM,
-     .offset = offsetof(struct ssg_hbao_params, falloff), .def = SSG_HBAO_FALLOFF_LINEAR,
+    {.name = "falloff", SSG_FIELD_ENUM(struct ssg_hbao_params, falloff), .def = SSG_HBAO_FALLOFF_LINEAR,
      .choices = falloff_choices,
      .help = "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1"},
-    {.name = "max_screen_radius", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_hbao_params, max_screen_radius), .def = 0, .min = 0,
+    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, max_screen_radius), .def = 0, .min = 0,
      .max = 16384, .unit = "px",
      .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
 };

@@ -5,6 +5,7 @@
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
+#include "graph/image.h"
 #include "graph/node.h"
 
 #define SSG_HBAO_MAX_DIRECTIONS 64
@@ -33,15 +34,16 @@ struct ssg_hbao_params {
 
 struct ssg_hbao_consts {
     struct ssg_hbao_params p;    /* the parameters as given */
-    struct ssg_projection proj;  /* ssg_frame_projection of the frame */
-    int frame_width;             /* px, the frame proj belongs to; inputs of another size
-                                    get proj scaled to theirs */
-    int frame_height;            /* px */
+    struct ssg_projection proj;  /* the frame's camera as the G-buffer's resolution sees
+                                    it (ssg_sampling_projection) */
     float cos_bias, sin_bias;    /* of p.bias */
     float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
     float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
     int dir_rank[SSG_HBAO_MAX_DIRECTIONS];  /* place of direction k in the order the count
                                                input takes directions in (hbao.c) */
+    /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
+       [x] and e1z at [w + x]; read by both backends. */
+    float e1[2 * SSG_IMAGE_MAX_SIDE];
 };
 
 enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

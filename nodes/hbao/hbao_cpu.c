@@ -534,9 +534,6 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
                               const struct ssg_io *io)
 {
     const struct ssg_hbao_consts *c = consts;
-    enum ssg_err e = ssg_hbao_images_check(ctx, io);
-    if (e != SSG_OK)
-        return e;
     const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_HBAO_IN_NORMAL];
     const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
@@ -547,21 +544,19 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.nrm[ch] = ssg_image_plane(nrm, ch);
     j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
     j.depth_sign = dep ? 1.0f : -1.0f;
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp =
-        ssg_projection_scaled(&c->proj, c->frame_width, c->frame_height, j.w, j.h);
-    j.f = sp.f;
-    j.cx = sp.cx;
-    j.cy = sp.cy;
+    j.f = c->proj.f;
+    j.cx = c->proj.cx;
+    j.cy = c->proj.cy;
+    j.e1x = c->e1;
+    j.e1z = c->e1 + j.w;
     float *tables = ssg_hbao_pattern_unroll(rot, j.w, &j);
     if (!tables)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao",
-                             "out of memory for the pattern and column tables");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the pattern tables");
     j.pw = j.w + 2;
     j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
     if (!j.padded) {
         free(tables);
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "hbao", "out of memory for the padded depth");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
     }
     float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
     for (int x = 0; x < j.pw; x++)

@@ -1,5 +1,5 @@
 /* hbao_cpu.h - private to the CPU kernel of the `hbao` node: the job that hbao_cpu.c
- * (the march, the hot code) and hbao_pattern.c (the checks and tables prepared before
+ * (the march, the hot code) and hbao_pattern.c (the tables prepared before
  * it) share. Method and geometry are in hbao.c, the kernel's layout in hbao_cpu.c.
  * A job is filled once per run by ssg_hbao_run_cpu (its tables by
  * ssg_hbao_pattern_unroll and ssg_hbao_rows_pad), then only read by the bands that run
@@ -22,17 +22,15 @@ struct job {
        (x mod n, y mod n) and the step jitter u of the cell half a tile away (hbao.c). */
     const float *rot_c, *rot_s, *jitter;
     int n;                /* tile side; 1 without a pattern */
-    const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (it does not
-                               depend on the row) */
+    const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (consts'
+                               e1, made by prepare()) */
     const float *cnt;     /* per-pixel direction counts, NULL = all directions */
     float *out;
     int w, h;
     float f, cx, cy;      /* projection of this resolution */
 };
 
-/* Checks what check() checked on shapes, now on the images (hbao_pattern.c). */
-enum ssg_err ssg_hbao_images_check(const struct ssg_node_ctx *ctx, const struct ssg_io *io);
-/* Fills j's pattern rows and column tables; returns their one allocation or NULL. */
+/* Fills j's pattern rows; returns their one allocation or NULL. */
 float *ssg_hbao_pattern_unroll(const struct ssg_image *rot, int w, struct job *j);
 /* ssg_parallel_rows callback: fills rows [y0, y1) of j->padded (user is the job). */
 void ssg_hbao_rows_pad(void *user, int y0, int y1);

@@ -1,5 +1,5 @@
 /* hbao_pattern.c - what the CPU kernel of the `hbao` node reads, prepared before the
- * march (hbao_cpu.c): the checks of the images, the rotation pattern (Bavoil, Sainz and
+ * march (hbao_cpu.c): the rotation pattern (Bavoil, Sainz and
  * Dimitrov, "Image-Space Horizon-Based Ambient Occlusion", SIGGRAPH 2008: per-pixel
  * random rotation of the directions and jitter of the steps, from a tiled n x n texture)
  * unrolled to full rows, the per-column basis vector e1, and the depth plane padded by
@@ -16,52 +16,16 @@
 #pragma GCC optimize("no-trapping-math")
 #endif
 
-/* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
-   read out of bounds. */
-enum ssg_err ssg_hbao_images_check(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
-{
-    const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
-    const struct ssg_image *rot = io->in[SSG_HBAO_IN_ROTATION];
-    const struct ssg_image *dep = io->in[SSG_HBAO_IN_DEPTH];
-    if (!pos || pos->channels != 3 || !ssg_image_is(io->in[SSG_HBAO_IN_NORMAL], pos->width,
-                                                pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "position and normal must be 3-channel, one size");
-    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "hbao", "rotation must be n x n x 2");
-    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "depth must be 1-channel, the size of position");
-    if (io->in[SSG_HBAO_IN_COUNT] &&
-        !ssg_image_is(io->in[SSG_HBAO_IN_COUNT], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "count must be 1-channel, the size of position");
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "hbao",
-                             "output must be 1-channel, the size of position");
-    return SSG_OK;
-}
-
 /* The pattern unrolled to n full rows (see struct job; without a pattern one row of
-   cos 1, sin 0, u 1) and the columns' e1. Returns the one allocation holding them, or
-   NULL. Needs j->f and j->cx. */
+   cos 1, sin 0, u 1). Returns the one allocation holding them, or NULL. */
 float *ssg_hbao_pattern_unroll(const struct ssg_image *rot, int w, struct job *j)
 {
     int n = rot ? rot->width : 1;
     size_t row = (size_t)w, plane = (size_t)n * row, cells = (size_t)n * (size_t)n;
-    float *mem = malloc((3 * plane + 2 * row) * sizeof *mem);
+    float *mem = malloc(3 * plane * sizeof *mem);
     if (!mem)
         return NULL;
     float *rc = mem, *rs = mem + plane, *ju = mem + 2 * plane;
-    float *e1x = mem + 3 * plane, *e1z = e1x + row;
-    for (int x = 0; x < w; x++) {
-        float au = ((float)x + 0.5f - j->cx) / j->f;
-        float h = 1.0f / sqrtf(1.0f + au * au);
-        e1x[x] = h;
-        e1z[x] = au * h;
-    }
-    j->e1x = e1x;
-    j->e1z = e1z;
     for (int y = 0; y < n; y++)
         for (int x = 0; x < w; x++) {
             size_t o = (size_t)y * row + (size_t)x;

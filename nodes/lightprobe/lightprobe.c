@@ -46,16 +46,16 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     const struct ssg_lightprobe_params *p = params;
     struct ssg_lightprobe_consts *c = consts;
     if (p->count < SSG_LIGHTS_MIN || p->count > SSG_LIGHTS_MAX)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "lightprobe", "count out of range");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "count out of range");
     if (!ctx->scene || !ctx->scene->env)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "lightprobe", "needs a scene");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
     if (!ctx->scene->env->has_light) {
         char what[700];
         snprintf(what, sizeof what, "scene '%s' has no environment light: the hybrid's "
                  "global part is lit by the environment alone (add environment(image="
                  "\"probe.exr\") or environment(color=[...]) to the scene)",
                  ctx->scene->path);
-        return ssg_node_fail(ctx, SSG_E_VALUE, "lightprobe", what);
+        return ssg_node_fail(ctx, SSG_E_VALUE, "%s", what);
     }
     c->count = p->count;
     float *dirs = malloc(sizeof(float) * 3 * (size_t)p->count);
@@ -69,18 +69,16 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         store_lights(c, dirs, irradiance);
     free(dirs);
     free(irradiance);
-    return e ? ssg_node_fail(ctx, e, "lightprobe", "out of memory") : SSG_OK;
+    return e ? ssg_node_fail(ctx, e, "out of memory") : SSG_OK;
 }
 
 static const char *const sampling_choices[] = {"uniform", "importance", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "count", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_lightprobe_params, count), .def = 128,
+    {.name = "count", SSG_FIELD_INT(struct ssg_lightprobe_params, count), .def = 128,
      .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX, .unit = "lights",
      .help = "directional lights N (the paper: 128 and 512, 2048 for its reference)"},
-    {.name = "sampling", .type = SSG_P_ENUM,
-     .offset = offsetof(struct ssg_lightprobe_params, sampling), .def = SSG_LIGHTPROBE_UNIFORM,
+    {.name = "sampling", SSG_FIELD_ENUM(struct ssg_lightprobe_params, sampling), .def = SSG_LIGHTPROBE_UNIFORM,
      .choices = sampling_choices,
      .help = "uniform: equal-area Fibonacci set (the paper); importance: denser where the "
              "probe is bright"},

@@ -7,8 +7,6 @@ enum ssg_err ssg_lightprobe_run_gl(const struct ssg_node_ctx *ctx, const void *c
                                    const struct ssg_io *io)
 {
     const struct ssg_lightprobe_consts *c = consts;
-    if (!ssg_image_is(io->out[0], c->count, 2, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "lightprobe", "output must be count x 2 x 3");
     const float *planes[1] = {c->lights};
     return ssg_gl_fill(ctx, planes, io->out, 1);
 }

@@ -9,14 +9,13 @@
 #include "mosaic.h"
 
 static const struct ssg_param_desc params[] = {
-    {.name = "columns", .type = SSG_P_INT, .offset = offsetof(struct ssg_mosaic_params, columns),
+    {.name = "columns", SSG_FIELD_INT(struct ssg_mosaic_params, columns),
      .def = 0, .min = 0, .max = 16, .help = "cells a row; 0 = about square"},
-    {.name = "labels", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_mosaic_params, labels),
+    {.name = "labels", SSG_FIELD_BOOL(struct ssg_mosaic_params, labels),
      .def = 1, .help = "write each image's name in its cell (needs the DejaVu Sans font)"},
-    {.name = "gap", .type = SSG_P_INT, .offset = offsetof(struct ssg_mosaic_params, gap),
+    {.name = "gap", SSG_FIELD_INT(struct ssg_mosaic_params, gap),
      .def = 4, .min = 0, .max = 256, .unit = "px", .help = "black space between cells"},
-    {.name = "font_size", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_mosaic_params, font_size), .def = 0, .min = 0, .max = 512,
+    {.name = "font_size", SSG_FIELD_INT(struct ssg_mosaic_params, font_size), .def = 0, .min = 0, .max = 512,
      .unit = "px", .help = "label height; 0 = a sixteenth of a cell, at least 10"},
 };
 

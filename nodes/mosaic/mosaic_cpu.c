@@ -62,14 +62,14 @@ enum ssg_err ssg_mosaic_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     struct ssg_image *out = io->out[0];
     int n = io->extra_count;
     if (n < 1)
-        return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "mosaic", "needs at least one "
+        return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "needs at least one "
                              "name=node.port argument to show");
     int cols = p->columns > 0 ? p->columns : (int)ceil(sqrt((double)n));
     cols = cols > n ? n : cols;
     int rows = (n + cols - 1) / cols;
     if ((out->width - p->gap * (cols - 1)) / cols < 1 ||
         (out->height - p->gap * (rows - 1)) / rows < 1)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "mosaic", "the frame is too small for that many "
+        return ssg_node_fail(ctx, SSG_E_SIZE, "the frame is too small for that many "
                              "cells with that gap");
     memset(out->data, 0, sizeof(float) * 3 * (size_t)out->width * out->height);
     for (int i = 0; i < n; i++) {

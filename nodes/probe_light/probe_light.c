@@ -37,6 +37,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     (void)frame;
     const struct ssg_shape *lights = &in[SSG_PROBE_LIGHT_LIGHTS];
     const struct ssg_shape *maps = &in[SSG_PROBE_LIGHT_SHADOWMAPS];
+    if (lights->width > SSG_LIGHTS_MAX) {
+        snprintf(why, why_len, "lights has %d lights, at most %d", lights->width,
+                 SSG_LIGHTS_MAX);
+        return SSG_E_SIZE;
+    }
     if (maps->channels && maps->channels != lights->width) {
         snprintf(why, why_len, "shadowmaps has %d maps but lights has %d lights: connect "
                  "the shadowmaps node made from the same light list", maps->channels,
@@ -72,14 +77,21 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     const struct ssg_probe_light_params *p = params;
     struct ssg_probe_light_consts *c = consts;
-    enum ssg_err e = ssg_trace_camera(ctx, "probe_light", c->rot, c->eye);
+    enum ssg_err e = ssg_trace_camera(ctx, c->rot, c->eye);
     if (e)
         return e;
     if (p->noise_tile < 1 || p->noise_tile > SSG_PROBE_LIGHT_MAX_TILE)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "probe_light", "noise_tile out of range");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "noise_tile out of range");
     c->p = *p;
     c->sphere = ssg_scene_bounding_sphere(ctx->scene);
     make_noise(p->noise_tile, ctx->frame ? ctx->frame->seed : 1, c->noise);
+    const struct ssg_shape *maps = &ctx->in_shape[SSG_PROBE_LIGHT_SHADOWMAPS];
+    c->count = ctx->in_shape[SSG_PROBE_LIGHT_LIGHTS].width;
+    c->res = maps->channels ? maps->width : 0;
+    float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
+    c->offset_world = c->p.offset * texel;
+    c->slope_world = c->p.slope_offset * texel;
+    ssg_probe_light_rotations(c->count, c->cos_sin);
     return SSG_OK;
 }
 
@@ -120,46 +132,20 @@ void ssg_probe_light_rotations(int count, float *cos_sin)
     }
 }
 
-enum ssg_err ssg_probe_light_check_run(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                                       int *count, int *res)
-{
-    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
-    const struct ssg_image *lights = io->in[SSG_PROBE_LIGHT_LIGHTS];
-    const struct ssg_image *maps = io->in[SSG_PROBE_LIGHT_SHADOWMAPS];
-    if (!pos || pos->channels != 3 ||
-        !ssg_image_is(io->in[SSG_PROBE_LIGHT_NORMAL], pos->width, pos->height, 3) ||
-        !ssg_image_is(io->in[SSG_PROBE_LIGHT_ALBEDO], pos->width, pos->height, 3) ||
-        !ssg_image_is(io->out[0], pos->width, pos->height, 3) ||
-        !ssg_image_is(io->out[1], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "probe_light", "position, normal, albedo and "
-                             "the outputs must have one size (3, 3, 3, 3 and 1 channels)");
-    if (!lights || lights->height != 2 || lights->channels != 3 ||
-        (maps && (maps->channels != lights->width || maps->width != maps->height)))
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "probe_light", "lights must be count x 2 x "
-                             "3 and shadowmaps R x R with one channel per light");
-    *count = lights->width;
-    *res = maps ? maps->width : 0;
-    return SSG_OK;
-}
-
 static const struct ssg_param_desc params[] = {
-    {.name = "offset", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_probe_light_params, offset), .def = 1.5, .min = 0,
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, offset), .def = 1.5, .min = 0,
      .max = 1000, .unit = "texels",
      .help = "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "
              "self-shadowing, lets light through thin occluders"},
-    {.name = "slope_offset", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_probe_light_params, slope_offset), .def = 2, .min = 0,
+    {.name = "slope_offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, slope_offset), .def = 2, .min = 0,
      .max = 1000, .unit = "texels",
      .help = "more offset where the light grazes the surface: + slope_offset x tan(N, l) "
              "texels (tan up to 10), against self-shadowing of surfaces seen edge-on by a light"},
-    {.name = "noise_radius", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_probe_light_params, noise_radius), .def = 1, .min = 0,
+    {.name = "noise_radius", SSG_FIELD_FLOAT(struct ssg_probe_light_params, noise_radius), .def = 1, .min = 0,
      .max = 64, .unit = "texels",
      .help = "jitter of the map lookup (fig. 8): smoother shadows, needs a larger offset; "
              "0 = none"},
-    {.name = "noise_tile", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_probe_light_params, noise_tile), .def = 4, .min = 1,
+    {.name = "noise_tile", SSG_FIELD_INT(struct ssg_probe_light_params, noise_tile), .def = 4, .min = 1,
      .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px", .help = "side of the tiled jitter pattern"},
 };
 

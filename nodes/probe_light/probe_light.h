@@ -32,6 +32,12 @@ struct ssg_probe_light_consts {
     struct ssg_bounding_sphere sphere;  /* the maps' fit (nodes/common/shadowmap.h) */
     /* the jitter tile: offsets in the unit disc, x plane then y plane, tile^2 each */
     float noise[2 * SSG_PROBE_LIGHT_MAX_TILE * SSG_PROBE_LIGHT_MAX_TILE];
+    /* Of the inputs' shapes, for both backends: */
+    int count;                          /* lights N (the light list's width) */
+    int res;                            /* the maps' side R; 0 = no shadow maps */
+    float offset_world, slope_world;    /* offset and slope_offset in scene units (texels
+                                           of 2 radius / R) */
+    float cos_sin[2 * SSG_LIGHTS_MAX];  /* ssg_probe_light_rotations of the N lights */
 };
 
 /* What one light is to a view-space point p (floats, in this order):
@@ -46,8 +52,6 @@ void ssg_probe_light_frame(const struct ssg_probe_light_consts *c, const float l
 /* cos and sin of light i's jitter rotation (i times the golden angle), 2 N floats. */
 void ssg_probe_light_rotations(int count, float *cos_sin);
 
-enum ssg_err ssg_probe_light_check_run(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                                       int *count, int *res);
 enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                      const struct ssg_io *io);
 enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

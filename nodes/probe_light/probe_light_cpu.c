@@ -123,29 +123,19 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
                                      const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
-    int count, res;
-    enum ssg_err e = ssg_probe_light_check_run(ctx, io, &count, &res);
-    if (e)
-        return e;
+    const int count = c->count, res = c->res;
     float *frames = malloc(sizeof(float) * SSG_PROBE_LIGHT_FRAME * (size_t)count);
-    float *cos_sin = malloc(sizeof(float) * 2 * (size_t)count);
-    if (!frames || !cos_sin) {
-        free(frames);
-        free(cos_sin);
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "probe_light", "out of memory");
-    }
+    if (!frames)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const float *l = io->in[SSG_PROBE_LIGHT_LIGHTS]->data;
     for (int i = 0; i < count; i++) {
         float dir[3] = {l[i], l[2 * count + i], l[4 * count + i]};
         ssg_probe_light_frame(c, dir, res ? res : 1, frames + SSG_PROBE_LIGHT_FRAME * i);
     }
-    ssg_probe_light_rotations(count, cos_sin);
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
-    float texel = res ? 2.0f * c->sphere.radius / (float)res : 0.0f;
-    struct job j = {c, io, frames, cos_sin, count, res, pos->width, pos->height,
-                    c->p.offset * texel, c->p.slope_offset * texel};
+    struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
+                    c->offset_world, c->slope_world};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     free(frames);
-    free(cos_sin);
     return SSG_OK;
 }

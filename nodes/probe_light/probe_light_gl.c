@@ -44,9 +44,8 @@ static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_li
     ssg_gl_int(p, "res", res);
     ssg_gl_int(p, "tile", tile);
     ssg_gl_float(p, "noise_radius", c->p.noise_radius);
-    float texel = res ? 2.0f * c->sphere.radius / (float)res : 0.0f;
-    ssg_gl_float(p, "offset_world", c->p.offset * texel);
-    ssg_gl_float(p, "slope_world", c->p.slope_offset * texel);
+    ssg_gl_float(p, "offset_world", c->offset_world);
+    ssg_gl_float(p, "slope_world", c->slope_world);
     ssg_gl_dispatch(p, pos->width, pos->height);
 }
 
@@ -54,25 +53,17 @@ enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
-    int count, res;
-    enum ssg_err e = ssg_probe_light_check_run(ctx, io, &count, &res);
-    if (e)
-        return e;
-    float *cos_sin = malloc(sizeof(float) * 2 * (size_t)count);
+    const int count = c->count, res = c->res;
     struct ssg_image *frames = ssg_gl_scratch(ctx, count, 1, SSG_PROBE_LIGHT_FRAME);
-    if (!cos_sin || !frames) {
-        free(cos_sin);
-        ssg_gl_scratch_release(&frames);
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "probe_light", "out of memory");
-    }
-    ssg_probe_light_rotations(count, cos_sin);
+    if (!frames)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    enum ssg_err e;
     struct ssg_gl_pass p;
     frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_LIGHTS], res ? res : 1, frames, &p);
     if (!(e = ssg_gl_pass_end(&p))) {
-        light_pass(ctx, c, io, frames, cos_sin, count, res, &p);
+        light_pass(ctx, c, io, frames, c->cos_sin, count, res, &p);
         e = ssg_gl_pass_end(&p);
     }
-    free(cos_sin);
     ssg_gl_scratch_release(&frames);
     return e;
 }

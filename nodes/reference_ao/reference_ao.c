@@ -69,17 +69,15 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_reference_ao_consts *c = consts;
-    const char *name = ctx->instance ? ctx->instance : "";
     c->p = *(const struct ssg_reference_ao_params *)params;
-    enum ssg_err e = ssg_trace_camera(ctx, "reference_ao", c->rot, c->eye);
+    enum ssg_err e = ssg_trace_camera(ctx, c->rot, c->eye);
     if (e)
         return e;
     if (c->p.rays < 1 || c->p.rays > SSG_REFERENCE_AO_MAX_RAYS || !(c->p.max_distance > 0) ||
         !(c->p.offset >= 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "reference_ao '%s': needs "
-                    "1 <= rays <= %d, max_distance > 0 and offset >= 0", name,
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs "
+                    "1 <= rays <= %d, max_distance > 0 and offset >= 0",
                     SSG_REFERENCE_AO_MAX_RAYS);
-        return SSG_E_VALUE;
     }
     c->seed = ctx->frame->seed;
     ssg_hammersley_disk(c->p.rays, c->u, c->c, c->s);
@@ -87,16 +85,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "rays", .type = SSG_P_INT, .offset = offsetof(struct ssg_reference_ao_params, rays),
+    {.name = "rays", SSG_FIELD_INT(struct ssg_reference_ao_params, rays),
      .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS,
      .help = "cosine-weighted rays per pixel; the standard error is sqrt(V (1 - V) / rays) "
              "or less (stratified)"},
-    {.name = "max_distance", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_reference_ao_params, max_distance), .def = 0.5,
+    {.name = "max_distance", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, max_distance), .def = 0.5,
      .min = 1e-6, .max = 1e30, .unit = "scene units",
      .help = "occluders farther along a ray do not count (the meaning of ssao's radius)"},
-    {.name = "offset", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_reference_ao_params, offset), .def = 1e-3, .min = 0,
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, offset), .def = 1e-3, .min = 0,
      .max = 1e6, .unit = "scene units",
      .help = "ray origins move this far along the normal and this far towards the camera, "
              "against self-intersection (at least 1024 float ulps of the point's "

@@ -117,13 +117,6 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
     const struct ssg_image *pos = io->in[SSG_REFERENCE_AO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_REFERENCE_AO_IN_NORMAL];
     struct ssg_image *out = io->out[0];
-    if (nrm->width != pos->width || nrm->height != pos->height || out->width != pos->width ||
-        out->height != pos->height) {
-        ssg_diag_at(ctx->diags, SSG_E_SIZE, (struct ssg_loc){0}, "reference_ao '%s': "
-                    "position, normal and out must have one size",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_SIZE;
-    }
     struct job j = {.c = consts, .rt = ctx->scene->rt, .scene = ctx->scene, .out = out->data, .w = pos->width,
                     .h = pos->height};
     for (int i = 0; i < 3; i++) {

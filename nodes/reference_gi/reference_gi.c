@@ -98,16 +98,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_reference_gi_consts *c = consts;
     const struct ssg_scene *s = ctx->scene;
-    const char *name = ctx->instance ? ctx->instance : "";
     c->p = *(const struct ssg_reference_gi_params *)params;
-    enum ssg_err e = ssg_trace_camera(ctx, "reference_gi", c->rot, c->eye);
+    enum ssg_err e = ssg_trace_camera(ctx, c->rot, c->eye);
     if (e)
         return e;
     if (c->p.samples < 1 || c->p.samples > SSG_REFERENCE_GI_MAX_SAMPLES ||
         !(c->p.offset >= 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0}, "reference_gi '%s': needs "
-                    "1 <= samples <= %d and offset >= 0", name, SSG_REFERENCE_GI_MAX_SAMPLES);
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs "
+                    "1 <= samples <= %d and offset >= 0", SSG_REFERENCE_GI_MAX_SAMPLES);
     }
     c->seed = ctx->frame->seed;
     c->use_env = c->p.environment && s->env && s->env->has_light;
@@ -116,23 +114,19 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "samples", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_reference_gi_params, samples), .def = 64, .min = 1,
+    {.name = "samples", SSG_FIELD_INT(struct ssg_reference_gi_params, samples), .def = 64, .min = 1,
      .max = SSG_REFERENCE_GI_MAX_SAMPLES,
      .help = "environment samples (direct term) and bounce paths per pixel; the noise falls "
              "as 1 / sqrt(samples) or faster (stratified)"},
-    {.name = "bounce", .type = SSG_P_BOOL,
-     .offset = offsetof(struct ssg_reference_gi_params, bounce), .def = 1,
+    {.name = "bounce", SSG_FIELD_BOOL(struct ssg_reference_gi_params, bounce), .def = 1,
      .help = "trace one diffuse bounce; false: the bounce output is 0 and no bounce rays "
              "are cast"},
-    {.name = "offset", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_reference_gi_params, offset), .def = 1e-3, .min = 0,
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_gi_params, offset), .def = 1e-3, .min = 0,
      .max = 1e6, .unit = "scene units",
      .help = "ray origins move this far along the normal and this far back along the "
              "arriving ray, against self-intersection (at least 1024 float ulps of the "
              "point's coordinates)"},
-    {.name = "environment", .type = SSG_P_BOOL,
-     .offset = offsetof(struct ssg_reference_gi_params, environment), .def = 1,
+    {.name = "environment", SSG_FIELD_BOOL(struct ssg_reference_gi_params, environment), .def = 1,
      .help = "include the scene's environment light (directly and at the bounce's end)"},
 };
 

@@ -350,13 +350,6 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
     const struct ssg_image *nrm = io->in[SSG_REFERENCE_GI_IN_NORMAL];
     const struct ssg_image *alb = io->in[SSG_REFERENCE_GI_IN_ALBEDO];
     const int w = pos->width, h = pos->height;
-    int ok = ssg_image_is(pos, w, h, 3) && ssg_image_is(nrm, w, h, 3) &&
-             ssg_image_is(alb, w, h, 3);
-    for (int i = 0; i < 3; i++)
-        ok = ok && ssg_image_is(io->out[i], w, h, 3);
-    if (!ok)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "reference_gi", "position, normal, albedo "
-                             "and the outputs must be 3-channel images of one size");
     struct job j = {.c = consts, .scene = ctx->scene, .w = w, .h = h};
     const struct ssg_reference_gi_consts *c = consts;
     j.lit = ctx->scene->light_count > 0 || c->use_env;

@@ -37,21 +37,13 @@ enum ssg_err ssg_shadowmaps_check_run(const struct ssg_node_ctx *ctx,
                                       const struct ssg_shadowmaps_params *p,
                                       const struct ssg_io *io)
 {
-    const struct ssg_image *lights = io->in[0];
     if (!ctx->scene)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "shadowmaps", "needs a scene");
-    if (!lights || lights->channels != 3 || lights->height != 2)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "shadowmaps",
-                             "lights must be a count x 2 x 3 light list");
-    if (!ssg_image_is(io->out[0], p->resolution, p->resolution, lights->width))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "shadowmaps",
-                             "maps must be resolution x resolution, one channel per light");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
     return SSG_OK;
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "resolution", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_shadowmaps_params, resolution), .def = 256,
+    {.name = "resolution", SSG_FIELD_INT(struct ssg_shadowmaps_params, resolution), .def = 256,
      .min = SSG_SHADOW_RES_MIN, .max = SSG_SHADOW_RES_MAX, .unit = "texels",
      .help = "side of every map (the paper's second knob: fewer texels, more bleeding)"},
 };

@@ -56,7 +56,7 @@ enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *
     int n = lights->width;
     struct ssg_shadow_frame *frames = malloc(sizeof *frames * (size_t)n);
     if (!frames)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "shadowmaps", "out of memory");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
     for (int i = 0; i < n; i++) {
         float l[3];

@@ -65,6 +65,7 @@
  * SSAO can find anyway. Normals are taken as unit (node.h); others are normalised. */
 #include <stdio.h>
 
+#include "common/sampling.h"
 #include "ssao.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
@@ -90,7 +91,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  ker->width, ker->height, ker->channels);
         return SSG_E_CHANNELS;
     }
-    enum ssg_err e = ssg_check_rotation_depth(pos, rot, dep, why, why_len);
+    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, rot, dep, why, why_len);
     if (e)
         return e;
     const struct ssg_shape *cnt = &in[SSG_SSAO_IN_COUNT];
@@ -107,38 +108,29 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_ssao_consts *c = consts;
     c->p = *(const struct ssg_ssao_params *)params;
-    c->proj = ssg_frame_projection(ctx->frame);
-    c->frame_width = ctx->frame->width;
-    c->frame_height = ctx->frame->height;
-    if (!(c->p.radius > 0) || c->frame_width < 1 || c->frame_height < 1 || !(c->proj.f > 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "ssao '%s': needs radius > 0 and a frame with size and field of view",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
-    }
-    return SSG_OK;
+    if (!(c->p.radius > 0))
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0");
+    return ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->proj);
 }
 
 static const char *const range_choices[] = {"none", "hard", "smooth", NULL};
 static const char *const mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "radius", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_ssao_params, radius),
+    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, radius),
      .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",
      .help = "hemisphere radius around the pixel"},
-    {.name = "bias", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_ssao_params, bias),
+    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_ssao_params, bias),
      .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units",
      .help = "a sample is occluded only when the surface is this much in front of it"},
-    {.name = "power", .type = SSG_P_FLOAT, .offset = offsetof(struct ssg_ssao_params, power),
+    {.name = "power", SSG_FIELD_FLOAT(struct ssg_ssao_params, power),
      .def = 1, .min = 0, .max = 64, .help = "intensity: out = visibility^power"},
-    {.name = "range_check", .type = SSG_P_ENUM,
-     .offset = offsetof(struct ssg_ssao_params, range_check), .def = SSG_SSAO_RANGE_SMOOTH,
+    {.name = "range_check", SSG_FIELD_ENUM(struct ssg_ssao_params, range_check), .def = SSG_SSAO_RANGE_SMOOTH,
      .choices = range_choices,
      .help = "how occluders far in depth from the pixel are discounted"},
-    {.name = "max_screen_radius", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_ssao_params, max_screen_radius), .def = 0, .min = 0,
+    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, max_screen_radius), .def = 0, .min = 0,
      .max = 16384, .unit = "px", .help = "caps the projected radius; 0 = no cap"},
-    {.name = "mode", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_ssao_params, mode),
+    {.name = "mode", SSG_FIELD_ENUM(struct ssg_ssao_params, mode),
      .def = SSG_SSAO_MODE_HEMISPHERE, .choices = mode_choices,
      .help = "hemisphere about the normal; sphere (normal-free, Knuth and Kohlhammer); "
              "disc (screen-space depth samples, Crytek 2007)"},

@@ -34,10 +34,9 @@ struct ssg_ssao_params {
 
 struct ssg_ssao_consts {
     struct ssg_ssao_params p; /* the parameters as given */
-    struct ssg_projection proj; /* ssg_frame_projection of the frame */
-    int frame_width;            /* px, the frame proj belongs to; inputs of another size
-                                   (a subsampled G-buffer) get proj scaled to theirs */
-    int frame_height;           /* px */
+    struct ssg_projection proj; /* the frame's camera as seen by the G-buffer's
+                                   resolution (ssg_projection_scaled: a subsampled
+                                   G-buffer sees the same camera) */
 };
 
 enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

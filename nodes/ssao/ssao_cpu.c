@@ -472,45 +472,10 @@ static void band(void *user, int y0, int y1)
     }
 }
 
-/* Checks what check() checked on shapes, now on the images, so a hand-built run cannot
-   read out of bounds. */
-static enum ssg_err check_images(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                                 int mode)
-{
-    const struct ssg_image *pos = io->in[SSG_SSAO_IN_POSITION];
-    const struct ssg_image *ker = io->in[SSG_SSAO_IN_KERNEL];
-    const struct ssg_image *rot = io->in[SSG_SSAO_IN_ROTATION];
-    const struct ssg_image *dep = io->in[SSG_SSAO_IN_DEPTH];
-    const struct ssg_image *nrm = io->in[SSG_SSAO_IN_NORMAL];
-    const int needs_normal = mode == SSG_SSAO_MODE_HEMISPHERE;
-    if (!pos || pos->channels != 3 || ((nrm || needs_normal) &&
-                                       !ssg_image_is(nrm, pos->width, pos->height, 3)))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
-                             "position and normal must be 3-channel, one size");
-    if (!ker || ker->channels != 3 || ker->height != 1 || ker->width < 1)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "ssao", "kernel must be count x 1 x 3");
-    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "ssao", "rotation must be n x n x 2");
-    if (dep && !ssg_image_is(dep, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
-                             "depth must be 1-channel, the size of position");
-    if (io->in[SSG_SSAO_IN_COUNT] &&
-        !ssg_image_is(io->in[SSG_SSAO_IN_COUNT], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
-                             "count must be 1-channel, the size of position");
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao",
-                             "output must be 1-channel, the size of position");
-    return SSG_OK;
-}
-
 enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io)
 {
     const struct ssg_ssao_consts *c = consts;
-    enum ssg_err e = check_images(ctx, io, c->p.mode);
-    if (e != SSG_OK)
-        return e;
     const struct ssg_image *pos = io->in[SSG_SSAO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_SSAO_IN_NORMAL];
     const struct ssg_image *ker = io->in[SSG_SSAO_IN_KERNEL];
@@ -527,12 +492,9 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
     j.cnt = io->in[SSG_SSAO_IN_COUNT] ? io->in[SSG_SSAO_IN_COUNT]->data : NULL;
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp =
-        ssg_projection_scaled(&c->proj, c->frame_width, c->frame_height, j.w, j.h);
-    j.f = sp.f;
-    j.cx = sp.cx;
-    j.cy = sp.cy;
+    j.f = c->proj.f;
+    j.cx = c->proj.cx;
+    j.cy = c->proj.cy;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     return SSG_OK;
 }

@@ -1,8 +1,8 @@
 /* ssao_gl.c - GL side of the `ssao` node (method in ssao.c, shader ssao.glsl): one pass,
- * one invocation per pixel, every mode, range check and optional input. What the CPU
- * kernel works out once per run (the projection of this resolution, the cap's factor,
- * 1 / K) is worked out here the same way and passed as uniforms, so both backends start
- * from the same bits. */
+ * one invocation per pixel, every mode, range check and optional input. The projection
+ * of this resolution comes from prepare(); what the CPU kernel works out once per run
+ * (the cap's factor, 1 / K) is worked out here the same way and passed as uniforms, so
+ * both backends start from the same bits. */
 #include "gl/gl.h"
 #include "ssao.h"
 
@@ -13,12 +13,7 @@ enum ssg_err ssg_ssao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_image *pos = io->in[SSG_SSAO_IN_POSITION];
     const struct ssg_image *ker = io->in[SSG_SSAO_IN_KERNEL];
     struct ssg_image *out = io->out[0];
-    if (!pos || !ker || ker->width < 1 || !ssg_image_is(out, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssao", "inputs do not match the output");
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp = ssg_projection_scaled(&c->proj, c->frame_width,
-                                                     c->frame_height, pos->width,
-                                                     pos->height);
+    const struct ssg_projection sp = c->proj;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssao.glsl", NULL);
     ssg_gl_input(&p, "position", pos);

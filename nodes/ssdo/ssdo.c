@@ -86,10 +86,7 @@ static enum ssg_err prepare_lights(const struct ssg_node_ctx *ctx, const float r
 {
     const struct ssg_scene *s = ctx->scene;
     if (s->light_count > SSG_SSDO_MAX_LIGHTS) {
-        ssg_diag_at(ctx->diags, SSG_E_SCENE, (struct ssg_loc){0},
-                    "ssdo '%s': the scene has %d lights, at most %d are supported",
-                    ctx->instance ? ctx->instance : "", s->light_count, SSG_SSDO_MAX_LIGHTS);
-        return SSG_E_SCENE;
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene has %d lights, at most %d are supported", s->light_count, SSG_SSDO_MAX_LIGHTS);
     }
     c->light_count = s->light_count;
     for (int l = 0; l < s->light_count; l++) {
@@ -147,17 +144,19 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_ssdo_consts *c = consts;
     c->p = *(const struct ssg_ssdo_params *)params;
-    c->proj = ssg_frame_projection(ctx->frame);
-    c->frame_width = ctx->frame->width;
-    c->frame_height = ctx->frame->height;
-    if (!(c->p.g.radius > 0) || c->frame_width < 1 || c->frame_height < 1 ||
-        !(c->proj.f > 0) || c->p.lobe < 1 || c->p.lobe > 64 ||
-        (c->p.channels != 1 && c->p.channels != 3)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "ssdo '%s': needs radius > 0, lobe 1..64, channels 1 or 3 and a frame "
-                    "with size and field of view", ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
-    }
+    if (!(c->p.g.radius > 0) || c->p.lobe < 1 || c->p.lobe > 64 ||
+        (c->p.channels != 1 && c->p.channels != 3))
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, lobe 1..64, channels 1 or 3");
+    enum ssg_err e =
+        ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSDO_IN_POSITION], &c->proj);
+    if (e)
+        return e;
+    c->out_channels = ctx->out_shape[0].channels;
+    /* The solid angle 2 pi / n of one of n samples, for every n up to the kernel's
+       width (the count input picks n per pixel), rounded from double. */
+    const int k = ctx->in_shape[SSG_SSDO_IN_KERNEL].width;
+    for (int n = 1; n <= k && n <= SSG_IMAGE_MAX_SIDE; n++)
+        c->dw_tab[n] = (float)(2.0 * M_PI / n);
     return prepare_light(ctx, c);
 }
 
@@ -165,16 +164,15 @@ static const char *const mode_choices[] = {"modulation", "radiance", NULL};
 
 static const struct ssg_param_desc params[] = {
     SSG_SSDO_GEOM_PARAMS(struct ssg_ssdo_params),
-    {.name = "mode", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_ssdo_params, mode),
+    {.name = "mode", SSG_FIELD_ENUM(struct ssg_ssdo_params, mode),
      .def = SSG_SSDO_MODE_MODULATION, .choices = mode_choices,
      .help = "modulation: lit / unoccluded light (one-step, sec. 4.1); radiance: albedo/pi "
              "* directional light (eq. 2)"},
-    {.name = "channels", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_ssdo_params, channels), .def = 1, .min = 1, .max = 3,
+    {.name = "channels", SSG_FIELD_INT(struct ssg_ssdo_params, channels), .def = 1, .min = 1, .max = 3,
      .help = "modulation: 1 = one factor of the luminances, 3 = one per colour channel"},
-    {.name = "bounce", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_ssdo_params, bounce),
+    {.name = "bounce", SSG_FIELD_BOOL(struct ssg_ssdo_params, bounce),
      .def = 0, .help = "compute the indirect bounce output (needs albedo and light)"},
-    {.name = "lobe", .type = SSG_P_INT, .offset = offsetof(struct ssg_ssdo_params, lobe),
+    {.name = "lobe", SSG_FIELD_INT(struct ssg_ssdo_params, lobe),
      .def = 4, .min = 1, .max = 64,
      .help = "cosine power of the cone over which a point or directional light is sampled"},
 };
@@ -197,28 +195,6 @@ static const struct ssg_port_desc outputs[] = {
     {.name = "bounce", .types = SSG_T_COLOR,
      .doc = "one indirect bounce, albedo * sum F_i L_i; 0 when bounce=false"},
 };
-
-enum ssg_err ssg_ssdo_check_run(const struct ssg_node_ctx *ctx,
-                                const struct ssg_ssdo_consts *c, const struct ssg_io *io,
-                                int *out_channels)
-{
-    const int radiance = c->p.mode == SSG_SSDO_MODE_RADIANCE;
-    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "ssdo", radiance || c->p.bounce,
-                                           c->p.bounce);
-    if (e != SSG_OK)
-        return e;
-    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    *out_channels = radiance || c->p.channels == 3 ? 3 : 1;
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, *out_channels) ||
-        !ssg_image_is(io->out[1], pos->width, pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo", "outputs must be the size of position "
-                             "with the channels check() gave");
-    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
-    if (cnt && !ssg_image_is(cnt, pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "ssdo",
-                             "count must be 1-channel, the size of position");
-    return SSG_OK;
-}
 
 const struct ssg_node_desc ssg_node_ssdo = {
     .name = "ssdo",

@@ -7,6 +7,7 @@
 #define SSG_SSDO_H
 
 #include "scene/env.h"
+#include "graph/image.h"
 #include "graph/node.h"
 #include "ssdo_sampling.h"
 
@@ -40,32 +41,28 @@ enum ssg_ssdo_env { SSG_SSDO_ENV_CONSTANT, SSG_SSDO_ENV_CUBE };
 
 struct ssg_ssdo_consts {
     struct ssg_ssdo_params p;   /* the parameters as given */
-    struct ssg_projection proj; /* ssg_frame_projection of the frame */
-    int frame_width;            /* px, the frame proj belongs to; inputs of another size
-                                   get proj scaled to theirs */
-    int frame_height;           /* px */
+    struct ssg_projection proj; /* the frame's camera as the G-buffer's resolution sees
+                                   it (ssg_sampling_projection) */
+    int out_channels;           /* of output `out`: 1, or 3 (radiance, channels=3) */
     int light_count;            /* 0..SSG_SSDO_MAX_LIGHTS */
     struct ssg_ssdo_light lights[SSG_SSDO_MAX_LIGHTS];
     int env;                    /* enum ssg_ssdo_env */
     float env_rgb[3];           /* constant environment radiance (1 without a scene) */
     struct ssg_env_cube cube;   /* the probe in view space (env = cube) */
+    /* dw_tab[n] = 2 pi / n (rounded from double), the solid angle of one of n samples,
+       for n = 1 .. the kernel's width; [0] = 0. Read by both backends. */
+    float dw_tab[SSG_IMAGE_MAX_SIDE + 1];
 };
 
-/* Both backends' run-time checks of the images (what check() promised), so a hand-built
-   run cannot read or write out of bounds; sets the colour output's channel count. */
-enum ssg_err ssg_ssdo_check_run(const struct ssg_node_ctx *ctx,
-                                const struct ssg_ssdo_consts *c, const struct ssg_io *io,
-                                int *out_channels);
 enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);
 /* The GL side (ssdo_gl.c, shader ssdo.glsl). */
 enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);
 /* Binds what ssdo.glsl's sampling reads (the inputs of ssdo_sampling.h's ports, the
-   geometry and the projection scaled to position's size), for ssdo and bounce on GL. */
+   geometry and the projection of position's size), for ssdo and bounce on GL. */
 struct ssg_gl_pass;
 void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
-                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj,
-                               int frame_w, int frame_h);
+                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj);
 
 #endif

@@ -47,7 +47,7 @@ struct job {
     float *inv_len;                /* per sample: 1 / |s| (0 for s = 0) */
     float full_w;                  /* sum of nw in kernel order */
     const float *cnt;              /* per-pixel sample counts, NULL = the whole kernel */
-    float *dw_tab;                 /* count input: dw_tab[n] = 2 pi / n, n = 1..K */
+    const float *dw_tab;           /* count input: dw_tab[n] = 2 pi / n, n = 1..K */
 };
 
 /* The lighting part of a chunk: per light the tangent-space direction to it and its
@@ -424,28 +424,22 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
                               const struct ssg_io *io)
 {
     const struct ssg_ssdo_consts *c = consts;
-    int out_channels;
-    enum ssg_err e = ssg_ssdo_check_run(ctx, c, io, &out_channels);
-    if (e != SSG_OK)
-        return e;
+    const int out_channels = c->out_channels;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
     struct job j = {.c = c, .out_channels = out_channels, .cnt = cnt ? cnt->data : NULL};
-    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->frame_width, c->frame_height,
-                      c->p.bounce);
+    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->p.bounce);
     for (int ch = 0; ch < 3; ch++) {
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
     j.dw = (float)(2.0 * M_PI / j.s.count);
-    float *per_sample = malloc(sizeof(float) * (3 * (size_t)j.s.count + 1));
+    float *per_sample = malloc(sizeof(float) * 2 * (size_t)j.s.count);
     if (!per_sample)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "ssdo", "out of memory");
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     j.nw = per_sample;
     j.inv_len = per_sample + j.s.count;
-    j.dw_tab = per_sample + 2 * (size_t)j.s.count;
-    for (int n = 0; n <= j.s.count; n++) /* the expression of j.dw, n for K */
-        j.dw_tab[n] = n ? (float)(2.0 * M_PI / n) : 0.0f;
+    j.dw_tab = c->dw_tab;
     kernel_constants(&j);
     if (!c->p.bounce)
         memset(io->out[1]->data, 0, sizeof(float) * 3 * (size_t)pos->width * pos->height);

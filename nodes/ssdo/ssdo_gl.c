@@ -1,8 +1,8 @@
 /* ssdo_gl.c - GL side of the `ssdo` node (method in ssdo.c, shader ssdo.glsl): one pass,
- * one invocation per pixel, every mode, the bounce, the lights and the environment. What
- * the CPU kernel works out once per run (the projection of this resolution, the cap's
- * factor, dw = 2 pi / n) comes from the same C expressions here, so both backends start
- * from the same bits. Lights and the environment cube are prepare()'s view-space consts:
+ * one invocation per pixel, every mode, the bounce, the lights and the environment. The
+ * projection of this resolution and the table dw = 2 pi / n come from prepare(); what
+ * the CPU kernel works out once per run (the cap's factor) comes from the same C
+ * expression here, so both backends start from the same bits. Lights and the environment cube are prepare()'s view-space consts:
  * the lights as uniform arrays, the cube (18 KiB) in a storage buffer. The `bounce` node
  * runs the same shader (bounce_gl.c) through ssg_ssdo_gl_bind_geometry. */
 #include <math.h>
@@ -12,13 +12,10 @@
 #include "ssdo.h"
 
 void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
-                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj,
-                               int frame_w, int frame_h)
+                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj)
 {
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    /* A G-buffer of another size than the frame (subsampled) sees the same camera. */
-    struct ssg_projection sp = ssg_projection_scaled(proj, frame_w, frame_h, pos->width,
-                                                     pos->height);
+    const struct ssg_projection sp = *proj;
     ssg_gl_input(p, "position", pos);
     ssg_gl_input(p, "normal", io->in[SSG_SSDO_IN_NORMAL]);
     ssg_gl_input(p, "kernel", io->in[SSG_SSDO_IN_KERNEL]);
@@ -63,21 +60,13 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io)
 {
     const struct ssg_ssdo_consts *c = consts;
-    int out_channels;
-    enum ssg_err e = ssg_ssdo_check_run(ctx, c, io, &out_channels);
-    if (e != SSG_OK)
-        return e;
+    const int out_channels = c->out_channels;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
     const int k = io->in[SSG_SSDO_IN_KERNEL]->width;
-    float *dw_tab = malloc(sizeof(float) * ((size_t)k + 1));
-    if (!dw_tab)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "ssdo", "out of memory");
-    for (int n = 0; n <= k; n++) /* ssdo_cpu.c's table: 2 pi / n rounded from double */
-        dw_tab[n] = n ? (float)(2.0 * M_PI / n) : 0.0f;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssdo.glsl", NULL);
-    ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj, c->frame_width, c->frame_height);
+    ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj);
     ssg_gl_input(&p, "count", cnt);
     ssg_gl_output(&p, "dst", io->out[0]);
     ssg_gl_output(&p, "dst_bounce", io->out[1]);
@@ -85,9 +74,8 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_int(&p, "radiance", c->p.mode == SSG_SSDO_MODE_RADIANCE);
     ssg_gl_int(&p, "out_channels", out_channels);
     ssg_gl_int(&p, "lobe", c->p.lobe);
-    ssg_gl_buffer(&p, 0, dw_tab, sizeof(float) * ((size_t)k + 1));
+    ssg_gl_buffer(&p, 0, c->dw_tab, sizeof(float) * ((size_t)k + 1));
     bind_light(&p, c);
     ssg_gl_dispatch(&p, pos->width, pos->height);
-    free(dw_tab);
     return ssg_gl_pass_end(&p);
 }

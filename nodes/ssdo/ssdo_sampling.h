@@ -1,5 +1,5 @@
 /* ssdo_sampling.h - the per-sample maths of screen-space directional occlusion that the
- * `ssdo` node (nodes/ssdo) and the `bounce` node (nodes/bounce) share, so that bounce's
+ * `ssdo` node and the `bounce` node (both in nodes/ssdo) share, so that bounce's
  * output is exactly ssdo's bounce output for the same inputs: the same loops, the same
  * operations in the same order.
  *
@@ -38,6 +38,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "common/sampling.h"
 #include "graph/node.h"
 
 /* Input ports of both nodes, in order (bounce has the same ports, albedo and light
@@ -61,36 +62,31 @@ struct ssg_ssdo_geom {
 /* The parameters of struct ssg_ssdo_geom, declared once for both nodes' tables: entries
    of a struct ssg_param_desc array for a params struct `params_type` whose member `g` is the
    geometry. */
-#define SSG_SSDO_GEOM_OFFSET(params_type, field) \
-    (offsetof(params_type, g) + offsetof(struct ssg_ssdo_geom, field))
-#define SSG_SSDO_GEOM_PARAMS(params_type)                                                           \
-    {.name = "radius", .type = SSG_P_FLOAT, .offset = SSG_SSDO_GEOM_OFFSET(params_type, radius),  \
-     .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",                           \
-     .help = "r_max: hemisphere radius around the pixel"},                                 \
-    {.name = "bias", .type = SSG_P_FLOAT, .offset = SSG_SSDO_GEOM_OFFSET(params_type, bias),      \
-     .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units",                             \
-     .help = "a sample is occluded only when the surface is this much in front of it"},    \
-    {.name = "strength", .type = SSG_P_FLOAT,                                              \
-     .offset = SSG_SSDO_GEOM_OFFSET(params_type, strength), .def = 1, .min = 0, .max = 64,        \
-     .help = "multiplies the sender patch area A_s = pi radius^2 / K"},                    \
-    {.name = "min_distance", .type = SSG_P_FLOAT,                                          \
-     .offset = SSG_SSDO_GEOM_OFFSET(params_type, min_distance), .def = 0, .min = 0, .max = 1e6,   \
-     .unit = "scene units",                                                                \
-     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "   \
-             "form factor reaches 1"},                                                     \
-    {.name = "max_screen_radius", .type = SSG_P_FLOAT,                                     \
-     .offset = SSG_SSDO_GEOM_OFFSET(params_type, max_screen_radius), .def = 0, .min = 0,          \
-     .max = 16384, .unit = "px", .help = "caps the projected radius; 0 = no cap"}
+#define SSG_SSDO_GEOM_PARAMS(params_type)                                                \
+    {.name = "radius", SSG_FIELD_FLOAT(params_type, g.radius), .def = 0.5, .min = 1e-6,  \
+     .max = 1e6, .unit = "scene units", .help = "r_max: hemisphere radius around the pixel"},  \
+    {.name = "bias", SSG_FIELD_FLOAT(params_type, g.bias), .def = 0.02, .min = 0,        \
+     .max = 1e6, .unit = "scene units",                                                  \
+     .help = "a sample is occluded only when the surface is this much in front of it"},  \
+    {.name = "strength", SSG_FIELD_FLOAT(params_type, g.strength), .def = 1, .min = 0,   \
+     .max = 64, .help = "multiplies the sender patch area A_s = pi radius^2 / K"},       \
+    {.name = "min_distance", SSG_FIELD_FLOAT(params_type, g.min_distance), .def = 0,     \
+     .min = 0, .max = 1e6, .unit = "scene units",                                        \
+     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "  \
+             "form factor reaches 1"},                                                   \
+    {.name = "max_screen_radius", SSG_FIELD_FLOAT(params_type, g.max_screen_radius),     \
+     .def = 0, .min = 0, .max = 16384, .unit = "px",                                     \
+     .help = "caps the projected radius; 0 = no cap"}
 
 /* The input ports both nodes begin with (SSG_SSDO_IN_POSITION .. SSG_SSDO_IN_DEPTH). */
-#define SSG_SSDO_GEOM_INPUTS                                                                 \
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},             \
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},            \
-    {.name = "kernel", .types = SSG_T_KERNEL,                                              \
-     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},         \
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,                            \
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},               \
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,                                \
+#define SSG_SSDO_GEOM_INPUTS                                                             \
+    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},           \
+    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},          \
+    {.name = "kernel", .types = SSG_T_KERNEL,                                            \
+     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},      \
+    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,                          \
+     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},            \
+    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,                              \
      .doc = "linear depth for the occluder lookup; none = -position.z"}
 
 /* What one run reads: image planes, the kernel, the projection of this resolution. */
@@ -142,13 +138,11 @@ struct ssg_ssdo_chunk {
                                                    pixel (read only when counted) */
 };
 
-/* The job of a run: planes, kernel, tile and the projection scaled from the frame to the
-   inputs' resolution (a subsampled G-buffer sees the same camera). The caller has checked
-   the images' shapes. */
+/* The job of a run: planes, kernel, tile and the projection of the inputs' resolution
+   (prepare()'s, ssg_sampling_projection). The executor has verified the images' shapes. */
 static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io *io,
                                      const struct ssg_ssdo_geom *g,
-                                     const struct ssg_projection *proj, int frame_w,
-                                     int frame_h, int bounce)
+                                     const struct ssg_projection *proj, int bounce)
 {
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_SSDO_IN_NORMAL];
@@ -170,10 +164,9 @@ static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io
     j->depth_sign = dep ? 1.0f : -1.0f;
     j->rot = rot ? rot->data : NULL;
     j->n = rot ? rot->width : 1;
-    struct ssg_projection sp = ssg_projection_scaled(proj, frame_w, frame_h, j->w, j->h);
-    j->f = sp.f;
-    j->cx = sp.cx;
-    j->cy = sp.cy;
+    j->f = proj->f;
+    j->cx = proj->cx;
+    j->cy = proj->cy;
 }
 
 /* Loads P, N, depth and the tile's rotation. Background (depth 0, normal 0) or garbage
@@ -438,41 +431,6 @@ ssg_ssdo_finish_bounce(const struct ssg_ssdo_job *j, const struct ssg_ssdo_chunk
     }
 }
 
-/* Re-checks at run time what check() promised on shapes, so a hand-built run cannot read
-   out of bounds. `node` names the node in messages; need_albedo / need_light: those
-   inputs must be bound. */
-static inline enum ssg_err ssg_ssdo_check_images(const struct ssg_node_ctx *ctx,
-                                                 const struct ssg_io *io, const char *node,
-                                                 int need_albedo, int need_light)
-{
-    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    const struct ssg_image *ker = io->in[SSG_SSDO_IN_KERNEL];
-    const struct ssg_image *rot = io->in[SSG_SSDO_IN_ROTATION];
-    const struct ssg_image *alb = io->in[SSG_SSDO_IN_ALBEDO];
-    const struct ssg_image *lig = io->in[SSG_SSDO_IN_LIGHT];
-    if (!pos || pos->channels != 3 ||
-        !ssg_image_is(io->in[SSG_SSDO_IN_NORMAL], pos->width, pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, node,
-                             "position and normal must be 3-channel, one size");
-    if (!ker || ker->channels != 3 || ker->height != 1 || ker->width < 1)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, node, "kernel must be count x 1 x 3");
-    if (rot && (rot->channels != 2 || rot->width != rot->height || rot->width < 1))
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, node, "rotation must be n x n x 2");
-    if (io->in[SSG_SSDO_IN_DEPTH] &&
-        !ssg_image_is(io->in[SSG_SSDO_IN_DEPTH], pos->width, pos->height, 1))
-        return ssg_node_fail(ctx, SSG_E_SIZE, node,
-                             "depth must be 1-channel, the size of position");
-    if ((need_albedo && !alb) || (need_light && !lig))
-        return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, node,
-                             need_albedo && !alb ? "needs input 'albedo'"
-                                                 : "needs input 'light'");
-    if ((alb && !ssg_image_is(alb, pos->width, pos->height, 3)) ||
-        (lig && !ssg_image_is(lig, pos->width, pos->height, 3)))
-        return ssg_node_fail(ctx, SSG_E_SIZE, node,
-                             "albedo and light must be 3-channel, the size of position");
-    return SSG_OK;
-}
-
 /* check() of both nodes on the input shapes (channels 0 = unbound). */
 static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, char *why,
                                                  size_t why_len)
@@ -488,7 +446,7 @@ static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, cha
                  ker->width, ker->height, ker->channels);
         return SSG_E_CHANNELS;
     }
-    enum ssg_err e = ssg_check_rotation_depth(pos, &in[SSG_SSDO_IN_ROTATION],
+    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, &in[SSG_SSDO_IN_ROTATION],
                                               &in[SSG_SSDO_IN_DEPTH], why, why_len);
     if (e)
         return e;

@@ -92,11 +92,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_upsample_consts *c = consts;
     if (p->size < 1 || p->size > SSG_UPSAMPLE_MAX_SIZE || p->size % 2 == 0 ||
         !(p->sigma_depth > 0) || !(p->sigma_spatial >= 0) || p->normal_power < 0 ||
-        p->normal_power > 127) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "upsample '%s': invalid parameters", ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
-    }
+        p->normal_power > 127)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
+    const struct ssg_shape *dep = &ctx->in_shape[SSG_UPSAMPLE_DEPTH];
+    const struct ssg_shape *low = &ctx->in_shape[SSG_UPSAMPLE_IN];
+    c->factor = ssg_upsample_factor(dep->width, dep->height, low->width, low->height);
     c->radius = (p->size - 1) / 2;
     float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
     c->spatial_k = -0.5f / (sigma * sigma);
@@ -107,17 +107,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "size", .type = SSG_P_INT, .offset = offsetof(struct ssg_upsample_params, size),
+    {.name = "size", SSG_FIELD_INT(struct ssg_upsample_params, size),
      .def = 3, .min = 1, .max = SSG_UPSAMPLE_MAX_SIZE, .unit = "low-res px",
      .help = "taps per side around the low-res pixel, odd"},
-    {.name = "sigma_spatial", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_upsample_params, sigma_spatial), .def = 0, .min = 0,
+    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_spatial), .def = 0, .min = 0,
      .max = 1000, .unit = "low-res px", .help = "spatial Gaussian sigma; 0 = size / 3"},
-    {.name = "sigma_depth", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_upsample_params, sigma_depth), .def = 0.05, .min = 1e-6,
+    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_depth), .def = 0.05, .min = 1e-6,
      .max = 1000, .help = "depth sigma as a fraction of the full-res pixel's depth"},
-    {.name = "normal_power", .type = SSG_P_INT,
-     .offset = offsetof(struct ssg_upsample_params, normal_power), .def = 16, .min = 0,
+    {.name = "normal_power", SSG_FIELD_INT(struct ssg_upsample_params, normal_power), .def = 16, .min = 0,
      .max = 127, .help = "normal weight max(0, n.N)^p; 0 = off"},
 };
 

@@ -32,6 +32,7 @@ struct ssg_upsample_consts {
     float depth_scale;   /* 1 / sigma_depth */
     float normal_power;  /* as in the parameters */
     float normal_min;    /* cosines below this weigh c^p < 1e-30 and count as 0 */
+    int factor;          /* k: in is depth subsampled by k (ssg_upsample_factor) */
 };
 
 /* The integer factor k with ceil(width / k) = low_width and ceil(height / k) = low_height

@@ -240,18 +240,7 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     const struct ssg_image *ldep = io->in[SSG_UPSAMPLE_LOW_DEPTH];
     const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
     const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
-    if (!in || (in->channels != 1 && in->channels != 3) || !dep || dep->channels != 1)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample",
-                             "in must have 1 or 3 channels, depth 1");
-    int k = ssg_upsample_factor(dep->width, dep->height, in->width, in->height);
-    if (!k || !ssg_image_is(ldep, in->width, in->height, 1) || (!nrm != !lnrm) ||
-        (nrm && (!ssg_image_is(nrm, dep->width, dep->height, 3) ||
-                 !ssg_image_is(lnrm, in->width, in->height, 3))) ||
-        !ssg_image_is(io->out[0], dep->width, dep->height, in->channels) ||
-        (in2 && ((in2->channels != 1 && in2->channels != 3) ||
-                 !ssg_image_is(in2, in->width, in->height, in2->channels) ||
-                 !ssg_image_is(io->out[1], dep->width, dep->height, in2->channels))))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample", "inconsistent image sizes");
+    const int k = ((const struct ssg_upsample_consts *)consts)->factor;
     int n2 = in2 ? in2->channels : 0;
     struct job j = {.c = consts, .channels = in->channels + n2, .depth = dep->data,
                     .ldepth = ldep->data, .w = dep->width, .h = dep->height,

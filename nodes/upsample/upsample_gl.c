@@ -6,37 +6,11 @@
 #include "gl/gl.h"
 #include "upsample.h"
 
-/* The run-time re-check of upsample_cpu.c: the factor, or 0 when the shapes disagree. */
-static int checked_factor(const struct ssg_io *io)
-{
-    const struct ssg_image *in = io->in[SSG_UPSAMPLE_IN], *dep = io->in[SSG_UPSAMPLE_DEPTH];
-    const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_NORMAL];
-    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
-    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
-    if (!in || (in->channels != 1 && in->channels != 3) || !dep || dep->channels != 1)
-        return 0;
-    int k = ssg_upsample_factor(dep->width, dep->height, in->width, in->height);
-    int ok = k && ssg_image_is(io->in[SSG_UPSAMPLE_LOW_DEPTH], in->width, in->height, 1) &&
-             !nrm == !lnrm &&
-             (!nrm || (ssg_image_is(nrm, dep->width, dep->height, 3) &&
-                       ssg_image_is(lnrm, in->width, in->height, 3))) &&
-             ssg_image_is(io->out[0], dep->width, dep->height, in->channels);
-    if (in2)
-        ok = ok && (in2->channels == 1 || in2->channels == 3) &&
-             ssg_image_is(in2, in->width, in->height, in2->channels) &&
-             ssg_image_is(io->out[1], dep->width, dep->height, in2->channels);
-    else
-        ok = ok && ssg_image_is(io->out[1], dep->width, dep->height, in->channels);
-    return ok ? k : 0;
-}
-
 enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io)
 {
     const struct ssg_upsample_consts *c = consts;
-    int k = checked_factor(io);
-    if (!k)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "upsample", "inconsistent image sizes");
+    const int k = c->factor;
     const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
     const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
     char defines[80];

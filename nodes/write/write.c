@@ -22,20 +22,18 @@ static const char *const tonemaps[] = {"clamp", "reinhard", "aces", NULL};
 static const char *const compressions[] = {"zip", "none", "rle", "piz", NULL};
 
 static const struct ssg_param_desc param_table[] = {
-    {.name = "name", .type = SSG_P_STRING, .offset = offsetof(struct ssg_write_params, name),
+    {.name = "name", SSG_FIELD_STRING(struct ssg_write_params, name),
      .required = 1, .help = "file stem: writes <out>/<name>.exr and <out>/<name>.png"},
-    {.name = "exposure", .type = SSG_P_FLOAT,
-     .offset = offsetof(struct ssg_write_params, exposure), .def = 0, .min = -20, .max = 20,
+    {.name = "exposure", SSG_FIELD_FLOAT(struct ssg_write_params, exposure), .def = 0, .min = -20, .max = 20,
      .unit = "stops", .help = "PNG only: values are scaled by 2^exposure before tone mapping"},
-    {.name = "tonemap", .type = SSG_P_ENUM, .offset = offsetof(struct ssg_write_params, tonemap),
+    {.name = "tonemap", SSG_FIELD_ENUM(struct ssg_write_params, tonemap),
      .def = SSG_TONEMAP_ACES, .choices = tonemaps,
      .help = "PNG only: clamp = min(x,1), reinhard = x/(1+x), aces = Narkowicz 2015 fit"},
-    {.name = "png", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_write_params, png),
+    {.name = "png", SSG_FIELD_BOOL(struct ssg_write_params, png),
      .def = 1, .help = "write the 8-bit sRGB PNG preview"},
-    {.name = "exr", .type = SSG_P_BOOL, .offset = offsetof(struct ssg_write_params, exr),
+    {.name = "exr", SSG_FIELD_BOOL(struct ssg_write_params, exr),
      .def = 1, .help = "write the 32-bit float EXR with all layers"},
-    {.name = "compression", .type = SSG_P_ENUM,
-     .offset = offsetof(struct ssg_write_params, compression), .def = SSG_EXR_ZIP,
+    {.name = "compression", SSG_FIELD_ENUM(struct ssg_write_params, compression), .def = SSG_EXR_ZIP,
      .choices = compressions,
      .help = "EXR compression, all lossless: zip is small, none is ~5x faster to write"},
 };

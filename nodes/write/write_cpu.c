@@ -9,7 +9,6 @@
 
 enum { PATH_MAX_LEN = 4096 };
 
-static const struct ssg_loc nowhere = {0};
 
 
 static enum ssg_err make_path(char *buf, size_t len, const char *dir, const char *name,
@@ -41,9 +40,8 @@ static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_i
     enum { MAX_LAYERS = 64 };
     struct ssg_exr_layer layers[MAX_LAYERS];
     if (io->extra_count + 1 > MAX_LAYERS) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, nowhere, "write '%s': %d layers, at most %d",
-                    ctx->instance, io->extra_count + 1, MAX_LAYERS);
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", io->extra_count + 1,
+                             MAX_LAYERS);
     }
     layers[0] = (struct ssg_exr_layer){.name = NULL, .image = io->in[0]};
     for (int i = 0; i < io->extra_count; i++) {
@@ -52,10 +50,8 @@ static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_i
         if (!layer_kind(io->extra_types[i], &layers[i + 1].kind)) {
             char types[64];
             ssg_type_names(io->extra_types[i], types, sizeof types);
-            ssg_diag_at(ctx->diags, SSG_E_TYPE, nowhere,
-                        "write '%s': layer '%s' is a %s, expected scalar, vector or color",
-                        ctx->instance, io->extra_names[i], types);
-            return SSG_E_TYPE;
+            return ssg_node_fail(ctx, SSG_E_TYPE, "layer '%s' is a %s, expected scalar, "
+                                 "vector or color", io->extra_names[i], types);
         }
     }
     return ssg_exr_stage(path, layers, io->extra_count + 1,
@@ -68,13 +64,10 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     const struct ssg_write_params *p = consts;
     char why[512], path[PATH_MAX_LEN];
     if (!ssg_write_name_ok(p->name, why, sizeof why)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, nowhere, "write '%s': %s", ctx->instance, why);
-        return SSG_E_VALUE;
+        return ssg_node_fail(ctx, SSG_E_VALUE, "%s", why);
     }
     if (!io->in[0]) {
-        ssg_diag_at(ctx->diags, SSG_E_MISSING_INPUT, nowhere,
-                    "write '%s': input 'image' is not connected", ctx->instance);
-        return SSG_E_MISSING_INPUT;
+        return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
     /* Both files are staged before either is renamed into place: a failure (or a kill)

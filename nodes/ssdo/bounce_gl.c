@@ -4,19 +4,16 @@
  * geometry's uniforms are bound by ssdo_gl.c's ssg_ssdo_gl_bind_geometry. */
 #include "bounce.h"
 #include "gl/gl.h"
-#include "ssdo/ssdo.h"
+#include "ssdo.h"
 
 enum ssg_err ssg_bounce_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                const struct ssg_io *io)
 {
     const struct ssg_bounce_consts *c = consts;
-    enum ssg_err e = ssg_bounce_check_run(ctx, io);
-    if (e != SSG_OK)
-        return e;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssdo.glsl", "#define SSDO_BOUNCE_NODE 1\n");
-    ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj, c->frame_width, c->frame_height);
+    ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj);
     ssg_gl_output(&p, "dst_bounce", io->out[0]);
     ssg_gl_int(&p, "do_bounce", 1);
     ssg_gl_dispatch(&p, pos->width, pos->height);

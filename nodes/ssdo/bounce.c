@@ -9,12 +9,13 @@
  * occluded makes the pixel it lands on a sender patch of area A_s = strength pi radius^2 / K
  * with that light, and out = albedo sum F_i L_i with the point form factor
  * F_i = A_s cos_r cos_s / (pi max(d^2, min_distance^2)), normalised when the F_i sum to more
- * than 1. Sampling, test and form factor are ssdo's own code (ssdo/ssdo_sampling.h, where
+ * than 1. Sampling, test and form factor are ssdo's own code (ssdo_sampling.h, where
  * the deviation from eq. 4, its dropped extra delta-omega, is explained), so out is exactly
  * ssdo's bounce output for the same inputs and parameters. */
 #include <stdio.h>
 
 #include "bounce.h"
+#include "common/sampling.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
@@ -32,16 +33,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_bounce_consts *c = consts;
     c->p = *(const struct ssg_bounce_params *)params;
-    c->proj = ssg_frame_projection(ctx->frame);
-    c->frame_width = ctx->frame->width;
-    c->frame_height = ctx->frame->height;
-    if (!(c->p.g.radius > 0) || c->frame_width < 1 || c->frame_height < 1 || !(c->proj.f > 0)) {
-        ssg_diag_at(ctx->diags, SSG_E_VALUE, (struct ssg_loc){0},
-                    "bounce '%s': needs radius > 0 and a frame with size and field of view",
-                    ctx->instance ? ctx->instance : "");
-        return SSG_E_VALUE;
-    }
-    return SSG_OK;
+    if (!(c->p.g.radius > 0))
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0");
+    return ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSDO_IN_POSITION], &c->proj);
 }
 
 static const struct ssg_param_desc params[] = {
@@ -58,18 +52,6 @@ static const struct ssg_port_desc inputs[] = {
 static const struct ssg_port_desc outputs[] = {
     {.name = "out", .types = SSG_T_COLOR, .doc = "one indirect bounce, albedo * sum F_i L_i"},
 };
-
-enum ssg_err ssg_bounce_check_run(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
-{
-    enum ssg_err e = ssg_ssdo_check_images(ctx, io, "bounce", 1, 1);
-    if (e != SSG_OK)
-        return e;
-    const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    if (!ssg_image_is(io->out[0], pos->width, pos->height, 3))
-        return ssg_node_fail(ctx, SSG_E_SIZE, "bounce",
-                             "output must be 3-channel, the size of position");
-    return SSG_OK;
-}
 
 const struct ssg_node_desc ssg_node_bounce = {
     .name = "bounce",

@@ -1,0 +1,36 @@
+/* sampling.c - checks and camera of the screen-space sampling nodes (sampling.h). */
+#include <stdio.h>
+
+#include "common/sampling.h"
+
+enum ssg_err ssg_sampling_check_rotation_depth(const struct ssg_shape *position,
+                                               const struct ssg_shape *rotation,
+                                               const struct ssg_shape *depth, char *why,
+                                               size_t why_len)
+{
+    if (rotation->channels != 0 &&
+        (rotation->channels != 2 || rotation->width != rotation->height)) {
+        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
+                 "%dx%dx%d", rotation->width, rotation->height, rotation->channels);
+        return SSG_E_CHANNELS;
+    }
+    if (depth->channels != 0 &&
+        (depth->channels != 1 || !ssg_shape_same_size(depth, position))) {
+        snprintf(why, why_len, "depth must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    return SSG_OK;
+}
+
+enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
+                                     const struct ssg_shape *gbuffer,
+                                     struct ssg_projection *out)
+{
+    const struct ssg_frame *f = ctx->frame;
+    const struct ssg_projection frame_proj = ssg_frame_projection(f);
+    if (f->width < 1 || f->height < 1 || !(frame_proj.f > 0))
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs a frame with size and field of view");
+    *out = ssg_projection_scaled(&frame_proj, f->width, f->height, gbuffer->width,
+                                 gbuffer->height);
+    return SSG_OK;
+}
