@@ -67,7 +67,8 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    struct ssg_node_ctx ctx = {"h", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.instance = "h", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *in[5] = {pos, nrm, hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
     struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};

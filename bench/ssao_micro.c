@@ -61,7 +61,8 @@ int main(int argc, char **argv)
             ssg_diags_print(&diags, stderr);
             return 2;
         }
-    struct ssg_node_ctx ctx = {"ao", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.instance = "ao", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *in[6] = {pos, nrm, hal.images[0], hal.images[1], NULL, NULL};
     struct ssg_image *outs[1] = {out};
     struct ssg_io io = {in, outs, 0, NULL, NULL, NULL};

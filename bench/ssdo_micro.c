@@ -93,7 +93,8 @@ static int time_one(const struct inputs *in, int k, int bounce, int runs, int ar
         }
     struct ssg_image *out = ssg_image_create(in->w, in->h, 1);
     struct ssg_image *bo = ssg_image_create(in->w, in->h, 3);
-    struct ssg_node_ctx ctx = {"ssdo", &frame, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx = {.instance = "ssdo", .frame = &frame, .out_dir = "out",
+                               .diags = &diags};
     const struct ssg_image *ins[8] = {in->pos, in->nrm, hal.images[0], hal.images[1], NULL,
                                       in->alb, in->light};
     struct ssg_image *outs[2] = {out, bo};

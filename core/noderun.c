@@ -162,7 +162,8 @@ static enum ssg_err run_single(struct single *s, const void *params, const struc
     struct ssg_io io = {s->in, outputs->images, s->extra_count, s->extra_names, s->extra,
                         s->extra_types};
     struct ssg_metrics metrics = {0};
-    struct ssg_node_ctx ctx = {s->d->name, f, NULL, "out", diags, &metrics};
+    struct ssg_node_ctx ctx = {.instance = s->d->name, .frame = f, .out_dir = "out",
+                               .diags = diags, .metrics = &metrics, .type = s->d->name};
     struct ssg_node_timing timing;
     if (backend == SSG_BACKEND_GL && (e = ssg_gl_open(diags)))
         return e;

@@ -47,7 +47,7 @@ static inline enum ssg_err graph_run(const char *graph, const char *scene, int w
                                      const char *out_dir)
 {
     struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1};
-    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
+    struct ssg_run_options opt = {.out_dir = out_dir};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
@@ -95,7 +95,8 @@ static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
                                           enum ssg_backend backend)
 {
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {desc->name, frame, scene, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.instance = desc->name, .frame = frame, .scene = scene,
+                               .out_dir = ".", .diags = &d};
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_node_timing t;
     enum ssg_err e = backend == SSG_BACKEND_GL ? ssg_gl_open(&d) : SSG_OK;

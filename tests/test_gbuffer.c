@@ -44,7 +44,8 @@ static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *
     static const int channels[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_frame frame = {W, H, s ? s->camera.fov_y : 60, s ? s->camera.near_z : 0.1f,
                               s ? s->camera.far_z : 100, 1};
-    struct ssg_node_ctx ctx = {"g", &frame, s, ".", d, NULL};
+    struct ssg_node_ctx ctx = {.instance = "g", .frame = &frame, .scene = s, .out_dir = ".",
+                               .diags = d};
     struct ssg_gbuffer_params p;
     struct ssg_gbuffer_consts c;
     ssg_params_defaults(ssg_node_gbuffer.params, &p);

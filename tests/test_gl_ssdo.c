@@ -134,7 +134,8 @@ static enum ssg_err run_with_scene(const struct ssg_scene *scene, const struct s
 {
     struct ssg_frame fr = frame();
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {"ssdo", &fr, scene, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.instance = "ssdo", .frame = &fr, .scene = scene, .out_dir = ".",
+                               .diags = &d};
     struct ssg_node_timing t;
     enum ssg_err e = SSG_OK;
     if (backend == SSG_BACKEND_GL && (e = ssg_gl_open(&d))) {

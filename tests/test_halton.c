@@ -223,8 +223,10 @@ static void test_determinism_and_seed(void)
     CHECK_EQ(ssg_param_set_text(d->params, &p, "pattern=8", "<test>", "halton", &diags),
              SSG_OK);
     struct ssg_frame f1 = frame_seed(1), f2 = frame_seed(2);
-    struct ssg_node_ctx ctx1 = {"h", &f1, NULL, "out", &diags, NULL};
-    struct ssg_node_ctx ctx2 = {"h", &f2, NULL, "out", &diags, NULL};
+    struct ssg_node_ctx ctx1 = {.instance = "h", .frame = &f1, .out_dir = "out",
+                                .diags = &diags};
+    struct ssg_node_ctx ctx2 = {.instance = "h", .frame = &f2, .out_dir = "out",
+                                .diags = &diags};
     static struct ssg_halton_consts a, b, c;
     memset(&a, 0x55, sizeof a); /* padding and unused tails must not matter: compare */
     memset(&b, 0xAA, sizeof b); /* only the used part below */

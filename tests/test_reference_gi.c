@@ -83,7 +83,8 @@ static void make_gbuffer(const struct ssg_scene *s, struct gbuf *g)
     static const int channels[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_frame frame = scene_frame(s, 1);
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = {"g", &frame, s, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.instance = "g", .frame = &frame, .scene = s, .out_dir = ".",
+                               .diags = &d};
     struct ssg_gbuffer_params p;
     struct ssg_gbuffer_consts c;
     ssg_params_defaults(ssg_node_gbuffer.params, &p);

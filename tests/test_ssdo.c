@@ -337,7 +337,8 @@ static void light_run(double lz, double m[2])
     if (!sc)
         return;
     struct ssg_frame fr = {SW, SH, sc->camera.fov_y, sc->camera.near_z, sc->camera.far_z, 1};
-    struct ssg_node_ctx ctx = {"s", &fr, sc, ".", &d, NULL};
+    struct ssg_node_ctx ctx = {.instance = "s", .frame = &fr, .scene = sc, .out_dir = ".",
+                               .diags = &d};
     static const int gch[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_image *gb[6], *out[2] = {ssg_image_create(SW, SH, 1), ssg_image_create(SW, SH, 3)};
     for (int i = 0; i < 6; i++)
