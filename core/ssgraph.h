@@ -12,7 +12,11 @@
  * Thread safety: separate graphs may be used from separate threads; one graph is used by
  * one thread at a time (its run splits work over OpenMP threads internally).
  * Errors: functions return enum ssg_err and append diagnostics (with file:line:column)
- * to a struct ssg_diags the caller provides. */
+ * to a struct ssg_diags the caller provides.
+ * Output: the library prints nothing (bar the describe/docs/diagnostics functions that
+ * write to a FILE * the caller gives): a graph run's timings, profile and metrics come back
+ * in struct ssg_run_stats, its progress and notices through the callbacks of struct
+ * ssg_run_options, and the caller (the ssgraph command line) prints them. */
 #ifndef SSGRAPH_H
 #define SSGRAPH_H
 
@@ -109,38 +113,94 @@ struct ssg_frame {
     ((struct ssg_frame){.fov_y = SSG_DEFAULT_FOV_Y, .near_z = SSG_DEFAULT_NEAR,           \
                         .far_z = SSG_DEFAULT_FAR, .seed = 1})
 
-/* What a run measured, for programs that time graphs (`ssgraph bench`): the frame times
- * over its frames and the metrics its nodes reported (compare's rmse, ...). */
-#define SSG_RUN_METRICS_MAX 32
+/* What a run measured (ssg_run_options.stats): everything `ssgraph run` prints and
+ * `ssgraph bench` tabulates; the library itself prints nothing.
+ *
+ * Ownership: ssg_graph_run zeroes *stats first and fills it once every frame has run (also
+ * when writing metrics.json then fails, so that a caller can still show what ran); the
+ * filled struct owns its arrays and strings until ssg_run_stats_free, which releases them
+ * and zeroes it again (freeing a zeroed one is harmless). Strings documented as static
+ * live as long as the program. */
 struct ssg_run_metric {
-    char node[64], name[32];
-    double value;
+    char node[64];  /* node instance that reported it ("cmp") */
+    char name[32];  /* metric name ("rmse") */
+    double value;   /* may be inf or NaN (the PSNR of identical images) */
 };
-#define SSG_RUN_NODES_MAX 64
-struct ssg_run_node_time {
-    char name[64];
-    double avg_ms;   /* over the frames, prepare excluded */
+
+/* One node of the run order. The last frame's columns are those of the one-frame table;
+ * the rest is the profile over the frames. */
+struct ssg_run_node {
+    char *name;             /* instance name in the graph ("ao"); owned by the stats */
+    const char *type;       /* node type ("ssao"); static */
+    const char *backend;    /* where it ran, "cpu" or "gl"; static */
+    double ms;              /* last frame: wall clock of its run, ms; includes its
+                               prepare() when it prepared in that frame (every node of a
+                               one-frame run, every sink) */
+    double gpu_ms;          /* last frame: the GL timer query around its run, ms; 0 on cpu */
+    double transfer_ms;     /* last frame: moving its inputs between CPU and GL, ms */
+    int calls;              /* runs: one a frame, a sink's one in the last frame only */
+    double avg_ms;          /* over its calls, prepare excluded */
+    double min_ms, max_ms;  /* over its calls, prepare excluded; 0 without calls */
+    double share;           /* avg_ms / frame_avg_ms for a node that ran in every frame of
+                               a frame with time, else 0 */
+    double gpu_avg_ms;      /* over its calls; 0 on cpu */
+    double transfer_avg_ms; /* over its calls */
+    double prepare_ms;      /* its one prepare() */
 };
+
 struct ssg_run_stats {
-    int frames;
-    double frame_avg_ms, frame_min_ms, frame_max_ms; /* every node's run, prepare excluded */
-    int metric_count;
-    struct ssg_run_metric metrics[SSG_RUN_METRICS_MAX];
-    int node_count;                                  /* in run order */
-    struct ssg_run_node_time nodes[SSG_RUN_NODES_MAX];
+    int frames;                 /* frames run (options.frames, at least 1) */
+    double frame_avg_ms;        /* a frame: its passes' runs and transfers, without the
+                                   prepares and the sinks (those run after the last) */
+    double frame_min_ms, frame_max_ms;
+    double total_ms;            /* wall clock of every frame, prepares and sinks included */
+    int width, height;          /* frame size, pixels */
+    int threads;                /* OpenMP threads the run used */
+    size_t peak_pool_bytes;     /* most bytes of images the run held at once */
+    char *gl;                   /* the GL context, "OSMesa: llvmpipe (...)", when a node ran
+                                   on GL, else NULL; owned by the stats */
+    int node_count;             /* entries of nodes: the run order, every live node */
+    struct ssg_run_node *nodes; /* owned by the stats */
+    int metric_count;           /* entries of metrics */
+    struct ssg_run_metric *metrics; /* as the nodes reported them (a node's together), in
+                                       run order; owned by the stats */
 };
+
+/* Releases what a run put into *stats and zeroes it; NULL or a zeroed struct: nothing. */
+void ssg_run_stats_free(struct ssg_run_stats *stats);
+
+/* Progress of a long node (reference_ao and reference_gi report it), for a progress bar. */
+struct ssg_progress_event {
+    const char *instance; /* node instance ("ref"); valid during the call only */
+    const char *type;     /* node type ("reference_ao"); static */
+    double fraction;      /* of the node's work done, 0..1, rising within one node run */
+    int done;             /* 1 = the node's work is finished: the last event of this node
+                             run (fraction 1) */
+};
+
+/* Called by ssg_graph_run on the thread that called it (never from a worker thread, never
+ * inside a band of rows), while the node runs, each time its whole percentage rises and
+ * once with done; the node's other threads go on meanwhile, so keep it short. `event` is
+ * valid during the call only. */
+typedef void (*ssg_progress_fn)(void *user, const struct ssg_progress_event *event);
+
+/* Called by ssg_graph_run on the thread that called it, for what the library has to say
+ * that is neither a statistic nor progress: one line of text without a newline, valid
+ * during the call only. Today: each file the run wrote ("wrote out/ssao.exr"), when it
+ * was written. */
+typedef void (*ssg_log_fn)(void *user, const char *line);
 
 /* Options of a graph run; zero means default. */
 struct ssg_run_options {
     const char *out_dir;   /* directory for written files; default "out" */
     int threads;           /* OpenMP threads; 0 = all cores */
-    int quiet;             /* 1 = do not print the per-node timing table */
-    FILE *log;             /* where timings go; default stdout */
     int frames;            /* run the graph this many times (0 = 1): every node prepares
                               once, then runs every frame, but sinks (write, compare) only
-                              in the last; > 1 prints a per-node profile */
-    const char *profile_json; /* where to write the profile as JSON; NULL = nowhere */
-    struct ssg_run_stats *stats; /* filled after a successful run when not NULL */
+                              in the last */
+    struct ssg_run_stats *stats; /* filled by the run when not NULL (see its ownership) */
+    ssg_progress_fn progress;    /* progress of long nodes; NULL = not reported */
+    ssg_log_fn log;              /* the library's notices; NULL = not reported */
+    void *user;                  /* passed to progress and log as they are */
 };
 
 /* Command-line style overrides applied after the graph file is read. */
@@ -165,9 +225,9 @@ enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overri
 /* Same, validating only: does not load the scene's meshes or images. */
 enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
                              struct ssg_diags *diags);
-/* Runs every node in dependency order; writes files into options->out_dir. Metrics that
- * nodes report (compare) are printed after the timings and written to
- * <out_dir>/metrics.json. */
+/* Runs every node in dependency order; writes files into options->out_dir. Prints
+ * nothing: what it measured goes to options->stats, progress and notices to the
+ * callbacks. Metrics that nodes report (compare) are written to <out_dir>/metrics.json. */
 enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
                            struct ssg_diags *diags);
 void ssg_graph_destroy(struct ssg_graph **graph);

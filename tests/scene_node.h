@@ -47,7 +47,7 @@ static inline enum ssg_err graph_run(const char *graph, const char *scene, int w
                                      const char *out_dir)
 {
     struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1};
-    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
+    struct ssg_run_options opt = {.out_dir = out_dir};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);

@@ -16,6 +16,67 @@ expect_exit 1 "unknown node 'nope'" "$BIN" describe nope
 expect_exit 2 "--size expects" "$BIN" run graphs/ssao.graph --size 12x
 expect_exit 2 "unknown option '--frob'" "$BIN" run graphs/ssao.graph --frob 1
 
+# --- the option table (cli/options.c): the usage text lists every option under the commands
+# it applies to, and each other command refuses it, naming the option, the command and those
+# commands, with the usage exit status ---
+"$BIN" --help > "$TMP/help.txt"
+for opt in $(grep -oE '\.name = "--[a-z-]+"' cli/options.c | grep -oE -- '--[a-z-]+'); do
+    grep -qE -- "^  $opt( |$)" "$TMP/help.txt" || fail "the usage text lacks $opt"
+done
+awk '/^options of /{ g = $0; sub(/^options of /, "", g); sub(/:$/, "", g); gsub(/,| and /, " ", g); next }
+     /^$/ { g = "" } /^  --[a-z]/ && g != "" { print $1 "|" g }' "$TMP/help.txt" > "$TMP/opts.txt"
+[ "$(wc -l < "$TMP/opts.txt")" -ge 20 ] || fail "the usage text lists $(wc -l < "$TMP/opts.txt") options"
+while IFS='|' read -r opt cmds; do
+    for cmd in run check node bench compare; do
+        case " $cmds " in *" $cmd "*) continue ;; esac
+        expect_exit 2 "option '$opt' does not apply to '$cmd' \(it is an option of [a-z, ]+\)" \
+            "$BIN" $cmd x "$opt" 1
+    done
+done < "$TMP/opts.txt"
+expect_exit 2 "option '--json' does not apply to 'run' \(it is an option of compare\)" \
+    "$BIN" run graphs/ssao.graph --json
+expect_exit 2 "option '--frames' does not apply to 'check' \(it is an option of run and bench\)" \
+    "$BIN" check graphs/ssao.graph --frames 2
+
+# --- what `run` prints, column for column as scripts (bench/bench.py) read it: the timing
+# table of one frame, the profile of several, the metrics; --quiet none of it; --verbose the
+# files written, on stderr; nothing on stderr otherwise ---
+"$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/table" > "$TMP/table.txt" 2> "$TMP/table.err" \
+    || fail "table run: $(tail -3 "$TMP/table.err")"
+grep -qE '^node +type +on +ms +gpu ms +xfer ms$' "$TMP/table.txt" || fail "run lost its table's header"
+for row in "g +gbuffer" "k +halton" "ao +ssao" "b +bilateral" "img +combine" "out +write"; do
+    grep -qE "^$row +cpu +[0-9]+\.[0-9]{2} +- +-$" "$TMP/table.txt" || fail "run's table lacks /$row/"
+done
+grep -qE '^total +[0-9]+\.[0-9]{2} +\(64x48, [0-9]+ threads, peak images [0-9]+\.[0-9] MB\)$' \
+    "$TMP/table.txt" || fail "run's table lacks its total: $(cat "$TMP/table.txt")"
+awk 'NR > 1 && !/^total/ && length($0) != 67 { bad = 1 } END { exit bad }' "$TMP/table.txt" \
+    || fail "a row of run's table is not 67 characters wide: $(cat "$TMP/table.txt")"
+[ -s "$TMP/table.err" ] && fail "run printed to stderr: $(head -3 "$TMP/table.err")"
+"$BIN" run graphs/ssao.graph --size 64x48 --frames 3 --out "$TMP/prof" > "$TMP/prof.txt" \
+    || fail "profile run"
+grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms$' "$TMP/prof.txt" \
+    || fail "run --frames lost its profile's header"
+grep -qE '^frame +3( +[0-9]+\.[0-9]{2}){3} +100\.0%   \(64x48, [0-9]+ threads, [0-9]+\.[0-9] fps\)$' \
+    "$TMP/prof.txt" || fail "the profile lacks its frame row: $(cat "$TMP/prof.txt")"
+grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2}$' \
+    "$TMP/prof.txt" || fail "the profile lacks the pass ao under the frame"
+grep -qE '^out +write +cpu +1( +[0-9]+\.[0-9]{2}){3} +- +- +[0-9]+\.[0-9]{2}$' "$TMP/prof.txt" \
+    || fail "the profile lacks the sink out after the frame"
+"$BIN" run graphs/ao_error.graph --size 48x32 --out "$TMP/metrics" > "$TMP/metrics.txt" \
+    || fail "metrics run"
+grep -qE '^metrics of +name +value$' "$TMP/metrics.txt" || fail "run lost its metrics' header"
+for m in rmse mae psnr ssim; do
+    grep -qE "^c_ssao +$m +[-+0-9.e]+$" "$TMP/metrics.txt" || fail "run's metrics lack c_ssao $m"
+done
+"$BIN" run graphs/ssao.graph --size 32x24 --out "$TMP/quiet" --quiet > "$TMP/quiet.txt" 2>&1 \
+    || fail "quiet run"
+[ -s "$TMP/quiet.txt" ] && fail "run --quiet printed: $(head -3 "$TMP/quiet.txt")"
+"$BIN" run graphs/ssao.graph --size 32x24 --out "$TMP/verbose" --verbose > /dev/null \
+    2> "$TMP/verbose.err" || fail "verbose run"
+for f in ssao.exr ssao.png; do
+    grep -qx "wrote $TMP/verbose/$f" "$TMP/verbose.err" || fail "run --verbose did not name $f"
+done
+
 # --- the node reference is generated from the descriptors and must be current ---
 "$BIN" docs | diff -u docs/nodes.md - > "$TMP/docs.diff" \
     || fail "docs/nodes.md is stale: run '$BIN docs > docs/nodes.md' ($(head -c 300 "$TMP/docs.diff"))"

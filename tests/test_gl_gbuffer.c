@@ -52,7 +52,7 @@ static enum ssg_err run_graph(const char *scene, const char *backend, const char
 {
     struct ssg_overrides ov = {.scene = scene, .sets = sets, .set_count = set_count,
                                .seed = -1, .backend = backend};
-    struct ssg_run_options opt = {.out_dir = out_dir, .quiet = 1};
+    struct ssg_run_options opt = {.out_dir = out_dir};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load("tests/fixtures/gl_gbuffer.graph", &ov, &g, &d);

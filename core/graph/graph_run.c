@@ -1,9 +1,10 @@
 /* graph_run.c - the executor (ssg_graph_run, ssgraph.h): every live node of a loaded graph
  * in run order, each prepared once and run every frame (sinks in the last frame only),
- * images from a pool, each given back after its last reader, each node timed; metrics and
- * the profile reported after the last frame. */
-#include <math.h>
+ * images from a pool, each given back after its last reader, each node timed; the
+ * statistics (timings, profile, metrics) handed to the caller after the last frame. It
+ * prints nothing: the files it writes are told through the run's log callback. */
 #include <omp.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,6 +85,29 @@ static const char *out_dir(const struct run *r)
     return r->opt->out_dir ? r->opt->out_dir : "out";
 }
 
+/* One line to the run's log callback, if it has one. */
+static void say(const struct run *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void say(const struct run *r, const char *fmt, ...)
+{
+    if (!r->opt->log)
+        return;
+    char line[1400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    r->opt->log(r->opt->user, line);
+}
+
+/* The files a sink that just ran has written, as its descriptor names them. */
+static void log_files(const struct run *r, const struct gnode *n)
+{
+    char files[4][SSG_FILE_NAME_MAX];
+    int count = n->desc->output_files ? n->desc->output_files(n->params, files, 4) : 0;
+    for (int i = 0; i < count; i++)
+        say(r, "wrote %s/%s", out_dir(r), files[i]);
+}
+
 /* Runs the node at position p; in the first frame it prepares it first (the timing of a
    one-frame run includes prepare, as ssg_node_execute's). A sink first runs in the last
    frame and is prepared there. */
@@ -110,7 +134,8 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     struct ssg_node_ctx ctx = {.desc = n->desc, .instance = n->name, .frame = &g->frame,
                                .scene = g->scene, .out_dir = out_dir(r), .diags = r->diags,
                                .metrics = &r->metrics, .in_shape = n->in_shape,
-                               .out_shape = n->out_shape, .extra_shape = extra_shape};
+                               .out_shape = n->out_shape, .extra_shape = extra_shape,
+                               .run = r->opt};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
@@ -121,37 +146,15 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
                                   &r->t[p]);
-    if (!e)
+    if (!e) {
         ssg_profile_add(&r->prof, p, &r->t[p]);
+        log_files(r, n);
+    }
     r->t[p].ms += prepare_ms;
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
                     ssg_err_text(e));
     return e;
-}
-
-static void print_timings(const struct run *r, double total)
-{
-    FILE *log = r->opt->log ? r->opt->log : stdout;
-    const struct ssg_graph *g = r->g;
-    fprintf(log, "%-16s %-12s %-4s %10s %10s %10s\n", "node", "type", "on", "ms", "gpu ms",
-            "xfer ms");
-    for (int p = 0; p < g->order_count; p++) {
-        const struct gnode *n = &g->nodes[g->order[p]];
-        const struct ssg_node_timing *t = &r->t[p];
-        char gpu[32] = "-", xfer[32] = "-";
-        if (n->runs_on == SSG_BACKEND_GL)
-            snprintf(gpu, sizeof gpu, "%.2f", t->gpu_ms);
-        if (t->transfer_ms > 0)
-            snprintf(xfer, sizeof xfer, "%.2f", t->transfer_ms);
-        fprintf(log, "%-16s %-12s %-4s %10.2f %10s %10s\n", n->name, n->desc->name,
-                ssg_backend_name(n->runs_on), t->ms, gpu, xfer);
-    }
-    fprintf(log, "%-16s %-12s %-4s %10.2f %10s %10s   (%dx%d, %d threads, peak images %.1f MB)\n",
-            "total", "", "", total, "", "", g->width, g->height, omp_get_max_threads(),
-            (double)ssg_pool_peak_bytes(r->pool) / (1024.0 * 1024.0));
-    if (r->uses_gl)
-        fprintf(log, "GL: %s\n", ssg_gl_describe());
 }
 
 static int graph_uses_gl(const struct ssg_graph *g)
@@ -175,9 +178,9 @@ static int run_init(struct run *r)
         return 0;
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
-        r->prof.rows[p] = (struct ssg_profile_row){n->name, n->desc->name,
-                                                   ssg_backend_name(n->runs_on), 0,
-                                                   0, r->prof.rows[p].min, 0, 0, 0, 0};
+        r->prof.rows[p] = (struct ssg_profile_row){.name = n->name, .type = n->desc->name,
+                                                   .backend = ssg_backend_name(n->runs_on),
+                                                   .min = r->prof.rows[p].min};
     }
     r->prof.width = g->width, r->prof.height = g->height;
     r->prof.threads = omp_get_max_threads();
@@ -217,52 +220,49 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     return e;
 }
 
-static void fill_stats(const struct run *r, struct ssg_run_stats *s)
+/* Copies the metrics and the GL context into the stats; 0 on out of memory. */
+static int fill_reports(const struct run *r, struct ssg_run_stats *s)
 {
-    const struct ssg_profile *p = &r->prof;
-    memset(s, 0, sizeof *s);
-    s->frames = p->frames;
-    s->frame_avg_ms = p->frames ? p->frame_sum / p->frames : 0;
-    s->frame_min_ms = p->frames ? p->frame_min : 0;
-    s->frame_max_ms = p->frame_max;
-    for (int i = 0; i < p->rows_count && i < SSG_RUN_NODES_MAX; i++) {
-        struct ssg_run_node_time *n = &s->nodes[s->node_count++];
-        snprintf(n->name, sizeof n->name, "%s", p->rows[i].name);
-        n->avg_ms = p->rows[i].calls ? p->rows[i].sum / p->rows[i].calls : 0;
-    }
-    for (int i = 0; i < r->metrics.count && i < SSG_RUN_METRICS_MAX; i++) {
-        struct ssg_run_metric *m = &s->metrics[s->metric_count++];
+    s->metrics = calloc((size_t)(r->metrics.count ? r->metrics.count : 1), sizeof *s->metrics);
+    if (!s->metrics)
+        return 0;
+    for (int i = 0; i < r->metrics.count; i++, s->metric_count++) {
+        struct ssg_run_metric *m = &s->metrics[i];
         snprintf(m->node, sizeof m->node, "%s", r->metrics.items[i].node);
         snprintf(m->name, sizeof m->name, "%s", r->metrics.items[i].name);
         m->value = r->metrics.items[i].value;
     }
+    if (r->uses_gl && !(s->gl = strdup(ssg_gl_describe())))
+        return 0;
+    return 1;
 }
 
-/* Timings or the profile, metrics, and the files they go to. */
-static enum ssg_err report(struct run *r, int frames, double total)
+/* What the frames measured, into the caller's stats (the pool still open: its peak). */
+static enum ssg_err fill_stats(const struct run *r, double total, struct ssg_run_stats *s)
 {
-    FILE *log = r->opt->log ? r->opt->log : stdout;
-    enum ssg_err e = SSG_OK;
-    if (!r->opt->quiet) {
-        if (frames > 1)
-            ssg_profile_print(&r->prof, log);
-        else
-            print_timings(r, total);
-        if (frames > 1 && r->uses_gl)
-            fprintf(log, "GL: %s\n", ssg_gl_describe());
-        ssg_metrics_print(&r->metrics, log);
+    *s = (struct ssg_run_stats){0};
+    if (!ssg_profile_stats(&r->prof, r->t, s) || !fill_reports(r, s)) {
+        ssg_run_stats_free(s);
+        return SSG_E_NOMEM;
     }
-    if (r->metrics.count) {
+    s->total_ms = total;
+    s->peak_pool_bytes = ssg_pool_peak_bytes(r->pool);
+    return SSG_OK;
+}
+
+/* After the last frame: the statistics, then metrics.json. */
+static enum ssg_err report(struct run *r, double total)
+{
+    enum ssg_err e = r->opt->stats ? fill_stats(r, total, r->opt->stats) : SSG_OK;
+    if (!e && r->metrics.count) {
         char path[1100];
         snprintf(path, sizeof path, "%s/metrics.json", out_dir(r));
         e = ssg_make_dirs(out_dir(r), r->diags);
         if (!e)
             e = ssg_metrics_write_json(&r->metrics, path, r->diags);
+        if (!e)
+            say(r, "wrote %s", path);
     }
-    if (!e && r->opt->profile_json)
-        e = ssg_profile_write_json(&r->prof, r->opt->profile_json, r->diags);
-    if (!e && r->opt->stats)
-        fill_stats(r, r->opt->stats);
     return e;
 }
 
@@ -270,6 +270,8 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
                            struct ssg_diags *diags)
 {
     struct ssg_run_options defaults = {0};
+    if (options && options->stats)
+        *options->stats = (struct ssg_run_stats){0};
     struct run r = {.g = g, .opt = options ? options : &defaults, .diags = diags,
                     .uses_gl = graph_uses_gl(g)};
     if (r.opt->threads > 0)
@@ -288,7 +290,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     for (int f = 0; f < frames && !e; f++)
         e = run_frame(&r, f, frames);
     if (!e)
-        e = report(&r, frames, ssg_now_ms() - t0);
+        e = report(&r, ssg_now_ms() - t0);
     run_free(&r);
     if (r.uses_gl)
         ssg_gl_close();

@@ -1,4 +1,4 @@
-/* metrics.c - collecting, printing and writing node metrics (metrics.h). */
+/* metrics.c - collecting and writing node metrics (metrics.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -21,17 +21,6 @@ void ssg_metrics_add(struct ssg_metrics *metrics, const char *node, const char *
     snprintf(m->node, sizeof m->node, "%s", node);
     snprintf(m->name, sizeof m->name, "%s", name);
     m->value = value;
-}
-
-void ssg_metrics_print(const struct ssg_metrics *metrics, FILE *stream)
-{
-    if (!metrics || metrics->count == 0)
-        return;
-    fprintf(stream, "%-16s %-12s %12s\n", "metrics of", "name", "value");
-    for (int i = 0; i < metrics->count; i++) {
-        const struct ssg_metric *m = &metrics->items[i];
-        fprintf(stream, "%-16s %-12s %12.6g\n", m->node, m->name, m->value);
-    }
 }
 
 static void json_number(FILE *f, double v)

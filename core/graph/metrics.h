@@ -1,12 +1,10 @@
 /* metrics.h - named scalar results that nodes report while running (compare's RMSE, PSNR,
- * SSIM, ...). The executor collects them, prints them after the per-node timings and writes
+ * SSIM, ...). The executor collects them, returns them in the run's statistics and writes
  * them to <out>/metrics.json; ssg_node_run returns them in struct ssg_outputs. One store per
  * run; ssg_metric_report may be called from the node's own thread only (not inside
  * ssg_parallel_rows bands). */
 #ifndef SSG_METRICS_H
 #define SSG_METRICS_H
-
-#include <stdio.h>
 
 #include "ssgraph.h"
 
@@ -26,8 +24,6 @@ struct ssg_metrics {
 /* Adds one metric; silently ignores reports past SSG_METRICS_MAX or without a store. */
 void ssg_metrics_add(struct ssg_metrics *metrics, const char *node, const char *name,
                      double value);
-/* Prints "node  name  value" lines under a header; nothing when empty. */
-void ssg_metrics_print(const struct ssg_metrics *metrics, FILE *stream);
 /* Writes {"node": {"name": value, ...}, ...} atomically (temporary file, then rename).
  * Non-finite values are written as null. */
 enum ssg_err ssg_metrics_write_json(const struct ssg_metrics *metrics, const char *path,

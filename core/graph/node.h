@@ -84,10 +84,12 @@ struct ssg_node_ctx {
     const struct ssg_shape *in_shape;
     const struct ssg_shape *out_shape;
     const struct ssg_shape *extra_shape;
+    const struct ssg_run_options *run; /* the graph run's options (its progress callback);
+                                          NULL = a single-node run, nothing reported */
 };
 
-/* Reports a named scalar result of this node (e.g. "rmse"); printed after the run and
- * written to <out>/metrics.json. Call from the node's thread, not inside row bands. */
+/* Reports a named scalar result of this node (e.g. "rmse"); returned in the run's stats
+ * and written to <out>/metrics.json. Call from the node's thread, not inside row bands. */
 void ssg_metric_report(const struct ssg_node_ctx *ctx, const char *name, double value);
 
 /* The images of one run: inputs in port order (NULL = unconnected optional), outputs in
@@ -156,6 +158,14 @@ int ssg_port_find(const struct ssg_port_desc *ports, int count, const char *name
  * deterministic whatever the threads. fn(user, y0, y1) covers rows [y0, y1). */
 typedef void (*ssg_rows_fn)(void *user, int y0, int y1);
 void ssg_parallel_rows(int height, int rows_per_band, ssg_rows_fn fn, void *user);
+
+/* ssg_parallel_rows for a node long enough to show its progress (reference_ao): the same
+ * bands, counted as they finish by whichever thread ran them; only the node's own thread
+ * (the caller) reports, between its bands, through the run's progress callback
+ * (ssgraph.h), then once with done after the last band. Without a callback (ctx->run NULL
+ * or its progress NULL) it is ssg_parallel_rows. Nothing a node computes depends on it. */
+void ssg_parallel_rows_progress(const struct ssg_node_ctx *ctx, int height, int rows_per_band,
+                                ssg_rows_fn fn, void *user);
 
 /* Camera intrinsics of the frame in the form the projection above uses. */
 struct ssg_projection {

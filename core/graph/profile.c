@@ -1,8 +1,9 @@
-/* profile.c - collecting, printing and writing the per-node profile (profile.h). */
+/* profile.c - collecting the per-node profile and handing it out as the run's statistics
+ * (profile.h). */
 #include <float.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "lang/diag.h"
 #include "graph/profile.h"
 
 int ssg_profile_init(struct ssg_profile *p, int count)
@@ -46,64 +47,55 @@ static double average(double sum, int n)
     return n ? sum / n : 0.0;
 }
 
-/* A profiler's tree: the frame at the root, the passes under it, then the sinks that ran
-   once after the last frame. */
-void ssg_profile_print(const struct ssg_profile *p, FILE *f)
+/* One node's entry: its last frame's timing t and its profile row. */
+static int fill_node(struct ssg_run_node *n, const struct ssg_profile *p,
+                     const struct ssg_profile_row *row, const struct ssg_node_timing *t)
 {
-    double frame = average(p->frame_sum, p->frames);
-    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s\n", "node", "type", "on",
-            "calls", "avg ms", "min ms", "max ms", "share", "gpu ms", "prepare ms");
-    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
-            "%.1f fps)\n", "frame", "", "", p->frames, frame, p->frames ? p->frame_min : 0.0,
-            p->frame_max, 100.0, p->width, p->height, p->threads,
-            frame > 0 ? 1000.0 / frame : 0.0);
-    for (int pass = 0; pass < 2; pass++)
-        for (int r = 0; r < p->rows_count; r++) {
-            const struct ssg_profile_row *row = &p->rows[r];
-            int in_frame = row->calls == p->frames;
-            if (in_frame != !pass)
-                continue;
-            double avg = average(row->sum, row->calls);
-            char gpu[32] = "-", share[16] = "     -", name[64];
-            if (row->backend[0] == 'g')
-                snprintf(gpu, sizeof gpu, "%.2f", average(row->gpu_sum, row->calls));
-            if (in_frame && frame > 0)
-                snprintf(share, sizeof share, "%5.1f%%", 100.0 * avg / frame);
-            snprintf(name, sizeof name, "%s%s", in_frame ? "  " : "", row->name);
-            fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", name,
-                    row->type, row->backend, row->calls, avg, row->calls ? row->min : 0.0,
-                    row->max, share, gpu, row->prepare_ms);
-        }
+    double avg = average(row->sum, row->calls), frame = average(p->frame_sum, p->frames);
+    *n = (struct ssg_run_node){
+        .name = strdup(row->name),
+        .type = row->type,
+        .backend = row->backend,
+        .ms = t->ms,
+        .gpu_ms = t->gpu_ms,
+        .transfer_ms = t->transfer_ms,
+        .calls = row->calls,
+        .avg_ms = avg,
+        .min_ms = row->calls ? row->min : 0.0,
+        .max_ms = row->max,
+        .share = row->calls == p->frames && frame > 0 ? avg / frame : 0.0,
+        .gpu_avg_ms = average(row->gpu_sum, row->calls),
+        .transfer_avg_ms = average(row->xfer_sum, row->calls),
+        .prepare_ms = row->prepare_ms,
+    };
+    return n->name != NULL;
 }
 
-static void write_json(FILE *f, const void *user)
+int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing *last,
+                      struct ssg_run_stats *s)
 {
-    const struct ssg_profile *p = user;
-    double frame = average(p->frame_sum, p->frames);
-    fprintf(f, "{\n  \"frames\": %d, \"width\": %d, \"height\": %d, \"threads\": %d,\n",
-            p->frames, p->width, p->height, p->threads);
-    fprintf(f, "  \"frame\": {\"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g},\n", frame,
-            p->frames ? p->frame_min : 0.0, p->frame_max);
-    fputs("  \"nodes\": [", f);
-    for (int r = 0; r < p->rows_count; r++) {
-        const struct ssg_profile_row *row = &p->rows[r];
-        double avg = average(row->sum, row->calls);
-        char share[32] = "null"; /* sinks run once, outside the frame */
-        if (row->calls == p->frames && frame > 0)
-            snprintf(share, sizeof share, "%.6g", avg / frame);
-        fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
-                "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
-                "\"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
-                "\"prepare_ms\": %.6g}", r ? "," : "", row->name, row->type, row->backend,
-                row->calls, avg, row->calls ? row->min : 0.0, row->max, share,
-                average(row->gpu_sum, row->calls),
-                average(row->xfer_sum, row->calls), row->prepare_ms);
-    }
-    fputs("\n  ]\n}\n", f);
+    s->frames = p->frames;
+    s->frame_avg_ms = average(p->frame_sum, p->frames);
+    s->frame_min_ms = p->frames ? p->frame_min : 0.0;
+    s->frame_max_ms = p->frame_max;
+    s->width = p->width, s->height = p->height, s->threads = p->threads;
+    s->nodes = calloc((size_t)(p->rows_count > 0 ? p->rows_count : 1), sizeof *s->nodes);
+    if (!s->nodes)
+        return 0;
+    for (int r = 0; r < p->rows_count; r++, s->node_count++)
+        if (!fill_node(&s->nodes[r], p, &p->rows[r], &last[r]))
+            return 0;
+    return 1;
 }
 
-enum ssg_err ssg_profile_write_json(const struct ssg_profile *p, const char *path,
-                                    struct ssg_diags *diags)
+void ssg_run_stats_free(struct ssg_run_stats *stats)
 {
-    return ssg_write_text_file(path, "profile", write_json, p, diags);
+    if (!stats)
+        return;
+    for (int i = 0; stats->nodes && i < stats->node_count; i++)
+        free(stats->nodes[i].name);
+    free(stats->nodes);
+    free(stats->metrics);
+    free(stats->gl);
+    *stats = (struct ssg_run_stats){0};
 }

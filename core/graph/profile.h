@@ -1,12 +1,10 @@
 /* profile.h - the per-node profile of a graph run over several frames (`ssgraph run
  * --frames N`): for every node its calls, average, minimum and maximum milliseconds, its
  * share of the frame (sinks, which run in the last frame only, have none), its one-off
- * prepare() time, and on GL the timer queries' average,
- * printed as a table like a GPU profiler's and written as JSON (--profile-json). */
+ * prepare() time, and on GL the timer queries' average; handed to the caller in struct
+ * ssg_run_stats (ssgraph.h), which `ssgraph run` prints as a profiler's table. */
 #ifndef SSG_PROFILE_H
 #define SSG_PROFILE_H
-
-#include <stdio.h>
 
 #include "graph/exec.h"
 
@@ -32,9 +30,10 @@ void ssg_profile_free(struct ssg_profile *p);
 void ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t);
 /* Adds one frame's total. */
 void ssg_profile_frame(struct ssg_profile *p, double ms);
-void ssg_profile_print(const struct ssg_profile *p, FILE *stream);
-/* The profile as JSON at path, whole or not at all. */
-enum ssg_err ssg_profile_write_json(const struct ssg_profile *p, const char *path,
-                                    struct ssg_diags *diags);
+/* Fills the frame and node parts of *s (zeroed by the caller) from the profile and the
+ * last frame's timing of each row; 0 on out of memory (what it allocated stays in *s, for
+ * ssg_run_stats_free). */
+int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing *last,
+                      struct ssg_run_stats *s);
 
 #endif

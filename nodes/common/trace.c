@@ -1,16 +1,12 @@
-/* trace.c - camera frame, ray origins, quasi-Monte Carlo sampling and the progress bar of
- * the nodes that trace the scene (trace.h, which cites the methods). */
+/* trace.c - camera frame, ray origins and quasi-Monte Carlo sampling of the nodes that
+ * trace the scene (trace.h, which cites the methods). */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
-#include <unistd.h>
 
 #include "scene/rt.h"
 #include "scene/scene.h"
 #include "common/surface.h"
 #include "common/trace.h"
-
-enum { BAR = 30 }; /* width of the progress bar in characters */
 
 void ssg_camera_frame(const struct ssg_camera *camera, float rot[9], float eye[3])
 {
@@ -165,47 +161,4 @@ void ssg_malley_dirs(const float *u, const float *c, const float *s, int count, 
         dy[i] = x * t1 + y * b1 + z * n1;
         dz[i] = x * t2 + y * b2 + z * n2;
     }
-}
-
-void ssg_progress_start(struct ssg_progress *p, const char *node, const char *instance,
-                        int height, int rows_per_band)
-{
-    p->node = node;
-    p->name = instance ? instance : "";
-    p->bands = (height + rows_per_band - 1) / rows_per_band;
-    p->on = p->bands > 0 && isatty(fileno(stderr));
-    atomic_init(&p->done, 0);
-    atomic_init(&p->shown, -1);
-}
-
-/* Only the thread that raises the shown percentage prints, and only while it is still the
-   latest under the stream's lock, so the bar never steps back when two threads finish
-   bands at once. */
-void ssg_progress_band(struct ssg_progress *p)
-{
-    if (!p->on)
-        return;
-    int done = atomic_fetch_add(&p->done, 1) + 1;
-    int pct = (int)((long long)done * 100 / p->bands);
-    int prev = atomic_load(&p->shown);
-    while (pct > prev) {
-        if (!atomic_compare_exchange_weak(&p->shown, &prev, pct))
-            continue; /* prev now holds the newer value */
-        char bar[BAR + 1];
-        for (int i = 0; i < BAR; i++)
-            bar[i] = i < pct * BAR / 100 ? '#' : '.';
-        bar[BAR] = '\0';
-        flockfile(stderr);
-        if (atomic_load(&p->shown) == pct)
-            fprintf(stderr, "\r%s '%s' [%s] %3d%%", p->node, p->name, bar, pct);
-        fflush(stderr);
-        funlockfile(stderr);
-        break;
-    }
-}
-
-void ssg_progress_end(struct ssg_progress *p)
-{
-    if (p->on)
-        fputc('\n', stderr);
 }

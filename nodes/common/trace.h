@@ -2,7 +2,7 @@
  * the camera's view -> world transform and the scene check of their prepare(), the raised
  * ray origin of a G-buffer point, quasi-Monte Carlo sampling (the Hammersley set mapped to
  * the disk, per-pixel hashing for Cranley-Patterson rotation, a turned tangent frame,
- * Malley's cosine-weighted directions) and the terminal progress bar of a long render.
+ * Malley's cosine-weighted directions).
  *
  * Methods: Szentandrasi, "Modern Methods of Realistic Lighting in Real Time", sec. 4.2,
  * eq. 5-7 (Hammersley set, radical inverse); Cranley and Patterson 1976 (per-pixel shift
@@ -13,13 +13,11 @@
  * float operations, so moving them here left every output byte unchanged.
  *
  * Ownership: the functions write only through the pointers they are given; tables and
- * scratch belong to the caller. Thread safety: everything but the progress bar is pure
- * and may run on any thread. A struct ssg_progress is started and ended on the node's own
- * thread; ssg_progress_band may be called by any band's thread at once (C11 atomics). */
+ * scratch belong to the caller. Thread safety: everything is pure and may run on any
+ * thread. */
 #ifndef SSG_TRACE_H
 #define SSG_TRACE_H
 
-#include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -99,26 +97,5 @@ void ssg_turned_basis(const float n[3], float turn, float t[3], float b[3]);
 void ssg_malley_dirs(const float *u, const float *c, const float *s, int count, float shift,
                      const float t[3], const float b[3], const float n[3],
                      float *restrict dx, float *restrict dy, float *restrict dz);
-
-/* A progress bar on stderr, shown only when stderr is a terminal; nothing a node outputs
- * depends on it. */
-struct ssg_progress {
-    const char *node; /* node type, printed first */
-    const char *name; /* instance name, never NULL */
-    int on;           /* 1 = stderr is a terminal: show the bar */
-    int bands;        /* bands in the frame */
-    atomic_int done;  /* bands finished */
-    atomic_int shown; /* last percentage printed, -1 before the first */
-};
-
-/* Starts a bar over the bands of ssg_parallel_rows(height, rows_per_band, ...). */
-void ssg_progress_start(struct ssg_progress *p, const char *node, const char *instance,
-                        int height, int rows_per_band);
-
-/* One band finished: advances the bar (any thread). */
-void ssg_progress_band(struct ssg_progress *p);
-
-/* Ends the bar's line. */
-void ssg_progress_end(struct ssg_progress *p);
 
 #endif

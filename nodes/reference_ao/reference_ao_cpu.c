@@ -8,9 +8,9 @@
  * scratch, and the batch goes to Embree as one occlusion query
  * (ssg_rt_occluded_rays, which says why it uses the query style it does). A pixel
  * depends only on its inputs, (x, y), the seed and the table, and its count of occluded
- * rays is an integer sum, so the output does not depend on the threads. The progress bar
- * (struct ssg_progress: stderr, only when it is a terminal) is advanced by whichever
- * thread finishes a band; nothing in the output depends on it. */
+ * rays is an integer sum, so the output does not depend on the threads. The bands go
+ * through ssg_parallel_rows_progress, which reports the run's progress (the command
+ * line's bar on a terminal); nothing in the output depends on it. */
 #include "reference_ao.h"
 #include "scene/rt.h"
 #include "scene/scene.h"
@@ -25,7 +25,6 @@ struct job {
     const float *pos[3], *nrm[3]; /* input planes */
     float *out;
     int w, h;
-    struct ssg_progress bar;
 };
 
 /* What the rays of one pixel share. */
@@ -108,7 +107,6 @@ static void rows(void *user, int y0, int y1)
         for (int x = 0; x < j->w; x++)
             j->out[(size_t)y * (size_t)j->w + (size_t)x] =
                 setup_pixel(j, x, y, &px) ? trace_pixel(j, &px, &k) : 1.0f;
-    ssg_progress_band(&j->bar);
 }
 
 enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -123,8 +121,6 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
         j.pos[i] = ssg_image_plane(pos, i);
         j.nrm[i] = ssg_image_plane(nrm, i);
     }
-    ssg_progress_start(&j.bar, "reference_ao", ctx->instance, j.h, ROWS_PER_BAND);
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
-    ssg_progress_end(&j.bar);
+    ssg_parallel_rows_progress(ctx, j.h, ROWS_PER_BAND, rows, &j);
     return SSG_OK;
 }

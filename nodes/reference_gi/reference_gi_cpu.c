@@ -15,9 +15,9 @@
  *   hits compacted with their normals, albedos and raised origins, then per light one
  *   occlusion batch over all live paths, and one for their environment samples.
  * Sums run in sample order into doubles, so a pixel depends only on its inputs, (x, y),
- * the seed and the table, never on the threads. The progress bar (struct ssg_progress:
- * stderr, only on a terminal) is advanced by whichever thread finishes a band; nothing in
- * the output depends on it. */
+ * the seed and the table, never on the threads. The bands go through
+ * ssg_parallel_rows_progress, which reports the run's progress (the command line's bar on
+ * a terminal); nothing in the output depends on it. */
 #include <math.h>
 
 #include "scene/env.h"
@@ -39,7 +39,6 @@ struct job {
     float *direct[3], *bounce[3], *out[3]; /* output planes */
     int w, h;
     int lit;              /* any light or environment to bounce: 0 = no bounce rays */
-    struct ssg_progress bar;
 };
 
 /* What the rays of one pixel share. */
@@ -340,7 +339,6 @@ static void rows(void *user, int y0, int y1)
     for (int y = y0; y < y1; y++)
         for (int x = 0; x < j->w; x++)
             shade_pixel(j, x, y, &k, &s);
-    ssg_progress_band(&j->bar);
 }
 
 enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -361,8 +359,6 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
         j.bounce[i] = ssg_image_plane(io->out[SSG_REFERENCE_GI_OUT_BOUNCE], i);
         j.out[i] = ssg_image_plane(io->out[SSG_REFERENCE_GI_OUT_OUT], i);
     }
-    ssg_progress_start(&j.bar, "reference_gi", ctx->instance, j.h, ROWS_PER_BAND);
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
-    ssg_progress_end(&j.bar);
+    ssg_parallel_rows_progress(ctx, j.h, ROWS_PER_BAND, rows, &j);
     return SSG_OK;
 }

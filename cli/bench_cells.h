@@ -1,0 +1,55 @@
+/* bench_cells.h - what the two halves of `ssgraph bench` share (private to cli/): the
+ * sweeps and cells that bench.c parses, checks and runs, and that bench_out.c writes
+ * (bench.csv, bench.json, bench.md) and plots. */
+#ifndef SSG_CLI_BENCH_CELLS_H
+#define SSG_CLI_BENCH_CELLS_H
+
+#include "bench.h"
+
+/* At most 64 values a sweep, and at most MAX_CELLS cells in one bench: each finished cell
+   rewrites bench.json and bench.md whole, and a sweep that big is hours of work that is
+   better split (checked before anything is allocated). */
+enum { MAX_VALUES = 64, MAX_CELLS = 10000 };
+
+struct sweep {
+    char key[128];                    /* node.param */
+    char text[1024];                  /* the values, split in place */
+    const char *values[MAX_VALUES];
+    int count;
+};
+
+struct cell {
+    int index[SSG_BENCH_MAX_SWEEPS];  /* value index per sweep */
+    int ok;
+    char error[512];
+    struct ssg_run_stats stats;
+};
+
+struct bench {
+    const struct ssg_bench_request *req;
+    const char *graph;                /* what runs: the graph, or bench.graph around it */
+    char graph_buf[1200];
+    struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
+    int n;                            /* sweeps */
+    struct cell *cells;
+    int cell_count, done;
+};
+
+static inline const char *ssg_bench_value(const struct bench *b, const struct cell *c, int k)
+{
+    return b->sweeps[k].values[c->index[k]];
+}
+
+/* The ms a table shows for a cell: the --time node's average, else the frame's. */
+double ssg_bench_shown_ms(const struct bench *b, const struct cell *c);
+
+/* After each cell: bench.csv, bench.json and bench.md rewritten whole, each through a
+ * temporary and a rename (files.h), so an interrupted bench keeps every finished cell and
+ * no file is ever half-written or written through a planted link. */
+enum ssg_err ssg_bench_save(const struct bench *b, struct ssg_diags *d);
+
+/* bench_ms.png and bench_pareto.png from the finished cells; 0 on success, else 1 with
+ * the reason on stderr. */
+int ssg_bench_draw_plots(const struct bench *b);
+
+#endif

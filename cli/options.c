@@ -1,0 +1,375 @@
+/* options.c - the command line's options as one table (options.h): each row names the
+ * option, its argument, the commands it applies to, its help and how its value is taken,
+ * so that parsing, the usage text and the check that an option belongs to the command all
+ * read the same row. */
+#include <errno.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "options.h"
+
+struct option;
+/* Takes the option's value (NULL for a flag) into *a; 0, or a usage error's exit code. */
+typedef int (*take_fn)(struct ssg_cli_args *a, const struct option *opt, const char *value);
+
+struct option {
+    const char *name;     /* "--size" */
+    const char *arg;      /* "WxH" in the usage; NULL = a flag, which takes no value */
+    unsigned commands;    /* enum ssg_cli_command bits it applies to */
+    const char *help;     /* usage text; each '\n' starts an indented line */
+    take_fn take;
+    size_t field;         /* offsetof(struct ssg_cli_args, ...) that take fills */
+    size_t count;         /* lists: offsetof the int counting the entries */
+    double lo, hi;        /* numbers: range (integers inclusive, decimals exclusive);
+                             lists: hi = most entries */
+    const char *expects;  /* a bad value is told "<name> expects <this>" */
+};
+
+enum { HELP_COLUMN = 22 }; /* where an option's help starts in the usage text */
+
+/* The names of the commands, bit by bit of enum ssg_cli_command. */
+static const char *const command_names[] = {"run", "check", "node", "bench", "compare"};
+
+#define FIELD(a, opt, type) ((type *)((char *)(a) + (opt)->field))
+
+int ssg_cli_usage_error(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "ssgraph: error: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n(run 'ssgraph --help' for usage)\n");
+    return SSG_CLI_EXIT_USAGE;
+}
+
+/* ssg_cli_usage_error for messages with several parts. */
+static int usage_errorf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int usage_errorf(const char *fmt, ...)
+{
+    char text[1200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    return ssg_cli_usage_error("%s", text);
+}
+
+static int parse_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static int take_flag(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    (void)value;
+    *FIELD(a, opt, int) = 1;
+    return 0;
+}
+
+static int take_text(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    *FIELD(a, opt, const char *) = value;
+    return 0;
+}
+
+static int take_int(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    long n;
+    if (!parse_int(value, (long)opt->lo, (long)opt->hi, &n))
+        return usage_errorf("%s expects an integer %ld..%ld, got '%s'", opt->name,
+                            (long)opt->lo, (long)opt->hi, value);
+    *FIELD(a, opt, int) = (int)n;
+    return 0;
+}
+
+/* A decimal strictly between lo and hi. */
+static int take_float(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    char *end;
+    float v = strtof(value, &end);
+    if (*end || end == value || !(v > opt->lo && v < opt->hi))
+        return usage_errorf("%s expects %s, got '%s'", opt->name, opt->expects, value);
+    *FIELD(a, opt, float) = v;
+    return 0;
+}
+
+/* A positive number kept as written (the node parses it again). */
+static int take_positive_text(struct ssg_cli_args *a, const struct option *opt,
+                              const char *value)
+{
+    char *end;
+    if (!(strtod(value, &end) > 0) || *end || end == value)
+        return usage_errorf("%s expects %s, got '%s'", opt->name, opt->expects, value);
+    return take_text(a, opt, value);
+}
+
+/* A repeatable option: one more entry of an array of strings. */
+static int take_list(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    int *count = (int *)((char *)a + opt->count);
+    if (*count >= (int)opt->hi)
+        return usage_errorf("too many %s options (at most %d), at '%s'", opt->name,
+                            (int)opt->hi, value);
+    FIELD(a, opt, const char *)[(*count)++] = value;
+    return 0;
+}
+
+static int take_size(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    char buf[64];
+    long w, h;
+    const char *x = strchr(value, 'x');
+    int ok = x && x - value < (long)sizeof buf;
+    if (ok) {
+        memcpy(buf, value, (size_t)(x - value));
+        buf[x - value] = 0;
+        ok = parse_int(buf, 1, 16384, &w) && parse_int(x + 1, 1, 16384, &h);
+    }
+    if (!ok)
+        return usage_errorf("%s expects %s, got '%s'", opt->name, opt->expects, value);
+    a->ov.width = (int)w;
+    a->ov.height = (int)h;
+    return 0;
+}
+
+static int take_backend(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    if (strcmp(value, "cpu") && strcmp(value, "gl"))
+        return usage_errorf("%s expects %s, got '%s'", opt->name, opt->expects, value);
+    return take_text(a, opt, value);
+}
+
+#define OF(member) offsetof(struct ssg_cli_args, member)
+#define ALL_GRAPH (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH)
+
+/* In the order of the usage text, which starts a heading where the commands change. */
+static const struct option options[] = {
+    {.name = "--size", .arg = "WxH", .commands = ALL_GRAPH, .take = take_size,
+     .expects = "WIDTHxHEIGHT with 1..16384 each",
+     .help = "frame size in pixels instead of the graph's"},
+    {.name = "--set", .arg = "NODE.P=VALUE", .commands = ALL_GRAPH, .take = take_list,
+     .field = OF(sets), .count = OF(ov.set_count), .hi = SSG_CLI_MAX_SETS,
+     .help = "override a parameter or input (repeatable; for `node`: P=VALUE)"},
+    {.name = "--seed", .arg = "N", .commands = ALL_GRAPH, .take = take_int,
+     .field = OF(seed), .lo = 0, .hi = 2147483647,
+     .help = "seed of every pseudo-random choice (default: the graph's, or 1)"},
+    {.name = "--backend", .arg = "cpu|gl", .commands = ALL_GRAPH, .take = take_backend,
+     .field = OF(ov.backend), .expects = "cpu or gl",
+     .help = "run every node there (gl: OpenGL 4.5 through EGL on a GPU, else\n"
+             "OSMesa; nodes without GL stay on the CPU); default: the graph's\n"
+             "`backend` line and its nodes' backend= arguments, else cpu"},
+    {.name = "--scene", .arg = "FILE", .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH,
+     .take = take_text, .field = OF(ov.scene),
+     .help = "use this scene instead of the graph's"},
+    {.name = "--out", .arg = "DIR", .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH,
+     .take = take_text, .field = OF(out_dir),
+     .help = "output directory (default out)"},
+    {.name = "--threads", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
+     .take = take_int, .field = OF(threads), .lo = 1, .hi = 1024,
+     .help = "worker threads (default: all cores); never changes the result"},
+    {.name = "--frames", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
+     .take = take_int, .field = OF(frames), .lo = 1, .hi = 1000000,
+     .help = "run the graph N times (each node prepares once); run prints a\n"
+             "per-node profile: calls, avg/min/max ms, share of the frame;\n"
+             "bench times each cell over N frames (default 5)"},
+    {.name = "--stereo", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_flag,
+     .field = OF(stereo),
+     .help = "both eyes of a head-mounted display, 1080x1200 each unless\n"
+             "--size, into --out/left and --out/right; prints both eyes' time"},
+    {.name = "--ipd", .arg = "D", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_float,
+     .field = OF(ipd), .lo = 0, .hi = 1e6, .expects = "a positive distance in scene units",
+     .help = "(with --stereo) distance between the eyes, scene units (0.064)"},
+    {.name = "--quiet", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(quiet),
+     .help = "do not print per-node timings"},
+    {.name = "--verbose", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(verbose),
+     .help = "also name every file the run writes, on stderr"},
+    {.name = "--profile-json", .arg = "FILE", .commands = SSG_CLI_RUN, .take = take_text,
+     .field = OF(profile_json),
+     .help = "write that profile (or one frame's) as JSON"},
+    {.name = "--in", .arg = "PORT=FILE[:LAYER]", .commands = SSG_CLI_NODE, .take = take_list,
+     .field = OF(inputs), .count = OF(input_count), .hi = SSG_CLI_MAX_INPUTS,
+     .help = "bind an image file, or one EXR layer of it, to a port"},
+    {.name = "--fov", .arg = "DEGREES", .commands = SSG_CLI_NODE, .take = take_float,
+     .field = OF(fov), .lo = 0, .hi = 180, .expects = "degrees in (0, 180)",
+     .help = "vertical field of view of the frame (default 45)"},
+    {.name = "--sweep", .arg = "NODE.PARAM=V1,V2,...", .commands = SSG_CLI_BENCH,
+     .take = take_list, .field = OF(sweeps), .count = OF(sweep_count),
+     .hi = SSG_BENCH_MAX_SWEEPS,
+     .help = "one parameter's values (repeatable, up to 4)"},
+    {.name = "--time", .arg = "NODE", .commands = SSG_CLI_BENCH, .take = take_text,
+     .field = OF(time_node),
+     .help = "the node whose ms the table shows (default: the whole frame)"},
+    {.name = "--error", .arg = "NODE.METRIC", .commands = SSG_CLI_BENCH, .take = take_text,
+     .field = OF(error_metric),
+     .help = "the error shown and plotted (default: the first metric)"},
+    {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH, .take = take_text,
+     .field = OF(reference),
+     .help = "the truth each cell's --image is compared with"},
+    {.name = "--image", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH, .take = take_text,
+     .field = OF(image),
+     .help = "the image compared with --reference"},
+    {.name = "--plot", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(plot),
+     .help = "draw bench_ms.png and bench_pareto.png with gnuplot"},
+    {.name = "--mask", .arg = "M", .commands = SSG_CLI_COMPARE, .take = take_text,
+     .field = OF(mask),
+     .help = "FILE[:LAYER]: compare only the pixels where it is over 0.5"},
+    {.name = "--peak", .arg = "P", .commands = SSG_CLI_COMPARE, .take = take_positive_text,
+     .field = OF(peak), .expects = "a positive number",
+     .help = "the signal's peak for the PSNR (default 1)"},
+    {.name = "--json", .commands = SSG_CLI_COMPARE, .take = take_flag, .field = OF(json),
+     .help = "the metrics as one line of JSON"},
+};
+enum { OPTION_COUNT = sizeof options / sizeof options[0] };
+
+static const char *const usage_commands =
+    "usage: ssgraph <command> [arguments]\n"
+    "\n"
+    "commands:\n"
+    "  run FILE        validate and run a graph; writes into --out (default out/)\n"
+    "  check FILE      validate a graph and its scene without running it (FILE.scene:\n"
+    "                  validate a scene and load its meshes)\n"
+    "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
+    "  compare A B     RMSE, MAE, PSNR, SSIM of image A against reference B (FILE[:LAYER];\n"
+    "                  --mask M, --json, --peak P; diff image: node compare --in ...)\n"
+    "  bench FILE      run a graph for every combination of --sweep NODE.PARAM=V1,V2,...\n"
+    "                  (up to 4; --frames N each, default 5); writes bench.csv, bench.md\n"
+    "                  and bench.json into --out, a row per cell as it finishes; the\n"
+    "                  table shows --time NODE's ms (default: the whole frame); --plot\n"
+    "                  draws ms against the first sweep and --error NODE.METRIC against\n"
+    "                  ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
+    "                  --image NODE.PORT adds each cell's error against that truth;\n"
+    "                  --stereo times both eyes of every cell (1080x1200 unless --size)\n"
+    "  nodes           list the nodes\n"
+    "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
+    "  docs            the Markdown reference of every node\n";
+
+/* "run, check and node": the commands of a mask, as a sentence's list. */
+static void command_list(unsigned mask, char *buf, size_t len)
+{
+    int total = 0, n = 0;
+    size_t used = 0;
+    buf[0] = 0;
+    for (unsigned m = mask; m; m &= m - 1)
+        total++;
+    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++) {
+        if (!(mask & (1u << c)) || used >= len)
+            continue;
+        n++;
+        used += (size_t)snprintf(buf + used, len - used, "%s%s",
+                                 n == 1 ? "" : n == total ? " and " : ", ", command_names[c]);
+    }
+}
+
+/* "  --name ARG   help", the help's further lines indented to its column. */
+static void usage_option(const struct option *o, FILE *f)
+{
+    char head[64];
+    snprintf(head, sizeof head, "%s%s%s", o->name, o->arg ? " " : "", o->arg ? o->arg : "");
+    int width = (int)strlen(head) <= HELP_COLUMN - 3 ? HELP_COLUMN - 3 : (int)strlen(head) + 1;
+    fprintf(f, "  %-*s ", width, head);
+    for (const char *p = o->help; *p; p++) {
+        fputc(*p, f);
+        if (*p == '\n')
+            fprintf(f, "%*s", HELP_COLUMN, "");
+    }
+    fputc('\n', f);
+}
+
+void ssg_cli_usage(FILE *f)
+{
+    fputs(usage_commands, f);
+    for (int i = 0; i < OPTION_COUNT; i++) {
+        if (i == 0 || options[i].commands != options[i - 1].commands) {
+            char list[128];
+            command_list(options[i].commands, list, sizeof list);
+            fprintf(f, "\noptions of %s:\n", list);
+        }
+        usage_option(&options[i], f);
+    }
+    fputs("\n  --help, --version\n", f);
+}
+
+static const struct option *find_option(const char *name)
+{
+    for (int i = 0; i < OPTION_COUNT; i++)
+        if (!strcmp(options[i].name, name))
+            return &options[i];
+    return NULL;
+}
+
+int ssg_cli_command_find(const char *name, enum ssg_cli_command *command)
+{
+    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++)
+        if (!strcmp(name, command_names[c])) {
+            *command = (enum ssg_cli_command)(1u << c);
+            return 1;
+        }
+    return 0;
+}
+
+static const char *command_name(enum ssg_cli_command command)
+{
+    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++)
+        if (command == 1u << c)
+            return command_names[c];
+    return "?";
+}
+
+/* The option at argv[*i] and its value (argv[*i + 1], then skipped). */
+static int take_option(enum ssg_cli_command command, int argc, char **argv, int *i,
+                       struct ssg_cli_args *a)
+{
+    const struct option *opt = find_option(argv[*i]);
+    if (!opt)
+        return ssg_cli_usage_error("unknown option '%s'", argv[*i]);
+    if (!(opt->commands & command)) {
+        char list[128];
+        command_list(opt->commands, list, sizeof list);
+        return usage_errorf("option '%s' does not apply to '%s' (it is an option of %s)",
+                            opt->name, command_name(command), list);
+    }
+    if (opt->arg && *i + 1 >= argc)
+        return ssg_cli_usage_error("option '%s' needs a value", opt->name);
+    return opt->take(a, opt, opt->arg ? argv[++*i] : NULL);
+}
+
+static void defaults(struct ssg_cli_args *a)
+{
+    *a = (struct ssg_cli_args){.seed = -1, .out_dir = "out", .ipd = 0.064f};
+    a->ov.sets = a->sets;
+}
+
+/* The positional arguments a command wants: compare two images, the others one. */
+static int check_positional(enum ssg_cli_command command, const struct ssg_cli_args *a)
+{
+    if (command == SSG_CLI_COMPARE)
+        return a->file_count == 2 ? 0
+                                  : ssg_cli_usage_error("%s", "compare expects two image files: A B");
+    return a->file_count ? 0 : ssg_cli_usage_error("%s", "missing FILE (or NODE) argument");
+}
+
+int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
+                  struct ssg_cli_args *a)
+{
+    int most = command == SSG_CLI_COMPARE ? 2 : 1;
+    defaults(a);
+    for (int i = 0; i < argc; i++) {
+        int rc = 0;
+        if (argv[i][0] == '-' && argv[i][1] == '-')
+            rc = take_option(command, argc, argv, &i, a);
+        else if (a->file_count < most)
+            a->files[a->file_count++] = argv[i];
+        else
+            rc = ssg_cli_usage_error("unexpected argument '%s'", argv[i]);
+        if (rc)
+            return rc;
+    }
+    a->ov.seed = a->seed;
+    return check_positional(command, a);
+}

@@ -1,0 +1,69 @@
+/* options.h - the command line's options (options.c): one table of every option, its
+ * argument, the commands it applies to and its help, which both parses argv and writes
+ * the usage text; an option given to a command it does not apply to is a usage error.
+ * Ownership: the parsed arguments point into argv. */
+#ifndef SSG_CLI_OPTIONS_H
+#define SSG_CLI_OPTIONS_H
+
+#include <stdio.h>
+
+#include "bench.h"
+#include "ssgraph.h"
+
+/* The commands that take options, as bits of an option's mask. */
+enum ssg_cli_command {
+    SSG_CLI_RUN = 1u << 0,
+    SSG_CLI_CHECK = 1u << 1,
+    SSG_CLI_NODE = 1u << 2,
+    SSG_CLI_BENCH = 1u << 3,
+    SSG_CLI_COMPARE = 1u << 4,
+};
+
+enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2 };
+
+/* What the command line said; zero-initialised, then defaults, by ssg_cli_parse. */
+struct ssg_cli_args {
+    const char *files[2];            /* positional: FILE (node: NODE); compare: A and B */
+    int file_count;
+    struct ssg_overrides ov;         /* --scene, --size, --set, --seed, --backend */
+    const char *sets[SSG_CLI_MAX_SETS];
+    int seed;                        /* --seed; -1 = the graph's own */
+    const char *inputs[SSG_CLI_MAX_INPUTS]; /* node: --in port=file[:layer] */
+    int input_count;
+    const char *out_dir;             /* --out; default "out" */
+    int threads;                     /* --threads; 0 = all cores */
+    int quiet;                       /* run: --quiet */
+    int verbose;                     /* run: --verbose */
+    float fov;                       /* node: --fov, degrees; 0 = the default */
+    int frames;                      /* run, bench: --frames; 0 = the command's default */
+    const char *profile_json;        /* run: --profile-json */
+    const char *sweeps[SSG_BENCH_MAX_SWEEPS]; /* bench: node.param=v1,v2,... */
+    int sweep_count;
+    const char *time_node;           /* bench: --time */
+    const char *error_metric;        /* bench: --error */
+    int plot;                        /* bench: --plot */
+    const char *reference, *image;   /* bench: --reference, --image (NODE.PORT) */
+    int stereo;                      /* run, bench: --stereo */
+    float ipd;                       /* run, bench: --ipd, scene units; default 0.064 */
+    const char *mask;                /* compare: --mask FILE[:LAYER] */
+    const char *peak;                /* compare: --peak, checked positive; NULL = 1 */
+    int json;                        /* compare: --json */
+};
+
+/* The command of that name ("run"); 0 when none takes options by that name. */
+int ssg_cli_command_find(const char *name, enum ssg_cli_command *command);
+
+/* Parses the arguments after the command into *a. Returns 0, or prints the usage error
+ * (unknown option, an option of another command, a bad value, a missing or extra
+ * positional argument) to stderr and returns SSG_CLI_EXIT_USAGE. */
+int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
+                  struct ssg_cli_args *a);
+
+/* Prints "ssgraph: error: <message>" and the hint to --help; returns SSG_CLI_EXIT_USAGE. */
+int ssg_cli_usage_error(const char *fmt, const char *arg);
+
+/* The whole usage text (commands, then the options of the table grouped by the commands
+ * they apply to). */
+void ssg_cli_usage(FILE *stream);
+
+#endif

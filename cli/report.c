@@ -1,0 +1,138 @@
+/* report.c - printing a graph run's statistics, progress and notices (report.h). The
+ * formats are those the library printed before it handed them out, column for column:
+ * scripts (bench/bench.py) and tests read them. */
+#include <stdio.h>
+#include <string.h>
+
+#include "lang/files.h"
+#include "report.h"
+
+enum { BAR = 30 }; /* width of the progress bar in characters */
+
+/* One frame: every node's last run, then the whole run's wall clock. */
+static void print_timings(const struct ssg_run_stats *s, FILE *f)
+{
+    fprintf(f, "%-16s %-12s %-4s %10s %10s %10s\n", "node", "type", "on", "ms", "gpu ms",
+            "xfer ms");
+    for (int i = 0; i < s->node_count; i++) {
+        const struct ssg_run_node *n = &s->nodes[i];
+        char gpu[32] = "-", xfer[32] = "-";
+        if (!strcmp(n->backend, "gl"))
+            snprintf(gpu, sizeof gpu, "%.2f", n->gpu_ms);
+        if (n->transfer_ms > 0)
+            snprintf(xfer, sizeof xfer, "%.2f", n->transfer_ms);
+        fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s\n", n->name, n->type, n->backend, n->ms,
+                gpu, xfer);
+    }
+    fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s   (%dx%d, %d threads, peak images %.1f MB)\n",
+            "total", "", "", s->total_ms, "", "", s->width, s->height, s->threads,
+            (double)s->peak_pool_bytes / (1024.0 * 1024.0));
+}
+
+/* A node ran in every frame: a pass, under the frame in the tree; else a sink. */
+static int in_frame(const struct ssg_run_stats *s, const struct ssg_run_node *n)
+{
+    return n->calls == s->frames;
+}
+
+static void print_profile_row(const struct ssg_run_stats *s, const struct ssg_run_node *n,
+                              FILE *f)
+{
+    char gpu[32] = "-", share[16] = "     -", name[64];
+    if (!strcmp(n->backend, "gl"))
+        snprintf(gpu, sizeof gpu, "%.2f", n->gpu_avg_ms);
+    if (in_frame(s, n) && s->frame_avg_ms > 0)
+        snprintf(share, sizeof share, "%5.1f%%", 100.0 * n->share);
+    snprintf(name, sizeof name, "%s%s", in_frame(s, n) ? "  " : "", n->name);
+    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", name, n->type,
+            n->backend, n->calls, n->avg_ms, n->min_ms, n->max_ms, share, gpu, n->prepare_ms);
+}
+
+/* A profiler's tree: the frame at the root, the passes under it, then the sinks that ran
+   once after the last frame. */
+static void print_profile(const struct ssg_run_stats *s, FILE *f)
+{
+    double frame = s->frame_avg_ms;
+    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s\n", "node", "type", "on",
+            "calls", "avg ms", "min ms", "max ms", "share", "gpu ms", "prepare ms");
+    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
+            "%.1f fps)\n", "frame", "", "", s->frames, frame, s->frame_min_ms, s->frame_max_ms,
+            100.0, s->width, s->height, s->threads, frame > 0 ? 1000.0 / frame : 0.0);
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < s->node_count; i++)
+            if (in_frame(s, &s->nodes[i]) == !pass)
+                print_profile_row(s, &s->nodes[i], f);
+}
+
+static void print_metrics(const struct ssg_run_stats *s, FILE *f)
+{
+    if (s->metric_count == 0)
+        return;
+    fprintf(f, "%-16s %-12s %12s\n", "metrics of", "name", "value");
+    for (int i = 0; i < s->metric_count; i++) {
+        const struct ssg_run_metric *m = &s->metrics[i];
+        fprintf(f, "%-16s %-12s %12.6g\n", m->node, m->name, m->value);
+    }
+}
+
+void ssg_report_print(const struct ssg_run_stats *s, FILE *f)
+{
+    if (s->frames > 1)
+        print_profile(s, f);
+    else
+        print_timings(s, f);
+    if (s->gl)
+        fprintf(f, "GL: %s\n", s->gl);
+    print_metrics(s, f);
+}
+
+static void write_json(FILE *f, const void *user)
+{
+    const struct ssg_run_stats *s = user;
+    fprintf(f, "{\n  \"frames\": %d, \"width\": %d, \"height\": %d, \"threads\": %d,\n",
+            s->frames, s->width, s->height, s->threads);
+    fprintf(f, "  \"frame\": {\"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g},\n",
+            s->frame_avg_ms, s->frame_min_ms, s->frame_max_ms);
+    fputs("  \"nodes\": [", f);
+    for (int i = 0; i < s->node_count; i++) {
+        const struct ssg_run_node *n = &s->nodes[i];
+        char share[32] = "null"; /* sinks run once, outside the frame */
+        if (in_frame(s, n) && s->frame_avg_ms > 0)
+            snprintf(share, sizeof share, "%.6g", n->share);
+        fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
+                "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
+                "\"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
+                "\"prepare_ms\": %.6g}", i ? "," : "", n->name, n->type, n->backend,
+                n->calls, n->avg_ms, n->min_ms, n->max_ms, share, n->gpu_avg_ms,
+                n->transfer_avg_ms, n->prepare_ms);
+    }
+    fputs("\n  ]\n}\n", f);
+}
+
+enum ssg_err ssg_report_write_json(const struct ssg_run_stats *stats, const char *path,
+                                   struct ssg_diags *diags)
+{
+    return ssg_write_text_file(path, "profile", write_json, stats, diags);
+}
+
+/* The library reports each rise of the whole percentage, so every event is drawn; the
+   last one ends the bar's line. */
+void ssg_report_progress(void *user, const struct ssg_progress_event *event)
+{
+    (void)user;
+    int pct = (int)(event->fraction * 100.0 + 1e-6);
+    char bar[BAR + 1];
+    for (int i = 0; i < BAR; i++)
+        bar[i] = i < pct * BAR / 100 ? '#' : '.';
+    bar[BAR] = '\0';
+    fprintf(stderr, "\r%s '%s' [%s] %3d%%", event->type, event->instance, bar, pct);
+    if (event->done)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+void ssg_report_log(void *user, const char *line)
+{
+    (void)user;
+    fprintf(stderr, "%s\n", line);
+}
