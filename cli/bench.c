@@ -246,7 +246,8 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
     }
     c->ok = e == SSG_OK;
     if (!c->ok)
-        snprintf(c->error, sizeof c->error, "%s", d.count ? d.items[0].message : ssg_err_text(e));
+        snprintf(c->error, sizeof c->error, "%s",
+                 d.count ? d.items[0].message : ssg_err_text(e));
 }
 
 static void progress(const struct bench *b, int ci, FILE *f, int tty)
@@ -335,7 +336,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     }
     ssg_diags_print(&d, stderr);
     if (!e && failed >= 0)
-        fprintf(stderr, "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",
+        fprintf(stderr,
+                "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",
                 b.cell_count, failed, req->out_dir);
     if (!e && failed >= 0 && req->plot && ssg_bench_draw_plots(&b))
         e = SSG_E_IO;

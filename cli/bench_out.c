@@ -274,8 +274,8 @@ static int plot_points(const struct bench *b, struct ssg_plot_point *pts, char (
                                      b->sweeps[k].key, ssg_bench_value(b, c, k));
         if (b->n < 2)
             snprintf(series[n], 300, "%s", b->req->time_node ? b->req->time_node : "frame");
-        pts[n] = (struct ssg_plot_point){.x = x, .ms = ssg_bench_shown_ms(b, c), .err = error_of(b, c),
-                                         .series = series[n]};
+        pts[n] = (struct ssg_plot_point){
+            .x = x, .ms = ssg_bench_shown_ms(b, c), .err = error_of(b, c), .series = series[n]};
         used = 0;
         for (int k = 0; k < b->n; k++)
             used += (size_t)snprintf(pts[n].label + used, sizeof pts[n].label - used, "%s%s",

@@ -349,8 +349,9 @@ static void defaults(struct ssg_cli_args *a)
 static int check_positional(enum ssg_cli_command command, const struct ssg_cli_args *a)
 {
     if (command == SSG_CLI_COMPARE)
-        return a->file_count == 2 ? 0
-                                  : ssg_cli_usage_error("%s", "compare expects two image files: A B");
+        return a->file_count == 2
+                   ? 0
+                   : ssg_cli_usage_error("%s", "compare expects two image files: A B");
     return a->file_count ? 0 : ssg_cli_usage_error("%s", "missing FILE (or NODE) argument");
 }
 

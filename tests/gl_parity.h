@@ -27,8 +27,8 @@ struct parity_diff {
     int mismatched_nan; /* pixels finite on one backend and not on the other */
 };
 
-static inline struct parity_diff parity_compare(const struct ssg_image *cpu, const struct ssg_image *gl,
-                                         int border)
+static inline struct parity_diff parity_compare(const struct ssg_image *cpu,
+                                                const struct ssg_image *gl, int border)
 {
     struct parity_diff d = {0, 0, 0};
     double sum = 0;
@@ -54,8 +54,8 @@ static inline struct parity_diff parity_compare(const struct ssg_image *cpu, con
 /* Checks one output pair against tol and prints its line; on its own for tests that make
    the two runs themselves (a node run with a scene). Returns the largest difference. */
 static inline double parity_check_output(const char *node, const char *label, const char *name,
-                                         const struct ssg_image *cpu, const struct ssg_image *gl,
-                                         struct parity_tol tol)
+                                         const struct ssg_image *cpu,
+                                         const struct ssg_image *gl, struct parity_tol tol)
 {
     struct parity_diff p = parity_compare(cpu, gl, tol.border);
     fprintf(stderr, "parity %-8s %-24s %-10s max %.3g (tol %.3g) mean %.3g (tol %.3g)\n", node,

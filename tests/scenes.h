@@ -72,9 +72,11 @@ static inline struct ssg_image *undefined_image(int width, int height, int chann
 
 /* Runs desc on in -> out with scene s as the executor does: prepare() into calloc'd
    constants of the descriptor's size, then run_cpu; diagnostics go to stderr. */
-static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc, const struct ssg_scene *s,
-                                 const struct ssg_frame *frame, const void *params,
-                                 const struct ssg_image *const *in, struct ssg_image **out)
+static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc,
+                                        const struct ssg_scene *s,
+                                        const struct ssg_frame *frame, const void *params,
+                                        const struct ssg_image *const *in,
+                                        struct ssg_image **out)
 {
     struct ssg_diags d = {0};
     struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,

@@ -58,8 +58,8 @@ struct run {
 };
 
 /* Runs `node` ("ssdo" with bounce=true, or "bounce"); returns the bounce image (owned). */
-static struct ssg_image *bounce_of(const char *node, const struct run *r, const char *const *sets,
-                                   int nsets, enum ssg_err *code)
+static struct ssg_image *bounce_of(const char *node, const struct run *r,
+                                   const char *const *sets, int nsets, enum ssg_err *code)
 {
     struct ssg_binding b[7] = {{"position", r->g->pos}, {"normal", r->g->nrm},
                                {"kernel", r->kernel}};
@@ -229,7 +229,8 @@ static void test_energy(const struct ssg_image *kernel, const struct ssg_image *
     for (int si = 0; si < 2; si++) {
         struct gbuf g;
         cast(&scenes[si], &g);
-        struct ssg_image *albedo = ssg_image_create(W, H, 3), *light = ssg_image_create(W, H, 3);
+        struct ssg_image *albedo = ssg_image_create(W, H, 3),
+                         *light = ssg_image_create(W, H, 3);
         float lmax[3] = {0, 0, 0};
         for (size_t i = 0; i < (size_t)W * H; i++)
             for (int c = 0; c < 3; c++) {

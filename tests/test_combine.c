@@ -38,7 +38,8 @@ static void run_init(struct run *r, int w, int h)
     memset(r, 0, sizeof *r);
     r->frame = (struct ssg_frame){.width = w, .height = h, .fov_y = 45, .near_z = 0.05f,
                                   .far_z = 100, .seed = 1};
-    r->ctx = (struct ssg_node_ctx){.desc = &ssg_node_combine, .instance = "img", .frame = &r->frame, .diags = &r->diags};
+    r->ctx = (struct ssg_node_ctx){
+        .desc = &ssg_node_combine, .instance = "img", .frame = &r->frame, .diags = &r->diags};
     r->out[0] = ssg_image_create(w, h, 3);
     r->io = (struct ssg_io){.in = r->in, .out = r->out};
 }
@@ -66,13 +67,15 @@ static void test_descriptor(void)
     const struct ssg_node_desc *d = &ssg_node_combine;
     CHECK(strcmp(d->name, "combine") == 0);
     CHECK_EQ(d->input_count, SSG_COMBINE_INPUTS);
-    CHECK(strcmp(d->inputs[SSG_COMBINE_DIRECT].name, "direct") == 0);
-    CHECK(strcmp(d->inputs[SSG_COMBINE_ALBEDO].name, "albedo") == 0);
-    CHECK(strcmp(d->inputs[SSG_COMBINE_AO].name, "ambient_occlusion") == 0);
-    CHECK(strcmp(d->inputs[SSG_COMBINE_INDIRECT].name, "indirect") == 0);
-    CHECK(!d->inputs[SSG_COMBINE_DIRECT].optional && !d->inputs[SSG_COMBINE_ALBEDO].optional);
-    CHECK(d->inputs[SSG_COMBINE_AO].optional && d->inputs[SSG_COMBINE_INDIRECT].optional);
-    CHECK_EQ(d->inputs[SSG_COMBINE_AO].types, SSG_T_SCALAR);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_IN_DIRECT].name, "direct") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_IN_ALBEDO].name, "albedo") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_IN_AMBIENT_OCCLUSION].name, "ambient_occlusion") == 0);
+    CHECK(strcmp(d->inputs[SSG_COMBINE_IN_INDIRECT].name, "indirect") == 0);
+    CHECK(!d->inputs[SSG_COMBINE_IN_DIRECT].optional &&
+          !d->inputs[SSG_COMBINE_IN_ALBEDO].optional);
+    CHECK(d->inputs[SSG_COMBINE_IN_AMBIENT_OCCLUSION].optional &&
+          d->inputs[SSG_COMBINE_IN_INDIRECT].optional);
+    CHECK_EQ(d->inputs[SSG_COMBINE_IN_AMBIENT_OCCLUSION].types, SSG_T_SCALAR);
     CHECK_EQ(d->output_count, 1);
     CHECK_EQ(d->outputs[0].types, SSG_T_COLOR);
     CHECK_EQ(d->consts_size, 0);
@@ -110,9 +113,9 @@ static void test_known_values(void)
     memcpy(ao->data, aov, sizeof aov);
     struct ssg_combine_params p;
     ssg_params_defaults(ssg_node_combine.params, &p);
-    r.in[SSG_COMBINE_DIRECT] = direct;
-    r.in[SSG_COMBINE_ALBEDO] = albedo;
-    r.in[SSG_COMBINE_AO] = ao;
+    r.in[SSG_COMBINE_IN_DIRECT] = direct;
+    r.in[SSG_COMBINE_IN_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = ao;
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     const float *o0 = ssg_image_plane(r.out[0], 0), *o1 = ssg_image_plane(r.out[0], 1),
                 *o2 = ssg_image_plane(r.out[0], 2);
@@ -133,7 +136,7 @@ static void test_known_values(void)
     CHECK_EQ(o2[3], 0);
 
     /* No AO: the ambient term is unoccluded (ao = 1). Tinted, stronger ambient. */
-    r.in[SSG_COMBINE_AO] = NULL;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = NULL;
     p.ambient = 2.0f;
     p.ambient_color[0] = 1.0f;
     p.ambient_color[1] = 0.5f;
@@ -147,8 +150,8 @@ static void test_known_values(void)
     /* Indirect light is added as is. */
     float ir[4] = {0.1f, 0.2f, 0.3f, 0.4f}, ig[4] = {1, 1, 1, 1}, ib[4] = {0, 0, 0, 5};
     struct ssg_image *indirect = rgb(2, 2, ir, ig, ib);
-    r.in[SSG_COMBINE_INDIRECT] = indirect;
-    r.in[SSG_COMBINE_AO] = ao;
+    r.in[SSG_COMBINE_IN_INDIRECT] = indirect;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = ao;
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     CHECK_NEAR(o0[1], 0.5 + 0.2, 1e-6); /* 2 * 1 * 0.5 * ao 0.5, + 0.2 */
     CHECK_NEAR(o1[1], 0.25 + 1, 1e-6);
@@ -183,11 +186,11 @@ static void test_ssdo_combinations(void)
     ssg_params_defaults(ssg_node_combine.params, &p);
     CHECK_EQ(p.darken_indirect, 1);
     p.ambient = 0;
-    r.in[SSG_COMBINE_DIRECT] = direct;
-    r.in[SSG_COMBINE_ALBEDO] = albedo;
-    r.in[SSG_COMBINE_ENVIRONMENT] = env;
-    r.in[SSG_COMBINE_INDIRECT] = bounce;
-    r.in[SSG_COMBINE_MODULATION] = mod1;
+    r.in[SSG_COMBINE_IN_DIRECT] = direct;
+    r.in[SSG_COMBINE_IN_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_IN_ENVIRONMENT] = env;
+    r.in[SSG_COMBINE_IN_INDIRECT] = bounce;
+    r.in[SSG_COMBINE_IN_MODULATION] = mod1;
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     for (int c = 0; c < 3; c++) /* M (direct + environment + bounce) */
         CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], 0.6 * (d[c] + e[c] + b[c]), 1e-6);
@@ -195,21 +198,21 @@ static void test_ssdo_combinations(void)
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     for (int c = 0; c < 3; c++)
         CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], 0.6 * (d[c] + e[c]) + b[c], 1e-6);
-    r.in[SSG_COMBINE_MODULATION] = mod3;
+    r.in[SSG_COMBINE_IN_MODULATION] = mod3;
     p.darken_indirect = 1;
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     for (int c = 0; c < 3; c++)
         CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], m3[c] * (d[c] + e[c] + b[c]), 1e-6);
     /* SSAO-modulated ambient from the environment: direct + ao * environment. */
-    r.in[SSG_COMBINE_MODULATION] = NULL;
-    r.in[SSG_COMBINE_INDIRECT] = NULL;
-    r.in[SSG_COMBINE_AO] = ao;
+    r.in[SSG_COMBINE_IN_MODULATION] = NULL;
+    r.in[SSG_COMBINE_IN_INDIRECT] = NULL;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = ao;
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     for (int c = 0; c < 3; c++)
         CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], d[c] + 0.3 * e[c], 1e-6);
     /* A 2-channel modulation is refused. */
     struct ssg_image *mod2 = ssg_image_create(1, 1, 2);
-    r.in[SSG_COMBINE_MODULATION] = mod2;
+    r.in[SSG_COMBINE_IN_MODULATION] = mod2;
     CHECK_EQ(run_combine(&r, &p), SSG_E_CHANNELS);
     struct ssg_image *all[] = {direct, albedo, env, bounce, mod3, mod1, ao, mod2, r.out[0]};
     for (int i = 0; i < SSG_COUNT(all); i++)
@@ -225,14 +228,14 @@ static void test_mismatch(void)
     struct ssg_image *small = ssg_image_create(4, 2, 1), *gray = ssg_image_create(4, 3, 1);
     struct ssg_combine_params p;
     ssg_params_defaults(ssg_node_combine.params, &p);
-    r.in[SSG_COMBINE_DIRECT] = direct;
-    r.in[SSG_COMBINE_ALBEDO] = albedo;
-    r.in[SSG_COMBINE_AO] = small;
+    r.in[SSG_COMBINE_IN_DIRECT] = direct;
+    r.in[SSG_COMBINE_IN_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = small;
     CHECK_EQ(run_combine(&r, &p), SSG_E_SIZE);
     CHECK_EQ(r.diags.count, 1);
     CHECK(strstr(r.diags.items[0].message, "ambient_occlusion") != NULL);
-    r.in[SSG_COMBINE_AO] = NULL;
-    r.in[SSG_COMBINE_ALBEDO] = gray;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = NULL;
+    r.in[SSG_COMBINE_IN_ALBEDO] = gray;
     CHECK_EQ(run_combine(&r, &p), SSG_E_CHANNELS);
     CHECK_EQ(r.diags.items[1].code, SSG_E_CHANNELS);
     ssg_image_destroy(&direct);
@@ -262,9 +265,9 @@ static void test_bands_and_threads(void)
     run_init(&r3, W, H);
     struct run *runs[2] = {&r1, &r3};
     for (int k = 0; k < 2; k++) {
-        runs[k]->in[SSG_COMBINE_DIRECT] = direct;
-        runs[k]->in[SSG_COMBINE_ALBEDO] = albedo;
-        runs[k]->in[SSG_COMBINE_AO] = ao;
+        runs[k]->in[SSG_COMBINE_IN_DIRECT] = direct;
+        runs[k]->in[SSG_COMBINE_IN_ALBEDO] = albedo;
+        runs[k]->in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = ao;
         omp_set_num_threads(k == 0 ? 1 : 3);
         CHECK_EQ(run_combine(runs[k], &p), SSG_OK);
     }

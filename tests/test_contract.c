@@ -7,7 +7,8 @@
  *     more) is refused with SSG_E_SIZE (SSG_E_CHANNELS) and one message naming the node,
  *     the instance, the port, the actual and the expected shape; the node never runs
  *     (its kernel would read past the smaller image: ASan would say so);
- *   - an optional input bound although the graph left it unconnected is refused.
+ *   - an optional input bound although the graph left it unconnected is refused;
+ *   - every port has a name and a type (the arrays are indexed by the port enumerators).
  * Shapes: every input port gets a shape of its first accepted type on a 16x12 frame. */
 #include <stdio.h>
 #include <string.h>
@@ -116,10 +117,20 @@ static void try_image(const struct ssg_node_desc *d, struct bound *b, struct ssg
     ssg_image_destroy(&bad);
 }
 
+/* Port arrays are indexed by their enumerators: a skipped enumerator leaves a hole. */
+static void test_ports_named(const struct ssg_node_desc *d)
+{
+    for (int i = 0; i < d->input_count; i++)
+        CHECK(d->inputs[i].name != NULL && d->inputs[i].types != 0);
+    for (int i = 0; i < d->output_count; i++)
+        CHECK(d->outputs[i].name != NULL && d->outputs[i].types != 0);
+}
+
 static void test_node(const struct ssg_node_desc *d)
 {
     struct bound b;
     char msg[512];
+    test_ports_named(d);
     bind_all(d, &b);
     CHECK_EQ(run(d, &b, msg, sizeof msg), SSG_OK);
     for (int i = 0; i < d->input_count; i++) {

@@ -151,8 +151,8 @@ static int bind(const struct inputs *in, const struct ssg_image *kernel, int col
 }
 
 /* ssao or ssdo with one parameter set: K everywhere, 10 everywhere, the mixed pattern. */
-static void check_kernel_node(const struct inputs *in, const char *node, const char *const *sets,
-                              int ns, int colours, int which)
+static void check_kernel_node(const struct inputs *in, const char *node,
+                              const char *const *sets, int ns, int colours, int which)
 {
     static const int levels[6] = {1, 10, 20, 30, 40, 50};
     struct ssg_binding b[8];
@@ -162,7 +162,8 @@ static void check_kernel_node(const struct inputs *in, const char *node, const c
         runs[r] = run(node, b, bind(in, prefixes[r], colours, NULL, b), sets, ns, which);
     }
     struct ssg_image *all = fill(K), *ten = fill(10), *mix = pattern_image(pattern_value);
-    struct ssg_image *with_k = run(node, b, bind(in, in->kernel, colours, all, b), sets, ns, which);
+    struct ssg_image *with_k =
+        run(node, b, bind(in, in->kernel, colours, all, b), sets, ns, which);
     struct ssg_image *with_10 = run(node, b, bind(in, in->kernel, colours, ten, b), sets, ns,
                                     which);
     struct ssg_image *mixed = run(node, b, bind(in, in->kernel, colours, mix, b), sets, ns,

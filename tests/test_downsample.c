@@ -228,7 +228,8 @@ static void test_reprojection(int width, int height)
                 if (!(dep->data[o] > 0))
                     continue;
                 surface++;
-                double px = pos->data[o], py = pos->data[plane + o], pz = pos->data[2 * plane + o];
+                double px = pos->data[o], py = pos->data[plane + o],
+                       pz = pos->data[2 * plane + o];
                 double u = cx + f * px / -pz, v = cy - f * py / -pz;
                 worst = fmax(worst, fmax(fabs(u - (x + 0.5)), fabs(v - (y + 0.5))));
                 CHECK_NEAR(-pz, dep->data[o], 1e-5 * dep->data[o]); /* one surface point */

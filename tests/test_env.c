@@ -106,7 +106,8 @@ static void test_sky(void)
 {
     write_probe("sky.exr", 256, 128, sky);
     struct ssg_scene *s = NULL;
-    CHECK_EQ(load("environment(image=\"sky.exr\", intensity=2, color=[1, 0.5, 0.25])", &s), SSG_OK);
+    CHECK_EQ(load("environment(image=\"sky.exr\", intensity=2, color=[1, 0.5, 0.25])", &s),
+             SSG_OK);
     if (!s)
         return;
     const struct ssg_env *env = s->env;

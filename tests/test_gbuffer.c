@@ -84,7 +84,8 @@ static float sphere_miss(const float d[3])
 {
     float dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     float cd = sphere_c[0] * d[0] + sphere_c[1] * d[1] + sphere_c[2] * d[2];
-    float cc = sphere_c[0] * sphere_c[0] + sphere_c[1] * sphere_c[1] + sphere_c[2] * sphere_c[2];
+    float cc =
+        sphere_c[0] * sphere_c[0] + sphere_c[1] * sphere_c[1] + sphere_c[2] * sphere_c[2];
     return sqrtf(fmaxf(cc - cd * cd / dd, 0.0f)) / sphere_r;
 }
 
@@ -235,8 +236,8 @@ static void test_face_normals(const struct ssg_scene *s)
         if (face.out[2]->data[i] > 0)
             bad += fabsf(len - 1) > 1e-5f;
         for (int c = 0; c < 3; c++)
-            differ += fabsf(face.out[1]->data[c * W * H + i] - smooth.out[1]->data[c * W * H + i]) >
-                      1e-6f;
+            differ += fabsf(face.out[1]->data[c * W * H + i] -
+                            smooth.out[1]->data[c * W * H + i]) > 1e-6f;
     }
     CHECK_EQ(bad, 0);
     CHECK(differ > 0);

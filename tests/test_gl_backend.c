@@ -1,7 +1,8 @@
 /* test_gl_backend.c - the GL backend's own contract, apart from any node's maths:
  * a shader that does not compile is reported with node, file and line and fails the run
  * (SSG_SHADER_DIR points at tests/fixtures/shaders, whose gaussian.glsl is broken at
- * line 5); the same node then compiles from the embedded copy; images handed to a GL
+ * line 5), and an error in a file a shader includes is reported against that file; the
+ * same node then compiles from the embedded copy; images handed to a GL
  * single-node run come back as plain CPU images (no texture left behind) holding the GL
  * result; a GL run is deterministic. */
 #include <stdlib.h>
@@ -43,6 +44,23 @@ static void shader_errors_are_located(struct ssg_image *in)
     unsetenv("SSG_SHADER_DIR");
 }
 
+/* A shader's #include is resolved by the program builder; a compiler message about the
+   included text names the included file and its own line (core/gl/gl_program.c). */
+static void include_errors_are_located(struct ssg_image *in)
+{
+    setenv("SSG_SHADER_DIR", "tests/fixtures/shaders", 1);
+    struct ssg_binding b[2] = {{"in", in}, {"depth", in}};
+    const char *sets[] = {"backend=gl"};
+    struct ssg_outputs out = {0};
+    struct ssg_diags d = {0};
+    enum ssg_err e = ssg_node_run("bilateral", b, 2, sets, 1, NULL, &out, &d);
+    ssg_diags_print(&d, stderr);
+    CHECK_EQ(e, SSG_E_SHADER);
+    CHECK(has_diag(&d, SSG_E_SHADER, "broken_include.glsl:3:", "undeclared_in_include"));
+    CHECK_EQ(out.count, 0);
+    unsetenv("SSG_SHADER_DIR");
+}
+
 static void outputs_come_back_to_the_cpu(struct ssg_image *in)
 {
     struct ssg_binding b = {"in", in};
@@ -77,6 +95,7 @@ int main(void)
 {
     struct ssg_image *in = ramp(64, 40);
     shader_errors_are_located(in);
+    include_errors_are_located(in);
     outputs_come_back_to_the_cpu(in);
     cpu_only_nodes_refuse_gl(in);
     ssg_image_destroy(&in);

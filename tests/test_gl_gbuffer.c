@@ -90,8 +90,8 @@ static double rel_diff(const struct ssg_image *cpu, const struct ssg_image *gl, 
 }
 
 /* 1 when the two backends saw different surfaces at pixel i (see the file comment). */
-static int other_surface(struct ssg_image *const cpu[LAYERS], struct ssg_image *const gl[LAYERS],
-                         size_t i)
+static int other_surface(struct ssg_image *const cpu[LAYERS],
+                         struct ssg_image *const gl[LAYERS], size_t i)
 {
     int differs = rel_diff(cpu[DEPTH], gl[DEPTH], 0, i) > 1e-4;
     for (int c = 0; c < 3; c++)

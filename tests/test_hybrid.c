@@ -179,8 +179,10 @@ static void test_thin_occluder(void)
         mean[k] = im ? wall_foot(im, pos, rot, eye, &n) : 0;
         ssg_image_destroy(&im);
     }
-    fprintf(stderr, "at the wall's foot (%d px): reference %.4f, global offset 1.5 %.4f, global "
-            "offset 8 %.4f (bleeding), hybrid %.4f\n", n, mean[0], mean[1], mean[2], mean[3]);
+    fprintf(stderr,
+            "at the wall's foot (%d px): reference %.4f, global offset 1.5 %.4f, global "
+            "offset 8 %.4f (bleeding), hybrid %.4f\n",
+            n, mean[0], mean[1], mean[2], mean[3]);
     CHECK(n > 100);
     /* Measured: reference 0.373, offset 8 0.605, hybrid 0.494 (the error halved). */
     CHECK(mean[2] > mean[0] + 0.05);                                /* the bleeding shows */

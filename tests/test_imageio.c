@@ -346,7 +346,8 @@ static void test_tiled_reads(void)
     CHECK_EQ(ssg_image_read("tests/fixtures/images/tiled.exr", NULL, &tiled, &d), SSG_OK);
     CHECK_EQ(ssg_image_read("tests/fixtures/images/tiled_layer.exr", "depth", &layer, &d),
              SSG_OK);
-    CHECK_EQ(ssg_image_read("tests/fixtures/images/scanline_layer.exr", "depth", &red, &d), SSG_OK);
+    CHECK_EQ(ssg_image_read("tests/fixtures/images/scanline_layer.exr", "depth", &red, &d),
+             SSG_OK);
     CHECK(scan && tiled && images_equal(scan, tiled));
     CHECK(layer && red && images_equal(layer, red));
     CHECK(scan && ssg_image_plane(scan, 0)[39] > 0.9f); /* a gradient, not zeros */

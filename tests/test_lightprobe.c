@@ -52,8 +52,9 @@ static struct lights run_probe(const struct ssg_scene *s, int n, const char *sam
     return l;
 }
 
-static const char *const GEOMETRY = "camera(position=[0, 1, 3], target=[0, 0, 0])\n"
-                                    "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n";
+static const char *const GEOMETRY =
+    "camera(position=[0, 1, 3], target=[0, 0, 0])\n"
+    "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n";
 
 static void test_constant_sky(void)
 {

@@ -123,9 +123,11 @@ static void test_graph_colour(void)
     if (!f)
         return;
     char cwd[512];
-    fprintf(f, "scene \"%s/examples/cornell.scene\"\ng = gbuffer()\n"
+    fprintf(f,
+            "scene \"%s/examples/cornell.scene\"\ng = gbuffer()\n"
             "s = mosaic(gap=0, labels=false, albedo=g.albedo)\n"
-            "out = write(s.out, \"m\", albedo=g.albedo)\n", getcwd(cwd, sizeof cwd) ? cwd : ".");
+            "out = write(s.out, \"m\", albedo=g.albedo)\n",
+            getcwd(cwd, sizeof cwd) ? cwd : ".");
     fclose(f);
     const char *dir = scene_node_path("sheet_out");
     char out[1100];

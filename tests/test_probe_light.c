@@ -65,9 +65,10 @@ static struct ssg_image *maps_of(const struct ssg_scene *s, const struct ssg_ima
 }
 
 /* probe_light's out (0) and visibility (1) into res[2]. */
-static void light(const struct ssg_scene *s, const struct gbuf *g, const struct ssg_image *lights,
-                  const struct ssg_image *maps, const char *const *sets, int set_count,
-                  enum ssg_backend backend, struct ssg_image *res[2])
+static void light(const struct ssg_scene *s, const struct gbuf *g,
+                  const struct ssg_image *lights, const struct ssg_image *maps,
+                  const char *const *sets, int set_count, enum ssg_backend backend,
+                  struct ssg_image *res[2])
 {
     res[0] = ssg_image_create(W, H, 3);
     res[1] = ssg_image_create(W, H, 1);
@@ -75,7 +76,8 @@ static void light(const struct ssg_scene *s, const struct gbuf *g, const struct 
                                      g->out[SSG_GBUFFER_OUT_NORMAL],
                                      g->out[SSG_GBUFFER_OUT_ALBEDO], lights, maps};
     void *params = node_params(&ssg_node_probe_light, sets, set_count);
-    CHECK_EQ(node_run_scene(&ssg_node_probe_light, s, &FRAME, params, in, res, backend), SSG_OK);
+    CHECK_EQ(node_run_scene(&ssg_node_probe_light, s, &FRAME, params, in, res, backend),
+             SSG_OK);
     free(params);
 }
 
@@ -311,7 +313,8 @@ static void test_parity(void)
     float dirs[24][3];
     for (int i = 0; i < 24; i++) { /* a spiral over the upper hemisphere and a few below */
         double y = 1.0 - (2.0 * i + 1.0) / 20, r = sqrt(fmax(0, 1 - y * y)), a = 2.4 * i;
-        dirs[i][0] = (float)(r * cos(a)), dirs[i][1] = (float)y, dirs[i][2] = (float)(r * sin(a));
+        dirs[i][0] = (float)(r * cos(a)), dirs[i][1] = (float)y,
+        dirs[i][2] = (float)(r * sin(a));
     }
     struct ssg_image *l = light_list(dirs, 24), *m = maps_of(s, l, 256), *cpu[2], *gl[2];
     light(s, &g, l, m, NULL, 0, SSG_BACKEND_CPU, cpu);

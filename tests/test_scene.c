@@ -288,9 +288,9 @@ static void test_mesh_and_gltf_camera(void)
     snprintf(sub, sizeof sub, "%s/sub", tmp_dir);
     mkdir(sub, 0755);
     write_file("sub/tri.gltf", gltf);
-    const char *path = write_file("mesh.scene",
-                                  "mesh(\"sub/tri.gltf\", translate=[10, 0, 0], rotate=[0, 0, 90], "
-                                  "scale=0.5)\n");
+    const char *path = write_file(
+        "mesh.scene", "mesh(\"sub/tri.gltf\", translate=[10, 0, 0], rotate=[0, 0, 90], "
+                      "scale=0.5)\n");
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
     CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
@@ -360,10 +360,10 @@ static void test_textures(void)
     const float sky[6] = {4, 2, 1, 0.25f, 0.5f, 8};
     write_image("albedo.png", albedo, 1);
     write_image("sky.exr", sky, 0);
-    const char *path = write_file("textured.scene",
-                                  "tex = material(albedo=[1, 1, 1], texture=\"albedo.png\")\n"
-                                  "environment(color=[1, 1, 1], intensity=0.5, image=\"sky.exr\")\n"
-                                  "box(material=tex)\n");
+    const char *path = write_file(
+        "textured.scene", "tex = material(albedo=[1, 1, 1], texture=\"albedo.png\")\n"
+                          "environment(color=[1, 1, 1], intensity=0.5, image=\"sky.exr\")\n"
+                          "box(material=tex)\n");
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
     CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);

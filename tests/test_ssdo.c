@@ -341,10 +341,12 @@ static void light_run(double lz, double m[2])
     struct ssg_node_ctx ctx = {.desc = &ssg_node_gbuffer, .instance = "s", .frame = &fr,
                                .scene = sc, .out_dir = ".", .diags = &d};
     static const int gch[6] = {3, 3, 1, 3, 3, 3};
-    struct ssg_image *gb[6], *out[2] = {ssg_image_create(SW, SH, 1), ssg_image_create(SW, SH, 3)};
+    struct ssg_image *gb[6],
+        *out[2] = {ssg_image_create(SW, SH, 1), ssg_image_create(SW, SH, 3)};
     for (int i = 0; i < 6; i++)
         gb[i] = ssg_image_create(SW, SH, gch[i]);
-    void *gc = calloc(1, ssg_node_gbuffer.consts_size), *gp = calloc(1, ssg_node_gbuffer.params_size);
+    void *gc = calloc(1, ssg_node_gbuffer.consts_size),
+         *gp = calloc(1, ssg_node_gbuffer.params_size);
     ssg_params_defaults(ssg_node_gbuffer.params, gp);
     struct ssg_io gio = {.out = gb};
     CHECK_EQ(ssg_node_gbuffer.prepare(&ctx, gp, gc), SSG_OK);
@@ -354,9 +356,11 @@ static void light_run(double lz, double m[2])
     const char *hsets[] = {"count=64", "mapping=uniform"};
     struct ssg_outputs hal;
     CHECK_EQ(ssg_node_run("halton", NULL, 0, hsets, 2, &hf, &hal, &d), SSG_OK);
-    void *sc_ = calloc(1, ssg_node_ssdo.consts_size), *sp = calloc(1, ssg_node_ssdo.params_size);
+    void *sc_ = calloc(1, ssg_node_ssdo.consts_size),
+         *sp = calloc(1, ssg_node_ssdo.params_size);
     ssg_params_defaults(ssg_node_ssdo.params, sp);
-    const struct ssg_image *in[8] = {gb[0], gb[1], hal.images[0], NULL, gb[2], gb[3], gb[4], NULL};
+    const struct ssg_image *in[8] = {gb[0], gb[1], hal.images[0], NULL,
+                                     gb[2], gb[3], gb[4],         NULL};
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(&ssg_node_ssdo, &io, &shapes);

@@ -128,7 +128,9 @@ static void box_sides(const char *dir, float light_x, double mean[2])
                 w[i] = v[4 * i] * (p[0] - v[12]) + v[4 * i + 1] * (p[1] - v[13]) +
                        v[4 * i + 2] * (p[2] - v[14]);
             int floor = fabsf(w[1]) < 1e-3f && fabsf(w[2]) < 0.25f;
-            int side = w[0] > -0.55f && w[0] < -0.32f ? 0 : w[0] > 0.32f && w[0] < 0.55f ? 1 : -1;
+            int side = w[0] > -0.55f && w[0] < -0.32f ? 0
+                       : w[0] > 0.32f && w[0] < 0.55f ? 1
+                                                      : -1;
             if (!floor || side < 0)
                 continue;
             mean[side] += px(m, 0, x, y);

@@ -65,7 +65,10 @@ static void run_init(struct run *r, const char *out_dir, const struct ssg_image 
     snprintf(r->out_dir, sizeof r->out_dir, "%s", out_dir);
     r->frame = (struct ssg_frame){.width = main_im->width, .height = main_im->height,
                                   .fov_y = 45, .near_z = 0.05f, .far_z = 100, .seed = 1};
-    r->ctx = (struct ssg_node_ctx){.desc = &ssg_node_write, .instance = "w", .frame = &r->frame, .out_dir = r->out_dir,
+    r->ctx = (struct ssg_node_ctx){.desc = &ssg_node_write,
+                                   .instance = "w",
+                                   .frame = &r->frame,
+                                   .out_dir = r->out_dir,
                                    .diags = &r->diags};
     r->in[0] = main_im;
     r->io = (struct ssg_io){.in = r->in, .extra_names = r->names, .extra_in = r->extra,

@@ -185,7 +185,8 @@ int ssg_gl_context_create(char *why, size_t why_len)
     char egl_why[256] = "";
     if (!strcmp(want, "egl") || !strcmp(want, "auto")) {
         ok = egl_start(!strcmp(want, "auto"), egl_why, sizeof egl_why);
-        if (ok && !(ok = load_functions(egl_getproc, why, why_len) && check_version(why, why_len)))
+        if (ok &&
+            !(ok = load_functions(egl_getproc, why, why_len) && check_version(why, why_len)))
             ssg_gl_context_destroy();
         if (!ok && !strcmp(want, "egl")) {
             snprintf(why, why_len, "SSG_GL_PLATFORM=egl: %s", egl_why[0] ? egl_why : why);

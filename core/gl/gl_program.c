@@ -6,7 +6,13 @@
  * directives so that the compiler counts lines in the files themselves. Drivers differ in
  * whether they report #line's source-string number (Mesa 22 prints 0), so the parts are
  * told apart by line number instead: the defines start at DEFINES_BASE + 1, common.glsl at
- * COMMON_BASE + 1 and the node's file at 1. */
+ * COMMON_BASE + 1 and the node's file at 1.
+ *
+ * A node's file may share code with others through `#include "file.glsl"` lines (for
+ * example nodes/common/sampling.glsl, the screen-space sampling of ssao, hbao and ssdo):
+ * each is replaced by that shader file's text, numbered from INCLUDE_BASE + 1 (the k-th
+ * include from INCLUDE_BASE + k * INCLUDE_STRIDE + 1), and the node's own numbering
+ * resumes after it. One level: an included file includes nothing. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +22,22 @@
 #include "lang/parse.h"
 #include "gl/shaders.h"
 
-enum { CACHE_MAX = 128, COMMON_BASE = 10000, DEFINES_BASE = 20000 };
+enum {
+    CACHE_MAX = 128,
+    COMMON_BASE = 10000,
+    DEFINES_BASE = 20000,
+    INCLUDE_BASE = 30000,
+    INCLUDE_STRIDE = 10000,
+    INCLUDES_MAX = 4
+};
+
+/* A node's file with its #include lines resolved. */
+struct source {
+    const char *shader;               /* the node's file name */
+    char *text;                       /* what is compiled after common.glsl (malloc'd) */
+    char include[INCLUDES_MAX][64];   /* the included files, in order */
+    int includes;
+};
 
 struct cached {
     char shader[64];
@@ -48,24 +69,42 @@ static int parse_log_line(const char *line, int *string, int *lineno, const char
     return 1;
 }
 
-static void report_log(const struct ssg_node_ctx *ctx, const char *shader, const char *what,
-                       const char *log)
+/* The file and line a compiler's line number is about. */
+static const char *line_file(const struct source *src, int *lineno)
 {
+    if (*lineno > INCLUDE_BASE) {
+        int k = (*lineno - INCLUDE_BASE - 1) / INCLUDE_STRIDE;
+        *lineno -= INCLUDE_BASE + k * INCLUDE_STRIDE;
+        return k < src->includes ? src->include[k] : "include";
+    }
+    if (*lineno > DEFINES_BASE) {
+        *lineno -= DEFINES_BASE;
+        return "defines";
+    }
+    if (*lineno > COMMON_BASE) {
+        *lineno -= COMMON_BASE;
+        return "common.glsl";
+    }
+    return src->shader;
+}
+
+static void report_log(const struct ssg_node_ctx *ctx, const struct source *src,
+                       const char *what, const char *log)
+{
+    const char *shader = src->shader;
     char line[600];
     int reported = 0;
     for (const char *p = log; *p && reported < 8;) {
         size_t n = strcspn(p, "\n");
-        snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line - 1 ? n : sizeof line - 1), p);
+        snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line - 1 ? n : sizeof line - 1),
+                 p);
         p += n + (p[n] == '\n');
         int string, lineno;
         const char *rest;
         if (!line[0])
             continue;
         if (parse_log_line(line, &string, &lineno, &rest)) {
-            const char *file = lineno > DEFINES_BASE  ? "defines"
-                               : lineno > COMMON_BASE ? "common.glsl"
-                                                      : shader;
-            lineno -= lineno > DEFINES_BASE ? DEFINES_BASE : lineno > COMMON_BASE ? COMMON_BASE : 0;
+            const char *file = line_file(src, &lineno);
             ssg_diag_at(ctx->diags, SSG_E_SHADER, (struct ssg_loc){0},
                         "node '%s': %s %s:%d: %s", ctx->instance, what, file, lineno, rest);
         } else {
@@ -79,8 +118,9 @@ static void report_log(const struct ssg_node_ctx *ctx, const char *shader, const
                     "node '%s': %s %s failed without a message", ctx->instance, what, shader);
 }
 
-static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage, const char *stage_define,
-                            const char *shader, const char *source, const char *defines)
+static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage,
+                            const char *stage_define, const struct source *src,
+                            const char *defines)
 {
     char head[160];
     snprintf(head, sizeof head, "#version 450 core\n#define %s 1\n#line %d\n", stage_define,
@@ -88,7 +128,7 @@ static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage, const 
     char common_line[32];
     snprintf(common_line, sizeof common_line, "\n#line %d\n", COMMON_BASE + 1);
     const char *parts[] = {head, defines ? defines : "", common_line,
-                           ssg_shader_source("common.glsl"), "\n#line 1\n", source};
+                           ssg_shader_source("common.glsl"), "\n#line 1\n", src->text};
     GLuint sh = glCreateShader(stage);
     glShaderSource(sh, 6, parts, NULL);
     glCompileShader(sh);
@@ -99,7 +139,7 @@ static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage, const 
         char *log = calloc(1, (size_t)len + 1);
         if (log)
             glGetShaderInfoLog(sh, len, NULL, log);
-        report_log(ctx, shader, "shader", log ? log : "");
+        report_log(ctx, src, "shader", log ? log : "");
         free(log);
         glDeleteShader(sh);
         return 0;
@@ -107,8 +147,8 @@ static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage, const 
     return sh;
 }
 
-static GLuint link_program(const struct ssg_node_ctx *ctx, const char *shader, GLuint a,
-                           GLuint b)
+static GLuint link_program(const struct ssg_node_ctx *ctx, const struct source *src,
+                           GLuint a, GLuint b)
 {
     GLuint prog = glCreateProgram();
     glAttachShader(prog, a);
@@ -122,7 +162,7 @@ static GLuint link_program(const struct ssg_node_ctx *ctx, const char *shader, G
         char *log = calloc(1, (size_t)len + 1);
         if (log)
             glGetProgramInfoLog(prog, len, NULL, log);
-        report_log(ctx, shader, "linking", log ? log : "");
+        report_log(ctx, src, "linking", log ? log : "");
         free(log);
         glDeleteProgram(prog);
         prog = 0;
@@ -130,34 +170,128 @@ static GLuint link_program(const struct ssg_node_ctx *ctx, const char *shader, G
     return prog;
 }
 
+/* Appends n bytes of text to *buf (grown by doubling); 0 when out of memory. */
+static int append(char **buf, size_t *len, size_t *cap, const char *text, size_t n)
+{
+    if (*len + n + 1 > *cap) {
+        size_t want = (*len + n + 1) * 2;
+        char *grown = realloc(*buf, want);
+        if (!grown)
+            return 0;
+        *buf = grown;
+        *cap = want;
+    }
+    memcpy(*buf + *len, text, n);
+    *len += n;
+    (*buf)[*len] = 0;
+    return 1;
+}
+
+/* The name in a line `#include "name"` (leading blanks allowed), or 0. */
+static int include_name(const char *line, size_t n, char *name, size_t name_len)
+{
+    size_t i = 0;
+    while (i < n && (line[i] == ' ' || line[i] == '\t'))
+        i++;
+    if (n - i < 10 || strncmp(line + i, "#include", 8) != 0)
+        return 0;
+    const char *open = memchr(line + i + 8, '"', n - i - 8);
+    const char *close = open ? memchr(open + 1, '"', (size_t)(line + n - open - 1)) : NULL;
+    if (!close || (size_t)(close - open - 1) >= name_len)
+        return 0;
+    snprintf(name, name_len, "%.*s", (int)(close - open - 1), open + 1);
+    return 1;
+}
+
+/* 1 when a line of text is an #include line (comments that mention one are not). */
+static int has_include(const char *text)
+{
+    char name[64];
+    for (const char *p = text; *p;) {
+        size_t n = strcspn(p, "\n");
+        if (include_name(p, n, name, sizeof name))
+            return 1;
+        p += n + (p[n] == '\n');
+    }
+    return 0;
+}
+
+/* src->text: the node's file with each #include line replaced by the file it names. */
+static enum ssg_err resolve_includes(const struct ssg_node_ctx *ctx, const char *text,
+                                     struct source *src)
+{
+    char *buf = NULL, name[64], mark[48];
+    size_t len = 0, cap = 0;
+    int lineno = 1, ok = append(&buf, &len, &cap, "", 0);
+    for (const char *p = text; ok && *p; lineno++) {
+        size_t n = strcspn(p, "\n");
+        const int is_include = include_name(p, n, name, sizeof name);
+        const char *body = is_include ? ssg_shader_source(name) : NULL;
+        if (is_include &&
+            (!body || src->includes == INCLUDES_MAX || has_include(body))) {
+            ssg_diag_at(ctx->diags, SSG_E_SHADER, (struct ssg_loc){0},
+                        "node '%s': shader %s:%d: cannot include '%s' (%s)", ctx->instance,
+                        src->shader, lineno, name,
+                        !body ? "no such shader file is compiled into ssgraph"
+                        : src->includes == INCLUDES_MAX ? "too many includes"
+                                                        : "it includes another file");
+            free(buf);
+            return SSG_E_SHADER;
+        }
+        if (body) {
+            snprintf(mark, sizeof mark, "#line %d\n",
+                     INCLUDE_BASE + src->includes * INCLUDE_STRIDE + 1);
+            snprintf(src->include[src->includes++], sizeof src->include[0], "%s", name);
+            ok = append(&buf, &len, &cap, mark, strlen(mark)) &&
+                 append(&buf, &len, &cap, body, strlen(body));
+            snprintf(mark, sizeof mark, "\n#line %d\n", lineno + 1);
+            ok = ok && append(&buf, &len, &cap, mark, strlen(mark));
+        } else {
+            ok = append(&buf, &len, &cap, p, n + (p[n] == '\n'));
+        }
+        p += n + (p[n] == '\n');
+    }
+    if (!ok) {
+        free(buf);
+        ssg_diag_at(ctx->diags, SSG_E_NOMEM, (struct ssg_loc){0},
+                    "node '%s': out of memory for shader %s", ctx->instance, src->shader);
+        return SSG_E_NOMEM;
+    }
+    src->text = buf;
+    return SSG_OK;
+}
+
 static GLuint build(const struct ssg_node_ctx *ctx, const char *shader, const char *defines,
                     int stages)
 {
-    const char *source = ssg_shader_source(shader);
-    if (!source) {
+    const char *text = ssg_shader_source(shader);
+    if (!text) {
         ssg_diag_at(ctx->diags, SSG_E_SHADER, (struct ssg_loc){0},
                     "node '%s': no shader file '%s' is compiled into ssgraph", ctx->instance,
                     shader);
         return 0;
     }
+    struct source src = {.shader = shader};
+    if (resolve_includes(ctx, text, &src))
+        return 0;
     GLuint a, b = 0, prog = 0;
     if (stages == SSG_GL_COMPUTE) {
-        a = compile_stage(ctx, GL_COMPUTE_SHADER, "SSG_COMPUTE", shader, source, defines);
+        a = compile_stage(ctx, GL_COMPUTE_SHADER, "SSG_COMPUTE", &src, defines);
     } else {
-        a = compile_stage(ctx, GL_VERTEX_SHADER, "SSG_VERTEX", shader, source, defines);
-        b = a ? compile_stage(ctx, GL_FRAGMENT_SHADER, "SSG_FRAGMENT", shader, source, defines)
-              : 0;
+        a = compile_stage(ctx, GL_VERTEX_SHADER, "SSG_VERTEX", &src, defines);
+        b = a ? compile_stage(ctx, GL_FRAGMENT_SHADER, "SSG_FRAGMENT", &src, defines) : 0;
         if (!b && a) {
             glDeleteShader(a);
             a = 0;
         }
     }
     if (a)
-        prog = link_program(ctx, shader, a, b);
+        prog = link_program(ctx, &src, a, b);
     if (a)
         glDeleteShader(a);
     if (b)
         glDeleteShader(b);
+    free(src.text);
     return prog;
 }
 

@@ -36,7 +36,8 @@ static void default_shape(const struct ssg_node_desc *desc, int port,
 {
     const struct ssg_port_desc *p = &desc->outputs[port];
     if (p->same_as) {
-        int src = ssg_port_find(desc->inputs, desc->input_count, p->same_as, strlen(p->same_as));
+        int src =
+            ssg_port_find(desc->inputs, desc->input_count, p->same_as, strlen(p->same_as));
         if (src >= 0) {
             *out = in[src];
             return;
@@ -62,11 +63,12 @@ enum ssg_err ssg_shapes_infer(const struct ssg_node_desc *desc, const void *para
     }
     for (int i = 0; i < desc->output_count; i++) {
         if (!ssg_image_size_ok(out[i].width, out[i].height, out[i].channels)) {
-            snprintf(why, why_len, "output '%s' would be %dx%d with %d channels (at most "
-                     "%dx%d, %d pixels, 1-4 channels; a frame needs a size or a frame-sized input)",
-                     desc->outputs[i].name, out[i].width,
-                     out[i].height, out[i].channels, SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_SIDE,
-                     SSG_IMAGE_MAX_PIXELS);
+            snprintf(
+                why, why_len,
+                "output '%s' would be %dx%d with %d channels (at most "
+                "%dx%d, %d pixels, 1-4 channels; a frame needs a size or a frame-sized input)",
+                desc->outputs[i].name, out[i].width, out[i].height, out[i].channels,
+                SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_PIXELS);
             return SSG_E_SIZE;
         }
     }
@@ -96,16 +98,17 @@ static enum ssg_err move_inputs(const struct ssg_node_desc *desc, const struct s
     enum ssg_err e = SSG_OK;
     for (int i = 0; i < desc->input_count && !e; i++)
         if (io->in[i])
-            e = on_gl ? ssg_gl_to_gpu(io->in[i], ms, diags) : ssg_gl_to_cpu(io->in[i], ms, diags);
+            e = on_gl ? ssg_gl_to_gpu(io->in[i], ms, diags)
+                      : ssg_gl_to_cpu(io->in[i], ms, diags);
     for (int i = 0; i < io->extra_count && !e; i++)
         e = on_gl ? ssg_gl_to_gpu(io->extra_in[i], ms, diags)
                   : ssg_gl_to_cpu(io->extra_in[i], ms, diags);
     return e;
 }
 
-static enum ssg_err run_backend(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
-                                const void *consts, const struct ssg_io *io, int on_gl,
-                                struct ssg_node_timing *t)
+static enum ssg_err run_backend(const struct ssg_node_desc *desc,
+                                const struct ssg_node_ctx *ctx, const void *consts,
+                                const struct ssg_io *io, int on_gl, struct ssg_node_timing *t)
 {
     enum ssg_err e = move_inputs(desc, io, on_gl, &t->transfer_ms, ctx->diags);
     if (e)
@@ -170,8 +173,8 @@ static enum ssg_err verify_one(const struct ssg_node_ctx *ctx, const char *side,
 
 /* A bound input's type must be one its port accepts (a graph types every edge; shapes
    read off hand-bound images carry type 0 when the channels fit none). */
-static enum ssg_err verify_type(const struct ssg_node_ctx *ctx, const struct ssg_port_desc *port,
-                                const struct ssg_shape *shape)
+static enum ssg_err verify_type(const struct ssg_node_ctx *ctx,
+                                const struct ssg_port_desc *port, const struct ssg_shape *shape)
 {
     if (shape->type & port->types)
         return SSG_OK;

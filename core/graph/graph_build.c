@@ -354,7 +354,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
     char resolved[512];
     if (ssg_tok_eq(st->name, st->name_len, "scene")) {
         if ((path = directive_string(b, st))) {
-            ssg_path_resolve(st->loc.src->path, path, b->g->scene_path, sizeof b->g->scene_path);
+            ssg_path_resolve(st->loc.src->path, path, b->g->scene_path,
+                             sizeof b->g->scene_path);
             b->g->scene_loc = st->args[0].value.loc;
         }
     } else if (ssg_tok_eq(st->name, st->name_len, "size")) {
@@ -413,7 +414,8 @@ static void add_set(struct builder *b, const struct ssg_stmt *st)
 {
     if (b->set_count == b->set_cap) {
         int cap = b->set_cap ? 2 * b->set_cap : 64;
-        const struct ssg_stmt **sets = ssg_arena_alloc(&b->g->arena, (size_t)cap * sizeof *sets);
+        const struct ssg_stmt **sets =
+            ssg_arena_alloc(&b->g->arena, (size_t)cap * sizeof *sets);
         if (!sets) {
             fail(b, SSG_E_NOMEM);
             return;
@@ -500,7 +502,8 @@ static void apply_override(struct builder *b, const char *text)
     const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
     struct ssg_loc at = {src, src->text};
     if (!dot || !eq || dot > eq) {
-        ssg_diag_at(b->diags, SSG_E_USAGE, at, "expected --set node.param=value, got '%s'", text);
+        ssg_diag_at(b->diags, SSG_E_USAGE, at, "expected --set node.param=value, got '%s'",
+                    text);
         fail(b, SSG_E_USAGE);
         return;
     }

@@ -134,7 +134,8 @@ static void report_cycle(struct checker *c, const int *unordered, int start)
         seen[at] = len + 1;
         path[len++] = at;
         int nxt = -1;
-        FOR_EACH_INPUT(&g->nodes[at], conn) if (nxt < 0 && unordered[conn->node]) nxt = conn->node;
+        FOR_EACH_INPUT(&g->nodes[at], conn)
+        if (nxt < 0 && unordered[conn->node]) nxt = conn->node;
         if (nxt < 0)
             break;
         at = nxt;
@@ -206,7 +207,8 @@ static int readers_build(const struct ssg_graph *g, struct readers *r)
     for (int p = 0; p < g->count; p++)
         r->first[p + 1] += r->first[p];
     for (int i = 0; i < g->count; i++)
-        FOR_EACH_INPUT(&g->nodes[i], conn) r->reader[r->first[conn->node] + fill[conn->node]++] = i;
+        FOR_EACH_INPUT(&g->nodes[i], conn)
+        r->reader[r->first[conn->node] + fill[conn->node]++] = i;
     free(fill);
     return 1;
 }

@@ -86,7 +86,8 @@ static const char *out_dir(const struct run *r)
 }
 
 /* One line to the run's log callback, if it has one. */
-static void say(const struct run *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void say(const struct run *r, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
 static void say(const struct run *r, const char *fmt, ...)
 {
     if (!r->opt->log)
@@ -174,7 +175,8 @@ static int run_init(struct run *r)
     r->t = calloc((size_t)count, sizeof *r->t);
     r->consts = calloc((size_t)count, sizeof *r->consts);
     r->prepared = calloc((size_t)count, 1);
-    if (!r->pool || !r->t || !r->consts || !r->prepared || !ssg_profile_init(&r->prof, g->order_count))
+    if (!r->pool || !r->t || !r->consts || !r->prepared ||
+        !ssg_profile_init(&r->prof, g->order_count))
         return 0;
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];

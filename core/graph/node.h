@@ -5,6 +5,19 @@
  * A node never calls threads or GL directly: it sees image views, the constants its
  * prepare() made from the parameters, and ssg_parallel_rows(). Core never names a node.
  *
+ * The contract, in the order things happen:
+ *   1. check() sees the parameters and the input shapes (from the graph, or from images a
+ *      caller binds) and gives the output shapes; every shape rule of the node lives here,
+ *      reported with the graph's file:line:column before anything runs.
+ *   2. prepare() sees the parameters and those shapes (ctx->in_shape, ctx->out_shape) and
+ *      makes the constants both backends read, once.
+ *   3. The executor verifies every bound image against the shapes (ssg_node_verify_io;
+ *      one message naming node, port, actual and expected shape), then calls run_cpu or
+ *      run_gl, which trust them.
+ * Ports are arrays indexed by the node's enumerators, SSG_<NODE>_IN_<PORT> and
+ * SSG_<NODE>_OUT_<PORT> (SSG_<NODE>_INPUTS and _OUTPUTS count them); parameters are
+ * tables of SSG_FIELD_* entries (lang/params.h), type-checked at compile time.
+ *
  * Frame conventions every node shares (view space, right-handed, OpenGL style):
  *   the camera looks down -z, x right, y up; `position` is the view-space point, `normal`
  *   the unit view-space normal, `depth` the linear distance along the view axis (-z).
@@ -134,10 +147,16 @@ struct ssg_node_desc {
        one file are refused when the graph is checked: the second would silently replace
        the first's. */
     int (*output_files)(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max);
-    /* Optional. Turns parameters into the constants both backends read (sample kernels,
-       projection factors). Called once before run. */
+    /* Optional. Turns parameters and the checked shapes (ctx->in_shape, ctx->out_shape)
+       into the constants both backends read: sample kernels, the projection of the
+       inputs' resolution, per-column or per-count tables. Called once before the first
+       run; both backends read these same bytes, so what depends only on parameters and
+       shapes is computed here and never twice. Returns SSG_OK or ssg_node_fail(...). */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);
-    /* The CPU backend. `consts` is what prepare wrote, or the params when consts_size is 0. */
+    /* The CPU backend. `consts` is what prepare wrote, or the params when consts_size is 0.
+       Every bound image has the shape check() gave (the executor verified it), so the
+       kernel neither checks shapes nor fails on them; its errors are run-time ones (out
+       of memory, a file it cannot write). */
     enum ssg_err (*run_cpu)(const struct ssg_node_ctx *ctx, const void *consts,
                             const struct ssg_io *io);
     /* The GL backend (nodes/<name>/<name>_gl.c, through core/gl/gl.h only), NULL = CPU only.
@@ -226,5 +245,12 @@ static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ss
 
 /* Convenience for node files. */
 #define SSG_COUNT(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
+/* Descriptor fields from a node's port arrays and parameter table (each array with its
+   length, so a count cannot drift from its array). */
+#define SSG_NODE_INPUTS(in) .inputs = (in), .input_count = SSG_COUNT(in)
+#define SSG_NODE_OUTPUTS(out) .outputs = (out), .output_count = SSG_COUNT(out)
+#define SSG_NODE_PORTS(in, out) SSG_NODE_INPUTS(in), SSG_NODE_OUTPUTS(out)
+#define SSG_NODE_PARAMS(table, params_type) \
+    .params = SSG_TABLE(table), .params_size = sizeof(params_type)
 
 #endif

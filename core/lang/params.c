@@ -122,8 +122,9 @@ static enum ssg_err check_number(const struct ssg_param_desc *p, const struct ss
     return SSG_OK;
 }
 
-static enum ssg_err set_bool(const struct ssg_param_desc *p, int *out, const struct ssg_value *v,
-                             const char *owner, struct ssg_diags *diags)
+static enum ssg_err set_bool(const struct ssg_param_desc *p, int *out,
+                             const struct ssg_value *v, const char *owner,
+                             struct ssg_diags *diags)
 {
     if (v->kind == SSG_V_IDENT && (ssg_tok_eq(v->text, v->len, "true") ||
                                    ssg_tok_eq(v->text, v->len, "on"))) {
@@ -139,8 +140,9 @@ static enum ssg_err set_bool(const struct ssg_param_desc *p, int *out, const str
     return SSG_OK;
 }
 
-static enum ssg_err set_enum(const struct ssg_param_desc *p, int *out, const struct ssg_value *v,
-                             const char *owner, struct ssg_diags *diags)
+static enum ssg_err set_enum(const struct ssg_param_desc *p, int *out,
+                             const struct ssg_value *v, const char *owner,
+                             struct ssg_diags *diags)
 {
     if (v->kind != SSG_V_IDENT && v->kind != SSG_V_STRING)
         return wrong_kind(p, v, owner, diags);
@@ -305,7 +307,9 @@ void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *
     switch (p->type) {
     case SSG_P_FLOAT: snprintf(buf, len, "%g", *CFIELD(params, p, float)); break;
     case SSG_P_INT: snprintf(buf, len, "%d", *CFIELD(params, p, int)); break;
-    case SSG_P_BOOL: snprintf(buf, len, "%s", *CFIELD(params, p, int) ? "true" : "false"); break;
+    case SSG_P_BOOL:
+        snprintf(buf, len, "%s", *CFIELD(params, p, int) ? "true" : "false");
+        break;
     case SSG_P_ENUM: snprintf(buf, len, "%s", p->choices[*CFIELD(params, p, int)]); break;
     case SSG_P_STRING: snprintf(buf, len, "\"%s\"", CFIELD(params, p, char)); break;
     case SSG_P_NAME: snprintf(buf, len, "%s", CFIELD(params, p, char)); break;

@@ -123,6 +123,7 @@ void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream);
 /* Same as a Markdown table row. */
 void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream);
 /* Formats the current value of parameter p in params as it would be written in a file. */
-void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *buf, size_t len);
+void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *buf,
+                      size_t len);
 
 #endif

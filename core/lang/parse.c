@@ -220,7 +220,8 @@ static int tokenize(struct parser *ps, const char *p, const char *end)
             if ((unsigned char)c >= 32 && (unsigned char)c < 127)
                 error_at(ps, p, "unexpected character '%c'", c);
             else
-                error_at(ps, p, "unexpected byte 0x%02x (is this a text file?)", (unsigned char)c);
+                error_at(ps, p, "unexpected byte 0x%02x (is this a text file?)",
+                         (unsigned char)c);
             p++;
         }
     }

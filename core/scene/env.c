@@ -169,7 +169,8 @@ float ssg_env_sample(const struct ssg_env *env, float u1, float u2, float d[3], 
     fx = fx < 0 ? 0 : fx > 1 ? 1 : fx;
     fy = fy < 0 ? 0 : fy > 1 ? 1 : fy;
     double c0 = cos(M_PI * y / h), c1 = cos(M_PI * (y + 1) / h);
-    float cos_t = (float)(c0 + (c1 - c0) * fy), sin_t = sqrtf(fmaxf(0.0f, 1.0f - cos_t * cos_t));
+    float cos_t = (float)(c0 + (c1 - c0) * fy),
+          sin_t = sqrtf(fmaxf(0.0f, 1.0f - cos_t * cos_t));
     float phi = (float)(((x + fx) / w - 0.5) * TWO_PI);
     d[0] = sin_t * sinf(phi), d[1] = cos_t, d[2] = -sin_t * cosf(phi);
     const float *px = &env->radiance[3 * ((size_t)y * (size_t)w + (size_t)x)];
@@ -248,7 +249,8 @@ static enum ssg_err build_coarse(struct ssg_env *env, float (*dir)[3])
             double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
             float *d = dir[cy * cw + cx];
             if (len > 0)
-                d[0] = (float)(m[0] / len), d[1] = (float)(m[1] / len), d[2] = (float)(m[2] / len);
+                d[0] = (float)(m[0] / len), d[1] = (float)(m[1] / len),
+                d[2] = (float)(m[2] / len);
             else
                 ssg_env_direction((cx + 0.5f) / cw, (cy + 0.5f) / ch, d);
         }
@@ -398,7 +400,8 @@ void ssg_env_destroy(struct ssg_env **env)
 /* Direction of texel (i, j) of a cube face, in the cube's frame (GL face conventions). */
 static void cube_direction(int face, int i, int j, float d[3])
 {
-    float s = (i + 0.5f) / SSG_ENV_CUBE_SIZE * 2 - 1, t = (j + 0.5f) / SSG_ENV_CUBE_SIZE * 2 - 1;
+    float s = (i + 0.5f) / SSG_ENV_CUBE_SIZE * 2 - 1,
+          t = (j + 0.5f) / SSG_ENV_CUBE_SIZE * 2 - 1;
     static const float basis[6][9] = {
         /* major axis, s axis, t axis */
         {1, 0, 0, 0, 0, -1, 0, -1, 0},  {-1, 0, 0, 0, 0, 1, 0, -1, 0},

@@ -38,7 +38,7 @@ struct ssg_gltf {
     /* Base-colour textures, decoded and converted from sRGB to linear RGB. */
     int texture_count;
     struct ssg_texture *textures;
-    int has_camera;            /* 1 = a node of the default scene carries a perspective camera */
+    int has_camera; /* 1 = a node of the default scene carries a perspective camera */
     struct ssg_camera camera;  /* that node's camera in world space (yfov in degrees) */
 };
 

@@ -106,7 +106,8 @@ void ssg_rt_destroy(struct ssg_rt **rt)
     *rt = NULL;
 }
 
-static void set_hit(struct ssg_hit *hit, float t, float u, float v, unsigned geom, unsigned prim)
+static void set_hit(struct ssg_hit *hit, float t, float u, float v, unsigned geom,
+                    unsigned prim)
 {
     int miss = geom == RTC_INVALID_GEOMETRY_ID;
     hit->t = miss ? 0.0f : t;

@@ -14,7 +14,7 @@ struct ssg_rt;
 
 /* The nearest hit of one ray. */
 struct ssg_hit {
-    float t;      /* ray parameter of the hit: hit point = org + t * dir (dir need not be unit) */
+    float t; /* ray parameter of the hit: hit point = org + t * dir (dir need not be unit) */
     float u, v;   /* barycentrics: point = (1-u-v) * p0 + u * p1 + v * p2 */
     int mesh;     /* index into scene->meshes, -1 = the ray hit nothing */
     int triangle; /* triangle index within that mesh */

@@ -54,8 +54,9 @@ static const struct ssg_param_desc material_params[] = {
     VEC3("specular", material_args, specular, 0, 0, 0, 0, 1, NULL,
          "Blinn-Phong specular colour, linear RGB"),
     FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
-    TEXT("texture", STRING, material_args, texture, 0,
-         "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
+    TEXT(
+        "texture", STRING, material_args, texture, 0,
+        "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
 };
 static const struct ssg_param_desc point_light_params[] = {
     REQ_VEC3("position", light_args, position, "scene units", "light position"),
@@ -70,16 +71,19 @@ static const struct ssg_param_desc directional_light_params[] = {
           "irradiance on a surface facing the light"),
 };
 static const struct ssg_param_desc environment_params[] = {
-    VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL, "constant radiance, linear RGB"),
-    FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL, "multiplies color and image"),
+    VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL,
+         "constant radiance, linear RGB"),
+    FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL,
+          "multiplies color and image"),
     TEXT("image", STRING, environment_args, image, 0,
          "lat-long HDR image (multiplied by color), relative to the scene"),
 };
 static const struct ssg_param_desc plane_params[] = {
     MATERIAL(shape_args),
     VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the rectangle"),
-    VEC3("size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
-         "[width, unused, depth]: extents along the plane's x and z axes (its y is the normal)"),
+    VEC3(
+        "size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
+        "[width, unused, depth]: extents along the plane's x and z axes (its y is the normal)"),
     VEC3("normal", shape_args, normal, 0, 1, 0, 0, 0, NULL,
          "facing direction; the plane's frame is the shortest rotation of +y onto it"),
 };
@@ -94,8 +98,8 @@ static const struct ssg_param_desc sphere_params[] = {
     MATERIAL(shape_args),
     VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the sphere"),
     FLOAT("radius", shape_args, radius, 1, 1e-6, BIG, "scene units", "radius"),
-    {.name = "subdivisions", SSG_FIELD_INT(struct shape_args, subdivisions),
-     .def = 32, .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
+    {.name = "subdivisions", SSG_FIELD_INT(struct shape_args, subdivisions), .def = 32,
+     .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
 };
 static const struct ssg_param_desc mesh_params[] = {
     TEXT("file", STRING, mesh_args, file, 1, "glTF 2.0 file (.gltf or .glb), relative to "
@@ -117,7 +121,8 @@ struct kind_desc {
 static const struct kind_desc kinds[SK_COUNT] = {
     [SK_CAMERA] = {"camera", SSG_TABLE(camera_params), sizeof(struct camera_args)},
     [SK_MATERIAL] = {"material", SSG_TABLE(material_params), sizeof(struct material_args)},
-    [SK_POINT_LIGHT] = {"point_light", SSG_TABLE(point_light_params), sizeof(struct light_args)},
+    [SK_POINT_LIGHT] = {"point_light", SSG_TABLE(point_light_params),
+                        sizeof(struct light_args)},
     [SK_DIRECTIONAL_LIGHT] = {"directional_light", SSG_TABLE(directional_light_params),
                               sizeof(struct light_args)},
     [SK_ENVIRONMENT] = {"environment", SSG_TABLE(environment_params),
@@ -307,8 +312,10 @@ static void check_required(struct scene_loader *l, const struct scene_entity *e)
     const struct ssg_param_table t = kinds[e->kind].table;
     for (int i = 0; i < t.count; i++)
         if (t.params[i].required && !e->at[i].src) {
-            ssg_diag_at(l->diags, SSG_E_MISSING_INPUT, e->stmt->callee_loc, "'%s' needs "
-                        "argument '%s' (%s)", entity_name(e), t.params[i].name, t.params[i].help);
+            ssg_diag_at(l->diags, SSG_E_MISSING_INPUT, e->stmt->callee_loc,
+                        "'%s' needs "
+                        "argument '%s' (%s)",
+                        entity_name(e), t.params[i].name, t.params[i].help);
             ssg_scene_fail(l, SSG_E_MISSING_INPUT);
         }
 }
@@ -350,7 +357,8 @@ static void check_material_ref(struct scene_loader *l, struct scene_entity *e, c
                                   (int)l->ents[k].stmt->name_len, l->ents[k].stmt->name);
     char what[800];
     snprintf(what, sizeof what, "%s '%s' (expected a material: %s)",
-             i >= 0 ? "not a material:" : "no material named", name, n ? names : "none defined");
+             i >= 0 ? "not a material:" : "no material named", name,
+             n ? names : "none defined");
     problem(l, e, "material", i >= 0 ? SSG_E_TYPE : SSG_E_UNKNOWN_NAME, what);
 }
 
@@ -534,7 +542,8 @@ void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16])
     for (int i = 0; i < 3; i++)
         f[i] = fl > 0.0f ? f[i] / fl : (i == 2 ? -1.0f : 0.0f);
     const float *up = camera->up;
-    const float alt[3] = {fabsf(f[1]) < 0.9f ? 0.0f : 1.0f, fabsf(f[1]) < 0.9f ? 1.0f : 0.0f, 0};
+    const float alt[3] = {fabsf(f[1]) < 0.9f ? 0.0f : 1.0f, fabsf(f[1]) < 0.9f ? 1.0f : 0.0f,
+                          0};
     for (int attempt = 0; attempt < 2; attempt++, up = alt) {
         s[0] = f[1] * up[2] - f[2] * up[1];
         s[1] = f[2] * up[0] - f[0] * up[2];

@@ -35,7 +35,8 @@ struct ssg_light {
     float position[3];  /* point: world position */
     float direction[3]; /* directional: unit direction the light travels (world) */
     float color[3];     /* linear RGB */
-    float intensity;    /* point: radiant intensity (falls off with 1/d^2); directional: irradiance */
+    float
+        intensity; /* point: radiant intensity (falls off with 1/d^2); directional: irradiance */
 };
 
 /* A decoded texture: linear RGB floats, interleaved, row 0 at the top. */

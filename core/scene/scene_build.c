@@ -24,7 +24,8 @@ static void *reserve(struct scene_loader *l, void *array, int count, int *cap, s
     int want = *cap ? 2 * *cap : 16;
     void *p = realloc(array, (size_t)want * size);
     if (!p) {
-        ssg_diag_at(l->diags, SSG_E_NOMEM, (struct ssg_loc){0}, "out of memory loading the scene");
+        ssg_diag_at(l->diags, SSG_E_NOMEM, (struct ssg_loc){0},
+                    "out of memory loading the scene");
         ssg_scene_fail(l, SSG_E_NOMEM);
         return NULL;
     }
@@ -167,7 +168,8 @@ static void build_light(struct scene_loader *l, const struct scene_entity *e)
 static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
 {
     struct ssg_scene *s = l->scene;
-    struct ssg_mesh *grown = reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
+    struct ssg_mesh *grown =
+        reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
     if (!grown) {
         ssg_mesh_free(mesh);
         return;
@@ -248,7 +250,8 @@ static void place_camera(struct ssg_camera *c, const struct mesh_args *a)
     ssg_euler_matrix(a->rotate, r);
     float *pts[2] = {c->position, c->target};
     for (int k = 0; k < 2; k++) {
-        float p[3] = {pts[k][0] * a->scale[0], pts[k][1] * a->scale[1], pts[k][2] * a->scale[2]};
+        float p[3] = {pts[k][0] * a->scale[0], pts[k][1] * a->scale[1],
+                      pts[k][2] * a->scale[2]};
         for (int i = 0; i < 3; i++)
             pts[k][i] = r[3 * i] * p[0] + r[3 * i + 1] * p[1] + r[3 * i + 2] * p[2];
         for (int i = 0; i < 3; i++)
@@ -337,7 +340,8 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
  * slightly above, far enough for the bounding sphere to fit the 45-degree view. */
 static void default_camera(struct ssg_scene *s)
 {
-    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF},
+          hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
     for (int i = 0; i < s->mesh_count; i++)
         ssg_mesh_bounds(&s->meshes[i], lo, hi);
     if (!(lo[0] <= hi[0]))

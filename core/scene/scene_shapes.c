@@ -45,7 +45,8 @@ static void mat_mul(const float a[9], const float b[9], float out[9])
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            out[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+            out[3 * i + j] =
+                a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
 }
 
 static void normalize3(float v[3])
@@ -101,8 +102,8 @@ static void put_tri(uint32_t *dst, uint32_t a, uint32_t b, uint32_t c)
 
 /* Writes quad q (4 vertices from index 4q) of a mesh: corners in local space, transformed
  * by r and moved to center; a shared faceted normal; uvs over [0,1]^2. */
-static void put_quad(struct ssg_mesh *m, int q, const float corners[4][3], const float normal[3],
-                     const float r[9], const float center[3])
+static void put_quad(struct ssg_mesh *m, int q, const float corners[4][3],
+                     const float normal[3], const float r[9], const float center[3])
 {
     static const float uv[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     float n[3];

@@ -35,7 +35,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len)
 {
     const struct ssg_bilateral_params *p = params;
-    const struct ssg_shape *im = &in[SSG_BILATERAL_IN], *dep = &in[SSG_BILATERAL_IN_DEPTH];
+    const struct ssg_shape *im = &in[SSG_BILATERAL_IN_IN], *dep = &in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_shape *nrm = &in[SSG_BILATERAL_IN_NORMAL];
     if (p->size % 2 == 0) {
         snprintf(why, why_len, "size must be odd (a window centred on the pixel), got %d",
@@ -79,30 +79,35 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "size", SSG_FIELD_INT(struct ssg_bilateral_params, size),
-     .def = 9, .min = 1, .max = SSG_BILATERAL_MAX_SIZE, .unit = "px",
-     .help = "window diameter, odd"},
-    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_spatial), .def = 0, .min = 0,
-     .max = 1000, .unit = "px", .help = "spatial Gaussian sigma; 0 = size / 3"},
-    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_depth), .def = 0.05, .min = 1e-6,
-     .max = 1000, .help = "depth sigma as a fraction of the centre pixel's depth"},
-    {.name = "normal_power", SSG_FIELD_INT(struct ssg_bilateral_params, normal_power), .def = 16, .min = 0,
-     .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"},
+    {.name = "size", SSG_FIELD_INT(struct ssg_bilateral_params, size), .def = 9, .min = 1,
+     .max = SSG_BILATERAL_MAX_SIZE, .unit = "px", .help = "window diameter, odd"},
+    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_spatial),
+     .def = 0, .min = 0, .max = 1000, .unit = "px",
+     .help = "spatial Gaussian sigma; 0 = size / 3"},
+    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_depth),
+     .def = 0.05, .min = 1e-6, .max = 1000,
+     .help = "depth sigma as a fraction of the centre pixel's depth"},
+    {.name = "normal_power", SSG_FIELD_INT(struct ssg_bilateral_params, normal_power),
+     .def = 16, .min = 0, .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"},
     {.name = "separable", SSG_FIELD_BOOL(struct ssg_bilateral_params, separable), .def = 0,
      .help = "horizontal then vertical pass: O(size) per pixel, an approximation"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+    [SSG_BILATERAL_IN_IN] = {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
      .doc = "image to smooth"},
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "linear depth; 0 = background"},
-    {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
+    [SSG_BILATERAL_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "linear depth; 0 = background"},
+    [SSG_BILATERAL_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
      .doc = "unit view-space normal; none = no normal term"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_BILATERAL_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR, .same_as = "in", .doc = "smoothed image"},
+    [SSG_BILATERAL_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
+     .doc = "smoothed image"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_BILATERAL_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_bilateral = {
     .name = "bilateral",
@@ -112,18 +117,15 @@ const struct ssg_node_desc ssg_node_bilateral = {
               "(geometry-aware bilateral filtering, separated as in Reinbothe et al.); "
               "Belonogov, Global Illumination methods in simulated VR environments, sec. "
               "4.3.2, eq. 4.5 with a depth range term, separable form eq. 4.6 and 4.7",
-    .doc = "Weighted mean over a size x size window: spatial Gaussian (sigma_spatial px), "
-           "relative depth Gaussian exp(-0.5 (dd / (sigma_depth d))^2) and normal weight "
-           "max(0, n.n')^normal_power, normalised. By default the exact 2D filter; separable=true "
-           "runs the same weights over a row, then over a column of the row pass's result "
-           "(the documents' approximation, O(size) per pixel). Background pixels (depth 0) "
-           "pass through and are never used.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_bilateral_params),
+    .doc =
+        "Weighted mean over a size x size window: spatial Gaussian (sigma_spatial px), "
+        "relative depth Gaussian exp(-0.5 (dd / (sigma_depth d))^2) and normal weight "
+        "max(0, n.n')^normal_power, normalised. By default the exact 2D filter; separable=true "
+        "runs the same weights over a row, then over a column of the row pass's result "
+        "(the documents' approximation, O(size) per pixel). Background pixels (depth 0) "
+        "pass through and are never used.",
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_bilateral_params),
     .consts_size = sizeof(struct ssg_bilateral_consts),
     .check = check,
     .prepare = prepare,

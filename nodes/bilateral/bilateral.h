@@ -9,7 +9,18 @@
 #define SSG_BILATERAL_MAX_SIZE 63
 
 /* Input ports, in order. */
-enum { SSG_BILATERAL_IN, SSG_BILATERAL_IN_DEPTH, SSG_BILATERAL_IN_NORMAL };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_bilateral_input {
+    SSG_BILATERAL_IN_IN,
+    SSG_BILATERAL_IN_DEPTH,
+    SSG_BILATERAL_IN_NORMAL,
+    SSG_BILATERAL_INPUTS
+};
+enum ssg_bilateral_output {
+    SSG_BILATERAL_OUT_OUT,
+    SSG_BILATERAL_OUTPUTS
+};
 
 struct ssg_bilateral_params {
     int size;            /* window diameter, px, odd, 1..63; default 9 */

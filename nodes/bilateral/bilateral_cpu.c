@@ -10,19 +10,13 @@
  * -ffast-math), accurate to a few 1e-7 relative (bilateral_math.h).
  * The separable form runs the same loops twice with a one-row, then a one-column window
  * (run_separable): 2 size taps per pixel instead of size^2. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bilateral.h"
-
-/* The kernel never unmasks floating-point exceptions, so float operations cannot trap.
-   Telling GCC so lets it vectorise loops whose selects it would otherwise turn into
-   branches; no result changes (no reassociation, no contraction). */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
 
 #include "bilateral_math.h"
 
@@ -243,7 +237,7 @@ static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io)
 {
-    const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
+    const struct ssg_image *in = io->in[SSG_BILATERAL_IN_IN];
     const struct ssg_image *dep = io->in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
     const struct ssg_bilateral_consts *c = consts;

@@ -34,7 +34,7 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
     char defines[64];
     snprintf(defines, sizeof defines, "#define CHANNELS %d\n#define NORMALS %d\n",
-             io->in[SSG_BILATERAL_IN]->channels, nrm && c->normal_power > 0);
+             io->in[SSG_BILATERAL_IN_IN]->channels, nrm && c->normal_power > 0);
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "bilateral.glsl", defines);
     ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->size * (size_t)c->size);
@@ -47,9 +47,9 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_float(&p, "normal_power", (float)c->normal_power);
     ssg_gl_float(&p, "normal_min", c->normal_min);
     if (!tmp) {
-        one_pass(&p, io->in[SSG_BILATERAL_IN], io->out[0], c->radius, c->radius);
+        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], io->out[0], c->radius, c->radius);
     } else {
-        one_pass(&p, io->in[SSG_BILATERAL_IN], tmp, c->radius, 0);
+        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], tmp, c->radius, 0);
         one_pass(&p, tmp, io->out[0], 0, c->radius);
     }
     return ssg_gl_pass_end(&p);
@@ -59,7 +59,7 @@ enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *co
                                   const struct ssg_io *io)
 {
     const struct ssg_bilateral_consts *c = consts;
-    const struct ssg_image *in = io->in[SSG_BILATERAL_IN];
+    const struct ssg_image *in = io->in[SSG_BILATERAL_IN_IN];
     if (!c->separable)
         return run(ctx, c, io, NULL);
     struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);

@@ -30,33 +30,50 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len);
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "direct", .types = SSG_T_COLOR,
-     .doc = "direct light (diffuse + specular) of the visible surface, linear RGB"},
-    {.name = "albedo", .types = SSG_T_COLOR, .doc = "diffuse reflectance, linear RGB"},
-    {.name = "ambient_occlusion", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "ambient occlusion, 1 = unoccluded; unconnected = 1 everywhere"},
-    {.name = "indirect", .types = SSG_T_COLOR, .optional = 1,
+    [SSG_COMBINE_IN_DIRECT] =
+        {.name = "direct",
+         .types = SSG_T_COLOR,
+         .doc = "direct light (diffuse + specular) of the visible surface, linear RGB"},
+    [SSG_COMBINE_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
+     .doc = "diffuse reflectance, linear RGB"},
+    [SSG_COMBINE_IN_AMBIENT_OCCLUSION] =
+        {.name = "ambient_occlusion",
+         .types = SSG_T_SCALAR,
+         .optional = 1,
+         .doc = "ambient occlusion, 1 = unoccluded; unconnected = 1 everywhere"},
+    [SSG_COMBINE_IN_INDIRECT] = {.name = "indirect", .types = SSG_T_COLOR, .optional = 1,
      .doc = "indirect light (a bounce), linear RGB; unconnected = 0"},
-    {.name = "modulation", .types = SSG_T_SCALAR | SSG_T_COLOR, .optional = 1,
-     .doc = "SSDO modulation factor (1 or 3 channels) darkening direct, environment, "
-            "ambient and (darken_indirect) indirect light; unconnected = 1"},
-    {.name = "environment", .types = SSG_T_COLOR, .optional = 1,
-     .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
-            "term; unconnected = 0"},
+    [SSG_COMBINE_IN_MODULATION] =
+        {.name = "modulation",
+         .types = SSG_T_SCALAR | SSG_T_COLOR,
+         .optional = 1,
+         .doc = "SSDO modulation factor (1 or 3 channels) darkening direct, environment, "
+                "ambient and (darken_indirect) indirect light; unconnected = 1"},
+    [SSG_COMBINE_IN_ENVIRONMENT] =
+        {.name = "environment",
+         .types = SSG_T_COLOR,
+         .optional = 1,
+         .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
+                "term; unconnected = 0"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_COMBINE_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_COLOR, .same_as = "direct",
+    [SSG_COMBINE_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR, .same_as = "direct",
      .doc = "shaded frame, linear RGB (unbounded; write tone-maps its PNG)"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_COMBINE_OUTPUTS, "one entry a port enumerator");
 
 static const struct ssg_param_desc param_table[] = {
-    {.name = "ambient", SSG_FIELD_FLOAT(struct ssg_combine_params, ambient),
-     .def = 0.3, .min = 0, .max = 10,
+    {.name = "ambient", SSG_FIELD_FLOAT(struct ssg_combine_params, ambient), .def = 0.3,
+     .min = 0, .max = 10,
      .help = "strength of the uniform ambient light that AO darkens (linear, like direct)"},
-    {.name = "ambient_color", SSG_FIELD_VEC3(struct ssg_combine_params, ambient_color), .min = 0, .max = 100,
-     .def3 = {1, 1, 1}, .unit = "linear RGB", .help = "tint of the ambient light"},
-    {.name = "darken_indirect", SSG_FIELD_BOOL(struct ssg_combine_params, darken_indirect), .def = 1,
+    {.name = "ambient_color", SSG_FIELD_VEC3(struct ssg_combine_params, ambient_color),
+     .min = 0, .max = 100, .def3 = {1, 1, 1},
+     .unit = "linear RGB",
+     .help = "tint of the ambient light"},
+    {.name = "darken_indirect", SSG_FIELD_BOOL(struct ssg_combine_params, darken_indirect),
+     .def = 1,
      .help = "the modulation factor darkens the indirect light too (the one-step SSDO rule "
              "against over-bright corners)"},
 };
@@ -78,12 +95,8 @@ const struct ssg_node_desc ssg_node_combine = {
            "Unconnected: ao and modulation 1, environment and indirect 0. Background pixels "
            "(albedo 0, light 0) stay black. Output is linear and may exceed 1; write's "
            "exposure and tonemap shape the PNG.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(param_table),
-    .params_size = sizeof(struct ssg_combine_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(param_table, struct ssg_combine_params),
     .check = check,
     .run_cpu = ssg_combine_run_cpu,
     .run_gl = ssg_combine_run_gl,

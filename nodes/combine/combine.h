@@ -10,14 +10,20 @@
 #include "graph/node.h"
 
 /* Input ports, in the order of the descriptor's table. */
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
 enum ssg_combine_input {
-    SSG_COMBINE_DIRECT,   /* color, required: direct diffuse + specular light */
-    SSG_COMBINE_ALBEDO,   /* color, required: diffuse reflectance */
-    SSG_COMBINE_AO,       /* scalar, optional: ambient occlusion, 1 = open; missing = 1 */
-    SSG_COMBINE_INDIRECT, /* color, optional: indirect light; missing = 0 */
-    SSG_COMBINE_MODULATION, /* scalar or color, optional: SSDO modulation factor; missing = 1 */
-    SSG_COMBINE_ENVIRONMENT, /* color, optional: unoccluded environment light; missing = 0 */
+    SSG_COMBINE_IN_DIRECT,
+    SSG_COMBINE_IN_ALBEDO,
+    SSG_COMBINE_IN_AMBIENT_OCCLUSION,
+    SSG_COMBINE_IN_INDIRECT,
+    SSG_COMBINE_IN_MODULATION,
+    SSG_COMBINE_IN_ENVIRONMENT,
     SSG_COMBINE_INPUTS
+};
+enum ssg_combine_output {
+    SSG_COMBINE_OUT_OUT,
+    SSG_COMBINE_OUTPUTS
 };
 
 /* Parameters as the graph file sets them (see the table in combine.c). */

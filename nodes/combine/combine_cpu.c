@@ -46,12 +46,12 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
                                  const struct ssg_io *io)
 {
     const struct ssg_combine_params *p = consts;
-    const struct ssg_image *direct = io->in[SSG_COMBINE_DIRECT];
-    const struct ssg_image *albedo = io->in[SSG_COMBINE_ALBEDO];
-    const struct ssg_image *ao = io->in[SSG_COMBINE_AO];
-    const struct ssg_image *indirect = io->in[SSG_COMBINE_INDIRECT];
-    const struct ssg_image *modulation = io->in[SSG_COMBINE_MODULATION];
-    const struct ssg_image *environment = io->in[SSG_COMBINE_ENVIRONMENT];
+    const struct ssg_image *direct = io->in[SSG_COMBINE_IN_DIRECT];
+    const struct ssg_image *albedo = io->in[SSG_COMBINE_IN_ALBEDO];
+    const struct ssg_image *ao = io->in[SSG_COMBINE_IN_AMBIENT_OCCLUSION];
+    const struct ssg_image *indirect = io->in[SSG_COMBINE_IN_INDIRECT];
+    const struct ssg_image *modulation = io->in[SSG_COMBINE_IN_MODULATION];
+    const struct ssg_image *environment = io->in[SSG_COMBINE_IN_ENVIRONMENT];
     struct ssg_image *out = io->out[0];
     struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width,
                               .darken_indirect = p->darken_indirect};

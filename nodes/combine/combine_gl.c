@@ -11,18 +11,18 @@ enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *cons
 {
     const struct ssg_combine_params *prm = consts;
     struct ssg_image *out = io->out[0];
-    const struct ssg_image *mod = io->in[SSG_COMBINE_MODULATION];
+    const struct ssg_image *mod = io->in[SSG_COMBINE_IN_MODULATION];
     float k[3];
     for (int c = 0; c < 3; c++)
         k[c] = prm->ambient * prm->ambient_color[c];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "combine.glsl", NULL);
-    ssg_gl_input(&p, "direct", io->in[SSG_COMBINE_DIRECT]);
-    ssg_gl_input(&p, "albedo", io->in[SSG_COMBINE_ALBEDO]);
-    ssg_gl_input(&p, "ao", io->in[SSG_COMBINE_AO]);
-    ssg_gl_input(&p, "indirect", io->in[SSG_COMBINE_INDIRECT]);
+    ssg_gl_input(&p, "direct", io->in[SSG_COMBINE_IN_DIRECT]);
+    ssg_gl_input(&p, "albedo", io->in[SSG_COMBINE_IN_ALBEDO]);
+    ssg_gl_input(&p, "ao", io->in[SSG_COMBINE_IN_AMBIENT_OCCLUSION]);
+    ssg_gl_input(&p, "indirect", io->in[SSG_COMBINE_IN_INDIRECT]);
     ssg_gl_input(&p, "modulation", mod);
-    ssg_gl_input(&p, "environment", io->in[SSG_COMBINE_ENVIRONMENT]);
+    ssg_gl_input(&p, "environment", io->in[SSG_COMBINE_IN_ENVIRONMENT]);
     ssg_gl_output(&p, "dst", out);
     ssg_gl_int(&p, "modulation_last", mod && mod->channels == 3 ? 2 : 0);
     ssg_gl_int(&p, "darken_indirect", prm->darken_indirect);

@@ -96,7 +96,8 @@ enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node
  * and makes gl_Position itself (the layer's own projection; NDC x, y in [-1, 1] cover the
  * image with texel row 0 at y = -1); the nearest fragment's `layout(location = 0) out
  * float` is kept (depth test LESS, no culling). Shadow maps are drawn this way. */
-enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass,
+                                      const struct ssg_gl_scene *scene,
                                       struct ssg_image *target, float clear);
 
 void ssg_gl_scene_free(struct ssg_gl_scene **scene);

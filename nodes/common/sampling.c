@@ -3,11 +3,18 @@
 
 #include "common/sampling.h"
 
-enum ssg_err ssg_sampling_check_rotation_depth(const struct ssg_shape *position,
-                                               const struct ssg_shape *rotation,
-                                               const struct ssg_shape *depth, char *why,
-                                               size_t why_len)
+enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
+                                       const struct ssg_shape *kernel,
+                                       const struct ssg_shape *rotation,
+                                       const struct ssg_shape *depth,
+                                       const struct ssg_shape *count, char *why,
+                                       size_t why_len)
 {
+    if (kernel && (kernel->channels != 3 || kernel->height != 1 || kernel->width < 1)) {
+        snprintf(why, why_len, "kernel must be count x 1 with 3 channels, got %dx%dx%d",
+                 kernel->width, kernel->height, kernel->channels);
+        return SSG_E_CHANNELS;
+    }
     if (rotation->channels != 0 &&
         (rotation->channels != 2 || rotation->width != rotation->height)) {
         snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
@@ -17,6 +24,11 @@ enum ssg_err ssg_sampling_check_rotation_depth(const struct ssg_shape *position,
     if (depth->channels != 0 &&
         (depth->channels != 1 || !ssg_shape_same_size(depth, position))) {
         snprintf(why, why_len, "depth must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    if (count && count->channels != 0 &&
+        (count->channels != 1 || !ssg_shape_same_size(count, position))) {
+        snprintf(why, why_len, "count must be a 1-channel image the size of position");
         return SSG_E_SIZE;
     }
     return SSG_OK;

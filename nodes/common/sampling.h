@@ -1,19 +1,32 @@
 /* sampling.h - what the screen-space sampling nodes (ssao, hbao, ssdo, bounce, complexity)
- * share on the C side: the checks of their optional G-buffer inputs and the camera as the
- * G-buffer's resolution sees it, made once in prepare() for both backends. Its GLSL twin is
- * sampling.glsl (included by the shaders with #include "sampling.glsl"). */
+ * share on the C side: the checks of their optional G-buffer inputs, the camera as the
+ * G-buffer's resolution sees it (made once in prepare() for both backends), and the chunk
+ * loaders of the CPU kernels (a chunk is up to 128 pixels of one row in structure-of-arrays
+ * scratch, so that the per-sample loops vectorise; see ssao_cpu.c). Its GLSL twin is
+ * sampling.glsl (the shaders #include it). */
 #ifndef SSG_SAMPLING_H
 #define SSG_SAMPLING_H
 
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
 #include "graph/node.h"
 
-/* check() of a sampling node: the optional rotation tile (n x n, 2 channels) and the
- * optional depth (1 channel, the size of position); channels 0 = unconnected. Returns
+/* Pixels of one row a CPU kernel processes at a time (its structure-of-arrays scratch). */
+enum { SSG_SAMPLING_CHUNK = 128 };
+
+/* check() of a sampling node: its inputs besides position and normal, against position:
+ * the kernel (count x 1, 3 channels; NULL: the node has no kernel input), the optional
+ * rotation tile (n x n, 2 channels), the optional depth and per-pixel count (1 channel,
+ * the size of position; count NULL: no such input); channels 0 = unconnected. Returns
  * SSG_OK, or the error code with the reason in why. */
-enum ssg_err ssg_sampling_check_rotation_depth(const struct ssg_shape *position,
-                                               const struct ssg_shape *rotation,
-                                               const struct ssg_shape *depth, char *why,
-                                               size_t why_len);
+enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
+                                       const struct ssg_shape *kernel,
+                                       const struct ssg_shape *rotation,
+                                       const struct ssg_shape *depth,
+                                       const struct ssg_shape *count, char *why,
+                                       size_t why_len);
 
 /* prepare() of a sampling node: the frame's camera as an image of `gbuffer`'s size sees it
  * (ssg_projection_scaled: a subsampled G-buffer sees the same camera). Reports "needs a
@@ -22,5 +35,132 @@ enum ssg_err ssg_sampling_check_rotation_depth(const struct ssg_shape *position,
 enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
                                      const struct ssg_shape *gbuffer,
                                      struct ssg_projection *out);
+
+/* The scalar pass of a chunk holding a normal that is not unit: every normal of the chunk
+ * divided by its length (a unit one keeps its bits to within the rounding of 1 / 1). */
+static inline void ssg_sampling_normalize(int len, float *restrict nx, float *restrict ny,
+                                          float *restrict nz)
+{
+    for (int i = 0; i < len; i++) {
+        float nn = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
+        float inv = 1.0f / sqrtf(nn);
+        nx[i] *= inv, ny[i] *= inv, nz[i] *= inv;
+    }
+}
+
+/* Loads one chunk of row pixels [o, o + len) of the G-buffer planes: P (px, py, pz),
+ * the unit normal (nx, ny, nz), the depth dp = sign * depth plane, and fg = 1 on a
+ * surface. Background (depth 0, normal 0) or garbage gets fg = 0 and harmless values (N =
+ * +z, dp = 1) whose result the caller replaces. Normals are unit by the frame conventions
+ * (node.h); the rare chunk holding one that is not gets a scalar pass, so the common case
+ * stays a vector loop (sqrtf does not vectorise while it may set errno). Positions load
+ * unconditionally: a load under a condition would stop vectorising. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_load(const float *const pos[3], const float *const nrm[3], const float *depth,
+                  float sign, size_t o, int len, int32_t *restrict fg, float *restrict nx,
+                  float *restrict ny, float *restrict nz, float *restrict px,
+                  float *restrict py, float *restrict pz, float *restrict dp)
+{
+    const float *restrict dpl = depth + o;
+    const float *restrict nx0 = nrm[0] + o, *restrict ny0 = nrm[1] + o;
+    const float *restrict nz0 = nrm[2] + o, *restrict px0 = pos[0] + o;
+    const float *restrict py0 = pos[1] + o, *restrict pz0 = pos[2] + o;
+    int not_unit = 0;
+    for (int i = 0; i < len; i++) {
+        float x = nx0[i], y = ny0[i], z = nz0[i];
+        float nn = x * x + y * y + z * z;
+        float d = sign * dpl[i];
+        int f = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
+        not_unit |= f & (fabsf(nn - 1.0f) > 1e-5f);
+        fg[i] = f;
+        nx[i] = f ? x : 0.0f;
+        ny[i] = f ? y : 0.0f;
+        nz[i] = f ? z : 1.0f;
+        dp[i] = f ? d : 1.0f;
+        px[i] = px0[i];
+        py[i] = py0[i];
+        pz[i] = pz0[i];
+    }
+    if (not_unit)
+        ssg_sampling_normalize(len, nx, ny, nz);
+}
+
+/* The rotation (cos, sin) of the n x n tile `rot` (planar, cos plane then sin plane) for
+ * pixels [x0, x0 + len) of row y; without a tile (rot NULL) no rotation. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_rotation(const float *rot, int n, int y, int x0, int len, float *restrict co,
+                      float *restrict si)
+{
+    if (rot) {
+        const float *rc = rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
+        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
+            co[i] = rc[xm];
+            si[i] = rs[xm];
+        }
+    } else {
+        for (int i = 0; i < len; i++) {
+            co[i] = 1.0f;
+            si[i] = 0.0f;
+        }
+    }
+}
+
+/* Duff et al.'s branch-free orthonormal basis about unit N ("Building an Orthonormal
+ * Basis, Revisited", JCGT 2017; -0 counts as negative): T = t, B = b, T x B = N, before
+ * the tile's turn. Scalar, inlined into the vector loops of the setups. */
+static inline __attribute__((always_inline)) void ssg_sampling_basis(float nx, float ny,
+                                                                     float nz, float t[3],
+                                                                     float b[3])
+{
+    float sign = copysignf(1.0f, nz);
+    float a = -1.0f / (sign + nz);
+    float c = nx * ny * a;
+    t[0] = 1.0f + sign * nx * nx * a;
+    t[1] = sign * c;
+    t[2] = -sign * nx;
+    b[0] = c;
+    b[1] = sign + ny * ny * a;
+    b[2] = -ny;
+}
+
+/* Places kernel sample s = (sx, sy, sz) around each of len pixels through their
+ * projective coefficients (Z - bias = cz . (1, s), u Z = cu . (1, s), v Z = cv . (1, s),
+ * each a plane of 4 x CHUNK floats) and projects it on a w x h image: idx = the pixel it
+ * lands on, zb = Z - bias (the depth an occluder must be nearer than), or -1 behind the
+ * camera or off screen (no depth > 0 undercuts it: unoccluded, visible). Comparisons are
+ * false for NaN, so a degenerate Z lands there too. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_place(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
+                   const float (*restrict cu)[SSG_SAMPLING_CHUNK],
+                   const float (*restrict cv)[SSG_SAMPLING_CHUNK], int len, float sx, float sy,
+                   float sz, float bias, int w, int h, int32_t *restrict idx,
+                   float *restrict zbs)
+{
+    const float fw = (float)w, fh = (float)h;
+    for (int i = 0; i < len; i++) {
+        float zb = cz[0][i] + cz[1][i] * sx + cz[2][i] * sy + cz[3][i] * sz;
+        float z = zb + bias;
+        float nu = cu[0][i] + cu[1][i] * sx + cu[2][i] * sy + cu[3][i] * sz;
+        float nv = cv[0][i] + cv[1][i] * sx + cv[2][i] * sy + cv[3][i] * sz;
+        float inv = 1.0f / z;
+        float u = nu * inv, v = nv * inv;
+        int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
+        /* Select in float, then convert: converting an out-of-range float is undefined. */
+        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
+        idx[i] = (int)vs * w + (int)us;
+        zbs[i] = ok ? zb : -1.0f;
+    }
+}
+
+/* The samples n a pixel uses of a kernel of k, from its `count` input value v: round(v)
+ * (half up), clamped to [1, k]; NaN = k. Selects only, so a loop of it vectorises. */
+static inline __attribute__((always_inline)) int ssg_sampling_count(float v, int k)
+{
+    const float kmax = (float)k;
+    v = v < 1.0f ? 1.0f : v;
+    v = v <= kmax ? v : kmax; /* NaN fails both compares above: k */
+    int n = (int)(v + 0.5f);
+    return n < k ? n : k;
+}
 
 #endif

@@ -102,18 +102,20 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "a", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+    [SSG_COMPARE_IN_A] = {.name = "a", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
      .doc = "image under test"},
-    {.name = "b", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+    [SSG_COMPARE_IN_B] = {.name = "b", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
      .doc = "reference image, same type and size as a"},
-    {.name = "mask", .types = SSG_T_SCALAR, .optional = 1,
+    [SSG_COMPARE_IN_MASK] = {.name = "mask", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "pixels with mask > 0.5 are compared; none = every pixel"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_COMPARE_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "diff", .types = SSG_T_COLOR,
+    [SSG_COMPARE_OUT_DIFF] = {.name = "diff", .types = SSG_T_COLOR,
      .doc = "a - b on blue (a < b), white (equal), red (a > b); black = not compared"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_COMPARE_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_compare = {
     .name = "compare",
@@ -127,12 +129,8 @@ const struct ssg_node_desc ssg_node_compare = {
            "inside the image, weights renormalised. `diff` maps t = clamp((a - b) / scale, "
            "-1, 1) to blue (-1), white (0), red (+1); for 3 channels the channel difference "
            "of largest magnitude; pixels not compared are black.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_compare_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_compare_params),
     .consts_size = sizeof(struct ssg_compare_consts),
     .is_sink = 1,
     .check = check,

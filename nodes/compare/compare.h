@@ -12,7 +12,18 @@
 #define SSG_COMPARE_MAX_CHANNELS 4
 
 /* Input ports, in order. */
-enum { SSG_COMPARE_IN_A, SSG_COMPARE_IN_B, SSG_COMPARE_IN_MASK };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_compare_input {
+    SSG_COMPARE_IN_A,
+    SSG_COMPARE_IN_B,
+    SSG_COMPARE_IN_MASK,
+    SSG_COMPARE_INPUTS
+};
+enum ssg_compare_output {
+    SSG_COMPARE_OUT_DIFF,
+    SSG_COMPARE_OUTPUTS
+};
 
 struct ssg_compare_params {
     float scale; /* |a - b| shown in full colour in `diff`, image units; default 0.25 */

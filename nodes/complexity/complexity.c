@@ -93,8 +93,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "levels", SSG_FIELD_INTS(struct ssg_complexity_params, levels), .def_ints = {20, 30, 40, 50},
-     .def_ints_count = 4, .min_count = 1, .max_count = SSG_INTS_MAX, .min = 1, .max = 1024,
+    {.name = "levels", SSG_FIELD_INTS(struct ssg_complexity_params, levels),
+     .def_ints = {20, 30, 40, 50},
+     .def_ints_count = 4,
+     .min_count = 1,
+     .max_count = SSG_INTS_MAX,
+     .min = 1,
+     .max = 1024,
      .unit = "samples",
      .help = "sample counts, ascending, each a multiple of period (Szentandrasi table 1)"},
     {.name = "period", SSG_FIELD_INT(struct ssg_complexity_params, period), .def = 10, .min = 1,
@@ -103,30 +108,36 @@ static const struct ssg_param_desc params[] = {
     {.name = "scale", SSG_FIELD_INT(struct ssg_complexity_params, scale), .def = 4, .min = 1,
      .max = SSG_COMPLEXITY_MAX_SCALE, .unit = "px",
      .help = "cell side of the grid the gradients are taken on: 1, 2, 4 or 8"},
-    {.name = "resolutions", SSG_FIELD_INT(struct ssg_complexity_params, resolutions), .def = 1, .min = 1,
-     .max = SSG_COMPLEXITY_MAX_RESOLUTIONS,
+    {.name = "resolutions", SSG_FIELD_INT(struct ssg_complexity_params, resolutions), .def = 1,
+     .min = 1, .max = SSG_COMPLEXITY_MAX_RESOLUTIONS,
      .help = "grids combined by max: cells of scale, 2 scale, ... px"},
-    {.name = "normal_threshold", SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_threshold), .def = 0.1,
-     .min = 0, .max = 8, .help = "sum over neighbour cells of |n - n_nb| below which a cell "
-     "is flat"},
-    {.name = "normal_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_gain), .def = 2, .min = 0,
-     .max = 1e6, .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
-    {.name = "depth_threshold", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_threshold), .def = 0.02,
-     .min = 0, .max = 1e6, .help = "sum of |n . (P_nb - P)| / depth (depth change off the "
-     "tangent plane, relative) below which a cell is flat"},
-    {.name = "depth_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_gain), .def = 10, .min = 0,
-     .max = 1e6, .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
+    {.name = "normal_threshold",
+     SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_threshold), .def = 0.1, .min = 0,
+     .max = 8, .help = "sum over neighbour cells of |n - n_nb| below which a cell is flat"},
+    {.name = "normal_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, normal_gain),
+     .def = 2, .min = 0, .max = 1e6,
+     .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
+    {.name = "depth_threshold", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_threshold),
+     .def = 0.02, .min = 0, .max = 1e6,
+     .help = "sum of |n . (P_nb - P)| / depth (depth change off the "
+             "tangent plane, relative) below which a cell is flat"},
+    {.name = "depth_gain", SSG_FIELD_FLOAT(struct ssg_complexity_params, depth_gain), .def = 10,
+     .min = 0, .max = 1e6, .help = "weight = (gradient - threshold) gain, clamped to [0, 1]"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "linear depth (0 = background)"},
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
+    [SSG_COMPLEXITY_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "linear depth (0 = background)"},
+    [SSG_COMPLEXITY_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_COMPLEXITY_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "count", .types = SSG_T_SCALAR,
+    [SSG_COMPLEXITY_OUT_COUNT] = {.name = "count", .types = SSG_T_SCALAR,
      .doc = "per-pixel sample count, one of levels (for ssao/hbao/ssdo.count)"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_COMPLEXITY_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_complexity = {
     .name = "complexity",
@@ -143,12 +154,8 @@ const struct ssg_node_desc ssg_node_complexity = {
            "normal_gain, 0, 1), clamp((g_d - depth_threshold) depth_gain, 0, 1)); a pixel "
            "takes w = max over grids of its cell's t, and count = levels[min(L-1, "
            "floor(w L))]. Background pixels get the lowest level.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_complexity_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_complexity_params),
     .consts_size = sizeof(struct ssg_complexity_consts),
     .check = check,
     .prepare = prepare,

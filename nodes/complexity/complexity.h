@@ -12,7 +12,17 @@
 #define SSG_COMPLEXITY_MAX_RESOLUTIONS 4 /* scales combined: scale, 2 scale, 4, 8 scale */
 
 /* Input ports, in order. */
-enum { SSG_COMPLEXITY_IN_DEPTH, SSG_COMPLEXITY_IN_NORMAL };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_complexity_input {
+    SSG_COMPLEXITY_IN_DEPTH,
+    SSG_COMPLEXITY_IN_NORMAL,
+    SSG_COMPLEXITY_INPUTS
+};
+enum ssg_complexity_output {
+    SSG_COMPLEXITY_OUT_COUNT,
+    SSG_COMPLEXITY_OUTPUTS
+};
 
 struct ssg_complexity_params {
     struct ssg_ints levels;  /* sample counts, ascending, multiples of period; default

@@ -30,7 +30,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len)
 {
     const struct ssg_downsample_params *p = params;
-    const struct ssg_shape *dep = &in[SSG_DOWNSAMPLE_DEPTH];
+    const struct ssg_shape *dep = &in[SSG_DOWNSAMPLE_IN_DEPTH];
     if (p->factor != 2 && p->factor != 4) {
         snprintf(why, why_len, "factor must be 2 or 4, got %d", p->factor);
         return SSG_E_VALUE;
@@ -41,7 +41,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     }
     int w = (dep->width + p->factor - 1) / p->factor;
     int h = (dep->height + p->factor - 1) / p->factor;
-    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
+    for (int k = 0; k < SSG_DOWNSAMPLE_INPUTS; k++) {
         if (in[k].channels != 0 && !ssg_shape_same_size(&in[k], dep)) {
             snprintf(why, why_len, "every input must have the size of depth (%dx%d)",
                      dep->width, dep->height);
@@ -60,29 +60,38 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "linear depth; 0 = background"},
-    {.name = "position", .types = SSG_T_VECTOR, .optional = 1,
+    [SSG_DOWNSAMPLE_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "linear depth; 0 = background"},
+    [SSG_DOWNSAMPLE_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR, .optional = 1,
      .doc = "view-space position"},
-    {.name = "normal", .types = SSG_T_VECTOR, .optional = 1, .doc = "unit view-space normal"},
-    {.name = "albedo", .types = SSG_T_COLOR, .optional = 1, .doc = "albedo"},
-    {.name = "direct", .types = SSG_T_COLOR, .optional = 1, .doc = "direct light"},
-    {.name = "environment", .types = SSG_T_COLOR, .optional = 1,
-     .doc = "environment light"},
+    [SSG_DOWNSAMPLE_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
+     .doc = "unit view-space normal"},
+    [SSG_DOWNSAMPLE_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "albedo"},
+    [SSG_DOWNSAMPLE_IN_DIRECT] = {.name = "direct", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "direct light"},
+    [SSG_DOWNSAMPLE_IN_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR,
+     .optional = 1, .doc = "environment light"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_DOWNSAMPLE_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "depth of each block's chosen pixel"},
-    {.name = "position", .types = SSG_T_VECTOR,
+    [SSG_DOWNSAMPLE_OUT_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "depth of each block's chosen pixel"},
+    [SSG_DOWNSAMPLE_OUT_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
      .doc = "position of the chosen pixel; 0 when unconnected"},
-    {.name = "normal", .types = SSG_T_VECTOR,
+    [SSG_DOWNSAMPLE_OUT_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
      .doc = "normal of the chosen pixel; 0 when unconnected"},
-    {.name = "albedo", .types = SSG_T_COLOR,
+    [SSG_DOWNSAMPLE_OUT_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "albedo of the chosen pixel; 0 when unconnected"},
-    {.name = "direct", .types = SSG_T_COLOR,
+    [SSG_DOWNSAMPLE_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
      .doc = "direct light of the chosen pixel; 0 when unconnected"},
-    {.name = "environment", .types = SSG_T_COLOR,
-     .doc = "environment light of the chosen pixel; 0 when unconnected"},
+    [SSG_DOWNSAMPLE_OUT_ENVIRONMENT] =
+        {.name = "environment",
+         .types = SSG_T_COLOR,
+         .doc = "environment light of the chosen pixel; 0 when unconnected"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_DOWNSAMPLE_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_downsample = {
     .name = "downsample",
@@ -98,12 +107,8 @@ const struct ssg_node_desc ssg_node_downsample = {
            "edge, so depth, position and normal stay one surface point. Outputs are "
            "ceil(width / factor) x ceil(height / factor); an output whose input is "
            "unconnected is all 0.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_downsample_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_downsample_params),
     .check = check,
     .run_cpu = ssg_downsample_run_cpu,
     .run_gl = ssg_downsample_run_gl,

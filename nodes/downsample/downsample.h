@@ -7,15 +7,28 @@
 #include "graph/node.h"
 
 /* Ports, in order; output k copies input k. */
-enum {
-    SSG_DOWNSAMPLE_DEPTH,
-    SSG_DOWNSAMPLE_POSITION,
-    SSG_DOWNSAMPLE_NORMAL,
-    SSG_DOWNSAMPLE_ALBEDO,
-    SSG_DOWNSAMPLE_DIRECT,
-    SSG_DOWNSAMPLE_ENVIRONMENT,
-    SSG_DOWNSAMPLE_PORTS
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_downsample_input {
+    SSG_DOWNSAMPLE_IN_DEPTH,
+    SSG_DOWNSAMPLE_IN_POSITION,
+    SSG_DOWNSAMPLE_IN_NORMAL,
+    SSG_DOWNSAMPLE_IN_ALBEDO,
+    SSG_DOWNSAMPLE_IN_DIRECT,
+    SSG_DOWNSAMPLE_IN_ENVIRONMENT,
+    SSG_DOWNSAMPLE_INPUTS
 };
+enum ssg_downsample_output {
+    SSG_DOWNSAMPLE_OUT_DEPTH,
+    SSG_DOWNSAMPLE_OUT_POSITION,
+    SSG_DOWNSAMPLE_OUT_NORMAL,
+    SSG_DOWNSAMPLE_OUT_ALBEDO,
+    SSG_DOWNSAMPLE_OUT_DIRECT,
+    SSG_DOWNSAMPLE_OUT_ENVIRONMENT,
+    SSG_DOWNSAMPLE_OUTPUTS
+};
+_Static_assert((int)SSG_DOWNSAMPLE_INPUTS == (int)SSG_DOWNSAMPLE_OUTPUTS,
+               "downsample: output k is input k subsampled");
 
 #define SSG_DOWNSAMPLE_MAX_FACTOR 4
 

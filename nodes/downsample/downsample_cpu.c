@@ -10,11 +10,15 @@
 
 #include "downsample.h"
 
-enum { ROWS_PER_BAND = 8, CHUNK = 256, MAX_BLOCK = SSG_DOWNSAMPLE_MAX_FACTOR * SSG_DOWNSAMPLE_MAX_FACTOR };
+enum {
+    ROWS_PER_BAND = 8,
+    CHUNK = 256,
+    MAX_BLOCK = SSG_DOWNSAMPLE_MAX_FACTOR * SSG_DOWNSAMPLE_MAX_FACTOR
+};
 
 struct job {
-    const struct ssg_image *in[SSG_DOWNSAMPLE_PORTS]; /* NULL = unconnected */
-    struct ssg_image *out[SSG_DOWNSAMPLE_PORTS];
+    const struct ssg_image *in[SSG_DOWNSAMPLE_INPUTS]; /* NULL = unconnected */
+    struct ssg_image *out[SSG_DOWNSAMPLE_INPUTS];
     int factor;
     int w, h;   /* input size */
     int ow, oh; /* output size */
@@ -37,7 +41,7 @@ static float median(float *v, int n)
 /* Input pixel index of block (bx, by)'s representative. */
 static size_t representative(const struct job *j, int bx, int by)
 {
-    const float *depth = j->in[SSG_DOWNSAMPLE_DEPTH]->data;
+    const float *depth = j->in[SSG_DOWNSAMPLE_IN_DEPTH]->data;
     int x0 = bx * j->factor, y0 = by * j->factor;
     int x1 = x0 + j->factor < j->w ? x0 + j->factor : j->w;
     int y1 = y0 + j->factor < j->h ? y0 + j->factor : j->h;
@@ -79,7 +83,7 @@ static void band(void *user, int y0, int y1)
             for (int i = 0; i < len; i++)
                 pick[i] = representative(j, bx0 + i, by);
             size_t dst = (size_t)by * (size_t)j->ow + (size_t)bx0;
-            for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++)
+            for (int k = 0; k < SSG_DOWNSAMPLE_INPUTS; k++)
                 for (int ch = 0; ch < j->out[k]->channels; ch++) {
                     float *out = j->out[k]->data + (size_t)ch * out_plane + dst;
                     if (!j->in[k]) {
@@ -97,11 +101,11 @@ enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_downsample_params *p = consts;
-    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_DEPTH];
-    const struct ssg_shape *out = &ctx->out_shape[SSG_DOWNSAMPLE_DEPTH];
+    const struct ssg_image *dep = io->in[SSG_DOWNSAMPLE_IN_DEPTH];
+    const struct ssg_shape *out = &ctx->out_shape[SSG_DOWNSAMPLE_OUT_DEPTH];
     struct job j = {.factor = p->factor, .w = dep->width, .h = dep->height,
                     .ow = out->width, .oh = out->height};
-    for (int k = 0; k < SSG_DOWNSAMPLE_PORTS; k++) {
+    for (int k = 0; k < SSG_DOWNSAMPLE_INPUTS; k++) {
         j.in[k] = io->in[k];
         j.out[k] = io->out[k];
     }

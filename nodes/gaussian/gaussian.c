@@ -48,7 +48,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_gaussian_consts *c = consts;
     int size = p->sigma > 0 ? window_size(p) : 0;
     if (!(p->sigma > 0) || size < 1 || size > SSG_GAUSSIAN_MAX_SIZE || size % 2 == 0) {
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs sigma > 0 and an odd size up to %d", SSG_GAUSSIAN_MAX_SIZE);
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs sigma > 0 and an odd size up to %d",
+                             SSG_GAUSSIAN_MAX_SIZE);
     }
     c->radius = (size - 1) / 2;
     double w[SSG_GAUSSIAN_MAX_SIZE], sum = 0;
@@ -70,12 +71,16 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR, .doc = "image to blur"},
+    [SSG_GAUSSIAN_IN_IN] = {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+     .doc = "image to blur"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_GAUSSIAN_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR, .same_as = "in", .doc = "blurred image"},
+    [SSG_GAUSSIAN_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
+     .doc = "blurred image"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_GAUSSIAN_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_gaussian = {
     .name = "gaussian",
@@ -86,12 +91,8 @@ const struct ssg_node_desc ssg_node_gaussian = {
     .doc = "Normalised Gaussian weights exp(-i^2 / (2 sigma^2)) over a size x size window, "
            "applied as a horizontal then a vertical pass; pixels beyond the border repeat "
            "the edge pixel. Every channel alike; background pixels are not special.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_gaussian_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_gaussian_params),
     .consts_size = sizeof(struct ssg_gaussian_consts),
     .check = check,
     .prepare = prepare,

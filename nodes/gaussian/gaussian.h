@@ -6,6 +6,17 @@
 
 #include "graph/node.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_gaussian_input {
+    SSG_GAUSSIAN_IN_IN,
+    SSG_GAUSSIAN_INPUTS
+};
+enum ssg_gaussian_output {
+    SSG_GAUSSIAN_OUT_OUT,
+    SSG_GAUSSIAN_OUTPUTS
+};
+
 #define SSG_GAUSSIAN_MAX_SIZE 1023 /* widest window, px */
 
 struct ssg_gaussian_params {

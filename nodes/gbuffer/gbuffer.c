@@ -57,16 +57,25 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position, 0 = background"},
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal facing the camera"},
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "linear depth along -z, 0 = background"},
-    {.name = "albedo", .types = SSG_T_COLOR, .doc = "material albedo times texture, linear RGB"},
-    {.name = "direct", .types = SSG_T_COLOR,
-     .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
-    {.name = "environment", .types = SSG_T_COLOR,
-     .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
-            "irradiance, linear RGB"},
+    [SSG_GBUFFER_OUT_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position, 0 = background"},
+    [SSG_GBUFFER_OUT_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal facing the camera"},
+    [SSG_GBUFFER_OUT_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "linear depth along -z, 0 = background"},
+    [SSG_GBUFFER_OUT_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
+     .doc = "material albedo times texture, linear RGB"},
+    [SSG_GBUFFER_OUT_DIRECT] =
+        {.name = "direct",
+         .types = SSG_T_COLOR,
+         .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
+    [SSG_GBUFFER_OUT_ENVIRONMENT] =
+        {.name = "environment",
+         .types = SSG_T_COLOR,
+         .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
+                "irradiance, linear RGB"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_GBUFFER_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_gbuffer = {
     .name = "gbuffer",
@@ -81,10 +90,8 @@ const struct ssg_node_desc ssg_node_gbuffer = {
            "specular * (N.H)^shininess) * E, with E = color * intensity * max(0, N.L) / d^2 "
            "for point lights (no 1/d^2 for directional lights). Surfaces outside [near, "
            "far] and background pixels are 0 in every output.",
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_gbuffer_params),
+    SSG_NODE_OUTPUTS(outputs),
+    SSG_NODE_PARAMS(params, struct ssg_gbuffer_params),
     .consts_size = sizeof(struct ssg_gbuffer_consts),
     .needs_scene = 1,
     .prepare = prepare,

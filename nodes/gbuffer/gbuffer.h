@@ -7,8 +7,17 @@
 #include "graph/node.h"
 
 /* Output ports, in order. */
-enum { SSG_GBUFFER_OUT_POSITION, SSG_GBUFFER_OUT_NORMAL, SSG_GBUFFER_OUT_DEPTH,
-       SSG_GBUFFER_OUT_ALBEDO, SSG_GBUFFER_OUT_DIRECT, SSG_GBUFFER_OUT_ENVIRONMENT };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_gbuffer_output {
+    SSG_GBUFFER_OUT_POSITION,
+    SSG_GBUFFER_OUT_NORMAL,
+    SSG_GBUFFER_OUT_DEPTH,
+    SSG_GBUFFER_OUT_ALBEDO,
+    SSG_GBUFFER_OUT_DIRECT,
+    SSG_GBUFFER_OUT_ENVIRONMENT,
+    SSG_GBUFFER_OUTPUTS
+};
 
 enum ssg_gbuffer_normals {
     SSG_GBUFFER_NORMALS_SMOOTH, /* interpolated vertex normals */

@@ -126,7 +126,8 @@ static void geometry(const struct job *j, struct chunk *k)
 static void view_vectors(struct chunk *k)
 {
     for (int s = 0; s < k->count; s++) {
-        float inv = 1.0f / sqrtf(k->wx[s] * k->wx[s] + k->wy[s] * k->wy[s] + k->wz[s] * k->wz[s]);
+        float inv =
+            1.0f / sqrtf(k->wx[s] * k->wx[s] + k->wy[s] * k->wy[s] + k->wz[s] * k->wz[s]);
         k->ux[s] = -k->wx[s] * inv, k->uy[s] = -k->wy[s] * inv, k->uz[s] = -k->wz[s] * inv;
     }
 }

@@ -12,6 +12,14 @@
 
 #include "lang/params.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_halton_output {
+    SSG_HALTON_OUT_SAMPLES,
+    SSG_HALTON_OUT_ROTATION,
+    SSG_HALTON_OUTPUTS
+};
+
 #define SSG_HALTON_MAX_COUNT 1024  /* most kernel samples */
 #define SSG_HALTON_MAX_PATTERN 64  /* largest rotation tile side */
 

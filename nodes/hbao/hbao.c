@@ -131,14 +131,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, rot, dep, why, why_len);
+    enum ssg_err e = ssg_sampling_check_inputs(pos, NULL, rot, dep, &in[SSG_HBAO_IN_COUNT],
+                                               why, why_len);
     if (e)
         return e;
-    const struct ssg_shape *cnt = &in[SSG_HBAO_IN_COUNT];
-    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
-        snprintf(why, why_len, "count must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;
@@ -188,44 +184,59 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 static const char *const falloff_choices[] = {"linear", "none", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "directions", SSG_FIELD_INT(struct ssg_hbao_params, directions), .def = 8, .min = 1,
-     .max = SSG_HBAO_MAX_DIRECTIONS, .help = "azimuths per pixel (uniform about the view "
-     "vector, turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_hbao_params, steps),
-     .def = 4, .min = 1, .max = SSG_HBAO_MAX_STEPS,
-     .help = "depth samples marched along each direction"},
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, radius),
-     .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",
+    {.name = "directions", SSG_FIELD_INT(struct ssg_hbao_params, directions), .def = 8,
+     .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS,
+     .help = "azimuths per pixel (uniform about the view "
+             "vector, turned by the rotation pattern)"},
+    {.name = "steps", SSG_FIELD_INT(struct ssg_hbao_params, steps), .def = 4, .min = 1,
+     .max = SSG_HBAO_MAX_STEPS, .help = "depth samples marched along each direction"},
+    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, radius), .def = 0.5, .min = 1e-6,
+     .max = 1e6, .unit = "scene units",
      .help = "R: occluders farther than this from the pixel are ignored"},
-    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_hbao_params, bias),
-     .def = 0.1, .min = 0, .max = 1.5, .unit = "radians",
+    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_hbao_params, bias), .def = 0.1, .min = 0,
+     .max = 1.5, .unit = "radians",
      .help = "tangent-angle bias against self occlusion (0.1 rad ~ 5.7 degrees)"},
-    {.name = "strength", SSG_FIELD_FLOAT(struct ssg_hbao_params, strength), .def = 1, .min = 0, .max = 16,
-     .help = "out = 1 - strength * occlusion, clamped to [0, 1]"},
-    {.name = "falloff", SSG_FIELD_ENUM(struct ssg_hbao_params, falloff), .def = SSG_HBAO_FALLOFF_LINEAR,
-     .choices = falloff_choices,
+    {.name = "strength", SSG_FIELD_FLOAT(struct ssg_hbao_params, strength), .def = 1, .min = 0,
+     .max = 16, .help = "out = 1 - strength * occlusion, clamped to [0, 1]"},
+    {.name = "falloff", SSG_FIELD_ENUM(struct ssg_hbao_params, falloff),
+     .def = SSG_HBAO_FALLOFF_LINEAR, .choices = falloff_choices,
      .help = "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, max_screen_radius), .def = 0, .min = 0,
-     .max = 16384, .unit = "px",
+    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, max_screen_radius),
+     .def = 0, .min = 0, .max = 16384, .unit = "px",
      .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position (its -z is the depth unless depth is given)"},
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
-            "none = all"},
+    [SSG_HBAO_IN_POSITION] =
+        {.name = "position",
+         .types = SSG_T_VECTOR,
+         .doc = "view-space position (its -z is the depth unless depth is given)"},
+    [SSG_HBAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal"},
+    [SSG_HBAO_IN_ROTATION] =
+        {.name = "rotation",
+         .types = SSG_T_PATTERN,
+         .optional = 1,
+         .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
+    [SSG_HBAO_IN_DEPTH] =
+        {.name = "depth",
+         .types = SSG_T_SCALAR,
+         .optional = 1,
+         .doc = "linear depth the points are reconstructed from; none = -position.z"},
+    [SSG_HBAO_IN_COUNT] =
+        {.name = "count",
+         .types = SSG_T_SCALAR,
+         .optional = 1,
+         .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
+                "none = all"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_HBAO_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR, .doc = "visibility, 1 = unoccluded"},
+    [SSG_HBAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
+     .doc = "visibility, 1 = unoccluded"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_HBAO_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_hbao = {
     .name = "hbao",
@@ -245,12 +256,8 @@ const struct ssg_node_desc ssg_node_hbao = {
            "first round(count) directions (clamped to [1, directions]) in an order whose "
            "prefixes spread round the circle (for 8: 0, 180, 90, 270, 45, ... degrees) and "
            "averages over those.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_hbao_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_hbao_params),
     .consts_size = sizeof(struct ssg_hbao_consts),
     .check = check,
     .prepare = prepare,

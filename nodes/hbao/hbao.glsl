@@ -7,16 +7,13 @@
 // sample fail through +inf or NaN (off screen, background, rejected by place_step) or
 // masks a direction past the pixel's count, this skips it: the CPU adds exactly 0 there.
 layout(std430, binding = 0) readonly buffer Columns {
-    float e1[]; // per column x: e1x at x, e1z at width + x (hbao_pattern.c's tables)
+    float e1[]; // per column x: e1x at x, e1z at width + x (prepare()'s, hbao.c)
 };
 
-uniform sampler2DArray position; // only its z, when depth is unbound
+#define SSG_SAMPLING_NO_KERNEL 1 // hbao marches along directions, it has no kernel
+#include "sampling.glsl" // position, depth, rotation and their helpers
 uniform sampler2DArray normal;
-uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin)
-uniform sampler2DArray depth;
 uniform sampler2DArray count;
-uniform bool rotation_bound;
-uniform bool depth_bound;
 uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst;
 
@@ -48,7 +45,7 @@ vec3 g_e2;
 // plane holds +inf (background, negative, NaN or infinite depth).
 float occluder_depth(ivec2 q)
 {
-    float d = depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
+    float d = ssg_scene_depth(q);
     return d > 0.0 && d <= 3.0e38 ? d : -1.0;
 }
 
@@ -223,16 +220,12 @@ void main()
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
-    g_dp = depth_bound ? ssg_load1(depth, p) : -texelFetch(position, ivec3(p, 2), 0).r;
+    g_dp = ssg_scene_depth(p);
     vec3 N = ssg_load3(normal, p);
-    precise float nn = N.x * N.x + N.y * N.y + N.z * N.z;
-    // Background (depth 0 or no normal) or garbage: 1.
-    if (!(g_dp > 0.0 && g_dp <= 3.0e38 && nn > 1e-12)) {
+    if (!ssg_surface_normal(g_dp, N)) { // background or garbage: 1
         SSG_STORE1(dst, p, 1.0);
         return;
     }
-    if (abs(nn - 1.0) > 1e-5)
-        N *= 1.0 / sqrt(nn);
     load_pattern(p);
     setup_pixel(p, N);
     int n = ssg_pixel_count(count, count_bound, p, directions);

@@ -12,8 +12,20 @@
 #define SSG_HBAO_MAX_STEPS 64
 
 /* Input ports, in order. */
-enum { SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL, SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH,
-       SSG_HBAO_IN_COUNT };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_hbao_input {
+    SSG_HBAO_IN_POSITION,
+    SSG_HBAO_IN_NORMAL,
+    SSG_HBAO_IN_ROTATION,
+    SSG_HBAO_IN_DEPTH,
+    SSG_HBAO_IN_COUNT,
+    SSG_HBAO_INPUTS
+};
+enum ssg_hbao_output {
+    SSG_HBAO_OUT_OUT,
+    SSG_HBAO_OUTPUTS
+};
 
 enum ssg_hbao_falloff {
     SSG_HBAO_FALLOFF_LINEAR, /* W = max(0, 1 - r / R) (Belonogov eq. 3.2) */

@@ -37,19 +37,14 @@
  * pixel depends only on the inputs and every per-pixel sum runs in a fixed order, so
  * the output does not depend on the thread count nor on the instruction set (the clones
  * perform the same IEEE operations lane by lane: no FMA, no reassociation). */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/sampling.h"
 #include "hbao_cpu.h"
-
-/* The kernel never unmasks floating-point exceptions, so float operations cannot trap.
-   Telling GCC so lets it vectorise loops whose comparisons and selects it would
-   otherwise turn into branches; no result changes (no reassociation, no contraction). */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
 
 enum { CHUNK = 128, ROWS_PER_BAND = 32 };
 
@@ -169,11 +164,8 @@ static inline __attribute__((always_inline)) int load_chunk(const struct job *j,
         not_unit |= fabsf(nn - 1.0f) > 1e-5f;
         m++;
     }
-    for (int i = 0; not_unit && i < m; i++) {
-        float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
-        float inv = 1.0f / sqrtf(nn);
-        k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
-    }
+    if (not_unit)
+        ssg_sampling_normalize(m, k->nx, k->ny, k->nz);
     return m;
 }
 
@@ -417,14 +409,9 @@ static int load_counts(const struct job *j, struct chunk *restrict k, int y, int
 {
     const float *c = j->cnt + (size_t)y * (size_t)j->w + (size_t)x0;
     const int nd = j->c->p.directions;
-    const float fmax = (float)nd;
     int most = 1;
     for (int i = 0; i < m; i++) {
-        float v = c[k->xs[i]];
-        v = v < 1.0f ? 1.0f : v;
-        v = v <= fmax ? v : fmax; /* NaN fails both compares above: all */
-        int n = (int)(v + 0.5f);
-        n = n < nd ? n : nd;
+        int n = ssg_sampling_count(c[k->xs[i]], nd);
         k->cnt[i] = n;
         most = n > most ? n : most;
     }

@@ -4,17 +4,12 @@
  * random rotation of the directions and jitter of the steps, from a tiled n x n texture)
  * unrolled to full rows, the per-column basis vector e1, and the depth plane padded by
  * one pixel of +inf. Method and geometry are in hbao.c; the job is in hbao_cpu.h. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 
 #include "hbao_cpu.h"
-
-/* As in hbao_cpu.c: no float operation here traps, and no result changes (no
-   reassociation, no contraction); it only lets GCC vectorise the selects of ssg_hbao_rows_pad. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
 
 /* The pattern unrolled to n full rows (see struct job; without a pattern one row of
    cos 1, sin 0, u 1). Returns the one allocation holding them, or NULL. */

@@ -78,17 +78,18 @@ static const struct ssg_param_desc params[] = {
     {.name = "count", SSG_FIELD_INT(struct ssg_lightprobe_params, count), .def = 128,
      .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX, .unit = "lights",
      .help = "directional lights N (the paper: 128 and 512, 2048 for its reference)"},
-    {.name = "sampling", SSG_FIELD_ENUM(struct ssg_lightprobe_params, sampling), .def = SSG_LIGHTPROBE_UNIFORM,
-     .choices = sampling_choices,
+    {.name = "sampling", SSG_FIELD_ENUM(struct ssg_lightprobe_params, sampling),
+     .def = SSG_LIGHTPROBE_UNIFORM, .choices = sampling_choices,
      .help = "uniform: equal-area Fibonacci set (the paper); importance: denser where the "
              "probe is bright"},
 };
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "lights", .types = SSG_T_LIGHTS,
+    [SSG_LIGHTPROBE_OUT_LIGHTS] = {.name = "lights", .types = SSG_T_LIGHTS,
      .doc = "N x 2: row 0 the unit world direction towards each light, row 1 its RGB "
             "irradiance; the irradiances add up to the probe's integral"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_LIGHTPROBE_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_lightprobe = {
     .name = "lightprobe",
@@ -105,10 +106,8 @@ const struct ssg_node_desc ssg_node_lightprobe = {
            "exactly the probe's energy. Made once before the run (0.1 s for a 1024 x 512 "
            "probe and 512 lights); feeds shadowmaps and probe_light. A scene without an "
            "environment light is an error.",
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_lightprobe_params),
+    SSG_NODE_OUTPUTS(outputs),
+    SSG_NODE_PARAMS(params, struct ssg_lightprobe_params),
     .consts_size = sizeof(struct ssg_lightprobe_consts),
     .needs_scene = 1,
     .check = check,

@@ -12,6 +12,13 @@
 #include "graph/node.h"
 #include "common/shadowmap.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_lightprobe_output {
+    SSG_LIGHTPROBE_OUT_LIGHTS,
+    SSG_LIGHTPROBE_OUTPUTS
+};
+
 enum ssg_lightprobe_sampling {
     SSG_LIGHTPROBE_UNIFORM,    /* a spherical Fibonacci set: near-equal areas 4 pi / N */
     SSG_LIGHTPROBE_IMPORTANCE, /* Hammersley points through the probe's luminance CDF */

@@ -9,20 +9,22 @@
 #include "mosaic.h"
 
 static const struct ssg_param_desc params[] = {
-    {.name = "columns", SSG_FIELD_INT(struct ssg_mosaic_params, columns),
-     .def = 0, .min = 0, .max = 16, .help = "cells a row; 0 = about square"},
-    {.name = "labels", SSG_FIELD_BOOL(struct ssg_mosaic_params, labels),
-     .def = 1, .help = "write each image's name in its cell (needs the DejaVu Sans font)"},
-    {.name = "gap", SSG_FIELD_INT(struct ssg_mosaic_params, gap),
-     .def = 4, .min = 0, .max = 256, .unit = "px", .help = "black space between cells"},
-    {.name = "font_size", SSG_FIELD_INT(struct ssg_mosaic_params, font_size), .def = 0, .min = 0, .max = 512,
-     .unit = "px", .help = "label height; 0 = a sixteenth of a cell, at least 10"},
+    {.name = "columns", SSG_FIELD_INT(struct ssg_mosaic_params, columns), .def = 0, .min = 0,
+     .max = 16, .help = "cells a row; 0 = about square"},
+    {.name = "labels", SSG_FIELD_BOOL(struct ssg_mosaic_params, labels), .def = 1,
+     .help = "write each image's name in its cell (needs the DejaVu Sans font)"},
+    {.name = "gap", SSG_FIELD_INT(struct ssg_mosaic_params, gap), .def = 4, .min = 0,
+     .max = 256, .unit = "px", .help = "black space between cells"},
+    {.name = "font_size", SSG_FIELD_INT(struct ssg_mosaic_params, font_size), .def = 0,
+     .min = 0, .max = 512, .unit = "px",
+     .help = "label height; 0 = a sixteenth of a cell, at least 10"},
 };
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_COLOR,
+    [SSG_MOSAIC_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR,
      .doc = "the contact sheet, frame sized, linear RGB (write it to see it)"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_MOSAIC_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_mosaic = {
     .name = "mosaic",
@@ -34,10 +36,8 @@ const struct ssg_node_desc ssg_node_mosaic = {
            "and its name written in the top-left corner. Scalars (AO, depth) show as grey, "
            "vectors as 0.5 + 0.5 v, colours unchanged. Example: sheet = mosaic(ssao=ao.out, "
            "hbao=h.out, truth=ref.out), then write(sheet.out, \"sheet\").",
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
+    SSG_NODE_OUTPUTS(outputs),
     .extra_inputs = 1,
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_mosaic_params),
+    SSG_NODE_PARAMS(params, struct ssg_mosaic_params),
     .run_cpu = ssg_mosaic_run_cpu,
 };

@@ -4,6 +4,13 @@
 
 #include "graph/node.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_mosaic_output {
+    SSG_MOSAIC_OUT_OUT,
+    SSG_MOSAIC_OUTPUTS
+};
+
 struct ssg_mosaic_params {
     int columns;   /* 0 = about square: ceil(sqrt(images)) */
     int labels;    /* 1 = each cell's name written in its corner */

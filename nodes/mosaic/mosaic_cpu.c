@@ -46,7 +46,8 @@ static void paint(struct ssg_image *out, const struct ssg_image *im, unsigned ty
 static struct cell place(const struct ssg_image *out, const struct ssg_image *im, int i,
                          int cols, int rows, int gap)
 {
-    int cw = (out->width - gap * (cols - 1)) / cols, ch = (out->height - gap * (rows - 1)) / rows;
+    int cw = (out->width - gap * (cols - 1)) / cols,
+        ch = (out->height - gap * (rows - 1)) / rows;
     double scale = fmin((double)cw / im->width, (double)ch / im->height);
     struct cell k = {0, 0, (int)(im->width * scale), (int)(im->height * scale)};
     k.w = k.w < 1 ? 1 : k.w, k.h = k.h < 1 ? 1 : k.h;

@@ -35,8 +35,8 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 {
     (void)params;
     (void)frame;
-    const struct ssg_shape *lights = &in[SSG_PROBE_LIGHT_LIGHTS];
-    const struct ssg_shape *maps = &in[SSG_PROBE_LIGHT_SHADOWMAPS];
+    const struct ssg_shape *lights = &in[SSG_PROBE_LIGHT_IN_LIGHTS];
+    const struct ssg_shape *maps = &in[SSG_PROBE_LIGHT_IN_SHADOWMAPS];
     if (lights->width > SSG_LIGHTS_MAX) {
         snprintf(why, why_len, "lights has %d lights, at most %d", lights->width,
                  SSG_LIGHTS_MAX);
@@ -48,13 +48,15 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  lights->width);
         return SSG_E_CHANNELS;
     }
-    if (!ssg_shape_same_size(&in[SSG_PROBE_LIGHT_POSITION], &in[SSG_PROBE_LIGHT_NORMAL]) ||
-        !ssg_shape_same_size(&in[SSG_PROBE_LIGHT_POSITION], &in[SSG_PROBE_LIGHT_ALBEDO])) {
+    if (!ssg_shape_same_size(&in[SSG_PROBE_LIGHT_IN_POSITION],
+                             &in[SSG_PROBE_LIGHT_IN_NORMAL]) ||
+        !ssg_shape_same_size(&in[SSG_PROBE_LIGHT_IN_POSITION],
+                             &in[SSG_PROBE_LIGHT_IN_ALBEDO])) {
         snprintf(why, why_len, "position, normal and albedo must have one size");
         return SSG_E_SIZE;
     }
-    out[0].width = out[1].width = in[SSG_PROBE_LIGHT_POSITION].width;
-    out[0].height = out[1].height = in[SSG_PROBE_LIGHT_POSITION].height;
+    out[0].width = out[1].width = in[SSG_PROBE_LIGHT_IN_POSITION].width;
+    out[0].height = out[1].height = in[SSG_PROBE_LIGHT_IN_POSITION].height;
     return SSG_OK;
 }
 
@@ -85,8 +87,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     c->sphere = ssg_scene_bounding_sphere(ctx->scene);
     make_noise(p->noise_tile, ctx->frame ? ctx->frame->seed : 1, c->noise);
-    const struct ssg_shape *maps = &ctx->in_shape[SSG_PROBE_LIGHT_SHADOWMAPS];
-    c->count = ctx->in_shape[SSG_PROBE_LIGHT_LIGHTS].width;
+    const struct ssg_shape *maps = &ctx->in_shape[SSG_PROBE_LIGHT_IN_SHADOWMAPS];
+    c->count = ctx->in_shape[SSG_PROBE_LIGHT_IN_LIGHTS].width;
     c->res = maps->channels ? maps->width : 0;
     float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
     c->offset_world = c->p.offset * texel;
@@ -133,44 +135,46 @@ void ssg_probe_light_rotations(int count, float *cos_sin)
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, offset), .def = 1.5, .min = 0,
-     .max = 1000, .unit = "texels",
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, offset), .def = 1.5,
+     .min = 0, .max = 1000, .unit = "texels",
      .help = "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "
              "self-shadowing, lets light through thin occluders"},
-    {.name = "slope_offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, slope_offset), .def = 2, .min = 0,
-     .max = 1000, .unit = "texels",
+    {.name = "slope_offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, slope_offset),
+     .def = 2, .min = 0, .max = 1000, .unit = "texels",
      .help = "more offset where the light grazes the surface: + slope_offset x tan(N, l) "
-             "texels (tan up to 10), against self-shadowing of surfaces seen edge-on by a light"},
-    {.name = "noise_radius", SSG_FIELD_FLOAT(struct ssg_probe_light_params, noise_radius), .def = 1, .min = 0,
-     .max = 64, .unit = "texels",
+             "texels (tan up to 10), against self-shadowing of surfaces seen edge-on by a "
+             "light"},
+    {.name = "noise_radius", SSG_FIELD_FLOAT(struct ssg_probe_light_params, noise_radius),
+     .def = 1, .min = 0, .max = 64, .unit = "texels",
      .help = "jitter of the map lookup (fig. 8): smoother shadows, needs a larger offset; "
              "0 = none"},
-    {.name = "noise_tile", SSG_FIELD_INT(struct ssg_probe_light_params, noise_tile), .def = 4, .min = 1,
-     .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px", .help = "side of the tiled jitter pattern"},
+    {.name = "noise_tile", SSG_FIELD_INT(struct ssg_probe_light_params, noise_tile), .def = 4,
+     .min = 1, .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px",
+     .help = "side of the tiled jitter pattern"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    [SSG_PROBE_LIGHT_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+    [SSG_PROBE_LIGHT_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
                                   .doc = "view-space position (gbuffer)"},
-    [SSG_PROBE_LIGHT_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+    [SSG_PROBE_LIGHT_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
                                 .doc = "unit view-space normal, 0 = background (gbuffer)"},
-    [SSG_PROBE_LIGHT_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
+    [SSG_PROBE_LIGHT_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
                                 .doc = "diffuse albedo, linear RGB (gbuffer)"},
-    [SSG_PROBE_LIGHT_LIGHTS] = {.name = "lights", .types = SSG_T_LIGHTS,
+    [SSG_PROBE_LIGHT_IN_LIGHTS] = {.name = "lights", .types = SSG_T_LIGHTS,
                                 .doc = "light list (lightprobe)"},
-    [SSG_PROBE_LIGHT_SHADOWMAPS] = {.name = "shadowmaps", .types = SSG_T_SHADOWMAPS,
-                                    .optional = 1,
-                                    .doc = "one map per light (shadowmaps); unconnected: no "
-                                           "shadows"},
+    [SSG_PROBE_LIGHT_IN_SHADOWMAPS] = {.name = "shadowmaps", .types = SSG_T_SHADOWMAPS,
+     .optional = 1, .doc = "one map per light (shadowmaps); unconnected: no shadows"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_PROBE_LIGHT_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_COLOR,
+    [SSG_PROBE_LIGHT_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR,
      .doc = "albedo / pi * sum of shadowed Lambert light, linear RGB (like "
             "gbuffer.environment, with self-shadowing)"},
-    {.name = "visibility", .types = SSG_T_SCALAR,
+    [SSG_PROBE_LIGHT_OUT_VISIBILITY] = {.name = "visibility", .types = SSG_T_SCALAR,
      .doc = "the lit fraction of the pixel's light (luminance-weighted), comparable with AO"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_PROBE_LIGHT_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_probe_light = {
     .name = "probe_light",
@@ -188,12 +192,8 @@ const struct ssg_node_desc ssg_node_probe_light = {
            "occluders (fig. 1, 7), which the local part (ssao mode=sphere) darkens again; "
            "`visibility` is the lit share of the pixel's light. Without shadow maps it is "
            "the unshadowed lighting of the same lights.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_probe_light_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_probe_light_params),
     .consts_size = sizeof(struct ssg_probe_light_consts),
     .needs_scene = 1,
     .check = check,

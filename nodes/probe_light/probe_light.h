@@ -11,12 +11,20 @@ enum { SSG_PROBE_LIGHT_MAX_TILE = 16 };
 /* The largest tan(angle of N to l) the slope offset grows to (84 degrees). */
 #define SSG_PROBE_LIGHT_MAX_SLOPE 10.0f
 
-enum ssg_probe_light_port {
-    SSG_PROBE_LIGHT_POSITION,
-    SSG_PROBE_LIGHT_NORMAL,
-    SSG_PROBE_LIGHT_ALBEDO,
-    SSG_PROBE_LIGHT_LIGHTS,
-    SSG_PROBE_LIGHT_SHADOWMAPS,
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_probe_light_input {
+    SSG_PROBE_LIGHT_IN_POSITION,
+    SSG_PROBE_LIGHT_IN_NORMAL,
+    SSG_PROBE_LIGHT_IN_ALBEDO,
+    SSG_PROBE_LIGHT_IN_LIGHTS,
+    SSG_PROBE_LIGHT_IN_SHADOWMAPS,
+    SSG_PROBE_LIGHT_INPUTS
+};
+enum ssg_probe_light_output {
+    SSG_PROBE_LIGHT_OUT_OUT,
+    SSG_PROBE_LIGHT_OUT_VISIBILITY,
+    SSG_PROBE_LIGHT_OUTPUTS
 };
 
 struct ssg_probe_light_params {

@@ -32,8 +32,8 @@ static float luminance(float r, float g, float b)
 
 static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *k)
 {
-    const struct ssg_image *pos = j->io->in[SSG_PROBE_LIGHT_POSITION];
-    const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_NORMAL];
+    const struct ssg_image *pos = j->io->in[SSG_PROBE_LIGHT_IN_POSITION];
+    const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_IN_NORMAL];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
     int tile = j->c->p.noise_tile, row = (y % tile) * tile, cells = tile * tile;
     for (int i = 0; i < len; i++) {
@@ -53,10 +53,11 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
 static void add_light(const struct job *j, int li, int len, struct chunk *k)
 {
     const float *f = j->frames + (size_t)li * SSG_PROBE_LIGHT_FRAME;
-    const struct ssg_image *lights = j->io->in[SSG_PROBE_LIGHT_LIGHTS];
-    const struct ssg_image *maps = j->io->in[SSG_PROBE_LIGHT_SHADOWMAPS];
+    const struct ssg_image *lights = j->io->in[SSG_PROBE_LIGHT_IN_LIGHTS];
+    const struct ssg_image *maps = j->io->in[SSG_PROBE_LIGHT_IN_SHADOWMAPS];
     int n = j->count, res = j->res;
-    float er = lights->data[n + li], eg = lights->data[3 * n + li], eb = lights->data[5 * n + li];
+    float er = lights->data[n + li], eg = lights->data[3 * n + li],
+          eb = lights->data[5 * n + li];
     float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
     const float *map = maps ? ssg_image_plane(maps, li) : NULL;
     /* A light behind every pixel of the chunk adds exact zeros: skip it (half the lights
@@ -93,7 +94,7 @@ static void add_light(const struct job *j, int li, int len, struct chunk *k)
 
 static void store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *k)
 {
-    const struct ssg_image *alb = j->io->in[SSG_PROBE_LIGHT_ALBEDO];
+    const struct ssg_image *alb = j->io->in[SSG_PROBE_LIGHT_IN_ALBEDO];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
     float *out = j->io->out[0]->data, *vis = j->io->out[1]->data;
     for (int i = 0; i < len; i++) {
@@ -127,12 +128,12 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     float *frames = malloc(sizeof(float) * SSG_PROBE_LIGHT_FRAME * (size_t)count);
     if (!frames)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
-    const float *l = io->in[SSG_PROBE_LIGHT_LIGHTS]->data;
+    const float *l = io->in[SSG_PROBE_LIGHT_IN_LIGHTS]->data;
     for (int i = 0; i < count; i++) {
         float dir[3] = {l[i], l[2 * count + i], l[4 * count + i]};
         ssg_probe_light_frame(c, dir, res ? res : 1, frames + SSG_PROBE_LIGHT_FRAME * i);
     }
-    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
+    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
                     c->offset_world, c->slope_world};
     ssg_parallel_rows(pos->height, 4, rows, &j);

@@ -27,14 +27,14 @@ static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_li
                        const struct ssg_io *io, const struct ssg_image *frames,
                        const float *cos_sin, int count, int res, struct ssg_gl_pass *p)
 {
-    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_POSITION];
+    const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     int tile = c->p.noise_tile;
     ssg_gl_pass_begin(p, ctx, "probe_light.glsl", NULL);
     ssg_gl_input(p, "position", pos);
-    ssg_gl_input(p, "normal", io->in[SSG_PROBE_LIGHT_NORMAL]);
-    ssg_gl_input(p, "albedo", io->in[SSG_PROBE_LIGHT_ALBEDO]);
-    ssg_gl_input(p, "lights", io->in[SSG_PROBE_LIGHT_LIGHTS]);
-    ssg_gl_input(p, "maps", io->in[SSG_PROBE_LIGHT_SHADOWMAPS]);
+    ssg_gl_input(p, "normal", io->in[SSG_PROBE_LIGHT_IN_NORMAL]);
+    ssg_gl_input(p, "albedo", io->in[SSG_PROBE_LIGHT_IN_ALBEDO]);
+    ssg_gl_input(p, "lights", io->in[SSG_PROBE_LIGHT_IN_LIGHTS]);
+    ssg_gl_input(p, "maps", io->in[SSG_PROBE_LIGHT_IN_SHADOWMAPS]);
     ssg_gl_input(p, "frames", frames);
     ssg_gl_output(p, "dst", io->out[0]);
     ssg_gl_output(p, "dst_visibility", io->out[1]);
@@ -59,7 +59,7 @@ enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     enum ssg_err e;
     struct ssg_gl_pass p;
-    frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_LIGHTS], res ? res : 1, frames, &p);
+    frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_IN_LIGHTS], res ? res : 1, frames, &p);
     if (!(e = ssg_gl_pass_end(&p))) {
         light_pass(ctx, c, io, frames, c->cos_sin, count, res, &p);
         e = ssg_gl_pass_end(&p);

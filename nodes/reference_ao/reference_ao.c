@@ -85,30 +85,35 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "rays", SSG_FIELD_INT(struct ssg_reference_ao_params, rays),
-     .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS,
+    {.name = "rays", SSG_FIELD_INT(struct ssg_reference_ao_params, rays), .def = 256, .min = 1,
+     .max = SSG_REFERENCE_AO_MAX_RAYS,
      .help = "cosine-weighted rays per pixel; the standard error is sqrt(V (1 - V) / rays) "
              "or less (stratified)"},
-    {.name = "max_distance", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, max_distance), .def = 0.5,
-     .min = 1e-6, .max = 1e30, .unit = "scene units",
+    {.name = "max_distance", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, max_distance),
+     .def = 0.5, .min = 1e-6, .max = 1e30, .unit = "scene units",
      .help = "occluders farther along a ray do not count (the meaning of ssao's radius)"},
-    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, offset), .def = 1e-3, .min = 0,
-     .max = 1e6, .unit = "scene units",
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_ao_params, offset), .def = 1e-3,
+     .min = 0, .max = 1e6, .unit = "scene units",
      .help = "ray origins move this far along the normal and this far towards the camera, "
              "against self-intersection (at least 1024 float ulps of the point's "
              "coordinates)"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position (gbuffer)"},
-    {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
+    [SSG_REFERENCE_AO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position (gbuffer)"},
+    [SSG_REFERENCE_AO_IN_NORMAL] =
+        {.name = "normal",
+         .types = SSG_T_VECTOR,
+         .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_REFERENCE_AO_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR,
+    [SSG_REFERENCE_AO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
      .doc = "visibility, 1 = unoccluded (cosine-weighted, distance-limited)"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_REFERENCE_AO_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_reference_ao = {
     .name = "reference_ao",
@@ -120,19 +125,16 @@ const struct ssg_node_desc ssg_node_reference_ao = {
     .doc = "Per pixel, `rays` cosine-weighted directions over the normal's hemisphere (a "
            "Hammersley set mapped by Malley's method, shifted per pixel by a hash of x, y "
            "and the seed) are traced from the world-space point moved by `offset` along "
-           "the normal and towards the camera; a ray is occluded when any surface lies within `max_distance` on "
+           "the normal and towards the camera; a ray is occluded when any surface lies within "
+           "`max_distance` on "
            "it, or when it leaves below the plane of the hit triangle itself (its face normal "
            "is the horizon, the shading normal only weights). out = 1 - occluded / rays: "
            "1 = unoccluded, comparable with ssao and hbao "
            "at radius = max_distance. Deterministic for a seed, whatever the threads. "
            "Background pixels (normal 0) are 1. Shows a progress bar when stderr is a "
            "terminal.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_reference_ao_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_reference_ao_params),
     .consts_size = sizeof(struct ssg_reference_ao_consts),
     .needs_scene = 1,
     .check = check,

@@ -9,7 +9,17 @@
 #include "graph/node.h"
 
 /* Input ports, in order. */
-enum { SSG_REFERENCE_AO_IN_POSITION, SSG_REFERENCE_AO_IN_NORMAL };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_reference_ao_input {
+    SSG_REFERENCE_AO_IN_POSITION,
+    SSG_REFERENCE_AO_IN_NORMAL,
+    SSG_REFERENCE_AO_INPUTS
+};
+enum ssg_reference_ao_output {
+    SSG_REFERENCE_AO_OUT_OUT,
+    SSG_REFERENCE_AO_OUTPUTS
+};
 
 /* Largest `rays`: the sample table of the constants holds this many directions. */
 #define SSG_REFERENCE_AO_MAX_RAYS 65536

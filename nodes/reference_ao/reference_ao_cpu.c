@@ -115,7 +115,11 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
     const struct ssg_image *pos = io->in[SSG_REFERENCE_AO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_REFERENCE_AO_IN_NORMAL];
     struct ssg_image *out = io->out[0];
-    struct job j = {.c = consts, .rt = ctx->scene->rt, .scene = ctx->scene, .out = out->data, .w = pos->width,
+    struct job j = {.c = consts,
+                    .rt = ctx->scene->rt,
+                    .scene = ctx->scene,
+                    .out = out->data,
+                    .w = pos->width,
                     .h = pos->height};
     for (int i = 0; i < 3; i++) {
         j.pos[i] = ssg_image_plane(pos, i);

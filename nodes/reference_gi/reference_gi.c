@@ -114,36 +114,49 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "samples", SSG_FIELD_INT(struct ssg_reference_gi_params, samples), .def = 64, .min = 1,
-     .max = SSG_REFERENCE_GI_MAX_SAMPLES,
+    {.name = "samples", SSG_FIELD_INT(struct ssg_reference_gi_params, samples), .def = 64,
+     .min = 1, .max = SSG_REFERENCE_GI_MAX_SAMPLES,
      .help = "environment samples (direct term) and bounce paths per pixel; the noise falls "
              "as 1 / sqrt(samples) or faster (stratified)"},
     {.name = "bounce", SSG_FIELD_BOOL(struct ssg_reference_gi_params, bounce), .def = 1,
      .help = "trace one diffuse bounce; false: the bounce output is 0 and no bounce rays "
              "are cast"},
-    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_gi_params, offset), .def = 1e-3, .min = 0,
-     .max = 1e6, .unit = "scene units",
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_reference_gi_params, offset), .def = 1e-3,
+     .min = 0, .max = 1e6, .unit = "scene units",
      .help = "ray origins move this far along the normal and this far back along the "
              "arriving ray, against self-intersection (at least 1024 float ulps of the "
              "point's coordinates)"},
-    {.name = "environment", SSG_FIELD_BOOL(struct ssg_reference_gi_params, environment), .def = 1,
+    {.name = "environment", SSG_FIELD_BOOL(struct ssg_reference_gi_params, environment),
+     .def = 1,
      .help = "include the scene's environment light (directly and at the bounce's end)"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position (gbuffer)"},
-    {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
-    {.name = "albedo", .types = SSG_T_COLOR, .doc = "diffuse albedo, linear RGB (gbuffer)"},
+    [SSG_REFERENCE_GI_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position (gbuffer)"},
+    [SSG_REFERENCE_GI_IN_NORMAL] =
+        {.name = "normal",
+         .types = SSG_T_VECTOR,
+         .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
+    [SSG_REFERENCE_GI_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
+     .doc = "diffuse albedo, linear RGB (gbuffer)"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_REFERENCE_GI_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "direct", .types = SSG_T_COLOR,
-     .doc = "diffuse light of the lights and the environment with true shadows, linear RGB"},
-    {.name = "bounce", .types = SSG_T_COLOR,
-     .doc = "one diffuse bounce of that light off the scene's surfaces, linear RGB"},
-    {.name = "out", .types = SSG_T_COLOR, .doc = "direct + bounce"},
+    [SSG_REFERENCE_GI_OUT_DIRECT] =
+        {.name = "direct",
+         .types = SSG_T_COLOR,
+         .doc =
+             "diffuse light of the lights and the environment with true shadows, linear RGB"},
+    [SSG_REFERENCE_GI_OUT_BOUNCE] =
+        {.name = "bounce",
+         .types = SSG_T_COLOR,
+         .doc = "one diffuse bounce of that light off the scene's surfaces, linear RGB"},
+    [SSG_REFERENCE_GI_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR,
+     .doc = "direct + bounce"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_REFERENCE_GI_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_reference_gi = {
     .name = "reference_gi",
@@ -163,12 +176,8 @@ const struct ssg_node_desc ssg_node_reference_gi = {
            "nodes by `compare`. Deterministic for a seed, whatever the threads. "
            "Background pixels (normal 0) are 0. Shows a progress bar when stderr is a "
            "terminal.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_reference_gi_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_reference_gi_params),
     .consts_size = sizeof(struct ssg_reference_gi_consts),
     .needs_scene = 1,
     .check = check,

@@ -9,8 +9,20 @@
 #include "graph/node.h"
 
 /* Ports, in order. */
-enum { SSG_REFERENCE_GI_IN_POSITION, SSG_REFERENCE_GI_IN_NORMAL, SSG_REFERENCE_GI_IN_ALBEDO };
-enum { SSG_REFERENCE_GI_OUT_DIRECT, SSG_REFERENCE_GI_OUT_BOUNCE, SSG_REFERENCE_GI_OUT_OUT };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_reference_gi_input {
+    SSG_REFERENCE_GI_IN_POSITION,
+    SSG_REFERENCE_GI_IN_NORMAL,
+    SSG_REFERENCE_GI_IN_ALBEDO,
+    SSG_REFERENCE_GI_INPUTS
+};
+enum ssg_reference_gi_output {
+    SSG_REFERENCE_GI_OUT_DIRECT,
+    SSG_REFERENCE_GI_OUT_BOUNCE,
+    SSG_REFERENCE_GI_OUT_OUT,
+    SSG_REFERENCE_GI_OUTPUTS
+};
 
 /* Largest `samples`: the sample tables of the constants hold this many points. */
 #define SSG_REFERENCE_GI_MAX_SAMPLES 65536

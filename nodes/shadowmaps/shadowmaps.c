@@ -49,13 +49,16 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "lights", .types = SSG_T_LIGHTS, .doc = "light list (lightprobe)"},
+    [SSG_SHADOWMAPS_IN_LIGHTS] = {.name = "lights", .types = SSG_T_LIGHTS,
+     .doc = "light list (lightprobe)"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_SHADOWMAPS_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "maps", .types = SSG_T_SHADOWMAPS,
+    [SSG_SHADOWMAPS_OUT_MAPS] = {.name = "maps", .types = SSG_T_SHADOWMAPS,
      .doc = "R x R, channel i the depth map of light i (nodes/common/shadowmap.h)"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_SHADOWMAPS_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_shadowmaps = {
     .name = "shadowmaps",
@@ -69,12 +72,8 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
            "faces of every triangle cast shadows). Memory is lights x resolution^2 floats "
            "(128 maps of 512^2: 128 MiB; at most 2 GiB). CPU: one Embree ray per texel; GL: "
            "a depth-tested raster of the scene into each layer of a texture array.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_shadowmaps_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_shadowmaps_params),
     .needs_scene = 1,
     .check = check,
     .run_cpu = ssg_shadowmaps_run_cpu,

@@ -6,6 +6,17 @@
 #include "graph/node.h"
 #include "common/shadowmap.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_shadowmaps_input {
+    SSG_SHADOWMAPS_IN_LIGHTS,
+    SSG_SHADOWMAPS_INPUTS
+};
+enum ssg_shadowmaps_output {
+    SSG_SHADOWMAPS_OUT_MAPS,
+    SSG_SHADOWMAPS_OUTPUTS
+};
+
 struct ssg_shadowmaps_params {
     int resolution; /* map side R in texels; default 256 */
 };

@@ -86,19 +86,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    if (ker->channels != 3 || ker->height != 1 || ker->width < 1) {
-        snprintf(why, why_len, "kernel must be count x 1 with 3 channels, got %dx%dx%d",
-                 ker->width, ker->height, ker->channels);
-        return SSG_E_CHANNELS;
-    }
-    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, rot, dep, why, why_len);
+    enum ssg_err e = ssg_sampling_check_inputs(pos, ker, rot, dep, &in[SSG_SSAO_IN_COUNT],
+                                               why, why_len);
     if (e)
         return e;
-    const struct ssg_shape *cnt = &in[SSG_SSAO_IN_COUNT];
-    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
-        snprintf(why, why_len, "count must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     return SSG_OK;
@@ -117,19 +108,19 @@ static const char *const range_choices[] = {"none", "hard", "smooth", NULL};
 static const char *const mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
 
 static const struct ssg_param_desc params[] = {
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, radius),
-     .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units",
-     .help = "hemisphere radius around the pixel"},
-    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_ssao_params, bias),
-     .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units",
+    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, radius), .def = 0.5, .min = 1e-6,
+     .max = 1e6, .unit = "scene units", .help = "hemisphere radius around the pixel"},
+    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_ssao_params, bias), .def = 0.02, .min = 0,
+     .max = 1e6, .unit = "scene units",
      .help = "a sample is occluded only when the surface is this much in front of it"},
-    {.name = "power", SSG_FIELD_FLOAT(struct ssg_ssao_params, power),
-     .def = 1, .min = 0, .max = 64, .help = "intensity: out = visibility^power"},
-    {.name = "range_check", SSG_FIELD_ENUM(struct ssg_ssao_params, range_check), .def = SSG_SSAO_RANGE_SMOOTH,
-     .choices = range_choices,
+    {.name = "power", SSG_FIELD_FLOAT(struct ssg_ssao_params, power), .def = 1, .min = 0,
+     .max = 64, .help = "intensity: out = visibility^power"},
+    {.name = "range_check", SSG_FIELD_ENUM(struct ssg_ssao_params, range_check),
+     .def = SSG_SSAO_RANGE_SMOOTH, .choices = range_choices,
      .help = "how occluders far in depth from the pixel are discounted"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, max_screen_radius), .def = 0, .min = 0,
-     .max = 16384, .unit = "px", .help = "caps the projected radius; 0 = no cap"},
+    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, max_screen_radius),
+     .def = 0, .min = 0, .max = 16384, .unit = "px",
+     .help = "caps the projected radius; 0 = no cap"},
     {.name = "mode", SSG_FIELD_ENUM(struct ssg_ssao_params, mode),
      .def = SSG_SSAO_MODE_HEMISPHERE, .choices = mode_choices,
      .help = "hemisphere about the normal; sphere (normal-free, Knuth and Kohlhammer); "
@@ -137,22 +128,36 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},
-    {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
-     .doc = "unit view-space normal (mode hemisphere only; required there)"},
-    {.name = "kernel", .types = SSG_T_KERNEL, .doc = "hemisphere samples (halton.samples)"},
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
+    [SSG_SSAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position"},
+    [SSG_SSAO_IN_NORMAL] =
+        {.name = "normal",
+         .types = SSG_T_VECTOR,
+         .optional = 1,
+         .doc = "unit view-space normal (mode hemisphere only; required there)"},
+    [SSG_SSAO_IN_KERNEL] = {.name = "kernel", .types = SSG_T_KERNEL,
+     .doc = "hemisphere samples (halton.samples)"},
+    [SSG_SSAO_IN_ROTATION] =
+        {.name = "rotation",
+         .types = SSG_T_PATTERN,
+         .optional = 1,
+         .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
+    [SSG_SSAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "linear depth for the occluder lookup; none = -position.z"},
-    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
-            "all"},
+    [SSG_SSAO_IN_COUNT] =
+        {.name = "count",
+         .types = SSG_T_SCALAR,
+         .optional = 1,
+         .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
+                "all"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_SSAO_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR, .doc = "visibility, 1 = unoccluded"},
+    [SSG_SSAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
+     .doc = "visibility, 1 = unoccluded"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_SSAO_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_ssao = {
     .name = "ssao",
@@ -180,12 +185,8 @@ const struct ssg_node_desc ssg_node_ssao = {
            "and Kohlhammer's clamp). Background pixels are 1. With the count input a pixel "
            "uses only the first round(count) kernel samples (clamped to [1, kernel "
            "width]) and divides by that number.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_ssao_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_ssao_params),
     .consts_size = sizeof(struct ssg_ssao_consts),
     .check = check,
     .prepare = prepare,

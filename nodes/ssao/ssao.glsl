@@ -4,14 +4,9 @@
 // multiply-add is fused where the CPU rounds twice), samples in kernel order, sphere mode's
 // reflected sample right after its sample, disc mode's opposite offset likewise. Where the
 // CPU masks a lane (off screen, past its count), this skips: adding 0 changes no bits.
-uniform sampler2DArray position;
+#include "sampling.glsl" // position, depth, rotation, kernel and their helpers
 uniform sampler2DArray normal;   // read in mode hemisphere only
-uniform sampler2DArray kernel;   // K x 1, 3 layers: the samples
-uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin)
-uniform sampler2DArray depth;
 uniform sampler2DArray count;
-uniform bool rotation_bound;
-uniform bool depth_bound;
 uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst;
 
@@ -28,18 +23,12 @@ uniform vec3 proj;         // (f, cx, cy) of this resolution
 const int HEMISPHERE = 0, SPHERE = 1, DISC = 2;
 const int RANGE_NONE = 0, RANGE_HARD = 1;
 
-// The scene depth at pixel q: the depth input, or -position.z.
-float scene_depth(ivec2 q)
-{
-    return depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
-}
-
 // The weighted occlusion of one placed sample: scene depth d at its pixel occludes when
 // 0 < d < zb (zb = -S.z - bias, or depth(P) - bias in disc mode), weighted by the range
 // check on |depth(P) - d| against r (ssao_cpu.c lookup_chunk).
 float occlusion(ivec2 q, float zb, float dp, float r)
 {
-    float d = scene_depth(q);
+    float d = ssg_scene_depth(q);
     if (!(d > 0.0 && d < zb))
         return 0.0;
     precise float gap = abs(dp - d);
@@ -53,13 +42,6 @@ float occlusion(ivec2 q, float zb, float dp, float r)
 }
 
 
-vec3 kernel_sample(int s)
-{
-    return vec3(texelFetch(kernel, ivec3(s, 0, 0), 0).r,
-                texelFetch(kernel, ivec3(s, 0, 1), 0).r,
-                texelFetch(kernel, ivec3(s, 0, 2), 0).r);
-}
-
 // Projective coefficients of the sample frame (ssao_cpu.c setup_chunk): for a kernel
 // sample s, Z - bias = dot(cz, (1, s)), u Z = dot(cu, (1, s)), v Z = dot(cv, (1, s)).
 struct frame_coeffs {
@@ -71,11 +53,9 @@ struct frame_coeffs {
 frame_coeffs setup_frame(vec3 P, vec3 N, vec2 rot, float r)
 {
     float f = proj.x, cx = proj.y, cy = proj.z;
-    float sgn = (floatBitsToUint(N.z) >> 31) != 0u ? -1.0 : 1.0;
-    precise float a = -1.0 / (sgn + N.z);
-    precise float b = N.x * N.y * a;
-    precise float t0 = 1.0 + sgn * N.x * N.x * a, t1 = sgn * b, t2 = -sgn * N.x;
-    precise float b0 = b, b1 = sgn + N.y * N.y * a, b2 = -N.y;
+    vec3 t, b;
+    ssg_tangent_basis(N, t, b);
+    float t0 = t.x, t1 = t.y, t2 = t.z, b0 = b.x, b1 = b.y, b2 = b.z;
     precise float co = r * rot.x, si = r * rot.y;
     precise float tx = co * t0 + si * b0, ty = co * t1 + si * b1, tz = co * t2 + si * b2;
     precise float bx = co * b0 - si * t0, by = co * b1 - si * t1, bz = co * b2 - si * t2;
@@ -96,16 +76,11 @@ frame_coeffs setup_frame(vec3 P, vec3 N, vec2 rot, float r)
 // projected, then tested; behind the camera or off screen it is unoccluded.
 float sample_point(frame_coeffs k, vec3 s, float dp, float r)
 {
-    precise float zb = k.cz.x + k.cz.y * s.x + k.cz.z * s.y + k.cz.w * s.z;
-    precise float z = zb + bias;
-    precise float nu = k.cu.x + k.cu.y * s.x + k.cu.z * s.y + k.cu.w * s.z;
-    precise float nv = k.cv.x + k.cv.y * s.x + k.cv.z * s.y + k.cv.w * s.z;
-    precise float inv = 1.0 / z;
-    precise float u = nu * inv, v = nv * inv;
-    vec2 size = vec2(ssg_grid);
-    if (!(z > 0.0 && u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
+    ivec2 q;
+    float zb;
+    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, bias, q, zb))
         return 0.0;
-    return occlusion(ivec2(int(u), int(v)), zb, dp, r);
+    return occlusion(q, zb, dp, r);
 }
 
 // Disc mode (ssao_cpu.c place_disc): the depth sample at offset sign * rp R (s.x, s.y)
@@ -125,18 +100,14 @@ float sample_disc(ivec2 p, vec2 rot, vec3 s, float sgn, float rp, float dp, floa
 // Weighted occluded samples of a surface pixel over its first n kernel samples.
 float occluded_sum(ivec2 p, vec3 N, float dp, int n)
 {
-    vec2 rot = vec2(1.0, 0.0);
-    if (rotation_bound) {
-        int tile = textureSize(rotation, 0).x;
-        rot = ssg_load2(rotation, p % tile);
-    }
+    vec2 rot = ssg_tile_rotation(p);
     precise float rcap = cap * dp;
     float r = capped && rcap < radius ? rcap : radius;
     precise float occ = 0.0;
     if (mode == DISC) {
         precise float rp = proj.x * r / dp;
         for (int s = 0; s < n; s++) {
-            vec3 ks = kernel_sample(s);
+            vec3 ks = ssg_kernel_sample(s);
             occ += sample_disc(p, rot, ks, 1.0, rp, dp, r);
             occ += sample_disc(p, rot, ks, -1.0, rp, dp, r);
         }
@@ -144,7 +115,7 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
     }
     frame_coeffs k = setup_frame(ssg_load3(position, p), N, rot, r);
     for (int s = 0; s < n; s++) {
-        vec3 ks = kernel_sample(s);
+        vec3 ks = ssg_kernel_sample(s);
         occ += sample_point(k, ks, dp, r);
         if (mode == SPHERE)
             occ += sample_point(k, -ks, dp, r);
@@ -169,16 +140,12 @@ void main()
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
-    float dp = scene_depth(p);
+    float dp = ssg_scene_depth(p);
     vec3 N = mode == HEMISPHERE ? ssg_load3(normal, p) : vec3(0.0, 0.0, 1.0);
-    precise float nn = N.x * N.x + N.y * N.y + N.z * N.z;
-    // Background (depth 0, no normal) or garbage: 1.
-    if (!(dp > 0.0 && dp <= 3.0e38 && nn > 1e-12)) {
+    if (!ssg_surface_normal(dp, N)) { // background or garbage: 1
         SSG_STORE1(dst, p, 1.0);
         return;
     }
-    if (abs(nn - 1.0) > 1e-5)
-        N *= 1.0 / sqrt(nn);
     int samples = textureSize(kernel, 0).x;
     int n = ssg_pixel_count(count, count_bound, p, samples);
     SSG_STORE1(dst, p, visibility(occluded_sum(p, N, dp, n), n, samples));

@@ -19,8 +19,21 @@ enum ssg_ssao_mode {
 };
 
 /* Input ports, in order. */
-enum { SSG_SSAO_IN_POSITION, SSG_SSAO_IN_NORMAL, SSG_SSAO_IN_KERNEL, SSG_SSAO_IN_ROTATION,
-       SSG_SSAO_IN_DEPTH, SSG_SSAO_IN_COUNT };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_ssao_input {
+    SSG_SSAO_IN_POSITION,
+    SSG_SSAO_IN_NORMAL,
+    SSG_SSAO_IN_KERNEL,
+    SSG_SSAO_IN_ROTATION,
+    SSG_SSAO_IN_DEPTH,
+    SSG_SSAO_IN_COUNT,
+    SSG_SSAO_INPUTS
+};
+enum ssg_ssao_output {
+    SSG_SSAO_OUT_OUT,
+    SSG_SSAO_OUTPUTS
+};
 
 struct ssg_ssao_params {
     float radius;            /* hemisphere radius, scene units, > 0; default 0.5 */

@@ -20,20 +20,15 @@
  * Bands of rows go to ssg_parallel_rows; each pixel depends only on the inputs and every
  * per-pixel sum runs in kernel order, so the output does not depend on the thread count
  * (nor on the instruction set: the clones do the same IEEE operations lane by lane). */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
+#include "common/sampling.h"
 #include "ssao.h"
 
-/* The kernel never unmasks floating-point exceptions, so float operations cannot trap.
-   Telling GCC so lets it vectorise loops whose comparisons and selects it would
-   otherwise turn into branches; no result changes (no reassociation, no contraction). */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
-
-enum { CHUNK = 128, ROWS_PER_BAND = 16 };
+enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 16 };
 
 struct job {
     const struct ssg_ssao_consts *c;
@@ -76,64 +71,13 @@ struct chunk {
     float icnt[CHUNK];                     /* count input: 1 / n_i */
 };
 
-static void load_rotation(const struct job *j, struct chunk *restrict k, int y, int x0,
-                          int len);
-
-/* First part of the setup: loads and background. Normals are unit by the frame
-   conventions (node.h); the rare chunk holding one that is not gets a scalar pass, so
-   the common case stays a vector loop (sqrtf does not vectorise while it may set errno). */
+/* The loads of the hemisphere mode and the tile's rotation (nodes/common/sampling.h). */
 static void load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
-    const float *restrict dpl = j->depth + o;
-    const float *restrict nx0 = j->nrm[0] + o, *restrict ny0 = j->nrm[1] + o;
-    const float *restrict nz0 = j->nrm[2] + o, *restrict px0 = j->pos[0] + o;
-    const float *restrict py0 = j->pos[1] + o, *restrict pz0 = j->pos[2] + o;
-    const float sign = j->depth_sign;
-    int not_unit = 0;
-    for (int i = 0; i < len; i++) {
-        float nx = nx0[i], ny = ny0[i], nz = nz0[i];
-        float nn = nx * nx + ny * ny + nz * nz;
-        float d = sign * dpl[i];
-        /* Background (depth 0, normal 0) or garbage: harmless values, result 1. */
-        int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
-        not_unit |= fg & (fabsf(nn - 1.0f) > 1e-5f);
-        k->fg[i] = fg;
-        k->nx[i] = fg ? nx : 0.0f;
-        k->ny[i] = fg ? ny : 0.0f;
-        k->nz[i] = fg ? nz : 1.0f;
-        k->dp[i] = fg ? d : 1.0f;
-        /* Unconditional: a load under a condition would stop vectorising. Background
-           positions are 0 and only lead to a result that is replaced. */
-        k->px[i] = px0[i];
-        k->py[i] = py0[i];
-        k->pz[i] = pz0[i];
-    }
-    for (int i = 0; not_unit && i < len; i++) {
-        float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
-        float inv = 1.0f / sqrtf(nn);
-        k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
-    }
-    load_rotation(j, k, y, x0, len);
-}
-
-/* The rotation of the tile for the pixels of a chunk (shared by both loaders). */
-static void load_rotation(const struct job *j, struct chunk *restrict k, int y, int x0,
-                          int len)
-{
-    if (j->rot) {
-        const int n = j->n;
-        const float *rc = j->rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
-        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
-            k->co[i] = rc[xm];
-            k->si[i] = rs[xm];
-        }
-    } else {
-        for (int i = 0; i < len; i++) {
-            k->co[i] = 1.0f;
-            k->si[i] = 0.0f;
-        }
-    }
+    ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
+                      k->nz, k->px, k->py, k->pz, k->dp);
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
 }
 
 /* The loads of the normal-free modes: every pixel with a depth is a surface, and the
@@ -160,7 +104,7 @@ static void load_chunk_free(const struct job *j, struct chunk *restrict k, int y
         k->pz[i] = pz0[i];
         k->xf[i] = (float)(x0 + i);
     }
-    load_rotation(j, k, y, x0, len);
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
 }
 
 /* Vectorised part of the setup: tangent frame (Duff et al., "Building an Orthonormal
@@ -175,11 +119,9 @@ static void setup_chunk(const struct job *j, struct chunk *restrict k, int len)
     const int capped = j->c->p.max_screen_radius > 0.0f;
     for (int i = 0; i < len; i++) {
         float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i];
-        float sign = copysignf(1.0f, nz);
-        float a = -1.0f / (sign + nz);
-        float b = nx * ny * a;
-        float t0 = 1.0f + sign * nx * nx * a, t1 = sign * b, t2 = -sign * nx;
-        float b0 = b, b1 = sign + ny * ny * a, b2 = -ny;
+        float t[3], b[3];
+        ssg_sampling_basis(nx, ny, nz, t, b);
+        float t0 = t[0], t1 = t[1], t2 = t[2], b0 = b[0], b1 = b[1], b2 = b[2];
         float rcap = cap * k->dp[i];
         float r = capped & (rcap < radius) ? rcap : radius;
         float co = r * k->co[i], si = r * k->si[i];
@@ -213,25 +155,8 @@ static inline __attribute__((always_inline)) void
 place_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
             float sz)
 {
-    const float bias = j->c->p.bias;
-    const float fw = (float)j->w, fh = (float)j->h;
-    const int w = j->w;
-    for (int i = 0; i < len; i++) {
-        float zb = k->cz[0][i] + k->cz[1][i] * sx + k->cz[2][i] * sy + k->cz[3][i] * sz;
-        float z = zb + bias;
-        float nu = k->cu[0][i] + k->cu[1][i] * sx + k->cu[2][i] * sy + k->cu[3][i] * sz;
-        float nv = k->cv[0][i] + k->cv[1][i] * sx + k->cv[2][i] * sy + k->cv[3][i] * sz;
-        float inv = 1.0f / z;
-        float u = nu * inv, v = nv * inv;
-        /* Behind the camera or off screen: no depth there, so unoccluded. Comparisons
-           are false for NaN, so a degenerate z lands here too. */
-        int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
-        /* Select in float, then convert: converting an out-of-range float is undefined. */
-        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
-        k->idx[i] = (int)vs * w + (int)us;
-        /* -1 never exceeds a depth > 0: off-screen samples are unoccluded. */
-        k->zb[i] = ok ? zb : -1.0f;
-    }
+    ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->c->p.bias, j->w, j->h,
+                       k->idx, k->zb);
 }
 
 /* Looks up the scene depth at each sample placed in k->idx (threshold k->zb) and adds
@@ -400,14 +325,9 @@ static int load_counts(const struct job *j, struct chunk *restrict k, int y, int
                        int len)
 {
     const float *restrict c = j->cnt + (size_t)y * (size_t)j->w + (size_t)x0;
-    const float kmax = (float)j->count;
     int most = 1;
     for (int i = 0; i < len; i++) {
-        float v = c[i];
-        v = v < 1.0f ? 1.0f : v;
-        v = v <= kmax ? v : kmax; /* NaN fails both compares above: K */
-        int n = (int)(v + 0.5f);
-        n = n < j->count ? n : j->count;
+        int n = ssg_sampling_count(c[i], j->count);
         k->cnt[i] = n;
         k->icnt[i] = 1.0f / (float)n;
         most = k->fg[i] && n > most ? n : most;

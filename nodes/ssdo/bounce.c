@@ -44,14 +44,20 @@ static const struct ssg_param_desc params[] = {
 
 static const struct ssg_port_desc inputs[] = {
     SSG_SSDO_GEOM_INPUTS,
-    {.name = "albedo", .types = SSG_T_COLOR, .doc = "diffuse albedo of the receiver"},
-    {.name = "light", .types = SSG_T_COLOR,
-     .doc = "the senders' radiance: the first pass's direct light (ssdo mode=radiance)"},
+    [SSG_SSDO_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
+     .doc = "diffuse albedo of the receiver"},
+    [SSG_SSDO_IN_LIGHT] =
+        {.name = "light",
+         .types = SSG_T_COLOR,
+         .doc = "the senders' radiance: the first pass's direct light (ssdo mode=radiance)"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_BOUNCE_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_COLOR, .doc = "one indirect bounce, albedo * sum F_i L_i"},
+    [SSG_BOUNCE_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR,
+     .doc = "one indirect bounce, albedo * sum F_i L_i"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_BOUNCE_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_bounce = {
     .name = "bounce",
@@ -67,12 +73,8 @@ const struct ssg_node_desc ssg_node_bounce = {
            "max(d^2, min_distance^2)); the F are normalised when they sum to more than 1. "
            "out = albedo sum F L, exactly ssdo's bounce output for the same inputs; 0 for "
            "the background.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_bounce_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_bounce_params),
     .consts_size = sizeof(struct ssg_bounce_consts),
     .check = check,
     .prepare = prepare,

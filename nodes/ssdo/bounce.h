@@ -8,6 +8,13 @@
 #include "graph/node.h"
 #include "ssdo_sampling.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_bounce_output {
+    SSG_BOUNCE_OUT_OUT,
+    SSG_BOUNCE_OUTPUTS
+};
+
 struct ssg_bounce_params {
     struct ssg_ssdo_geom g; /* radius, bias, max_screen_radius, strength, min_distance:
                                the meanings and defaults of ssdo's */

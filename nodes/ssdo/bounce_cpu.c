@@ -4,14 +4,7 @@
  * ssdo's bounce output. Layout: chunks of a row in structure-of-arrays scratch, chunk
  * columns outside and a band's rows inside (see ssao_cpu.c); bands of rows go to
  * ssg_parallel_rows, so the result does not depend on the thread count. */
-/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged.
-   Before the includes: the shared sampling code (ssdo_sampling.h) is inlined into the
-   AVX2 clone and must be compiled with the same options, or its selects and those of
-   this file stay branches. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
-
+#include "common/vector_loops.h" /* first: see there */
 #include "bounce.h"
 
 struct job {
@@ -25,7 +18,8 @@ struct job {
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void bounce_chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
+static void
+bounce_chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
 {
     const struct ssg_ssdo_job *j = &jb->s;
     const int count = j->count, own = j->own_depth;

@@ -68,11 +68,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     if (e)
         return e;
     const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION];
-    const struct ssg_shape *cnt = &in[SSG_SSDO_IN_SAMPLE_COUNT];
-    if (cnt->channels != 0 && (cnt->channels != 1 || !ssg_shape_same_size(cnt, pos))) {
-        snprintf(why, why_len, "count must be a 1-channel image the size of position");
-        return SSG_E_SIZE;
-    }
+    e = ssg_sampling_check_inputs(pos, NULL, &(struct ssg_shape){0}, &(struct ssg_shape){0},
+                                  &in[SSG_SSDO_IN_COUNT], why, why_len);
+    if (e)
+        return e;
     int color = p->mode == SSG_SSDO_MODE_RADIANCE || p->channels == 3;
     out[0] = (struct ssg_shape){pos->width, pos->height, color ? 3 : 1,
                                 color ? SSG_T_COLOR : SSG_T_SCALAR};
@@ -86,7 +85,9 @@ static enum ssg_err prepare_lights(const struct ssg_node_ctx *ctx, const float r
 {
     const struct ssg_scene *s = ctx->scene;
     if (s->light_count > SSG_SSDO_MAX_LIGHTS) {
-        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene has %d lights, at most %d are supported", s->light_count, SSG_SSDO_MAX_LIGHTS);
+        return ssg_node_fail(ctx, SSG_E_SCENE,
+                             "the scene has %d lights, at most %d are supported",
+                             s->light_count, SSG_SSDO_MAX_LIGHTS);
     }
     c->light_count = s->light_count;
     for (int l = 0; l < s->light_count; l++) {
@@ -168,33 +169,35 @@ static const struct ssg_param_desc params[] = {
      .def = SSG_SSDO_MODE_MODULATION, .choices = mode_choices,
      .help = "modulation: lit / unoccluded light (one-step, sec. 4.1); radiance: albedo/pi "
              "* directional light (eq. 2)"},
-    {.name = "channels", SSG_FIELD_INT(struct ssg_ssdo_params, channels), .def = 1, .min = 1, .max = 3,
+    {.name = "channels", SSG_FIELD_INT(struct ssg_ssdo_params, channels), .def = 1, .min = 1,
+     .max = 3,
      .help = "modulation: 1 = one factor of the luminances, 3 = one per colour channel"},
-    {.name = "bounce", SSG_FIELD_BOOL(struct ssg_ssdo_params, bounce),
-     .def = 0, .help = "compute the indirect bounce output (needs albedo and light)"},
-    {.name = "lobe", SSG_FIELD_INT(struct ssg_ssdo_params, lobe),
-     .def = 4, .min = 1, .max = 64,
+    {.name = "bounce", SSG_FIELD_BOOL(struct ssg_ssdo_params, bounce), .def = 0,
+     .help = "compute the indirect bounce output (needs albedo and light)"},
+    {.name = "lobe", SSG_FIELD_INT(struct ssg_ssdo_params, lobe), .def = 4, .min = 1, .max = 64,
      .help = "cosine power of the cone over which a point or directional light is sampled"},
 };
 
 static const struct ssg_port_desc inputs[] = {
     SSG_SSDO_GEOM_INPUTS,
-    {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
+    [SSG_SSDO_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
      .doc = "diffuse albedo (mode radiance and bounce)"},
-    {.name = "light", .types = SSG_T_COLOR, .optional = 1,
+    [SSG_SSDO_IN_LIGHT] = {.name = "light", .types = SSG_T_COLOR, .optional = 1,
      .doc = "outgoing radiance of each pixel, the bounce's senders (bounce)"},
-    {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+    [SSG_SSDO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
             "all"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_SSDO_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR | SSG_T_COLOR,
+    [SSG_SSDO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR | SSG_T_COLOR,
      .doc = "modulation factor (scalar, or color with channels=3; 1 = unoccluded) or, "
             "mode radiance, the directional light (color)"},
-    {.name = "bounce", .types = SSG_T_COLOR,
+    [SSG_SSDO_OUT_BOUNCE] = {.name = "bounce", .types = SSG_T_COLOR,
      .doc = "one indirect bounce, albedo * sum F_i L_i; 0 when bounce=false"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_SSDO_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_ssdo = {
     .name = "ssdo",
@@ -221,12 +224,8 @@ const struct ssg_node_desc ssg_node_ssdo = {
            "bounce = albedo sum F L. At most 8 lights. With the count input a pixel uses "
            "only the first n = round(count) kernel samples (clamped to [1, K]): dw = 2 pi "
            "/ n, A_s with n for K, every sum over those n.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_ssdo_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_ssdo_params),
     .consts_size = sizeof(struct ssg_ssdo_consts),
     .check = check,
     .prepare = prepare,

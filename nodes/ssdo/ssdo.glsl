@@ -5,15 +5,10 @@
 // projective coefficients, the same sums in the same order (`precise`, so that no
 // multiply-add is fused where the CPU rounds twice). Where the CPU masks a lane (off
 // screen, not behind the depth, past its count) this skips: adding 0 changes no bits.
-uniform sampler2DArray position;
+#include "sampling.glsl" // position, depth, rotation, kernel and their helpers
 uniform sampler2DArray normal;
-uniform sampler2DArray kernel;   // K x 1, 3 layers: the samples
-uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin)
-uniform sampler2DArray depth;
 uniform sampler2DArray albedo;
 uniform sampler2DArray light;    // the senders' radiance (bounce)
-uniform bool rotation_bound;
-uniform bool depth_bound;
 layout(r32f) uniform writeonly image2DArray dst_bounce;
 
 uniform float radius;       // scene units
@@ -63,29 +58,14 @@ struct bounce_sum {
     vec3 fl;    // sum F_i L_i
 };
 
-vec3 kernel_sample(int s)
-{
-    return vec3(texelFetch(kernel, ivec3(s, 0, 0), 0).r,
-                texelFetch(kernel, ivec3(s, 0, 1), 0).r,
-                texelFetch(kernel, ivec3(s, 0, 2), 0).r);
-}
-
-// The scene depth at pixel q: the depth input, or -position.z.
-float scene_depth(ivec2 q)
-{
-    return depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
-}
-
 // Duff et al.'s branch-free basis about N (-0 counts as negative, as copysignf does),
 // turned by the tile's (co, si); the radius (capped) and the projective coefficients.
 pixel_frame setup_frame(vec3 P, vec3 N, vec2 rot, float dp, int n)
 {
     float f = proj.x, cx = proj.y, cy = proj.z;
-    float sgn = (floatBitsToUint(N.z) >> 31) != 0u ? -1.0 : 1.0;
-    precise float a = -1.0 / (sgn + N.z);
-    precise float b = N.x * N.y * a;
-    precise float t0 = 1.0 + sgn * N.x * N.x * a, t1 = sgn * b, t2 = -sgn * N.x;
-    precise float b0 = b, b1 = sgn + N.y * N.y * a, b2 = -N.y;
+    vec3 t, b;
+    ssg_tangent_basis(N, t, b);
+    float t0 = t.x, t1 = t.y, t2 = t.z, b0 = b.x, b1 = b.y, b2 = b.z;
     float co = rot.x, si = rot.y;
     precise vec3 T = vec3(co * t0 + si * b0, co * t1 + si * b1, co * t2 + si * b2);
     precise vec3 B = vec3(co * b0 - si * t0, co * b1 - si * t1, co * b2 - si * t2);
@@ -134,17 +114,11 @@ void add_bounce(inout bounce_sum acc, pixel_frame k, ivec2 q, vec3 v, float dd)
 // ssg_ssdo_depth_test, ssg_ssdo_range_bounce), gathering its bounce when occluded.
 float sample_visibility(pixel_frame k, vec3 s, inout bounce_sum acc)
 {
-    precise float zb = k.cz.x + k.cz.y * s.x + k.cz.z * s.y + k.cz.w * s.z;
-    precise float z = zb + bias;
-    precise float nu = k.cu.x + k.cu.y * s.x + k.cu.z * s.y + k.cu.w * s.z;
-    precise float nv = k.cv.x + k.cv.y * s.x + k.cv.z * s.y + k.cv.w * s.z;
-    precise float inv = 1.0 / z;
-    precise float u = nu * inv, v = nv * inv;
-    vec2 size = vec2(ssg_grid);
-    if (!(z > 0.0 && u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
+    ivec2 q;
+    float zb;
+    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, bias, q, zb))
         return 1.0;
-    ivec2 q = ivec2(int(u), int(v));
-    float d = scene_depth(q);
+    float d = ssg_scene_depth(q);
     if (!(d > 0.0 && d < zb))
         return 1.0;
     precise vec3 dv = ssg_load3(position, q) - k.P;
@@ -171,24 +145,10 @@ vec3 finish_bounce(ivec2 p, bounce_sum acc)
 // normal that is not unit is normalised (the CPU does so for its whole chunk).
 bool load_pixel(ivec2 p, out vec3 P, out vec3 N, out float dp)
 {
-    dp = scene_depth(p);
+    dp = ssg_scene_depth(p);
     N = ssg_load3(normal, p);
     P = ssg_load3(position, p);
-    precise float nn = N.x * N.x + N.y * N.y + N.z * N.z;
-    if (!(dp > 0.0 && dp <= 3.0e38 && nn > 1e-12))
-        return false;
-    precise float ninv = 1.0 / sqrt(nn);
-    if (abs(nn - 1.0) > 1e-5)
-        N = vec3(N.x * ninv, N.y * ninv, N.z * ninv);
-    return true;
-}
-
-vec2 tile_rotation(ivec2 p)
-{
-    if (!rotation_bound)
-        return vec2(1.0, 0.0);
-    int tile = textureSize(rotation, 0).x;
-    return ssg_load2(rotation, p % tile);
+    return ssg_surface_normal(dp, N);
 }
 
 #ifdef SSDO_BOUNCE_NODE
@@ -205,10 +165,10 @@ void main()
         return;
     }
     int samples = textureSize(kernel, 0).x;
-    pixel_frame k = setup_frame(P, N, tile_rotation(p), dp, samples);
+    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, samples);
     bounce_sum acc = bounce_sum(0.0, vec3(0.0));
     for (int s = 0; s < samples; s++)
-        sample_visibility(k, kernel_sample(s), acc);
+        sample_visibility(k, ssg_kernel_sample(s), acc);
     SSG_STORE3(dst_bounce, p, finish_bounce(p, acc));
 }
 
@@ -380,7 +340,7 @@ void main()
     }
     int samples = textureSize(kernel, 0).x;
     int n = ssg_pixel_count(count, count_bound, p, samples);
-    pixel_frame k = setup_frame(P, N, tile_rotation(p), dp, n);
+    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, n);
     vec3 lt[MAX_LIGHTS];
     float e[MAX_LIGHTS];
     setup_lights(k, lt, e);
@@ -391,7 +351,7 @@ void main()
     acc.lit = acc.full = vec3(0.0);
     bounce_sum b = bounce_sum(0.0, vec3(0.0));
     for (int s = 0; s < n; s++) {
-        vec3 ks = kernel_sample(s);
+        vec3 ks = ssg_kernel_sample(s);
         // 1 / |s| and N.w = s.z / |s| (ssdo_cpu.c kernel_constants)
         precise float len = sqrt(ks.x * ks.x + ks.y * ks.y + ks.z * ks.z);
         precise float il = len > 0.0 ? 1.0 / len : 0.0;

@@ -13,8 +13,13 @@
 
 #define SSG_SSDO_MAX_LIGHTS 8
 
-/* ssdo's own input after the ports it shares with bounce (ssdo_sampling.h). */
-enum { SSG_SSDO_IN_SAMPLE_COUNT = SSG_SSDO_IN_COUNT };
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_ssdo_output {
+    SSG_SSDO_OUT_OUT,
+    SSG_SSDO_OUT_BOUNCE,
+    SSG_SSDO_OUTPUTS
+};
 
 enum ssg_ssdo_mode {
     SSG_SSDO_MODE_MODULATION, /* one-step method (Szentandrasi sec. 4.1): lit / unoccluded */
@@ -63,6 +68,7 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
    geometry and the projection of position's size), for ssdo and bounce on GL. */
 struct ssg_gl_pass;
 void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
-                               const struct ssg_ssdo_geom *g, const struct ssg_projection *proj);
+                               const struct ssg_ssdo_geom *g,
+                               const struct ssg_projection *proj);
 
 #endif

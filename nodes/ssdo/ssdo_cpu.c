@@ -19,14 +19,7 @@
  * loops still vectorise), and its dw and patch area use its count. Adding a masked 0
  * leaves a sum's bits unchanged, so count = K everywhere gives the bits of the path
  * without the input, which stays as it was (`counted` is a constant at each call). */
-/* As in ssao_cpu.c: no trapping maths lets GCC vectorise selects; results unchanged.
-   Before the includes: the shared sampling code (ssdo_sampling.h) is inlined into the
-   AVX2 clone and must be compiled with the same options, or its selects and those of
-   this file stay branches. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
-
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -159,7 +152,8 @@ add_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
             break;
         }
         for (int i = 0; i < len; i++) {
-            float cl = (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
+            float cl =
+                (sx * lc->lt[l][0][i] + sy * lc->lt[l][1][i] + sz * lc->lt[l][2][i]) * il;
             lc->c[i] = cl > 0.0f ? cl : 0.0f;
             lc->p[i] = nw;
         }
@@ -254,15 +248,11 @@ load_counts(const struct job *j, struct ssg_ssdo_chunk *restrict k,
 {
     const float *restrict c = j->cnt + o;
     const int kw = j->s.count;
-    const float kmax = (float)kw, strength = j->s.g.strength;
+    const float strength = j->s.g.strength;
     const int auto_md = !(j->s.g.min_distance > 0.0f);
     int most = 1;
     for (int i = 0; i < len; i++) {
-        float v = c[i];
-        v = v < 1.0f ? 1.0f : v;
-        v = v <= kmax ? v : kmax; /* NaN fails both compares above: K */
-        int n = (int)(v + 0.5f);
-        n = n < kw ? n : kw;
+        int n = ssg_sampling_count(c[i], kw);
         k->cnt[i] = n;
         lc->fullw[i] = 0.0f;
         lc->dwl[i] = j->dw_tab[n];
@@ -384,8 +374,9 @@ chunk_body(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void ssdo_chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc,
-                      int y, int x0, int len)
+static void
+ssdo_chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int y,
+               int x0, int len)
 {
     if (j->cnt)
         chunk_body(j, k, lc, y, x0, len, 1);
@@ -426,7 +417,7 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     const struct ssg_ssdo_consts *c = consts;
     const int out_channels = c->out_channels;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
+    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_COUNT];
     struct job j = {.c = c, .out_channels = out_channels, .cnt = cnt ? cnt->data : NULL};
     ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->p.bounce);
     for (int ch = 0; ch < 3; ch++) {

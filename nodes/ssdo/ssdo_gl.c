@@ -62,7 +62,7 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_ssdo_consts *c = consts;
     const int out_channels = c->out_channels;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
-    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_SAMPLE_COUNT];
+    const struct ssg_image *cnt = io->in[SSG_SSDO_IN_COUNT];
     const int k = io->in[SSG_SSDO_IN_KERNEL]->width;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssdo.glsl", NULL);

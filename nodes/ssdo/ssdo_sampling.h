@@ -41,12 +41,23 @@
 #include "common/sampling.h"
 #include "graph/node.h"
 
-/* Input ports of both nodes, in order (bounce has the same ports, albedo and light
-   required there). */
-enum { SSG_SSDO_IN_POSITION, SSG_SSDO_IN_NORMAL, SSG_SSDO_IN_KERNEL, SSG_SSDO_IN_ROTATION,
-       SSG_SSDO_IN_DEPTH, SSG_SSDO_IN_ALBEDO, SSG_SSDO_IN_LIGHT, SSG_SSDO_IN_COUNT };
+/* Input ports of both nodes, in order: bounce has the first seven (albedo and light
+   required there, SSG_BOUNCE_INPUTS of them), ssdo all eight. The descriptors' arrays are
+   indexed by these (SSG_<NODE>_IN_<PORT>; the ports are ssdo's, so is the prefix). */
+enum ssg_ssdo_input {
+    SSG_SSDO_IN_POSITION,
+    SSG_SSDO_IN_NORMAL,
+    SSG_SSDO_IN_KERNEL,
+    SSG_SSDO_IN_ROTATION,
+    SSG_SSDO_IN_DEPTH,
+    SSG_SSDO_IN_ALBEDO,
+    SSG_SSDO_IN_LIGHT,
+    SSG_SSDO_IN_COUNT, /* ssdo only: the per-pixel sample count */
+    SSG_SSDO_INPUTS,
+    SSG_BOUNCE_INPUTS = SSG_SSDO_IN_COUNT
+};
 
-enum { SSG_SSDO_CHUNK = 128, SSG_SSDO_ROWS_PER_BAND = 16 };
+enum { SSG_SSDO_CHUNK = SSG_SAMPLING_CHUNK, SSG_SSDO_ROWS_PER_BAND = 16 };
 
 /* The parameters the sampling and the bounce read (a part of each node's params). */
 struct ssg_ssdo_geom {
@@ -80,13 +91,13 @@ struct ssg_ssdo_geom {
 
 /* The input ports both nodes begin with (SSG_SSDO_IN_POSITION .. SSG_SSDO_IN_DEPTH). */
 #define SSG_SSDO_GEOM_INPUTS                                                             \
-    {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},           \
-    {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},          \
-    {.name = "kernel", .types = SSG_T_KERNEL,                                            \
+    [SSG_SSDO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},  \
+    [SSG_SSDO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},  \
+    [SSG_SSDO_IN_KERNEL] = {.name = "kernel", .types = SSG_T_KERNEL,                     \
      .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},      \
-    {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,                          \
+    [SSG_SSDO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,  \
      .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},            \
-    {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,                              \
+    [SSG_SSDO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,        \
      .doc = "linear depth for the occluder lookup; none = -position.z"}
 
 /* What one run reads: image planes, the kernel, the projection of this resolution. */
@@ -169,53 +180,15 @@ static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io
     j->cy = proj->cy;
 }
 
-/* Loads P, N, depth and the tile's rotation. Background (depth 0, normal 0) or garbage
-   gets harmless values and fg = 0. Normals are unit by the frame conventions (node.h);
-   the rare chunk holding one that is not gets a scalar pass. */
+/* Loads P, N, depth and the tile's rotation (nodes/common/sampling.h). */
 static inline __attribute__((always_inline)) void
 ssg_ssdo_load(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int y, int x0,
               int len)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
-    const float *restrict dpl = j->depth + o;
-    const float *restrict nx0 = j->nrm[0] + o, *restrict ny0 = j->nrm[1] + o;
-    const float *restrict nz0 = j->nrm[2] + o, *restrict px0 = j->pos[0] + o;
-    const float *restrict py0 = j->pos[1] + o, *restrict pz0 = j->pos[2] + o;
-    const float sign = j->depth_sign;
-    int not_unit = 0;
-    for (int i = 0; i < len; i++) {
-        float nx = nx0[i], ny = ny0[i], nz = nz0[i];
-        float nn = nx * nx + ny * ny + nz * nz;
-        float d = sign * dpl[i];
-        int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
-        not_unit |= fg & (fabsf(nn - 1.0f) > 1e-5f);
-        k->fg[i] = fg;
-        k->nx[i] = fg ? nx : 0.0f;
-        k->ny[i] = fg ? ny : 0.0f;
-        k->nz[i] = fg ? nz : 1.0f;
-        k->dp[i] = fg ? d : 1.0f;
-        k->px[i] = px0[i];
-        k->py[i] = py0[i];
-        k->pz[i] = pz0[i];
-    }
-    for (int i = 0; not_unit && i < len; i++) {
-        float nn = k->nx[i] * k->nx[i] + k->ny[i] * k->ny[i] + k->nz[i] * k->nz[i];
-        float inv = 1.0f / sqrtf(nn);
-        k->nx[i] *= inv, k->ny[i] *= inv, k->nz[i] *= inv;
-    }
-    if (j->rot) {
-        const int n = j->n;
-        const float *rc = j->rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
-        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
-            k->co[i] = rc[xm];
-            k->si[i] = rs[xm];
-        }
-    } else {
-        for (int i = 0; i < len; i++) {
-            k->co[i] = 1.0f;
-            k->si[i] = 0.0f;
-        }
-    }
+    ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
+                      k->nz, k->px, k->py, k->pz, k->dp);
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
 }
 
 /* Tangent frame (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017,
@@ -232,11 +205,9 @@ ssg_ssdo_setup(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, 
     const int auto_md = !(md > 0.0f);
     for (int i = 0; i < len; i++) {
         float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i];
-        float sign = copysignf(1.0f, nz);
-        float a = -1.0f / (sign + nz);
-        float b = nx * ny * a;
-        float t0 = 1.0f + sign * nx * nx * a, t1 = sign * b, t2 = -sign * nx;
-        float b0 = b, b1 = sign + ny * ny * a, b2 = -ny;
+        float t[3], b[3];
+        ssg_sampling_basis(nx, ny, nz, t, b);
+        float t0 = t[0], t1 = t[1], t2 = t[2], b0 = b[0], b1 = b[1], b2 = b[2];
         float co = k->co[i], si = k->si[i];
         float tx = co * t0 + si * b0, ty = co * t1 + si * b1, tz = co * t2 + si * b2;
         float bx = co * b0 - si * t0, by = co * b1 - si * t1, bz = co * b2 - si * t2;
@@ -274,22 +245,8 @@ static inline __attribute__((always_inline)) void
 ssg_ssdo_place(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
                float sx, float sy, float sz)
 {
-    int32_t *restrict idx = k->idx;
-    float *restrict zbs = k->zb;
-    const float bias = j->g.bias, fw = (float)j->w, fh = (float)j->h;
-    const int w = j->w;
-    for (int i = 0; i < len; i++) {
-        float zb = k->cz[0][i] + k->cz[1][i] * sx + k->cz[2][i] * sy + k->cz[3][i] * sz;
-        float z = zb + bias;
-        float nu = k->cu[0][i] + k->cu[1][i] * sx + k->cu[2][i] * sy + k->cu[3][i] * sz;
-        float nv = k->cv[0][i] + k->cv[1][i] * sx + k->cv[2][i] * sy + k->cv[3][i] * sz;
-        float inv = 1.0f / z;
-        float u = nu * inv, v = nv * inv;
-        int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
-        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f; /* convert only in-range floats */
-        idx[i] = (int)vs * w + (int)us;
-        zbs[i] = ok ? zb : -1.0f;
-    }
+    ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->g.bias, j->w, j->h, k->idx,
+                       k->zb);
 }
 
 /* The depth test of each sample: a candidate when 0 < z_i < depth(S) - bias, z_i read at
@@ -441,13 +398,9 @@ static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, cha
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    if (ker->channels != 3 || ker->height != 1 || ker->width < 1) {
-        snprintf(why, why_len, "kernel must be count x 1 with 3 channels, got %dx%dx%d",
-                 ker->width, ker->height, ker->channels);
-        return SSG_E_CHANNELS;
-    }
-    enum ssg_err e = ssg_sampling_check_rotation_depth(pos, &in[SSG_SSDO_IN_ROTATION],
-                                              &in[SSG_SSDO_IN_DEPTH], why, why_len);
+    /* count: ssdo's own input, checked by ssdo.c (bounce has none) */
+    enum ssg_err e = ssg_sampling_check_inputs(pos, ker, &in[SSG_SSDO_IN_ROTATION],
+                                               &in[SSG_SSDO_IN_DEPTH], NULL, why, why_len);
     if (e)
         return e;
     for (int p = SSG_SSDO_IN_ALBEDO; p <= SSG_SSDO_IN_LIGHT; p++)

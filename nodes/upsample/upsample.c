@@ -45,10 +45,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len)
 {
     const struct ssg_upsample_params *p = params;
-    const struct ssg_shape *im = &in[SSG_UPSAMPLE_IN], *dep = &in[SSG_UPSAMPLE_DEPTH];
-    const struct ssg_shape *nrm = &in[SSG_UPSAMPLE_NORMAL];
-    const struct ssg_shape *ldep = &in[SSG_UPSAMPLE_LOW_DEPTH];
-    const struct ssg_shape *lnrm = &in[SSG_UPSAMPLE_LOW_NORMAL];
+    const struct ssg_shape *im = &in[SSG_UPSAMPLE_IN_IN], *dep = &in[SSG_UPSAMPLE_IN_DEPTH];
+    const struct ssg_shape *nrm = &in[SSG_UPSAMPLE_IN_NORMAL];
+    const struct ssg_shape *ldep = &in[SSG_UPSAMPLE_IN_LOW_DEPTH];
+    const struct ssg_shape *lnrm = &in[SSG_UPSAMPLE_IN_LOW_NORMAL];
     if (p->size % 2 == 0) {
         snprintf(why, why_len, "size must be odd (taps centred on a low-res pixel), got %d",
                  p->size);
@@ -73,7 +73,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  dep->height, SSG_UPSAMPLE_MAX_FACTOR);
         return SSG_E_SIZE;
     }
-    const struct ssg_shape *im2 = &in[SSG_UPSAMPLE_IN2];
+    const struct ssg_shape *im2 = &in[SSG_UPSAMPLE_IN_IN2];
     if (im2->channels != 0 && !ssg_shape_same_size(im2, im)) {
         snprintf(why, why_len, "in2 must be the size of in");
         return SSG_E_SIZE;
@@ -94,8 +94,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         !(p->sigma_depth > 0) || !(p->sigma_spatial >= 0) || p->normal_power < 0 ||
         p->normal_power > 127)
         return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
-    const struct ssg_shape *dep = &ctx->in_shape[SSG_UPSAMPLE_DEPTH];
-    const struct ssg_shape *low = &ctx->in_shape[SSG_UPSAMPLE_IN];
+    const struct ssg_shape *dep = &ctx->in_shape[SSG_UPSAMPLE_IN_DEPTH];
+    const struct ssg_shape *low = &ctx->in_shape[SSG_UPSAMPLE_IN_IN];
     c->factor = ssg_upsample_factor(dep->width, dep->height, low->width, low->height);
     c->radius = (p->size - 1) / 2;
     float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
@@ -107,37 +107,49 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "size", SSG_FIELD_INT(struct ssg_upsample_params, size),
-     .def = 3, .min = 1, .max = SSG_UPSAMPLE_MAX_SIZE, .unit = "low-res px",
+    {.name = "size", SSG_FIELD_INT(struct ssg_upsample_params, size), .def = 3, .min = 1,
+     .max = SSG_UPSAMPLE_MAX_SIZE, .unit = "low-res px",
      .help = "taps per side around the low-res pixel, odd"},
-    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_spatial), .def = 0, .min = 0,
-     .max = 1000, .unit = "low-res px", .help = "spatial Gaussian sigma; 0 = size / 3"},
-    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_depth), .def = 0.05, .min = 1e-6,
-     .max = 1000, .help = "depth sigma as a fraction of the full-res pixel's depth"},
-    {.name = "normal_power", SSG_FIELD_INT(struct ssg_upsample_params, normal_power), .def = 16, .min = 0,
-     .max = 127, .help = "normal weight max(0, n.N)^p; 0 = off"},
+    {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_spatial),
+     .def = 0, .min = 0, .max = 1000, .unit = "low-res px",
+     .help = "spatial Gaussian sigma; 0 = size / 3"},
+    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_upsample_params, sigma_depth),
+     .def = 0.05, .min = 1e-6, .max = 1000,
+     .help = "depth sigma as a fraction of the full-res pixel's depth"},
+    {.name = "normal_power", SSG_FIELD_INT(struct ssg_upsample_params, normal_power), .def = 16,
+     .min = 0, .max = 127, .help = "normal weight max(0, n.N)^p; 0 = off"},
 };
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR, .doc = "low-resolution image"},
-    {.name = "depth", .types = SSG_T_SCALAR, .doc = "full-resolution depth; 0 = background"},
-    {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
+    [SSG_UPSAMPLE_IN_IN] = {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR,
+     .doc = "low-resolution image"},
+    [SSG_UPSAMPLE_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
+     .doc = "full-resolution depth; 0 = background"},
+    [SSG_UPSAMPLE_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
      .doc = "full-resolution unit normal; with low_normal, or neither"},
-    {.name = "low_depth", .types = SSG_T_SCALAR,
+    [SSG_UPSAMPLE_IN_LOW_DEPTH] = {.name = "low_depth", .types = SSG_T_SCALAR,
      .doc = "the depth `in` was computed on (its size)"},
-    {.name = "low_normal", .types = SSG_T_VECTOR, .optional = 1,
-     .doc = "the normal `in` was computed on; none = no normal term"},
-    {.name = "in2", .types = SSG_T_SCALAR | SSG_T_COLOR, .optional = 1,
-     .doc = "second low-res image (size of in), upsampled with the same weights"},
+    [SSG_UPSAMPLE_IN_LOW_NORMAL] =
+        {.name = "low_normal",
+         .types = SSG_T_VECTOR,
+         .optional = 1,
+         .doc = "the normal `in` was computed on; none = no normal term"},
+    [SSG_UPSAMPLE_IN_IN2] =
+        {.name = "in2",
+         .types = SSG_T_SCALAR | SSG_T_COLOR,
+         .optional = 1,
+         .doc = "second low-res image (size of in), upsampled with the same weights"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_UPSAMPLE_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
+    [SSG_UPSAMPLE_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
      .doc = "full-resolution image (size of depth); background 0"},
-    {.name = "out2", .types = SSG_T_SCALAR, .same_as = "in2",
+    [SSG_UPSAMPLE_OUT_OUT2] = {.name = "out2", .types = SSG_T_SCALAR, .same_as = "in2",
      .doc = "in2 upsampled with out's weights (type of in2); all 0, shaped like out, when "
             "in2 is unconnected"},
 };
+_Static_assert(SSG_COUNT(outputs) == SSG_UPSAMPLE_OUTPUTS, "one entry a port enumerator");
 
 const struct ssg_node_desc ssg_node_upsample = {
     .name = "upsample",
@@ -156,12 +168,8 @@ const struct ssg_node_desc ssg_node_upsample = {
            "optional second image in2 (the size of in) is upsampled with exactly the same "
            "weights and fallbacks into out2, computing the weights once for both; out2 is "
            "all 0 (the shape of out) when in2 is unconnected.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
-    .outputs = outputs,
-    .output_count = SSG_COUNT(outputs),
-    .params = SSG_TABLE(params),
-    .params_size = sizeof(struct ssg_upsample_params),
+    SSG_NODE_PORTS(inputs, outputs),
+    SSG_NODE_PARAMS(params, struct ssg_upsample_params),
     .consts_size = sizeof(struct ssg_upsample_consts),
     .check = check,
     .prepare = prepare,

@@ -10,13 +10,21 @@
 #define SSG_UPSAMPLE_MAX_FACTOR 16
 
 /* Input ports, in order. */
-enum {
-    SSG_UPSAMPLE_IN,
-    SSG_UPSAMPLE_DEPTH,
-    SSG_UPSAMPLE_NORMAL,
-    SSG_UPSAMPLE_LOW_DEPTH,
-    SSG_UPSAMPLE_LOW_NORMAL,
-    SSG_UPSAMPLE_IN2
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_upsample_input {
+    SSG_UPSAMPLE_IN_IN,
+    SSG_UPSAMPLE_IN_DEPTH,
+    SSG_UPSAMPLE_IN_NORMAL,
+    SSG_UPSAMPLE_IN_LOW_DEPTH,
+    SSG_UPSAMPLE_IN_LOW_NORMAL,
+    SSG_UPSAMPLE_IN_IN2,
+    SSG_UPSAMPLE_INPUTS
+};
+enum ssg_upsample_output {
+    SSG_UPSAMPLE_OUT_OUT,
+    SSG_UPSAMPLE_OUT_OUT2,
+    SSG_UPSAMPLE_OUTPUTS
 };
 
 struct ssg_upsample_params {

@@ -11,17 +11,12 @@
  * those of `in`) through the same loops: each weight is computed once and applied to all
  * channels, and since every channel's sum is its own chain of the same operations, `out`
  * and `out2` are bit for bit what upsampling each image alone gives. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "upsample.h"
-
-/* See bilateral_cpu.c: no float operation here may trap, and saying so lets GCC turn the
-   selects into vector blends. No result changes. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math")
-#endif
 
 #include "bilateral/bilateral_math.h"
 
@@ -235,11 +230,12 @@ static void band(void *user, int y0, int y1)
 enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                   const struct ssg_io *io)
 {
-    const struct ssg_image *in = io->in[SSG_UPSAMPLE_IN], *dep = io->in[SSG_UPSAMPLE_DEPTH];
-    const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_NORMAL];
-    const struct ssg_image *ldep = io->in[SSG_UPSAMPLE_LOW_DEPTH];
-    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
-    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
+    const struct ssg_image *in = io->in[SSG_UPSAMPLE_IN_IN],
+                           *dep = io->in[SSG_UPSAMPLE_IN_DEPTH];
+    const struct ssg_image *nrm = io->in[SSG_UPSAMPLE_IN_NORMAL];
+    const struct ssg_image *ldep = io->in[SSG_UPSAMPLE_IN_LOW_DEPTH];
+    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_IN_LOW_NORMAL];
+    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN_IN2];
     const int k = ((const struct ssg_upsample_consts *)consts)->factor;
     int n2 = in2 ? in2->channels : 0;
     struct job j = {.c = consts, .channels = in->channels + n2, .depth = dep->data,

@@ -11,20 +11,20 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
 {
     const struct ssg_upsample_consts *c = consts;
     const int k = c->factor;
-    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN2];
-    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_LOW_NORMAL];
+    const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN_IN2];
+    const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_IN_LOW_NORMAL];
     char defines[80];
     snprintf(defines, sizeof defines,
              "#define IN_CH %d\n#define IN2_CH %d\n#define NORMALS %d\n",
-             io->in[SSG_UPSAMPLE_IN]->channels, in2 ? in2->channels : 0,
+             io->in[SSG_UPSAMPLE_IN_IN]->channels, in2 ? in2->channels : 0,
              lnrm && c->normal_power > 0.0f);
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "upsample.glsl", defines);
-    ssg_gl_input(&p, "src", io->in[SSG_UPSAMPLE_IN]);
+    ssg_gl_input(&p, "src", io->in[SSG_UPSAMPLE_IN_IN]);
     ssg_gl_input(&p, "src2", in2);
-    ssg_gl_input(&p, "depth", io->in[SSG_UPSAMPLE_DEPTH]);
-    ssg_gl_input(&p, "normal", io->in[SSG_UPSAMPLE_NORMAL]);
-    ssg_gl_input(&p, "low_depth", io->in[SSG_UPSAMPLE_LOW_DEPTH]);
+    ssg_gl_input(&p, "depth", io->in[SSG_UPSAMPLE_IN_DEPTH]);
+    ssg_gl_input(&p, "normal", io->in[SSG_UPSAMPLE_IN_NORMAL]);
+    ssg_gl_input(&p, "low_depth", io->in[SSG_UPSAMPLE_IN_LOW_DEPTH]);
     ssg_gl_input(&p, "low_normal", lnrm);
     ssg_gl_output(&p, "dst", io->out[0]);
     ssg_gl_output(&p, "dst2", io->out[1]);

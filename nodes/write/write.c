@@ -14,27 +14,29 @@
 #include "write.h"
 
 static const struct ssg_port_desc inputs[] = {
-    {.name = "image", .types = SSG_T_COLOR | SSG_T_SCALAR | SSG_T_VECTOR,
+    [SSG_WRITE_IN_IMAGE] = {.name = "image", .types = SSG_T_COLOR | SSG_T_SCALAR | SSG_T_VECTOR,
      .doc = "main image: EXR channels R,G,B (Y when scalar) and the PNG preview"},
 };
+_Static_assert(SSG_COUNT(inputs) == SSG_WRITE_INPUTS, "one entry a port enumerator");
 
 static const char *const tonemaps[] = {"clamp", "reinhard", "aces", NULL};
 static const char *const compressions[] = {"zip", "none", "rle", "piz", NULL};
 
 static const struct ssg_param_desc param_table[] = {
-    {.name = "name", SSG_FIELD_STRING(struct ssg_write_params, name),
-     .required = 1, .help = "file stem: writes <out>/<name>.exr and <out>/<name>.png"},
-    {.name = "exposure", SSG_FIELD_FLOAT(struct ssg_write_params, exposure), .def = 0, .min = -20, .max = 20,
-     .unit = "stops", .help = "PNG only: values are scaled by 2^exposure before tone mapping"},
+    {.name = "name", SSG_FIELD_STRING(struct ssg_write_params, name), .required = 1,
+     .help = "file stem: writes <out>/<name>.exr and <out>/<name>.png"},
+    {.name = "exposure", SSG_FIELD_FLOAT(struct ssg_write_params, exposure), .def = 0,
+     .min = -20, .max = 20, .unit = "stops",
+     .help = "PNG only: values are scaled by 2^exposure before tone mapping"},
     {.name = "tonemap", SSG_FIELD_ENUM(struct ssg_write_params, tonemap),
      .def = SSG_TONEMAP_ACES, .choices = tonemaps,
      .help = "PNG only: clamp = min(x,1), reinhard = x/(1+x), aces = Narkowicz 2015 fit"},
-    {.name = "png", SSG_FIELD_BOOL(struct ssg_write_params, png),
-     .def = 1, .help = "write the 8-bit sRGB PNG preview"},
-    {.name = "exr", SSG_FIELD_BOOL(struct ssg_write_params, exr),
-     .def = 1, .help = "write the 32-bit float EXR with all layers"},
-    {.name = "compression", SSG_FIELD_ENUM(struct ssg_write_params, compression), .def = SSG_EXR_ZIP,
-     .choices = compressions,
+    {.name = "png", SSG_FIELD_BOOL(struct ssg_write_params, png), .def = 1,
+     .help = "write the 8-bit sRGB PNG preview"},
+    {.name = "exr", SSG_FIELD_BOOL(struct ssg_write_params, exr), .def = 1,
+     .help = "write the 32-bit float EXR with all layers"},
+    {.name = "compression", SSG_FIELD_ENUM(struct ssg_write_params, compression),
+     .def = SSG_EXR_ZIP, .choices = compressions,
      .help = "EXR compression, all lossless: zip is small, none is ~5x faster to write"},
 };
 
@@ -100,12 +102,10 @@ const struct ssg_node_desc ssg_node_write = {
            "is created if missing. Files are written under a "
            "temporary name and renamed, so a failed run leaves no partial file; the same "
            "pixels always give the same bytes.",
-    .inputs = inputs,
-    .input_count = SSG_COUNT(inputs),
+    SSG_NODE_INPUTS(inputs),
     .extra_inputs = 1,
     .extra_same_size = 1, /* one EXR part: every layer has the frame's size */
-    .params = SSG_TABLE(param_table),
-    .params_size = sizeof(struct ssg_write_params),
+    SSG_NODE_PARAMS(param_table, struct ssg_write_params),
     .is_sink = 1,
     .check = write_check,
     .output_files = output_files,

@@ -8,6 +8,13 @@
 
 #include "graph/node.h"
 
+/* Ports: the descriptor's arrays are indexed by these (one naming rule:
+   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
+enum ssg_write_input {
+    SSG_WRITE_IN_IMAGE,
+    SSG_WRITE_INPUTS
+};
+
 /* Parameters as the graph file sets them (see the table in write.c). */
 struct ssg_write_params {
     char name[SSG_STR_MAX]; /* file stem: writes <out_dir>/<name>.exr and .png; required */

@@ -76,10 +76,12 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     struct ssg_tmp staged[2];
     int n = 0;
     enum ssg_err err = ssg_make_dirs(dir, ctx->diags);
-    if (!err && p->exr && !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
+    if (!err && p->exr &&
+        !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
         if (!(err = stage_exr(ctx, io, p, path, &staged[n])))
             n++;
-    if (!err && p->png && !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
+    if (!err && p->png &&
+        !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
         if (!(err = ssg_png_stage(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
                                   &staged[n], ctx->diags)))
             n++;

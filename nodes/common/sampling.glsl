@@ -1,0 +1,90 @@
+// sampling.glsl - the screen-space sampling the `ssao`, `hbao`, `ssdo` and `bounce` shaders
+// share (#include "sampling.glsl" after their uniforms; core/gl/gl_program.c resolves it),
+// the GL twin of nodes/common/sampling.h and of the loops of ssao_cpu.c and
+// ssdo_sampling.h: the same operations in the same order (`precise`), so that both backends
+// start from the same bits. It declares the inputs every sampling node has (bound by
+// name by the C side); a node without a kernel defines SSG_SAMPLING_NO_KERNEL first.
+
+uniform sampler2DArray position; // view-space position (z alone where depth is unbound)
+uniform sampler2DArray depth;    // linear depth, when depth_bound
+uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin), when rotation_bound
+uniform bool depth_bound;
+uniform bool rotation_bound;
+#ifndef SSG_SAMPLING_NO_KERNEL
+uniform sampler2DArray kernel;   // K x 1, 3 layers: the samples
+#endif
+
+// The scene depth at pixel q: the depth input, or -position.z.
+float ssg_scene_depth(ivec2 q)
+{
+    return depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
+}
+
+// The rotation (cos, sin) of the tile at pixel p; none bound: no rotation.
+vec2 ssg_tile_rotation(ivec2 p)
+{
+    if (!rotation_bound)
+        return vec2(1.0, 0.0);
+    int tile = textureSize(rotation, 0).x;
+    return ssg_load2(rotation, p % tile);
+}
+
+// A pixel of depth dp and normal N is a surface when dp is a plausible depth and N is not
+// zero: false for the background (depth 0, no normal) or garbage. A surface's normal that
+// is not unit is normalised (the CPU does so for its whole chunk).
+bool ssg_surface_normal(float dp, inout vec3 N)
+{
+    precise float nn = N.x * N.x + N.y * N.y + N.z * N.z;
+    if (!(dp > 0.0 && dp <= 3.0e38 && nn > 1e-12))
+        return false;
+    precise float ninv = 1.0 / sqrt(nn);
+    if (abs(nn - 1.0) > 1e-5)
+        N = vec3(N.x * ninv, N.y * ninv, N.z * ninv);
+    return true;
+}
+
+#ifndef SSG_SAMPLING_NO_KERNEL
+// Kernel sample s (tangent space, the hemisphere about +z).
+vec3 ssg_kernel_sample(int s)
+{
+    return vec3(texelFetch(kernel, ivec3(s, 0, 0), 0).r,
+                texelFetch(kernel, ivec3(s, 0, 1), 0).r,
+                texelFetch(kernel, ivec3(s, 0, 2), 0).r);
+}
+#endif
+
+// Duff et al.'s branch-free orthonormal basis about unit N ("Building an Orthonormal
+// Basis, Revisited", JCGT 2017; -0 counts as negative, as copysignf does): T = t, B = b,
+// T x B = N, before the tile's turn.
+void ssg_tangent_basis(vec3 N, out vec3 t, out vec3 b)
+{
+    float sgn = (floatBitsToUint(N.z) >> 31) != 0u ? -1.0 : 1.0;
+    precise float a = -1.0 / (sgn + N.z);
+    precise float c = N.x * N.y * a;
+    precise float t0 = 1.0 + sgn * N.x * N.x * a, t1 = sgn * c, t2 = -sgn * N.x;
+    precise float b1 = sgn + N.y * N.y * a;
+    t = vec3(t0, t1, t2);
+    b = vec3(c, b1, -N.y);
+}
+
+// Projects kernel sample s through a pixel's projective coefficients (Z - bias = dot(cz,
+// (1, s)), u Z = dot(cu, (1, s)), v Z = dot(cv, (1, s))): false behind the camera or off
+// screen; else the pixel q it lands on and zb = Z - bias, the depth an occluder must be
+// nearer than.
+bool ssg_project_sample(vec4 cz, vec4 cu, vec4 cv, vec3 s, float bias, out ivec2 q,
+                        out float zb)
+{
+    precise float zs = cz.x + cz.y * s.x + cz.z * s.y + cz.w * s.z;
+    precise float z = zs + bias;
+    precise float nu = cu.x + cu.y * s.x + cu.z * s.y + cu.w * s.z;
+    precise float nv = cv.x + cv.y * s.x + cv.z * s.y + cv.w * s.z;
+    precise float inv = 1.0 / z;
+    precise float u = nu * inv, v = nv * inv;
+    zb = zs;
+    q = ivec2(0);
+    vec2 size = vec2(ssg_grid);
+    if (!(z > 0.0 && u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
+        return false;
+    q = ivec2(int(u), int(v));
+    return true;
+}

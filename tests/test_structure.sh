@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The structure issue 14 set up stays: core/ in its layers; no source file over 600 lines;
+# every parameter table entry states its storage through a type-checked SSG_FIELD_* macro
+# (never a bare .offset); no node fails on an image's shape at run time (check() and the
+# executor's verification own shapes, core/graph/node.h); shaders share code through
+# #include of nodes/common/sampling.glsl rather than copies.
+set -u
+source "$(dirname "$0")/lib.sh" "ssg_test_structure"
+
+files() { if git rev-parse --git-dir > /dev/null 2>&1; then git ls-files "$@"; else
+          find . -path ./build\* -prune -o -type f -print | sed 's|^\./||'; fi; }
+
+layers=$(find core -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | sort | tr '\n' ' ')
+[ "$layers" = "gl graph io lang scene " ] || fail "core/ layers are '$layers', expected gl graph io lang scene"
+loose=$(find core -maxdepth 1 -type f ! -name ssgraph.h ! -name errors.def)
+[ -z "$loose" ] || fail "files directly in core/ (put them in a layer): $loose"
+
+long=$(files | grep -E '^(core|nodes|cli|tests|bench|fuzz|tools)/.*\.(c|h|cc|glsl|sh|py)$' |
+       while read -r f; do n=$(wc -l < "$f"); [ "$n" -le 600 ] || echo "$f ($n lines)"; done)
+[ -z "$long" ] || fail "source files over 600 lines: $long"
+
+bare=$(files | grep -E '^(core|nodes)/.*\.(c|h)$' | xargs grep -n '\.offset *= ' |
+       grep -v '^core/lang/params\.h:' | head -5)
+[ -z "$bare" ] || fail "parameter tables with a bare .offset (use SSG_FIELD_*): $bare"
+
+shape_fail=$(files | grep -E '^nodes/.*\.(c|h)$' |
+             xargs grep -nE 'ssg_node_fail\(ctx, SSG_E_(SIZE|CHANNELS)' | head -5)
+[ -z "$shape_fail" ] || fail "nodes failing on shapes at run time: $shape_fail"
+
+for shader in nodes/ssao/ssao.glsl nodes/hbao/hbao.glsl nodes/ssdo/ssdo.glsl; do
+    grep -q '^#include "sampling.glsl"' "$shader" || fail "$shader does not include sampling.glsl"
+    grep -qE '^(float|vec3) (scene_depth|kernel_sample)\(' "$shader" &&
+        fail "$shader defines its own copy of a sampling.glsl helper"
+done
+finish test_structure
