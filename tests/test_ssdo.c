@@ -5,7 +5,7 @@
  *
  * - Open planes: no sample is occluded (a sample above the plane lies between the camera
  *   and the plane along its own ray; the pixel lookup errs by less than the bias, as
- *   test_ssao.c's depth_bound shows for these same planes), and the modulation's numerator
+ *   ssao_planes.h's depth_bound shows for these same planes), and the modulation's numerator
  *   and denominator are the same sums in the same order: exactly 1, channels 1 and 3; the
  *   bounce is exactly 0.
  * - Radiance on an open plane without a scene (white environment of radiance 1):
@@ -188,7 +188,7 @@ static double wall_model(const struct ssg_image *k, double a, double radius)
    from the wall; the row mean of the modulation (channels=1, white environment) must lie
    within the case-3 model at a and at a + margin (the bias and the lookup can spare samples
    behind the wall by less than (bias + lookup error) |ray|; 0.03 covers 0.02 + the
-   corner's lookup error, below 0.005 by test_ssao.c's depth_bound, times |ray| < 1.2),
+   corner's lookup error, below 0.005 by ssao_planes.h's depth_bound, times |ray| < 1.2),
    widened by four standard errors of a 1024-sample estimate (docs/analytic.md 5); rows with
    a >= radius are exactly 1, rows nearer the edge darker. */
 static void test_corner(void)

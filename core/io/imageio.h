@@ -1,4 +1,5 @@
-/* imageio.h - image files through OpenImageIO (core/io/imageio_adapter.cc), behind a C header.
+/* imageio.h - image files through OpenImageIO (core/io/imageio_adapter.cc reads them,
+ * imageio_write_adapter.cc writes them), behind a C header.
  *
  * Reading is ssg_image_read (ssgraph.h). Writing covers what the `write` node needs: a
  * multi-layer 32-bit float EXR (ZIP, zlib level 1) and an 8-bit PNG preview whose tone

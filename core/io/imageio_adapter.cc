@@ -1,24 +1,20 @@
-/* imageio_adapter.cc - reading and writing image files with OpenImageIO 2.4 (imageio.h,
- * ssg_image_read in ssgraph.h). The only C++ here is the OpenImageIO calls and the
- * try/catch that keeps exceptions inside; everything the rest of ssgraph sees is C.
+/* imageio_adapter.cc - reading image files with OpenImageIO 2.4 (ssg_image_read in
+ * ssgraph.h, imageio.h); writing is imageio_write_adapter.cc, and what both use is in
+ * imageio_adapter.h. The only C++ here is the OpenImageIO calls and the try/catch that
+ * keeps exceptions inside; everything the rest of ssgraph sees is C.
  *
  * Pixels cross in bands of scanlines (BAND_ROWS rows of interleaved floats) so a big file
  * never needs a second full-size buffer next to the planar image. */
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <memory>
 #include <new>
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 extern "C" {
@@ -29,86 +25,13 @@ extern "C" {
 #include "lang/diag.h"
 }
 
+#include "io/imageio_adapter.h"
+
 using OIIO::ImageInput;
-using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
 namespace {
-
-/* Rows moved per OpenImageIO call: several 16-line ZIP blocks, which OpenEXR compresses
-   on its own threads in parallel (deterministically: blocks are independent), while the
-   interleaved staging buffer stays small (1920 wide, 18 channels: 8.8 MB). */
-const int BAND_ROWS = 64;
-
-/* ---- colour ------------------------------------------------------------------------ */
-
-/* IEC 61966-2-1 transfer functions. */
-float srgb_encode(float v)
-{
-    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
-float srgb_decode(float c)
-{
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-/* Tone curve of an exposure-scaled value v. Inputs are capped at 1e4 so the rational
-   curves never see inf/inf; every curve is already at 1 (to float precision) long before. */
-float tonemap_scaled(enum ssg_tonemap tonemap, float v)
-{
-    if (!(v > 0.0f)) /* negative, zero, NaN */
-        return 0.0f;
-    v = std::min(v, 1e4f);
-    float d;
-    switch (tonemap) {
-    case SSG_TONEMAP_REINHARD:
-        d = v / (1.0f + v);
-        break;
-    case SSG_TONEMAP_ACES: /* Narkowicz, "ACES Filmic Tone Mapping Curve", 2015 */
-        d = (v * (2.51f * v + 0.03f)) / (v * (2.43f * v + 0.59f) + 0.14f);
-        break;
-    case SSG_TONEMAP_CLAMP:
-    default:
-        d = v;
-        break;
-    }
-    return std::min(d, 1.0f);
-}
-
-unsigned char to_srgb8(enum ssg_tonemap tonemap, float scale, float x)
-{
-    float s = srgb_encode(tonemap_scaled(tonemap, x * scale));
-    int code = (int)(s * 255.0f + 0.5f);
-    return (unsigned char)std::max(0, std::min(255, code));
-}
-
-/* ---- small helpers ----------------------------------------------------------------- */
-
-/* Reports an error caught from OpenImageIO or the C++ runtime. */
-enum ssg_err report_exception(struct ssg_diags *diags, const char *path, enum ssg_err code,
-                              const char *what)
-{
-    ssg_diag_file(diags, code, path, "%s", what);
-    return code;
-}
-
-/* The message of an ImageInput/ImageOutput error, or OpenImageIO's global one; clears both
-   so OpenImageIO never prints them itself later. */
-template <class T> std::string oiio_error(const T *io)
-{
-    std::string msg = io ? io->geterror() : std::string();
-    std::string global = OIIO::geterror();
-    if (msg.empty())
-        msg = global;
-    if (msg.empty())
-        msg = "unknown OpenImageIO error";
-    std::replace(msg.begin(), msg.end(), '\n', ' ');
-    return msg;
-}
-
-/* ---- reading ----------------------------------------------------------------------- */
 
 /* Position of a channel-name suffix in the canonical order of its layer (R,G,B,A or
    X,Y,Z,W); 4 for anything else, which then keeps the file's order. */
@@ -341,250 +264,9 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
     return SSG_OK;
 }
 
-/* ---- writing ----------------------------------------------------------------------- */
-
-/* Fills `band` with `rows` interleaved scanlines starting at y0. */
-using FillBand = void (*)(const void *user, int y0, int rows, void *band);
-
-/* Writes spec into the staged temporary t (files.h), through a FILE* of ours that
-   OpenImageIO writes via an I/O proxy: so every write error (a full disk, a file size
-   limit) is seen here, which OpenImageIO's PNG writer would otherwise drop. On return t
-   is closed and synced (SSG_OK) or discarded. */
-enum ssg_err write_staged(const ImageSpec &spec, TypeDesc format, FillBand fill,
-                          const void *user, struct ssg_tmp *t, struct ssg_diags *diags)
-{
-    std::string why;
-    FILE *f = fdopen(t->fd, "wb");
-    if (!f) {
-        ssg_diag_file(diags, SSG_E_IO, t->target, "cannot write image: %s",
-                      std::strerror(errno));
-        ssg_tmp_discard(t, 1);
-        return SSG_E_IO;
-    }
-    t->fd = -1; /* f owns the descriptor now */
-    try {
-        OIIO::Filesystem::IOFile proxy(f, OIIO::Filesystem::IOProxy::Write);
-        std::unique_ptr<ImageOutput> out = ImageOutput::create(t->path);
-        bool ok = out && out->supports("ioproxy") && out->set_ioproxy(&proxy) &&
-                  out->open(t->path, spec);
-        size_t row_bytes = (size_t)spec.width * (size_t)spec.nchannels * format.size();
-        std::vector<unsigned char> band(ok ? row_bytes * BAND_ROWS : 0);
-        for (int y0 = 0; ok && y0 < spec.height; y0 += BAND_ROWS) {
-            int rows = std::min(BAND_ROWS, spec.height - y0);
-            fill(user, y0, rows, band.data());
-            ok = out->write_scanlines(y0, y0 + rows, 0, format, band.data());
-        }
-        ok = ok && out->close();
-        if (!ok)
-            why = out ? oiio_error(out.get()) : "no writer for this format";
-    } catch (const std::bad_alloc &) {
-        why = "out of memory";
-    } catch (const std::exception &e) {
-        why = e.what()[0] ? e.what() : "unknown C++ exception";
-    } catch (...) {
-        why = "unknown C++ exception";
-    }
-    bool flushed = fflush(f) == 0 && !ferror(f) && fsync(fileno(f)) == 0;
-    int saved = errno;
-    flushed = (fclose(f) == 0) && flushed;
-    if (why.empty() && !flushed)
-        why = std::strerror(saved ? saved : errno);
-    if (!why.empty()) {
-        ssg_diag_file(diags, SSG_E_IO, t->target, "cannot write image: %s", why.c_str());
-        ssg_tmp_discard(t, 1);
-        return SSG_E_IO;
-    }
-    return SSG_OK;
-}
-
-/* Where each EXR channel's values come from. */
-struct ExrSource {
-    std::vector<const float *> planes; /* one per channel, in channel order */
-    int width;
-};
-
-void fill_exr_band(const void *user, int y0, int rows, void *band)
-{
-    const ExrSource *s = (const ExrSource *)user;
-    size_t n = s->planes.size(), w = (size_t)s->width;
-    float *dst = (float *)band;
-    for (int r = 0; r < rows; r++) {
-        size_t row = (size_t)(y0 + r) * w;
-        float *line = dst + (size_t)r * w * n;
-        for (size_t c = 0; c < n; c++)
-            for (size_t x = 0; x < w; x++)
-                line[x * n + c] = s->planes[c][row + x];
-    }
-}
-
-bool is_main(const struct ssg_exr_layer &l)
-{
-    return !l.name || !l.name[0];
-}
-
-/* Channel suffixes of a layer, or NULL when its channel count does not fit. */
-const char *const *layer_suffixes(const struct ssg_exr_layer &l)
-{
-    static const char *const gray[] = {"Y"}, *const rgba[] = {"R", "G", "B", "A"},
-                             *const xyz[] = {"X", "Y", "Z"};
-    const char *const *rgb = rgba;
-    int ch = l.image->channels;
-    if (is_main(l))
-        return ch == 1 ? gray : ch >= 2 && ch <= 4 ? rgba : nullptr;
-    switch (l.kind) {
-    case SSG_LAYER_SCALAR: return ch == 1 ? gray : nullptr;
-    case SSG_LAYER_VECTOR: return ch == 3 ? xyz : nullptr;
-    case SSG_LAYER_COLOR: return ch == 3 ? rgb : nullptr;
-    }
-    return nullptr;
-}
-
-/* Checks the layers against each other; reports every problem. */
-enum ssg_err check_layers(const char *path, const struct ssg_exr_layer *layers, int count,
-                          struct ssg_diags *diags)
-{
-    enum ssg_err first = SSG_OK;
-    auto fail = [&](enum ssg_err code) {
-        if (!first)
-            first = code;
-    };
-    if (count < 1) {
-        ssg_diag_file(diags, SSG_E_VALUE, path, "no layers to write");
-        return SSG_E_VALUE;
-    }
-    for (int i = 0; i < count; i++) {
-        const struct ssg_exr_layer &l = layers[i];
-        const char *name = is_main(l) ? "(main)" : l.name;
-        if (!l.image || !l.image->data) {
-            ssg_diag_file(diags, SSG_E_VALUE, path, "layer '%s' has no image", name);
-            fail(SSG_E_VALUE);
-            continue;
-        }
-        if (l.image->width != layers[0].image->width ||
-            l.image->height != layers[0].image->height) {
-            ssg_diag_file(diags, SSG_E_SIZE, path, "layer '%s' is %d x %d, expected %d x %d",
-                          name, l.image->width, l.image->height, layers[0].image->width,
-                          layers[0].image->height);
-            fail(SSG_E_SIZE);
-        }
-        if (!layer_suffixes(l)) {
-            ssg_diag_file(diags, SSG_E_CHANNELS, path,
-                          "layer '%s' has %d channels, expected %s", name, l.image->channels,
-                          is_main(l) ? "1 to 4" : l.kind == SSG_LAYER_SCALAR ? "1" : "3");
-            fail(SSG_E_CHANNELS);
-        }
-        if (!is_main(l) && std::strchr(l.name, '.')) {
-            ssg_diag_file(diags, SSG_E_VALUE, path, "layer name '%s' contains a '.'", name);
-            fail(SSG_E_VALUE);
-        }
-        for (int j = 0; j < i; j++)
-            if (is_main(l) == is_main(layers[j]) &&
-                (is_main(l) || std::strcmp(l.name, layers[j].name) == 0)) {
-                ssg_diag_file(diags, SSG_E_DUPLICATE, path, "layer '%s' is given twice", name);
-                fail(SSG_E_DUPLICATE);
-                break;
-            }
-    }
-    return first;
-}
-
-const char *compression_name(enum ssg_exr_compression c)
-{
-    switch (c) {
-    case SSG_EXR_NONE: return "none";
-    case SSG_EXR_RLE: return "rle";
-    case SSG_EXR_PIZ: return "piz";
-    case SSG_EXR_ZIP: break;
-    }
-    /* ZIP at zlib level 1: on the frame's float layers it is about a third faster than
-       the default level for files about 1.5% larger. */
-    return "zip:1";
-}
-
-enum ssg_err stage_exr(const char *path, const struct ssg_exr_layer *layers, int count,
-                       enum ssg_exr_compression compression, struct ssg_tmp *t,
-                       struct ssg_diags *diags)
-{
-    enum ssg_err err = check_layers(path, layers, count, diags);
-    if (err)
-        return err;
-    ExrSource src;
-    src.width = layers[0].image->width;
-    std::vector<std::string> names;
-    for (int i = 0; i < count; i++) {
-        const char *const *suffixes = layer_suffixes(layers[i]);
-        for (int c = 0; c < layers[i].image->channels; c++) {
-            std::string prefix = is_main(layers[i]) ? "" : std::string(layers[i].name) + ".";
-            names.push_back(prefix + suffixes[c]);
-            src.planes.push_back(ssg_image_plane(layers[i].image, c));
-        }
-    }
-    ImageSpec spec(src.width, layers[0].image->height, (int)names.size(), TypeDesc::FLOAT);
-    spec.channelnames = names;
-    spec.attribute("compression", compression_name(compression));
-    /* OpenImageIO stamps the current time as capDate unless DateTime is set: an empty one
-       keeps the bytes the same from run to run. */
-    spec.attribute("DateTime", "");
-    if (ssg_tmp_create(path, ".exr", "image", t, diags))
-        return SSG_E_IO;
-    return write_staged(spec, TypeDesc::FLOAT, fill_exr_band, &src, t, diags);
-}
-
-struct PngSource {
-    const struct ssg_image *image;
-    enum ssg_tonemap tonemap;
-    float scale; /* 2^exposure */
-};
-
-void fill_png_band(const void *user, int y0, int rows, void *band)
-{
-    const PngSource *s = (const PngSource *)user;
-    size_t n = (size_t)s->image->channels, w = (size_t)s->image->width;
-    unsigned char *dst = (unsigned char *)band;
-    for (int r = 0; r < rows; r++) {
-        size_t row = (size_t)(y0 + r) * w;
-        unsigned char *line = dst + (size_t)r * w * n;
-        for (size_t c = 0; c < n; c++) {
-            const float *plane = ssg_image_plane(s->image, (int)c) + row;
-            for (size_t x = 0; x < w; x++)
-                line[x * n + c] = to_srgb8(s->tonemap, s->scale, plane[x]);
-        }
-    }
-}
-
-enum ssg_err stage_png(const char *path, const struct ssg_image *image,
-                       enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
-                       struct ssg_diags *diags)
-{
-    if (!image || !image->data || (image->channels != 1 && image->channels != 3)) {
-        ssg_diag_file(diags, SSG_E_CHANNELS, path,
-                      "a PNG preview needs a 1- or 3-channel image, got %d channels",
-                      image ? image->channels : 0);
-        return SSG_E_CHANNELS;
-    }
-    PngSource src = {image, tonemap, std::exp2(exposure)};
-    ImageSpec spec(image->width, image->height, image->channels, TypeDesc::UINT8);
-    /* Nothing time- or host-dependent: OpenImageIO writes a tIME chunk only from DateTime. */
-    spec.erase_attribute("DateTime");
-    spec.erase_attribute("Software");
-    if (ssg_tmp_create(path, ".png", "image", t, diags))
-        return SSG_E_IO;
-    return write_staged(spec, TypeDesc::UINT8, fill_png_band, &src, t, diags);
-}
-
 } /* namespace */
 
 /* ---- the C interface ------------------------------------------------------------------ */
-
-extern "C" float ssg_tonemap_apply(enum ssg_tonemap tonemap, float exposure, float x)
-{
-    return tonemap_scaled(tonemap, x * std::exp2(exposure));
-}
-
-extern "C" unsigned char ssg_tonemap_to_srgb8(enum ssg_tonemap tonemap, float exposure, float x)
-{
-    return to_srgb8(tonemap, std::exp2(exposure), x);
-}
 
 extern "C" enum ssg_err ssg_image_read(const char *path, const char *layer,
                                        struct ssg_image **out, struct ssg_diags *diags)
@@ -604,68 +286,4 @@ extern "C" enum ssg_err ssg_image_read(const char *path, const char *layer,
     } catch (...) {
         return report_exception(diags, path, SSG_E_IMAGE, "unknown error while reading");
     }
-}
-
-/* A C++ exception from staging becomes a diagnostic; the temporary goes with it. */
-template <class F>
-enum ssg_err guarded_stage(const char *path, struct ssg_tmp *t, struct ssg_diags *diags,
-                           F stage)
-{
-    t->fd = t->lock_fd = -1;
-    t->slot = -1;
-    enum ssg_err e;
-    try {
-        return stage();
-    } catch (const std::bad_alloc &) {
-        e = report_exception(diags, path, SSG_E_NOMEM, "out of memory while writing");
-    } catch (const std::exception &ex) {
-        e = report_exception(diags, path, SSG_E_IO, ex.what());
-    } catch (...) {
-        e = report_exception(diags, path, SSG_E_IO, "unknown error while writing");
-    }
-    ssg_tmp_discard(t, 1);
-    return e;
-}
-
-extern "C" enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers,
-                                      int count, enum ssg_exr_compression compression,
-                                      struct ssg_tmp *t, struct ssg_diags *diags)
-{
-    return guarded_stage(path, t, diags, [&] {
-        return stage_exr(path, layers, count, compression, t, diags);
-    });
-}
-
-extern "C" enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
-                                      enum ssg_tonemap tonemap, float exposure,
-                                      struct ssg_tmp *t, struct ssg_diags *diags)
-{
-    return guarded_stage(path, t, diags, [&] {
-        return stage_png(path, image, tonemap, exposure, t, diags);
-    });
-}
-
-extern "C" enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers,
-                                      int count, struct ssg_diags *diags)
-{
-    return ssg_exr_write_compressed(path, layers, count, SSG_EXR_ZIP, diags);
-}
-
-extern "C" enum ssg_err ssg_exr_write_compressed(const char *path,
-                                                 const struct ssg_exr_layer *layers, int count,
-                                                 enum ssg_exr_compression compression,
-                                                 struct ssg_diags *diags)
-{
-    struct ssg_tmp t;
-    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, &t, diags);
-    return e ? e : ssg_tmp_commit(&t, 1, diags);
-}
-
-extern "C" enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
-                                      enum ssg_tonemap tonemap, float exposure,
-                                      struct ssg_diags *diags)
-{
-    struct ssg_tmp t;
-    enum ssg_err e = ssg_png_stage(path, image, tonemap, exposure, &t, diags);
-    return e ? e : ssg_tmp_commit(&t, 1, diags);
 }

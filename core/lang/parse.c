@@ -1,5 +1,5 @@
-/* parse.c - the lexer and statement parser shared by graph and scene files (see parse.h).
- * The whole text is tokenised first (tokens point into it), then statements are read with
+/* parse.c - the statement parser shared by graph and scene files (see parse.h), over the
+ * tokens of lex.c (lex.h). The whole text is tokenised first, then statements are read with
  * one token of lookahead. After an error the parser skips to the end of the statement and
  * goes on, so every problem in a file is reported in one run. */
 #include <errno.h>
@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lang/lex.h"
 #include "lang/parse.h"
 
 /* Limits on what a text may ask of the parser, each refused with a located message: lists
@@ -15,49 +16,13 @@
 enum {
     MAX_FILE_BYTES = 16 * 1024 * 1024,
     MAX_LIST_NESTING = 16,   /* [[...]] levels in one value */
-    MAX_LINE_BYTES = 65536,  /* bytes in one physical line */
-};
-
-enum tok_kind {
-    T_EOF,
-    T_NEWLINE,
-    T_IDENT,
-    T_NUMBER,
-    T_STRING,
-    T_LPAREN,
-    T_RPAREN,
-    T_LBRACK,
-    T_RBRACK,
-    T_COMMA,
-    T_EQ,
-    T_DOT,
-};
-
-static const char *const tok_texts[] = {
-    "end of file", "end of line", "a name", "a number", "a string", "'('", "')'", "'['",
-    "']'", "','", "'='", "'.'",
-};
-
-struct token {
-    enum tok_kind kind;
-    const char *at;
-    size_t len;
 };
 
 struct parser {
-    struct ssg_arena *arena;
-    const struct ssg_source *src;
-    struct ssg_diags *diags;
-    struct token *toks;
-    int count, cap, pos;
-    int errors;
+    struct lexer lex; /* the tokens, and the error count both halves add to */
+    int pos;
     int nesting;  /* lists open around the value being parsed */
 };
-
-int ssg_tok_eq(const char *tok, size_t len, const char *s)
-{
-    return tok && strlen(s) == len && memcmp(tok, s, len) == 0;
-}
 
 const char *ssg_value_kind_text(enum ssg_value_kind kind)
 {
@@ -73,7 +38,7 @@ const char *ssg_value_kind_text(enum ssg_value_kind kind)
 
 static struct ssg_loc loc_of(const struct parser *ps, const char *at)
 {
-    struct ssg_loc loc = {ps->src, at};
+    struct ssg_loc loc = {ps->lex.src, at};
     return loc;
 }
 
@@ -83,163 +48,20 @@ static void error_at(struct parser *ps, const char *at, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    ssg_diag_vat(ps->diags, SSG_E_SYNTAX, loc_of(ps, at), fmt, ap);
+    ssg_syntax_verror(&ps->lex, at, fmt, ap);
     va_end(ap);
-    ps->errors++;
 }
-
-/* ---- lexer ---- */
-
-static int is_ident_start(char c)
-{
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}
-
-static int is_digit(char c)
-{
-    return c >= '0' && c <= '9';
-}
-
-static int push_token(struct parser *ps, enum tok_kind kind, const char *at, size_t len)
-{
-    if (ps->count == ps->cap) {
-        int cap = ps->cap ? ps->cap * 2 : 256;
-        struct token *t = ssg_arena_alloc(ps->arena, (size_t)cap * sizeof *t);
-        if (!t)
-            return 0;
-        if (ps->count)
-            memcpy(t, ps->toks, (size_t)ps->count * sizeof *t);
-        ps->toks = t;
-        ps->cap = cap;
-    }
-    ps->toks[ps->count++] = (struct token){kind, at, len};
-    return 1;
-}
-
-/* Length of a number at p (sign, digits, fraction, exponent), 0 if none. */
-static size_t number_length(const char *p)
-{
-    const char *s = p;
-    if (*s == '-' || *s == '+')
-        s++;
-    const char *digits = s;
-    while (is_digit(*s))
-        s++;
-    if (*s == '.' && is_digit(s[1])) {
-        s++;
-        while (is_digit(*s))
-            s++;
-    }
-    if (s == digits)
-        return 0;
-    if ((*s == 'e' || *s == 'E') &&
-        (is_digit(s[1]) || ((s[1] == '-' || s[1] == '+') && is_digit(s[2])))) {
-        s += 2;
-        while (is_digit(*s))
-            s++;
-    }
-    return (size_t)(s - p);
-}
-
-static size_t string_length(struct parser *ps, const char *p)
-{
-    const char *s = p + 1;
-    while (*s && *s != '"' && *s != '\n') {
-        if (*s == '\\' && s[1] && s[1] != '\n')
-            s++;
-        s++;
-    }
-    if (*s != '"') {
-        error_at(ps, p, "unterminated string (expected a closing '\"' on the same line)");
-        return (size_t)(s - p);
-    }
-    return (size_t)(s - p) + 1;
-}
-
-static enum tok_kind punct_kind(char c)
-{
-    switch (c) {
-    case '(': return T_LPAREN;
-    case ')': return T_RPAREN;
-    case '[': return T_LBRACK;
-    case ']': return T_RBRACK;
-    case ',': return T_COMMA;
-    case '=': return T_EQ;
-    case '.': return T_DOT;
-    default: return T_EOF;
-    }
-}
-
-/* Newlines inside (...) or [...] do not end a statement, so long calls may wrap. */
-static int tokenize(struct parser *ps, const char *p, const char *end)
-{
-    int depth = 0;
-    const char *line = p;
-    while (p < end) {
-        char c = *p;
-        size_t n;
-        if (p - line > MAX_LINE_BYTES) {
-            error_at(ps, line, "line longer than %d bytes (expected a text file of "
-                     "statements)", MAX_LINE_BYTES);
-            break; /* reported: the rest of such a file is not worth reading */
-        }
-        if (c == ' ' || c == '\t' || c == '\r') {
-            p++;
-        } else if (c == '#') {
-            while (p < end && *p != '\n')
-                p++;
-        } else if (c == '\n') {
-            if (depth == 0 && !push_token(ps, T_NEWLINE, p, 1))
-                return 0;
-            p++;
-            line = p;
-        } else if (is_ident_start(c)) {
-            const char *s = p;
-            while (is_ident_start(*p) || is_digit(*p))
-                p++;
-            if (!push_token(ps, T_IDENT, s, (size_t)(p - s)))
-                return 0;
-        } else if ((n = number_length(p)) > 0) {
-            if (!push_token(ps, T_NUMBER, p, n))
-                return 0;
-            p += n;
-        } else if (c == '"') {
-            n = string_length(ps, p);
-            if (!push_token(ps, T_STRING, p, n))
-                return 0;
-            p += n;
-        } else if (punct_kind(c) != T_EOF) {
-            enum tok_kind k = punct_kind(c);
-            depth += (k == T_LPAREN || k == T_LBRACK) - (k == T_RPAREN || k == T_RBRACK);
-            if (depth < 0)
-                depth = 0;
-            if (!push_token(ps, k, p, 1))
-                return 0;
-            p++;
-        } else {
-            if ((unsigned char)c >= 32 && (unsigned char)c < 127)
-                error_at(ps, p, "unexpected character '%c'", c);
-            else
-                error_at(ps, p, "unexpected byte 0x%02x (is this a text file?)",
-                         (unsigned char)c);
-            p++;
-        }
-    }
-    return push_token(ps, T_NEWLINE, end, 0) && push_token(ps, T_EOF, end, 0);
-}
-
-/* ---- parser ---- */
 
 static const struct token *peek(const struct parser *ps, int ahead)
 {
     int i = ps->pos + ahead;
-    return &ps->toks[i < ps->count ? i : ps->count - 1];
+    return &ps->lex.toks[i < ps->lex.count ? i : ps->lex.count - 1];
 }
 
 static const struct token *next(struct parser *ps)
 {
     const struct token *t = peek(ps, 0);
-    if (ps->pos < ps->count - 1)
+    if (ps->pos < ps->lex.count - 1)
         ps->pos++;
     return t;
 }
@@ -251,8 +73,8 @@ static int expect(struct parser *ps, enum tok_kind kind, const char *context)
         next(ps);
         return 1;
     }
-    error_at(ps, t->at, "expected %s %s, found %s", tok_texts[kind], context,
-             tok_texts[t->kind]);
+    error_at(ps, t->at, "expected %s %s, found %s", ssg_tok_text(kind), context,
+             ssg_tok_text(t->kind));
     return 0;
 }
 
@@ -265,7 +87,7 @@ static void recover(struct parser *ps)
 
 static const char *unescape(struct parser *ps, const struct token *t, size_t *len)
 {
-    char *out = ssg_arena_alloc(ps->arena, t->len + 1);
+    char *out = ssg_arena_alloc(ps->lex.arena, t->len + 1);
     if (!out)
         return NULL;
     size_t n = 0;
@@ -327,7 +149,7 @@ static int parse_list(struct parser *ps, struct ssg_value *v)
         return 0;
     v->kind = SSG_V_LIST;
     v->count = count;
-    v->items = ssg_arena_alloc(ps->arena, (size_t)(count ? count : 1) * sizeof *items);
+    v->items = ssg_arena_alloc(ps->lex.arena, (size_t)(count ? count : 1) * sizeof *items);
     if (!v->items)
         return 0;
     memcpy(v->items, items, (size_t)count * sizeof *items);
@@ -371,7 +193,7 @@ static int parse_value(struct parser *ps, struct ssg_value *v)
             const struct token *m = peek(ps, 0);
             if (m->kind != T_IDENT) {
                 error_at(ps, m->at, "expected a port name after '%.*s.', found %s",
-                         (int)t->len, t->at, tok_texts[m->kind]);
+                         (int)t->len, t->at, ssg_tok_text(m->kind));
                 return 0;
             }
             next(ps);
@@ -385,7 +207,7 @@ static int parse_value(struct parser *ps, struct ssg_value *v)
         return parse_list(ps, v);
     default:
         error_at(ps, t->at, "expected a value (number, string, name, node.port or [list]), "
-                            "found %s", tok_texts[t->kind]);
+                            "found %s", ssg_tok_text(t->kind));
         return 0;
     }
 }
@@ -406,7 +228,7 @@ static int parse_arg(struct parser *ps, struct ssg_arg *arg)
 
 static struct ssg_arg *copy_args(struct parser *ps, const struct ssg_arg *args, int count)
 {
-    struct ssg_arg *out = ssg_arena_alloc(ps->arena, (size_t)(count ? count : 1) * sizeof *out);
+    struct ssg_arg *out = ssg_arena_alloc(ps->lex.arena, (size_t)(count ? count : 1) * sizeof *out);
     if (out && count)
         memcpy(out, args, (size_t)count * sizeof *out);
     return out;
@@ -441,7 +263,7 @@ static int parse_call(struct parser *ps, struct ssg_stmt *st)
         int line, column;
         ssg_loc_linecol(loc_of(ps, open), &line, &column);
         error_at(ps, peek(ps, 0)->at, "expected ')' to close the '(' of line %d, column %d, "
-                 "found %s", line, column, tok_texts[peek(ps, 0)->kind]);
+                 "found %s", line, column, ssg_tok_text(peek(ps, 0)->kind));
         return 0;
     }
     next(ps);
@@ -508,7 +330,7 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
     if (t->kind != T_IDENT) {
         error_at(ps, t->at, "expected a statement (name = node(...), set a.b = value, or a "
                             "directive such as scene/size/include), found %s",
-                 tok_texts[t->kind]);
+                 ssg_tok_text(t->kind));
         return 0;
     }
     st->name = t->at;
@@ -523,7 +345,7 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
         next(ps);
         if (peek(ps, 0)->kind != T_IDENT) {
             error_at(ps, peek(ps, 0)->at, "expected a node or entity name after '=', found %s",
-                     tok_texts[peek(ps, 0)->kind]);
+                     ssg_tok_text(peek(ps, 0)->kind));
             return 0;
         }
         ok = parse_call(ps, st);
@@ -536,7 +358,7 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
     }
     if (ok && peek(ps, 0)->kind != T_NEWLINE && peek(ps, 0)->kind != T_EOF) {
         error_at(ps, peek(ps, 0)->at, "expected end of line after the statement, found %s",
-                 tok_texts[peek(ps, 0)->kind]);
+                 ssg_tok_text(peek(ps, 0)->kind));
         ok = 0;
     }
     return ok;
@@ -545,10 +367,10 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
 static enum ssg_err parse_source(struct ssg_arena *arena, const struct ssg_source *src,
                                  struct ssg_file *out, struct ssg_diags *diags)
 {
-    struct parser ps = {.arena = arena, .src = src, .diags = diags};
+    struct parser ps = {.lex = {.arena = arena, .src = src, .diags = diags}};
     memset(out, 0, sizeof *out);
     out->src = src;
-    if (!tokenize(&ps, src->text, src->text + src->len))
+    if (!ssg_lex(&ps.lex, src->text, src->text + src->len))
         return SSG_E_NOMEM;
     int cap = 16, count = 0;
     struct ssg_stmt *stmts = ssg_arena_alloc(arena, (size_t)cap * sizeof *stmts);
@@ -574,7 +396,7 @@ static enum ssg_err parse_source(struct ssg_arena *arena, const struct ssg_sourc
         return SSG_E_NOMEM;
     out->stmts = stmts;
     out->count = count;
-    return ps.errors ? SSG_E_SYNTAX : SSG_OK;
+    return ps.lex.errors ? SSG_E_SYNTAX : SSG_OK;
 }
 
 static struct ssg_source *make_source(struct ssg_arena *arena, const char *path,
@@ -633,10 +455,10 @@ enum ssg_err ssg_parse_value(struct ssg_arena *arena, const struct ssg_source *s
                              const char *start, struct ssg_value *out, struct ssg_diags *diags)
 {
     /* Tokenise only the tail, keeping locations relative to the whole source. */
-    struct parser ps = {.arena = arena, .src = src, .diags = diags};
-    if (!tokenize(&ps, start, start + strlen(start)))
+    struct parser ps = {.lex = {.arena = arena, .src = src, .diags = diags}};
+    if (!ssg_lex(&ps.lex, start, start + strlen(start)))
         return SSG_E_NOMEM;
-    int ok = !ps.errors && parse_value(&ps, out);
+    int ok = !ps.lex.errors && parse_value(&ps, out);
     if (ok && peek(&ps, 0)->kind != T_NEWLINE && peek(&ps, 0)->kind != T_EOF) {
         error_at(&ps, peek(&ps, 0)->at, "expected one value, found more after it");
         ok = 0;

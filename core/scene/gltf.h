@@ -1,8 +1,9 @@
 /* gltf.h - loads a glTF 2.0 file (.gltf with its buffers, or .glb) into plain C structs:
  * the triangles of every node of the default scene with the node's world transform
  * applied, the base colours and decoded base-colour textures of its materials, and its
- * first perspective camera. The C++ adapter over tinygltf (gltf_adapter.cc) lives behind
- * this header and never lets an exception cross it.
+ * first perspective camera. The C++ adapter over tinygltf (gltf_adapter.cc, with its
+ * accessor reading in gltf_accessor_adapter.cc) lives behind this header and never lets
+ * an exception cross it.
  *
  * Ownership: ssg_gltf_load returns a struct the caller frees with ssg_gltf_destroy. Every
  * array in it comes from malloc, so the caller may take an array over (set the pointer in

@@ -1,0 +1,38 @@
+/* gltf_adapter.h - private to the tinygltf adapter: what the scene flattening in
+ * gltf_adapter.cc and the accessor reading in gltf_accessor_adapter.cc share. Problems are
+ * thrown as gltf_adapter::Failure and caught in ssg_gltf_load; the namespace is a named
+ * one so that both files throw and catch the same type. C++ only. */
+#ifndef SSG_GLTF_ADAPTER_H
+#define SSG_GLTF_ADAPTER_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "scene/gltf.h"
+
+namespace gltf_adapter {
+
+struct Failure {
+    ssg_err code;
+    std::string message;
+};
+
+[[noreturn]] inline void fail(const std::string &message)
+{
+    throw Failure{SSG_E_GLTF, message};
+}
+
+/* Accessor `index`'s elements as `components` floats each (VEC2 texcoords, VEC3
+   positions), every one finite. Fails on a missing, sparse, mistyped or out-of-bounds
+   accessor, however its count and offsets were forged. */
+std::vector<float> read_floats(const tinygltf::Model &model, int index, int components);
+
+/* Accessor `index` as unsigned indices (any of the three index component types). */
+std::vector<uint32_t> read_indices(const tinygltf::Model &model, int index);
+
+} // namespace gltf_adapter
+
+#endif
