@@ -29,6 +29,7 @@
 #include <stdio.h>
 
 #include "bilateral.h"
+#include "common/joint_weights.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
@@ -58,19 +59,17 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     const struct ssg_bilateral_params *p = params;
     struct ssg_bilateral_consts *c = consts;
-    if (p->size < 1 || p->size > SSG_BILATERAL_MAX_SIZE || p->size % 2 == 0 ||
-        !(p->sigma_depth > 0) || !(p->sigma_spatial >= 0) || p->normal_power < 0 ||
-        p->normal_power > 127) {
+    struct ssg_joint_weights w;
+    if (!ssg_joint_weights_make(p->size, SSG_BILATERAL_MAX_SIZE, p->sigma_spatial,
+                                p->sigma_depth, p->normal_power, &w))
         return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
-    }
-    c->radius = (p->size - 1) / 2;
+    c->radius = w.radius;
     c->size = p->size;
-    c->depth_scale = 1.0f / p->sigma_depth;
+    c->depth_scale = w.depth_scale;
     c->normal_power = p->normal_power;
-    c->normal_min = p->normal_power > 0 ? (float)pow(1e-30, 1.0 / p->normal_power) : 0.0f;
+    c->normal_min = w.normal_min;
     c->separable = p->separable;
-    float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
-    float k = -0.5f / (sigma * sigma);
+    const float k = w.spatial_k;
     for (int dy = -c->radius; dy <= c->radius; dy++)
         for (int dx = -c->radius; dx <= c->radius; dx++)
             c->spatial[(dy + c->radius) * c->size + dx + c->radius] =

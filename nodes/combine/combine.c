@@ -30,31 +30,21 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len);
 
 static const struct ssg_port_desc inputs[] = {
-    [SSG_COMBINE_IN_DIRECT] =
-        {.name = "direct",
-         .types = SSG_T_COLOR,
-         .doc = "direct light (diffuse + specular) of the visible surface, linear RGB"},
+    [SSG_COMBINE_IN_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
+     .doc = "direct light (diffuse + specular) of the visible surface, linear RGB"},
     [SSG_COMBINE_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "diffuse reflectance, linear RGB"},
-    [SSG_COMBINE_IN_AMBIENT_OCCLUSION] =
-        {.name = "ambient_occlusion",
-         .types = SSG_T_SCALAR,
-         .optional = 1,
-         .doc = "ambient occlusion, 1 = unoccluded; unconnected = 1 everywhere"},
+    [SSG_COMBINE_IN_AMBIENT_OCCLUSION] = {.name = "ambient_occlusion", .types = SSG_T_SCALAR,
+     .optional = 1, .doc = "ambient occlusion, 1 = unoccluded; unconnected = 1 everywhere"},
     [SSG_COMBINE_IN_INDIRECT] = {.name = "indirect", .types = SSG_T_COLOR, .optional = 1,
      .doc = "indirect light (a bounce), linear RGB; unconnected = 0"},
-    [SSG_COMBINE_IN_MODULATION] =
-        {.name = "modulation",
-         .types = SSG_T_SCALAR | SSG_T_COLOR,
-         .optional = 1,
-         .doc = "SSDO modulation factor (1 or 3 channels) darkening direct, environment, "
-                "ambient and (darken_indirect) indirect light; unconnected = 1"},
-    [SSG_COMBINE_IN_ENVIRONMENT] =
-        {.name = "environment",
-         .types = SSG_T_COLOR,
-         .optional = 1,
-         .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
-                "term; unconnected = 0"},
+    [SSG_COMBINE_IN_MODULATION] = {.name = "modulation", .types = SSG_T_SCALAR | SSG_T_COLOR,
+     .optional = 1,
+     .doc = "SSDO modulation factor (1 or 3 channels) darkening direct, environment, ambient "
+            "and (darken_indirect) indirect light; unconnected = 1"},
+    [SSG_COMBINE_IN_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
+            "term; unconnected = 0"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_COMBINE_INPUTS, "one entry a port enumerator");
 

@@ -86,10 +86,8 @@ static const struct ssg_port_desc outputs[] = {
      .doc = "albedo of the chosen pixel; 0 when unconnected"},
     [SSG_DOWNSAMPLE_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
      .doc = "direct light of the chosen pixel; 0 when unconnected"},
-    [SSG_DOWNSAMPLE_OUT_ENVIRONMENT] =
-        {.name = "environment",
-         .types = SSG_T_COLOR,
-         .doc = "environment light of the chosen pixel; 0 when unconnected"},
+    [SSG_DOWNSAMPLE_OUT_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR,
+     .doc = "environment light of the chosen pixel; 0 when unconnected"},
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_DOWNSAMPLE_OUTPUTS, "one entry a port enumerator");
 

@@ -65,15 +65,11 @@ static const struct ssg_port_desc outputs[] = {
      .doc = "linear depth along -z, 0 = background"},
     [SSG_GBUFFER_OUT_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "material albedo times texture, linear RGB"},
-    [SSG_GBUFFER_OUT_DIRECT] =
-        {.name = "direct",
-         .types = SSG_T_COLOR,
-         .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
-    [SSG_GBUFFER_OUT_ENVIRONMENT] =
-        {.name = "environment",
-         .types = SSG_T_COLOR,
-         .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
-                "irradiance, linear RGB"},
+    [SSG_GBUFFER_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
+     .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
+    [SSG_GBUFFER_OUT_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR,
+     .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
+            "irradiance, linear RGB"},
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_GBUFFER_OUTPUTS, "one entry a port enumerator");
 

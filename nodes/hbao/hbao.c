@@ -207,28 +207,17 @@ static const struct ssg_param_desc params[] = {
 };
 
 static const struct ssg_port_desc inputs[] = {
-    [SSG_HBAO_IN_POSITION] =
-        {.name = "position",
-         .types = SSG_T_VECTOR,
-         .doc = "view-space position (its -z is the depth unless depth is given)"},
+    [SSG_HBAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
+     .doc = "view-space position (its -z is the depth unless depth is given)"},
     [SSG_HBAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
      .doc = "unit view-space normal"},
-    [SSG_HBAO_IN_ROTATION] =
-        {.name = "rotation",
-         .types = SSG_T_PATTERN,
-         .optional = 1,
-         .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
-    [SSG_HBAO_IN_DEPTH] =
-        {.name = "depth",
-         .types = SSG_T_SCALAR,
-         .optional = 1,
-         .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    [SSG_HBAO_IN_COUNT] =
-        {.name = "count",
-         .types = SSG_T_SCALAR,
-         .optional = 1,
-         .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
-                "none = all"},
+    [SSG_HBAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
+     .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
+    [SSG_HBAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "linear depth the points are reconstructed from; none = -position.z"},
+    [SSG_HBAO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
+            "none = all"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_HBAO_INPUTS, "one entry a port enumerator");
 

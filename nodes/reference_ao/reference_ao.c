@@ -102,10 +102,8 @@ static const struct ssg_param_desc params[] = {
 static const struct ssg_port_desc inputs[] = {
     [SSG_REFERENCE_AO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
      .doc = "view-space position (gbuffer)"},
-    [SSG_REFERENCE_AO_IN_NORMAL] =
-        {.name = "normal",
-         .types = SSG_T_VECTOR,
-         .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
+    [SSG_REFERENCE_AO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_REFERENCE_AO_INPUTS, "one entry a port enumerator");
 

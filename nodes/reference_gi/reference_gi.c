@@ -134,25 +134,18 @@ static const struct ssg_param_desc params[] = {
 static const struct ssg_port_desc inputs[] = {
     [SSG_REFERENCE_GI_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
      .doc = "view-space position (gbuffer)"},
-    [SSG_REFERENCE_GI_IN_NORMAL] =
-        {.name = "normal",
-         .types = SSG_T_VECTOR,
-         .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
+    [SSG_REFERENCE_GI_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
+     .doc = "unit view-space normal facing the camera, 0 = background (gbuffer)"},
     [SSG_REFERENCE_GI_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "diffuse albedo, linear RGB (gbuffer)"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_REFERENCE_GI_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
-    [SSG_REFERENCE_GI_OUT_DIRECT] =
-        {.name = "direct",
-         .types = SSG_T_COLOR,
-         .doc =
-             "diffuse light of the lights and the environment with true shadows, linear RGB"},
-    [SSG_REFERENCE_GI_OUT_BOUNCE] =
-        {.name = "bounce",
-         .types = SSG_T_COLOR,
-         .doc = "one diffuse bounce of that light off the scene's surfaces, linear RGB"},
+    [SSG_REFERENCE_GI_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
+     .doc = "diffuse light of the lights and the environment with true shadows, linear RGB"},
+    [SSG_REFERENCE_GI_OUT_BOUNCE] = {.name = "bounce", .types = SSG_T_COLOR,
+     .doc = "one diffuse bounce of that light off the scene's surfaces, linear RGB"},
     [SSG_REFERENCE_GI_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR,
      .doc = "direct + bounce"},
 };

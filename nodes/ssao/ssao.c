@@ -130,26 +130,16 @@ static const struct ssg_param_desc params[] = {
 static const struct ssg_port_desc inputs[] = {
     [SSG_SSAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
      .doc = "view-space position"},
-    [SSG_SSAO_IN_NORMAL] =
-        {.name = "normal",
-         .types = SSG_T_VECTOR,
-         .optional = 1,
-         .doc = "unit view-space normal (mode hemisphere only; required there)"},
+    [SSG_SSAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
+     .doc = "unit view-space normal (mode hemisphere only; required there)"},
     [SSG_SSAO_IN_KERNEL] = {.name = "kernel", .types = SSG_T_KERNEL,
      .doc = "hemisphere samples (halton.samples)"},
-    [SSG_SSAO_IN_ROTATION] =
-        {.name = "rotation",
-         .types = SSG_T_PATTERN,
-         .optional = 1,
-         .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
+    [SSG_SSAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
+     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
     [SSG_SSAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "linear depth for the occluder lookup; none = -position.z"},
-    [SSG_SSAO_IN_COUNT] =
-        {.name = "count",
-         .types = SSG_T_SCALAR,
-         .optional = 1,
-         .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = "
-                "all"},
+    [SSG_SSAO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = all"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_SSAO_INPUTS, "one entry a port enumerator");
 

@@ -46,10 +46,8 @@ static const struct ssg_port_desc inputs[] = {
     SSG_SSDO_GEOM_INPUTS,
     [SSG_SSDO_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "diffuse albedo of the receiver"},
-    [SSG_SSDO_IN_LIGHT] =
-        {.name = "light",
-         .types = SSG_T_COLOR,
-         .doc = "the senders' radiance: the first pass's direct light (ssdo mode=radiance)"},
+    [SSG_SSDO_IN_LIGHT] = {.name = "light", .types = SSG_T_COLOR,
+     .doc = "the senders' radiance: the first pass's direct light (ssdo mode=radiance)"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_BOUNCE_INPUTS, "one entry a port enumerator");
 

@@ -30,6 +30,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "common/joint_weights.h"
 #include "upsample.h"
 
 int ssg_upsample_factor(int width, int height, int low_width, int low_height)
@@ -90,19 +91,18 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     const struct ssg_upsample_params *p = params;
     struct ssg_upsample_consts *c = consts;
-    if (p->size < 1 || p->size > SSG_UPSAMPLE_MAX_SIZE || p->size % 2 == 0 ||
-        !(p->sigma_depth > 0) || !(p->sigma_spatial >= 0) || p->normal_power < 0 ||
-        p->normal_power > 127)
+    struct ssg_joint_weights w;
+    if (!ssg_joint_weights_make(p->size, SSG_UPSAMPLE_MAX_SIZE, p->sigma_spatial,
+                                p->sigma_depth, p->normal_power, &w))
         return ssg_node_fail(ctx, SSG_E_VALUE, "invalid parameters");
     const struct ssg_shape *dep = &ctx->in_shape[SSG_UPSAMPLE_IN_DEPTH];
     const struct ssg_shape *low = &ctx->in_shape[SSG_UPSAMPLE_IN_IN];
     c->factor = ssg_upsample_factor(dep->width, dep->height, low->width, low->height);
-    c->radius = (p->size - 1) / 2;
-    float sigma = p->sigma_spatial > 0 ? p->sigma_spatial : (float)p->size / 3.0f;
-    c->spatial_k = -0.5f / (sigma * sigma);
-    c->depth_scale = 1.0f / p->sigma_depth;
+    c->radius = w.radius;
+    c->spatial_k = w.spatial_k;
+    c->depth_scale = w.depth_scale;
     c->normal_power = (float)p->normal_power;
-    c->normal_min = p->normal_power > 0 ? (float)pow(1e-30, 1.0 / p->normal_power) : 0.0f;
+    c->normal_min = w.normal_min;
     return SSG_OK;
 }
 
@@ -129,16 +129,10 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "full-resolution unit normal; with low_normal, or neither"},
     [SSG_UPSAMPLE_IN_LOW_DEPTH] = {.name = "low_depth", .types = SSG_T_SCALAR,
      .doc = "the depth `in` was computed on (its size)"},
-    [SSG_UPSAMPLE_IN_LOW_NORMAL] =
-        {.name = "low_normal",
-         .types = SSG_T_VECTOR,
-         .optional = 1,
-         .doc = "the normal `in` was computed on; none = no normal term"},
-    [SSG_UPSAMPLE_IN_IN2] =
-        {.name = "in2",
-         .types = SSG_T_SCALAR | SSG_T_COLOR,
-         .optional = 1,
-         .doc = "second low-res image (size of in), upsampled with the same weights"},
+    [SSG_UPSAMPLE_IN_LOW_NORMAL] = {.name = "low_normal", .types = SSG_T_VECTOR, .optional = 1,
+     .doc = "the normal `in` was computed on; none = no normal term"},
+    [SSG_UPSAMPLE_IN_IN2] = {.name = "in2", .types = SSG_T_SCALAR | SSG_T_COLOR, .optional = 1,
+     .doc = "second low-res image (size of in), upsampled with the same weights"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_UPSAMPLE_INPUTS, "one entry a port enumerator");
 
