@@ -70,8 +70,9 @@ enum ssg_err ssg_mosaic_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     int rows = (n + cols - 1) / cols;
     if ((out->width - p->gap * (cols - 1)) / cols < 1 ||
         (out->height - p->gap * (rows - 1)) / rows < 1)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "the frame is too small for that many "
-                             "cells with that gap");
+        return ssg_node_fail(ctx, SSG_E_VALUE, "the frame (%dx%d) is too small for %d "
+                             "cells with gap %d (fewer columns or a smaller gap)",
+                             out->width, out->height, n, p->gap);
     memset(out->data, 0, sizeof(float) * 3 * (size_t)out->width * out->height);
     for (int i = 0; i < n; i++) {
         struct cell k = place(out, io->extra_in[i], i, cols, rows, p->gap);
