@@ -197,11 +197,9 @@ enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass)
 {
     GLenum e = glGetError();
     if (e != GL_NO_ERROR && pass->err == SSG_OK) {
-        char what[160];
-        snprintf(what, sizeof what, "GL error 0x%04x in a pass of %s", (unsigned)e,
-                 pass->shader ? pass->shader : "?");
-        pass->err =
-            ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND, what);
+        pass->err = ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND,
+                                  "GL error 0x%04x in a pass of %s", (unsigned)e,
+                                  pass->shader ? pass->shader : "?");
     }
     return pass->err;
 }
