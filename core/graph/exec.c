@@ -192,7 +192,8 @@ enum ssg_err ssg_node_verify_io(const struct ssg_node_ctx *ctx, const struct ssg
     const struct ssg_node_desc *d = ctx->desc;
     if (!ctx->in_shape || !ctx->out_shape || (io->extra_count && !ctx->extra_shape)) {
         ssg_diag_at(ctx->diags, SSG_E_RUN, (struct ssg_loc){0}, "node '%s' (%s): run "
-                    "without the shapes it was checked with", ctx->instance, d->name);
+                    "without the shapes it was checked with",
+                    ctx->instance ? ctx->instance : "", d->name);
         return SSG_E_RUN;
     }
     enum ssg_err e = SSG_OK;
