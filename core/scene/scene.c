@@ -81,9 +81,9 @@ static const struct ssg_param_desc environment_params[] = {
 static const struct ssg_param_desc plane_params[] = {
     MATERIAL(shape_args),
     VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the rectangle"),
-    VEC3(
-        "size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
-        "[width, unused, depth]: extents along the plane's x and z axes (its y is the normal)"),
+    VEC3("size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
+         "[width, unused, depth]: extents along the plane's x and z axes (its y is the "
+         "normal)"),
     VEC3("normal", shape_args, normal, 0, 1, 0, 0, 0, NULL,
          "facing direction; the plane's frame is the shortest rotation of +y onto it"),
 };
