@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""obj2gltf.py - converts a Wavefront OBJ triangle mesh into glTF 2.0 (a .gltf JSON file
-plus a binary .bin buffer next to it), using the Python standard library only.
+"""obj2gltf.py - converts a Wavefront OBJ or a 3D Studio (.3ds) triangle mesh into glTF 2.0
+(a .gltf JSON file plus a binary .bin buffer next to it), using the Python standard library
+only.
 
 Only geometry is converted: positions, smooth per-vertex normals and triangle indices
 (polygons are split into fans). Texture coordinates, OBJ normals, groups and materials are
@@ -8,7 +9,12 @@ ignored: normals are recomputed as the area-weighted average of the faces around
 position, so a vertex shared by several faces gets one smooth normal, as a scanned mesh
 such as the Stanford bunny wants.
 
-Usage: tools/obj2gltf.py INPUT.obj OUTPUT.gltf
+A .3ds file's objects (their triangle meshes: vertex list 0x4110 and face list 0x4120) are
+merged into one mesh, coordinates as they are (3D Studio files differ in which axis is up: a
+scene's mesh(rotate=...) turns the model upright); smoothing groups, materials and texture
+coordinates are ignored as for OBJ.
+
+Usage: tools/obj2gltf.py INPUT.obj|INPUT.3ds OUTPUT.gltf
 The buffer is written as OUTPUT.bin and referenced by a relative URI.
 """
 
@@ -51,6 +57,62 @@ def read_obj(path):
                     indices.extend((corners[0], corners[i], corners[i + 1]))
     if not indices:
         raise ValueError("no faces")
+    return positions, indices
+
+
+def read_chunks(data, start, end):
+    """The 3DS chunks in data[start:end]: (id, body start, chunk end) each."""
+    at = start
+    while at + 6 <= end:
+        cid, length = struct.unpack_from("<HI", data, at)
+        if length < 6 or at + length > end:
+            raise ValueError(f"chunk 0x{cid:04x} at byte {at} claims {length} bytes, "
+                             f"past its parent's end {end}")
+        yield cid, at + 6, at + length
+        at += length
+
+
+def read_trimesh(data, start, end, positions, indices):
+    """Appends one 3DS triangle mesh (chunk 0x4100) to positions and indices."""
+    base = len(positions) // 3
+    count = 0
+    for cid, body, stop in read_chunks(data, start, end):
+        if cid == 0x4110:  # vertex list: u16 count, count x 3 float32
+            (count,) = struct.unpack_from("<H", data, body)
+            xyz = struct.unpack_from(f"<{3 * count}f", data, body + 2)
+            for i in range(count):
+                x, y, z = xyz[3 * i:3 * i + 3]
+                positions.extend((x, y, z))
+        elif cid == 0x4120:  # face list: u16 count, count x (a, b, c, flags) u16
+            (faces,) = struct.unpack_from("<H", data, body)
+            abcf = struct.unpack_from(f"<{4 * faces}H", data, body + 2)
+            for i in range(faces):
+                a, b, c = abcf[4 * i:4 * i + 3]
+                if max(a, b, c) >= count:
+                    raise ValueError(f"face {i} names vertex {max(a, b, c)} of {count}")
+                indices.extend((base + a, base + b, base + c))
+
+
+def read_3ds(path):
+    """Returns (positions, indices) of every triangle mesh of a 3D Studio file, merged."""
+    with open(path, "rb") as f:
+        data = f.read()
+    positions, indices = [], []
+    for cid, body, stop in read_chunks(data, 0, len(data)):
+        if cid != 0x4D4D:
+            continue
+        for eid, ebody, estop in read_chunks(data, body, stop):
+            if eid != 0x3D3D:
+                continue
+            for oid, obody, ostop in read_chunks(data, ebody, estop):
+                if oid != 0x4000:
+                    continue
+                name_end = data.index(b"\0", obody, ostop) + 1
+                for mid, mbody, mstop in read_chunks(data, name_end, ostop):
+                    if mid == 0x4100:
+                        read_trimesh(data, mbody, mstop, positions, indices)
+    if not indices:
+        raise ValueError("no triangle mesh (chunk 0x4100) in the file")
     return positions, indices
 
 
@@ -125,8 +187,9 @@ def main(argv):
         return 2
     src, dst = argv[1], argv[2]
     try:
-        positions, indices = read_obj(src)
-    except (OSError, ValueError) as err:
+        read = read_3ds if src.lower().endswith(".3ds") else read_obj
+        positions, indices = read(src)
+    except (OSError, ValueError, struct.error) as err:
         sys.stderr.write(f"obj2gltf: {src}: {err}\n")
         return 1
     normals = smooth_normals(positions, indices)
