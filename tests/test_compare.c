@@ -74,12 +74,13 @@ static void test_identical(void)
         memcpy(b->data, a->data, sizeof(float) * 37 * 29 * channels);
         struct ssg_outputs out;
         CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
-        CHECK_EQ(out.metric_count, 5);
-        const char *order[] = {"rmse", "mae", "psnr", "ssim", "pixels"};
-        for (int i = 0; i < 5 && i < out.metric_count; i++)
+        CHECK_EQ(out.metric_count, 6);
+        const char *order[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels"};
+        for (int i = 0; i < 6 && i < out.metric_count; i++)
             CHECK(!strcmp(out.metric_names[i], order[i]));
         CHECK(metric(&out, "rmse") == 0.0);
         CHECK(metric(&out, "mae") == 0.0);
+        CHECK(metric(&out, "bias") == 0.0);
         CHECK(isinf(metric(&out, "psnr")) && metric(&out, "psnr") > 0);
         CHECK(metric(&out, "ssim") == 1.0);
         CHECK_EQ(metric(&out, "pixels"), 37 * 29);
@@ -109,6 +110,7 @@ static void test_offset(void)
     CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
     CHECK_NEAR(metric(&out, "rmse"), d, 1e-15);
     CHECK_NEAR(metric(&out, "mae"), d, 1e-15);
+    CHECK_NEAR(metric(&out, "bias"), -d, 1e-15); /* a = b - d: a is darker */
     CHECK_NEAR(metric(&out, "psnr"), 10 * log10(1 / (d * d)), 1e-12);
     ssg_outputs_release(&out);
     /* PSNR scales with the peak: 20 log10(peak / rmse) */

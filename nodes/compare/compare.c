@@ -123,7 +123,8 @@ const struct ssg_node_desc ssg_node_compare = {
     .method = "RMSE, MAE, PSNR = 10 log10(peak^2 / MSE); SSIM: Wang, Bovik, Sheikh, "
               "Simoncelli, IEEE TIP 13(4) 2004, eqs. 13-17 (Gaussian window 11x11, sigma 1.5, "
               "K1 0.01, K2 0.03)",
-    .doc = "Reports rmse, mae, psnr (dB, inf when identical), ssim and pixels over the pixels "
+    .doc = "Reports rmse, mae, bias (the mean of a - b: > 0 where a is brighter than b), psnr "
+           "(dB, inf when identical), ssim and pixels over the pixels "
            "with mask > 0.5 (all without a mask), averaged over channels; `ssgraph run` prints "
            "them and writes them to <out>/metrics.json. SSIM windows use only counted pixels "
            "inside the image, weights renormalised. `diff` maps t = clamp((a - b) / scale, "

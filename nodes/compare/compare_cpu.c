@@ -33,6 +33,7 @@ enum {
 struct partial {
     double sq;                              /* sum of (a - b)^2 over counted values */
     double abs;                             /* sum of |a - b| */
+    double diff;                            /* sum of a - b (the signed bias) */
     double ssim[SSG_COMPARE_MAX_CHANNELS];  /* sum of per-pixel SSIM, per channel */
     long long count;                        /* counted pixels */
     int failed;                             /* 1 = the band's buffers were not allocated */
@@ -60,16 +61,18 @@ static void errors_row(const struct job *j, struct partial *p, int y)
         p->count += counted(j, o + (size_t)x);
     for (int ch = 0; ch < j->channels; ch++) {
         const float *a = j->a[ch] + o, *b = j->b[ch] + o;
-        double sq = 0, ab = 0;
+        double sq = 0, ab = 0, df = 0;
         for (int x = 0; x < j->w; x++) {
             if (!counted(j, o + (size_t)x))
                 continue;
             double d = (double)a[x] - (double)b[x];
             sq += d * d;
             ab += fabs(d);
+            df += d;
         }
         p->sq += sq;
         p->abs += ab;
+        p->diff += df;
     }
 }
 
@@ -266,6 +269,7 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
             return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the SSIM window buffers");
         t.sq += p->sq;
         t.abs += p->abs;
+        t.diff += p->diff;
         t.count += p->count;
         for (int ch = 0; ch < j->channels; ch++)
             t.ssim[ch] += p->ssim[ch];
@@ -277,6 +281,9 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
         ssim += t.ssim[ch] / (double)t.count;
     ssg_metric_report(ctx, "rmse", sqrt(mse));
     ssg_metric_report(ctx, "mae", t.count ? t.abs / values : NAN);
+    /* mean(a - b): > 0 where a is brighter than the reference b (an AO method that misses
+       occlusion), < 0 where darker; rmse alone cannot tell the two apart. */
+    ssg_metric_report(ctx, "bias", t.count ? t.diff / values : NAN);
     ssg_metric_report(ctx, "psnr", mse > 0 ? 10.0 * log10(j->c->peak * j->c->peak / mse)
                                            : mse == 0 ? INFINITY : NAN);
     ssg_metric_report(ctx, "ssim", t.count ? ssim / j->channels : NAN);
