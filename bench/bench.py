@@ -4,7 +4,7 @@
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
                            [--ssdo [--samples 12,24,36,64]] [--table1] [--backend]
-                           [--hybrid]
+                           [--hybrid] [--accuracy [--save docs/accuracy.md]]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -20,6 +20,10 @@ through OSMesa), side by side, at 1280x720.
 512 lights and shadow maps of 256 and 1024 texels on both backends at 1280x720, with the
 error of each image against reference_gi lit by the same probe (bench/hybrid_reference.graph),
 next to the paper's 15 fps (128 lights) and 6 fps (512 lights).
+
+--accuracy scores every AO method of graphs/ao_error.graph against reference_ao on every
+example scene (RMSE, bias = mean of method - reference, SSIM) with the frame time of the
+shipped graph that runs it, as the Markdown table of docs/accuracy.md (--save it there).
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -290,6 +294,48 @@ class Tee:
         self.stream.flush()
 
 
+ACCURACY_METHODS = [("ssao", "c_ssao", None), ("ssao + bilateral", "c_ssao_filtered", "ssao.graph"),
+                    ("hbao", "c_hbao", None), ("hbao + bilateral", "c_hbao_filtered", "hbao.graph")]
+
+
+def accuracy_table(binary, size, threads, runs):
+    """Every AO method of graphs/ao_error.graph against reference_ao on every example scene:
+    RMSE, bias (mean of method - reference: > 0 = too bright, missed occlusion) and SSIM,
+    and the frame time (median, write excluded) of the shipped graph that runs the method."""
+    ao_error = os.path.join(ROOT, "graphs", "ao_error.graph")
+    scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
+    print(f"# AO accuracy of the shipped graphs, {size}\n")
+    print("Each AO method of `graphs/ao_error.graph` against `reference_ao` (256 cosine-weighted "
+          "rays within the same 0.5 radius; its noise floor is about 0.02 RMSE) on every "
+          "example scene, surface pixels only. bias = mean(method - reference): positive = "
+          "too bright (missed occlusion). ms: median frame time of the shipped graph that "
+          f"runs the method (`graphs/ssao.graph`, `graphs/hbao.graph`; write excluded, "
+          f"{runs} runs after a warm-up, {threads or os.cpu_count()} threads). Made by "
+          f"`python3 bench/bench.py --accuracy --size {size}`.\n")
+    print("| scene | method | rmse | bias | ssim | ms |")
+    print("|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in scenes:
+            path = os.path.join(ROOT, "examples", scene)
+            out = os.path.join(tmp, scene)
+            cmd = [binary, "run", ao_error, "--scene", path, "--size", size, "--out", out,
+                   "--quiet"]
+            if threads:
+                cmd += ["--threads", str(threads)]
+            run_cmd(cmd)
+            with open(os.path.join(out, "metrics.json")) as f:
+                metrics = json.load(f)
+            for label, node, graph in ACCURACY_METHODS:
+                m = metrics[node]
+                ms = "-"
+                if graph:
+                    frame, _ = frame_ms(binary, os.path.join(ROOT, "graphs", graph), path, size,
+                                        threads, runs, os.path.join(tmp, "t"))
+                    ms = f"{frame:.1f}"
+                print(f"| {scene[:-6]} | {label} | {m['rmse']:.3f} | {m['bias']:+.3f} | "
+                      f"{m['ssim']:.3f} | {ms} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -314,6 +360,10 @@ def main():
                          "graphs: ssao, hbao, ssdo at 1280x720)")
     ap.add_argument("--save", metavar="FILE",
                     help="also write what is printed to FILE (e.g. bench/results/table1.txt)")
+    ap.add_argument("--accuracy", action="store_true",
+                    help="every AO method's RMSE, bias and SSIM against reference_ao on every "
+                         "example scene, with its graph's frame time (a Markdown table; "
+                         "default 640x480; --save docs/accuracy.md)")
     ap.add_argument("--hybrid", action="store_true",
                     help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
                          "both backends, error against reference_gi, the paper's fps")
@@ -321,6 +371,9 @@ def main():
     if args.save:
         sys.stdout = Tee(sys.stdout, args.save)
     binary = args.bin or build()
+    if args.accuracy:
+        accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
+        return
     if args.hybrid:
         hybrid_table(binary, (args.size or ["1280x720"])[0], args.threads, args.runs)
         return
