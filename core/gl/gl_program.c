@@ -118,6 +118,32 @@ static void report_log(const struct ssg_node_ctx *ctx, const struct source *src,
                     "node '%s': %s %s failed without a message", ctx->instance, what, shader);
 }
 
+/* 1 when a shader did not compile (is_program 0) or a program did not link (1); its info
+   log is then reported against the files and lines of src. */
+static int build_failed(const struct ssg_node_ctx *ctx, const struct source *src,
+                        GLuint object, int is_program)
+{
+    GLint ok = 0, len = 0;
+    if (is_program)
+        glGetProgramiv(object, GL_LINK_STATUS, &ok);
+    else
+        glGetShaderiv(object, GL_COMPILE_STATUS, &ok);
+    if (ok)
+        return 0;
+    if (is_program)
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len);
+    else
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
+    char *log = calloc(1, (size_t)len + 1);
+    if (log && is_program)
+        glGetProgramInfoLog(object, len, NULL, log);
+    else if (log)
+        glGetShaderInfoLog(object, len, NULL, log);
+    report_log(ctx, src, is_program ? "linking" : "shader", log ? log : "");
+    free(log);
+    return 1;
+}
+
 static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage,
                             const char *stage_define, const struct source *src,
                             const char *defines)
@@ -132,15 +158,7 @@ static GLuint compile_stage(const struct ssg_node_ctx *ctx, GLenum stage,
     GLuint sh = glCreateShader(stage);
     glShaderSource(sh, 6, parts, NULL);
     glCompileShader(sh);
-    GLint ok = 0, len = 0;
-    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
-        char *log = calloc(1, (size_t)len + 1);
-        if (log)
-            glGetShaderInfoLog(sh, len, NULL, log);
-        report_log(ctx, src, "shader", log ? log : "");
-        free(log);
+    if (build_failed(ctx, src, sh, 0)) {
         glDeleteShader(sh);
         return 0;
     }
@@ -155,15 +173,7 @@ static GLuint link_program(const struct ssg_node_ctx *ctx, const struct source *
     if (b)
         glAttachShader(prog, b);
     glLinkProgram(prog);
-    GLint ok = 0, len = 0;
-    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
-        char *log = calloc(1, (size_t)len + 1);
-        if (log)
-            glGetProgramInfoLog(prog, len, NULL, log);
-        report_log(ctx, src, "linking", log ? log : "");
-        free(log);
+    if (build_failed(ctx, src, prog, 1)) {
         glDeleteProgram(prog);
         prog = 0;
     }
