@@ -21,7 +21,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    enum ssg_err e = ssg_ssdo_check_shapes(in, why, why_len);
+    enum ssg_err e = ssg_ssdo_check_shapes(in, NULL, why, why_len); /* no count input */
     if (e)
         return e;
     const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION];

@@ -64,14 +64,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  p->channels);
         return SSG_E_VALUE;
     }
-    enum ssg_err e = ssg_ssdo_check_shapes(in, why, why_len);
+    enum ssg_err e = ssg_ssdo_check_shapes(in, &in[SSG_SSDO_IN_COUNT], why, why_len);
     if (e)
         return e;
     const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION];
-    e = ssg_sampling_check_inputs(pos, NULL, &(struct ssg_shape){0}, &(struct ssg_shape){0},
-                                  &in[SSG_SSDO_IN_COUNT], why, why_len);
-    if (e)
-        return e;
     int color = p->mode == SSG_SSDO_MODE_RADIANCE || p->channels == 3;
     out[0] = (struct ssg_shape){pos->width, pos->height, color ? 3 : 1,
                                 color ? SSG_T_COLOR : SSG_T_SCALAR};

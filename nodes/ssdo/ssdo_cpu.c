@@ -424,7 +424,7 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
-    j.dw = (float)(2.0 * M_PI / j.s.count);
+    j.dw = c->dw_tab[j.s.count]; /* 2 pi / K, prepare()'s table */
     float *per_sample = malloc(sizeof(float) * 2 * (size_t)j.s.count);
     if (!per_sample)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");

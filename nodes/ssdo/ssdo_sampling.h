@@ -388,8 +388,10 @@ ssg_ssdo_finish_bounce(const struct ssg_ssdo_job *j, const struct ssg_ssdo_chunk
     }
 }
 
-/* check() of both nodes on the input shapes (channels 0 = unbound). */
-static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, char *why,
+/* check() of both nodes on the input shapes (channels 0 = unbound); count: ssdo's
+   per-pixel count port, NULL for bounce, which has none. */
+static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in,
+                                                 const struct ssg_shape *count, char *why,
                                                  size_t why_len)
 {
     const struct ssg_shape *pos = &in[SSG_SSDO_IN_POSITION], *nrm = &in[SSG_SSDO_IN_NORMAL];
@@ -398,9 +400,8 @@ static inline enum ssg_err ssg_ssdo_check_shapes(const struct ssg_shape *in, cha
         snprintf(why, why_len, "position and normal must be 3-channel images of one size");
         return SSG_E_SIZE;
     }
-    /* count: ssdo's own input, checked by ssdo.c (bounce has none) */
     enum ssg_err e = ssg_sampling_check_inputs(pos, ker, &in[SSG_SSDO_IN_ROTATION],
-                                               &in[SSG_SSDO_IN_DEPTH], NULL, why, why_len);
+                                               &in[SSG_SSDO_IN_DEPTH], count, why, why_len);
     if (e)
         return e;
     for (int p = SSG_SSDO_IN_ALBEDO; p <= SSG_SSDO_IN_LIGHT; p++)
