@@ -167,6 +167,11 @@ static const struct option options[] = {
     {.name = "--scene", .arg = "FILE", .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH,
      .take = take_text, .field = OF(ov.scene),
      .help = "use this scene instead of the graph's"},
+    {.name = "--guard", .arg = "G", .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH,
+     .take = take_int, .field = OF(guard), .lo = 0, .hi = SSG_GUARD_MAX,
+     .help = "render G pixels of guard band around the frame (instead of the\n"
+             "graph's `guard` line): screen-space AO sees occluders just outside\n"
+             "the frame; outputs and metrics stay frame-sized"},
     {.name = "--out", .arg = "DIR", .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH,
      .take = take_text, .field = OF(out_dir),
      .help = "output directory (default out)"},
@@ -342,7 +347,7 @@ static int take_option(enum ssg_cli_command command, int argc, char **argv, int 
 
 static void defaults(struct ssg_cli_args *a)
 {
-    *a = (struct ssg_cli_args){.seed = -1, .out_dir = "out", .ipd = 0.064f};
+    *a = (struct ssg_cli_args){.seed = -1, .guard = -1, .out_dir = "out", .ipd = 0.064f};
     a->ov.sets = a->sets;
 }
 
@@ -373,5 +378,7 @@ int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
             return rc;
     }
     a->ov.seed = a->seed;
+    a->ov.guard_given = a->guard >= 0;
+    a->ov.guard = a->guard;
     return check_positional(command, a);
 }

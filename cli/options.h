@@ -28,6 +28,7 @@ struct ssg_cli_args {
     struct ssg_overrides ov;         /* --scene, --size, --set, --seed, --backend */
     const char *sets[SSG_CLI_MAX_SETS];
     int seed;                        /* --seed; -1 = the graph's own */
+    int guard;                       /* --guard, px; -1 = the graph's own */
     const char *inputs[SSG_CLI_MAX_INPUTS]; /* node: --in port=file[:layer] */
     int input_count;
     const char *out_dir;             /* --out; default "out" */

@@ -102,7 +102,24 @@ struct ssg_frame {
     float near_z;       /* near plane distance, scene units; default SSG_DEFAULT_NEAR */
     float far_z;        /* far plane distance, scene units; default SSG_DEFAULT_FAR */
     uint64_t seed;      /* seed for every pseudo-random choice; default 1 */
+    int guard;          /* pixels of guard band rendered beyond every side of the frame with
+                           the same camera (graph line `guard G`; default 0): frame-sized
+                           images are (width + 2 guard) x (height + 2 guard), so that
+                           screen-space nodes see occluders just outside the frame; write
+                           and compare crop it (docs/guard_band.md) */
 };
+
+#define SSG_GUARD_MAX 1024 /* pixels of guard band, at most */
+
+/* The size of the frame's full-resolution images: the frame and its guard band. */
+static inline int ssg_frame_full_width(const struct ssg_frame *f)
+{
+    return f->width + 2 * f->guard;
+}
+static inline int ssg_frame_full_height(const struct ssg_frame *f)
+{
+    return f->height + 2 * f->guard;
+}
 
 /* The camera's defaults, written once: a scene's camera() without them, a scene without a
  * camera, a graph without a scene and a single-node run all use these. */
@@ -207,6 +224,8 @@ struct ssg_run_options {
 struct ssg_overrides {
     const char *scene;       /* scene file path, NULL = the graph's own */
     int width, height;       /* 0 = the graph's own size */
+    int guard_given;         /* 1 = guard replaces the graph's own `guard` line */
+    int guard;               /* guard band, pixels (with guard_given) */
     const char *const *sets; /* "node.param=value" strings */
     int set_count;
     int64_t seed;            /* -1 = the graph's own seed */

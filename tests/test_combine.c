@@ -106,7 +106,7 @@ static void test_known_values(void)
     struct run r;
     run_init(&r, 2, 2);
     float dr[4] = {0.5f, 0, 1, 0}, dg[4] = {0.25f, 0, 0, 0}, db[4] = {0, 0, 0, 0};
-    float ar[4] = {1, 0.5f, 0, 0}, ag[4] = {0.5f, 0.5f, 0, 0}, ab[4] = {0.25f, 1, 0, 0};
+    float ar[4] = {1, 0.5f, 0, 0}, ag[4] = {0.5f, 0.5f, 0, 0}, ab[4] = {0.25f, 1, 0};
     struct ssg_image *direct = rgb(2, 2, dr, dg, db), *albedo = rgb(2, 2, ar, ag, ab);
     struct ssg_image *ao = ssg_image_create(2, 2, 1);
     float aov[4] = {1, 0.5f, 0.25f, 0};

@@ -43,8 +43,8 @@ static void default_shape(const struct ssg_node_desc *desc, int port,
             return;
         }
     }
-    out->width = frame->width;
-    out->height = frame->height;
+    out->width = ssg_frame_full_width(frame);
+    out->height = ssg_frame_full_height(frame);
     out->channels = ssg_type_channels(p->types);
     out->type = p->types;
 }

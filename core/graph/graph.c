@@ -44,11 +44,20 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
     g->frame = SSG_FRAME_DEFAULTS;
     g->frame.width = g->width;
     g->frame.height = g->height;
+    g->frame.guard = g->guard;
     g->frame.seed = (uint64_t)g->seed;
     if (!ssg_image_size_ok(g->width, g->height, 1)) {
         ssg_diag_at(diags, SSG_E_SIZE, g->size_loc, "frame size %dx%d is out of range "
                     "(expected 1 to %d per side, at most %d pixels)", g->width, g->height,
                     SSG_IMAGE_MAX_SIDE, SSG_IMAGE_MAX_PIXELS);
+        return SSG_E_SIZE;
+    }
+    if (!ssg_image_size_ok(ssg_frame_full_width(&g->frame), ssg_frame_full_height(&g->frame),
+                           1)) {
+        ssg_diag_at(diags, SSG_E_SIZE, g->guard_loc, "frame size %dx%d with a guard band of "
+                    "%d pixels is out of range (expected at most %d per side, %d pixels in "
+                    "all)", g->width, g->height, g->guard, SSG_IMAGE_MAX_SIDE,
+                    SSG_IMAGE_MAX_PIXELS);
         return SSG_E_SIZE;
     }
     if (!g->scene_path[0]) {

@@ -49,6 +49,8 @@ struct ssg_graph {
     struct ssg_loc scene_loc;  /* where it was named */
     int width, height;
     struct ssg_loc size_loc;
+    int guard;                 /* the `guard` line's pixels, 0 = none */
+    struct ssg_loc guard_loc;
     int64_t seed;
     struct gnode *nodes;
     int count, cap;

@@ -333,6 +333,20 @@ static void directive_size(struct builder *b, const struct ssg_stmt *st)
     }
 }
 
+/* guard G: the band of G pixels rendered around the frame (ssg_frame.guard). */
+static void directive_guard(struct builder *b, const struct ssg_stmt *st)
+{
+    long long g;
+    if (st->arg_count > 1) {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->args[1].value.loc, "'guard' expects one "
+                    "number of pixels, e.g. guard 32");
+        fail(b, SSG_E_SYNTAX);
+    } else if (directive_int(b, st, 0, 0, SSG_GUARD_MAX, &g)) {
+        b->g->guard = (int)g;
+        b->g->guard_loc = st->args[0].value.loc;
+    }
+}
+
 /* backend cpu|gl: where nodes without their own backend= run. */
 static void directive_backend(struct builder *b, const struct ssg_stmt *st)
 {
@@ -360,6 +374,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
         }
     } else if (ssg_tok_eq(st->name, st->name_len, "size")) {
         directive_size(b, st);
+    } else if (ssg_tok_eq(st->name, st->name_len, "guard")) {
+        directive_guard(b, st);
     } else if (ssg_tok_eq(st->name, st->name_len, "seed")) {
         if (st->arg_count == 1 && directive_int(b, st, 0, 0, 2147483647LL, &seed))
             b->g->seed = seed;
@@ -372,8 +388,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
         }
     } else {
         ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' (expected "
-                    "name = node(...), set node.param = value, scene, size, seed, backend or "
-                    "include)",
+                    "name = node(...), set node.param = value, scene, size, guard, seed, "
+                    "backend or include)",
                     (int)st->name_len, st->name);
         fail(b, SSG_E_SYNTAX);
     }
@@ -542,6 +558,8 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
     }
     if (ov->seed >= 0)
         b->g->seed = ov->seed;
+    if (ov->guard_given)
+        b->g->guard = ov->guard;
     if (ov->backend && !ssg_backend_parse(ov->backend, strlen(ov->backend), &b->g->forced)) {
         ssg_diag_at(b->diags, SSG_E_USAGE, (struct ssg_loc){0}, "--backend must be cpu or gl, "
                     "got '%s'", ov->backend);

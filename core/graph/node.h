@@ -23,8 +23,10 @@
  *   the unit view-space normal, `depth` the linear distance along the view axis (-z).
  *   A pixel with no surface (background) has depth 0, position 0 and normal 0.
  *   Pixel (x, y) has its centre at (x + 0.5, y + 0.5); row 0 is the top.
- *   Projection: px = cx + f * x / -z, py = cy - f * y / -z with cx = width/2,
- *   cy = height/2, f = (height / 2) / tan(fov_y / 2) (see ssg_frame_project). */
+ *   Projection: px = cx + f * x / -z, py = cy - f * y / -z with cx = width/2 + guard,
+ *   cy = height/2 + guard, f = (height / 2) / tan(fov_y / 2) (ssg_frame_projection):
+ *   frame-sized images hold the frame and its guard band (ssg_frame.guard pixels on
+ *   every side, 0 by default), so the frame's own pixels start at (guard, guard). */
 #ifndef SSG_NODE_H
 #define SSG_NODE_H
 
@@ -195,8 +197,8 @@ static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame 
 {
     struct ssg_projection p;
     p.f = 0.5f * (float)frame->height / tanf(0.5f * frame->fov_y * (float)M_PI / 180.0f);
-    p.cx = 0.5f * (float)frame->width;
-    p.cy = 0.5f * (float)frame->height;
+    p.cx = 0.5f * (float)frame->width + (float)frame->guard;
+    p.cy = 0.5f * (float)frame->height + (float)frame->guard;
     return p;
 }
 
@@ -223,6 +225,23 @@ static inline struct ssg_projection ssg_projection_scaled(const struct ssg_proje
     q.cx = p->cx * (float)w / (float)frame_w;
     q.cy = p->cy * (float)h / (float)frame_h;
     return q;
+}
+
+/* The frame's own pixels within an image of `shape`: [x0, x1) x [y0, y1). An image of
+ * the full size (ssg_frame_full_width) has the guard band cut off; any other image
+ * (subsampled, a kernel, a hand-bound input) is all frame. Sinks (write, compare) use it
+ * so that a guard band never reaches a file or a metric. */
+static inline void ssg_frame_region(const struct ssg_frame *frame,
+                                    const struct ssg_shape *shape, int *x0, int *y0, int *x1,
+                                    int *y1)
+{
+    int g = frame->guard;
+    if (g > 0 && shape->width == ssg_frame_full_width(frame) &&
+        shape->height == ssg_frame_full_height(frame)) {
+        *x0 = g, *y0 = g, *x1 = g + frame->width, *y1 = g + frame->height;
+    } else {
+        *x0 = 0, *y0 = 0, *x1 = shape->width, *y1 = shape->height;
+    }
 }
 
 /* Reports a node's run-time error (out of memory, a file it cannot write, a scene it

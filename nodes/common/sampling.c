@@ -42,7 +42,7 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
     const struct ssg_projection frame_proj = ssg_frame_projection(f);
     if (f->width < 1 || f->height < 1 || !(frame_proj.f > 0))
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a frame with size and field of view");
-    *out = ssg_projection_scaled(&frame_proj, f->width, f->height, gbuffer->width,
-                                 gbuffer->height);
+    *out = ssg_projection_scaled(&frame_proj, ssg_frame_full_width(f),
+                                 ssg_frame_full_height(f), gbuffer->width, gbuffer->height);
     return SSG_OK;
 }

@@ -12,6 +12,10 @@
  *          then over channels
  *   pixels the number of pixels counted
  * With no pixel counted, every metric but `pixels` is NaN (null in JSON).
+ * Only the frame counts: images with a guard band around it (ssg_frame.guard,
+ * docs/guard_band.md) are compared without the band, so that a graph with a band and one
+ * without score the same pixels. `edge` > 0 further restricts the count to the pixels
+ * within `edge` of the frame's border, the region a guard band is meant to fix.
  *
  * Departure from the paper, at borders and mask edges: the paper averages only windows that
  * lie wholly inside the image. Here every counted pixel has an SSIM value, and its window
@@ -89,6 +93,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->c2 = (0.03 * p->peak) * (0.03 * p->peak);
     c->peak = p->peak;
     c->inv_scale = 1.0f / p->scale;
+    c->edge = p->edge;
+    ssg_frame_region(ctx->frame, &ctx->in_shape[SSG_COMPARE_IN_A], &c->x0, &c->y0, &c->x1,
+                     &c->y1);
     return SSG_OK;
 }
 
@@ -99,6 +106,10 @@ static const struct ssg_param_desc params[] = {
     {.name = "peak", SSG_FIELD_FLOAT(struct ssg_compare_params, peak),
      .def = 1, .min = 1e-6, .max = 1e6,
      .help = "signal peak: PSNR's maximum and SSIM's dynamic range L (1 for AO, [0,1] data)"},
+    {.name = "edge", SSG_FIELD_INT(struct ssg_compare_params, edge), .def = 0, .min = 0,
+     .max = 16384, .unit = "px",
+     .help = "> 0: compare only the pixels within this distance of the frame's border "
+             "(where screen-space methods lack occluders); 0 = the whole frame"},
 };
 
 static const struct ssg_port_desc inputs[] = {
@@ -125,7 +136,8 @@ const struct ssg_node_desc ssg_node_compare = {
               "K1 0.01, K2 0.03)",
     .doc = "Reports rmse, mae, bias (the mean of a - b: > 0 where a is brighter than b), psnr "
            "(dB, inf when identical), ssim and pixels over the pixels "
-           "with mask > 0.5 (all without a mask), averaged over channels; `ssgraph run` prints "
+           "with mask > 0.5 (all without a mask) within the frame (a guard band is left "
+           "out; edge > 0: only the frame's border of that width), averaged over channels; `ssgraph run` prints "
            "them and writes them to <out>/metrics.json. SSIM windows use only counted pixels "
            "inside the image, weights renormalised. `diff` maps t = clamp((a - b) / scale, "
            "-1, 1) to blue (-1), white (0), red (+1); for 3 channels the channel difference "

@@ -28,6 +28,8 @@ enum ssg_compare_output {
 struct ssg_compare_params {
     float scale; /* |a - b| shown in full colour in `diff`, image units; default 0.25 */
     float peak;  /* signal peak: PSNR's MAX and SSIM's dynamic range L; default 1 */
+    int edge;    /* > 0: only pixels within this many of the frame's border count, px;
+                    default 0 = every pixel of the frame */
 };
 
 struct ssg_compare_consts {
@@ -37,6 +39,9 @@ struct ssg_compare_consts {
     double c2;                      /* SSIM (K2 L)^2, K2 = 0.03 */
     double peak;                    /* as in the parameters */
     float inv_scale;                /* 1 / scale */
+    int x0, y0, x1, y1;             /* the frame within the images: [x0, x1) x [y0, y1),
+                                       the guard band (ssg_frame.guard) left out */
+    int edge;                       /* as in the parameters */
 };
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -49,21 +49,29 @@ struct job {
     struct partial *parts;   /* one per band */
 };
 
-static int counted(const struct job *j, size_t o)
+/* 1 when pixel (x, y) counts: inside the frame (compare.c), within `edge` of its border
+   when edge > 0, and under the mask. */
+static int counted(const struct job *j, int x, int y)
 {
-    return !j->mask || j->mask[o] > 0.5f;
+    const struct ssg_compare_consts *c = j->c;
+    if (x < c->x0 || x >= c->x1 || y < c->y0 || y >= c->y1)
+        return 0;
+    if (c->edge > 0 && x >= c->x0 + c->edge && x < c->x1 - c->edge && y >= c->y0 + c->edge &&
+        y < c->y1 - c->edge)
+        return 0;
+    return !j->mask || j->mask[(size_t)y * (size_t)j->w + (size_t)x] > 0.5f;
 }
 
 static void errors_row(const struct job *j, struct partial *p, int y)
 {
     size_t o = (size_t)y * (size_t)j->w;
     for (int x = 0; x < j->w; x++)
-        p->count += counted(j, o + (size_t)x);
+        p->count += counted(j, x, y);
     for (int ch = 0; ch < j->channels; ch++) {
         const float *a = j->a[ch] + o, *b = j->b[ch] + o;
         double sq = 0, ab = 0, df = 0;
         for (int x = 0; x < j->w; x++) {
-            if (!counted(j, o + (size_t)x))
+            if (!counted(j, x, y))
                 continue;
             double d = (double)a[x] - (double)b[x];
             sq += d * d;
@@ -90,7 +98,7 @@ static void diff_row(const struct job *j, int y)
         float t = d * j->c->inv_scale;
         t = t < -1.0f ? -1.0f : t > 1.0f ? 1.0f : t;
         float rgb[3] = {t < 0 ? 1.0f + t : 1.0f, 1.0f - fabsf(t), t > 0 ? 1.0f - t : 1.0f};
-        int on = counted(j, i);
+        int on = counted(j, x, y);
         for (int ch = 0; ch < 3; ch++)
             j->diff[ch][i] = on ? rgb[ch] : 0.0f;
     }
@@ -143,7 +151,7 @@ static void moments_row(const struct job *j, struct window *win, int ch, int y)
     for (int k = 0; k < MOMENTS; k++)
         m[k] = win->row + (size_t)k * win->padded + R;
     for (int x = 0; x < j->w; x++) {
-        int on = counted(j, o + (size_t)x);
+        int on = counted(j, x, y);
         double a = on ? (double)j->a[ch][o + (size_t)x] : 0.0;
         double b = on ? (double)j->b[ch][o + (size_t)x] : 0.0;
         m[M_ONE][x] = on ? 1.0 : 0.0;
@@ -199,7 +207,6 @@ static void ssim_pixels(const struct job *j, const struct window *win, int y)
     const double *s[MOMENTS];
     for (int k = 0; k < MOMENTS; k++)
         s[k] = win->acc + (size_t)k * w;
-    const float *mask = j->mask ? j->mask + (size_t)y * w : NULL;
     const double c1 = j->c->c1, c2 = j->c->c2;
     double *restrict out = win->ssim;
     for (size_t x = 0; x < w; x++) {
@@ -212,8 +219,8 @@ static void ssim_pixels(const struct job *j, const struct window *win, int y)
                  ((mu_a * mu_a + mu_b * mu_b + c1) * (var_a + var_b + c2));
     }
     /* A pixel not counted may have no counted neighbour (0 / 0): computed, then dropped. */
-    for (size_t x = 0; mask && x < w; x++)
-        out[x] = mask[x] > 0.5f ? out[x] : 0.0;
+    for (size_t x = 0; x < w; x++)
+        out[x] = counted(j, (int)x, y) ? out[x] : 0.0;
 }
 
 /* Sum of SSIM over the counted pixels of rows [y0, y1) of channel ch. */

@@ -7,9 +7,60 @@
 #include "io/imageio.h"
 #include "write.h"
 
-enum { PATH_MAX_LEN = 4096 };
+enum { PATH_MAX_LEN = 4096, MAX_LAYERS = 64 };
 
+/* The images as written: each input, or a copy of its frame when it carries a guard band
+   (ssg_frame_region: the band never reaches a file). */
+struct framed {
+    const struct ssg_image *image[MAX_LAYERS];
+    struct ssg_image *owned[MAX_LAYERS]; /* the copies, freed by framed_free */
+};
 
+static const struct ssg_image *frame_of(const struct ssg_node_ctx *ctx,
+                                        const struct ssg_image *im, struct ssg_image **copy)
+{
+    struct ssg_shape shape = {im->width, im->height, im->channels, 0};
+    int x0, y0, x1, y1;
+    ssg_frame_region(ctx->frame, &shape, &x0, &y0, &x1, &y1);
+    *copy = NULL;
+    if (x0 == 0 && y0 == 0 && x1 == im->width && y1 == im->height)
+        return im;
+    if (!(*copy = ssg_image_create(x1 - x0, y1 - y0, im->channels)))
+        return NULL;
+    for (int ch = 0; ch < im->channels; ch++) {
+        const float *src = ssg_image_plane(im, ch);
+        float *dst = ssg_image_plane(*copy, ch);
+        for (int y = y0; y < y1; y++)
+            memcpy(dst + (size_t)(y - y0) * (size_t)(x1 - x0),
+                   src + (size_t)y * (size_t)im->width + (size_t)x0,
+                   (size_t)(x1 - x0) * sizeof(float));
+    }
+    return *copy;
+}
+
+static void framed_free(struct framed *f, int n)
+{
+    for (int i = 0; i < n; i++)
+        ssg_image_destroy(&f->owned[i]);
+}
+
+/* The main image (0) and every layer, framed; SSG_E_NOMEM when a copy fails. */
+static enum ssg_err frame_all(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                              struct framed *f)
+{
+    int n = io->extra_count + 1;
+    memset(f, 0, sizeof *f);
+    if (n > MAX_LAYERS)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", n, MAX_LAYERS);
+    for (int i = 0; i < n; i++) {
+        const struct ssg_image *im = i ? io->extra_in[i - 1] : io->in[0];
+        if (!(f->image[i] = frame_of(ctx, im, &f->owned[i]))) {
+            framed_free(f, i);
+            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
+        }
+    }
+    return SSG_OK;
+}
 
 static enum ssg_err make_path(char *buf, size_t len, const char *dir, const char *name,
                               const char *ext, struct ssg_diags *diags)
@@ -34,19 +85,14 @@ static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
 
 /* The EXR, staged: the main image, then each extra input as a layer named by its key. */
 static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                              const struct ssg_write_params *p, const char *path,
-                              struct ssg_tmp *t)
+                              const struct ssg_write_params *p, const struct framed *f,
+                              const char *path, struct ssg_tmp *t)
 {
-    enum { MAX_LAYERS = 64 };
     struct ssg_exr_layer layers[MAX_LAYERS];
-    if (io->extra_count + 1 > MAX_LAYERS) {
-        return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", io->extra_count + 1,
-                             MAX_LAYERS);
-    }
-    layers[0] = (struct ssg_exr_layer){.name = NULL, .image = io->in[0]};
+    layers[0] = (struct ssg_exr_layer){.name = NULL, .image = f->image[0]};
     for (int i = 0; i < io->extra_count; i++) {
         layers[i + 1] = (struct ssg_exr_layer){.name = io->extra_names[i],
-                                               .image = io->extra_in[i]};
+                                               .image = f->image[i + 1]};
         if (!layer_kind(io->extra_types[i], &layers[i + 1].kind)) {
             char types[64];
             ssg_type_names(io->extra_types[i], types, sizeof types);
@@ -74,17 +120,22 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
        while writing leaves the previous EXR and PNG together, never a new EXR beside an
        old PNG. */
     struct ssg_tmp staged[2];
+    struct framed f;
     int n = 0;
-    enum ssg_err err = ssg_make_dirs(dir, ctx->diags);
+    enum ssg_err err = frame_all(ctx, io, &f);
+    if (err)
+        return err;
+    err = ssg_make_dirs(dir, ctx->diags);
     if (!err && p->exr &&
         !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
-        if (!(err = stage_exr(ctx, io, p, path, &staged[n])))
+        if (!(err = stage_exr(ctx, io, p, &f, path, &staged[n])))
             n++;
     if (!err && p->png &&
         !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
-        if (!(err = ssg_png_stage(path, io->in[0], (enum ssg_tonemap)p->tonemap, p->exposure,
+        if (!(err = ssg_png_stage(path, f.image[0], (enum ssg_tonemap)p->tonemap, p->exposure,
                                   &staged[n], ctx->diags)))
             n++;
+    framed_free(&f, io->extra_count + 1);
     if (err) {
         ssg_tmp_discard(staged, n);
         return err;
