@@ -139,14 +139,18 @@ enum ssg_err ssg_graph_param(const struct ssg_graph *g, const char *key, double 
                              int *integer, struct ssg_diags *diags)
 {
     const char *dot = strchr(key, '.');
-    int i = dot ? ssg_graph_find(g, key, (size_t)(dot - key)) : -1;
+    if (!dot) {
+        ssg_diag_file(diags, SSG_E_USAGE, g->path, "expected a parameter node.param, got "
+                      "'%s'", key);
+        return SSG_E_USAGE;
+    }
+    int i = ssg_graph_find(g, key, (size_t)(dot - key));
     char names[512];
     if (i < 0) {
         instance_names(g, names, sizeof names);
-        ssg_diag_file(diags, dot ? SSG_E_UNKNOWN_NAME : SSG_E_USAGE, g->path, "no node "
-                      "named '%.*s' for the parameter '%s' (expected node.param, a node one "
-                      "of: %s)", (int)(dot ? dot - key : (long)strlen(key)), key, key, names);
-        return dot ? SSG_E_UNKNOWN_NAME : SSG_E_USAGE;
+        ssg_diag_file(diags, SSG_E_UNKNOWN_NAME, g->path, "no node named '%.*s' (in '%s'; "
+                      "expected one of: %s)", (int)(dot - key), key, key, names);
+        return SSG_E_UNKNOWN_NAME;
     }
     const struct gnode *n = &g->nodes[i];
     int p = ssg_param_find(n->desc->params, dot + 1, strlen(dot + 1));
