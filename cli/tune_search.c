@@ -16,6 +16,7 @@ struct state {
     double *points;  /* the distinct points evaluated, dims each */
     double *values;
     int count;
+    double best_at[SSG_SEARCH_MAX_DIMS]; /* the best point before its snap (s->best: after) */
 };
 
 static double clamp01(double v)
@@ -42,13 +43,17 @@ static int find(const struct state *st, const double *x)
     return -1;
 }
 
-/* f at x, clamped and snapped in place; a point seen before is looked up. +inf once the
-   budget is spent or f stopped the search. */
-static double evaluate(struct state *st, double *x)
+/* f at x clamped into the box (in place) and snapped; a snapped point seen before is
+   looked up. The caller keeps x unsnapped: its steps stay on an exact dyadic lattice, so a
+   step and its reverse come back to the very same point (snapping each position would let
+   rounding drift make near-copies of points already evaluated). +inf once the budget is
+   spent or f stopped the search. */
+static double evaluate(struct state *st, double *point)
 {
     struct ssg_search *s = st->s;
+    double x[SSG_SEARCH_MAX_DIMS];
     for (int k = 0; k < s->dims; k++)
-        x[k] = clamp01(x[k]);
+        x[k] = point[k] = clamp01(point[k]);
     if (s->snap)
         s->snap(s->user, x);
     int seen = find(st, x);
@@ -67,6 +72,7 @@ static double evaluate(struct state *st, double *x)
     if (v < s->best_value) {
         s->best_value = v;
         memcpy(s->best, x, (size_t)s->dims * sizeof *x);
+        memcpy(st->best_at, point, (size_t)s->dims * sizeof *x);
     }
     return v;
 }
@@ -104,7 +110,7 @@ static void compass(struct state *st)
     int dirs = 2 * s->dims, first = 0;
     double x[SSG_SEARCH_MAX_DIMS], fx = s->best_value;
     double min_step = s->min_step > 0 ? s->min_step : 1.0 / 512;
-    memcpy(x, s->best, sizeof x);
+    memcpy(x, st->best_at, sizeof x);
     for (double h = FIRST_STEP; h >= min_step && running(s);) {
         int moved = 0;
         for (int t = 0; t < dirs && !moved && running(s); t++) {

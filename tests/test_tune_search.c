@@ -1,7 +1,8 @@
 /* test_tune_search.c - the optimiser of `ssgraph tune` (cli/tune_search.h) on analytic
  * functions: a quadratic bowl in 2 and 3 dimensions is minimised to within 0.01 of its
  * centre inside the budget; a bowl centred outside the box ends on the box's face; an
- * integer axis (snapped) never has a point evaluated twice; the same inputs give the
+ * integer axis (snapped) never has a point evaluated twice, nor a finely rounded one a near
+ * copy; the same inputs give the
  * same sequence of points; an objective that fails (NaN) stops the search at once. */
 #include <math.h>
 #include <string.h>
@@ -37,6 +38,14 @@ static void snap_grid(void *user, double *x)
 {
     (void)user;
     x[0] = round(x[0] * 10) / 10;
+}
+
+/* Every axis to 4 decimals, as tune rounds a decimal parameter to 6 digits. */
+static void snap_fine(void *user, double *x)
+{
+    struct bowl *b = user;
+    for (int k = 0; k < b->dims; k++)
+        x[k] = round(x[k] * 1e4) / 1e4;
 }
 
 static struct ssg_search search_of(struct bowl *b, int budget)
@@ -85,6 +94,23 @@ static void test_snapped_points_once(void)
     CHECK_NEAR(s.best[1], 0.6, 0.01);
 }
 
+/* Rounding must not drift: a step and its reverse come back to the same point, so no two
+   evaluated points are nearer than the smallest step (1/512) unless they are one point. */
+static void test_no_near_copies(void)
+{
+    struct bowl b = {.c = {0.123, 0.77}, .w = {1, 3}, .dims = 2};
+    struct ssg_search s = search_of(&b, 120);
+    s.snap = snap_fine;
+    ssg_search_run(&s);
+    int near = 0;
+    for (int i = 0; i < b.calls; i++)
+        for (int j = 0; j < i; j++)
+            near += fabs(b.trace[i][0] - b.trace[j][0]) + fabs(b.trace[i][1] - b.trace[j][1]) <
+                    1.0 / 1024;
+    CHECK_EQ(near, 0);
+    CHECK_NEAR(s.best[0], 0.123, 0.01);
+}
+
 static void test_deterministic(void)
 {
     static struct bowl a = {.c = {0.2, 0.7, 0.4}, .w = {2, 1, 3}, .dims = 3};
@@ -115,6 +141,7 @@ int main(void)
     test_bowl(3);
     test_outside_the_box();
     test_snapped_points_once();
+    test_no_near_copies();
     test_deterministic();
     test_failure_stops();
     return check_report();
