@@ -88,7 +88,7 @@ static void free_cells(struct bench *b)
 }
 
 /* With --reference: <out>/bench.graph, the graph plus a compare node `bench_reference` of
-   --image against --reference, whose metrics every cell then reports. */
+   --image against --reference (over --mask), whose metrics every cell then reports. */
 static int write_reference_graph(const struct ssg_bench_request *q, char *path, size_t len)
 {
     char abs[4096];
@@ -103,8 +103,8 @@ static int write_reference_graph(const struct ssg_bench_request *q, char *path, 
         return 0;
     }
     fprintf(f, "# made by ssgraph bench --reference: the graph, and its image compared with "
-               "the reference\ninclude \"%s\"\nbench_reference = compare(%s, %s)\n", abs,
-            q->image, q->reference);
+               "the reference\ninclude \"%s\"\nbench_reference = compare(%s, %s%s%s)\n", abs,
+            q->image, q->reference, q->mask ? ", mask=" : "", q->mask ? q->mask : "");
     return fclose(f) == 0;
 }
 
@@ -288,9 +288,10 @@ static int knows_time_node(const struct bench *b, const struct cell *c)
 int ssg_bench_main(const struct ssg_bench_request *req)
 {
     struct bench b = {.req = req, .n = req->sweep_count, .graph = req->graph};
-    if (!req->reference != !req->image) {
+    if (!req->reference != !req->image || (req->mask && !req->reference)) {
         fprintf(stderr, "ssgraph: error: --reference NODE.PORT and --image NODE.PORT go "
-                "together (the image each cell makes and the truth it is compared with)\n");
+                "together (the image each cell makes and the truth it is compared with), "
+                "and --mask NODE.PORT needs them\n");
         return 2;
     }
     /* Paths inside it are built in fixed buffers of 1100 to 1200 bytes: refuse a longer one

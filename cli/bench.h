@@ -20,6 +20,8 @@ struct ssg_bench_request {
     int plot;                         /* 1 = bench_ms.png and bench_pareto.png (gnuplot) */
     const char *reference;            /* NODE.PORT every cell's image is compared with */
     const char *image;                /* NODE.PORT: that image (with --reference) */
+    const char *mask;                 /* NODE.PORT: only pixels where it is over 0.5 are
+                                         compared (with --reference); NULL = all */
     int stereo;                       /* 1 = each cell renders both eyes; times add up */
     float ipd;                        /* eye distance, scene units */
 };

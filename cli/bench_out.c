@@ -8,6 +8,7 @@
 #include "bench_cells.h"
 #include "lang/files.h"
 #include "plot.h"
+#include "text_out.h"
 
 /* "rmse=0.0213;ssim=0.91" style: every metric of a cell as node.name=value. */
 static void metrics_text(const struct cell *c, char *buf, size_t len)
@@ -19,17 +20,6 @@ static void metrics_text(const struct cell *c, char *buf, size_t len)
         used += (size_t)snprintf(buf + used, len - used, "%s%s.%s=%.6g", i ? ";" : "",
                                  m->node, m->name, m->value);
     }
-}
-
-static void csv_field(FILE *f, const char *text)
-{
-    fputc('"', f);
-    for (; *text; text++) {
-        if (*text == '"')
-            fputc('"', f);
-        fputc(*text, f);
-    }
-    fputc('"', f);
 }
 
 static void csv_header(const struct bench *b, FILE *f)
@@ -59,30 +49,16 @@ static void csv_row(const struct bench *b, int ci, FILE *f)
     fprintf(f, "%d", ci);
     for (int k = 0; k < b->n; k++) {
         fputc(',', f);
-        csv_field(f, ssg_bench_value(b, c, k));
+        ssg_csv_field(f, ssg_bench_value(b, c, k));
     }
     fprintf(f, ",%s,%d,%.4f,%.4f,%.4f,", c->ok ? "ok" : "error", c->stats.frames,
             c->stats.frame_avg_ms, c->stats.frame_min_ms, c->stats.frame_max_ms);
-    csv_field(f, nodes);
+    ssg_csv_field(f, nodes);
     fputc(',', f);
-    csv_field(f, metrics);
+    ssg_csv_field(f, metrics);
     fputc(',', f);
-    csv_field(f, c->ok ? "" : c->error);
+    ssg_csv_field(f, c->ok ? "" : c->error);
     fputc('\n', f);
-}
-
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
 }
 
 static void json_cell(const struct bench *b, int ci, FILE *f)
@@ -91,9 +67,9 @@ static void json_cell(const struct bench *b, int ci, FILE *f)
     fprintf(f, "    {\"cell\": %d, \"values\": {", ci);
     for (int k = 0; k < b->n; k++) {
         fprintf(f, "%s", k ? ", " : "");
-        json_string(f, b->sweeps[k].key);
+        ssg_json_string(f, b->sweeps[k].key);
         fputs(": ", f);
-        json_string(f, ssg_bench_value(b, c, k));
+        ssg_json_string(f, ssg_bench_value(b, c, k));
     }
     fprintf(f, "}, \"status\": \"%s\", \"frames\": %d, \"frame_avg_ms\": %.6g, "
             "\"frame_min_ms\": %.6g, \"frame_max_ms\": %.6g, \"metrics\": {",
@@ -102,17 +78,14 @@ static void json_cell(const struct bench *b, int ci, FILE *f)
     for (int i = 0; i < c->stats.metric_count; i++) {
         const struct ssg_run_metric *m = &c->stats.metrics[i];
         fprintf(f, "%s\"%s.%s\": ", i ? ", " : "", m->node, m->name);
-        if (isfinite(m->value)) /* JSON has no inf: a PSNR of identical images is null */
-            fprintf(f, "%.9g", m->value);
-        else
-            fputs("null", f);
+        ssg_json_number(f, m->value);
     }
     fputs("}, \"node_ms\": {", f);
     for (int i = 0; i < c->stats.node_count; i++)
         fprintf(f, "%s\"%s\": %.6g", i ? ", " : "", c->stats.nodes[i].name,
                 c->stats.nodes[i].avg_ms);
     fputs("}, \"error\": ", f);
-    json_string(f, c->ok ? "" : c->error);
+    ssg_json_string(f, c->ok ? "" : c->error);
     fputs("}", f);
 }
 
@@ -120,15 +93,15 @@ static void write_json(FILE *f, const void *user)
 {
     const struct bench *b = user;
     fputs("{\n  \"graph\": ", f);
-    json_string(f, b->req->graph);
+    ssg_json_string(f, b->req->graph);
     fputs(",\n  \"sweeps\": [", f);
     for (int k = 0; k < b->n; k++) {
         fprintf(f, "%s{\"key\": ", k ? ", " : "");
-        json_string(f, b->sweeps[k].key);
+        ssg_json_string(f, b->sweeps[k].key);
         fputs(", \"values\": [", f);
         for (int v = 0; v < b->sweeps[k].count; v++) {
             fputs(v ? ", " : "", f);
-            json_string(f, b->sweeps[k].values[v]);
+            ssg_json_string(f, b->sweeps[k].values[v]);
         }
         fputs("]}", f);
     }

@@ -5,6 +5,7 @@
  *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR]
  *   ssgraph compare A B [--mask M] [--json] [--peak P]
  *   ssgraph bench FILE --sweep NODE.PARAM=V1,V2,... [options]
+ *   ssgraph tune FILE --reference NODE.PORT --image NODE.PORT --param NODE.P=LO:HI ...
  *   ssgraph nodes | describe NODE | docs
  * The options and the usage text come from one table (options.c); what a run printed
  * comes back from the library as statistics and is printed by report.c.
@@ -259,9 +260,20 @@ static int cmd_bench(struct ssg_cli_args *a)
         .sweep_count = a->sweep_count, .frames = a->frames, .threads = a->threads,
         .out_dir = a->out_dir, .time_node = a->time_node, .error_metric = a->error_metric,
         .plot = a->plot, .reference = a->reference, .image = a->image, .stereo = a->stereo,
-        .ipd = a->ipd,
+        .ipd = a->ipd, .mask = a->mask,
     };
     return ssg_bench_main(&req);
+}
+
+static int cmd_tune(const struct ssg_cli_args *a)
+{
+    struct ssg_tune_request req = {
+        .graph = a->files[0], .ov = &a->ov, .scenes = a->scenes,
+        .scene_count = a->scene_count, .params = a->params, .param_count = a->param_count,
+        .reference = a->reference, .image = a->image, .mask = a->mask, .evals = a->evals,
+        .threads = a->threads, .out_dir = a->out_dir,
+    };
+    return ssg_tune_main(&req);
 }
 
 static int cmd_nodes(void)
@@ -300,6 +312,7 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_NODE: return cmd_node(&a);
     case SSG_CLI_BENCH: return cmd_bench(&a);
     case SSG_CLI_COMPARE: return cmd_compare(&a);
+    case SSG_CLI_TUNE: return cmd_tune(&a);
     }
     return EXIT_USAGE;
 }

@@ -30,7 +30,8 @@ struct option {
 enum { HELP_COLUMN = 22 }; /* where an option's help starts in the usage text */
 
 /* The names of the commands, bit by bit of enum ssg_cli_command. */
-static const char *const command_names[] = {"run", "check", "node", "bench", "compare"};
+static const char *const command_names[] = {"run",   "check",   "node",
+                                            "bench", "compare", "tune"};
 
 #define FIELD(a, opt, type) ((type *)((char *)(a) + (opt)->field))
 
@@ -138,6 +139,14 @@ static int take_size(struct ssg_cli_args *a, const struct option *opt, const cha
     return 0;
 }
 
+/* --scene: the scene of run, check and bench (the last one given), and every one of
+   tune's list. */
+static int take_scene(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    a->ov.scene = value;
+    return take_list(a, opt, value);
+}
+
 static int take_backend(struct ssg_cli_args *a, const struct option *opt, const char *value)
 {
     if (strcmp(value, "cpu") && strcmp(value, "gl"))
@@ -146,7 +155,7 @@ static int take_backend(struct ssg_cli_args *a, const struct option *opt, const 
 }
 
 #define OF(member) offsetof(struct ssg_cli_args, member)
-#define ALL_GRAPH (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH)
+#define ALL_GRAPH (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE)
 
 /* In the order of the usage text, which starts a heading where the commands change. */
 static const struct option options[] = {
@@ -164,18 +173,23 @@ static const struct option options[] = {
      .help = "run every node there (gl: OpenGL 4.5 through EGL on a GPU, else\n"
              "OSMesa; nodes without GL stay on the CPU); default: the graph's\n"
              "`backend` line and its nodes' backend= arguments, else cpu"},
-    {.name = "--scene", .arg = "FILE", .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH,
-     .take = take_text, .field = OF(ov.scene),
-     .help = "use this scene instead of the graph's"},
-    {.name = "--guard", .arg = "G", .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH,
+    {.name = "--scene", .arg = "FILE",
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .take = take_scene, .field = OF(scenes), .count = OF(scene_count),
+     .hi = SSG_TUNE_MAX_SCENES,
+     .help = "use this scene instead of the graph's (tune: repeatable, the\n"
+             "error is the mean over them)"},
+    {.name = "--guard", .arg = "G",
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_int, .field = OF(guard), .lo = 0, .hi = SSG_GUARD_MAX,
      .help = "render G pixels of guard band around the frame (instead of the\n"
              "graph's `guard` line): screen-space AO sees occluders just outside\n"
              "the frame; outputs and metrics stay frame-sized"},
-    {.name = "--out", .arg = "DIR", .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH,
+    {.name = "--out", .arg = "DIR",
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_text, .field = OF(out_dir),
      .help = "output directory (default out)"},
-    {.name = "--threads", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
+    {.name = "--threads", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_int, .field = OF(threads), .lo = 1, .hi = 1024,
      .help = "worker threads (default: all cores); never changes the result"},
     {.name = "--frames", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
@@ -213,17 +227,27 @@ static const struct option options[] = {
     {.name = "--error", .arg = "NODE.METRIC", .commands = SSG_CLI_BENCH, .take = take_text,
      .field = OF(error_metric),
      .help = "the error shown and plotted (default: the first metric)"},
-    {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH, .take = take_text,
-     .field = OF(reference),
-     .help = "the truth each cell's --image is compared with"},
-    {.name = "--image", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH, .take = take_text,
-     .field = OF(image),
-     .help = "the image compared with --reference"},
     {.name = "--plot", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(plot),
      .help = "draw bench_ms.png and bench_pareto.png with gnuplot"},
-    {.name = "--mask", .arg = "M", .commands = SSG_CLI_COMPARE, .take = take_text,
-     .field = OF(mask),
-     .help = "FILE[:LAYER]: compare only the pixels where it is over 0.5"},
+    {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .take = take_text, .field = OF(reference),
+     .help = "the truth each cell's (tune: evaluation's) --image is compared\n"
+             "with; tune computes it once per scene"},
+    {.name = "--image", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .take = take_text, .field = OF(image),
+     .help = "the image compared with --reference"},
+    {.name = "--param", .arg = "NODE.P=LO:HI[:log]", .commands = SSG_CLI_TUNE,
+     .take = take_list, .field = OF(params), .count = OF(param_count),
+     .hi = SSG_TUNE_MAX_PARAMS,
+     .help = "a number parameter tune searches within [LO, HI] (repeatable;\n"
+             ":log: searched on a log scale, LO > 0; integers are rounded)"},
+    {.name = "--evals", .arg = "N", .commands = SSG_CLI_TUNE, .take = take_int,
+     .field = OF(evals), .lo = 1, .hi = 10000,
+     .help = "most evaluations (each runs --image on every scene; default 40)"},
+    {.name = "--mask", .arg = "M", .commands = SSG_CLI_BENCH | SSG_CLI_COMPARE | SSG_CLI_TUNE,
+     .take = take_text, .field = OF(mask),
+     .help = "count only the pixels where M is over 0.5: compare: FILE[:LAYER];\n"
+             "bench, tune: NODE.PORT of the graph (g.depth: pixels with a surface)"},
     {.name = "--peak", .arg = "P", .commands = SSG_CLI_COMPARE, .take = take_positive_text,
      .field = OF(peak), .expects = "a positive number",
      .help = "the signal's peak for the PSNR (default 1)"},
@@ -251,6 +275,11 @@ static const char *const usage_commands =
     "                  ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
     "                  --image NODE.PORT adds each cell's error against that truth;\n"
     "                  --stereo times both eyes of every cell (1080x1200 unless --size)\n"
+    "  tune FILE       search --param NODE.P=LO:HI[:log] for the lowest mean RMSE of\n"
+    "                  --image NODE.PORT against --reference NODE.PORT (computed once\n"
+    "                  per scene) over every --scene (--mask NODE.PORT: those pixels;\n"
+    "                  --evals N, default 40); writes tune.csv and tune.json after each\n"
+    "                  evaluation and tuned.graph (the graph with the best values)\n"
     "  nodes           list the nodes\n"
     "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
     "  docs            the Markdown reference of every node\n";

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "bench.h"
+#include "tune.h"
 #include "ssgraph.h"
 
 /* The commands that take options, as bits of an option's mask. */
@@ -17,6 +18,7 @@ enum ssg_cli_command {
     SSG_CLI_NODE = 1u << 2,
     SSG_CLI_BENCH = 1u << 3,
     SSG_CLI_COMPARE = 1u << 4,
+    SSG_CLI_TUNE = 1u << 5,
 };
 
 enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2 };
@@ -25,7 +27,9 @@ enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2 }
 struct ssg_cli_args {
     const char *files[2];            /* positional: FILE (node: NODE); compare: A and B */
     int file_count;
-    struct ssg_overrides ov;         /* --scene, --size, --set, --seed, --backend */
+    struct ssg_overrides ov;         /* --scene (the last), --size, --set, --seed, --backend */
+    const char *scenes[SSG_TUNE_MAX_SCENES]; /* tune: every --scene, in order */
+    int scene_count;
     const char *sets[SSG_CLI_MAX_SETS];
     int seed;                        /* --seed; -1 = the graph's own */
     int guard;                       /* --guard, px; -1 = the graph's own */
@@ -43,10 +47,13 @@ struct ssg_cli_args {
     const char *time_node;           /* bench: --time */
     const char *error_metric;        /* bench: --error */
     int plot;                        /* bench: --plot */
-    const char *reference, *image;   /* bench: --reference, --image (NODE.PORT) */
+    const char *reference, *image;   /* bench, tune: --reference, --image (NODE.PORT) */
+    const char *params[SSG_TUNE_MAX_PARAMS]; /* tune: --param node.p=lo:hi[:log] */
+    int param_count;
+    int evals;                       /* tune: --evals; 0 = its default */
     int stereo;                      /* run, bench: --stereo */
     float ipd;                       /* run, bench: --ipd, scene units; default 0.064 */
-    const char *mask;                /* compare: --mask FILE[:LAYER] */
+    const char *mask;                /* compare: --mask FILE[:LAYER]; bench, tune: NODE.PORT */
     const char *peak;                /* compare: --peak, checked positive; NULL = 1 */
     int json;                        /* compare: --json */
 };

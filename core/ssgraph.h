@@ -218,6 +218,11 @@ struct ssg_run_options {
     ssg_progress_fn progress;    /* progress of long nodes; NULL = not reported */
     ssg_log_fn log;              /* the library's notices; NULL = not reported */
     void *user;                  /* passed to progress and log as they are */
+    struct ssg_image **outputs;  /* for a graph loaded with ssg_overrides.outputs: one
+                                    entry per requested output, in that order, each set to
+                                    a new CPU image of the last frame's pixels, owned by
+                                    the caller (ssg_image_destroy); all NULL on failure;
+                                    NULL = not wanted */
 };
 
 /* Command-line style overrides applied after the graph file is read. */
@@ -233,7 +238,17 @@ struct ssg_overrides {
                                 side stays on the CPU); NULL = the graph's and nodes' own */
     float eye_offset;        /* the camera (and its target) moved this far along its right
                                 axis, scene units: one eye of a stereo pair; 0 = none */
+    const char *const *outputs; /* "node.port" outputs the caller wants back: when given,
+                                   only they and what they read are loaded and run, the
+                                   graph's own sinks (write, compare) are not, and the run
+                                   hands their images to ssg_run_options.outputs; a name
+                                   the graph lacks is reported (file "<output>"); NULL =
+                                   the sinks decide, as always */
+    int output_count;        /* entries of outputs, at most SSG_MAX_OUTPUTS */
 };
+
+/* Most outputs one load may request (ssg_overrides.outputs). */
+#define SSG_MAX_OUTPUTS 8
 
 struct ssg_graph;
 
@@ -250,6 +265,16 @@ enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overr
 enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
                            struct ssg_diags *diags);
 void ssg_graph_destroy(struct ssg_graph **graph);
+
+/* The value of a number parameter of a loaded graph's node, key "node.param" ("h.bias"),
+ * as the graph, its set lines and the overrides left it; *integer (if not NULL) is 1 for an
+ * integer parameter, 0 for a decimal. For a caller that searches over parameters (ssgraph
+ * tune). Reports, with what was expected: a key without a dot (SSG_E_USAGE), no such node
+ * (SSG_E_UNKNOWN_NAME, at the graph file), no such parameter (SSG_E_UNKNOWN_PARAM) or one
+ * that is not a number (a bool, a choice, a string, a list: SSG_E_TYPE), both at the node's
+ * definition. */
+enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
+                             int *integer, struct ssg_diags *diags);
 
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */

@@ -8,6 +8,7 @@
 
 #include "graph/graph.h"
 #include "graph/image.h"
+#include "lang/params.h"
 
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
 {
@@ -131,4 +132,53 @@ void ssg_graph_destroy(struct ssg_graph **graph)
     ssg_arena_free(&(*graph)->arena);
     free(*graph);
     *graph = NULL;
+}
+
+/* "g, k, ao, ...": the graph's node names for a message. */
+static void instance_names(const struct ssg_graph *g, char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    for (int i = 0; i < g->count && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? ", " : "",
+                                 g->nodes[i].name);
+}
+
+enum ssg_err ssg_graph_param(const struct ssg_graph *g, const char *key, double *value,
+                             int *integer, struct ssg_diags *diags)
+{
+    const char *dot = strchr(key, '.');
+    if (!dot) {
+        ssg_diag_file(diags, SSG_E_USAGE, g->path, "expected a parameter node.param, got "
+                      "'%s'", key);
+        return SSG_E_USAGE;
+    }
+    int i = ssg_graph_find(g, key, (size_t)(dot - key));
+    char names[512];
+    if (i < 0) {
+        instance_names(g, names, sizeof names);
+        ssg_diag_file(diags, SSG_E_UNKNOWN_NAME, g->path, "no node named '%.*s' (in '%s'; "
+                      "expected one of: %s)", (int)(dot - key), key, key, names);
+        return SSG_E_UNKNOWN_NAME;
+    }
+    const struct gnode *n = &g->nodes[i];
+    int p = ssg_param_find(n->desc->params, dot + 1, strlen(dot + 1));
+    if (p < 0) {
+        ssg_param_names(n->desc->params, names, sizeof names);
+        ssg_diag_at(diags, SSG_E_UNKNOWN_PARAM, n->loc, "node '%s' (%s) has no parameter "
+                    "'%s' (expected one of: %s)", n->name, n->desc->name, dot + 1, names);
+        return SSG_E_UNKNOWN_PARAM;
+    }
+    const struct ssg_param_desc *d = &n->desc->params.params[p];
+    if (d->type != SSG_P_FLOAT && d->type != SSG_P_INT) {
+        ssg_diag_at(diags, SSG_E_TYPE, n->loc, "parameter '%s' of node '%s' (%s) is not a "
+                    "number (expected a decimal or integer parameter)", d->name, n->name,
+                    n->desc->name);
+        return SSG_E_TYPE;
+    }
+    const char *field = (const char *)n->params + d->offset;
+    *value = d->type == SSG_P_FLOAT ? *(const float *)field : *(const int *)field;
+    if (integer)
+        *integer = d->type == SSG_P_INT;
+    return SSG_OK;
 }

@@ -64,6 +64,10 @@ struct ssg_graph {
     struct ssg_frame frame;
     enum ssg_backend backend;  /* `backend` directive; DEFAULT = cpu */
     enum ssg_backend forced;   /* --backend: every node runs there (DEFAULT = not given) */
+    struct gconn wanted[SSG_MAX_OUTPUTS]; /* ssg_overrides.outputs, resolved by validation:
+                                  only they and what they read are live, and each keeps
+                                  its image until the run hands it out */
+    int wanted_count;          /* 0 = the sinks decide what is live */
 };
 
 /* Reads path (and what it includes), builds nodes, applies `set` lines and overrides.

@@ -506,15 +506,23 @@ static void apply_set(struct builder *b, const struct ssg_stmt *st)
     bind_named(b, &b->g->nodes[i], &st->args[0]);
 }
 
+/* A caller's string as a source of its own, so messages point at a column of it. */
+static struct ssg_source *caller_source(struct builder *b, const char *path, const char *text)
+{
+    struct ssg_source *src = ssg_arena_alloc(&b->g->arena, sizeof *src);
+    const char *copy = ssg_arena_strndup(&b->g->arena, text, strlen(text));
+    if (!src || !copy)
+        return NULL;
+    *src = (struct ssg_source){.path = path, .text = copy, .len = strlen(text)};
+    return src;
+}
+
 /* "node.param=value" from the command line, parsed as a set line of its own source. */
 static void apply_override(struct builder *b, const char *text)
 {
-    struct ssg_source *src = ssg_arena_alloc(&b->g->arena, sizeof *src);
+    struct ssg_source *src = caller_source(b, "<command line --set>", text);
     if (!src)
         return;
-    src->path = "<command line --set>";
-    src->text = ssg_arena_strndup(&b->g->arena, text, strlen(text));
-    src->len = strlen(text);
     const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
     struct ssg_loc at = {src, src->text};
     if (!dot || !eq || dot > eq) {
@@ -544,10 +552,30 @@ static void apply_override(struct builder *b, const char *text)
     apply_set(b, st);
 }
 
+/* A requested output "node.port": a port reference, resolved as any input's. */
+static void want_output(struct builder *b, const char *text)
+{
+    struct ssg_source *src = caller_source(b, "<output>", text);
+    struct ssg_value v = {0};
+    enum ssg_err e = src ? ssg_parse_value(&b->g->arena, src, src->text, &v, b->diags)
+                         : SSG_E_NOMEM;
+    if (!e && (v.kind != SSG_V_REF || b->g->wanted_count == SSG_MAX_OUTPUTS)) {
+        ssg_diag_at(b->diags, SSG_E_USAGE, v.loc, "expected at most %d outputs node.port, "
+                    "got '%s'", SSG_MAX_OUTPUTS, text);
+        e = SSG_E_USAGE;
+    }
+    if (e)
+        fail(b, e);
+    else
+        connect(b, &b->g->wanted[b->g->wanted_count++], &v);
+}
+
 static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
 {
     if (!ov)
         return;
+    for (int i = 0; i < ov->output_count; i++)
+        want_output(b, ov->outputs[i]);
     for (int i = 0; i < ov->set_count; i++)
         apply_override(b, ov->sets[i]);
     if (ov->scene)

@@ -323,6 +323,10 @@ static void last_readers(struct ssg_graph *g)
         struct gnode *n = &g->nodes[g->order[p]];
         FOR_EACH_INPUT(n, conn) g->nodes[conn->node].last_reader[conn->port] = p;
     }
+    /* A requested output is read after the last position: kept until the run hands it
+       out. */
+    for (int k = 0; k < g->wanted_count; k++)
+        g->nodes[g->wanted[k].node].last_reader[g->wanted[k].port] = g->order_count;
 }
 
 /* Where each node runs: --backend for all, else the node's backend=, else the graph's
@@ -412,14 +416,20 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         check_required(&c, n);
         resolve_backend(&c, n);
     }
-    for (int i = 0; i < g->count; i++) {
+    /* Requested outputs replace the sinks: only what they need is live. */
+    for (int k = 0; k < g->wanted_count; k++) {
+        resolve(&c, &g->wanted[k]);
+        if (g->wanted[k].node >= 0 && !mark_live(g, g->wanted[k].node))
+            fail(&c, SSG_E_NOMEM);
+    }
+    for (int i = 0; i < g->count && !g->wanted_count; i++) {
         if (g->nodes[i].desc->is_sink) {
             sinks++;
             if (!mark_live(g, i))
                 fail(&c, SSG_E_NOMEM);
         }
     }
-    if (!sinks) {
+    if (!sinks && !g->wanted_count) {
         ssg_diag_file(diags, SSG_E_VALUE, g->path, "the graph writes nothing (expected at "
                       "least one write(node.port, \"name\"))");
         fail(&c, SSG_E_VALUE);

@@ -268,9 +268,35 @@ static enum ssg_err report(struct run *r, double total)
     return e;
 }
 
+/* Copies of the requested outputs (ssg_overrides.outputs) for the caller, downloaded
+   first where GL made them; on failure none. */
+static enum ssg_err hand_out(struct run *r)
+{
+    struct ssg_image **out = r->opt->outputs;
+    const struct ssg_graph *g = r->g;
+    enum ssg_err e = SSG_OK;
+    for (int k = 0; out && k < g->wanted_count && !e; k++) {
+        const struct ssg_image *im = g->nodes[g->wanted[k].node].out_img[g->wanted[k].port];
+        double ms = 0;
+        if (im->gpu)
+            e = ssg_gl_to_cpu(im, &ms, r->diags);
+        if (!e && !(out[k] = ssg_image_create(im->width, im->height, im->channels)))
+            e = SSG_E_NOMEM;
+        if (!e)
+            memcpy(out[k]->data, im->data,
+                   (size_t)im->width * (size_t)im->height * (size_t)im->channels *
+                       sizeof *im->data);
+    }
+    for (int k = 0; e && k < g->wanted_count; k++)
+        ssg_image_destroy(&out[k]);
+    return e;
+}
+
 enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *options,
                            struct ssg_diags *diags)
 {
+    for (int k = 0; options && options->outputs && k < g->wanted_count; k++)
+        options->outputs[k] = NULL;
     struct ssg_run_options defaults = {0};
     if (options && options->stats)
         *options->stats = (struct ssg_run_stats){0};
@@ -293,6 +319,8 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         e = run_frame(&r, f, frames);
     if (!e)
         e = report(&r, ssg_now_ms() - t0);
+    if (!e)
+        e = hand_out(&r);
     run_free(&r);
     if (r.uses_gl)
         ssg_gl_close();
