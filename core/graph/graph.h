@@ -79,5 +79,8 @@ enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags);
 /* Index of the node with that name, or -1. */
 int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len);
+/* Adds node `index` (named) to the name table, growing it to keep it at most half full;
+ * 0 when out of memory. */
+int ssg_graph_name_add(struct ssg_graph *g, int index);
 
 #endif

@@ -35,52 +35,6 @@ static void fail(struct builder *b, enum ssg_err e)
         b->first = e;
 }
 
-static unsigned name_hash(const char *name, size_t len)
-{
-    unsigned h = 2166136261u; /* FNV-1a */
-    for (size_t i = 0; i < len; i++)
-        h = (h ^ (unsigned char)name[i]) * 16777619u;
-    return h;
-}
-
-int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len)
-{
-    if (!g->name_cap)
-        return -1;
-    unsigned mask = (unsigned)g->name_cap - 1;
-    for (unsigned s = name_hash(name, len) & mask; g->name_slots[s]; s = (s + 1) & mask)
-        if (ssg_tok_eq(name, len, g->nodes[g->name_slots[s] - 1].name))
-            return g->name_slots[s] - 1;
-    return -1;
-}
-
-static void name_insert(struct ssg_graph *g, int index)
-{
-    const char *name = g->nodes[index].name;
-    unsigned mask = (unsigned)g->name_cap - 1;
-    unsigned s = name_hash(name, strlen(name)) & mask;
-    while (g->name_slots[s])
-        s = (s + 1) & mask;
-    g->name_slots[s] = index + 1;
-}
-
-/* Adds node `index` (named) to the name table, growing it to keep it at most half full. */
-static int name_add(struct ssg_graph *g, int index)
-{
-    if (2 * (index + 1) > g->name_cap) {
-        int cap = g->name_cap ? 2 * g->name_cap : 64;
-        int *slots = ssg_arena_alloc(&g->arena, (size_t)cap * sizeof *slots); /* zeroed */
-        if (!slots)
-            return 0;
-        g->name_slots = slots;
-        g->name_cap = cap;
-        for (int i = 0; i < index; i++)
-            name_insert(g, i);
-    }
-    name_insert(g, index);
-    return 1;
-}
-
 static void node_list(char *buf, size_t len)
 {
     size_t n = 0;
@@ -131,7 +85,7 @@ static struct gnode *add_node(struct builder *b, const struct ssg_stmt *st)
         snprintf(anon, sizeof anon, "%s_%d", desc->name, ++b->anonymous);
         n->name = ssg_arena_strndup(&g->arena, anon, strlen(anon));
     }
-    if (!n->name || !name_add(g, g->count - 1)) {
+    if (!n->name || !ssg_graph_name_add(g, g->count - 1)) {
         g->count--;
         fail(b, SSG_E_NOMEM);
         return NULL;
