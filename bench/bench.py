@@ -21,7 +21,8 @@ through OSMesa), side by side, at 1280x720.
 error of each image against reference_gi lit by the same probe (bench/hybrid_reference.graph),
 next to the paper's 15 fps (128 lights) and 6 fps (512 lights).
 
---accuracy scores every AO method of graphs/ao_error.graph against reference_ao on every
+--accuracy scores every AO method of graphs/ao_error.graph against reference_ao, and every
+GI image of graphs/ssdo_error.graph against reference_gi, on every
 example scene (RMSE, bias = mean of method - reference, SSIM) with the frame time of the
 shipped graph that runs it, as the Markdown table of docs/accuracy.md (--save it there).
 
@@ -317,23 +318,57 @@ def accuracy_table(binary, size, threads, runs):
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
             path = os.path.join(ROOT, "examples", scene)
-            out = os.path.join(tmp, scene)
-            cmd = [binary, "run", ao_error, "--scene", path, "--size", size, "--out", out,
-                   "--quiet"]
-            if threads:
-                cmd += ["--threads", str(threads)]
-            run_cmd(cmd)
-            with open(os.path.join(out, "metrics.json")) as f:
-                metrics = json.load(f)
-            for label, node, graph in ACCURACY_METHODS:
-                m = metrics[node]
-                ms = "-"
-                if graph:
-                    frame, _ = frame_ms(binary, os.path.join(ROOT, "graphs", graph), path, size,
-                                        threads, runs, os.path.join(tmp, "t"))
-                    ms = f"{frame:.1f}"
-                print(f"| {scene[:-6]} | {label} | {m['rmse']:.3f} | {m['bias']:+.3f} | "
-                      f"{m['ssim']:.3f} | {ms} |")
+            metrics = run_metrics(binary, ao_error, path, size, threads, os.path.join(tmp, scene))
+            print_rows(binary, scene, path, metrics, ACCURACY_METHODS, size, threads, runs, tmp)
+
+
+GI_METHODS = [("ssao-darkened ambient", "c_ssao", None), ("ssdo", "c_ssdo", None),
+              ("ssdo + bounce", "c_ssdo_b", "ssdo.graph")]
+
+
+def gi_accuracy_table(binary, size, threads, runs):
+    """Every screen-space GI image of graphs/ssdo_error.graph against reference_gi (direct
+    light with true shadows plus one diffuse bounce) on every example scene, as
+    accuracy_table does for AO."""
+    ssdo_error = os.path.join(ROOT, "graphs", "ssdo_error.graph")
+    scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
+    print(f"\n# GI accuracy of the shipped graphs, {size}\n")
+    print("Each shaded image of `graphs/ssdo_error.graph` (radius 0.3) against `reference_gi` "
+          "(direct light with ray-traced shadows plus exactly one diffuse bounce, 64 paths a "
+          "pixel) on every example scene, surface pixels only, in linear radiance (not tone "
+          "mapped, so bright scenes weigh more). bias = mean(method - reference). ms: median "
+          "frame time of `graphs/ssdo.graph`, the same way as above.\n")
+    print("| scene | method | rmse | bias | ssim | ms |")
+    print("|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in scenes:
+            path = os.path.join(ROOT, "examples", scene)
+            metrics = run_metrics(binary, ssdo_error, path, size, threads,
+                                  os.path.join(tmp, scene))
+            print_rows(binary, scene, path, metrics, GI_METHODS, size, threads, runs, tmp)
+
+
+def run_metrics(binary, graph, scene_path, size, threads, out):
+    """Runs graph on the scene; its compare nodes' metrics."""
+    cmd = [binary, "run", graph, "--scene", scene_path, "--size", size, "--out", out, "--quiet"]
+    if threads:
+        cmd += ["--threads", str(threads)]
+    run_cmd(cmd)
+    with open(os.path.join(out, "metrics.json")) as f:
+        return json.load(f)
+
+
+def print_rows(binary, scene, scene_path, metrics, methods, size, threads, runs, tmp):
+    """One table row a method: its compare node's metrics and its shipped graph's time."""
+    for label, node, graph in methods:
+        m = metrics[node]
+        ms = "-"
+        if graph:
+            frame, _ = frame_ms(binary, os.path.join(ROOT, "graphs", graph), scene_path, size,
+                                threads, runs, os.path.join(tmp, "t"))
+            ms = f"{frame:.1f}"
+        print(f"| {scene[:-6]} | {label} | {m['rmse']:.3f} | {m['bias']:+.3f} | "
+              f"{m['ssim']:.3f} | {ms} |")
 
 
 def main():
@@ -373,6 +408,7 @@ def main():
     binary = args.bin or build()
     if args.accuracy:
         accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
+        gi_accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
         return
     if args.hybrid:
         hybrid_table(binary, (args.size or ["1280x720"])[0], args.threads, args.runs)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `bench/bench.py --accuracy`, the command that makes docs/accuracy.md: at a tiny size and
 # one run it still scores every AO method on every example scene (four rows a scene, with a
-# finite rmse, a signed bias and an ssim) and times the two shipped graphs.
+# finite rmse, a signed bias and an ssim) and times the two shipped graphs, then every GI
+# image of graphs/ssdo_error.graph (three rows a scene).
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy"
 python3 bench/bench.py --accuracy --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" 2> "$TMP/err" ||
@@ -11,4 +12,6 @@ rows=$(grep -cE '^\| [a-z_]+ \| (ssao|hbao)( \+ bilateral)? \| [0-9.]+ \| [+-][0
 [ "$rows" -eq $((4 * scenes)) ] || fail "expected $((4 * scenes)) rows, got $rows: $(head -20 "$TMP/acc.md")"
 timed=$(grep -cE '\+ bilateral \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
 [ "$timed" -eq $((2 * scenes)) ] || fail "expected $((2 * scenes)) timed rows, got $timed"
+gi=$(grep -cE '^\| [a-z_]+ \| (ssao-darkened ambient|ssdo|ssdo \+ bounce) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+[ "$gi" -eq $((3 * scenes)) ] || fail "expected $((3 * scenes)) GI rows, got $gi"
 finish test_accuracy
