@@ -26,6 +26,7 @@ uniform float slice_cos[32], slice_sin[32];
 
 const float SLICE_MIN = 0.01;
 const float HALF_PI = 1.57079632679489661923;
+const float OPEN_EPS = 1e-5; // gtao_cpu.c: a horizon this close to its lowest is none
 
 // gtao_cpu.c struct pix.
 float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si;
@@ -98,16 +99,28 @@ void sample_at(ivec2 p, vec3 d, vec3 m, float al, float be, float sg, float ou, 
     precise float sh = low + w * (shc - low);
     if (sh > hc)
         hc = sh;
-    else if (thickness > 0.0) {
+    else if (w > 0.0 && thickness > 0.0) {
         precise float nh = hc + thickness * (sh - hc);
         hc = nh;
     }
 }
 
-float arc(float h, float n, float cn, float sn)
+// gtao_cpu.c side_arc: half the inner integral and the side's bent-normal terms.
+vec3 side_arc(float hc, float low, float sg, float n, float cn, float sn)
 {
-    precise float a = 0.25 * (cn + 2.0 * h * sn - cos(2.0 * h - n));
-    return a;
+    precise float lim = n + sg * HALF_PI;
+    if (!(hc > low + OPEN_EPS)) {
+        precise float c2 = cn * cn - sn * sn, s2 = 2.0 * sn * cn;
+        precise vec3 r = vec3(0.25 * (cn + 2.0 * lim * sn + cn), sg * (6.0 - 2.0 * c2),
+                              2.0 * sg * s2);
+        return r;
+    }
+    precise float h = sg * acos(hc);
+    h = sg > 0.0 ? (h < lim ? h : lim) : (h > lim ? h : lim);
+    precise vec3 r = vec3(0.25 * (cn + 2.0 * h * sn - cos(2.0 * h - n)),
+                          6.0 * sin(h - n) - sin(3.0 * h - n) - 3.0 * sin(h + n),
+                          -cos(3.0 * h - n) - 3.0 * cos(h + n));
+    return r;
 }
 
 // gtao_cpu.c slice.
@@ -132,25 +145,14 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
         sample_at(p, d, m, al, be, 1.0, ou, ov, low2, hc2);
         sample_at(p, d, m, al, be, -1.0, ou, ov, low1, hc1);
     }
-    precise float lim2 = n + HALF_PI, lim1 = n - HALF_PI;
-    float h2 = lim2, h1 = lim1;
-    if (hc2 > low2) {
-        float a = acos(hc2);
-        h2 = a < lim2 ? a : lim2;
-    }
-    if (hc1 > low1) {
-        float a = -acos(hc1);
-        h1 = a > lim1 ? a : lim1;
-    }
-    precise float a1 = arc(h1, n, cn, snn), a2 = arc(h2, n, cn, snn);
-    precise float o1 = arc(lim1, n, cn, snn), o2 = arc(lim2, n, cn, snn);
-    precise float nv = vis + pl * (a1 + a2), no = open + pl * (o1 + o2);
+    vec3 a1 = side_arc(hc1, low1, -1.0, n, cn, snn), a2 = side_arc(hc2, low2, 1.0, n, cn, snn);
+    precise float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
+    precise float nv = vis + pl * (a1.x + a2.x);
+    precise float no = open + pl * (0.25 * (cn + 2.0 * lim1 * snn + cn) +
+                                    0.25 * (cn + 2.0 * lim2 * snn + cn));
     vis = nv, open = no;
-    precise float t0 = (6.0 * sin(h1 - n) - sin(3.0 * h1 - n) + 6.0 * sin(h2 - n) -
-                        sin(3.0 * h2 - n) + 16.0 * snn - 3.0 * (sin(h1 + n) + sin(h2 + n))) /
-                       12.0;
-    precise float t1 = (-cos(3.0 * h1 - n) - cos(3.0 * h2 - n) + 8.0 * cn -
-                        3.0 * (cos(h1 + n) + cos(h2 + n))) / 12.0;
+    precise float t0 = (a1.y + a2.y + 16.0 * snn) / 12.0;
+    precise float t1 = (a1.z + a2.z + 8.0 * cn) / 12.0;
     precise vec3 nb = vec3(b.x + pl * (t0 * d.x + t1 * g_v.x), b.y + pl * (t0 * d.y + t1 * g_v.y),
                            b.z + pl * (t0 * d.z + t1 * g_v.z));
     b = nb;

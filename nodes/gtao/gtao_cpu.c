@@ -133,14 +133,38 @@ static void sample(const struct job *j, const struct pix *p, const float d[3],
     shc = s->low + w * (shc - s->low);
     if (shc > s->hc)
         s->hc = shc;
-    else if (c->p.thickness > 0.0f)
+    else if (w > 0.0f && c->p.thickness > 0.0f)
         s->hc = s->hc + c->p.thickness * (shc - s->hc);
 }
 
-/* 1/4 (cos n + 2 h sin n - cos(2 h - n)): half of the inner integral (gtao.c). */
-static float arc(float h, float n, float cn, float sn)
+/* A side's horizon cosine within this of its lowest counts as no horizon: samples of P's
+   own plane land on the tangent only up to float rounding (gtao.c). */
+#define OPEN_EPS 1e-5f
+
+/* One side of a slice: its horizon angle h from V (sg = 1: +D, h2; sg = -1: -D, h1), half
+   the inner integral, 1/4 (cos n + 2 h sin n - cos(2 h - n)), and its share of the bent
+   normal's t0 and t1 (gtao.c). A side without a horizon lies at the hemisphere's limit
+   h = n + sg pi/2, where every term is algebraic in cos n, sin n (cos(2 h - n) = -cos n,
+   sin(h - n) = sg, sin(3 h - n) = -sg cos 2n, sin(h + n) = sg cos 2n, cos(3 h - n) =
+   sg sin 2n, cos(h + n) = -sg sin 2n): no trigonometry, and exactly the open value. */
+struct arc {
+    float a, t0, t1;
+};
+
+static struct arc side_arc(const struct side *s, float sg, float n, float cn, float sn)
 {
-    return 0.25f * (cn + 2.0f * h * sn - cosf(2.0f * h - n));
+    float lim = n + sg * HALF_PI;
+    if (!(s->hc > s->low + OPEN_EPS)) {
+        float c2 = cn * cn - sn * sn, s2 = 2.0f * sn * cn;
+        return (struct arc){0.25f * (cn + 2.0f * lim * sn + cn), sg * (6.0f - 2.0f * c2),
+                            2.0f * sg * s2};
+    }
+    float h = sg * acosf(s->hc);
+    /* Clamped to the normal's hemisphere (sec. 4.1). */
+    h = sg > 0.0f ? (h < lim ? h : lim) : (h > lim ? h : lim);
+    return (struct arc){0.25f * (cn + 2.0f * h * sn - cosf(2.0f * h - n)),
+                        6.0f * sinf(h - n) - sinf(3.0f * h - n) - 3.0f * sinf(h + n),
+                        -cosf(3.0f * h - n) - 3.0f * cosf(h + n)};
 }
 
 /* Slice k: adds |proj N| a(h1, h2, n) to *vis, the open value to *open, and the slice's
@@ -168,26 +192,13 @@ static void slice(const struct job *j, const struct pix *p, int k, float *vis, f
         sample(j, p, d, m, al, be, 1.0f, ou, ov, &pos);
         sample(j, p, d, m, al, be, -1.0f, ou, ov, &neg);
     }
-    /* Horizons as angles from V, clamped to the normal's hemisphere; a side no sample
-       raised is exactly at its limit, so an open slice adds exactly its open value. */
-    float lim2 = n + HALF_PI, lim1 = n - HALF_PI;
-    float h2 = lim2, h1 = lim1;
-    if (pos.hc > pos.low) {
-        float a = acosf(pos.hc);
-        h2 = a < lim2 ? a : lim2;
-    }
-    if (neg.hc > neg.low) {
-        float a = -acosf(neg.hc);
-        h1 = a > lim1 ? a : lim1;
-    }
-    *vis += pl * (arc(h1, n, cn, snn) + arc(h2, n, cn, snn));
-    *open += pl * (arc(lim1, n, cn, snn) + arc(lim2, n, cn, snn));
+    struct arc a1 = side_arc(&neg, -1.0f, n, cn, snn), a2 = side_arc(&pos, 1.0f, n, cn, snn);
+    float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
+    *vis += pl * (a1.a + a2.a);
+    *open += pl * (0.25f * (cn + 2.0f * lim1 * snn + cn) + 0.25f * (cn + 2.0f * lim2 * snn + cn));
     /* Bent normal: the slice's mean direction t0 D + t1 V (XeGTAO's closed form). */
-    float t0 = (6.0f * sinf(h1 - n) - sinf(3.0f * h1 - n) + 6.0f * sinf(h2 - n) -
-                sinf(3.0f * h2 - n) + 16.0f * snn - 3.0f * (sinf(h1 + n) + sinf(h2 + n))) /
-               12.0f;
-    float t1 = (-cosf(3.0f * h1 - n) - cosf(3.0f * h2 - n) + 8.0f * cn -
-                3.0f * (cosf(h1 + n) + cosf(h2 + n))) / 12.0f;
+    float t0 = (a1.t0 + a2.t0 + 16.0f * snn) / 12.0f;
+    float t1 = (a1.t1 + a2.t1 + 8.0f * cn) / 12.0f;
     for (int i = 0; i < 3; i++)
         bent[i] += pl * (t0 * d[i] + t1 * p->v[i]);
 }
