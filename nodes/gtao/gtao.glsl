@@ -12,14 +12,15 @@ uniform sampler2DArray normal;
 layout(r32f) uniform writeonly image2DArray dst;
 layout(r32f) uniform writeonly image2DArray bent;
 
-uniform int slices;        // 1..32
-uniform int steps;         // 1..64
-uniform float radius;      // R
-uniform float falloff;     // fraction of R faded (0 = hard cutoff)
+// The parameters (ssg_gl_params: p_<name>) and what prepare() derived from them.
+uniform int p_slices;            // 1..32
+uniform int p_steps;             // 1..64
+uniform float p_radius;          // R
+uniform float p_falloff;         // fraction of R faded (0 = hard cutoff)
+uniform float p_thickness;
+uniform float p_power;
+uniform float p_max_screen_radius; // px (0 = no cap)
 uniform float fall_mul, fall_add;
-uniform float thickness;
-uniform float power;
-uniform float cap;         // max_screen_radius, px (0 = none)
 uniform float invf;        // 1 / f
 uniform vec3 proj;         // (f, cx, cy) of this resolution
 uniform float slice_cos[32], slice_sin[32];
@@ -60,10 +61,10 @@ void setup_pixel(ivec2 p)
     g_e2 = e2;
     precise float vn = v.x * g_n.x + v.y * g_n.y + v.z * g_n.z;
     g_vn = vn > 1e-6 ? vn : 1e-6;
-    precise float near = g_dp - radius, half_d = 0.5 * g_dp;
-    precise float rp = proj.x * radius / (near > half_d ? near : half_d);
-    rp = cap > 0.0 && rp > cap ? cap : rp;
-    precise float st = rp / float(steps);
+    precise float near = g_dp - p_radius, half_d = 0.5 * g_dp;
+    precise float rp = proj.x * p_radius / (near > half_d ? near : half_d);
+    rp = p_max_screen_radius > 0.0 && rp > p_max_screen_radius ? p_max_screen_radius : rp;
+    precise float st = rp / float(p_steps);
     g_step = st;
     g_u = step_jitter(p);
     g_co = 1.0, g_si = 0.0;
@@ -92,15 +93,15 @@ void sample_at(ivec2 p, vec3 d, vec3 m, float al, float be, float sg, float ou, 
     if (!(pd > abs(hm)))
         return;
     precise float r = sqrt(hx * hx + hy * hy + hz * hz);
-    precise float w = falloff > 0.0 ? r * fall_mul + fall_add : (r <= radius ? 1.0 : 0.0);
+    precise float w = p_falloff > 0.0 ? r * fall_mul + fall_add : (r <= p_radius ? 1.0 : 0.0);
     w = w < 0.0 ? 0.0 : w;
     w = w < 1.0 ? w : 1.0;
     precise float shc = pv / sqrt(pv * pv + pd * pd);
     precise float sh = low + w * (shc - low);
     if (sh > hc)
         hc = sh;
-    else if (w > 0.0 && thickness > 0.0) {
-        precise float nh = hc + thickness * (sh - hc);
+    else if (w > 0.0 && p_thickness > 0.0) {
+        precise float nh = hc + p_thickness * (sh - hc);
         hc = nh;
     }
 }
@@ -139,7 +140,7 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
     precise float isl = mn / sl, al = isl * g_vn, be = isl * dn;
     float low2 = -snn, low1 = snn, hc2 = low2, hc1 = low1;
     precise float su = (d.x + g_au * d.z) * g_step, sv = -(d.y + g_av * d.z) * g_step;
-    for (int s = 0; s < steps; s++) {
+    for (int s = 0; s < p_steps; s++) {
         precise float t = float(s) + g_u;
         precise float ou = roundEven(su * t), ov = roundEven(sv * t);
         sample_at(p, d, m, al, be, 1.0, ou, ov, low2, hc2);
@@ -174,12 +175,12 @@ void main()
     setup_pixel(p);
     float vis = 0.0, open = 0.0;
     vec3 b = vec3(0.0);
-    for (int k = 0; k < slices; k++)
+    for (int k = 0; k < p_slices; k++)
         slice(p, k, vis, open, b);
     precise float v = open > 0.0 ? vis / open : 1.0;
     v = v > 0.0 ? v : 0.0;
     v = v < 1.0 ? v : 1.0;
-    SSG_STORE1(dst, p, power == 1.0 ? v : pow(v, power));
+    SSG_STORE1(dst, p, p_power == 1.0 ? v : pow(v, p_power));
     precise float bl = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
     precise float ib = bl > 0.0 ? 1.0 / bl : 0.0;
     SSG_STORE3(bent, p, bl > 0.0 ? vec3(b.x * ib, b.y * ib, b.z * ib) : N);

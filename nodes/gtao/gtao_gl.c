@@ -22,7 +22,6 @@ enum ssg_err ssg_gtao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_output(&p, "dst", io->out[SSG_GTAO_OUT_OUT]);
     ssg_gl_output(&p, "bent", io->out[SSG_GTAO_OUT_BENT_NORMAL]);
     ssg_gl_params(&p, ssg_node_gtao.params, q);
-    ssg_gl_float(&p, "cap", q->max_screen_radius);
     ssg_gl_float(&p, "fall_mul", c->fall_mul);
     ssg_gl_float(&p, "fall_add", c->fall_add);
     ssg_gl_float(&p, "invf", 1.0f / c->proj.f);
