@@ -107,11 +107,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "slices", SSG_FIELD_INT(struct ssg_gtao_params, slices), .def = 4, .min = 1,
+    {.name = "slices", SSG_FIELD_INT(struct ssg_gtao_params, slices), .def = 8, .min = 1,
      .max = SSG_GTAO_MAX_SLICES,
      .help = "slice directions per pixel over the half circle about the view vector, "
              "each marched both ways (turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_gtao_params, steps), .def = 8, .min = 1,
+    {.name = "steps", SSG_FIELD_INT(struct ssg_gtao_params, steps), .def = 12, .min = 1,
      .max = SSG_GTAO_MAX_STEPS, .help = "depth samples on each side of a slice"},
     {.name = "radius", SSG_FIELD_FLOAT(struct ssg_gtao_params, radius), .def = 0.5,
      .min = 1e-6, .max = 1e6, .unit = "scene units",

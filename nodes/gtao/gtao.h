@@ -26,8 +26,8 @@ enum ssg_gtao_output {
 };
 
 struct ssg_gtao_params {
-    int slices;              /* slice directions per pixel, 1..32; default 4 */
-    int steps;               /* samples per side of a slice, 1..64; default 8 */
+    int slices;              /* slice directions per pixel, 1..32; default 8 */
+    int steps;               /* samples per side of a slice, 1..64; default 12 */
     float radius;            /* R, scene units, > 0; default 0.5 */
     float falloff;           /* fraction of R over which a sample's weight fades to 0 at R,
                                 0..1; 0 = hard cutoff at R; default 0 */
