@@ -33,12 +33,6 @@ const float OPEN_EPS = 1e-5; // gtao_cpu.c: a horizon this close to its lowest i
 float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si;
 vec3 g_v, g_n, g_e2;
 
-float occluder_depth(ivec2 q)
-{
-    float d = ssg_scene_depth(q);
-    return d > 0.0 && d <= 3.0e38 ? d : -1.0;
-}
-
 // 1 - interleaved gradient noise (gtao_cpu.c step_jitter).
 float step_jitter(ivec2 p)
 {
@@ -81,7 +75,7 @@ void sample_at(ivec2 p, vec3 d, vec3 m, float al, float be, float sg, float ou, 
     precise float qx = float(p.x) + sg * ou, qy = float(p.y) + sg * ov;
     if (!(qx >= 0.0 && qx < float(ssg_grid.x) && qy >= 0.0 && qy < float(ssg_grid.y)))
         return;
-    float dq = occluder_depth(ivec2(int(qx), int(qy)));
+    float dq = ssg_occluder_depth(ivec2(int(qx), int(qy)));
     if (dq < 0.0)
         return;
     precise float aqu = (qx + 0.5 - proj.y) * invf, aqv = -(qy + 0.5 - proj.z) * invf;
