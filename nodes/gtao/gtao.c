@@ -15,8 +15,9 @@
  * sec. 4.3 "bounding the sampling area": only samples within `radius` R count, with a
  * linear fade over the last `falloff` R (XeGTAO's falloff range: the sample's horizon
  * cosine is blended towards the lowest one, cos(n -/+ pi/2), by its weight); sec. 4.3
- * "height-field assumption considerations": with `thickness` t > 0 a sample lower than
- * the horizon so far pulls it down, h <- h + t (sample - h) in cosines, so the horizon
+ * "height-field assumption considerations": with `thickness` t > 0 a sample within reach
+ * (weight > 0) lower than the horizon so far pulls it down, h <- h + t (sample - h) in
+ * cosines (samples out of reach do not: that darkened every scene), so the horizon
  * recovers behind a thin occluder (t = 0: every depth sample is an infinitely thick
  * height field). This is the cosine-weighted, distance-limited visibility of
  * docs/analytic.md (1 = open) that reference_ao estimates by ray tracing.
