@@ -296,7 +296,8 @@ class Tee:
 
 
 ACCURACY_METHODS = [("ssao", "c_ssao", None), ("ssao + bilateral", "c_ssao_filtered", "ssao.graph"),
-                    ("hbao", "c_hbao", None), ("hbao + bilateral", "c_hbao_filtered", "hbao.graph")]
+                    ("hbao", "c_hbao", None), ("hbao + bilateral", "c_hbao_filtered", "hbao.graph"),
+                    ("gtao", "c_gtao", None), ("gtao + bilateral", "c_gtao_filtered", "gtao.graph")]
 
 
 def accuracy_table(binary, size, threads, runs):
@@ -310,7 +311,7 @@ def accuracy_table(binary, size, threads, runs):
           "rays within the same 0.5 radius; its noise floor is about 0.02 RMSE) on every "
           "example scene, surface pixels only. bias = mean(method - reference): positive = "
           "too bright (missed occlusion). ms: median frame time of the shipped graph that "
-          f"runs the method (`graphs/ssao.graph`, `graphs/hbao.graph`; write excluded, "
+          f"runs the method (`graphs/ssao.graph`, `graphs/hbao.graph`, `graphs/gtao.graph`; write excluded, "
           f"{runs} runs after a warm-up, {threads or os.cpu_count()} threads). Made by "
           f"`python3 bench/bench.py --accuracy --size {size}`.\n")
     print("| scene | method | rmse | bias | ssim | ms |")

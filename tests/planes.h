@@ -125,6 +125,19 @@ static void corner_scene(struct scene *s)
     plane_at(&s->pl[1], 0, -1, 1, 0, 0, -5); /* wall, facing down and towards us */
 }
 
+/* The `halton` node's rotation tile for this test's frame (its kernel dropped), owned;
+   NULL when the node fails (which fails a CHECK of the including test). */
+static inline struct ssg_image *halton_rotation(void)
+{
+    struct ssg_diags diags = {0};
+    struct ssg_frame f = frame();
+    struct ssg_outputs out;
+    if (ssg_node_run("halton", NULL, 0, NULL, 0, &f, &out, &diags) != SSG_OK)
+        return NULL;
+    ssg_image_destroy(&out.images[0]);
+    return out.images[1];
+}
+
 /* Counts pixels showing a surface whose value is not exactly 1. */
 static int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
 {

@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # `bench/bench.py --accuracy`, the command that makes docs/accuracy.md: at a tiny size and
-# one run it still scores every AO method on every example scene (four rows a scene, with a
-# finite rmse, a signed bias and an ssim) and times the two shipped graphs, then every GI
+# one run it still scores every AO method on every example scene (six rows a scene, with a
+# finite rmse, a signed bias and an ssim) and times the three shipped graphs, then every GI
 # image of graphs/ssdo_error.graph (three rows a scene).
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy"
 python3 bench/bench.py --accuracy --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" 2> "$TMP/err" ||
     fail "bench.py --accuracy failed: $(tail -3 "$TMP/err")"
 scenes=$(ls examples/*.scene | wc -l)
-rows=$(grep -cE '^\| [a-z_]+ \| (ssao|hbao)( \+ bilateral)? \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
-[ "$rows" -eq $((4 * scenes)) ] || fail "expected $((4 * scenes)) rows, got $rows: $(head -20 "$TMP/acc.md")"
+rows=$(grep -cE '^\| [a-z_]+ \| (ssao|hbao|gtao)( \+ bilateral)? \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+[ "$rows" -eq $((6 * scenes)) ] || fail "expected $((6 * scenes)) rows, got $rows: $(head -20 "$TMP/acc.md")"
 timed=$(grep -cE '\+ bilateral \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
-[ "$timed" -eq $((2 * scenes)) ] || fail "expected $((2 * scenes)) timed rows, got $timed"
+[ "$timed" -eq $((3 * scenes)) ] || fail "expected $((3 * scenes)) timed rows, got $timed"
 gi=$(grep -cE '^\| [a-z_]+ \| (ssao-darkened ambient|ssdo|ssdo \+ bounce) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
 [ "$gi" -eq $((3 * scenes)) ] || fail "expected $((3 * scenes)) GI rows, got $gi"
 finish test_accuracy

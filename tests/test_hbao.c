@@ -45,19 +45,6 @@
 
 #include "planes.h"
 
-static struct ssg_image *rotation_pattern(void)
-{
-    struct ssg_diags diags = {0};
-    struct ssg_frame f = frame();
-    struct ssg_outputs out;
-    enum ssg_err e = ssg_node_run("halton", NULL, 0, NULL, 0, &f, &out, &diags);
-    CHECK_EQ(e, SSG_OK);
-    if (e != SSG_OK)
-        return NULL;
-    ssg_image_destroy(&out.images[0]);
-    return out.images[1];
-}
-
 /* Runs hbao on g; returns the output image (owned) or NULL. */
 static struct ssg_image *hbao(const struct gbuf *g, const struct ssg_image *rotation,
                               int use_depth, const char *const *sets, int set_count)
@@ -585,7 +572,8 @@ static void test_rejects(void)
 
 int main(void)
 {
-    struct ssg_image *rot = rotation_pattern();
+    struct ssg_image *rot = halton_rotation();
+    CHECK(rot != NULL);
     test_open_planes(rot);
     test_background(rot);
     test_corner(rot);

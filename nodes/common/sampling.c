@@ -46,3 +46,13 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
                                  ssg_frame_full_height(f), gbuffer->width, gbuffer->height);
     return SSG_OK;
 }
+
+void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1)
+{
+    for (int x = 0; x < w; x++) {
+        float au = ((float)x + 0.5f - sp->cx) / sp->f;
+        float h = 1.0f / sqrtf(1.0f + au * au);
+        e1[x] = h;
+        e1[w + x] = au * h;
+    }
+}

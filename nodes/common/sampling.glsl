@@ -20,6 +20,14 @@ float ssg_scene_depth(ivec2 q)
     return depth_bound ? ssg_load1(depth, q) : -texelFetch(position, ivec3(q, 2), 0).r;
 }
 
+// The depth of an occluder at pixel q (inside the image), or -1 where the CPU kernels of
+// the horizon nodes (hbao, gtao) find none: background, negative, NaN or infinite depth.
+float ssg_occluder_depth(ivec2 q)
+{
+    float d = ssg_scene_depth(q);
+    return d > 0.0 && d <= 3.0e38 ? d : -1.0;
+}
+
 // The rotation (cos, sin) of the tile at pixel p; none bound: no rotation.
 vec2 ssg_tile_rotation(ivec2 p)
 {

@@ -36,6 +36,12 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
                                      const struct ssg_shape *gbuffer,
                                      struct ssg_projection *out);
 
+/* The per-column basis vector of the horizon nodes (hbao, gtao), made in prepare() for both
+ * backends: e1 = normalize(y x V) = (1, 0, a_u) / sqrt(1 + a_u^2), a_u = (x + 0.5 - cx) / f,
+ * depends on the column x only. Writes e1x for the w columns to e1[0..w), e1z to
+ * e1[w..2w). */
+void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
+
 /* The scalar pass of a chunk holding a normal that is not unit: every normal of the chunk
  * divided by its length (a unit one keeps its bits to within the rounding of 1 / 1). */
 static inline void ssg_sampling_normalize(int len, float *restrict nx, float *restrict ny,

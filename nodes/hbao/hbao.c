@@ -140,18 +140,6 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
-/* e1 = (1, 0, a_u) / sqrt(1 + a_u^2) per column of a w-pixel row (it does not depend on
-   the row): e1x for the w columns, then e1z, the layout both backends read. */
-static void column_basis(const struct ssg_projection *sp, int w, float *e1)
-{
-    for (int x = 0; x < w; x++) {
-        float au = ((float)x + 0.5f - sp->cx) / sp->f;
-        float h = 1.0f / sqrtf(1.0f + au * au);
-        e1[x] = h;
-        e1[w + x] = au * h;
-    }
-}
-
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_hbao_consts *c = consts;
@@ -169,7 +157,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
     if (e)
         return e;
-    column_basis(&c->proj, pos->width, c->e1);
+    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
     c->cos_bias = (float)cos(c->p.bias);
     c->sin_bias = (float)sin(c->p.bias);
     for (int k = 0; k < c->p.directions; k++) {

@@ -41,14 +41,6 @@ float g_dp, g_au, g_av, g_lp, g_ldp, g_vxf, g_vyf, g_e1x, g_e1z, g_e1n, g_e2n, g
 float g_step, g_u, g_co, g_si;
 vec3 g_e2;
 
-// The depth of an occluder at pixel q (inside the image), or -1 where the CPU's padded
-// plane holds +inf (background, negative, NaN or infinite depth).
-float occluder_depth(ivec2 q)
-{
-    float d = ssg_scene_depth(q);
-    return d > 0.0 && d <= 3.0e38 ? d : -1.0;
-}
-
 // The tile's rotation at p and the step jitter u in (0, 1] from the cell half a tile away
 // (hbao_pattern.c; the angle in float here, in double there).
 void load_pattern(ivec2 p)
@@ -137,7 +129,7 @@ void horizon(ivec2 p, vec2 o, float a, float b, inout float bv, inout float bq,
     precise vec2 s = vec2(p) + o;
     if (!(s.x >= 0.0 && s.x < float(ssg_grid.x) && s.y >= 0.0 && s.y < float(ssg_grid.y)))
         return;
-    float dq = occluder_depth(ivec2(s));
+    float dq = ssg_occluder_depth(ivec2(s));
     if (dq < 0.0)
         return;
     precise float hv = dq * a + g_ldp;
