@@ -30,7 +30,7 @@ for r, e in zip(rows, t["evals"]):
     assert abs(sum(errs) / 2 - float(r["mean"])) < 1e-8, r
     assert abs(e["mean"] - float(r["mean"])) < 1e-8 and r["status"] == "ok"
 start, best = t["evals"][0], t["best"]
-assert start["values"] == {"h.bias": 0.1, "h.strength": 1}, start  # the graph's own
+assert start["values"] == {"h.bias": 0.25, "h.strength": 1.25}, start  # the node's defaults
 assert best["mean"] <= start["mean"] and best["mean"] == min(e["mean"] for e in t["evals"])
 assert len({tuple(e["values"].values()) for e in t["evals"]}) == 8  # none evaluated twice
 PY
@@ -60,9 +60,9 @@ bad() { # PATTERN ARGS...: the tune into $TMP/a exits 1 and says PATTERN
 }
 ports=(--reference ref.out --image h.out --mask g.depth)
 bad "no node named 'hx' \(in 'hx.bias'" "${ports[@]}" --param hx.bias=0:1
-bad "ao_error.graph:16:7: error: node 'h' \(hbao\) has no parameter 'bais' \(expected one of: " \
+bad "ao_error.graph:17:7: error: node 'h' \(hbao\) has no parameter 'bais' \(expected one of: " \
     "${ports[@]}" --param h.bais=0:1
-bad "ao_error.graph:16:7: error: parameter 'falloff' .* is not a number" \
+bad "ao_error.graph:17:7: error: parameter 'falloff' .* is not a number" \
     "${ports[@]}" --param h.falloff=0:1
 bad "empty or reversed range" "${ports[@]}" --param h.bias=0.5:0.5
 bad "empty or reversed range" "${ports[@]}" --param h.bias=0.6:0.2

@@ -35,12 +35,12 @@ enum ssg_hbao_falloff {
 
 struct ssg_hbao_params {
     int directions;          /* azimuths per pixel, 1..64; default 8 */
-    int steps;               /* samples along each direction, 1..64; default 4 */
+    int steps;               /* samples along each direction, 1..64; default 6 */
     float radius;            /* R, scene units, > 0; default 0.5 */
-    float bias;              /* tangent-angle bias, radians, 0..1.5; default 0.1 (about
-                                5.7 degrees) */
-    float strength;          /* out = 1 - strength * occlusion, 0..16; default 1 */
-    int falloff;             /* enum ssg_hbao_falloff; default linear */
+    float bias;              /* tangent-angle bias, radians, 0..1.5; default 0.25 (about
+                                14 degrees) */
+    float strength;          /* out = 1 - strength * occlusion, 0..16; default 1.25 */
+    int falloff;             /* enum ssg_hbao_falloff; default none */
     float max_screen_radius; /* px; caps the march length (0 = no cap); default 0 */
 };
 

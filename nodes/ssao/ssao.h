@@ -38,9 +38,9 @@ enum ssg_ssao_output {
 struct ssg_ssao_params {
     float radius;            /* hemisphere radius, scene units, > 0; default 0.5 */
     float bias;              /* depth margin before a sample counts as occluded, scene
-                                units; default 0.02 */
-    float power;             /* ao = visibility^power; default 1 */
-    int range_check;         /* enum ssg_ssao_range; default smooth */
+                                units; default 0 */
+    float power;             /* ao = visibility^power; default 2 */
+    int range_check;         /* enum ssg_ssao_range; default hard */
     float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
     int mode;                /* enum ssg_ssao_mode; default hemisphere */
 };
