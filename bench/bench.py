@@ -21,6 +21,9 @@ through OSMesa), side by side, at 1280x720.
 error of each image against reference_gi lit by the same probe (bench/hybrid_reference.graph),
 next to the paper's 15 fps (128 lights) and 6 fps (512 lights).
 
+--defaults-time times ssao.graph and hbao.graph at 1920x1080 with their shipped (tuned)
+defaults and with the papers' settings they replaced (medians, the ratio).
+
 --accuracy scores every AO method of graphs/ao_error.graph against reference_ao, and every
 GI image of graphs/ssdo_error.graph against reference_gi, on every
 example scene (RMSE, bias = mean of method - reference, SSIM) with the frame time of the
@@ -372,6 +375,34 @@ def print_rows(binary, scene, scene_path, metrics, methods, size, threads, runs,
               f"{m['ssim']:.3f} | {ms} |")
 
 
+# The papers' settings, the shipped defaults before issue 15 tuned them for accuracy, as
+# --set lines on the shipped graphs (docs/occlusion.md, "How the defaults were chosen").
+PAPER_SETTINGS = {
+    "ssao.graph": ["k.falloff=2", "k.min_scale=0.1", "ao.bias=0.02", "ao.power=1",
+                   "ao.range_check=smooth"],
+    "hbao.graph": ["h.steps=4", "h.bias=0.1", "h.strength=1", "h.falloff=linear"],
+}
+
+
+def defaults_time_table(binary, size, threads, runs):
+    """Frame time of each shipped AO graph with its tuned defaults against the same graph
+    with the papers' settings: medians of whole frames (write excluded) and the ratio."""
+    print(f"# Frame time of the tuned AO defaults against the papers' settings, {size}\n")
+    print(f"Medians of {runs} runs after a warm-up, {threads or os.cpu_count()} threads, write "
+          "excluded; made by `python3 bench/bench.py --defaults-time`.\n")
+    print("| graph | papers' settings ms | shipped defaults ms | ratio |")
+    print("|---|---|---|---|")
+    for graph, paper in PAPER_SETTINGS.items():
+        path = os.path.join(ROOT, "graphs", graph)
+        ms = []
+        for extra in ([a for p in paper for a in ("--set", p)], []):
+            medians, _, _, _ = bench(binary, path, size, threads, runs, extra)
+            ms.append(sum(v for k, v in medians.items()
+                          if k != "total" and not k.endswith("(write)") and
+                          not k.endswith(" gpu")))
+        print(f"| {graph} | {ms[0]:.1f} | {ms[1]:.1f} | {ms[1] / ms[0]:.2f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -400,6 +431,9 @@ def main():
                     help="every AO method's RMSE, bias and SSIM against reference_ao on every "
                          "example scene, with its graph's frame time (a Markdown table; "
                          "default 640x480; --save docs/accuracy.md)")
+    ap.add_argument("--defaults-time", action="store_true",
+                    help="frame time of ssao.graph and hbao.graph with their tuned defaults "
+                         "against the papers' settings (default 1920x1080)")
     ap.add_argument("--hybrid", action="store_true",
                     help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
                          "both backends, error against reference_gi, the paper's fps")
@@ -410,6 +444,9 @@ def main():
     if args.accuracy:
         accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
         gi_accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
+        return
+    if args.defaults_time:
+        defaults_time_table(binary, (args.size or ["1920x1080"])[0], args.threads, args.runs)
         return
     if args.hybrid:
         hybrid_table(binary, (args.size or ["1280x720"])[0], args.threads, args.runs)
