@@ -90,7 +90,10 @@ struct chunk {
     float ax[CHUNK], ay[CHUNK];            /* a = ou ax + ov ay -/+ L */
     float bx[CHUNK], by[CHUNK];            /* b = ou bx + ov by */
     float cn[CHUNK], sn[CHUNK], pl[CHUNK]; /* cos n, sin n, |proj N| */
-    float hc[2][CHUNK], low[2][CHUNK];     /* horizon cosine so far, its lowest */
+    float hc[2][CHUNK], low[2][CHUNK];     /* horizon cosine so far, its lowest; the
+                                              fast path: H'.V of the highest sample */
+    float hq[2][CHUNK];                    /* the fast path: |H'|^2 of the highest
+                                              sample (1 at first, with hc = low) */
     /* per step */
     float a[2][CHUNK], r[2][CHUNK];        /* H'.V = dq a + L dp, H.V = dq r + L dp */
     float b[CHUNK];                        /* sg H'.D = dq b (both sides) */
@@ -197,6 +200,7 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
         k->cn[i] = cn, k->sn[i] = sn;
         k->hc[0][i] = k->low[0][i] = -sn;
         k->hc[1][i] = k->low[1][i] = sn;
+        k->hq[0][i] = k->hq[1][i] = 1.0f;
     }
 }
 
@@ -255,18 +259,55 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
     return up ? shc : thin ? pulled : hc;
 }
 
+/* The fast path (hard cutoff, no thickness: the defaults): a side's horizon is the highest
+   sample within R, and cosines are compared without a root or a division, as hbao_cpu.c
+   does: pv / sqrt(q) > hv / sqrt(hq) exactly when pv |pv| hq > hv |hv| q (q, hq > 0); the
+   root is taken once per slice (fast_horizons), which gives the highest sample's
+   pv / sqrt(pv^2 + pd^2), the cosine the general path would keep. */
 static inline __attribute__((always_inline)) void
-horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear)
+horizon_fast(float *restrict hv, float *restrict hq, float dq, float a, float r, float b,
+             float e, float ldp, int ok, float r2max)
+{
+    float rv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
+    float d2 = rv * rv + dq * dq * e;
+    float q = pv * pv + pd * pd;
+    float v = *hv, vq = *hq;
+    /* +inf depth (off screen, background) makes d2 inf or NaN: not within R. */
+    int up = ok & (d2 <= r2max) & (pv * fabsf(pv) * vq > v * fabsf(v) * q);
+    *hv = up ? pv : v;
+    *hq = up ? q : vq;
+}
+
+static inline __attribute__((always_inline)) void
+horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear, int fast)
 {
     /* Index (v, u) of the padded plane is pixel (v - 1, u - 1). */
     const float *restrict plane = j->padded + j->pw + 1;
     const float r2max = j->c->p.radius * j->c->p.radius;
     for (int i = 0; i < len; i++) {
         float d0 = plane[k->idx[0][i]], d1 = plane[k->idx[1][i]];
+        if (fast) {
+            horizon_fast(&k->hc[0][i], &k->hq[0][i], d0, k->a[0][i], k->r[0][i], k->b[i],
+                         k->e[i], k->ldp[i], k->ok[i], r2max);
+            horizon_fast(&k->hc[1][i], &k->hq[1][i], d1, k->a[1][i], k->r[1][i], k->b[i],
+                         k->e[i], k->ldp[i], k->ok[i], r2max);
+            continue;
+        }
         k->hc[0][i] = horizon_one(k->hc[0][i], k->low[0][i], d0, k->a[0][i], k->r[0][i],
                                   k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
         k->hc[1][i] = horizon_one(k->hc[1][i], k->low[1][i], d1, k->a[1][i], k->r[1][i],
                                   k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+    }
+}
+
+/* The fast path's horizon cosines, H'.V / |H'| of the highest samples (low / 1 = low
+   where none rose). */
+static inline __attribute__((always_inline)) void fast_horizons(struct chunk *restrict k,
+                                                                int len)
+{
+    for (int i = 0; i < len; i++) {
+        k->hc[0][i] = k->hc[0][i] / sqrtf(k->hq[0][i]);
+        k->hc[1][i] = k->hc[1][i] / sqrtf(k->hq[1][i]);
     }
 }
 
@@ -366,7 +407,7 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
    end. */
 static inline __attribute__((always_inline)) void
 chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len,
-           int linear)
+           int linear, int fast)
 {
     const struct ssg_gtao_consts *c = j->c;
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
@@ -378,8 +419,10 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
         setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++) {
             place_step(j, k, len, (float)y, (float)st);
-            horizon_step(j, k, len, linear);
+            horizon_step(j, k, len, linear, fast);
         }
+        if (fast)
+            fast_horizons(k, len);
         finish_slice(k, len);
     }
     finish_chunk(j, k, o, len);
@@ -391,9 +434,11 @@ __attribute__((target_clones("avx2", "default")))
 static void gtao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     if (j->c->p.falloff > 0.0f)
-        chunk_body(j, k, y, x0, len, 1);
+        chunk_body(j, k, y, x0, len, 1, 0);
+    else if (j->c->p.thickness > 0.0f)
+        chunk_body(j, k, y, x0, len, 0, 0);
     else
-        chunk_body(j, k, y, x0, len, 0);
+        chunk_body(j, k, y, x0, len, 0, 1);
 }
 
 /* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
