@@ -5,7 +5,9 @@
 #define SSG_BENCH_MICRO_H
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "graph/node.h"
@@ -24,6 +26,40 @@ static int cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
+}
+
+/* Runs the node's CPU kernel once to warm caches and threads, then `runs` times: the
+   wall and process CPU milliseconds of each run into ms and cpu, sorted (medians at
+   runs / 2). */
+static inline void micro_time(const struct ssg_node_desc *d, const struct ssg_node_ctx *ctx,
+                       const void *consts, const struct ssg_io *io, int runs, double *ms,
+                       double *cpu)
+{
+    d->run_cpu(ctx, consts, io);
+    for (int r = 0; r < runs; r++) {
+        double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
+        d->run_cpu(ctx, consts, io);
+        ms[r] = clock_ms(CLOCK_MONOTONIC) - t0;
+        cpu[r] = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    }
+    qsort(ms, (size_t)runs, sizeof *ms, cmp_double);
+    qsort(cpu, (size_t)runs, sizeof *cpu, cmp_double);
+}
+
+/* An FNV-1a hash of the bits of n floats (to compare builds and variants), and their
+   mean into *mean. */
+static inline uint64_t micro_hash(const float *v, size_t n, double *mean)
+{
+    uint64_t hash = 1469598103934665603ull;
+    double sum = 0;
+    for (size_t i = 0; i < n; i++) {
+        uint32_t bits;
+        memcpy(&bits, &v[i], sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+        sum += v[i];
+    }
+    *mean = sum / (double)n;
+    return hash;
 }
 
 /* Ray-casts the corner; the floor gets a relief of height 0.05 by bending its normal

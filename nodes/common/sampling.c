@@ -1,4 +1,5 @@
 /* sampling.c - checks and camera of the screen-space sampling nodes (sampling.h). */
+#include "common/vector_loops.h" /* first: see there */
 #include <stdio.h>
 
 #include "common/sampling.h"
@@ -54,5 +55,21 @@ void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1
         float h = 1.0f / sqrtf(1.0f + au * au);
         e1[x] = h;
         e1[w + x] = au * h;
+    }
+}
+
+void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,
+                            float *padded)
+{
+    const size_t pw = (size_t)w + 2;
+    for (int y = y0; y < y1; y++) {
+        const float *restrict src = depth + (size_t)y * (size_t)w;
+        float *restrict dst = padded + (size_t)(y + 1) * pw;
+        dst[0] = INFINITY;
+        dst[w + 1] = INFINITY;
+        for (int x = 0; x < w; x++) {
+            float d = sign * src[x];
+            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
+        }
     }
 }

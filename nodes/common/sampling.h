@@ -42,6 +42,29 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
  * e1[w..2w). */
 void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
 
+/* The depth plane of the horizon nodes' CPU kernels (hbao, gtao), padded by one pixel:
+ * rows [y0, y1) of the w-wide `depth` (times sign) into rows y0 + 1 .. of `padded`
+ * (w + 2 wide, (h + 2) rows; the caller fills its first and last rows with +inf), with
+ * background (0), garbage (negative, NaN, inf) and the border column set to +inf. A sample
+ * clamped into the border, or on background, then reads +inf: no occluder, no test. */
+void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,
+                            float *padded);
+
+/* The index in a plane padded by ssg_sampling_pad_depth (row length pw, based one row and
+ * one column in) of the sample at (x + ou, y + ov). A sample off screen is clamped into
+ * the border, whose infinite depth makes it no occluder: the clamp replaces a test
+ * (ou, ov are finite: rounded products of finite values). */
+static inline __attribute__((always_inline)) int32_t
+ssg_sampling_padded_index(float x, float y, float ou, float ov, float fw, float fh, int pw)
+{
+    float su = x + ou, sv = y + ov;
+    su = su < -1.0f ? -1.0f : su;
+    su = su < fw ? su : fw;
+    sv = sv < -1.0f ? -1.0f : sv;
+    sv = sv < fh ? sv : fh;
+    return (int)sv * pw + (int)su;
+}
+
 /* The scalar pass of a chunk holding a normal that is not unit: every normal of the chunk
  * divided by its length (a unit one keeps its bits to within the rounding of 1 / 1). */
 static inline void ssg_sampling_normalize(int len, float *restrict nx, float *restrict ny,

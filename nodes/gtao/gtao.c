@@ -50,7 +50,12 @@
  * form, t0 D + t1 V weighted by |proj N|), summed and normalised; background 0.
  * out = clamp(ratio, 0, 1)^power; background pixels (depth 0 or no normal) get 1. Slices
  * within asin(0.1) of the tangent plane (|proj N|^2 < 0.01, near-grazing views) are
- * skipped, as in hbao. */
+ * skipped, as in hbao.
+ * Evaluation (both backends, gtao_cpu.c): the sample formulas are folded into per-step
+ * coefficients affine in the sample's depth; acos is Abramowitz and Stegun's polynomial
+ * 4.4.46 (|error| <= 2e-8), n = pi/2 - acos(sin n), and the terms in 2h - n, 3h - n,
+ * h -/+ n come from cos h, sin h by the angle-sum formulas; with the defaults (no falloff,
+ * no thickness) a side keeps its highest sample and takes one root per slice. */
 #include <math.h>
 #include <stdio.h>
 
@@ -170,8 +175,9 @@ const struct ssg_node_desc ssg_node_gtao = {
            "divided by the same sum with open horizons, so an open surface is exactly 1. "
            "out = clamp(that, 0, 1)^power; background pixels are 1. bent_normal is the "
            "normalised visibility-weighted mean direction (background 0). CPU and GL "
-           "agree within 2e-4 on both outputs (tests/test_gl_gtao.c; only the "
-           "transcendental functions round differently).",
+           "agree within 2e-4 on both outputs (tests/test_gl_gtao.c; both evaluate the "
+           "same operations, acos as a polynomial, so only sqrt, division and pow may "
+           "round differently).",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gtao_params),
     .consts_size = sizeof(struct ssg_gtao_consts),

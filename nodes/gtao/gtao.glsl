@@ -1,7 +1,8 @@
 // gtao.glsl - the `gtao` node on GL (method and geometry in gtao.c): one invocation per
-// pixel, gtao_cpu.c's operations in its order (`precise`: no multiply-add fused where the
-// CPU rounds twice): slices in order, per step the +D sample then the -D one. Only the
-// transcendental functions (atan, acos, cos, sin) may round differently from the CPU's.
+// pixel, gtao_cpu.c's operations in its order for one lane of its chunk (`precise`: no
+// multiply-add fused where the CPU rounds twice): slices in order, per step the +D sample
+// then the -D one, the same folded sample formulas and polynomial acos. Only sqrt,
+// division and pow (power != 1) may round differently from the CPU's.
 layout(std430, binding = 0) readonly buffer Columns {
     float e1[]; // per column x: e1x at x, e1z at width + x (prepare()'s, gtao.c)
 };
@@ -29,9 +30,27 @@ const float SLICE_MIN = 0.01;
 const float HALF_PI = 1.57079632679489661923;
 const float OPEN_EPS = 1e-5; // gtao_cpu.c: a horizon this close to its lowest is none
 
-// gtao_cpu.c struct pix.
-float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si;
+// gtao_cpu.c struct chunk, one lane.
+float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si, g_l, g_ldp, g_vxf, g_vyf;
+float g_e1n, g_e2n;
 vec3 g_v, g_n, g_e2;
+
+// gtao_cpu.c gtao_acos: Abramowitz and Stegun 4.4.46, the same operations.
+float gtao_acos(float x)
+{
+    precise float ax = abs(x);
+    precise float p = -0.0012624911;
+    p = p * ax + 0.0066700901;
+    p = p * ax - 0.0170881256;
+    p = p * ax + 0.0308918810;
+    p = p * ax - 0.0501743046;
+    p = p * ax + 0.0889789874;
+    p = p * ax - 0.2145988016;
+    p = p * ax + 1.5707963050;
+    precise float r = sqrt(1.0 - ax) * p;
+    precise float m = 3.14159265358979323846 - r;
+    return x < 0.0 ? m : r;
+}
 
 // 1 - interleaved gradient noise (gtao_cpu.c step_jitter).
 float step_jitter(ivec2 p)
@@ -42,17 +61,23 @@ float step_jitter(ivec2 p)
     return u;
 }
 
+// gtao_cpu.c setup_chunk.
 void setup_pixel(ivec2 p)
 {
     precise float au = (float(p.x) + 0.5 - proj.y) * invf;
     precise float av = -(float(p.y) + 0.5 - proj.z) * invf;
-    precise float il = 1.0 / sqrt(au * au + av * av + 1.0);
+    precise float l = sqrt(au * au + av * av + 1.0), il = 1.0 / l;
     precise vec3 v = vec3(-au * il, -av * il, il);
-    g_au = au, g_av = av, g_v = v;
+    g_au = au, g_av = av, g_v = v, g_l = l;
+    precise float ldp = l * g_dp, vxf = v.x * invf, vyf = -v.y * invf;
+    g_ldp = ldp, g_vxf = vxf, g_vyf = vyf;
     g_e1x = e1[p.x];
     g_e1z = e1[ssg_grid.x + p.x];
     precise vec3 e2 = vec3(v.y * g_e1z, v.z * g_e1x - v.x * g_e1z, -v.y * g_e1x);
     g_e2 = e2;
+    precise float e1n = g_e1x * g_n.x + g_e1z * g_n.z;
+    precise float e2n = e2.x * g_n.x + e2.y * g_n.y + e2.z * g_n.z;
+    g_e1n = e1n, g_e2n = e2n;
     precise float vn = v.x * g_n.x + v.y * g_n.y + v.z * g_n.z;
     g_vn = vn > 1e-6 ? vn : 1e-6;
     precise float near = g_dp - p_radius, half_d = 0.5 * g_dp;
@@ -68,28 +93,29 @@ void setup_pixel(ivec2 p)
     }
 }
 
-// gtao_cpu.c sample: hc is the side's horizon cosine, low its lowest.
-void sample_at(ivec2 p, vec3 d, vec3 m, float al, float be, float sg, float ou, float ov,
-               float low, inout float hc)
+// The depth at pixel p + o, or +inf off screen or on background (the CPU's padded plane).
+float depth_at(ivec2 p, float ou, float ov)
 {
-    precise float qx = float(p.x) + sg * ou, qy = float(p.y) + sg * ov;
+    precise float qx = float(p.x) + ou, qy = float(p.y) + ov;
     if (!(qx >= 0.0 && qx < float(ssg_grid.x) && qy >= 0.0 && qy < float(ssg_grid.y)))
-        return;
-    float dq = ssg_occluder_depth(ivec2(int(qx), int(qy)));
-    if (dq < 0.0)
-        return;
-    precise float aqu = (qx + 0.5 - proj.y) * invf, aqv = -(qy + 0.5 - proj.z) * invf;
-    precise float hx = dq * aqu - g_dp * g_au, hy = dq * aqv - g_dp * g_av, hz = g_dp - dq;
-    precise float hv = hx * g_v.x + hy * g_v.y + hz * g_v.z;
-    precise float hd = hx * d.x + hy * d.y + hz * d.z;
-    precise float hm = hx * m.x + hy * m.y + hz * m.z;
-    precise float pv = hv + hm * al, pd = sg * (hd + hm * be);
-    if (!(pd > abs(hm)))
-        return;
-    precise float r = sqrt(hx * hx + hy * hy + hz * hz);
-    precise float w = p_falloff > 0.0 ? r * fall_mul + fall_add : (r <= p_radius ? 1.0 : 0.0);
-    w = w < 0.0 ? 0.0 : w;
-    w = w < 1.0 ? w : 1.0;
+        return 1.0 / 0.0;
+    float d = ssg_occluder_depth(ivec2(int(qx), int(qy)));
+    return d < 0.0 ? 1.0 / 0.0 : d;
+}
+
+// gtao_cpu.c horizon_one (general path): hc is the side's horizon cosine.
+void horizon_one(float dq, float a, float r, float b, float e, float low, inout float hc)
+{
+    precise float hv = dq * r + g_ldp, pv = dq * a + g_ldp, pd = dq * b;
+    precise float q = hv * hv + dq * dq * e;
+    precise float w;
+    if (p_falloff > 0.0) {
+        w = sqrt(q) * fall_mul + fall_add;
+        w = w < 0.0 ? 0.0 : w;
+        w = w < 1.0 ? w : 1.0;
+    } else {
+        w = q <= p_radius * p_radius ? 1.0 : 0.0;
+    }
     precise float shc = pv / sqrt(pv * pv + pd * pd);
     precise float sh = low + w * (shc - low);
     if (sh > hc)
@@ -98,6 +124,17 @@ void sample_at(ivec2 p, vec3 d, vec3 m, float al, float be, float sg, float ou, 
         precise float nh = hc + p_thickness * (sh - hc);
         hc = nh;
     }
+}
+
+// gtao_cpu.c horizon_fast: (hv, hq) = H'.V and |H'|^2 of the highest sample within R.
+void horizon_fast(float dq, float a, float r, float b, float e, inout float hv, inout float hq)
+{
+    precise float rv = dq * r + g_ldp, pv = dq * a + g_ldp, pd = dq * b;
+    precise float d2 = rv * rv + dq * dq * e;
+    precise float q = pv * pv + pd * pd;
+    precise float lhs = pv * abs(pv) * hq, rhs = hv * abs(hv) * q;
+    if (d2 <= p_radius * p_radius && lhs > rhs)
+        hv = pv, hq = q;
 }
 
 // gtao_cpu.c side_arc: half the inner integral and the side's bent-normal terms.
@@ -110,36 +147,71 @@ vec3 side_arc(float hc, float low, float sg, float n, float cn, float sn)
                               2.0 * sg * s2);
         return r;
     }
-    precise float h = sg * acos(hc);
-    h = sg > 0.0 ? (h < lim ? h : lim) : (h > lim ? h : lim);
-    precise vec3 r = vec3(0.25 * (cn + 2.0 * h * sn - cos(2.0 * h - n)),
-                          6.0 * sin(h - n) - sin(3.0 * h - n) - 3.0 * sin(h + n),
-                          -cos(3.0 * h - n) - 3.0 * cos(h + n));
+    precise float h = sg * gtao_acos(hc);
+    bool clamp_h = sg > 0.0 ? !(h < lim) : !(h > lim);
+    precise float ch = hc, sh = sg * sqrt((1.0 - hc) * (1.0 + hc));
+    if (clamp_h) {
+        h = lim;
+        ch = -sg * sn;
+        sh = sg * cn;
+    }
+    precise float c2h = ch * ch - sh * sh, s2h = 2.0 * sh * ch;
+    precise float c3h = ch * c2h - sh * s2h, s3h = sh * c2h + ch * s2h;
+    precise float sin_hmn = sh * cn - ch * sn, sin_hpn = sh * cn + ch * sn;
+    precise float sin_3hmn = s3h * cn - c3h * sn, cos_3hmn = c3h * cn + s3h * sn;
+    precise float cos_hpn = ch * cn - sh * sn, cos_2hmn = c2h * cn + s2h * sn;
+    precise vec3 r = vec3(0.25 * (cn + 2.0 * h * sn - cos_2hmn),
+                          6.0 * sin_hmn - sin_3hmn - 3.0 * sin_hpn, -cos_3hmn - 3.0 * cos_hpn);
     return r;
 }
 
-// gtao_cpu.c slice.
+// gtao_cpu.c setup_slice, the steps (place_step, horizon_step) and finish_slice.
 void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
 {
     float dc = slice_cos[k], ds = slice_sin[k];
-    precise float cs = dc * g_co - ds * g_si, sn = ds * g_co + dc * g_si;
-    precise vec3 d = vec3(cs * g_e1x + sn * g_e2.x, sn * g_e2.y, cs * g_e1z + sn * g_e2.z);
-    precise vec3 m = vec3(cs * g_e2.x - sn * g_e1x, cs * g_e2.y, cs * g_e2.z - sn * g_e1z);
-    precise float dn = d.x * g_n.x + d.y * g_n.y + d.z * g_n.z;
-    precise float mn = m.x * g_n.x + m.y * g_n.y + m.z * g_n.z;
+    precise float cs = dc * g_co - ds * g_si, s = ds * g_co + dc * g_si;
+    precise vec3 d = vec3(cs * g_e1x + s * g_e2.x, s * g_e2.y, cs * g_e1z + s * g_e2.z);
+    precise float mx = cs * g_e2.x - s * g_e1x, my = cs * g_e2.y;
+    precise float dn = cs * g_e1n + s * g_e2n, mn = cs * g_e2n - s * g_e1n;
     precise float sl = g_vn * g_vn + dn * dn;
     if (!(sl >= SLICE_MIN))
         return;
-    precise float pl = sqrt(sl), n = atan(dn, g_vn), cn = g_vn / pl, snn = dn / pl;
+    precise float pl = sqrt(sl), cn = g_vn / pl, snn = dn / pl;
     precise float isl = mn / sl, al = isl * g_vn, be = isl * dn;
-    float low2 = -snn, low1 = snn, hc2 = low2, hc1 = low1;
-    precise float su = (d.x + g_au * d.z) * g_step, sv = -(d.y + g_av * d.z) * g_step;
-    for (int s = 0; s < p_steps; s++) {
-        precise float t = float(s) + g_u;
-        precise float ou = roundEven(su * t), ov = roundEven(sv * t);
-        sample_at(p, d, m, al, be, 1.0, ou, ov, low2, hc2);
-        sample_at(p, d, m, al, be, -1.0, ou, ov, low1, hc1);
+    precise float du = (d.x + g_au * d.z) * g_step, dv = -(d.y + g_av * d.z) * g_step;
+    precise float dxf = d.x * invf, dyf = -d.y * invf, mxf = mx * invf, myf = -my * invf;
+    precise float ax = g_vxf + mxf * al, ay = g_vyf + myf * al;
+    precise float bx = dxf + mxf * be, by = dyf + myf * be;
+    bool fast = p_falloff <= 0.0 && p_thickness <= 0.0;
+    float low2 = -snn, low1 = snn, hc2 = low2, hc1 = low1, hq2 = 1.0, hq1 = 1.0;
+    for (int st = 0; st < p_steps; st++) {
+        precise float t = float(st) + g_u;
+        precise float ou = roundEven(du * t), ov = roundEven(dv * t);
+        precise float pr = ou * g_vxf + ov * g_vyf, c = ou * mxf + ov * myf;
+        precise float bd = ou * dxf + ov * dyf, pa = ou * ax + ov * ay;
+        precise float bb = ou * bx + ov * by;
+        if (!(bb > abs(c)))
+            continue; // more off the slice than along it, or P's own pixel
+        precise float e = bd * bd + c * c;
+        precise float a2 = pa - g_l, a1 = -(pa + g_l), r2 = pr - g_l, r1 = -(pr + g_l);
+        float d2 = depth_at(p, ou, ov), d1 = depth_at(p, -ou, -ov);
+        if (fast) {
+            if (d2 < 1.0 / 0.0)
+                horizon_fast(d2, a2, r2, bb, e, hc2, hq2);
+            if (d1 < 1.0 / 0.0)
+                horizon_fast(d1, a1, r1, bb, e, hc1, hq1);
+        } else {
+            if (d2 < 1.0 / 0.0)
+                horizon_one(d2, a2, r2, bb, e, low2, hc2);
+            if (d1 < 1.0 / 0.0)
+                horizon_one(d1, a1, r1, bb, e, low1, hc1);
+        }
     }
+    if (fast) {
+        precise float f2 = hc2 / sqrt(hq2), f1 = hc1 / sqrt(hq1);
+        hc2 = f2, hc1 = f1;
+    }
+    precise float n = HALF_PI - gtao_acos(snn);
     vec3 a1 = side_arc(hc1, low1, -1.0, n, cn, snn), a2 = side_arc(hc2, low2, 1.0, n, cn, snn);
     precise float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
     precise float nv = vis + pl * (a1.x + a2.x);

@@ -1,238 +1,463 @@
-/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in gtao.c): one pixel at
- * a time, slices in order, per step the +D sample then the -D one, slices summed in
- * order. Rows go to ssg_parallel_rows in fixed bands and a pixel depends only on the
- * inputs, so the output does not depend on the thread count. gtao.glsl performs the same
- * IEEE operations in the same order (no fused multiply-adds: C11 mode does not contract
- * and x86-64-v2 has no FMA); only the transcendental functions (atan2, acos, cos, sin) may
- * round differently on GL. */
+/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in gtao.c).
+ *
+ * Layout for speed, as in hbao_cpu.c: a row is cut into chunks of CHUNK pixels held in
+ * structure-of-arrays scratch; per chunk, what depends on the pixel only (V, the basis,
+ * the march length, the jitter) is set up once, then per slice what depends on its
+ * direction (D, M, the screen step, the coefficients of the sample formulas), then per
+ * step two straight loops over the chunk: one places the samples of both sides and
+ * computes their pixel indices, one reads the depth there (the only gather) and updates
+ * both horizons. A last loop per slice turns the horizons into the slice's terms. Every
+ * loop vectorises (SSE4, and AVX2 through a run-time selected clone): selects, no
+ * branches, and no libm call but sqrtf (-fno-math-errno) and floorf / nearbyintf.
+ *
+ * Per sample, as in hbao_cpu.c, everything but the depth dq is folded into per-step
+ * coefficients: with Q = dq (a_u', a_v', -1) the sample's point and P = dp (a_u, a_v, -1),
+ * H = Q - P has, for the offset (ou, ov) (px; -D's sample is at (-ou, -ov)),
+ *   H.V = dq (ou Vx - ov Vy) / f - L (dq - dp),  H.D = dq (ou Dx - ov Dy) / f,
+ *   H.M = dq (ou Mx - ov My) / f          (L = |P| / dp, V.D = V.M = 0),
+ * all affine in dq; so are the components of H' (the sample brought back onto the slice
+ * along the tangent plane, gtao.c): H'.V = dq a + L dp, sg H'.D = dq b. |H|^2 =
+ * (H.V)^2 + dq^2 ((H.D)^2 + (H.M)^2) / dq^2 (V, D, M orthonormal). The sample counts when
+ * sg H'.D > |H.M|, i.e. b > |c| (dq > 0). The horizon cosine is H'.V / |H'|.
+ * The slice's terms use no trigonometry but one acos per slice (its normal angle n =
+ * pi/2 - acos(sin n)) and one per side with a horizon (gtao_acos, a polynomial that
+ * gtao.glsl evaluates by the same operations): sin h = sg sqrt((1 - cos h)(1 + cos h)),
+ * and the cosines and sines of 2h - n, h -/+ n, 3h - n by the angle-sum formulas.
+ *
+ * Determinism: each pixel depends only on the inputs and every per-pixel sum runs in a
+ * fixed order (slices in order, the -D side's terms before +D's), whatever the chunk, the
+ * band (ssg_parallel_rows' fixed bands) and the instruction set (the clones perform the
+ * same IEEE operations lane by lane: no FMA, C11 mode does not contract). gtao.glsl
+ * performs the same operations in the same order (`precise`); only sqrt, division and
+ * pow (power != 1) may round differently on GL. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "common/sampling.h"
 #include "gtao.h"
 
-enum { ROWS_PER_BAND = 16 };
+enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 
 /* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao.c). */
 #define SLICE_MIN 0.01f
 #define HALF_PI 1.57079632679489661923f
-
-struct job {
-    const struct ssg_gtao_consts *c;
-    const float *nrm[3];
-    const float *depth;  /* plane the depth is read from */
-    float depth_sign;    /* depth = depth_sign * plane: 1 for depth, -1 for z */
-    const float *rot;    /* the tile, cos plane then sin plane; NULL = none */
-    int n;               /* tile side */
-    float *out, *bent[3];
-    int w, h;
-};
-
-/* What a pixel's slices share. */
-struct pix {
-    int x, y;
-    float dp, au, av;      /* depth, a_u, a_v: P = dp (a_u, a_v, -1) */
-    float v[3], n[3];      /* V, unit N */
-    float e1x, e1z, e2[3]; /* e1 = (e1x, 0, e1z), e2 = V x e1 */
-    float vn;              /* V.N, floored at 1e-6 */
-    float step;            /* march length / steps */
-    float u;               /* step jitter in (0, 1] */
-    float co, si;          /* rotation of the tile */
-};
-
-/* The horizon of one side of a slice: its cosine, and the lowest one, cos(n -/+ pi/2). */
-struct side {
-    float hc, low;
-};
-
-static float depth_at(const struct job *j, int x, int y)
-{
-    float d = j->depth_sign * j->depth[(size_t)y * (size_t)j->w + (size_t)x];
-    return (d > 0.0f) & (d <= 3.0e38f) ? d : -1.0f;
-}
-
-/* 1 - interleaved gradient noise (Jimenez 2014) at the pixel: in (0, 1]. */
-static float step_jitter(int x, int y)
-{
-    float a = 0.06711056f * (float)x + 0.00583715f * (float)y;
-    float b = 52.9829189f * (a - floorf(a));
-    return 1.0f - (b - floorf(b));
-}
-
-/* Sets up pixel (x, y); returns 0 on background (depth 0, no normal, garbage). */
-static int setup_pixel(const struct job *j, int x, int y, struct pix *p)
-{
-    const struct ssg_gtao_consts *c = j->c;
-    size_t o = (size_t)y * (size_t)j->w + (size_t)x;
-    float nx = j->nrm[0][o], ny = j->nrm[1][o], nz = j->nrm[2][o];
-    float nn = nx * nx + ny * ny + nz * nz;
-    p->dp = j->depth_sign * j->depth[o];
-    if (!((p->dp > 0.0f) & (p->dp <= 3.0e38f) & (nn > 1e-12f)))
-        return 0;
-    if (fabsf(nn - 1.0f) > 1e-5f) {
-        float inv = 1.0f / sqrtf(nn);
-        nx *= inv, ny *= inv, nz *= inv;
-    }
-    p->n[0] = nx, p->n[1] = ny, p->n[2] = nz;
-    const float invf = 1.0f / c->proj.f, radius = c->p.radius;
-    p->x = x, p->y = y;
-    p->au = ((float)x + 0.5f - c->proj.cx) * invf;
-    p->av = -((float)y + 0.5f - c->proj.cy) * invf;
-    float il = 1.0f / sqrtf(p->au * p->au + p->av * p->av + 1.0f);
-    p->v[0] = -p->au * il, p->v[1] = -p->av * il, p->v[2] = il;
-    p->e1x = c->e1[x], p->e1z = c->e1[j->w + x];
-    p->e2[0] = p->v[1] * p->e1z;
-    p->e2[1] = p->v[2] * p->e1x - p->v[0] * p->e1z;
-    p->e2[2] = -p->v[1] * p->e1x;
-    float vn = p->v[0] * nx + p->v[1] * ny + p->v[2] * nz;
-    p->vn = vn > 1e-6f ? vn : 1e-6f;
-    /* f R / den reaches every point of the slice within R (gtao.c). */
-    float near = p->dp - radius, half = 0.5f * p->dp;
-    float rp = c->proj.f * radius / (near > half ? near : half);
-    float cap = c->p.max_screen_radius;
-    rp = cap > 0.0f && rp > cap ? cap : rp;
-    p->step = rp / (float)c->p.steps;
-    p->u = step_jitter(x, y);
-    p->co = 1.0f, p->si = 0.0f;
-    if (j->rot) {
-        size_t cell = (size_t)(y % j->n) * (size_t)j->n + (size_t)(x % j->n);
-        p->co = j->rot[cell];
-        p->si = j->rot[(size_t)j->n * (size_t)j->n + cell];
-    }
-    return 1;
-}
-
-/* One sample at pixel offset sg (ou, ov): its horizon cosine, faded by distance, raises
-   (or with thickness lowers) the side's horizon. d, m are D and M = V x D; al, be fold
-   the projection along the tangent plane (hbao_cpu.c place_step). */
-static void sample(const struct job *j, const struct pix *p, const float d[3],
-                   const float m[3], float al, float be, float sg, float ou, float ov,
-                   struct side *s)
-{
-    const struct ssg_gtao_consts *c = j->c;
-    float qx = (float)p->x + sg * ou, qy = (float)p->y + sg * ov;
-    if (!(qx >= 0.0f && qx < (float)j->w && qy >= 0.0f && qy < (float)j->h))
-        return;
-    float dq = depth_at(j, (int)qx, (int)qy);
-    if (dq < 0.0f)
-        return;
-    const float invf = 1.0f / c->proj.f;
-    float aqu = (qx + 0.5f - c->proj.cx) * invf, aqv = -(qy + 0.5f - c->proj.cy) * invf;
-    float hx = dq * aqu - p->dp * p->au, hy = dq * aqv - p->dp * p->av, hz = p->dp - dq;
-    float hv = hx * p->v[0] + hy * p->v[1] + hz * p->v[2];
-    float hd = hx * d[0] + hy * d[1] + hz * d[2];
-    float hm = hx * m[0] + hy * m[1] + hz * m[2];
-    float pv = hv + hm * al, pd = sg * (hd + hm * be);
-    if (!(pd > fabsf(hm)))
-        return; /* more off the slice than along it, or P's own pixel */
-    float r = sqrtf(hx * hx + hy * hy + hz * hz);
-    float w = c->p.falloff > 0.0f ? r * c->fall_mul + c->fall_add : (r <= c->p.radius);
-    w = w < 0.0f ? 0.0f : w;
-    w = w < 1.0f ? w : 1.0f;
-    float shc = pv / sqrtf(pv * pv + pd * pd);
-    shc = s->low + w * (shc - s->low);
-    if (shc > s->hc)
-        s->hc = shc;
-    else if (w > 0.0f && c->p.thickness > 0.0f)
-        s->hc = s->hc + c->p.thickness * (shc - s->hc);
-}
-
+#define PI_F 3.14159265358979323846f
 /* A side's horizon cosine within this of its lowest counts as no horizon: samples of P's
    own plane land on the tangent only up to float rounding (gtao.c). */
 #define OPEN_EPS 1e-5f
 
-/* One side of a slice: its horizon angle h from V (sg = 1: +D, h2; sg = -1: -D, h1), half
-   the inner integral, 1/4 (cos n + 2 h sin n - cos(2 h - n)), and its share of the bent
+struct job {
+    const struct ssg_gtao_consts *c;
+    const float *pos[3], *nrm[3]; /* planes of the G-buffer */
+    const float *depth;           /* plane the depth is read from */
+    float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
+    const float *rot;             /* the tile, cos plane then sin plane; NULL = none */
+    int n;                        /* tile side */
+    float *padded;                /* the depth padded by +inf (ssg_sampling_pad_depth) */
+    int pw;                       /* w + 2 */
+    float *out, *bent;            /* outputs; bent: three planes */
+    int w, h;
+};
+
+/* Per-lane values of one chunk, structure of arrays; side m = 0 is +D, m = 1 is -D. */
+struct chunk {
+    /* per pixel; CHUNK floats are whole cache lines, so every array starts on one */
+    _Alignas(64) float dp[CHUNK];          /* depth of P */
+    float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
+    float px[CHUNK], py[CHUNK], pz[CHUNK]; /* P (loaded by ssg_sampling_load; unused) */
+    int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
+    float co[CHUNK], si[CHUNK];            /* rotation of the tile */
+    float xf[CHUNK];                       /* pixel column */
+    float u[CHUNK];                        /* step jitter in (0, 1] */
+    float lp[CHUNK], ldp[CHUNK];           /* L = |P| / dp, L dp */
+    float v[3][CHUNK];                     /* V */
+    float vxf[CHUNK], vyf[CHUNK];          /* Vx / f, -Vy / f */
+    float e1x[CHUNK], e1z[CHUNK];          /* e1 = (e1x, 0, e1z) */
+    float e2[3][CHUNK];                    /* e2 = V x e1 */
+    float e1n[CHUNK], e2n[CHUNK];          /* e1.N, e2.N */
+    float au[CHUNK], av[CHUNK];            /* a_u, a_v of P's pixel */
+    float vn[CHUNK];                       /* V.N, floored at 1e-6 */
+    float step[CHUNK];                     /* march length / steps, px */
+    float vis[CHUNK], open[CHUNK];         /* sums over slices of |proj N| a, open a */
+    float bsum[3][CHUNK];                  /* sum over slices of the bent-normal terms */
+    /* per slice */
+    float d[3][CHUNK];                     /* D */
+    float du[CHUNK], dv[CHUNK];            /* screen step of D, px per step */
+    float dxf[CHUNK], dyf[CHUNK];          /* Dx / f, -Dy / f */
+    float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f */
+    float ax[CHUNK], ay[CHUNK];            /* a = ou ax + ov ay -/+ L */
+    float bx[CHUNK], by[CHUNK];            /* b = ou bx + ov by */
+    float cn[CHUNK], sn[CHUNK], pl[CHUNK]; /* cos n, sin n, |proj N| */
+    float hc[2][CHUNK], low[2][CHUNK];     /* horizon cosine so far, its lowest; the
+                                              fast path: H'.V of the highest sample */
+    float hq[2][CHUNK];                    /* the fast path: |H'|^2 of the highest
+                                              sample (1 at first, with hc = low) */
+    /* per step */
+    float a[2][CHUNK], r[2][CHUNK];        /* H'.V = dq a + L dp, H.V = dq r + L dp */
+    float b[CHUNK];                        /* sg H'.D = dq b (both sides) */
+    float e[CHUNK];                        /* |H|^2 = (H.V)^2 + dq^2 e */
+    int32_t ok[CHUNK];                     /* b > |c|: the sample is along the slice */
+    int32_t idx[2][CHUNK];                 /* index in the padded plane */
+};
+
+/* acos by Abramowitz and Stegun 4.4.46 (|error| <= 2e-8 before float rounding), odd
+   symmetry about 1/2 pi for x < 0; NaN for |x| > 1. gtao.glsl's gtao_acos is the same
+   operations. */
+static inline __attribute__((always_inline)) float gtao_acos(float x)
+{
+    float ax = fabsf(x);
+    float p = -0.0012624911f;
+    p = p * ax + 0.0066700901f;
+    p = p * ax - 0.0170881256f;
+    p = p * ax + 0.0308918810f;
+    p = p * ax - 0.0501743046f;
+    p = p * ax + 0.0889789874f;
+    p = p * ax - 0.2145988016f;
+    p = p * ax + 1.5707963050f;
+    float r = sqrtf(1.0f - ax) * p;
+    return x < 0.0f ? PI_F - r : r;
+}
+
+/* 1 - interleaved gradient noise (Jimenez 2014) at the pixel: in (0, 1]. */
+static inline __attribute__((always_inline)) float step_jitter(float x, float y)
+{
+    float a = 0.06711056f * x + 0.00583715f * y;
+    float b = 52.9829189f * (a - floorf(a));
+    return 1.0f - (b - floorf(b));
+}
+
+/* What depends on the pixel only: V, e2 = V x e1, V.N, the march length (gtao.c). */
+static inline __attribute__((always_inline)) void
+setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
+{
+    const struct ssg_gtao_consts *c = j->c;
+    const float invf = 1.0f / c->proj.f, radius = c->p.radius, f = c->proj.f;
+    const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
+    const float av = -(yf + 0.5f - c->proj.cy) * invf;
+    for (int i = 0; i < len; i++) {
+        float xf = (float)(x0 + i);
+        float au = (xf + 0.5f - c->proj.cx) * invf;
+        float l = sqrtf(au * au + av * av + 1.0f), il = 1.0f / l;
+        float vx = -au * il, vy = -av * il, vz = il;
+        float e1x = c->e1[x0 + i], e1z = c->e1[j->w + x0 + i];
+        float e2x = vy * e1z, e2y = vz * e1x - vx * e1z, e2z = -vy * e1x;
+        float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i], dp = k->dp[i];
+        float vn = vx * nx + vy * ny + vz * nz;
+        k->xf[i] = xf;
+        k->au[i] = au;
+        k->av[i] = av;
+        k->lp[i] = l;
+        k->ldp[i] = l * dp;
+        k->v[0][i] = vx, k->v[1][i] = vy, k->v[2][i] = vz;
+        k->vxf[i] = vx * invf;
+        k->vyf[i] = -vy * invf;
+        k->e1x[i] = e1x, k->e1z[i] = e1z;
+        k->e2[0][i] = e2x, k->e2[1][i] = e2y, k->e2[2][i] = e2z;
+        k->e1n[i] = e1x * nx + e1z * nz;
+        k->e2n[i] = e2x * nx + e2y * ny + e2z * nz;
+        k->vn[i] = vn > 1e-6f ? vn : 1e-6f;
+        /* f R / den reaches every point of the slice within R (gtao.c). */
+        float near = dp - radius, half = 0.5f * dp;
+        float rp = f * radius / (near > half ? near : half);
+        rp = cap > 0.0f && rp > cap ? cap : rp;
+        k->step[i] = rp / fs;
+        k->u[i] = step_jitter(xf, yf);
+        k->vis[i] = k->open[i] = 0.0f;
+        k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
+    }
+}
+
+/* Slice direction phi = pi kd / slices + psi: D, M = V x D (= c e2 - s e1), the normal
+   projected on the slice (cos n, sin n, |proj N|), the screen step and the coefficients
+   of the sample formulas, with the tangent-plane correction al, be of hbao_cpu.c's
+   place_step folded in; horizons start at their lowest, cos(n -/+ pi/2). */
+static inline __attribute__((always_inline)) void
+setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
+{
+    const float invf = 1.0f / j->c->proj.f;
+    for (int i = 0; i < len; i++) {
+        float cs = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
+        float dx = cs * k->e1x[i] + s * k->e2[0][i], dy = s * k->e2[1][i];
+        float dz = cs * k->e1z[i] + s * k->e2[2][i];
+        float mx = cs * k->e2[0][i] - s * k->e1x[i], my = cs * k->e2[1][i];
+        float dn = cs * k->e1n[i] + s * k->e2n[i], mn = cs * k->e2n[i] - s * k->e1n[i];
+        float vn = k->vn[i], sl = vn * vn + dn * dn;
+        float pl = sqrtf(sl), cn = vn / pl, sn = dn / pl;
+        float isl = mn / sl, al = isl * vn, be = isl * dn;
+        k->d[0][i] = dx, k->d[1][i] = dy, k->d[2][i] = dz;
+        k->du[i] = (dx + k->au[i] * dz) * k->step[i];
+        k->dv[i] = -(dy + k->av[i] * dz) * k->step[i];
+        float dxf = dx * invf, dyf = -dy * invf, mxf = mx * invf, myf = -my * invf;
+        k->dxf[i] = dxf, k->dyf[i] = dyf, k->mxf[i] = mxf, k->myf[i] = myf;
+        k->ax[i] = k->vxf[i] + mxf * al;
+        k->ay[i] = k->vyf[i] + myf * al;
+        k->bx[i] = dxf + mxf * be;
+        k->by[i] = dyf + myf * be;
+        /* A slice within asin(0.1) of the tangent plane adds nothing (finish_slice). */
+        k->pl[i] = sl >= SLICE_MIN ? pl : 0.0f;
+        k->cn[i] = cn, k->sn[i] = sn;
+        k->hc[0][i] = k->low[0][i] = -sn;
+        k->hc[1][i] = k->low[1][i] = sn;
+        k->hq[0][i] = k->hq[1][i] = 1.0f;
+    }
+}
+
+/* Step s of both sides for the whole chunk: the sample lies at (s + u) step along the
+   screen direction, rounded to the nearest pixel (ties to even); -D's is the point
+   reflection (rint is odd), whose coefficients are D's with the signs the header gives. */
+static inline __attribute__((always_inline)) void
+place_step(const struct job *j, struct chunk *restrict k, int len, float y, float sf)
+{
+    const float fw = (float)j->w, fh = (float)j->h;
+    const int pw = j->pw;
+    for (int i = 0; i < len; i++) {
+        float t = sf + k->u[i];
+        float ou = nearbyintf(k->du[i] * t), ov = nearbyintf(k->dv[i] * t);
+        float pr = ou * k->vxf[i] + ov * k->vyf[i];
+        float c = ou * k->mxf[i] + ov * k->myf[i];
+        float bd = ou * k->dxf[i] + ov * k->dyf[i];
+        float pa = ou * k->ax[i] + ov * k->ay[i];
+        float b = ou * k->bx[i] + ov * k->by[i];
+        float l = k->lp[i];
+        k->ok[i] = b > fabsf(c);
+        k->b[i] = b;
+        k->e[i] = bd * bd + c * c;
+        k->a[0][i] = pa - l;
+        k->a[1][i] = -(pa + l);
+        k->r[0][i] = pr - l;
+        k->r[1][i] = -(pr + l);
+        k->idx[0][i] = ssg_sampling_padded_index(k->xf[i], y, ou, ov, fw, fh, pw);
+        k->idx[1][i] = ssg_sampling_padded_index(k->xf[i], y, -ou, -ov, fw, fh, pw);
+    }
+}
+
+/* One sample of one side: its horizon cosine, faded towards the lowest by its weight,
+   raises the horizon, or with thickness t > 0 a lower one within reach pulls it down.
+   Samples off screen, on background (+inf) or off the slice (!ok) change nothing. */
+static inline __attribute__((always_inline)) float
+horizon_one(float hc, float low, float dq, float a, float r, float b, float e, float ldp,
+            int ok, const struct ssg_gtao_consts *c, float r2max, int linear)
+{
+    float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
+    float q = hv * hv + dq * dq * e;
+    float w;
+    if (linear) {
+        w = sqrtf(q) * c->fall_mul + c->fall_add;
+        w = w < 0.0f ? 0.0f : w;
+        w = w < 1.0f ? w : 1.0f;
+    } else {
+        w = q <= r2max ? 1.0f : 0.0f;
+    }
+    float shc = pv / sqrtf(pv * pv + pd * pd);
+    shc = low + w * (shc - low);
+    int valid = ok & (dq < INFINITY);
+    int up = valid & (shc > hc);
+    int thin = valid & !(shc > hc) & (w > 0.0f) & (c->p.thickness > 0.0f);
+    float pulled = hc + c->p.thickness * (shc - hc);
+    return up ? shc : thin ? pulled : hc;
+}
+
+/* The fast path (hard cutoff, no thickness: the defaults): a side's horizon is the highest
+   sample within R, and cosines are compared without a root or a division, as hbao_cpu.c
+   does: pv / sqrt(q) > hv / sqrt(hq) exactly when pv |pv| hq > hv |hv| q (q, hq > 0); the
+   root is taken once per slice (fast_horizons), which gives the highest sample's
+   pv / sqrt(pv^2 + pd^2), the cosine the general path would keep. */
+static inline __attribute__((always_inline)) void
+horizon_fast(float *restrict hv, float *restrict hq, float dq, float a, float r, float b,
+             float e, float ldp, int ok, float r2max)
+{
+    float rv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
+    float d2 = rv * rv + dq * dq * e;
+    float q = pv * pv + pd * pd;
+    float v = *hv, vq = *hq;
+    /* +inf depth (off screen, background) makes d2 inf or NaN: not within R. */
+    int up = ok & (d2 <= r2max) & (pv * fabsf(pv) * vq > v * fabsf(v) * q);
+    *hv = up ? pv : v;
+    *hq = up ? q : vq;
+}
+
+static inline __attribute__((always_inline)) void
+horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear, int fast)
+{
+    /* Index (v, u) of the padded plane is pixel (v - 1, u - 1). */
+    const float *restrict plane = j->padded + j->pw + 1;
+    const float r2max = j->c->p.radius * j->c->p.radius;
+    for (int i = 0; i < len; i++) {
+        float d0 = plane[k->idx[0][i]], d1 = plane[k->idx[1][i]];
+        if (fast) {
+            horizon_fast(&k->hc[0][i], &k->hq[0][i], d0, k->a[0][i], k->r[0][i], k->b[i],
+                         k->e[i], k->ldp[i], k->ok[i], r2max);
+            horizon_fast(&k->hc[1][i], &k->hq[1][i], d1, k->a[1][i], k->r[1][i], k->b[i],
+                         k->e[i], k->ldp[i], k->ok[i], r2max);
+            continue;
+        }
+        k->hc[0][i] = horizon_one(k->hc[0][i], k->low[0][i], d0, k->a[0][i], k->r[0][i],
+                                  k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+        k->hc[1][i] = horizon_one(k->hc[1][i], k->low[1][i], d1, k->a[1][i], k->r[1][i],
+                                  k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+    }
+}
+
+/* The fast path's horizon cosines, H'.V / |H'| of the highest samples (low / 1 = low
+   where none rose). */
+static inline __attribute__((always_inline)) void fast_horizons(struct chunk *restrict k,
+                                                                int len)
+{
+    for (int i = 0; i < len; i++) {
+        k->hc[0][i] = k->hc[0][i] / sqrtf(k->hq[0][i]);
+        k->hc[1][i] = k->hc[1][i] / sqrtf(k->hq[1][i]);
+    }
+}
+
+/* One side of a slice (sg = 1: +D, h2; sg = -1: -D, h1): its horizon angle h from V, half
+   the inner integral 1/4 (cos n + 2 h sin n - cos(2 h - n)), and its share of the bent
    normal's t0 and t1 (gtao.c). A side without a horizon lies at the hemisphere's limit
    h = n + sg pi/2, where every term is algebraic in cos n, sin n (cos(2 h - n) = -cos n,
    sin(h - n) = sg, sin(3 h - n) = -sg cos 2n, sin(h + n) = sg cos 2n, cos(3 h - n) =
-   sg sin 2n, cos(h + n) = -sg sin 2n): no trigonometry, and exactly the open value. */
+   sg sin 2n, cos(h + n) = -sg sin 2n): exactly the open value. Otherwise h = sg acos hc,
+   clamped to the normal's hemisphere (sec. 4.1), and the terms come from cos h, sin h by
+   the angle-sum formulas. */
 struct arc {
     float a, t0, t1;
 };
 
-static struct arc side_arc(const struct side *s, float sg, float n, float cn, float sn)
+static inline __attribute__((always_inline)) struct arc
+side_arc(float hc, float low, float sg, float n, float cn, float sn)
 {
     float lim = n + sg * HALF_PI;
-    if (!(s->hc > s->low + OPEN_EPS)) {
-        float c2 = cn * cn - sn * sn, s2 = 2.0f * sn * cn;
-        return (struct arc){0.25f * (cn + 2.0f * lim * sn + cn), sg * (6.0f - 2.0f * c2),
-                            2.0f * sg * s2};
-    }
-    float h = sg * acosf(s->hc);
-    /* Clamped to the normal's hemisphere (sec. 4.1). */
-    h = sg > 0.0f ? (h < lim ? h : lim) : (h > lim ? h : lim);
-    return (struct arc){0.25f * (cn + 2.0f * h * sn - cosf(2.0f * h - n)),
-                        6.0f * sinf(h - n) - sinf(3.0f * h - n) - 3.0f * sinf(h + n),
-                        -cosf(3.0f * h - n) - 3.0f * cosf(h + n)};
+    float c2 = cn * cn - sn * sn, s2 = 2.0f * sn * cn;
+    struct arc o = {0.25f * (cn + 2.0f * lim * sn + cn), sg * (6.0f - 2.0f * c2),
+                    2.0f * sg * s2};
+    float h = sg * gtao_acos(hc);
+    int clamp = sg > 0.0f ? !(h < lim) : !(h > lim); /* NaN (|hc| > 1) too */
+    h = clamp ? lim : h;
+    float ch = clamp ? -sg * sn : hc;
+    float sh = clamp ? sg * cn : sg * sqrtf((1.0f - hc) * (1.0f + hc));
+    float c2h = ch * ch - sh * sh, s2h = 2.0f * sh * ch;
+    float c3h = ch * c2h - sh * s2h, s3h = sh * c2h + ch * s2h;
+    float sin_hmn = sh * cn - ch * sn, sin_hpn = sh * cn + ch * sn;
+    float sin_3hmn = s3h * cn - c3h * sn, cos_3hmn = c3h * cn + s3h * sn;
+    float cos_hpn = ch * cn - sh * sn, cos_2hmn = c2h * cn + s2h * sn;
+    struct arc g = {0.25f * (cn + 2.0f * h * sn - cos_2hmn),
+                    6.0f * sin_hmn - sin_3hmn - 3.0f * sin_hpn, -cos_3hmn - 3.0f * cos_hpn};
+    int open = !(hc > low + OPEN_EPS);
+    return (struct arc){open ? o.a : g.a, open ? o.t0 : g.t0, open ? o.t1 : g.t1};
 }
 
-/* Slice k: adds |proj N| a(h1, h2, n) to *vis, the open value to *open, and the slice's
-   bent-normal term to bent. */
-static void slice(const struct job *j, const struct pix *p, int k, float *vis, float *open,
-                  float bent[3])
+/* Adds the slice's |proj N| a(h1, h2, n) to vis, its open value to open and its bent
+   normal term to bsum; a disabled slice (pl 0) adds 0, which leaves the sums' bits. */
+static inline __attribute__((always_inline)) void finish_slice(struct chunk *restrict k,
+                                                               int len)
+{
+    for (int i = 0; i < len; i++) {
+        float cn = k->cn[i], sn = k->sn[i], pl = k->pl[i];
+        float n = HALF_PI - gtao_acos(sn);
+        struct arc a1 = side_arc(k->hc[1][i], k->low[1][i], -1.0f, n, cn, sn);
+        struct arc a2 = side_arc(k->hc[0][i], k->low[0][i], 1.0f, n, cn, sn);
+        float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
+        int live = pl > 0.0f;
+        float vis = pl * (a1.a + a2.a);
+        float open = pl * (0.25f * (cn + 2.0f * lim1 * sn + cn) +
+                           0.25f * (cn + 2.0f * lim2 * sn + cn));
+        k->vis[i] += live ? vis : 0.0f;
+        k->open[i] += live ? open : 0.0f;
+        /* Bent normal: the slice's mean direction t0 D + t1 V (XeGTAO's closed form). */
+        float t0 = (a1.t0 + a2.t0 + 16.0f * sn) / 12.0f;
+        float t1 = (a1.t1 + a2.t1 + 8.0f * cn) / 12.0f;
+        for (int m = 0; m < 3; m++) {
+            float bt = pl * (t0 * k->d[m][i] + t1 * k->v[m][i]);
+            k->bsum[m][i] += live ? bt : 0.0f;
+        }
+    }
+}
+
+/* out = clamp(vis / open, 0, 1)^power and the normalised bent normal (no slice, all
+   grazing: the normal itself); background 1 and 0. */
+static inline __attribute__((always_inline)) void
+finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
+{
+    const size_t plane = (size_t)j->w * (size_t)j->h;
+    const float power = j->c->p.power;
+    float *restrict out = j->out + o, *restrict b0 = j->bent + o;
+    float *restrict b1 = b0 + plane, *restrict b2 = b1 + plane;
+    for (int i = 0; i < len; i++) {
+        float v = k->open[i] > 0.0f ? k->vis[i] / k->open[i] : 1.0f;
+        v = v > 0.0f ? v : 0.0f;
+        out[i] = v < 1.0f ? v : 1.0f;
+    }
+    for (int i = 0; power != 1.0f && i < len; i++)
+        out[i] = powf(out[i], power);
+    for (int i = 0; i < len; i++) {
+        float bx = k->bsum[0][i], by = k->bsum[1][i], bz = k->bsum[2][i];
+        float bl = sqrtf(bx * bx + by * by + bz * bz);
+        float ib = bl > 0.0f ? 1.0f / bl : 0.0f;
+        int fg = k->fg[i], some = bl > 0.0f;
+        out[i] = fg ? out[i] : 1.0f;
+        b0[i] = fg ? (some ? bx * ib : k->nx[i]) : 0.0f;
+        b1[i] = fg ? (some ? by * ib : k->ny[i]) : 0.0f;
+        b2[i] = fg ? (some ? bz * ib : k->nz[i]) : 0.0f;
+    }
+}
+
+/* One row of one chunk: the hot code, compiled for AVX2 too and picked at run time (the
+   same IEEE operations lane by lane, so both give the same bits). Background lanes are
+   marched like the others with harmless values (ssg_sampling_load) and replaced at the
+   end. */
+static inline __attribute__((always_inline)) void
+chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len,
+           int linear, int fast)
 {
     const struct ssg_gtao_consts *c = j->c;
-    float dc = c->slice_cos[k], ds = c->slice_sin[k];
-    float cs = dc * p->co - ds * p->si, sn = ds * p->co + dc * p->si;
-    float d[3] = {cs * p->e1x + sn * p->e2[0], sn * p->e2[1], cs * p->e1z + sn * p->e2[2]};
-    float m[3] = {cs * p->e2[0] - sn * p->e1x, cs * p->e2[1], cs * p->e2[2] - sn * p->e1z};
-    float dn = d[0] * p->n[0] + d[1] * p->n[1] + d[2] * p->n[2];
-    float mn = m[0] * p->n[0] + m[1] * p->n[1] + m[2] * p->n[2];
-    float vn = p->vn, sl = vn * vn + dn * dn;
-    if (!(sl >= SLICE_MIN))
-        return;
-    float pl = sqrtf(sl), n = atan2f(dn, vn), cn = vn / pl, snn = dn / pl;
-    float isl = mn / sl, al = isl * vn, be = isl * dn;
-    struct side pos = {-snn, -snn}, neg = {snn, snn};
-    float su = (d[0] + p->au * d[2]) * p->step, sv = -(d[1] + p->av * d[2]) * p->step;
-    for (int s = 0; s < c->p.steps; s++) {
-        float t = (float)s + p->u;
-        float ou = nearbyintf(su * t), ov = nearbyintf(sv * t);
-        sample(j, p, d, m, al, be, 1.0f, ou, ov, &pos);
-        sample(j, p, d, m, al, be, -1.0f, ou, ov, &neg);
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
+                      k->nz, k->px, k->py, k->pz, k->dp);
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
+    setup_chunk(j, k, y, x0, len);
+    for (int s = 0; s < c->p.slices; s++) {
+        setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
+        for (int st = 0; st < c->p.steps; st++) {
+            place_step(j, k, len, (float)y, (float)st);
+            horizon_step(j, k, len, linear, fast);
+        }
+        if (fast)
+            fast_horizons(k, len);
+        finish_slice(k, len);
     }
-    struct arc a1 = side_arc(&neg, -1.0f, n, cn, snn), a2 = side_arc(&pos, 1.0f, n, cn, snn);
-    float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
-    *vis += pl * (a1.a + a2.a);
-    *open += pl * (0.25f * (cn + 2.0f * lim1 * snn + cn) + 0.25f * (cn + 2.0f * lim2 * snn + cn));
-    /* Bent normal: the slice's mean direction t0 D + t1 V (XeGTAO's closed form). */
-    float t0 = (a1.t0 + a2.t0 + 16.0f * snn) / 12.0f;
-    float t1 = (a1.t1 + a2.t1 + 8.0f * cn) / 12.0f;
-    for (int i = 0; i < 3; i++)
-        bent[i] += pl * (t0 * d[i] + t1 * p->v[i]);
+    finish_chunk(j, k, o, len);
 }
 
-static void pixel(const struct job *j, int x, int y)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void gtao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
-    size_t o = (size_t)y * (size_t)j->w + (size_t)x, plane = (size_t)j->w * (size_t)j->h;
-    float *bent = j->bent[0];
-    struct pix p;
-    if (!setup_pixel(j, x, y, &p)) {
-        j->out[o] = 1.0f;
-        bent[o] = bent[plane + o] = bent[2 * plane + o] = 0.0f;
-        return;
-    }
-    float vis = 0.0f, open = 0.0f, b[3] = {0.0f, 0.0f, 0.0f};
-    for (int k = 0; k < j->c->p.slices; k++)
-        slice(j, &p, k, &vis, &open, b);
-    float v = open > 0.0f ? vis / open : 1.0f;
-    v = v > 0.0f ? v : 0.0f;
-    v = v < 1.0f ? v : 1.0f;
-    j->out[o] = j->c->p.power == 1.0f ? v : powf(v, j->c->p.power);
-    float bl = sqrtf(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-    /* No slice (all grazing): the normal itself. */
-    float ib = bl > 0.0f ? 1.0f / bl : 0.0f;
-    for (int i = 0; i < 3; i++)
-        bent[(size_t)i * plane + o] = bl > 0.0f ? b[i] * ib : p.n[i];
+    if (j->c->p.falloff > 0.0f)
+        chunk_body(j, k, y, x0, len, 1, 0);
+    else if (j->c->p.thickness > 0.0f)
+        chunk_body(j, k, y, x0, len, 0, 0);
+    else
+        chunk_body(j, k, y, x0, len, 0, 1);
 }
 
+/* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
+   of the depth plane, which then stays in cache from one row to the next. */
 static void band(void *user, int y0, int y1)
 {
     const struct job *j = user;
-    for (int y = y0; y < y1; y++)
-        for (int x = 0; x < j->w; x++)
-            pixel(j, x, y);
+    struct chunk k;
+    for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+        int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+        for (int y = y0; y < y1; y++)
+            gtao_chunk_row(j, &k, y, x0, len);
+    }
+}
+
+static void rows_pad(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    ssg_sampling_pad_depth(j->depth, j->depth_sign, j->w, y0, y1, j->padded);
 }
 
 enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -245,13 +470,24 @@ enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     const struct ssg_image *dep = io->in[SSG_GTAO_IN_DEPTH];
     struct job j = {.c = c, .w = pos->width, .h = pos->height};
     j.out = io->out[SSG_GTAO_OUT_OUT]->data;
-    j.bent[0] = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data;
-    for (int ch = 0; ch < 3; ch++)
+    j.bent = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data;
+    for (int ch = 0; ch < 3; ch++) {
+        j.pos[ch] = ssg_image_plane(pos, ch);
         j.nrm[ch] = ssg_image_plane(nrm, ch);
+    }
     j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
     j.depth_sign = dep ? 1.0f : -1.0f;
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
+    j.pw = j.w + 2;
+    j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
+    if (!j.padded)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
+    float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
+    for (int x = 0; x < j.pw; x++)
+        j.padded[x] = last[x] = INFINITY;
+    ssg_parallel_rows(j.h, ROWS_PER_BAND, rows_pad, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+    free(j.padded);
     return SSG_OK;
 }

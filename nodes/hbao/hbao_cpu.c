@@ -264,20 +264,6 @@ setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc
     }
 }
 
-/* The index in the padded plane of the sample at (x + ou, y + ov). A sample off screen
-   is clamped into the border, whose infinite depth makes it no occluder: the clamp
-   replaces a test. (ou, ov are finite: rounded products of finite values.) */
-static inline __attribute__((always_inline)) int32_t
-padded_index(float x, float y, float ou, float ov, float fw, float fh, int pw)
-{
-    float su = x + ou, sv = y + ov;
-    su = su < -1.0f ? -1.0f : su;
-    su = su < fw ? su : fw;
-    sv = sv < -1.0f ? -1.0f : sv;
-    sv = sv < fh ? sv : fh;
-    return (int)sv * pw + (int)su;
-}
-
 /* Places step jf of D, and of -D when `pair`, for the whole chunk: the sample lies at
    (jf + u) step along the screen direction, rounded to the nearest pixel (ties to even),
    and what does not depend on its depth is folded into a and b.
@@ -314,10 +300,10 @@ place_step(const struct job *j, struct chunk *restrict k, int len, int pair, flo
         float c = ou * k->mxf[i] + ov * k->myf[i];
         int ok = b > fabsf(c);
         kb[i] = b;
-        i0[i] = padded_index(k->xf[i], y, ou, ov, fw, fh, pw);
+        i0[i] = ssg_sampling_padded_index(k->xf[i], y, ou, ov, fw, fh, pw);
         a0[i] = ok ? pa - k->lp[i] : __builtin_nanf("");
         if (pair) {
-            i1[i] = padded_index(k->xf[i], y, -ou, -ov, fw, fh, pw);
+            i1[i] = ssg_sampling_padded_index(k->xf[i], y, -ou, -ov, fw, fh, pw);
             a1[i] = ok ? -(pa + k->lp[i]) : __builtin_nanf("");
         }
     }

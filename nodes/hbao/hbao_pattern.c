@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 
+#include "common/sampling.h"
 #include "hbao_cpu.h"
 
 /* The pattern unrolled to n full rows (see struct job; without a pattern one row of
@@ -49,15 +50,5 @@ float *ssg_hbao_pattern_unroll(const struct ssg_image *rot, int w, struct job *j
 void ssg_hbao_rows_pad(void *user, int y0, int y1)
 {
     const struct job *j = user;
-    const float sign = j->depth_sign;
-    for (int y = y0; y < y1; y++) {
-        const float *restrict src = j->depth + (size_t)y * (size_t)j->w;
-        float *restrict dst = j->padded + (size_t)(y + 1) * (size_t)j->pw;
-        dst[0] = INFINITY;
-        dst[j->w + 1] = INFINITY;
-        for (int x = 0; x < j->w; x++) {
-            float d = sign * src[x];
-            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
-        }
-    }
+    ssg_sampling_pad_depth(j->depth, j->depth_sign, j->w, y0, y1, j->padded);
 }
