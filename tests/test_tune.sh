@@ -60,9 +60,9 @@ bad() { # PATTERN ARGS...: the tune into $TMP/a exits 1 and says PATTERN
 }
 ports=(--reference ref.out --image h.out --mask g.depth)
 bad "no node named 'hx' \(in 'hx.bias'" "${ports[@]}" --param hx.bias=0:1
-bad "ao_error.graph:17:7: error: node 'h' \(hbao\) has no parameter 'bais' \(expected one of: " \
+bad "ao_error.graph:18:7: error: node 'h' \(hbao\) has no parameter 'bais' \(expected one of: " \
     "${ports[@]}" --param h.bais=0:1
-bad "ao_error.graph:17:7: error: parameter 'falloff' .* is not a number" \
+bad "ao_error.graph:18:7: error: parameter 'falloff' .* is not a number" \
     "${ports[@]}" --param h.falloff=0:1
 bad "empty or reversed range" "${ports[@]}" --param h.bias=0.5:0.5
 bad "empty or reversed range" "${ports[@]}" --param h.bias=0.6:0.2
