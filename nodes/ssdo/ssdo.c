@@ -7,8 +7,12 @@
  * Belonogov, "Global Illumination methods in simulated VR environments", chapter 4.
  * Sampling, the visibility test (with a hard range check) and the bounce are described in
  * ssdo_sampling.h, which the `bounce` node shares. Here, per pixel and kernel sample s
- * with direction w = s / |s| (N.w = s.z / |s|), and dw = 2 pi / K (eq. 2: the kernel must
- * be uniform over the hemisphere, `halton(mapping=uniform)`):
+ * with direction w = s / |s| (N.w = s.z / |s|), and dw = pi / sum_s N.w_s (eq. 2: the kernel
+ * must be uniform over the hemisphere, `halton(mapping=uniform)`). Eq. 2's solid angle of
+ * one sample is 2 pi / K; we use pi over the kernel's own cosine sum instead, which has the
+ * same limit (the mean of N.w over a uniform hemisphere is 1/2) but integrates a constant
+ * environment exactly at every K: 2 pi / K made an open plane under a uniform sky
+ * 2 mean(N.w) too bright, +5.9 % at K = 16 (issue 16). The shapes:
  *   environment: lit += L_env(w) (N.w) V dw, full += L_env(w) (N.w) dw (eq. 2), L_env from
  *     the scene's environment as a view-space cube (core/scene/env.h, no trigonometry per sample);
  *   point and directional lights l: E_l = colour intensity max(0, N.L_l) (/ d^2 for a
@@ -31,7 +35,8 @@
  * count input (Szentandrasi section 4.3, the `complexity` node; table 1's "SSDO with
  *   preprocessing 20-50"): pixel i uses only the first n_i = round(count_i) kernel
  *   samples (half up, clamped to [1, K], NaN = K) and n_i stands for K everywhere above:
- *   dw = 2 pi / n_i, A_s = strength pi r^2 / n_i, every sum over its first n_i samples.
+ *   dw = pi / (sum of N.w over its first n_i samples), A_s = strength pi r^2 / n_i, every
+ *   sum over its first n_i samples.
  *   With a kernel of whole Halton periods and counts multiple of the period each pixel's
  *   samples stay quasi-uniform (section 4.2, eq. 8). Unconnected: n_i = K.
  * Without a scene (ctx->scene NULL, e.g. unit tests) there are no lights and the
@@ -149,11 +154,6 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (e)
         return e;
     c->out_channels = ctx->out_shape[0].channels;
-    /* The solid angle 2 pi / n of one of n samples, for every n up to the kernel's
-       width (the count input picks n per pixel), rounded from double. */
-    const int k = ctx->in_shape[SSG_SSDO_IN_KERNEL].width;
-    for (int n = 1; n <= k && n <= SSG_IMAGE_MAX_SIDE; n++)
-        c->dw_tab[n] = (float)(2.0 * M_PI / n);
     return prepare_light(ctx, c);
 }
 
@@ -204,7 +204,8 @@ const struct ssg_node_desc ssg_node_ssdo = {
               "Lighting in Real Time, sec. 3.2 eq. 1-4 and sec. 4.1 (one-step modulation "
               "factor), and Belonogov, Global Illumination methods in simulated VR "
               "environments, ch. 4",
-    .doc = "Kernel samples (uniform hemisphere, dw = 2 pi / K) are placed at P + radius s "
+    .doc = "Kernel samples (uniform hemisphere, dw = pi / sum N.w, so that a constant sky "
+           "integrates exactly) are placed at P + radius s "
            "about the normal (turned by the rotation tile) and projected; a sample is "
            "occluded when the surface there is more than `bias` in front of it and within "
            "`radius` of P. The environment (scene probe as a view-space cube; constant "
@@ -218,8 +219,8 @@ const struct ssg_node_desc ssg_node_ssdo = {
            "`light` with form factor F = A_s cos_r cos_s / (pi max(d^2, min_distance^2)) "
            "(eq. 4 without its extra dw), the F normalised when their sum exceeds 1; "
            "bounce = albedo sum F L. At most 8 lights. With the count input a pixel uses "
-           "only the first n = round(count) kernel samples (clamped to [1, K]): dw = 2 pi "
-           "/ n, A_s with n for K, every sum over those n.",
+           "only the first n = round(count) kernel samples (clamped to [1, K]): dw and "
+           "A_s with those n, every sum over them.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssdo_params),
     .consts_size = sizeof(struct ssg_ssdo_consts),

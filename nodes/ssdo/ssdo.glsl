@@ -24,8 +24,6 @@ uniform bool do_bounce;     // gather the bounce
 uniform sampler2DArray count;
 uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst;
-// dw_tab[n] = 2 pi / n rounded from double as the CPU does, n = 0..K.
-layout(std430, binding = 0) readonly buffer DwTable { float dw_tab[]; };
 // The environment as a view-space cube (core/scene/env.h), RGB per texel (env = ENV_CUBE).
 layout(std430, binding = 1) readonly buffer EnvCube { float cube_rgb[]; };
 
@@ -179,6 +177,7 @@ struct light_sums {
     float ws[MAX_LIGHTS]; // sum of lobe weights w_il
     float wv[MAX_LIGHTS]; // sum of w_il V_i
     float litw, fullw;    // constant environment: sum of nw V, sum of nw
+    float cosw;           // sum of nw over the pixel's samples, in order: dw = pi / cosw
     vec3 lit, full;       // cube: sum of L_env nw V, sum of L_env nw
 };
 
@@ -273,7 +272,7 @@ void add_lights(inout light_sums acc, vec3 lt[MAX_LIGHTS], vec3 s, float il, flo
 }
 
 // Numerator and denominator per channel: the environment term, then each light's
-// E vis and E in light order (ssdo_cpu.c light_sums); dw = 2 pi / n.
+// E vis and E in light order (ssdo_cpu.c light_sums); dw = pi / sum of N.w.
 void light_totals(light_sums acc, float e[MAX_LIGHTS], float dw, out vec3 num, out vec3 den)
 {
     if (env != ENV_CUBE) {
@@ -347,7 +346,7 @@ void main()
     light_sums acc;
     for (int l = 0; l < MAX_LIGHTS; l++)
         acc.ws[l] = acc.wv[l] = 0.0;
-    acc.litw = acc.fullw = 0.0;
+    acc.litw = acc.fullw = acc.cosw = 0.0;
     acc.lit = acc.full = vec3(0.0);
     bounce_sum b = bounce_sum(0.0, vec3(0.0));
     for (int s = 0; s < n; s++) {
@@ -357,12 +356,15 @@ void main()
         precise float il = len > 0.0 ? 1.0 / len : 0.0;
         precise float nw = ks.z * il;
         nw = nw > 0.0 ? nw : 0.0;
+        acc.cosw += nw;
         float vis = sample_visibility(k, ks, b);
         add_environment(acc, k, ks, nw, vis);
         add_lights(acc, lt, ks, il, nw, vis);
     }
     vec3 num, den;
-    light_totals(acc, e, dw_tab[n], num, den);
+    // ssdo_cpu.c kernel_constants: pi over the samples' own cosine sum
+    precise float dw = acc.cosw > 0.0 ? 3.14159265358979 / acc.cosw : 0.0;
+    light_totals(acc, e, dw, num, den);
     store_out(p, num, den);
     SSG_STORE3(dst_bounce, p, do_bounce ? finish_bounce(p, b) : vec3(0.0));
 }

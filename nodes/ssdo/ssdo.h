@@ -54,9 +54,6 @@ struct ssg_ssdo_consts {
     int env;                    /* enum ssg_ssdo_env */
     float env_rgb[3];           /* constant environment radiance (1 without a scene) */
     struct ssg_env_cube cube;   /* the probe in view space (env = cube) */
-    /* dw_tab[n] = 2 pi / n (rounded from double), the solid angle of one of n samples,
-       for n = 1 .. the kernel's width; [0] = 0. Read by both backends. */
-    float dw_tab[SSG_IMAGE_MAX_SIDE + 1];
 };
 
 enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

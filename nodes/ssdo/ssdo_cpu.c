@@ -35,12 +35,13 @@ struct job {
     float *out[3];                 /* planes of out (1 or 3) */
     float *bounce[3];              /* planes of the bounce output */
     int out_channels;
-    float dw;                      /* 2 pi / K */
+    float dw;                      /* pi / (sum of nw over the kernel): dw_of[K] */
     float *nw;                     /* per sample: N.w = s.z / |s| (>= 0) */
     float *inv_len;                /* per sample: 1 / |s| (0 for s = 0) */
     float full_w;                  /* sum of nw in kernel order */
     const float *cnt;              /* per-pixel sample counts, NULL = the whole kernel */
-    const float *dw_tab;           /* count input: dw_tab[n] = 2 pi / n, n = 1..K */
+    float *dw_of;                  /* dw_of[n] = pi / (sum of nw over the first n samples),
+                                      0 where that sum is 0; n = 0..K (count input) */
 };
 
 /* The lighting part of a chunk: per light the tangent-space direction to it and its
@@ -57,7 +58,7 @@ struct light_chunk {
     int32_t texel[CHUNK];       /* cube: per sample, the float offset of its texel */
     float num[3][CHUNK], den[3][CHUNK]; /* finish: lit and unoccluded light per channel */
     float vis[CHUNK];           /* finish: vis_l of one light */
-    float dwl[CHUNK];           /* count input: 2 pi / n_i */
+    float dwl[CHUNK];           /* count input: dw_of[n_i] */
     float fullw[CHUNK];         /* count input, constant environment: sum of nw over the
                                    pixel's n_i samples */
 };
@@ -238,7 +239,7 @@ sample_all(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc
 }
 
 /* The count input for the chunk's pixels: n_i = round(count) (half up) clamped to
-   [1, K], NaN = K (selects only), then what depends on it: dw = 2 pi / n_i and the patch
+   [1, K], NaN = K (selects only), then what depends on it: dw = dw_of[n_i] and the patch
    area A_s / pi = strength r^2 / n_i (and min_distance^2 when automatic), the same
    operations as ssg_ssdo_setup with n_i for K. Returns the largest n_i among the surface
    pixels (at least 1). */
@@ -255,7 +256,7 @@ load_counts(const struct job *j, struct ssg_ssdo_chunk *restrict k,
         int n = ssg_sampling_count(c[i], kw);
         k->cnt[i] = n;
         lc->fullw[i] = 0.0f;
-        lc->dwl[i] = j->dw_tab[n];
+        lc->dwl[i] = j->dw_of[n];
         float per_n = strength / (float)n, rr = k->rr[i];
         k->ff[i] = per_n * (rr * rr);
         k->md2[i] = auto_md ? per_n * (rr * rr) : k->md2[i];
@@ -402,13 +403,16 @@ static void kernel_constants(struct job *j)
     const int count = j->s.count;
     const float *kx = j->s.kernel, *ky = kx + count, *kz = ky + count;
     j->full_w = 0.0f;
+    j->dw_of[0] = 0.0f;
     for (int s = 0; s < count; s++) {
         float l = sqrtf(kx[s] * kx[s] + ky[s] * ky[s] + kz[s] * kz[s]);
         j->inv_len[s] = l > 0.0f ? 1.0f / l : 0.0f;
         float nw = kz[s] * j->inv_len[s];
         j->nw[s] = nw > 0.0f ? nw : 0.0f;
         j->full_w += j->nw[s];
+        j->dw_of[s + 1] = j->full_w > 0.0f ? (float)M_PI / j->full_w : 0.0f;
     }
+    j->dw = j->dw_of[count];
 }
 
 enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -424,13 +428,12 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
-    j.dw = c->dw_tab[j.s.count]; /* 2 pi / K, prepare()'s table */
-    float *per_sample = malloc(sizeof(float) * 2 * (size_t)j.s.count);
+    float *per_sample = malloc(sizeof(float) * (3 * (size_t)j.s.count + 1));
     if (!per_sample)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     j.nw = per_sample;
     j.inv_len = per_sample + j.s.count;
-    j.dw_tab = c->dw_tab;
+    j.dw_of = per_sample + 2 * j.s.count;
     kernel_constants(&j);
     if (!c->p.bounce)
         memset(io->out[1]->data, 0, sizeof(float) * 3 * (size_t)pos->width * pos->height);

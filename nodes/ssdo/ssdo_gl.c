@@ -1,6 +1,7 @@
 /* ssdo_gl.c - GL side of the `ssdo` node (method in ssdo.c, shader ssdo.glsl): one pass,
  * one invocation per pixel, every mode, the bounce, the lights and the environment. The
- * projection of this resolution and the table dw = 2 pi / n come from prepare(); what
+ * projection of this resolution comes from prepare(), dw = pi / sum N.w from the pixel's
+ * own sample loop (in the CPU's order: the same float sum); what
  * the CPU kernel works out once per run (the cap's factor) comes from the same C
  * expression here, so both backends start from the same bits. Lights and the environment cube are prepare()'s view-space consts:
  * the lights as uniform arrays, the cube (18 KiB) in a storage buffer. The `bounce` node
@@ -63,7 +64,6 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const int out_channels = c->out_channels;
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     const struct ssg_image *cnt = io->in[SSG_SSDO_IN_COUNT];
-    const int k = io->in[SSG_SSDO_IN_KERNEL]->width;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssdo.glsl", NULL);
     ssg_ssdo_gl_bind_geometry(&p, io, &c->p.g, &c->proj);
@@ -74,7 +74,6 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_int(&p, "radiance", c->p.mode == SSG_SSDO_MODE_RADIANCE);
     ssg_gl_int(&p, "out_channels", out_channels);
     ssg_gl_int(&p, "lobe", c->p.lobe);
-    ssg_gl_buffer(&p, 0, c->dw_tab, sizeof(float) * ((size_t)k + 1));
     bind_light(&p, c);
     ssg_gl_dispatch(&p, pos->width, pos->height);
     return ssg_gl_pass_end(&p);
