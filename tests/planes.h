@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "check.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -125,6 +126,23 @@ static void corner_scene(struct scene *s)
     plane_at(&s->pl[1], 0, -1, 1, 0, 0, -5); /* wall, facing down and towards us */
 }
 
+
+/* Parameter sets for a node run: `pinned` first, then the caller's `sets` (later sets win,
+   so a caller still overrides what is pinned), into all[0 .. cap); returns how many. Node
+   tests pin the settings their closed forms were derived for, so that a change of the
+   node's shipped defaults leaves them valid. */
+enum { PIN_SETS_MAX = 24 };
+static inline int pin_sets(const char **all, const char *const *pinned, int pinned_count,
+                           const char *const *sets, int set_count)
+{
+    int n = 0;
+    CHECK(pinned_count + set_count <= PIN_SETS_MAX);
+    for (int i = 0; i < pinned_count && n < PIN_SETS_MAX; i++)
+        all[n++] = pinned[i];
+    for (int i = 0; i < set_count && n < PIN_SETS_MAX; i++)
+        all[n++] = sets[i];
+    return n;
+}
 /* The `halton` node's rotation tile for this test's frame (its kernel dropped), owned;
    NULL when the node fails (which fails a CHECK of the including test). */
 static inline struct ssg_image *halton_rotation(void)

@@ -116,16 +116,13 @@ static inline struct ssg_image *ssao(const struct gbuf *g, const struct ssg_imag
     /* The tests were derived for the paper's settings (the defaults before issue 15 tuned
        them for accuracy): pinned first, so each test's closed form holds whatever the
        shipped defaults; the caller's sets come after and win. */
-    enum { PINNED = 3, MAX_SETS = 16 };
-    const char *all[PINNED + MAX_SETS] = {"bias=0.02", "power=1", "range_check=smooth"};
-    CHECK(set_count <= MAX_SETS);
-    for (int i = 0; i < set_count && i < MAX_SETS; i++)
-        all[PINNED + i] = sets[i];
+    static const char *const pinned[] = {"bias=0.02", "power=1", "range_check=smooth"};
+    const char *all[PIN_SETS_MAX];
+    int n = pin_sets(all, pinned, 3, sets, set_count);
     struct ssg_diags diags = {0};
     struct ssg_frame f = frame();
     struct ssg_outputs out;
-    enum ssg_err e = ssg_node_run("ssao", b, nb, all, PINNED + (set_count < MAX_SETS ?
-                                  set_count : MAX_SETS), &f, &out, &diags);
+    enum ssg_err e = ssg_node_run("ssao", b, nb, all, n, &f, &out, &diags);
     CHECK_EQ(e, SSG_OK);
     if (e != SSG_OK) {
         ssg_diags_print(&diags, stderr);

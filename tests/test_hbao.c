@@ -58,17 +58,14 @@ static struct ssg_image *hbao(const struct gbuf *g, const struct ssg_image *rota
     /* The tests were derived for the paper's settings (the defaults before issue 15 tuned
        them for accuracy): pinned first, so each test's closed form holds whatever the
        shipped defaults; the caller's sets come after and win. */
-    enum { PINNED = 4, MAX_SETS = 16 };
-    const char *all[PINNED + MAX_SETS] = {"steps=4", "bias=0.1", "strength=1",
-                                          "falloff=linear"};
-    CHECK(set_count <= MAX_SETS);
-    for (int i = 0; i < set_count && i < MAX_SETS; i++)
-        all[PINNED + i] = sets[i];
+    static const char *const pinned[] = {"steps=4", "bias=0.1", "strength=1",
+                                         "falloff=linear"};
+    const char *all[PIN_SETS_MAX];
+    int n = pin_sets(all, pinned, 4, sets, set_count);
     struct ssg_diags diags = {0};
     struct ssg_frame f = frame();
     struct ssg_outputs out;
-    enum ssg_err e = ssg_node_run("hbao", b, nb, all, PINNED + (set_count < MAX_SETS ?
-                                  set_count : MAX_SETS), &f, &out, &diags);
+    enum ssg_err e = ssg_node_run("hbao", b, nb, all, n, &f, &out, &diags);
     CHECK_EQ(e, SSG_OK);
     if (e != SSG_OK) {
         ssg_diags_print(&diags, stderr);
