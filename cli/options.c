@@ -179,6 +179,13 @@ static const struct option options[] = {
      .hi = SSG_TUNE_MAX_SCENES,
      .help = "use this scene instead of the graph's (tune: repeatable, the\n"
              "error is the mean over them)"},
+    {.name = "--lights", .arg = "FILE",
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .take = take_text, .field = OF(ov.lights),
+     .help = "replace the scene's lights and environment with those of FILE, a\n"
+             "scene file of point_light, directional_light and environment only\n"
+             "(examples/lights/: sun, sky, courtyard); default: the graph's\n"
+             "`lights` line, else the scene's own"},
     {.name = "--guard", .arg = "G",
      .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_int, .field = OF(guard), .lo = 0, .hi = SSG_GUARD_MAX,

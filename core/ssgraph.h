@@ -228,6 +228,10 @@ struct ssg_run_options {
 /* Command-line style overrides applied after the graph file is read. */
 struct ssg_overrides {
     const char *scene;       /* scene file path, NULL = the graph's own */
+    const char *lights;      /* a scene file of lights only (point_light, directional_light,
+                                environment) that replaces the scene's lights and
+                                environment, NULL = the graph's `lights` line, else the
+                                scene's own */
     int width, height;       /* 0 = the graph's own size */
     int guard_given;         /* 1 = guard replaces the graph's own `guard` line */
     int guard;               /* guard band, pixels (with guard_given) */

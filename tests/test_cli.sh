@@ -121,6 +121,19 @@ expect_exit 1 "<command line --set>:1:11: error: .*radius" \
 expect_exit 1 "unknown parameter or input 'radus'" \
     "$BIN" check graphs/ssao.graph --set ao.radus=1
 
+# --- --lights and the graph's `lights` line relight the scene: same geometry, other light ---
+"$BIN" run graphs/ssdo.graph --size 48x32 --out "$TMP/own" --quiet || fail "ssdo run"
+"$BIN" run graphs/ssdo.graph --size 48x32 --lights examples/lights/sky.scene --out "$TMP/sky" \
+    --quiet || fail "--lights run"
+printf 'include "%s/graphs/ssdo.graph"\nlights "%s/examples/lights/sky.scene"\n' "$PWD" "$PWD" \
+    > "$TMP/sky.graph"
+"$BIN" run "$TMP/sky.graph" --size 48x32 --out "$TMP/skyline" --quiet || fail "lights line run"
+cmp -s "$TMP/own/ssdo.exr" "$TMP/sky/ssdo.exr" && fail "--lights changed nothing"
+cmp -s "$TMP/sky/ssdo.exr" "$TMP/skyline/ssdo.exr" || fail "the lights line differs from --lights"
+printf 'environment(color=[1, 1, 1])\nsphere(radius=1)\n' > "$TMP/bad.lights"
+expect_exit 1 "bad.lights:2:1: error: a lights file holds only point_light" \
+    "$BIN" check graphs/ssdo.graph --lights "$TMP/bad.lights"
+
 # --- one node alone on EXR layers of a full run ---
 src="$TMP/t1/ssao.exr"
 expect_exit 0 "wrote .*samples.exr" "$BIN" node halton --set count=8 --out "$TMP/node"

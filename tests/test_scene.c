@@ -157,6 +157,67 @@ static void test_missing_scene(void)
     CHECK_EQ(d.count, 1);
 }
 
+/* A lights file replaces the scene's lights and environment; its image paths are its own
+   (examples/lights/courtyard.scene names ../probes/courtyard.exr). */
+static void test_lights_file(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load_lit("examples/bunny.scene", "examples/lights/sky.scene", 1, &s, &d),
+             SSG_OK);
+    ssg_diags_print(&d, stderr);
+    if (s) {
+        CHECK_EQ(s->light_count, 0); /* bunny's point and directional lights are gone */
+        CHECK_NEAR(s->environment.color[0], 1, 0);
+        CHECK_NEAR(s->environment.color[2], 1, 0); /* bunny's own sky is bluish */
+        CHECK(s->mesh_count > 1);                  /* the geometry stays */
+        ssg_scene_destroy(&s);
+    }
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", "examples/lights/courtyard.scene", 1,
+                                &s, &d), SSG_OK);
+    if (s) {
+        CHECK_EQ(s->light_count, 0);
+        CHECK(s->environment.image >= 0);
+        ssg_scene_destroy(&s);
+    }
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", "examples/lights/sun.scene", 1, &s,
+                                &d), SSG_OK);
+    if (s) {
+        CHECK_EQ(s->light_count, 1);
+        CHECK_EQ(s->lights[0].kind, SSG_LIGHT_DIRECTIONAL);
+        CHECK_NEAR(s->environment.color[1], 0, 0); /* no environment in the sun file */
+        ssg_scene_destroy(&s);
+    }
+}
+
+/* A lights file with geometry in it is refused at the statement, with what it may hold. */
+static void test_lights_file_errors(void)
+{
+    const char *path = write_file("bad.lights", "environment(color=[1, 1, 1])\n"
+                                                "  box(size=[1, 1, 1])\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = (struct ssg_scene *)1;
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", path, 0, &s, &d), SSG_E_SYNTAX);
+    CHECK(s == NULL);
+    CHECK_EQ(d.count, 1);
+    CHECK_EQ(d.items[0].line, 2);
+    CHECK_EQ(d.items[0].column, 3);
+    CHECK(strcmp(d.items[0].file, path) == 0);
+    CHECK(strstr(d.items[0].message, "point_light, directional_light and environment") != NULL);
+    d = (struct ssg_diags){0};
+    path = write_file("two_skies.lights", "environment(color=[1, 1, 1])\n"
+                                          "environment(color=[0, 0, 1])\n");
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", path, 0, &s, &d), SSG_E_DUPLICATE);
+    d = (struct ssg_diags){0};
+    path = write_file("no_probe.lights", "environment(image=\"missing.exr\")\n");
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", path, 0, &s, &d), SSG_E_IO);
+    CHECK_EQ(d.count, 1);
+    CHECK(strcmp(d.items[0].file, path) == 0); /* resolved beside the lights file */
+    d = (struct ssg_diags){0};
+    CHECK_EQ(ssg_scene_load_lit("examples/cornell.scene", "tests/fixtures/no_such.lights", 0,
+                                &s, &d), SSG_E_IO);
+}
+
 /* ---- loading ---- */
 
 static int count_triangles(const struct ssg_scene *s)
@@ -409,6 +470,8 @@ int main(void)
     test_errors();
     test_unknown_material_message();
     test_missing_scene();
+    test_lights_file();
+    test_lights_file_errors();
     test_cornell();
     test_shapes();
     test_mesh_and_gltf_camera();

@@ -68,7 +68,8 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
                     "scene \"file.scene\" in the graph, or --scene FILE)");
         return SSG_E_SCENE;
     }
-    enum ssg_err e = ssg_scene_load(g->scene_path, load_assets, &g->scene, diags);
+    enum ssg_err e = ssg_scene_load_lit(g->scene_path, g->lights_path[0] ? g->lights_path : NULL,
+                                        load_assets, &g->scene, diags);
     if (e)
         return e;
     if (eye_offset != 0.0f)

@@ -47,6 +47,8 @@ struct ssg_graph {
     const char *path;          /* the top graph file */
     char scene_path[512];      /* resolved scene file, "" = none */
     struct ssg_loc scene_loc;  /* where it was named */
+    char lights_path[512];     /* resolved lights file replacing the scene's lights, "" =
+                                  the scene's own */
     int width, height;
     struct ssg_loc size_loc;
     int guard;                 /* the `guard` line's pixels, 0 = none */

@@ -326,6 +326,10 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
                              sizeof b->g->scene_path);
             b->g->scene_loc = st->args[0].value.loc;
         }
+    } else if (ssg_tok_eq(st->name, st->name_len, "lights")) {
+        if ((path = directive_string(b, st)))
+            ssg_path_resolve(st->loc.src->path, path, b->g->lights_path,
+                             sizeof b->g->lights_path);
     } else if (ssg_tok_eq(st->name, st->name_len, "size")) {
         directive_size(b, st);
     } else if (ssg_tok_eq(st->name, st->name_len, "guard")) {
@@ -342,8 +346,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
         }
     } else {
         ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' (expected "
-                    "name = node(...), set node.param = value, scene, size, guard, seed, "
-                    "backend or include)",
+                    "name = node(...), set node.param = value, scene, lights, size, guard, "
+                    "seed, backend or include)",
                     (int)st->name_len, st->name);
         fail(b, SSG_E_SYNTAX);
     }
@@ -534,6 +538,8 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
         apply_override(b, ov->sets[i]);
     if (ov->scene)
         snprintf(b->g->scene_path, sizeof b->g->scene_path, "%s", ov->scene);
+    if (ov->lights)
+        snprintf(b->g->lights_path, sizeof b->g->lights_path, "%s", ov->lights);
     if (ov->width > 0 && ov->height > 0) {
         b->g->width = ov->width;
         b->g->height = ov->height;

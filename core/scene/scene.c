@@ -141,9 +141,9 @@ void ssg_scene_fail(struct scene_loader *l, enum ssg_err e)
         l->first = e;
 }
 
-void ssg_scene_path(const struct scene_loader *l, const char *rel, char *out, size_t len)
+void ssg_scene_path(const struct scene_entity *e, const char *rel, char *out, size_t len)
 {
-    ssg_path_resolve(l->path, rel, out, len);
+    ssg_path_resolve(e->stmt->callee_loc.src->path, rel, out, len);
 }
 
 static void kind_names(char *buf, size_t len)
@@ -333,7 +333,7 @@ static void check_file(struct scene_loader *l, const struct scene_entity *e, con
     char path[1024], what[1200];
     if (!rel[0])
         return;
-    ssg_scene_path(l, rel, path, sizeof path);
+    ssg_scene_path(e, rel, path, sizeof path);
     if (access(path, R_OK) == 0)
         return;
     snprintf(what, sizeof what, "cannot read '%s' (%s)", path, strerror(errno));
@@ -441,21 +441,60 @@ static void check_unique(struct scene_loader *l, enum scene_kind kind)
 
 /* ---- public API ---- */
 
-static enum ssg_err read_scene(struct scene_loader *l, const char *path)
+static int is_light_kind(enum scene_kind k)
+{
+    return k == SK_POINT_LIGHT || k == SK_DIRECTIONAL_LIGHT || k == SK_ENVIRONMENT;
+}
+
+/* Parses one file and appends its entities. With lights_only, a statement that is not a
+   light or the environment is an error (a lights file relights a scene, nothing else). */
+static void read_file_entities(struct scene_loader *l, const char *path, int lights_only)
 {
     struct ssg_file file;
     enum ssg_err e = ssg_parse_file(&l->arena, path, (struct ssg_loc){0}, &file, l->diags);
     if (e)
         ssg_scene_fail(l, e);
     if (!file.src)
-        return l->first;
-    l->path = file.src->path;
-    l->ents = ssg_arena_alloc(&l->arena, sizeof *l->ents * (size_t)(file.count + 1));
-    if (!l->ents) {
+        return;
+    struct scene_entity *ents =
+        ssg_arena_alloc(&l->arena, sizeof *ents * (size_t)(l->count + file.count + 1));
+    if (!ents) {
         ssg_scene_fail(l, SSG_E_NOMEM);
-        return l->first;
+        return;
     }
+    if (l->count)
+        memcpy(ents, l->ents, sizeof *ents * (size_t)l->count);
+    l->ents = ents;
+    int first = l->count;
     read_statements(l, &file);
+    for (int i = first; lights_only && i < l->count; i++) {
+        if (is_light_kind(l->ents[i].kind))
+            continue;
+        ssg_diag_at(l->diags, SSG_E_SYNTAX, l->ents[i].stmt->callee_loc, "a lights file holds "
+                    "only point_light, directional_light and environment (got '%s'; it "
+                    "replaces the lights of the scene, whose geometry stays)",
+                    entity_name(&l->ents[i]));
+        ssg_scene_fail(l, SSG_E_SYNTAX);
+    }
+}
+
+/* Drops the scene file's lights and environment before a lights file adds its own. */
+static void drop_lights(struct scene_loader *l)
+{
+    int kept = 0;
+    for (int i = 0; i < l->count; i++)
+        if (!is_light_kind(l->ents[i].kind))
+            l->ents[kept++] = l->ents[i];
+    l->count = kept;
+}
+
+static enum ssg_err read_scene(struct scene_loader *l, const char *path, const char *lights)
+{
+    read_file_entities(l, path, 0);
+    if (lights) {
+        drop_lights(l);
+        read_file_entities(l, lights, 1);
+    }
     for (int i = 0; i < l->count; i++)
         check_entity(l, &l->ents[i]);
     check_unique(l, SK_CAMERA);
@@ -492,6 +531,12 @@ static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
 enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
                             struct ssg_diags *diags)
 {
+    return ssg_scene_load_lit(path, NULL, load_assets, out, diags);
+}
+
+enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_assets,
+                                struct ssg_scene **out, struct ssg_diags *diags)
+{
     *out = NULL;
     struct scene_loader l = {.diags = diags, .default_material = -1};
     struct ssg_scene *s = calloc(1, sizeof *s);
@@ -499,7 +544,7 @@ enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene 
         return SSG_E_NOMEM;
     snprintf(s->path, sizeof s->path, "%s", path);
     l.scene = s;
-    if (read_scene(&l, path) == SSG_OK) {
+    if (read_scene(&l, path, lights) == SSG_OK) {
         scene_defaults(s, &l);
         if (load_assets)
             ssg_scene_build(&l);

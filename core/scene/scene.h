@@ -91,6 +91,12 @@ struct ssg_scene {
  * `ssgraph check`): no meshes, images or Embree. All problems go into diags with location. */
 enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
                             struct ssg_diags *diags);
+/* Same, with the scene's lights and environment replaced by those of the scene file
+ * `lights` (which may hold only point_light, directional_light and environment; its image
+ * paths are relative to itself): one geometry under a sun, a sky or a probe. lights NULL
+ * = the scene's own. */
+enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_assets,
+                                struct ssg_scene **out, struct ssg_diags *diags);
 void ssg_scene_destroy(struct ssg_scene **scene);
 
 /* The camera's view matrix (world -> view, column-major 4x4) for the frame conventions of

@@ -100,11 +100,12 @@ static int texture_finite(struct scene_loader *l, const char *path, const struct
 /* Reads an image file into an interleaved RGB texture; gray images fill all three. A
    material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
    which names its own rules. */
-static int load_texture(struct scene_loader *l, const char *rel, int finite_only)
+static int load_texture(struct scene_loader *l, const struct scene_entity *from,
+                        const char *rel, int finite_only)
 {
     char path[1024];
     struct ssg_image *im = NULL;
-    ssg_scene_path(l, rel, path, sizeof path);
+    ssg_scene_path(from, rel, path, sizeof path);
     enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
     if (e) {
         ssg_scene_fail(l, e);
@@ -146,7 +147,7 @@ static void build_material(struct scene_loader *l, int ent)
     m->shininess = a->shininess;
     l->material_of[ent] = l->scene->material_count - 1;
     if (a->texture[0])
-        m->texture = load_texture(l, a->texture, 1);
+        m->texture = load_texture(l, e, a->texture, 1);
 }
 
 static void build_light(struct scene_loader *l, const struct scene_entity *e)
@@ -287,7 +288,7 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
     const struct mesh_args *a = e->args;
     char path[1024], why[768];
     struct ssg_gltf *g = NULL;
-    ssg_scene_path(l, a->file, path, sizeof path);
+    ssg_scene_path(e, a->file, path, sizeof path);
     enum ssg_err err = ssg_gltf_load(path, &g, why, sizeof why);
     if (err) {
         ssg_diag_at(l->diags, err, e->at[0], "%s", why);
@@ -381,8 +382,8 @@ static void build_environment(struct scene_loader *l)
     for (int i = 0; i < l->count; i++) {
         const struct environment_args *a = l->ents[i].args;
         if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
-            l->scene->environment.image = load_texture(l, a->image, 0);
-            ssg_scene_path(l, a->image, path, sizeof path);
+            l->scene->environment.image = load_texture(l, &l->ents[i], a->image, 0);
+            ssg_scene_path(&l->ents[i], a->image, path, sizeof path);
         }
     }
     if (l->first)

@@ -75,7 +75,6 @@ struct scene_loader {
     struct ssg_arena arena;
     struct ssg_diags *diags;
     enum ssg_err first;             /* first error reported, SSG_OK while none */
-    const char *path;               /* the scene file, for resolving relative paths */
     struct scene_entity *ents;
     int count;
     struct ssg_scene *scene;        /* being filled by scene_build.c */
@@ -91,8 +90,9 @@ struct scene_loader {
 
 /* Records e as the loader's result if it is the first error. */
 void ssg_scene_fail(struct scene_loader *l, enum ssg_err e);
-/* Resolves a path written in the scene file against the scene file's directory. */
-void ssg_scene_path(const struct scene_loader *l, const char *rel, char *out, size_t len);
+/* Resolves a path written in an entity's arguments against the directory of the file the
+   entity was written in (the scene file, or the lights file that replaced its lights). */
+void ssg_scene_path(const struct scene_entity *e, const char *rel, char *out, size_t len);
 /* Loads textures, tessellates shapes, reads glTF files, picks the camera and builds the
  * Embree scene, for entities scene.c has validated. Problems go to l->diags. */
 void ssg_scene_build(struct scene_loader *l);
