@@ -219,6 +219,46 @@ static void test_ssdo_combinations(void)
         ssg_image_destroy(&all[i]);
 }
 
+/* With far_visibility V the environment is darkened by min(1, M / V), not by M (a near
+   occluder both see is counted once), and far_bounce adds albedo max(0, M - V) own. */
+static void test_far_field(void)
+{
+    struct run r;
+    run_init(&r, 2, 1);
+    float d[2] = {0.4f, 0.4f}, a[2] = {0.5f, 0.8f}, e[2] = {0.3f, 0.3f}, b[2] = {0.05f, 0.0f};
+    struct ssg_image *direct = rgb(2, 1, d, d, d), *albedo = rgb(2, 1, a, a, a);
+    struct ssg_image *env = rgb(2, 1, e, e, e), *bounce = rgb(2, 1, b, b, b);
+    struct ssg_image *mod = ssg_image_create(2, 1, 1), *far = ssg_image_create(2, 1, 1);
+    mod->data[0] = 0.6f, far->data[0] = 0.8f; /* near darker than far: M rules */
+    mod->data[1] = 0.9f, far->data[1] = 0.5f; /* far darker: the far field rules */
+    struct ssg_combine_params p;
+    ssg_params_defaults(ssg_node_combine.params, &p);
+    CHECK_EQ(p.far_bounce, 1);
+    p.ambient = 0;
+    r.in[SSG_COMBINE_IN_DIRECT] = direct;
+    r.in[SSG_COMBINE_IN_ALBEDO] = albedo;
+    r.in[SSG_COMBINE_IN_ENVIRONMENT] = env;
+    r.in[SSG_COMBINE_IN_INDIRECT] = bounce;
+    r.in[SSG_COMBINE_IN_MODULATION] = mod;
+    r.in[SSG_COMBINE_IN_FAR_VISIBILITY] = far;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    double own0 = 0.6 * 0.4 + (0.6 / 0.8) * 0.3, own1 = 0.9 * 0.4 + 1.0 * 0.3;
+    for (int c = 0; c < 3; c++) {
+        const float *o = ssg_image_plane(r.out[0], c);
+        CHECK_NEAR(o[0], own0 + 0.6 * 0.05, 1e-6);               /* M < V: no far bounce */
+        CHECK_NEAR(o[1], own1 + 0.8 * (0.9 - 0.5) * own1, 1e-6); /* fills M - V */
+    }
+    p.far_bounce = 0;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 1)[1], own1, 1e-6);
+    far->data[0] = 0.0f; /* nothing reaches: the (zero) environment is not divided by 0 */
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 0)[0], 0.6 * 0.4 + 0.3 + 0.6 * 0.05, 1e-6);
+    struct ssg_image *all[] = {direct, albedo, env, bounce, mod, far, r.out[0]};
+    for (int i = 0; i < SSG_COUNT(all); i++)
+        ssg_image_destroy(&all[i]);
+}
+
 /* Inputs that do not fit the output are reported, not read out of bounds. */
 static void test_mismatch(void)
 {
@@ -292,6 +332,7 @@ int main(void)
     test_descriptor();
     test_known_values();
     test_ssdo_combinations();
+    test_far_field();
     test_mismatch();
     test_bands_and_threads();
     return check_report();

@@ -169,11 +169,11 @@ static struct ssg_image *noise_image(int w, int h, int channels, unsigned seed, 
 }
 
 struct combine_inputs {
-    struct ssg_image *direct, *albedo, *ao, *indirect, *mod1, *mod3, *env;
+    struct ssg_image *direct, *albedo, *ao, *indirect, *mod1, *mod3, *env, *far;
 };
 
 /* Binds direct and albedo, then the optional inputs named in `opt`: "a" ao, "i" indirect,
-   "m" 1-channel modulation, "M" 3-channel modulation, "e" environment. */
+   "m" 1-channel modulation, "M" 3-channel modulation, "e" environment, "f" far_visibility. */
 static int bind_combine(const struct combine_inputs *in, const char *opt, struct ssg_binding *b)
 {
     const struct parity_input t[] = {
@@ -184,8 +184,9 @@ static int bind_combine(const struct combine_inputs *in, const char *opt, struct
         {'m', "modulation", in->mod1},
         {'M', "modulation", in->mod3},
         {'e', "environment", in->env},
+        {'f', "far_visibility", in->far},
     };
-    return parity_bind(t, 7, opt, b);
+    return parity_bind(t, 8, opt, b);
 }
 
 static void combine_case(const struct combine_inputs *in, const char *label, const char *opt,
@@ -193,7 +194,7 @@ static void combine_case(const struct combine_inputs *in, const char *label, con
 {
     /* One ulp at the largest outputs (below 16): room for a last-bit rounding only. */
     const struct parity_tol ulp = {.border = 0, .max_abs = 9.6e-7, .mean_abs = 1e-8};
-    struct ssg_binding b[7];
+    struct ssg_binding b[8];
     struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
     parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, ulp);
 }
@@ -205,7 +206,9 @@ static void combine_cases(void)
         noise_image(W, H, 3, 1, 2.0f), noise_image(W, H, 3, 2, 1.0f),
         noise_image(W, H, 1, 3, 1.0f), noise_image(W, H, 3, 4, 0.7f),
         noise_image(W, H, 1, 5, 1.2f), noise_image(W, H, 3, 6, 1.2f),
-        noise_image(W, H, 3, 7, 1.5f)};
+        noise_image(W, H, 3, 7, 1.5f), noise_image(W, H, 1, 8, 1.0f)};
+    for (int i = 0; i < W; i++) /* some pixels the far field blocks completely */
+        in.far->data[W * 7 + i] = 0.0f;
     for (int i = 0; i < W * 5; i++) /* background rows: albedo and light 0 */
         for (int c = 0; c < 3; c++)
             in.direct->data[c * W * H + i] = in.albedo->data[c * W * H + i] = 0.0f;
@@ -221,8 +224,12 @@ static void combine_cases(void)
     combine_case(&in, "all mod3", "aiMe", all, 2);
     const char *keep[] = {"ambient=2.5", "ambient_color=[1, 0.25, 0]", "darken_indirect=0"};
     combine_case(&in, "all mod1 keep", "aime", keep, 3);
+    combine_case(&in, "far mod1", "mief", light, 2);
+    const char *far_all[] = {"ambient=0.4", "far_bounce=false"};
+    combine_case(&in, "far mod3 ao no far bounce", "aMeif", far_all, 2);
+    combine_case(&in, "far alone", "ef", none, 1);
     struct ssg_image **im = &in.direct;
-    for (int i = 0; i < 7; i++)
+    for (int i = 0; i < 8; i++)
         ssg_image_destroy(&im[i]);
 }
 

@@ -99,13 +99,13 @@ static void plain_cases(const struct parity_inputs *in, struct parity_tol tol)
     const char *def[] = {"radius=1.5"};
     run_case(in, "mod1 rot", "r", def, 1, NULL, tol);
     const char *m3[] = {"channels=3", "radius=1.2", "bias=0.01", "bounce=true",
-                        "strength=4"};
-    run_case(in, "mod3 bounce depth", "dal", m3, 5, NULL, tol);
+                        "strength=4", "power=2"};
+    run_case(in, "mod3 bounce depth power", "dal", m3, 6, NULL, tol);
     const char *rad[] = {"mode=radiance", "radius=2", "max_screen_radius=12", "bounce=true",
                          "min_distance=0.3"};
     run_case(in, "radiance cap count", "rdcal", rad, 5, NULL, tol);
-    const char *cnt[] = {"radius=1.5", "bounce=true", "strength=2"};
-    run_case(in, "mod1 count bounce", "rcal", cnt, 3, NULL, tol);
+    const char *cnt[] = {"radius=1.5", "bounce=true", "strength=2", "power=1.5"};
+    run_case(in, "mod1 count bounce power", "rcal", cnt, 4, NULL, tol);
     const char *nu[] = {"channels=3", "radius=2.5"};
     run_case(in, "mod3 nonunit", "r2", nu, 2, NULL, tol);
 }

@@ -8,6 +8,10 @@
  *   and the jitter turns the shadow's edge into a mix of lit and shadowed pixels (fig. 8);
  * - a large offset lets the light through a thin plate over the floor (light bleeding,
  *   figs. 1 and 7), a small one does not;
+ * - a zero-thickness wall on a floor, lit from behind at a grazing angle: with the default
+ *   normal offset its shadow reaches to within a texel of its foot (the old slope-scaled
+ *   depth offset let the light through over several texels), and the floor beside it that
+ *   the light grazes does not shadow itself;
  * - a shadow-map count that is not the light count is refused;
  * - CPU and GL agree within a stated tolerance. */
 #include <string.h>
@@ -173,8 +177,8 @@ static void test_open_floor(void)
     }
     struct ssg_image *l = light_list(dirs, 12), *m = maps_of(s, l, 256), *r[2], *z[2];
     light(s, &g, l, m, NULL, 0, SSG_BACKEND_CPU, r);
-    const char *none[] = {"offset=0", "slope_offset=0", "noise_radius=0"};
-    light(s, &g, l, m, none, 3, SSG_BACKEND_CPU, z);
+    const char *none[] = {"offset=0", "slope_offset=0", "normal_offset=0", "noise_radius=0"};
+    light(s, &g, l, m, none, 4, SSG_BACKEND_CPU, z);
     int lit, dark, zlit, zdark;
     count_floor(r[1], &lit, &dark);
     count_floor(z[1], &zlit, &zdark);
@@ -241,21 +245,53 @@ static void test_box_shadow(void)
     ssg_scene_destroy(&s);
 }
 
+/* A scene from text under one light in direction dir, with its G-buffer and one shadow
+   map of res texels a side; ok 0 when the scene did not load. */
+struct one_light {
+    int ok;
+    struct ssg_scene *s;
+    struct gbuf g;
+    struct ssg_image *lights, *maps;
+    float texel; /* the map's texel, scene units */
+};
+
+static struct one_light one_light(const char *name, const char *text, const float dir[3],
+                                  int res)
+{
+    struct one_light o = {0};
+    o.s = scene_from_text(name, text);
+    if (!o.s)
+        return o;
+    o.g = gbuffer(o.s);
+    const float dirs[1][3] = {{dir[0], dir[1], dir[2]}};
+    o.lights = light_list(dirs, 1);
+    o.maps = maps_of(o.s, o.lights, res);
+    o.texel = 2 * ssg_scene_bounding_sphere(o.s).radius / (float)res;
+    o.ok = 1;
+    return o;
+}
+
+static void one_light_free(struct one_light *o)
+{
+    ssg_image_destroy(&o->maps);
+    ssg_image_destroy(&o->lights);
+    gbuf_free(&o->g);
+    ssg_scene_destroy(&o->s);
+}
+
 /* A plate 0.1 above the floor, the light straight down: the floor under it is dark with
    a small offset and lit once the offset exceeds the gap (light bleeding). */
 static void test_bleeding(void)
 {
-    char text[512];
-    snprintf(text, sizeof text, "camera(position=[0, 0.06, 2], target=[0, 0.03, 0])\n"
-             "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
-             "box(center=[0, 0.11, 0], size=[1.5, 0.02, 1.5])\n");
-    struct ssg_scene *s = scene_from_text("plate", text);
-    if (!s)
+    const float down[3] = {0, 1, 0};
+    struct one_light o = one_light("plate", "camera(position=[0, 0.06, 2], "
+                                   "target=[0, 0.03, 0])\n"
+                                   "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
+                                   "box(center=[0, 0.11, 0], size=[1.5, 0.02, 1.5])\n",
+                                   down, 256);
+    if (!o.ok)
         return;
-    struct gbuf g = gbuffer(s);
-    const float dirs[1][3] = {{0, 1, 0}};
-    struct ssg_image *l = light_list(dirs, 1), *m = maps_of(s, l, 256);
-    float texel = 2 * ssg_scene_bounding_sphere(s).radius / 256; /* gap 0.1 = ~4.5 texels */
+    float texel = o.texel; /* gap 0.1 = ~4.5 texels */
     double mean[2] = {0, 0};
     int n = 0;
     for (int k = 0; k < 2; k++) {
@@ -263,12 +299,12 @@ static void test_bleeding(void)
         snprintf(off, sizeof off, "offset=%g", k ? 0.2 / texel : 1.5);
         const char *sets[] = {off, "noise_radius=0"};
         struct ssg_image *r[2];
-        light(s, &g, l, m, sets, 2, SSG_BACKEND_CPU, r);
+        light(o.s, &o.g, o.lights, o.maps, sets, 2, SSG_BACKEND_CPU, r);
         n = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 float w[3];
-                if (world_of(&g, x, y, w) && w[1] < 1e-3f && fabsf(w[0]) < 0.6f &&
+                if (world_of(&o.g, x, y, w) && w[1] < 1e-3f && fabsf(w[0]) < 0.6f &&
                     fabsf(w[2]) < 0.6f)
                     mean[k] += at(r[1], 0, x, y), n++;
             }
@@ -281,10 +317,65 @@ static void test_bleeding(void)
     CHECK(n > 50);
     CHECK(mean[0] < 0.01);
     CHECK(mean[1] > 0.99);
-    ssg_image_destroy(&m);
-    ssg_image_destroy(&l);
-    gbuf_free(&g);
-    ssg_scene_destroy(&s);
+    one_light_free(&o);
+}
+
+/* Farthest lit floor pixel in the wall's shadow (|x| < 0.1, 0 < z < 0.4), in texels from
+   the wall, and the lit share of the floor beside the shadow (|x| > 0.2). */
+static void wall_foot_leak(const struct gbuf *g, const struct ssg_image *vis, float texel,
+                           double *leak, double *side_lit, int *shadow_px, int *side_px)
+{
+    double far = 0;
+    int lit = 0;
+    *shadow_px = *side_px = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            float w[3];
+            if (!world_of(g, x, y, w) || w[1] > 1e-3f)
+                continue; /* floor pixels only */
+            float v = at(vis, 0, x, y);
+            if (fabsf(w[0]) < 0.1f && w[2] > 0.0f && w[2] < 0.4f) {
+                (*shadow_px)++;
+                far = v > 0.5f && w[2] > far ? w[2] : far;
+            } else if (fabsf(w[0]) > 0.2f) {
+                (*side_px)++;
+                lit += v == 1.0f;
+            }
+        }
+    *leak = far / texel;
+    *side_lit = *side_px ? (double)lit / *side_px : 0;
+}
+
+/* A zero-thickness wall standing on a floor, one light behind it 19 degrees above the
+   horizon: the floor in front of the wall is in its shadow right up to its foot. */
+static void test_wall_foot(void)
+{
+    const float behind[3] = {0, 0.35f, -1};
+    struct one_light o = one_light("wall_foot", "camera(position=[0, 0.5, 0.8], "
+                                   "target=[0, 0, 0.15])\n"
+                                   "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
+                                   "plane(center=[0, 0.5, 0], normal=[0, 0, 1], "
+                                   "size=[0.3, 0, 1])\n", behind, 512);
+    if (!o.ok)
+        return;
+    const char *old[] = {"offset=1.5", "slope_offset=2", "normal_offset=0"};
+    double leak[2], side[2];
+    int shadow_px = 0, side_px = 0;
+    for (int k = 0; k < 2; k++) {
+        struct ssg_image *r[2];
+        light(o.s, &o.g, o.lights, o.maps, old, k ? 3 : 0, SSG_BACKEND_CPU, r);
+        wall_foot_leak(&o.g, r[1], o.texel, &leak[k], &side[k], &shadow_px, &side_px);
+        for (int i = 0; i < 2; i++)
+            ssg_image_destroy(&r[i]);
+    }
+    fprintf(stderr, "wall foot (%d px in the shadow, %d beside): light reaches %.2f texels "
+            "into the shadow with the defaults, %.2f with the slope-scaled offset; beside it "
+            "%.3f and %.3f lit\n", shadow_px, side_px, leak[0], leak[1], side[0], side[1]);
+    CHECK(shadow_px > 300 && side_px > 300);
+    CHECK(leak[0] <= 1.0);  /* within the map's texel of the foot */
+    CHECK(leak[1] > 3.0);   /* what the defaults fixed: the test can fail */
+    CHECK(side[0] == 1.0);  /* no self-shadowing where the light grazes the floor */
+    one_light_free(&o);
 }
 
 static void test_count_mismatch(void)
@@ -353,6 +444,7 @@ int main(void)
     test_open_floor();
     test_box_shadow();
     test_bleeding();
+    test_wall_foot();
     test_count_mismatch();
     test_parity();
     return check_report();

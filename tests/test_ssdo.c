@@ -250,6 +250,46 @@ static void test_corner(void)
     release(&g);
 }
 
+/* power raises the modulation: power 2 is the square of power 1 at every pixel (channels 1
+   and 3), power 0 is 1 everywhere, an open plane's 1 stays 1. */
+static void test_power(void)
+{
+    struct scene s;
+    corner_scene(&s);
+    struct gbuf g;
+    cast(&s, &g);
+    struct ssg_image *rot, *kernel = kernel_of(64, 1, &rot);
+    for (int ch = 1; kernel && ch <= 3; ch += 2) {
+        char chs[16];
+        snprintf(chs, sizeof chs, "channels=%d", ch);
+        const char *one[] = {"radius=0.5", chs}, *two[] = {"radius=0.5", chs, "power=2"};
+        const char *zero[] = {"radius=0.5", chs, "power=0"};
+        struct ssg_image *a[2], *b[2], *z[2];
+        CHECK_EQ(ssdo(&g, kernel, rot, NULL, NULL, one, 2, a), SSG_OK);
+        CHECK_EQ(ssdo(&g, kernel, rot, NULL, NULL, two, 3, b), SSG_OK);
+        CHECK_EQ(ssdo(&g, kernel, rot, NULL, NULL, zero, 3, z), SSG_OK);
+        if (a[0] && b[0] && z[0]) {
+            int bad = 0, dark = 0;
+            size_t n = (size_t)W * H * (size_t)a[0]->channels;
+            for (size_t i = 0; i < n; i++) {
+                float m = a[0]->data[i];
+                bad += fabsf(b[0]->data[i] - m * m) > 1e-6f || z[0]->data[i] != 1.0f;
+                dark += m < 0.9f;
+            }
+            CHECK_EQ(bad, 0);
+            CHECK(dark > 0); /* the corner darkens something, so the test can fail */
+        }
+        for (int i = 0; i < 2; i++) {
+            ssg_image_destroy(&a[i]);
+            ssg_image_destroy(&b[i]);
+            ssg_image_destroy(&z[i]);
+        }
+    }
+    ssg_image_destroy(&kernel);
+    ssg_image_destroy(&rot);
+    release(&g);
+}
+
 /* 1 and 2 threads give the same bytes, out and bounce, in every mode. */
 static void test_threads(const struct ssg_image *kernel, const struct ssg_image *rot)
 {
@@ -418,6 +458,7 @@ int main(void)
     test_open_planes(kernel, rot);
     test_radiance_open();
     test_corner();
+    test_power();
     test_threads(kernel, rot);
     test_errors(kernel);
     test_light_moves();

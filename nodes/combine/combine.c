@@ -16,6 +16,21 @@
  *   and without visibility, darkens the light it was computed for (direct and environment)
  *   and, "in order to avoid pixels being too bright in darkened corners", the bounce too.
  * - SSDO two steps: direct = SSDO's radiance, indirect = the bounce pass: a plain sum.
+ * - Near and far field together (graphs/hybrid_ssdo.graph): `environment` is light that is
+ *   already shadowed at every distance (probe_light.out, shadow maps) and `far_visibility`
+ *   its visibility V (probe_light.visibility); M is SSDO's near-field modulation. A near
+ *   occluder is seen by both, so their product would count it twice: the pixel's
+ *   visibility is the smaller, min(V, M), and the environment is scaled by
+ *   q = min(1, M / V) (1 where V = 0: nothing reaches the pixel then). The directions the
+ *   far field blocks but SSDO's radius does not reach, max(0, M - V) of the hemisphere,
+ *   bounce light SSDO's bounce does not gather; with far_bounce they send back the
+ *   receiver's own radiance times its albedo (one bounce from surroundings that look like
+ *   the receiver: the assumption of Jimenez et al., "Practical Real-Time Strategies for
+ *   Accurate Indirect Occlusion", 2016, sec. 5, taken for one bounce):
+ *     own = M direct + q ao (environment + ambient ambient_color albedo)
+ *     out = own + (darken_indirect ? M : 1) indirect + far_bounce albedo max(0, M - V) own
+ *   On the example scenes under a sky this far bounce is most of what the shadow-mapped
+ *   probe light misses against one-bounce truth (docs/accuracy.md).
  * Background pixels (albedo 0, light 0) stay 0. */
 #include <stddef.h>
 
@@ -45,6 +60,11 @@ static const struct ssg_port_desc inputs[] = {
     [SSG_COMBINE_IN_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR, .optional = 1,
      .doc = "unoccluded environment light (gbuffer.environment), darkened like the ambient "
             "term; unconnected = 0"},
+    [SSG_COMBINE_IN_FAR_VISIBILITY] = {.name = "far_visibility", .types = SSG_T_SCALAR,
+     .optional = 1,
+     .doc = "visibility V already in environment (probe_light.visibility): the modulation "
+            "then darkens it by min(1, M / V), not M, and far_bounce fills max(0, M - V); "
+            "unconnected = no far field"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_COMBINE_INPUTS, "one entry a port enumerator");
 
@@ -66,6 +86,9 @@ static const struct ssg_param_desc param_table[] = {
      .def = 1,
      .help = "the modulation factor darkens the indirect light too (the one-step SSDO rule "
              "against over-bright corners)"},
+    {.name = "far_bounce", SSG_FIELD_BOOL(struct ssg_combine_params, far_bounce), .def = 1,
+     .help = "with far_visibility: directions blocked beyond the modulation's reach bounce "
+             "albedo x the pixel's own radiance"},
 };
 
 const struct ssg_node_desc ssg_node_combine = {
@@ -76,12 +99,17 @@ const struct ssg_node_desc ssg_node_combine = {
               "(Szentandrasi, Modern Methods of Realistic Lighting in Real Time, sec. 3.1; "
               "Belonogov, Global Illumination methods in simulated VR environments, sec. "
               "2.2.3 eq. 2.5 and sec. 3.2); the SSDO modulation factor M darkens light and "
-              "bounce (Szentandrasi sec. 4.1)",
+              "bounce (Szentandrasi sec. 4.1); with far_visibility V (shadow-mapped "
+              "environment) the environment is darkened by min(1, M / V) and far_bounce adds "
+              "albedo max(0, M - V) own (one bounce from surroundings like the receiver, "
+              "after Jimenez et al. 2016)",
     .doc = "Combines the G-buffer's direct light with the ambient light (a uniform ambient "
            "scaled by the albedo, and/or the scene's environment light) darkened by ambient "
            "occlusion, and indirect light. For one-step SSDO connect modulation (it darkens "
            "direct, environment and ambient light and, with darken_indirect, the bounce); "
            "for two-step SSDO connect SSDO's radiance as direct and the bounce as indirect. "
+           "For near and far field together connect probe_light's out as environment and "
+           "its visibility as far_visibility beside SSDO's modulation and bounce. "
            "Unconnected: ao and modulation 1, environment and indirect 0. Background pixels "
            "(albedo 0, light 0) stay black. Output is linear and may exceed 1; write's "
            "exposure and tonemap shape the PNG.",

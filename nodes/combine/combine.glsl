@@ -1,11 +1,13 @@
 // combine.glsl - the `combine` node's GL side (equation in combine.c, C side combine_gl.c):
 //   out = M direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
+// (with far_visibility: the far-field form of combine.c)
 // per channel, with the CPU kernel's stand-ins for unconnected inputs (ao, M = 1;
 // environment, indirect = 0) and its order of operations. `precise` keeps the compiler
 // from fusing multiply-adds the CPU rounds separately, so a GPU with IEEE float maths gives
 // the CPU's bits.
-uniform sampler2DArray direct, albedo, ao, indirect, modulation, environment;
-uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound;
+uniform sampler2DArray direct, albedo, ao, indirect, modulation, environment, far_visibility;
+uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound, far_visibility_bound;
+uniform bool far_bounce;
 layout(r32f) uniform writeonly image2DArray dst;
 uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
 uniform bool darken_indirect;
@@ -29,7 +31,18 @@ void main()
         float env = layer_or(environment, environment_bound, p, c, 0.0);
         float bounce = layer_or(indirect, indirect_bound, p, c, 0.0);
         precise float ambient = env + k[c] * a;
-        precise float o = m * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce;
+        precise float o;
+        if (far_visibility_bound) { // combine_cpu.c combine_channel_far
+            float v = texelFetch(far_visibility, ivec3(p, 0), 0).r;
+            precise float q = v > 0.0 ? m / v : 1.0;
+            q = q < 1.0 ? q : 1.0;
+            precise float own = m * d + q * occ * ambient;
+            precise float gap = m - v;
+            gap = gap > 0.0 ? gap : 0.0;
+            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * own;
+        } else {
+            o = m * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce;
+        }
         imageStore(dst, ivec3(p, c), vec4(o));
     }
 }

@@ -19,6 +19,7 @@ enum ssg_combine_input {
     SSG_COMBINE_IN_INDIRECT,
     SSG_COMBINE_IN_MODULATION,
     SSG_COMBINE_IN_ENVIRONMENT,
+    SSG_COMBINE_IN_FAR_VISIBILITY,
     SSG_COMBINE_INPUTS
 };
 enum ssg_combine_output {
@@ -31,6 +32,7 @@ struct ssg_combine_params {
     float ambient;          /* strength of the ambient light, 0..10; default 0.3 */
     float ambient_color[3]; /* linear RGB tint of the ambient light, 0..100; default [1,1,1] */
     int darken_indirect;    /* 1 = the modulation factor also darkens indirect; default 1 */
+    int far_bounce;         /* with far_visibility: add the far bounce; default 1 */
 };
 
 /* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */

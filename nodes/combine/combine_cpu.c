@@ -12,7 +12,8 @@ struct combine_job {
     const float *environment[3];        /* NULL = none */
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
-    int darken_indirect;
+    const float *far;                   /* far_visibility, NULL = none */
+    int darken_indirect, far_bounce;
     float *out[3];
     float k[3];                         /* ambient * ambient_color */
     int width;
@@ -34,12 +35,35 @@ static void combine_channel(const struct combine_job *j, int c, size_t begin, si
     }
 }
 
+/* The same with a far field (combine.c): the environment darkened by q = min(1, M / V),
+   and the far bounce albedo max(0, M - V) own. */
+static void combine_channel_far(const struct combine_job *j, int c, size_t begin, size_t end)
+{
+    const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
+    const float *env = j->environment[c], *m = j->modulation[c], *far = j->far;
+    const int darken = j->darken_indirect;
+    const float fb = j->far_bounce ? 1.0f : 0.0f;
+    float *o = j->out[c], k = j->k[c];
+    for (size_t i = begin; i < end; i++) {
+        float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f, v = far[i];
+        float q = v > 0.0f ? mi / v : 1.0f;
+        q = q < 1.0f ? q : 1.0f;
+        float ambient = (env ? env[i] : 0.0f) + k * a[i];
+        float bounce = ind ? ind[i] : 0.0f;
+        float own = mi * d[i] + q * occ * ambient;
+        float gap = mi - v;
+        gap = gap > 0.0f ? gap : 0.0f;
+        o[i] = own + (darken ? mi : 1.0f) * bounce + fb * a[i] * gap * own;
+    }
+}
+
 static void combine_rows(void *user, int y0, int y1)
 {
     const struct combine_job *j = user;
     size_t w = (size_t)j->width;
     for (int c = 0; c < 3; c++)
-        combine_channel(j, c, (size_t)y0 * w, (size_t)y1 * w);
+        (j->far ? combine_channel_far : combine_channel)(j, c, (size_t)y0 * w,
+                                                         (size_t)y1 * w);
 }
 
 enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -53,8 +77,10 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *modulation = io->in[SSG_COMBINE_IN_MODULATION];
     const struct ssg_image *environment = io->in[SSG_COMBINE_IN_ENVIRONMENT];
     struct ssg_image *out = io->out[0];
-    struct combine_job job = {.ao = ao ? ao->data : NULL, .width = out->width,
-                              .darken_indirect = p->darken_indirect};
+    const struct ssg_image *far = io->in[SSG_COMBINE_IN_FAR_VISIBILITY];
+    struct combine_job job = {.ao = ao ? ao->data : NULL, .far = far ? far->data : NULL,
+                              .width = out->width, .darken_indirect = p->darken_indirect,
+                              .far_bounce = p->far_bounce};
     for (int c = 0; c < 3; c++) {
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);

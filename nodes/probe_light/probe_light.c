@@ -10,12 +10,21 @@
  * fig. 1 (the shadow's test moved a short way behind the occluder so the occluder's front
  * does not shadow itself: lit when depth <= map + offset) and fig. 8 (noise added to the
  * shadow map sample position, stored in a small tiled texture, for smoother shadows at the
- * price of a larger offset). The paper gives no values and no formula: the offset and the
- * noise radius are in map texels (every map has the same texel, nodes/common/shadowmap.h). A
- * constant offset alone leaves surfaces that a light grazes shadowing themselves (the
- * map's depth changes by tan(N, l) per texel of lookup error: up to 0.7 texel of rounding
- * plus the jitter), so the offset grows by slope_offset x tan(N, l) texels, the usual
- * slope-scaled bias. The
+ * price of a larger offset). The paper gives no values and no formula: the offsets and the
+ * noise radius are in map texels (every map has the same texel, nodes/common/shadowmap.h).
+ * A lookup lands up to e = 0.7 texel (rounding) + noise_radius from the pixel's own texel,
+ * where its own surface is e tan(N, l) texels deeper when the light grazes it. A depth
+ * offset that large (a slope-scaled bias, up to 21 texels at tan 10) hides that
+ * self-shadowing but lets light through a zero-thickness wall over that many texels: the
+ * leak at a wall's foot (issue 16: 0.33 where the truth is 0.04 in the Cornell box's
+ * seams). So the point is moved instead, along its normal by normal_offset x sin(N, l)
+ * texels before the lookup ("normal offset shadows", Holbert, GDC 2011): its own surface
+ * then lies normal_offset / cos(N, l) x sin(N, l) >= e tan(N, l) behind it along l, for
+ * every angle, while an occluder across a seam stays in front of it (moving along the
+ * floor's normal does not bring a floor point nearer the wall). What is left is the
+ * constant `offset` (depth rounding of the map) and e tan of the occluder's own slope: a
+ * wall leaks over about offset + e texels, not 20. slope_offset (default 0) keeps the old
+ * slope-scaled term for those who want it. The
  * tile holds offsets spread over the unit disc (a Vogel spiral placed by a seeded
  * permutation), rotated for light i by i golden angles so that one pixel's lookups differ
  * across lights; one nearest-texel comparison per light, no filtering. Without shadow maps
@@ -93,6 +102,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
     c->offset_world = c->p.offset * texel;
     c->slope_world = c->p.slope_offset * texel;
+    c->normal_world = c->p.normal_offset * texel;
     ssg_probe_light_rotations(c->count, c->cos_sin);
     return SSG_OK;
 }
@@ -135,15 +145,20 @@ void ssg_probe_light_rotations(int count, float *cos_sin)
 }
 
 static const struct ssg_param_desc params[] = {
-    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, offset), .def = 1.5,
+    {.name = "offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, offset), .def = 0.5,
      .min = 0, .max = 1000, .unit = "texels",
      .help = "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "
              "self-shadowing, lets light through thin occluders"},
     {.name = "slope_offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, slope_offset),
+     .def = 0, .min = 0, .max = 1000, .unit = "texels",
+     .help = "more depth offset where the light grazes the surface: + slope_offset x "
+             "tan(N, l) texels (tan up to 10); leaks through thin walls, normal_offset is "
+             "the default remedy"},
+    {.name = "normal_offset", SSG_FIELD_FLOAT(struct ssg_probe_light_params, normal_offset),
      .def = 2, .min = 0, .max = 1000, .unit = "texels",
-     .help = "more offset where the light grazes the surface: + slope_offset x tan(N, l) "
-             "texels (tan up to 10), against self-shadowing of surfaces seen edge-on by a "
-             "light"},
+     .help = "the lookup point moves along the normal by normal_offset x sin(N, l) texels: "
+             "no self-shadowing where the light grazes, no leak at a wall's foot (>= 0.7 + "
+             "noise_radius)"},
     {.name = "noise_radius", SSG_FIELD_FLOAT(struct ssg_probe_light_params, noise_radius),
      .def = 1, .min = 0, .max = 64, .unit = "texels",
      .help = "jitter of the map lookup (fig. 8): smoother shadows, needs a larger offset; "

@@ -8,7 +8,7 @@ layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
 layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
 layout(r32f) uniform writeonly image2DArray dst, dst_visibility;
 uniform int count, res, tile;
-uniform float noise_radius, offset_world, slope_world;
+uniform float noise_radius, offset_world, slope_world, normal_world;
 const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
 
 float frame(int light, int k)
@@ -22,9 +22,13 @@ float luminance(vec3 e)
     return l;
 }
 
-// V_i of point P (view space) with jitter j (texels) for light i, N.l_i = cosine.
-float visible(int i, vec3 P, vec2 j, float cosine)
+// V_i of point P (view space, normal N) with jitter j (texels) for light i, N.l_i = cosine.
+float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
 {
+    // the normal offset: P + N normal_world sin(N, l) (probe_light.c)
+    precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
+    precise float lift = normal_world * sine;
+    precise vec3 P = vec3(P0.x + lift * N.x, P0.y + lift * N.y, P0.z + lift * N.z);
     precise float x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
     precise float y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
     precise float d = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
@@ -56,7 +60,7 @@ void main()
         if (!(cosine > 0.0))
             continue; // adds exact zeros (as the CPU's skipped lights)
         float w = cosine;
-        float v = maps_bound ? visible(i, P, j, cosine) : 1.0;
+        float v = maps_bound ? visible(i, P, N, j, cosine) : 1.0;
         vec3 e = vec3(texelFetch(lights, ivec3(i, 1, 0), 0).r,
                       texelFetch(lights, ivec3(i, 1, 1), 0).r,
                       texelFetch(lights, ivec3(i, 1, 2), 0).r);

@@ -28,8 +28,10 @@ enum ssg_probe_light_output {
 };
 
 struct ssg_probe_light_params {
-    float offset;       /* depth offset in map texels; default 1.5 */
-    float slope_offset; /* further offset in texels per unit tan(angle of N to l); default 2 */
+    float offset;       /* depth offset in map texels; default 0.5 */
+    float slope_offset; /* further offset in texels per unit tan(angle of N to l); default 0 */
+    float normal_offset; /* lookup moved along N by normal_offset x sin(N, l) texels;
+                            default 2 */
     float noise_radius; /* lookup jitter radius in map texels; default 1 */
     int noise_tile;     /* side of the tiled jitter pattern, px; default 4 */
 };
@@ -45,6 +47,7 @@ struct ssg_probe_light_consts {
     int res;                            /* the maps' side R; 0 = no shadow maps */
     float offset_world, slope_world;    /* offset and slope_offset in scene units (texels
                                            of 2 radius / R) */
+    float normal_world;                 /* normal_offset in scene units */
     float cos_sin[2 * SSG_LIGHTS_MAX];  /* ssg_probe_light_rotations of the N lights */
 };
 

@@ -17,6 +17,7 @@ struct job {
     int count, res, w, h;
     float offset_world;    /* offset in depth units: offset texels x 2 radius / res */
     float slope_world;     /* slope_offset texels in depth units */
+    float normal_world;    /* normal_offset texels in scene units */
 };
 
 struct chunk {
@@ -73,9 +74,13 @@ static void add_light(const struct job *j, int li, int len, struct chunk *k)
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
         float w = cosine > 0.0f ? cosine : 0.0f, v = 1.0f;
         if (map) {
-            float x = k->px[i] * f[0] + k->py[i] * f[1] + k->pz[i] * f[2] + f[3];
-            float y = k->px[i] * f[4] + k->py[i] * f[5] + k->pz[i] * f[6] + f[7];
-            float d = k->px[i] * f[8] + k->py[i] * f[9] + k->pz[i] * f[10] + f[11];
+            /* the normal offset: P + N normal_world sin(N, l) (probe_light.c) */
+            float sine = sqrtf(fmaxf(0.0f, 1.0f - w * w)), lift = j->normal_world * sine;
+            float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
+            float qz = k->pz[i] + lift * k->nz[i];
+            float x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
+            float y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
+            float d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
             x += cr * k->jx[i] - sr * k->jy[i];
             y += sr * k->jx[i] + cr * k->jy[i];
             int inside = x >= 0.0f && y >= 0.0f && x < (float)res && y < (float)res;
@@ -135,7 +140,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     }
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
-                    c->offset_world, c->slope_world};
+                    c->offset_world, c->slope_world, c->normal_world};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     free(frames);
     return SSG_OK;

@@ -46,6 +46,7 @@ static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_li
     ssg_gl_float(p, "noise_radius", c->p.noise_radius);
     ssg_gl_float(p, "offset_world", c->offset_world);
     ssg_gl_float(p, "slope_world", c->slope_world);
+    ssg_gl_float(p, "normal_world", c->normal_world);
     ssg_gl_dispatch(p, pos->width, pos->height);
 }
 

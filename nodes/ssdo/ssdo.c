@@ -25,7 +25,11 @@
  *   (channels=3) or of the Rec. 709 luminances (channels=1); 1 where the denominator is 0
  *   and for the background. Numerator and denominator are the same sums in the same order,
  *   so an open plane (no sample occluded) gives exactly 1. It darkens what gbuffer's
- *   direct + environment light (equation 1 without the visibility) shows.
+ *   direct + environment light (equation 1 without the visibility) shows. `power` raises M
+ *   (each channel) to a power, as ssao's does its AO: screen space sees occluders only
+ *   within the radius, so M is brighter than the truth wherever anything farther shades
+ *   the pixel; graphs/ssdo.graph uses power 2, chosen on every example scene under a sun,
+ *   a sky and a probe against reference_gi (docs/accuracy.md). An open plane stays 1.
  * mode radiance (eq. 2, first pass of the two-step method): out = albedo / pi *
  *   (sum_l E_l vis_l + lit); the `bounce` node is its second pass.
  * bounce=true adds the bounce output (eq. 3/4, patch form, ssdo_sampling.h) with the light
@@ -172,6 +176,10 @@ static const struct ssg_param_desc params[] = {
      .help = "compute the indirect bounce output (needs albedo and light)"},
     {.name = "lobe", SSG_FIELD_INT(struct ssg_ssdo_params, lobe), .def = 4, .min = 1, .max = 64,
      .help = "cosine power of the cone over which a point or directional light is sampled"},
+    {.name = "power", SSG_FIELD_FLOAT(struct ssg_ssdo_params, power), .def = 1, .min = 0,
+     .max = 8,
+     .help = "modulation: out = M^power, the darkening ssao's power gives its AO (ssdo.graph "
+             "uses 2, measured: docs/accuracy.md)"},
 };
 
 static const struct ssg_port_desc inputs[] = {

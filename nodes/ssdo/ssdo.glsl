@@ -33,6 +33,7 @@ const int CUBE_SIZE = 16;   // SSG_ENV_CUBE_SIZE
 uniform int radiance;       // 1 = mode radiance, 0 = modulation
 uniform int out_channels;   // modulation: 1 (luminance) or 3
 uniform int lobe;           // 1..64
+uniform float power;        // modulation: out = M^power
 uniform int env;            // enum ssg_ssdo_env
 uniform vec3 env_rgb;       // constant environment radiance
 uniform int light_count;
@@ -297,6 +298,14 @@ void light_totals(light_sums acc, float e[MAX_LIGHTS], float dw, out vec3 num, o
 }
 
 
+// M^power (ssdo_cpu.c raise_to_power; powf(x, 0) = 1, even at 0).
+vec3 raised(vec3 m)
+{
+    if (power == 1.0)
+        return m;
+    return power == 0.0 ? vec3(1.0) : pow(m, vec3(power));
+}
+
 // Modulation (per channel or of luminances) or radiance (ssdo_cpu.c finish_chunk).
 void store_out(ivec2 p, vec3 num, vec3 den)
 {
@@ -307,13 +316,13 @@ void store_out(ivec2 p, vec3 num, vec3 den)
         SSG_STORE3(dst, p, v);
     } else if (out_channels == 3) {
         precise vec3 q = vec3(num.x / den.x, num.y / den.y, num.z / den.z);
-        SSG_STORE3(dst, p, vec3(den.x > 1e-30 ? q.x : 1.0, den.y > 1e-30 ? q.y : 1.0,
-                                den.z > 1e-30 ? q.z : 1.0));
+        SSG_STORE3(dst, p, raised(vec3(den.x > 1e-30 ? q.x : 1.0, den.y > 1e-30 ? q.y : 1.0,
+                                       den.z > 1e-30 ? q.z : 1.0)));
     } else {
         precise float yn = 0.2126 * num.x + 0.7152 * num.y + 0.0722 * num.z;
         precise float yd = 0.2126 * den.x + 0.7152 * den.y + 0.0722 * den.z;
         precise float q = yn / yd;
-        SSG_STORE1(dst, p, yd > 1e-30 ? q : 1.0);
+        SSG_STORE1(dst, p, raised(vec3(yd > 1e-30 ? q : 1.0)).x);
     }
 }
 

@@ -33,6 +33,8 @@ struct ssg_ssdo_params {
     int bounce;             /* 1 = compute the indirect bounce output; default 0 */
     int lobe;               /* cosine power spreading a delta light over a cone, 1..64;
                                default 4 */
+    float power;            /* modulation mode: out = M^power (per channel), 0..8;
+                               default 1 */
 };
 
 /* A scene light in view space. */

@@ -315,6 +315,17 @@ light_sums(const struct job *j, struct light_chunk *restrict lc, int len, int co
     }
 }
 
+/* out = M^power over the chunk's modulation planes (powf(x, 0) = 1, even at 0). */
+static void raise_to_power(const struct job *j, int len, size_t o)
+{
+    const float power = j->c->p.power;
+    for (int ch = 0; ch < j->out_channels; ch++) {
+        float *restrict out = j->out[ch] + o;
+        for (int i = 0; i < len; i++)
+            out[i] = powf(out[i], power);
+    }
+}
+
 /* Modulation (per channel or of luminances) or radiance into the out planes; inputs are
    read unconditionally so the loops vectorise. */
 static inline __attribute__((always_inline)) void
@@ -352,6 +363,8 @@ finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
             out[i] = (k->fg[i] != 0) & (yd > 1e-30f) ? q : 1.0f;
         }
     }
+    if (j->c->p.mode == SSG_SSDO_MODE_MODULATION && j->c->p.power != 1.0f)
+        raise_to_power(j, len, o);
 }
 
 /* One chunk of one row, start to end. With GCC on x86-64 also compiled for AVX2 and

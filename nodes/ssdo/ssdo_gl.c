@@ -74,6 +74,7 @@ enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_int(&p, "radiance", c->p.mode == SSG_SSDO_MODE_RADIANCE);
     ssg_gl_int(&p, "out_channels", out_channels);
     ssg_gl_int(&p, "lobe", c->p.lobe);
+    ssg_gl_float(&p, "power", c->p.power);
     bind_light(&p, c);
     ssg_gl_dispatch(&p, pos->width, pos->height);
     return ssg_gl_pass_end(&p);
