@@ -21,13 +21,15 @@ through OSMesa), side by side, at 1280x720.
 error of each image against reference_gi lit by the same probe (bench/hybrid_reference.graph),
 next to the paper's 15 fps (128 lights) and 6 fps (512 lights).
 
---defaults-time times ssao.graph and hbao.graph at 1920x1080 with their shipped (tuned)
-defaults and with the papers' settings they replaced (medians, the ratio).
+--defaults-time times ssao.graph, hbao.graph and ssdo.graph at 1920x1080 with their shipped (tuned)
+defaults and with the settings they replaced (medians, the ratio).
 
---accuracy scores every AO method of graphs/ao_error.graph against reference_ao, and every
-GI image of graphs/ssdo_error.graph against reference_gi, on every
-example scene (RMSE, bias = mean of method - reference, SSIM) with the frame time of the
-shipped graph that runs it, as the Markdown table of docs/accuracy.md (--save it there).
+--accuracy scores every AO method of graphs/ao_error.graph against reference_ao on every
+example scene (RMSE, bias = mean of method - reference, SSIM, with the frame time of the
+shipped graph that runs it), and every GI pipeline of graphs/gi_error.graph and
+graphs/hybrid_ssdo_error.graph against reference_gi on every example scene under each
+light of examples/lights/ (sun, sky, courtyard probe; a summary against the SSAO
+baseline per light), as the Markdown tables of docs/accuracy.md (--save it there).
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -326,35 +328,80 @@ def accuracy_table(binary, size, threads, runs):
             print_rows(binary, scene, path, metrics, ACCURACY_METHODS, size, threads, runs, tmp)
 
 
-GI_METHODS = [("ssao-darkened ambient", "c_ssao", None), ("ssdo", "c_ssdo", None),
-              ("ssdo + bounce", "c_ssdo_b", "ssdo.graph")]
+GI_LIGHTS = [("sun", "gi_error.graph"), ("sky", "hybrid_ssdo_error.graph"),
+             ("courtyard", "hybrid_ssdo_error.graph")]
+GI_METHODS = [("none", "c_none", "no occlusion"), ("ssao", "c_ssao", "SSAO-darkened ambient"),
+              ("ssdo", "c_ssdo", "ssdo.graph"), ("hybrid", "c_hybrid", "hybrid.graph"),
+              ("hybrid_ssdo", "c_hybrid_ssdo", "hybrid_ssdo.graph")]
 
 
 def gi_accuracy_table(binary, size, threads, runs):
-    """Every screen-space GI image of graphs/ssdo_error.graph against reference_gi (direct
-    light with true shadows plus one diffuse bounce) on every example scene, as
-    accuracy_table does for AO."""
-    ssdo_error = os.path.join(ROOT, "graphs", "ssdo_error.graph")
+    """Every GI pipeline of graphs/gi_error.graph (and, under environment light, of
+    graphs/hybrid_ssdo_error.graph) against reference_gi (direct light with true shadows
+    plus one diffuse bounce) on every example scene under each light of examples/lights:
+    per scene RMSE, bias and SSIM; per light the mean RMSE, the mean and worst ratio to
+    the SSAO baseline and how many scenes are worse than it; and the frame time of
+    ssdo.graph (Cornell box) and hybrid_ssdo.graph (courtyard)."""
     scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
     print(f"\n# GI accuracy of the shipped graphs, {size}\n")
-    print("Each shaded image of `graphs/ssdo_error.graph` (radius 0.3) against `reference_gi` "
-          "(direct light with ray-traced shadows plus exactly one diffuse bounce, 64 paths a "
-          "pixel) on every example scene, surface pixels only, in linear radiance (not tone "
-          "mapped, so bright scenes weigh more). bias = mean(method - reference). ms: median "
-          "frame time of `graphs/ssdo.graph`, the same way as above.\n")
-    print("| scene | method | rmse | bias | ssim | ms |")
-    print("|---|---|---|---|---|---|")
+    print("Every example scene relit by each file of `examples/lights/` (`--lights`: a sun "
+          "alone, a uniform white sky, the courtyard probe), each pipeline's final image "
+          "against `reference_gi` (direct light with ray-traced shadows plus exactly one "
+          "diffuse bounce, 64 paths a pixel), surface pixels only, linear radiance. none: "
+          "direct + environment light, no occlusion; ssao: direct + SSAO-darkened "
+          "environment at the SSDO pipeline's radius, samples and filter (the baseline); "
+          "ssdo: `graphs/ssdo.graph`; hybrid: `graphs/hybrid.graph`; hybrid_ssdo: "
+          "`graphs/hybrid_ssdo.graph` (the hybrids need environment light: not under the "
+          "sun). Graphs: `graphs/gi_error.graph`, `graphs/hybrid_ssdo_error.graph`. Made by "
+          f"`python3 bench/bench.py --accuracy --size {size}`.\n")
+    rows, summary = [], []
     with tempfile.TemporaryDirectory() as tmp:
-        for scene in scenes:
-            path = os.path.join(ROOT, "examples", scene)
-            metrics = run_metrics(binary, ssdo_error, path, size, threads,
-                                  os.path.join(tmp, scene))
-            print_rows(binary, scene, path, metrics, GI_METHODS, size, threads, runs, tmp)
+        for light, graph in GI_LIGHTS:
+            lights = os.path.join(ROOT, "examples", "lights", light + ".scene")
+            per = {}
+            for scene in scenes:
+                path = os.path.join(ROOT, "examples", scene)
+                metrics = run_metrics(binary, os.path.join(ROOT, "graphs", graph), path, size,
+                                      threads, os.path.join(tmp, light + scene), lights)
+                for name, node, _ in GI_METHODS:
+                    if node in metrics:
+                        m = metrics[node]
+                        per.setdefault(name, {})[scene] = m["rmse"]
+                        rows.append(f"| {light} | {scene[:-6]} | {name} | {m['rmse']:.4f} | "
+                                    f"{m['bias']:+.4f} | {m['ssim']:.3f} |")
+            base = per["ssao"]
+            for name, _, what in GI_METHODS:
+                if name not in per:
+                    continue
+                r = [per[name][s] / base[s] for s in base]
+                mean = sum(per[name].values()) / len(per[name])
+                summary.append(f"| {light} | {name} ({what}) | {mean:.4f} | "
+                               f"{sum(r) / len(r):.3f} | {max(r):.3f} | "
+                               f"{sum(x > 1.0 for x in r)} of {len(r)} |")
+        ms = [frame_ms(binary, os.path.join(ROOT, "graphs", g),
+                       os.path.join(ROOT, "examples", sc), size, threads, runs,
+                       os.path.join(tmp, "t"))[0]
+              for g, sc in (("ssdo.graph", "cornell.scene"),
+                            ("hybrid_ssdo.graph", "courtyard.scene"))]
+    print("| light | method | mean rmse | mean ratio to ssao | worst ratio | scenes worse "
+          "than ssao |")
+    print("|---|---|---|---|---|---|")
+    print("\n".join(summary))
+    print(f"\nFrame time at {size} (median of {runs} runs after a warm-up, "
+          f"{threads or os.cpu_count()} threads, write excluded): ssdo.graph on the Cornell "
+          f"box {ms[0]:.1f} ms, hybrid_ssdo.graph on the courtyard {ms[1]:.1f} ms (its "
+          "lightprobe's one-off conversion included).\n")
+    print("| light | scene | method | rmse | bias | ssim |")
+    print("|---|---|---|---|---|---|")
+    print("\n".join(rows))
 
 
-def run_metrics(binary, graph, scene_path, size, threads, out):
-    """Runs graph on the scene; its compare nodes' metrics."""
+def run_metrics(binary, graph, scene_path, size, threads, out, lights=None):
+    """Runs graph on the scene (relit by the lights file, if one is given); its compare
+    nodes' metrics."""
     cmd = [binary, "run", graph, "--scene", scene_path, "--size", size, "--out", out, "--quiet"]
+    if lights:
+        cmd += ["--lights", lights]
     if threads:
         cmd += ["--threads", str(threads)]
     run_cmd(cmd)
@@ -375,22 +422,24 @@ def print_rows(binary, scene, scene_path, metrics, methods, size, threads, runs,
               f"{m['ssim']:.3f} | {ms} |")
 
 
-# The papers' settings, the shipped defaults before issue 15 tuned them for accuracy, as
-# --set lines on the shipped graphs (docs/occlusion.md, "How the defaults were chosen").
+# The settings the shipped defaults replaced, as --set lines on the shipped graphs: the
+# papers' for ssao and hbao (issue 15, docs/occlusion.md, "How the defaults were chosen"),
+# ssdo.graph's before issue 16 chose power 3 and strength 1 (docs/accuracy.md).
 PAPER_SETTINGS = {
     "ssao.graph": ["k.falloff=2", "k.min_scale=0.1", "ao.bias=0.02", "ao.power=1",
                    "ao.range_check=smooth"],
     "hbao.graph": ["h.steps=4", "h.bias=0.1", "h.strength=1", "h.falloff=linear"],
+    "ssdo.graph": ["do.power=1", "do.strength=4"],
 }
 
 
 def defaults_time_table(binary, size, threads, runs):
     """Frame time of each shipped AO graph with its tuned defaults against the same graph
     with the papers' settings: medians of whole frames (write excluded) and the ratio."""
-    print(f"# Frame time of the tuned AO defaults against the papers' settings, {size}\n")
+    print(f"# Frame time of the tuned defaults against the settings they replaced, {size}\n")
     print(f"Medians of {runs} runs after a warm-up, {threads or os.cpu_count()} threads, write "
           "excluded; made by `python3 bench/bench.py --defaults-time`.\n")
-    print("| graph | papers' settings ms | shipped defaults ms | ratio |")
+    print("| graph | replaced settings ms | shipped defaults ms | ratio |")
     print("|---|---|---|---|")
     for graph, paper in PAPER_SETTINGS.items():
         path = os.path.join(ROOT, "graphs", graph)

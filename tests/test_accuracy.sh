@@ -2,7 +2,9 @@
 # `bench/bench.py --accuracy`, the command that makes docs/accuracy.md: at a tiny size and
 # one run it still scores every AO method on every example scene (six rows a scene, with a
 # finite rmse, a signed bias and an ssim) and times the three shipped graphs, then every GI
-# image of graphs/ssdo_error.graph (three rows a scene).
+# pipeline on every scene under each light of examples/lights (three rows a scene under the
+# sun, five under the sky and the probe), one summary row a pipeline and light, and the
+# frame times of ssdo.graph and hybrid_ssdo.graph.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy"
 python3 bench/bench.py --accuracy --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" 2> "$TMP/err" ||
@@ -12,6 +14,10 @@ rows=$(grep -cE '^\| [a-z_]+ \| (ssao|hbao|gtao)( \+ bilateral)? \| [0-9.]+ \| [
 [ "$rows" -eq $((6 * scenes)) ] || fail "expected $((6 * scenes)) rows, got $rows: $(head -20 "$TMP/acc.md")"
 timed=$(grep -cE '\+ bilateral \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
 [ "$timed" -eq $((3 * scenes)) ] || fail "expected $((3 * scenes)) timed rows, got $timed"
-gi=$(grep -cE '^\| [a-z_]+ \| (ssao-darkened ambient|ssdo|ssdo \+ bounce) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
-[ "$gi" -eq $((3 * scenes)) ] || fail "expected $((3 * scenes)) GI rows, got $gi"
+gi=$(grep -cE '^\| (sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \|$' "$TMP/acc.md")
+[ "$gi" -eq $((13 * scenes)) ] || fail "expected $((13 * scenes)) GI rows, got $gi"
+summary=$(grep -cE '^\| (sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \|$' "$TMP/acc.md")
+[ "$summary" -eq 13 ] || fail "expected 13 GI summary rows, got $summary"
+grep -qE 'ssdo.graph on the Cornell box [0-9.]+ ms, hybrid_ssdo.graph on the courtyard [0-9.]+ ms' \
+    "$TMP/acc.md" || fail "the GI table lacks its frame times"
 finish test_accuracy

@@ -132,7 +132,8 @@ static void test_open_planes(const struct ssg_image *kernel, const struct ssg_im
    (to float rounding) at every kernel size from 8 to 64, on the three open planes at 16
    and 64 and on the first at every other size. dw = pi / (the kernel's own sum of N.w)
    integrates a constant environment exactly; the solid angle 2 pi / K it replaced made the
-   result 2 mean(N.w) times too bright, +5.8 % at K = 16 (issue 16). */
+   result 2 mean(N.w) times too bright, +5.8 % at K = 16 (issue 16). The modulation (as
+   graphs/ssdo.graph sets it) is exactly 1 there, so combine gives albedo x sky too. */
 static void test_radiance_open(void)
 {
     struct scene s[3];
@@ -155,6 +156,16 @@ static void test_radiance_open(void)
                     worst = fmax(worst, fabs(out[0]->data[c * (size_t)W * H + p] - want));
                 }
             CHECK(out[0] && worst <= 2e-6);
+            ssg_image_destroy(&out[0]);
+            ssg_image_destroy(&out[1]);
+            /* modulation, as graphs/ssdo.graph sets it: exactly 1, so combine's
+               M x environment is albedo x sky too */
+            const char *mod[] = {"mode=modulation", "power=3"};
+            CHECK_EQ(ssdo(&g, kernel, rot, alb, NULL, mod, 2, out), SSG_OK);
+            int not_one = 0;
+            for (size_t p = 0; out[0] && p < (size_t)W * H; p++)
+                not_one += out[0]->data[p] != 1.0f;
+            CHECK(out[0] && not_one == 0);
             ssg_image_destroy(&out[0]);
             ssg_image_destroy(&out[1]);
             release(&g);
