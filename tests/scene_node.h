@@ -43,10 +43,12 @@ static inline struct ssg_image *light_list(const float (*dirs)[3], int n)
 }
 
 /* Loads and runs a graph file at w x h (scene: NULL = the graph's own) into out_dir. */
-static inline enum ssg_err graph_run(const char *graph, const char *scene, int w, int h,
-                                     const char *out_dir)
+static inline enum ssg_err graph_run_sets(const char *graph, const char *scene, int w, int h,
+                                          const char *out_dir, const char *const *sets,
+                                          int set_count)
 {
-    struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1};
+    struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1,
+                               .sets = sets, .set_count = set_count};
     struct ssg_run_options opt = {.out_dir = out_dir};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
@@ -56,6 +58,12 @@ static inline enum ssg_err graph_run(const char *graph, const char *scene, int w
     ssg_diags_print(&d, stderr);
     ssg_graph_destroy(&g);
     return e;
+}
+
+static inline enum ssg_err graph_run(const char *graph, const char *scene, int w, int h,
+                                     const char *out_dir)
+{
+    return graph_run_sets(graph, scene, w, h, out_dir, NULL, 0);
 }
 
 /* Layer `name` (NULL = the main image) of dir/file; NULL and a failed check when absent. */
