@@ -4,7 +4,7 @@
     python3 bench/bench.py [--runs 7] [--bin build-bench/ssgraph] [--threads N]
                            [--graph graphs/ssao.graph ...] [--size 1280x720 ...] [--ao]
                            [--ssdo [--samples 12,24,36,64]] [--table1] [--backend]
-                           [--hybrid] [--accuracy [--save docs/accuracy.md]]
+                           [--hybrid] [--accuracy [--part ao|gi] [--save docs/accuracy.md]]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -483,6 +483,8 @@ def main():
     ap.add_argument("--defaults-time", action="store_true",
                     help="frame time of ssao.graph and hbao.graph with their tuned defaults "
                          "against the papers' settings (default 1920x1080)")
+    ap.add_argument("--part", choices=["ao", "gi"],
+                    help="with --accuracy: only the AO table or only the GI tables")
     ap.add_argument("--hybrid", action="store_true",
                     help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
                          "both backends, error against reference_gi, the paper's fps")
@@ -491,8 +493,11 @@ def main():
         sys.stdout = Tee(sys.stdout, args.save)
     binary = args.bin or build()
     if args.accuracy:
-        accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
-        gi_accuracy_table(binary, (args.size or ["640x480"])[0], args.threads, args.runs)
+        size = (args.size or ["640x480"])[0]
+        if args.part != "gi":
+            accuracy_table(binary, size, args.threads, args.runs)
+        if args.part != "ao":
+            gi_accuracy_table(binary, size, args.threads, args.runs)
         return
     if args.defaults_time:
         defaults_time_table(binary, (args.size or ["1920x1080"])[0], args.threads, args.runs)
