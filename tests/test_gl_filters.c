@@ -112,6 +112,14 @@ static void bilateral_cases(void)
     b[0].image = rgb;
     parity_node("rgb", "bilateral", b, 3, general, 3, NULL, tol);
     parity_node("rgb separable", "bilateral", b, 3, sep_ln, 2, NULL, tol);
+    /* in2 rides along: modulation + bounce (1 + 3), 3 + 1, and separable */
+    struct ssg_binding b2[4] = {{"in", ao}, {"depth", g.depth}, {"normal", g.normal},
+                                {"in2", rgb}};
+    parity_node("in2 1+3", "bilateral", b2, 4, def, 1, NULL, tol);
+    parity_node("in2 1+3 separable", "bilateral", b2, 4, sep, 2, NULL, tol);
+    b2[0].image = rgb;
+    b2[3].image = ao;
+    parity_node("in2 3+1 via ln", "bilateral", b2, 4, general, 3, NULL, tol);
     ssg_image_destroy(&ao);
     ssg_image_destroy(&rgb);
     free_gbuf(&g);

@@ -119,3 +119,18 @@ void ssg_shadow_basis(vec3 l, out vec3 u, out vec3 v)
     u = vec3(1.0 + s * l.x * l.x * a, s * b, -s * l.x);
     v = vec3(b, s + l.y * l.y * a, -l.y);
 }
+
+// The second image a filter carries along with the same weights (bilateral's and
+// upsample's in2): its value type, load and store, from the node's IN2_CH define (1 or 3;
+// 0 = none, the macros then unused).
+#if defined(IN2_CH)
+#if IN2_CH == 3
+#define VALUE2 vec3
+#define LOAD2 ssg_load3
+#define STORE2 SSG_STORE3
+#else
+#define VALUE2 float
+#define LOAD2 ssg_load1
+#define STORE2 SSG_STORE1
+#endif
+#endif

@@ -24,7 +24,11 @@
  * O(size) instead of O(size^2) per pixel. The spatial Gaussian factors exactly; where the
  * depth varies along one axis only (and normals are constant) so does everything else and
  * the two forms agree; elsewhere the row normalisation and the cross term of the depth
- * Gaussian make the difference, small on smooth surfaces (tests/test_bilateral.c). */
+ * Gaussian make the difference, small on smooth surfaces (tests/test_bilateral.c).
+ * A second image `in2` (SSDO's bounce beside its modulation) may ride along: its channels
+ * are filtered with exactly the weights of `in`, computed once, into `out2`, bit for bit
+ * what a second bilateral node on in2 gives at a fraction of the cost (the weights are most
+ * of the work); out2 is all 0, shaped like out, when in2 is unconnected. */
 #include <math.h>
 #include <stdio.h>
 
@@ -52,6 +56,14 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         snprintf(why, why_len, "normal must be a 3-channel image the size of in");
         return SSG_E_SIZE;
     }
+    const struct ssg_shape *im2 = &in[SSG_BILATERAL_IN_IN2];
+    if (im2->channels != 0 && !ssg_shape_same_size(im2, im)) {
+        snprintf(why, why_len, "in2 must be the size of in");
+        return SSG_E_SIZE;
+    }
+    out[SSG_BILATERAL_OUT_OUT] = *im;
+    /* out2: in2 filtered, or (unconnected) zeros shaped like out */
+    out[SSG_BILATERAL_OUT_OUT2] = im2->channels != 0 ? *im2 : *im;
     return SSG_OK;
 }
 
@@ -99,12 +111,17 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "linear depth; 0 = background"},
     [SSG_BILATERAL_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
      .doc = "unit view-space normal; none = no normal term"},
+    [SSG_BILATERAL_IN_IN2] = {.name = "in2", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
+     .optional = 1, .doc = "a second image the size of in, filtered with in's weights"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_BILATERAL_INPUTS, "one entry a port enumerator");
 
 static const struct ssg_port_desc outputs[] = {
     [SSG_BILATERAL_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
      .doc = "smoothed image"},
+    [SSG_BILATERAL_OUT_OUT2] = {.name = "out2", .types = SSG_T_SCALAR, .same_as = "in2",
+     .doc = "in2 smoothed with out's weights (type of in2); all 0, shaped like out, when "
+            "in2 is unconnected"},
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_BILATERAL_OUTPUTS, "one entry a port enumerator");
 
@@ -122,7 +139,9 @@ const struct ssg_node_desc ssg_node_bilateral = {
         "max(0, n.n')^normal_power, normalised. By default the exact 2D filter; separable=true "
         "runs the same weights over a row, then over a column of the row pass's result "
         "(the documents' approximation, O(size) per pixel). Background pixels (depth 0) "
-        "pass through and are never used.",
+        "pass through and are never used. An optional second image in2 is filtered with "
+        "the same weights into out2 in the same pass (one node for SSDO's modulation and "
+        "bounce); out2 is all 0 when in2 is unconnected.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_bilateral_params),
     .consts_size = sizeof(struct ssg_bilateral_consts),

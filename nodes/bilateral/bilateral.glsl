@@ -6,13 +6,15 @@
 // the CPU's to the last bit or two;
 // `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
 // separable=true dispatches this twice (REACH (r, 0) into a scratch image, then (0, r)).
-// CHANNELS (1 or 3) and NORMALS (0 or 1) are defines from bilateral_gl.c.
+// CHANNELS (1 or 3), IN2_CH (0, 1 or 3) and NORMALS (0 or 1) are defines from bilateral_gl.c.
+// in2 rides along with the same weights into dst2; unconnected, dst2 is written 0.
 layout(std430, binding = 0) readonly buffer Spatial { float spatial[]; };
 
 uniform sampler2DArray src;   // the image to smooth (or the row pass's result)
+uniform sampler2DArray src2;  // in2 (or its row pass's result)
 uniform sampler2DArray depth; // linear depth; 0 = background
 uniform sampler2DArray normal;
-layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform writeonly image2DArray dst, dst2;
 uniform ivec2 reach;          // half-widths walked: (r, r), (r, 0) or (0, r)
 uniform int radius, size;     // of the spatial table: row (dy + radius) * size + dx + radius
 uniform float depth_scale;    // 1 / sigma_depth
@@ -70,6 +72,7 @@ void main()
     nc = ssg_unit_normal(normal, p);
 #endif
     precise VALUE acc = VALUE(0.0);
+    precise VALUE2 acc2 = VALUE2(0.0);
     precise float wsum = 0.0;
     ivec2 last = ssg_grid - 1;
     for (int dy = -reach.y; dy <= reach.y; dy++) {
@@ -82,9 +85,17 @@ void main()
             float w = weight(q, spatial[(dy + radius) * size + dx + radius], dc, kd, nc);
             wsum += w;
             acc += w * LOAD(src, q);
+#if IN2_CH
+            acc2 += w * LOAD2(src2, q);
+#endif
         }
     }
     // Background, or nothing with weight (zero normal): pass through.
     bool keep = !(dc > 0.0) || !(wsum > 0.0);
     STORE(dst, p, keep ? LOAD(src, p) : acc / wsum);
+#if IN2_CH
+    STORE2(dst2, p, keep ? LOAD2(src2, p) : acc2 / wsum);
+#else
+    STORE(dst2, p, VALUE(0.0)); // out2 is all 0, shaped like out
+#endif
 }

@@ -15,10 +15,12 @@ enum ssg_bilateral_input {
     SSG_BILATERAL_IN_IN,
     SSG_BILATERAL_IN_DEPTH,
     SSG_BILATERAL_IN_NORMAL,
+    SSG_BILATERAL_IN_IN2,
     SSG_BILATERAL_INPUTS
 };
 enum ssg_bilateral_output {
     SSG_BILATERAL_OUT_OUT,
+    SSG_BILATERAL_OUT_OUT2,
     SSG_BILATERAL_OUTPUTS
 };
 

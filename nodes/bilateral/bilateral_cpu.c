@@ -9,7 +9,10 @@
  * exp(); exp and ln are small polynomial versions that vectorise (libm's do not without
  * -ffast-math), accurate to a few 1e-7 relative (bilateral_math.h).
  * The separable form runs the same loops twice with a one-row, then a one-column window
- * (run_separable): 2 size taps per pixel instead of size^2. */
+ * (run_separable): 2 size taps per pixel instead of size^2. The optional in2 is carried as
+ * further channels after in's (1 + 1, 1 + 3, 3 + 1, 3 + 3): each tap's weight is computed
+ * once for all of them, and per channel the sums are those of a filter of that image
+ * alone, so out2 is bit for bit a second node's output. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -20,15 +23,15 @@
 
 #include "bilateral_math.h"
 
-enum { CHUNK = 256, ROWS_PER_BAND = 4 };
+enum { CHUNK = 256, ROWS_PER_BAND = 4, MAX_CH = 6 };
 
 struct job {
     const struct ssg_bilateral_consts *c;
-    const float *in[3];    /* channel planes of the input */
-    int channels;          /* 1 or 3 */
+    const float *in[MAX_CH]; /* channel planes: in's, then in2's */
+    int channels;            /* in's and in2's together: 1, 2, 3, 4 or 6 */
     const float *depth;
-    const float *nrm[3];   /* NULL when there is no normal term */
-    float *out[3];
+    const float *nrm[3];     /* NULL when there is no normal term */
+    float *out[MAX_CH];      /* out's planes, then out2's */
     int w, h;
     int rx, ry;            /* half-widths of the window walked: radius, or 0 on the axis a
                               separable pass does not cover */
@@ -39,7 +42,7 @@ struct chunk {
     float dc[CHUNK];                    /* centre depth */
     float kd[CHUNK];                    /* depth_scale / centre depth */
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit centre normal */
-    float acc[3][CHUNK];                /* weighted sums per channel */
+    float acc[MAX_CH][CHUNK];           /* weighted sums per channel */
     float wsum[CHUNK];                  /* sum of weights */
 };
 
@@ -55,7 +58,7 @@ static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int
         k->dc[i] = d;
         k->kd[i] = d > 0.0f ? scale / d : 0.0f;
         k->wsum[i] = 0.0f;
-        for (int ch = 0; ch < 3; ch++)
+        for (int ch = 0; ch < MAX_CH; ch++)
             k->acc[ch][i] = 0.0f;
         k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
     }
@@ -171,10 +174,12 @@ static void bilateral_add_taps(const struct job *j, struct chunk *k, int y, int 
     case 6: taps(j, k, y, x0, len, ch, 6); break;                                      \
     default: taps(j, k, y, x0, len, ch, NORMAL_GENERAL); break;                        \
     }
-    if (j->channels == 1) {
-        VARIANTS(1)
-    } else {
-        VARIANTS(3)
+    switch (j->channels) {
+    case 1: VARIANTS(1) break;
+    case 2: VARIANTS(2) break;
+    case 3: VARIANTS(3) break;
+    case 4: VARIANTS(4) break;
+    default: VARIANTS(6) break;
     }
 #undef VARIANTS
 }
@@ -240,12 +245,23 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     const struct ssg_image *in = io->in[SSG_BILATERAL_IN_IN];
     const struct ssg_image *dep = io->in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
+    const struct ssg_image *in2 = io->in[SSG_BILATERAL_IN_IN2];
     const struct ssg_bilateral_consts *c = consts;
-    struct job j = {.c = c, .channels = in->channels, .depth = dep->data, .w = in->width,
-                    .h = in->height, .rx = c->radius, .ry = c->radius};
+    const int n2 = in2 ? in2->channels : 0;
+    struct job j = {.c = c, .channels = in->channels + n2, .depth = dep->data,
+                    .w = in->width, .h = in->height, .rx = c->radius, .ry = c->radius};
     for (int ch = 0; ch < in->channels; ch++) {
         j.in[ch] = ssg_image_plane(in, ch);
-        j.out[ch] = ssg_image_plane(io->out[0], ch);
+        j.out[ch] = ssg_image_plane(io->out[SSG_BILATERAL_OUT_OUT], ch);
+    }
+    for (int ch = 0; ch < n2; ch++) {
+        j.in[in->channels + ch] = ssg_image_plane(in2, ch);
+        j.out[in->channels + ch] = ssg_image_plane(io->out[SSG_BILATERAL_OUT_OUT2], ch);
+    }
+    if (!in2) { /* out2 is documented as all 0 when in2 is unconnected */
+        const struct ssg_image *o2 = io->out[SSG_BILATERAL_OUT_OUT2];
+        memset(o2->data, 0, sizeof(float) * (size_t)o2->width * (size_t)o2->height *
+                                (size_t)o2->channels);
     }
     for (int ch = 0; nrm && ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);

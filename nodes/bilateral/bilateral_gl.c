@@ -18,23 +18,31 @@ static int squarings(int power)
 }
 
 static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
-                     struct ssg_image *dst, int rx, int ry)
+                     const struct ssg_image *src2, struct ssg_image *dst,
+                     struct ssg_image *dst2, int rx, int ry)
 {
     ssg_gl_input(p, "src", src);
+    ssg_gl_input(p, "src2", src2);
     ssg_gl_output(p, "dst", dst);
+    ssg_gl_output(p, "dst2", dst2);
     ssg_gl_ivec2(p, "reach", rx, ry);
     ssg_gl_dispatch(p, src->width, src->height);
 }
 
-/* Binds what both passes share and runs them: the full window into the output, or the
-   row pass into tmp and the column pass from tmp into the output. */
+/* Binds what both passes share and runs them: the full window into the outputs, or the
+   row pass into tmp (tmp2 for in2) and the column pass from there into the outputs. */
 static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilateral_consts *c,
-                        const struct ssg_io *io, struct ssg_image *tmp)
+                        const struct ssg_io *io, struct ssg_image *tmp, struct ssg_image *tmp2)
 {
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
-    char defines[64];
-    snprintf(defines, sizeof defines, "#define CHANNELS %d\n#define NORMALS %d\n",
-             io->in[SSG_BILATERAL_IN_IN]->channels, nrm && c->normal_power > 0);
+    const struct ssg_image *in2 = io->in[SSG_BILATERAL_IN_IN2];
+    struct ssg_image *out = io->out[SSG_BILATERAL_OUT_OUT];
+    struct ssg_image *out2 = io->out[SSG_BILATERAL_OUT_OUT2];
+    char defines[96];
+    snprintf(defines, sizeof defines,
+             "#define CHANNELS %d\n#define IN2_CH %d\n#define NORMALS %d\n",
+             io->in[SSG_BILATERAL_IN_IN]->channels, in2 ? in2->channels : 0,
+             nrm && c->normal_power > 0);
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "bilateral.glsl", defines);
     ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->size * (size_t)c->size);
@@ -47,10 +55,11 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_float(&p, "normal_power", (float)c->normal_power);
     ssg_gl_float(&p, "normal_min", c->normal_min);
     if (!tmp) {
-        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], io->out[0], c->radius, c->radius);
+        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], in2, out, out2, c->radius, c->radius);
     } else {
-        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], tmp, c->radius, 0);
-        one_pass(&p, tmp, io->out[0], 0, c->radius);
+        /* without in2 the row pass's dst2 (zeros) goes to tmp2 = out2, rewritten after */
+        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], in2, tmp, tmp2 ? tmp2 : out2, c->radius, 0);
+        one_pass(&p, tmp, tmp2, out, out2, 0, c->radius);
     }
     return ssg_gl_pass_end(&p);
 }
@@ -60,12 +69,14 @@ enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *co
 {
     const struct ssg_bilateral_consts *c = consts;
     const struct ssg_image *in = io->in[SSG_BILATERAL_IN_IN];
+    const struct ssg_image *in2 = io->in[SSG_BILATERAL_IN_IN2];
     if (!c->separable)
-        return run(ctx, c, io, NULL);
+        return run(ctx, c, io, NULL, NULL);
     struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);
-    if (!tmp)
-        return SSG_E_NOMEM;
-    enum ssg_err e = run(ctx, c, io, tmp);
+    struct ssg_image *tmp2 = in2 ? ssg_gl_scratch(ctx, in2->width, in2->height,
+                                                  in2->channels) : NULL;
+    enum ssg_err e = tmp && (tmp2 || !in2) ? run(ctx, c, io, tmp, tmp2) : SSG_E_NOMEM;
     ssg_gl_scratch_release(&tmp);
+    ssg_gl_scratch_release(&tmp2);
     return e;
 }

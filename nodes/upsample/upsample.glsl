@@ -25,15 +25,6 @@ uniform float normal_power, normal_min;
 #define LOAD ssg_load1
 #define STORE SSG_STORE1
 #endif
-#if IN2_CH == 3
-#define VALUE2 vec3
-#define LOAD2 ssg_load3
-#define STORE2 SSG_STORE3
-#else
-#define VALUE2 float
-#define LOAD2 ssg_load1
-#define STORE2 SSG_STORE1
-#endif
 
 // Weight of low-res tap q with spatial log-weight es for a pixel of depth dp, kd =
 // depth_scale / dp and unit normal nc (add_tap).
