@@ -26,13 +26,15 @@ int main(void)
     struct ssg_outputs out;
     struct ssg_diags d = {0};
 
-    /* a working run: bilateral of a constant image is that constant, same size */
+    /* a working run: bilateral of a constant image is that constant, same size (out2, of
+       the unconnected in2, comes back too) */
     struct ssg_binding ok[] = {{"in", ao}, {"depth", depth}};
     const char *sets[] = {"size=5"};
     CHECK_EQ(ssg_node_run("bilateral", ok, 2, sets, 1, NULL, &out, &d), SSG_OK);
-    CHECK_EQ(out.count, 1);
-    CHECK(out.count == 1 && strcmp(out.names[0], "out") == 0);
-    if (out.count == 1) {
+    CHECK_EQ(out.count, 2);
+    CHECK(out.count == 2 && strcmp(out.names[0], "out") == 0 &&
+          strcmp(out.names[1], "out2") == 0);
+    if (out.count == 2) {
         CHECK_EQ(out.images[0]->width, 16);
         CHECK_NEAR(out.images[0]->data[5 * 16 + 7], 0.5, 1e-6);
     }
