@@ -52,6 +52,7 @@ static inline struct ssg_image *filter(const struct images *im, int with_normal,
         ssg_diags_print(&diags, stderr);
         return NULL;
     }
+    ssg_image_destroy(&out.images[1]); /* out2: in2 is not connected here */
     return out.images[0];
 }
 
