@@ -133,6 +133,9 @@ cmp -s "$TMP/sky/ssdo.exr" "$TMP/skyline/ssdo.exr" || fail "the lights line diff
 printf 'environment(color=[1, 1, 1])\nsphere(radius=1)\n' > "$TMP/bad.lights"
 expect_exit 1 "bad.lights:2:1: error: a lights file holds only point_light" \
     "$BIN" check graphs/ssdo.graph --lights "$TMP/bad.lights"
+expect_exit 1 "scene .*courtyard.scene' relit by '.*sun.scene' has no environment light" \
+    "$BIN" run graphs/hybrid_ssdo.graph --size 32x24 --lights examples/lights/sun.scene \
+    --out "$TMP/nolight"
 
 # --- one node alone on EXR layers of a full run ---
 src="$TMP/t1/ssao.exr"

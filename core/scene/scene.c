@@ -543,6 +543,7 @@ enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_a
     if (!s)
         return SSG_E_NOMEM;
     snprintf(s->path, sizeof s->path, "%s", path);
+    snprintf(s->lights_path, sizeof s->lights_path, "%s", lights ? lights : "");
     l.scene = s;
     if (read_scene(&l, path, lights) == SSG_OK) {
         scene_defaults(s, &l);

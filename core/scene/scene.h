@@ -74,6 +74,7 @@ struct ssg_env; /* the environment's lookup and sampling tables, see env.h */
 
 struct ssg_scene {
     char path[512];
+    char lights_path[512]; /* the lights file that replaced the scene's lights, "" = none */
     int has_camera;  /* 0 = neither the scene nor a glTF gave one; a default is used */
     struct ssg_camera camera;
     struct ssg_environment environment;

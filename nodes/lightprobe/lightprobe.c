@@ -50,11 +50,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (!ctx->scene || !ctx->scene->env)
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
     if (!ctx->scene->env->has_light) {
-        char what[700];
-        snprintf(what, sizeof what, "scene '%s' has no environment light: the hybrid's "
+        char what[1400];
+        const char *relit = ctx->scene->lights_path;
+        snprintf(what, sizeof what, "scene '%s'%s%s%s has no environment light: the hybrid's "
                  "global part is lit by the environment alone (add environment(image="
-                 "\"probe.exr\") or environment(color=[...]) to the scene)",
-                 ctx->scene->path);
+                 "\"probe.exr\") or environment(color=[...]) to the %s)",
+                 ctx->scene->path, relit[0] ? " relit by '" : "", relit,
+                 relit[0] ? "'" : "", relit[0] ? "lights file" : "scene");
         return ssg_node_fail(ctx, SSG_E_VALUE, "%s", what);
     }
     c->count = p->count;
