@@ -38,7 +38,7 @@ float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
     y += jy;
     if (!(x >= 0.0 && y >= 0.0 && x < float(res) && y < float(res)))
         return 1.0;
-    precise float tangent = cosine > 0.0 ? sqrt(max(0.0, 1.0 - cosine * cosine)) / cosine : 0.0;
+    precise float tangent = cosine > 0.0 ? sine / cosine : 0.0;
     tangent = tangent < MAX_SLOPE ? tangent : MAX_SLOPE;
     precise float limit = texelFetch(maps, ivec3(int(x), int(y), i), 0).r +
                           (offset_world + slope_world * tangent);

@@ -85,8 +85,7 @@ static void add_light(const struct job *j, int li, int len, struct chunk *k)
             y += sr * k->jx[i] + cr * k->jy[i];
             int inside = x >= 0.0f && y >= 0.0f && x < (float)res && y < (float)res;
             size_t at = inside ? (size_t)(int)y * (size_t)res + (size_t)(int)x : 0;
-            float tangent = cosine > 0.0f ? sqrtf(fmaxf(0.0f, 1.0f - cosine * cosine)) / cosine
-                                          : 0.0f;
+            float tangent = cosine > 0.0f ? sine / cosine : 0.0f; /* sine is sin(N, l) there */
             tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
             float limit = map[at] + (j->offset_world + j->slope_world * tangent);
             v = !inside || d <= limit ? 1.0f : 0.0f;
