@@ -1,7 +1,9 @@
 /* gl_context.c - the one place that creates a GL context: OSMesa (software, llvmpipe; what
  * a machine without a GPU and CI use) or EGL on a device (a real GPU, headless). Everything
  * after creation is the same GL 4.5 core code, called through the table of gl_fn.h.
- * EGL is opened with dlopen so that the binary needs no EGL at all when it is not used. */
+ * OSMesa and EGL are both opened with dlopen, on the first GL node: the binary needs neither
+ * when no node runs on GL, and a process that never draws does not pay for loading Mesa
+ * and LLVM (about 90 ms of dynamic linking on the development machine). */
 /* glcorearb.h before osmesa.h: osmesa.h pulls in the legacy gl.h, which would otherwise
  * hide the GL 1.1 function-pointer types the table needs. */
 #include <GL/glcorearb.h>
@@ -23,6 +25,15 @@ struct ssg_gl_fns ssg_gl_fn;
 typedef void (*any_fn)(void);
 typedef any_fn (*getproc_fn)(const char *name);
 
+/* The four OSMesa entry points ssgraph calls, looked up in libOSMesa.so.8 once. */
+static struct {
+    void *lib;
+    OSMesaContext (*create)(const int *attribs, OSMesaContext share);
+    GLboolean (*make_current)(OSMesaContext, void *, GLenum, GLsizei, GLsizei);
+    void (*destroy)(OSMesaContext);
+    OSMESAproc (*getproc)(const char *name);
+} osm;
+
 static struct {
     int platform;          /* 0 = none, 1 = OSMesa, 2 = EGL */
     OSMesaContext osmesa;
@@ -37,7 +48,34 @@ static struct {
 
 static any_fn osmesa_getproc(const char *name)
 {
-    return (any_fn)OSMesaGetProcAddress(name);
+    return (any_fn)osm.getproc(name);
+}
+
+/* dlsym's object pointer to a function pointer: POSIX guarantees the round trip. */
+#define OSMESA_SYM(field, name)                                                            \
+    do {                                                                                   \
+        void *sym = dlsym(osm.lib, name);                                                  \
+        memcpy(&osm.field, &sym, sizeof sym);                                              \
+        if (!osm.field) {                                                                  \
+            snprintf(why, why_len, "libOSMesa.so.8 lacks %s", name);                       \
+            return 0;                                                                      \
+        }                                                                                  \
+    } while (0)
+
+static int osmesa_open(char *why, size_t why_len)
+{
+    if (osm.lib)
+        return 1;
+    osm.lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+    if (!osm.lib) {
+        snprintf(why, why_len, "libOSMesa.so.8 not found (%s; Debian: libosmesa6)", dlerror());
+        return 0;
+    }
+    OSMESA_SYM(create, "OSMesaCreateContextAttribs");
+    OSMESA_SYM(make_current, "OSMesaMakeCurrent");
+    OSMESA_SYM(destroy, "OSMesaDestroyContext");
+    OSMESA_SYM(getproc, "OSMesaGetProcAddress");
+    return 1;
 }
 
 static PFNEGLGETPROCADDRESSPROC egl_getproc_fn;
@@ -52,15 +90,17 @@ static int create_osmesa(char *why, size_t why_len)
                            OSMESA_STENCIL_BITS, 0, OSMESA_ACCUM_BITS, 0,
                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                            OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
-    ctx.osmesa = OSMesaCreateContextAttribs(attribs, NULL);
+    if (!osmesa_open(why, why_len))
+        return 0;
+    ctx.osmesa = osm.create(attribs, NULL);
     if (!ctx.osmesa) {
         snprintf(why, why_len, "OSMesa could not create a GL 4.5 core context (is Mesa's "
                  "libosmesa6 with llvmpipe installed?)");
         return 0;
     }
-    if (!OSMesaMakeCurrent(ctx.osmesa, ctx.osmesa_pixels, GL_UNSIGNED_BYTE, 4, 4)) {
+    if (!osm.make_current(ctx.osmesa, ctx.osmesa_pixels, GL_UNSIGNED_BYTE, 4, 4)) {
         snprintf(why, why_len, "OSMesa could not make its context current");
-        OSMesaDestroyContext(ctx.osmesa);
+        osm.destroy(ctx.osmesa);
         ctx.osmesa = NULL;
         return 0;
     }
@@ -207,7 +247,7 @@ int ssg_gl_context_create(char *why, size_t why_len)
 int ssg_gl_context_bind(void)
 {
     if (ctx.platform == 1)
-        return OSMesaMakeCurrent(ctx.osmesa, ctx.osmesa_pixels, GL_UNSIGNED_BYTE, 4, 4);
+        return osm.make_current(ctx.osmesa, ctx.osmesa_pixels, GL_UNSIGNED_BYTE, 4, 4);
     if (ctx.platform == 2)
         return ctx.egl_make_current(ctx.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE,
                                     ctx.egl_context);
@@ -227,7 +267,7 @@ const char *ssg_gl_context_renderer(void)
 void ssg_gl_context_destroy(void)
 {
     if (ctx.osmesa)
-        OSMesaDestroyContext(ctx.osmesa);
+        osm.destroy(ctx.osmesa);
     if (ctx.egl_context) {
         ctx.egl_make_current(ctx.egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         ctx.egl_destroy_context(ctx.egl_display, ctx.egl_context);

@@ -268,8 +268,8 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
 
 /* ---- the C interface ------------------------------------------------------------------ */
 
-extern "C" enum ssg_err ssg_image_read(const char *path, const char *layer,
-                                       struct ssg_image **out, struct ssg_diags *diags)
+enum ssg_err ssg_oiio_image_read(const char *path, const char *layer, struct ssg_image **out,
+                                 struct ssg_diags *diags)
 {
     if (out)
         *out = nullptr;

@@ -1,6 +1,6 @@
 /* imageio_adapter.h - private to the OpenImageIO adapter: what its reading half
  * (imageio_adapter.cc) and its writing half (imageio_write_adapter.cc) share: the band
- * height, the sRGB transfer functions and the turning of OpenImageIO errors and C++
+ * height, the sRGB decoding and the turning of OpenImageIO errors and C++
  * exceptions into diagnostics. C++ only; included by no C file. Stateless, so safe from
  * any thread. */
 #ifndef SSG_IMAGEIO_ADAPTER_H
@@ -15,6 +15,7 @@
 extern "C" {
 #include "lang/diag.h"
 }
+#include "io/oiio_host.h"
 
 namespace {
 
@@ -25,12 +26,7 @@ const int BAND_ROWS = 64;
 
 /* ---- colour ------------------------------------------------------------------------ */
 
-/* IEC 61966-2-1 transfer functions. */
-inline float srgb_encode(float v)
-{
-    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
+/* IEC 61966-2-1 decoding to linear (the encoding is io/tonemap.h's). */
 inline float srgb_decode(float c)
 {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);

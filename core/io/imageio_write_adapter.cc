@@ -27,6 +27,7 @@ extern "C" {
 #include "lang/files.h"
 #include "io/imageio.h"
 #include "lang/diag.h"
+#include "io/tonemap.h"
 }
 
 #include "io/imageio_adapter.h"
@@ -36,38 +37,6 @@ using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
 namespace {
-
-/* ---- tone mapping ------------------------------------------------------------------ */
-
-/* Tone curve of an exposure-scaled value v. Inputs are capped at 1e4 so the rational
-   curves never see inf/inf; every curve is already at 1 (to float precision) long before. */
-float tonemap_scaled(enum ssg_tonemap tonemap, float v)
-{
-    if (!(v > 0.0f)) /* negative, zero, NaN */
-        return 0.0f;
-    v = std::min(v, 1e4f);
-    float d;
-    switch (tonemap) {
-    case SSG_TONEMAP_REINHARD:
-        d = v / (1.0f + v);
-        break;
-    case SSG_TONEMAP_ACES: /* Narkowicz, "ACES Filmic Tone Mapping Curve", 2015 */
-        d = (v * (2.51f * v + 0.03f)) / (v * (2.43f * v + 0.59f) + 0.14f);
-        break;
-    case SSG_TONEMAP_CLAMP:
-    default:
-        d = v;
-        break;
-    }
-    return std::min(d, 1.0f);
-}
-
-unsigned char to_srgb8(enum ssg_tonemap tonemap, float scale, float x)
-{
-    float s = srgb_encode(tonemap_scaled(tonemap, x * scale));
-    int code = (int)(s * 255.0f + 0.5f);
-    return (unsigned char)std::max(0, std::min(255, code));
-}
 
 /* ---- writing ----------------------------------------------------------------------- */
 
@@ -275,7 +244,7 @@ void fill_png_band(const void *user, int y0, int rows, void *band)
         for (size_t c = 0; c < n; c++) {
             const float *plane = ssg_image_plane(s->image, (int)c) + row;
             for (size_t x = 0; x < w; x++)
-                line[x * n + c] = to_srgb8(s->tonemap, s->scale, plane[x]);
+                line[x * n + c] = ssg_srgb8_scaled(s->tonemap, s->scale, plane[x]);
         }
     }
 }
@@ -302,17 +271,7 @@ enum ssg_err stage_png(const char *path, const struct ssg_image *image,
 
 } /* namespace */
 
-/* ---- the C interface ------------------------------------------------------------------ */
-
-extern "C" float ssg_tonemap_apply(enum ssg_tonemap tonemap, float exposure, float x)
-{
-    return tonemap_scaled(tonemap, x * std::exp2(exposure));
-}
-
-extern "C" unsigned char ssg_tonemap_to_srgb8(enum ssg_tonemap tonemap, float exposure, float x)
-{
-    return to_srgb8(tonemap, std::exp2(exposure), x);
-}
+/* ---- the module's api (oiio_module.h); the C wrappers are in imageio_load.c ------------------------------------------------------------------ */
 
 /* A C++ exception from staging becomes a diagnostic; the temporary goes with it. */
 template <class F>
@@ -335,45 +294,20 @@ enum ssg_err guarded_stage(const char *path, struct ssg_tmp *t, struct ssg_diags
     return e;
 }
 
-extern "C" enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers,
-                                      int count, enum ssg_exr_compression compression,
-                                      struct ssg_tmp *t, struct ssg_diags *diags)
+enum ssg_err ssg_oiio_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
+                                enum ssg_exr_compression compression, struct ssg_tmp *t,
+                                struct ssg_diags *diags)
 {
     return guarded_stage(path, t, diags, [&] {
         return stage_exr(path, layers, count, compression, t, diags);
     });
 }
 
-extern "C" enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
-                                      enum ssg_tonemap tonemap, float exposure,
-                                      struct ssg_tmp *t, struct ssg_diags *diags)
+enum ssg_err ssg_oiio_png_stage(const char *path, const struct ssg_image *image,
+                                enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
+                                struct ssg_diags *diags)
 {
     return guarded_stage(path, t, diags, [&] {
         return stage_png(path, image, tonemap, exposure, t, diags);
     });
-}
-
-extern "C" enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers,
-                                      int count, struct ssg_diags *diags)
-{
-    return ssg_exr_write_compressed(path, layers, count, SSG_EXR_ZIP, diags);
-}
-
-extern "C" enum ssg_err ssg_exr_write_compressed(const char *path,
-                                                 const struct ssg_exr_layer *layers, int count,
-                                                 enum ssg_exr_compression compression,
-                                                 struct ssg_diags *diags)
-{
-    struct ssg_tmp t;
-    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, &t, diags);
-    return e ? e : ssg_tmp_commit(&t, 1, diags);
-}
-
-extern "C" enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
-                                      enum ssg_tonemap tonemap, float exposure,
-                                      struct ssg_diags *diags)
-{
-    struct ssg_tmp t;
-    enum ssg_err e = ssg_png_stage(path, image, tonemap, exposure, &t, diags);
-    return e ? e : ssg_tmp_commit(&t, 1, diags);
 }

@@ -7,6 +7,7 @@ extern "C" {
 #include "lang/diag.h"
 #include "io/text.h"
 }
+#include "io/oiio_host.h"
 
 using namespace OIIO;
 
@@ -37,8 +38,8 @@ void composite(struct ssg_image *im, const ImageBuf &label, int x0, int y0)
 }
 } // namespace
 
-extern "C" enum ssg_err ssg_text_draw(struct ssg_image *im, int x, int y, int size,
-                                      const char *text, struct ssg_diags *diags)
+enum ssg_err ssg_oiio_text_draw(struct ssg_image *im, int x, int y, int size, const char *text,
+                               struct ssg_diags *diags)
 {
     ROI box = ImageBufAlgo::text_size(text, size, FONT);
     if (!box.defined()) {

@@ -1,0 +1,192 @@
+/* imageio_load.c - the C side of imageio.h and text.h: opens the OpenImageIO module
+ * (oiio_module.h) on first use and forwards to it; the whole-file writers (stage, then
+ * commit) and the tone curves, which need no OpenImageIO, are here.
+ *
+ * The module is looked for, in order, in $SSGRAPH_MODULE_DIR, next to the program or
+ * library that holds this code, in the build tree it was built in, and in the installed
+ * module directory. A process opens it at most once (pthread_once), so concurrent first
+ * calls are safe; a failure to open it is remembered and reported by every call. */
+#define _GNU_SOURCE /* dladdr */
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/oiio_module.h"
+#include "io/tonemap.h"
+
+#ifndef SSG_MODULE_BUILD_DIR
+#define SSG_MODULE_BUILD_DIR ""
+#endif
+#ifndef SSG_MODULE_INSTALL_DIR
+#define SSG_MODULE_INSTALL_DIR ""
+#endif
+
+static const struct ssg_oiio_host host = {
+    .diag_file = ssg_diag_file,
+    .image_create = ssg_image_create,
+    .image_destroy = ssg_image_destroy,
+    .image_size_ok = ssg_image_size_ok,
+    .input_open = ssg_input_open,
+    .tmp_create = ssg_tmp_create,
+    .tmp_discard = ssg_tmp_discard,
+};
+
+static pthread_once_t module_once = PTHREAD_ONCE_INIT;
+static const struct ssg_oiio_api *module_api;
+static char module_why[1024];
+
+/* The directory of the program or shared library this code was linked into. */
+static void own_dir(char *dir, size_t len)
+{
+    Dl_info info;
+    dir[0] = '\0';
+    if (!dladdr((void *)own_dir, &info) || !info.dli_fname || !strchr(info.dli_fname, '/'))
+        return;
+    snprintf(dir, len, "%s", info.dli_fname);
+    *strrchr(dir, '/') = '\0';
+}
+
+/* Adds "; " and a formatted reason to module_why (cut at its size: it is a message). */
+static void add_why(const char *fmt, ...)
+{
+    size_t used = strlen(module_why);
+    if (used)
+        used += (size_t)snprintf(module_why + used, sizeof module_why - used, "; ");
+    if (used >= sizeof module_why)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(module_why + used, sizeof module_why - used, fmt, ap);
+    va_end(ap);
+}
+
+/* Opens dir/libssgraph_oiio.so and asks it for its api; 1 when that worked. The reason
+   of a failure is appended to module_why. */
+static int try_dir(const char *dir)
+{
+    if (!dir || !dir[0])
+        return 0;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, SSG_OIIO_MODULE_FILE);
+    void *lib = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        const char *e = dlerror();
+        /* a missing file is the normal case of the search: name the directory only */
+        int missing = e && strstr(e, "No such file");
+        if (missing)
+            add_why("%s", dir);
+        else
+            add_why("%s: %s", path, e ? e : "dlopen failed");
+        return 0;
+    }
+    ssg_oiio_module_fn entry;
+    void *sym = dlsym(lib, SSG_OIIO_MODULE_ENTRY);
+    memcpy(&entry, &sym, sizeof sym); /* POSIX: object pointer to function pointer */
+    module_api = entry ? entry(SSG_OIIO_MODULE_ABI, &host) : NULL;
+    if (!module_api) {
+        add_why("%s: not a module of this ssgraph (ABI %d)", path, SSG_OIIO_MODULE_ABI);
+        dlclose(lib);
+        return 0;
+    }
+    return 1; /* stays loaded until exit, like every library it pulls in */
+}
+
+static void open_module(void)
+{
+    char mine[4096];
+    own_dir(mine, sizeof mine);
+    const char *dirs[] = {getenv("SSGRAPH_MODULE_DIR"), mine, SSG_MODULE_BUILD_DIR,
+                          SSG_MODULE_INSTALL_DIR};
+    for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; i++)
+        if (try_dir(dirs[i]))
+            return;
+}
+
+/* The module's api, or NULL with a diagnostic on `file`. */
+static const struct ssg_oiio_api *oiio(struct ssg_diags *diags, const char *file)
+{
+    pthread_once(&module_once, open_module);
+    if (!module_api)
+        ssg_diag_file(diags, SSG_E_BACKEND, file ? file : "",
+                      "cannot load ssgraph's OpenImageIO module %s (searched: %s); set "
+                      "SSGRAPH_MODULE_DIR to the directory that holds it",
+                      SSG_OIIO_MODULE_FILE, module_why[0] ? module_why : "nowhere");
+    return module_api;
+}
+
+enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
+                            struct ssg_diags *diags)
+{
+    if (out)
+        *out = NULL;
+    const struct ssg_oiio_api *api = oiio(diags, path);
+    return api ? api->image_read(path, layer, out, diags) : SSG_E_BACKEND;
+}
+
+/* A failed stage leaves t closed and registered nowhere, as the module's own failures do,
+   so callers may discard or ignore it alike. */
+static enum ssg_err no_module(struct ssg_tmp *t)
+{
+    t->fd = t->lock_fd = -1;
+    t->slot = -1;
+    return SSG_E_BACKEND;
+}
+
+enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
+                           enum ssg_exr_compression compression, struct ssg_tmp *t,
+                           struct ssg_diags *diags)
+{
+    const struct ssg_oiio_api *api = oiio(diags, path);
+    return api ? api->exr_stage(path, layers, count, compression, t, diags) : no_module(t);
+}
+
+enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
+                           enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
+                           struct ssg_diags *diags)
+{
+    const struct ssg_oiio_api *api = oiio(diags, path);
+    return api ? api->png_stage(path, image, tonemap, exposure, t, diags) : no_module(t);
+}
+
+enum ssg_err ssg_text_draw(struct ssg_image *im, int x, int y, int size, const char *text,
+                           struct ssg_diags *diags)
+{
+    const struct ssg_oiio_api *api = oiio(diags, "<labels>");
+    return api ? api->text_draw(im, x, y, size, text, diags) : SSG_E_BACKEND;
+}
+
+enum ssg_err ssg_exr_write(const char *path, const struct ssg_exr_layer *layers, int count,
+                           struct ssg_diags *diags)
+{
+    return ssg_exr_write_compressed(path, layers, count, SSG_EXR_ZIP, diags);
+}
+
+enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_layer *layers,
+                                      int count, enum ssg_exr_compression compression,
+                                      struct ssg_diags *diags)
+{
+    struct ssg_tmp t;
+    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, &t, diags);
+    return e ? e : ssg_tmp_commit(&t, 1, diags);
+}
+
+enum ssg_err ssg_png_write(const char *path, const struct ssg_image *image,
+                           enum ssg_tonemap tonemap, float exposure, struct ssg_diags *diags)
+{
+    struct ssg_tmp t;
+    enum ssg_err e = ssg_png_stage(path, image, tonemap, exposure, &t, diags);
+    return e ? e : ssg_tmp_commit(&t, 1, diags);
+}
+
+float ssg_tonemap_apply(enum ssg_tonemap tonemap, float exposure, float x)
+{
+    return ssg_tonemap_scaled(tonemap, x * exp2f(exposure));
+}
+
+unsigned char ssg_tonemap_to_srgb8(enum ssg_tonemap tonemap, float exposure, float x)
+{
+    return ssg_srgb8_scaled(tonemap, exp2f(exposure), x);
+}
