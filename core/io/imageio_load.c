@@ -2,9 +2,9 @@
  * (oiio_module.h) on first use and forwards to it; the whole-file writers (stage, then
  * commit) and the tone curves, which need no OpenImageIO, are here.
  *
- * The module is looked for, in order, in $SSGRAPH_MODULE_DIR, next to the program or
- * library that holds this code, in the build tree it was built in, and in the installed
- * module directory. A process opens it at most once (pthread_once), so concurrent first
+ * The module is looked for in $SSGRAPH_MODULE_DIR alone when that is set, else next to
+ * the program or library that holds this code, in the build tree it was built in, and in
+ * the installed module directory. A process opens it at most once (pthread_once), so concurrent first
  * calls are safe; a failure to open it is remembered and reported by every call. */
 #define _GNU_SOURCE /* dladdr */
 #include <dlfcn.h>
@@ -96,10 +96,15 @@ static int try_dir(const char *dir)
 
 static void open_module(void)
 {
+    const char *chosen = getenv("SSGRAPH_MODULE_DIR");
+    if (chosen && chosen[0]) {
+        if (!try_dir(chosen) && !module_why[0])
+            add_why("%s", chosen);
+        return;
+    }
     char mine[4096];
     own_dir(mine, sizeof mine);
-    const char *dirs[] = {getenv("SSGRAPH_MODULE_DIR"), mine, SSG_MODULE_BUILD_DIR,
-                          SSG_MODULE_INSTALL_DIR};
+    const char *dirs[] = {mine, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
     for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; i++)
         if (try_dir(dirs[i]))
             return;
