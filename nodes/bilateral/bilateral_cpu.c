@@ -13,6 +13,7 @@
  * further channels after in's (1 + 1, 1 + 3, 3 + 1, 3 + 3): each tap's weight is computed
  * once for all of them, and per channel the sums are those of a filter of that image
  * alone, so out2 is bit for bit a second node's output. */
+#define SSG_VECTOR_FMA /* a filter: fused multiply-adds allowed (vector_loops.h) */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -154,12 +155,8 @@ static int normal_mode(const struct job *j)
     return NORMAL_GENERAL;
 }
 
-/* The hot loop. With GCC on x86-64 it is also compiled for AVX2 and picked at run time:
-   the same IEEE operations lane by lane (no FMA: avx2 does not enable it, and C11 mode
-   does not contract), so both versions give the same bits. */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+/* The hot loop, compiled per instruction set (SSG_VECTOR_CLONES, vector_loops.h). */
+SSG_VECTOR_CLONES
 static void bilateral_add_taps(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
 #define VARIANTS(ch)                                                                    \

@@ -7,7 +7,7 @@
  * step two straight loops over the chunk: one places the samples of both sides and
  * computes their pixel indices, one reads the depth there (the only gather) and updates
  * both horizons. A last loop per slice turns the horizons into the slice's terms. Every
- * loop vectorises (SSE4, and AVX2 through a run-time selected clone): selects, no
+ * loop vectorises (SSE4, AVX2 or AVX-512 through run-time selected clones): selects, no
  * branches, and no libm call but sqrtf (-fno-math-errno) and floorf / nearbyintf.
  *
  * Per sample, as in hbao_cpu.c, everything but the depth dq is folded into per-step
@@ -26,10 +26,10 @@
  *
  * Determinism: each pixel depends only on the inputs and every per-pixel sum runs in a
  * fixed order (slices in order, the -D side's terms before +D's), whatever the chunk, the
- * band (ssg_parallel_rows' fixed bands) and the instruction set (the clones perform the
- * same IEEE operations lane by lane: no FMA, C11 mode does not contract). gtao.glsl
- * performs the same operations in the same order (`precise`); only sqrt, division and
- * pow (power != 1) may round differently on GL. */
+ * band (ssg_parallel_rows' fixed bands); the FMA clones round a little differently from
+ * the baseline's (vector_loops.h). gtao.glsl performs the same operations in the same
+ * order (`precise`); sqrt, division, pow (power != 1) and fused multiply-adds may round
+ * differently on GL. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -401,8 +401,8 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
     }
 }
 
-/* One row of one chunk: the hot code, compiled for AVX2 too and picked at run time (the
-   same IEEE operations lane by lane, so both give the same bits). Background lanes are
+/* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES).
+   Background lanes are
    marched like the others with harmless values (ssg_sampling_load) and replaced at the
    end. */
 static inline __attribute__((always_inline)) void
@@ -428,9 +428,7 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
     finish_chunk(j, k, o, len);
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void gtao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     if (j->c->p.falloff > 0.0f)

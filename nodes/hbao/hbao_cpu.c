@@ -9,7 +9,7 @@
  * depends on the azimuth (screen step, slice coefficients, tangents; -D reuses D's
  * work), then per step two straight loops over the chunk: one places the samples and
  * computes their pixel indices, one reads the depth there (the only gather) and updates
- * the horizon. Both vectorise (SSE4, and AVX2 through a run-time selected clone).
+ * the horizon. Both vectorise (SSE4, AVX2 or AVX-512 through run-time selected clones).
  *
  * Cost per sample is kept to a few multiplies and compares:
  * - Points come from the depth: Q = dq (a_u, a_v, -1), a_u = (u + 0.5 - cx) / f,
@@ -35,8 +35,8 @@
  * depth window around a chunk (the march reaches ~150-300 px at 1080p, more than L2
  * holds) slides down one row at a time: taller bands refill it from L3 less often. Each
  * pixel depends only on the inputs and every per-pixel sum runs in a fixed order, so
- * the output does not depend on the thread count nor on the instruction set (the clones
- * perform the same IEEE operations lane by lane: no FMA, no reassociation). */
+ * the output does not depend on the thread count (no reassociation); the FMA clones round
+ * a little differently from the baseline's (vector_loops.h). */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -443,9 +443,7 @@ finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m
     }
 }
 
-/* One row of one chunk: the hot code. With GCC on x86-64 it is also compiled for AVX2
-   and picked at run time: the same IEEE operations lane by lane (no FMA: avx2 does not
-   enable it, and C11 mode does not contract), so both versions give the same bits.
+/* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES).
    With an even number of directions, k and k + directions / 2 are opposite (theta + pi)
    and go as pairs; their terms are added in the order k, k + directions / 2. */
 static inline __attribute__((always_inline)) void
@@ -478,9 +476,7 @@ chunk_body(const struct job *j, struct chunk *k, int y, int x0, int len, int cou
     finish_chunk(j, k, len, m, j->out + (size_t)y * (size_t)j->w + (size_t)x0, counted);
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void hbao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     if (j->cnt)

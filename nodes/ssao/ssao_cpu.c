@@ -5,8 +5,8 @@
  * (struct chunk) in structure-of-arrays scratch on the stack. Then, per kernel sample, one
  * loop over the chunk places and projects the sample and a second one reads the scene
  * depth there (one float plane: the depth image, or position's z plane) and adds the
- * occlusion; both are straight-line code the compiler vectorises (SSE4, and AVX2 through
- * a run-time selected clone). Cache: the samples of a chunk read a window of about
+ * occlusion; both are straight-line code the compiler vectorises (SSE4, AVX2 or AVX-512
+ * through run-time selected clones). Cache: the samples of a chunk read a window of about
  * (CHUNK + 2 Rp) x 2 Rp depths, Rp the projected radius in pixels; 128 keeps that in a
  * 512 KiB L2 for Rp up to about 130 (radius 0.5 at depth 5 in 1080p), and walking a band's
  * rows inside each chunk column (not columns inside rows) slides that window one row at
@@ -19,7 +19,7 @@
  * call site).
  * Bands of rows go to ssg_parallel_rows; each pixel depends only on the inputs and every
  * per-pixel sum runs in kernel order, so the output does not depend on the thread count
- * (nor on the instruction set: the clones do the same IEEE operations lane by lane). */
+ * (the FMA clones round a little differently from the baseline's: vector_loops.h). */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -208,9 +208,7 @@ sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, f
     lookup_chunk(j, k, len, range, counted, s);
 }
 
-/* The hot loop. With GCC on x86-64 it is also compiled for AVX2 and picked at run time:
-   the same IEEE operations lane by lane (no FMA: avx2 does not enable it, and C11 mode
-   does not contract), so both versions give the same bits. */
+/* The hot loop, compiled per instruction set (SSG_VECTOR_CLONES, vector_loops.h). */
 static inline __attribute__((always_inline)) void
 sample_loop(const struct job *j, struct chunk *k, int len, int used, int counted)
 {
@@ -236,9 +234,7 @@ sample_loop(const struct job *j, struct chunk *k, int len, int used, int counted
 }
 
 /* Samples 0..used-1 (used: the kernel width, or the chunk's largest count). */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void sample_all(const struct job *j, struct chunk *k, int len, int used)
 {
     if (j->cnt)
@@ -307,9 +303,7 @@ disc_loop(const struct job *j, struct chunk *k, int len, int y, int used, int co
         }
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void sample_disc(const struct job *j, struct chunk *k, int len, int y, int used)
 {
     if (j->cnt)

@@ -13,11 +13,9 @@ struct job {
 };
 
 /* One chunk of one row, start to end: loads, frame, every kernel sample in order, the
-   bounce. With GCC on x86-64 also compiled for AVX2 and picked at run time (same bits as
-   in ssdo_cpu.c: the same IEEE operations lane by lane). */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+   bounce. Compiled per instruction set (SSG_VECTOR_CLONES, vector_loops.h): the same
+   clone and order as ssdo_cpu.c, so the same bits as ssdo's bounce output. */
+SSG_VECTOR_CLONES
 static void
 bounce_chunk_row(const struct job *jb, struct ssg_ssdo_chunk *k, int y, int x0, int len)
 {

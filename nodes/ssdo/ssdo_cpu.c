@@ -11,8 +11,8 @@
  * not depend on the pixel, so a constant environment costs one add per sample; a light
  * probe is looked up in the view-space cube per sample (a scalar loop). Each pixel depends
  * only on the inputs and every per-pixel sum runs in kernel order: the output does not
- * depend on the thread count nor on the instruction set (the AVX2 clone does the same IEEE
- * operations lane by lane; C11 mode does not contract to FMA).
+ * depend on the thread count; the FMA clones round a little differently from the
+ * baseline's (vector_loops.h).
  * Per-pixel counts (the `count` input, ssdo.c): a chunk runs the samples up to the largest
  * count among its surface pixels; a lane past its own count is no candidate of the depth
  * test (ssdo_sampling.h) and adds 0 to the light and environment sums (selects, so the
@@ -367,9 +367,9 @@ finish_chunk(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
         raise_to_power(j, len, o);
 }
 
-/* One chunk of one row, start to end. With GCC on x86-64 also compiled for AVX2 and
-   picked at run time (same bits, see the file header): the per-pixel passes (loads,
-   frame, lights, finish) are vector loops too, worth the wider vectors. */
+/* One chunk of one row, start to end, compiled per instruction set (SSG_VECTOR_CLONES):
+   the per-pixel passes (loads, frame, lights, finish) are vector loops too, worth the
+   wider vectors. */
 static inline __attribute__((always_inline)) void
 chunk_body(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int y,
            int x0, int len, int counted)
@@ -385,9 +385,7 @@ chunk_body(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc
         ssg_ssdo_finish_bounce(&j->s, k, len, o, j->bounce);
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void
 ssdo_chunk_row(const struct job *j, struct ssg_ssdo_chunk *k, struct light_chunk *lc, int y,
                int x0, int len)

@@ -11,6 +11,7 @@
  * those of `in`) through the same loops: each weight is computed once and applied to all
  * channels, and since every channel's sum is its own chain of the same operations, `out`
  * and `out2` are bit for bit what upsampling each image alone gives. */
+#define SSG_VECTOR_FMA /* a filter: fused multiply-adds allowed (vector_loops.h) */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -141,9 +142,7 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
 #define TAP(nch)                                                                          \
     (normals ? add_tap(j, k, i0, n, q0, es, nch, 1) : add_tap(j, k, i0, n, q0, es, nch, 0))
 
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SSG_VECTOR_CLONES
 static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x0)
 {
     const int r = j->c->radius, ly = y / j->k, normals = j->lnrm[0] && j->c->normal_power > 0;
