@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "lang/files.h"
+#include "peak.h"
 #include "report.h"
 
 enum { BAR = 30 }; /* width of the progress bar in characters */
@@ -35,33 +36,61 @@ static int in_frame(const struct ssg_run_stats *s, const struct ssg_run_node *n)
     return n->calls == s->frames;
 }
 
-static void print_profile_row(const struct ssg_run_stats *s, const struct ssg_run_node *n,
-                              FILE *f)
+/* The roofline columns of a row: GB/s, GFLOP/s, bound and the fraction of it. */
+static void rate_columns(const struct ssg_run_stats *s, const struct ssg_run_node *n,
+                         const struct ssg_peak *peak, char *out, size_t len)
 {
-    char gpu[32] = "-", share[16] = "     -", name[64];
+    struct ssg_rates r;
+    char gflops[32] = "-", frac[16] = "-";
+    ssg_rates_of(n, s->threads, peak, &r);
+    if (r.gflops >= 0)
+        snprintf(gflops, sizeof gflops, "%.2f", r.gflops);
+    if (r.fraction >= 0)
+        snprintf(frac, sizeof frac, "%.0f%%", 100.0 * r.fraction);
+    snprintf(out, len, " %8.2f %8s %-7s %6s", r.gbps, gflops, r.bound ? r.bound : "-", frac);
+}
+
+static void print_profile_row(const struct ssg_run_stats *s, const struct ssg_run_node *n,
+                              const struct ssg_peak *peak, FILE *f)
+{
+    char gpu[32] = "-", share[16] = "     -", name[64], rates[80];
     if (!strcmp(n->backend, "gl"))
         snprintf(gpu, sizeof gpu, "%.2f", n->gpu_avg_ms);
     if (in_frame(s, n) && s->frame_avg_ms > 0)
         snprintf(share, sizeof share, "%5.1f%%", 100.0 * n->share);
     snprintf(name, sizeof name, "%s%s", in_frame(s, n) ? "  " : "", n->name);
-    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f\n", name, n->type,
-            n->backend, n->calls, n->avg_ms, n->min_ms, n->max_ms, share, gpu, n->prepare_ms);
+    rate_columns(s, n, peak, rates, sizeof rates);
+    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f%s\n", name, n->type,
+            n->backend, n->calls, n->avg_ms, n->min_ms, n->max_ms, share, gpu, n->prepare_ms,
+            rates);
 }
 
 /* A profiler's tree: the frame at the root, the passes under it, then the sinks that ran
-   once after the last frame. */
+   once after the last frame; last, the peaks the bound column used. */
 static void print_profile(const struct ssg_run_stats *s, FILE *f)
 {
     double frame = s->frame_avg_ms;
-    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s\n", "node", "type", "on",
-            "calls", "avg ms", "min ms", "max ms", "share", "gpu ms", "prepare ms");
+    struct ssg_peak peak;
+    char path[4096] = "";
+    int have_peak = ssg_peak_load(&peak);
+    ssg_peak_path(path, sizeof path);
+    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s %8s %8s %-7s %6s\n", "node",
+            "type", "on", "calls", "avg ms", "min ms", "max ms", "share", "gpu ms",
+            "prepare ms", "GB/s", "GFLOP/s", "bound", "%bound");
     fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
             "%.1f fps)\n", "frame", "", "", s->frames, frame, s->frame_min_ms, s->frame_max_ms,
             100.0, s->width, s->height, s->threads, frame > 0 ? 1000.0 / frame : 0.0);
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < s->node_count; i++)
             if (in_frame(s, &s->nodes[i]) == !pass)
-                print_profile_row(s, &s->nodes[i], f);
+                print_profile_row(s, &s->nodes[i], have_peak ? &peak : NULL, f);
+    if (have_peak)
+        fprintf(f, "bound: each image read or written once against %.1f GB/s, declared flops "
+                "against %.1f GFLOP/s (%d threads; %s)\n", peak.gbps, peak.gflops,
+                peak.threads, path);
+    else
+        fprintf(f, "bound: no peaks measured (run the build's `peak` once; it caches them in "
+                "%s)\n", path[0] ? path : "$SSGRAPH_PEAK");
 }
 
 static void print_metrics(const struct ssg_run_stats *s, FILE *f)
@@ -89,22 +118,42 @@ void ssg_report_print(const struct ssg_run_stats *s, FILE *f)
 static void write_json(FILE *f, const void *user)
 {
     const struct ssg_run_stats *s = user;
+    struct ssg_peak peak;
+    int have_peak = ssg_peak_load(&peak);
     fprintf(f, "{\n  \"frames\": %d, \"width\": %d, \"height\": %d, \"threads\": %d,\n",
             s->frames, s->width, s->height, s->threads);
     fprintf(f, "  \"frame\": {\"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g},\n",
             s->frame_avg_ms, s->frame_min_ms, s->frame_max_ms);
+    if (have_peak)
+        fprintf(f, "  \"peak\": {\"threads\": %d, \"gflops\": %.6g, \"gbps\": %.6g},\n",
+                peak.threads, peak.gflops, peak.gbps);
+    else
+        fputs("  \"peak\": null,\n", f);
     fputs("  \"nodes\": [", f);
     for (int i = 0; i < s->node_count; i++) {
         const struct ssg_run_node *n = &s->nodes[i];
         char share[32] = "null"; /* sinks run once, outside the frame */
+        char flops[32] = "null", gflops[32] = "null", bound[16] = "null", frac[32] = "null";
+        struct ssg_rates r;
+        ssg_rates_of(n, s->threads, have_peak ? &peak : NULL, &r);
+        if (n->flops >= 0) {
+            snprintf(flops, sizeof flops, "%.0f", n->flops);
+            snprintf(gflops, sizeof gflops, "%.6g", r.gflops);
+        }
+        if (r.bound) {
+            snprintf(bound, sizeof bound, "\"%s\"", r.bound);
+            snprintf(frac, sizeof frac, "%.6g", r.fraction);
+        }
         if (in_frame(s, n) && s->frame_avg_ms > 0)
             snprintf(share, sizeof share, "%.6g", n->share);
         fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
                 "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
                 "\"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
-                "\"prepare_ms\": %.6g}", i ? "," : "", n->name, n->type, n->backend,
-                n->calls, n->avg_ms, n->min_ms, n->max_ms, share, n->gpu_avg_ms,
-                n->transfer_avg_ms, n->prepare_ms);
+                "\"prepare_ms\": %.6g, \"bytes\": %.0f, \"flops\": %s, \"gbps\": %.6g, "
+                "\"gflops\": %s, \"bound\": %s, \"fraction_of_bound\": %s}",
+                i ? "," : "", n->name, n->type, n->backend, n->calls, n->avg_ms, n->min_ms,
+                n->max_ms, share, n->gpu_avg_ms, n->transfer_avg_ms, n->prepare_ms, n->bytes,
+                flops, r.gbps, gflops, bound, frac);
     }
     fputs("\n  ]\n}\n", f);
 }

@@ -163,6 +163,10 @@ struct ssg_run_node {
     double gpu_avg_ms;      /* over its calls; 0 on cpu */
     double transfer_avg_ms; /* over its calls */
     double prepare_ms;      /* its one prepare() */
+    double bytes;           /* a run's images: every connected input and output once (the
+                               least traffic it can have) */
+    double flops;           /* a run's floating-point operations as the node declares them
+                               (flops_per_pixel, node.h); -1 = not declared */
 };
 
 struct ssg_run_stats {

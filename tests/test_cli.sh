@@ -54,13 +54,13 @@ awk 'NR > 1 && !/^total/ && length($0) != 67 { bad = 1 } END { exit bad }' "$TMP
 [ -s "$TMP/table.err" ] && fail "run printed to stderr: $(head -3 "$TMP/table.err")"
 "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 --out "$TMP/prof" > "$TMP/prof.txt" \
     || fail "profile run"
-grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms$' "$TMP/prof.txt" \
+grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms +GB/s +GFLOP/s +bound +%bound$' "$TMP/prof.txt" \
     || fail "run --frames lost its profile's header"
 grep -qE '^frame +3( +[0-9]+\.[0-9]{2}){3} +100\.0%   \(64x48, [0-9]+ threads, [0-9]+\.[0-9] fps\)$' \
     "$TMP/prof.txt" || fail "the profile lacks its frame row: $(cat "$TMP/prof.txt")"
-grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2}$' \
+grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)$' \
     "$TMP/prof.txt" || fail "the profile lacks the pass ao under the frame"
-grep -qE '^out +write +cpu +1( +[0-9]+\.[0-9]{2}){3} +- +- +[0-9]+\.[0-9]{2}$' "$TMP/prof.txt" \
+grep -qE '^out +write +cpu +1( +[0-9]+\.[0-9]{2}){3} +- +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)$' "$TMP/prof.txt" \
     || fail "the profile lacks the sink out after the frame"
 "$BIN" run graphs/ao_error.graph --size 48x32 --out "$TMP/metrics" > "$TMP/metrics.txt" \
     || fail "metrics run"

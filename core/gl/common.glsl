@@ -85,6 +85,23 @@ float ssg_log_pos(float c)
     return r;
 }
 
+// bilateral_math.h's ssg_normal_factor: the joint filters' normal term of a tap with
+// clamped cosine c, the factor c^p by `squarings` squarings (p = 2^squarings), or, for
+// other powers (squarings < 0), 1 with p ln(c) added to the log-weight e.
+float ssg_normal_factor(float c, float p, int squarings, inout float e)
+{
+    precise float wn = 1.0;
+    if (squarings < 0) {
+        precise float sum = e + p * ssg_log_pos(c);
+        e = sum;
+    } else {
+        wn = c;
+        for (int s = 0; s < squarings; s++)
+            wn *= wn;
+    }
+    return wn;
+}
+
 // The unit normal of normal image t at p, 0 where it is 0 (the CPU filters' setup).
 vec3 ssg_unit_normal(sampler2DArray t, ivec2 p)
 {

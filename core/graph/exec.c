@@ -140,6 +140,27 @@ enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg
     return desc->prepare ? desc->prepare(ctx, params, *consts) : SSG_OK;
 }
 
+static double shape_bytes(const struct ssg_shape *s)
+{
+    return (double)s->width * (double)s->height * (double)s->channels * sizeof(float);
+}
+
+void ssg_node_cost_of(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                      const void *consts, int extra_count, struct ssg_node_cost *cost)
+{
+    cost->bytes = 0.0;
+    for (int i = 0; i < desc->input_count; i++)
+        cost->bytes += shape_bytes(&ctx->in_shape[i]); /* unconnected: 0 channels */
+    for (int i = 0; i < desc->output_count; i++)
+        cost->bytes += shape_bytes(&ctx->out_shape[i]);
+    for (int i = 0; ctx->extra_shape && i < extra_count; i++)
+        cost->bytes += shape_bytes(&ctx->extra_shape[i]);
+    cost->flops = -1.0;
+    if (desc->flops_per_pixel && desc->output_count > 0)
+        cost->flops = desc->flops_per_pixel(consts, ctx->in_shape) *
+                      (double)ctx->out_shape[0].width * (double)ctx->out_shape[0].height;
+}
+
 /* "96x64 with 3 channels", or "unconnected". */
 static void shape_text(int width, int height, int channels, char *buf, size_t len)
 {

@@ -51,6 +51,17 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
                                    const void *consts, const struct ssg_io *io,
                                    enum ssg_backend backend, struct ssg_node_timing *timing);
 
+/* What one run of a node moves and computes, for the profile's rates: the bytes of every
+ * connected input and output image (each read or written once: the least traffic a pass
+ * can have, so the memory bound it gives is a floor) and the flops the node declares
+ * (flops_per_pixel times output 0's pixels; -1 when it declares none). */
+struct ssg_node_cost {
+    double bytes;
+    double flops;
+};
+void ssg_node_cost_of(const struct ssg_node_desc *desc, const struct ssg_node_ctx *ctx,
+                      const void *consts, int extra_count, struct ssg_node_cost *cost);
+
 /* Verifies every image bound in io against the shapes in ctx (in_shape, out_shape,
  * extra_shape): same width, height and channels, unconnected where the shape has none.
  * On a difference reports "node 'ao' (ssao): input 'depth' is 48x32 with 1 channel,

@@ -143,6 +143,13 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
         e = ssg_node_prepare(n->desc, &ctx, n->params, &r->consts[p]);
         prepare_ms = r->prof.rows[p].prepare_ms = ssg_now_ms() - t0;
         r->prepared[p] = 1;
+        if (!e) {
+            struct ssg_node_cost cost;
+            ssg_node_cost_of(n->desc, &ctx, r->consts[p] ? r->consts[p] : n->params,
+                             n->extra_count, &cost);
+            r->prof.rows[p].bytes = cost.bytes;
+            r->prof.rows[p].flops = cost.flops;
+        }
     }
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,

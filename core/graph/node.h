@@ -155,6 +155,13 @@ struct ssg_node_desc {
        run; both backends read these same bytes, so what depends only on parameters and
        shapes is computed here and never twice. Returns SSG_OK or ssg_node_fail(...). */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);
+    /* Optional. Floating-point operations one run does per pixel of output 0 (a multiply,
+       an add, a compare-and-select each count 1; a division or square root 1; the
+       polynomial exp and log as their operations), from the parameters and the input
+       shapes (the kernel's width): the profile divides by the run's time for GFLOP/s and
+       sets it against the machine's peak (bench/peak). An estimate by reading the
+       kernel's inner loop, stated where it is defined; NULL = not declared. */
+    double (*flops_per_pixel)(const void *consts, const struct ssg_shape *in);
     /* The CPU backend. `consts` is what prepare wrote, or the params when consts_size is 0.
        Every bound image has the shape check() gave (the executor verified it), so the
        kernel neither checks shapes nor fails on them; its errors are run-time ones (out

@@ -67,6 +67,8 @@ static int fill_node(struct ssg_run_node *n, const struct ssg_profile *p,
         .gpu_avg_ms = average(row->gpu_sum, row->calls),
         .transfer_avg_ms = average(row->xfer_sum, row->calls),
         .prepare_ms = row->prepare_ms,
+        .bytes = row->bytes,
+        .flops = row->flops,
     };
     return n->name != NULL;
 }

@@ -14,6 +14,7 @@ struct ssg_profile_row {
     double sum, min, max;  /* ms of its runs, prepare excluded */
     double prepare_ms;     /* its one prepare() */
     double gpu_sum, xfer_sum;
+    double bytes, flops;   /* a run's (exec.h, ssg_node_cost); flops -1 = undeclared */
 };
 
 struct ssg_profile {

@@ -227,6 +227,10 @@ enum ssg_err stage_exr(const char *path, const struct ssg_exr_layer *layers, int
     return write_staged(spec, TypeDesc::FLOAT, fill_exr_band, &src, t, diags);
 }
 
+/* zlib level of the PNG preview: a preview, not an archive. Level 1 instead of OpenImageIO's
+   6 writes a 1280x720 frame in ~57 ms instead of ~86, for a file ~1.5x larger. */
+const int PNG_LEVEL = 1;
+
 struct PngSource {
     const struct ssg_image *image;
     enum ssg_tonemap tonemap;
@@ -264,6 +268,7 @@ enum ssg_err stage_png(const char *path, const struct ssg_image *image,
     /* Nothing time- or host-dependent: OpenImageIO writes a tIME chunk only from DateTime. */
     spec.erase_attribute("DateTime");
     spec.erase_attribute("Software");
+    spec.attribute("png:compressionLevel", PNG_LEVEL);
     if (ssg_tmp_create(path, ".png", "image", t, diags))
         return SSG_E_IO;
     return write_staged(spec, TypeDesc::UINT8, fill_png_band, &src, t, diags);

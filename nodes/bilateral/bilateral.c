@@ -125,6 +125,20 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_BILATERAL_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading bilateral_cpu.c: per tap about 15 for the depth
+   and spatial terms and the polynomial exp, 6 for the normal cosine and its squarings
+   (about 14 through a log for other powers), 2 for the weight sum and 2 a channel; taps
+   are size^2, or 2 size when separable. */
+static double bilateral_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_bilateral_consts *c = consts;
+    int ch = in[SSG_BILATERAL_IN_IN].channels + in[SSG_BILATERAL_IN_IN2].channels;
+    int normals = in[SSG_BILATERAL_IN_NORMAL].channels > 0 && c->normal_power > 0;
+    double normal = !normals ? 0.0 : ssg_joint_squarings(c->normal_power) >= 0 ? 6.0 : 14.0;
+    double taps = c->separable ? 2.0 * c->size : (double)c->size * c->size;
+    return 10.0 + ch + taps * (17.0 + normal + 2.0 * ch);
+}
+
 const struct ssg_node_desc ssg_node_bilateral = {
     .name = "bilateral",
     .summary = "geometry-aware bilateral filter (depth and normal weights, full 2D window "
@@ -147,6 +161,7 @@ const struct ssg_node_desc ssg_node_bilateral = {
     .consts_size = sizeof(struct ssg_bilateral_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = bilateral_flops,
     .run_cpu = ssg_bilateral_run_cpu,
     .run_gl = ssg_bilateral_run_gl,
 };

@@ -42,14 +42,7 @@ float weight(ivec2 q, float es, float dc, float kd, vec3 nc)
 #if NORMALS
     vec3 nq = ssg_load3(normal, q);
     c0 = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
-    float c = c0 >= normal_min ? c0 : 1.0;
-    if (squarings < 0) {
-        e += normal_power * ssg_log_pos(c);
-    } else {
-        wn = c;
-        for (int s = 0; s < squarings; s++)
-            wn *= wn;
-    }
+    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
 #endif
     precise float w = ssg_exp_neg(e) * wn;
     w = w >= 1e-30 ? w : 0.0;

@@ -74,13 +74,6 @@ static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int
     }
 }
 
-/* How the normal term is computed, picked once per run. */
-enum normal_mode {
-    NORMAL_OFF = -1,     /* no normal input or normal_power 0 */
-    /* 0..6: normal_power = 2^mode, by mode squarings (the default 16 is 4) */
-    NORMAL_GENERAL = 7,  /* any other power: p ln(c) added to the exponent */
-};
-
 /* Adds tap (dx, dy) with spatial log-weight es to pixels [i0, i1) of the chunk; q points
    at the tap's pixel for chunk index 0 (offset into each plane). `channels` and `mode`
    are constants at each call site, so each variant is its own straight loop. Normal
@@ -97,24 +90,17 @@ add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1,
         float delta = (dq[i] - k->dc[i]) * k->kd[i];
         float e = es - 0.5f * delta * delta;
         float wn = 1.0f, c0 = 1.0f;
-        if (mode != NORMAL_OFF) {
+        if (mode != SSG_NORMAL_OFF) {
             c0 = k->nx[i] * j->nrm[0][q + (size_t)i] + k->ny[i] * j->nrm[1][q + (size_t)i] +
                  k->nz[i] * j->nrm[2][q + (size_t)i];
-            float c = c0 >= cmin ? c0 : 1.0f;
-            if (mode == NORMAL_GENERAL) {
-                e += p * log_pos(c);
-            } else {
-                wn = c;
-                for (int s = 0; s < mode; s++)
-                    wn *= wn;
-            }
+            wn = ssg_normal_factor(c0 >= cmin ? c0 : 1.0f, p, mode, &e);
         }
         /* One float-compare select at a time: GCC does not vectorise a select on a
            mask combined from several comparisons here. */
         float w = exp_neg(e) * wn;
         w = w >= 1e-30f ? w : 0.0f;
         w = dq[i] > 0.0f ? w : 0.0f; /* background lends nothing */
-        if (mode != NORMAL_OFF)
+        if (mode != SSG_NORMAL_OFF)
             w = c0 >= cmin ? w : 0.0f;
         k->wsum[i] += w;
         for (int ch = 0; ch < channels; ch++)
@@ -144,41 +130,27 @@ taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels,
     }
 }
 
-static int normal_mode(const struct job *j)
+/* taps() for one channel count, one straight loop a normal mode. */
+static inline __attribute__((always_inline)) void
+taps_of(const struct job *j, struct chunk *k, int y, int x0, int len, int channels)
 {
-    int p = j->c->normal_power;
-    if (!j->nrm[0] || p <= 0)
-        return NORMAL_OFF;
-    for (int m = 0; m < NORMAL_GENERAL; m++)
-        if (p == 1 << m)
-            return m;
-    return NORMAL_GENERAL;
+    int mode = ssg_normal_mode(j->nrm[0] != NULL, j->c->normal_power);
+#define TAPS(m) taps(j, k, y, x0, len, channels, m)
+    SSG_NORMAL_MODE_SWITCH(mode, TAPS)
+#undef TAPS
 }
 
 /* The hot loop, compiled per instruction set (SSG_VECTOR_CLONES, vector_loops.h). */
 SSG_VECTOR_CLONES
 static void bilateral_add_taps(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
-#define VARIANTS(ch)                                                                    \
-    switch (normal_mode(j)) {                                                          \
-    case NORMAL_OFF: taps(j, k, y, x0, len, ch, NORMAL_OFF); break;                    \
-    case 0: taps(j, k, y, x0, len, ch, 0); break;                                      \
-    case 1: taps(j, k, y, x0, len, ch, 1); break;                                      \
-    case 2: taps(j, k, y, x0, len, ch, 2); break;                                      \
-    case 3: taps(j, k, y, x0, len, ch, 3); break;                                      \
-    case 4: taps(j, k, y, x0, len, ch, 4); break;                                      \
-    case 5: taps(j, k, y, x0, len, ch, 5); break;                                      \
-    case 6: taps(j, k, y, x0, len, ch, 6); break;                                      \
-    default: taps(j, k, y, x0, len, ch, NORMAL_GENERAL); break;                        \
-    }
     switch (j->channels) {
-    case 1: VARIANTS(1) break;
-    case 2: VARIANTS(2) break;
-    case 3: VARIANTS(3) break;
-    case 4: VARIANTS(4) break;
-    default: VARIANTS(6) break;
+    case 1: taps_of(j, k, y, x0, len, 1); break;
+    case 2: taps_of(j, k, y, x0, len, 2); break;
+    case 3: taps_of(j, k, y, x0, len, 3); break;
+    case 4: taps_of(j, k, y, x0, len, 4); break;
+    default: taps_of(j, k, y, x0, len, 6); break;
     }
-#undef VARIANTS
 }
 
 static void finish_chunk(const struct job *j, const struct chunk *k, int y, int x0, int len)

@@ -6,16 +6,8 @@
 #include <stdio.h>
 
 #include "bilateral.h"
+#include "common/joint_weights.h"
 #include "gl/gl.h"
-
-/* Squarings that make normal_power (a power of two up to 64), else -1 (p ln c). */
-static int squarings(int power)
-{
-    for (int m = 0; m < 7; m++)
-        if (power == 1 << m)
-            return m;
-    return -1;
-}
 
 static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
                      const struct ssg_image *src2, struct ssg_image *dst,
@@ -51,7 +43,7 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_int(&p, "radius", c->radius);
     ssg_gl_int(&p, "size", c->size);
     ssg_gl_float(&p, "depth_scale", c->depth_scale);
-    ssg_gl_int(&p, "squarings", squarings(c->normal_power));
+    ssg_gl_int(&p, "squarings", ssg_joint_squarings(c->normal_power));
     ssg_gl_float(&p, "normal_power", (float)c->normal_power);
     ssg_gl_float(&p, "normal_min", c->normal_min);
     if (!tmp) {

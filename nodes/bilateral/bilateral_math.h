@@ -10,6 +10,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "common/joint_weights.h"
+
 /* e^x for x <= 0, clamped at -80 (weights below 1.8e-35 are 0 for every purpose and stay
    normal floats). x = k ln2 + g with |g| <= ln2 / 2; e^g by its Taylor series to g^6
    (error below 1.3e-7 relative), 2^k by building the float's exponent bits. */
@@ -45,5 +47,48 @@ static inline float log_pos(float c)
                s2 * (1.0f / 9.0f)))));
     return (float)e * 0.693147180559945309f + lm;
 }
+
+/* How the joint filters compute the normal weight c^p, picked once per run: 0..6 =
+   p = 2^mode, by mode squarings of c (the default 16 is 4); SSG_NORMAL_GENERAL = any other
+   power, p ln(c) added to the log-weight; SSG_NORMAL_OFF = no normals or p = 0. */
+enum ssg_normal_mode { SSG_NORMAL_OFF = -1, SSG_NORMAL_GENERAL = 7 };
+
+static inline int ssg_normal_mode(int have_normals, int power)
+{
+    int m = ssg_joint_squarings(power);
+    if (!have_normals || power <= 0)
+        return SSG_NORMAL_OFF;
+    return m >= 0 ? m : SSG_NORMAL_GENERAL;
+}
+
+/* The normal term of one tap with clamped cosine c: the factor c^p by squarings, or 1
+   with p ln(c) added to the log-weight *e (mode a constant at each call site). */
+static inline __attribute__((always_inline)) float ssg_normal_factor(float c, float p,
+                                                                    int mode, float *e)
+{
+    float wn = 1.0f;
+    if (mode == SSG_NORMAL_GENERAL) {
+        *e += p * log_pos(c);
+    } else {
+        wn = c;
+        for (int s = 0; s < mode; s++)
+            wn *= wn;
+    }
+    return wn;
+}
+
+/* CALL(m) with m the constant of each normal mode: one straight loop a mode. */
+#define SSG_NORMAL_MODE_SWITCH(mode, CALL)                                                 \
+    switch (mode) {                                                                        \
+    case SSG_NORMAL_OFF: CALL(SSG_NORMAL_OFF); break;                                      \
+    case 0: CALL(0); break;                                                                \
+    case 1: CALL(1); break;                                                                \
+    case 2: CALL(2); break;                                                                \
+    case 3: CALL(3); break;                                                                \
+    case 4: CALL(4); break;                                                                \
+    case 5: CALL(5); break;                                                                \
+    case 6: CALL(6); break;                                                                \
+    default: CALL(SSG_NORMAL_GENERAL); break;                                              \
+    }
 
 #endif

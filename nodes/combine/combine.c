@@ -91,6 +91,14 @@ static const struct ssg_param_desc param_table[] = {
              "albedo x the pixel's own radiance"},
 };
 
+/* Flops per pixel (node.h): about 6 a colour channel (the light sum, the albedo product,
+   modulation and ambient terms), whichever inputs are bound. */
+static double combine_flops(const void *consts, const struct ssg_shape *in)
+{
+    (void)consts, (void)in;
+    return 18.0;
+}
+
 const struct ssg_node_desc ssg_node_combine = {
     .name = "combine",
     .summary = "final shading: light darkened by AO or the SSDO modulation, plus indirect",
@@ -116,6 +124,7 @@ const struct ssg_node_desc ssg_node_combine = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(param_table, struct ssg_combine_params),
     .check = check,
+    .flops_per_pixel = combine_flops,
     .run_cpu = ssg_combine_run_cpu,
     .run_gl = ssg_combine_run_gl,
 };

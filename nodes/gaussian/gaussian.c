@@ -82,6 +82,13 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_GAUSSIAN_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h): two passes of size taps, a multiply and an add a channel. */
+static double gaussian_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_gaussian_consts *c = consts;
+    return 2.0 * (2.0 * c->radius + 1.0) * 2.0 * in[SSG_GAUSSIAN_IN_IN].channels;
+}
+
 const struct ssg_node_desc ssg_node_gaussian = {
     .name = "gaussian",
     .summary = "separable Gaussian blur (the plain-blur baseline)",
@@ -96,6 +103,7 @@ const struct ssg_node_desc ssg_node_gaussian = {
     .consts_size = sizeof(struct ssg_gaussian_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = gaussian_flops,
     .run_cpu = ssg_gaussian_run_cpu,
     .run_gl = ssg_gaussian_run_gl,
 };

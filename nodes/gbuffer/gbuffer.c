@@ -73,6 +73,15 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_GBUFFER_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading gbuffer_cpu.c, for one light: about 10 for the
+   ray, 35 for the normal, frame and hit point, 35 a light (Lambert and Blinn-Phong), 25
+   for the environment and the stores' products. Embree's traversal is not counted. */
+static double gbuffer_flops(const void *consts, const struct ssg_shape *in)
+{
+    (void)consts, (void)in;
+    return 105.0;
+}
+
 const struct ssg_node_desc ssg_node_gbuffer = {
     .name = "gbuffer",
     .summary = "view-space G-buffer and direct light by ray casting the scene (Embree)",
@@ -91,6 +100,7 @@ const struct ssg_node_desc ssg_node_gbuffer = {
     .consts_size = sizeof(struct ssg_gbuffer_consts),
     .needs_scene = 1,
     .prepare = prepare,
+    .flops_per_pixel = gbuffer_flops,
     .run_cpu = ssg_gbuffer_run_cpu,
     .run_gl = ssg_gbuffer_run_gl,
 };

@@ -156,6 +156,15 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_GTAO_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading gtao_cpu.c: per slice about 70 (its frame and the
+   arc integral's polynomials), per step of each side about 22, about 40 per pixel. */
+static double gtao_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_gtao_consts *c = consts;
+    (void)in;
+    return 40.0 + c->p.slices * (70.0 + 2.0 * 22.0 * c->p.steps);
+}
+
 const struct ssg_node_desc ssg_node_gtao = {
     .name = "gtao",
     .summary = "ground-truth (horizon-based, cosine-weighted) ambient occlusion",
@@ -183,6 +192,7 @@ const struct ssg_node_desc ssg_node_gtao = {
     .consts_size = sizeof(struct ssg_gtao_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = gtao_flops,
     .run_cpu = ssg_gtao_run_cpu,
     .run_gl = ssg_gtao_run_gl,
 };

@@ -217,6 +217,16 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_HBAO_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading hbao_cpu.c: per direction about 20 for its step
+   and tangent, per step about 25 (place, index, the horizon's tangent, falloff, max),
+   about 40 per pixel for its frame and the finish. */
+static double hbao_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_hbao_consts *c = consts;
+    (void)in;
+    return 40.0 + c->p.directions * (20.0 + 25.0 * c->p.steps);
+}
+
 const struct ssg_node_desc ssg_node_hbao = {
     .name = "hbao",
     .summary = "horizon-based screen-space ambient occlusion",
@@ -240,6 +250,7 @@ const struct ssg_node_desc ssg_node_hbao = {
     .consts_size = sizeof(struct ssg_hbao_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = hbao_flops,
     .run_cpu = ssg_hbao_run_cpu,
     .run_gl = ssg_hbao_run_gl,
 };

@@ -151,6 +151,15 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_SSAO_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading ssao_cpu.c: per kernel sample about 38 (placing
+   and projecting it: three 4-term affine forms, a division, rounding and bounds; the
+   depth test, range check and sum), about 60 per pixel for its frame and the finish. */
+static double ssao_flops(const void *consts, const struct ssg_shape *in)
+{
+    (void)consts;
+    return 60.0 + 38.0 * in[SSG_SSAO_IN_KERNEL].width;
+}
+
 const struct ssg_node_desc ssg_node_ssao = {
     .name = "ssao",
     .summary = "screen-space ambient occlusion: normal hemisphere, normal-free sphere or "
@@ -182,6 +191,7 @@ const struct ssg_node_desc ssg_node_ssao = {
     .consts_size = sizeof(struct ssg_ssao_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = ssao_flops,
     .run_cpu = ssg_ssao_run_cpu,
     .run_gl = ssg_ssao_run_gl,
 };

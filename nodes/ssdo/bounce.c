@@ -57,6 +57,14 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_BOUNCE_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h): ssdo's sampling without the lights, about 40 a sample and 100
+   a pixel (ssdo.c's count). */
+static double bounce_flops(const void *consts, const struct ssg_shape *in)
+{
+    (void)consts;
+    return 100.0 + 40.0 * in[SSG_SSDO_IN_KERNEL].width;
+}
+
 const struct ssg_node_desc ssg_node_bounce = {
     .name = "bounce",
     .summary = "one screen-space indirect bounce (second pass of two-step SSDO)",
@@ -76,6 +84,7 @@ const struct ssg_node_desc ssg_node_bounce = {
     .consts_size = sizeof(struct ssg_bounce_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = bounce_flops,
     .run_cpu = ssg_bounce_run_cpu,
     .run_gl = ssg_bounce_run_gl,
 };

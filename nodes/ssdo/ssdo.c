@@ -203,6 +203,18 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_SSDO_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading ssdo_cpu.c and ssdo_sampling.h: per kernel sample
+   about 45 (placing and the depth test as ssao, the environment weight, the survivors'
+   range check and bounce spread over all samples) and 10 a light for its lobe; per pixel
+   about 120 for the frame, the finish and the bounce, and 20 a light. A probe adds about
+   30 a sample for its cube lookup. */
+static double ssdo_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_ssdo_consts *c = consts;
+    double per_sample = 45.0 + 10.0 * c->light_count + (c->env == SSG_SSDO_ENV_CUBE ? 30 : 0);
+    return 120.0 + 20.0 * c->light_count + per_sample * in[SSG_SSDO_IN_KERNEL].width;
+}
+
 const struct ssg_node_desc ssg_node_ssdo = {
     .name = "ssdo",
     .summary = "screen-space directional occlusion (modulation or radiance) with one "
@@ -234,6 +246,7 @@ const struct ssg_node_desc ssg_node_ssdo = {
     .consts_size = sizeof(struct ssg_ssdo_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = ssdo_flops,
     .run_cpu = ssg_ssdo_run_cpu,
     .run_gl = ssg_ssdo_run_gl,
 };

@@ -103,6 +103,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->depth_scale = w.depth_scale;
     c->normal_power = (float)p->normal_power;
     c->normal_min = w.normal_min;
+    c->squarings = w.squarings;
     return SSG_OK;
 }
 
@@ -145,6 +146,19 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_UPSAMPLE_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading upsample_cpu.c: per tap as bilateral's (about 17,
+   6 more for the normal term by squarings or 14 through a log), and 3 a channel (sums
+   relative to the centre tap); size^2 low-resolution taps a full-resolution pixel. */
+static double upsample_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_upsample_consts *c = consts;
+    int ch = in[SSG_UPSAMPLE_IN_IN].channels + in[SSG_UPSAMPLE_IN_IN2].channels;
+    int normals = in[SSG_UPSAMPLE_IN_LOW_NORMAL].channels > 0 && c->normal_power > 0;
+    double normal = !normals ? 0.0 : c->squarings >= 0 ? 6.0 : 14.0;
+    double size = 2.0 * c->radius + 1.0;
+    return 10.0 + 2.0 * ch + size * size * (17.0 + normal + 3.0 * ch);
+}
+
 const struct ssg_node_desc ssg_node_upsample = {
     .name = "upsample",
     .summary = "joint bilateral upsampling guided by full-resolution depth and normals",
@@ -167,6 +181,7 @@ const struct ssg_node_desc ssg_node_upsample = {
     .consts_size = sizeof(struct ssg_upsample_consts),
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = upsample_flops,
     .run_cpu = ssg_upsample_run_cpu,
     .run_gl = ssg_upsample_run_gl,
 };

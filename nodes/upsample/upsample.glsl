@@ -15,6 +15,7 @@ uniform int factor, radius;
 uniform float spatial_k;   // -0.5 / sigma_spatial^2
 uniform float depth_scale; // 1 / sigma_depth
 uniform float normal_power, normal_min;
+uniform int squarings;       // normal weight c^(2^squarings); -1: p ln(c) in the exponent
 
 #if IN_CH == 3
 #define VALUE vec3
@@ -34,13 +35,14 @@ float weight(ivec2 q, float es, float dp, float kd, vec3 nc)
     precise float delta = (rd - dp) * kd;
     precise float e = es - 0.5 * delta * delta;
     float c0 = 1.0;
+    precise float wn = 1.0;
 #if NORMALS
     vec3 nq = ssg_load3(low_normal, q);
     precise float cp = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
     c0 = cp;
-    e += normal_power * ssg_log_pos(c0 >= normal_min ? c0 : 1.0);
+    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
 #endif
-    float w = ssg_exp_neg(e);
+    precise float w = ssg_exp_neg(e) * wn;
     w = w >= 1e-30 ? w : 0.0;
     w = rd > 0.0 ? w : 0.0; // background lends nothing
 #if NORMALS

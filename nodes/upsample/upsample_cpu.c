@@ -4,8 +4,10 @@
  * into chunks, whose pixels are sorted by phase (x mod k, see struct chunk); for each
  * low-res tap row the part the chunk reaches is copied once into small arrays padded
  * with background, then for each tap column and phase one straight loop over contiguous
- * data adds the weighted values into per-pixel sums. The weights multiply by adding their
- * logarithms and taking one polynomial exp() (bilateral_math.h); each pixel's sums are
+ * data adds the weighted values into per-pixel sums. The spatial and depth weights multiply
+ * by adding their logarithms and taking one polynomial exp() (bilateral_math.h), the normal
+ * weight c^p by squarings when p is a power of two (the default 16: 4 squarings instead of
+ * a log and a multiply in the exponent; as bilateral does); each pixel's sums are
  * independent lanes in a fixed order, so the result does not depend on the threads or the
  * vector width. The optional second image `in2` is carried as further channels (after
  * those of `in`) through the same loops: each weight is computed once and applied to all
@@ -108,11 +110,11 @@ static void fill_row(const struct job *j, struct chunk *k, int qy, int x0, int n
 }
 
 /* Adds one tap to the n pixels of one phase (slots i0 ..): row column q0 + t for slot
-   i0 + t, spatial log-weight es. `channels` and `normals` are constants at each call
-   site, so each variant is its own straight loop. */
+   i0 + t, spatial log-weight es. `channels` and `mode` are constants at each call site,
+   so each variant is its own straight loop. */
 static inline __attribute__((always_inline)) void
 add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, float es,
-        int channels, int normals)
+        int channels, int mode)
 {
     const float p = j->c->normal_power, cmin = j->c->normal_min;
     const float *restrict rd = k->rd + q0;
@@ -120,17 +122,16 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
         int i = i0 + t;
         float delta = (rd[t] - k->dp[i]) * k->kd[i];
         float e = es - 0.5f * delta * delta;
-        float c0 = 1.0f;
-        if (normals) {
+        float c0 = 1.0f, wn = 1.0f;
+        if (mode != SSG_NORMAL_OFF) {
             c0 = k->nx[i] * k->rn[0][q0 + t] + k->ny[i] * k->rn[1][q0 + t] +
                  k->nz[i] * k->rn[2][q0 + t];
-            float c = c0 >= cmin ? c0 : 1.0f;
-            e += p * log_pos(c);
+            wn = ssg_normal_factor(c0 >= cmin ? c0 : 1.0f, p, mode, &e);
         }
-        float w = exp_neg(e);
+        float w = exp_neg(e) * wn;
         w = w >= 1e-30f ? w : 0.0f;
         w = rd[t] > 0.0f ? w : 0.0f; /* background lends nothing */
-        if (normals)
+        if (mode != SSG_NORMAL_OFF)
             w = c0 >= cmin ? w : 0.0f;
         k->wsum[i] += w;
         for (int ch = 0; ch < channels; ch++)
@@ -138,14 +139,21 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
     }
 }
 
-/* One straight loop per channel count (in's plus in2's) and normal term. */
-#define TAP(nch)                                                                          \
-    (normals ? add_tap(j, k, i0, n, q0, es, nch, 1) : add_tap(j, k, i0, n, q0, es, nch, 0))
+/* add_tap for one channel count (in's plus in2's), one straight loop a normal mode. */
+static inline __attribute__((always_inline)) void
+taps_of(const struct job *j, struct chunk *k, int i0, int n, int q0, float es, int channels,
+        int mode)
+{
+#define TAP(m) add_tap(j, k, i0, n, q0, es, channels, m)
+    SSG_NORMAL_MODE_SWITCH(mode, TAP)
+#undef TAP
+}
 
 SSG_VECTOR_CLONES
 static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x0)
 {
-    const int r = j->c->radius, ly = y / j->k, normals = j->lnrm[0] && j->c->normal_power > 0;
+    const int r = j->c->radius, ly = y / j->k;
+    const int mode = ssg_normal_mode(j->lnrm[0] != NULL, (int)j->c->normal_power);
     const float ks = j->c->spatial_k, v = ((float)y + 0.5f) / (float)j->k - 0.5f;
     for (int dy = -r; dy <= r; dy++) {
         int qy = ly + dy;
@@ -160,16 +168,15 @@ static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x
                 float es = ks * ex * ex + ey;
                 int i0 = m * k->per_phase, n = k->count[m], q0 = r + dx;
                 switch (j->channels) {
-                case 1: TAP(1); break;
-                case 2: TAP(2); break;
-                case 3: TAP(3); break;
-                case 4: TAP(4); break;
-                default: TAP(6); break;
+                case 1: taps_of(j, k, i0, n, q0, es, 1, mode); break;
+                case 2: taps_of(j, k, i0, n, q0, es, 2, mode); break;
+                case 3: taps_of(j, k, i0, n, q0, es, 3, mode); break;
+                case 4: taps_of(j, k, i0, n, q0, es, 4, mode); break;
+                default: taps_of(j, k, i0, n, q0, es, 6, mode); break;
                 }
             }
     }
 }
-#undef TAP
 
 /* No tap had weight: the low-res pixel of closest depth among the taps (first in tap
    order on ties), or the centre tap when all are background. */
