@@ -210,6 +210,13 @@ expect_exit 0 "^frame +3 " "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 
     --out "$TMP/frames3" --profile-json "$TMP/frames3/profile.json"
 "$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/frames1" --quiet || fail "one frame run"
 cmp -s "$TMP/frames1/ssao.exr" "$TMP/frames3/ssao.exr" || fail "--frames 3 changed the image"
+# The same where a node keeps working memory between frames (the separable filter's
+# scratch image, node.h's ssg_node_scratch).
+for f in 1 3; do
+    "$BIN" run graphs/ssdo.graph --size 48x32 --frames $f --out "$TMP/sframes$f" --quiet \
+        || fail "ssdo.graph --frames $f"
+done
+cmp -s "$TMP/sframes1/ssdo.exr" "$TMP/sframes3/ssdo.exr" || fail "--frames 3 changed ssdo.graph"
 python3 - "$TMP/frames3/profile.json" <<'PY' || fail "profile.json is wrong"
 import json, sys
 p = json.load(open(sys.argv[1]))

@@ -140,6 +140,30 @@ enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg
     return desc->prepare ? desc->prepare(ctx, params, *consts) : SSG_OK;
 }
 
+/* The scratch of runs without a slot of their own (node.h): one block a thread, kept for
+   the process (reachable through the thread's storage, so no leak checker minds). */
+static _Thread_local struct ssg_scratch thread_scratch;
+
+void *ssg_node_scratch(const struct ssg_node_ctx *ctx, size_t bytes)
+{
+    struct ssg_scratch *s = ctx->scratch ? ctx->scratch : &thread_scratch;
+    if (s->data && s->bytes >= bytes)
+        return s->data;
+    size_t rounded = (bytes + 63) / 64 * 64; /* aligned_alloc wants a multiple */
+    void *p = aligned_alloc(64, rounded ? rounded : 64);
+    if (!p)
+        return NULL;
+    free(s->data);
+    *s = (struct ssg_scratch){p, rounded};
+    return p;
+}
+
+void ssg_scratch_free(struct ssg_scratch *s)
+{
+    free(s->data);
+    *s = (struct ssg_scratch){0};
+}
+
 static double shape_bytes(const struct ssg_shape *s)
 {
     return (double)s->width * (double)s->height * (double)s->channels * sizeof(float);

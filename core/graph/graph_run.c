@@ -22,6 +22,8 @@ struct run {
     struct ssg_diags *diags;
     struct ssg_node_timing *t; /* per run position, of the last frame */
     void **consts;             /* per run position: what its prepare() made, once */
+    struct ssg_scratch *scratch; /* per run position: its working memory, kept between
+                                    frames (node.h) */
     unsigned char *prepared;   /* per run position: 1 once prepare() ran (a sink runs in
                                   the last frame only, so not always in frame 0) */
     struct ssg_profile prof;   /* per run position */
@@ -136,7 +138,7 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .scene = g->scene, .out_dir = out_dir(r), .diags = r->diags,
                                .metrics = &r->metrics, .in_shape = n->in_shape,
                                .out_shape = n->out_shape, .extra_shape = extra_shape,
-                               .run = r->opt};
+                               .run = r->opt, .scratch = &r->scratch[p]};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
@@ -181,8 +183,9 @@ static int run_init(struct run *r)
     r->pool = ssg_pool_create();
     r->t = calloc((size_t)count, sizeof *r->t);
     r->consts = calloc((size_t)count, sizeof *r->consts);
+    r->scratch = calloc((size_t)count, sizeof *r->scratch);
     r->prepared = calloc((size_t)count, 1);
-    if (!r->pool || !r->t || !r->consts || !r->prepared ||
+    if (!r->pool || !r->t || !r->consts || !r->scratch || !r->prepared ||
         !ssg_profile_init(&r->prof, g->order_count))
         return 0;
     for (int p = 0; p < g->order_count; p++) {
@@ -202,7 +205,10 @@ static void run_free(struct run *r)
     ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
     for (int p = 0; r->consts && p < r->g->order_count; p++)
         free(r->consts[p]);
+    for (int p = 0; r->scratch && p < r->g->order_count; p++)
+        ssg_scratch_free(&r->scratch[p]);
     free(r->consts);
+    free(r->scratch);
     free(r->prepared);
     free(r->t);
     ssg_profile_free(&r->prof);

@@ -101,7 +101,26 @@ struct ssg_node_ctx {
     const struct ssg_shape *extra_shape;
     const struct ssg_run_options *run; /* the graph run's options (its progress callback);
                                           NULL = a single-node run, nothing reported */
+    struct ssg_scratch *scratch;   /* the node's working memory, kept between its runs
+                                      (ssg_node_scratch); NULL = the thread's */
 };
+
+/* Working memory a node keeps from one run to its next: a separable pass's intermediate
+ * image, interleaved records. The runtime owns it: a graph run keeps one block a node for
+ * all its frames and frees it at the end, so a frame touches no fresh pages (a fresh page
+ * costs a page fault on first write, which on the development VM made a 59 MB scratch
+ * buffer cost more than the pass it served). */
+struct ssg_scratch {
+    void *data;   /* 64-byte aligned */
+    size_t bytes;
+};
+/* At least `bytes` of the node's scratch (contents undefined), valid until the node's next
+ * call or the end of its run; NULL on out of memory. A ctx without a slot (a node run by
+ * hand: tests, micro-benchmarks) gets the calling thread's, likewise kept for its next
+ * run. Call from the node's thread, not inside row bands. */
+void *ssg_node_scratch(const struct ssg_node_ctx *ctx, size_t bytes);
+/* Frees a slot's block (a runtime that kept one for a node). */
+void ssg_scratch_free(struct ssg_scratch *s);
 
 /* Reports a named scalar result of this node (e.g. "rmse"); returned in the run's stats
  * and written to <out>/metrics.json. Call from the node's thread, not inside row bands. */

@@ -187,11 +187,12 @@ static void band(void *user, int y0, int y1)
    filter restricted to its axis (the spatial Gaussian factors exactly; the depth and
    normal terms are taken against each pass's own centre pixel). Each pass is the full
    kernel with a one-row or one-column window, so it shares its vectorised loops, and the
-   second pass starts only when the first has finished every band. */
+   second pass starts only when the first has finished every band. The scratch image is
+   the node's (ssg_node_scratch), kept from frame to frame. */
 static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
 {
     size_t plane = (size_t)j->w * (size_t)j->h;
-    float *tmp = malloc(sizeof(float) * plane * (size_t)j->channels);
+    float *tmp = ssg_node_scratch(ctx, sizeof(float) * plane * (size_t)j->channels);
     if (!tmp)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the "
                              "separable pass");
@@ -204,7 +205,6 @@ static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
     }
     ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &h);
     ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &v);
-    free(tmp);
     return SSG_OK;
 }
 
