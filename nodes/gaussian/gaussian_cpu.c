@@ -75,20 +75,18 @@ enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     struct job j = {.c = c, .w = in->width, .h = in->height};
     size_t plane = (size_t)j.w * (size_t)j.h;
     size_t bands = (size_t)(j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
-    j.tmp = malloc(plane * sizeof *j.tmp);
-    j.scratch = malloc(bands * (size_t)(j.w + 2 * c->radius) * sizeof *j.scratch);
-    if (!j.tmp || !j.scratch) {
-        free(j.tmp);
-        free(j.scratch);
+    /* the intermediate image, then the bands' padded rows, in the node's scratch (node.h):
+       kept between frames, no fresh pages each run */
+    size_t rows = bands * (size_t)(j.w + 2 * c->radius);
+    j.tmp = ssg_node_scratch(ctx, (plane + rows) * sizeof *j.tmp);
+    if (!j.tmp)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the intermediate image");
-    }
+    j.scratch = j.tmp + plane;
     for (int ch = 0; ch < in->channels; ch++) {
         j.src = ssg_image_plane(in, ch);
         j.dst = ssg_image_plane(out, ch);
         ssg_parallel_rows(j.h, ROWS_PER_BAND, horizontal, &j);
         ssg_parallel_rows(j.h, ROWS_PER_BAND, vertical, &j);
     }
-    free(j.tmp);
-    free(j.scratch);
     return SSG_OK;
 }

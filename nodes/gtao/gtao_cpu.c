@@ -478,7 +478,8 @@ enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
     j.pw = j.w + 2;
-    j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
+    /* the node's scratch (node.h): kept between frames, no fresh pages each run */
+    j.padded = ssg_node_scratch(ctx, (size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
     if (!j.padded)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
     float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
@@ -486,6 +487,5 @@ enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.padded[x] = last[x] = INFINITY;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows_pad, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
-    free(j.padded);
     return SSG_OK;
 }

@@ -522,7 +522,8 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     if (!tables)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the pattern tables");
     j.pw = j.w + 2;
-    j.padded = malloc((size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
+    /* the node's scratch (node.h): kept between frames, no fresh pages each run */
+    j.padded = ssg_node_scratch(ctx, (size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
     if (!j.padded) {
         free(tables);
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
@@ -532,7 +533,6 @@ enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.padded[x] = last[x] = INFINITY;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, ssg_hbao_rows_pad, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
-    free(j.padded);
     free(tables);
     return SSG_OK;
 }
