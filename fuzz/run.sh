@@ -28,8 +28,10 @@ for t in $targets; do
         [ -f "$s" ] && cp "$s" "$seeds/"
     done < fuzz/seeds_$t.txt
     echo "fuzz_$t: $secs s"
-    ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
-    LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
+    # intercept_tls_get_addr=0: see SSG_SANITIZER_ENV in CMakeLists.txt (LeakSanitizer's
+    # tracer and the dynamic TLS of the dlopen'd OpenImageIO module).
+    ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0 \
+    LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:intercept_tls_get_addr=0 \
         build-fuzz/fuzz_$t -max_total_time="$secs" -timeout=20 -rss_limit_mb=4096 \
         -malloc_limit_mb=4096 -max_len=$max_len -print_final_stats=1 \
         -artifact_prefix=build-fuzz/findings/$t/ build-fuzz/corpus/$t "$seeds" \
