@@ -3,8 +3,8 @@
  * commit) and the tone curves, which need no OpenImageIO, are here.
  *
  * The module is looked for in $SSGRAPH_MODULE_DIR alone when that is set, else next to
- * the program or library that holds this code, in the build tree it was built in, and in
- * the installed module directory. A process opens it at most once (pthread_once), so concurrent first
+ * the program or library that holds this code, next to the running program, in the build
+ * tree it was built in, and in the installed module directory. A process opens it at most once (pthread_once), so concurrent first
  * calls are safe; a failure to open it is remembered and reported by every call. */
 #define _GNU_SOURCE /* dladdr */
 #include <dlfcn.h>
@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "io/oiio_module.h"
 #include "io/tonemap.h"
@@ -38,15 +39,35 @@ static pthread_once_t module_once = PTHREAD_ONCE_INIT;
 static const struct ssg_oiio_api *module_api;
 static char module_why[1024];
 
-/* The directory of the program or shared library this code was linked into. */
+/* dir = the directory part of path ("" when it has none); path may be dir itself. */
+static void dir_of(const char *path, char *dir, size_t len)
+{
+    if (path != dir)
+        snprintf(dir, len, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        *slash = '\0';
+    else
+        dir[0] = '\0';
+}
+
+/* The directory of the program or shared library this code was linked into, as the
+   dynamic linker names it: for the program, the name it was started by, which has no
+   directory when a shell found it on PATH (exe_dir covers that case). */
 static void own_dir(char *dir, size_t len)
 {
     Dl_info info;
     dir[0] = '\0';
-    if (!dladdr((void *)own_dir, &info) || !info.dli_fname || !strchr(info.dli_fname, '/'))
-        return;
-    snprintf(dir, len, "%s", info.dli_fname);
-    *strrchr(dir, '/') = '\0';
+    if (dladdr((void *)own_dir, &info) && info.dli_fname)
+        dir_of(info.dli_fname, dir, len);
+}
+
+/* The running program's directory, symbolic links resolved (/proc/self/exe). */
+static void exe_dir(char *dir, size_t len)
+{
+    ssize_t n = readlink("/proc/self/exe", dir, len - 1);
+    dir[n > 0 ? n : 0] = '\0';
+    dir_of(dir, dir, len);
 }
 
 /* Adds "; " and a formatted reason to module_why (cut at its size: it is a message). */
@@ -102,9 +123,10 @@ static void open_module(void)
             add_why("%s", chosen);
         return;
     }
-    char mine[4096];
+    char mine[4096], exe[4096];
     own_dir(mine, sizeof mine);
-    const char *dirs[] = {mine, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
+    exe_dir(exe, sizeof exe);
+    const char *dirs[] = {mine, exe, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
     for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; i++)
         if (try_dir(dirs[i]))
             return;
