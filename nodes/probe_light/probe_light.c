@@ -191,6 +191,17 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_PROBE_LIGHT_OUTPUTS, "one entry a port enumerator");
 
+/* Flops per pixel (node.h), by reading probe_light_cpu.c: per light about 15 for the
+   cosine and the sums, 45 more with shadow maps (the normal offset, the light-space
+   projection, the jitter, the slope-scaled depth test); about 20 a pixel to store. Lights
+   behind a whole chunk are skipped, so this counts every light: an upper bound. */
+static double probe_light_flops(const void *consts, const struct ssg_shape *in)
+{
+    const struct ssg_probe_light_consts *c = consts;
+    (void)in;
+    return 20.0 + c->count * (15.0 + (c->res > 0 ? 45.0 : 0.0));
+}
+
 const struct ssg_node_desc ssg_node_probe_light = {
     .name = "probe_light",
     .summary = "hybrid AO global part: a light list through its shadow maps (Knuth/Kohlhammer)",
@@ -213,6 +224,7 @@ const struct ssg_node_desc ssg_node_probe_light = {
     .needs_scene = 1,
     .check = check,
     .prepare = prepare,
+    .flops_per_pixel = probe_light_flops,
     .run_cpu = ssg_probe_light_run_cpu,
     .run_gl = ssg_probe_light_run_gl,
 };
