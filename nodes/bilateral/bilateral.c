@@ -125,18 +125,16 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_BILATERAL_OUTPUTS, "one entry a port enumerator");
 
-/* Flops per pixel (node.h), by reading bilateral_cpu.c: per tap about 15 for the depth
-   and spatial terms and the polynomial exp, 6 for the normal cosine and its squarings
-   (about 14 through a log for other powers), 2 for the weight sum and 2 a channel; taps
-   are size^2, or 2 size when separable. */
+/* Flops per pixel (node.h), by reading bilateral_cpu.c: per tap the weight
+   (ssg_joint_tap_flops) and 2 a channel; taps are size^2, or 2 size when separable. */
 static double bilateral_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_bilateral_consts *c = consts;
     int ch = in[SSG_BILATERAL_IN_IN].channels + in[SSG_BILATERAL_IN_IN2].channels;
-    int normals = in[SSG_BILATERAL_IN_NORMAL].channels > 0 && c->normal_power > 0;
-    double normal = !normals ? 0.0 : ssg_joint_squarings(c->normal_power) >= 0 ? 6.0 : 14.0;
+    double weight = ssg_joint_tap_flops(in[SSG_BILATERAL_IN_NORMAL].channels > 0,
+                                        c->normal_power);
     double taps = c->separable ? 2.0 * c->size : (double)c->size * c->size;
-    return 10.0 + ch + taps * (17.0 + normal + 2.0 * ch);
+    return 10.0 + ch + taps * (weight + 2.0 * ch);
 }
 
 const struct ssg_node_desc ssg_node_bilateral = {

@@ -12,18 +12,28 @@ struct ssg_joint_weights {
     float spatial_k;   /* -0.5 / sigma_spatial^2: ln of the spatial weight per px^2 */
     float depth_scale; /* 1 / sigma_depth */
     float normal_min;  /* cosines below this weigh c^normal_power < 1e-30: 0 */
-    int squarings;     /* normal_power = 2^squarings (1 to 64): c^p by that many squarings
-                          of c, cheaper than exp(p ln c) and exact to an ulp or two; -1 =
-                          any other power, through p ln(c) added to the exponent */
 };
 
-/* The squarings that make `power` (a power of two up to 64), else -1. */
+/* The squarings that make `power` (a power of two up to 64), else -1: c^p by that many
+   squarings of c is cheaper than exp(p ln c) and exact to an ulp or two; any other power
+   goes through p ln(c) added to the exponent. */
 static inline int ssg_joint_squarings(int power)
 {
     for (int m = 0; m < 7; m++)
         if (power == 1 << m)
             return m;
     return -1;
+}
+
+/* Flops of one tap's weight, for the filters' flops_per_pixel (node.h), by reading
+   bilateral_cpu.c and upsample_cpu.c: about 17 for the depth and spatial terms, the
+   polynomial exp and the weight sum; with normals 6 more for the cosine and its squarings,
+   or 14 through a log for other powers. The channels' sums are the caller's. */
+static inline double ssg_joint_tap_flops(int normals, int power)
+{
+    if (!normals || power <= 0)
+        return 17.0;
+    return 17.0 + (ssg_joint_squarings(power) >= 0 ? 6.0 : 14.0);
 }
 
 /* Fills w from the filter's parameters (sigma_spatial 0 = size / 3); 0 when they are out of
@@ -41,7 +51,6 @@ static inline int ssg_joint_weights_make(int size, int max_size, float sigma_spa
     w->spatial_k = -0.5f / (sigma * sigma);
     w->depth_scale = 1.0f / sigma_depth;
     w->normal_min = normal_power > 0 ? (float)pow(1e-30, 1.0 / normal_power) : 0.0f;
-    w->squarings = ssg_joint_squarings(normal_power);
     return 1;
 }
 

@@ -103,7 +103,6 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->depth_scale = w.depth_scale;
     c->normal_power = (float)p->normal_power;
     c->normal_min = w.normal_min;
-    c->squarings = w.squarings;
     return SSG_OK;
 }
 
@@ -146,17 +145,17 @@ static const struct ssg_port_desc outputs[] = {
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_UPSAMPLE_OUTPUTS, "one entry a port enumerator");
 
-/* Flops per pixel (node.h), by reading upsample_cpu.c: per tap as bilateral's (about 17,
-   6 more for the normal term by squarings or 14 through a log), and 3 a channel (sums
-   relative to the centre tap); size^2 low-resolution taps a full-resolution pixel. */
+/* Flops per pixel (node.h), by reading upsample_cpu.c: per tap the weight
+   (ssg_joint_tap_flops) and 3 a channel (sums relative to the centre tap); size^2
+   low-resolution taps a full-resolution pixel. */
 static double upsample_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_upsample_consts *c = consts;
     int ch = in[SSG_UPSAMPLE_IN_IN].channels + in[SSG_UPSAMPLE_IN_IN2].channels;
-    int normals = in[SSG_UPSAMPLE_IN_LOW_NORMAL].channels > 0 && c->normal_power > 0;
-    double normal = !normals ? 0.0 : c->squarings >= 0 ? 6.0 : 14.0;
+    double weight = ssg_joint_tap_flops(in[SSG_UPSAMPLE_IN_LOW_NORMAL].channels > 0,
+                                        (int)c->normal_power);
     double size = 2.0 * c->radius + 1.0;
-    return 10.0 + 2.0 * ch + size * size * (17.0 + normal + 3.0 * ch);
+    return 10.0 + 2.0 * ch + size * size * (weight + 3.0 * ch);
 }
 
 const struct ssg_node_desc ssg_node_upsample = {

@@ -40,8 +40,6 @@ struct ssg_upsample_consts {
     float depth_scale;   /* 1 / sigma_depth */
     float normal_power;  /* as in the parameters */
     float normal_min;    /* cosines below this weigh c^p < 1e-30 and count as 0 */
-    int squarings;       /* p = 2^squarings: c^p by squarings; -1 = p ln(c) in the exponent
-                            (ssg_joint_weights) */
     int factor;          /* k: in is depth subsampled by k (ssg_upsample_factor) */
 };
 

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "gl/gl.h"
+#include "common/joint_weights.h"
 #include "upsample.h"
 
 enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -34,7 +35,7 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
     ssg_gl_float(&p, "depth_scale", c->depth_scale);
     ssg_gl_float(&p, "normal_power", c->normal_power);
     ssg_gl_float(&p, "normal_min", c->normal_min);
-    ssg_gl_int(&p, "squarings", c->squarings);
+    ssg_gl_int(&p, "squarings", ssg_joint_squarings((int)c->normal_power));
     ssg_gl_dispatch(&p, io->out[0]->width, io->out[0]->height);
     return ssg_gl_pass_end(&p);
 }
