@@ -4,8 +4,9 @@
  *
  * The module is looked for in $SSGRAPH_MODULE_DIR alone when that is set, else next to
  * the program or library that holds this code, next to the running program, in the build
- * tree it was built in, and in the installed module directory. A process opens it at most once (pthread_once), so concurrent first
- * calls are safe; a failure to open it is remembered and reported by every call. */
+ * tree it was built in, and in the installed module directory (each place once). A
+ * process opens it at most once (pthread_once), so concurrent first calls are safe; a
+ * failure to open it is remembered and reported by every call. */
 #define _GNU_SOURCE /* dladdr */
 #include <dlfcn.h>
 #include <pthread.h>
@@ -119,17 +120,22 @@ static void open_module(void)
 {
     const char *chosen = getenv("SSGRAPH_MODULE_DIR");
     if (chosen && chosen[0]) {
-        if (!try_dir(chosen) && !module_why[0])
-            add_why("%s", chosen);
+        try_dir(chosen);
         return;
     }
     char mine[4096], exe[4096];
     own_dir(mine, sizeof mine);
     exe_dir(exe, sizeof exe);
     const char *dirs[] = {mine, exe, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
-    for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; i++)
-        if (try_dir(dirs[i]))
+    const size_t count = sizeof dirs / sizeof dirs[0];
+    for (size_t i = 0; i < count; i++) {
+        /* the program's two names for its directory usually agree: one try each place */
+        size_t seen = 0;
+        while (seen < i && strcmp(dirs[seen], dirs[i]) != 0)
+            seen++;
+        if (seen == i && try_dir(dirs[i]))
             return;
+    }
 }
 
 /* The module's api, or NULL with a diagnostic on `file`. */
