@@ -131,6 +131,7 @@ static void add_eye(struct ssg_run_stats *both, const struct ssg_run_stats *righ
     both->frame_avg_ms += right->frame_avg_ms;
     both->frame_min_ms += right->frame_min_ms;
     both->frame_max_ms += right->frame_max_ms;
+    both->frame_median_ms += right->frame_median_ms;
     for (int i = 0; i < both->node_count && i < right->node_count; i++)
         both->nodes[i].avg_ms += right->nodes[i].avg_ms;
 }

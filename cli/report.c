@@ -77,9 +77,11 @@ static void print_profile(const struct ssg_run_stats *s, FILE *f)
     fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s %8s %8s %-7s %6s\n", "node",
             "type", "on", "calls", "avg ms", "min ms", "max ms", "share", "gpu ms",
             "prepare ms", "GB/s", "GFLOP/s", "bound", "%bound");
+    double median = s->frame_median_ms;
     fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
-            "%.1f fps)\n", "frame", "", "", s->frames, frame, s->frame_min_ms, s->frame_max_ms,
-            100.0, s->width, s->height, s->threads, frame > 0 ? 1000.0 / frame : 0.0);
+            "%.1f fps; median frame %.2f ms, %.1f fps)\n", "frame", "", "", s->frames, frame,
+            s->frame_min_ms, s->frame_max_ms, 100.0, s->width, s->height, s->threads,
+            frame > 0 ? 1000.0 / frame : 0.0, median, median > 0 ? 1000.0 / median : 0.0);
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < s->node_count; i++)
             if (in_frame(s, &s->nodes[i]) == !pass)
@@ -122,8 +124,9 @@ static void write_json(FILE *f, const void *user)
     int have_peak = ssg_peak_load(&peak);
     fprintf(f, "{\n  \"frames\": %d, \"width\": %d, \"height\": %d, \"threads\": %d,\n",
             s->frames, s->width, s->height, s->threads);
-    fprintf(f, "  \"frame\": {\"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g},\n",
-            s->frame_avg_ms, s->frame_min_ms, s->frame_max_ms);
+    fprintf(f, "  \"frame\": {\"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
+            "\"median_ms\": %.6g},\n", s->frame_avg_ms, s->frame_min_ms, s->frame_max_ms,
+            s->frame_median_ms);
     if (have_peak)
         fprintf(f, "  \"peak\": {\"threads\": %d, \"gflops\": %.6g, \"gbps\": %.6g},\n",
                 peak.threads, peak.gflops, peak.gbps);

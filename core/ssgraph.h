@@ -174,6 +174,9 @@ struct ssg_run_stats {
     double frame_avg_ms;        /* a frame: its passes' runs and transfers, without the
                                    prepares and the sinks (those run after the last) */
     double frame_min_ms, frame_max_ms;
+    double frame_median_ms;     /* the median frame: the steady rate, without the first
+                                   frame's one-off costs (fresh memory) that the average
+                                   carries */
     double total_ms;            /* wall clock of every frame, prepares and sinks included */
     int width, height;          /* frame size, pixels */
     int threads;                /* OpenMP threads the run used */

@@ -56,7 +56,7 @@ awk 'NR > 1 && !/^total/ && length($0) != 67 { bad = 1 } END { exit bad }' "$TMP
     || fail "profile run"
 grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms +GB/s +GFLOP/s +bound +%bound$' "$TMP/prof.txt" \
     || fail "run --frames lost its profile's header"
-grep -qE '^frame +3( +[0-9]+\.[0-9]{2}){3} +100\.0%   \(64x48, [0-9]+ threads, [0-9]+\.[0-9] fps\)$' \
+grep -qE '^frame +3( +[0-9]+\.[0-9]{2}){3} +100\.0%   \(64x48, [0-9]+ threads, [0-9]+\.[0-9] fps; median frame [0-9]+\.[0-9]{2} ms, [0-9]+\.[0-9] fps\)$' \
     "$TMP/prof.txt" || fail "the profile lacks its frame row: $(cat "$TMP/prof.txt")"
 grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)$' \
     "$TMP/prof.txt" || fail "the profile lacks the pass ao under the frame"

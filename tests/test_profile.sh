@@ -41,6 +41,9 @@ for name in ("g", "ao", "b", "img"):
     # both printed to 6 digits
     assert abs(x["gflops"] - x["flops"] / (x["avg_ms"] * 1e6)) <= 1e-4 * x["gflops"] + 1e-9
 assert n["out"]["flops"] is None and n["out"]["bound"] is None  # write declares none
+f = p["frame"]  # the median of 2 frames is their mean
+assert f["min_ms"] <= f["median_ms"] <= f["max_ms"], f
+assert abs(f["median_ms"] - f["avg_ms"]) <= 1e-4 * f["avg_ms"], f
 PY
 
 # Without a cache, and with a broken one: rates still, no bound.

@@ -104,6 +104,7 @@ static void check_stats(const struct ssg_run_stats *st)
     CHECK_EQ(st->frames, FRAMES);
     CHECK(st->frame_min_ms >= 0 && st->frame_min_ms <= st->frame_avg_ms &&
           st->frame_avg_ms <= st->frame_max_ms);
+    CHECK(st->frame_min_ms <= st->frame_median_ms && st->frame_median_ms <= st->frame_max_ms);
     CHECK(st->total_ms >= st->frame_avg_ms);
     CHECK_EQ(st->width, 24);
     CHECK_EQ(st->height, 16);

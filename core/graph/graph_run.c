@@ -230,8 +230,8 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
             sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
                    r->t[p].transfer_ms;
     }
-    if (!e)
-        ssg_profile_frame(&r->prof, sum);
+    if (!e && !ssg_profile_frame(&r->prof, sum))
+        e = SSG_E_NOMEM;
     return e;
 }
 

@@ -20,7 +20,9 @@ int ssg_profile_init(struct ssg_profile *p, int count)
 void ssg_profile_free(struct ssg_profile *p)
 {
     free(p->rows);
+    free(p->frame_ms);
     p->rows = NULL;
+    p->frame_ms = NULL;
 }
 
 void ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t)
@@ -34,12 +36,45 @@ void ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing 
     row->xfer_sum += t->transfer_ms;
 }
 
-void ssg_profile_frame(struct ssg_profile *p, double ms)
+int ssg_profile_frame(struct ssg_profile *p, double ms)
 {
+    if (p->frames == p->frame_cap) {
+        int cap = p->frame_cap ? 2 * p->frame_cap : 64;
+        double *grown = realloc(p->frame_ms, sizeof *grown * (size_t)cap);
+        if (!grown)
+            return 0;
+        p->frame_ms = grown, p->frame_cap = cap;
+    }
+    p->frame_ms[p->frames] = ms;
     p->frames++;
     p->frame_sum += ms;
     p->frame_min = ms < p->frame_min ? ms : p->frame_min;
     p->frame_max = ms > p->frame_max ? ms : p->frame_max;
+    return 1;
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median of the frames' times (the mean of the middle two for an even count): the
+   steady frame, which the first one's one-off costs (fresh pages for the image pool and
+   the nodes' scratch) do not move as they move the average. */
+static double frame_median(const struct ssg_profile *p)
+{
+    if (p->frames < 1)
+        return 0.0;
+    double *sorted = malloc(sizeof *sorted * (size_t)p->frames);
+    if (!sorted)
+        return p->frame_sum / p->frames; /* the average, rather than nothing */
+    memcpy(sorted, p->frame_ms, sizeof *sorted * (size_t)p->frames);
+    qsort(sorted, (size_t)p->frames, sizeof *sorted, by_value);
+    int h = p->frames / 2;
+    double m = p->frames % 2 ? sorted[h] : 0.5 * (sorted[h - 1] + sorted[h]);
+    free(sorted);
+    return m;
 }
 
 static double average(double sum, int n)
@@ -80,6 +115,7 @@ int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing 
     s->frame_avg_ms = average(p->frame_sum, p->frames);
     s->frame_min_ms = p->frames ? p->frame_min : 0.0;
     s->frame_max_ms = p->frame_max;
+    s->frame_median_ms = frame_median(p);
     s->width = p->width, s->height = p->height, s->threads = p->threads;
     s->nodes = calloc((size_t)(p->rows_count > 0 ? p->rows_count : 1), sizeof *s->nodes);
     if (!s->nodes)

@@ -21,6 +21,8 @@ struct ssg_profile {
     int rows_count, frames;
     struct ssg_profile_row *rows;          /* in run order */
     double frame_sum, frame_min, frame_max; /* ms of a whole frame (every node's run) */
+    double *frame_ms;                       /* each frame's, in order (for the median) */
+    int frame_cap;                          /* entries frame_ms has room for */
     int width, height, threads;
 };
 
@@ -29,8 +31,8 @@ int ssg_profile_init(struct ssg_profile *p, int count);
 void ssg_profile_free(struct ssg_profile *p);
 /* Adds one run of row r. */
 void ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t);
-/* Adds one frame's total. */
-void ssg_profile_frame(struct ssg_profile *p, double ms);
+/* Adds one frame's total; 0 on out of memory. */
+int ssg_profile_frame(struct ssg_profile *p, double ms);
 /* Fills the frame and node parts of *s (zeroed by the caller) from the profile and the
  * last frame's timing of each row; 0 on out of memory (what it allocated stays in *s, for
  * ssg_run_stats_free). */
