@@ -151,11 +151,11 @@ static void write_json(FILE *f, const void *user)
             snprintf(share, sizeof share, "%.6g", n->share);
         fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
                 "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
-                "\"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
+                "\"median_ms\": %.6g, \"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
                 "\"prepare_ms\": %.6g, \"bytes\": %.0f, \"flops\": %s, \"gbps\": %.6g, "
                 "\"gflops\": %s, \"bound\": %s, \"fraction_of_bound\": %s}",
                 i ? "," : "", n->name, n->type, n->backend, n->calls, n->avg_ms, n->min_ms,
-                n->max_ms, share, n->gpu_avg_ms, n->transfer_avg_ms, n->prepare_ms, n->bytes,
+                n->max_ms, n->median_ms, share, n->gpu_avg_ms, n->transfer_avg_ms, n->prepare_ms, n->bytes,
                 flops, r.gbps, gflops, bound, frac);
     }
     fputs("\n  ]\n}\n", f);

@@ -158,6 +158,8 @@ struct ssg_run_node {
     int calls;              /* runs: one a frame, a sink's one in the last frame only */
     double avg_ms;          /* over its calls, prepare excluded */
     double min_ms, max_ms;  /* over its calls, prepare excluded; 0 without calls */
+    double median_ms;       /* over its calls, prepare excluded: its steady time, without
+                               the first call's one-off costs; 0 without calls */
     double share;           /* avg_ms / frame_avg_ms for a node that ran in every frame of
                                a frame with time, else 0 */
     double gpu_avg_ms;      /* over its calls; 0 on cpu */

@@ -41,6 +41,9 @@ for name in ("g", "ao", "b", "img"):
     # both printed to 6 digits
     assert abs(x["gflops"] - x["flops"] / (x["avg_ms"] * 1e6)) <= 1e-4 * x["gflops"] + 1e-9
 assert n["out"]["flops"] is None and n["out"]["bound"] is None  # write declares none
+for x in n.values():  # 2 calls (a sink: 1): the median is the mean
+    assert x["min_ms"] <= x["median_ms"] <= x["max_ms"], x
+    assert abs(x["median_ms"] - x["avg_ms"]) <= 1e-4 * x["avg_ms"] + 1e-9, x
 f = p["frame"]  # the median of 2 frames is their mean
 assert f["min_ms"] <= f["median_ms"] <= f["max_ms"], f
 assert abs(f["median_ms"] - f["avg_ms"]) <= 1e-4 * f["avg_ms"], f

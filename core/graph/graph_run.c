@@ -156,10 +156,10 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
                                   &r->t[p]);
-    if (!e) {
-        ssg_profile_add(&r->prof, p, &r->t[p]);
+    if (!e && !ssg_profile_add(&r->prof, p, &r->t[p]))
+        e = SSG_E_NOMEM;
+    if (!e)
         log_files(r, n);
-    }
     r->t[p].ms += prepare_ms;
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,

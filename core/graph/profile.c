@@ -19,37 +19,24 @@ int ssg_profile_init(struct ssg_profile *p, int count)
 
 void ssg_profile_free(struct ssg_profile *p)
 {
+    for (int r = 0; p->rows && r < p->rows_count; r++)
+        free(p->rows[r].runs.v);
     free(p->rows);
-    free(p->frame_ms);
+    free(p->frame_ms.v);
     p->rows = NULL;
-    p->frame_ms = NULL;
+    p->frame_ms = (struct ssg_series){0};
 }
 
-void ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t)
+static int series_add(struct ssg_series *s, double v)
 {
-    struct ssg_profile_row *row = &p->rows[r];
-    row->calls++;
-    row->sum += t->ms;
-    row->min = t->ms < row->min ? t->ms : row->min;
-    row->max = t->ms > row->max ? t->ms : row->max;
-    row->gpu_sum += t->gpu_ms;
-    row->xfer_sum += t->transfer_ms;
-}
-
-int ssg_profile_frame(struct ssg_profile *p, double ms)
-{
-    if (p->frames == p->frame_cap) {
-        int cap = p->frame_cap ? 2 * p->frame_cap : 64;
-        double *grown = realloc(p->frame_ms, sizeof *grown * (size_t)cap);
+    if (s->n == s->cap) {
+        int cap = s->cap ? 2 * s->cap : 64;
+        double *grown = realloc(s->v, sizeof *grown * (size_t)cap);
         if (!grown)
             return 0;
-        p->frame_ms = grown, p->frame_cap = cap;
+        s->v = grown, s->cap = cap;
     }
-    p->frame_ms[p->frames] = ms;
-    p->frames++;
-    p->frame_sum += ms;
-    p->frame_min = ms < p->frame_min ? ms : p->frame_min;
-    p->frame_max = ms > p->frame_max ? ms : p->frame_max;
+    s->v[s->n++] = v;
     return 1;
 }
 
@@ -59,22 +46,43 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The median of the frames' times (the mean of the middle two for an even count): the
-   steady frame, which the first one's one-off costs (fresh pages for the image pool and
-   the nodes' scratch) do not move as they move the average. */
-static double frame_median(const struct ssg_profile *p)
+/* The median (the mean of the middle two for an even count; 0 for none): the steady
+   time, which the first frame's one-off costs (fresh pages for the image pool and the
+   nodes' scratch) do not move as they move the average. */
+static double series_median(const struct ssg_series *s)
 {
-    if (p->frames < 1)
+    if (s->n < 1)
         return 0.0;
-    double *sorted = malloc(sizeof *sorted * (size_t)p->frames);
+    double *sorted = malloc(sizeof *sorted * (size_t)s->n);
     if (!sorted)
-        return p->frame_sum / p->frames; /* the average, rather than nothing */
-    memcpy(sorted, p->frame_ms, sizeof *sorted * (size_t)p->frames);
-    qsort(sorted, (size_t)p->frames, sizeof *sorted, by_value);
-    int h = p->frames / 2;
-    double m = p->frames % 2 ? sorted[h] : 0.5 * (sorted[h - 1] + sorted[h]);
+        return 0.0;
+    memcpy(sorted, s->v, sizeof *sorted * (size_t)s->n);
+    qsort(sorted, (size_t)s->n, sizeof *sorted, by_value);
+    int h = s->n / 2;
+    double m = s->n % 2 ? sorted[h] : 0.5 * (sorted[h - 1] + sorted[h]);
     free(sorted);
     return m;
+}
+
+int ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t)
+{
+    struct ssg_profile_row *row = &p->rows[r];
+    row->calls++;
+    row->sum += t->ms;
+    row->min = t->ms < row->min ? t->ms : row->min;
+    row->max = t->ms > row->max ? t->ms : row->max;
+    row->gpu_sum += t->gpu_ms;
+    row->xfer_sum += t->transfer_ms;
+    return series_add(&row->runs, t->ms);
+}
+
+int ssg_profile_frame(struct ssg_profile *p, double ms)
+{
+    p->frames++;
+    p->frame_sum += ms;
+    p->frame_min = ms < p->frame_min ? ms : p->frame_min;
+    p->frame_max = ms > p->frame_max ? ms : p->frame_max;
+    return series_add(&p->frame_ms, ms);
 }
 
 static double average(double sum, int n)
@@ -98,6 +106,7 @@ static int fill_node(struct ssg_run_node *n, const struct ssg_profile *p,
         .avg_ms = avg,
         .min_ms = row->calls ? row->min : 0.0,
         .max_ms = row->max,
+        .median_ms = series_median(&row->runs),
         .share = row->calls == p->frames && frame > 0 ? avg / frame : 0.0,
         .gpu_avg_ms = average(row->gpu_sum, row->calls),
         .transfer_avg_ms = average(row->xfer_sum, row->calls),
@@ -115,7 +124,7 @@ int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing 
     s->frame_avg_ms = average(p->frame_sum, p->frames);
     s->frame_min_ms = p->frames ? p->frame_min : 0.0;
     s->frame_max_ms = p->frame_max;
-    s->frame_median_ms = frame_median(p);
+    s->frame_median_ms = series_median(&p->frame_ms);
     s->width = p->width, s->height = p->height, s->threads = p->threads;
     s->nodes = calloc((size_t)(p->rows_count > 0 ? p->rows_count : 1), sizeof *s->nodes);
     if (!s->nodes)
