@@ -89,6 +89,23 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     return SSG_OK;
 }
 
+int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
+                         struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES])
+{
+    if (c->atrous > 0) {
+        for (int i = 0; i < c->atrous; i++)
+            pass[i] = (struct ssg_bilateral_pass){c->radius, c->radius, 1 << i};
+        return c->atrous;
+    }
+    if (c->separable) {
+        pass[0] = (struct ssg_bilateral_pass){c->radius, 0, 1};
+        pass[1] = (struct ssg_bilateral_pass){0, c->radius, 1};
+        return 2;
+    }
+    pass[0] = (struct ssg_bilateral_pass){c->radius, c->radius, 1};
+    return 1;
+}
+
 static const struct ssg_param_desc params[] = {
     {.name = "size", SSG_FIELD_INT(struct ssg_bilateral_params, size), .def = 9, .min = 1,
      .max = SSG_BILATERAL_MAX_SIZE, .unit = "px", .help = "window diameter, odd"},

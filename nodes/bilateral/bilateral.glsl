@@ -5,7 +5,8 @@
 // bilateral_math.h's polynomials (ssg_exp_neg, ssg_log_pos in common.glsl), so weights are
 // the CPU's to the last bit or two;
 // `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
-// separable=true dispatches this twice (REACH (r, 0) into a scratch image, then (0, r)).
+// separable=true dispatches this twice (reach (r, 0) into a scratch image, then (0, r));
+// the `atrous` node once a pass, its 5 x 5 taps `step` px apart.
 // CHANNELS (1 or 3), IN2_CH (0, 1 or 3) and NORMALS (0 or 1) are defines from bilateral_gl.c.
 // in2 rides along with the same weights into dst2; unconnected, dst2 is written 0.
 layout(std430, binding = 0) readonly buffer Spatial { float spatial[]; };
@@ -16,6 +17,7 @@ uniform sampler2DArray depth; // linear depth; 0 = background
 uniform sampler2DArray normal;
 layout(r32f) uniform writeonly image2DArray dst, dst2;
 uniform ivec2 reach;          // half-widths walked: (r, r), (r, 0) or (0, r)
+uniform int step;             // px between taps: 1, or an a-trous pass's dilation
 uniform int radius, size;     // of the spatial table: row (dy + radius) * size + dx + radius
 uniform float depth_scale;    // 1 / sigma_depth
 uniform int squarings;        // normal weight c^(2^squarings); -1: p ln(c) in the exponent
@@ -69,10 +71,10 @@ void main()
     precise float wsum = 0.0;
     ivec2 last = ssg_grid - 1;
     for (int dy = -reach.y; dy <= reach.y; dy++) {
-        if (p.y + dy < 0 || p.y + dy > last.y)
+        if (p.y + dy * step < 0 || p.y + dy * step > last.y)
             continue;
         for (int dx = -reach.x; dx <= reach.x; dx++) {
-            ivec2 q = p + ivec2(dx, dy);
+            ivec2 q = p + ivec2(dx, dy) * step;
             if (q.x < 0 || q.x > last.x)
                 continue;
             float w = weight(q, spatial[(dy + radius) * size + dx + radius], dc, kd, nc);

@@ -39,12 +39,28 @@ struct ssg_bilateral_consts {
     int normal_power;    /* as in the parameters */
     float normal_min;    /* normal cosines below this weigh c^p < 1e-30 and count as 0 */
     int separable;       /* as in the parameters */
+    int atrous;          /* > 0: that many 5 x 5 passes, 1, 2, 4, ... px apart (the
+                            `atrous` node's consts); 0 = bilateral */
     /* ln of the spatial Gaussian weight, -0.5 (dx^2 + dy^2) / sigma_spatial^2, for
        dy, dx in [-radius, radius]: row (dy + radius) * size + dx + radius. Logarithms, so
        that the three weights multiply by adding exponents and one exp() does it all. */
     float spatial[SSG_BILATERAL_MAX_SIZE * SSG_BILATERAL_MAX_SIZE];
 };
 
+/* One pass of a run: the window's half-widths walked and the px between taps. */
+struct ssg_bilateral_pass {
+    int rx, ry, step;
+};
+enum { SSG_BILATERAL_MAX_PASSES = 8 };
+
+/* The passes of a run of these consts, into pass; returns how many: the full window
+   (one), separable (a row, then a column), or a-trous (`atrous` dilated windows). Both
+   backends run this list. */
+int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
+                         struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES]);
+
+/* Both run functions serve the `atrous` node too: its ports are bilateral's, in order,
+   and its consts a struct ssg_bilateral_consts (nodes/atrous/atrous.c). */
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io);
 /* The GL side (bilateral_gl.c, shader bilateral*.glsl). */

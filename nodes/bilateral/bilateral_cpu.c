@@ -9,7 +9,8 @@
  * exp(); exp and ln are small polynomial versions that vectorise (libm's do not without
  * -ffast-math), accurate to a few 1e-7 relative (bilateral_math.h).
  * The separable form runs the same loops twice with a one-row, then a one-column window
- * (run_separable): 2 size taps per pixel instead of size^2. The optional in2 is carried as
+ * (run_passes): 2 size taps per pixel instead of size^2; the `atrous` node runs them as
+ * dilated 5 x 5 passes. The optional in2 is carried as
  * further channels after in's (1 + 1, 1 + 3, 3 + 1, 3 + 3): each tap's weight is computed
  * once for all of them, and per channel the sums are those of a filter of that image
  * alone, so out2 is bit for bit a second node's output. */
@@ -36,6 +37,7 @@ struct job {
     int w, h;
     int rx, ry;            /* half-widths of the window walked: radius, or 0 on the axis a
                               separable pass does not cover */
+    int step;              /* px between taps: 1, or an a-trous pass's dilation */
 };
 
 /* Per-pixel values of one chunk, structure of arrays. */
@@ -109,22 +111,24 @@ add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1,
 }
 
 /* All taps of the window for one chunk row, in a fixed order: dy in [-ry, ry], dx in
-   [-rx, rx]. The full filter has rx = ry = radius; the separable passes one of them 0. */
+   [-rx, rx], step px apart. The full filter has rx = ry = radius; the separable passes
+   one of them 0; an a-trous pass spreads its 5 x 5 taps `step` px apart. */
 static inline __attribute__((always_inline)) void
 taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels, int mode)
 {
-    const int r = j->c->radius, size = j->c->size, rx = j->rx, ry = j->ry;
+    const int r = j->c->radius, size = j->c->size, rx = j->rx, ry = j->ry, step = j->step;
     for (int dy = -ry; dy <= ry; dy++) {
-        int qy = y + dy;
+        int qy = y + dy * step;
         if (qy < 0 || qy >= j->h)
             continue;
         for (int dx = -rx; dx <= rx; dx++) {
-            /* Chunk pixels whose neighbour x0 + i + dx lies inside the row. */
-            int i0 = -dx - x0 > 0 ? -dx - x0 : 0;
-            int i1 = j->w - dx - x0 < len ? j->w - dx - x0 : len;
+            /* Chunk pixels whose neighbour x0 + i + ox lies inside the row. */
+            int ox = dx * step;
+            int i0 = -ox - x0 > 0 ? -ox - x0 : 0;
+            int i1 = j->w - ox - x0 < len ? j->w - ox - x0 : len;
             if (i0 >= i1)
                 continue;
-            size_t q = (size_t)qy * (size_t)j->w + (size_t)(x0 + dx);
+            size_t q = (size_t)qy * (size_t)j->w + (size_t)(x0 + ox);
             add_tap(j, k, q, i0, i1, j->c->spatial[(dy + r) * size + dx + r], channels, mode);
         }
     }
@@ -182,29 +186,37 @@ static void band(void *user, int y0, int y1)
         }
 }
 
-/* The separable approximation (Belonogov eq. 4.6 and 4.7): a horizontal pass into a
-   scratch image, then a vertical pass over it, each with the same weights as the full
-   filter restricted to its axis (the spatial Gaussian factors exactly; the depth and
-   normal terms are taken against each pass's own centre pixel). Each pass is the full
-   kernel with a one-row or one-column window, so it shares its vectorised loops, and the
-   second pass starts only when the first has finished every band. The scratch image is
-   the node's (ssg_node_scratch), kept from frame to frame. */
-static enum ssg_err run_separable(const struct ssg_node_ctx *ctx, struct job *j)
+/* The passes of a run (ssg_bilateral_passes), one after another: pass 0 reads the
+   inputs, the last writes the outputs, the others go through the node's scratch
+   (ssg_node_scratch, kept from frame to frame): one image of every channel, two in turn
+   for three passes or more. Each pass is the full kernel with its own window and step, so
+   all share the vectorised loops, and a pass starts only when the one before has finished
+   every band. The separable approximation (Belonogov eq. 4.6 and 4.7) is a one-row pass
+   and a one-column pass, each with the weights of the full filter restricted to its axis
+   (the spatial Gaussian factors exactly; the depth and normal terms are taken against each
+   pass's own centre pixel); a-trous is `atrous` passes of the 5 x 5 window, 1, 2, 4, ... px
+   apart (nodes/atrous). */
+static enum ssg_err run_passes(const struct ssg_node_ctx *ctx, struct job *j, int passes,
+                               const struct ssg_bilateral_pass *pass)
 {
-    size_t plane = (size_t)j->w * (size_t)j->h;
-    float *tmp = ssg_node_scratch(ctx, sizeof(float) * plane * (size_t)j->channels);
-    if (!tmp)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the "
-                             "separable pass");
-    struct job h = *j, v = *j;
-    h.ry = 0;
-    v.rx = 0;
-    for (int ch = 0; ch < j->channels; ch++) {
-        h.out[ch] = tmp + (size_t)ch * plane;
-        v.in[ch] = tmp + (size_t)ch * plane;
+    size_t plane = (size_t)j->w * (size_t)j->h, image = plane * (size_t)j->channels;
+    int buffers = passes > 2 ? 2 : passes - 1;
+    float *tmp = buffers ? ssg_node_scratch(ctx, sizeof(float) * image * (size_t)buffers)
+                         : NULL;
+    if (buffers && !tmp)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the filter's passes");
+    const struct job io = *j;
+    for (int i = 0; i < passes; i++) {
+        struct job p = io;
+        p.rx = pass[i].rx, p.ry = pass[i].ry, p.step = pass[i].step;
+        for (int ch = 0; ch < j->channels; ch++) {
+            if (i > 0)
+                p.in[ch] = tmp + (size_t)((i - 1) % 2) * image + (size_t)ch * plane;
+            if (i < passes - 1)
+                p.out[ch] = tmp + (size_t)(i % 2) * image + (size_t)ch * plane;
+        }
+        ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &p);
     }
-    ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &h);
-    ssg_parallel_rows(j->h, ROWS_PER_BAND, band, &v);
     return SSG_OK;
 }
 
@@ -218,7 +230,7 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     const struct ssg_bilateral_consts *c = consts;
     const int n2 = in2 ? in2->channels : 0;
     struct job j = {.c = c, .channels = in->channels + n2, .depth = dep->data,
-                    .w = in->width, .h = in->height, .rx = c->radius, .ry = c->radius};
+                    .w = in->width, .h = in->height};
     for (int ch = 0; ch < in->channels; ch++) {
         j.in[ch] = ssg_image_plane(in, ch);
         j.out[ch] = ssg_image_plane(io->out[SSG_BILATERAL_OUT_OUT], ch);
@@ -234,9 +246,6 @@ enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     }
     for (int ch = 0; nrm && ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);
-    if (!c->separable) {
-        ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
-        return SSG_OK;
-    }
-    return run_separable(ctx, &j);
+    struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES];
+    return run_passes(ctx, &j, ssg_bilateral_passes(c, pass), pass);
 }

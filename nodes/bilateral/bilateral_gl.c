@@ -1,6 +1,7 @@
 /* bilateral_gl.c - GL side of the `bilateral` node (method in bilateral.c, shader
  * bilateral.glsl): the full 2D window in one pass, or separable=true as a row pass into a
- * scratch image and a column pass over it, as bilateral_cpu.c does. The spatial
+ * scratch image and a column pass over it, or the `atrous` node's dilated passes through
+ * two scratch images in turn, as bilateral_cpu.c does. The spatial
  * log-weights from prepare() go to a storage buffer; the normal term's variant (by
  * squarings or through ln) is picked the same way as on the CPU. */
 #include <stdio.h>
@@ -11,20 +12,24 @@
 
 static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
                      const struct ssg_image *src2, struct ssg_image *dst,
-                     struct ssg_image *dst2, int rx, int ry)
+                     struct ssg_image *dst2, const struct ssg_bilateral_pass *pass)
 {
     ssg_gl_input(p, "src", src);
     ssg_gl_input(p, "src2", src2);
     ssg_gl_output(p, "dst", dst);
     ssg_gl_output(p, "dst2", dst2);
-    ssg_gl_ivec2(p, "reach", rx, ry);
+    ssg_gl_ivec2(p, "reach", pass->rx, pass->ry);
+    ssg_gl_int(p, "step", pass->step);
     ssg_gl_dispatch(p, src->width, src->height);
 }
 
-/* Binds what both passes share and runs them: the full window into the outputs, or the
-   row pass into tmp (tmp2 for in2) and the column pass from there into the outputs. */
+/* Binds what the passes share and runs them (ssg_bilateral_passes): pass 0 from the
+   inputs, the last into the outputs, the others through tmp[i % 2] (tmp2 for in2). Without
+   in2 a pass's dst2 (zeros) goes to out2, written again by the last. */
 static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilateral_consts *c,
-                        const struct ssg_io *io, struct ssg_image *tmp, struct ssg_image *tmp2)
+                        const struct ssg_io *io, int passes,
+                        const struct ssg_bilateral_pass *pass, struct ssg_image *tmp[2],
+                        struct ssg_image *tmp2[2])
 {
     const struct ssg_image *nrm = io->in[SSG_BILATERAL_IN_NORMAL];
     const struct ssg_image *in2 = io->in[SSG_BILATERAL_IN_IN2];
@@ -46,12 +51,13 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_int(&p, "squarings", ssg_joint_squarings(c->normal_power));
     ssg_gl_float(&p, "normal_power", (float)c->normal_power);
     ssg_gl_float(&p, "normal_min", c->normal_min);
-    if (!tmp) {
-        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], in2, out, out2, c->radius, c->radius);
-    } else {
-        /* without in2 the row pass's dst2 (zeros) goes to tmp2 = out2, rewritten after */
-        one_pass(&p, io->in[SSG_BILATERAL_IN_IN], in2, tmp, tmp2 ? tmp2 : out2, c->radius, 0);
-        one_pass(&p, tmp, tmp2, out, out2, 0, c->radius);
+    for (int i = 0; i < passes; i++) {
+        const struct ssg_image *src = i ? tmp[(i - 1) % 2] : io->in[SSG_BILATERAL_IN_IN];
+        const struct ssg_image *src2 = i ? tmp2[(i - 1) % 2] : in2;
+        int last = i == passes - 1;
+        struct ssg_image *dst = last ? out : tmp[i % 2];
+        struct ssg_image *dst2 = last || !in2 ? out2 : tmp2[i % 2];
+        one_pass(&p, src, src2, dst, dst2, &pass[i]);
     }
     return ssg_gl_pass_end(&p);
 }
@@ -62,13 +68,20 @@ enum ssg_err ssg_bilateral_run_gl(const struct ssg_node_ctx *ctx, const void *co
     const struct ssg_bilateral_consts *c = consts;
     const struct ssg_image *in = io->in[SSG_BILATERAL_IN_IN];
     const struct ssg_image *in2 = io->in[SSG_BILATERAL_IN_IN2];
-    if (!c->separable)
-        return run(ctx, c, io, NULL, NULL);
-    struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);
-    struct ssg_image *tmp2 = in2 ? ssg_gl_scratch(ctx, in2->width, in2->height,
-                                                  in2->channels) : NULL;
-    enum ssg_err e = tmp && (tmp2 || !in2) ? run(ctx, c, io, tmp, tmp2) : SSG_E_NOMEM;
-    ssg_gl_scratch_release(&tmp);
-    ssg_gl_scratch_release(&tmp2);
+    struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES];
+    int passes = ssg_bilateral_passes(c, pass), buffers = passes > 2 ? 2 : passes - 1;
+    struct ssg_image *tmp[2] = {NULL, NULL}, *tmp2[2] = {NULL, NULL};
+    int ok = 1;
+    for (int b = 0; b < buffers; b++) {
+        tmp[b] = ssg_gl_scratch(ctx, in->width, in->height, in->channels);
+        if (in2)
+            tmp2[b] = ssg_gl_scratch(ctx, in2->width, in2->height, in2->channels);
+        ok = ok && tmp[b] && (tmp2[b] || !in2);
+    }
+    enum ssg_err e = ok ? run(ctx, c, io, passes, pass, tmp, tmp2) : SSG_E_NOMEM;
+    for (int b = 0; b < 2; b++) {
+        ssg_gl_scratch_release(&tmp[b]);
+        ssg_gl_scratch_release(&tmp2[b]);
+    }
     return e;
 }
