@@ -37,6 +37,19 @@ static inline void set_normal(struct ssg_image *n, size_t o, double x, double y,
     n->data[2 * plane + o] = (float)(z / len);
 }
 
+/* A depth step (1 | 2) carrying a value step (0 | 1) at the middle column, normals +z. */
+static inline void fill_depth_step(struct images *im)
+{
+    const int w = im->in->width, h = im->in->height;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            size_t o = (size_t)y * (size_t)w + (size_t)x;
+            im->in->data[o] = x < w / 2 ? 0.0f : 1.0f;
+            im->depth->data[o] = x < w / 2 ? 1.0f : 2.0f;
+            set_normal(im->normal, o, 0, 0, 1);
+        }
+}
+
 /* Runs bilateral; returns the output (owned) or NULL. with_normal = 0 leaves the normal
    input unconnected. */
 static inline struct ssg_image *filter(const struct images *im, int with_normal,

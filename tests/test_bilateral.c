@@ -91,13 +91,7 @@ static void test_depth_step(void)
 {
     enum { W = 32, H = 16 };
     struct images im = make(W, H, 1);
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            size_t o = (size_t)y * W + (size_t)x;
-            im.in->data[o] = x < W / 2 ? 0.0f : 1.0f;
-            im.depth->data[o] = x < W / 2 ? 1.0f : 2.0f;
-            set_normal(im.normal, o, 0, 0, 1);
-        }
+    fill_depth_step(&im);
     const char *sets[] = {"size=9"};
     struct ssg_image *out = filter(&im, 1, sets, 1);
     if (out) {

@@ -1,6 +1,7 @@
 /* test_gl_filters.c - CPU/GL parity (gl_parity.h) of the geometry-aware filters:
  * `bilateral` (full window and separable, every normal-term variant, no normal, 1 and 3
- * channels), `upsample` (factors 2, 3 and 4, odd sizes, in2 of 1 and 3 channels or none,
+ * channels), `atrous` (1 to 4 dilated passes, rgb, in2, without normals), `upsample`
+ * (factors 2, 3 and 4, odd sizes, in2 of 1 and 3 channels or none,
  * with and without normals, the closest-depth and centre fallbacks) and `downsample`
  * (factors 2 and 4, odd sizes, depth ties, background blocks, all or few ports).
  *
@@ -125,6 +126,31 @@ static void bilateral_cases(void)
     free_gbuf(&g);
 }
 
+/* atrous: the dilated passes (bilateral's shader with a step), 1 to 4 of them (the ping-pong
+   through two scratch images from 3 on), with and without normals, rgb, and in2. */
+static void atrous_cases(void)
+{
+    const struct parity_tol tol = FILTER_TOL;
+    struct gbuf g = make_gbuf(64, 48);
+    struct ssg_image *ao = noise_image(64, 48, 1, 3), *rgb = noise_image(64, 48, 3, 4);
+    struct ssg_binding b[3] = {{"in", ao}, {"depth", g.depth}, {"normal", g.normal}};
+    const char *one[] = {"iterations=1"}, *two[] = {"iterations=2"};
+    const char *def[] = {"iterations=3"}, *four[] = {"iterations=4", "normal_power=5"};
+    parity_node("atrous 1 pass", "atrous", b, 3, one, 1, NULL, tol);
+    parity_node("atrous 2 passes", "atrous", b, 3, two, 1, NULL, tol);
+    parity_node("atrous 3 passes", "atrous", b, 3, def, 1, NULL, tol);
+    parity_node("atrous 4 passes via ln", "atrous", b, 3, four, 2, NULL, tol);
+    parity_node("atrous no normal", "atrous", b, 2, def, 1, NULL, tol);
+    b[0].image = rgb;
+    parity_node("atrous rgb", "atrous", b, 3, def, 1, NULL, tol);
+    struct ssg_binding b2[4] = {{"in", ao}, {"depth", g.depth}, {"normal", g.normal},
+                                {"in2", rgb}};
+    parity_node("atrous in2 1+3", "atrous", b2, 4, def, 1, NULL, tol);
+    ssg_image_destroy(&ao);
+    ssg_image_destroy(&rgb);
+    free_gbuf(&g);
+}
+
 /* Every k-th pixel of a full-res image (a low-res guide for factors downsample lacks). */
 static struct ssg_image *subsample(const struct ssg_image *im, int k)
 {
@@ -218,6 +244,7 @@ static void downsample_case(const char *label, int w, int h, int factor, int por
 int main(void)
 {
     bilateral_cases();
+    atrous_cases();
     upsample_cases();
     downsample_case("k2 all ports", 64, 48, 2, 6);
     downsample_case("k2 odd", 61, 37, 2, 6);

@@ -35,18 +35,11 @@
 #include "bilateral.h"
 #include "common/joint_weights.h"
 
-static enum ssg_err check(const void *params, const struct ssg_frame *frame,
-                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
-                          size_t why_len)
+enum ssg_err ssg_bilateral_check_shapes(const struct ssg_shape *in, struct ssg_shape *out,
+                                        char *why, size_t why_len)
 {
-    const struct ssg_bilateral_params *p = params;
     const struct ssg_shape *im = &in[SSG_BILATERAL_IN_IN], *dep = &in[SSG_BILATERAL_IN_DEPTH];
     const struct ssg_shape *nrm = &in[SSG_BILATERAL_IN_NORMAL];
-    if (p->size % 2 == 0) {
-        snprintf(why, why_len, "size must be odd (a window centred on the pixel), got %d",
-                 p->size);
-        return SSG_E_VALUE;
-    }
     if (dep->channels != 1 || dep->width != im->width || dep->height != im->height) {
         snprintf(why, why_len, "depth must be a 1-channel image the size of in");
         return SSG_E_SIZE;
@@ -65,6 +58,20 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     /* out2: in2 filtered, or (unconnected) zeros shaped like out */
     out[SSG_BILATERAL_OUT_OUT2] = im2->channels != 0 ? *im2 : *im;
     return SSG_OK;
+}
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_bilateral_params *p = params;
+    (void)frame;
+    if (p->size % 2 == 0) {
+        snprintf(why, why_len, "size must be odd (a window centred on the pixel), got %d",
+                 p->size);
+        return SSG_E_VALUE;
+    }
+    return ssg_bilateral_check_shapes(in, out, why, why_len);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -112,16 +119,12 @@ static const struct ssg_param_desc params[] = {
     {.name = "sigma_spatial", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_spatial),
      .def = 0, .min = 0, .max = 1000, .unit = "px",
      .help = "spatial Gaussian sigma; 0 = size / 3"},
-    {.name = "sigma_depth", SSG_FIELD_FLOAT(struct ssg_bilateral_params, sigma_depth),
-     .def = 0.05, .min = 1e-6, .max = 1000,
-     .help = "depth sigma as a fraction of the centre pixel's depth"},
-    {.name = "normal_power", SSG_FIELD_INT(struct ssg_bilateral_params, normal_power),
-     .def = 16, .min = 0, .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"},
+    SSG_BILATERAL_EDGE_PARAMS(struct ssg_bilateral_params),
     {.name = "separable", SSG_FIELD_BOOL(struct ssg_bilateral_params, separable), .def = 0,
      .help = "horizontal then vertical pass: O(size) per pixel, an approximation"},
 };
 
-static const struct ssg_port_desc inputs[] = {
+const struct ssg_port_desc ssg_bilateral_inputs[SSG_BILATERAL_INPUTS] = {
     [SSG_BILATERAL_IN_IN] = {.name = "in", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
      .doc = "image to smooth"},
     [SSG_BILATERAL_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR,
@@ -131,27 +134,29 @@ static const struct ssg_port_desc inputs[] = {
     [SSG_BILATERAL_IN_IN2] = {.name = "in2", .types = SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,
      .optional = 1, .doc = "a second image the size of in, filtered with in's weights"},
 };
-_Static_assert(SSG_COUNT(inputs) == SSG_BILATERAL_INPUTS, "one entry a port enumerator");
 
-static const struct ssg_port_desc outputs[] = {
+
+const struct ssg_port_desc ssg_bilateral_outputs[SSG_BILATERAL_OUTPUTS] = {
     [SSG_BILATERAL_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR, .same_as = "in",
      .doc = "smoothed image"},
     [SSG_BILATERAL_OUT_OUT2] = {.name = "out2", .types = SSG_T_SCALAR, .same_as = "in2",
      .doc = "in2 smoothed with out's weights (type of in2); all 0, shaped like out, when "
             "in2 is unconnected"},
 };
-_Static_assert(SSG_COUNT(outputs) == SSG_BILATERAL_OUTPUTS, "one entry a port enumerator");
 
-/* Flops per pixel (node.h), by reading bilateral_cpu.c: per tap the weight
-   (ssg_joint_tap_flops) and 2 a channel; taps are size^2, or 2 size when separable. */
-static double bilateral_flops(const void *consts, const struct ssg_shape *in)
+
+double ssg_bilateral_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_bilateral_consts *c = consts;
     int ch = in[SSG_BILATERAL_IN_IN].channels + in[SSG_BILATERAL_IN_IN2].channels;
     double weight = ssg_joint_tap_flops(in[SSG_BILATERAL_IN_NORMAL].channels > 0,
                                         c->normal_power);
-    double taps = c->separable ? 2.0 * c->size : (double)c->size * c->size;
-    return 10.0 + ch + taps * (weight + 2.0 * ch);
+    struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES];
+    int passes = ssg_bilateral_passes(c, pass);
+    double taps = 0.0;
+    for (int i = 0; i < passes; i++)
+        taps += (2.0 * pass[i].rx + 1.0) * (2.0 * pass[i].ry + 1.0);
+    return passes * (10.0 + ch) + taps * (weight + 2.0 * ch);
 }
 
 const struct ssg_node_desc ssg_node_bilateral = {
@@ -171,12 +176,8 @@ const struct ssg_node_desc ssg_node_bilateral = {
         "pass through and are never used. An optional second image in2 is filtered with "
         "the same weights into out2 in the same pass (one node for SSDO's modulation and "
         "bounce); out2 is all 0 when in2 is unconnected.",
-    SSG_NODE_PORTS(inputs, outputs),
+    SSG_BILATERAL_FAMILY,
     SSG_NODE_PARAMS(params, struct ssg_bilateral_params),
-    .consts_size = sizeof(struct ssg_bilateral_consts),
     .check = check,
     .prepare = prepare,
-    .flops_per_pixel = bilateral_flops,
-    .run_cpu = ssg_bilateral_run_cpu,
-    .run_gl = ssg_bilateral_run_gl,
 };

@@ -32,6 +32,16 @@ struct ssg_bilateral_params {
     int separable;       /* 1 = horizontal then vertical pass (approximation); default 0 */
 };
 
+/* The edge-stopping parameters both joint filters of this folder declare (bilateral and
+   atrous): entries of a struct ssg_param_desc array for a params struct `params_type`
+   with float sigma_depth and int normal_power members. */
+#define SSG_BILATERAL_EDGE_PARAMS(params_type)                                           \
+    {.name = "sigma_depth", SSG_FIELD_FLOAT(params_type, sigma_depth), .def = 0.05,      \
+     .min = 1e-6, .max = 1000,                                                           \
+     .help = "depth sigma as a fraction of the centre pixel's depth"},                  \
+    {.name = "normal_power", SSG_FIELD_INT(params_type, normal_power), .def = 16,         \
+     .min = 0, .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"}
+
 struct ssg_bilateral_consts {
     int radius;          /* (size - 1) / 2, px */
     int size;            /* 2 * radius + 1, px */
@@ -59,8 +69,22 @@ enum { SSG_BILATERAL_MAX_PASSES = 8 };
 int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
                          struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES]);
 
-/* Both run functions serve the `atrous` node too: its ports are bilateral's, in order,
-   and its consts a struct ssg_bilateral_consts (nodes/atrous/atrous.c). */
+/* What the `atrous` node (nodes/atrous/atrous.c) shares: its ports are bilateral's (the
+   port tables, their shape check), its consts a struct ssg_bilateral_consts, and so the
+   flops (node.h; by reading bilateral_cpu.c: per tap the weight, ssg_joint_tap_flops, and
+   2 a channel, per pass about 10 and 1 a channel to set up and finish) and both run
+   functions are bilateral's. */
+extern const struct ssg_port_desc ssg_bilateral_inputs[SSG_BILATERAL_INPUTS];
+extern const struct ssg_port_desc ssg_bilateral_outputs[SSG_BILATERAL_OUTPUTS];
+enum ssg_err ssg_bilateral_check_shapes(const struct ssg_shape *in, struct ssg_shape *out,
+                                        char *why, size_t why_len);
+double ssg_bilateral_flops(const void *consts, const struct ssg_shape *in);
+/* The descriptor fields both nodes share: ports, consts, flops and run functions. */
+#define SSG_BILATERAL_FAMILY                                                             \
+    SSG_NODE_PORTS(ssg_bilateral_inputs, ssg_bilateral_outputs),                          \
+    .consts_size = sizeof(struct ssg_bilateral_consts),                                  \
+    .flops_per_pixel = ssg_bilateral_flops, .run_cpu = ssg_bilateral_run_cpu,            \
+    .run_gl = ssg_bilateral_run_gl
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                    const struct ssg_io *io);
 /* The GL side (bilateral_gl.c, shader bilateral*.glsl). */
