@@ -15,9 +15,8 @@
  * no cracks. Both faces count. Depth is affine over an orthographic map: a centre's depth
  * comes from the plane through the three unsnapped vertices, in double, kept within
  * their depths (snapping moves a vertex up to 1/512 texel, which under a grazing light
- * would move depths by 20 times that). Each map is
- * one band's alone and a texel keeps the minimum, so the maps do not depend on the thread
- * count or the triangle order. */
+ * would move depths by 20 times that). Each map is one band's alone and a texel keeps the
+ * minimum, so the maps do not depend on the thread count or the triangle order. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
