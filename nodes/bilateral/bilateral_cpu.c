@@ -205,9 +205,8 @@ static enum ssg_err run_passes(const struct ssg_node_ctx *ctx, struct job *j, in
                          : NULL;
     if (buffers && !tmp)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the filter's passes");
-    const struct job io = *j;
     for (int i = 0; i < passes; i++) {
-        struct job p = io;
+        struct job p = *j;
         p.rx = pass[i].rx, p.ry = pass[i].ry, p.step = pass[i].step;
         for (int ch = 0; ch < j->channels; ch++) {
             if (i > 0)

@@ -3,7 +3,7 @@
  * light is applied to the whole chunk before the next, so a light's frame, irradiance and
  * map stay hot while the inner loop over pixels runs branch-free (vectorised, the map
  * read a gather; compiled per instruction set, SSG_VECTOR_CLONES). The courtyard's 128
- * lights at 720p: 360 ms a frame with the scalar loop this replaced, 80-95 ms now on 2
+ * lights at 720p: 320-360 ms a frame with the scalar loop this replaced, 45-50 ms now on 2
  * threads, the same bits. Chunk columns outside, a band's rows inside, as ssdo_cpu.c. */
 #include "common/vector_loops.h" /* first: see there */
 #include <stdlib.h>
