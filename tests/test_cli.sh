@@ -178,6 +178,12 @@ printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\nd = downsample(depth=g
     "$PWD" > "$TMP/half.graph"
 expect_exit 1 "half.graph:4:33: error: input 'half' of node 'out' \(write\) is 640x360, but its first input 'g.direct' is 1280x720" \
     "$BIN" check "$TMP/half.graph"
+# The a-trous filter's pass count is bounded (8 passes reach 510 px each side).
+printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\nf = atrous(g.depth, depth=g.depth, iterations=9)\nout = write(f.out, "x")\n' \
+    "$PWD" > "$TMP/atrous.graph"
+expect_exit 1 "atrous.graph:3:47: error: parameter 'iterations' of 'f' expects an integer in \[1, 8\] passes, got 9" \
+    "$BIN" run "$TMP/atrous.graph" --out "$TMP/atrous_out"
+[ -e "$TMP/atrous_out/x.exr" ] && fail "a refused atrous graph still wrote output"
 printf 'g = gbuffer()\nout = write(g.direct, "x"\n' > "$TMP/syntax.graph"
 expect_exit 1 "syntax.graph:3:1: error: expected '\)' to close the '\(' of line 2, column 12" \
     "$BIN" check "$TMP/syntax.graph"

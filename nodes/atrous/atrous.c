@@ -54,7 +54,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 
 static const struct ssg_param_desc params[] = {
     {.name = "iterations", SSG_FIELD_INT(struct ssg_atrous_params, iterations), .def = 3,
-     .min = 1, .max = SSG_ATROUS_MAX_ITERATIONS,
+     .min = 1, .max = SSG_ATROUS_MAX_ITERATIONS, .unit = "passes",
      .help = "passes; pass i spaces its 5 x 5 taps 2^i px apart (3: 14 px each side)"},
     SSG_BILATERAL_EDGE_PARAMS(struct ssg_atrous_params),
 };
