@@ -3,8 +3,11 @@
  * commit) and the tone curves, which need no OpenImageIO, are here.
  *
  * The module is looked for in $SSGRAPH_MODULE_DIR alone when that is set, else next to
- * the program or library that holds this code, next to the running program, in the build
- * tree it was built in, and in the installed module directory (each place once). A
+ * the program or library that holds this code and in its ssgraph/ folder (an installed
+ * libssgraph.so: lib/ and lib/ssgraph/), next to the running program and where
+ * `cmake --install` puts it relative to the program's bin/ (../lib/ssgraph), in the build
+ * tree it was built in, and in the configured install directory (each place once). The
+ * relative places make an installed tree movable. A
  * process opens it at most once (pthread_once), so concurrent first calls are safe; a
  * failure to open it is remembered and reported by every call. */
 #define _GNU_SOURCE /* dladdr */
@@ -24,6 +27,9 @@
 #endif
 #ifndef SSG_MODULE_INSTALL_DIR
 #define SSG_MODULE_INSTALL_DIR ""
+#endif
+#ifndef SSG_MODULE_FROM_BINDIR /* the module directory relative to the installed bin/ */
+#define SSG_MODULE_FROM_BINDIR "../lib/ssgraph"
 #endif
 
 static const struct ssg_oiio_host host = {
@@ -123,10 +129,18 @@ static void open_module(void)
         try_dir(chosen);
         return;
     }
-    char mine[4096], exe[4096];
+    char mine[4096], exe[4096], mine_installed[4200], exe_installed[4200];
     own_dir(mine, sizeof mine);
     exe_dir(exe, sizeof exe);
-    const char *dirs[] = {mine, exe, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
+    mine_installed[0] = exe_installed[0] = '\0'; /* "" is skipped */
+    if (mine[0])
+        snprintf(mine_installed, sizeof mine_installed, "%s/ssgraph", mine);
+    if (exe[0])
+        snprintf(exe_installed, sizeof exe_installed, "%s/%s", exe, SSG_MODULE_FROM_BINDIR);
+    /* installed places before the build tree: an installed program must not pick up the
+       module of a build tree it was installed from (a later build may have changed it) */
+    const char *dirs[] = {mine,          mine_installed,       exe,
+                          exe_installed, SSG_MODULE_BUILD_DIR, SSG_MODULE_INSTALL_DIR};
     const size_t count = sizeof dirs / sizeof dirs[0];
     for (size_t i = 0; i < count; i++) {
         /* the program's two names for its directory usually agree: one try each place */

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# test_install.sh - the installed tree is usable as a user would use it:
+#   `cmake --install` of this build into a scratch prefix, then
+#   1. a C program built with pkg-config (shared library) runs a graph through the public API;
+#   2. the same program built by a CMake project with find_package(ssgraph), against
+#      ssgraph::ssgraph (shared) and ssgraph::ssgraph_static, runs it too;
+#   3. the installed command line renders an installed graph, loading the OpenImageIO
+#      module from the installed tree (not the build tree), and `ssgraph.pc` and the headers
+#      are where the docs say.
+# In a sanitizer build the programs get the same -fsanitize flags (SSG_SANITIZE_FLAGS).
+set -u
+. "$(dirname "$0")/lib.sh" test_install
+BUILD=$(cd "$(dirname "$BIN")" && pwd)
+SRC=$(pwd)
+PREFIX="$TMP/prefix"
+FLAGS=${SSG_SANITIZE_FLAGS:-}
+CC=${CC:-cc}
+
+cmake --install "$BUILD" --prefix "$PREFIX" >"$TMP/install.log" 2>&1 ||
+    { fail "cmake --install failed: $(tail -5 "$TMP/install.log")"; finish test_install; }
+LIBDIR=$(dirname "$(find "$PREFIX" -name ssgraph.pc | head -1)")/..
+for f in bin/ssgraph include/ssgraph/ssgraph.h include/ssgraph/errors.def \
+         share/ssgraph/graphs/ssao.graph share/ssgraph/examples/cornell.scene; do
+    [ -e "$PREFIX/$f" ] || fail "the install lacks $f"
+done
+for f in libssgraph.a libssgraph.so ssgraph/libssgraph_oiio.so cmake/ssgraph/ssgraphConfig.cmake \
+         cmake/ssgraph/ssgraphConfigVersion.cmake; do
+    [ -e "$LIBDIR/$f" ] || fail "the install lacks lib/$f"
+done
+GRAPH="$PREFIX/share/ssgraph/graphs/ssao.graph"
+
+# 1. pkg-config, shared library (the user's program finds it through LD_LIBRARY_PATH)
+export PKG_CONFIG_PATH="$LIBDIR/pkgconfig"
+if ! pc=$(pkg-config --cflags --libs ssgraph 2>&1); then
+    fail "pkg-config does not know ssgraph: $pc"
+elif ! $CC -std=c11 $FLAGS "$SRC/tests/install/consumer.c" -o "$TMP/consumer_pc" $pc -lm \
+        >"$TMP/pc.log" 2>&1; then
+    fail "building against pkg-config's flags ($pc) failed: $(cat "$TMP/pc.log")"
+else
+    expect_exit 0 "consumer: ok" env LD_LIBRARY_PATH="$LIBDIR" "$TMP/consumer_pc" "$GRAPH"
+fi
+pkg-config --modversion ssgraph | grep -qx "$(sed -n 's/^#define SSG_VERSION "\(.*\)"/\1/p' \
+    "$SRC/core/ssgraph.h")" || fail "ssgraph.pc's version is not the header's"
+
+# 2. find_package, both variants
+if ! cmake -S "$SRC/tests/install" -B "$TMP/consumer" -DCMAKE_PREFIX_PATH="$PREFIX" \
+        -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS="$FLAGS" -DCMAKE_EXE_LINKER_FLAGS="$FLAGS" \
+        >"$TMP/cmake.log" 2>&1 ||
+   ! cmake --build "$TMP/consumer" -j2 >>"$TMP/cmake.log" 2>&1; then
+    fail "the find_package(ssgraph) project did not build: $(tail -20 "$TMP/cmake.log")"
+else
+    expect_exit 0 "consumer: ok" env LD_LIBRARY_PATH="$LIBDIR" "$TMP/consumer/consumer_shared" "$GRAPH"
+    expect_exit 0 "consumer: ok" "$TMP/consumer/consumer_static" "$GRAPH"
+    ldd "$TMP/consumer/consumer_static" | grep -q libssgraph &&
+        fail "consumer_static links libssgraph dynamically"
+fi
+
+# 3. the installed command line, its module from the installed tree
+unset SSGRAPH_MODULE_DIR
+out=$(LD_DEBUG=files "$PREFIX/bin/ssgraph" run "$GRAPH" --size 48x32 --out "$TMP/cli" 2>&1)
+[ -s "$TMP/cli/ssao.exr" ] || fail "the installed ssgraph wrote no out/ssao.exr: $out"
+loaded=$(echo "$out" | grep -o 'file=[^ ]*libssgraph_oiio.so' | head -1)
+case "$loaded" in
+    "file=$PREFIX"/*) ;;
+    *) fail "the installed ssgraph loaded its module from '$loaded', not from $PREFIX" ;;
+esac
+finish test_install
