@@ -332,7 +332,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "nodes"))
         return cmd_nodes();
     if (!strcmp(cmd, "docs")) {
-        ssg_nodes_markdown(stdout);
+        ssg_nodes_markdown(stdout, "graphs");
         return 0;
     }
     if (!strcmp(cmd, "describe"))

@@ -325,8 +325,10 @@ const char *ssg_node_name(int index);
 const char *ssg_node_summary(int index);
 /* Returns SSG_E_UNKNOWN_NODE when no node has that name. */
 enum ssg_err ssg_node_describe(const char *node, FILE *stream);
-/* Writes the Markdown reference of every node (used to generate docs/nodes.md). */
-void ssg_nodes_markdown(FILE *stream);
+/* Writes the Markdown reference of every node (docs/nodes.md): a glossary of the port
+ * types, then each node's ports and parameters. With graphs_dir (NULL: left out), each
+ * node also lists the .graph files of that folder and its sub-folders that use it. */
+void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
 
 #ifdef __cplusplus
 }

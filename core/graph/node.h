@@ -65,6 +65,10 @@ enum ssg_type {
 
 /* "scalar", "vector", "color|scalar", ... into buf. */
 void ssg_type_names(unsigned mask, char *buf, size_t len);
+/* Name and one-line description of the port type with bit number `bit` (enum ssg_type);
+   NULL past the last. */
+const char *ssg_type_name(int bit);
+const char *ssg_type_doc(int bit);
 /* Channels of a frame-sized type (1 or 3); 0 for kernel and pattern. */
 int ssg_type_channels(unsigned type);
 
@@ -198,6 +202,10 @@ struct ssg_node_desc {
 
 /* The registry, built from nodes/nodes.def. NULL when unknown. */
 const struct ssg_node_desc *ssg_node_find(const char *name, size_t len);
+/* The registry's index-th node (0 .. ssg_node_count() - 1), else NULL. */
+const struct ssg_node_desc *ssg_node_at(int index);
+/* "cpu, gl" or "cpu only". */
+const char *ssg_node_backends(const struct ssg_node_desc *d);
 int ssg_port_find(const struct ssg_port_desc *ports, int count, const char *name, size_t len);
 
 /* Runs fn over fixed bands of `rows_per_band` rows, in parallel (OpenMP). The bands do not
