@@ -2,13 +2,16 @@
  *
  *   ssgraph run FILE [options]        validate, then run a graph and write its outputs
  *   ssgraph check FILE [options]      validate only (no meshes or images are loaded)
- *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR]
+ *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR | -o FILE]
  *   ssgraph compare A B [--mask M] [--json] [--peak P]
  *   ssgraph bench FILE --sweep NODE.PARAM=V1,V2,... [options]
  *   ssgraph tune FILE --reference NODE.PORT --image NODE.PORT --param NODE.P=LO:HI ...
- *   ssgraph nodes | describe NODE | docs
- * The options and the usage text come from one table (options.c); what a run printed
- * comes back from the library as statistics and is printed by report.c.
+ *   ssgraph dot FILE [-o FILE.dot]
+ *   ssgraph nodes | describe NODE | docs | help [COMMAND] | --version
+ * The commands and their usage come from commands.c, the options from one table
+ * (options.c); what a run printed comes back from the library as statistics and is
+ * printed by report.c; each file written is named on a `wrote PATH` line (not with
+ * --quiet).
  * Exit status: 0 success, 1 invalid input or failed run, 2 bad command line. */
 #include <math.h>
 #include <stdio.h>
@@ -17,10 +20,15 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "graph_info.h"
+#include "io/imageio.h"
+#include "io/stereo.h"
 #include "lang/files.h"
 #include "options.h"
 #include "report.h"
+#include "scene_info.h"
 #include "ssgraph.h"
+#include "version.h"
 
 enum { EXIT_INVALID = 1, EXIT_USAGE = SSG_CLI_EXIT_USAGE };
 
@@ -43,7 +51,8 @@ static enum ssg_err show_run(const struct ssg_cli_args *a, const struct ssg_run_
 
 /* One graph run with the command line's options into out_dir (eye: 0, or -1/+1 for the
    left/right eye of --stereo), printed; *frame_ms (if not NULL) its frame time. The
-   progress bar is drawn only on a terminal, as the notices of --verbose go to stderr. */
+   progress bar is drawn only on a terminal (stderr); the `wrote` lines go to stdout; with
+   --quiet neither. */
 static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char *out_dir,
                              double *frame_ms, struct ssg_diags *d)
 {
@@ -55,9 +64,11 @@ static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char
     if (!e) {
         struct ssg_run_options ro = {
             .out_dir = out_dir, .threads = a->threads, .frames = a->frames, .stats = &st,
-            .progress = isatty(fileno(stderr)) ? ssg_report_progress : NULL,
-            .log = a->verbose ? ssg_report_log : NULL,
+            .progress = !a->quiet && isatty(fileno(stderr)) ? ssg_report_progress : NULL,
+            .log = a->quiet ? NULL : ssg_report_log,
         };
+        if (a->verbose && !a->quiet)
+            ssg_cli_print_resolved(g, stdout);
         e = ssg_graph_run(g, &ro, d);
         enum ssg_err shown = show_run(a, &st, d);
         e = e ? e : shown;
@@ -70,8 +81,8 @@ static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char
 }
 
 /* --stereo: the graph for the left and the right eye (1080 x 1200 each unless --size, as
-   the HTC Vive's panels in the thesis's section 5.2), each into its own folder, and the
-   time of both. */
+   the HTC Vive's panels in the thesis's section 5.2), one multi-view EXR per write output
+   with NAME_left.png and NAME_right.png beside it, and the time of both. */
 static int cmd_stereo(struct ssg_cli_args a)
 {
     struct ssg_diags d = {0};
@@ -81,13 +92,22 @@ static int cmd_stereo(struct ssg_cli_args a)
     if (!a.ov.width)
         a.ov.width = 1080, a.ov.height = 1200;
     enum ssg_err e = SSG_OK;
+    /* each eye into a hidden folder of the output folder, then one multi-view EXR per
+       EXR and NAME_left/NAME_right per other file (io/stereo.h) */
+    const char *dirs[2] = {dir[0], dir[1]};
+    for (int i = 0; i < 2; i++)
+        snprintf(dir[i], sizeof dir[i], "%s/.stereo-%s-%ld", a.out_dir, names[i],
+                 (long)getpid());
     for (int i = 0; i < 2 && !e; i++) {
-        snprintf(dir[i], sizeof dir[i], "%s/%s", a.out_dir, names[i]);
         if (!a.quiet)
             printf("%s eye (camera moved %+g along its right axis):\n", names[i],
                    (i ? 0.5 : -0.5) * a.ipd);
         e = run_once(&a, i ? 1.0f : -1.0f, dir[i], &ms[i], &d);
     }
+    if (e)
+        ssg_stereo_discard(dirs, 2);
+    else
+        e = ssg_stereo_join(a.out_dir, dirs, names, 2, &d);
     if (!e) {
         double both = ms[0] + ms[1];
         printf("stereo %dx%d per eye, ipd %g: left %.2f ms + right %.2f ms = %.2f ms per "
@@ -103,15 +123,47 @@ static int cmd_check(const struct ssg_cli_args *a)
     const char *file = a->files[0];
     size_t len = strlen(file);
     int is_scene = len > 6 && !strcmp(file + len - 6, ".scene");
-    enum ssg_err e = is_scene ? ssg_scene_check(file, &d) : ssg_graph_check(file, &a->ov, &d);
+    if (is_scene) /* the scene's bounds, triangles, camera and lights too */
+        return conclude(&d, ssg_cli_check_scene(file, stdout, &d));
+    enum ssg_err e = ssg_graph_check(file, &a->ov, &d);
     if (!e)
         printf("%s: ok\n", file);
     return conclude(&d, e);
 }
 
-static int cmd_run(const struct ssg_cli_args *a)
+/* -o DIR/NAME.exr: the run writes into DIR, and the graph's first write node is named
+   NAME (a --set after the command line's own, so it wins). */
+static int output_of_run(struct ssg_cli_args *a)
+{
+    char name[128], set[1200], dir[1024];
+    const char *file = a->output, *slash = strrchr(file, '/');
+    const char *base = slash ? slash + 1 : file;
+    size_t len = strlen(base);
+    if (len <= 4 || strcmp(base + len - 4, ".exr") || strpbrk(base, "\"\\"))
+        return ssg_cli_usage_error("-o expects DIR/NAME.exr (the EXR of the graph's first "
+                                   "write node), got '%s'", file);
+    int found = ssg_cli_first_write(a->files[0], name, sizeof name);
+    if (found < 0)
+        return 0; /* the graph does not parse: its load says why */
+    if (!found)
+        return ssg_cli_usage_error("-o names the EXR of the graph's first write node, but "
+                                   "%s has none", a->files[0]);
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - file) : 1, slash ? file : ".");
+    snprintf(set, sizeof set, "%s.name=\"%.*s\"", name, (int)(len - 4), base);
+    const char *kept_set = ssg_cli_keep(a, set), *kept_dir = ssg_cli_keep(a, dir[0] ? dir : "/");
+    if (!kept_set || !kept_dir || a->ov.set_count >= SSG_CLI_MAX_SETS)
+        return ssg_cli_usage_error("%s", "too many --set options for -o");
+    a->sets[a->ov.set_count++] = kept_set;
+    a->out_dir = kept_dir;
+    return 0;
+}
+
+static int cmd_run(struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
+    int rc = a->output ? output_of_run(a) : 0;
+    if (rc)
+        return rc;
     if (a->stereo)
         return cmd_stereo(*a);
     return conclude(&d, run_once(a, 0.0f, a->out_dir, NULL, &d));
@@ -151,20 +203,42 @@ static int check_inputs(const struct ssg_cli_args *a)
     return 0;
 }
 
-static enum ssg_err write_outputs(const struct ssg_outputs *out, const char *dir,
+/* Where output i of a node run goes: <out>/<port>.exr, or with -o FILE.exr the first
+   output FILE.exr and each other FILE_<port>.exr; *dir_len: the bytes of its folder. */
+static void output_path(const struct ssg_cli_args *a, const struct ssg_outputs *out, int i,
+                        char *path, size_t len, size_t *dir_len)
+{
+    if (!a->output)
+        snprintf(path, len, "%s/%s.exr", a->out_dir, out->names[i]);
+    else if (i == 0)
+        snprintf(path, len, "%s", a->output);
+    else
+        snprintf(path, len, "%.*s_%s.exr", (int)(strlen(a->output) - 4), a->output,
+                 out->names[i]);
+    const char *slash = strrchr(path, '/');
+    *dir_len = slash ? (size_t)(slash - path) : 0;
+}
+
+static enum ssg_err write_outputs(const struct ssg_outputs *out, const struct ssg_cli_args *a,
                                   struct ssg_diags *d)
 {
-    enum ssg_err made = ssg_make_dirs(dir, d);
-    if (made)
-        return made;
     for (int i = 0; i < out->count; i++) {
-        char path[1200];
-        snprintf(path, sizeof path, "%s/%s.exr", dir, out->names[i]);
-        enum ssg_err e = ssg_image_write(path, out->images[i], d);
+        char path[1200], dir[1200];
+        size_t dir_len;
+        output_path(a, out, i, path, sizeof path, &dir_len);
+        snprintf(dir, sizeof dir, "%.*s", (int)dir_len, path);
+        enum ssg_err e = dir_len ? ssg_make_dirs(dir, d) : SSG_OK;
+        if (!e)
+            e = ssg_image_write(path, out->images[i], d);
         if (e)
             return e;
-        printf("wrote %s (%dx%d, %d channels)\n", path, out->images[i]->width,
-               out->images[i]->height, out->images[i]->channels);
+        if (!a->quiet)
+            printf("wrote %s", path);
+        if (!a->quiet && a->verbose)
+            printf(" (%dx%d, %d channels)", out->images[i]->width, out->images[i]->height,
+                   out->images[i]->channels);
+        if (!a->quiet)
+            putchar('\n');
     }
     return SSG_OK;
 }
@@ -192,6 +266,10 @@ static int cmd_node(const struct ssg_cli_args *a)
     char ports[SSG_CLI_MAX_INPUTS][64];
     enum ssg_err e = SSG_OK;
     int rc = check_inputs(a);
+    size_t olen = a->output ? strlen(a->output) : 0;
+    if (!rc && a->output && (olen <= 4 || strcmp(a->output + olen - 4, ".exr")))
+        rc = ssg_cli_usage_error("-o expects FILE.exr (the node's first output), got '%s'",
+                                 a->output);
     if (rc)
         return rc;
     for (int i = 0; i < a->input_count; i++) {
@@ -201,6 +279,11 @@ static int cmd_node(const struct ssg_cli_args *a)
     }
     struct ssg_frame frame = {.width = a->ov.width, .height = a->ov.height, .fov_y = a->fov,
                               .seed = a->ov.seed >= 0 ? (uint64_t)a->ov.seed : 1};
+    /* the camera of the first input that records one (io/imageio.h): --fov is for foreign
+       files, and wins when given */
+    for (int i = 0; i < a->input_count && a->fov <= 0; i++)
+        if (ssg_exr_frame_read(strchr(a->inputs[i], '=') + 1, &frame))
+            break;
     struct ssg_outputs out = {0};
     const char *sets[SSG_CLI_MAX_SETS + 1];
     int set_count = a->ov.set_count;
@@ -213,8 +296,8 @@ static int cmd_node(const struct ssg_cli_args *a)
     if (!e)
         e = ssg_node_run(a->files[0], bind, a->input_count, sets, set_count, &frame, &out, &d);
     if (!e)
-        e = write_outputs(&out, a->out_dir, &d);
-    if (!e)
+        e = write_outputs(&out, a, &d);
+    if (!e && !a->quiet)
         print_metrics(&out, 0);
     ssg_outputs_release(&out);
     for (int i = 0; i < a->input_count; i++)
@@ -276,6 +359,29 @@ static int cmd_tune(const struct ssg_cli_args *a)
     return ssg_tune_main(&req);
 }
 
+/* `dot FILE`: the graph as Graphviz, to stdout or -o FILE. */
+static int cmd_dot(const struct ssg_cli_args *a)
+{
+    struct ssg_diags d = {0};
+    enum ssg_err e = ssg_cli_dot(a->files[0], a->output, &d);
+    if (!e && a->output)
+        printf("wrote %s\n", a->output);
+    return conclude(&d, e);
+}
+
+static int cmd_help(const struct ssg_cli_args *a)
+{
+    enum ssg_cli_command command;
+    if (!a->file_count) {
+        ssg_cli_usage(stdout);
+        return 0;
+    }
+    if (!ssg_cli_command_find(a->files[0], &command))
+        return ssg_cli_usage_error("unknown command '%s' (see 'ssgraph help')", a->files[0]);
+    ssg_cli_command_usage(command, stdout);
+    return 0;
+}
+
 static int cmd_nodes(void)
 {
     for (int i = 0; i < ssg_node_count(); i++)
@@ -291,19 +397,19 @@ static int cmd_describe(const char *node)
     return EXIT_INVALID;
 }
 
-static int wants_help(int argc, char **argv)
-{
-    for (int i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))
-            return 1;
-    return 0;
-}
+enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE };
 
-/* A command that takes options, on its parsed arguments. */
+/* A command on its parsed arguments (its usage for --help). */
 static int run_command(enum ssg_cli_command command, int argc, char **argv)
 {
-    struct ssg_cli_args a;
+    static struct ssg_cli_args a; /* some 12 KB: kept off the stack */
     int rc = ssg_cli_parse(command, argc, argv, &a);
+    if (!rc && a.help) {
+        ssg_cli_command_usage(command, stdout);
+        return 0;
+    }
+    if (!rc && (command & TAKES_SETS) && a.ov.set_count)
+        rc = ssg_cli_quote_sets(&a, command);
     if (rc)
         return rc;
     switch (command) {
@@ -313,6 +419,11 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_BENCH: return cmd_bench(&a);
     case SSG_CLI_COMPARE: return cmd_compare(&a);
     case SSG_CLI_TUNE: return cmd_tune(&a);
+    case SSG_CLI_DOT: return cmd_dot(&a);
+    case SSG_CLI_NODES: return cmd_nodes();
+    case SSG_CLI_DESCRIBE: return cmd_describe(a.files[0]);
+    case SSG_CLI_DOCS: ssg_nodes_markdown(stdout, "graphs"); return 0;
+    case SSG_CLI_HELP: return cmd_help(&a);
     }
     return EXIT_USAGE;
 }
@@ -320,24 +431,13 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
 int main(int argc, char **argv)
 {
     ssg_tmp_remove_on_signals(); /* a killed run leaves no half-written temporary */
-    if (argc < 2 || wants_help(argc, argv)) {
+    const char *cmd = argc < 2 ? "" : argv[1];
+    if (argc < 2 || !strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
         ssg_cli_usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? EXIT_USAGE : 0;
     }
-    const char *cmd = argv[1];
-    if (!strcmp(cmd, "--version")) {
-        printf("ssgraph %s\n", SSG_VERSION);
-        return 0;
-    }
-    if (!strcmp(cmd, "nodes"))
-        return cmd_nodes();
-    if (!strcmp(cmd, "docs")) {
-        ssg_nodes_markdown(stdout, "graphs");
-        return 0;
-    }
-    if (!strcmp(cmd, "describe"))
-        return argc == 3 ? cmd_describe(argv[2])
-                         : ssg_cli_usage_error("%s", "describe expects NODE");
+    if (!strcmp(cmd, "--version"))
+        return ssg_cli_version();
     enum ssg_cli_command command;
     if (!ssg_cli_command_find(cmd, &command))
         return ssg_cli_usage_error("unknown command '%s'", cmd);

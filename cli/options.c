@@ -1,13 +1,14 @@
 /* options.c - the command line's options as one table (options.h): each row names the
  * option, its argument, the commands it applies to, its help and how its value is taken,
- * so that parsing, the usage text and the check that an option belongs to the command all
- * read the same row. */
+ * so that parsing, the usage texts and the check that an option belongs to the command
+ * all read the same row. The commands are commands.c's table. */
 #include <errno.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "commands.h"
 #include "options.h"
 
 struct option;
@@ -16,6 +17,7 @@ typedef int (*take_fn)(struct ssg_cli_args *a, const struct option *opt, const c
 
 struct option {
     const char *name;     /* "--size" */
+    char short_name;      /* 'o' for -o; 0 = none */
     const char *arg;      /* "WxH" in the usage; NULL = a flag, which takes no value */
     unsigned commands;    /* enum ssg_cli_command bits it applies to */
     const char *help;     /* usage text; each '\n' starts an indented line */
@@ -28,10 +30,6 @@ struct option {
 };
 
 enum { HELP_COLUMN = 22 }; /* where an option's help starts in the usage text */
-
-/* The names of the commands, bit by bit of enum ssg_cli_command. */
-static const char *const command_names[] = {"run",   "check",   "node",
-                                            "bench", "compare", "tune"};
 
 #define FIELD(a, opt, type) ((type *)((char *)(a) + (opt)->field))
 
@@ -211,10 +209,21 @@ static const struct option options[] = {
     {.name = "--ipd", .arg = "D", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_float,
      .field = OF(ipd), .lo = 0, .hi = 1e6, .expects = "a positive distance in scene units",
      .help = "(with --stereo) distance between the eyes, scene units (0.064)"},
-    {.name = "--quiet", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(quiet),
-     .help = "do not print per-node timings"},
-    {.name = "--verbose", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(verbose),
-     .help = "also name every file the run writes, on stderr"},
+    {.name = "--quiet", .short_name = 'q', .commands = SSG_CLI_RUN | SSG_CLI_NODE,
+     .take = take_flag, .field = OF(quiet),
+     .help = "print no table, no progress and no `wrote PATH` lines (errors\n"
+             "still go to stderr)"},
+    {.name = "--verbose", .short_name = 'v', .commands = SSG_CLI_RUN | SSG_CLI_NODE,
+     .take = take_flag, .field = OF(verbose),
+     .help = "also print what the run resolved: size, seed, scene, backend and\n"
+             "every node's parameters (run); each output's size (node)"},
+    {.name = "--output", .short_name = 'o', .arg = "FILE",
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_DOT, .take = take_text,
+     .field = OF(output),
+     .help = "the main output: run: DIR/NAME.exr names the first write node's\n"
+             "EXR (its PNG beside it; the run's other files go to DIR too);\n"
+             "node: the first output's EXR (others: FILE_<port>.exr); dot: the\n"
+             "DOT file (default: stdout)"},
     {.name = "--profile-json", .arg = "FILE", .commands = SSG_CLI_RUN, .take = take_text,
      .field = OF(profile_json),
      .help = "write that profile (or one frame's) as JSON"},
@@ -263,34 +272,6 @@ static const struct option options[] = {
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
 
-static const char *const usage_commands =
-    "usage: ssgraph <command> [arguments]\n"
-    "\n"
-    "commands:\n"
-    "  run FILE        validate and run a graph; writes into --out (default out/)\n"
-    "  check FILE      validate a graph and its scene without running it (FILE.scene:\n"
-    "                  validate a scene and load its meshes)\n"
-    "  node NAME       run one node on image files (--in port=file.exr[:layer])\n"
-    "  compare A B     RMSE, MAE, bias, PSNR, SSIM of image A against reference B\n"
-    "                  (FILE[:LAYER]; --mask M, --json, --peak P; diff image: node compare\n"
-    "                  --in ...)\n"
-    "  bench FILE      run a graph for every combination of --sweep NODE.PARAM=V1,V2,...\n"
-    "                  (up to 4; --frames N each, default 5); writes bench.csv, bench.md\n"
-    "                  and bench.json into --out, a row per cell as it finishes; the\n"
-    "                  table shows --time NODE's ms (default: the whole frame); --plot\n"
-    "                  draws ms against the first sweep and --error NODE.METRIC against\n"
-    "                  ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
-    "                  --image NODE.PORT adds each cell's error against that truth;\n"
-    "                  --stereo times both eyes of every cell (1080x1200 unless --size)\n"
-    "  tune FILE       search --param NODE.P=LO:HI[:log] for the lowest mean RMSE of\n"
-    "                  --image NODE.PORT against --reference NODE.PORT (computed once\n"
-    "                  per scene) over every --scene (--mask NODE.PORT: those pixels;\n"
-    "                  --evals N, default 40); writes tune.csv and tune.json after each\n"
-    "                  evaluation and tuned.graph (the graph with the best values)\n"
-    "  nodes           list the nodes\n"
-    "  describe NODE   ports, parameters, defaults, ranges and method of a node\n"
-    "  docs            the Markdown reference of every node\n";
-
 /* "run, check and node": the commands of a mask, as a sentence's list. */
 static void command_list(unsigned mask, char *buf, size_t len)
 {
@@ -299,113 +280,212 @@ static void command_list(unsigned mask, char *buf, size_t len)
     buf[0] = 0;
     for (unsigned m = mask; m; m &= m - 1)
         total++;
-    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++) {
-        if (!(mask & (1u << c)) || used >= len)
+    for (int c = 0; c < ssg_cli_command_count; c++) {
+        if (!(mask & ssg_cli_commands[c].command) || used >= len)
             continue;
         n++;
         used += (size_t)snprintf(buf + used, len - used, "%s%s",
-                                 n == 1 ? "" : n == total ? " and " : ", ", command_names[c]);
+                                 n == 1 ? "" : n == total ? " and " : ", ",
+                                 ssg_cli_commands[c].name);
     }
 }
 
-/* "  --name ARG   help", the help's further lines indented to its column. */
-static void usage_option(const struct option *o, FILE *f)
+/* Text with each '\n' followed by an indent of `column` spaces. */
+static void indented(const char *text, int column, FILE *f)
 {
-    char head[64];
-    snprintf(head, sizeof head, "%s%s%s", o->name, o->arg ? " " : "", o->arg ? o->arg : "");
-    int width = (int)strlen(head) <= HELP_COLUMN - 3 ? HELP_COLUMN - 3 : (int)strlen(head) + 1;
-    fprintf(f, "  %-*s ", width, head);
-    for (const char *p = o->help; *p; p++) {
+    for (const char *p = text; *p; p++) {
         fputc(*p, f);
         if (*p == '\n')
-            fprintf(f, "%*s", HELP_COLUMN, "");
+            fprintf(f, "%*s", column, "");
     }
+}
+
+/* "  -o, --output FILE   help", the help's further lines indented to its column. */
+static void usage_option(const struct option *o, FILE *f)
+{
+    char head[80], alias[8] = "";
+    if (o->short_name)
+        snprintf(alias, sizeof alias, "-%c, ", o->short_name);
+    snprintf(head, sizeof head, "%s%s%s%s", alias, o->name, o->arg ? " " : "",
+             o->arg ? o->arg : "");
+    int width = (int)strlen(head) <= HELP_COLUMN - 3 ? HELP_COLUMN - 3 : (int)strlen(head) + 1;
+    fprintf(f, "  %-*s ", width, head);
+    indented(o->help, HELP_COLUMN, f);
     fputc('\n', f);
+}
+
+static const struct ssg_cli_command_info *command_info(enum ssg_cli_command command)
+{
+    for (int c = 0; c < ssg_cli_command_count; c++)
+        if (ssg_cli_commands[c].command == command)
+            return &ssg_cli_commands[c];
+    return NULL;
 }
 
 void ssg_cli_usage(FILE *f)
 {
-    fputs(usage_commands, f);
+    fputs("usage: ssgraph <command> [arguments] [options]\n\ncommands:\n", f);
+    for (int c = 0; c < ssg_cli_command_count; c++) {
+        const struct ssg_cli_command_info *ci = &ssg_cli_commands[c];
+        char head[40];
+        snprintf(head, sizeof head, "%s %s", ci->name, ci->args);
+        fprintf(f, "  %-15s ", head);
+        indented(ci->summary, 18, f);
+        fputc('\n', f);
+    }
     for (int i = 0; i < OPTION_COUNT; i++) {
         if (i == 0 || options[i].commands != options[i - 1].commands) {
-            char list[128];
+            char list[160];
             command_list(options[i].commands, list, sizeof list);
             fprintf(f, "\noptions of %s:\n", list);
         }
         usage_option(&options[i], f);
     }
-    fputs("\n  --help, --version\n", f);
+    fputs("\n  -h, --help          a command's usage: ssgraph help COMMAND, ssgraph COMMAND "
+          "--help\n  --version           the version and the build's features\n"
+          "\nexit status: 0 success, 1 invalid input or failed run, 2 bad command line\n",
+          f);
 }
 
-static const struct option *find_option(const char *name)
+void ssg_cli_command_usage(enum ssg_cli_command command, FILE *f)
 {
+    const struct ssg_cli_command_info *ci = command_info(command);
+    if (!ci)
+        return;
+    int any = 0;
     for (int i = 0; i < OPTION_COUNT; i++)
-        if (!strcmp(options[i].name, name))
-            return &options[i];
-    return NULL;
+        any |= (options[i].commands & command) != 0;
+    fprintf(f, "usage: ssgraph %s%s%s%s\n\n%s\n\noptions:\n", ci->name, ci->args[0] ? " " : "",
+            ci->args, any ? " [options]" : "", ci->help);
+    for (int i = 0; i < OPTION_COUNT; i++)
+        if (options[i].commands & command)
+            usage_option(&options[i], f);
+    fputs("  -h, --help          this usage\n", f);
 }
 
 int ssg_cli_command_find(const char *name, enum ssg_cli_command *command)
 {
-    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++)
-        if (!strcmp(name, command_names[c])) {
-            *command = (enum ssg_cli_command)(1u << c);
+    for (int c = 0; c < ssg_cli_command_count; c++)
+        if (!strcmp(name, ssg_cli_commands[c].name)) {
+            *command = ssg_cli_commands[c].command;
             return 1;
         }
     return 0;
 }
 
-static const char *command_name(enum ssg_cli_command command)
+const char *ssg_cli_command_name(enum ssg_cli_command command)
 {
-    for (int c = 0; c < (int)(sizeof command_names / sizeof *command_names); c++)
-        if (command == 1u << c)
-            return command_names[c];
-    return "?";
+    const struct ssg_cli_command_info *ci = command_info(command);
+    return ci ? ci->name : "?";
 }
 
-/* The option at argv[*i] and its value (argv[*i + 1], then skipped). */
+const char *ssg_cli_keep(struct ssg_cli_args *a, const char *text)
+{
+    size_t len = strlen(text) + 1;
+    if (len > sizeof a->set_text - a->set_text_used)
+        return NULL;
+    char *kept = a->set_text + a->set_text_used;
+    memcpy(kept, text, len);
+    a->set_text_used += len;
+    return kept;
+}
+
+/* The option an argument names: "--name", "--name=value", "-o", "-oVALUE"; *value is the
+   value given in the same argument, else NULL. */
+static const struct option *find_option(const char *arg, const char **value, char *name,
+                                        size_t len)
+{
+    *value = NULL;
+    if (arg[1] == '-') {
+        const char *eq = strchr(arg, '=');
+        size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
+        snprintf(name, len, "%.*s", (int)n, arg);
+        *value = eq ? eq + 1 : NULL;
+        for (int i = 0; i < OPTION_COUNT; i++)
+            if (!strcmp(options[i].name, name))
+                return &options[i];
+        return NULL;
+    }
+    snprintf(name, len, "-%c", arg[1]);
+    for (int i = 0; i < OPTION_COUNT; i++)
+        if (options[i].short_name && options[i].short_name == arg[1]) {
+            *value = arg[2] ? arg + 2 : NULL;
+            return &options[i];
+        }
+    return NULL;
+}
+
+/* The option at argv[*i] and its value (in the same argument after '=', else argv[*i + 1],
+   then skipped). */
 static int take_option(enum ssg_cli_command command, int argc, char **argv, int *i,
                        struct ssg_cli_args *a)
 {
-    const struct option *opt = find_option(argv[*i]);
+    char name[64];
+    const char *value;
+    const struct option *opt = find_option(argv[*i], &value, name, sizeof name);
     if (!opt)
-        return ssg_cli_usage_error("unknown option '%s'", argv[*i]);
+        return ssg_cli_usage_error("unknown option '%s'", name);
     if (!(opt->commands & command)) {
-        char list[128];
+        char list[160];
         command_list(opt->commands, list, sizeof list);
         return usage_errorf("option '%s' does not apply to '%s' (it is an option of %s)",
-                            opt->name, command_name(command), list);
+                            opt->name, ssg_cli_command_name(command), list);
     }
-    if (opt->arg && *i + 1 >= argc)
-        return ssg_cli_usage_error("option '%s' needs a value", opt->name);
-    return opt->take(a, opt, opt->arg ? argv[++*i] : NULL);
+    if (!opt->arg && value)
+        return usage_errorf("option '%s' takes no value, got '%s'", opt->name, argv[*i]);
+    if (opt->arg && !value) {
+        if (*i + 1 >= argc)
+            return ssg_cli_usage_error("option '%s' needs a value", opt->name);
+        value = argv[++*i];
+    }
+    return opt->take(a, opt, value);
 }
 
 static void defaults(struct ssg_cli_args *a)
 {
-    *a = (struct ssg_cli_args){.seed = -1, .guard = -1, .out_dir = "out", .ipd = 0.064f};
+    memset(a, 0, sizeof *a);
+    a->seed = -1;
+    a->guard = -1;
+    a->ipd = 0.064f;
     a->ov.sets = a->sets;
 }
 
-/* The positional arguments a command wants: compare two images, the others one. */
+/* The positional arguments the command wants. */
 static int check_positional(enum ssg_cli_command command, const struct ssg_cli_args *a)
 {
+    const struct ssg_cli_command_info *ci = command_info(command);
+    if (a->file_count >= ci->min_args)
+        return 0;
     if (command == SSG_CLI_COMPARE)
-        return a->file_count == 2
-                   ? 0
-                   : ssg_cli_usage_error("%s", "compare expects two image files: A B");
-    return a->file_count ? 0 : ssg_cli_usage_error("%s", "missing FILE (or NODE) argument");
+        return ssg_cli_usage_error("%s", "compare expects two image files: A B");
+    return usage_errorf("%s expects %s (see 'ssgraph help %s')", ci->name, ci->args,
+                        ci->name);
+}
+
+static int is_help(const char *arg)
+{
+    return !strcmp(arg, "--help") || !strcmp(arg, "-h");
 }
 
 int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
                   struct ssg_cli_args *a)
 {
-    int most = command == SSG_CLI_COMPARE ? 2 : 1;
+    int most = command_info(command)->max_args, options_end = argc;
     defaults(a);
+    for (int i = 0; i < argc && options_end == argc; i++) {
+        if (!strcmp(argv[i], "--"))
+            options_end = i;
+        else if (is_help(argv[i]))
+            a->help = 1;
+    }
+    if (a->help)
+        return 0;
     for (int i = 0; i < argc; i++) {
         int rc = 0;
-        if (argv[i][0] == '-' && argv[i][1] == '-')
-            rc = take_option(command, argc, argv, &i, a);
+        if (i < options_end && argv[i][0] == '-' && argv[i][1])
+            rc = take_option(command, options_end, argv, &i, a);
+        else if (i == options_end)
+            continue;
         else if (a->file_count < most)
             a->files[a->file_count++] = argv[i];
         else
@@ -413,6 +493,11 @@ int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
         if (rc)
             return rc;
     }
+    if (a->output && a->out_dir)
+        return usage_errorf("-o %s and --out %s both say where '%s' writes; give one",
+                            a->output, a->out_dir, ssg_cli_command_name(command));
+    if (!a->out_dir)
+        a->out_dir = "out";
     a->ov.seed = a->seed;
     a->ov.guard_given = a->guard >= 0;
     a->ov.guard = a->guard;

@@ -1,7 +1,10 @@
-/* options.h - the command line's options (options.c): one table of every option, its
- * argument, the commands it applies to and its help, which both parses argv and writes
- * the usage text; an option given to a command it does not apply to is a usage error.
- * Ownership: the parsed arguments point into argv. */
+/* options.h - the command line's commands and options (options.c): one table of the
+ * commands (name, arguments, help) and one of every option (long and short name, argument,
+ * the commands it applies to, help, how its value is taken), which parse argv, write the
+ * usage text (`ssgraph help`) and each command's own (`ssgraph help run`, `run --help`).
+ * An option given to a command it does not apply to is a usage error. Values come as
+ * `--size 64x48`, `--size=64x48`, `-o FILE` or `-oFILE`; `--` ends the options.
+ * Ownership: the parsed arguments point into argv (or into the args' own buffers). */
 #ifndef SSG_CLI_OPTIONS_H
 #define SSG_CLI_OPTIONS_H
 
@@ -19,13 +22,20 @@ enum ssg_cli_command {
     SSG_CLI_BENCH = 1u << 3,
     SSG_CLI_COMPARE = 1u << 4,
     SSG_CLI_TUNE = 1u << 5,
+    SSG_CLI_DOT = 1u << 6,
+    SSG_CLI_NODES = 1u << 7,
+    SSG_CLI_DESCRIBE = 1u << 8,
+    SSG_CLI_DOCS = 1u << 9,
+    SSG_CLI_HELP = 1u << 10,
 };
 
-enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2 };
+enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2,
+       SSG_CLI_SET_TEXT = 8192 };
 
 /* What the command line said; zero-initialised, then defaults, by ssg_cli_parse. */
 struct ssg_cli_args {
-    const char *files[2];            /* positional: FILE (node: NODE); compare: A and B */
+    const char *files[2];            /* positional: FILE (node, describe: NODE; help:
+                                        COMMAND); compare: A and B */
     int file_count;
     struct ssg_overrides ov;         /* --scene (the last), --size, --set, --seed, --backend */
     const char *scenes[SSG_TUNE_MAX_SCENES]; /* tune: every --scene, in order */
@@ -37,8 +47,15 @@ struct ssg_cli_args {
     int input_count;
     const char *out_dir;             /* --out; default "out" */
     int threads;                     /* --threads; 0 = all cores */
-    int quiet;                       /* run: --quiet */
-    int verbose;                     /* run: --verbose */
+    int quiet;                       /* run, node: --quiet, -q: no table, no progress, no
+                                        `wrote` lines */
+    int verbose;                     /* run, node: --verbose, -v: also the resolved
+                                        parameters and sizes */
+    const char *output;              /* run, node, dot: --output, -o FILE */
+    int help;                        /* --help, -h: the command's usage, nothing run */
+    char set_text[SSG_CLI_SET_TEXT]; /* the --set values rewritten with quotes (bare
+                                        strings) or added by -o; sets point here */
+    size_t set_text_used;            /* bytes of set_text in use */
     float fov;                       /* node: --fov, degrees; 0 = the default */
     int frames;                      /* run, bench: --frames; 0 = the command's default */
     const char *profile_json;        /* run: --profile-json */
@@ -58,12 +75,15 @@ struct ssg_cli_args {
     int json;                        /* compare: --json */
 };
 
-/* The command of that name ("run"); 0 when none takes options by that name. */
+/* The command of that name ("run"); 0 when there is none. */
 int ssg_cli_command_find(const char *name, enum ssg_cli_command *command);
+/* Its name ("run"); "?" for a value that is not one command. */
+const char *ssg_cli_command_name(enum ssg_cli_command command);
 
 /* Parses the arguments after the command into *a. Returns 0, or prints the usage error
  * (unknown option, an option of another command, a bad value, a missing or extra
- * positional argument) to stderr and returns SSG_CLI_EXIT_USAGE. */
+ * positional argument) to stderr and returns SSG_CLI_EXIT_USAGE. With --help anywhere
+ * before `--`, returns 0 with a->help set and checks nothing else. */
 int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
                   struct ssg_cli_args *a);
 
@@ -73,5 +93,12 @@ int ssg_cli_usage_error(const char *fmt, const char *arg);
 /* The whole usage text (commands, then the options of the table grouped by the commands
  * they apply to). */
 void ssg_cli_usage(FILE *stream);
+
+/* One command's usage: its synopsis, what it does, and only its options. */
+void ssg_cli_command_usage(enum ssg_cli_command command, FILE *stream);
+
+/* A copy of text kept in a->set_text (the --set entries the command line makes: a bare
+ * string quoted, -o's file name); NULL when it does not fit. */
+const char *ssg_cli_keep(struct ssg_cli_args *a, const char *text);
 
 #endif

@@ -186,5 +186,6 @@ void ssg_report_progress(void *user, const struct ssg_progress_event *event)
 void ssg_report_log(void *user, const char *line)
 {
     (void)user;
-    fprintf(stderr, "%s\n", line);
+    printf("%s\n", line);
+    fflush(stdout); /* a long run's files are named as they appear, also through a pipe */
 }

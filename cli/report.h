@@ -1,7 +1,8 @@
 /* report.h - what `ssgraph run` prints of a graph run (report.c): the one-frame timing
  * table or the profile over the frames, the GL context, the metrics, the profile as JSON,
- * and the run's progress and notices on stderr. The library prints nothing; all of it
- * comes from struct ssg_run_stats and the callbacks of struct ssg_run_options. */
+ * the run's notices (the files it wrote) on stdout and its progress on stderr. The
+ * library prints nothing; all of it comes from struct ssg_run_stats and the callbacks of
+ * struct ssg_run_options. */
 #ifndef SSG_CLI_REPORT_H
 #define SSG_CLI_REPORT_H
 
@@ -21,7 +22,8 @@ enum ssg_err ssg_report_write_json(const struct ssg_run_stats *stats, const char
  * caller installs it only when stderr is one. `user` is unused. */
 void ssg_report_progress(void *user, const struct ssg_progress_event *event);
 
-/* A log callback (ssg_log_fn) printing each line to stderr. `user` is unused. */
+/* A log callback (ssg_log_fn) printing each line to stdout: today the `wrote PATH` line
+ * of each file a run writes, as it is written, before the table. `user` is unused. */
 void ssg_report_log(void *user, const char *line);
 
 #endif
