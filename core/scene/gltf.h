@@ -26,6 +26,8 @@ struct ssg_gltf_material {
     float base_color[4]; /* baseColorFactor, linear RGBA; default 1,1,1,1 */
     int texture;         /* baseColorTexture: index into textures, -1 = none */
     int texcoord;        /* TEXCOORD_n set the texture reads; default 0 */
+    char texture_file[256]; /* an undecoded diffuse texture (Assimp formats), relative to
+                               the model file; "" = none; "*N" = embedded in the file */
 };
 
 struct ssg_gltf {
@@ -48,6 +50,11 @@ struct ssg_gltf {
  * sets *out to NULL. */
 enum ssg_err ssg_gltf_load(const char *path, struct ssg_gltf **out, char *why, size_t why_len);
 void ssg_gltf_destroy(struct ssg_gltf **gltf);
+
+/* What a glTF file's bytes declare, read from its JSON (a .glb's first chunk) without
+ * loading it: *major is asset.version's major number (0 = none, or not glTF JSON), *draco
+ * 1 when it uses KHR_draco_mesh_compression (which the tinygltf build cannot decode). */
+void ssg_gltf_sniff(const char *data, size_t len, int *major, int *draco);
 
 #ifdef __cplusplus
 }

@@ -491,6 +491,13 @@ ssg_gltf *load(const char *path)
     if (e)
         throw Failure{e, why};
     std::unique_ptr<char, decltype(&std::free)> owned(data, &std::free);
+    int major, draco;
+    ssg_gltf_sniff(data, len, &major, &draco);
+    if (major == 1)
+        fail("glTF 1.0 file (tinygltf reads glTF 2.0; model.h sends 1.0 to Assimp)");
+    if (draco)
+        fail("Draco-compressed meshes (KHR_draco_mesh_compression) are not supported: "
+             "export the model without mesh compression");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({file_exists, expand_nothing, read_whole_file, write_nothing, nullptr});

@@ -102,14 +102,16 @@ static const struct ssg_param_desc sphere_params[] = {
      .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
 };
 static const struct ssg_param_desc mesh_params[] = {
-    TEXT("file", STRING, mesh_args, file, 1, "glTF 2.0 file (.gltf or .glb), relative to "
-         "the scene"),
+    TEXT("file", STRING, mesh_args, file, 1, "model file, relative to the scene: glTF 2.0 "
+         "(.gltf, .glb), or through Assimp OBJ, PLY, FBX, 3DS, STL, DAE, glTF 1.0 and more"),
     TEXT("material", NAME, mesh_args, material, 0,
-         "material overriding the file's own; default: the glTF materials"),
+         "material overriding the file's own; default: the file's materials (diffuse "
+         "colour and texture)"),
     VEC3("translate", mesh_args, translate, 0, 0, 0, 0, 0, "scene units", "moves the mesh"),
     VEC3("rotate", mesh_args, rotate, 0, 0, 0, 0, 0, "degrees",
          "about x, then y, then z (world axes), before translate"),
-    VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first"),
+    VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first "
+         "(0.001 for a model in millimetres; `ssgraph check` suggests one)"),
 };
 
 struct kind_desc {
@@ -574,6 +576,7 @@ void ssg_scene_destroy(struct ssg_scene **scene)
     free(s->textures);
     free(s->materials);
     free(s->lights);
+    free(s->models);
     free(s);
     *scene = NULL;
 }

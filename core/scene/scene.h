@@ -9,6 +9,7 @@
  *   environment(color=[1,1,1], intensity=0.3, image="probe.hdr")
  *   plane(material=white, center=[0,0,0], size=[2,0,2], normal=[0,1,0]) ... box, sphere
  *   mesh("bunny.gltf", material=white, translate=[..], rotate=[..], scale=1)
+ *     (glTF 2.0, or OBJ, PLY, FBX, 3DS, STL, DAE, glTF 1.0... through Assimp: model.h)
  * Each entity's arguments are a parameter table (params.h). Relative paths resolve against
  * the scene file. The scene owns all its memory; ssg_scene_destroy frees it. A loaded scene
  * is read-only and may be shared by threads. */
@@ -69,6 +70,14 @@ struct ssg_environment {
     int image;        /* lat-long HDR in scene->textures, -1 = none */
 };
 
+/* One mesh(...) line of the scene file as loaded (what `ssgraph check` reports). */
+struct ssg_scene_model {
+    char file[512];             /* the path as the scene file writes it */
+    int line, column;           /* of the file argument on the mesh line */
+    int first_mesh, mesh_count; /* its meshes: scene->meshes[first_mesh ...] */
+    long long triangles;        /* in all of them */
+};
+
 struct ssg_rt;  /* Embree device + scene, see rt.h */
 struct ssg_env; /* the environment's lookup and sampling tables, see env.h */
 
@@ -83,6 +92,8 @@ struct ssg_scene {
     struct ssg_material *materials;
     struct ssg_mesh *meshes;
     struct ssg_texture *textures;
+    int model_count;
+    struct ssg_scene_model *models; /* the mesh lines, in file order (load_assets 1) */
     struct ssg_rt *rt;   /* built by ssg_scene_load when load_assets is 1 */
     struct ssg_env *env; /* built by ssg_scene_load when load_assets is 1 (never NULL
                             then: a scene without environment gets a black one) */
@@ -99,6 +110,13 @@ enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene 
 enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_assets,
                                 struct ssg_scene **out, struct ssg_diags *diags);
 void ssg_scene_destroy(struct ssg_scene **scene);
+
+/* The axis-aligned box of every mesh vertex; lo > hi (+inf, -inf) when there is none. */
+void ssg_scene_bounds(const struct ssg_scene *scene, float lo[3], float hi[3]);
+/* When the scene's bounding-box diagonal is under 1/20 or over 20 times `radius` (an AO
+ * radius in scene units), the power-of-ten scale that brings it nearest to 8 radii (a
+ * model in millimetres gets 0.001 or 0.01); 0 when it fits or the scene is empty. */
+float ssg_scene_scale_hint(const struct ssg_scene *scene, float radius, float *diagonal);
 
 /* The camera's view matrix (world -> view, column-major 4x4) for the frame conventions of
  * node.h. */

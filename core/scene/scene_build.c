@@ -10,7 +10,10 @@
 #include <string.h>
 
 #include "scene/env.h"
-#include "scene/gltf.h"
+#include <errno.h>
+#include <unistd.h>
+
+#include "scene/model.h"
 #include "scene/rt.h"
 #include "scene/scene_build.h"
 #include "scene/scene_shapes.h"
@@ -100,12 +103,9 @@ static int texture_finite(struct scene_loader *l, const char *path, const struct
 /* Reads an image file into an interleaved RGB texture; gray images fill all three. A
    material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
    which names its own rules. */
-static int load_texture(struct scene_loader *l, const struct scene_entity *from,
-                        const char *rel, int finite_only)
+static int load_texture_file(struct scene_loader *l, const char *path, int finite_only)
 {
-    char path[1024];
     struct ssg_image *im = NULL;
-    ssg_scene_path(from, rel, path, sizeof path);
     enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
     if (e) {
         ssg_scene_fail(l, e);
@@ -130,6 +130,15 @@ static int load_texture(struct scene_loader *l, const struct scene_entity *from,
     int width = im->width, height = im->height;
     ssg_image_destroy(&im);
     return add_texture(l, width, height, rgb);
+}
+
+/* The same for a path written in an entity, relative to its file. */
+static int load_texture(struct scene_loader *l, const struct scene_entity *from,
+                        const char *rel, int finite_only)
+{
+    char path[1024];
+    ssg_scene_path(from, rel, path, sizeof path);
+    return load_texture_file(l, path, finite_only);
 }
 
 static void build_material(struct scene_loader *l, int ent)
@@ -179,6 +188,25 @@ static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
     s->meshes[s->mesh_count++] = *mesh;
 }
 
+/* Records a mesh line for ssgraph check; its meshes follow as they are added. */
+static struct ssg_scene_model *add_model(struct scene_loader *l, const struct scene_entity *e,
+                                         long long triangles)
+{
+    struct ssg_scene *s = l->scene;
+    struct ssg_scene_model *grown = reserve(l, s->models, s->model_count, &l->model_cap,
+                                            sizeof *s->models);
+    if (!grown)
+        return NULL;
+    s->models = grown;
+    struct ssg_scene_model *m = &s->models[s->model_count++];
+    memset(m, 0, sizeof *m);
+    snprintf(m->file, sizeof m->file, "%s", ((const struct mesh_args *)e->args)->file);
+    ssg_loc_linecol(e->at[0], &m->line, &m->column);
+    m->first_mesh = s->mesh_count;
+    m->triangles = triangles;
+    return m;
+}
+
 static int material_for(struct scene_loader *l, const struct scene_entity *e)
 {
     return e->material >= 0 ? l->material_of[e->material] : default_material(l);
@@ -223,10 +251,36 @@ static void build_shape(struct scene_loader *l, const struct scene_entity *e)
     add_mesh(l, &mesh);
 }
 
-/* Brings the glTF's materials and textures into the scene; returns the scene index of its
- * material 0 (materials keep their order). */
-static int import_gltf_materials(struct scene_loader *l, struct ssg_gltf *g, const char *file)
+/* A texture an Assimp material names (relative to the model file), loaded like a scene
+   material's; -1 with a message at the mesh line naming the model, the material and the
+   texture when it is embedded or cannot be read. */
+static int model_texture(struct scene_loader *l, const struct scene_entity *e,
+                         const char *model, const struct ssg_gltf_material *gm)
 {
+    char path[1024];
+    const char *problem = NULL;
+    if (gm->texture_file[0] == '*') {
+        problem = "is embedded in the model file (not supported: give the mesh a material=)";
+    } else {
+        ssg_path_resolve(model, gm->texture_file, path, sizeof path);
+        if (access(path, R_OK) != 0)
+            problem = strerror(errno);
+    }
+    if (problem) {
+        ssg_diag_at(l->diags, SSG_E_IO, e->at[0], "%s: material '%s' names texture '%s', "
+                    "which cannot be read (%s)", model, gm->name, gm->texture_file, problem);
+        ssg_scene_fail(l, SSG_E_IO);
+        return -1;
+    }
+    return load_texture_file(l, path, 1);
+}
+
+/* Brings the model's materials and textures into the scene; returns the scene index of its
+ * material 0 (materials keep their order). */
+static int import_gltf_materials(struct scene_loader *l, const struct scene_entity *e,
+                                 struct ssg_gltf *g, const char *model)
+{
+    const char *file = ((const struct mesh_args *)e->args)->file;
     int first_texture = l->scene->texture_count, first = l->scene->material_count;
     for (int i = 0; i < g->texture_count; i++) {
         add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb);
@@ -241,6 +295,8 @@ static int import_gltf_materials(struct scene_loader *l, struct ssg_gltf *g, con
             return first;
         memcpy(m->albedo, gm->base_color, sizeof m->albedo);
         m->texture = gm->texture >= 0 ? first_texture + gm->texture : -1;
+        if (gm->texture < 0 && gm->texture_file[0])
+            m->texture = model_texture(l, e, model, gm);
     }
     return first;
 }
@@ -289,7 +345,7 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
     char path[1024], why[768];
     struct ssg_gltf *g = NULL;
     ssg_scene_path(e, a->file, path, sizeof path);
-    enum ssg_err err = ssg_gltf_load(path, &g, why, sizeof why);
+    enum ssg_err err = ssg_model_load(path, &g, why, sizeof why);
     if (err) {
         ssg_diag_at(l->diags, err, e->at[0], "%s", why);
         ssg_scene_fail(l, err);
@@ -302,7 +358,8 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
         ssg_gltf_destroy(&g);
         return;
     }
-    int first = e->material < 0 ? import_gltf_materials(l, g, a->file) : 0;
+    int first = e->material < 0 ? import_gltf_materials(l, e, g, path) : 0;
+    struct ssg_scene_model *model = add_model(l, e, tris);
     for (int i = 0; i < g->mesh_count && !l->first; i++) {
         struct ssg_mesh mesh = g->meshes[i];
         memset(&g->meshes[i], 0, sizeof g->meshes[i]); /* the arrays are now ours */
@@ -316,6 +373,8 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
         else
             mesh.material = mesh.material >= 0 ? first + mesh.material : default_material(l);
         add_mesh(l, &mesh);
+        if (model)
+            model->mesh_count++;
     }
     if (g->has_camera && !*camera_set && !l->first) {
         l->scene->camera = g->camera;

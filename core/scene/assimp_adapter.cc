@@ -1,0 +1,377 @@
+/* assimp_adapter.cc - the C++ side of ssg_assimp_load (model.h): reads OBJ, PLY, FBX, 3DS,
+ * STL, DAE, glTF 1.0 and the other formats of Debian's Assimp into the struct ssg_gltf the
+ * tinygltf path fills, so the scene loader places both the same way.
+ *
+ * Assimp triangulates, drops points and lines, makes smooth normals where the file has
+ * none and flips v to the top-left texture origin glTF uses; the node hierarchy is walked
+ * here so every mesh instance gets its world transform (normals by the cofactor matrix,
+ * the winding flipped under a mirroring transform). Coordinates stay as the file stores
+ * them: no axis or unit conversion, so a Z-up or millimetre model is turned and scaled
+ * by the mesh line's rotate and scale, like a glTF. A diffuse colour becomes base_color,
+ * a diffuse texture texture_file (decoded by the caller, scene_build.c). Assimp's own
+ * DefaultMaterial and the unnamed white one of PLY (files without materials), and a
+ * material with neither a diffuse colour nor a texture, map to "none": the scene's
+ * default white applies, as for a glTF primitive without material.
+ *
+ * Every file Assimp opens, the model and what it names (.mtl, .bin), is read through
+ * ssg_input_read, the same rules as every input (lang/files.h). Nothing is logged;
+ * Assimp's error string becomes the message, and no exception leaves this file. */
+#include "scene/model.h"
+
+extern "C" {
+#include "lang/files.h"
+}
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+#include <assimp/IOSystem.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/MemoryIOWrapper.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+namespace {
+
+struct Failure {
+    ssg_err code;
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string &message)
+{
+    throw Failure{SSG_E_GLTF, message};
+}
+
+/* Assimp's file access, through ssg_input_read: a regular file of at most
+   SSG_MAX_MODEL_BYTES, read whole into memory. Read-only. Remembers the first file it
+   could not open: Assimp goes on without a missing .mtl or buffer, the loader does not. */
+class InputIO : public Assimp::IOSystem {
+  public:
+    std::string failed; /* "'gone.mtl' (No such file or directory)", "" = none */
+
+    bool Exists(const char *path) const override
+    {
+        struct stat st;
+        return stat(path, &st) == 0;
+    }
+    char getOsSeparator() const override { return '/'; }
+    Assimp::IOStream *Open(const char *path, const char *mode) override
+    {
+        if (!mode || std::strchr(mode, 'w') || std::strchr(mode, 'a'))
+            return nullptr;
+        char *data = nullptr, why[256];
+        size_t len = 0;
+        if (ssg_input_read(path, SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why)) {
+            if (failed.empty())
+                failed = std::string("'") + path + "' (" + why + ")";
+            return nullptr;
+        }
+        uint8_t *copy = new (std::nothrow) uint8_t[len ? len : 1];
+        if (copy && len)
+            std::memcpy(copy, data, len);
+        std::free(data);
+        return copy ? new (std::nothrow) Assimp::MemoryIOStream(copy, len, true) : nullptr;
+    }
+    void Close(Assimp::IOStream *stream) override { delete stream; }
+};
+
+struct Prim {
+    std::vector<float> positions, normals, uvs;
+    std::vector<uint32_t> indices;
+    int material;
+};
+
+template <typename T> T *c_array(const std::vector<T> &v)
+{
+    if (v.empty())
+        return nullptr;
+    T *p = static_cast<T *>(std::malloc(v.size() * sizeof(T)));
+    if (!p)
+        throw std::bad_alloc();
+    std::memcpy(p, v.data(), v.size() * sizeof(T));
+    return p;
+}
+
+/* Cofactor matrix of the upper 3x3 (row-major like aiMatrix4x4): proportional to the
+   inverse transpose, which carries normals through a non-uniform scale. */
+void cofactor(const aiMatrix4x4 &m, double c[9], double *det)
+{
+    const double e[3][3] = {{m.a1, m.a2, m.a3}, {m.b1, m.b2, m.b3}, {m.c1, m.c2, m.c3}};
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++) {
+            int r1 = (r + 1) % 3, r2 = (r + 2) % 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            c[3 * r + k] = e[r1][k1] * e[r2][k2] - e[r1][k2] * e[r2][k1];
+        }
+    *det = e[0][0] * c[0] + e[0][1] * c[1] + e[0][2] * c[2];
+}
+
+class Flattener {
+  public:
+    explicit Flattener(const aiScene &scene) : s(scene) {}
+    void run();
+    ssg_gltf *to_c() const;
+
+  private:
+    const aiScene &s;
+    std::vector<Prim> prims;
+    std::vector<ssg_gltf_material> materials;
+    std::vector<int> slot; /* Assimp material -> materials index, -1 = its default */
+    size_t visits = 0;
+
+    void convert_materials();
+    void visit(const aiNode *node, const aiMatrix4x4 &parent, int depth);
+    void add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world);
+};
+
+void Flattener::convert_materials()
+{
+    for (unsigned i = 0; i < s.mNumMaterials; i++) {
+        const aiMaterial *src = s.mMaterials[i];
+        aiString name, tex;
+        src->Get(AI_MATKEY_NAME, name);
+        aiColor4D diffuse(1.0f, 1.0f, 1.0f, 1.0f);
+        bool coloured = src->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS;
+        bool textured = src->GetTextureCount(aiTextureType_DIFFUSE) > 0;
+        bool white = diffuse.r == 1.0f && diffuse.g == 1.0f && diffuse.b == 1.0f;
+        bool placeholder = name.length == 0 && white && !textured; /* PLY's, STL's */
+        if (std::strcmp(name.C_Str(), AI_DEFAULT_MATERIAL_NAME) == 0 || placeholder ||
+            (!coloured && !textured)) {
+            slot.push_back(-1);
+            continue;
+        }
+        ssg_gltf_material mat{};
+        std::snprintf(mat.name, sizeof mat.name, "%s", name.C_Str());
+        const float rgba[4] = {diffuse.r, diffuse.g, diffuse.b, diffuse.a};
+        for (int k = 0; k < 4; k++)
+            mat.base_color[k] = std::isfinite(rgba[k]) ? std::fmin(std::fmax(rgba[k], 0.0f), 1.0f)
+                                                       : 1.0f;
+        mat.texture = -1;
+        if (src->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS && tex.length) {
+            if (tex.length >= sizeof mat.texture_file)
+                fail(std::string("material '") + name.C_Str() + "' names a texture path of " +
+                     std::to_string(tex.length) + " characters (at most " +
+                     std::to_string(sizeof mat.texture_file - 1) + ")");
+            std::snprintf(mat.texture_file, sizeof mat.texture_file, "%s", tex.C_Str());
+        }
+        slot.push_back((int)materials.size());
+        materials.push_back(mat);
+    }
+}
+
+void Flattener::run()
+{
+    convert_materials();
+    if (!s.mRootNode)
+        fail("the file has no node hierarchy");
+    visit(s.mRootNode, aiMatrix4x4(), 0);
+    if (prims.empty())
+        fail("no triangles in it (points, lines or an empty file?)");
+}
+
+void Flattener::visit(const aiNode *node, const aiMatrix4x4 &parent, int depth)
+{
+    if (depth > 64 || ++visits > (1u << 20))
+        fail("node hierarchy deeper than 64 levels or over 2^20 node instances");
+    aiMatrix4x4 world = parent * node->mTransformation;
+    for (unsigned i = 0; i < node->mNumMeshes; i++) {
+        unsigned index = node->mMeshes[i];
+        if (index >= s.mNumMeshes)
+            fail("a node names missing mesh " + std::to_string(index));
+        add_mesh(*s.mMeshes[index], world);
+    }
+    for (unsigned i = 0; i < node->mNumChildren; i++)
+        visit(node->mChildren[i], world, depth + 1);
+}
+
+void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
+{
+    Prim out;
+    for (unsigned f = 0; f < mesh.mNumFaces; f++) {
+        const aiFace &face = mesh.mFaces[f];
+        if (face.mNumIndices != 3)
+            continue; /* a point or line Assimp kept: not a surface */
+        for (unsigned k = 0; k < 3; k++) {
+            if (face.mIndices[k] >= mesh.mNumVertices)
+                fail("face index " + std::to_string(face.mIndices[k]) + " out of range");
+            out.indices.push_back(face.mIndices[k]);
+        }
+    }
+    if (out.indices.empty())
+        return;
+    double c[9], det;
+    cofactor(world, c, &det);
+    const double sign = det < 0 ? -1.0 : 1.0;
+    for (unsigned v = 0; v < mesh.mNumVertices; v++) {
+        aiVector3D p = world * mesh.mVertices[v];
+        out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
+        double n[3] = {0, 1, 0}, len = 0;
+        if (mesh.mNormals) {
+            const aiVector3D &m = mesh.mNormals[v];
+            for (int r = 0; r < 3; r++)
+                n[r] = c[3 * r] * m.x + c[3 * r + 1] * m.y + c[3 * r + 2] * m.z;
+            len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        }
+        if (!(len > 0) || !std::isfinite(len)) /* degenerate triangles get NaN normals */
+            n[0] = 0, n[1] = 1, n[2] = 0, len = sign;
+        for (int r = 0; r < 3; r++)
+            out.normals.push_back((float)(n[r] * sign / len));
+        if (mesh.mTextureCoords[0]) {
+            const aiVector3D &t = mesh.mTextureCoords[0][v];
+            out.uvs.push_back(std::isfinite(t.x) ? t.x : 0.0f);
+            out.uvs.push_back(std::isfinite(t.y) ? t.y : 0.0f);
+        }
+    }
+    if (det < 0) /* a mirroring transform flips the winding; flip it back */
+        for (size_t t = 0; t < out.indices.size(); t += 3)
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
+    out.material = mesh.mMaterialIndex < slot.size() ? slot[mesh.mMaterialIndex] : -1;
+    prims.push_back(std::move(out));
+}
+
+void free_partial(ssg_gltf *g)
+{
+    for (int i = 0; g->meshes && i < g->mesh_count; i++) {
+        std::free(g->meshes[i].positions);
+        std::free(g->meshes[i].normals);
+        std::free(g->meshes[i].uvs);
+        std::free(g->meshes[i].indices);
+    }
+    std::free(g->meshes);
+    std::free(g->materials);
+    std::free(g->textures);
+    std::free(g);
+}
+
+ssg_gltf *Flattener::to_c() const
+{
+    ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
+    if (!g)
+        throw std::bad_alloc();
+    try {
+        g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
+        g->materials = c_array(materials);
+        if (!g->meshes || (!materials.empty() && !g->materials))
+            throw std::bad_alloc();
+        g->material_count = (int)materials.size();
+        for (const Prim &p : prims) {
+            ssg_mesh &o = g->meshes[g->mesh_count++];
+            o.vertex_count = (int)(p.positions.size() / 3);
+            o.triangle_count = (int)(p.indices.size() / 3);
+            o.material = p.material;
+            o.positions = c_array(p.positions);
+            o.normals = c_array(p.normals);
+            o.uvs = c_array(p.uvs);
+            o.indices = c_array(p.indices);
+        }
+    } catch (...) {
+        free_partial(g);
+        throw;
+    }
+    return g;
+}
+
+/* One printable line: Assimp's messages may quote raw bytes of the file. */
+std::string printable(std::string text)
+{
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+    for (char &ch : text)
+        if ((unsigned char)ch < 32 || (unsigned char)ch > 126)
+            ch = '?';
+    return text;
+}
+
+/* "OBJ" for "cup.obj": the format as a message names it. */
+std::string format_name(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    const char *dot = std::strrchr(slash ? slash + 1 : path, '.');
+    std::string name = dot ? dot + 1 : "";
+    for (char &ch : name)
+        ch = (char)std::toupper((unsigned char)ch);
+    return name == "GLTF" || name == "GLB" ? "glTF 1.0" : name.empty() ? "a model" : name;
+}
+
+ssg_gltf *load(const char *path)
+{
+    char *data = nullptr, why[256];
+    size_t len = 0;
+    enum ssg_err e = ssg_input_read(path, SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why);
+    std::free(data); /* read once to report an unreadable file the way every input does */
+    if (e)
+        throw Failure{e, why};
+    Assimp::Importer importer;
+    InputIO *io = new InputIO;
+    importer.SetIOHandler(io); /* the importer owns it */
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    /* Normals made for a file without any keep edges sharper than 80 degrees (a box's) */
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
+    const aiScene *scene = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
+                  aiProcess_JoinIdenticalVertices | aiProcess_FlipUVs |
+                  aiProcess_ValidateDataStructure);
+    std::string format = format_name(path);
+    if (!io->failed.empty())
+        fail("a file it names cannot be read: " + printable(io->failed));
+    if (!scene) {
+        std::string error = printable(importer.GetErrorString());
+        if (error.find("mNumMeshes is 0") != std::string::npos)
+            error = "no meshes in it (an empty or broken file?)";
+        fail("Assimp could not read it as " + format + ": " + error);
+    }
+    if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+        fail("Assimp read it as " + format + " only in part (no meshes: a broken file?)");
+    Flattener flat(*scene);
+    flat.run();
+    return flat.to_c();
+}
+
+void report(char *why, size_t why_len, const char *path, const std::string &message)
+{
+    if (why && why_len)
+        std::snprintf(why, why_len, "%s: %s", path, message.c_str());
+}
+
+} // namespace
+
+extern "C" int ssg_assimp_supports(const char *ext)
+{
+    try {
+        Assimp::Importer importer;
+        return importer.IsExtensionSupported(ext) ? 1 : 0;
+    } catch (...) {
+        return 0;
+    }
+}
+
+extern "C" enum ssg_err ssg_assimp_load(const char *path, struct ssg_gltf **out, char *why,
+                                        size_t why_len)
+{
+    *out = nullptr;
+    try {
+        *out = load(path);
+        return SSG_OK;
+    } catch (const Failure &f) {
+        report(why, why_len, path, f.message);
+        return f.code;
+    } catch (const std::bad_alloc &) {
+        report(why, why_len, path, "out of memory");
+        return SSG_E_NOMEM;
+    } catch (const std::exception &ex) {
+        report(why, why_len, path, printable(ex.what()));
+    } catch (...) {
+        report(why, why_len, path, "unexpected failure inside Assimp");
+    }
+    return SSG_E_GLTF;
+}

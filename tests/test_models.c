@@ -1,0 +1,227 @@
+/* test_models.c - mesh files of every format (core/scene/model.h): an OBJ with a quad and a
+ * pentagon, an ASCII PLY box and an ASCII STL load through Assimp to the triangle counts
+ * and bounds they were written with; an OBJ's diffuse colour becomes the scene material's
+ * albedo and a file without materials takes the scene's default; a mesh line's scale,
+ * rotate and translate place an OBJ as they place a glTF; unknown extensions, a broken
+ * OBJ, a missing .mtl or texture and a Draco glTF give SSG_E_GLTF or SSG_E_IO with the
+ * file named; the scale hint fires for a model in millimetres only. */
+#include <errno.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "scene/model.h"
+#include "scene/scene.h"
+
+static char tmp_dir[512];
+
+static void make_tmp_dir(void)
+{
+    const char *env = getenv("SSG_TMP");
+    if (env && env[0])
+        snprintf(tmp_dir, sizeof tmp_dir, "%s", env);
+    else
+        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_models_%d", (int)getpid());
+    mkdir(tmp_dir, 0755);
+}
+
+/* Writes text to tmp_dir/name and returns the path (static buffer per call slot). */
+static const char *write_file(const char *name, const char *text)
+{
+    static char paths[4][1024];
+    static int slot;
+    char *path = paths[slot++ % 4];
+    snprintf(path, 1024, "%s/%s", tmp_dir, name);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "cannot write %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+/* A unit quad in z = 0 and a pentagon in z = 1 reaching x = 2: 2 + 3 triangles. */
+static const char OBJ[] = "mtllib two.mtl\n"
+                          "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                          "v 1 0 1\nv 2 0 1\nv 2 0.5 1\nv 1.5 1 1\nv 1 0.5 1\n"
+                          "usemtl blue\nf 1 2 3 4\nf 5 6 7 8 9\n";
+static const char MTL[] = "newmtl blue\nKd 0.2 0.4 0.6\n";
+
+/* A box [0,1] x [0,2] x [0,3] of six quads: 12 triangles. */
+static const char PLY[] = "ply\nformat ascii 1.0\nelement vertex 8\n"
+                          "property float x\nproperty float y\nproperty float z\n"
+                          "element face 6\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n1 2 0\n0 2 0\n0 0 3\n1 0 3\n1 2 3\n0 2 3\n"
+                          "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+
+/* Two facets spanning [-1,1] x [0,0] x [-2,2]. */
+static const char STL[] = "solid two\n"
+                          "facet normal 0 1 0\nouter loop\nvertex -1 0 -2\nvertex 1 0 2\n"
+                          "vertex 1 0 -2\nendloop\nendfacet\n"
+                          "facet normal 0 1 0\nouter loop\nvertex -1 0 -2\nvertex -1 0 2\n"
+                          "vertex 1 0 2\nendloop\nendfacet\nendsolid two\n";
+
+static void bounds_of(const struct ssg_gltf *g, float lo[3], float hi[3], long long *tris)
+{
+    *tris = 0;
+    for (int i = 0; i < 3; i++)
+        lo[i] = HUGE_VALF, hi[i] = -HUGE_VALF;
+    for (int m = 0; m < g->mesh_count; m++) {
+        *tris += g->meshes[m].triangle_count;
+        for (int v = 0; v < 3 * g->meshes[m].vertex_count; v++) {
+            float p = g->meshes[m].positions[v];
+            lo[v % 3] = fminf(lo[v % 3], p);
+            hi[v % 3] = fmaxf(hi[v % 3], p);
+        }
+    }
+}
+
+/* Loads path and checks its triangle count and bounds; returns the model (caller frees). */
+static struct ssg_gltf *expect_model(const char *path, long long tris, const float lo[3],
+                                     const float hi[3])
+{
+    struct ssg_gltf *g = NULL;
+    char why[1024] = "";
+    CHECK_EQ(ssg_model_load(path, &g, why, sizeof why), SSG_OK);
+    if (!g) {
+        fprintf(stderr, "%s\n", why);
+        return NULL;
+    }
+    float l[3], h[3];
+    long long n;
+    bounds_of(g, l, h, &n);
+    CHECK_EQ(n, tris);
+    for (int i = 0; i < 3; i++) {
+        CHECK_NEAR(l[i], lo[i], 1e-6);
+        CHECK_NEAR(h[i], hi[i], 1e-6);
+    }
+    for (int m = 0; m < g->mesh_count; m++) /* every normal is unit length */
+        for (int v = 0; v < g->meshes[m].vertex_count; v++) {
+            const float *nv = &g->meshes[m].normals[3 * v];
+            CHECK_NEAR(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2], 1.0, 1e-4);
+        }
+    return g;
+}
+
+static void test_formats(void)
+{
+    write_file("two.mtl", MTL);
+    struct ssg_gltf *g = expect_model(write_file("two.obj", OBJ), 5, (float[]){0, 0, 0},
+                                      (float[]){2, 1, 1});
+    if (g) {
+        CHECK_EQ(g->material_count, 1);
+        CHECK(g->material_count == 1 && !strcmp(g->materials[0].name, "blue"));
+        CHECK_NEAR(g->materials[0].base_color[2], 0.6, 1e-6);
+        CHECK_EQ(g->meshes[0].material, 0);
+        ssg_gltf_destroy(&g);
+    }
+    g = expect_model(write_file("box.ply", PLY), 12, (float[]){0, 0, 0}, (float[]){1, 2, 3});
+    if (g) {
+        CHECK_EQ(g->meshes[0].material, -1); /* none in the file: the scene's default */
+        ssg_gltf_destroy(&g);
+    }
+    g = expect_model(write_file("two.stl", STL), 2, (float[]){-1, 0, -2}, (float[]){1, 0, 2});
+    ssg_gltf_destroy(&g);
+}
+
+/* Every failure: the code, *out NULL, and the file's name and `what` in the message. */
+static void expect_fail(const char *path, enum ssg_err code, const char *what)
+{
+    struct ssg_gltf *g = NULL;
+    char why[1024] = "";
+    CHECK_EQ(ssg_model_load(path, &g, why, sizeof why), code);
+    CHECK(g == NULL);
+    const char *slash = strrchr(path, '/');
+    CHECK(strstr(why, slash ? slash + 1 : path) != NULL);
+    if (!strstr(why, what)) {
+        fprintf(stderr, "message '%s' lacks '%s'\n", why, what);
+        CHECK(0);
+    }
+    ssg_gltf_destroy(&g);
+}
+
+static void test_failures(void)
+{
+    expect_fail(write_file("model.xyz", "solid\n"), SSG_E_GLTF, "'.xyz'");
+    expect_fail(write_file("noext", "v 0 0 0\n"), SSG_E_GLTF, "extension");
+    expect_fail(write_file("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n"), SSG_E_GLTF, "OBJ");
+    expect_fail(write_file("empty.obj", "# nothing\n"), SSG_E_GLTF, "OBJ");
+    expect_fail(write_file("nomtl.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                SSG_E_GLTF, "gone.mtl");
+    char missing[1100];
+    snprintf(missing, sizeof missing, "%s/missing.stl", tmp_dir);
+    expect_fail(missing, SSG_E_IO, "missing.stl");
+    expect_fail(write_file("draco.gltf", "{\"asset\":{\"version\":\"2.0\"},\"extensionsRequired\":"
+                                         "[\"KHR_draco_mesh_compression\"],\"meshes\":[]}"),
+                SSG_E_GLTF, "Draco");
+}
+
+/* A scene around an OBJ: its diffuse colour is the albedo, the mesh line places it as
+   scale, then rotate, then translate, and a missing texture is named at the mesh line. */
+static void test_scene(void)
+{
+    write_file("two.mtl", MTL);
+    write_file("two.obj", OBJ);
+    const char *path = write_file("two.scene", "camera(position=[0, 0, 9])\n"
+                                  "mesh(\"two.obj\", scale=[2, 2, 2], rotate=[0, 0, 90], "
+                                  "translate=[10, 0, 0])\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    if (s) {
+        float lo[3], hi[3], diagonal;
+        ssg_scene_bounds(s, lo, hi); /* (x, y) -> (-2y, 2x) + 10 x */
+        CHECK_NEAR(lo[0], 8, 1e-5);
+        CHECK_NEAR(hi[0], 10, 1e-5);
+        CHECK_NEAR(lo[1], 0, 1e-5);
+        CHECK_NEAR(hi[1], 4, 1e-5);
+        CHECK_NEAR(hi[2], 2, 1e-5);
+        CHECK_EQ(s->model_count, 1);
+        CHECK_EQ(s->models[0].triangles, 5);
+        CHECK_EQ(s->models[0].line, 2);
+        CHECK_NEAR(s->materials[s->meshes[0].material].albedo[1], 0.4, 1e-6);
+        CHECK_EQ(ssg_scene_scale_hint(s, 0.5f, &diagonal), 0); /* 5 units: fits */
+        ssg_scene_destroy(&s);
+    }
+    d = (struct ssg_diags){0};
+    write_file("tex.mtl", "newmtl t\nKd 1 1 1\nmap_Kd gone.png\n");
+    write_file("tex.obj", "mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
+                          "vt 0 1\nusemtl t\nf 1/1 2/2 3/3\n");
+    path = write_file("tex.scene", "mesh(\"tex.obj\")\n");
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_E_IO);
+    CHECK(s == NULL);
+    CHECK(d.count == 1 && d.items[0].line == 1 && d.items[0].column == 6 &&
+          strstr(d.items[0].message, "gone.png"));
+}
+
+/* 300 mm across in millimetres: 0.01 brings it to 3 units, about 6 AO radii. */
+static void test_scale_hint(void)
+{
+    write_file("mm.stl", "solid mm\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                         "vertex 300 0 0\nvertex 0 200 0\nendloop\nendfacet\nendsolid mm\n");
+    const char *path = write_file("mm.scene", "camera(position=[0, 0, 900], far=2000)\n"
+                                  "mesh(\"mm.stl\")\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    if (s) {
+        float diagonal;
+        CHECK_NEAR(ssg_scene_scale_hint(s, 0.5f, &diagonal), 0.01, 1e-9);
+        CHECK_NEAR(diagonal, sqrtf(300 * 300 + 200 * 200), 1e-2);
+        ssg_scene_destroy(&s);
+    }
+}
+
+int main(void)
+{
+    make_tmp_dir();
+    test_formats();
+    test_failures();
+    test_scene();
+    test_scale_hint();
+    return check_report();
+}
