@@ -80,6 +80,21 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
     return SSG_OK;
 }
 
+/* Keeps the command line's --set strings with the graph (its arena): write records them. */
+static enum ssg_err keep_sets(struct ssg_graph *g, const struct ssg_overrides *ov)
+{
+    int n = ov ? ov->set_count : 0;
+    if (n <= 0)
+        return SSG_OK;
+    if (!(g->sets = ssg_arena_alloc(&g->arena, (size_t)n * sizeof *g->sets)))
+        return SSG_E_NOMEM;
+    for (int i = 0; i < n; i++)
+        if (!(g->sets[i] = ssg_arena_strndup(&g->arena, ov->sets[i], strlen(ov->sets[i]))))
+            return SSG_E_NOMEM;
+    g->set_count = n;
+    return SSG_OK;
+}
+
 static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,
                          struct ssg_graph **out, struct ssg_diags *diags)
 {
@@ -92,6 +107,8 @@ static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int l
     enum ssg_err scene = setup_frame(g, load_assets, ov ? ov->eye_offset : 0.0f, diags);
     if (!e)
         e = scene;
+    if (!e)
+        e = keep_sets(g, ov);
     if (!e)
         e = ssg_graph_validate(g, diags);
     if (e) {

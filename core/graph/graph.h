@@ -70,6 +70,8 @@ struct ssg_graph {
                                   only they and what they read are live, and each keeps
                                   its image until the run hands it out */
     int wanted_count;          /* 0 = the sinks decide what is live */
+    const char **sets;         /* ssg_overrides.sets, copied: what the run's files record */
+    int set_count;
 };
 
 /* Reads path (and what it includes), builds nodes, applies `set` lines and overrides.

@@ -138,7 +138,9 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .scene = g->scene, .out_dir = out_dir(r), .diags = r->diags,
                                .metrics = &r->metrics, .in_shape = n->in_shape,
                                .out_shape = n->out_shape, .extra_shape = extra_shape,
-                               .run = r->opt, .scratch = &r->scratch[p]};
+                               .run = r->opt, .scratch = &r->scratch[p],
+                               .graph_path = g->path, .sets = (const char *const *)g->sets,
+                               .set_count = g->set_count};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();

@@ -107,6 +107,10 @@ struct ssg_node_ctx {
                                           NULL = a single-node run, nothing reported */
     struct ssg_scratch *scratch;   /* the node's working memory, kept between its runs
                                       (ssg_node_scratch); NULL = the thread's */
+    const char *graph_path;        /* the graph file as given, for files that record what
+                                      made them (write's EXR metadata); NULL = none */
+    const char *const *sets;       /* the run's --set overrides as given (set_count) */
+    int set_count;
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate

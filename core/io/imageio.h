@@ -35,7 +35,8 @@ extern "C" {
 
 /* What a layer's channels mean; decides their names in the EXR. */
 enum ssg_layer_kind {
-    SSG_LAYER_SCALAR, /* 1 channel:  name.Y */
+    SSG_LAYER_SCALAR, /* 1 channel:  name.Y; the layer `depth` is OpenEXR's depth channel
+                         Z (no prefix), which Blender and Nuke read as depth */
     SSG_LAYER_VECTOR, /* 3 channels: name.X, name.Y, name.Z */
     SSG_LAYER_COLOR,  /* 3 channels: name.R, name.G, name.B */
 };
@@ -63,6 +64,32 @@ enum ssg_exr_compression {
     SSG_EXR_PIZ,
 };
 
+/* What an EXR records of the run that made it, as header attributes (README, "EXR
+ * metadata"): OpenEXR's standard names where it has them (worldToCamera, worldToNDC,
+ * software), `ssgraph:` names otherwise. Nothing in it varies between two identical runs
+ * (no time, host or timing), so the same inputs still give the same bytes. */
+struct ssg_exr_meta {
+    int has_camera;            /* 1 = position, target, up and both matrices are set (the
+                                  scene's camera); 0 = none written (no scene) */
+    float position[3];         /* camera, world, scene units: ssgraph:camera_position */
+    float target[3];           /* world point looked at: ssgraph:camera_target */
+    float up[3];               /* world up hint: ssgraph:camera_up */
+    float world_to_camera[16]; /* OpenEXR worldToCamera: row vectors (p' = p M), camera
+                                  space left-handed, +z forward, x right, y up */
+    float world_to_ndc[16];    /* OpenEXR worldToNDC: (0,0) top left, (1,1) bottom right of
+                                  the frame after the divide by w; z 0 at near, 1 at far */
+    float fov_y;               /* vertical field of view of the frame, degrees: ssgraph:fov */
+    float near_z, far_z;       /* scene units: ssgraph:near, ssgraph:far */
+    int width, height;         /* the frame, pixels (guard cropped): ssgraph:frame_size */
+    int guard;                 /* guard band rendered and cropped, pixels: ssgraph:guard */
+    uint64_t seed;             /* ssgraph:seed, a decimal string (64 bits) */
+    const char *graph;         /* graph file as given: ssgraph:graph; NULL = not written */
+    const char *scene;         /* scene file: ssgraph:scene; NULL or "" = none */
+    const char *lights;        /* lights file replacing the scene's: ssgraph:lights */
+    const char *const *sets;   /* --set overrides as given: ssgraph:overrides (strings) */
+    int set_count;             /* entries of sets; 0 = the attribute is not written */
+};
+
 /* Writes all layers into one scanline EXR with 32-bit float channels and ZIP compression.
  * Layer names must be unique, non-empty except for at most one main image, and must not
  * contain '.'. */
@@ -78,8 +105,36 @@ enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_lay
  * node, so that no output is renamed into place before all of them are complete. On an
  * error the temporary is already gone. */
 enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
-                           enum ssg_exr_compression compression, struct ssg_tmp *t,
+                           enum ssg_exr_compression compression,
+                           const struct ssg_exr_meta *meta, struct ssg_tmp *t,
                            struct ssg_diags *diags);
+/* meta NULL = no metadata attributes. */
+
+/* Reads the metadata an ssgraph EXR carries back (the numbers: camera, fov, near, far,
+ * frame, guard, seed; the string fields come back NULL). *found = 1 when the file has
+ * ssgraph:fov; 0 for a foreign file (or one that is not an EXR), meta then untouched.
+ * Errors: the file cannot be read (SSG_E_IO, SSG_E_IMAGE). */
+enum ssg_err ssg_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
+                               struct ssg_diags *diags);
+
+/* The camera a file records, for a node run on it (`ssgraph node`): the fov, near and far
+ * of an ssgraph EXR into frame->fov_y, near_z, far_z. spec is FILE or FILE:LAYER (the
+ * `--in` form; the layer does not matter: every view has the same lens). 1 when the file
+ * carries them; 0, frame untouched, for a foreign file or one that cannot be read (its
+ * image read reports why). */
+int ssg_exr_frame_read(const char *spec, struct ssg_frame *frame);
+
+/* Joins single-view EXRs of one size (each an ssgraph EXR, e.g. a stereo run's eyes) into
+ * one multi-view EXR (OpenEXR's multi-view convention): a multiView attribute listing
+ * views, views[0] the default view whose channels keep their names, each other view's
+ * channels named layer.VIEW.channel (R -> right.R, depth's Z -> right.Z, ao.Y ->
+ * ao.right.Y). The header is the default view's; each attribute of another view that
+ * differs from it (its camera) is added as ssgraph:VIEW:NAME (ssgraph:right:worldToCamera,
+ * ssgraph:right:camera_position). Written through a temporary file renamed into place,
+ * compressed as the default view's file. */
+enum ssg_err ssg_exr_views_join(const char *path, const char *const *views,
+                                const char *const *files, int count,
+                                struct ssg_diags *diags);
 
 /* Tone mapping of the PNG preview, applied to exposure-scaled linear values. The order
  * matches the `tonemap` choices of the write node. */

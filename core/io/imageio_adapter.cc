@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -58,14 +59,41 @@ const char *layer_suffix(const std::string &channel, const std::string &layer)
     return std::strchr(rest, '.') ? nullptr : rest;
 }
 
-/* Indices of the channels to read, in canonical order. */
+/* OpenEXR's depth channel Z (bare, or VIEW.Z in a multi-view file) is what the writer
+   makes of the layer `depth` (imageio_write_adapter.cc): layer "depth" reads it when the
+   file has no depth.* channels, "depth.VIEW" reads VIEW.Z. -1 when absent. */
+int depth_channel(const ImageSpec &spec, const std::string &layer)
+{
+    if (layer != "depth" && layer.rfind("depth.", 0) != 0)
+        return -1;
+    std::string want = layer == "depth" ? "Z" : layer.substr(6) + ".Z";
+    for (int c = 0; c < spec.nchannels; c++)
+        if (spec.channelnames[c] == want)
+            return c;
+    return -1;
+}
+
+/* Indices of the channels to read, in canonical order. In a layer that holds Z but no X
+   (an image beside its depth: R,G,B,Z), Z is the depth channel, not the image's. */
 std::vector<int> select_channels(const ImageSpec &spec, const char *layer)
 {
     std::string name = layer ? layer : "";
     std::vector<int> idx;
-    for (int c = 0; c < spec.nchannels; c++)
-        if (layer_suffix(spec.channelnames[c], name))
-            idx.push_back(c);
+    int z = -1;
+    bool x = false;
+    for (int c = 0; c < spec.nchannels; c++) {
+        const char *suffix = layer_suffix(spec.channelnames[c], name);
+        if (!suffix)
+            continue;
+        idx.push_back(c);
+        z = std::strcmp(suffix, "Z") == 0 ? c : z;
+        x = x || std::strcmp(suffix, "X") == 0;
+    }
+    if (z >= 0 && !x && idx.size() > 1)
+        idx.erase(std::find(idx.begin(), idx.end(), z));
+    int depth = idx.empty() ? depth_channel(spec, name) : -1;
+    if (depth >= 0)
+        idx.push_back(depth);
     if (idx.empty() && name.empty()) /* no unnamed channels: the whole file */
         for (int c = 0; c < spec.nchannels; c++)
             idx.push_back(c);
@@ -83,7 +111,8 @@ std::string layer_list(const ImageSpec &spec)
     std::vector<std::string> names;
     for (const auto &ch : spec.channelnames) {
         size_t dot = ch.rfind('.');
-        std::string layer = dot == std::string::npos ? "(unnamed)" : ch.substr(0, dot);
+        std::string layer = ch == "Z" ? "depth" : dot == std::string::npos ? "(unnamed)"
+                                                                            : ch.substr(0, dot);
         if (std::find(names.begin(), names.end(), layer) == names.end())
             names.push_back(layer);
     }
@@ -264,9 +293,72 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
     return SSG_OK;
 }
 
+/* n floats of attribute `name` into out (a V3f, an M44f, a float); false when the file
+   lacks it or it holds something else. */
+bool float_attr(const ImageSpec &spec, const char *name, float *out, int n)
+{
+    const OIIO::ParamValue *p = spec.find_attribute(name);
+    if (!p || p->type().basetype != TypeDesc::FLOAT || (int)p->type().numelements() *
+        (int)p->type().aggregate * p->nvalues() != n)
+        return false;
+    std::memcpy(out, p->data(), (size_t)n * sizeof(float));
+    return true;
+}
+
+/* The numbers of an ssgraph EXR's metadata (imageio.h, struct ssg_exr_meta); *found = 0
+   and meta untouched for a file without ssgraph:fov. */
+enum ssg_err read_meta(const char *path, struct ssg_exr_meta *meta, int *found,
+                       struct ssg_diags *diags)
+{
+    *found = 0;
+    enum ssg_err err = check_readable(path, diags);
+    if (err)
+        return err;
+    std::unique_ptr<ImageInput> in = ImageInput::open(path);
+    if (!in) {
+        ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s",
+                      oiio_error<ImageInput>(nullptr).c_str());
+        return SSG_E_IMAGE;
+    }
+    const ImageSpec &spec = in->spec();
+    struct ssg_exr_meta m = {};
+    if (!float_attr(spec, "ssgraph:fov", &m.fov_y, 1))
+        return SSG_OK;
+    m.near_z = spec.get_float_attribute("ssgraph:near", SSG_DEFAULT_NEAR);
+    m.far_z = spec.get_float_attribute("ssgraph:far", SSG_DEFAULT_FAR);
+    m.guard = spec.get_int_attribute("ssgraph:guard", 0);
+    m.seed = std::strtoull(spec.get_string_attribute("ssgraph:seed", "1").c_str(), nullptr, 10);
+    const OIIO::ParamValue *size = spec.find_attribute("ssgraph:frame_size",
+                                                       TypeDesc(TypeDesc::INT, TypeDesc::VEC2));
+    m.width = size ? ((const int *)size->data())[0] : spec.width;
+    m.height = size ? ((const int *)size->data())[1] : spec.height;
+    m.has_camera = float_attr(spec, "ssgraph:camera_position", m.position, 3) &&
+                   float_attr(spec, "ssgraph:camera_target", m.target, 3) &&
+                   float_attr(spec, "ssgraph:camera_up", m.up, 3) &&
+                   float_attr(spec, "worldToCamera", m.world_to_camera, 16) &&
+                   float_attr(spec, "worldToNDC", m.world_to_ndc, 16);
+    *meta = m;
+    *found = 1;
+    return SSG_OK;
+}
+
 } /* namespace */
 
 /* ---- the C interface ------------------------------------------------------------------ */
+
+/* A C++ exception from reading becomes a diagnostic. */
+template <class F> enum ssg_err guarded_read(const char *path, struct ssg_diags *diags, F read)
+{
+    try {
+        return read();
+    } catch (const std::bad_alloc &) {
+        return report_exception(diags, path, SSG_E_NOMEM, "out of memory while reading");
+    } catch (const std::exception &e) {
+        return report_exception(diags, path, SSG_E_IMAGE, e.what());
+    } catch (...) {
+        return report_exception(diags, path, SSG_E_IMAGE, "unknown error while reading");
+    }
+}
 
 enum ssg_err ssg_oiio_image_read(const char *path, const char *layer, struct ssg_image **out,
                                  struct ssg_diags *diags)
@@ -277,13 +369,14 @@ enum ssg_err ssg_oiio_image_read(const char *path, const char *layer, struct ssg
         ssg_diag_file(diags, SSG_E_IO, path ? path : "", "no file name or no output given");
         return SSG_E_IO;
     }
-    try {
+    return guarded_read(path, diags, [&] {
         return read_image(path, layer && layer[0] ? layer : nullptr, out, diags);
-    } catch (const std::bad_alloc &) {
-        return report_exception(diags, path, SSG_E_NOMEM, "out of memory while reading");
-    } catch (const std::exception &e) {
-        return report_exception(diags, path, SSG_E_IMAGE, e.what());
-    } catch (...) {
-        return report_exception(diags, path, SSG_E_IMAGE, "unknown error while reading");
-    }
+    });
+}
+
+enum ssg_err ssg_oiio_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
+                                    struct ssg_diags *diags)
+{
+    *found = 0;
+    return guarded_read(path, diags, [&] { return read_meta(path, meta, found, diags); });
 }

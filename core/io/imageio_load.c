@@ -183,11 +183,49 @@ static enum ssg_err no_module(struct ssg_tmp *t)
 }
 
 enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
-                           enum ssg_exr_compression compression, struct ssg_tmp *t,
+                           enum ssg_exr_compression compression,
+                           const struct ssg_exr_meta *meta, struct ssg_tmp *t,
                            struct ssg_diags *diags)
 {
     const struct ssg_oiio_api *api = oiio(diags, path);
-    return api ? api->exr_stage(path, layers, count, compression, t, diags) : no_module(t);
+    return api ? api->exr_stage(path, layers, count, compression, meta, t, diags)
+               : no_module(t);
+}
+
+enum ssg_err ssg_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
+                               struct ssg_diags *diags)
+{
+    *found = 0;
+    const struct ssg_oiio_api *api = oiio(diags, path);
+    return api ? api->exr_meta_read(path, meta, found, diags) : SSG_E_BACKEND;
+}
+
+int ssg_exr_frame_read(const char *spec, struct ssg_frame *frame)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s", spec);
+    char *colon = strrchr(path, ':');
+    if (colon && !strchr(colon, '/'))
+        *colon = '\0';
+    struct ssg_diags quiet = {0};
+    struct ssg_exr_meta m;
+    int found = 0;
+    if (ssg_exr_meta_read(path, &m, &found, &quiet) || !found)
+        return 0;
+    frame->fov_y = m.fov_y;
+    frame->near_z = m.near_z;
+    frame->far_z = m.far_z;
+    return 1;
+}
+
+enum ssg_err ssg_exr_views_join(const char *path, const char *const *views,
+                                const char *const *files, int count, struct ssg_diags *diags)
+{
+    struct ssg_tmp t;
+    const struct ssg_oiio_api *api = oiio(diags, path);
+    enum ssg_err e = api ? api->views_stage(path, views, files, count, &t, diags)
+                         : SSG_E_BACKEND;
+    return e ? e : ssg_tmp_commit(&t, 1, diags);
 }
 
 enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
@@ -216,7 +254,7 @@ enum ssg_err ssg_exr_write_compressed(const char *path, const struct ssg_exr_lay
                                       struct ssg_diags *diags)
 {
     struct ssg_tmp t;
-    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, &t, diags);
+    enum ssg_err e = ssg_exr_stage(path, layers, count, compression, NULL, &t, diags);
     return e ? e : ssg_tmp_commit(&t, 1, diags);
 }
 

@@ -22,7 +22,13 @@ enum ssg_err ssg_oiio_image_read(const char *path, const char *layer, struct ssg
                                  struct ssg_diags *diags);
 enum ssg_err ssg_oiio_exr_stage(const char *path, const struct ssg_exr_layer *layers,
                                 int count, enum ssg_exr_compression compression,
-                                struct ssg_tmp *t, struct ssg_diags *diags);
+                                const struct ssg_exr_meta *meta, struct ssg_tmp *t,
+                                struct ssg_diags *diags);
+enum ssg_err ssg_oiio_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
+                                    struct ssg_diags *diags);
+enum ssg_err ssg_oiio_views_stage(const char *path, const char *const *views,
+                                  const char *const *files, int count, struct ssg_tmp *t,
+                                  struct ssg_diags *diags);
 enum ssg_err ssg_oiio_png_stage(const char *path, const struct ssg_image *image,
                                 enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
                                 struct ssg_diags *diags);

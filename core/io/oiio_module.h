@@ -24,7 +24,7 @@ extern "C" {
 #include "lang/diag.h"
 #include "lang/files.h"
 
-#define SSG_OIIO_MODULE_ABI 1
+#define SSG_OIIO_MODULE_ABI 2
 #define SSG_OIIO_MODULE_FILE "libssgraph_oiio.so"
 #define SSG_OIIO_MODULE_ENTRY "ssg_oiio_module"
 
@@ -48,8 +48,14 @@ struct ssg_oiio_api {
     enum ssg_err (*image_read)(const char *path, const char *layer, struct ssg_image **out,
                                struct ssg_diags *diags);
     enum ssg_err (*exr_stage)(const char *path, const struct ssg_exr_layer *layers, int count,
-                              enum ssg_exr_compression compression, struct ssg_tmp *t,
+                              enum ssg_exr_compression compression,
+                              const struct ssg_exr_meta *meta, struct ssg_tmp *t,
                               struct ssg_diags *diags);
+    enum ssg_err (*exr_meta_read)(const char *path, struct ssg_exr_meta *meta, int *found,
+                                  struct ssg_diags *diags);
+    enum ssg_err (*views_stage)(const char *path, const char *const *views,
+                                const char *const *files, int count, struct ssg_tmp *t,
+                                struct ssg_diags *diags);
     enum ssg_err (*png_stage)(const char *path, const struct ssg_image *image,
                               enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
                               struct ssg_diags *diags);

@@ -30,6 +30,11 @@ struct ssg_write_params {
  * Otherwise 0, with the reason in why. */
 int ssg_write_name_ok(const char *name, char *why, size_t why_len);
 
+/* The run's metadata for the EXR (write_meta.c): the frame and seed from ctx->frame, the
+ * camera from ctx->scene (none without a scene), the graph and --set list from ctx. */
+struct ssg_exr_meta;
+void ssg_write_meta(const struct ssg_node_ctx *ctx, struct ssg_exr_meta *meta);
+
 /* The CPU backend (write_cpu.c); `consts` is a struct ssg_write_params. */
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                const struct ssg_io *io);

@@ -100,8 +100,10 @@ static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_i
                                  "vector or color", io->extra_names[i], types);
         }
     }
+    struct ssg_exr_meta meta;
+    ssg_write_meta(ctx, &meta);
     return ssg_exr_stage(path, layers, io->extra_count + 1,
-                         (enum ssg_exr_compression)p->compression, t, ctx->diags);
+                         (enum ssg_exr_compression)p->compression, &meta, t, ctx->diags);
 }
 
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
