@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # test_install.sh - the installed tree is usable as a user would use it:
 #   `cmake --install` of this build into a scratch prefix, then
-#   1. a C program built with pkg-config (shared library) runs a graph through the public API;
+#   1. a C program built with pkg-config (shared library) runs a graph through the public API,
+#      and so does the tutorial's example (docs/tutorial/hello.c);
 #   2. the same program built by a CMake project with find_package(ssgraph), against
 #      ssgraph::ssgraph (shared) and ssgraph::ssgraph_static, runs it too;
 #   3. the installed command line renders an installed graph, loading the OpenImageIO
@@ -38,6 +39,13 @@ elif ! $CC -std=c11 $FLAGS "$SRC/tests/install/consumer.c" -o "$TMP/consumer_pc"
     fail "building against pkg-config's flags ($pc) failed: $(cat "$TMP/pc.log")"
 else
     expect_exit 0 "consumer: ok" env LD_LIBRARY_PATH="$LIBDIR" "$TMP/consumer_pc" "$GRAPH"
+fi
+# the tutorial's library example (docs/tutorial/hello.c), built as the tutorial says
+if $CC -std=c11 $FLAGS "$SRC/docs/tutorial/hello.c" -o "$TMP/hello" $pc >"$TMP/hello.log" 2>&1; then
+    expect_exit 0 "^320x180, mean ambient occlusion 0\.[0-9]+$" \
+        env LD_LIBRARY_PATH="$LIBDIR" "$TMP/hello" "$SRC/docs/tutorial/first.graph"
+else
+    fail "docs/tutorial/hello.c did not build as the tutorial says: $(cat "$TMP/hello.log")"
 fi
 pkg-config --modversion ssgraph | grep -qx "$(sed -n 's/^#define SSG_VERSION "\(.*\)"/\1/p' \
     "$SRC/core/ssgraph.h")" || fail "ssgraph.pc's version is not the header's"
