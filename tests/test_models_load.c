@@ -1,4 +1,4 @@
-/* test_models.c - mesh files of every format (core/scene/model.h): an OBJ with a quad and a
+/* test_models_load.c - mesh files of every format (core/scene/model.h): an OBJ with a quad and a
  * pentagon, an ASCII PLY box and an ASCII STL load through Assimp to the triangle counts
  * and bounds they were written with; an OBJ's diffuse colour becomes the scene material's
  * albedo and a file without materials takes the scene's default; a mesh line's scale,
@@ -22,7 +22,7 @@ static void make_tmp_dir(void)
     if (env && env[0])
         snprintf(tmp_dir, sizeof tmp_dir, "%s", env);
     else
-        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_models_%d", (int)getpid());
+        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_models_load_%d", (int)getpid());
     mkdir(tmp_dir, 0755);
 }
 

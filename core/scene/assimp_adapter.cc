@@ -304,11 +304,9 @@ std::string format_name(const char *path)
 
 ssg_gltf *load(const char *path)
 {
-    char *data = nullptr, why[256];
-    size_t len = 0;
-    enum ssg_err e = ssg_input_read(path, SSG_MAX_MODEL_BYTES, &data, &len, why, sizeof why);
-    std::free(data); /* read once to report an unreadable file the way every input does */
-    if (e)
+    char why[256];
+    enum ssg_err e = ssg_input_check(path, SSG_MAX_MODEL_BYTES, why, sizeof why);
+    if (e) /* an unreadable file is reported the way every input is */
         throw Failure{e, why};
     Assimp::Importer importer;
     InputIO *io = new InputIO;

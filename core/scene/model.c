@@ -63,6 +63,11 @@ enum ssg_err ssg_model_load(const char *path, struct ssg_gltf **out, char *why,
 {
     char ext[16], reason[512];
     *out = NULL;
+    enum ssg_err e = ssg_input_check(path, SSG_MAX_MODEL_BYTES, reason, sizeof reason);
+    if (e) { /* a directory, a FIFO or /dev/zero is refused for what it is, first */
+        snprintf(why, why_len, "%s: %s", path, reason);
+        return e;
+    }
     if (!ssg_model_supported(path, reason, sizeof reason)) {
         snprintf(why, why_len, "%s: %s", path, reason);
         return SSG_E_GLTF;
