@@ -65,7 +65,7 @@ static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char
         struct ssg_run_options ro = {
             .out_dir = out_dir, .threads = a->threads, .frames = a->frames, .stats = &st,
             .progress = !a->quiet && isatty(fileno(stderr)) ? ssg_report_progress : NULL,
-            .log = a->quiet ? NULL : ssg_report_log,
+            .log = a->quiet || eye != 0.0f ? NULL : ssg_report_log, /* stereo: its join's */
         };
         if (a->verbose && !a->quiet)
             ssg_cli_print_resolved(g, stdout);
@@ -107,7 +107,8 @@ static int cmd_stereo(struct ssg_cli_args a)
     if (e)
         ssg_stereo_discard(dirs, 2);
     else
-        e = ssg_stereo_join(a.out_dir, dirs, names, 2, &d);
+        e = ssg_stereo_join(a.out_dir, dirs, names, 2, a.quiet ? NULL : ssg_report_log, NULL,
+                            &d);
     if (!e) {
         double both = ms[0] + ms[1];
         printf("stereo %dx%d per eye, ipd %g: left %.2f ms + right %.2f ms = %.2f ms per "

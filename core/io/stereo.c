@@ -45,9 +45,24 @@ static int ends_with(const char *s, const char *tail)
     return n >= t && strcmp(s + n - t, tail) == 0;
 }
 
+/* Where the results are announced (ssg_stereo_join's log). */
+struct announce {
+    ssg_log_fn log;
+    void *user;
+};
+
+static void wrote(const struct announce *a, const char *path)
+{
+    char line[PATH_LEN + 8];
+    snprintf(line, sizeof line, "wrote %s", path);
+    if (a->log)
+        a->log(a->user, line);
+}
+
 /* "ssao.png" of view "left" -> out/ssao_left.png (a name without a dot: out/NAME_left). */
 static enum ssg_err move_view_file(const char *out_dir, const char *dir, const char *name,
-                                   const char *view, struct ssg_diags *diags)
+                                   const char *view, const struct announce *a,
+                                   struct ssg_diags *diags)
 {
     char from[PATH_LEN], to[PATH_LEN];
     const char *dot = strrchr(name, '.');
@@ -59,18 +74,19 @@ static enum ssg_err move_view_file(const char *out_dir, const char *dir, const c
                       n < 0 || (size_t)n >= sizeof to ? "path too long" : strerror(errno));
         return SSG_E_IO;
     }
+    wrote(a, to);
     return SSG_OK;
 }
 
 /* One file the eyes share: an EXR joined into out/NAME, anything else moved per view. */
 static enum ssg_err join_one(const char *out_dir, const char *const *dirs,
                              const char *const *views, int count, const char *name,
-                             struct ssg_diags *diags)
+                             const struct announce *a, struct ssg_diags *diags)
 {
     if (!ends_with(name, ".exr")) {
         enum ssg_err e = SSG_OK;
         for (int k = 0; k < count && !e; k++)
-            e = move_view_file(out_dir, dirs[k], name, views[k], diags);
+            e = move_view_file(out_dir, dirs[k], name, views[k], a, diags);
         return e;
     }
     char files[MAX_VIEWS][PATH_LEN], target[PATH_LEN];
@@ -80,12 +96,17 @@ static enum ssg_err join_one(const char *out_dir, const char *const *dirs,
         file_ptrs[k] = files[k];
     }
     snprintf(target, sizeof target, "%s/%s", out_dir, name);
-    return ssg_exr_views_join(target, views, file_ptrs, count, diags);
+    enum ssg_err e = ssg_exr_views_join(target, views, file_ptrs, count, diags);
+    if (!e)
+        wrote(a, target);
+    return e;
 }
 
 enum ssg_err ssg_stereo_join(const char *out_dir, const char *const *dirs,
-                             const char *const *views, int count, struct ssg_diags *diags)
+                             const char *const *views, int count, ssg_log_fn log,
+                             void *user, struct ssg_diags *diags)
 {
+    const struct announce a = {log, user};
     char *names[MAX_FILES];
     int n = 0;
     if (count < 2 || count > MAX_VIEWS) {
@@ -98,7 +119,7 @@ enum ssg_err ssg_stereo_join(const char *out_dir, const char *const *dirs,
         e = list_dir(dirs[0], names, &n, diags);
     for (int i = 0; i < n; i++) {
         if (!e)
-            e = join_one(out_dir, dirs, views, count, names[i], diags);
+            e = join_one(out_dir, dirs, views, count, names[i], &a, diags);
         free(names[i]);
     }
     ssg_stereo_discard(dirs, count);

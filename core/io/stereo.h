@@ -11,9 +11,11 @@
 #include "ssgraph.h"
 
 /* dirs[k] holds view views[k]'s files (count views, the first the default); the results go
-   to out_dir, which is created if missing. Every problem goes to diags. */
+   to out_dir, which is created if missing, each announced to log ("wrote out/ssao.exr";
+   NULL = not). Every problem goes to diags. */
 enum ssg_err ssg_stereo_join(const char *out_dir, const char *const *dirs,
-                             const char *const *views, int count, struct ssg_diags *diags);
+                             const char *const *views, int count, ssg_log_fn log,
+                             void *user, struct ssg_diags *diags);
 
 /* Removes the plain files in each of the count folders, then the folders (a failed run's
    leftovers); a missing folder is no error. */

@@ -2,8 +2,10 @@
  * an 8-bit sRGB PNG preview of the main image with exposure and a tone curve.
  *
  * `write(img.out, "ssao", ao=ao.out, depth=g.depth)` writes out/ssao.exr with channels
- * R,G,B (or Y for a scalar image), ao.Y, depth.Y, and out/ssao.png. Extra inputs are
- * named layers: a scalar becomes <key>.Y, a vector <key>.X/Y/Z, a colour <key>.R/G/B.
+ * R,G,B (or Y for a scalar image), ao.Y, Z, and out/ssao.png. Extra inputs are named
+ * layers: a scalar becomes <key>.Y, a vector <key>.X/Y/Z, a colour <key>.R/G/B; the scalar
+ * `depth` is OpenEXR's depth channel, a bare Z. The EXR's header records the run
+ * (write_meta.c; README, "EXR metadata").
  * The PNG's tone curve defaults to ACES (Narkowicz 2015 fit): it keeps highlights of the
  * shaded frame from clipping; `tonemap=clamp` shows data in [0, 1] (AO, albedo) unchanged.
  * Files appear complete or not at all (temporary name, then rename; core/io/imageio.h). */
@@ -94,7 +96,8 @@ const struct ssg_node_desc ssg_node_write = {
     .method = "OpenEXR, 32-bit float, ZIP (zlib level 1); PNG tone curves: Reinhard et al. "
               "2002 eq. 3, Narkowicz 2015 ACES fit; sRGB encoding IEC 61966-2-1",
     .doc = "Writes <out>/<name>.exr (channels R,G,B or Y of the main image, then one layer per "
-           "extra key=port argument: scalar key.Y, vector key.X/Y/Z, colour key.R/G/B) and "
+           "extra key=port argument: scalar key.Y, vector key.X/Y/Z, colour key.R/G/B; a "
+           "scalar depth is the bare channel Z, as Blender and Nuke read depth) and "
            "<out>/<name>.png (main image x 2^exposure, tone-mapped, sRGB-encoded 8-bit; gray "
            "for a scalar image). The tone curve defaults to aces, which keeps the highlights "
            "of a shaded frame from clipping; tonemap=clamp shows data in [0, 1] (AO, albedo) "
@@ -102,7 +105,10 @@ const struct ssg_node_desc ssg_node_write = {
            "is an error when the graph is checked: upsample it first). The output directory "
            "is created if missing. Files are written under a "
            "temporary name and renamed, so a failed run leaves no partial file; the same "
-           "pixels always give the same bytes.",
+           "pixels always give the same bytes. The EXR's header records the run: camera "
+           "(worldToCamera, worldToNDC, ssgraph:camera_position/target/up, ssgraph:fov), "
+           "frame, guard, seed, graph file, --set overrides and software (no timings: they "
+           "would change the bytes).",
     SSG_NODE_INPUTS(inputs),
     .extra_inputs = 1,
     .extra_same_size = 1, /* one EXR part: every layer has the frame's size */
