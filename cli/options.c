@@ -33,11 +33,15 @@ enum { HELP_COLUMN = 22 }; /* where an option's help starts in the usage text */
 
 #define FIELD(a, opt, type) ((type *)((char *)(a) + (opt)->field))
 
+/* The command being parsed, whose usage a usage error points at; NULL = none yet. */
+static const char *hint_command;
+
 int ssg_cli_usage_error(const char *fmt, const char *arg)
 {
     fprintf(stderr, "ssgraph: error: ");
     fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(run 'ssgraph --help' for usage)\n");
+    fprintf(stderr, "\n(run 'ssgraph help%s%s' for usage)\n", hint_command ? " " : "",
+            hint_command ? hint_command : "");
     return SSG_CLI_EXIT_USAGE;
 }
 
@@ -416,20 +420,29 @@ static const struct option *find_option(const char *arg, const char **value, cha
 }
 
 /* The option at argv[*i] and its value (in the same argument after '=', else argv[*i + 1],
-   then skipped). */
+   then skipped); short flags may come together, as getopt reads them: -qv, -qo FILE. */
 static int take_option(enum ssg_cli_command command, int argc, char **argv, int *i,
                        struct ssg_cli_args *a)
 {
     char name[64];
-    const char *value;
-    const struct option *opt = find_option(argv[*i], &value, name, sizeof name);
-    if (!opt)
-        return ssg_cli_usage_error("unknown option '%s'", name);
-    if (!(opt->commands & command)) {
-        char list[160];
-        command_list(opt->commands, list, sizeof list);
-        return usage_errorf("option '%s' does not apply to '%s' (it is an option of %s)",
-                            opt->name, ssg_cli_command_name(command), list);
+    const char *value, *arg = argv[*i];
+    const struct option *opt = find_option(arg, &value, name, sizeof name);
+    for (;;) {
+        if (!opt)
+            return ssg_cli_usage_error("unknown option '%s'", name);
+        if (!(opt->commands & command)) {
+            char list[160];
+            command_list(opt->commands, list, sizeof list);
+            return usage_errorf("option '%s' does not apply to '%s' (it is an option of %s)",
+                                opt->name, ssg_cli_command_name(command), list);
+        }
+        if (opt->arg || !value || arg[1] == '-' || value[0] == '-')
+            break;
+        int rc = opt->take(a, opt, NULL); /* a short flag, more short options after it */
+        if (rc)
+            return rc;
+        arg = value - 1; /* find_option reads the option's letter at arg[1] */
+        opt = find_option(arg, &value, name, sizeof name);
     }
     if (!opt->arg && value)
         return usage_errorf("option '%s' takes no value, got '%s'", opt->name, argv[*i]);
@@ -458,8 +471,7 @@ static int check_positional(enum ssg_cli_command command, const struct ssg_cli_a
         return 0;
     if (command == SSG_CLI_COMPARE)
         return ssg_cli_usage_error("%s", "compare expects two image files: A B");
-    return usage_errorf("%s expects %s (see 'ssgraph help %s')", ci->name, ci->args,
-                        ci->name);
+    return usage_errorf("%s expects %s", ci->name, ci->args);
 }
 
 static int is_help(const char *arg)
@@ -471,6 +483,7 @@ int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
                   struct ssg_cli_args *a)
 {
     int most = command_info(command)->max_args, options_end = argc;
+    hint_command = ssg_cli_command_name(command);
     defaults(a);
     for (int i = 0; i < argc && options_end == argc; i++) {
         if (!strcmp(argv[i], "--"))

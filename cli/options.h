@@ -87,7 +87,8 @@ const char *ssg_cli_command_name(enum ssg_cli_command command);
 int ssg_cli_parse(enum ssg_cli_command command, int argc, char **argv,
                   struct ssg_cli_args *a);
 
-/* Prints "ssgraph: error: <message>" and the hint to --help; returns SSG_CLI_EXIT_USAGE. */
+/* Prints "ssgraph: error: <message>" and the hint to `ssgraph help COMMAND` (the command
+ * ssg_cli_parse was last given, else `ssgraph help`); returns SSG_CLI_EXIT_USAGE. */
 int ssg_cli_usage_error(const char *fmt, const char *arg);
 
 /* The whole usage text (commands, then the options of the table grouped by the commands

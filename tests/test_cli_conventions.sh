@@ -62,6 +62,8 @@ expect_exit 0 "^wrote $TMP/n/k.exr$" "$BIN" node halton --set count=8 -o "$TMP/n
 expect_exit 0 "^wrote $TMP/n/v.exr \(8x1, 3 channels\)$" "$BIN" node halton --set count=8 -v \
     -o "$TMP/n/v.exr"
 [ -z "$("$BIN" node halton --quiet --out "$TMP/nq")" ] || fail "node --quiet printed"
+[ -z "$("$BIN" node halton -qvo "$TMP/nq/c.exr")" ] && [ -f "$TMP/nq/c.exr" ] \
+    || fail "short options together (-qvo FILE) are not read as -q -v -o FILE"
 expect_exit 2 "-o expects DIR/NAME.exr" "$BIN" run graphs/ssao.graph -o "$TMP/x.png"
 printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\n' "$PWD" > "$TMP/nowrite.graph"
 expect_exit 2 "has none" "$BIN" run "$TMP/nowrite.graph" -o "$TMP/nw/x.exr"
