@@ -17,6 +17,7 @@
  * ssg_input_read, the same rules as every input (lang/files.h). Nothing is logged;
  * Assimp's error string becomes the message, and no exception leaves this file. */
 #include "scene/model.h"
+#include "scene/model_adapter.h"
 
 extern "C" {
 #include "lang/files.h"
@@ -42,15 +43,10 @@ extern "C" {
 
 namespace {
 
-struct Failure {
-    ssg_err code;
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string &message)
-{
-    throw Failure{SSG_E_GLTF, message};
-}
+using model_adapter::Failure;
+using model_adapter::Prim;
+using model_adapter::fail;
+using model_adapter::printable;
 
 /* Assimp's file access, through ssg_input_read: a regular file of at most
    SSG_MAX_MODEL_BYTES, read whole into memory. Read-only. Remembers the first file it
@@ -84,23 +80,6 @@ class InputIO : public Assimp::IOSystem {
     }
     void Close(Assimp::IOStream *stream) override { delete stream; }
 };
-
-struct Prim {
-    std::vector<float> positions, normals, uvs;
-    std::vector<uint32_t> indices;
-    int material;
-};
-
-template <typename T> T *c_array(const std::vector<T> &v)
-{
-    if (v.empty())
-        return nullptr;
-    T *p = static_cast<T *>(std::malloc(v.size() * sizeof(T)));
-    if (!p)
-        throw std::bad_alloc();
-    std::memcpy(p, v.data(), v.size() * sizeof(T));
-    return p;
-}
 
 /* Cofactor matrix of the upper 3x3 (row-major like aiMatrix4x4): proportional to the
    inverse transpose, which carries normals through a non-uniform scale. */
@@ -238,57 +217,9 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
     prims.push_back(std::move(out));
 }
 
-void free_partial(ssg_gltf *g)
-{
-    for (int i = 0; g->meshes && i < g->mesh_count; i++) {
-        std::free(g->meshes[i].positions);
-        std::free(g->meshes[i].normals);
-        std::free(g->meshes[i].uvs);
-        std::free(g->meshes[i].indices);
-    }
-    std::free(g->meshes);
-    std::free(g->materials);
-    std::free(g->textures);
-    std::free(g);
-}
-
 ssg_gltf *Flattener::to_c() const
 {
-    ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
-    if (!g)
-        throw std::bad_alloc();
-    try {
-        g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
-        g->materials = c_array(materials);
-        if (!g->meshes || (!materials.empty() && !g->materials))
-            throw std::bad_alloc();
-        g->material_count = (int)materials.size();
-        for (const Prim &p : prims) {
-            ssg_mesh &o = g->meshes[g->mesh_count++];
-            o.vertex_count = (int)(p.positions.size() / 3);
-            o.triangle_count = (int)(p.indices.size() / 3);
-            o.material = p.material;
-            o.positions = c_array(p.positions);
-            o.normals = c_array(p.normals);
-            o.uvs = c_array(p.uvs);
-            o.indices = c_array(p.indices);
-        }
-    } catch (...) {
-        free_partial(g);
-        throw;
-    }
-    return g;
-}
-
-/* One printable line: Assimp's messages may quote raw bytes of the file. */
-std::string printable(std::string text)
-{
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-        text.pop_back();
-    for (char &ch : text)
-        if ((unsigned char)ch < 32 || (unsigned char)ch > 126)
-            ch = '?';
-    return text;
+    return model_adapter::to_c(prims, materials, {}, nullptr);
 }
 
 /* "OBJ" for "cup.obj": the format as a message names it. */
@@ -335,12 +266,6 @@ ssg_gltf *load(const char *path)
     return flat.to_c();
 }
 
-void report(char *why, size_t why_len, const char *path, const std::string &message)
-{
-    if (why && why_len)
-        std::snprintf(why, why_len, "%s: %s", path, message.c_str());
-}
-
 } // namespace
 
 extern "C" int ssg_assimp_supports(const char *ext)
@@ -356,20 +281,5 @@ extern "C" int ssg_assimp_supports(const char *ext)
 extern "C" enum ssg_err ssg_assimp_load(const char *path, struct ssg_gltf **out, char *why,
                                         size_t why_len)
 {
-    *out = nullptr;
-    try {
-        *out = load(path);
-        return SSG_OK;
-    } catch (const Failure &f) {
-        report(why, why_len, path, f.message);
-        return f.code;
-    } catch (const std::bad_alloc &) {
-        report(why, why_len, path, "out of memory");
-        return SSG_E_NOMEM;
-    } catch (const std::exception &ex) {
-        report(why, why_len, path, printable(ex.what()));
-    } catch (...) {
-        report(why, why_len, path, "unexpected failure inside Assimp");
-    }
-    return SSG_E_GLTF;
+    return model_adapter::guarded(path, out, why, why_len, load, "Assimp");
 }

@@ -143,28 +143,8 @@ float srgb_to_linear(float c)
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-template <typename T> T *c_array(const std::vector<T> &v)
-{
-    if (v.empty())
-        return nullptr;
-    T *p = static_cast<T *>(std::malloc(v.size() * sizeof(T)));
-    if (!p)
-        throw std::bad_alloc();
-    std::memcpy(p, v.data(), v.size() * sizeof(T));
-    return p;
-}
-
-/* A primitive gathered in C++ containers until the whole file has loaded. */
-struct Prim {
-    std::vector<float> positions, normals, uvs;
-    std::vector<uint32_t> indices;
-    int material;
-};
-
-struct Tex {
-    int width, height;
-    std::vector<float> rgb;
-};
+using model_adapter::Prim;
+using model_adapter::Tex;
 
 class Flattener {
   public:
@@ -381,59 +361,9 @@ int Flattener::texture(int gltf_index)
     return texture_slot[(size_t)gltf_index];
 }
 
-void free_partial(ssg_gltf *g);
-
 ssg_gltf *Flattener::to_c() const
 {
-    ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
-    if (!g)
-        throw std::bad_alloc();
-    try {
-        g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
-        g->materials = c_array(materials);
-        g->textures =
-            static_cast<ssg_texture *>(std::calloc(textures.size() + 1, sizeof(ssg_texture)));
-        if (!g->meshes || !g->textures || (!materials.empty() && !g->materials))
-            throw std::bad_alloc();
-        g->material_count = (int)materials.size();
-        for (const Prim &p : prims) {
-            ssg_mesh &o = g->meshes[g->mesh_count++];
-            o.vertex_count = (int)(p.positions.size() / 3);
-            o.triangle_count = (int)(p.indices.size() / 3);
-            o.material = p.material;
-            o.positions = c_array(p.positions);
-            o.normals = c_array(p.normals);
-            o.uvs = c_array(p.uvs);
-            o.indices = c_array(p.indices);
-        }
-        for (const Tex &t : textures) {
-            ssg_texture &o = g->textures[g->texture_count++];
-            o.width = t.width;
-            o.height = t.height;
-            o.rgb = c_array(t.rgb);
-        }
-    } catch (...) {
-        free_partial(g);
-        throw;
-    }
-    g->has_camera = has_camera;
-    g->camera = camera;
-    return g;
-}
-
-void free_partial(ssg_gltf *g)
-{
-    for (int i = 0; g->meshes && i < g->mesh_count; i++) {
-        std::free(g->meshes[i].positions);
-        std::free(g->meshes[i].normals);
-        std::free(g->meshes[i].uvs);
-        std::free(g->meshes[i].indices);
-    }
-    for (int i = 0; g->textures && i < g->texture_count; i++) std::free(g->textures[i].rgb);
-    std::free(g->meshes);
-    std::free(g->materials);
-    std::free(g->textures);
-    std::free(g);
+    return model_adapter::to_c(prims, materials, textures, has_camera ? &camera : nullptr);
 }
 
 /* tinygltf reads the buffers and images a glTF names through this: the same rules as
@@ -509,13 +439,8 @@ ssg_gltf *load(const char *path)
     bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes,
                                                    (unsigned)len, dir)
                      : loader.LoadASCIIFromString(&model, &err, &warn, data, (unsigned)len, dir);
-    if (!ok) {
-        while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-        for (char &c : err) /* one printable line: JSON errors quote raw bytes of the file */
-            if (c == '\n')
-                c = ';';
-            else if ((unsigned char)c < 32 || (unsigned char)c > 126)
-                c = '?';
+    if (!ok) { /* JSON errors quote raw bytes of the file */
+        err = model_adapter::printable(err);
         fail(err.empty() ? "tinygltf could not parse it" : err);
     }
     Flattener flat(model);
@@ -523,39 +448,18 @@ ssg_gltf *load(const char *path)
     return flat.to_c();
 }
 
-void report(char *why, size_t why_len, const char *path, const std::string &message)
-{
-    if (why && why_len)
-        std::snprintf(why, why_len, "%s: %s", path, message.c_str());
-}
-
 } // namespace
 
 extern "C" enum ssg_err ssg_gltf_load(const char *path, struct ssg_gltf **out, char *why,
                                       size_t why_len)
 {
-    *out = nullptr;
-    try {
-        *out = load(path);
-        return SSG_OK;
-    } catch (const Failure &f) {
-        report(why, why_len, path, f.message);
-        return f.code;
-    } catch (const std::bad_alloc &) {
-        report(why, why_len, path, "out of memory");
-        return SSG_E_NOMEM;
-    } catch (const std::exception &e) {
-        report(why, why_len, path, e.what());
-    } catch (...) {
-        report(why, why_len, path, "unexpected failure inside tinygltf");
-    }
-    return SSG_E_GLTF;
+    return model_adapter::guarded(path, out, why, why_len, load, "tinygltf");
 }
 
 extern "C" void ssg_gltf_destroy(struct ssg_gltf **gltf)
 {
     if (!gltf || !*gltf)
         return;
-    free_partial(*gltf);
+    model_adapter::free_model(*gltf);
     *gltf = nullptr;
 }

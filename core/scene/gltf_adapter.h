@@ -1,7 +1,7 @@
 /* gltf_adapter.h - private to the tinygltf adapter: what the scene flattening in
  * gltf_adapter.cc and the accessor reading in gltf_accessor_adapter.cc share. Problems are
- * thrown as gltf_adapter::Failure and caught in ssg_gltf_load; the namespace is a named
- * one so that both files throw and catch the same type. C++ only. */
+ * thrown as Failure (model_adapter.h, the type the Assimp adapter throws too) and caught
+ * in ssg_gltf_load. C++ only. */
 #ifndef SSG_GLTF_ADAPTER_H
 #define SSG_GLTF_ADAPTER_H
 
@@ -12,18 +12,12 @@
 #include <tiny_gltf.h>
 
 #include "scene/gltf.h"
+#include "scene/model_adapter.h"
 
 namespace gltf_adapter {
 
-struct Failure {
-    ssg_err code;
-    std::string message;
-};
-
-[[noreturn]] inline void fail(const std::string &message)
-{
-    throw Failure{SSG_E_GLTF, message};
-}
+using model_adapter::Failure;
+using model_adapter::fail;
 
 /* Accessor `index`'s elements as `components` floats each (VEC2 texcoords, VEC3
    positions), every one finite. Fails on a missing, sparse, mistyped or out-of-bounds
