@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "io/imageio.h"
 
 /* stb_image, static and PNG only, decodes our PNGs independently of our own reader. Its
@@ -33,26 +34,6 @@
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
-static char tmpdir[512];
-
-static void setup_tmp(void)
-{
-    const char *env = getenv("SSG_TMP");
-    if (env && env[0])
-        snprintf(tmpdir, sizeof tmpdir, "%s", env);
-    else
-        snprintf(tmpdir, sizeof tmpdir, CHECK_TMP_ROOT "/ssg_test_imageio_%ld", (long)getpid());
-    mkdir(tmpdir, 0777);
-}
-
-static const char *tmp_path(const char *name)
-{
-    static char buf[8][1024];
-    static int next;
-    char *p = buf[next++ % 8];
-    snprintf(p, 1024, "%s/%s", tmpdir, name);
-    return p;
-}
 
 /* Removes a file or an empty directory, ignoring "not there". */
 static void remove_path(const char *path)
@@ -448,7 +429,7 @@ static void test_failed_writes(void)
 
 int main(void)
 {
-    setup_tmp();
+    setup_tmp("test_imageio");
     test_exr_round_trip();
     test_exr_bad_layers();
     test_png_codes();

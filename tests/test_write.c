@@ -9,21 +9,12 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "io/imageio.h"
 #include "write/write.h"
 
 extern const struct ssg_node_desc ssg_node_write;
 
-static char tmpdir[512];
-
-static const char *tmp_path(const char *name)
-{
-    static char buf[8][1024];
-    static int next;
-    char *p = buf[next++ % 8];
-    snprintf(p, 1024, "%s/%s", tmpdir, name);
-    return p;
-}
 
 static int exists(const char *path)
 {
@@ -269,12 +260,7 @@ static void test_errors(void)
 
 int main(void)
 {
-    const char *env = getenv("SSG_TMP");
-    if (env && env[0])
-        snprintf(tmpdir, sizeof tmpdir, "%s", env);
-    else
-        snprintf(tmpdir, sizeof tmpdir, CHECK_TMP_ROOT "/ssg_test_write_%ld", (long)getpid());
-    mkdir(tmpdir, 0777);
+    setup_tmp("test_write");
     test_descriptor();
     test_names();
     test_layers();
