@@ -1,10 +1,11 @@
-/* test_models_load.c - mesh files of every format (core/scene/model.h): an OBJ with a quad and a
- * pentagon, an ASCII PLY box and an ASCII STL load through Assimp to the triangle counts
- * and bounds they were written with; an OBJ's diffuse colour becomes the scene material's
- * albedo and a file without materials takes the scene's default; a mesh line's scale,
- * rotate and translate place an OBJ as they place a glTF; unknown extensions, a broken
- * OBJ, a missing .mtl or texture and a Draco glTF give SSG_E_GLTF or SSG_E_IO with the
- * file named; the scale hint fires for a model in millimetres only. */
+/* test_models_load.c - mesh files of every format (core/scene/model.h): an OBJ with a
+ * quad and a pentagon, an ASCII PLY box and an ASCII STL load through Assimp to the
+ * triangle counts and bounds they were written with, as do a COLLADA quad and a glTF 1.0
+ * triangle placed by their nodes; diffuse colours become base colours (an OBJ's the scene
+ * material's albedo) and a file without materials takes the scene's default; a mesh
+ * line's scale, rotate and translate place an OBJ as they place a glTF; unknown
+ * extensions, a broken OBJ, a missing .mtl or texture and a Draco glTF give SSG_E_GLTF or
+ * SSG_E_IO with the file named; the scale hint fires for a model in millimetres only. */
 #include <errno.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -63,6 +64,44 @@ static const char STL[] = "solid two\n"
                           "vertex 1 0 -2\nendloop\nendfacet\n"
                           "facet normal 0 1 0\nouter loop\nvertex -1 0 -2\nvertex -1 0 2\n"
                           "vertex 1 0 2\nendloop\nendfacet\nendsolid two\n";
+
+/* A quad moved to z = 5 by its node, green by its lambert effect. */
+static const char DAE[] =
+    "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/"
+    "COLLADASchema\" version=\"1.4.1\"><asset><up_axis>Y_UP</up_axis></asset>"
+    "<library_effects><effect id=\"fx\"><profile_COMMON><technique sid=\"t\"><lambert>"
+    "<diffuse><color>0.1 0.7 0.2 1</color></diffuse></lambert></technique></profile_COMMON>"
+    "</effect></library_effects><library_materials><material id=\"green\" name=\"green\">"
+    "<instance_effect url=\"#fx\"/></material></library_materials><library_geometries>"
+    "<geometry id=\"g\"><mesh><source id=\"p\"><float_array id=\"pa\" count=\"12\">"
+    "0 0 0 2 0 0 2 1 0 0 1 0</float_array><technique_common><accessor source=\"#pa\" "
+    "count=\"4\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" "
+    "type=\"float\"/><param name=\"Z\" type=\"float\"/></accessor></technique_common>"
+    "</source><vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/></vertices>"
+    "<polylist material=\"m\" count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" "
+    "offset=\"0\"/><vcount>4</vcount><p>0 1 2 3</p></polylist></mesh></geometry>"
+    "</library_geometries><library_visual_scenes><visual_scene id=\"s\"><node id=\"n\">"
+    "<translate>0 0 5</translate><instance_geometry url=\"#g\"><bind_material>"
+    "<technique_common><instance_material symbol=\"m\" target=\"#green\"/>"
+    "</technique_common></bind_material></instance_geometry></node></visual_scene>"
+    "</library_visual_scenes><scene><instance_visual_scene url=\"#s\"/></scene></COLLADA>\n";
+
+/* glTF 1.0 (named dictionaries, version "1.0"): one triangle, its node 1 down -z, red. */
+static const char GLTF1[] =
+    "{\"asset\": {\"version\": \"1.0\"}, \"scene\": \"s\", \"scenes\": {\"s\": "
+    "{\"nodes\": [\"n\"]}}, \"nodes\": {\"n\": {\"meshes\": [\"m\"], \"translation\": "
+    "[0, 0, -1]}}, \"meshes\": {\"m\": {\"primitives\": [{\"attributes\": {\"POSITION\": "
+    "\"p\"}, \"indices\": \"i\", \"mode\": 4, \"material\": \"red\"}]}}, \"materials\": "
+    "{\"red\": {\"values\": {\"diffuse\": [0.8, 0.1, 0.1, 1]}}}, \"accessors\": {\"p\": "
+    "{\"bufferView\": \"vp\", \"byteOffset\": 0, \"byteStride\": 12, \"componentType\": "
+    "5126, \"count\": 3, \"type\": \"VEC3\", \"min\": [0, 0, 0], \"max\": [1, 1, 0]}, "
+    "\"i\": {\"bufferView\": \"vi\", \"byteOffset\": 0, \"byteStride\": 0, "
+    "\"componentType\": 5123, \"count\": 3, \"type\": \"SCALAR\"}}, \"bufferViews\": "
+    "{\"vp\": {\"buffer\": \"b\", \"byteOffset\": 0, \"byteLength\": 36, \"target\": "
+    "34962}, \"vi\": {\"buffer\": \"b\", \"byteOffset\": 36, \"byteLength\": 6, "
+    "\"target\": 34963}}, \"buffers\": {\"b\": {\"uri\": \"data:application/octet-stream;"
+    "base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA\", \"byteLength\": 42, "
+    "\"type\": \"arraybuffer\"}}}";
 
 static void bounds_of(const struct ssg_gltf *g, float lo[3], float hi[3], long long *tris)
 {
@@ -125,6 +164,18 @@ static void test_formats(void)
     }
     g = expect_model(write_file("two.stl", STL), 2, (float[]){-1, 0, -2}, (float[]){1, 0, 2});
     ssg_gltf_destroy(&g);
+    g = expect_model(write_file("quad.dae", DAE), 2, (float[]){0, 0, 5}, (float[]){2, 1, 5});
+    if (g) {
+        CHECK(g->material_count == 1 && !strcmp(g->materials[0].name, "green"));
+        CHECK_NEAR(g->materials[0].base_color[1], 0.7, 1e-6);
+        ssg_gltf_destroy(&g);
+    }
+    g = expect_model(write_file("tri1.gltf", GLTF1), 1, (float[]){0, 0, -1}, (float[]){1, 1, -1});
+    if (g) {
+        CHECK(g->material_count == 1 && g->meshes[0].material == 0);
+        CHECK_NEAR(g->materials[0].base_color[0], 0.8, 1e-6);
+        ssg_gltf_destroy(&g);
+    }
 }
 
 /* Every failure: the code, *out NULL, and the file's name and `what` in the message. */
