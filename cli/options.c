@@ -209,7 +209,9 @@ static const struct option options[] = {
     {.name = "--stereo", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_flag,
      .field = OF(stereo),
      .help = "both eyes of a head-mounted display, 1080x1200 each unless\n"
-             "--size, into --out/left and --out/right; prints both eyes' time"},
+             "--size; run: one multi-view EXR per output (views left, right)\n"
+             "and NAME_left/NAME_right.png (docs/exr.md); bench: --out/left\n"
+             "and --out/right; prints both eyes' time"},
     {.name = "--ipd", .arg = "D", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_float,
      .field = OF(ipd), .lo = 0, .hi = 1e6, .expects = "a positive distance in scene units",
      .help = "(with --stereo) distance between the eyes, scene units (0.064)"},
@@ -236,7 +238,8 @@ static const struct option options[] = {
      .help = "bind an image file, or one EXR layer of it, to a port"},
     {.name = "--fov", .arg = "DEGREES", .commands = SSG_CLI_NODE, .take = take_float,
      .field = OF(fov), .lo = 0, .hi = 180, .expects = "degrees in (0, 180)",
-     .help = "vertical field of view of the frame (default 45)"},
+     .help = "vertical field of view of the frame (default: the first input's\n"
+             "recorded one, else 45)"},
     {.name = "--sweep", .arg = "NODE.PARAM=V1,V2,...", .commands = SSG_CLI_BENCH,
      .take = take_list, .field = OF(sweeps), .count = OF(sweep_count),
      .hi = SSG_BENCH_MAX_SWEEPS,
