@@ -58,8 +58,11 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "ports, parameters, defaults, ranges and method of a node",
      "Prints the node's ports, its parameters with types, defaults, ranges and units,\n"
      "and the method it implements, from its descriptor."},
-    {SSG_CLI_DOCS, "docs", "", 0, 0, "the Markdown reference of every node",
-     "Prints the Markdown reference of every node (docs/nodes.md is this output)."},
+    {SSG_CLI_DOCS, "docs", "[nodes|scenes]", 0, 1,
+     "the Markdown reference of every node, or of every scene entity",
+     "Prints the Markdown reference of every node (default; docs/nodes.md is this\n"
+     "output, run in the repository root: each node lists the graphs/ that use it) or\n"
+     "of every scene entity and its parameters (docs/scenes.md)."},
     {SSG_CLI_HELP, "help", "[COMMAND]", 0, 1, "this list, or one command's usage",
      "Without COMMAND: every command and every option. With COMMAND: its usage and\n"
      "only its options (the same as `ssgraph COMMAND --help`)."},

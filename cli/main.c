@@ -398,6 +398,23 @@ static int cmd_describe(const char *node)
     return EXIT_INVALID;
 }
 
+/* docs [nodes|scenes]: the generated references (docs/nodes.md, docs/scenes.md). Nodes
+   list the graphs of ./graphs that use them, so run it in the repository root. */
+static int cmd_docs(const char *which)
+{
+    if (!which || !strcmp(which, "nodes")) {
+        ssg_nodes_markdown(stdout, "graphs");
+        return 0;
+    }
+    if (!strcmp(which, "scenes")) {
+        ssg_scenes_markdown(stdout);
+        return 0;
+    }
+    fprintf(stderr, "ssgraph: error: docs: unknown reference '%s' (expected nodes or scenes)\n",
+            which);
+    return EXIT_USAGE;
+}
+
 enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE };
 
 /* A command on its parsed arguments (its usage for --help). */
@@ -423,7 +440,7 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_DOT: return cmd_dot(&a);
     case SSG_CLI_NODES: return cmd_nodes();
     case SSG_CLI_DESCRIBE: return cmd_describe(a.files[0]);
-    case SSG_CLI_DOCS: ssg_nodes_markdown(stdout, "graphs"); return 0;
+    case SSG_CLI_DOCS: return cmd_docs(a.file_count ? a.files[0] : NULL);
     case SSG_CLI_HELP: return cmd_help(&a);
     }
     return EXIT_USAGE;

@@ -54,7 +54,7 @@ static void print_scale_hint(FILE *out, const struct ssg_scene *s)
     float scale = ssg_scene_scale_hint(s, SSG_CLI_DEFAULT_AO_RADIUS, &diagonal);
     if (scale == 0.0f)
         return;
-    fprintf(out, "  note: the scene's bounding-box diagonal is %g scene units, %g times the "
+    fprintf(out, "  note: the models' bounding-box diagonal is %g scene units, %g times the "
             "AO radius %g of graphs/ssdo.graph: %s? Try scale=%g on the mesh line (mesh(\"file\", "
             "scale=%g)), or a radius to match", (double)diagonal,
             (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS), (double)SSG_CLI_DEFAULT_AO_RADIUS,

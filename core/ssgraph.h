@@ -293,6 +293,10 @@ enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, dou
  * glTF is found), without building the ray-tracing scene. */
 enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
 
+/* Writes the Markdown reference of every scene entity and its parameters (docs/scenes.md),
+ * from the same tables that parse and validate scene files. */
+void ssg_scenes_markdown(FILE *stream);
+
 /* One input of a single-node run: an image bound to a named input port. */
 struct ssg_binding {
     const char *port;

@@ -80,6 +80,11 @@ done
 # --- the node reference is generated from the descriptors and must be current ---
 "$BIN" docs | diff -u docs/nodes.md - > "$TMP/docs.diff" \
     || fail "docs/nodes.md is stale: run '$BIN docs > docs/nodes.md' ($(head -c 300 "$TMP/docs.diff"))"
+"$BIN" docs scenes | diff -u docs/scenes.md - > "$TMP/scenes.diff" \
+    || fail "docs/scenes.md is stale: run '$BIN docs scenes > docs/scenes.md' ($(head -c 300 "$TMP/scenes.diff"))"
+grep -q '^## mesh$' docs/scenes.md && grep -q '| `scale` |' docs/scenes.md \
+    || fail "docs/scenes.md lacks the mesh entity's scale parameter"
+expect_exit 2 "unknown reference 'bogus' \(expected nodes or scenes\)" "$BIN" docs bogus
 
 # Every graph end to end (check, run, metrics over frames) is a ctest case of its own:
 # tests/graphs/run.sh, registered per graph file in tests/CMakeLists.txt.

@@ -68,9 +68,13 @@ expect_exit 0 "bounds: min \(0, 0, -1\) max \(1, 1, -1\)" "$BIN" check "$TMP/glt
 
 # --- the scale hint: millimetres (a 2 x 4 x 6 m box written in mm) get it, metres not ---
 scene mm box.ply ", scale=1000"
-expect_exit 0 "note: the scene's bounding-box diagonal is .* times the AO radius 0.5.*scale=0.001.*mm.scene:3" \
+expect_exit 0 "note: the models' bounding-box diagonal is .* times the AO radius 0.5.*scale=0.001.*mm.scene:3" \
     "$BIN" check "$TMP/mm.scene"
 "$BIN" check "$TMP/ply.scene" | grep -q "note:" && fail "a scene in metres got the scale hint"
+# the bundled scenes are in metres with floors many radii wide: none gets the hint
+for f in examples/*.scene docs/tutorial/*.scene; do
+    "$BIN" check "$f" | grep -q "note:" && fail "$f got the scale hint"
+done
 
 # --- bad models: file:line:column of the mesh line, the file named, exit 1, nothing written ---
 printf 'solid\n' > "$TMP/model.xyz"

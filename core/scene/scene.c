@@ -19,122 +19,6 @@
 #include "scene/scene_build.h"
 #include "scene/scene_shapes.h"
 
-#define BIG 1e9
-
-/* ---- parameter tables ---- */
-
-#define VEC3(nm, st, fld, x, y, z, lo, hi, u, h)                                         \
-    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .def3 = {x, y, z},                      \
-     .min = lo, .max = hi, .unit = u, .help = h}
-#define REQ_VEC3(nm, st, fld, u, h)                                                      \
-    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .unit = u,                              \
-     .help = h, .required = 1}
-#define FLOAT(nm, st, fld, d, lo, hi, u, h)                                              \
-    {.name = nm, SSG_FIELD_FLOAT(struct st, fld), .def = d,                              \
-     .min = lo, .max = hi, .unit = u, .help = h}
-#define TEXT(nm, ty, st, fld, req, h)                                                    \
-    {.name = nm, SSG_FIELD_##ty(struct st, fld), .help = h, .required = req}
-#define MATERIAL(st) TEXT("material", NAME, st, material, 0,                             \
-                          "name of a material defined in this file; default: white 0.8")
-
-static const struct ssg_param_desc camera_params[] = {
-    VEC3("position", camera_args, position, 0, 0, 5, 0, 0, "scene units", "eye position"),
-    VEC3("target", camera_args, target, 0, 0, 0, 0, 0, "scene units", "point looked at"),
-    VEC3("up", camera_args, up, 0, 1, 0, 0, 0, NULL, "up direction hint"),
-    FLOAT("fov", camera_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
-          "vertical field of view"),
-    FLOAT("near", camera_args, near_z, SSG_DEFAULT_NEAR, 1e-6, BIG, "scene units",
-          "near plane distance"),
-    FLOAT("far", camera_args, far_z, SSG_DEFAULT_FAR, 1e-6, BIG, "scene units",
-          "far plane distance"),
-};
-static const struct ssg_param_desc material_params[] = {
-    VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,
-         "diffuse reflectance, linear RGB (multiplies the texture)"),
-    VEC3("specular", material_args, specular, 0, 0, 0, 0, 1, NULL,
-         "Blinn-Phong specular colour, linear RGB"),
-    FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
-    TEXT(
-        "texture", STRING, material_args, texture, 0,
-        "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
-};
-static const struct ssg_param_desc point_light_params[] = {
-    REQ_VEC3("position", light_args, position, "scene units", "light position"),
-    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
-    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/sr",
-          "radiant intensity; irradiance falls off as 1/d^2"),
-};
-static const struct ssg_param_desc directional_light_params[] = {
-    REQ_VEC3("direction", light_args, direction, NULL, "direction the light travels"),
-    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
-    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/m^2",
-          "irradiance on a surface facing the light"),
-};
-static const struct ssg_param_desc environment_params[] = {
-    VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL,
-         "constant radiance, linear RGB"),
-    FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL,
-          "multiplies color and image"),
-    TEXT("image", STRING, environment_args, image, 0,
-         "lat-long HDR image (multiplied by color), relative to the scene"),
-};
-static const struct ssg_param_desc plane_params[] = {
-    MATERIAL(shape_args),
-    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the rectangle"),
-    VEC3("size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
-         "[width, unused, depth]: extents along the plane's x and z axes (its y is the "
-         "normal)"),
-    VEC3("normal", shape_args, normal, 0, 1, 0, 0, 0, NULL,
-         "facing direction; the plane's frame is the shortest rotation of +y onto it"),
-};
-static const struct ssg_param_desc box_params[] = {
-    MATERIAL(shape_args),
-    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the box"),
-    VEC3("size", shape_args, size, 1, 1, 1, 1e-6, BIG, "scene units", "extents along x, y, z"),
-    VEC3("rotate", shape_args, rotate, 0, 0, 0, 0, 0, "degrees",
-         "rotation about the centre: about x, then y, then z (world axes)"),
-};
-static const struct ssg_param_desc sphere_params[] = {
-    MATERIAL(shape_args),
-    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the sphere"),
-    FLOAT("radius", shape_args, radius, 1, 1e-6, BIG, "scene units", "radius"),
-    {.name = "subdivisions", SSG_FIELD_INT(struct shape_args, subdivisions), .def = 32,
-     .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
-};
-static const struct ssg_param_desc mesh_params[] = {
-    TEXT("file", STRING, mesh_args, file, 1, "model file, relative to the scene: glTF 2.0 "
-         "(.gltf, .glb), or through Assimp OBJ, PLY, FBX, 3DS, STL, DAE, glTF 1.0 and more"),
-    TEXT("material", NAME, mesh_args, material, 0,
-         "material overriding the file's own; default: the file's materials (diffuse "
-         "colour and texture)"),
-    VEC3("translate", mesh_args, translate, 0, 0, 0, 0, 0, "scene units", "moves the mesh"),
-    VEC3("rotate", mesh_args, rotate, 0, 0, 0, 0, 0, "degrees",
-         "about x, then y, then z (world axes), before translate"),
-    VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first "
-         "(0.001 for a model in millimetres; `ssgraph check` suggests one)"),
-};
-
-struct kind_desc {
-    const char *name;
-    struct ssg_param_table table;
-    size_t size;
-};
-
-static const struct kind_desc kinds[SK_COUNT] = {
-    [SK_CAMERA] = {"camera", SSG_TABLE(camera_params), sizeof(struct camera_args)},
-    [SK_MATERIAL] = {"material", SSG_TABLE(material_params), sizeof(struct material_args)},
-    [SK_POINT_LIGHT] = {"point_light", SSG_TABLE(point_light_params),
-                        sizeof(struct light_args)},
-    [SK_DIRECTIONAL_LIGHT] = {"directional_light", SSG_TABLE(directional_light_params),
-                              sizeof(struct light_args)},
-    [SK_ENVIRONMENT] = {"environment", SSG_TABLE(environment_params),
-                        sizeof(struct environment_args)},
-    [SK_PLANE] = {"plane", SSG_TABLE(plane_params), sizeof(struct shape_args)},
-    [SK_BOX] = {"box", SSG_TABLE(box_params), sizeof(struct shape_args)},
-    [SK_SPHERE] = {"sphere", SSG_TABLE(sphere_params), sizeof(struct shape_args)},
-    [SK_MESH] = {"mesh", SSG_TABLE(mesh_params), sizeof(struct mesh_args)},
-};
-
 /* ---- helpers shared with scene_build.c ---- */
 
 void ssg_scene_fail(struct scene_loader *l, enum ssg_err e)
@@ -152,12 +36,12 @@ static void kind_names(char *buf, size_t len)
 {
     size_t n = 0;
     for (int k = 0; k < SK_COUNT && n < len; k++)
-        n += (size_t)snprintf(buf + n, len - n, "%s%s", k ? ", " : "", kinds[k].name);
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", k ? ", " : "", ssg_scene_kinds[k].name);
 }
 
 static const char *entity_name(const struct scene_entity *e)
 {
-    return kinds[e->kind].name;
+    return ssg_scene_kinds[e->kind].name;
 }
 
 /* ---- binding arguments ---- */
@@ -165,7 +49,7 @@ static const char *entity_name(const struct scene_entity *e)
 static void bind_arg(struct scene_loader *l, struct scene_entity *e, int index,
                      const struct ssg_value *v)
 {
-    const struct kind_desc *k = &kinds[e->kind];
+    const struct scene_kind_desc *k = &ssg_scene_kinds[e->kind];
     enum ssg_err err = ssg_param_set(k->table, index, e->args, v, k->name, l->diags);
     if (err)
         ssg_scene_fail(l, err);
@@ -175,7 +59,7 @@ static void bind_arg(struct scene_loader *l, struct scene_entity *e, int index,
 
 static void bind_named(struct scene_loader *l, struct scene_entity *e, const struct ssg_arg *a)
 {
-    const struct kind_desc *k = &kinds[e->kind];
+    const struct scene_kind_desc *k = &ssg_scene_kinds[e->kind];
     int index = ssg_param_find(k->table, a->key, a->key_len);
     if (index >= 0) {
         bind_arg(l, e, index, &a->value);
@@ -201,12 +85,12 @@ static void bind_call(struct scene_loader *l, struct scene_entity *e)
             ssg_diag_at(l->diags, SSG_E_SYNTAX, a->value.loc, "positional argument after a "
                         "named one (expected name=value)");
             ssg_scene_fail(l, SSG_E_SYNTAX);
-        } else if (next < kinds[e->kind].table.count) {
+        } else if (next < ssg_scene_kinds[e->kind].table.count) {
             bind_arg(l, e, next++, &a->value);
         } else {
             ssg_diag_at(l->diags, SSG_E_VALUE, a->value.loc, "too many positional arguments "
                         "for '%s' (it has %d arguments)", entity_name(e),
-                        kinds[e->kind].table.count);
+                        ssg_scene_kinds[e->kind].table.count);
             ssg_scene_fail(l, SSG_E_VALUE);
         }
     }
@@ -225,7 +109,7 @@ static int find_entity(const struct scene_loader *l, const char *name, size_t le
 static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
 {
     int kind = 0;
-    while (kind < SK_COUNT && !ssg_tok_eq(st->callee, st->callee_len, kinds[kind].name))
+    while (kind < SK_COUNT && !ssg_tok_eq(st->callee, st->callee_len, ssg_scene_kinds[kind].name))
         kind++;
     if (kind == SK_COUNT) {
         char names[256];
@@ -242,7 +126,7 @@ static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
         return;
     }
     struct scene_entity *e = &l->ents[l->count];
-    e->args = ssg_arena_alloc(&l->arena, kinds[kind].size);
+    e->args = ssg_arena_alloc(&l->arena, ssg_scene_kinds[kind].size);
     if (!e->args) {
         ssg_scene_fail(l, SSG_E_NOMEM);
         return;
@@ -251,7 +135,7 @@ static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
     e->kind = (enum scene_kind)kind;
     e->stmt = st;
     e->material = -1;
-    ssg_params_defaults(kinds[kind].table, e->args);
+    ssg_params_defaults(ssg_scene_kinds[kind].table, e->args);
     bind_call(l, e);
 }
 
@@ -291,7 +175,7 @@ static void read_statements(struct scene_loader *l, const struct ssg_file *file)
 
 static int param_index(const struct scene_entity *e, const char *name)
 {
-    return ssg_param_find(kinds[e->kind].table, name, strlen(name));
+    return ssg_param_find(ssg_scene_kinds[e->kind].table, name, strlen(name));
 }
 
 /* Where to point at for a problem with argument `name`: its value, else the call. */
@@ -311,7 +195,7 @@ static void problem(struct scene_loader *l, const struct scene_entity *e, const 
 
 static void check_required(struct scene_loader *l, const struct scene_entity *e)
 {
-    const struct ssg_param_table t = kinds[e->kind].table;
+    const struct ssg_param_table t = ssg_scene_kinds[e->kind].table;
     for (int i = 0; i < t.count; i++)
         if (t.params[i].required && !e->at[i].src) {
             ssg_diag_at(l->diags, SSG_E_MISSING_INPUT, e->stmt->callee_loc,
@@ -434,7 +318,7 @@ static void check_unique(struct scene_loader *l, enum scene_kind kind)
             ssg_loc_linecol(l->ents[seen].stmt->callee_loc, &line, &col);
             ssg_diag_at(l->diags, SSG_E_DUPLICATE, l->ents[i].stmt->callee_loc, "a second "
                         "'%s' (the first is on line %d; a scene has at most one)",
-                        kinds[kind].name, line);
+                        ssg_scene_kinds[kind].name, line);
             ssg_scene_fail(l, SSG_E_DUPLICATE);
         }
         seen = i;
@@ -508,7 +392,7 @@ static enum ssg_err read_scene(struct scene_loader *l, const char *path, const c
 static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
 {
     struct camera_args c;
-    ssg_params_defaults(kinds[SK_CAMERA].table, &c);
+    ssg_params_defaults(ssg_scene_kinds[SK_CAMERA].table, &c);
     s->environment.intensity = 1.0f; /* color 0: no environment light unless one is given */
     s->environment.image = -1;
     for (int i = 0; i < l->count; i++) {

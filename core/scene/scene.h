@@ -113,9 +113,10 @@ void ssg_scene_destroy(struct ssg_scene **scene);
 
 /* The axis-aligned box of every mesh vertex; lo > hi (+inf, -inf) when there is none. */
 void ssg_scene_bounds(const struct ssg_scene *scene, float lo[3], float hi[3]);
-/* When the scene's bounding-box diagonal is under 1/20 or over 20 times `radius` (an AO
- * radius in scene units), the power-of-ten scale that brings it nearest to 8 radii (a
- * model in millimetres gets 0.001 or 0.01); 0 when it fits or the scene is empty. */
+/* When the bounding-box diagonal of the scene's models (its mesh lines; shapes do not
+ * count) is under 1/20 or over 200 times `radius` (an AO radius in scene units), the
+ * power-of-ten scale that brings it nearest to 8 radii (a model in millimetres gets 0.001
+ * or 0.01); 0 when it fits or there is no model. */
 float ssg_scene_scale_hint(const struct ssg_scene *scene, float radius, float *diagonal);
 
 /* The camera's view matrix (world -> view, column-major 4x4) for the frame conventions of

@@ -25,7 +25,7 @@ enum scene_kind {
     SK_COUNT
 };
 
-/* The arguments of each kind, as its parameter table (scene.c) fills them. */
+/* The arguments of each kind, as its parameter table (scene_tables.c) fills them. */
 struct camera_args {
     float position[3], target[3], up[3]; /* world, scene units */
     float fov;                           /* vertical, degrees */
@@ -60,6 +60,16 @@ struct mesh_args {
 };
 
 #define SCENE_MAX_ARGS 8
+
+/* An entity kind: its name in scene files, its parameter table, the size of its *_args
+   struct, and what it is (docs/scenes.md). */
+struct scene_kind_desc {
+    const char *name;
+    struct ssg_param_table table;
+    size_t size;
+    const char *doc;
+};
+extern const struct scene_kind_desc ssg_scene_kinds[SK_COUNT];
 
 /* One statement of the scene file. */
 struct scene_entity {

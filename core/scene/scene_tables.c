@@ -1,0 +1,156 @@
+/* scene_tables.c - the scene file's entity kinds as parameter tables (parsing,
+ * validation, defaults and docs/scenes.md all read them), and the Markdown reference
+ * generated from them (`ssgraph docs scenes`). */
+#include <stdio.h>
+
+#include "scene/scene_build.h"
+
+#define BIG 1e9
+
+/* ---- parameter tables ---- */
+
+#define VEC3(nm, st, fld, x, y, z, lo, hi, u, h)                                         \
+    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .def3 = {x, y, z},                      \
+     .min = lo, .max = hi, .unit = u, .help = h}
+#define REQ_VEC3(nm, st, fld, u, h)                                                      \
+    {.name = nm, SSG_FIELD_VEC3(struct st, fld), .unit = u,                              \
+     .help = h, .required = 1}
+#define FLOAT(nm, st, fld, d, lo, hi, u, h)                                              \
+    {.name = nm, SSG_FIELD_FLOAT(struct st, fld), .def = d,                              \
+     .min = lo, .max = hi, .unit = u, .help = h}
+#define TEXT(nm, ty, st, fld, req, h)                                                    \
+    {.name = nm, SSG_FIELD_##ty(struct st, fld), .help = h, .required = req}
+#define MATERIAL(st) TEXT("material", NAME, st, material, 0,                             \
+                          "name of a material defined in this file; default: white 0.8")
+
+static const struct ssg_param_desc camera_params[] = {
+    VEC3("position", camera_args, position, 0, 0, 5, 0, 0, "scene units", "eye position"),
+    VEC3("target", camera_args, target, 0, 0, 0, 0, 0, "scene units", "point looked at"),
+    VEC3("up", camera_args, up, 0, 1, 0, 0, 0, NULL, "up direction hint"),
+    FLOAT("fov", camera_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
+          "vertical field of view"),
+    FLOAT("near", camera_args, near_z, SSG_DEFAULT_NEAR, 1e-6, BIG, "scene units",
+          "near plane distance"),
+    FLOAT("far", camera_args, far_z, SSG_DEFAULT_FAR, 1e-6, BIG, "scene units",
+          "far plane distance"),
+};
+static const struct ssg_param_desc material_params[] = {
+    VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,
+         "diffuse reflectance, linear RGB (multiplies the texture)"),
+    VEC3("specular", material_args, specular, 0, 0, 0, 0, 1, NULL,
+         "Blinn-Phong specular colour, linear RGB"),
+    FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
+    TEXT(
+        "texture", STRING, material_args, texture, 0,
+        "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
+};
+static const struct ssg_param_desc point_light_params[] = {
+    REQ_VEC3("position", light_args, position, "scene units", "light position"),
+    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
+    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/sr",
+          "radiant intensity; irradiance falls off as 1/d^2"),
+};
+static const struct ssg_param_desc directional_light_params[] = {
+    REQ_VEC3("direction", light_args, direction, NULL, "direction the light travels"),
+    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
+    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/m^2",
+          "irradiance on a surface facing the light"),
+};
+static const struct ssg_param_desc environment_params[] = {
+    VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL,
+         "constant radiance, linear RGB"),
+    FLOAT("intensity", environment_args, intensity, 1, 0, BIG, NULL,
+          "multiplies color and image"),
+    TEXT("image", STRING, environment_args, image, 0,
+         "lat-long HDR image (multiplied by color), relative to the scene"),
+};
+static const struct ssg_param_desc plane_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the rectangle"),
+    VEC3("size", shape_args, size, 1, 1, 1, 0, BIG, "scene units",
+         "[width, unused, depth]: extents along the plane's x and z axes (its y is the "
+         "normal)"),
+    VEC3("normal", shape_args, normal, 0, 1, 0, 0, 0, NULL,
+         "facing direction; the plane's frame is the shortest rotation of +y onto it"),
+};
+static const struct ssg_param_desc box_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the box"),
+    VEC3("size", shape_args, size, 1, 1, 1, 1e-6, BIG, "scene units", "extents along x, y, z"),
+    VEC3("rotate", shape_args, rotate, 0, 0, 0, 0, 0, "degrees",
+         "rotation about the centre: about x, then y, then z (world axes)"),
+};
+static const struct ssg_param_desc sphere_params[] = {
+    MATERIAL(shape_args),
+    VEC3("center", shape_args, center, 0, 0, 0, 0, 0, "scene units", "centre of the sphere"),
+    FLOAT("radius", shape_args, radius, 1, 1e-6, BIG, "scene units", "radius"),
+    {.name = "subdivisions", SSG_FIELD_INT(struct shape_args, subdivisions), .def = 32,
+     .min = 3, .max = 1024, .help = "latitude bands (twice as many longitude segments)"},
+};
+static const struct ssg_param_desc mesh_params[] = {
+    TEXT("file", STRING, mesh_args, file, 1, "model file, relative to the scene: glTF 2.0 "
+         "(.gltf, .glb), or through Assimp OBJ, PLY, FBX, 3DS, STL, DAE, glTF 1.0 and more"),
+    TEXT("material", NAME, mesh_args, material, 0,
+         "material overriding the file's own; default: the file's materials (diffuse "
+         "colour and texture)"),
+    VEC3("translate", mesh_args, translate, 0, 0, 0, 0, 0, "scene units", "moves the mesh"),
+    VEC3("rotate", mesh_args, rotate, 0, 0, 0, 0, 0, "degrees",
+         "about x, then y, then z (world axes), before translate"),
+    VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first "
+         "(0.001 for a model in millimetres; `ssgraph check` suggests one)"),
+};
+
+#define KIND(nm, params, args, text) {nm, SSG_TABLE(params), sizeof(struct args), text}
+
+const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
+    [SK_CAMERA] = KIND("camera", camera_params, camera_args,
+                       "The view: a pinhole camera looking from `position` at `target`. At most "
+                       "one; without it a glTF mesh's own camera is used, else the defaults."),
+    [SK_MATERIAL] = KIND("material", material_params, material_args,
+                         "A named surface (`clay = material(...)`): Lambert albedo, optionally "
+                         "textured, plus a Blinn-Phong highlight in the direct light. Shapes "
+                         "and meshes name it with `material=clay`, from anywhere in the file."),
+    [SK_POINT_LIGHT] = KIND("point_light", point_light_params, light_args,
+                            "An isotropic point light. Any number of lights of either kind."),
+    [SK_DIRECTIONAL_LIGHT] = KIND("directional_light", directional_light_params, light_args,
+                                  "A light at infinity (the sun): parallel rays, no falloff."),
+    [SK_ENVIRONMENT] = KIND("environment", environment_params, environment_args,
+                            "Light from every direction: a constant sky colour, or a 2:1 "
+                            "lat-long HDR probe (centre looking down -z, top row straight "
+                            "up); a probe holding NaN or infinity is refused with its pixel. "
+                            "At most one."),
+    [SK_PLANE] = KIND("plane", plane_params, shape_args,
+                      "A one-sided rectangle (two triangles), facing `normal`."),
+    [SK_BOX] = KIND("box", box_params, shape_args, "A box of 12 triangles."),
+    [SK_SPHERE] = KIND("sphere", sphere_params, shape_args,
+                       "A UV sphere of `subdivisions` latitude bands."),
+    [SK_MESH] = KIND("mesh", mesh_params, mesh_args,
+                     "Triangles from a model file (`mesh(\"bunny.gltf\")`: the file is the "
+                     "first positional argument). glTF 2.0 keeps its node transforms, "
+                     "baseColorFactor and baseColorTexture; other formats go through Assimp "
+                     "(their diffuse colour and texture become the albedo). Transforms apply "
+                     "scale, then rotate, then translate."),
+};
+
+void ssg_scenes_markdown(FILE *stream)
+{
+    fprintf(stream, "# Scene reference\n\nGenerated by `ssgraph docs scenes` from the "
+                    "parameter tables in `core/scene/scene_tables.c`; do not edit by hand. "
+                    "[graphs.md](graphs.md) describes the syntax (one entity a line, "
+                    "`name = kind(...)`, `set name.arg = value`, comments with `#`); "
+                    "relative paths resolve against the scene file; `ssgraph check "
+                    "FILE.scene` validates a scene and loads its meshes.\n\n"
+                    "Entities: ");
+    for (int k = 0; k < SK_COUNT; k++)
+        fprintf(stream, "%s[`%s`](#%s)", k ? ", " : "", ssg_scene_kinds[k].name,
+                ssg_scene_kinds[k].name);
+    fprintf(stream, ".\n\n");
+    for (int k = 0; k < SK_COUNT; k++) {
+        const struct scene_kind_desc *d = &ssg_scene_kinds[k];
+        fprintf(stream, "## %s\n\n%s\n\n| name | type | default | accepts | description "
+                        "|\n|---|---|---|---|---|\n", d->name, d->doc);
+        for (int p = 0; p < d->table.count; p++)
+            ssg_param_markdown(&d->table.params[p], stream);
+        fprintf(stream, "\n");
+    }
+}
