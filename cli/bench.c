@@ -259,12 +259,19 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
     for (int k = 0; k < b->n && used < sizeof what; k++)
         used += (size_t)snprintf(what + used, sizeof what - used, "%s%s=%s", k ? " " : "",
                                  b->sweeps[k].key, ssg_bench_value(b, c, k));
-    char result[600];
+    char result[2000];
     if (c->ok)
         snprintf(result, sizeof result, "%.2f ms%s%s", ssg_bench_shown_ms(b, c),
                  b->req->time_node ? " " : "", b->req->time_node ? b->req->time_node : "");
     else
         snprintf(result, sizeof result, "FAILED: %s", c->error);
+    for (int i = 0; b->req->verbose && c->ok && i < c->stats.node_count; i++) {
+        size_t len = strlen(result);
+        snprintf(result + len, sizeof result - len, "%s%s %.2f", i ? ", " : " (",
+                 c->stats.nodes[i].name, c->stats.nodes[i].avg_ms);
+        if (i + 1 == c->stats.node_count && strlen(result) + 2 < sizeof result)
+            strcat(result, ")");
+    }
     if (!tty) {
         fprintf(f, "bench: cell %d/%d %s: %s\n", ci + 1, b->cell_count, what, result);
         return;
@@ -327,7 +334,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         run_cell(&b, ci, &b.cells[ci]);
         b.done = ci + 1;
         failed += !b.cells[ci].ok;
-        progress(&b, ci, stderr, tty);
+        if (!req->quiet)
+            progress(&b, ci, stderr, tty);
         e = ssg_bench_save(&b, &d);
         if (!e && b.cells[ci].ok && !knows_time_node(&b, &b.cells[ci])) {
             fprintf(stderr, "ssgraph: error: --time '%s' is not a node of %s\n",
@@ -337,10 +345,13 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         }
     }
     ssg_diags_print(&d, stderr);
-    if (!e && failed >= 0)
-        fprintf(stderr,
-                "bench: %d cells, %d failed; wrote %s/bench.csv, bench.md, bench.json\n",
-                b.cell_count, failed, req->out_dir);
+    if (!e && failed >= 0 && !req->quiet) {
+        printf("bench: %d cells, %d failed\n", b.cell_count, failed);
+        for (int i = 0; i < 3; i++)
+            printf("wrote %s/%s\n", req->out_dir, (const char *[]){"bench.csv", "bench.json",
+                                                                    "bench.md"}[i]);
+        fflush(stdout);
+    }
     if (!e && failed >= 0 && req->plot && ssg_bench_draw_plots(&b))
         e = SSG_E_IO;
     free_cells(&b);

@@ -24,6 +24,8 @@ struct ssg_bench_request {
                                          compared (with --reference); NULL = all */
     int stereo;                       /* 1 = each cell renders both eyes; times add up */
     float ipd;                        /* eye distance, scene units */
+    int quiet;                        /* 1 = no progress, no summary, no wrote lines */
+    int verbose;                      /* 1 = each cell's line also gives every node's ms */
 };
 
 /* Runs every cell; returns the process exit code (0: all cells ran, 1: some failed or

@@ -274,17 +274,23 @@ int ssg_bench_draw_plots(const struct bench *b)
                  b->n ? b->sweeps[0].key : "cell");
         snprintf(ylabel, sizeof ylabel, "ms (%s)", b->req->time_node ? b->req->time_node
                                                                      : "frame");
-        rc |= ssg_plot_ms(b->req->out_dir, "bench_ms", title, b->n ? b->sweeps[0].key : "cell",
-                          ylabel, pts, n);
+        int ms_rc = ssg_plot_ms(b->req->out_dir, "bench_ms", title,
+                                b->n ? b->sweeps[0].key : "cell", ylabel, pts, n);
+        rc |= ms_rc;
+        if (!ms_rc && !b->req->quiet)
+            printf("wrote %s/bench_ms.png\n", b->req->out_dir);
         int errors = 0;
         for (int i = 0; i < n; i++)
             errors += !isnan(pts[i].err);
         snprintf(title, sizeof title, "%s: error against ms (Pareto view)", b->req->graph);
-        if (errors)
-            rc |= ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
-                                  b->req->error_metric ? b->req->error_metric
-                                                       : "first metric", pts, n);
-        else
+        int pareto_rc = errors ? ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
+                                                 b->req->error_metric ? b->req->error_metric
+                                                                      : "first metric", pts, n)
+                               : 0;
+        rc |= pareto_rc;
+        if (errors && !pareto_rc && !b->req->quiet)
+            printf("wrote %s/bench_pareto.png\n", b->req->out_dir);
+        else if (!errors && !b->req->quiet)
             fprintf(stderr, "bench: no %s in the cells: no Pareto plot (add a compare node)\n",
                     b->req->error_metric ? b->req->error_metric : "metric");
     }

@@ -344,7 +344,7 @@ static int cmd_bench(struct ssg_cli_args *a)
         .sweep_count = a->sweep_count, .frames = a->frames, .threads = a->threads,
         .out_dir = a->out_dir, .time_node = a->time_node, .error_metric = a->error_metric,
         .plot = a->plot, .reference = a->reference, .image = a->image, .stereo = a->stereo,
-        .ipd = a->ipd, .mask = a->mask,
+        .ipd = a->ipd, .mask = a->mask, .quiet = a->quiet, .verbose = a->verbose,
     };
     return ssg_bench_main(&req);
 }
@@ -355,7 +355,7 @@ static int cmd_tune(const struct ssg_cli_args *a)
         .graph = a->files[0], .ov = &a->ov, .scenes = a->scenes,
         .scene_count = a->scene_count, .params = a->params, .param_count = a->param_count,
         .reference = a->reference, .image = a->image, .mask = a->mask, .evals = a->evals,
-        .threads = a->threads, .out_dir = a->out_dir,
+        .threads = a->threads, .out_dir = a->out_dir, .quiet = a->quiet, .verbose = a->verbose,
     };
     return ssg_tune_main(&req);
 }

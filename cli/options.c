@@ -215,14 +215,17 @@ static const struct option options[] = {
     {.name = "--ipd", .arg = "D", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_float,
      .field = OF(ipd), .lo = 0, .hi = 1e6, .expects = "a positive distance in scene units",
      .help = "(with --stereo) distance between the eyes, scene units (0.064)"},
-    {.name = "--quiet", .short_name = 'q', .commands = SSG_CLI_RUN | SSG_CLI_NODE,
+    {.name = "--quiet", .short_name = 'q',
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_flag, .field = OF(quiet),
-     .help = "print no table, no progress and no `wrote PATH` lines (errors\n"
-             "still go to stderr)"},
-    {.name = "--verbose", .short_name = 'v', .commands = SSG_CLI_RUN | SSG_CLI_NODE,
+     .help = "print no table, no progress, no summary and no `wrote PATH` lines\n"
+             "(errors still go to stderr)"},
+    {.name = "--verbose", .short_name = 'v',
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_flag, .field = OF(verbose),
      .help = "also print what the run resolved: size, seed, scene, backend and\n"
-             "every node's parameters (run); each output's size (node)"},
+             "every node's parameters (run); each output's size (node); every\n"
+             "node's ms per cell (bench); each scene's reference time (tune)"},
     {.name = "--output", .short_name = 'o', .arg = "FILE",
      .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_DOT, .take = take_text,
      .field = OF(output),

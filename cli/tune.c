@@ -235,7 +235,7 @@ static int compute_references(struct tune *t)
                  t->scenes[s] ? t->scenes[s] : "(the graph's)");
         int ok = run_outputs(t, &ov, im, &st, &d) == SSG_OK || refused(what, &d);
         ok = ok && reference_independent(t, &st);
-        if (ok)
+        if (ok && q->verbose)
             fprintf(stderr, "tune: reference %s of %s: %.0f ms\n", q->reference, name,
                     st.total_ms);
         t->ref[s] = im[0];
@@ -310,7 +310,8 @@ static double objective(void *user, const double *x)
     t->count++;
     if (!e && (t->best < 0 || ev->mean < t->evals[t->best].mean))
         t->best = t->count - 1;
-    ssg_tune_print_eval(t, t->count - 1, stdout);
+    if (!t->req->quiet)
+        ssg_tune_print_eval(t, t->count - 1, stdout);
     fflush(stdout);
     ssg_diags_print(&d, stderr);
     struct ssg_diags saved = {0};
@@ -382,15 +383,16 @@ int ssg_tune_main(const struct ssg_tune_request *req)
     int ok = t.evals && search(&t);
     if (!t.evals)
         fprintf(stderr, "ssgraph: error: out of memory for %d evaluations\n", t.budget);
-    if (t.best >= 0)
+    if (t.best >= 0 && !req->quiet)
         ssg_tune_print_best(&t, stdout);
     if (!ok && t.count && t.evals[t.count - 1].error[0])
         fprintf(stderr, "ssgraph: error: tune stopped at evaluation %d of %d (%s); the files "
                 "keep the evaluations before it\n", t.count, t.budget,
                 t.evals[t.count - 1].error);
-    if (t.count)
-        fprintf(stderr, "tune: %d evaluations; wrote %s/tune.csv, tune.json%s\n", t.count,
-                req->out_dir, t.best >= 0 ? ", tuned.graph" : "");
+    for (int i = 0; t.count && !req->quiet && i < 3; i++)
+        if (i < 2 || t.best >= 0)
+            printf("wrote %s/%s\n", req->out_dir,
+                   (const char *[]){"tune.csv", "tune.json", "tuned.graph"}[i]);
     free_tune(&t);
     return ok ? 0 : EXIT_INVALID;
 }

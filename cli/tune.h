@@ -24,6 +24,9 @@ struct ssg_tune_request {
     int evals;                        /* most evaluations; 0 = 40 */
     int threads;                      /* 0 = all cores */
     const char *out_dir;              /* tune.csv, tune.json, tuned.graph */
+    int quiet;                        /* 1 = errors only: no evaluation lines, no best, no
+                                         wrote lines (the files hold them) */
+    int verbose;                      /* 1 = also each scene's reference time */
 };
 
 /* Runs the tune; returns the process exit code: 0 done, 1 bad input (a parameter, range,

@@ -103,4 +103,24 @@ grep -qE '^gl: (OSMesa|EGL|unavailable)' "$TMP/version.txt" || fail "--version l
 grep -qE '^embree: [0-9]+\.[0-9]+' "$TMP/version.txt" || fail "--version lacks Embree"
 grep -qE '^openimageio: [0-9]+\.[0-9]+' "$TMP/version.txt" || fail "--version lacks OIIO"
 
+# --- bench and tune: a wrote line per file, -q silences everything but errors ---
+"$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4,8 --out "$TMP/b" \
+    > "$TMP/bench.out" 2> "$TMP/bench.err" || fail "bench failed: $(cat "$TMP/bench.err")"
+for f in bench.csv bench.json bench.md; do
+    grep -qx "wrote $TMP/b/$f" "$TMP/bench.out" && [ -s "$TMP/b/$f" ] || fail "bench: no wrote line for $f"
+done
+grep -q "^bench: cell 2/2 k.count=8: " "$TMP/bench.err" || fail "bench shows no cell progress"
+"$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4 -v --out "$TMP/bv" \
+    2>&1 | grep -q "^bench: cell 1/1 k.count=4: .* ms (g [0-9.]*, k " || fail "bench -v lacks node times"
+out=$("$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4 -q --out "$TMP/bq" 2>&1)
+[ -z "$out" ] && [ -s "$TMP/bq/bench.csv" ] || fail "bench -q printed '$out' or wrote nothing"
+"$BIN" tune graphs/ao_error.graph --reference g.depth --image g.depth --size 24x16 \
+    --param ao.radius=0.2:0.8 --evals 2 --out "$TMP/t" > "$TMP/tune.out" 2>&1 || fail "tune failed"
+for f in tune.csv tune.json tuned.graph; do
+    grep -qx "wrote $TMP/t/$f" "$TMP/tune.out" || fail "tune: no wrote line for $f"
+done
+out=$("$BIN" tune graphs/ao_error.graph --reference g.depth --image g.depth --size 24x16 \
+      --param ao.radius=0.2:0.8 --evals 2 -q --out "$TMP/tq" 2>&1)
+[ -z "$out" ] && [ -s "$TMP/tq/tune.csv" ] || fail "tune -q printed '$out' or wrote nothing"
+
 finish test_cli_conventions
