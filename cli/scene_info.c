@@ -46,6 +46,12 @@ static void print_lights(FILE *out, const struct ssg_scene *s)
     }
 }
 
+/* What a model needing `scale` was probably written in. */
+static const char *unit_guess(float scale)
+{
+    return scale <= 0.002f ? "millimetres" : scale < 1.0f ? "centimetres" : "kilometres";
+}
+
 /* Far smaller or larger than the AO radius: a model in millimetres renders as if every
    surface were open (or the whole scene as one crease). */
 static void print_scale_hint(FILE *out, const struct ssg_scene *s)
@@ -55,14 +61,12 @@ static void print_scale_hint(FILE *out, const struct ssg_scene *s)
     if (scale == 0.0f)
         return;
     fprintf(out, "  note: the models' bounding-box diagonal is %g scene units, %g times the "
-            "AO radius %g of graphs/ssdo.graph: %s? Try scale=%g on the mesh line (mesh(\"file\", "
-            "scale=%g)), or a radius to match", (double)diagonal,
-            (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS), (double)SSG_CLI_DEFAULT_AO_RADIUS,
-            scale < 1.0f ? "a model in millimetres or centimetres" : "a model in kilometres",
-            (double)scale, (double)scale);
+            "AO radius %g of graphs/ssdo.graph: a model in %s? Add scale=%g to its mesh line",
+            (double)diagonal, (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS),
+            (double)SSG_CLI_DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
     for (int i = 0; i < s->model_count; i++)
-        fprintf(out, "%s%s:%d", i ? ", " : " (mesh lines: ", s->path, s->models[i].line);
-    fprintf(out, "%s\n", s->model_count ? ")" : "");
+        fprintf(out, "%s%s:%d", i ? ", " : " (", s->path, s->models[i].line);
+    fprintf(out, "), or set the AO radius to match\n");
 }
 
 enum ssg_err ssg_cli_check_scene(const char *path, FILE *out, struct ssg_diags *diags)

@@ -8,32 +8,16 @@
  * SSG_E_IO with the file named; the scale hint fires for a model in millimetres only. */
 #include <errno.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "scene/model.h"
 #include "scene/scene.h"
 
-static char tmp_dir[512];
-
-static void make_tmp_dir(void)
-{
-    const char *env = getenv("SSG_TMP");
-    if (env && env[0])
-        snprintf(tmp_dir, sizeof tmp_dir, "%s", env);
-    else
-        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_models_load_%d", (int)getpid());
-    mkdir(tmp_dir, 0755);
-}
-
-/* Writes text to tmp_dir/name and returns the path (static buffer per call slot). */
+/* Writes text to the scratch folder's `name` and returns its path (tmp_path's buffer). */
 static const char *write_file(const char *name, const char *text)
 {
-    static char paths[4][1024];
-    static int slot;
-    char *path = paths[slot++ % 4];
-    snprintf(path, 1024, "%s/%s", tmp_dir, name);
+    const char *path = tmp_path(name);
     FILE *f = fopen(path, "w");
     if (!f) {
         fprintf(stderr, "cannot write %s: %s\n", path, strerror(errno));
@@ -202,9 +186,7 @@ static void test_failures(void)
     expect_fail(write_file("empty.obj", "# nothing\n"), SSG_E_GLTF, "OBJ");
     expect_fail(write_file("nomtl.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
                 SSG_E_GLTF, "gone.mtl");
-    char missing[1100];
-    snprintf(missing, sizeof missing, "%s/missing.stl", tmp_dir);
-    expect_fail(missing, SSG_E_IO, "missing.stl");
+    expect_fail(tmp_path("missing.stl"), SSG_E_IO, "missing.stl");
     expect_fail(write_file("draco.gltf", "{\"asset\":{\"version\":\"2.0\"},\"extensionsRequired\":"
                                          "[\"KHR_draco_mesh_compression\"],\"meshes\":[]}"),
                 SSG_E_GLTF, "Draco");
@@ -269,7 +251,7 @@ static void test_scale_hint(void)
 
 int main(void)
 {
-    make_tmp_dir();
+    setup_tmp("test_models_load");
     test_formats();
     test_failures();
     test_scene();
