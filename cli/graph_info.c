@@ -127,6 +127,33 @@ static const struct ssg_node_desc *set_target(const struct ssg_graph *g,
     return g->nodes[index].desc;
 }
 
+/* A --sweep of a string parameter with bare values: "w.name=a,b" -> "w.name=\"a\",\"b\""
+   (bench splits at the commas and sets each value as written). */
+static int quote_sweep(struct ssg_cli_args *a, const struct ssg_graph *g, int k)
+{
+    const char *key = a->sweeps[k], *eq = strchr(key, '=');
+    const struct ssg_node_desc *desc = eq ? set_target(g, NULL, &key) : NULL;
+    if (!desc || key > eq || !is_string_param(desc, key, (size_t)(eq - key)) ||
+        strpbrk(eq + 1, "\"\n"))
+        return 0;
+    char quoted[1200];
+    size_t used = (size_t)snprintf(quoted, sizeof quoted, "%.*s", (int)(eq + 1 - a->sweeps[k]),
+                                   a->sweeps[k]);
+    for (const char *v = eq + 1; used < sizeof quoted;) {
+        size_t n = strcspn(v, ",");
+        used += (size_t)snprintf(quoted + used, sizeof quoted - used, "%s\"%.*s\"",
+                                 v == eq + 1 ? "" : ",", (int)n, v);
+        if (!v[n])
+            break;
+        v += n + 1;
+    }
+    const char *kept = used < sizeof quoted ? ssg_cli_keep(a, quoted) : NULL;
+    if (!kept)
+        return ssg_cli_usage_error("--sweep '%s' is too long to quote", a->sweeps[k]);
+    a->sweeps[k] = kept;
+    return 0;
+}
+
 int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command)
 {
     struct ssg_diags quiet = {0};
@@ -135,7 +162,7 @@ int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command)
     const struct ssg_node_desc *node = NULL;
     if (command == SSG_CLI_NODE)
         node = ssg_node_find(a->files[0], strlen(a->files[0]));
-    else if (a->ov.set_count)
+    else if (a->ov.set_count || a->sweep_count)
         g = build(a->files[0], &quiet, &e);
     int rc = 0;
     for (int i = 0; i < a->ov.set_count && (g || node) && !rc; i++) {
@@ -153,6 +180,8 @@ int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command)
         else
             a->sets[i] = kept;
     }
+    for (int k = 0; k < a->sweep_count && g && !rc; k++)
+        rc = quote_sweep(a, g, k);
     ssg_graph_destroy(&g);
     return rc;
 }

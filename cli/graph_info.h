@@ -23,8 +23,9 @@ int ssg_cli_first_write(const char *path, char *name, size_t len);
 /* Quotes every --set value written bare ("out.name=x") whose parameter is a string, so
  * that it reaches the graph as "out.name=\"x\"": for the graph commands the node is found
  * by instance name in a->files[0], for `node` the parameter in the node a->files[0]. A
- * value already quoted, or for another type, stays as written. 0, or a usage error's exit
- * code when the rewritten values do not fit. */
+ * value already quoted, or for another type, stays as written. Each bare value of a
+ * --sweep of a string parameter is quoted the same way. 0, or a usage error's exit code
+ * when the rewritten values do not fit. */
 int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command);
 
 /* -v: the frame, seed, scene and backend a loaded graph resolved, and each node's

@@ -426,7 +426,7 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
         ssg_cli_command_usage(command, stdout);
         return 0;
     }
-    if (!rc && (command & TAKES_SETS) && a.ov.set_count)
+    if (!rc && (command & TAKES_SETS) && (a.ov.set_count || a.sweep_count))
         rc = ssg_cli_quote_sets(&a, command);
     if (rc)
         return rc;

@@ -112,6 +112,10 @@ done
 grep -q "^bench: cell 2/2 k.count=8: " "$TMP/bench.err" || fail "bench shows no cell progress"
 "$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4 -v --out "$TMP/bv" \
     2>&1 | grep -q "^bench: cell 1/1 k.count=4: .* ms (g [0-9.]*, k " || fail "bench -v lacks node times"
+"$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep out.name=first,second -q \
+    --out "$TMP/bs" || fail "bench: a bare string --sweep is refused"
+[ -s "$TMP/bs/cells/0/first.exr" ] && [ -s "$TMP/bs/cells/1/second.exr" ] \
+    || fail "bench: the bare string sweep did not name the cells' files"
 out=$("$BIN" bench graphs/ssao.graph --size 32x24 --frames 1 --sweep k.count=4 -q --out "$TMP/bq" 2>&1)
 [ -z "$out" ] && [ -s "$TMP/bq/bench.csv" ] || fail "bench -q printed '$out' or wrote nothing"
 "$BIN" tune graphs/ao_error.graph --reference g.depth --image g.depth --size 24x16 \
