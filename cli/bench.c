@@ -61,7 +61,7 @@ static int count_cells(const struct bench *b)
 }
 
 /* The cells of the cross product, first sweep outermost. */
-static int make_cells(struct bench *b)
+int ssg_bench_make_cells(struct bench *b)
 {
     b->cells = calloc((size_t)b->cell_count, sizeof *b->cells);
     if (!b->cells) {
@@ -79,9 +79,9 @@ static int make_cells(struct bench *b)
 }
 
 /* The cells and the statistics each holds. */
-static void free_cells(struct bench *b)
+void ssg_bench_free_cells(struct bench *b)
 {
-    for (int c = 0; c < b->cell_count; c++)
+    for (int c = 0; b->cells && c < b->cell_count; c++)
         ssg_run_stats_free(&b->cells[c].stats);
     free(b->cells);
     b->cells = NULL;
@@ -251,6 +251,13 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
                  d.count ? d.items[0].message : ssg_err_text(e));
 }
 
+/* The cells of this shard: those below cell_count whose index % N is I. */
+static int shard_cells(const struct bench *b)
+{
+    int left = b->cell_count - b->shard_index;
+    return left > 0 ? (left + b->shard_count - 1) / b->shard_count : 0;
+}
+
 static void progress(const struct bench *b, int ci, FILE *f, int tty)
 {
     const struct cell *c = &b->cells[ci];
@@ -276,10 +283,10 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
         fprintf(f, "bench: cell %d/%d %s: %s\n", ci + 1, b->cell_count, what, result);
         return;
     }
-    int width = 30, filled = width * (ci + 1) / b->cell_count;
+    int width = 30, mine = shard_cells(b), filled = width * b->done / (mine ? mine : 1);
     fprintf(f, "\r[%.*s%*s] %d/%d %s: %s\033[K", filled, "##############################",
             width - filled, "", ci + 1, b->cell_count, what, result);
-    if (ci + 1 == b->cell_count || !c->ok)
+    if (b->done == mine || !c->ok)
         fputc('\n', f);
     fflush(f);
 }
@@ -313,6 +320,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
             return 2;
     if (!(b.cell_count = count_cells(&b)))
         return 2;
+    if (!ssg_bench_parse_shard(&b, req->shard) || !ssg_bench_define(&b))
+        return 1;
     struct ssg_diags d = {0};
     if (req->reference) {
         if (ssg_make_dirs(req->out_dir, &d) ||
@@ -322,17 +331,18 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         }
         b.graph = b.graph_buf;
     }
-    if (!make_cells(&b))
+    if (!ssg_bench_make_cells(&b))
         return 1;
     if (!check_sweeps(&b)) {
-        free_cells(&b);
+        ssg_bench_free_cells(&b);
         return 2;
     }
     enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
-    for (int ci = 0; ci < b.cell_count && !e; ci++) {
+    for (int ci = b.shard_index; ci < b.cell_count && !e; ci += b.shard_count) {
         run_cell(&b, ci, &b.cells[ci]);
-        b.done = ci + 1;
+        b.cells[ci].ran = 1;
+        b.done++;
         failed += !b.cells[ci].ok;
         if (!req->quiet)
             progress(&b, ci, stderr, tty);
@@ -346,7 +356,11 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     }
     ssg_diags_print(&d, stderr);
     if (!e && failed >= 0 && !req->quiet) {
-        printf("bench: %d cells, %d failed\n", b.cell_count, failed);
+        if (b.shard_count > 1)
+            printf("bench: shard %d/%d: %d of the %d cells, %d failed\n", b.shard_index,
+                   b.shard_count, b.done, b.cell_count, failed);
+        else
+            printf("bench: %d cells, %d failed\n", b.cell_count, failed);
         for (int i = 0; i < 3; i++)
             printf("wrote %s/%s\n", req->out_dir, (const char *[]){"bench.csv", "bench.json",
                                                                     "bench.md"}[i]);
@@ -354,6 +368,6 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     }
     if (!e && failed >= 0 && req->plot && ssg_bench_draw_plots(&b))
         e = SSG_E_IO;
-    free_cells(&b);
+    ssg_bench_free_cells(&b);
     return failed < 0 ? 2 : e || failed ? 1 : 0;
 }

@@ -24,12 +24,23 @@ struct ssg_bench_request {
                                          compared (with --reference); NULL = all */
     int stereo;                       /* 1 = each cell renders both eyes; times add up */
     float ipd;                        /* eye distance, scene units */
+    const char *shard;                /* "I/N": only the cells whose index % N is I; NULL =
+                                         every cell (0/1) */
+    const char *const *merge_dirs;    /* bench --merge: the shard folders to join (then
+                                         graph and sweeps are unused) */
+    int merge_count;
     int quiet;                        /* 1 = no progress, no summary, no wrote lines */
     int verbose;                      /* 1 = each cell's line also gives every node's ms */
 };
 
-/* Runs every cell; returns the process exit code (0: all cells ran, 1: some failed or
- * the files could not be written, 2: a malformed sweep). */
+/* Runs every cell (of its shard); returns the process exit code (0: all cells ran, 1: some
+ * failed, a bad --shard, or the files could not be written, 2: a malformed sweep). */
 int ssg_bench_main(const struct ssg_bench_request *req);
+
+/* bench --merge (bench_merge.c): reads every folder's bench.json, checks that they are
+ * shards of one sweep definition that together hold every cell exactly once, and writes
+ * bench.csv, bench.json, bench.md (and the plots with req->plot) into req->out_dir as an
+ * unsharded run would; 0, or 1 with what is wrong (nothing written). */
+int ssg_bench_merge(const struct ssg_bench_request *req);
 
 #endif

@@ -20,6 +20,7 @@ struct sweep {
 
 struct cell {
     int index[SSG_BENCH_MAX_SWEEPS];  /* value index per sweep */
+    int ran;                          /* 1 = run (or merged): its row is written */
     int ok;
     char error[512];
     struct ssg_run_stats stats;
@@ -32,13 +33,30 @@ struct bench {
     struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
     int n;                            /* sweeps */
     struct cell *cells;
-    int cell_count, done;
+    int cell_count, done;             /* cells of the cross product; cells run so far */
+    int shard_index, shard_count;     /* --shard I/N: the cells with index % N == I; 0/1 */
+    char definition[16384];           /* everything that decides the cells' results, one
+                                         `key: value` a line (bench_shard.c) */
+    char definition_hash[17];         /* FNV-1a 64 of definition, hex: what --merge compares */
 };
+
+/* The sweep's definition and its hash from the request and the parsed sweeps (the graph
+   file's bytes are hashed too, so an edited graph is another sweep); 0 with a message
+   when the graph cannot be read. */
+int ssg_bench_define(struct bench *b);
+/* "I/N" into b->shard_index and b->shard_count; 0 with a message naming what is wrong. */
+int ssg_bench_parse_shard(struct bench *b, const char *text);
 
 static inline const char *ssg_bench_value(const struct bench *b, const struct cell *c, int k)
 {
     return b->sweeps[k].values[c->index[k]];
 }
+
+/* The cells of the cross product (first sweep outermost), b->cell_count of them; 0 with a
+   message when out of memory. ssg_bench_free_cells releases them and their statistics
+   (nothing allocated: nothing done). */
+int ssg_bench_make_cells(struct bench *b);
+void ssg_bench_free_cells(struct bench *b);
 
 /* The ms a table shows for a cell: the --time node's average, else the frame's. */
 double ssg_bench_shown_ms(const struct bench *b, const struct cell *c);

@@ -78,7 +78,9 @@ static void json_cell(const struct bench *b, int ci, FILE *f)
     for (int i = 0; i < c->stats.metric_count; i++) {
         const struct ssg_run_metric *m = &c->stats.metrics[i];
         fprintf(f, "%s\"%s.%s\": ", i ? ", " : "", m->node, m->name);
-        ssg_json_number(f, m->value);
+        /* exact, so that a merge writes the same tables; JSON has no infinity (the PSNR of
+           identical images): "inf", "-inf" and "nan" are strings */
+        fprintf(f, isfinite(m->value) ? "%.17g" : "\"%g\"", m->value);
     }
     fputs("}, \"node_ms\": {", f);
     for (int i = 0; i < c->stats.node_count; i++)
@@ -105,12 +107,25 @@ static void write_json(FILE *f, const void *user)
         }
         fputs("]}", f);
     }
-    fprintf(f, "],\n  \"cells_total\": %d,\n  \"cells\": [\n", b->cell_count);
-    for (int ci = 0; ci < b->done; ci++) {
+    fputs("],\n  \"time_node\": ", f);
+    ssg_json_string(f, b->req->time_node ? b->req->time_node : "");
+    fputs(",\n  \"error_metric\": ", f);
+    ssg_json_string(f, b->req->error_metric ? b->req->error_metric : "");
+    fputs(",\n  \"reference\": ", f);
+    ssg_json_string(f, b->req->reference ? b->req->reference : "");
+    fputs(",\n  \"definition\": ", f);
+    ssg_json_string(f, b->definition);
+    fprintf(f, ",\n  \"definition_hash\": \"%s\",\n  \"shard\": {\"index\": %d, \"count\": %d},"
+            "\n  \"cells_total\": %d,\n  \"cells\": [\n", b->definition_hash, b->shard_index,
+            b->shard_count, b->cell_count);
+    int written = 0;
+    for (int ci = 0; ci < b->cell_count; ci++) {
+        if (!b->cells[ci].ran)
+            continue;
+        fputs(written++ ? ",\n" : "", f);
         json_cell(b, ci, f);
-        fputs(ci + 1 < b->done ? ",\n" : "\n", f);
     }
-    fputs("  ]\n}\n", f);
+    fputs(written ? "\n  ]\n}\n" : "  ]\n}\n", f);
 }
 
 double ssg_bench_shown_ms(const struct bench *b, const struct cell *c)
@@ -178,7 +193,7 @@ static void write_md(FILE *f, const void *user)
             fprintf(f, "\n| %s |", b->n ? b->sweeps[0].values[r] : "");
             for (int col = 0; col < cols; col++) {
                 int ci = (r * cols + col) * tables + t;
-                if (ci < b->done)
+                if (b->cells[ci].ran)
                     md_cell(b, &b->cells[ci], f);
                 else
                     fputs(" |", f);
@@ -192,8 +207,9 @@ static void write_csv(FILE *f, const void *user)
 {
     const struct bench *b = user;
     csv_header(b, f);
-    for (int ci = 0; ci < b->done; ci++)
-        csv_row(b, ci, f);
+    for (int ci = 0; ci < b->cell_count; ci++)
+        if (b->cells[ci].ran)
+            csv_row(b, ci, f);
 }
 
 enum ssg_err ssg_bench_save(const struct bench *b, struct ssg_diags *d)
@@ -234,9 +250,11 @@ static int by_series(const void *a, const void *b)
 static int plot_points(const struct bench *b, struct ssg_plot_point *pts, char (*series)[300])
 {
     int n = 0;
-    for (int ci = 0; ci < b->done; ci++) {
+    for (int ci = 0; ci < b->cell_count; ci++) {
         const struct cell *c = &b->cells[ci];
         char *end;
+        if (!c->ran)
+            continue;
         double x = b->n ? strtod(ssg_bench_value(b, c, 0), &end) : ci;
         if (!c->ok || (b->n && *end))
             continue;
@@ -260,8 +278,8 @@ static int plot_points(const struct bench *b, struct ssg_plot_point *pts, char (
 
 int ssg_bench_draw_plots(const struct bench *b)
 {
-    struct ssg_plot_point *pts = calloc((size_t)b->done + 1, sizeof *pts);
-    char(*series)[300] = calloc((size_t)b->done + 1, sizeof *series);
+    struct ssg_plot_point *pts = calloc((size_t)b->cell_count + 1, sizeof *pts);
+    char(*series)[300] = calloc((size_t)b->cell_count + 1, sizeof *series);
     int n = pts && series ? plot_points(b, pts, series) : 0, rc = 0;
     if (n == 0) {
         fprintf(stderr, "ssgraph: error: nothing to plot (no finished cell, or the first "

@@ -1,5 +1,6 @@
 /* commands.c - the table of the command line's commands (commands.h). */
 #include "commands.h"
+#include "options.h"
 
 const struct ssg_cli_command_info ssg_cli_commands[] = {
     {SSG_CLI_RUN, "run", "FILE", 1, 1,
@@ -24,7 +25,7 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "P=VALUE for its parameters, and writes each output as <out>/<port>.exr (-o\n"
      "FILE.exr: the first output as FILE.exr, any other as FILE_<port>.exr beside it);\n"
      "prints `wrote PATH` per file, then the metrics the node reported (compare)."},
-    {SSG_CLI_BENCH, "bench", "FILE", 1, 1,
+    {SSG_CLI_BENCH, "bench", "FILE | --merge DIR...", 1, SSG_CLI_MAX_FILES,
      "run a graph for every combination of --sweep NODE.PARAM=V1,V2,...",
      "Runs the graph FILE for every combination of the --sweep values (up to 4 sweeps),\n"
      "--frames N frames each (default 5), and writes bench.csv, bench.md and bench.json\n"
@@ -32,7 +33,9 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "(default: the whole frame); --plot draws ms against the first sweep and --error\n"
      "NODE.METRIC against ms (a Pareto view) as PNG with gnuplot; --reference NODE.PORT\n"
      "--image NODE.PORT adds each cell's error against that truth; --stereo times both\n"
-     "eyes of every cell (1080x1200 unless --size). Exit status 1 when a cell failed."},
+     "eyes of every cell (1080x1200 unless --size). Exit status 1 when a cell failed.\n"
+     "--shard I/N runs only every N-th cell from the I-th; `bench --merge DIR... --out\n"
+     "DIR` joins the shards of one sweep into the tables an unsharded run writes."},
     {SSG_CLI_COMPARE, "compare", "A B", 2, 2,
      "RMSE, MAE, bias, PSNR, SSIM of image A against reference B",
      "Prints the RMSE, MAE, bias, PSNR and SSIM of image A against the reference B (each\n"

@@ -337,6 +337,11 @@ static int cmd_compare(const struct ssg_cli_args *a)
 
 static int cmd_bench(struct ssg_cli_args *a)
 {
+    if (!a->merge && a->file_count != 1)
+        return ssg_cli_usage_error("%s", "bench expects one graph FILE (or --merge DIR...)");
+    if (a->merge && (a->sweep_count || a->shard))
+        return ssg_cli_usage_error("%s", "bench --merge takes the sweep from its shards' "
+                                   "bench.json: it takes no --sweep or --shard");
     if (a->stereo && !a->ov.width)
         a->ov.width = 1080, a->ov.height = 1200;
     struct ssg_bench_request req = {
@@ -345,8 +350,9 @@ static int cmd_bench(struct ssg_cli_args *a)
         .out_dir = a->out_dir, .time_node = a->time_node, .error_metric = a->error_metric,
         .plot = a->plot, .reference = a->reference, .image = a->image, .stereo = a->stereo,
         .ipd = a->ipd, .mask = a->mask, .quiet = a->quiet, .verbose = a->verbose,
+        .shard = a->shard, .merge_dirs = a->files, .merge_count = a->file_count,
     };
-    return ssg_bench_main(&req);
+    return a->merge ? ssg_bench_merge(&req) : ssg_bench_main(&req);
 }
 
 static int cmd_tune(const struct ssg_cli_args *a)

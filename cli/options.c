@@ -255,6 +255,13 @@ static const struct option options[] = {
      .help = "the error shown and plotted (default: the first metric)"},
     {.name = "--plot", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(plot),
      .help = "draw bench_ms.png and bench_pareto.png with gnuplot"},
+    {.name = "--shard", .arg = "I/N", .commands = SSG_CLI_BENCH, .take = take_text,
+     .field = OF(shard),
+     .help = "run only the cells whose index modulo N is I (0 <= I < N); the\n"
+             "files record the sweep and the shard for --merge (docs/cluster.md)"},
+    {.name = "--merge", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(merge),
+     .help = "the arguments are shard folders of one sweep: check they cover\n"
+             "every cell once and write the tables (and --plot) into --out"},
     {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_text, .field = OF(reference),
      .help = "the truth each cell's (tune: evaluation's) --image is compared\n"

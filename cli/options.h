@@ -29,13 +29,14 @@ enum ssg_cli_command {
     SSG_CLI_HELP = 1u << 10,
 };
 
-enum { SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2,
+enum { SSG_CLI_MAX_FILES = 1024, SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2,
        SSG_CLI_SET_TEXT = 8192 };
 
 /* What the command line said; zero-initialised, then defaults, by ssg_cli_parse. */
 struct ssg_cli_args {
-    const char *files[2];            /* positional: FILE (node, describe: NODE; help:
-                                        COMMAND); compare: A and B */
+    const char *files[SSG_CLI_MAX_FILES]; /* positional: FILE (node, describe: NODE; help:
+                                        COMMAND); compare: A and B; bench --merge: the
+                                        shard folders */
     int file_count;
     struct ssg_overrides ov;         /* --scene (the last), --size, --set, --seed, --backend */
     const char *scenes[SSG_TUNE_MAX_SCENES]; /* tune: every --scene, in order */
@@ -64,6 +65,8 @@ struct ssg_cli_args {
     const char *time_node;           /* bench: --time */
     const char *error_metric;        /* bench: --error */
     int plot;                        /* bench: --plot */
+    const char *shard;               /* bench: --shard I/N, as written */
+    int merge;                       /* bench: --merge */
     const char *reference, *image;   /* bench, tune: --reference, --image (NODE.PORT) */
     const char *params[SSG_TUNE_MAX_PARAMS]; /* tune: --param node.p=lo:hi[:log] */
     int param_count;
