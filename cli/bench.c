@@ -47,6 +47,28 @@ static int parse_sweep(const char *spec, struct sweep *s)
     return s->count > 0;
 }
 
+/* Two or more --scene: the scenes are the outermost sweep, "scene" (one more dimension of
+   the cross product: every other value runs on every scene). 0 with a message when that
+   makes too many sweeps or values. */
+static int scene_sweep(struct bench *b)
+{
+    const struct ssg_bench_request *q = b->req;
+    if (q->scene_count < 2)
+        return 1;
+    if (q->sweep_count + 1 > SSG_BENCH_MAX_SWEEPS || q->scene_count > MAX_VALUES) {
+        fprintf(stderr, "ssgraph: error: several --scene make one more sweep: at most %d "
+                "--sweep then, and %d scenes\n", SSG_BENCH_MAX_SWEEPS - 1, MAX_VALUES);
+        return 0;
+    }
+    b->scene_axis = 1;
+    b->n = q->sweep_count + 1;
+    snprintf(b->sweeps[0].key, sizeof b->sweeps[0].key, "scene");
+    b->sweeps[0].count = q->scene_count;
+    for (int v = 0; v < q->scene_count; v++)
+        b->sweeps[0].values[v] = q->scenes[v];
+    return 1;
+}
+
 /* The number of cells of the cross product; 0 with a message past MAX_CELLS. */
 static int count_cells(const struct bench *b)
 {
@@ -150,14 +172,18 @@ static struct ssg_overrides cell_overrides(const struct bench *b, const int *ind
     int n = 0;
     for (int i = 0; i < q->ov->set_count && n < 256; i++)
         cs->sets[n++] = q->ov->sets[i];
+    struct ssg_overrides ov = *q->ov;
     for (int k = 0; k < b->n; k++) {
         if (index[k] < 0)
             continue;
+        if (k == 0 && b->scene_axis) {
+            ov.scene = b->sweeps[0].values[index[0]];
+            continue;
+        }
         snprintf(cs->own[k], sizeof cs->own[k], "%s=%s", b->sweeps[k].key,
                  b->sweeps[k].values[index[k]]);
         cs->sets[n++] = cs->own[k];
     }
-    struct ssg_overrides ov = *q->ov;
     ov.sets = cs->sets;
     ov.set_count = n;
     return ov;
@@ -182,8 +208,12 @@ static int refuse_value(const struct bench *b, int k, int v, int only_alone)
     struct ssg_diags d = {0};
     if (ssg_graph_check(b->graph, &ov, &d) == SSG_OK)
         return 0;
-    fprintf(stderr, "ssgraph: error: --sweep %s: value '%s' does not fit the graph %s in "
-            "any cell:\n", b->sweeps[k].key, b->sweeps[k].values[v], b->req->graph);
+    if (k == 0 && b->scene_axis)
+        fprintf(stderr, "ssgraph: error: --scene %s does not load with the graph %s:\n",
+                b->sweeps[0].values[v], b->req->graph);
+    else
+        fprintf(stderr, "ssgraph: error: --sweep %s: value '%s' does not fit the graph %s in "
+                "any cell:\n", b->sweeps[k].key, b->sweeps[k].values[v], b->req->graph);
     ssg_diags_print(&d, stderr);
     return 1;
 }
@@ -315,8 +345,10 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         fprintf(stderr, "ssgraph: error: --out path is longer than 1000 bytes\n");
         return 2;
     }
-    for (int k = 0; k < b.n; k++)
-        if (!parse_sweep(req->sweeps[k], &b.sweeps[k]))
+    if (!scene_sweep(&b))
+        return 2;
+    for (int k = b.scene_axis; k < b.n; k++)
+        if (!parse_sweep(req->sweeps[k - b.scene_axis], &b.sweeps[k]))
             return 2;
     if (!(b.cell_count = count_cells(&b)))
         return 2;

@@ -10,6 +10,9 @@
 struct ssg_bench_request {
     const char *graph;                /* the graph file */
     const struct ssg_overrides *ov;   /* --scene, --size, --set, --seed, --backend */
+    const char *const *scenes;        /* two or more --scene: a sweep of its own, "scene",
+                                         the outermost; one is an override (in ov) */
+    int scene_count;
     const char *const *sweeps;        /* "node.param=v1,v2,..." */
     int sweep_count;
     int frames;                       /* per cell; 0 = 5 */

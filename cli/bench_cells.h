@@ -32,6 +32,7 @@ struct bench {
     char graph_buf[1200];
     struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
     int n;                            /* sweeps */
+    int scene_axis;                   /* 1 = sweeps[0] is the --scene list, key "scene" */
     struct cell *cells;
     int cell_count, done;             /* cells of the cross product; cells run so far */
     int shard_index, shard_count;     /* --shard I/N: the cells with index % N == I; 0/1 */

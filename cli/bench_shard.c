@@ -59,8 +59,9 @@ static int graph_hash(const char *path, uint64_t *hash)
 
 static int define_overrides(struct bench *b, const struct ssg_overrides *ov)
 {
+    const char *scene = b->scene_axis ? NULL : ov->scene; /* else the sweep "scene" says */
     int ok = define(b, "size: %dx%d\nseed: %" PRId64 "\nscene: %s\nlights: %s\nbackend: %s\n",
-                    ov->width, ov->height, ov->seed, or_none(ov->scene), or_none(ov->lights),
+                    ov->width, ov->height, ov->seed, or_none(scene), or_none(ov->lights),
                     or_none(ov->backend));
     ok = ok && define(b, "guard: %d\n", ov->guard_given ? ov->guard : -1);
     for (int i = 0; ok && i < ov->set_count; i++)

@@ -351,6 +351,7 @@ static int cmd_bench(struct ssg_cli_args *a)
         .plot = a->plot, .reference = a->reference, .image = a->image, .stereo = a->stereo,
         .ipd = a->ipd, .mask = a->mask, .quiet = a->quiet, .verbose = a->verbose,
         .shard = a->shard, .merge_dirs = a->files, .merge_count = a->file_count,
+        .scenes = a->scenes, .scene_count = a->scene_count,
     };
     return a->merge ? ssg_bench_merge(&req) : ssg_bench_main(&req);
 }
