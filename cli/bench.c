@@ -8,7 +8,6 @@
  * second, one table per value of the others). A cell that fails is reported and recorded
  * with its message; the others still run. Progress: a bar on a terminal, lines
  * otherwise. This file parses, checks and runs the cells; bench_out.c writes them. */
-#define _XOPEN_SOURCE 700 /* realpath */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,27 +106,6 @@ void ssg_bench_free_cells(struct bench *b)
         ssg_run_stats_free(&b->cells[c].stats);
     free(b->cells);
     b->cells = NULL;
-}
-
-/* With --reference: <out>/bench.graph, the graph plus a compare node `bench_reference` of
-   --image against --reference (over --mask), whose metrics every cell then reports. */
-static int write_reference_graph(const struct ssg_bench_request *q, char *path, size_t len)
-{
-    char abs[4096];
-    if (!realpath(q->graph, abs)) {
-        fprintf(stderr, "ssgraph: error: %s: cannot open the graph\n", q->graph);
-        return 0;
-    }
-    snprintf(path, len, "%s/bench.graph", q->out_dir);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        fprintf(stderr, "ssgraph: error: cannot write %s\n", path);
-        return 0;
-    }
-    fprintf(f, "# made by ssgraph bench --reference: the graph, and its image compared with "
-               "the reference\ninclude \"%s\"\nbench_reference = compare(%s, %s%s%s)\n", abs,
-            q->image, q->reference, q->mask ? ", mask=" : "", q->mask ? q->mask : "");
-    return fclose(f) == 0;
 }
 
 static enum ssg_err run_graph_once(const char *graph, const struct ssg_overrides *ov,
@@ -269,7 +247,11 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
         snprintf(dir, sizeof dir, "%s/cells/%d%s", q->out_dir, ci,
                  q->stereo ? (eye ? "/right" : "/left") : "");
         ov.eye_offset = q->stereo ? (eye ? 0.5f : -0.5f) * q->ipd : 0.0f;
-        e = run_graph_once(b->graph, &ov, q, dir, eye ? &st : &c->stats, &d);
+        if (q->reference) /* scored against the cached reference (bench_reference.c) */
+            e = ssg_bench_run_compared(b, &ov, q->frames > 0 ? q->frames : 5,
+                                       eye ? &st : &c->stats, &d);
+        else
+            e = run_graph_once(b->graph, &ov, q, dir, eye ? &st : &c->stats, &d);
         if (!e && eye)
             add_eye(&c->stats, &st);
         if (eye)
@@ -355,14 +337,6 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     if (!ssg_bench_parse_shard(&b, req->shard) || !ssg_bench_define(&b))
         return 1;
     struct ssg_diags d = {0};
-    if (req->reference) {
-        if (ssg_make_dirs(req->out_dir, &d) ||
-            !write_reference_graph(req, b.graph_buf, sizeof b.graph_buf)) {
-            ssg_diags_print(&d, stderr);
-            return 1;
-        }
-        b.graph = b.graph_buf;
-    }
     if (!ssg_bench_make_cells(&b))
         return 1;
     if (!check_sweeps(&b)) {

@@ -28,8 +28,7 @@ struct cell {
 
 struct bench {
     const struct ssg_bench_request *req;
-    const char *graph;                /* what runs: the graph, or bench.graph around it */
-    char graph_buf[1200];
+    const char *graph;                /* what runs: the graph */
     struct sweep sweeps[SSG_BENCH_MAX_SWEEPS];
     int n;                            /* sweeps */
     int scene_axis;                   /* 1 = sweeps[0] is the --scene list, key "scene" */
@@ -58,6 +57,14 @@ static inline const char *ssg_bench_value(const struct bench *b, const struct ce
    (nothing allocated: nothing done). */
 int ssg_bench_make_cells(struct bench *b);
 void ssg_bench_free_cells(struct bench *b);
+
+/* With --reference (bench_reference.c): the cell's --image (and --mask) run `frames` times
+   into *stats, only the nodes they need, and scored by a compare with the reference
+   (cached per machine, rendered when missing or untrusted): its metrics are appended to
+   stats as node bench_reference. */
+enum ssg_err ssg_bench_run_compared(const struct bench *b, const struct ssg_overrides *cell,
+                                    int frames, struct ssg_run_stats *stats,
+                                    struct ssg_diags *d);
 
 /* The ms a table shows for a cell: the --time node's average, else the frame's. */
 double ssg_bench_shown_ms(const struct bench *b, const struct cell *c);

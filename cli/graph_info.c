@@ -195,6 +195,11 @@ void ssg_cli_print_resolved(const struct ssg_graph *g, FILE *f)
     if (g->lights_path[0])
         fprintf(f, ", lights %s", g->lights_path);
     fputc('\n', f);
+    ssg_cli_print_node_params(g, f);
+}
+
+void ssg_cli_print_node_params(const struct ssg_graph *g, FILE *f)
+{
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
         fprintf(f, "  %-16s %-12s %-4s", n->name, n->desc->name,

@@ -30,6 +30,9 @@ int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command);
 
 /* -v: the frame, seed, scene and backend a loaded graph resolved, and each node's
  * parameters as they will run, one node a line. */
+/* The node lines of ssg_cli_print_resolved alone: each live node in run order with its
+   backend and every parameter's value. */
+void ssg_cli_print_node_params(const struct ssg_graph *g, FILE *f);
 void ssg_cli_print_resolved(const struct ssg_graph *graph, FILE *stream);
 
 #endif
