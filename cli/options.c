@@ -180,7 +180,8 @@ static const struct option options[] = {
      .take = take_scene, .field = OF(scenes), .count = OF(scene_count),
      .hi = SSG_TUNE_MAX_SCENES,
      .help = "use this scene instead of the graph's (tune: repeatable, the\n"
-             "error is the mean over them)"},
+             "error is the mean over them; bench: two or more are a sweep,\n"
+             "`scene`, the outermost)"},
     {.name = "--lights", .arg = "FILE",
      .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_text, .field = OF(ov.lights),
