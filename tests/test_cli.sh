@@ -77,6 +77,13 @@ for f in ssao.exr ssao.png; do
 done
 [ "$(grep -c '^wrote ' "$TMP/table.txt")" -eq 2 ] || fail "run named other files than its two"
 
+# --- a graph's scene line naming a missing file is reported at that line ---
+printf 'scene "nosuch.scene"\nsize 64 48\ng = gbuffer()\nout = write(g.direct, "x")\n' \
+    > "$TMP/noscene.graph"
+expect_exit 1 "noscene.graph:1:7: error: cannot read the scene file '.*nosuch.scene'" \
+    "$BIN" run "$TMP/noscene.graph" --out "$TMP/noscene"
+[ ! -e "$TMP/noscene" ] || fail "a graph without its scene wrote $TMP/noscene"
+
 # --- the node reference is generated from the descriptors and must be current ---
 "$BIN" docs | diff -u docs/nodes.md - > "$TMP/docs.diff" \
     || fail "docs/nodes.md is stale: run '$BIN docs > docs/nodes.md' ($(head -c 300 "$TMP/docs.diff"))"

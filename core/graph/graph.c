@@ -8,6 +8,7 @@
 
 #include "graph/graph.h"
 #include "graph/image.h"
+#include "lang/files.h"
 #include "lang/params.h"
 
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
@@ -67,6 +68,14 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
         ssg_diag_at(diags, SSG_E_SCENE, where, "this node needs a scene (expected a line "
                     "scene \"file.scene\" in the graph, or --scene FILE)");
         return SSG_E_SCENE;
+    }
+    /* A graph's `scene` line that names a file that is not there: say which line. */
+    char why[256];
+    if (g->scene_loc.src && ssg_input_check(g->scene_path, 1LL << 40, why, sizeof why)) {
+        ssg_diag_at(diags, SSG_E_IO, g->scene_loc, "cannot read the scene file '%s': %s "
+                    "(expected a path relative to this graph file, or --scene FILE)",
+                    g->scene_path, why);
+        return SSG_E_IO;
     }
     enum ssg_err e = ssg_scene_load_lit(g->scene_path, g->lights_path[0] ? g->lights_path : NULL,
                                         load_assets, &g->scene, diags);

@@ -536,8 +536,10 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
         want_output(b, ov->outputs[i]);
     for (int i = 0; i < ov->set_count; i++)
         apply_override(b, ov->sets[i]);
-    if (ov->scene)
+    if (ov->scene) {
         snprintf(b->g->scene_path, sizeof b->g->scene_path, "%s", ov->scene);
+        b->g->scene_loc = (struct ssg_loc){0}; /* named on the command line, not a line */
+    }
     if (ov->lights)
         snprintf(b->g->lights_path, sizeof b->g->lights_path, "%s", ov->lights);
     if (ov->width > 0 && ov->height > 0) {
