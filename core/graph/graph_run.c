@@ -31,10 +31,21 @@ struct run {
     int uses_gl;               /* a node runs on GL: the backend is open */
 };
 
+static void release_output(struct run *r, struct gnode *n, int port)
+{
+    if (n->out_img[port]) {
+        ssg_pool_release(r->pool, n->out_img[port]);
+        n->out_img[port] = NULL;
+    }
+}
+
 static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
 {
     for (int k = 0; k < n->desc->output_count; k++) {
         const struct ssg_shape *s = &n->out_shape[k];
+        /* a requested output (ssg_overrides.outputs) is kept to the end of the run, so the
+           last frame's can be handed out: the frame before's goes back to the pool here */
+        release_output(r, n, k);
         n->out_img[k] = ssg_pool_acquire(r->pool, s->width, s->height, s->channels);
         if (!n->out_img[k]) {
             ssg_diag_at(r->diags, SSG_E_NOMEM, n->loc, "out of memory for output '%s' of "
@@ -44,14 +55,6 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
         }
     }
     return SSG_OK;
-}
-
-static void release_output(struct run *r, struct gnode *n, int port)
-{
-    if (n->out_img[port]) {
-        ssg_pool_release(r->pool, n->out_img[port]);
-        n->out_img[port] = NULL;
-    }
 }
 
 /* Gives back every image whose last reader ran at position p, and unread outputs of the
