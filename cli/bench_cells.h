@@ -4,6 +4,8 @@
 #ifndef SSG_CLI_BENCH_CELLS_H
 #define SSG_CLI_BENCH_CELLS_H
 
+#include <stdint.h>
+
 #include "bench.h"
 
 /* At most 64 values a sweep, and at most MAX_CELLS cells in one bench: each finished cell
@@ -39,6 +41,13 @@ struct bench {
                                          `key: value` a line (bench_shard.c) */
     char definition_hash[17];         /* FNV-1a 64 of definition, hex: what --merge compares */
 };
+
+/* FNV-1a, 64 bits, of len bytes: the fingerprint of definitions, cache keys and pixels
+   (bench_shard.c), not a defence against forgery. */
+uint64_t ssg_bench_fnv1a(const void *data, size_t len);
+/* The fingerprint of a whole file's bytes; 0 with the reason in why when it cannot be
+   read. */
+int ssg_bench_file_fnv1a(const char *path, uint64_t *hash, char *why, size_t why_len);
 
 /* The sweep's definition and its hash from the request and the parsed sweeps (the graph
    file's bytes are hashed too, so an edited graph is another sweep); 0 with a message

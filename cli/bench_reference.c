@@ -33,31 +33,19 @@
 #include "graph_info.h"
 #include "lang/files.h"
 
-#define FNV_START 0xcbf29ce484222325ULL
-
-static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < len; i++)
-        h = (h ^ p[i]) * 0x100000001b3ULL;
-    return h;
-}
-
+/* A file's fingerprint for the key; 0 for none or one that cannot be read (the scene's
+   load then reports it). */
 static uint64_t file_hash(const char *path)
 {
-    char *data = NULL, why[256];
-    size_t len = 0;
-    if (!path[0] || ssg_input_read(path, 1LL << 30, &data, &len, why, sizeof why))
-        return 0;
-    uint64_t h = fnv1a(FNV_START, data, len);
-    free(data);
-    return h;
+    char why[256];
+    uint64_t h = 0;
+    return path[0] && ssg_bench_file_fnv1a(path, &h, why, sizeof why) ? h : 0;
 }
 
 static uint64_t pixels_hash(const struct ssg_image *im)
 {
-    return fnv1a(FNV_START, im->data,
-                 (size_t)im->width * (size_t)im->height * (size_t)im->channels * sizeof(float));
+    return ssg_bench_fnv1a(im->data, (size_t)im->width * (size_t)im->height *
+                                         (size_t)im->channels * sizeof(float));
 }
 
 /* The cache folder ("" when there is no home to put it in). */
@@ -187,7 +175,7 @@ static enum ssg_err reference_image(const struct bench *b, const struct ssg_over
     char dir[4096], base[4200];
     cache_dir(dir, sizeof dir);
     snprintf(base, sizeof base, "%s/%016" PRIx64, dir,
-             key ? fnv1a(FNV_START, key, strlen(key)) : 0);
+             key ? ssg_bench_fnv1a(key, strlen(key)) : 0);
     *ref = key && dir[0] ? cache_read(base, key) : NULL;
     if (!e && !*ref) {
         struct ssg_run_options ro = {.threads = b->req->threads, .frames = 1, .outputs = ref};

@@ -17,15 +17,25 @@
 #include "bench_cells.h"
 #include "lang/files.h"
 
-/* FNV-1a, 64 bits: a fingerprint of the bytes, not a defence against forgery. */
-static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
+uint64_t ssg_bench_fnv1a(const void *data, size_t len)
 {
     const unsigned char *p = data;
+    uint64_t h = 0xcbf29ce484222325ULL;
     for (size_t i = 0; i < len; i++)
         h = (h ^ p[i]) * 0x100000001b3ULL;
     return h;
 }
-#define FNV_START 0xcbf29ce484222325ULL
+
+int ssg_bench_file_fnv1a(const char *path, uint64_t *hash, char *why, size_t why_len)
+{
+    char *data = NULL;
+    size_t len = 0;
+    if (ssg_input_read(path, 1LL << 30, &data, &len, why, why_len))
+        return 0;
+    *hash = ssg_bench_fnv1a(data, len);
+    free(data);
+    return 1;
+}
 
 /* Appends one `key: value` line (printf style) to the definition; 0 once it is full. */
 static int define(struct bench *b, const char *fmt, ...)
@@ -46,15 +56,11 @@ static const char *or_none(const char *s)
 /* The graph file's bytes as a hash: an edited graph is another sweep. */
 static int graph_hash(const char *path, uint64_t *hash)
 {
-    char *data = NULL, why[256];
-    size_t len = 0;
-    if (ssg_input_read(path, 64LL << 20, &data, &len, why, sizeof why)) {
-        fprintf(stderr, "ssgraph: error: %s: %s\n", path, why);
-        return 0;
-    }
-    *hash = fnv1a(FNV_START, data, len);
-    free(data);
-    return 1;
+    char why[256];
+    if (ssg_bench_file_fnv1a(path, hash, why, sizeof why))
+        return 1;
+    fprintf(stderr, "ssgraph: error: %s: %s\n", path, why);
+    return 0;
 }
 
 static int define_overrides(struct bench *b, const struct ssg_overrides *ov)
@@ -95,7 +101,7 @@ int ssg_bench_define(struct bench *b)
         return 0;
     }
     snprintf(b->definition_hash, sizeof b->definition_hash, "%016" PRIx64,
-             fnv1a(FNV_START, b->definition, strlen(b->definition)));
+             ssg_bench_fnv1a(b->definition, strlen(b->definition)));
     return 1;
 }
 
