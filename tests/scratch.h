@@ -3,8 +3,10 @@
 #ifndef SSG_TEST_SCRATCH_H
 #define SSG_TEST_SCRATCH_H
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -31,6 +33,21 @@ static const char *tmp_path(const char *name)
     char *p = buf[next++ % 8];
     snprintf(p, 1024, "%s/%s", tmpdir, name);
     return p;
+}
+
+/* Writes text to tmpdir/name and returns its path (tmp_path's buffer); exits on failure.
+   Inline: not every test that includes this writes text files. */
+static inline const char *write_file(const char *name, const char *text)
+{
+    const char *path = tmp_path(name);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "cannot write %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    fputs(text, f);
+    fclose(f);
+    return path;
 }
 
 #endif

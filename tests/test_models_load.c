@@ -14,20 +14,6 @@
 #include "scene/model.h"
 #include "scene/scene.h"
 
-/* Writes text to the scratch folder's `name` and returns its path (tmp_path's buffer). */
-static const char *write_file(const char *name, const char *text)
-{
-    const char *path = tmp_path(name);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        fprintf(stderr, "cannot write %s: %s\n", path, strerror(errno));
-        exit(1);
-    }
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
-
 /* A unit quad in z = 0 and a pentagon in z = 1 reaching x = 2: 2 + 3 triangles. */
 static const char OBJ[] = "mtllib two.mtl\n"
                           "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"

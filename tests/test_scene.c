@@ -9,39 +9,11 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "io/imageio.h"
 #include "graph/node.h"
 #include "scene/rt.h"
 #include "scene/scene.h"
-
-static char tmp_dir[512];
-
-static void make_tmp_dir(void)
-{
-    const char *env = getenv("SSG_TMP");
-    if (env && env[0])
-        snprintf(tmp_dir, sizeof tmp_dir, "%s", env);
-    else
-        snprintf(tmp_dir, sizeof tmp_dir, CHECK_TMP_ROOT "/ssg_test_scene_%d", (int)getpid());
-    mkdir(tmp_dir, 0755);
-}
-
-/* Writes text to tmp_dir/name and returns the path (static buffer per call slot). */
-static const char *write_file(const char *name, const char *text)
-{
-    static char paths[4][1024];
-    static int slot;
-    char *path = paths[slot++ % 4];
-    snprintf(path, 1024, "%s/%s", tmp_dir, name);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        fprintf(stderr, "cannot write %s: %s\n", path, strerror(errno));
-        exit(1);
-    }
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
 
 /* ---- errors with locations ---- */
 
@@ -346,7 +318,7 @@ static void test_mesh_and_gltf_camera(void)
         fclose(in);
     gltf[n] = 0;
     char sub[600];
-    snprintf(sub, sizeof sub, "%s/sub", tmp_dir);
+    snprintf(sub, sizeof sub, "%s/sub", tmpdir);
     mkdir(sub, 0755);
     write_file("sub/tri.gltf", gltf);
     const char *path = write_file(
@@ -406,7 +378,7 @@ static void write_image(const char *name, const float rgb[6], int png)
     for (int c = 0; c < 3; c++)
         for (int x = 0; x < 2; x++)
             ssg_image_plane(im, c)[x] = rgb[3 * x + c];
-    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    snprintf(path, sizeof path, "%s/%s", tmpdir, name);
     struct ssg_exr_layer layer = {NULL, im, SSG_LAYER_COLOR};
     CHECK_EQ(png ? ssg_png_write(path, im, SSG_TONEMAP_CLAMP, 0, &d)
                  : ssg_exr_write(path, &layer, 1, &d), SSG_OK);
@@ -466,7 +438,7 @@ static void test_view_matrix(void)
 
 int main(void)
 {
-    make_tmp_dir();
+    setup_tmp("test_scene");
     test_errors();
     test_unknown_material_message();
     test_missing_scene();
