@@ -98,6 +98,7 @@ static int cmd_stereo(struct ssg_cli_args a)
     for (int i = 0; i < 2; i++)
         snprintf(dir[i], sizeof dir[i], "%s/.stereo-%s-%ld", a.out_dir, names[i],
                  (long)getpid());
+    ssg_stereo_sweep(a.out_dir); /* the folders of a run that was killed */
     for (int i = 0; i < 2 && !e; i++) {
         if (!a.quiet)
             printf("%s eye (camera moved %+g along its right axis):\n", names[i],
@@ -126,6 +127,8 @@ static int cmd_check(const struct ssg_cli_args *a)
     int is_scene = len > 6 && !strcmp(file + len - 6, ".scene");
     if (is_scene) /* the scene's bounds, triangles, camera and lights too */
         return conclude(&d, ssg_cli_check_scene(file, stdout, &d));
+    if (ssg_cli_is_model(file)) /* its meshes, up axis and a scene to place it in */
+        return conclude(&d, ssg_cli_check_model(file, stdout, &d));
     enum ssg_err e = ssg_graph_check(file, &a->ov, &d);
     if (!e)
         printf("%s: ok\n", file);

@@ -178,14 +178,49 @@ static void write_json(FILE *f, const void *user)
 /* The graph by its absolute path (tuned.graph need not sit beside it), the user's --set
    lines and the best values as set lines, and the frame directives the tune used, so that
    running it with one of the scenes gives that scene's error. */
+/* The path of file `to` as seen from folder `from` (both absolute, without "." or ".."
+   parts): "../graphs/ssao.graph". An include names the graph relative to tuned.graph, so
+   the output folder and the repository can move together (an absolute include broke on
+   any other machine). */
+static void relative_path(const char *from, const char *to, char *out, size_t len)
+{
+    char dir[4200];
+    snprintf(dir, sizeof dir, "%s%s", from, strcmp(from, "/") ? "/" : "");
+    size_t common = 0; /* the longest shared prefix that ends at a '/' */
+    for (size_t i = 0; dir[i] && dir[i] == to[i]; i++)
+        if (dir[i] == '/')
+            common = i + 1;
+    size_t used = 0;
+    out[0] = 0;
+    for (const char *p = dir + common; *p && used + 4 < len; p++)
+        if (*p == '/')
+            used += (size_t)snprintf(out + used, len - used, "../");
+    snprintf(out + used, len - used, "%s", to + common);
+}
+
+/* q->graph as tuned.graph in out_dir must include it: relative when both resolve, else
+   as given. Written as a graph string: '"' and '\' escaped. */
+static void include_line(FILE *f, const struct ssg_tune_request *q)
+{
+    char graph[4096], dir[4096], rel[8192];
+    if (realpath(q->graph, graph) && realpath(q->out_dir, dir))
+        relative_path(dir, graph, rel, sizeof rel);
+    else
+        snprintf(rel, sizeof rel, "%s", q->graph);
+    fputs("include \"", f);
+    for (const char *p = rel; *p; p++) {
+        if (*p == '"' || *p == '\\')
+            fputc('\\', f);
+        fputc(*p, f);
+    }
+    fputs("\"\n", f);
+}
+
 static void write_graph(FILE *f, const void *user)
 {
     const struct tune *t = user;
     const struct ssg_tune_request *q = t->req;
     const struct tune_eval *best = &t->evals[t->best];
-    char abs[4096];
-    if (!realpath(q->graph, abs))
-        snprintf(abs, sizeof abs, "%s", q->graph);
     fprintf(f, "# made by ssgraph tune: %s with the values of evaluation %d of %d, the lowest "
             "mean RMSE of %s against %s%s%s (%.6g) over:\n", q->graph, t->best + 1, t->count,
             q->image, q->reference, q->mask ? " over " : "", q->mask ? q->mask : "",
@@ -193,7 +228,7 @@ static void write_graph(FILE *f, const void *user)
     for (int s = 0; s < t->scene_count; s++)
         fprintf(f, "#   %s (%.6g)\n", t->scenes[s] ? t->scenes[s] : "its own scene",
                 best->errors[s]);
-    fprintf(f, "include \"%s\"\n", abs);
+    include_line(f, q);
     if (q->ov->width > 0)
         fprintf(f, "size %d %d\n", q->ov->width, q->ov->height);
     if (q->ov->seed >= 0)

@@ -51,14 +51,20 @@ struct ssg_diag {
 };
 
 #define SSG_DIAGS_MAX 32
-/* A list of diagnostics; zero-initialise it. Stores the first SSG_DIAGS_MAX, counts all. */
+#define SSG_WARNINGS_MAX 8
+/* A list of diagnostics; zero-initialise it. Stores the first SSG_DIAGS_MAX errors, counts
+ * all. Warnings (something probably unintended that still runs, such as a scene without
+ * any light) are kept apart: they never make a call fail and never count as errors. */
 struct ssg_diags {
-    int count;                          /* diagnostics stored */
-    int total;                          /* diagnostics reported, stored or not */
+    int count;                          /* errors stored */
+    int total;                          /* errors reported, stored or not */
     struct ssg_diag items[SSG_DIAGS_MAX];
+    int warning_count;                  /* warnings stored (the first SSG_WARNINGS_MAX) */
+    struct ssg_diag warnings[SSG_WARNINGS_MAX]; /* code: the error it would be */
 };
 
-/* Prints every diagnostic as `file:line:column: error: message`, one a line. */
+/* Prints every warning as `file:line:column: warning: message`, then every error as
+ * `file:line:column: error: message`, one a line. */
 void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
 /* First error code in the list, or SSG_OK. */
 enum ssg_err ssg_diags_first(const struct ssg_diags *diags);

@@ -266,5 +266,31 @@ done
 "$BIN" compare "$TMP/stereo/ssao.exr" "$TMP/stereo/ssao.exr:right" --json | grep -q '"rmse":0,' \
     && fail "both eyes see the same"
 expect_exit 2 "--ipd expects a positive distance" "$BIN" run graphs/ssao.graph --stereo --ipd 0
+# A killed stereo run's eye folders (its pid gone) are removed by the next one; a live
+# process's are left alone.
+sh -c 'exit 0' & dead=$!; wait $dead
+mkdir -p "$TMP/stereo/.stereo-left-$dead" "$TMP/stereo/.stereo-right-$$"
+touch "$TMP/stereo/.stereo-left-$dead/ssao.exr"
+"$BIN" run graphs/ssao.graph --stereo --size 20x24 --out "$TMP/stereo" --quiet > /dev/null \
+    || fail "second stereo run failed"
+[ -e "$TMP/stereo/.stereo-left-$dead" ] && fail "a killed stereo run's eye folder was left"
+[ -d "$TMP/stereo/.stereo-right-$$" ] || fail "a live process's eye folder was removed"
+
+# Outputs never replace a non-regular file: text outputs stream into a FIFO or a character
+# device, images refuse one with the reason.
+mkfifo "$TMP/fifo"
+cat "$TMP/fifo" > "$TMP/fifo.got" & reader=$!
+"$BIN" run graphs/ssao.graph --size 16x12 --out "$TMP/special" --quiet \
+    --profile-json "$TMP/fifo" || fail "--profile-json into a FIFO failed"
+wait $reader
+[ -p "$TMP/fifo" ] || fail "--profile-json replaced a FIFO"
+grep -q '"nodes"' "$TMP/fifo.got" || fail "--profile-json wrote nothing into the FIFO"
+if [ "$(id -u)" -eq 0 ] && mknod "$TMP/null" c 1 3 2> /dev/null; then
+    "$BIN" dot graphs/ssao.graph -o "$TMP/null" || fail "dot -o a character device failed"
+    [ -c "$TMP/null" ] || fail "dot -o replaced a character device"
+fi
+mkdir -p "$TMP/special2/ssao.exr"
+expect_exit 1 "ssao.exr: error: cannot write an output here: it is a directory" \
+    "$BIN" run graphs/ssao.graph --size 16x12 --out "$TMP/special2" --quiet
 
 finish test_cli

@@ -35,8 +35,11 @@ assert best["mean"] <= start["mean"] and best["mean"] == min(e["mean"] for e in 
 assert len({tuple(e["values"].values()) for e in t["evals"]}) == 8  # none evaluated twice
 PY
 
-# tuned.graph loads and reproduces each scene's error through the graph's own compare.
+# tuned.graph loads and reproduces each scene's error through the graph's own compare; it
+# includes the graph by a path relative to itself, so the pair can move together.
 expect_exit 0 "ok" "$BIN" check "$TMP/a/tuned.graph"
+grep -q '^include "\.\./' "$TMP/a/tuned.graph" || fail "tuned.graph's include is not relative: \
+$(grep '^include' "$TMP/a/tuned.graph")"
 for scene in cornell table; do
     expect_exit 0 "c_hbao" "$BIN" run "$TMP/a/tuned.graph" --scene examples/$scene.scene \
         --out "$TMP/run_$scene"

@@ -104,6 +104,57 @@ static enum ssg_err keep_sets(struct ssg_graph *g, const struct ssg_overrides *o
     return SSG_OK;
 }
 
+/* 1 when the scene gives no light at all: no light line and a black environment. */
+static int scene_is_dark(const struct ssg_scene *s)
+{
+    const struct ssg_environment *env = &s->environment; /* an image is times color */
+    int env_lit = env->intensity > 0 &&
+                  (env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0);
+    return s->light_lines == 0 && !env_lit;
+}
+
+/* The first live input reading a `lit` port (gbuffer's direct or environment light):
+   its node in *reader and connection in *conn; 0 when none. */
+static int reads_lit_port(const struct ssg_graph *g, int *reader, const struct gconn **conn)
+{
+    for (int i = 0; i < g->count; i++) {
+        const struct gnode *n = &g->nodes[i];
+        for (int p = 0; n->live && p < n->desc->input_count; p++) {
+            const struct gconn *c = &n->in[p];
+            if (c->node >= 0 && g->nodes[c->node].desc->outputs[c->port].lit) {
+                *reader = i;
+                *conn = c;
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* A scene without any light renders black where the graph shows its light: an error when
+   the graph reads the scene's light through a `lit` port, else a warning (AO alone, or a
+   reference, still means something). */
+static enum ssg_err check_scene_light(const struct ssg_graph *g, struct ssg_diags *diags)
+{
+    if (!g->scene || !scene_is_dark(g->scene))
+        return SSG_OK;
+    struct ssg_loc at = g->scene_loc;
+    int reader;
+    const struct gconn *c;
+    if (!reads_lit_port(g, &reader, &c)) {
+        ssg_diag_warn(diags, SSG_E_SCENE, at, "scene '%s' has no light and no environment: "
+                      "whatever the graph shows of its light is black (expected a "
+                      "point_light, directional_light or environment line, or --lights "
+                      "examples/lights/sky.scene)", g->scene->path);
+        return SSG_OK;
+    }
+    ssg_diag_at(diags, SSG_E_SCENE, c->value.loc, "'%s' (read by node '%s') is black: scene "
+                "'%s' has no light and no environment (expected a point_light, "
+                "directional_light or environment line in the scene, or --lights "
+                "examples/lights/sky.scene)", c->ref, g->nodes[reader].name, g->scene->path);
+    return SSG_E_SCENE;
+}
+
 static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,
                          struct ssg_graph **out, struct ssg_diags *diags)
 {
@@ -120,6 +171,8 @@ static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int l
         e = keep_sets(g, ov);
     if (!e)
         e = ssg_graph_validate(g, diags);
+    if (!e)
+        e = check_scene_light(g, diags);
     if (e) {
         ssg_graph_destroy(&g);
         return e;
@@ -131,12 +184,18 @@ static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int l
 enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *ov,
                             struct ssg_graph **out, struct ssg_diags *diags)
 {
+    if (out)
+        *out = NULL;
+    if (ssg_api_null(diags, "ssg_graph_load", "path, out", 2, path, out))
+        return SSG_E_USAGE;
     return load(path, ov, 1, out, diags);
 }
 
 enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
                              struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_graph_check", "path", 1, path))
+        return SSG_E_USAGE;
     struct ssg_graph *g = NULL;
     enum ssg_err e = load(path, ov, 0, &g, diags);
     ssg_graph_destroy(&g);
@@ -145,6 +204,8 @@ enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
 
 enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_scene_check", "path", 1, path))
+        return SSG_E_USAGE;
     struct ssg_scene *scene = NULL;
     enum ssg_err e = ssg_scene_load(path, 1, &scene, diags);
     ssg_scene_destroy(&scene);
@@ -174,6 +235,8 @@ static void instance_names(const struct ssg_graph *g, char *buf, size_t len)
 enum ssg_err ssg_graph_param(const struct ssg_graph *g, const char *key, double *value,
                              int *integer, struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_graph_param", "graph, key, value", 3, g, key, value))
+        return SSG_E_USAGE;
     const char *dot = strchr(key, '.');
     if (!dot) {
         ssg_diag_file(diags, SSG_E_USAGE, g->path, "expected a parameter node.param, got "

@@ -26,6 +26,7 @@ struct builder {
     int files_read, statements;         /* against the limits above */
     int limit_hit;                        /* 1 = a limit was reported: read nothing more */
     int anonymous;
+    int in_set;                           /* 1 = binding a set line or --set */
     enum ssg_err first;
 };
 
@@ -151,6 +152,28 @@ static void bind_param(struct builder *b, struct gnode *n, int index, const stru
         n->param_set[index] = 1;
 }
 
+/* `set` changes what a node's call defined and never adds to it: `set out.in = x` on a
+   write node (whose first input is `image`) used to add a layer named `in` silently. */
+static void set_adds_extra(struct builder *b, const struct gnode *n, const struct ssg_arg *a)
+{
+    char layers[512] = "";
+    size_t k = 0;
+    for (int i = 0; i < n->extra_count && k < sizeof layers; i++)
+        k += (size_t)snprintf(layers + k, sizeof layers - k, "%s%s", i ? ", " : "",
+                              n->extra_names[i]);
+    char ports[256] = "";
+    k = 0;
+    for (int i = 0; i < n->desc->input_count && k < sizeof ports; i++)
+        k += (size_t)snprintf(ports + k, sizeof ports - k, "%s%s", i ? ", " : "",
+                              n->desc->inputs[i].name);
+    ssg_diag_at(b->diags, SSG_E_UNKNOWN_PARAM, a->key_loc, "'set' cannot add input '%.*s' to "
+                "node '%s' (%s): set changes what the node's call defines (expected an input: "
+                "%s; or one of its named inputs: %s); add a new one in the call itself",
+                (int)a->key_len, a->key, n->name, n->desc->name, ports[0] ? ports : "(none)",
+                layers[0] ? layers : "(none)");
+    fail(b, SSG_E_UNKNOWN_PARAM);
+}
+
 static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg *a)
 {
     for (int i = 0; i < n->extra_count; i++) {
@@ -158,6 +181,10 @@ static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg 
             connect(b, &n->extra[i], &a->value);
             return;
         }
+    }
+    if (b->in_set) {
+        set_adds_extra(b, n, a);
+        return;
     }
     if (n->extra_count == SSG_MAX_EXTRA) {
         ssg_diag_at(b->diags, SSG_E_RANGE, a->key_loc, "too many extra inputs for node '%s' "
@@ -461,7 +488,9 @@ static void apply_set(struct builder *b, const struct ssg_stmt *st)
         fail(b, SSG_E_UNKNOWN_NAME);
         return;
     }
+    b->in_set = 1;
     bind_named(b, &b->g->nodes[i], &st->args[0]);
+    b->in_set = 0;
 }
 
 /* A caller's string as a source of its own, so messages point at a column of it. */

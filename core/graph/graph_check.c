@@ -260,6 +260,10 @@ static int check_type(struct checker *c, const struct gnode *n, const char *port
     *shape = c->g->nodes[conn->node].out_shape[conn->port];
     if (shape->type & accepted)
         return 1;
+    /* No type: the producer's own check failed and was reported; a second message here
+       (and one for every node after it) would only bury the first. */
+    if (shape->type == 0)
+        return 0;
     char want[64], got[64];
     ssg_type_names(accepted, want, sizeof want);
     ssg_type_names(shape->type, got, sizeof got);
@@ -303,14 +307,17 @@ static void infer_node(struct checker *c, struct gnode *n)
         else
             ok = 0;
     }
-    if (!ok)
+    if (!ok) {
+        memset(n->out_shape, 0, sizeof n->out_shape); /* its readers stay quiet */
         return;
+    }
     char why[400];
     enum ssg_err e = ssg_shapes_infer(d, n->params, &c->g->frame, n->in_shape, n->out_shape,
                                       why, sizeof why);
     if (e) {
         ssg_diag_at(c->diags, e, n->loc, "node '%s' (%s): %s", n->name, d->name, why);
         fail(c, e);
+        memset(n->out_shape, 0, sizeof n->out_shape); /* its readers stay quiet */
     }
 }
 

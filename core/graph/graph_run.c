@@ -313,6 +313,8 @@ static enum ssg_err hand_out(struct run *r)
 enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *options,
                            struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_graph_run", "graph", 1, g))
+        return SSG_E_USAGE;
     for (int k = 0; options && options->outputs && k < g->wanted_count; k++)
         options->outputs[k] = NULL;
     struct ssg_run_options defaults = {0};

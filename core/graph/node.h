@@ -78,6 +78,9 @@ struct ssg_port_desc {
     int optional;        /* input only: may stay unconnected */
     const char *same_as; /* output only: takes type and shape of this input port */
     const char *doc;     /* one line */
+    int lit;             /* output only: 1 = light of the scene's lights or environment,
+                            all black without them (reading it from a scene that has
+                            neither is an error at load) */
 };
 
 /* Shape of an image flowing along an edge. */

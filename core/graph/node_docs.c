@@ -159,6 +159,8 @@ static void markdown_node(int index, const struct graph_uses *u, FILE *stream)
 
 void ssg_nodes_markdown(FILE *stream, const char *graphs_dir)
 {
+    if (!stream)
+        return;
     struct graph_uses *uses = malloc(sizeof *uses);
     if (!uses)
         return;

@@ -198,7 +198,17 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
                           const char *const *sets, int set_count, const struct ssg_frame *frame,
                           struct ssg_outputs *outputs, struct ssg_diags *diags)
 {
-    memset(outputs, 0, sizeof *outputs);
+    if (outputs)
+        memset(outputs, 0, sizeof *outputs);
+    if (ssg_api_null(diags, "ssg_node_run", "node, outputs", 2, node, outputs))
+        return SSG_E_USAGE;
+    if ((input_count > 0 && !inputs) || (set_count > 0 && !sets) || input_count < 0 ||
+        set_count < 0) {
+        ssg_diag_file(diags, SSG_E_USAGE, NULL, "ssg_node_run: %s (expected an array of that "
+                      "many entries)", input_count < 0 || (input_count > 0 && !inputs)
+                          ? "input_count does not match inputs" : "set_count does not match sets");
+        return SSG_E_USAGE;
+    }
     struct single s = {.d = ssg_node_find(node, strlen(node))};
     if (!s.d) {
         ssg_diag_file(diags, SSG_E_UNKNOWN_NODE, NULL, "unknown node '%s' (see ssgraph nodes)",
@@ -232,6 +242,8 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
 
 void ssg_outputs_release(struct ssg_outputs *outputs)
 {
+    if (!outputs)
+        return;
     for (int i = 0; i < outputs->count; i++)
         ssg_image_destroy(&outputs->images[i]);
     outputs->count = 0;

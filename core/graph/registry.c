@@ -124,6 +124,8 @@ const char *ssg_node_backends(const struct ssg_node_desc *d)
 
 enum ssg_err ssg_node_describe(const char *node, FILE *stream)
 {
+    if (!node || !stream)
+        return SSG_E_USAGE;
     const struct ssg_node_desc *d = ssg_node_find(node, strlen(node));
     if (!d)
         return SSG_E_UNKNOWN_NODE;

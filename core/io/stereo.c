@@ -2,9 +2,11 @@
  * (stereo.h). */
 #include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include "io/imageio.h"
@@ -140,4 +142,40 @@ void ssg_stereo_discard(const char *const *dirs, int count)
             closedir(d);
         rmdir(dirs[k]);
     }
+}
+
+/* The pid of an eye folder's name ".stereo-VIEW-PID", or 0 when the name is not one. */
+static long eye_folder_owner(const char *name)
+{
+    if (strncmp(name, ".stereo-", 8) != 0)
+        return 0;
+    const char *dash = strrchr(name + 8, '-');
+    if (!dash || dash == name + 8 || !dash[1])
+        return 0;
+    long pid = 0;
+    for (const char *p = dash + 1; *p; p++) {
+        if (*p < '0' || *p > '9' || pid > 100000000)
+            return 0;
+        pid = 10 * pid + (*p - '0');
+    }
+    return pid;
+}
+
+void ssg_stereo_sweep(const char *out_dir)
+{
+    DIR *d = opendir(out_dir);
+    if (!d)
+        return;
+    for (struct dirent *e; (e = readdir(d));) {
+        long pid = eye_folder_owner(e->d_name);
+        /* a live process's folder (its run still going) is left alone */
+        if (pid <= 0 || pid == (long)getpid() || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue;
+        char path[PATH_LEN];
+        if (snprintf(path, sizeof path, "%s/%s", out_dir, e->d_name) < (int)sizeof path) {
+            const char *one = path;
+            ssg_stereo_discard(&one, 1);
+        }
+    }
+    closedir(d);
 }

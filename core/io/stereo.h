@@ -3,7 +3,8 @@
  * of each EXR the eyes share (imageio.h, ssg_exr_views_join: the first view the default
  * one, the others' channels named layer.VIEW.channel) and moves every other file, the PNG
  * previews among them, next to it as STEM_VIEW.EXT (ssao_left.png, ssao_right.png).
- * The eye folders are removed at the end either way (ssg_stereo_discard).
+ * The eye folders are removed at the end either way (ssg_stereo_discard), and a killed run's
+ * by the next stereo run into the same folder (ssg_stereo_sweep).
  * Thread safety: none needed; touches only the folders it is given. */
 #ifndef SSG_STEREO_H
 #define SSG_STEREO_H
@@ -20,5 +21,9 @@ enum ssg_err ssg_stereo_join(const char *out_dir, const char *const *dirs,
 /* Removes the plain files in each of the count folders, then the folders (a failed run's
    leftovers); a missing folder is no error. */
 void ssg_stereo_discard(const char *const *dirs, int count);
+
+/* Removes the eye folders (".stereo-VIEW-PID") in out_dir that a killed stereo run left:
+   those whose process is gone. Called by each stereo run before it starts. */
+void ssg_stereo_sweep(const char *out_dir);
 
 #endif

@@ -36,7 +36,18 @@ void ssg_diag_at(struct ssg_diags *diags, enum ssg_err code, struct ssg_loc loc,
                  const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 void ssg_diag_vat(struct ssg_diags *diags, enum ssg_err code, struct ssg_loc loc,
                   const char *fmt, va_list ap);
+/* Appends a warning (struct ssg_diags) at a location of a source; dropped past
+ * SSG_WARNINGS_MAX. */
+void ssg_diag_warn(struct ssg_diags *diags, enum ssg_err code, struct ssg_loc loc,
+                   const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 /* Appends a diagnostic naming a file but no line (I/O errors, image errors). */
+/* For the public API's entry points: 1 when any of the `count` pointers is NULL, after an
+ * SSG_E_USAGE diagnostic "FUNCTION: ARGUMENT is NULL" naming the first. names is a
+ * comma-separated list of the arguments in the order of the pointers. A NULL diags is
+ * allowed everywhere (nothing is recorded), so it is never one of them. */
+int ssg_api_null(struct ssg_diags *diags, const char *function, const char *names, int count,
+                 ...);
+
 void ssg_diag_file(struct ssg_diags *diags, enum ssg_err code, const char *file,
                    const char *fmt, ...) __attribute__((format(printf, 4, 5)));
 

@@ -21,6 +21,8 @@ enum { PATH_MAX_LEN = 4096 };
 /* mkdir -p: creates every missing directory of `dir`. */
 enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_make_dirs", "dir", 1, dir))
+        return SSG_E_USAGE;
     char buf[PATH_MAX_LEN];
     size_t len = strlen(dir);
     if (len >= sizeof buf) {
@@ -253,6 +255,22 @@ static void remove_stale(const char *dir)
     closedir(d);
 }
 
+/* A rename would replace a device, a FIFO or a socket at the target with a regular file
+   (`--profile-json /dev/null` used to turn /dev/null into a file), and cannot replace a
+   directory: such a target is refused, naming what it is. Text outputs that may stream
+   into a device or FIFO go through ssg_write_text_file, which writes into them. */
+static int refuse_special_target(const char *target, struct ssg_diags *diags)
+{
+    struct stat st;
+    if (stat(target, &st) != 0 || S_ISREG(st.st_mode))
+        return 0;
+    ssg_diag_file(diags, SSG_E_IO, target, "cannot write an output here: it is %s, not a "
+                  "regular file (outputs are written to a temporary and renamed into place, "
+                  "which would replace it); expected a regular file or a new name",
+                  file_kind(st.st_mode));
+    return 1;
+}
+
 enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
                             struct ssg_tmp *t, struct ssg_diags *diags)
 {
@@ -266,6 +284,8 @@ enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *wha
         return SSG_E_IO;
     }
     snprintf(t->target, sizeof t->target, "%s", target);
+    if (refuse_special_target(target, diags))
+        return SSG_E_IO;
     split_path(target, dir, sizeof dir, &base);
     remove_stale(dir);
     /* A name that exists already (planted, or left by a process with a reused pid) is
@@ -366,10 +386,46 @@ enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diag
     return SSG_OK;
 }
 
+/* 1 when path names an existing character device or FIFO (/dev/stdout, a pipe made by
+   mkfifo): a stream to write into, never to replace. */
+static int is_stream(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
+}
+
+/* Writes a text output straight into a stream (no temporary: a stream cannot be renamed
+   over, and a reader sees it as it comes). */
+static enum ssg_err write_text_stream(const char *path, const char *what,
+                                      void (*fill)(FILE *f, const void *user),
+                                      const void *user, struct ssg_diags *diags)
+{
+    int fd = open(path, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        ssg_diag_file(diags, SSG_E_IO, path, "cannot write %s: %s", what, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return SSG_E_IO;
+    }
+    fill(f, user);
+    int failed = fflush(f) != 0 || ferror(f);
+    int saved = errno;
+    failed |= fclose(f) != 0;
+    if (failed) {
+        ssg_diag_file(diags, SSG_E_IO, path, "cannot write %s: %s", what,
+                      strerror(saved ? saved : errno));
+        return SSG_E_IO;
+    }
+    return SSG_OK;
+}
+
 enum ssg_err ssg_write_text_file(const char *path, const char *what,
                                  void (*fill)(FILE *f, const void *user), const void *user,
                                  struct ssg_diags *diags)
 {
+    if (is_stream(path))
+        return write_text_stream(path, what, fill, user, diags);
     struct ssg_tmp t;
     if (ssg_tmp_create(path, "", what, &t, diags))
         return SSG_E_IO;

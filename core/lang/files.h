@@ -62,7 +62,8 @@ struct ssg_tmp {
 /* Creates the temporary of `target` (ext: its extension with the dot, which OpenImageIO
  * reads to pick the format; "" for none; `what` names the content in messages, "image"),
  * registered for removal on a signal. Also removes temporaries of dead processes in that
- * folder. */
+ * folder. An existing target that is not a regular file (a device, FIFO, socket or
+ * directory) is refused with SSG_E_IO: the rename would replace it. */
 enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
                             struct ssg_tmp *t, struct ssg_diags *diags);
 /* Flushes, syncs and closes t's descriptor: SSG_OK only if every byte reached the disk. */
@@ -80,7 +81,10 @@ void ssg_tmp_remove_all(void);
 void ssg_tmp_remove_on_signals(void);
 
 /* Writes a text file whole or not at all through a temporary (above): fill() writes into
- * it. `what` names the content in error messages ("metrics", "profile"). */
+ * it. `what` names the content in error messages ("metrics", "profile"). A path naming a
+ * character device or a FIFO (/dev/stdout, a named pipe) is written into as a stream, never
+ * replaced; any other existing non-regular file (a directory, a socket) is refused, as it
+ * is by ssg_tmp_create for every output. */
 enum ssg_err ssg_write_text_file(const char *path, const char *what,
                                  void (*fill)(FILE *f, const void *user), const void *user,
                                  struct ssg_diags *diags);

@@ -301,7 +301,14 @@ void Flattener::add_camera(const tinygltf::Camera &cam, const Mat4 &w)
         camera.target[i] = (float)(w[12 + i] + fwd[i] / fl);
         camera.up[i] = (float)(up[i] / ul);
     }
-    camera.fov_y = (float)(p.yfov * 180.0 / 3.14159265358979323846);
+    /* Checked here, where the file is known: a field of view past the scene format's
+       range used to fail only at run time, naming no file. */
+    double degrees = p.yfov * 180.0 / 3.14159265358979323846;
+    if (degrees < 1.0 || degrees > 179.0)
+        fail("camera '" + cam.name + "': yfov " + std::to_string(p.yfov) + " rad (" +
+             std::to_string(degrees) + " degrees) is outside 1 to 179 degrees (0.0175 to "
+             "3.124 rad; glTF's yfov is in radians)");
+    camera.fov_y = (float)degrees;
     camera.near_z = (float)p.znear;
     /* zfar absent means an infinite projection; use a far plane well past the near one */
     camera.far_z = (float)(p.zfar > p.znear ? p.zfar : std::fmax(100.0, p.znear * 1e4));

@@ -397,6 +397,8 @@ static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
     s->environment.image = -1;
     for (int i = 0; i < l->count; i++) {
         const struct scene_entity *e = &l->ents[i];
+        if (e->kind == SK_POINT_LIGHT || e->kind == SK_DIRECTIONAL_LIGHT)
+            s->light_lines++;
         if (e->kind == SK_CAMERA) {
             c = *(const struct camera_args *)e->args;
             s->has_camera = 1;

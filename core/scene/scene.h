@@ -88,6 +88,8 @@ struct ssg_scene {
     struct ssg_camera camera;
     struct ssg_environment environment;
     int light_count, material_count, mesh_count, texture_count;
+    int light_lines; /* point_light and directional_light lines (after a lights file), known
+                        without loading: light_count is 0 until the scene is built */
     struct ssg_light *lights;
     struct ssg_material *materials;
     struct ssg_mesh *meshes;

@@ -65,9 +65,9 @@ static const struct ssg_port_desc outputs[] = {
      .doc = "linear depth along -z, 0 = background"},
     [SSG_GBUFFER_OUT_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR,
      .doc = "material albedo times texture, linear RGB"},
-    [SSG_GBUFFER_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR,
+    [SSG_GBUFFER_OUT_DIRECT] = {.name = "direct", .types = SSG_T_COLOR, .lit = 1,
      .doc = "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB"},
-    [SSG_GBUFFER_OUT_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR,
+    [SSG_GBUFFER_OUT_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR, .lit = 1,
      .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
             "irradiance, linear RGB"},
 };

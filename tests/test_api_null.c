@@ -1,0 +1,129 @@
+/* test_api_null.c - every function of the public header (ssgraph.h) given NULL where it
+ * takes a pointer: a function that returns a code answers SSG_E_USAGE and names the
+ * function and the argument in diags (or records nothing when diags itself is NULL); one
+ * that returns nothing does nothing; none crashes. A library user's mistake is reported,
+ * not a segmentation fault. */
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "ssgraph.h"
+
+/* SSG_E_USAGE with a message naming function and argument. */
+static void expect_usage(enum ssg_err e, const struct ssg_diags *d, const char *function,
+                         const char *argument)
+{
+    CHECK_EQ(e, SSG_E_USAGE);
+    CHECK(d->count >= 1);
+    if (d->count < 1)
+        return;
+    CHECK_EQ(d->items[0].code, SSG_E_USAGE);
+    CHECK(strstr(d->items[0].message, function) != NULL);
+    CHECK(strstr(d->items[0].message, argument) != NULL);
+}
+
+static void graphs(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = (struct ssg_graph *)&d; /* must be set to NULL, never read */
+    expect_usage(ssg_graph_load(NULL, NULL, &g, &d), &d, "ssg_graph_load", "path");
+    CHECK(g == NULL);
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_load("graphs/ssao.graph", NULL, NULL, &d), &d, "ssg_graph_load",
+                 "out");
+    CHECK_EQ(ssg_graph_load(NULL, NULL, &g, NULL), SSG_E_USAGE); /* NULL diags: no record */
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_check(NULL, NULL, &d), &d, "ssg_graph_check", "path");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_run(NULL, NULL, &d), &d, "ssg_graph_run", "graph");
+    d = (struct ssg_diags){0};
+    double v;
+    expect_usage(ssg_graph_param(NULL, "a.b", &v, NULL, &d), &d, "ssg_graph_param", "graph");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_scene_check(NULL, &d), &d, "ssg_scene_check", "path");
+    ssg_graph_destroy(NULL);
+    g = NULL;
+    ssg_graph_destroy(&g);
+}
+
+/* ssg_graph_param's key and value, on a loaded graph. */
+static void graph_param(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_overrides ov = {.seed = -1, .width = 8, .height = 8};
+    struct ssg_graph *g = NULL;
+    CHECK_EQ(ssg_graph_check("graphs/ssao.graph", &ov, &d), SSG_OK);
+    if (ssg_graph_load("graphs/ssao.graph", &ov, &g, &d) != SSG_OK)
+        return;
+    double v;
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_param(g, NULL, &v, NULL, &d), &d, "ssg_graph_param", "key");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_param(g, "ao.radius", NULL, NULL, &d), &d, "ssg_graph_param",
+                 "value");
+    ssg_graph_destroy(&g);
+}
+
+static void images(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_image *im = NULL;
+    expect_usage(ssg_image_read(NULL, NULL, &im, &d), &d, "ssg_image_read", "path");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_read("x.exr", NULL, NULL, &d), &d, "ssg_image_read", "out");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_write(NULL, NULL, &d), &d, "ssg_image_write", "path");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_write("x.exr", NULL, &d), &d, "ssg_image_write", "image");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_make_dirs(NULL, &d), &d, "ssg_make_dirs", "dir");
+    ssg_image_destroy(NULL);
+    ssg_image_destroy(&im);
+    CHECK(ssg_image_create(0, 0, 1) == NULL);
+}
+
+static void nodes(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_outputs out;
+    expect_usage(ssg_node_run(NULL, NULL, 0, NULL, 0, NULL, &out, &d), &d, "ssg_node_run",
+                 "node");
+    CHECK_EQ(out.count, 0);
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_node_run("gaussian", NULL, 0, NULL, 0, NULL, NULL, &d), &d,
+                 "ssg_node_run", "outputs");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_node_run("gaussian", NULL, 2, NULL, 0, NULL, &out, &d), &d,
+                 "ssg_node_run", "inputs");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_node_run("gaussian", NULL, 0, NULL, 1, NULL, &out, &d), &d,
+                 "ssg_node_run", "sets");
+    ssg_outputs_release(NULL);
+    CHECK_EQ(ssg_node_describe(NULL, stdout), SSG_E_USAGE);
+    CHECK_EQ(ssg_node_describe("ssao", NULL), SSG_E_USAGE);
+    CHECK(ssg_node_name(-1) == NULL);
+    CHECK(ssg_node_summary(ssg_node_count()) == NULL);
+    ssg_nodes_markdown(NULL, NULL);
+    ssg_scenes_markdown(NULL);
+}
+
+static void diagnostics(void)
+{
+    struct ssg_diags d = {0};
+    ssg_diags_print(NULL, stderr);
+    ssg_diags_print(&d, NULL);
+    CHECK_EQ(ssg_diags_first(NULL), SSG_OK);
+    ssg_run_stats_free(NULL);
+    CHECK(ssg_err_name((enum ssg_err)-1) != NULL);
+    CHECK(ssg_err_text(SSG_ERR_COUNT) != NULL);
+}
+
+int main(void)
+{
+    graphs();
+    graph_param();
+    images();
+    nodes();
+    diagnostics();
+    return check_report();
+}
