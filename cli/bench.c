@@ -1,7 +1,7 @@
 /* bench.c - `ssgraph bench FILE --sweep node.param=v1,v2,... [--sweep ...]`: the graph is
  * loaded and run for every combination of the sweeps' values (the cross product, first
  * sweep outermost), each cell over `frames` frames with every node prepared once; its
- * frame time (average, min, max) and the metrics its compare nodes report go to
+ * frame time (median, min, max, average) and the metrics its compare nodes report go to
  * <out>/bench.csv (rewritten whole after every cell, so an interrupted bench keeps the
  * cells it finished), <out>/bench.json and <out>/bench.md (rewritten whole after every
  * cell; the table is shaped like the documents': rows the first sweep, columns the
@@ -124,16 +124,21 @@ static enum ssg_err run_graph_once(const char *graph, const struct ssg_overrides
     return e;
 }
 
-/* A stereo cell's times are both eyes' (a stereo frame renders both); its metrics are
-   the left eye's. */
+/* A stereo cell's times are both eyes' (a stereo frame renders both): each statistic the
+   sum of the eyes' (the median of the sums is not at hand; the eyes' runs are alike); its
+   metrics are the left eye's. */
 static void add_eye(struct ssg_run_stats *both, const struct ssg_run_stats *right)
 {
     both->frame_avg_ms += right->frame_avg_ms;
     both->frame_min_ms += right->frame_min_ms;
     both->frame_max_ms += right->frame_max_ms;
     both->frame_median_ms += right->frame_median_ms;
-    for (int i = 0; i < both->node_count && i < right->node_count; i++)
+    for (int i = 0; i < both->node_count && i < right->node_count; i++) {
         both->nodes[i].avg_ms += right->nodes[i].avg_ms;
+        both->nodes[i].median_ms += right->nodes[i].median_ms;
+        both->nodes[i].min_ms += right->nodes[i].min_ms;
+        both->nodes[i].max_ms += right->nodes[i].max_ms;
+    }
 }
 
 /* The --set lines of a run: the user's, then key=value of each sweep k whose index[k] is
@@ -279,15 +284,16 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
         used += (size_t)snprintf(what + used, sizeof what - used, "%s%s=%s", k ? " " : "",
                                  b->sweeps[k].key, ssg_bench_value(b, c, k));
     char result[2000];
-    if (c->ok)
-        snprintf(result, sizeof result, "%.2f ms%s%s", ssg_bench_shown_ms(b, c),
+    struct ssg_bench_ms ms = ssg_bench_shown_ms(b, c);
+    if (c->ok) /* the median [fastest-slowest], as bench.md writes it */
+        snprintf(result, sizeof result, "%.2f [%.2f-%.2f] ms%s%s", ms.median, ms.min, ms.max,
                  b->req->time_node ? " " : "", b->req->time_node ? b->req->time_node : "");
     else
         snprintf(result, sizeof result, "FAILED: %s", c->error);
     for (int i = 0; b->req->verbose && c->ok && i < c->stats.node_count; i++) {
         size_t len = strlen(result);
         snprintf(result + len, sizeof result - len, "%s%s %.2f", i ? ", " : " (",
-                 c->stats.nodes[i].name, c->stats.nodes[i].avg_ms);
+                 c->stats.nodes[i].name, c->stats.nodes[i].median_ms);
         if (i + 1 == c->stats.node_count && strlen(result) + 2 < sizeof result)
             strcat(result, ")");
     }
@@ -361,7 +367,7 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         }
     }
     ssg_diags_print(&d, stderr);
-    if (!e && failed >= 0 && !req->quiet) {
+    if (!e && failed >= 0 && b.done > 0 && !req->quiet) { /* "wrote" only what was */
         if (b.shard_count > 1)
             printf("bench: shard %d/%d: %d of the %d cells, %d failed\n", b.shard_index,
                    b.shard_count, b.done, b.cell_count, failed);

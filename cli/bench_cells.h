@@ -53,7 +53,8 @@ int ssg_bench_file_fnv1a(const char *path, uint64_t *hash, char *why, size_t why
    file's bytes are hashed too, so an edited graph is another sweep); 0 with a message
    when the graph cannot be read. */
 int ssg_bench_define(struct bench *b);
-/* "I/N" into b->shard_index and b->shard_count; 0 with a message naming what is wrong. */
+/* "I/N" into b->shard_index and b->shard_count; 0 with a message naming what is wrong,
+   also when N is more than b->cell_count (set first): such a shard would hold no cell. */
 int ssg_bench_parse_shard(struct bench *b, const char *text);
 
 static inline const char *ssg_bench_value(const struct bench *b, const struct cell *c, int k)
@@ -75,8 +76,14 @@ enum ssg_err ssg_bench_run_compared(const struct bench *b, const struct ssg_over
                                     int frames, struct ssg_run_stats *stats,
                                     struct ssg_diags *d);
 
-/* The ms a table shows for a cell: the --time node's average, else the frame's. */
-double ssg_bench_shown_ms(const struct bench *b, const struct cell *c);
+/* A time as the tables and plots show it, ms: the median of a cell's runs (its steady
+   rate: the mean carries the first run's one-off costs), the fastest and the slowest. */
+struct ssg_bench_ms {
+    double median, min, max;
+};
+
+/* The time shown for a cell: the --time node's, else the frame's. */
+struct ssg_bench_ms ssg_bench_shown_ms(const struct bench *b, const struct cell *c);
 
 /* After each cell: bench.csv, bench.json and bench.md rewritten whole, each through a
  * temporary and a rename (files.h), so an interrupted bench keeps every finished cell and

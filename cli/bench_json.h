@@ -7,8 +7,10 @@
 
 #include "bench.h"
 
-/* One cell as bench.json records it; stats holds frames, frame times, the metrics in their
-   order and every node's name and average ms (ownership: ssg_run_stats_free). */
+/* One cell as bench.json records it; stats holds frames, frame times (median, min, max,
+   average), the metrics in their order and every node's name and median, min, max and
+   average ms (a bench.json of an older ssgraph has only averages: they stand for the
+   median, min and max it lacks) (ownership: ssg_run_stats_free). */
 struct ssg_bench_json_cell {
     int index;
     int ok;

@@ -56,6 +56,12 @@ double number(const ordered_json &obj, const char *key)
     return v.get<double>();
 }
 
+/* A number a bench.json of an older ssgraph lacks: `fallback` then. */
+double number_or(const ordered_json &obj, const char *key, double fallback)
+{
+    return obj.contains(key) ? number(obj, key) : fallback;
+}
+
 /* A metric: a number, or "inf", "-inf", "nan" (JSON has no infinity). */
 double metric_value(const ordered_json &v)
 {
@@ -96,6 +102,7 @@ void read_stats(const ordered_json &c, ssg_run_stats *st)
     st->frame_avg_ms = number(c, "frame_avg_ms");
     st->frame_min_ms = number(c, "frame_min_ms");
     st->frame_max_ms = number(c, "frame_max_ms");
+    st->frame_median_ms = number_or(c, "frame_median_ms", st->frame_avg_ms);
     const ordered_json &metrics = field(c, "metrics"), &nodes = field(c, "node_ms");
     if (!metrics.is_object() || !nodes.is_object())
         throw bad_file{"a cell's \"metrics\" or \"node_ms\" is not an object"};
@@ -128,6 +135,33 @@ void read_stats(const ordered_json &c, ssg_run_stats *st)
     }
 }
 
+/* Each node's median, fastest and slowest run, listed by name as node_ms lists its average;
+   a bench.json of an older ssgraph has only the average, which then stands for each. */
+void read_node_times(const ordered_json &c, ssg_run_stats *st)
+{
+    static const struct {
+        const char *key;
+        double ssg_run_node::*field;
+    } times[] = {{"node_median_ms", &ssg_run_node::median_ms},
+                 {"node_min_ms", &ssg_run_node::min_ms},
+                 {"node_max_ms", &ssg_run_node::max_ms}};
+    for (const auto &t : times) {
+        for (int i = 0; i < st->node_count; i++)
+            st->nodes[i].*t.field = st->nodes[i].avg_ms;
+        if (!c.contains(t.key))
+            continue;
+        const ordered_json &obj = c.at(t.key);
+        if (!obj.is_object())
+            throw bad_file{std::string("a cell's \"") + t.key + "\" is not an object"};
+        for (int i = 0; i < st->node_count; i++) {
+            auto it = obj.find(st->nodes[i].name);
+            if (it == obj.end() || !it->is_number())
+                throw bad_file{std::string("a cell's \"") + t.key + "\" lacks a node of node_ms"};
+            st->nodes[i].*t.field = it->get<double>();
+        }
+    }
+}
+
 void read_cells(const ordered_json &doc, ssg_bench_json *out)
 {
     const ordered_json &cells = field(doc, "cells");
@@ -145,6 +179,7 @@ void read_cells(const ordered_json &doc, ssg_bench_json *out)
         cell->ok = status == "ok";
         copy_text(c, "error", cell->error, sizeof cell->error);
         read_stats(c, &cell->stats);
+        read_node_times(c, &cell->stats);
     }
 }
 

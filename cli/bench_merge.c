@@ -50,6 +50,20 @@ static void free_shards(struct shards *s)
     free(s->files);
 }
 
+/* The cells a file's sweeps make must be its cells_total: the tables index the cells by
+   the sweeps' values (a forged or damaged file could say otherwise). */
+static int sweeps_fit(const char *dir, const struct ssg_bench_json *j)
+{
+    long long cells = 1;
+    for (int k = 0; k < j->sweep_count; k++)
+        cells *= j->value_count[k];
+    if (cells == j->cells_total)
+        return 1;
+    fprintf(stderr, "ssgraph: error: bench --merge: %s/bench.json: its sweeps make %lld cells, "
+            "not its cells_total %d\n", dir, cells, j->cells_total);
+    return 0;
+}
+
 /* Same definition, shard count and cell count as the first; no shard index twice. */
 static int same_sweep(const struct shards *s)
 {
@@ -212,7 +226,8 @@ int ssg_bench_merge(const struct ssg_bench_request *given)
     s.files = calloc((size_t)s.count, sizeof *s.files);
     int ok = s.files != NULL;
     for (int i = 0; ok && i < s.count; i++)
-        ok = (s.files[i] = malloc(sizeof *s.files[i])) && read_shard(s.dirs[i], s.files[i]);
+        ok = (s.files[i] = calloc(1, sizeof *s.files[i])) && read_shard(s.dirs[i], s.files[i]) &&
+             sweeps_fit(s.dirs[i], s.files[i]);
     int *owner = ok ? malloc((size_t)s.files[0]->cells_total * sizeof *owner) : NULL;
     ok = ok && owner && same_sweep(&s) && covers_once(&s, owner);
     struct bench b = {0};

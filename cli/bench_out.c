@@ -1,6 +1,10 @@
 /* bench_out.c - what `ssgraph bench` writes of its cells (bench_cells.h): bench.csv,
- * bench.json and bench.md after every cell, and the gnuplot pictures at the end. */
+ * bench.json and bench.md after every cell, and the gnuplot pictures at the end. A time
+ * shown is the median of a cell's runs with the fastest and slowest beside it: the mean
+ * carries the first run's one-off costs (fresh memory), the median is the steady rate. */
 #include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,43 +26,95 @@ static void metrics_text(const struct cell *c, char *buf, size_t len)
     }
 }
 
+/* Each node's times, as the CSV's columns and the JSON's objects of these names carry them
+   ("ao=1.2;g=0.4"); node_ms is the average, as it was before the median came. */
+static const struct {
+    const char *name;
+    size_t offset; /* of the double in struct ssg_run_node */
+} node_times[] = {
+    {"node_median_ms", offsetof(struct ssg_run_node, median_ms)},
+    {"node_min_ms", offsetof(struct ssg_run_node, min_ms)},
+    {"node_max_ms", offsetof(struct ssg_run_node, max_ms)},
+    {"node_ms", offsetof(struct ssg_run_node, avg_ms)},
+};
+enum { NODE_TIMES = sizeof node_times / sizeof node_times[0] };
+
+static double node_time(const struct ssg_run_node *n, int t)
+{
+    double v;
+    memcpy(&v, (const char *)n + node_times[t].offset, sizeof v);
+    return v;
+}
+
 static void csv_header(const struct bench *b, FILE *f)
 {
     fputs("cell", f);
-    for (int k = 0; k < b->n; k++)
-        fprintf(f, ",%s", b->sweeps[k].key);
-    fputs(",status,frames,frame_avg_ms,frame_min_ms,frame_max_ms,node_ms,metrics,error\n", f);
+    for (int k = 0; k < b->n; k++) {
+        fputc(',', f);
+        ssg_csv_field(f, b->sweeps[k].key);
+    }
+    fputs(",status,frames,frame_median_ms,frame_min_ms,frame_max_ms,frame_avg_ms", f);
+    for (int t = 0; t < NODE_TIMES; t++)
+        fprintf(f, ",%s", node_times[t].name);
+    fputs(",metrics,error\n", f);
 }
 
-/* "g=1.2;ao=0.7": every node's average ms of a cell. */
-static void nodes_text(const struct cell *c, char *buf, size_t len)
+/* "g=1.2;ao=0.7": every node's time t (node_times) of a cell. */
+static void nodes_text(const struct cell *c, int t, char *buf, size_t len)
 {
     size_t used = 0;
     buf[0] = 0;
     for (int i = 0; i < c->stats.node_count && used < len; i++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s=%.4f", i ? ";" : "",
-                                 c->stats.nodes[i].name, c->stats.nodes[i].avg_ms);
+                                 c->stats.nodes[i].name, node_time(&c->stats.nodes[i], t));
 }
 
 static void csv_row(const struct bench *b, int ci, FILE *f)
 {
     const struct cell *c = &b->cells[ci];
-    char metrics[2048], nodes[2048];
-    metrics_text(c, metrics, sizeof metrics);
-    nodes_text(c, nodes, sizeof nodes);
+    char text[2048];
     fprintf(f, "%d", ci);
     for (int k = 0; k < b->n; k++) {
         fputc(',', f);
         ssg_csv_field(f, ssg_bench_value(b, c, k));
     }
-    fprintf(f, ",%s,%d,%.4f,%.4f,%.4f,", c->ok ? "ok" : "error", c->stats.frames,
-            c->stats.frame_avg_ms, c->stats.frame_min_ms, c->stats.frame_max_ms);
-    ssg_csv_field(f, nodes);
+    fprintf(f, ",%s,%d,%.4f,%.4f,%.4f,%.4f", c->ok ? "ok" : "error", c->stats.frames,
+            c->stats.frame_median_ms, c->stats.frame_min_ms, c->stats.frame_max_ms,
+            c->stats.frame_avg_ms);
+    for (int t = 0; t < NODE_TIMES; t++) {
+        nodes_text(c, t, text, sizeof text);
+        fputc(',', f);
+        ssg_csv_field(f, text);
+    }
+    metrics_text(c, text, sizeof text);
     fputc(',', f);
-    ssg_csv_field(f, metrics);
+    ssg_csv_field(f, text);
     fputc(',', f);
     ssg_csv_field(f, c->ok ? "" : c->error);
     fputc('\n', f);
+}
+
+/* A JSON key "node.metric" (names from a merged shard may hold anything: escaped). */
+static void json_metric_key(FILE *f, const struct ssg_run_metric *m)
+{
+    char key[sizeof m->node + sizeof m->name + 1];
+    snprintf(key, sizeof key, "%s.%s", m->node, m->name);
+    ssg_json_string(f, key);
+    fputs(": ", f);
+}
+
+/* The metrics, exact, so that a merge writes the same tables; JSON has no infinity (the
+   PSNR of identical images): "inf", "-inf" and "nan" are strings. */
+static void json_metrics(const struct cell *c, FILE *f)
+{
+    fputs("\"metrics\": {", f);
+    for (int i = 0; i < c->stats.metric_count; i++) {
+        const struct ssg_run_metric *m = &c->stats.metrics[i];
+        fputs(i ? ", " : "", f);
+        json_metric_key(f, m);
+        fprintf(f, isfinite(m->value) ? "%.17g" : "\"%g\"", m->value);
+    }
+    fputs("}", f);
 }
 
 static void json_cell(const struct bench *b, int ci, FILE *f)
@@ -71,22 +127,21 @@ static void json_cell(const struct bench *b, int ci, FILE *f)
         fputs(": ", f);
         ssg_json_string(f, ssg_bench_value(b, c, k));
     }
-    fprintf(f, "}, \"status\": \"%s\", \"frames\": %d, \"frame_avg_ms\": %.6g, "
-            "\"frame_min_ms\": %.6g, \"frame_max_ms\": %.6g, \"metrics\": {",
-            c->ok ? "ok" : "error", c->stats.frames, c->stats.frame_avg_ms,
-            c->stats.frame_min_ms, c->stats.frame_max_ms);
-    for (int i = 0; i < c->stats.metric_count; i++) {
-        const struct ssg_run_metric *m = &c->stats.metrics[i];
-        fprintf(f, "%s\"%s.%s\": ", i ? ", " : "", m->node, m->name);
-        /* exact, so that a merge writes the same tables; JSON has no infinity (the PSNR of
-           identical images): "inf", "-inf" and "nan" are strings */
-        fprintf(f, isfinite(m->value) ? "%.17g" : "\"%g\"", m->value);
+    fprintf(f, "}, \"status\": \"%s\", \"frames\": %d, \"frame_median_ms\": %.6g, "
+            "\"frame_min_ms\": %.6g, \"frame_max_ms\": %.6g, \"frame_avg_ms\": %.6g, ",
+            c->ok ? "ok" : "error", c->stats.frames, c->stats.frame_median_ms,
+            c->stats.frame_min_ms, c->stats.frame_max_ms, c->stats.frame_avg_ms);
+    json_metrics(c, f);
+    for (int t = 0; t < NODE_TIMES; t++) {
+        fprintf(f, ", \"%s\": {", node_times[t].name);
+        for (int i = 0; i < c->stats.node_count; i++) {
+            fputs(i ? ", " : "", f);
+            ssg_json_string(f, c->stats.nodes[i].name);
+            fprintf(f, ": %.6g", node_time(&c->stats.nodes[i], t));
+        }
+        fputs("}", f);
     }
-    fputs("}, \"node_ms\": {", f);
-    for (int i = 0; i < c->stats.node_count; i++)
-        fprintf(f, "%s\"%s\": %.6g", i ? ", " : "", c->stats.nodes[i].name,
-                c->stats.nodes[i].avg_ms);
-    fputs("}, \"error\": ", f);
+    fputs(", \"error\": ", f);
     ssg_json_string(f, c->ok ? "" : c->error);
     fputs("}", f);
 }
@@ -128,25 +183,56 @@ static void write_json(FILE *f, const void *user)
     fputs(written ? "\n  ]\n}\n" : "  ]\n}\n", f);
 }
 
-double ssg_bench_shown_ms(const struct bench *b, const struct cell *c)
+struct ssg_bench_ms ssg_bench_shown_ms(const struct bench *b, const struct cell *c)
 {
-    for (int i = 0; b->req->time_node && i < c->stats.node_count; i++)
-        if (!strcmp(c->stats.nodes[i].name, b->req->time_node))
-            return c->stats.nodes[i].avg_ms;
-    return c->stats.frame_avg_ms;
+    for (int i = 0; b->req->time_node && i < c->stats.node_count; i++) {
+        const struct ssg_run_node *n = &c->stats.nodes[i];
+        if (!strcmp(n->name, b->req->time_node))
+            return (struct ssg_bench_ms){n->median_ms, n->min_ms, n->max_ms};
+    }
+    return (struct ssg_bench_ms){c->stats.frame_median_ms, c->stats.frame_min_ms,
+                                 c->stats.frame_max_ms};
 }
 
-static double error_of(const struct bench *b, const struct cell *c);
+/* The metric the tables show and the Pareto plot draws: --error, bench_reference.rmse with
+   --reference, else the first metric of the first finished cell that reported one (named
+   in the table and on the axis, so a reader knows which); "" when there is none. */
+static void error_name(const struct bench *b, char *name, size_t len)
+{
+    const struct ssg_bench_request *q = b->req;
+    snprintf(name, len, "%s", q->error_metric ? q->error_metric
+                              : q->reference  ? "bench_reference.rmse"
+                                              : "");
+    for (int ci = 0; !name[0] && ci < b->cell_count; ci++) {
+        const struct cell *c = &b->cells[ci];
+        if (c->ran && c->ok && c->stats.metric_count)
+            snprintf(name, len, "%s.%s", c->stats.metrics[0].node, c->stats.metrics[0].name);
+    }
+}
 
-/* One Markdown cell: "12.34 ms" plus the error metric (error_of), or the failure. */
-static void md_cell(const struct bench *b, const struct cell *c, FILE *f)
+/* The cell's value of the metric `name` (error_name); NAN when it has none. */
+static double error_of(const struct cell *c, const char *name)
+{
+    for (int i = 0; name[0] && i < c->stats.metric_count; i++) {
+        const struct ssg_run_metric *m = &c->stats.metrics[i];
+        size_t len = strlen(m->node);
+        if (!strncmp(name, m->node, len) && name[len] == '.' && !strcmp(name + len + 1, m->name))
+            return m->value;
+    }
+    return NAN;
+}
+
+/* One Markdown cell: "12.34 [12.10-13.02] ms" (median [fastest-slowest], as the progress
+   lines write it) plus the error metric, or the failure. */
+static void md_cell(const struct bench *b, const struct cell *c, const char *err_name, FILE *f)
 {
     if (!c->ok) {
         fputs(" failed |", f);
         return;
     }
-    fprintf(f, " %.2f ms", ssg_bench_shown_ms(b, c));
-    double err = error_of(b, c);
+    struct ssg_bench_ms ms = ssg_bench_shown_ms(b, c);
+    fprintf(f, " %.2f [%.2f-%.2f] ms", ms.median, ms.min, ms.max);
+    double err = error_of(c, err_name);
     if (!isnan(err))
         fprintf(f, ", %.4g", err);
     fputs(" |", f);
@@ -174,12 +260,12 @@ static void write_md(FILE *f, const void *user)
     const struct bench *b = user;
     int rows = b->n ? b->sweeps[0].count : 1, cols = b->n > 1 ? b->sweeps[1].count : 1;
     int tables = b->cell_count / (rows * cols);
-    const char *err = b->req->error_metric ? b->req->error_metric
-                      : b->req->reference ? "bench_reference.rmse"
-                                          : "the first metric a compare node reported";
-    fprintf(f, "# ssgraph bench %s\n\nms %s%s (average over each cell's frames) and %s, if "
-            "any.\n", b->req->graph, b->req->time_node ? "of node " : "per frame",
-            b->req->time_node ? b->req->time_node : "", err);
+    char err[200];
+    error_name(b, err, sizeof err);
+    fprintf(f, "# ssgraph bench %s\n\nms %s%s (the median of each cell's frames [fastest-"
+            "slowest])%s%s.\n", b->req->graph,
+            b->req->time_node ? "of node " : "per frame",
+            b->req->time_node ? b->req->time_node : "", err[0] ? " and " : "", err);
     for (int t = 0; t < tables; t++) {
         md_title(b, t, f);
         fprintf(f, "\n| %s |", b->n ? b->sweeps[0].key : "graph");
@@ -194,7 +280,7 @@ static void write_md(FILE *f, const void *user)
             for (int col = 0; col < cols; col++) {
                 int ci = (r * cols + col) * tables + t;
                 if (b->cells[ci].ran)
-                    md_cell(b, &b->cells[ci], f);
+                    md_cell(b, &b->cells[ci], err, f);
                 else
                     fputs(" |", f);
             }
@@ -224,20 +310,6 @@ enum ssg_err ssg_bench_save(const struct bench *b, struct ssg_diags *d)
     return e ? e : ssg_write_text_file(path, "bench table", write_md, b, d);
 }
 
-/* The cell's value of --error (or its first metric); NAN when it has none. */
-static double error_of(const struct bench *b, const struct cell *c)
-{
-    for (int i = 0; i < c->stats.metric_count; i++) {
-        char key[100];
-        snprintf(key, sizeof key, "%s.%s", c->stats.metrics[i].node, c->stats.metrics[i].name);
-        const char *want = b->req->error_metric ? b->req->error_metric
-                           : b->req->reference ? "bench_reference.rmse" : NULL;
-        if (!want || !strcmp(key, want))
-            return c->stats.metrics[i].value;
-    }
-    return NAN;
-}
-
 static int by_series(const void *a, const void *b)
 {
     const struct ssg_plot_point *p = a, *q = b;
@@ -245,72 +317,106 @@ static int by_series(const void *a, const void *b)
     return s ? s : (p->x > q->x) - (p->x < q->x);
 }
 
-/* The successful cells as plot points: x the first sweep's value (must be a number),
-   series the other sweeps' values. */
-static int plot_points(const struct bench *b, struct ssg_plot_point *pts, char (*series)[300])
+/* Appends printf text at *used in buf (size bytes, at least 4); text that does not fit is
+   cut and the whole ends in "...", so a cut name reads as cut. */
+static void append(char *buf, size_t size, size_t *used, const char *fmt, ...)
 {
-    int n = 0;
-    for (int ci = 0; ci < b->cell_count; ci++) {
-        const struct cell *c = &b->cells[ci];
-        char *end;
-        if (!c->ran)
-            continue;
-        double x = b->n ? strtod(ssg_bench_value(b, c, 0), &end) : ci;
-        if (!c->ok || (b->n && *end))
-            continue;
-        size_t used = 0;
-        series[n][0] = 0;
-        for (int k = 1; k < b->n; k++)
-            used += (size_t)snprintf(series[n] + used, 300 - used, "%s%s=%s", k > 1 ? " " : "",
-                                     b->sweeps[k].key, ssg_bench_value(b, c, k));
-        if (b->n < 2)
-            snprintf(series[n], 300, "%s", b->req->time_node ? b->req->time_node : "frame");
-        pts[n] = (struct ssg_plot_point){
-            .x = x, .ms = ssg_bench_shown_ms(b, c), .err = error_of(b, c), .series = series[n]};
-        used = 0;
-        for (int k = 0; k < b->n; k++)
-            used += (size_t)snprintf(pts[n].label + used, sizeof pts[n].label - used, "%s%s",
-                                     k ? "," : "", ssg_bench_value(b, c, k));
-        n++;
+    if (*used + 1 >= size)
+        return; /* full (and already marked) */
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(buf + *used, size - *used, fmt, ap);
+    va_end(ap);
+    if (n < 0)
+        buf[*used] = '\0';
+    else if ((size_t)n < size - *used)
+        *used += (size_t)n;
+    else {
+        *used = size - 1;
+        memcpy(buf + size - 4, "...", 4);
     }
-    return n;
+}
+
+enum { SERIES_MAX = 300 }; /* bytes of a series name, "..." when cut */
+
+/* A successful cell as a plot point: x the first sweep's value (must be a number), series
+   the other sweeps' values, label every value; 0 when it is none. */
+static int plot_point(const struct bench *b, int ci, const char *err_name,
+                      struct ssg_plot_point *p, char *series)
+{
+    const struct cell *c = &b->cells[ci];
+    char *end = NULL;
+    if (!c->ran || !c->ok)
+        return 0;
+    double x = b->n ? strtod(ssg_bench_value(b, c, 0), &end) : ci;
+    if (end && *end)
+        return 0;
+    size_t used = 0;
+    series[0] = '\0';
+    for (int k = 1; k < b->n; k++)
+        append(series, SERIES_MAX, &used, "%s%s=%s", k > 1 ? " " : "", b->sweeps[k].key,
+               ssg_bench_value(b, c, k));
+    if (b->n < 2)
+        append(series, SERIES_MAX, &used, "%s", b->req->time_node ? b->req->time_node
+                                                                  : "frame");
+    struct ssg_bench_ms ms = ssg_bench_shown_ms(b, c);
+    *p = (struct ssg_plot_point){.x = x, .ms = ms.median, .lo = ms.min, .hi = ms.max,
+                                 .err = error_of(c, err_name), .series = series};
+    used = 0;
+    for (int k = 0; k < b->n; k++)
+        append(p->label, sizeof p->label, &used, "%s%s", k ? "," : "", ssg_bench_value(b, c, k));
+    return 1;
+}
+
+/* bench_ms.png, and bench_pareto.png when cells have the error metric (err_name, named on
+   its axis); *rc becomes 1 when one fails. */
+static void draw_both(const struct bench *b, const char *err_name, struct ssg_plot_point *pts,
+                      int n, int *rc)
+{
+    const char *what = b->req->time_node ? b->req->time_node : "frame";
+    char title[600], ms_label[300];
+    snprintf(title, sizeof title, "%s: ms against %s", b->req->graph,
+             b->n ? b->sweeps[0].key : "cell");
+    snprintf(ms_label, sizeof ms_label, "ms (%s, median; bars: fastest to slowest)", what);
+    int ms_rc = ssg_plot_ms(b->req->out_dir, "bench_ms", title,
+                            b->n ? b->sweeps[0].key : "cell", ms_label, pts, n);
+    *rc |= ms_rc;
+    if (!ms_rc && !b->req->quiet)
+        printf("wrote %s/bench_ms.png\n", b->req->out_dir);
+    int errors = 0;
+    for (int i = 0; i < n; i++)
+        errors += !isnan(pts[i].err);
+    if (!errors) {
+        if (!b->req->quiet)
+            fprintf(stderr, "bench: no %s in the cells: no Pareto plot (add a compare node)\n",
+                    err_name[0] ? err_name : "metric");
+        return;
+    }
+    snprintf(title, sizeof title, "%s: error against ms (Pareto view)", b->req->graph);
+    snprintf(ms_label, sizeof ms_label, "ms (%s, median)", what);
+    int pareto_rc = ssg_plot_pareto(b->req->out_dir, "bench_pareto", title, ms_label,
+                                    err_name, pts, n);
+    *rc |= pareto_rc;
+    if (!pareto_rc && !b->req->quiet)
+        printf("wrote %s/bench_pareto.png\n", b->req->out_dir);
 }
 
 int ssg_bench_draw_plots(const struct bench *b)
 {
     struct ssg_plot_point *pts = calloc((size_t)b->cell_count + 1, sizeof *pts);
-    char(*series)[300] = calloc((size_t)b->cell_count + 1, sizeof *series);
-    int n = pts && series ? plot_points(b, pts, series) : 0, rc = 0;
+    char *series = calloc((size_t)b->cell_count + 1, SERIES_MAX);
+    char err_name[200];
+    error_name(b, err_name, sizeof err_name);
+    int n = 0, rc = 0;
+    for (int ci = 0; pts && series && ci < b->cell_count; ci++)
+        n += plot_point(b, ci, err_name, &pts[n], series + (size_t)n * SERIES_MAX);
     if (n == 0) {
         fprintf(stderr, "ssgraph: error: nothing to plot (no finished cell, or the first "
                 "sweep's values are not numbers)\n");
         rc = 1;
     } else {
         qsort(pts, (size_t)n, sizeof *pts, by_series);
-        char title[600], ylabel[200];
-        snprintf(title, sizeof title, "%s: ms against %s", b->req->graph,
-                 b->n ? b->sweeps[0].key : "cell");
-        snprintf(ylabel, sizeof ylabel, "ms (%s)", b->req->time_node ? b->req->time_node
-                                                                     : "frame");
-        int ms_rc = ssg_plot_ms(b->req->out_dir, "bench_ms", title,
-                                b->n ? b->sweeps[0].key : "cell", ylabel, pts, n);
-        rc |= ms_rc;
-        if (!ms_rc && !b->req->quiet)
-            printf("wrote %s/bench_ms.png\n", b->req->out_dir);
-        int errors = 0;
-        for (int i = 0; i < n; i++)
-            errors += !isnan(pts[i].err);
-        snprintf(title, sizeof title, "%s: error against ms (Pareto view)", b->req->graph);
-        int pareto_rc = errors ? ssg_plot_pareto(b->req->out_dir, "bench_pareto", title,
-                                                 b->req->error_metric ? b->req->error_metric
-                                                                      : "first metric", pts, n)
-                               : 0;
-        rc |= pareto_rc;
-        if (errors && !pareto_rc && !b->req->quiet)
-            printf("wrote %s/bench_pareto.png\n", b->req->out_dir);
-        else if (!errors && !b->req->quiet)
-            fprintf(stderr, "bench: no %s in the cells: no Pareto plot (add a compare node)\n",
-                    b->req->error_metric ? b->req->error_metric : "metric");
+        draw_both(b, err_name, pts, n, &rc);
     }
     free(pts);
     free(series);

@@ -128,6 +128,13 @@ int ssg_bench_parse_shard(struct bench *b, const char *text)
                 "numbered from 0)\n", text, n - 1);
         return 0;
     }
+    /* A shard with no cell would write empty tables that look like a lost run: a cluster
+       job asking for more tasks than there are cells is a mistake to name at once. */
+    if (n > b->cell_count) {
+        fprintf(stderr, "ssgraph: error: --shard '%s': %ld shards for %d cells (at most %d "
+                "shards: each must hold a cell)\n", text, n, b->cell_count, b->cell_count);
+        return 0;
+    }
     b->shard_index = (int)i;
     b->shard_count = (int)n;
     return 1;

@@ -12,7 +12,7 @@ SSG_GL_PLATFORM=nope expect_exit 1 "6 cells, 2 failed" "$BIN" bench graphs/ssao.
     --size 48x32 --frames 2 --sweep k.count=4,8 --sweep ao.backend=cpu,gl,cpu --time ao \
     --out "$TMP/b"
 python3 - "$TMP/b" <<'PY' || fail "bench files disagree with the cross product"
-import csv, itertools, json, sys
+import csv, itertools, json, re, sys
 d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/bench.csv")))
 bench = json.load(open(d + "/bench.json"))
@@ -35,6 +35,20 @@ md = open(d + "/bench.md").read()
 assert md.startswith("# ssgraph bench graphs/ssao.graph\n"), md
 assert "| k.count | ao.backend = cpu | ao.backend = gl | ao.backend = cpu |" in md, md
 assert md.count("failed") == 2, md
+# the time shown is the median with the fastest and slowest beside it: in every table, the
+# JSON and bench.md (the --time node's)
+assert "ms of node ao (the median of each cell's frames [fastest-slowest])" in md, md
+node = lambda r, col: float(r[col].split("ao=")[1].split(";")[0])
+for r, c in zip(rows, cells):
+    if r["status"] != "ok":
+        continue
+    lo, med, hi = (float(r["frame_" + k + "_ms"]) for k in ("min", "median", "max"))
+    assert lo <= med <= hi and abs(med - c["frame_median_ms"]) < 1e-3, (r, c)
+    lo, med, hi = (node(r, "node_" + k + "_ms") for k in ("min", "median", "max"))
+    assert lo <= med <= hi and abs(med - c["node_median_ms"]["ao"]) < 1e-3, (r, c)
+    assert c["node_min_ms"]["ao"] <= c["node_ms"]["ao"] <= c["node_max_ms"]["ao"], c
+    shown = [tuple(map(float, m)) for m in re.findall(r"([0-9.]+) \[([0-9.]+)-([0-9.]+)\] ms", md)]
+    assert any(max(abs(a - b) for a, b in zip(t, (med, lo, hi))) < 0.006 for t in shown), md
 PY
 
 # Sweep keys and values are checked against the graph before the first cell: nothing runs,

@@ -29,14 +29,14 @@ exr=$(ls "$CACHE"/*.exr); key=${exr%.exr}.key
 stamp=$(stat -c %y "$exr")
 "$BIN" bench "${ARGS[@]}" --out "$TMP/second" || fail "the second bench failed"
 [ "$(stat -c %y "$exr")" = "$stamp" ] || fail "the second bench rendered the reference again"
-cmp -s <(cut -d, -f1-5,10 "$TMP/first/bench.csv") <(cut -d, -f1-5,10 "$TMP/second/bench.csv") \
+cmp -s <(cut -d, -f1-5,14 "$TMP/first/bench.csv") <(cut -d, -f1-5,14 "$TMP/second/bench.csv") \
     || fail "the cached reference gave other metrics"
 
 # corrupt pixels and a stale key are not trusted: rendered again, same metrics
 printf 'garbage' | dd of="$exr" bs=1 seek=400 conv=notrunc status=none
 "$BIN" bench "${ARGS[@]}" --out "$TMP/corrupt" || fail "bench over a corrupt cache failed"
 [ "$(stat -c %y "$exr")" != "$stamp" ] || fail "a corrupt cached reference was used"
-cmp -s <(cut -d, -f1-5,10 "$TMP/first/bench.csv") <(cut -d, -f1-5,10 "$TMP/corrupt/bench.csv") \
+cmp -s <(cut -d, -f1-5,14 "$TMP/first/bench.csv") <(cut -d, -f1-5,14 "$TMP/corrupt/bench.csv") \
     || fail "a corrupt cache changed the metrics"
 sed -i '1s/.*/ssgraph 0.0.0 bench reference/' "$key"
 stamp=$(stat -c %y "$exr")

@@ -25,7 +25,8 @@ def rows(d):
 full, merged = rows(t + "/full"), rows(t + "/merged")
 assert len(full) == 8 and full == merged, (full, merged)
 assert all("c_ssao.rmse=" in r[6] for r in full)
-timing = ("frame_avg_ms", "frame_min_ms", "frame_max_ms", "node_ms")
+timing = ("frame_median_ms", "frame_min_ms", "frame_max_ms", "frame_avg_ms", "node_median_ms",
+          "node_min_ms", "node_max_ms", "node_ms")
 def cells(d):
     j = json.load(open(d + "/bench.json"))
     return j, [{k: v for k, v in c.items() if k not in timing} for c in j["cells"]]
@@ -33,7 +34,7 @@ def cells(d):
 assert cf == cm
 assert {k: v for k, v in jf.items() if k != "cells"} == {k: v for k, v in jm.items() if k != "cells"}
 assert jm["shard"] == {"index": 0, "count": 1} and jm["cells_total"] == 8
-strip = lambda p: re.sub(r"[0-9.]+ ms", "ms", open(p).read())
+strip = lambda p: re.sub(r"[0-9.]+ \[[0-9.]+-[0-9.]+\] ms", "ms", open(p).read())
 assert strip(t + "/full/bench.md") == strip(t + "/merged/bench.md")
 s = json.load(open(t + "/shard1/bench.json"))
 assert s["shard"] == {"index": 1, "count": 4} and [c["cell"] for c in s["cells"]] == [1, 5]
@@ -50,6 +51,11 @@ done
 expect_exit 1 "--shard '0/0': N, the number of shards, must be 1" "$BIN" bench "${SWEEP[@]}" \
     --shard 0/0 --out "$TMP/bad"
 expect_exit 1 "--shard expects I/N" "$BIN" bench "${SWEEP[@]}" --shard 1 --out "$TMP/bad"
+# more shards than cells: refused before anything runs (one would hold no cell), both named
+for spec in 8/9 0/9; do
+    expect_exit 1 "--shard '$spec': 9 shards for 8 cells" "$BIN" bench "${SWEEP[@]}" \
+        --shard "$spec" --out "$TMP/bad"
+done
 expect_exit 1 "cells missing: 3 \(shard 3/4\), 7 \(shard 3/4\)$" "$BIN" bench \
     --merge "$TMP/shard0" "$TMP/shard1" "$TMP/shard2" --out "$TMP/bad"
 expect_exit 1 "^  run shard 3/4 \(--shard I/N\) and merge again" "$BIN" bench --merge \
@@ -66,5 +72,24 @@ expect_exit 1 "broken/bench.json: not JSON" "$BIN" bench --merge "$TMP/shard0" "
 expect_exit 1 "nothing/bench.json: cannot open" "$BIN" bench --merge "$TMP/shard0" \
     "$TMP/nothing" --out "$TMP/bad"
 [ ! -e "$TMP/bad" ] || fail "a refused bench or merge wrote $TMP/bad"
+# a shard written before the median came (no frame_median_ms, node_median_ms, ...) still
+# merges: its average stands for them
+mkdir -p "$TMP/old3"
+python3 - "$TMP" <<'PY' || fail "could not write an old-style shard"
+import json, sys
+j = json.load(open(sys.argv[1] + "/shard3/bench.json"))
+for c in j["cells"]:
+    for k in ("frame_median_ms", "node_median_ms", "node_min_ms", "node_max_ms"):
+        del c[k]
+json.dump(j, open(sys.argv[1] + "/old3/bench.json", "w"))
+PY
+expect_exit 0 "merged 4 shards: 8 cells, 0 failed" "$BIN" bench --merge "$TMP/shard0" \
+    "$TMP/shard1" "$TMP/shard2" "$TMP/old3" --out "$TMP/oldmerged"
+python3 - "$TMP" <<'PY' || fail "an old-style shard's times were not read back"
+import json, sys
+j = json.load(open(sys.argv[1] + "/oldmerged/bench.json"))
+c = [c for c in j["cells"] if c["cell"] == 3][0]
+assert c["frame_median_ms"] == c["frame_avg_ms"] and c["node_median_ms"] == c["node_ms"], c
+PY
 expect_exit 2 "it takes no --sweep or --shard" "$BIN" bench --merge --shard 0/2 "$TMP/shard0"
 finish test_bench_shard
