@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_load_rules.sh - what loading a graph refuses or warns about, beyond syntax:
 #  - `set` (a set line or --set) changes what a node's call defines and never adds to it
-#    (`set out.in = x` on write used to add an EXR layer named `in`);
+#    (`set out.in = x` on write used to add an EXR layer named `in`); `add` adds a layer;
 #  - a node whose check failed is reported once: its readers add no follow-on errors;
 #  - a scene with no light and no environment: an error where the graph reads gbuffer's
 #    direct or environment light, a warning (exit 0) where it does not;
@@ -20,6 +20,23 @@ expect_exit 1 "<command line --set>.*'set' cannot add input 'nolayer'" \
     "$BIN" check graphs/ssao.graph --set out.nolayer=ao.out
 # changing a layer the call defines is still a set
 expect_exit 0 "ok" "$BIN" check graphs/ssao.graph --set out.ao_raw=b.out
+# a new layer is an `add` line; adding a name that exists, or to a node without named
+# inputs, is refused
+cat > "$TMP/add.graph" <<EOF
+include "$PWD/graphs/ssao.graph"
+add out.extra = ao.out
+EOF
+expect_exit 0 "ok" "$BIN" check "$TMP/add.graph"
+"$BIN" run "$TMP/add.graph" --size 16x12 --out "$TMP/add" --quiet || fail "add run failed"
+oiiotool --info -v "$TMP/add/ssao.exr" 2> /dev/null | grep -q "extra\.Y" \
+    || fail "the added layer is not in the EXR"
+printf 'include "%s/graphs/ssao.graph"\nadd out.ao = ao.out\nadd ao.extra = g.depth\n' "$PWD" \
+    > "$TMP/add_bad.graph"
+out=$("$BIN" check "$TMP/add_bad.graph" 2>&1)
+echo "$out" | grep -q "add_bad.graph:2:9: error: 'add' makes a new named input .*has that name already" \
+    || fail "add of an existing layer: $out"
+echo "$out" | grep -q "add_bad.graph:3:8: error: 'add' .*takes no named inputs" \
+    || fail "add to a node without named inputs: $out"
 
 # --- one mistake, one message ---
 cat > "$TMP/cascade.graph" <<EOF

@@ -87,4 +87,15 @@ int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len);
  * 0 when out of memory. */
 int ssg_graph_name_add(struct ssg_graph *g, int index);
 
+/* "ssao, hbao, ...": every node type, for a message (graph_names.c). */
+void ssg_node_names(char *buf, size_t len);
+/* Reports a key that is neither an input nor a parameter of n, listing both; returns the
+ * code (SSG_E_UNKNOWN_PARAM). */
+enum ssg_err ssg_graph_unknown_key(struct ssg_diags *diags, const struct gnode *n,
+                                   const char *key, size_t len, struct ssg_loc loc);
+/* Reports a `set` that would add a named input to n (set only changes; `add` adds),
+ * listing its inputs and named inputs; returns the code (SSG_E_UNKNOWN_PARAM). */
+enum ssg_err ssg_graph_set_adds(struct ssg_diags *diags, const struct gnode *n,
+                                const char *key, size_t len, struct ssg_loc loc);
+
 #endif

@@ -36,21 +36,13 @@ static void fail(struct builder *b, enum ssg_err e)
         b->first = e;
 }
 
-static void node_list(char *buf, size_t len)
-{
-    size_t n = 0;
-    buf[0] = 0;
-    for (int i = 0; i < ssg_node_count() && n < len; i++)
-        n += (size_t)snprintf(buf + n, len - n, "%s%s", i ? ", " : "", ssg_node_name(i));
-}
-
 static struct gnode *add_node(struct builder *b, const struct ssg_stmt *st)
 {
     struct ssg_graph *g = b->g;
     const struct ssg_node_desc *desc = ssg_node_find(st->callee, st->callee_len);
     if (!desc) {
         char names[512];
-        node_list(names, sizeof names);
+        ssg_node_names(names, sizeof names);
         ssg_diag_at(b->diags, SSG_E_UNKNOWN_NODE, st->callee_loc,
                     "unknown node '%.*s' (expected one of: %s)", (int)st->callee_len,
                     st->callee, names);
@@ -108,21 +100,6 @@ static void connect(struct builder *b, struct gconn *c, const struct ssg_value *
     c->ref = ssg_arena_strndup(&b->g->arena, ref, strlen(ref));
 }
 
-static void unknown_key(struct builder *b, const struct gnode *n, const char *key, size_t len,
-                        struct ssg_loc loc)
-{
-    char params[512], ports[256] = "";
-    size_t k = 0;
-    ssg_param_names(n->desc->params, params, sizeof params);
-    for (int i = 0; i < n->desc->input_count && k < sizeof ports; i++)
-        k += (size_t)snprintf(ports + k, sizeof ports - k, "%s%s", i ? ", " : "",
-                              n->desc->inputs[i].name);
-    ssg_diag_at(b->diags, SSG_E_UNKNOWN_PARAM, loc, "unknown parameter or input '%.*s' for "
-                "node '%s' (%s) (expected an input: %s; or a parameter: %s)", (int)len, key,
-                n->name, n->desc->name, k ? ports : "(none)", params);
-    fail(b, SSG_E_UNKNOWN_PARAM);
-}
-
 static void bind_input(struct builder *b, struct gnode *n, int port, const struct ssg_value *v)
 {
     if (v->kind != SSG_V_REF) {
@@ -152,28 +129,6 @@ static void bind_param(struct builder *b, struct gnode *n, int index, const stru
         n->param_set[index] = 1;
 }
 
-/* `set` changes what a node's call defined and never adds to it: `set out.in = x` on a
-   write node (whose first input is `image`) used to add a layer named `in` silently. */
-static void set_adds_extra(struct builder *b, const struct gnode *n, const struct ssg_arg *a)
-{
-    char layers[512] = "";
-    size_t k = 0;
-    for (int i = 0; i < n->extra_count && k < sizeof layers; i++)
-        k += (size_t)snprintf(layers + k, sizeof layers - k, "%s%s", i ? ", " : "",
-                              n->extra_names[i]);
-    char ports[256] = "";
-    k = 0;
-    for (int i = 0; i < n->desc->input_count && k < sizeof ports; i++)
-        k += (size_t)snprintf(ports + k, sizeof ports - k, "%s%s", i ? ", " : "",
-                              n->desc->inputs[i].name);
-    ssg_diag_at(b->diags, SSG_E_UNKNOWN_PARAM, a->key_loc, "'set' cannot add input '%.*s' to "
-                "node '%s' (%s): set changes what the node's call defines (expected an input: "
-                "%s; or one of its named inputs: %s); add a new one in the call itself",
-                (int)a->key_len, a->key, n->name, n->desc->name, ports[0] ? ports : "(none)",
-                layers[0] ? layers : "(none)");
-    fail(b, SSG_E_UNKNOWN_PARAM);
-}
-
 static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg *a)
 {
     for (int i = 0; i < n->extra_count; i++) {
@@ -182,8 +137,8 @@ static void bind_extra(struct builder *b, struct gnode *n, const struct ssg_arg 
             return;
         }
     }
-    if (b->in_set) {
-        set_adds_extra(b, n, a);
+    if (b->in_set) { /* set changes what the call defines and never adds to it */
+        fail(b, ssg_graph_set_adds(b->diags, n, a->key, a->key_len, a->key_loc));
         return;
     }
     if (n->extra_count == SSG_MAX_EXTRA) {
@@ -229,7 +184,7 @@ static void bind_named(struct builder *b, struct gnode *n, const struct ssg_arg 
     else if (d->extra_inputs && a->value.kind == SSG_V_REF)
         bind_extra(b, n, a);
     else
-        unknown_key(b, n, a->key, a->key_len, a->key_loc);
+        fail(b, ssg_graph_unknown_key(b->diags, n, a->key, a->key_len, a->key_loc));
 }
 
 static void bind_call(struct builder *b, struct gnode *n)
@@ -478,6 +433,28 @@ static void read_file(struct builder *b, const char *path, struct ssg_loc from)
 
 /* ---- set lines and overrides ---- */
 
+/* `add node.name = node.port`: a new named input (a layer of a write node) on top of
+   what the node's call defines; a name the node has already is refused (set changes it). */
+static void add_extra(struct builder *b, struct gnode *n, const struct ssg_arg *a)
+{
+    const struct ssg_node_desc *d = n->desc;
+    int known = ssg_port_find(d->inputs, d->input_count, a->key, a->key_len) >= 0 ||
+                ssg_param_find(d->params, a->key, a->key_len) >= 0;
+    for (int i = 0; i < n->extra_count && !known; i++)
+        known = ssg_tok_eq(a->key, a->key_len, n->extra_names[i]);
+    if (!d->extra_inputs || known || a->value.kind != SSG_V_REF) {
+        ssg_diag_at(b->diags, SSG_E_VALUE, a->key_loc, "'add' makes a new named input "
+                    "node.port: node '%s' (%s) %s", n->name, d->name,
+                    !d->extra_inputs ? "takes no named inputs (expected set, which changes "
+                                       "an input or parameter)"
+                    : known ? "has that name already (expected set, which changes it)"
+                            : "takes only port references here (expected node.port)");
+        fail(b, SSG_E_VALUE);
+        return;
+    }
+    bind_extra(b, n, a);
+}
+
 static void apply_set(struct builder *b, const struct ssg_stmt *st)
 {
     int i = ssg_graph_find(b->g, st->name, st->name_len);
@@ -486,6 +463,10 @@ static void apply_set(struct builder *b, const struct ssg_stmt *st)
                     "which is not defined (define it with %.*s = node(...))", (int)st->name_len,
                     st->name, (int)st->name_len, st->name);
         fail(b, SSG_E_UNKNOWN_NAME);
+        return;
+    }
+    if (st->adds) {
+        add_extra(b, &b->g->nodes[i], &st->args[0]);
         return;
     }
     b->in_set = 1;

@@ -272,26 +272,34 @@ static int parse_call(struct parser *ps, struct ssg_stmt *st)
     return st->args != NULL;
 }
 
-/* set NAME.MEMBER = VALUE */
+/* set NAME.MEMBER = VALUE, or add NAME.MEMBER = VALUE (st->adds) */
 static int parse_set(struct parser *ps, struct ssg_stmt *st)
 {
     st->kind = SSG_S_SET;
-    next(ps); /* set */
+    st->adds = ssg_tok_eq(peek(ps, 0)->at, peek(ps, 0)->len, "add");
+    const char *form = st->adds ? "(add node.input = node.port)"
+                                : "(set node.parameter = value)";
+    next(ps); /* set or add */
     const struct token *name = peek(ps, 0);
-    if (!expect(ps, T_IDENT, "after 'set' (set node.parameter = value)"))
+    char what[80];
+    snprintf(what, sizeof what, "after '%s' %s", st->adds ? "add" : "set", form);
+    if (!expect(ps, T_IDENT, what))
         return 0;
     st->name = name->at;
     st->name_len = name->len;
     st->name_loc = loc_of(ps, name->at);
-    if (!expect(ps, T_DOT, "after the node name (set node.parameter = value)"))
+    snprintf(what, sizeof what, "after the node name %s", form);
+    if (!expect(ps, T_DOT, what))
         return 0;
     const struct token *member = peek(ps, 0);
-    if (!expect(ps, T_IDENT, "after '.' (set node.parameter = value)"))
+    snprintf(what, sizeof what, "after '.' %s", form);
+    if (!expect(ps, T_IDENT, what))
         return 0;
     st->callee = member->at;
     st->callee_len = member->len;
     st->callee_loc = loc_of(ps, member->at);
-    if (!expect(ps, T_EQ, "after the parameter (set node.parameter = value)"))
+    snprintf(what, sizeof what, "after the parameter %s", form);
+    if (!expect(ps, T_EQ, what))
         return 0;
     struct ssg_arg arg = {.key = member->at, .key_len = member->len,
                           .key_loc = loc_of(ps, member->at)};
@@ -338,7 +346,8 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
     st->name_loc = st->loc;
     enum tok_kind after = peek(ps, 1)->kind;
     int ok;
-    if (ssg_tok_eq(t->at, t->len, "set") && after == T_IDENT) {
+    if ((ssg_tok_eq(t->at, t->len, "set") || ssg_tok_eq(t->at, t->len, "add")) &&
+        after == T_IDENT) {
         ok = parse_set(ps, st);
     } else if (after == T_EQ) {
         next(ps);

@@ -73,6 +73,8 @@ struct ssg_stmt {
        SET: one argument, keyed by the member */
     struct ssg_arg *args;
     int arg_count;
+    int adds;                  /* SET: 1 = written `add node.name = value`: a new named
+                                  input (a write layer), where `set` only changes */
 };
 
 struct ssg_file {

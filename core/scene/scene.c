@@ -158,7 +158,7 @@ static void read_statements(struct scene_loader *l, const struct ssg_file *file)
         const struct ssg_stmt *st = &file->stmts[i];
         if (st->kind == SSG_S_CALL) {
             add_entity(l, st);
-        } else if (st->kind == SSG_S_SET) {
+        } else if (st->kind == SSG_S_SET && !st->adds) {
             apply_set(l, st);
         } else {
             char names[256];
