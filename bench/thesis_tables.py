@@ -68,7 +68,8 @@ def run_method(binary, name, out, frames, stereo=False):
         rows = list(csv.DictReader(f))
     ms = {}
     for row in rows:
-        times = dict(kv.split("=") for kv in row["node_ms"].split(";"))
+        # medians: robust against a busy machine's outliers, as bench's own tables
+        times = dict(kv.split("=") for kv in row["node_median_ms"].split(";"))
         ms[(row[kernel.split("=")[0]], row[radius])] = float(times[node])
     kvals = kernel.split("=")[1].split(",")
     return [[ms[(k, r)] for r in R] for k in kvals]

@@ -218,7 +218,8 @@ compare() {    # unsharded merged: same rows, values, status, metrics; timings a
     python3 - "$1" "$2" <<'EOF'
 import csv, json, os, sys
 a, b = sys.argv[1], sys.argv[2]
-timing = ("frame_avg_ms", "frame_min_ms", "frame_max_ms", "node_ms")
+timing = ("frame_avg_ms", "frame_median_ms", "frame_min_ms", "frame_max_ms", "node_ms",
+          "node_median_ms", "node_min_ms", "node_max_ms")
 def rows(d):
     with open(os.path.join(d, "bench.csv"), newline="") as f:
         r = list(csv.reader(f))
