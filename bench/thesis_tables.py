@@ -130,7 +130,7 @@ def main():
     with open(os.path.join(args.out, "README.md"), "w") as f:
         f.write("# Thesis sections 5.1.1 and 5.2 on ssgraph\n\nms of each method's own pass at 800x600 "
                 f"on the Cornell box, ssgraph's CPU backend, {os.cpu_count()} threads "
-                f"({cpu}), average of {args.frames} frames per cell after the nodes were "
+                f"({cpu}), median of {args.frames} frames per cell after the nodes were "
                 "prepared; in brackets the thesis's ms (GeForce GTX 960, its city scene). "
                 "Made by `python3 bench/thesis_tables.py`.\n\n")
         for name, ours in results.items():
