@@ -4,13 +4,24 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "graph/profile.h"
 #include "lang/files.h"
 #include "peak.h"
 #include "report.h"
 
 enum { BAR = 30 }; /* width of the progress bar in characters */
 
-/* One frame: every node's last run, then the whole run's wall clock. */
+/* The libraries the process loaded once (graph/profile.h), each on a line of its own after
+   the nodes, so that no node is charged for them: "load  OpenImageIO module  452.10". */
+static void print_loads(FILE *f, int name_width)
+{
+    struct ssg_load l[SSG_LOADS_MAX];
+    int n = ssg_loads(l, SSG_LOADS_MAX);
+    for (int i = 0; i < n; i++)
+        fprintf(f, "%-*s %-17s %10.2f\n", name_width, "load", l[i].what, l[i].ms);
+}
+
+/* One frame: every node's last run, the one-off loads, then the whole run's wall clock. */
 static void print_timings(const struct ssg_run_stats *s, FILE *f)
 {
     fprintf(f, "%-16s %-12s %-4s %10s %10s %10s\n", "node", "type", "on", "ms", "gpu ms",
@@ -25,6 +36,7 @@ static void print_timings(const struct ssg_run_stats *s, FILE *f)
         fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s\n", n->name, n->type, n->backend, n->ms,
                 gpu, xfer);
     }
+    print_loads(f, 16);
     fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s   (%dx%d, %d threads, peak images %.1f MB)\n",
             "total", "", "", s->total_ms, "", "", s->width, s->height, s->threads,
             (double)s->peak_pool_bytes / (1024.0 * 1024.0));
@@ -86,6 +98,7 @@ static void print_profile(const struct ssg_run_stats *s, FILE *f)
         for (int i = 0; i < s->node_count; i++)
             if (in_frame(s, &s->nodes[i]) == !pass)
                 print_profile_row(s, &s->nodes[i], have_peak ? &peak : NULL, f);
+    print_loads(f, 18);
     if (have_peak)
         fprintf(f, "bound: each image read or written once against %.1f GB/s, declared flops "
                 "against %.1f GFLOP/s (%d threads; %s)\n", peak.gbps, peak.gflops,
@@ -115,6 +128,17 @@ void ssg_report_print(const struct ssg_run_stats *s, FILE *f)
     if (s->gl)
         fprintf(f, "GL: %s\n", s->gl);
     print_metrics(s, f);
+}
+
+/* "loads": the process's one-off library loads, each with its ms (graph/profile.h). */
+static void write_loads_json(FILE *f)
+{
+    struct ssg_load l[SSG_LOADS_MAX];
+    int n = ssg_loads(l, SSG_LOADS_MAX);
+    fputs("  \"loads\": [", f);
+    for (int i = 0; i < n; i++)
+        fprintf(f, "%s{\"what\": \"%s\", \"ms\": %.6g}", i ? ", " : "", l[i].what, l[i].ms);
+    fputs("]\n", f);
 }
 
 static void write_json(FILE *f, const void *user)
@@ -158,7 +182,9 @@ static void write_json(FILE *f, const void *user)
                 n->max_ms, n->median_ms, share, n->gpu_avg_ms, n->transfer_avg_ms, n->prepare_ms, n->bytes,
                 flops, r.gbps, gflops, bound, frac);
     }
-    fputs("\n  ]\n}\n", f);
+    fputs("\n  ],\n", f);
+    write_loads_json(f);
+    fputs("}\n", f);
 }
 
 enum ssg_err ssg_report_write_json(const struct ssg_run_stats *stats, const char *path,

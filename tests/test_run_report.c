@@ -1,13 +1,16 @@
 /* test_run_report.c - what a graph run reports through the public API (ssgraph.h) instead
  * of printing: the statistics (one entry per node of the run order, names and types as in
  * the graph, times that add up), the progress callback (on the caller's thread, rising to
- * done once per run of the long node) and the log callback (the files the run wrote); and
- * that ssg_run_stats_free leaves a zeroed struct. */
+ * done once per run of the long node) and the log callback (the files the run wrote); that
+ * ssg_run_stats_free leaves a zeroed struct; and that a library loaded inside a node's run
+ * (graph/profile.h: the OpenImageIO module met at the first JPEG) is reported as a load of
+ * its own, not charged to the node, while one loaded before the run is charged to no node. */
 #include <pthread.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "check.h"
+#include "graph/profile.h"
 #include "ssgraph.h"
 
 enum { FRAMES = 2, MAX_LINES = 16 };
@@ -133,9 +136,42 @@ static void check_callbacks(const struct seen *s, const char *dir)
     }
 }
 
+/* A profile of one node that ran 10 ms up to now, 4 of them loading a library, and before
+   it a load outside any run (at start-up). */
+static void test_loads(void)
+{
+    struct ssg_load before[SSG_LOADS_MAX], after[SSG_LOADS_MAX];
+    int known = ssg_loads(before, SSG_LOADS_MAX);
+    double now = ssg_now_ms();
+    ssg_load_note("start-up library", now - 1000.0, now - 990.0);
+    ssg_load_note("node library", now - 6.0, now - 2.0);
+    CHECK_EQ(ssg_loads(after, SSG_LOADS_MAX), known + 2);
+    CHECK(!strcmp(after[known + 1].what, "node library"));
+    CHECK_NEAR(after[known + 1].ms, 4.0, 1e-9);
+
+    struct ssg_profile p;
+    CHECK(ssg_profile_init(&p, 1));
+    p.rows[0] = (struct ssg_profile_row){.name = "w", .type = "write", .backend = "cpu",
+                                         .min = p.rows[0].min};
+    struct ssg_node_timing t = {.ms = 10.0};
+    CHECK(ssg_profile_add(&p, 0, &t));
+    CHECK(ssg_profile_frame(&p, 0.0));
+    struct ssg_run_stats st = {0};
+    CHECK(ssg_profile_stats(&p, &t, &st));
+    CHECK_EQ(st.node_count, 1);
+    if (st.node_count == 1) {
+        CHECK_NEAR(st.nodes[0].ms, 6.0, 1e-6); /* the start-up load is no node's */
+        CHECK_NEAR(st.nodes[0].avg_ms, 6.0, 1e-6);
+        CHECK_NEAR(st.nodes[0].max_ms, 6.0, 1e-6);
+    }
+    ssg_run_stats_free(&st);
+    ssg_profile_free(&p);
+}
+
 int main(void)
 {
     char dir[1024], graph[1100];
+    test_loads();
     const char *tmp = getenv("SSG_TMP");
     snprintf(dir, sizeof dir, "%s", tmp ? tmp : CHECK_TMP_ROOT "/ssg_test_run_report");
     struct ssg_diags d = {0};

@@ -1,10 +1,46 @@
 /* profile.c - collecting the per-node profile and handing it out as the run's statistics
  * (profile.h). */
 #include <float.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "graph/profile.h"
+
+/* The process's one-off loads (profile.h): few, written once each, read by the reports. */
+static pthread_mutex_t loads_lock = PTHREAD_MUTEX_INITIALIZER;
+static struct ssg_load loads[SSG_LOADS_MAX];
+static int load_count;
+
+void ssg_load_note(const char *what, double t0_ms, double t1_ms)
+{
+    pthread_mutex_lock(&loads_lock);
+    if (load_count < SSG_LOADS_MAX)
+        loads[load_count++] = (struct ssg_load){what, t0_ms, t1_ms - t0_ms};
+    pthread_mutex_unlock(&loads_lock);
+}
+
+int ssg_loads(struct ssg_load *out, int max)
+{
+    pthread_mutex_lock(&loads_lock);
+    int n = load_count < max ? load_count : max;
+    memcpy(out, loads, sizeof *out * (size_t)(n > 0 ? n : 0));
+    pthread_mutex_unlock(&loads_lock);
+    return n;
+}
+
+/* The time of the loads that began inside a node run which just ended (it took ran_ms up
+   to now): the caller calls right after the run, so the run began ran_ms before now. */
+static double loads_inside(double ran_ms)
+{
+    struct ssg_load l[SSG_LOADS_MAX];
+    int n = ssg_loads(l, SSG_LOADS_MAX);
+    double begun = ssg_now_ms() - ran_ms, ms = 0;
+    for (int i = 0; i < n; i++)
+        if (l[i].start_ms >= begun)
+            ms += l[i].ms;
+    return ms;
+}
 
 int ssg_profile_init(struct ssg_profile *p, int count)
 {
@@ -67,13 +103,15 @@ static double series_median(const struct ssg_series *s)
 int ssg_profile_add(struct ssg_profile *p, int r, const struct ssg_node_timing *t)
 {
     struct ssg_profile_row *row = &p->rows[r];
+    row->load_ms = loads_inside(t->ms + t->transfer_ms);
+    double ms = t->ms > row->load_ms ? t->ms - row->load_ms : 0.0;
     row->calls++;
-    row->sum += t->ms;
-    row->min = t->ms < row->min ? t->ms : row->min;
-    row->max = t->ms > row->max ? t->ms : row->max;
+    row->sum += ms;
+    row->min = ms < row->min ? ms : row->min;
+    row->max = ms > row->max ? ms : row->max;
     row->gpu_sum += t->gpu_ms;
     row->xfer_sum += t->transfer_ms;
-    return series_add(&row->runs, t->ms);
+    return series_add(&row->runs, ms);
 }
 
 int ssg_profile_frame(struct ssg_profile *p, double ms)
@@ -99,7 +137,7 @@ static int fill_node(struct ssg_run_node *n, const struct ssg_profile *p,
         .name = strdup(row->name),
         .type = row->type,
         .backend = row->backend,
-        .ms = t->ms,
+        .ms = t->ms > row->load_ms ? t->ms - row->load_ms : 0.0,
         .gpu_ms = t->gpu_ms,
         .transfer_ms = t->transfer_ms,
         .calls = row->calls,

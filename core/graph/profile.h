@@ -2,7 +2,15 @@
  * --frames N`): for every node its calls, average, minimum and maximum milliseconds, its
  * share of the frame (sinks, which run in the last frame only, have none), its one-off
  * prepare() time, and on GL the timer queries' average; handed to the caller in struct
- * ssg_run_stats (ssgraph.h), which `ssgraph run` prints as a profiler's table. */
+ * ssg_run_stats (ssgraph.h), which `ssgraph run` prints as a profiler's table.
+ *
+ * One-off loads: libraries a process opens at run time, once (the OpenImageIO module on
+ * the first image of a format only it reads; the GL library), are noted where they happen
+ * (ssg_load_note, thread-safe) and kept for the process. A node run that contains one is
+ * not charged for it: ssg_profile_add takes it out of the node's times, and the report
+ * prints each load on a line of its own (ssg_loads). The frame totals still contain a load
+ * that happened inside a pass (none does today: the GL library opens before the first
+ * frame, the module inside a sink or before the run). */
 #ifndef SSG_PROFILE_H
 #define SSG_PROFILE_H
 
@@ -22,6 +30,7 @@ struct ssg_profile_row {
     double prepare_ms;     /* its one prepare() */
     double gpu_sum, xfer_sum;
     double bytes, flops;   /* a run's (exec.h, ssg_node_cost); flops -1 = undeclared */
+    double load_ms;        /* one-off loads inside its last run, taken out of its times */
 };
 
 struct ssg_profile {
@@ -44,5 +53,22 @@ int ssg_profile_frame(struct ssg_profile *p, double ms);
  * ssg_run_stats_free). */
 int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing *last,
                       struct ssg_run_stats *s);
+
+/* Most one-off loads kept (later ones are still taken out of nodes, not listed). */
+#define SSG_LOADS_MAX 8
+
+/* A library loaded once by the process. */
+struct ssg_load {
+    const char *what; /* "OpenImageIO module"; static */
+    double start_ms;  /* when it began, ssg_now_ms's clock (exec.h) */
+    double ms;        /* how long it took */
+};
+
+/* Notes that `what` (a static string) was loaded from t0_ms to t1_ms (ssg_now_ms).
+ * Thread-safe; call it once per load. */
+void ssg_load_note(const char *what, double t0_ms, double t1_ms);
+
+/* Copies the process's loads so far, in order, into out (room for max); their count. */
+int ssg_loads(struct ssg_load *out, int max);
 
 #endif
