@@ -1,7 +1,8 @@
 /* test_write.c - the `write` sink node called through its descriptor: file names are
  * checked, the output directory is created, the EXR holds the main image and every extra
  * input as a named layer (exact floats), the PNG is the tone-mapped main image, png/exr
- * switch files off, and errors name the path. Scratch files go to $SSG_TMP. */
+ * switch files off, errors name the path, and the EXR is written after the PNG (docs/exr.md,
+ * "The EXR and its PNG": an EXR never older than its PNG). Scratch files go to $SSG_TMP. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -258,6 +259,34 @@ static void test_errors(void)
     ssg_image_destroy(&other);
 }
 
+/* 1 when a's modification time is at or after b's. */
+static int not_older(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (stat(a, &sa) != 0 || stat(b, &sb) != 0)
+        return 0;
+    return sa.st_mtim.tv_sec > sb.st_mtim.tv_sec ||
+           (sa.st_mtim.tv_sec == sb.st_mtim.tv_sec && sa.st_mtim.tv_nsec >= sb.st_mtim.tv_nsec);
+}
+
+/* The PNG is staged and renamed before the EXR, so a kill between the two renames leaves
+   the new PNG beside the previous EXR, which is then older than it: a complete pair is one
+   whose EXR is not older than its PNG. A frame whose PNG takes several clock ticks to write
+   would show the wrong order (PNG last) as an older EXR. */
+static void test_pair_order(void)
+{
+    struct ssg_image *im = filled(1024, 512, 3, 0.25f);
+    struct run r;
+    run_init(&r, tmp_path("order"), im);
+    struct ssg_write_params p;
+    defaults(&p, "pair");
+    for (int i = 0; i < 3; i++) {
+        CHECK_EQ(ssg_node_write.run_cpu(&r.ctx, &p, &r.io), SSG_OK);
+        CHECK(not_older(tmp_path("order/pair.exr"), tmp_path("order/pair.png")));
+    }
+    ssg_image_destroy(&im);
+}
+
 int main(void)
 {
     setup_tmp("test_write");
@@ -265,5 +294,6 @@ int main(void)
     test_names();
     test_layers();
     test_errors();
+    test_pair_order();
     return check_report();
 }

@@ -1,7 +1,8 @@
 /* imageio_adapter.cc - reading image files with OpenImageIO 2.4 (ssg_image_read in
- * ssgraph.h, imageio.h); writing is imageio_write_adapter.cc, and what both use is in
- * imageio_adapter.h. The only C++ here is the OpenImageIO calls and the try/catch that
- * keeps exceptions inside; everything the rest of ssgraph sees is C.
+ * ssgraph.h, imageio.h), inside the module (oiio_module.h), for every format the library
+ * does not read itself: EXR and PNG never come here (formats.h), JPEG, HDR, TIFF, ... do.
+ * The only C++ here is the OpenImageIO calls and the try/catch that keeps exceptions
+ * inside; everything the rest of ssgraph sees is C.
  *
  * Pixels cross in bands of scanlines (BAND_ROWS rows of interleaved floats) so a big file
  * never needs a second full-size buffer next to the planar image. */
@@ -19,7 +20,6 @@
 #include <OpenImageIO/imageio.h>
 
 extern "C" {
-#include "io/exr_guard.h"
 #include "graph/image.h"
 #include "lang/files.h"
 #include "io/imageio.h"
@@ -134,13 +134,7 @@ enum ssg_err check_readable(const char *path, struct ssg_diags *diags)
         ssg_diag_file(diags, e, path, "cannot read image: %s", why);
         return e;
     }
-    /* OpenEXR believes its header's sizes before it finds the file's end (exr_guard.h). */
-    int sane = ssg_exr_guard(fd, why, sizeof why);
     close(fd);
-    if (!sane) {
-        ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s", why);
-        return SSG_E_IMAGE;
-    }
     return SSG_OK;
 }
 
@@ -293,55 +287,6 @@ enum ssg_err read_image(const char *path, const char *layer, struct ssg_image **
     return SSG_OK;
 }
 
-/* n floats of attribute `name` into out (a V3f, an M44f, a float); false when the file
-   lacks it or it holds something else. */
-bool float_attr(const ImageSpec &spec, const char *name, float *out, int n)
-{
-    const OIIO::ParamValue *p = spec.find_attribute(name);
-    if (!p || p->type().basetype != TypeDesc::FLOAT || (int)p->type().numelements() *
-        (int)p->type().aggregate * p->nvalues() != n)
-        return false;
-    std::memcpy(out, p->data(), (size_t)n * sizeof(float));
-    return true;
-}
-
-/* The numbers of an ssgraph EXR's metadata (imageio.h, struct ssg_exr_meta); *found = 0
-   and meta untouched for a file without ssgraph:fov. */
-enum ssg_err read_meta(const char *path, struct ssg_exr_meta *meta, int *found,
-                       struct ssg_diags *diags)
-{
-    *found = 0;
-    enum ssg_err err = check_readable(path, diags);
-    if (err)
-        return err;
-    std::unique_ptr<ImageInput> in = ImageInput::open(path);
-    if (!in) {
-        ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s",
-                      oiio_error<ImageInput>(nullptr).c_str());
-        return SSG_E_IMAGE;
-    }
-    const ImageSpec &spec = in->spec();
-    struct ssg_exr_meta m = {};
-    if (!float_attr(spec, "ssgraph:fov", &m.fov_y, 1))
-        return SSG_OK;
-    m.near_z = spec.get_float_attribute("ssgraph:near", SSG_DEFAULT_NEAR);
-    m.far_z = spec.get_float_attribute("ssgraph:far", SSG_DEFAULT_FAR);
-    m.guard = spec.get_int_attribute("ssgraph:guard", 0);
-    m.seed = std::strtoull(spec.get_string_attribute("ssgraph:seed", "1").c_str(), nullptr, 10);
-    const OIIO::ParamValue *size = spec.find_attribute("ssgraph:frame_size",
-                                                       TypeDesc(TypeDesc::INT, TypeDesc::VEC2));
-    m.width = size ? ((const int *)size->data())[0] : spec.width;
-    m.height = size ? ((const int *)size->data())[1] : spec.height;
-    m.has_camera = float_attr(spec, "ssgraph:camera_position", m.position, 3) &&
-                   float_attr(spec, "ssgraph:camera_target", m.target, 3) &&
-                   float_attr(spec, "ssgraph:camera_up", m.up, 3) &&
-                   float_attr(spec, "worldToCamera", m.world_to_camera, 16) &&
-                   float_attr(spec, "worldToNDC", m.world_to_ndc, 16);
-    *meta = m;
-    *found = 1;
-    return SSG_OK;
-}
-
 } /* namespace */
 
 /* ---- the C interface ------------------------------------------------------------------ */
@@ -372,11 +317,4 @@ enum ssg_err ssg_oiio_image_read(const char *path, const char *layer, struct ssg
     return guarded_read(path, diags, [&] {
         return read_image(path, layer && layer[0] ? layer : nullptr, out, diags);
     });
-}
-
-enum ssg_err ssg_oiio_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
-                                    struct ssg_diags *diags)
-{
-    *found = 0;
-    return guarded_read(path, diags, [&] { return read_meta(path, meta, found, diags); });
 }

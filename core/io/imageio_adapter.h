@@ -1,8 +1,6 @@
-/* imageio_adapter.h - private to the OpenImageIO adapter: what its reading half
- * (imageio_adapter.cc) and its writing half (imageio_write_adapter.cc) share: the band
- * height, the sRGB decoding and the turning of OpenImageIO errors and C++
- * exceptions into diagnostics. C++ only; included by no C file. Stateless, so safe from
- * any thread. */
+/* imageio_adapter.h - private to the OpenImageIO module's reader (imageio_adapter.cc): the
+ * band height, the sRGB decoding and the turning of OpenImageIO errors and C++ exceptions
+ * into diagnostics. C++ only; included by no C file. Stateless, so safe from any thread. */
 #ifndef SSG_IMAGEIO_ADAPTER_H
 #define SSG_IMAGEIO_ADAPTER_H
 
@@ -19,8 +17,7 @@ extern "C" {
 
 namespace {
 
-/* Rows moved per OpenImageIO call: several 16-line ZIP blocks, which OpenEXR compresses
-   on its own threads in parallel (deterministically: blocks are independent), while the
+/* Rows moved per OpenImageIO call: enough for a codec to work in long runs, while the
    interleaved staging buffer stays small (1920 wide, 18 channels: 8.8 MB). */
 const int BAND_ROWS = 64;
 

@@ -1,6 +1,9 @@
-/* imageio_load.c - the C side of imageio.h and text.h: opens the OpenImageIO module
- * (oiio_module.h) on first use and forwards to it; the whole-file writers (stage, then
- * commit) and the tone curves, which need no OpenImageIO, are here.
+/* imageio_load.c - the C side of imageio.h and text.h: hands EXR and PNG files to the
+ * formats built into the library (formats.h: OpenEXRCore, libpng) by their first bytes, and
+ * every other format, and text, to the OpenImageIO module (oiio_module.h), which it opens on
+ * first use; the whole-file writers (stage, then commit) and the tone curves are here too.
+ * Opening the module is timed and reported as a one-off load (graph/profile.h), so a run's
+ * table shows it on a line of its own instead of in the node that met the first JPEG.
  *
  * The module is looked for in $SSGRAPH_MODULE_DIR alone when that is set, else next to
  * the program or library that holds this code and in its ssgraph/ folder (an installed
@@ -19,6 +22,9 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "graph/exec.h"
+#include "graph/profile.h"
+#include "io/formats.h"
 #include "io/oiio_module.h"
 #include "io/tonemap.h"
 
@@ -38,8 +44,6 @@ static const struct ssg_oiio_host host = {
     .image_destroy = ssg_image_destroy,
     .image_size_ok = ssg_image_size_ok,
     .input_open = ssg_input_open,
-    .tmp_create = ssg_tmp_create,
-    .tmp_discard = ssg_tmp_discard,
 };
 
 static pthread_once_t module_once = PTHREAD_ONCE_INIT;
@@ -122,7 +126,7 @@ static int try_dir(const char *dir)
     return 1; /* stays loaded until exit, like every library it pulls in */
 }
 
-static void open_module(void)
+static void search_module(void)
 {
     const char *chosen = getenv("SSGRAPH_MODULE_DIR");
     if (chosen && chosen[0]) {
@@ -152,6 +156,15 @@ static void open_module(void)
     }
 }
 
+/* Opens the module, timed: the 0.3-0.7 s of dynamic linking it costs are a one-off load
+   of the process, not the work of whatever asked for the first image. */
+static void open_module(void)
+{
+    double t0 = ssg_now_ms();
+    search_module();
+    ssg_load_note("OpenImageIO module", t0, ssg_now_ms());
+}
+
 /* The module's api, or NULL with a diagnostic on `file`. */
 static const struct ssg_oiio_api *oiio(struct ssg_diags *diags, const char *file)
 {
@@ -164,40 +177,100 @@ static const struct ssg_oiio_api *oiio(struct ssg_diags *diags, const char *file
     return module_api;
 }
 
+enum ssg_image_format ssg_image_format_of(int fd)
+{
+    static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01},
+                               png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char head[8];
+    ssize_t n = pread(fd, head, sizeof head, 0);
+    if (n >= 4 && memcmp(head, exr, sizeof exr) == 0)
+        return SSG_FORMAT_EXR;
+    if (n >= 8 && memcmp(head, png, sizeof png) == 0)
+        return SSG_FORMAT_PNG;
+    return SSG_FORMAT_OTHER;
+}
+
+int ssg_image_plausible(const char *path, int w, int h, int nch, long long file_bytes,
+                        struct ssg_diags *diags)
+{
+    const double max_ratio = 65536.0, slack_bytes = 64.0 * 1024 * 1024;
+    double pixels = (double)w * (double)h * nch * sizeof(float);
+    if (pixels <= (double)file_bytes * max_ratio + slack_bytes)
+        return 1;
+    ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: its header declares %d x "
+                  "%d pixels, far more than a file of %lld bytes can hold (truncated or "
+                  "forged)", w, h, file_bytes);
+    return 0;
+}
+
+/* Opens path for reading (files.h: a regular file of a sane size) and names its format;
+   SSG_OK with *fd open, else the error reported. */
+static enum ssg_err open_image(const char *path, int *fd, enum ssg_image_format *format,
+                               struct ssg_diags *diags)
+{
+    char why[320];
+    enum ssg_err e = ssg_input_open(path, SSG_MAX_IMAGE_BYTES, fd, why, sizeof why);
+    if (e) {
+        ssg_diag_file(diags, e, path, "cannot read image: %s", why);
+        return e;
+    }
+    *format = ssg_image_format_of(*fd);
+    return SSG_OK;
+}
+
+/* A PNG holds the main image only: any other layer is missing. */
+static enum ssg_err read_png(const char *path, int fd, const char *layer,
+                             struct ssg_image **out, struct ssg_diags *diags)
+{
+    if (layer && layer[0]) {
+        ssg_diag_file(diags, SSG_E_CHANNELS, path, "no layer '%s' (layers in the file: "
+                      "(unnamed))", layer);
+        return SSG_E_CHANNELS;
+    }
+    return ssg_png_read_fd(path, fd, out, diags);
+}
+
 enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
                             struct ssg_diags *diags)
 {
     if (out)
         *out = NULL;
+    if (!path || !out) {
+        ssg_diag_file(diags, SSG_E_IO, path ? path : "", "no file name or no output given");
+        return SSG_E_IO;
+    }
+    /* An empty path names no file: the module refuses it, after opening (which `ssgraph
+       --version` relies on to name the OpenImageIO it would use). */
+    int fd = -1;
+    enum ssg_image_format format = SSG_FORMAT_OTHER;
+    enum ssg_err e = path[0] ? open_image(path, &fd, &format, diags) : SSG_OK;
+    if (e)
+        return e;
+    if (format == SSG_FORMAT_EXR)
+        e = ssg_exr_read_fd(path, fd, layer && layer[0] ? layer : NULL, out, diags);
+    else if (format == SSG_FORMAT_PNG)
+        e = read_png(path, fd, layer, out, diags);
+    if (fd >= 0)
+        close(fd);
+    if (format != SSG_FORMAT_OTHER)
+        return e;
     const struct ssg_oiio_api *api = oiio(diags, path);
     return api ? api->image_read(path, layer, out, diags) : SSG_E_BACKEND;
-}
-
-/* A failed stage leaves t closed and registered nowhere, as the module's own failures do,
-   so callers may discard or ignore it alike. */
-static enum ssg_err no_module(struct ssg_tmp *t)
-{
-    t->fd = t->lock_fd = -1;
-    t->slot = -1;
-    return SSG_E_BACKEND;
-}
-
-enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers, int count,
-                           enum ssg_exr_compression compression,
-                           const struct ssg_exr_meta *meta, struct ssg_tmp *t,
-                           struct ssg_diags *diags)
-{
-    const struct ssg_oiio_api *api = oiio(diags, path);
-    return api ? api->exr_stage(path, layers, count, compression, meta, t, diags)
-               : no_module(t);
 }
 
 enum ssg_err ssg_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
                                struct ssg_diags *diags)
 {
+    int fd = -1;
+    enum ssg_image_format format;
     *found = 0;
-    const struct ssg_oiio_api *api = oiio(diags, path);
-    return api ? api->exr_meta_read(path, meta, found, diags) : SSG_E_BACKEND;
+    enum ssg_err e = open_image(path, &fd, &format, diags);
+    if (e)
+        return e;
+    if (format == SSG_FORMAT_EXR) /* any other file is foreign: no metadata */
+        e = ssg_exr_meta_read_fd(path, fd, meta, found, diags);
+    close(fd);
+    return e;
 }
 
 int ssg_exr_frame_read(const char *spec, struct ssg_frame *frame)
@@ -222,18 +295,8 @@ enum ssg_err ssg_exr_views_join(const char *path, const char *const *views,
                                 const char *const *files, int count, struct ssg_diags *diags)
 {
     struct ssg_tmp t;
-    const struct ssg_oiio_api *api = oiio(diags, path);
-    enum ssg_err e = api ? api->views_stage(path, views, files, count, &t, diags)
-                         : SSG_E_BACKEND;
+    enum ssg_err e = ssg_exr_views_stage(path, views, files, count, &t, diags);
     return e ? e : ssg_tmp_commit(&t, 1, diags);
-}
-
-enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
-                           enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
-                           struct ssg_diags *diags)
-{
-    const struct ssg_oiio_api *api = oiio(diags, path);
-    return api ? api->png_stage(path, image, tonemap, exposure, t, diags) : no_module(t);
 }
 
 enum ssg_err ssg_text_draw(struct ssg_image *im, int x, int y, int size, const char *text,

@@ -1,11 +1,12 @@
 /* oiio_module.h - the seam between the library and its OpenImageIO module.
  *
- * Everything that touches OpenImageIO (imageio_adapter.cc, imageio_write_adapter.cc,
- * text_adapter.cc, with exr_guard.c) is built as a module of its own, libssgraph_oiio.so,
- * which imageio_load.c opens with dlopen on the first image read or written. Why: linking
- * OpenImageIO pulls in some 250 shared libraries (codecs, OpenCV, OpenVDB, ...) whose
- * dynamic linking costs about half a second at every start, which `ssgraph nodes`, `check`,
- * every test and every bench cell would pay for nothing.
+ * Everything that touches OpenImageIO (imageio_adapter.cc, text_adapter.cc) is built as a
+ * module of its own, libssgraph_oiio.so, which imageio_load.c opens with dlopen the first
+ * time it is needed: to read a format the library does not read itself (JPEG, HDR, TIFF,
+ * ...: EXR and PNG are built in, formats.h) or to draw text. Why: linking OpenImageIO pulls
+ * in some 250 shared libraries (codecs, OpenCV, OpenVDB, ...) whose dynamic linking costs
+ * 0.3-0.7 s, which `ssgraph nodes`, `check`, every run that writes its EXR and PNG, every
+ * test and every bench cell would pay for nothing.
  *
  * The module calls back into the library only through the host table below (the module
  * sees the library's functions under their usual names: oiio_host.h maps them), and the
@@ -24,7 +25,7 @@ extern "C" {
 #include "lang/diag.h"
 #include "lang/files.h"
 
-#define SSG_OIIO_MODULE_ABI 2
+#define SSG_OIIO_MODULE_ABI 3
 #define SSG_OIIO_MODULE_FILE "libssgraph_oiio.so"
 #define SSG_OIIO_MODULE_ENTRY "ssg_oiio_module"
 
@@ -37,28 +38,13 @@ struct ssg_oiio_host {
     int (*image_size_ok)(int width, int height, int channels);
     enum ssg_err (*input_open)(const char *path, long long max_bytes, int *fd, char *why,
                                size_t why_len);
-    enum ssg_err (*tmp_create)(const char *target, const char *ext, const char *what,
-                               struct ssg_tmp *t, struct ssg_diags *diags);
-    void (*tmp_discard)(struct ssg_tmp *t, int count);
 };
 
-/* What the library uses of the module: the functions of imageio.h and text.h that need
-   OpenImageIO, with the same contracts. */
+/* What the library uses of the module: ssg_image_read (ssgraph.h) for the formats other
+   than EXR and PNG, and ssg_text_draw (text.h), with the same contracts. */
 struct ssg_oiio_api {
     enum ssg_err (*image_read)(const char *path, const char *layer, struct ssg_image **out,
                                struct ssg_diags *diags);
-    enum ssg_err (*exr_stage)(const char *path, const struct ssg_exr_layer *layers, int count,
-                              enum ssg_exr_compression compression,
-                              const struct ssg_exr_meta *meta, struct ssg_tmp *t,
-                              struct ssg_diags *diags);
-    enum ssg_err (*exr_meta_read)(const char *path, struct ssg_exr_meta *meta, int *found,
-                                  struct ssg_diags *diags);
-    enum ssg_err (*views_stage)(const char *path, const char *const *views,
-                                const char *const *files, int count, struct ssg_tmp *t,
-                                struct ssg_diags *diags);
-    enum ssg_err (*png_stage)(const char *path, const struct ssg_image *image,
-                              enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
-                              struct ssg_diags *diags);
     enum ssg_err (*text_draw)(struct ssg_image *im, int x, int y, int size, const char *text,
                               struct ssg_diags *diags);
 };

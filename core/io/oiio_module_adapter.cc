@@ -10,9 +10,7 @@ const struct ssg_oiio_host *ssg_oiio_host_fns;
 extern "C" __attribute__((visibility("default"))) const struct ssg_oiio_api *
 ssg_oiio_module(int abi, const struct ssg_oiio_host *host)
 {
-    static const struct ssg_oiio_api api = {
-        ssg_oiio_image_read,  ssg_oiio_exr_stage, ssg_oiio_exr_meta_read,
-        ssg_oiio_views_stage, ssg_oiio_png_stage, ssg_oiio_text_draw};
+    static const struct ssg_oiio_api api = {ssg_oiio_image_read, ssg_oiio_text_draw};
     if (abi != SSG_OIIO_MODULE_ABI || !host)
         return nullptr;
     ssg_oiio_host_fns = host;

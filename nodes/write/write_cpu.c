@@ -118,9 +118,11 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
-    /* Both files are staged before either is renamed into place: a failure (or a kill)
-       while writing leaves the previous EXR and PNG together, never a new EXR beside an
-       old PNG. */
+    /* Both files are staged before either is renamed into place, so a failure (or a kill)
+       while writing leaves the previous EXR and PNG together. The PNG goes first, staged
+       and renamed, the EXR (the real output) last: a kill between the two renames leaves
+       the new PNG beside the previous EXR, never a new EXR beside a stale PNG, and a pair
+       whose EXR is older than its PNG is known to be incomplete (docs/exr.md). */
     struct ssg_tmp staged[2];
     struct framed f;
     int n = 0;
@@ -128,14 +130,14 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     if (err)
         return err;
     err = ssg_make_dirs(dir, ctx->diags);
-    if (!err && p->exr &&
-        !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
-        if (!(err = stage_exr(ctx, io, p, &f, path, &staged[n])))
-            n++;
     if (!err && p->png &&
         !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
         if (!(err = ssg_png_stage(path, f.image[0], (enum ssg_tonemap)p->tonemap, p->exposure,
                                   &staged[n], ctx->diags)))
+            n++;
+    if (!err && p->exr &&
+        !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
+        if (!(err = stage_exr(ctx, io, p, &f, path, &staged[n])))
             n++;
     framed_free(&f, io->extra_count + 1);
     if (err) {
