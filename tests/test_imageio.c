@@ -1,7 +1,8 @@
 /* test_imageio.c - image files (core/io/imageio.h, ssg_image_read): multi-layer EXR round
  * trip with exact floats, PNG codes of known inputs per tone curve (decoded with stb_image,
- * independently of our reader), byte determinism, error codes with file names for corrupt,
- * missing and oversized files, and no file left behind by a failed write.
+ * independently of our reader), byte determinism (over time and over thread counts, every
+ * compression), error codes with file names for corrupt, missing and oversized files, and
+ * no file left behind by a failed write.
  *
  * Fixtures: tests/fixtures/corrupt.exr is the first 4000 bytes of a real 64x64 float ZIP
  * EXR (`oiiotool --nosoftwareattrib --pattern fill:... 64x64 3 -d float -o x.exr`): its
@@ -9,12 +10,16 @@
  * followed by text. Scratch files go to $SSG_TMP. */
 #include <dirent.h>
 #include <errno.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
+
+#include <math.h>
+#include <png.h>
 
 #include "check.h"
 #include "scratch.h"
@@ -279,6 +284,87 @@ static void test_png_codes(void)
     ssg_image_destroy(&two);
 }
 
+/* A PNG written with libpng itself: one row of `w` pixels of the given type and depth (16-bit
+   samples big-endian in `row`), optionally with only a gAMA chunk of 1.0 (linear), or a
+   2-bit palette of two entries whose second is half transparent (tRNS). */
+static void write_test_png(const char *path, int w, int color, int depth, const void *row,
+                           int linear)
+{
+    FILE *f = fopen(path, "wb");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png_create_info_struct(png);
+    if (!f || !png || !info || setjmp(png_jmpbuf(png))) {
+        CHECK(!"cannot write a test PNG");
+        return;
+    }
+    png_init_io(png, f);
+    png_set_IHDR(png, info, (png_uint_32)w, 1, depth, color, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (color == PNG_COLOR_TYPE_PALETTE) {
+        png_color pal[2] = {{255, 0, 0}, {0, 0, 255}};
+        png_byte trans[2] = {255, 128};
+        png_set_PLTE(png, info, pal, 2);
+        png_set_tRNS(png, info, trans, 2, NULL);
+    }
+    if (linear)
+        png_set_gAMA(png, info, 1.0);
+    png_write_info(png, info);
+    png_write_row(png, (png_const_bytep)row);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    fclose(f);
+}
+
+static float srgb_to_linear(float c)
+{
+    return c <= 0.04045f ? c / 12.92f : powf((c + 0.055f) / 1.055f, 2.4f);
+}
+
+/* Reads path and checks its channel count and its first pixel. */
+static void check_png(const char *path, int channels, const float *want)
+{
+    struct ssg_diags d = {0};
+    struct ssg_image *im = NULL;
+    CHECK_EQ(ssg_image_read(path, NULL, &im, &d), SSG_OK);
+    CHECK(im && im->channels == channels);
+    for (int c = 0; im && c < channels && c < im->channels; c++)
+        CHECK_NEAR(ssg_image_plane(im, c)[0], want[c], 1e-6);
+    ssg_image_destroy(&im);
+}
+
+/* PNGs of every layout read as libpng expands them: colour sRGB-decoded to linear, alpha
+   as stored, 16 bits kept, a gAMA of 1.0 without sRGB read as linear, a palette with tRNS
+   as RGBA, 1-bit gray as 0 or 1; and a PNG has no named layers. */
+static void test_png_reads(void)
+{
+    const unsigned char rgba[4] = {200, 100, 50, 128};
+    write_test_png(tmp_path("rgba.png"), 1, PNG_COLOR_TYPE_RGB_ALPHA, 8, rgba, 0);
+    float want_rgba[4] = {srgb_to_linear(200 / 255.0f), srgb_to_linear(100 / 255.0f),
+                          srgb_to_linear(50 / 255.0f), 128 / 255.0f};
+    check_png(tmp_path("rgba.png"), 4, want_rgba);
+    const unsigned char ya16[4] = {0x75, 0x30, 0xff, 0xff}; /* 30000, 65535 */
+    write_test_png(tmp_path("ya16.png"), 1, PNG_COLOR_TYPE_GRAY_ALPHA, 16, ya16, 0);
+    float want_ya[2] = {srgb_to_linear(30000 / 65535.0f), 1.0f};
+    check_png(tmp_path("ya16.png"), 2, want_ya);
+    const unsigned char rgb[3] = {128, 0, 255};
+    write_test_png(tmp_path("linear.png"), 1, PNG_COLOR_TYPE_RGB, 8, rgb, 1);
+    float want_lin[3] = {128 / 255.0f, 0.0f, 1.0f};
+    check_png(tmp_path("linear.png"), 3, want_lin);
+    const unsigned char pal[1] = {0x40}; /* 2-bit indices 1, 0, 0, 0: the first pixel 1 */
+    write_test_png(tmp_path("palette.png"), 4, PNG_COLOR_TYPE_PALETTE, 2, pal, 0);
+    float want_pal[4] = {0.0f, 0.0f, 1.0f, 128 / 255.0f};
+    check_png(tmp_path("palette.png"), 4, want_pal);
+    const unsigned char bits[1] = {0x80};
+    write_test_png(tmp_path("bits.png"), 8, PNG_COLOR_TYPE_GRAY, 1, bits, 0);
+    float one = 1.0f;
+    check_png(tmp_path("bits.png"), 1, &one);
+    struct ssg_diags d = {0};
+    struct ssg_image *im = NULL;
+    check_error(&d, ssg_image_read(tmp_path("rgba.png"), "ao", &im, &d), SSG_E_CHANNELS,
+                "rgba.png");
+    CHECK(im == NULL);
+}
+
 static void test_determinism(void)
 {
     struct ssg_image *im = pattern_image(17, 9, 3, 0.125f), *ao = pattern_image(17, 9, 1, 0.0f);
@@ -293,6 +379,32 @@ static void test_determinism(void)
     CHECK_EQ(ssg_png_write(tmp_path("det2.png"), im, SSG_TONEMAP_ACES, 0.5f, &d), SSG_OK);
     CHECK(same_bytes(tmp_path("det1.exr"), tmp_path("det2.exr")));
     CHECK(same_bytes(tmp_path("det1.png"), tmp_path("det2.png")));
+    ssg_image_destroy(&im);
+    ssg_image_destroy(&ao);
+}
+
+/* The chunks are compressed on any thread and written in order: one thread or several, the
+   same bytes, for every compression; and they read back exactly. 61 rows: four 16-row ZIP
+   chunks, the last one short; one 32-row PIZ chunk and a short one. */
+static void test_thread_determinism(void)
+{
+    struct ssg_image *im = pattern_image(37, 61, 3, 0.375f), *ao = pattern_image(37, 61, 1, 2.0f);
+    struct ssg_exr_layer layers[] = {{.image = im}, {.name = "ao", .image = ao}};
+    int threads = omp_get_max_threads();
+    for (int c = SSG_EXR_ZIP; c <= SSG_EXR_PIZ; c++) {
+        struct ssg_diags d = {0};
+        omp_set_num_threads(1);
+        CHECK_EQ(ssg_exr_write_compressed(tmp_path("t1.exr"), layers, 2, c, &d), SSG_OK);
+        CHECK_EQ(ssg_png_write(tmp_path("t1.png"), im, SSG_TONEMAP_ACES, 0.0f, &d), SSG_OK);
+        omp_set_num_threads(4);
+        CHECK_EQ(ssg_exr_write_compressed(tmp_path("t4.exr"), layers, 2, c, &d), SSG_OK);
+        CHECK_EQ(ssg_png_write(tmp_path("t4.png"), im, SSG_TONEMAP_ACES, 0.0f, &d), SSG_OK);
+        CHECK(same_bytes(tmp_path("t1.exr"), tmp_path("t4.exr")));
+        CHECK(same_bytes(tmp_path("t1.png"), tmp_path("t4.png")));
+        check_layer(tmp_path("t4.exr"), NULL, im);
+        check_layer(tmp_path("t4.exr"), "ao", ao);
+    }
+    omp_set_num_threads(threads);
     ssg_image_destroy(&im);
     ssg_image_destroy(&ao);
 }
@@ -433,7 +545,9 @@ int main(void)
     test_exr_round_trip();
     test_exr_bad_layers();
     test_png_codes();
+    test_png_reads();
     test_determinism();
+    test_thread_determinism();
     test_read_errors();
     test_tiled_reads();
     test_special_files();

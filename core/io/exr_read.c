@@ -237,15 +237,28 @@ static enum ssg_err read_layer(const char *path, exr_context_t ctx, const struct
     return e;
 }
 
+/* OpenEXRCore 3.1 cannot decode DWAA and DWAB ("not yet implemented in C"): such a file,
+   a light probe saved by Blender's tools for one, is OpenImageIO's to read. */
+static int core_decodes(exr_context_t ctx)
+{
+    exr_compression_t c = EXR_COMPRESSION_NONE;
+    exr_get_compression(ctx, 0, &c);
+    return c != EXR_COMPRESSION_DWAA && c != EXR_COMPRESSION_DWAB;
+}
+
 enum ssg_err ssg_exr_read_fd(const char *path, int fd, const char *layer,
-                             struct ssg_image **out, struct ssg_diags *diags)
+                             struct ssg_image **out, int *elsewhere, struct ssg_diags *diags)
 {
     struct ssg_exr_io io = {0};
     exr_context_t ctx;
+    *elsewhere = 0;
     enum ssg_err e = open_checked(path, fd, &io, &ctx, diags);
     if (e)
         return e;
-    e = read_layer(path, ctx, &io, layer ? layer : "", out, diags);
+    if (core_decodes(ctx))
+        e = read_layer(path, ctx, &io, layer ? layer : "", out, diags);
+    else
+        *elsewhere = 1;
     exr_finish(&ctx);
     return e;
 }

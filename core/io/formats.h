@@ -13,9 +13,11 @@ enum ssg_image_format { SSG_FORMAT_OTHER, SSG_FORMAT_EXR, SSG_FORMAT_PNG };
 enum ssg_image_format ssg_image_format_of(int fd);
 
 /* ssg_image_read of the EXR or PNG file open as fd (checked by ssg_input_open; the caller
-   closes it): layer NULL or "" is the main image. */
+   closes it): layer NULL or "" is the main image. An EXR whose compression OpenEXRCore
+   cannot decode (DWAA, DWAB) is not read: *elsewhere = 1, SSG_OK, for OpenImageIO to read
+   (after the checks of exr_guard.h, which such a file has passed then). */
 enum ssg_err ssg_exr_read_fd(const char *path, int fd, const char *layer,
-                             struct ssg_image **out, struct ssg_diags *diags);
+                             struct ssg_image **out, int *elsewhere, struct ssg_diags *diags);
 enum ssg_err ssg_png_read_fd(const char *path, int fd, struct ssg_image **out,
                              struct ssg_diags *diags);
 

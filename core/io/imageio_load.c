@@ -241,18 +241,19 @@ enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_imag
     }
     /* An empty path names no file: the module refuses it, after opening (which `ssgraph
        --version` relies on to name the OpenImageIO it would use). */
-    int fd = -1;
+    int fd = -1, elsewhere = 0;
     enum ssg_image_format format = SSG_FORMAT_OTHER;
     enum ssg_err e = path[0] ? open_image(path, &fd, &format, diags) : SSG_OK;
     if (e)
         return e;
     if (format == SSG_FORMAT_EXR)
-        e = ssg_exr_read_fd(path, fd, layer && layer[0] ? layer : NULL, out, diags);
+        e = ssg_exr_read_fd(path, fd, layer && layer[0] ? layer : NULL, out, &elsewhere,
+                            diags);
     else if (format == SSG_FORMAT_PNG)
         e = read_png(path, fd, layer, out, diags);
     if (fd >= 0)
         close(fd);
-    if (format != SSG_FORMAT_OTHER)
+    if (format != SSG_FORMAT_OTHER && !elsewhere)
         return e;
     const struct ssg_oiio_api *api = oiio(diags, path);
     return api ? api->image_read(path, layer, out, diags) : SSG_E_BACKEND;
