@@ -3,7 +3,9 @@
  * `ssgraph run graphs/ssao.graph` wrote (1280x720 by default: 18 channels), then writes
  * them again `runs` times as one EXR with each compression (temporary file, fsync and
  * rename included, as the node does), the PNG preview of the main image, and reads the EXR
- * back; prints the median and minimum wall milliseconds of each and the file's bytes.
+ * back; prints the median and minimum wall milliseconds of each, the median CPU
+ * milliseconds of all threads (which other processes on a shared machine move less: divided
+ * by the threads, the wall time the job would take on idle cores) and the file's bytes.
  * Build: cmake -DSSGRAPH_BUILD_BENCH=ON (target io_micro). bench/io_latency.sh runs it.
  * Usage: io_micro FRAME.exr [runs=9] [threads=0 (all)] [out_dir=/tmp] [only=LABEL]
  * (only: time just the rows whose label starts with LABEL, "exr zip", "png", for perf) */
@@ -30,10 +32,10 @@ static const struct {
 };
 enum { LAYERS = sizeof layer_list / sizeof layer_list[0], MAX_RUNS = 101 };
 
-static double now_ms(void)
+static double clock_ms(clockid_t clock)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(clock, &ts);
     return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
@@ -86,7 +88,7 @@ static const char *only = "";
 static void time_job(const char *label, job_fn job, const struct ssg_exr_layer *layers,
                      const char *path, int arg, int runs)
 {
-    double ms[MAX_RUNS];
+    double ms[MAX_RUNS], cpu[MAX_RUNS];
     if (strncmp(label, only, strlen(only)) != 0)
         return;
     if (!job(layers, LAYERS, path, arg)) {
@@ -94,12 +96,15 @@ static void time_job(const char *label, job_fn job, const struct ssg_exr_layer *
         return;
     }
     for (int r = 0; r < runs; r++) {
-        double t0 = now_ms();
+        double t0 = clock_ms(CLOCK_MONOTONIC), c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
         job(layers, LAYERS, path, arg);
-        ms[r] = now_ms() - t0;
+        ms[r] = clock_ms(CLOCK_MONOTONIC) - t0;
+        cpu[r] = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
     }
     qsort(ms, (size_t)runs, sizeof *ms, cmp_double);
-    printf("%-12s %10.1f %10.1f %12lld\n", label, ms[runs / 2], ms[0], bytes_of(path));
+    qsort(cpu, (size_t)runs, sizeof *cpu, cmp_double);
+    printf("%-12s %10.1f %10.1f %10.1f %12lld\n", label, ms[runs / 2], ms[0], cpu[runs / 2],
+           bytes_of(path));
 }
 
 int main(int argc, char **argv)
@@ -130,7 +135,7 @@ int main(int argc, char **argv)
     snprintf(png, sizeof png, "%s/io_micro_%d.png", dir, (int)getpid());
     printf("# %d x %d, %d layers, %d threads, %d runs; wall ms\n", layers[0].image->width,
            layers[0].image->height, LAYERS, omp_get_max_threads(), runs);
-    printf("%-12s %10s %10s %12s\n", "file", "median", "min", "bytes");
+    printf("%-12s %10s %10s %10s %12s\n", "file", "median", "min", "cpu", "bytes");
     static const char *const names[] = {"exr zip", "exr none", "exr rle", "exr piz"};
     for (int c = 0; c < 4; c++)
         time_job(names[c], write_exr, layers, exr, c, runs);

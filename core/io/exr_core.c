@@ -152,10 +152,11 @@ exr_result_t ssg_exr_sorted_planes(exr_context_t ctx, int count,
 
 /* ---- writing chunks ----------------------------------------------------------------- */
 
-/* One thread's encoder: ZIP chunks made by exr_zip.c, the other compressions by an
-   OpenEXRCore pipeline made for its first chunk and updated for the next. */
+/* One thread's encoder: ZIP and uncompressed chunks made by exr_zip.c straight from the
+   planes, the other compressions by an OpenEXRCore pipeline made for its first chunk and
+   updated for the next. */
 struct encoder {
-    int zip;                    /* ZIP: the pipeline is not used */
+    exr_compression_t compression;
     struct ssg_exr_zip z;
     exr_encode_pipeline_t pipe;
     int ready;                  /* pipe initialised (to be destroyed) */
@@ -200,9 +201,12 @@ static exr_result_t pipe_chunk(exr_context_t ctx, struct encoder *e, const float
 static exr_result_t encode_chunk(exr_context_t ctx, struct encoder *e, const float *const *planes,
                                  int channels, int width, int y, int dy, int lines)
 {
-    if (!e->zip)
+    if (e->compression == EXR_COMPRESSION_ZIP)
+        e->size = ssg_exr_zip_chunk(&e->z, planes, channels, width, dy, lines);
+    else if (e->compression == EXR_COMPRESSION_NONE)
+        e->size = ssg_exr_raw_chunk(&e->z, planes, channels, width, dy, lines);
+    else
         return pipe_chunk(ctx, e, planes, width, y, dy);
-    e->size = ssg_exr_zip_chunk(&e->z, planes, channels, width, dy, lines);
     e->bytes = e->z.out;
     return e->size ? EXR_ERR_SUCCESS : EXR_ERR_OUT_OF_MEMORY;
 }
@@ -247,10 +251,13 @@ exr_result_t ssg_exr_write_planes(exr_context_t ctx, const float *const *planes,
         return rv;
     atomic_int failed = EXR_ERR_SUCCESS;
     /* Each thread compresses the next chunk (deflate is most of the time), then waits its
-       turn to append it: OpenEXR writes a scanline file's chunks in order. */
-    #pragma omp parallel
+       turn to append it: OpenEXR writes a scanline file's chunks in order. A small image is
+       one thread's: on a machine whose other cores are busy, a waiting thread that has to
+       be scheduled again costs more than its share of a few chunks saves. */
+    size_t bytes = (size_t)width * (size_t)p.height * (size_t)p.channels * sizeof(float);
+    #pragma omp parallel if (bytes >= SSG_EXR_PARALLEL_BYTES)
     {
-        struct encoder e = {.zip = p.compression == EXR_COMPRESSION_ZIP};
+        struct encoder e = {.compression = p.compression};
         #pragma omp for ordered schedule(dynamic, 1)
         for (int c = 0; c < p.chunks; c++) {
             int dy = c * p.lines, y = p.dw.min.y + dy;
@@ -348,7 +355,8 @@ exr_result_t ssg_exr_read_planes(exr_context_t ctx, float *const *planes, int wi
     if (rv != EXR_ERR_SUCCESS)
         return rv;
     atomic_int failed = EXR_ERR_SUCCESS;
-    #pragma omp parallel
+    size_t bytes = (size_t)width * (size_t)height * sizeof(float) * 4;
+    #pragma omp parallel if (bytes >= SSG_EXR_PARALLEL_BYTES)
     {
         struct decoder d = {.ready = 0};
         #pragma omp for schedule(dynamic, 1)

@@ -39,6 +39,9 @@ enum ssg_err ssg_exr_open_write(const char *path, struct ssg_exr_io *io, exr_con
 /* The message of a failed call: what the context reported, else OpenEXR's text of rv. */
 const char *ssg_exr_why(const struct ssg_exr_io *io, exr_result_t rv);
 
+/* Images of fewer bytes of floats are written and read on one thread (exr_core.c). */
+#define SSG_EXR_PARALLEL_BYTES (4u << 20)
+
 /* Longest channel name, with its NUL (OpenEXR's long names: 255 bytes). */
 #define SSG_EXR_NAME_LEN 256
 
@@ -70,6 +73,9 @@ struct ssg_exr_zip {
 /* The ZIP chunk of `lines` lines from line dy of the planes (channels of width floats, in
  * the file's channel order): its size, the bytes in z->out; 0 when out of memory. */
 size_t ssg_exr_zip_chunk(struct ssg_exr_zip *z, const float *const *planes, int channels,
+                         int width, int dy, int lines);
+/* The same chunk uncompressed (compression NONE): the values in line, channel order. */
+size_t ssg_exr_raw_chunk(struct ssg_exr_zip *z, const float *const *planes, int channels,
                          int width, int dy, int lines);
 void ssg_exr_zip_free(struct ssg_exr_zip *z);
 

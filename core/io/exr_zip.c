@@ -120,6 +120,16 @@ size_t ssg_exr_zip_chunk(struct ssg_exr_zip *z, const float *const *planes, int 
     return raw;
 }
 
+size_t ssg_exr_raw_chunk(struct ssg_exr_zip *z, const float *const *planes, int channels,
+                         int width, int dy, int lines)
+{
+    size_t raw = (size_t)lines * (size_t)channels * (size_t)width * sizeof(float);
+    if (!reserve(&z->out, &z->out_cap, raw))
+        return 0;
+    pack_raw(z->out, planes, channels, width, dy, lines);
+    return raw;
+}
+
 void ssg_exr_zip_free(struct ssg_exr_zip *z)
 {
 #ifdef SSG_HAVE_LIBDEFLATE

@@ -75,7 +75,8 @@ static unsigned char *preview_codes(const struct ssg_image *im, enum ssg_tonemap
     float scale = exp2f(exposure);
     if (!codes)
         return NULL;
-    #pragma omp parallel for schedule(static)
+    /* rows in parallel only for a frame worth it (see exr_core.c's chunk loop) */
+    #pragma omp parallel for schedule(static) if (w * n * (size_t)im->height >= (1u << 20))
     for (int y = 0; y < im->height; y++) {
         unsigned char *line = codes + (size_t)y * w * n;
         for (size_t c = 0; c < n; c++) {
@@ -208,7 +209,7 @@ static void to_planes(const unsigned char *rows, const struct png_shape *p,
 {
     size_t w = p->w, n = (size_t)p->channels;
     float max = p->bits == 16 ? 65535.0f : 255.0f;
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if (w * n * p->h >= (1u << 20))
     for (int y = 0; y < (int)p->h; y++)
         for (size_t c = 0; c < n; c++) {
             float *dst = ssg_image_plane(im, (int)c) + (size_t)y * w;
