@@ -11,6 +11,9 @@
 #   small  `ssgraph run graphs/ssao.graph --size 160x90`, wall ms of the whole process
 #   write  the `write` node's ms in the table of `ssgraph run graphs/ssao.graph` (1280x720,
 #          18 channels: R,G,B, Z, ao, ao_raw, normal, position, albedo, direct)
+#   probe  the same 1280x720 run lit by examples/lights/courtyard.scene: its probe is a DWAB
+#          EXR, which only OpenImageIO reads, so both binaries load the module before the
+#          run and the write node's ms is the writing alone, before as after
 #   load   the one-off library loads the run's table lists (none when EXR and PNG are
 #          built in)
 # Each binary finds its OpenImageIO module next to itself. With -DSSGRAPH_BUILD_BENCH=ON the
@@ -29,6 +32,7 @@ now_ms() { date +%s%N | awk '{printf "%.3f", $1 / 1e6}'; }
 one_run() {
     local k=$1 kind=$2 bin=${bins[$1]} t0 t1 size=()
     [ "$kind" = small ] && size=(--size 160x90)
+    [ "$kind" = probe ] && size=(--lights examples/lights/courtyard.scene)
     t0=$(now_ms)
     /usr/bin/time -f "%U %S" -o "$work/time" "$bin" run graphs/ssao.graph "${size[@]}" \
         --out "$work/out$k" > "$work/log" 2>&1 || { echo "run failed: $(tail -3 "$work/log")" >&2; exit 1; }
@@ -40,9 +44,9 @@ one_run() {
     echo "$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}') $cpu $write $load" >> "$work/$k.$kind"
 }
 
-for kind in small full; do
+for kind in small full probe; do
     n=$runs
-    [ "$kind" = full ] && n=$(( (runs + 1) / 2 ))
+    [ "$kind" != small ] && n=$(( (runs + 1) / 2 ))
     for ((i = 0; i < n; i++)); do
         for k in "${!bins[@]}"; do one_run "$k" "$kind"; done
     done
@@ -55,7 +59,8 @@ def col(k, kind, i):
     return [float(l.split()[i]) for l in open(f"{work}/{k}.{kind}")]
 rows = [("small run, wall ms", "small", 0), ("small run, cpu s", "small", 1),
         ("small run, write ms", "small", 2), ("small run, load ms", "small", 3),
-        ("1280x720, write ms", "full", 2), ("1280x720, load ms", "full", 3)]
+        ("1280x720, write ms", "full", 2), ("1280x720, load ms", "full", 3),
+        ("probe-lit, write ms", "probe", 2), ("probe-lit, load ms", "probe", 3)]
 names = ["after" if count > 1 and k == 0 else "before" if k == 1 else "binary"
          for k in range(count)]
 print(f"{'':22}" + "".join(f"{n + ' median':>16}{'min':>10}" for n in names) +
@@ -64,7 +69,7 @@ for label, kind, i in rows:
     med = [statistics.median(col(k, kind, i)) for k in range(count)]
     low = [min(col(k, kind, i)) for k in range(count)]
     line = f"{label:22}" + "".join(f"{m:16.3f}{l:10.3f}" for m, l in zip(med, low))
-    if count > 1 and med[0] > 0:
+    if count > 1 and med[0] > 0 and med[1] > 0:
         line += f"   {med[1] / med[0]:8.2f}x"
     print(line)
 print(f"({len(col(0, 'small', 0))} small runs and {len(col(0, 'full', 0))} full ones each; "

@@ -10,11 +10,13 @@
 
 #include "ssgraph.h"
 
-/* The timing table (one frame) or the profile (several), then "GL: ..." when a node ran
- * on GL, then the metrics, as `ssgraph run` has always printed them. */
+/* The timing table (one frame) or the profile (several), with a `load` line for each
+ * library the process loaded once (graph/profile.h: the OpenImageIO module), then "GL: ..."
+ * when a node ran on GL, then the metrics, as `ssgraph run` has always printed them. */
 void ssg_report_print(const struct ssg_run_stats *stats, FILE *stream);
 
-/* The profile of the stats as JSON at path, whole or not at all (--profile-json). */
+/* The profile of the stats as JSON at path, whole or not at all (--profile-json), with the
+ * process's one-off loads as "loads": [{"what": ..., "ms": ...}]. */
 enum ssg_err ssg_report_write_json(const struct ssg_run_stats *stats, const char *path,
                                    struct ssg_diags *diags);
 

@@ -1,28 +1,32 @@
-/* imageio.h - image files through OpenImageIO (core/io/imageio_adapter.cc reads them,
- * imageio_write_adapter.cc writes them), behind a C header.
+/* imageio.h - image files: EXR and PNG read and written by the library itself (formats.h:
+ * OpenEXRCore, libpng), every other format read through the OpenImageIO module
+ * (oiio_module.h, opened only when such a file is met), all behind this C header.
  *
- * Reading is ssg_image_read (ssgraph.h). Writing covers what the `write` node needs: a
- * multi-layer 32-bit float EXR (ZIP, zlib level 1) and an 8-bit PNG preview whose tone
- * mapping and sRGB encoding happen here, in one place, so every caller previews images the
- * same way.
+ * Reading is ssg_image_read (ssgraph.h), which picks the reader by a file's first bytes,
+ * never by its name. Writing covers what the `write` node needs: a multi-layer 32-bit float
+ * EXR (ZIP, deflate level 1) and an 8-bit PNG preview whose tone mapping and sRGB encoding
+ * happen here, in one place, so every caller previews images the same way.
  *
  * Both writers write a hidden temporary file next to the target (".stem.tmp-PID-N.ext",
  * same directory, so rename() is atomic) and rename it into place only once it is complete;
  * on any failure the temporary file is removed and the target is left untouched. Output is
- * byte-deterministic: the same pixels give the same bytes (no time stamps, no software
- * name in the headers).
+ * byte-deterministic: the same pixels give the same bytes, whatever the thread count (no
+ * time stamps, no host or software name in the headers but ssgraph's own `software`).
  *
- * Colour: EXR data is written and read as is (linear). PNG is written sRGB-encoded; files
- * OpenImageIO reports as sRGB (8-bit PNG, JPEG, ...) are decoded to linear on reading, so
- * every image inside ssgraph is linear. Alpha is read as stored (not premultiplied).
+ * Colour: EXR data is written and read as is (linear). PNG is written sRGB-encoded (with an
+ * sRGB chunk); a PNG is decoded to linear on reading unless it says it is not sRGB (a gAMA
+ * chunk without an sRGB chunk, read as stored, as OpenImageIO reads it), and other files
+ * OpenImageIO reports as sRGB (JPEG, ...) are decoded too, so every image inside ssgraph is
+ * linear. Alpha is read as stored (not premultiplied).
  *
  * Errors go to diags with the file name: SSG_E_IO (cannot open, create, write or rename),
  * SSG_E_IMAGE (unreadable or malformed file), SSG_E_SIZE (absurd size), SSG_E_CHANNELS
  * (no such layer, or a layer whose channel count does not fit its kind), SSG_E_VALUE and
- * SSG_E_DUPLICATE (bad or repeated layer names), SSG_E_NOMEM. No C++ exception ever leaves
- * these functions.
- * Thread safety: no state but an atomic counter for temporary names; separate calls may
- * run in separate threads. */
+ * SSG_E_DUPLICATE (bad or repeated layer names), SSG_E_NOMEM, SSG_E_BACKEND (a format only
+ * OpenImageIO reads, and its module cannot be loaded). No C++ exception ever leaves these
+ * functions.
+ * Thread safety: no state but an atomic counter for temporary names and the module, opened
+ * once; separate calls may run in separate threads. */
 #ifndef SSG_IMAGEIO_H
 #define SSG_IMAGEIO_H
 
@@ -50,15 +54,17 @@ struct ssg_exr_layer {
     enum ssg_layer_kind kind;      /* how the channels are named; default SSG_LAYER_SCALAR */
 };
 
-/* Lossless EXR compressions, in the order of the write node's `compression` choices.
- * OpenEXR compresses a band's 16-line blocks on its own threads (OpenImageIO's default:
- * one per core; measured 1.35x faster than one thread on 2 cores). Measured on an
- * 18-channel 1280x720 frame on the 2-core development machine (EXR alone, with the fsync):
- * zip ~280 ms (9.2 MB), none ~160 ms (81 MB), rle ~280 ms (25 MB), piz ~440 ms (10 MB).
+/* Lossless EXR compressions, in the order of the write node's `compression` choices. The
+ * chunks are compressed on OpenMP's threads and written in order (exr_core.h). Measured on
+ * ssao.graph's 18-channel 1280x720 frame on the 2-core development machine, EXR alone with
+ * its fsync, CPU ms of both threads (wall ms on a busy machine in brackets; io_micro):
+ * zip ~400 (230-410; 15.7 MB), none ~95 (125-290; 66 MB), rle ~315 (165-190; 30 MB),
+ * piz ~1050 (530-580; 14.9 MB). OpenImageIO wrote zip in ~700-950 CPU ms.
  * zip stays the default: for intermediates it is the fastest compression that keeps the
  * files small, and none only pays where disk space does not matter. */
 enum ssg_exr_compression {
-    SSG_EXR_ZIP,  /* zlib level 1, 16-line blocks (the default) */
+    SSG_EXR_ZIP,  /* deflate level 1 (libdeflate where built with it, else zlib), 16-line
+                     chunks (the default) */
     SSG_EXR_NONE,
     SSG_EXR_RLE,
     SSG_EXR_PIZ,

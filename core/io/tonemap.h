@@ -1,7 +1,6 @@
 /* tonemap.h - the preview's tone curves and sRGB encoding, inline so that the PNG writer
- * in the OpenImageIO module (imageio_write_adapter.cc) and the C side (imageio_load.c:
- * ssg_tonemap_apply, ssg_tonemap_to_srgb8) compute the same bits from one definition.
- * C and C++. */
+ * (png_io.c) and the public functions (imageio_load.c: ssg_tonemap_apply,
+ * ssg_tonemap_to_srgb8) compute the same bits from one definition. C and C++. */
 #ifndef SSG_TONEMAP_H
 #define SSG_TONEMAP_H
 
