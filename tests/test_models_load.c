@@ -1,11 +1,15 @@
 /* test_models_load.c - mesh files of every format (core/scene/model.h): an OBJ with a
  * quad and a pentagon, an ASCII PLY box and an ASCII STL load through Assimp to the
  * triangle counts and bounds they were written with, as do a COLLADA quad and a glTF 1.0
- * triangle placed by their nodes; diffuse colours become base colours (an OBJ's the scene
+ * triangle placed by their nodes, and a PLY with a face of no vertices (which aborted
+ * Assimp's triangulation) loads its triangle; diffuse colours become base colours (an OBJ's the scene
  * material's albedo) and a file without materials takes the scene's default; a mesh
  * line's scale, rotate and translate place an OBJ as they place a glTF; unknown
  * extensions, a broken OBJ, a missing .mtl or texture and a Draco glTF give SSG_E_GLTF or
- * SSG_E_IO with the file named; the scale hint fires for a model in millimetres only. */
+ * SSG_E_IO with the file named; the scale hint fires for a model in millimetres only; each
+ * reader's up axis is what its format says (none for OBJ, +Y for a glTF and for a Z_UP
+ * COLLADA, which Assimp turns, the file's own for an FBX, which Assimp keeps), asked with
+ * or without the model. */
 #include <errno.h>
 #include <string.h>
 
@@ -27,6 +31,12 @@ static const char PLY[] = "ply\nformat ascii 1.0\nelement vertex 8\n"
                           "element face 6\nproperty list uchar int vertex_indices\nend_header\n"
                           "0 0 0\n1 0 0\n1 2 0\n0 2 0\n0 0 3\n1 0 3\n1 2 3\n0 2 3\n"
                           "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+
+/* A triangle and a face of no vertices. */
+static const char PLY_EMPTY_FACE[] = "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                     "property float x\nproperty float y\nproperty float z\n"
+                                     "element face 2\nproperty list uchar int vertex_indices\n"
+                                     "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n";
 
 /* Two facets spanning [-1,1] x [0,0] x [-2,2]. */
 static const char STL[] = "solid two\n"
@@ -72,6 +82,21 @@ static const char GLTF1[] =
     "\"target\": 34963}}, \"buffers\": {\"b\": {\"uri\": \"data:application/octet-stream;"
     "base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA\", \"byteLength\": 42, "
     "\"type\": \"arraybuffer\"}}}";
+
+/* A box 1 x 2 x 3 standing on z = 0, in an ASCII FBX 7.5 that says it is Z-up. */
+static const char FBX_Z_UP[] =
+    "; FBX 7.5.0 project file\n"
+    "FBXHeaderExtension:  {\n  FBXHeaderVersion: 1003\n  FBXVersion: 7500\n}\n"
+    "GlobalSettings:  {\n  Version: 1000\n  Properties70:  {\n"
+    "    P: \"UpAxis\", \"int\", \"Integer\", \"\",2\n"
+    "    P: \"UpAxisSign\", \"int\", \"Integer\", \"\",1\n  }\n}\n"
+    "Objects:  {\n  Geometry: 1, \"Geometry::box\", \"Mesh\" {\n"
+    "    Vertices: *24 {\n      a: 0,0,0,1,0,0,0,2,0,1,2,0,0,0,3,1,0,3,0,2,3,1,2,3\n    }\n"
+    "    PolygonVertexIndex: *24 {\n"
+    "      a: 0,2,3,-2,4,5,7,-7,0,1,5,-5,2,6,7,-4,0,4,6,-3,1,3,7,-6\n    }\n"
+    "    GeometryVersion: 124\n  }\n"
+    "  Model: 2, \"Model::box\", \"Mesh\" {\n    Version: 232\n  }\n}\n"
+    "Connections:  {\n  C: \"OO\",2,0\n  C: \"OO\",1,2\n}\n";
 
 static void bounds_of(const struct ssg_gltf *g, float lo[3], float hi[3], long long *tris)
 {
@@ -133,6 +158,10 @@ static void test_formats(void)
         ssg_gltf_destroy(&g);
     }
     g = expect_model(write_file("two.stl", STL), 2, (float[]){-1, 0, -2}, (float[]){1, 0, 2});
+    ssg_gltf_destroy(&g);
+    /* a face without indices: Assimp's triangulation aborted on it (found by fuzz_model) */
+    g = expect_model(write_file("empty_face.ply", PLY_EMPTY_FACE), 1, (float[]){0, 0, 0},
+                     (float[]){1, 1, 0});
     ssg_gltf_destroy(&g);
     g = expect_model(write_file("quad.dae", DAE), 2, (float[]){0, 0, 5}, (float[]){2, 1, 5});
     if (g) {
@@ -235,6 +264,42 @@ static void test_scale_hint(void)
     }
 }
 
+/* Loads path for its up axis, with the model and without; the model's box into lo, hi. */
+static void expect_up(const char *path, int axis, int sign, const char *basis, float lo[3],
+                      float hi[3])
+{
+    struct ssg_gltf *g = NULL;
+    struct ssg_model_up up = {9, 9, ""}, alone = {9, 9, ""};
+    char why[1024] = "";
+    long long tris;
+    CHECK_EQ(ssg_model_load_up(path, &g, &up, why, sizeof why), SSG_OK);
+    CHECK_EQ(ssg_model_load_up(path, NULL, &alone, why, sizeof why), SSG_OK);
+    CHECK(up.axis == axis && up.sign == sign && alone.axis == axis && alone.sign == sign);
+    if (!strstr(up.basis, basis) || strcmp(up.basis, alone.basis)) {
+        fprintf(stderr, "%s: up basis '%s' / '%s' lacks '%s'\n", path, up.basis, alone.basis,
+                basis);
+        CHECK(0);
+    }
+    if (g)
+        bounds_of(g, lo, hi, &tris);
+    ssg_gltf_destroy(&g);
+}
+
+static void test_up(void)
+{
+    float lo[3], hi[3];
+    char z_up[sizeof DAE];
+    snprintf(z_up, sizeof z_up, "%s", DAE);
+    memcpy(strstr(z_up, "Y_UP"), "Z", 1);
+    expect_up(write_file("two.obj", OBJ), -1, 1, "OBJ files do not say", lo, hi);
+    expect_up(write_file("tri1.gltf", GLTF1), 1, 1, "glTF 1.0", lo, hi);
+    expect_up(write_file("zup.dae", z_up), 1, 1, "Collada", lo, hi);
+    CHECK_NEAR(lo[1], 5, 1e-6); /* the node's z = 5 is now y */
+    CHECK_NEAR(hi[1], 5, 1e-6);
+    expect_up(write_file("zup.fbx", FBX_Z_UP), 2, 1, "UpAxis", lo, hi);
+    CHECK_NEAR(hi[2], 3, 1e-6); /* kept as written: 3 tall along z */
+}
+
 int main(void)
 {
     setup_tmp("test_models_load");
@@ -242,5 +307,6 @@ int main(void)
     test_failures();
     test_scene();
     test_scale_hint();
+    test_up();
     return check_report();
 }

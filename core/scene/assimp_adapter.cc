@@ -1,15 +1,20 @@
 /* assimp_adapter.cc - the C++ side of ssg_assimp_load (model.h): reads OBJ, PLY, FBX, 3DS,
  * STL, DAE, glTF 1.0 and the other formats of Debian's Assimp into the struct ssg_gltf the
- * tinygltf path fills, so the scene loader places both the same way.
+ * tinygltf path fills, so the scene loader places both the same way. It runs in this
+ * process: model.c calls it in a child process (model_sandbox.c), the fuzz target here.
  *
  * Assimp triangulates, drops points and lines, makes smooth normals where the file has
  * none and flips v to the top-left texture origin glTF uses; the node hierarchy is walked
  * here so every mesh instance gets its world transform (normals by the cofactor matrix,
- * the winding flipped under a mirroring transform). Coordinates stay as the file stores
- * them: no axis or unit conversion, so a Z-up or millimetre model is turned and scaled
- * by the mesh line's rotate and scale, like a glTF. A diffuse colour becomes base_color,
+ * the winding flipped under a mirroring transform). No axis or unit conversion is added
+ * here, so a Z-up or millimetre model is turned and scaled by the mesh line's rotate and
+ * scale, like a glTF; but some of Assimp's own readers convert: the 3DS reader turns 3ds
+ * Max's Z-up into Y-up, and the Collada reader the file's <up_axis>. find_up says which
+ * way is up after the import, and on what that rests (for `ssgraph check`), from those
+ * readers and from the UpAxis metadata others (FBX) leave. A diffuse colour becomes base_color,
  * a diffuse texture texture_file (decoded by the caller, scene_build.c). Assimp's own
- * DefaultMaterial and the unnamed white one of PLY (files without materials), and a
+ * DefaultMaterial, the 3DS reader's grey %%%DEFAULT, the unnamed white one of PLY (files
+ * without materials), and a
  * material with neither a diffuse colour nor a texture, map to "none": the scene's
  * default white applies, as for a glTF primitive without material.
  *
@@ -123,6 +128,8 @@ void Flattener::convert_materials()
         bool textured = src->GetTextureCount(aiTextureType_DIFFUSE) > 0;
         bool white = diffuse.r == 1.0f && diffuse.g == 1.0f && diffuse.b == 1.0f;
         bool placeholder = name.length == 0 && white && !textured; /* PLY's, STL's */
+        /* "%%%DEFAULT": the grey (0.3) the 3DS reader gives faces without a material */
+        placeholder |= std::strcmp(name.C_Str(), "%%%DEFAULT") == 0;
         if (std::strcmp(name.C_Str(), AI_DEFAULT_MATERIAL_NAME) == 0 || placeholder ||
             (!coloured && !textured)) {
             slot.push_back(-1);
@@ -222,6 +229,30 @@ ssg_gltf *Flattener::to_c() const
     return model_adapter::to_c(prims, materials, {}, nullptr);
 }
 
+/* A face with no index (a PLY list of length 0) is typed a polygon by Assimp's scene
+   preprocessor, and its triangulation then fails an assertion that aborts the process
+   (Debian builds Assimp with ai_assert; TriangulateProcess.cpp: numOut != mNumFaces).
+   Such faces are dropped, and the mesh's primitive types recomputed from what is left. */
+void drop_empty_faces(const aiScene &scene)
+{
+    for (unsigned m = 0; m < scene.mNumMeshes; m++) {
+        aiMesh &mesh = *scene.mMeshes[m]; /* the importer's own scene, mended in place */
+        unsigned kept = 0, types = 0;
+        for (unsigned f = 0; f < mesh.mNumFaces; f++) {
+            aiFace &face = mesh.mFaces[f];
+            if (!face.mNumIndices || !face.mIndices)
+                continue;
+            std::swap(mesh.mFaces[kept].mNumIndices, face.mNumIndices);
+            std::swap(mesh.mFaces[kept].mIndices, face.mIndices); /* freed with the array */
+            unsigned n = mesh.mFaces[kept++].mNumIndices;
+            types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
+        }
+        if (kept < mesh.mNumFaces)
+            mesh.mNumFaces = kept, mesh.mPrimitiveTypes = types;
+    }
+}
+
 /* "OBJ" for "cup.obj": the format as a message names it. */
 std::string format_name(const char *path)
 {
@@ -233,7 +264,35 @@ std::string format_name(const char *path)
     return name == "GLTF" || name == "GLB" ? "glTF 1.0" : name.empty() ? "a model" : name;
 }
 
-ssg_gltf *load(const char *path)
+/* The up axis after the import, from what the reader did or left in the metadata. Only
+   readers checked by tests/test_models.sh are named: 3DS and Collada convert, FBX keeps
+   the file's axes and says which is up, OBJ, PLY and STL carry none. */
+void find_up(const aiScene &scene, const std::string &format, ssg_model_up *up)
+{
+    int32_t axis = -1, sign = 1;
+    const aiMetadata *meta = scene.mMetaData;
+    if (meta && meta->Get("UpAxis", axis) && axis >= 0 && axis <= 2) {
+        meta->Get("UpAxisSign", sign);
+        *up = ssg_model_up{(int)axis, sign < 0 ? -1 : 1, ""};
+        std::snprintf(up->basis, sizeof up->basis, "the file's UpAxis metadata (%c%c), kept "
+                      "as written by Assimp's %s reader", sign < 0 ? '-' : '+', "XYZ"[axis],
+                      format.c_str());
+    } else if (format == "3DS") {
+        *up = ssg_model_up{1, 1, "Assimp's 3DS reader, which turns 3ds Max's Z-up into +Y"};
+    } else if (format == "DAE") {
+        *up = ssg_model_up{1, 1, "Assimp's Collada reader, which turns the file's <up_axis> "
+                                 "into +Y"};
+    } else if (format == "glTF 1.0") {
+        *up = ssg_model_up{1, 1, "the glTF 1.0 specification (+Y up)"};
+    } else {
+        *up = ssg_model_up{-1, 1, ""};
+        std::snprintf(up->basis, sizeof up->basis, "nothing: %s files do not say which way "
+                      "is up", format.c_str());
+    }
+}
+
+/* Reads path; with up, finds its up axis; with flatten, returns the meshes. */
+ssg_gltf *load(const char *path, ssg_model_up *up, bool flatten)
 {
     char why[256];
     enum ssg_err e = ssg_input_check(path, SSG_MAX_MODEL_BYTES, why, sizeof why);
@@ -246,10 +305,16 @@ ssg_gltf *load(const char *path)
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     /* Normals made for a file without any keep edges sharper than 80 degrees (a box's) */
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-    const aiScene *scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
-                  aiProcess_JoinIdenticalVertices | aiProcess_FlipUVs |
-                  aiProcess_ValidateDataStructure);
+    const unsigned steps = aiProcess_Triangulate | aiProcess_SortByPType |
+                           aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                           aiProcess_FlipUVs | aiProcess_ValidateDataStructure;
+    /* read first, then mend, then post-process: a face without indices kills the process
+       in Assimp's triangulation (below); the up axis alone needs none of the steps */
+    const aiScene *scene = importer.ReadFile(path, 0u);
+    if (scene && flatten) {
+        drop_empty_faces(*importer.GetScene());
+        scene = importer.ApplyPostProcessing(steps);
+    }
     std::string format = format_name(path);
     if (!io->failed.empty())
         fail("a file it names cannot be read: " + printable(io->failed));
@@ -257,10 +322,16 @@ ssg_gltf *load(const char *path)
         std::string error = printable(importer.GetErrorString());
         if (error.find("mNumMeshes is 0") != std::string::npos)
             error = "no meshes in it (an empty or broken file?)";
+        if (error.find("bad_alloc") != std::string::npos) /* Assimp caught it: we report it */
+            throw std::bad_alloc();
         fail("Assimp could not read it as " + format + ": " + error);
     }
     if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
         fail("Assimp read it as " + format + " only in part (no meshes: a broken file?)");
+    if (up)
+        find_up(*scene, format, up);
+    if (!flatten)
+        return nullptr;
     Flattener flat(*scene);
     flat.run();
     return flat.to_c();
@@ -278,8 +349,10 @@ extern "C" int ssg_assimp_supports(const char *ext)
     }
 }
 
-extern "C" enum ssg_err ssg_assimp_load(const char *path, struct ssg_gltf **out, char *why,
-                                        size_t why_len)
+extern "C" enum ssg_err ssg_assimp_load(const char *path, struct ssg_gltf **out,
+                                        struct ssg_model_up *up, char *why, size_t why_len)
 {
-    return model_adapter::guarded(path, out, why, why_len, load, "Assimp");
+    ssg_gltf *none = nullptr;
+    return model_adapter::guarded(path, out ? out : &none, why, why_len,
+                                  [&] { return load(path, up, out != nullptr); }, "Assimp");
 }

@@ -100,9 +100,15 @@ std::string printable(std::string text)
 ssg_err guarded(const char *path, ssg_gltf **out, char *why, size_t why_len,
                 ssg_gltf *(*load)(const char *path), const char *library)
 {
+    return guarded(path, out, why, why_len, [&] { return load(path); }, library);
+}
+
+ssg_err guarded(const char *path, ssg_gltf **out, char *why, size_t why_len,
+                const std::function<ssg_gltf *()> &load, const char *library)
+{
     *out = nullptr;
     try {
-        *out = load(path);
+        *out = load();
         return SSG_OK;
     } catch (const Failure &f) {
         report(why, why_len, path, f.message);

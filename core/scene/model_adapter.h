@@ -7,6 +7,7 @@
 #define SSG_MODEL_ADAPTER_H
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ std::string printable(std::string text);
    why (`library` names the reader for an unknown exception). Never throws. */
 ssg_err guarded(const char *path, ssg_gltf **out, char *why, size_t why_len,
                 ssg_gltf *(*load)(const char *path), const char *library);
+/* The same for a load that needs more than the path (what it returns may be NULL). */
+ssg_err guarded(const char *path, ssg_gltf **out, char *why, size_t why_len,
+                const std::function<ssg_gltf *()> &load, const char *library);
 
 } // namespace model_adapter
 

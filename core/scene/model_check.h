@@ -1,0 +1,41 @@
+/* model_check.h - private to the model pre-checks (model_check.c, model_check_ply.c,
+ * model_check_dae.c): the
+ * bytes under check and how a refusal is worded. Messages name the file and, in a text
+ * format, the line and column: "cube.dae:3:18: XML elements nested deeper than 256
+ * levels". No state beyond the struct the caller passes. */
+#ifndef SSG_MODEL_CHECK_H
+#define SSG_MODEL_CHECK_H
+
+#include <stddef.h>
+
+#include "ssgraph.h"
+
+/* One file's bytes under check, and where its message goes. */
+struct ssg_check {
+    const char *path; /* for messages */
+    const char *data; /* the whole file (not NUL-terminated) */
+    size_t len;       /* bytes */
+    char *why;        /* the message of a refusal */
+    size_t why_len;
+};
+
+/* 1-based line and byte column of offset at. */
+void ssg_check_line_col(const struct ssg_check *s, size_t at, int *line, int *column);
+
+/* "PATH:LINE:COLUMN: message" (at: a byte offset) or "PATH: message" into why; both
+   return SSG_E_GLTF. */
+enum ssg_err ssg_check_refuse_at(const struct ssg_check *s, size_t at, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+enum ssg_err ssg_check_refuse(const struct ssg_check *s, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* A PLY's header (ends in end_header within SSG_PLY_MAX_HEADER bytes) and its element
+   and list counts against the bytes after it (model_check_ply.c). */
+#define SSG_PLY_MAX_HEADER (1 << 20)
+enum ssg_err ssg_check_ply(const struct ssg_check *s);
+
+/* One open tag [at, end) of a COLLADA file (closed: it ends in "/>"): its count attribute
+   against the file's size, and an index list's text (model_check_dae.c). */
+enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, size_t at, size_t end, int closed);
+
+#endif
