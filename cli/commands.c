@@ -14,11 +14,14 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "and NAME.png in DIR, every other file of the run in DIR too (as --out DIR)."},
     {SSG_CLI_CHECK, "check", "FILE", 1, 1,
      "validate a graph and its scene without running it (FILE.scene:\n"
-     "validate a scene and load its meshes)",
+     "validate a scene and load its meshes; a model file: describe it)",
      "Validates the graph FILE (syntax, nodes, parameters and their ranges, connections,\n"
      "types, sizes, cycles) and its scene file without loading meshes or images, and\n"
      "prints `FILE: ok`. A FILE ending in .scene is validated as a scene, its meshes\n"
-     "loaded. Every problem is reported as FILE:LINE:COLUMN: error: ..."},
+     "loaded (each mesh's box after its line's transform, and the model's up axis). A\n"
+     "model file (.obj, .ply, .3ds, .gltf... what a scene's mesh line reads) is loaded\n"
+     "and described: its meshes, bounds, up axis, and a scene to paste around it.\n"
+     "Every problem is reported as FILE:LINE:COLUMN: error: ..."},
     {SSG_CLI_NODE, "node", "NAME", 1, 1,
      "run one node on image files (--in port=file.exr[:layer])",
      "Runs the node NAME alone on image files bound to its input ports, with --set\n"

@@ -1,12 +1,129 @@
-/* scene_info.c - the summary `ssgraph check FILE.scene` prints (scene_info.h). The library
- * returns the loaded scene (scene/scene.h); the printing is here. */
+/* scene_info.c - the summary `ssgraph check FILE.scene` and `ssgraph check MODEL` print
+ * (scene_info.h). The library returns the loaded scene (scene/scene.h) or model
+ * (scene/model.h) and the model's up axis; the printing, and the advice built on it (the
+ * up-axis hint, the scale hint, a scene to paste), are here. */
 #include "scene_info.h"
 
+#include <math.h>
+#include <string.h>
+
+#include "lang/diag.h"
+#include "lang/parse.h"
+#include "scene/model.h"
 #include "scene/scene.h"
+
+/* Mesh lines listed one by one up to this many meshes (a model of thousands would bury
+   the rest of the summary). */
+enum { MAX_LISTED_MESHES = 12 };
 
 static void print_vec(FILE *out, const char *label, const float v[3])
 {
     fprintf(out, "%s(%g, %g, %g)", label, (double)v[0], (double)v[1], (double)v[2]);
+}
+
+/* The box of `count` meshes; lo > hi when they hold no vertex. */
+static void meshes_bounds(const struct ssg_mesh *meshes, int count, float lo[3], float hi[3])
+{
+    for (int i = 0; i < 3; i++)
+        lo[i] = HUGE_VALF, hi[i] = -HUGE_VALF;
+    for (int m = 0; m < count; m++)
+        for (size_t v = 0; v < 3 * (size_t)meshes[m].vertex_count; v++) {
+            float p = meshes[m].positions[v];
+            lo[v % 3] = fminf(lo[v % 3], p);
+            hi[v % 3] = fmaxf(hi[v % 3], p);
+        }
+}
+
+/* One line per mesh, "INDENTmesh N: T triangles[, material 'M'], bounds min (..) max (..)",
+   the first MAX_LISTED_MESHES of them. */
+static void print_meshes(FILE *out, const char *indent, const struct ssg_mesh *meshes,
+                         int count, const struct ssg_gltf_material *materials)
+{
+    for (int i = 0; i < count && i < MAX_LISTED_MESHES; i++) {
+        float lo[3], hi[3];
+        meshes_bounds(&meshes[i], 1, lo, hi);
+        fprintf(out, "%smesh %d: %d triangles", indent, i, meshes[i].triangle_count);
+        if (materials && meshes[i].material >= 0 && materials[meshes[i].material].name[0])
+            fprintf(out, ", material '%s'", materials[meshes[i].material].name);
+        print_vec(out, ", bounds min ", lo);
+        print_vec(out, " max ", hi);
+        fputc('\n', out);
+    }
+    if (count > MAX_LISTED_MESHES)
+        fprintf(out, "%s(%d more meshes)\n", indent, count - MAX_LISTED_MESHES);
+}
+
+/* The axis along which the box is strictly the largest; -1 on a tie. */
+static int largest_axis(const float lo[3], const float hi[3])
+{
+    float e[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    for (int a = 0; a < 3; a++)
+        if (e[a] > e[(a + 1) % 3] && e[a] > e[(a + 2) % 3])
+            return a;
+    return -1;
+}
+
+/* The mesh line's rotate (about x, then y, then z) that turns `sign` `axis` into +Y, the
+   renderer's up; NULL when it is +Y already. */
+static const char *rotate_to_y(int axis, int sign)
+{
+    static const char *const turn[3][2] = {{"[0, 0, -90]", "[0, 0, 90]"},
+                                           {"[180, 0, 0]", NULL},
+                                           {"[90, 0, 0]", "[-90, 0, 0]"}};
+    return turn[axis][sign > 0];
+}
+
+/* The up-axis hint for a model whose box is lo..hi (`placed`: after its mesh line's
+   transform). The reader's up axis when it knows one; else a guess from the box, said to
+   be one. Returns the rotate it suggests, or NULL. */
+static const char *print_up(FILE *out, const char *indent, const struct ssg_model_up *up,
+                            const float lo[3], const float hi[3], int placed)
+{
+    static const char axes[] = "XYZ";
+    int big = largest_axis(lo, hi);
+    const char *where = placed ? "after the mesh line's transform, its box" : "its box";
+    fprintf(out, "%sup: ", indent);
+    if (up->axis >= 0) {
+        const char *turn = rotate_to_y(up->axis, up->sign);
+        fprintf(out, "%c%c, from %s: ", up->sign < 0 ? '-' : '+', axes[up->axis], up->basis);
+        if (turn)
+            fprintf(out, "rotate=%s on the mesh line stands it up (the renderer's up is +Y)",
+                    turn);
+        else
+            fprintf(out, "upright as loaded, no rotate needed (a Z-up rotate would lay it on "
+                    "its back)");
+        if (placed && big >= 0)
+            fprintf(out, "; %s is largest along %c", where, axes[big]);
+        fputc('\n', out);
+        return turn;
+    }
+    fprintf(out, "unknown (%s); %s is %g x %g x %g", up->basis, where, (double)(hi[0] - lo[0]),
+            (double)(hi[1] - lo[1]), (double)(hi[2] - lo[2]));
+    if (big == 2)
+        fprintf(out, ", largest along Z: looks Z-up, try rotate=[-90, 0, 0] (a guess from "
+                "the geometry)\n");
+    else if (big == 1)
+        fprintf(out, ", largest along Y, the renderer's up: looks upright (a guess from the "
+                "geometry)\n");
+    else
+        fprintf(out, ": no guess from the geometry (rotate=[-90, 0, 0] stands a Z-up model "
+                "up, rotate=[0, 0, 90] an X-up one)\n");
+    return big == 2 ? "[-90, 0, 0]" : NULL;
+}
+
+/* What a mesh line of the scene holds: each mesh's box after the transform, and the up
+   axis of its file (asked of the model reader again, for the up axis alone). */
+static void print_model_line(FILE *out, const struct ssg_scene *s,
+                             const struct ssg_scene_model *m)
+{
+    char path[1024], why[1024];
+    float lo[3], hi[3];
+    struct ssg_model_up up;
+    print_meshes(out, "      ", &s->meshes[m->first_mesh], m->mesh_count, NULL);
+    meshes_bounds(&s->meshes[m->first_mesh], m->mesh_count, lo, hi);
+    ssg_path_resolve(s->path, m->file, path, sizeof path);
+    if (ssg_model_load_up(path, NULL, &up, why, sizeof why) == SSG_OK && lo[0] <= hi[0])
+        print_up(out, "      ", &up, lo, hi, 1);
 }
 
 static void print_triangles(FILE *out, const struct ssg_scene *s)
@@ -20,6 +137,7 @@ static void print_triangles(FILE *out, const struct ssg_scene *s)
         fprintf(out, "    %s:%d:%d: mesh \"%s\": %lld triangles in %d mesh%s\n", s->path,
                 m->line, m->column, m->file, m->triangles, m->mesh_count,
                 m->mesh_count == 1 ? "" : "es");
+        print_model_line(out, s, m);
         in_models += m->triangles;
     }
     if (total > in_models)
@@ -94,5 +212,136 @@ enum ssg_err ssg_cli_check_scene(const char *path, FILE *out, struct ssg_diags *
     print_lights(out, s);
     print_scale_hint(out, s);
     ssg_scene_destroy(&s);
+    return SSG_OK;
+}
+
+int ssg_cli_is_model(const char *path)
+{
+    size_t len = strlen(path);
+    char why[512];
+    if ((len > 6 && !strcmp(path + len - 6, ".scene")) ||
+        (len > 6 && !strcmp(path + len - 6, ".graph")))
+        return 0;
+    return ssg_model_supported(path, why, sizeof why);
+}
+
+/* The loader's message as a diagnostic: "PATH:LINE:COLUMN: text" keeps its place. */
+static void model_diag(struct ssg_diags *d, enum ssg_err e, const char *path, const char *why)
+{
+    size_t n = strlen(path);
+    int line = 0, column = 0, used = 0;
+    if (!strncmp(why, path, n) && why[n] == ':') {
+        if (sscanf(why + n, ":%d:%d: %n", &line, &column, &used) == 2 && used > 0)
+            why += n + (size_t)used;
+        else
+            why += n + 1 + (why[n + 1] == ' ');
+    }
+    int before = d->count;
+    ssg_diag_file(d, e, path, "%s", why);
+    if (d->count > before && line > 0)
+        d->items[before].line = line, d->items[before].column = column;
+}
+
+/* p turned by the mesh line's rotate (degrees, about x, then y, then z, world axes). */
+static void turn(const float rot[3], const float p[3], float q[3])
+{
+    double v[3] = {p[0], p[1], p[2]};
+    for (int a = 0; a < 3; a++) {
+        double r = rot[a] * 3.14159265358979323846 / 180.0, c = cos(r), s = sin(r);
+        c = fabs(c) < 1e-12 ? 0.0 : c; /* a quarter turn is exact, not 6e-17 */
+        s = fabs(s) < 1e-12 ? 0.0 : s;
+        int i = (a + 1) % 3, j = (a + 2) % 3;
+        double vi = v[i] * c - v[j] * s, vj = v[i] * s + v[j] * c;
+        v[i] = vi, v[j] = vj;
+    }
+    for (int a = 0; a < 3; a++)
+        q[a] = (float)v[a];
+}
+
+/* The box lo..hi scaled and turned as the mesh line will, into plo..phi. */
+static void place_box(const float lo[3], const float hi[3], const float rot[3], float scale,
+                      float plo[3], float phi[3])
+{
+    for (int a = 0; a < 3; a++)
+        plo[a] = HUGE_VALF, phi[a] = -HUGE_VALF;
+    for (int k = 0; k < 8; k++) {
+        float p[3], q[3];
+        for (int a = 0; a < 3; a++)
+            p[a] = ((k >> a) & 1 ? hi[a] : lo[a]) * scale;
+        turn(rot, p, q);
+        for (int a = 0; a < 3; a++)
+            plo[a] = fminf(plo[a], q[a]), phi[a] = fmaxf(phi[a], q[a]);
+    }
+}
+
+/* A scene to paste around the model: its mesh line with the suggested rotate and scale, a
+   floor under it (occlusion needs something to land on) three times its width, a sun and
+   a sky; no camera line, so the bounds are framed. */
+static void print_snippet(FILE *out, const char *path, const char *rotate, float scale,
+                          const float lo[3], const float hi[3])
+{
+    const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
+    const char *dot = strrchr(name, '.');
+    float rot[3] = {0, 0, 0}, plo[3], phi[3];
+    if (rotate)
+        sscanf(rotate, "[%f, %f, %f]", &rot[0], &rot[1], &rot[2]);
+    place_box(lo, hi, rot, scale > 0.0f ? scale : 1.0f, plo, phi);
+    float width = 3.0f * fmaxf(phi[0] - plo[0], phi[2] - plo[2]);
+    fprintf(out, "  a scene around it (docs/scenes.md), to save as %.*s.scene next to %s:\n",
+            (int)(dot ? dot - name : (long)strlen(name)), name, name);
+    fprintf(out, "    mesh(\"%s\"", name);
+    if (rotate)
+        fprintf(out, ", rotate=%s", rotate);
+    if (scale > 0.0f)
+        fprintf(out, ", scale=%g", (double)scale);
+    fprintf(out, ")\n    plane(center=[%g, %g, %g], size=[%g, 0, %g])\n",
+            (double)(plo[0] + phi[0]) / 2, (double)plo[1], (double)(plo[2] + phi[2]) / 2,
+            (double)width, (double)width);
+    fprintf(out, "    directional_light(direction=[-0.4, -1, -0.6], intensity=2)\n"
+                 "    environment(color=[0.6, 0.7, 0.9], intensity=0.5)\n"
+                 "  and render it: ssgraph run graphs/ssdo.graph --scene %.*s.scene\n",
+            (int)(dot ? dot - name : (long)strlen(name)), name);
+}
+
+/* The scale hint of a scene holding only this model (ssg_scene_scale_hint's rule). */
+static float model_scale_hint(const struct ssg_gltf *g, float *diagonal)
+{
+    struct ssg_scene_model m = {.first_mesh = 0, .mesh_count = g->mesh_count};
+    struct ssg_scene s = {.mesh_count = g->mesh_count, .meshes = g->meshes,
+                          .model_count = 1, .models = &m};
+    return ssg_scene_scale_hint(&s, SSG_CLI_DEFAULT_AO_RADIUS, diagonal);
+}
+
+enum ssg_err ssg_cli_check_model(const char *path, FILE *out, struct ssg_diags *diags)
+{
+    struct ssg_gltf *g = NULL;
+    struct ssg_model_up up;
+    char why[1024];
+    enum ssg_err e = ssg_model_load_up(path, &g, &up, why, sizeof why);
+    if (e) {
+        model_diag(diags, e, path, why);
+        return e;
+    }
+    long long triangles = 0;
+    float lo[3], hi[3], diagonal;
+    for (int i = 0; i < g->mesh_count; i++)
+        triangles += g->meshes[i].triangle_count;
+    meshes_bounds(g->meshes, g->mesh_count, lo, hi);
+    fprintf(out, "%s: ok (a model; a scene file places it: see below)\n", path);
+    fprintf(out, "  triangles: %lld in %d mesh%s\n", triangles, g->mesh_count,
+            g->mesh_count == 1 ? "" : "es");
+    print_meshes(out, "    ", g->meshes, g->mesh_count, g->materials);
+    print_vec(out, "  bounds: min ", lo);
+    print_vec(out, " max ", hi);
+    fputc('\n', out);
+    const char *rotate = print_up(out, "  ", &up, lo, hi, 0);
+    float scale = model_scale_hint(g, &diagonal);
+    if (scale > 0.0f)
+        fprintf(out, "  scale: the bounding-box diagonal is %g, %g times the AO radius %g of "
+                "graphs/ssdo.graph: a model in %s? scale=%g fits it\n", (double)diagonal,
+                (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS),
+                (double)SSG_CLI_DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
+    print_snippet(out, path, rotate, scale, lo, hi);
+    ssg_gltf_destroy(&g);
     return SSG_OK;
 }

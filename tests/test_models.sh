@@ -4,7 +4,13 @@
 # bounds, the camera and the lights; a model in millimetres gets the scale hint and one in
 # metres does not; an unknown format, a broken OBJ, a missing model, .mtl or texture and a
 # Draco glTF each give the scene's file:line:column and the file's name, exit 1, and a run
-# writes nothing; graphs/ssao.graph renders examples/cup.scene (an OBJ).
+# writes nothing; graphs/ssao.graph renders examples/cup.scene (an OBJ). Issue 28: a DAE
+# nested 100,000 deep, a PLY header without end_header and one claiming 2e9 faces are
+# refused at their line:column before Assimp sees them (no crash, no hang, no 15 GB);
+# `check MODEL` prints the meshes, bounds, up axis and a scene that loads; a box standing
+# Z-up as OBJ, FBX and 3DS gets the right up-axis advice for its reader (3DS arrives Y-up,
+# and rotate=[-90, 0, 0] would lay it on its back), and `check FILE.scene` each mesh's box
+# after its transform.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_models"
 
@@ -99,6 +105,84 @@ bad missing.obj "No such file"
 bad nomtl.obj "gone.mtl"
 bad tex.obj "texture 'gone.png'"
 bad draco.gltf "Draco"
+
+# --- hostile files (issue 28): refused at their line:column, never a crash or a hang ---
+python3 - "$TMP" <<'PY'
+import struct, sys
+d = sys.argv[1]
+n = 100000  # <COLLADA> is level 1, the 254th node level 257: line 5, column 253 * 6 + 1
+open(f"{d}/deep.dae", "w").write('<?xml version="1.0"?>\n<COLLADA>\n<library_visual_scenes>\n'
+    '<visual_scene id="s">\n' + "<node>" * n + "</node>" * n + "\n</visual_scene>\n"
+    "</library_visual_scenes>\n</COLLADA>\n")
+open(f"{d}/hang.ply", "w").write("ply\nformat ascii 1.0\n")
+h = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+     b"property float y\nproperty float z\nelement face 2000000000\n"
+     b"property list uchar int vertex_indices\nend_header\n")
+open(f"{d}/bomb.ply", "wb").write(h + struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + bytes([3])
+                                  + struct.pack("<3i", 0, 1, 2))
+# a box 1 x 2 x 3 standing on z = 0, Z-up, as OBJ, 3DS (3ds Max's own axes) and FBX
+V = [(x, y, z) for z in (0, 3) for y in (0, 2) for x in (0, 1)]
+Q = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+open(f"{d}/tall.obj", "w").write("".join("v %g %g %g\n" % v for v in V)
+                                 + "".join("f %d %d %d %d\n" % tuple(i + 1 for i in q) for q in Q))
+def chunk(cid, body): return struct.pack("<HI", cid, 6 + len(body)) + body
+F = [f for q in Q for f in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]
+mesh = chunk(0x4110, struct.pack("<H", 8) + b"".join(struct.pack("<3f", *v) for v in V))
+mesh += chunk(0x4120, struct.pack("<H", 12) + b"".join(struct.pack("<4H", *f, 0) for f in F))
+edit = chunk(0x3D3E, struct.pack("<I", 3)) + chunk(0x4000, b"tall\0" + chunk(0x4100, mesh))
+open(f"{d}/tall.3ds", "wb").write(chunk(0x4D4D, chunk(0x0002, struct.pack("<I", 3))
+                                        + chunk(0x3D3D, edit)))
+idx = ",".join("%d,%d,%d,%d" % (a, b, c, -e - 1) for a, b, c, e in Q)
+open(f"{d}/tall.fbx", "w").write(
+    '; FBX 7.5.0 project file\nFBXHeaderExtension:  {\n FBXHeaderVersion: 1003\n FBXVersion: 7500\n}\n'
+    'GlobalSettings:  {\n Version: 1000\n Properties70:  {\n  P: "UpAxis", "int", "Integer", "",2\n'
+    '  P: "UpAxisSign", "int", "Integer", "",1\n }\n}\nObjects:  {\n Geometry: 1, "Geometry::box", "Mesh" {\n'
+    '  Vertices: *24 {\n   a: ' + ",".join("%g" % c for v in V for c in v) + '\n  }\n'
+    '  PolygonVertexIndex: *24 {\n   a: ' + idx + '\n  }\n  GeometryVersion: 124\n }\n'
+    ' Model: 2, "Model::box", "Mesh" {\n  Version: 232\n }\n}\nConnections:  {\n C: "OO",2,0\n C: "OO",1,2\n}\n')
+PY
+expect_exit 1 "deep.dae:5:1519: error: " timeout 120 "$BIN" check "$TMP/deep.dae"
+bad deep.dae "5:1519: XML"
+expect_exit 1 "hang.ply: error: .*end_header" timeout 120 "$BIN" check "$TMP/hang.ply"
+expect_exit 1 "bomb.ply:7:14: error: " timeout 120 "$BIN" check "$TMP/bomb.ply"
+
+# --- check MODEL: meshes, bounds, the up axis, and a scene around it that loads ---
+snippet() { # snippet MODEL NAME: check MODEL's scene, saved as NAME.scene beside it
+    "$BIN" check "$TMP/$1" | sed -n '/^  a scene around it/,/^  and render/p' | grep '^    ' \
+        | sed 's/^    //' > "$TMP/$2.scene"
+}
+expect_exit 0 "tall.3ds: ok" "$BIN" check "$TMP/tall.3ds"
+expect_exit 0 "mesh 0: 12 triangles, bounds min \(0, 0, -2\) max \(1, 3, 0\)" \
+    "$BIN" check "$TMP/tall.3ds"
+expect_exit 0 "up: \+Y, from Assimp's 3DS reader.*no rotate needed" "$BIN" check "$TMP/tall.3ds"
+snippet tall.3ds pasted3ds
+grep -q '^mesh("tall.3ds")$' "$TMP/pasted3ds.scene" || fail "3DS snippet: $(cat "$TMP/pasted3ds.scene")"
+expect_exit 0 "pasted3ds.scene: ok" "$BIN" check "$TMP/pasted3ds.scene"
+expect_exit 0 "up: unknown \(nothing: OBJ files do not say.*1 x 2 x 3, largest along Z: looks Z-up, try rotate=\[-90, 0, 0\]" \
+    "$BIN" check "$TMP/tall.obj"
+snippet tall.obj pastedobj
+grep -q '^mesh("tall.obj", rotate=\[-90, 0, 0\])$' "$TMP/pastedobj.scene" \
+    || fail "OBJ snippet: $(cat "$TMP/pastedobj.scene")"
+expect_exit 0 "plane\(center=\[0.5, 0, -1\], size=\[6, 0, 6\]\)" "cat" "$TMP/pastedobj.scene"
+expect_exit 0 "largest along Y, the renderer's up" "$BIN" check "$TMP/pastedobj.scene"
+expect_exit 0 "up: \+Z, from the file's UpAxis metadata.*FBX reader: rotate=\[-90, 0, 0\] on the mesh line stands it up" \
+    "$BIN" check "$TMP/tall.fbx"
+
+# --- check FILE.scene: each mesh's box after its transform, the up axis per reader ---
+z='(-?[0-9.]+e-0[6-9]|-?0)' # a quarter turn in floats leaves 0 as about 1e-7
+scene zobj tall.obj ", rotate=[-90, 0, 0]"
+expect_exit 0 "mesh 0: 12 triangles, bounds min \(0, $z, -2\) max \(1, 3, $z\)" \
+    "$BIN" check "$TMP/zobj.scene"
+expect_exit 0 "box is 1 x 3 x 2, largest along Y" "$BIN" check "$TMP/zobj.scene"
+scene z3ds tall.3ds
+expect_exit 0 "up: \+Y, from Assimp's 3DS reader.*no rotate needed.*largest along Y" \
+    "$BIN" check "$TMP/z3ds.scene"
+scene z3dsturned tall.3ds ", rotate=[-90, 0, 0]" # the old advice: on its back
+expect_exit 0 "mesh 0: 12 triangles, bounds min \(0, -2, -3\) max \(1, $z, $z\)" \
+    "$BIN" check "$TMP/z3dsturned.scene"
+expect_exit 0 "no rotate needed.*its box is largest along Z" "$BIN" check "$TMP/z3dsturned.scene"
+scene zfbx tall.fbx ", rotate=[-90, 0, 0]"
+expect_exit 0 "bounds: min \(0, $z, -2\) max \(1, 3, $z\)" "$BIN" check "$TMP/zfbx.scene"
 
 # --- the bundled OBJ example renders with the default AO graph ---
 rm -rf "$TMP/cup"
