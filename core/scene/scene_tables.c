@@ -129,7 +129,15 @@ const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
                      "first positional argument). glTF 2.0 keeps its node transforms, "
                      "baseColorFactor and baseColorTexture; other formats go through Assimp "
                      "(their diffuse colour and texture become the albedo). Transforms apply "
-                     "scale, then rotate, then translate."),
+                     "scale, then rotate, then translate. Up axes: glTF, 3DS and DAE arrive "
+                     "Y-up (Assimp turns 3DS and DAE: no rotate); OBJ, PLY, STL and FBX keep "
+                     "the file's axes, so a Z-up one takes `rotate=[-90, 0, 0]`; `ssgraph "
+                     "check MODEL` says which, and prints a scene around it. Assimp reads in "
+                     "a child process: XML or braces nested over 256 deep, and PLY, STL or 3DS "
+                     "counts beyond the file's size, are refused before it reads; an import "
+                     "that crashes, or runs over `$SSGRAPH_MODEL_TIMEOUT` seconds (default 60, "
+                     "plus 1 per 4 MiB of file) or `$SSGRAPH_MODEL_MEMORY` MiB (default half "
+                     "the RAM; not under AddressSanitizer), is an error at the mesh line."),
 };
 
 void ssg_scenes_markdown(FILE *stream)
