@@ -9,6 +9,8 @@
 #     right.Z, the right eye's camera as ssgraph:right:*) and a PNG per eye, nothing else.
 #  4. `node` on an ssgraph EXR uses its fov (40, not the default 45); --fov still wins; a
 #     foreign file (metadata erased) keeps the default.
+#  5. Every compression the write node offers (written by OpenEXRCore, docs/exr.md) reads in
+#     OpenImageIO as that compression, with the same pixels as zip.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_exr_meta"
 
@@ -93,5 +95,14 @@ info "$TMP/foreign.exr" | grep -q 'ssgraph:fov' && fail "the foreign file kept s
 ao foreign "$TMP/foreign.exr"
 [ "$(rmse "$TMP/foreign/out.exr" "$TMP/fov45/out.exr")" = 0 ] \
     || fail "a foreign file without --fov no longer gets the default fov"
+
+# --- 5. every compression, as OpenImageIO reads it ---
+for c in zip none rle piz; do
+    "$BIN" run graphs/ssao.graph --size 40x37 --set out.compression=$c --out "$TMP/c_$c" \
+        --quiet > "$TMP/log" 2>&1 || fail "compression=$c: $(tail -3 "$TMP/log")"
+    has "$TMP/c_$c/ssao.exr" "compression: \"$c\""
+    [ $c = zip ] || oiiotool --diff "$TMP/c_zip/ssao.exr" "$TMP/c_$c/ssao.exr" > "$TMP/diff" 2>&1 \
+        || fail "compression=$c differs from zip in OpenImageIO: $(tail -3 "$TMP/diff")"
+done
 
 finish test_exr_meta

@@ -97,8 +97,8 @@ enum ssg_err ssg_exr_open_read(const char *path, struct ssg_exr_io *io, exr_cont
     return SSG_E_IMAGE;
 }
 
-enum ssg_err ssg_exr_open_write(const char *path, struct ssg_exr_io *io, exr_context_t *ctx,
-                                struct ssg_diags *diags)
+enum ssg_err ssg_exr_open_write(const char *path, const char *t_path, struct ssg_exr_io *io,
+                                exr_context_t *ctx, struct ssg_diags *diags)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = on_error;
@@ -109,7 +109,9 @@ enum ssg_err ssg_exr_open_write(const char *path, struct ssg_exr_io *io, exr_con
     init.zip_level = 1;
     io->why[0] = '\0';
     *ctx = NULL;
-    exr_result_t rv = exr_start_write(ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
+    /* Our write_fn: OpenEXR neither opens nor, on failure, removes the file it is told
+       of; it is told of the temporary anyway, never the output it will replace. */
+    exr_result_t rv = exr_start_write(ctx, t_path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (rv == EXR_ERR_SUCCESS)
         return SSG_OK;
     ssg_diag_file(diags, SSG_E_IO, path, "cannot write image: %s", ssg_exr_why(io, rv));

@@ -31,10 +31,10 @@ struct ssg_exr_io {
 enum ssg_err ssg_exr_open_read(const char *path, struct ssg_exr_io *io, exr_context_t *ctx,
                                struct ssg_diags *diags);
 
-/* Starts writing into io->fd (a staged temporary: files.h), zlib level 1 for ZIP; one
- * scanline part is added by the caller. */
-enum ssg_err ssg_exr_open_write(const char *path, struct ssg_exr_io *io, exr_context_t *ctx,
-                                struct ssg_diags *diags);
+/* Starts writing into io->fd, the staged temporary t_path (files.h) of the output path
+ * (named in messages); one scanline part is added by the caller. */
+enum ssg_err ssg_exr_open_write(const char *path, const char *t_path, struct ssg_exr_io *io,
+                                exr_context_t *ctx, struct ssg_diags *diags);
 
 /* The message of a failed call: what the context reported, else OpenEXR's text of rv. */
 const char *ssg_exr_why(const struct ssg_exr_io *io, exr_result_t rv);

@@ -226,7 +226,7 @@ static enum ssg_err write_joined(const char *path, const struct view *v, int cou
     exr_context_t ctx;
     exr_compression_t compression = EXR_COMPRESSION_ZIP;
     const float *sorted[MAX_CHANNELS];
-    if (ssg_exr_open_write(path, &io, &ctx, diags))
+    if (ssg_exr_open_write(path, t->path, &io, &ctx, diags))
         return SSG_E_IO;
     exr_get_compression(v[0].ctx, 0, &compression);
     exr_result_t rv = ssg_exr_define_part(ctx, v[0].pixels->width, v[0].pixels->height,

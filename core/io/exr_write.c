@@ -123,7 +123,7 @@ static exr_result_t write_file(const char *path, const struct channels *ch, int 
 {
     struct ssg_exr_io io = {.fd = t->fd};
     exr_context_t ctx;
-    if (ssg_exr_open_write(path, &io, &ctx, diags))
+    if (ssg_exr_open_write(path, t->path, &io, &ctx, diags))
         return EXR_ERR_FILE_ACCESS;
     const float *sorted[MAX_CHANNELS];
     exr_result_t rv = ssg_exr_define_part(ctx, width, height, compression_of(compression),

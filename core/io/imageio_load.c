@@ -235,10 +235,8 @@ enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_imag
 {
     if (out)
         *out = NULL;
-    if (!path || !out) {
-        ssg_diag_file(diags, SSG_E_IO, path ? path : "", "no file name or no output given");
-        return SSG_E_IO;
-    }
+    if (ssg_api_null(diags, "ssg_image_read", "path, out", 2, path, out))
+        return SSG_E_USAGE;
     /* An empty path names no file: the module refuses it, after opening (which `ssgraph
        --version` relies on to name the OpenImageIO it would use). */
     int fd = -1, elsewhere = 0;
