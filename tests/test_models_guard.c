@@ -143,6 +143,8 @@ static void test_ply(void)
     expect_precheck(".ply", format, strlen(format), SSG_E_GLTF, "m:3:14: "); /* fuzzed too */
     const char *digits = "ply\nformat ascii 1.0\nelement 22222222222face 2\nend_header\n";
     expect_precheck(".ply", digits, strlen(digits), SSG_E_GLTF, "m:3:9: "); /* and this */
+    const char nul[] = "ply\nformat ascii 1.0\ncomment a\0b\nend_header\n"; /* and a hang */
+    expect_precheck(".ply", nul, sizeof nul - 1, SSG_E_GLTF, "m:3:10: ");
     const char *negative = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n";
     expect_precheck(".ply", negative, strlen(negative), SSG_E_GLTF, "m:13:1: ");
     for (int big = 0; big < 2; big++) {

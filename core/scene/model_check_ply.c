@@ -2,10 +2,11 @@
  * end_header without a bound (a 22-byte header without it spins forever), resizes a vector
  * to each element's count in the header, and to each list's count in the data, before it
  * reads a single entry: 219 bytes claiming 2e9 faces cost a minute and 15 GB. So the
- * header must end within SSG_PLY_MAX_HEADER bytes, and every count must fit in the bytes
- * that follow: binary, each entry's smallest size times the count (and every list's
- * entries) within what is left; ASCII, two characters a value (a digit and a space), each
- * list within its line. The data are walked once, in order, never allocated. */
+ * header must end within SSG_PLY_MAX_HEADER bytes and hold no NUL byte (which hangs it as
+ * well), and every count must fit in the bytes that follow: binary, each entry's smallest
+ * size times the count (and every list's entries) within what is left; ASCII, two
+ * characters a value (a digit and a space), each list within its line. The data are walked
+ * once, in order, never allocated. */
 #include <ctype.h>
 #include <limits.h>
 #include <stdint.h>
@@ -183,8 +184,11 @@ static enum ssg_err read_header(const struct ssg_check *s, struct ply_header *h)
         at = end + (end < s->len && s->data[end] == '\r');
         at += at < s->len && s->data[at] == '\n';
         if (word_is(s, &l, 0, "end_header")) {
+            const char *nul = memchr(s->data, 0, at); /* found by fuzz/fuzz_model.c */
             h->data = at;
-            return SSG_OK;
+            return nul ? ssg_check_refuse_at(s, (size_t)(nul - s->data), "a NUL byte in the "
+                                             "PLY header (Assimp's reader loops forever on it)")
+                       : SSG_OK;
         }
         enum ssg_err e = header_line(s, &l, h);
         if (e)
