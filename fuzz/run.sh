@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # fuzz/run.sh [SECONDS] [TARGET...]: builds the libFuzzer targets with clang into
 # build-fuzz/ (library and targets instrumented, ASan + UBSan) and runs each TARGET (default:
-# graph scene gltf image) for SECONDS (default 600), one after another, starting from the
+# graph scene gltf image model) for SECONDS (default 600), one after another, starting from the
 # seeds in fuzz/seeds_<target>.txt. Each target keeps its growing corpus in
 # build-fuzz/corpus/<target>/ between runs; a crash, leak, timeout (20 s) or out-of-memory
 # input is saved in build-fuzz/findings/<target>/ and the script exits 1 at the end; an
@@ -14,7 +14,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 secs=${1:-600}
 [ $# -gt 0 ] && shift
-targets=${*:-graph scene gltf image}
+targets=${*:-graph scene gltf image model}
 cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DSSG_FUZZ=ON \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null || exit 1
 cmake --build build-fuzz -j"$(nproc)" $(printf -- '--target fuzz_%s ' $targets) > /dev/null || exit 1
