@@ -45,6 +45,13 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ssgraphConfig.cmake
 # pkg-config: relative to the .pc file's own place, so an installed tree can be moved.
 file(RELATIVE_PATH SSG_PC_TO_PREFIX ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
 string(REGEX REPLACE "/$" "" SSG_PC_TO_PREFIX "${SSG_PC_TO_PREFIX}")
+# The static library's image libraries (CMakeLists.txt finds them by path): -lNAME each.
+set(SSG_PC_IMAGE_LIBS "")
+foreach(lib ${SSG_EXRCORE_LIB} ${PNG_LIBRARIES} ${SSG_PC_DEFLATE})
+  get_filename_component(name ${lib} NAME_WE)
+  string(REGEX REPLACE "^lib" "" name "${name}")
+  string(APPEND SSG_PC_IMAGE_LIBS " -l${name}")
+endforeach()
 configure_file(cmake/ssgraph.pc.in ${CMAKE_CURRENT_BINARY_DIR}/ssgraph.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ssgraph.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 

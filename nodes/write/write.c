@@ -39,8 +39,8 @@ static const struct ssg_param_desc param_table[] = {
      .help = "write the 32-bit float EXR with all layers"},
     {.name = "compression", SSG_FIELD_ENUM(struct ssg_write_params, compression),
      .def = SSG_EXR_ZIP, .choices = compressions,
-     .help = "EXR compression, all lossless: zip (zlib level 1, on OpenEXR's threads) is "
-             "small; none ~1.7x faster to write and ~9x larger; rle and piz are slower"},
+     .help = "EXR compression, all lossless: zip (deflate level 1, chunks on every thread) "
+             "is small; none ~1.7x faster to write and ~9x larger; rle and piz are slower"},
 };
 
 int ssg_write_name_ok(const char *name, char *why, size_t why_len)
