@@ -145,6 +145,14 @@ static void test_ply(void)
     expect_precheck(".ply", digits, strlen(digits), SSG_E_GLTF, "m:3:9: "); /* and this */
     const char nul[] = "ply\nformat ascii 1.0\ncomment a\0b\nend_header\n"; /* and a hang */
     expect_precheck(".ply", nul, sizeof nul - 1, SSG_E_GLTF, "m:3:10: ");
+    const char *hidden = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    char cr[512];
+    snprintf(cr, sizeof cr, "%.*s\r%s", (int)(strstr(hidden, "end_header") - hidden), hidden,
+             strstr(hidden, "end_header")); /* "\n\rend_header": Assimp never sees it */
+    expect_precheck(".ply", cr, strlen(cr), SSG_E_GLTF, "m: ");
+    snprintf(cr, sizeof cr, "%.*s\r%s", (int)(strstr(hidden, "\nend_header") - hidden), hidden,
+             strstr(hidden, "\nend_header")); /* "\r\nend_header": a CRLF header is fine */
+    expect_precheck(".ply", cr, strlen(cr), SSG_OK, NULL);
     const char *negative = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n";
     expect_precheck(".ply", negative, strlen(negative), SSG_E_GLTF, "m:13:1: ");
     for (int big = 0; big < 2; big++) {

@@ -173,19 +173,42 @@ static enum ssg_err header_line(const struct ssg_check *s, const struct ply_line
     return SSG_OK;
 }
 
-/* Reads the header up to end_header; h->data is where the data begin. */
+static int is_line_end(char c)
+{
+    return c == '\r' || c == '\n' || c == '\f' || c == 0;
+}
+
+/* The next header line from at as Assimp's IOStreamBuffer::getNextLine cuts it: a line
+   ends at \r, \n, \f or NUL, of which one character is consumed; a line starting on such a
+   character first skips past the next \n. So "\n\rend_header\n" hides end_header from it,
+   and it reads on forever (found by fuzz/fuzz_model.c). Returns the line's end; its start
+   into *start. */
+static size_t next_header_line(const struct ssg_check *s, size_t at, size_t limit,
+                               size_t *start)
+{
+    if (at < limit && is_line_end(s->data[at])) {
+        const char *nl = memchr(s->data + at, '\n', limit - at);
+        at = nl ? (size_t)(nl - s->data) + 1 : limit;
+    }
+    *start = at;
+    while (at < limit && !is_line_end(s->data[at]))
+        at++;
+    return at;
+}
+
+/* Reads the header up to end_header, line by line as Assimp does; h->data is where the
+   data begin. */
 static enum ssg_err read_header(const struct ssg_check *s, struct ply_header *h)
 {
-    size_t limit = s->len < SSG_PLY_MAX_HEADER ? s->len : SSG_PLY_MAX_HEADER;
+    size_t limit = s->len < SSG_PLY_MAX_HEADER ? s->len : SSG_PLY_MAX_HEADER, start;
     for (size_t at = 0; at < limit;) {
         struct ply_line l;
-        size_t end = line_end(s, at, limit);
-        split_line(s, at, end, &l);
-        at = end + (end < s->len && s->data[end] == '\r');
-        at += at < s->len && s->data[at] == '\n';
+        size_t end = next_header_line(s, at, limit, &start);
+        split_line(s, start, end, &l);
+        at = end + 1;
         if (word_is(s, &l, 0, "end_header")) {
-            const char *nul = memchr(s->data, 0, at); /* found by fuzz/fuzz_model.c */
-            h->data = at;
+            const char *nul = memchr(s->data, 0, end); /* found by fuzz/fuzz_model.c */
+            h->data = at + (at < s->len && s->data[end] == '\r' && s->data[at] == '\n');
             return nul ? ssg_check_refuse_at(s, (size_t)(nul - s->data), "a NUL byte in the "
                                              "PLY header (Assimp's reader loops forever on it)")
                        : SSG_OK;
@@ -197,8 +220,9 @@ static enum ssg_err read_header(const struct ssg_check *s, struct ply_header *h)
     if (limit < s->len)
         return ssg_check_refuse(s, "a PLY header with no end_header line in its first %d "
                                 "bytes", SSG_PLY_MAX_HEADER);
-    return ssg_check_refuse(s, "a PLY header with no end_header line (the file ends after "
-                            "%zu bytes of header)", s->len);
+    return ssg_check_refuse(s, "a PLY header with no end_header line Assimp would find (the "
+                            "file ends after %zu bytes, or an empty line before end_header "
+                            "hides it)", s->len);
 }
 
 static unsigned long long read_uint(const char *p, int size, int big, int is_signed)
