@@ -98,6 +98,14 @@ static void nodes(void)
     d = (struct ssg_diags){0};
     expect_usage(ssg_node_run("gaussian", NULL, 0, NULL, 1, NULL, &out, &d), &d,
                  "ssg_node_run", "sets");
+    const char *sets[] = {NULL, "sigma=1"};
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_node_run("gaussian", NULL, 0, sets, 2, NULL, &out, &d), &d,
+                 "ssg_node_run", "sets[0]");
+    struct ssg_binding bind = {NULL, NULL};
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_node_run("gaussian", &bind, 1, NULL, 0, NULL, &out, &d), &d,
+                 "ssg_node_run", "inputs[0].port");
     ssg_outputs_release(NULL);
     CHECK_EQ(ssg_node_describe(NULL, stdout), SSG_E_USAGE);
     CHECK_EQ(ssg_node_describe("ssao", NULL), SSG_E_USAGE);

@@ -59,7 +59,13 @@ static enum ssg_err bind_inputs(struct single *s, const struct ssg_binding *inpu
 {
     enum ssg_err first = SSG_OK;
     for (int i = 0; i < count; i++) {
-        enum ssg_err e = bind_one(s, &inputs[i], diags);
+        enum ssg_err e = SSG_E_USAGE;
+        if (!inputs[i].port || !inputs[i].image)
+            ssg_diag_file(diags, SSG_E_USAGE, NULL, "ssg_node_run: inputs[%d].%s is NULL "
+                          "(expected a port name and an image)", i,
+                          inputs[i].port ? "image" : "port");
+        else
+            e = bind_one(s, &inputs[i], diags);
         if (e && !first)
             first = e;
     }
@@ -120,7 +126,11 @@ static enum ssg_err apply_sets(const struct ssg_node_desc *d, void *params,
     enum ssg_err first = SSG_OK;
     for (int i = 0; i < count; i++) {
         enum ssg_err e;
-        if (!backend_set(d, sets[i], backend, &e, diags))
+        if (!sets[i]) {
+            ssg_diag_file(diags, SSG_E_USAGE, NULL, "ssg_node_run: sets[%d] is NULL (expected "
+                          "\"param=value\")", i);
+            e = SSG_E_USAGE;
+        } else if (!backend_set(d, sets[i], backend, &e, diags))
             e = ssg_param_set_text(d->params, params, sets[i], "<--set>", d->name, diags);
         if (e && !first)
             first = e;
