@@ -17,6 +17,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "clock.h"
 #include "io/imageio.h"
 #include "ssgraph.h"
 
@@ -31,19 +32,6 @@ static const struct {
     {"albedo", SSG_LAYER_COLOR},       {"direct", SSG_LAYER_COLOR},
 };
 enum { LAYERS = sizeof layer_list / sizeof layer_list[0], MAX_RUNS = 101 };
-
-static double clock_ms(clockid_t clock)
-{
-    struct timespec ts;
-    clock_gettime(clock, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static long long bytes_of(const char *path)
 {

@@ -10,23 +10,11 @@
 #include <string.h>
 #include <time.h>
 
+#include "clock.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
 enum { W = 1920, H = 1080 };
-
-static double clock_ms(clockid_t clock)
-{
-    struct timespec ts;
-    clock_gettime(clock, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* Runs the node's CPU kernel once to warm caches and threads, then `runs` times: the
    wall and process CPU milliseconds of each run into ms and cpu, sorted (medians at
