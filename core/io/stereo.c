@@ -2,16 +2,15 @@
  * (stereo.h). */
 #include <dirent.h>
 #include <errno.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/types.h>
 #include <unistd.h>
 
 #include "io/imageio.h"
 #include "io/stereo.h"
 #include "lang/diag.h"
+#include "lang/files.h"
 
 enum { PATH_LEN = 4096, MAX_FILES = 256, MAX_VIEWS = 8 };
 
@@ -169,7 +168,7 @@ void ssg_stereo_sweep(const char *out_dir)
     for (struct dirent *e; (e = readdir(d));) {
         long pid = eye_folder_owner(e->d_name);
         /* a live process's folder (its run still going) is left alone */
-        if (pid <= 0 || pid == (long)getpid() || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+        if (!ssg_pid_gone(pid))
             continue;
         char path[PATH_LEN];
         if (snprintf(path, sizeof path, "%s/%s", out_dir, e->d_name) < (int)sizeof path) {

@@ -229,6 +229,11 @@ static long tmp_owner(const char *name)
     return *p == 0 || !strcmp(p, ".exr") || !strcmp(p, ".png") ? pid : 0;
 }
 
+int ssg_pid_gone(long pid)
+{
+    return pid > 0 && pid != (long)getpid() && kill((pid_t)pid, 0) != 0 && errno == ESRCH;
+}
+
 /* Removes temporaries in dir left by processes that were killed outright (their handler
    never ran). Stale means both: its pid is not a live process here, and nobody holds the
    lock its writer takes for as long as it lives (ssg_tmp_create), which also protects a
@@ -240,7 +245,7 @@ static void remove_stale(const char *dir)
         return;
     for (struct dirent *e; (e = readdir(d));) {
         long pid = tmp_owner(e->d_name);
-        if (pid <= 0 || pid == (long)getpid() || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+        if (!ssg_pid_gone(pid))
             continue;
         char path[PATH_MAX_LEN + 256];
         snprintf(path, sizeof path, "%s%s", dir, e->d_name);

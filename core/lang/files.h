@@ -47,6 +47,11 @@ enum ssg_err ssg_input_check(const char *path, long long max_bytes, char *why,
 enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, size_t *len,
                             char *why, size_t why_len);
 
+/* 1 when no process with this pid exists here (kill(pid, 0) fails with ESRCH): whatever it
+ * left behind in an output folder (a temporary, a stereo eye's folder) is stale. 0 for
+ * this process, a live one, or pid <= 0. */
+int ssg_pid_gone(long pid);
+
 #define SSG_TMP_MAX 64
 
 /* One output being written: the temporary (open as fd until ssg_tmp_close) and its

@@ -31,17 +31,24 @@ void ssg_check_line_col(const struct ssg_check *s, size_t at, int *line, int *co
     *column = (int)(at - start) + 1;
 }
 
-enum ssg_err ssg_check_refuse_at(const struct ssg_check *s, size_t at, const char *fmt, ...)
+/* The reason into s->why after its prefix ("file:line:col: " or "file: "). */
+static enum ssg_err vrefuse(const struct ssg_check *s, int n, const char *fmt, va_list ap)
 {
-    int line, column, n;
-    ssg_check_line_col(s, at, &line, &column);
-    n = snprintf(s->why, s->why_len, "%s:%d:%d: ", s->path, line, column);
-    va_list ap;
-    va_start(ap, fmt);
     if (n >= 0 && (size_t)n < s->why_len)
         vsnprintf(s->why + n, s->why_len - (size_t)n, fmt, ap);
-    va_end(ap);
     return SSG_E_GLTF;
+}
+
+enum ssg_err ssg_check_refuse_at(const struct ssg_check *s, size_t at, const char *fmt, ...)
+{
+    int line, column;
+    ssg_check_line_col(s, at, &line, &column);
+    int n = snprintf(s->why, s->why_len, "%s:%d:%d: ", s->path, line, column);
+    va_list ap;
+    va_start(ap, fmt);
+    enum ssg_err e = vrefuse(s, n, fmt, ap);
+    va_end(ap);
+    return e;
 }
 
 enum ssg_err ssg_check_refuse(const struct ssg_check *s, const char *fmt, ...)
@@ -49,10 +56,9 @@ enum ssg_err ssg_check_refuse(const struct ssg_check *s, const char *fmt, ...)
     int n = snprintf(s->why, s->why_len, "%s: ", s->path);
     va_list ap;
     va_start(ap, fmt);
-    if (n >= 0 && (size_t)n < s->why_len)
-        vsnprintf(s->why + n, s->why_len - (size_t)n, fmt, ap);
+    enum ssg_err e = vrefuse(s, n, fmt, ap);
     va_end(ap);
-    return SSG_E_GLTF;
+    return e;
 }
 
 /* 1 when the bytes at i are text. */
