@@ -328,5 +328,7 @@ unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image)
         return SSG_T_LIGHTS;
     if (image->width == image->height && (accepted & SSG_T_SHADOWMAPS))
         return SSG_T_SHADOWMAPS;
+    if (image->width == image->height && (accepted & SSG_T_LIGHTMAPS))
+        return SSG_T_LIGHTMAPS;
     return 0;
 }

@@ -60,6 +60,8 @@ enum ssg_type {
     SSG_T_SHADOWMAPS = 1u << 6, /* R x R, one channel per light of a light list: the depth
                                    of the nearest surface below each texel of light i's
                                    orthographic map (nodes/common/shadowmap.h) */
+    SSG_T_LIGHTMAPS = 1u << 7, /* R x R, channels per face of the scene's own lights' maps
+                                  (depth 1, normal 3, flux 3 a face; nodes/common/lightmap.h) */
 };
 #define SSG_T_IMAGE (SSG_T_SCALAR | SSG_T_VECTOR | SSG_T_COLOR)
 

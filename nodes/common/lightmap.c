@@ -1,0 +1,74 @@
+/* lightmap.c - the faces of lightmap.h, built from the scene's lights alone. */
+#include "scene/scene.h"
+#include "common/lightmap.h"
+
+/* The cube's faces: look axis, then u and v, with u x v = axis. */
+static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
+    {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+    {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+};
+
+int ssg_lightmap_face_count(const struct ssg_scene *scene)
+{
+    int n = 0;
+    for (int i = 0; scene && i < scene->light_count; i++)
+        n += scene->lights[i].kind == SSG_LIGHT_POINT ? SSG_LIGHTMAP_CUBE_FACES : 1;
+    return n > 0 ? n : 1;
+}
+
+static void directional_face(const struct ssg_bounding_sphere *sphere,
+                             const struct ssg_light *light, struct ssg_lightmap_face *f)
+{
+    float l[3] = {-light->direction[0], -light->direction[1], -light->direction[2]};
+    struct ssg_shadow_frame frame = ssg_shadow_frame_make(sphere, l);
+    f->ortho = 1;
+    f->half = frame.radius;
+    for (int k = 0; k < 3; k++) {
+        f->origin[k] = frame.origin[k];
+        f->u[k] = frame.u[k];
+        f->v[k] = frame.v[k];
+        f->axis[k] = -l[k];
+    }
+}
+
+static void cube_face(const struct ssg_light *light, int side, struct ssg_lightmap_face *f)
+{
+    f->ortho = 0;
+    f->half = 1.0f;
+    for (int k = 0; k < 3; k++) {
+        f->origin[k] = light->position[k];
+        f->axis[k] = CUBE[side][0][k];
+        f->u[k] = CUBE[side][1][k];
+        f->v[k] = CUBE[side][2][k];
+    }
+}
+
+int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_face *faces,
+                       int max)
+{
+    int count = ssg_lightmap_face_count(scene);
+    if (count > max)
+        return -1;
+    if (!scene || scene->light_count == 0) {
+        faces[0] = (struct ssg_lightmap_face){.light = -1, .ortho = 1, .half = 1.0f,
+                                              .u = {1, 0, 0}, .v = {0, 1, 0},
+                                              .axis = {0, 0, 1}};
+        return 1;
+    }
+    struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(scene);
+    int n = 0;
+    for (int i = 0; i < scene->light_count; i++) {
+        const struct ssg_light *light = &scene->lights[i];
+        if (light->kind == SSG_LIGHT_DIRECTIONAL) {
+            faces[n] = (struct ssg_lightmap_face){.light = i};
+            directional_face(&sphere, light, &faces[n++]);
+            continue;
+        }
+        for (int side = 0; side < SSG_LIGHTMAP_CUBE_FACES; side++) {
+            faces[n] = (struct ssg_lightmap_face){.light = i};
+            cube_face(light, side, &faces[n++]);
+        }
+    }
+    return n;
+}

@@ -1,0 +1,124 @@
+/* lightmap.h - the maps of a scene's own lights (point_light, directional_light), shared by
+ * the node that renders them (`lightmaps`) and the nodes that read them (shadowed direct
+ * light, the reflective-shadow-map gather): every node builds the same faces from the scene
+ * alone, so no matrix travels along an edge (as nodes/common/shadowmap.h does for the
+ * probe's lights).
+ *
+ * Faces. Light i of the scene (scene order) owns consecutive faces: one for a directional
+ * light, an orthographic map over the scene's bounding sphere in the frame of
+ * ssg_shadow_frame_make (l = -direction, towards the light), and six for a point light, a
+ * cube map around its position, face k a 90 degree perspective view along CUBE axis k
+ * (+x, -x, +y, -y, +z, -z). A scene without such lights has one empty face (light -1), so
+ * that an image always has channels.
+ *
+ * Texel (x, y) of a face (row 0 at -v) has a = 2 (x + 0.5) / R - 1, b = 2 (y + 0.5) / R - 1
+ * in [-1, 1]; its ray runs
+ *   orthographic: from origin + half (a u + b v) along axis (= -l),
+ *   cube:         from the light's position (origin) along axis + a u + b v,
+ * and a world point p lies at depth z = dot(p - origin, axis) on every face kind:
+ * orthographic a = dot(p - origin, u) / half, cube a = dot(p - origin, u) / z (same for b
+ * with v). That depth z is what the maps store and what a shadow test compares.
+ *
+ * Images (SSG_T_LIGHTMAPS, R x R, planar channels, F faces):
+ *   depth   F channels: z of the nearest surface on texel (x, y) of face f (both faces of
+ *           every triangle count), SSG_SHADOW_EMPTY where the ray meets nothing (within
+ *           2 radius for an orthographic face, within the scene for a cube face);
+ *   normal  3F channels (face f at channels 3f .. 3f + 2): that surface's unit world shading
+ *           normal, turned to face the light; 0 where empty;
+ *   flux    3F channels: the RGB radiant flux that surface patch reflects (diffuse albedo
+ *           times the flux arriving through the texel, W): orthographic
+ *           albedo x E x (2 half / R)^2 with E the light's colour x intensity (irradiance on
+ *           a surface facing it), cube albedo x I x ssg_lightmap_texel_solid_angle with I the
+ *           colour x intensity (radiant intensity); 0 where empty. A patch of reflected flux
+ *           Phi at y with normal n_y gives a point x with normal n_x the irradiance
+ *           Phi / pi x max(0, n_y . w) max(0, -n_x . w) / d^2, w = (y - x) / d reversed
+ *           (Dachsbacher and Stamminger, "Reflective Shadow Maps", I3D 2005, eq. 1, with the
+ *           1/pi of a Lambertian sender that the paper folds into its flux). */
+#ifndef SSG_LIGHTMAP_H
+#define SSG_LIGHTMAP_H
+
+#include <math.h>
+
+#include "common/shadowmap.h"
+
+struct ssg_scene;
+
+enum { SSG_LIGHTMAP_CUBE_FACES = 6 };
+/* Most faces one set of maps may have: the normal and flux images hold 3 channels a face
+   and an image at most SSG_IMAGE_MAX_CHANNELS (2048) channels. */
+enum { SSG_LIGHTMAP_FACES_MAX = 682 };
+
+struct ssg_lightmap_face {
+    int light;        /* index into scene->lights; -1 for the empty face of a scene without */
+    int ortho;        /* 1: a directional light's orthographic map; 0: a cube face */
+    float origin[3];  /* orthographic: the centre of the map's plane; cube: the light */
+    float u[3], v[3]; /* the face's image axes (a along u, b along v) */
+    float axis[3];    /* the direction depth is measured along (cube: u x v = axis;
+                         orthographic: u, v of ssg_shadow_frame_make, u x v = -axis) */
+    float half;       /* orthographic: half the map's side, world units; cube: 1 */
+};
+
+/* Faces the scene's lights need: 1 a directional light, 6 a point light, at least 1. */
+int ssg_lightmap_face_count(const struct ssg_scene *scene);
+
+/* The faces of every light, in order, into faces[0 .. count - 1]; returns the count (as
+   ssg_lightmap_face_count), or -1 when it is over max (nothing meaningful written). */
+int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_face *faces,
+                       int max);
+
+/* Where world point p falls on face f of resolution res: texel coordinates (x, y), not
+   floored, inside the map for 0 <= x, y < res, and its depth z. Returns 0 when p is not
+   in front of a cube face (z <= 0), 1 otherwise (the caller checks x, y against res). */
+static inline int ssg_lightmap_project(const struct ssg_lightmap_face *f, int res,
+                                       const float p[3], float *x, float *y, float *z)
+{
+    float d[3] = {p[0] - f->origin[0], p[1] - f->origin[1], p[2] - f->origin[2]};
+    float depth = d[0] * f->axis[0] + d[1] * f->axis[1] + d[2] * f->axis[2];
+    float du = d[0] * f->u[0] + d[1] * f->u[1] + d[2] * f->u[2];
+    float dv = d[0] * f->v[0] + d[1] * f->v[1] + d[2] * f->v[2];
+    *z = depth;
+    if (!f->ortho && depth <= 0.0f)
+        return 0;
+    float scale = f->ortho ? 1.0f / f->half : 1.0f / depth;
+    *x = (du * scale + 1.0f) * 0.5f * (float)res;
+    *y = (dv * scale + 1.0f) * 0.5f * (float)res;
+    return 1;
+}
+
+/* The cube face (0..5, CUBE axis order) a direction d from a point light falls on: its
+   largest component, ties to the lower face index. */
+static inline int ssg_lightmap_cube_face(const float d[3])
+{
+    float ax = fabsf(d[0]), ay = fabsf(d[1]), az = fabsf(d[2]);
+    if (ax >= ay && ax >= az)
+        return d[0] >= 0.0f ? 0 : 1;
+    if (ay >= az)
+        return d[1] >= 0.0f ? 2 : 3;
+    return d[2] >= 0.0f ? 4 : 5;
+}
+
+/* The world point at depth z on the ray of texel (x, y) of face f (resolution res). */
+static inline void ssg_lightmap_texel_point(const struct ssg_lightmap_face *f, int res,
+                                           int x, int y, float z, float p[3])
+{
+    float a = 2.0f * ((float)x + 0.5f) / (float)res - 1.0f;
+    float b = 2.0f * ((float)y + 0.5f) / (float)res - 1.0f;
+    for (int k = 0; k < 3; k++) {
+        if (f->ortho)
+            p[k] = f->origin[k] + f->half * (a * f->u[k] + b * f->v[k]) + z * f->axis[k];
+        else
+            p[k] = f->origin[k] + z * (f->axis[k] + a * f->u[k] + b * f->v[k]);
+    }
+}
+
+/* The solid angle of texel (x, y) of a cube face of resolution res, seen from the light:
+   (2 / R)^2 / (1 + a^2 + b^2)^(3/2) at its centre. */
+static inline float ssg_lightmap_texel_solid_angle(int res, int x, int y)
+{
+    float a = 2.0f * ((float)x + 0.5f) / (float)res - 1.0f;
+    float b = 2.0f * ((float)y + 0.5f) / (float)res - 1.0f;
+    float q = 1.0f + a * a + b * b, s = 2.0f / (float)res;
+    return s * s / (q * sqrtf(q));
+}
+
+#endif
