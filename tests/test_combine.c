@@ -254,7 +254,21 @@ static void test_far_field(void)
     far->data[0] = 0.0f; /* nothing reaches: the (zero) environment is not divided by 0 */
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     CHECK_NEAR(ssg_image_plane(r.out[0], 0)[0], 0.6 * 0.4 + 0.3 + 0.6 * 0.05, 1e-6);
-    struct ssg_image *all[] = {direct, albedo, env, bounce, mod, far, r.out[0]};
+    /* A far bounce as irradiance: albedo x irradiance, darkened by M and ao, added to both
+       forms. */
+    struct ssg_image *ao = ssg_image_create(2, 1, 1);
+    float e2[2] = {0.2f, 0.1f};
+    struct ssg_image *irr = rgb(2, 1, e2, e2, e2);
+    ao->data[0] = 0.5f, ao->data[1] = 1.0f;
+    r.in[SSG_COMBINE_IN_AMBIENT_OCCLUSION] = ao;
+    r.in[SSG_COMBINE_IN_IRRADIANCE] = irr;
+    r.in[SSG_COMBINE_IN_ENVIRONMENT] = NULL;
+    r.in[SSG_COMBINE_IN_FAR_VISIBILITY] = NULL;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 2)[0], 0.6 * 0.4 + 0.6 * 0.05 + 0.6 * 0.5 * 0.5 * 0.2,
+               1e-6);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 2)[1], 0.9 * 0.4 + 0.9 * 0.0 + 0.9 * 0.8 * 0.1, 1e-6);
+    struct ssg_image *all[] = {direct, albedo, env, bounce, mod, far, ao, irr, r.out[0]};
     for (int i = 0; i < SSG_COUNT(all); i++)
         ssg_image_destroy(&all[i]);
 }

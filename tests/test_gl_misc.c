@@ -169,11 +169,12 @@ static struct ssg_image *noise_image(int w, int h, int channels, unsigned seed, 
 }
 
 struct combine_inputs {
-    struct ssg_image *direct, *albedo, *ao, *indirect, *mod1, *mod3, *env, *far;
+    struct ssg_image *direct, *albedo, *ao, *indirect, *mod1, *mod3, *env, *far, *irr;
 };
 
 /* Binds direct and albedo, then the optional inputs named in `opt`: "a" ao, "i" indirect,
-   "m" 1-channel modulation, "M" 3-channel modulation, "e" environment, "f" far_visibility. */
+   "m" 1-channel modulation, "M" 3-channel modulation, "e" environment, "f" far_visibility,
+   "r" irradiance. */
 static int bind_combine(const struct combine_inputs *in, const char *opt, struct ssg_binding *b)
 {
     const struct parity_input t[] = {
@@ -185,8 +186,9 @@ static int bind_combine(const struct combine_inputs *in, const char *opt, struct
         {'M', "modulation", in->mod3},
         {'e', "environment", in->env},
         {'f', "far_visibility", in->far},
+        {'r', "irradiance", in->irr},
     };
-    return parity_bind(t, 8, opt, b);
+    return parity_bind(t, 9, opt, b);
 }
 
 static void combine_case(const struct combine_inputs *in, const char *label, const char *opt,
@@ -194,7 +196,7 @@ static void combine_case(const struct combine_inputs *in, const char *label, con
 {
     /* One ulp at the largest outputs (below 16): room for a last-bit rounding only. */
     const struct parity_tol ulp = {.border = 0, .max_abs = 9.6e-7, .mean_abs = 1e-8};
-    struct ssg_binding b[8];
+    struct ssg_binding b[9];
     struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
     parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, ulp);
 }
@@ -206,7 +208,8 @@ static void combine_cases(void)
         noise_image(W, H, 3, 1, 2.0f), noise_image(W, H, 3, 2, 1.0f),
         noise_image(W, H, 1, 3, 1.0f), noise_image(W, H, 3, 4, 0.7f),
         noise_image(W, H, 1, 5, 1.2f), noise_image(W, H, 3, 6, 1.2f),
-        noise_image(W, H, 3, 7, 1.5f), noise_image(W, H, 1, 8, 1.0f)};
+        noise_image(W, H, 3, 7, 1.5f), noise_image(W, H, 1, 8, 1.0f),
+        noise_image(W, H, 3, 9, 0.8f)};
     for (int i = 0; i < W; i++) /* some pixels the far field blocks completely */
         in.far->data[W * 7 + i] = 0.0f;
     for (int i = 0; i < W * 5; i++) /* background rows: albedo and light 0 */
@@ -228,8 +231,10 @@ static void combine_cases(void)
     const char *far_all[] = {"ambient=0.4", "far_bounce=false"};
     combine_case(&in, "far mod3 ao no far bounce", "aMeif", far_all, 2);
     combine_case(&in, "far alone", "ef", none, 1);
+    combine_case(&in, "irradiance ao mod1", "amr", none, 1);
+    combine_case(&in, "irradiance far", "aMefr", far_all, 2);
     struct ssg_image **im = &in.direct;
-    for (int i = 0; i < 8; i++)
+    for (int i = 0; i < 9; i++)
         ssg_image_destroy(&im[i]);
 }
 

@@ -31,6 +31,11 @@
  *     out = own + (darken_indirect ? M : 1) indirect + far_bounce albedo max(0, M - V) own
  *   On the example scenes under a sky this far bounce is most of what the shadow-mapped
  *   probe light misses against one-bounce truth (docs/accuracy.md).
+ * - Far bounce gathered elsewhere (graphs/gi.graph: reflective shadow maps, the `rsm` node,
+ *   at a lower resolution and upsampled): `irradiance` is that light as E / pi, what a
+ *   white diffuse surface would send back, so that the full-resolution albedo multiplies it
+ *   here and keeps its edges. It arrives from every direction like the ambient light, so
+ *   the near-field visibility darkens it the same way: out += M ao albedo irradiance.
  * Background pixels (albedo 0, light 0) stay 0. */
 #include <stddef.h>
 
@@ -65,6 +70,9 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "visibility V already in environment (probe_light.visibility): the modulation "
             "then darkens it by min(1, M / V), not M, and far_bounce fills max(0, M - V); "
             "unconnected = no far field"},
+    [SSG_COMBINE_IN_IRRADIANCE] = {.name = "irradiance", .types = SSG_T_COLOR, .optional = 1,
+     .doc = "indirect light as E / pi (a white diffuse surface's radiance, e.g. rsm.out "
+            "upsampled): adds M ao albedo irradiance; unconnected = 0"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_COMBINE_INPUTS, "one entry a port enumerator");
 
@@ -103,7 +111,7 @@ const struct ssg_node_desc ssg_node_combine = {
     .name = "combine",
     .summary = "final shading: light darkened by AO or the SSDO modulation, plus indirect",
     .method = "out = M direct + M ao (environment + ambient ambient_color albedo) + "
-              "(darken_indirect ? M : 1) indirect; AO darkens the ambient term only "
+              "(darken_indirect ? M : 1) indirect + M ao albedo irradiance; AO darkens the ambient term only "
               "(Szentandrasi, Modern Methods of Realistic Lighting in Real Time, sec. 3.1; "
               "Belonogov, Global Illumination methods in simulated VR environments, sec. "
               "2.2.3 eq. 2.5 and sec. 3.2); the SSDO modulation factor M darkens light and "
@@ -117,8 +125,10 @@ const struct ssg_node_desc ssg_node_combine = {
            "direct, environment and ambient light and, with darken_indirect, the bounce); "
            "for two-step SSDO connect SSDO's radiance as direct and the bounce as indirect. "
            "For near and far field together connect probe_light's out as environment and "
-           "its visibility as far_visibility beside SSDO's modulation and bounce. "
-           "Unconnected: ao and modulation 1, environment and indirect 0. Background pixels "
+           "its visibility as far_visibility beside SSDO's modulation and bounce. For a bounce "
+           "gathered at a lower resolution (rsm) connect it as irradiance: the albedo "
+           "multiplies it here. "
+           "Unconnected: ao and modulation 1, environment, indirect and irradiance 0. Background pixels "
            "(albedo 0, light 0) stay black. Output is linear and may exceed 1; write's "
            "exposure and tonemap shape the PNG.",
     SSG_NODE_PORTS(inputs, outputs),

@@ -1,12 +1,15 @@
 // combine.glsl - the `combine` node's GL side (equation in combine.c, C side combine_gl.c):
 //   out = M direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
+//         + M ao albedo irradiance
 // (with far_visibility: the far-field form of combine.c)
 // per channel, with the CPU kernel's stand-ins for unconnected inputs (ao, M = 1;
 // environment, indirect = 0) and its order of operations. `precise` keeps the compiler
 // from fusing multiply-adds the CPU rounds separately, so a GPU with IEEE float maths gives
 // the CPU's bits.
-uniform sampler2DArray direct, albedo, ao, indirect, modulation, environment, far_visibility;
-uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound, far_visibility_bound;
+uniform sampler2DArray direct, albedo, ao, indirect, modulation, environment, far_visibility,
+    irradiance;
+uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound, far_visibility_bound,
+    irradiance_bound;
 uniform bool far_bounce;
 layout(r32f) uniform writeonly image2DArray dst;
 uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
@@ -30,6 +33,7 @@ void main()
         float m = layer_or(modulation, modulation_bound, p, min(c, modulation_last), 1.0);
         float env = layer_or(environment, environment_bound, p, c, 0.0);
         float bounce = layer_or(indirect, indirect_bound, p, c, 0.0);
+        precise float far_light = layer_or(irradiance, irradiance_bound, p, c, 0.0) * a;
         precise float ambient = env + k[c] * a;
         precise float o;
         if (far_visibility_bound) { // combine_cpu.c combine_channel_far
@@ -39,9 +43,11 @@ void main()
             precise float own = m * d + q * occ * ambient;
             precise float gap = m - v;
             gap = gap > 0.0 ? gap : 0.0;
-            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * own;
+            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * own
+                + m * occ * far_light;
         } else {
-            o = m * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce;
+            o = m * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce
+                + m * occ * far_light;
         }
         imageStore(dst, ivec3(p, c), vec4(o));
     }

@@ -20,6 +20,7 @@ enum ssg_combine_input {
     SSG_COMBINE_IN_MODULATION,
     SSG_COMBINE_IN_ENVIRONMENT,
     SSG_COMBINE_IN_FAR_VISIBILITY,
+    SSG_COMBINE_IN_IRRADIANCE,
     SSG_COMBINE_INPUTS
 };
 enum ssg_combine_output {

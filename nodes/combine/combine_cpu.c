@@ -9,6 +9,7 @@ enum { BAND_ROWS = 16 };
 struct combine_job {
     const float *direct[3], *albedo[3]; /* required */
     const float *indirect[3];           /* NULL = none */
+    const float *irradiance[3];         /* NULL = none */
     const float *environment[3];        /* NULL = none */
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
@@ -24,14 +25,16 @@ struct combine_job {
 static void combine_channel(const struct combine_job *j, int c, size_t begin, size_t end)
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
-    const float *env = j->environment[c], *m = j->modulation[c];
+    const float *env = j->environment[c], *m = j->modulation[c], *irr = j->irradiance[c];
     const int darken = j->darken_indirect;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
         float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f;
         float ambient = (env ? env[i] : 0.0f) + k * a[i];
         float bounce = ind ? ind[i] : 0.0f;
-        o[i] = mi * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce;
+        float far_light = irr ? irr[i] * a[i] : 0.0f;
+        o[i] = mi * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce
+               + mi * occ * far_light;
     }
 }
 
@@ -41,6 +44,7 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c], *far = j->far;
+    const float *irr = j->irradiance[c];
     const int darken = j->darken_indirect;
     const float fb = j->far_bounce ? 1.0f : 0.0f;
     float *o = j->out[c], k = j->k[c];
@@ -53,7 +57,9 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
         float own = mi * d[i] + q * occ * ambient;
         float gap = mi - v;
         gap = gap > 0.0f ? gap : 0.0f;
-        o[i] = own + (darken ? mi : 1.0f) * bounce + fb * a[i] * gap * own;
+        float far_light = irr ? irr[i] * a[i] : 0.0f;
+        o[i] = own + (darken ? mi : 1.0f) * bounce + fb * a[i] * gap * own
+               + mi * occ * far_light;
     }
 }
 
@@ -74,6 +80,7 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *albedo = io->in[SSG_COMBINE_IN_ALBEDO];
     const struct ssg_image *ao = io->in[SSG_COMBINE_IN_AMBIENT_OCCLUSION];
     const struct ssg_image *indirect = io->in[SSG_COMBINE_IN_INDIRECT];
+    const struct ssg_image *irradiance = io->in[SSG_COMBINE_IN_IRRADIANCE];
     const struct ssg_image *modulation = io->in[SSG_COMBINE_IN_MODULATION];
     const struct ssg_image *environment = io->in[SSG_COMBINE_IN_ENVIRONMENT];
     struct ssg_image *out = io->out[0];
@@ -85,6 +92,7 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);
         job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
+        job.irradiance[c] = irradiance ? ssg_image_plane(irradiance, c) : NULL;
         job.environment[c] = environment ? ssg_image_plane(environment, c) : NULL;
         job.modulation[c] =
             modulation ? ssg_image_plane(modulation, modulation->channels == 1 ? 0 : c) : NULL;

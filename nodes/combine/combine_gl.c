@@ -24,6 +24,7 @@ enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *cons
     ssg_gl_input(&p, "modulation", mod);
     ssg_gl_input(&p, "environment", io->in[SSG_COMBINE_IN_ENVIRONMENT]);
     ssg_gl_input(&p, "far_visibility", io->in[SSG_COMBINE_IN_FAR_VISIBILITY]);
+    ssg_gl_input(&p, "irradiance", io->in[SSG_COMBINE_IN_IRRADIANCE]);
     ssg_gl_int(&p, "far_bounce", prm->far_bounce);
     ssg_gl_output(&p, "dst", out);
     ssg_gl_int(&p, "modulation_last", mod && mod->channels == 3 ? 2 : 0);
