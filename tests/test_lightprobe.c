@@ -220,6 +220,25 @@ static void test_errors(void)
     fprintf(stderr, "expected error follows:\n");
     CHECK_EQ(node_run_scene(&ssg_node_lightprobe, s, &FRAME, params, in, out, SSG_BACKEND_CPU),
              SSG_E_VALUE);
+    /* missing=dark: the same scene gives 128 lights that carry nothing, so one graph
+       serves scenes with and without a probe. */
+    const char *dark[] = {"missing=dark"};
+    void *dark_params = node_params(&ssg_node_lightprobe, dark, 1);
+    out[0]->data[128] = 5.0f;
+    CHECK_EQ(node_run_scene(&ssg_node_lightprobe, s, &FRAME, dark_params, in, out,
+                            SSG_BACKEND_CPU),
+             SSG_OK);
+    struct lights l = {128, out[0]};
+    double sum = 0.0;
+    for (int i = 0; i < 128; i++) {
+        float dir[3];
+        dir_of(&l, i, dir);
+        CHECK_NEAR(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2], 1.0, 1e-6);
+        for (int c = 0; c < 3; c++)
+            sum += fabs(irr(&l, i, c));
+    }
+    CHECK_NEAR(sum, 0.0, 0.0);
+    free(dark_params);
     struct ssg_diags d = {0};
     for (int i = 0; i < 2; i++)
         CHECK(ssg_param_set_text(ssg_node_lightprobe.params, params,

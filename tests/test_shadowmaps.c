@@ -123,6 +123,8 @@ static void test_parity(void)
     const float dirs[5][3] = {{0, 1, 0}, {1, 1, 0.3f}, {-0.4f, 0.6f, -1}, {0.2f, -1, 0.1f},
                               {1, 0.05f, 0}};
     struct ssg_image *l = light_list(dirs, 5);
+    for (int c = 0; c < 3; c++) /* light 3 carries nothing: its map stays empty on both */
+        l->data[(c * 2 + 1) * 5 + 3] = 0.0f;
     struct ssg_image *cpu = run_maps(s, l, 128, SSG_BACKEND_CPU);
     struct ssg_image *gl = run_maps(s, l, 128, SSG_BACKEND_GL);
     struct ssg_bounding_sphere b = ssg_scene_bounding_sphere(s);
@@ -142,6 +144,10 @@ static void test_parity(void)
             "elsewhere max |cpu - gl| %.3g (tol %.3g)\n", differ, n, max_same, 1e-5 * b.radius);
     CHECK(differ <= n / 1000);
     CHECK(max_same <= 1e-5 * b.radius);
+    size_t dark_drawn = 0;
+    for (size_t i = (size_t)128 * 128 * 3; i < (size_t)128 * 128 * 4; i++)
+        dark_drawn += (cpu->data[i] != SSG_SHADOW_EMPTY) + (gl->data[i] != SSG_SHADOW_EMPTY);
+    CHECK_EQ(dark_drawn, 0);
     ssg_image_destroy(&cpu);
     ssg_image_destroy(&gl);
     ssg_image_destroy(&l);

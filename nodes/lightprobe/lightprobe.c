@@ -41,6 +41,21 @@ static void store_lights(struct ssg_lightprobe_consts *c, const float *dirs,
         }
 }
 
+/* count lights that carry nothing (straight up, irradiance 0): the environment-less scene
+   of a graph that asked for missing=dark, so the far field adds 0 and its visibility is 1. */
+static enum ssg_err dark_lights(const struct ssg_node_ctx *ctx, int count,
+                                struct ssg_lightprobe_consts *c)
+{
+    (void)ctx;
+    c->count = count;
+    for (int i = 0; i < count; i++)
+        for (int ch = 0; ch < 3; ch++) {
+            c->lights[(ch * 2 + 0) * count + i] = ch == 1 ? 1.0f : 0.0f;
+            c->lights[(ch * 2 + 1) * count + i] = 0.0f;
+        }
+    return SSG_OK;
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_lightprobe_params *p = params;
@@ -49,6 +64,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         return ssg_node_fail(ctx, SSG_E_VALUE, "count out of range");
     if (!ctx->scene || !ctx->scene->env)
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
+    if (!ctx->scene->env->has_light && p->missing)
+        return dark_lights(ctx, p->count, c);
     if (!ctx->scene->env->has_light) {
         char what[1400];
         const char *relit = ctx->scene->lights_path;
@@ -75,6 +92,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 static const char *const sampling_choices[] = {"uniform", "importance", NULL};
+static const char *const missing_choices[] = {"error", "dark", NULL};
 
 static const struct ssg_param_desc params[] = {
     {.name = "count", SSG_FIELD_INT(struct ssg_lightprobe_params, count), .def = 128,
@@ -84,6 +102,10 @@ static const struct ssg_param_desc params[] = {
      .def = SSG_LIGHTPROBE_UNIFORM, .choices = sampling_choices,
      .help = "uniform: equal-area Fibonacci set (the paper); importance: denser where the "
              "probe is bright"},
+    {.name = "missing", SSG_FIELD_ENUM(struct ssg_lightprobe_params, missing), .def = 0,
+     .choices = missing_choices,
+     .help = "a scene without environment light: error, or dark (N lights of irradiance 0, "
+             "so one graph serves scenes with and without a probe)"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -107,7 +129,8 @@ const struct ssg_node_desc ssg_node_lightprobe = {
            "the directions nearer to it than to any other light, so the lights carry "
            "exactly the probe's energy. Made once before the run (0.1 s for a 1024 x 512 "
            "probe and 512 lights); feeds shadowmaps and probe_light. A scene without an "
-           "environment light is an error.",
+           "environment light is an error, or with missing=dark a list of lights that carry "
+           "nothing.",
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightprobe_params),
     .consts_size = sizeof(struct ssg_lightprobe_consts),

@@ -27,6 +27,7 @@ enum ssg_lightprobe_sampling {
 struct ssg_lightprobe_params {
     int count;    /* lights N, SSG_LIGHTS_MIN..SSG_LIGHTS_MAX; default 128 */
     int sampling; /* enum ssg_lightprobe_sampling; default uniform */
+    int missing;  /* without environment light: 0 an error, 1 dark lights; default error */
 };
 
 /* What prepare() makes: the light list exactly as the output image holds it (planar; row 0

@@ -73,7 +73,8 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
            "faces of every triangle cast shadows). Memory is lights x resolution^2 floats "
            "(128 maps of 512^2: 128 MiB; at most 2 GiB). CPU: a depth-only raster of every "
            "triangle into each map, at the texel centres; GL: a depth-tested raster of the "
-           "scene into each layer of a texture array.",
+           "scene into each layer of a texture array. A light of irradiance 0 (lightprobe's "
+           "missing=dark) gets an empty map on both: it casts nothing.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_shadowmaps_params),
     .needs_scene = 1,

@@ -23,6 +23,13 @@ void main()
     // x, y: texel x = (dot(d, u) / radius + 1) R / 2, so NDC is dot(d, u) / radius; depth
     // in [0, 2 radius] inside the sphere maps to [-1, 1].
     gl_Position = vec4(dot(d, u) / radius, dot(d, v) / radius, depth / radius - 1.0, 1.0);
+    // A light that carries nothing casts no shadow worth drawing: every vertex outside the
+    // clip volume leaves its layer empty, as the CPU leaves its map (shadowmaps.c).
+    vec3 e = vec3(texelFetch(lights, ivec3(ssg_layer, 1, 0), 0).r,
+                  texelFetch(lights, ivec3(ssg_layer, 1, 1), 0).r,
+                  texelFetch(lights, ivec3(ssg_layer, 1, 2), 0).r);
+    if (e == vec3(0.0))
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
 }
 #endif
 

@@ -30,6 +30,7 @@ enum { SUB = 256, MAX_BANDS = 8, BLOCK = 256 };
 struct job {
     const struct ssg_scene *scene;
     const struct ssg_shadow_frame *frames; /* one per light */
+    const struct ssg_image *lights;        /* the light list (row 1: irradiances) */
     struct ssg_image *maps;
     int res, lights_per_band;
     int most_vertices;                     /* of the largest mesh: the scratch per band */
@@ -227,12 +228,24 @@ static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struc
     }
 }
 
+/* 1 when light i carries irradiance: a dark light's map stays empty (shadowmaps.c). */
+static int light_carries(const struct ssg_image *lights, int i)
+{
+    const int n = lights->width;
+    for (int c = 0; c < 3; c++)
+        if (ssg_image_plane(lights, c)[n + i] != 0.0f) /* row 1 of channel c */
+            return 1;
+    return 0;
+}
+
 static void draw_map(const struct job *j, int light, const struct verts *v)
 {
     const int res = j->res;
     float *map = ssg_image_plane(j->maps, light);
     for (size_t i = 0; i < (size_t)res * res; i++)
         map[i] = SSG_SHADOW_EMPTY;
+    if (!light_carries(j->lights, light))
+        return;
     for (int mi = 0; mi < j->scene->mesh_count; mi++) {
         const struct ssg_mesh *m = &j->scene->meshes[mi];
         to_map(&j->frames[light], res, m, v);
@@ -266,7 +279,7 @@ enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *
         most = c > most ? c : most;
     }
     int per_band = (n + MAX_BANDS - 1) / MAX_BANDS, bands = (n + per_band - 1) / per_band;
-    struct job j = {ctx->scene, NULL, io->out[0], p->resolution, per_band, most, NULL};
+    struct job j = {ctx->scene, NULL, lights, io->out[0], p->resolution, per_band, most, NULL};
     j.scratch = ssg_node_scratch(ctx, (size_t)bands * (size_t)(most ? most : 1) * VERTEX_BYTES);
     struct ssg_shadow_frame *frames = malloc(sizeof *frames * (size_t)n);
     if (!frames || !j.scratch) {
