@@ -34,9 +34,10 @@ defaults and with the settings they replaced (medians, the ratio).
 --accuracy scores every AO method of graphs/ao_error.graph against reference_ao on every
 example scene (RMSE, bias = mean of method - reference, SSIM, with the frame time of the
 shipped graph that runs it), and every GI pipeline of graphs/gi_error.graph and
-graphs/hybrid_ssdo_error.graph against reference_gi on every example scene under each
-light of examples/lights/ (sun, sky, courtyard probe; a summary against the SSAO
-baseline per light), as the Markdown tables of docs/accuracy.md (--save it there).
+graphs/hybrid_ssdo_error.graph against reference_gi on every example scene under its own
+lights and each light of examples/lights/ (sun, sky, courtyard probe; a summary against
+the SSAO baseline per light, and each bounce's energy against the reference's), as the
+Markdown tables of docs/accuracy.md (--save it there).
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -372,71 +373,101 @@ def accuracy_table(binary, size, threads, runs):
             print_rows(binary, scene, path, metrics, ACCURACY_METHODS, size, threads, runs, tmp)
 
 
-GI_LIGHTS = [("sun", "gi_error.graph"), ("sky", "hybrid_ssdo_error.graph"),
-             ("courtyard", "hybrid_ssdo_error.graph")]
-GI_METHODS = [("none", "c_none", "no occlusion"), ("ssao", "c_ssao", "SSAO-darkened ambient"),
-              ("ssdo", "c_ssdo", "ssdo.graph"), ("hybrid", "c_hybrid", "hybrid.graph"),
-              ("hybrid_ssdo", "c_hybrid_ssdo", "hybrid_ssdo.graph")]
+# Each lighting of the GI tables: its name, the lights file that relights every scene
+# (None: the scene's own lights and environment) and the graph that scores the pipelines.
+GI_LIGHTS = [("own", None, "hybrid_ssdo_error.graph"), ("sun", "sun", "gi_error.graph"),
+             ("sky", "sky", "hybrid_ssdo_error.graph"),
+             ("courtyard", "courtyard", "hybrid_ssdo_error.graph")]
+# Each pipeline: its row name, its compare node against reference_gi, what it is, and the
+# compare node of its bounce term against reference_gi's bounce (None: it has no bounce).
+GI_METHODS = [("none", "c_none", "no occlusion", None),
+              ("ssao", "c_ssao", "SSAO-darkened ambient", None),
+              ("ssdo", "c_ssdo", "ssdo.graph", "cb_ssdo"),
+              ("hybrid", "c_hybrid", "hybrid.graph", None),
+              ("hybrid_ssdo", "c_hybrid_ssdo", "hybrid_ssdo.graph", "cb_hybrid_ssdo"),
+              ("gi", "c_gi", "gi.graph", "cb_gi")]
+
+
+def bounce_ratio(metrics, node):
+    """The mean of a pipeline's bounce term over the mean of reference_gi's bounce (the
+    compare node `node` scores one against the other), or None."""
+    m = metrics.get(node) if node else None
+    if not m or not m.get("reference_mean"):
+        return None
+    return m["mean"] / m["reference_mean"]
 
 
 def gi_accuracy_table(binary, size, threads, runs):
-    """Every GI pipeline of graphs/gi_error.graph (and, under environment light, of
+    """Every GI pipeline of graphs/gi_error.graph (and, where it runs, of
     graphs/hybrid_ssdo_error.graph) against reference_gi (direct light with true shadows
-    plus one diffuse bounce) on every example scene under each light of examples/lights:
-    per scene RMSE, bias and SSIM; per light the mean RMSE, the mean and worst ratio to
-    the SSAO baseline and how many scenes are worse than it; and the frame time of
-    ssdo.graph (Cornell box) and hybrid_ssdo.graph (courtyard)."""
+    plus one diffuse bounce) on every example scene under its own lights and each light of
+    examples/lights: per scene RMSE, bias, SSIM and the bounce energy (mean of the
+    pipeline's bounce term over the reference's); per light the mean RMSE, the mean and
+    worst ratio to the SSAO baseline and how many scenes are worse than it; and the frame
+    time of ssdo.graph and gi.graph (Cornell box) and hybrid_ssdo.graph (courtyard)."""
     scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
     print(f"\n# GI accuracy of the shipped graphs, {size}\n")
-    print("Every example scene relit by each file of `examples/lights/` (`--lights`: a sun "
-          "alone, a uniform white sky, the courtyard probe), each pipeline's final image "
-          "against `reference_gi` (direct light with ray-traced shadows plus exactly one "
-          "diffuse bounce, 64 paths a pixel), surface pixels only, linear radiance. none: "
-          "direct + environment light, no occlusion; ssao: direct + SSAO-darkened "
-          "environment at the SSDO pipeline's radius, samples and filter (the baseline); "
-          "ssdo: `graphs/ssdo.graph`; hybrid: `graphs/hybrid.graph`; hybrid_ssdo: "
+    print("Every example scene under its own lights (own: the point and directional lights "
+          "and environment its file names) and relit by each file of `examples/lights/` "
+          "(`--lights`: a sun alone, a uniform white sky, the courtyard probe), each "
+          "pipeline's final image against `reference_gi` (direct light with ray-traced "
+          "shadows plus exactly one diffuse bounce, 64 paths a pixel), surface pixels only, "
+          "linear radiance. none: direct + environment light, no occlusion; ssao: direct + "
+          "SSAO-darkened environment at the SSDO pipeline's radius, samples and filter (the "
+          "baseline); ssdo: `graphs/ssdo.graph`; hybrid: `graphs/hybrid.graph`; hybrid_ssdo: "
           "`graphs/hybrid_ssdo.graph` (the hybrids need environment light: not under the "
-          "sun). Graphs: `graphs/gi_error.graph`, `graphs/hybrid_ssdo_error.graph`. Made by "
-          f"`python3 bench/bench.py --accuracy --size {size}`.\n")
+          "sun); gi: `graphs/gi.graph`. bounce: the mean of the pipeline's bounce term over "
+          "the mean of the reference's bounce (1 = the right energy; - where the pipeline "
+          "has none). Graphs: `graphs/gi_error.graph`, `graphs/hybrid_ssdo_error.graph`. "
+          f"Made by `python3 bench/bench.py --accuracy --size {size}`.\n")
     rows, summary = [], []
     with tempfile.TemporaryDirectory() as tmp:
-        for light, graph in GI_LIGHTS:
-            lights = os.path.join(ROOT, "examples", "lights", light + ".scene")
-            per = {}
+        for light, lights_file, graph in GI_LIGHTS:
+            lights = (os.path.join(ROOT, "examples", "lights", lights_file + ".scene")
+                      if lights_file else None)
+            per, energy = {}, {}
             for scene in scenes:
                 path = os.path.join(ROOT, "examples", scene)
                 metrics = run_metrics(binary, os.path.join(ROOT, "graphs", graph), path, size,
                                       threads, os.path.join(tmp, light + scene), lights)
-                for name, node, _ in GI_METHODS:
-                    if node in metrics:
-                        m = metrics[node]
-                        per.setdefault(name, {})[scene] = m["rmse"]
-                        rows.append(f"| {light} | {scene[:-6]} | {name} | {m['rmse']:.4f} | "
-                                    f"{m['bias']:+.4f} | {m['ssim']:.3f} |")
+                for name, node, _, bounce_node in GI_METHODS:
+                    if node not in metrics:
+                        continue
+                    m = metrics[node]
+                    per.setdefault(name, {})[scene] = m["rmse"]
+                    ratio = bounce_ratio(metrics, bounce_node)
+                    if ratio is not None:
+                        energy.setdefault(name, []).append(ratio)
+                    shown = f"{ratio:.3f}" if ratio is not None else "-"
+                    rows.append(f"| {light} | {scene[:-6]} | {name} | {m['rmse']:.4f} | "
+                                f"{m['bias']:+.4f} | {m['ssim']:.3f} | {shown} |")
             base = per["ssao"]
-            for name, _, what in GI_METHODS:
+            for name, _, what, _ in GI_METHODS:
                 if name not in per:
                     continue
                 r = [per[name][s] / base[s] for s in base]
                 mean = sum(per[name].values()) / len(per[name])
+                e = energy.get(name)
+                shown = f"{sum(e) / len(e):.3f}" if e else "-"
                 summary.append(f"| {light} | {name} ({what}) | {mean:.4f} | "
                                f"{sum(r) / len(r):.3f} | {max(r):.3f} | "
-                               f"{sum(x > 1.0 for x in r)} of {len(r)} |")
+                               f"{sum(x > 1.0 for x in r)} of {len(r)} | {shown} |")
         ms = [frame_ms(binary, os.path.join(ROOT, "graphs", g),
                        os.path.join(ROOT, "examples", sc), size, threads, runs,
                        os.path.join(tmp, "t"))[0]
-              for g, sc in (("ssdo.graph", "cornell.scene"),
+              for g, sc in (("ssdo.graph", "cornell.scene"), ("gi.graph", "cornell.scene"),
                             ("hybrid_ssdo.graph", "courtyard.scene"))]
     print("| light | method | mean rmse | mean ratio to ssao | worst ratio | scenes worse "
-          "than ssao |")
-    print("|---|---|---|---|---|---|")
+          "than ssao | bounce |")
+    print("|---|---|---|---|---|---|---|")
     print("\n".join(summary))
     print(f"\nFrame time at {size} (median of {runs} runs after a warm-up, "
           f"{threads or os.cpu_count()} threads, write excluded): ssdo.graph on the Cornell "
-          f"box {ms[0]:.1f} ms, hybrid_ssdo.graph on the courtyard {ms[1]:.1f} ms (its "
-          "lightprobe's one-off conversion included).\n")
-    print("| light | scene | method | rmse | bias | ssim |")
-    print("|---|---|---|---|---|---|")
+          f"box {ms[0]:.1f} ms, gi.graph on the Cornell box {ms[1]:.1f} ms, "
+          f"hybrid_ssdo.graph on the courtyard {ms[2]:.1f} ms (lightprobe's one-off "
+          "conversion included).\n")
+    print("| light | scene | method | rmse | bias | ssim | bounce |")
+    print("|---|---|---|---|---|---|---|")
     print("\n".join(rows))
 
 

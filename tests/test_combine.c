@@ -268,6 +268,20 @@ static void test_far_field(void)
     CHECK_NEAR(ssg_image_plane(r.out[0], 2)[0], 0.6 * 0.4 + 0.6 * 0.05 + 0.6 * 0.5 * 0.5 * 0.2,
                1e-6);
     CHECK_NEAR(ssg_image_plane(r.out[0], 2)[1], 0.9 * 0.4 + 0.9 * 0.0 + 0.9 * 0.8 * 0.1, 1e-6);
+    /* darken_direct=false: direct as given; with a far field and irradiance, the far
+       bounce fills M - V with the environment's part alone (irradiance carries the
+       direct lights' far bounce). */
+    p.darken_direct = 0;
+    p.far_bounce = 1;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 0)[0], 0.4 + 0.6 * 0.05 + 0.6 * 0.5 * 0.5 * 0.2, 1e-6);
+    r.in[SSG_COMBINE_IN_ENVIRONMENT] = env;
+    r.in[SSG_COMBINE_IN_FAR_VISIBILITY] = far;
+    far->data[1] = 0.5f;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    double env1 = 1.0 * 1.0 * 0.3; /* q = min(1, 0.9 / 0.5) = 1, ao 1 */
+    CHECK_NEAR(ssg_image_plane(r.out[0], 1)[1],
+               0.4 + env1 + 0.9 * 0.0 + 0.8 * (0.9 - 0.5) * env1 + 0.9 * 1.0 * 0.8 * 0.1, 1e-6);
     struct ssg_image *all[] = {direct, albedo, env, bounce, mod, far, ao, irr, r.out[0]};
     for (int i = 0; i < SSG_COUNT(all); i++)
         ssg_image_destroy(&all[i]);

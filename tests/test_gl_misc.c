@@ -233,6 +233,9 @@ static void combine_cases(void)
     combine_case(&in, "far alone", "ef", none, 1);
     combine_case(&in, "irradiance ao mod1", "amr", none, 1);
     combine_case(&in, "irradiance far", "aMefr", far_all, 2);
+    const char *shadowed[] = {"ambient=0.2", "darken_direct=false"};
+    combine_case(&in, "shadowed direct far irradiance", "amefri", shadowed, 2);
+    combine_case(&in, "shadowed direct", "mi", shadowed, 2);
     struct ssg_image **im = &in.direct;
     for (int i = 0; i < 9; i++)
         ssg_image_destroy(&im[i]);

@@ -1,7 +1,8 @@
 /* combine.c - the `combine` node: final shading of the frame from the G-buffer's light and
  * albedo, ambient occlusion or SSDO's modulation factor, and indirect light:
  *
- *   out = M * direct + M * ao * (environment + ambient * ambient_color * albedo)
+ *   out = (darken_direct ? M : 1) * direct
+ *         + M * ao * (environment + ambient * ambient_color * albedo)
  *         + (darken_indirect ? M : 1) * indirect                       (per channel)
  *
  * with M the modulation factor (1 or 3 channels, 1 when unconnected) and ao the ambient
@@ -27,7 +28,7 @@
  *   receiver's own radiance times its albedo (one bounce from surroundings that look like
  *   the receiver: the assumption of Jimenez et al., "Practical Real-Time Strategies for
  *   Accurate Indirect Occlusion", 2016, sec. 5, taken for one bounce):
- *     own = M direct + q ao (environment + ambient ambient_color albedo)
+ *     own = (darken_direct ? M : 1) direct + q ao (environment + ambient ambient_color albedo)
  *     out = own + (darken_indirect ? M : 1) indirect + far_bounce albedo max(0, M - V) own
  *   On the example scenes under a sky this far bounce is most of what the shadow-mapped
  *   probe light misses against one-bounce truth (docs/accuracy.md).
@@ -36,6 +37,10 @@
  *   white diffuse surface would send back, so that the full-resolution albedo multiplies it
  *   here and keeps its edges. It arrives from every direction like the ambient light, so
  *   the near-field visibility darkens it the same way: out += M ao albedo irradiance.
+ *   That bounce already carries the direct lights' light from far surfaces, so far_bounce
+ *   then fills max(0, M - V) with the environment's part of `own` alone (q ao ambient).
+ *   Direct light that is already shadowed at every distance (direct_light.out) is not
+ *   darkened again: darken_direct=false keeps M off it (M still darkens the rest).
  * Background pixels (albedo 0, light 0) stay 0. */
 #include <stddef.h>
 
@@ -96,7 +101,12 @@ static const struct ssg_param_desc param_table[] = {
              "against over-bright corners)"},
     {.name = "far_bounce", SSG_FIELD_BOOL(struct ssg_combine_params, far_bounce), .def = 1,
      .help = "with far_visibility: directions blocked beyond the modulation's reach bounce "
-             "albedo x the pixel's own radiance"},
+             "albedo x the pixel's own radiance (its environment part alone when "
+             "irradiance is connected)"},
+    {.name = "darken_direct", SSG_FIELD_BOOL(struct ssg_combine_params, darken_direct),
+     .def = 1,
+     .help = "the modulation factor darkens direct light (false for direct light that is "
+             "already shadowed, direct_light.out)"},
 };
 
 /* Flops per pixel (node.h): about 6 a colour channel (the light sum, the albedo product,
@@ -110,7 +120,7 @@ static double combine_flops(const void *consts, const struct ssg_shape *in)
 const struct ssg_node_desc ssg_node_combine = {
     .name = "combine",
     .summary = "final shading: light darkened by AO or the SSDO modulation, plus indirect",
-    .method = "out = M direct + M ao (environment + ambient ambient_color albedo) + "
+    .method = "out = (darken_direct ? M : 1) direct + M ao (environment + ambient ambient_color albedo) + "
               "(darken_indirect ? M : 1) indirect + M ao albedo irradiance; AO darkens the ambient term only "
               "(Szentandrasi, Modern Methods of Realistic Lighting in Real Time, sec. 3.1; "
               "Belonogov, Global Illumination methods in simulated VR environments, sec. "

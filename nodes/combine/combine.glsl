@@ -1,5 +1,5 @@
 // combine.glsl - the `combine` node's GL side (equation in combine.c, C side combine_gl.c):
-//   out = M direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
+//   out = (darken_direct ? M : 1) direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
 //         + M ao albedo irradiance
 // (with far_visibility: the far-field form of combine.c)
 // per channel, with the CPU kernel's stand-ins for unconnected inputs (ao, M = 1;
@@ -14,6 +14,7 @@ uniform bool far_bounce;
 layout(r32f) uniform writeonly image2DArray dst;
 uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
 uniform bool darken_indirect;
+uniform bool darken_direct;
 uniform vec3 k;              // ambient * ambient_color, made on the CPU
 
 float layer_or(sampler2DArray t, bool bound, ivec2 p, int layer, float unbound)
@@ -40,13 +41,15 @@ void main()
             float v = texelFetch(far_visibility, ivec3(p, 0), 0).r;
             precise float q = v > 0.0 ? m / v : 1.0;
             q = q < 1.0 ? q : 1.0;
-            precise float own = m * d + q * occ * ambient;
+            precise float lit_env = q * occ * ambient;
+            precise float own = (darken_direct ? m : 1.0) * d + lit_env;
             precise float gap = m - v;
             gap = gap > 0.0 ? gap : 0.0;
-            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * own
+            precise float sent = irradiance_bound ? lit_env : own;
+            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * sent
                 + m * occ * far_light;
         } else {
-            o = m * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce
+            o = (darken_direct ? m : 1.0) * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce
                 + m * occ * far_light;
         }
         imageStore(dst, ivec3(p, c), vec4(o));

@@ -34,6 +34,7 @@ struct ssg_combine_params {
     float ambient_color[3]; /* linear RGB tint of the ambient light, 0..100; default [1,1,1] */
     int darken_indirect;    /* 1 = the modulation factor also darkens indirect; default 1 */
     int far_bounce;         /* with far_visibility: add the far bounce; default 1 */
+    int darken_direct;      /* 1 = the modulation factor darkens direct light; default 1 */
 };
 
 /* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */

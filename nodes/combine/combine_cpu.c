@@ -14,7 +14,7 @@ struct combine_job {
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
     const float *far;                   /* far_visibility, NULL = none */
-    int darken_indirect, far_bounce;
+    int darken_indirect, far_bounce, darken_direct;
     float *out[3];
     float k[3];                         /* ambient * ambient_color */
     int width;
@@ -26,14 +26,14 @@ static void combine_channel(const struct combine_job *j, int c, size_t begin, si
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c], *irr = j->irradiance[c];
-    const int darken = j->darken_indirect;
+    const int darken = j->darken_indirect, dd = j->darken_direct;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
         float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f;
         float ambient = (env ? env[i] : 0.0f) + k * a[i];
         float bounce = ind ? ind[i] : 0.0f;
         float far_light = irr ? irr[i] * a[i] : 0.0f;
-        o[i] = mi * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce
+        o[i] = (dd ? mi : 1.0f) * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce
                + mi * occ * far_light;
     }
 }
@@ -45,7 +45,7 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c], *far = j->far;
     const float *irr = j->irradiance[c];
-    const int darken = j->darken_indirect;
+    const int darken = j->darken_indirect, dd = j->darken_direct;
     const float fb = j->far_bounce ? 1.0f : 0.0f;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
@@ -54,11 +54,13 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
         q = q < 1.0f ? q : 1.0f;
         float ambient = (env ? env[i] : 0.0f) + k * a[i];
         float bounce = ind ? ind[i] : 0.0f;
-        float own = mi * d[i] + q * occ * ambient;
+        float lit_env = q * occ * ambient;
+        float own = (dd ? mi : 1.0f) * d[i] + lit_env;
         float gap = mi - v;
         gap = gap > 0.0f ? gap : 0.0f;
         float far_light = irr ? irr[i] * a[i] : 0.0f;
-        o[i] = own + (darken ? mi : 1.0f) * bounce + fb * a[i] * gap * own
+        float sent = irr ? lit_env : own; /* what the far surfaces' bounce stands for */
+        o[i] = own + (darken ? mi : 1.0f) * bounce + fb * a[i] * gap * sent
                + mi * occ * far_light;
     }
 }
@@ -87,7 +89,7 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *far = io->in[SSG_COMBINE_IN_FAR_VISIBILITY];
     struct combine_job job = {.ao = ao ? ao->data : NULL, .far = far ? far->data : NULL,
                               .width = out->width, .darken_indirect = p->darken_indirect,
-                              .far_bounce = p->far_bounce};
+                              .far_bounce = p->far_bounce, .darken_direct = p->darken_direct};
     for (int c = 0; c < 3; c++) {
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);
