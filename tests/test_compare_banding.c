@@ -2,8 +2,8 @@
  * vertical stripes A (-1)^x and horizontal ones score the definition's value (a direct
  * evaluation here, and A (1 - 1/(2r + 1)) to within the ends' share), white noise scores
  * close to s sqrt(1/H + 1/W) and far below stripes, a linear gradient scores 0 and a
- * smooth one ~0, the region restricts every metric and the band, a region outside the
- * frame is refused, banding is off by default (the six metrics as before), and the
+ * smooth one ~0, the region restricts every metric and is cut to the frame, an empty
+ * region is refused, banding is off by default (the six metrics as before), and the
  * metrics are the same bits for 1 and 4 threads on an image of several row bands. */
 #include <math.h>
 #include <omp.h>
@@ -177,8 +177,16 @@ static void test_region(void)
     CHECK_EQ(metric(&whole, "pixels"), 200 * 160);
     ssg_outputs_release(&in);
     ssg_outputs_release(&whole);
-    const char *outside[] = {"region=[40, 30, 201, 90]"};
-    CHECK_EQ(run(a, b, outside, 1, &whole), SSG_E_VALUE);
+    /* Cut to the frame: 160 columns x 60 rows; wholly outside: no pixel, NaN. */
+    const char *part[] = {"region=[40, 30, 900, 90]"};
+    CHECK_EQ(run(a, b, part, 1, &whole), SSG_OK);
+    CHECK_EQ(metric(&whole, "pixels"), 160 * 60);
+    ssg_outputs_release(&whole);
+    const char *outside[] = {"region=[300, 200, 400, 300]", "banding=4"};
+    CHECK_EQ(run(a, b, outside, 2, &whole), SSG_OK);
+    CHECK_EQ(metric(&whole, "pixels"), 0);
+    CHECK(isnan(metric(&whole, "rmse")) && isnan(metric(&whole, "banding")));
+    ssg_outputs_release(&whole);
     const char *empty[] = {"region=[40, 30, 40, 90]"};
     CHECK_EQ(run(a, b, empty, 1, &whole), SSG_E_VALUE);
     const char *three[] = {"region=[1, 2, 3]"};

@@ -32,7 +32,8 @@
  * smooth gradient gives ~0 (a linear one exactly 0); white noise of deviation s over an
  * H x W region gives about s sqrt(1/H + 1/W), the floor below which streaks are not seen.
  * `region` = [x0, y0, x1, y1] (frame pixels, x1 and y1 excluded) restricts every metric to
- * that rectangle, so that banding can be read on one wall.
+ * that rectangle, so that banding can be read on one wall; it is cut to the frame, so a
+ * graph keeps running at another --size (a region wholly outside counts no pixel).
  * Only the frame counts: images with a guard band around it (ssg_frame.guard,
  * docs/guard_band.md) are compared without the band, so that a graph with a band and one
  * without score the same pixels. `edge` > 0 further restricts the count to the pixels
@@ -88,11 +89,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     const struct ssg_compare_params *p = params;
     const struct ssg_ints *r = &p->region;
     int whole = r->v[0] == 0 && r->v[1] == 0 && r->v[2] == 0 && r->v[3] == 0;
-    if (!whole && frame && (r->v[2] <= r->v[0] || r->v[3] <= r->v[1] || r->v[2] > frame->width ||
-                   r->v[3] > frame->height)) {
-        snprintf(why, why_len, "region [%d, %d, %d, %d] must be x0 < x1 <= %d, y0 < y1 <= %d "
-                 "(frame pixels) or [0, 0, 0, 0] for the whole frame", r->v[0], r->v[1],
-                 r->v[2], r->v[3], frame->width, frame->height);
+    if (!whole && (r->v[2] <= r->v[0] || r->v[3] <= r->v[1])) {
+        snprintf(why, why_len, "region [%d, %d, %d, %d] must be [x0, y0, x1, y1] with x0 < x1 "
+                 "and y0 < y1 (frame pixels), or [0, 0, 0, 0] for the whole frame", r->v[0],
+                 r->v[1], r->v[2], r->v[3]);
         return SSG_E_VALUE;
     }
     /* The diff has the compared images' size, which need not be the frame's. */
@@ -104,8 +104,8 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 }
 
 /* The region in image pixels: the frame's pixels [x0, x1) x [y0, y1) narrowed to the
-   parameter, which is in frame pixels (check() kept it inside the frame; an image of
-   another size than the frame, whose frame is then the whole image, is clamped). */
+   parameter, which is in frame pixels and cut to the frame (a graph made for 1280 x 720
+   still runs at --size 96x64: a region wholly outside counts no pixel, metrics NaN). */
 static void region_pixels(struct ssg_compare_consts *c, const struct ssg_ints *r)
 {
     c->rx0 = c->x0, c->ry0 = c->y0, c->rx1 = c->x1, c->ry1 = c->y1;
@@ -161,7 +161,7 @@ static const struct ssg_param_desc params[] = {
      .def_ints = {0, 0, 0, 0}, .def_ints_count = 4, .min_count = 4, .max_count = 4,
      .min = 0, .max = 65536, .unit = "px",
      .help = "[x0, y0, x1, y1]: compare only frame pixels x0 <= x < x1, y0 <= y < y1 (e.g. "
-             "one wall); [0, 0, 0, 0] = the whole frame"},
+             "one wall; cut to the frame); [0, 0, 0, 0] = the whole frame"},
     {.name = "banding", SSG_FIELD_INT(struct ssg_compare_params, banding), .def = 0,
      .min = 0, .max = 4096, .unit = "px",
      .help = "> 0: also report banding, banding_rows, banding_cols: RMS of the row and column "
