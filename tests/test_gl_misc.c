@@ -42,6 +42,10 @@ static void halton_cases(void)
     parity_node("1024 x 64 seed", "halton", NULL, 0, wide, 6, &f, EXACT);
     const char *one[] = {"count=1", "pattern=1", "period=0"};
     parity_node("1 x 1", "halton", NULL, 0, one, 3, &f, EXACT);
+    const char *blue[] = {"rotations=blue_noise", "pattern=64"};
+    parity_node("blue noise 64", "halton", NULL, 0, blue, 2, &f, EXACT);
+    const char *latin[] = {"rotations=interleaved", "pattern=5"};
+    parity_node("interleaved 5", "halton", NULL, 0, latin, 2, &f, EXACT);
 }
 
 /* ---- complexity ---- */

@@ -30,6 +30,10 @@ struct ssg_compare_params {
     float peak;  /* signal peak: PSNR's MAX and SSIM's dynamic range L; default 1 */
     int edge;    /* > 0: only pixels within this many of the frame's border count, px;
                     default 0 = every pixel of the frame */
+    struct ssg_ints region; /* [x0, y0, x1, y1]: only pixels x0 <= x < x1, y0 <= y < y1 of
+                               the frame count, px; default [0, 0, 0, 0] = the whole frame */
+    int banding; /* > 0: report banding with a moving window of lines i +- banding, px;
+                    default 0 = not measured */
 };
 
 struct ssg_compare_consts {
@@ -41,8 +45,12 @@ struct ssg_compare_consts {
     float inv_scale;                /* 1 / scale */
     int x0, y0, x1, y1;             /* the frame within the images: [x0, x1) x [y0, y1),
                                        the guard band (ssg_frame.guard) left out */
+    int rx0, ry0, rx1, ry1;         /* the region parameter in image pixels, inside the
+                                       frame; the frame without one */
     int edge;                       /* as in the parameters */
+    int banding;                    /* as in the parameters: the window's half-width */
 };
+
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io);

@@ -36,6 +36,9 @@ struct partial {
     double diff;                            /* sum of a - b (the signed bias) */
     double ssim[SSG_COMPARE_MAX_CHANNELS];  /* sum of per-pixel SSIM, per channel */
     long long count;                        /* counted pixels */
+    double *col_sum;        /* banding: channels x w sums of a - b down this band's part of
+                               each column, NULL when banding is off */
+    long long *col_count;   /* banding: w counted pixels of each column in this band */
     int failed;                             /* 1 = the band's buffers were not allocated */
 };
 
@@ -45,16 +48,20 @@ struct job {
     const float *b[SSG_COMPARE_MAX_CHANNELS]; /* channel planes of b */
     const float *mask;       /* NULL = every pixel counts */
     float *diff[3];          /* R, G, B planes of the diff image */
+    double *row_sum;         /* banding: channels x h sums of a - b along each row (each row
+                                written by its one band), NULL when banding is off */
+    long long *row_count;    /* banding: h counted pixels of each row */
     int w, h, channels;      /* shape of a and b, px */
     struct partial *parts;   /* one per band */
 };
 
-/* 1 when pixel (x, y) counts: inside the frame (compare.c), within `edge` of its border
+/* 1 when pixel (x, y) counts: inside the frame's region (compare.c; the frame itself
+   without a region), within `edge` of its border
    when edge > 0, and under the mask. */
 static int counted(const struct job *j, int x, int y)
 {
     const struct ssg_compare_consts *c = j->c;
-    if (x < c->x0 || x >= c->x1 || y < c->y0 || y >= c->y1)
+    if (x < c->rx0 || x >= c->rx1 || y < c->ry0 || y >= c->ry1)
         return 0;
     if (c->edge > 0 && x >= c->x0 + c->edge && x < c->x1 - c->edge && y >= c->y0 + c->edge &&
         y < c->y1 - c->edge)
@@ -62,11 +69,38 @@ static int counted(const struct job *j, int x, int y)
     return !j->mask || j->mask[(size_t)y * (size_t)j->w + (size_t)x] > 0.5f;
 }
 
+/* Banding's line sums of row y: the row's own, and its share of every column's. */
+static void banding_row(const struct job *j, struct partial *p, int y)
+{
+    size_t o = (size_t)y * (size_t)j->w;
+    long long n = 0;
+    for (int x = 0; x < j->w; x++) {
+        int on = counted(j, x, y);
+        n += on;
+        p->col_count[x] += on;
+    }
+    j->row_count[y] = n;
+    for (int ch = 0; ch < j->channels; ch++) {
+        const float *a = j->a[ch] + o, *b = j->b[ch] + o;
+        double *col = p->col_sum + (size_t)ch * (size_t)j->w, row = 0;
+        for (int x = 0; x < j->w; x++) {
+            if (!counted(j, x, y))
+                continue;
+            double d = (double)a[x] - (double)b[x];
+            row += d;
+            col[x] += d;
+        }
+        j->row_sum[(size_t)ch * (size_t)j->h + (size_t)y] = row;
+    }
+}
+
 static void errors_row(const struct job *j, struct partial *p, int y)
 {
     size_t o = (size_t)y * (size_t)j->w;
     for (int x = 0; x < j->w; x++)
         p->count += counted(j, x, y);
+    if (p->col_sum)
+        banding_row(j, p, y);
     for (int ch = 0; ch < j->channels; ch++) {
         const float *a = j->a[ch] + o, *b = j->b[ch] + o;
         double sq = 0, ab = 0, df = 0;
@@ -266,6 +300,73 @@ static void band(void *user, int y0, int y1)
     window_free(&win);
 }
 
+/* Mean over the kept lines of h_i^2 (compare.c: the line means minus their moving average
+   over i +- r, a least-squares line where the window is cut); NaN when no line has a
+   counted pixel. m: scratch of `lines` doubles. */
+static double highpass_ms(const double *sum, const long long *count, int lines, int r,
+                          double *m)
+{
+    long long most = 0;
+    for (int i = 0; i < lines; i++)
+        most = count[i] > most ? count[i] : most;
+    if (most == 0)
+        return NAN;
+    for (int i = 0; i < lines; i++)
+        m[i] = 2 * count[i] >= most ? sum[i] / (double)count[i] : NAN;
+    double ms = 0;
+    int kept = 0;
+    for (int i = 0; i < lines; i++) {
+        if (isnan(m[i]))
+            continue;
+        double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+        for (int k = -r; k <= r; k++) {
+            if (i + k < 0 || i + k >= lines || isnan(m[i + k]))
+                continue;
+            s0 += 1, s1 += k, s2 += (double)k * k;
+            t0 += m[i + k], t1 += k * m[i + k];
+        }
+        /* The line through the window's (k, m) at k = 0; s1 = 0 (whole window): the mean. */
+        double det = s0 * s2 - s1 * s1;
+        double fit = s1 == 0 ? t0 / s0 : (s2 * t0 - s1 * t1) / det;
+        double h = m[i] - fit;
+        ms += h * h;
+        kept++;
+    }
+    return ms / kept;
+}
+
+/* banding_rows, banding_cols and banding (compare.c) from the line sums: the bands' column
+   sums are added in band order first, so the result does not depend on the threads. */
+static enum ssg_err report_banding(const struct ssg_node_ctx *ctx, const struct job *j,
+                                   int bands)
+{
+    size_t w = (size_t)j->w, h = (size_t)j->h, n = w > h ? w : h;
+    double *col = calloc((size_t)j->channels * w, sizeof(double));
+    long long *count = calloc(w, sizeof(long long));
+    double *m = malloc(n * sizeof(double));
+    if (!col || !count || !m) {
+        free(col), free(count), free(m);
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the banding lines");
+    }
+    for (int i = 0; i < bands; i++)
+        for (size_t k = 0; k < (size_t)j->channels * w; k++)
+            col[k] += j->parts[i].col_sum[k];
+    for (int i = 0; i < bands; i++)
+        for (size_t x = 0; x < w; x++)
+            count[x] += j->parts[i].col_count[x];
+    double rows = 0, cols = 0;
+    for (int ch = 0; ch < j->channels; ch++) {
+        rows += highpass_ms(j->row_sum + ch * h, j->row_count, j->h, j->c->banding, m);
+        cols += highpass_ms(col + ch * w, count, j->w, j->c->banding, m);
+    }
+    rows /= j->channels, cols /= j->channels;
+    ssg_metric_report(ctx, "banding", sqrt(rows + cols));
+    ssg_metric_report(ctx, "banding_rows", sqrt(rows));
+    ssg_metric_report(ctx, "banding_cols", sqrt(cols));
+    free(col), free(count), free(m);
+    return SSG_OK;
+}
+
 /* The band partials, added in band order, into the reported metrics. */
 static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, int bands)
 {
@@ -295,7 +396,28 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
                                            : mse == 0 ? INFINITY : NAN);
     ssg_metric_report(ctx, "ssim", t.count ? ssim / j->channels : NAN);
     ssg_metric_report(ctx, "pixels", (double)t.count);
-    return SSG_OK;
+    return j->row_sum ? report_banding(ctx, j, bands) : SSG_OK;
+}
+
+/* Banding's line buffers (off: all NULL): the rows', shared (one band writes each row),
+   and each band's own column sums, zeroed. 0 when out of memory. */
+static int banding_alloc(struct job *j, int bands, double **cols, long long **counts)
+{
+    size_t w = (size_t)j->w, ch = (size_t)j->channels;
+    *cols = NULL, *counts = NULL;
+    if (j->c->banding <= 0)
+        return 1;
+    j->row_sum = calloc(ch * (size_t)j->h + 1, sizeof(double));
+    j->row_count = calloc((size_t)j->h + 1, sizeof(long long));
+    *cols = calloc((size_t)bands * ch * w + 1, sizeof(double));
+    *counts = calloc((size_t)bands * w + 1, sizeof(long long));
+    if (!j->row_sum || !j->row_count || !*cols || !*counts)
+        return 0;
+    for (int i = 0; i < bands; i++) {
+        j->parts[i].col_sum = *cols + (size_t)i * ch * w;
+        j->parts[i].col_count = *counts + (size_t)i * w;
+    }
+    return 1;
 }
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -315,8 +437,16 @@ enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     }
     for (int ch = 0; ch < 3; ch++)
         j.diff[ch] = ssg_image_plane(io->out[0], ch);
-    ssg_parallel_rows(a->height, ROWS_PER_BAND, band, &j);
-    enum ssg_err e = report(ctx, &j, bands);
+    double *cols;
+    long long *counts;
+    enum ssg_err e = SSG_E_NOMEM;
+    if (banding_alloc(&j, bands, &cols, &counts)) {
+        ssg_parallel_rows(a->height, ROWS_PER_BAND, band, &j);
+        e = report(ctx, &j, bands);
+    } else {
+        ssg_node_fail(ctx, e, "out of memory for the banding lines");
+    }
+    free(j.row_sum), free(j.row_count), free(cols), free(counts);
     free(j.parts);
     return e;
 }

@@ -24,10 +24,12 @@
  * period, (r + (j + 0.5) / K) / N_g for sample r of block j of K, which keeps the blocks
  * alike and still gives the same set of values as (i + 0.5) / count overall.
  *
- * The rotation tile holds n*n angles 2*pi*frac(Phi_2(k) + u), k = 0..n*n-1, a van der
- * Corput set shifted by u (Cranley-Patterson rotation) and placed on the tile by a
- * permutation; u and the permutation come from the frame seed, so the pattern is
- * deterministic per seed and changes with it. */
+ * The rotation tile (rotations = tile, the default) holds n*n angles 2*pi*frac(Phi_2(k) + u),
+ * k = 0..n*n-1, a van der Corput set shifted by u (Cranley-Patterson rotation) and placed
+ * on the tile by a permutation; u and the permutation come from the frame seed, so the
+ * pattern is deterministic per seed and changes with it. rotations = interleaved (a Latin
+ * square of n angles) and blue_noise (a void-and-cluster rank map) leave less structure
+ * after the filter: halton_pattern.c says why and how. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -96,21 +98,6 @@ static void map_sample(const struct ssg_halton_params *p, const double u[3], dou
     s[0] = len * rad * cos(phi);
     s[1] = len * rad * sin(phi);
     s[2] = len * z;
-}
-
-static void make_pattern(int n, uint64_t seed, float *pattern)
-{
-    int cells = n * n;
-    int perm[SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN];
-    uint64_t state = seed ^ 0x6A09E667F3BCC909ull;
-    double shift = ssg_random_unit(&state);
-    ssg_random_permutation(&state, perm, cells);
-    for (int k = 0; k < cells; k++) {
-        double a = ssg_halton_radical_inverse((uint64_t)k, 2) + shift;
-        a = 2.0 * M_PI * (a - floor(a));
-        pattern[perm[k]] = (float)cos(a);
-        pattern[cells + perm[k]] = (float)sin(a);
-    }
 }
 
 static int is_prime(int v)
@@ -197,11 +184,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         for (int ch = 0; ch < 3; ch++)
             c->kernel[ch * p->count + i] = (float)s[ch];
     }
-    make_pattern(p->pattern, ctx->frame ? ctx->frame->seed : 1, c->pattern);
+    if (!ssg_halton_make_pattern(p->rotations, p->pattern, ctx->frame ? ctx->frame->seed : 1,
+                                 c->pattern))
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the blue-noise tile");
     return SSG_OK;
 }
 
 static const char *const mapping_choices[] = {"cosine", "uniform", NULL};
+static const char *const rotations_choices[] = {"tile", "interleaved", "blue_noise", NULL};
 
 static const struct ssg_param_desc params[] = {
     {.name = "count", SSG_FIELD_INT(struct ssg_halton_params, count), .def = 16, .min = 1,
@@ -228,6 +218,10 @@ static const struct ssg_param_desc params[] = {
      .min = 0, .max = 1, .help = "shortest sample length as a fraction of the radius"},
     {.name = "pattern", SSG_FIELD_INT(struct ssg_halton_params, pattern), .def = 4, .min = 1,
      .max = SSG_HALTON_MAX_PATTERN, .unit = "px", .help = "side of the tiled rotation pattern"},
+    {.name = "rotations", SSG_FIELD_ENUM(struct ssg_halton_params, rotations),
+     .def = SSG_HALTON_TILE, .choices = rotations_choices,
+     .help = "tile layout: tile = n*n angles, white; interleaved = n angles, every row and "
+             "column holds each once; blue_noise = n*n angles, void-and-cluster (n = 64)"},
 };
 
 static const struct ssg_port_desc outputs[] = {
@@ -247,8 +241,15 @@ const struct ssg_node_desc ssg_node_halton = {
            "offset+i (eq. 7) mapped to the hemisphere (cosine or uniform) and scaled to "
            "length lerp(min_scale, 1, t^falloff). With period > 0 (eq. 8) the kernel is "
            "count/period alike blocks and every prefix of whole blocks is quasi-uniform. "
-           "The rotation tile holds a seed-shifted van der Corput set of angles, placed "
-           "by a seeded permutation; it changes with the frame seed.",
+           "The rotation tile (rotations=tile) holds a seed-shifted van der Corput set of "
+           "angles, placed by a seeded permutation; it changes with the frame seed. "
+           "rotations=interleaved: n angles 2 pi (j + u) / n on a seeded Latin square "
+           "(Keller and Heidrich 2001), every row and column of the tile holds each once, "
+           "so its row and column means are equal and a separable filter leaves no streaks "
+           "from it. rotations=blue_noise: the n*n angles placed by a void-and-cluster rank "
+           "map of the n x n torus (Ulichney 1993, Gaussian sigma 1.5, seeded initial "
+           "pattern, made in prepare), low in energy at low frequencies, so that the filter "
+           "removes what noise there is; use pattern=64.",
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_halton_params),
     .consts_size = sizeof(struct ssg_halton_consts),

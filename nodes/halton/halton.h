@@ -28,6 +28,13 @@ enum ssg_halton_mapping {
     SSG_HALTON_UNIFORM, /* uniform over the hemisphere's solid angle */
 };
 
+/* How the rotation tile is laid out (halton_pattern.c). */
+enum ssg_halton_rotations {
+    SSG_HALTON_TILE,        /* n*n van der Corput angles, seeded permutation (white) */
+    SSG_HALTON_INTERLEAVED, /* n angles on a Latin square: rows and columns hold each once */
+    SSG_HALTON_BLUE_NOISE,  /* n*n angles on a void-and-cluster rank map (Ulichney 1993) */
+};
+
 /* Parameters as the graph file sets them (see the table in halton.c). */
 struct ssg_halton_params {
     int count;             /* kernel samples, 1..1024; default 16 */
@@ -40,6 +47,7 @@ struct ssg_halton_params {
     float falloff;         /* exponent of the length curve, > 0; default 2 */
     float min_scale;       /* shortest sample length, fraction of the radius; default 0.1 */
     int pattern;           /* rotation tile side n in pixels, 1..64; default 4 */
+    int rotations;         /* enum ssg_halton_rotations: the tile's layout; default tile */
 };
 
 /* What prepare() computes and both backends read: images in the planar layout of
@@ -63,6 +71,15 @@ void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3]
 /* Largest k with base^k dividing period (0 when period <= 0): the number of leading
  * digits that eq. 8 guarantees samples sample and sample + m*period share. */
 int ssg_halton_period_digits(int period, int base);
+
+/* The rotation tile of layout `kind` (enum ssg_halton_rotations), side n (1..64), as
+ * (cos, sin) planes of n*n floats each, from the frame seed (halton_pattern.c). Returns 0
+ * when out of memory (blue_noise's work buffers), else 1. Pure, thread-safe. */
+int ssg_halton_make_pattern(int kind, int n, uint64_t seed, float *pattern);
+
+/* The void-and-cluster rank map (Ulichney 1993) of the n x n torus behind blue_noise:
+ * rank[y * n + x] in 0..n*n-1, each once, from the seed. Returns 0 when out of memory. */
+int ssg_halton_blue_noise_ranks(int n, uint64_t seed, int *rank);
 
 /* The CPU backend (halton_cpu.c): copies the prepared kernel and tile into the outputs. */
 struct ssg_node_ctx;
