@@ -74,9 +74,10 @@ static void test_identical(void)
         memcpy(b->data, a->data, sizeof(float) * 37 * 29 * channels);
         struct ssg_outputs out;
         CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
-        CHECK_EQ(out.metric_count, 6);
-        const char *order[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels"};
-        for (int i = 0; i < 6 && i < out.metric_count; i++)
+        CHECK_EQ(out.metric_count, 8);
+        const char *order[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels", "mean",
+                               "reference_mean"};
+        for (int i = 0; i < 8 && i < out.metric_count; i++)
             CHECK(!strcmp(out.metric_names[i], order[i]));
         CHECK(metric(&out, "rmse") == 0.0);
         CHECK(metric(&out, "mae") == 0.0);
@@ -111,6 +112,11 @@ static void test_offset(void)
     CHECK_NEAR(metric(&out, "rmse"), d, 1e-15);
     CHECK_NEAR(metric(&out, "mae"), d, 1e-15);
     CHECK_NEAR(metric(&out, "bias"), -d, 1e-15); /* a = b - d: a is darker */
+    double sum_a = 0;
+    for (size_t i = 0; i < (size_t)3 * 23 * 17; i++)
+        sum_a += a->data[i];
+    CHECK_NEAR(metric(&out, "mean"), sum_a / (3 * 23 * 17), 1e-12);
+    CHECK_NEAR(metric(&out, "reference_mean"), sum_a / (3 * 23 * 17) + d, 1e-12);
     CHECK_NEAR(metric(&out, "psnr"), 10 * log10(1 / (d * d)), 1e-12);
     ssg_outputs_release(&out);
     /* PSNR scales with the peak: 20 log10(peak / rmse) */

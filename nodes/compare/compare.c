@@ -11,6 +11,8 @@
  *          K1 = 0.01, K2 = 0.03, L = peak), averaged as in eq. 17 over the counted pixels,
  *          then over channels
  *   pixels the number of pixels counted
+ *   mean, reference_mean  sum a and sum b / (pixels * channels): a term's energy against
+ *          the reference's is their ratio
  * With no pixel counted, every metric but `pixels` is NaN (null in JSON).
  *
  * Banding (banding = r > 0; not measured by default): structured error along image rows or

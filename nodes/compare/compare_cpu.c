@@ -34,6 +34,7 @@ struct partial {
     double sq;                              /* sum of (a - b)^2 over counted values */
     double abs;                             /* sum of |a - b| */
     double diff;                            /* sum of a - b (the signed bias) */
+    double sum_a, sum_b;                    /* sums of a and of b (the means) */
     double ssim[SSG_COMPARE_MAX_CHANNELS];  /* sum of per-pixel SSIM, per channel */
     long long count;                        /* counted pixels */
     double *col_sum;        /* banding: channels x w sums of a - b down this band's part of
@@ -103,7 +104,7 @@ static void errors_row(const struct job *j, struct partial *p, int y)
         banding_row(j, p, y);
     for (int ch = 0; ch < j->channels; ch++) {
         const float *a = j->a[ch] + o, *b = j->b[ch] + o;
-        double sq = 0, ab = 0, df = 0;
+        double sq = 0, ab = 0, df = 0, sa = 0, sb = 0;
         for (int x = 0; x < j->w; x++) {
             if (!counted(j, x, y))
                 continue;
@@ -111,10 +112,14 @@ static void errors_row(const struct job *j, struct partial *p, int y)
             sq += d * d;
             ab += fabs(d);
             df += d;
+            sa += a[x];
+            sb += b[x];
         }
         p->sq += sq;
         p->abs += ab;
         p->diff += df;
+        p->sum_a += sa;
+        p->sum_b += sb;
     }
 }
 
@@ -378,6 +383,8 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
         t.sq += p->sq;
         t.abs += p->abs;
         t.diff += p->diff;
+        t.sum_a += p->sum_a;
+        t.sum_b += p->sum_b;
         t.count += p->count;
         for (int ch = 0; ch < j->channels; ch++)
             t.ssim[ch] += p->ssim[ch];
@@ -396,6 +403,10 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
                                            : mse == 0 ? INFINITY : NAN);
     ssg_metric_report(ctx, "ssim", t.count ? ssim / j->channels : NAN);
     ssg_metric_report(ctx, "pixels", (double)t.count);
+    /* The two means: their ratio is a term's energy against the reference's (bench.py's
+       bounce column), which rmse and bias do not give. */
+    ssg_metric_report(ctx, "mean", t.count ? t.sum_a / values : NAN);
+    ssg_metric_report(ctx, "reference_mean", t.count ? t.sum_b / values : NAN);
     return j->row_sum ? report_banding(ctx, j, bands) : SSG_OK;
 }
 
