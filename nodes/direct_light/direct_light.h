@@ -10,6 +10,8 @@
 enum { SSG_DIRECT_LIGHT_MAX_SAMPLES = 64, SSG_DIRECT_LIGHT_MAX_LIGHTS = SSG_LIGHTMAP_FACES_MAX };
 /* The widest PCF disc a pixel may get (soft shadows), texels. */
 #define SSG_DIRECT_LIGHT_MAX_RADIUS 24.0f
+/* The steepest receiver plane a tap follows, depth texels per texel (84 degrees). */
+#define SSG_DIRECT_LIGHT_MAX_SLOPE 10.0f
 
 /* Ports: the descriptor's arrays are indexed by these (one naming rule:
    SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */

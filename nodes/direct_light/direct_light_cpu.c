@@ -58,13 +58,20 @@ static float cube_distance(const struct job *j, int first, int f, int x, int y)
     return j->maps[((size_t)g * res + gy) * res + gx] * len / z;
 }
 
-/* Where the receiver is on a light's maps: its face, texel coordinates and distance. */
+/* Where the receiver is on a light's maps: its face, texel coordinates and distance, and
+   its plane, so that each tap compares against the receiver's own distance along the
+   tap's ray ("receiver plane depth bias", Isidoro, GDC 2006): a flat receiver never
+   shadows itself, whatever the disc's radius. */
 struct lookup {
     const struct ssg_direct_light_light *l;
     int f;        /* face of the light (0 for a directional one) */
     float x, y;   /* texel coordinates on it */
     float r;      /* distance: along the ray (point) or depth (directional) */
     float texel;  /* a texel at the receiver, scene units */
+    float bias;   /* the constant offset, scene units */
+    float gx, gy; /* directional: the receiver plane's depth change a texel along x, y */
+    float n[3];   /* point: the receiver's normal and n . (q - light) */
+    float nq;
 };
 
 /* The occluder distance at texel (x, y) of the lookup's face, SSG_SHADOW_EMPTY where the
@@ -79,12 +86,36 @@ static float occluder(const struct job *j, const struct lookup *k, int x, int y)
     return j->maps[((size_t)k->l->face * res + y) * res + x];
 }
 
+/* The receiver's distance along the ray of texel coordinates (x, y) of the lookup's
+   face, less the offset: a tap is lit where the occluder is at least this far. Kept
+   within SSG_DIRECT_LIGHT_MAX_SLOPE texels a texel of the centre's (a grazing plane). */
+static float tap_limit(const struct job *j, const struct lookup *k, float x, float y)
+{
+    float dx = x - k->x, dy = y - k->y, m = k->texel * SSG_DIRECT_LIGHT_MAX_SLOPE *
+                                             (fabsf(dx) + fabsf(dy) + 1.0f);
+    float t;
+    if (!k->l->point) {
+        t = k->r + k->gx * dx + k->gy * dy;
+    } else {
+        const struct ssg_lightmap_face *f = &j->c->faces[k->l->face + k->f];
+        float a = 2.0f * x / (float)j->c->res - 1.0f, b = 2.0f * y / (float)j->c->res - 1.0f;
+        float d[3], len2 = 0.0f, nd = 0.0f;
+        for (int i = 0; i < 3; i++) {
+            d[i] = f->axis[i] + a * f->u[i] + b * f->v[i];
+            len2 += d[i] * d[i], nd += k->n[i] * d[i];
+        }
+        nd /= sqrtf(len2);
+        t = nd < 0.0f ? k->nq / nd : k->r + m; /* the tap's ray meets the plane at t */
+    }
+    t = t < k->r + m ? (t > k->r - m ? t : k->r - m) : k->r + m;
+    return t - k->bias;
+}
+
 /* The bilinear blend of the four tests around texel coordinates (x, y). */
-static float bilinear_test(const struct job *j, const struct lookup *k, float x, float y,
-                           float limit)
+static float bilinear_test(const struct job *j, const struct lookup *k, float x, float y)
 {
     float fx = x - 0.5f, fy = y - 0.5f, x0 = floorf(fx), y0 = floorf(fy);
-    float wx = fx - x0, wy = fy - y0;
+    float wx = fx - x0, wy = fy - y0, limit = tap_limit(j, k, x, y);
     int ix = (int)x0, iy = (int)y0;
     float t00 = limit <= occluder(j, k, ix, iy) ? 1.0f : 0.0f;
     float t10 = limit <= occluder(j, k, ix + 1, iy) ? 1.0f : 0.0f;
@@ -95,8 +126,7 @@ static float bilinear_test(const struct job *j, const struct lookup *k, float x,
 
 /* The PCF radius in texels: `filter`, widened by the penumbra of the blockers found
    within the light's footprint (PCSS); 0 > radius: no blocker, fully lit. */
-static float filter_radius(const struct job *j, const struct lookup *k, float cs, float sn,
-                           float limit)
+static float filter_radius(const struct job *j, const struct lookup *k, float cs, float sn)
 {
     const struct ssg_direct_light_consts *c = j->c;
     float filter = c->p.filter, spread = k->l->spread;
@@ -110,9 +140,9 @@ static float filter_radius(const struct job *j, const struct lookup *k, float cs
     for (int s = 0; s < c->p.samples; s++) {
         float ox = cs * c->taps[2 * s] - sn * c->taps[2 * s + 1];
         float oy = sn * c->taps[2 * s] + cs * c->taps[2 * s + 1];
-        float d = occluder(j, k, (int)floorf(k->x + search * ox),
-                           (int)floorf(k->y + search * oy));
-        if (d < limit)
+        float x = k->x + search * ox, y = k->y + search * oy;
+        float d = occluder(j, k, (int)floorf(x), (int)floorf(y));
+        if (d < tap_limit(j, k, x, y))
             sum += d, n++;
     }
     if (n == 0)
@@ -147,8 +177,19 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
         k->f = ssg_lightmap_cube_face(d);
         k->r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
-    ssg_lightmap_project(&c->faces[light->face + k->f], c->res, q, &k->x, &k->y, &z);
+    const struct ssg_lightmap_face *f = &c->faces[light->face + k->f];
+    ssg_lightmap_project(f, c->res, q, &k->x, &k->y, &z);
     k->r = light->point ? k->r : z;
+    k->bias = c->p.offset * k->texel;
+    /* the receiver plane: n . (X - q) = 0 */
+    float nu = n[0] * f->u[0] + n[1] * f->u[1] + n[2] * f->u[2];
+    float nv = n[0] * f->v[0] + n[1] * f->v[1] + n[2] * f->v[2];
+    k->gx = k->texel * nu / cosine, k->gy = k->texel * nv / cosine;
+    k->nq = 0.0f;
+    for (int i = 0; i < 3; i++) {
+        k->n[i] = n[i];
+        k->nq += n[i] * (q[i] - light->pos[i]);
+    }
 }
 
 /* Light `light`'s visibility at pixel (x, y): PCF over the turned Vogel disc. */
@@ -162,15 +203,14 @@ static float visibility(const struct job *j, const struct ssg_direct_light_light
     float turn = ssg_direct_light_turn(x, y) + 0.618034f * (float)index;
     float angle = 2.0f * (float)M_PI * (turn - floorf(turn));
     float cs = cosf(angle), sn = sinf(angle);
-    float limit = k.r - c->p.offset * k.texel; /* lit when the occluder is at least this */
-    float radius = filter_radius(j, &k, cs, sn, limit);
+    float radius = filter_radius(j, &k, cs, sn);
     if (radius < 0.0f)
         return 1.0f;
     float sum = 0.0f;
     for (int s = 0; s < c->p.samples; s++) {
         float ox = cs * c->taps[2 * s] - sn * c->taps[2 * s + 1];
         float oy = sn * c->taps[2 * s] + cs * c->taps[2 * s + 1];
-        sum += bilinear_test(j, &k, k.x + radius * ox, k.y + radius * oy, limit);
+        sum += bilinear_test(j, &k, k.x + radius * ox, k.y + radius * oy);
     }
     return sum / (float)c->p.samples;
 }
