@@ -180,4 +180,5 @@ const struct ssg_node_desc ssg_node_direct_light = {
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_direct_light_run_cpu,
+    .run_gl = ssg_direct_light_run_gl,
 };
