@@ -12,8 +12,9 @@
  * Shadow test (Williams 1978), per light: the point p moves along its normal by
  * normal_offset x sin(N, L) texels ("normal offset shadows", Holbert, GDC 2011; see
  * probe_light.c for why this and not a slope-scaled offset: no leak at a wall's foot),
- * then is lit by a map texel whose surface is at least as far from the light as it, less
- * `offset` texels. A texel is 2 half / R scene units on an orthographic face and 2 d / R
+ * then is lit by a map texel whose surface is at least as far from the light as the
+ * receiver's plane along that tap's ray (receiver plane depth bias, Isidoro, GDC 2006), less
+ * `offset` texels and tap_slope texels a texel of the tap's distance from the centre. A texel is 2 half / R scene units on an orthographic face and 2 d / R
  * at distance d on a cube face. Filtering: percentage-closer (Reeves, Salesin and Cook,
  * "Rendering Antialiased Shadows with Depth Maps", SIGGRAPH 1987) over `samples` taps of
  * a Vogel disc (radius sqrt((k + 0.5) / n), angle k golden angles) of radius `filter`
@@ -120,6 +121,11 @@ static const struct ssg_param_desc params[] = {
      .min = 0, .max = 1000, .unit = "texels",
      .help = "constant depth offset of the test (map rounding); larger leaks light under "
              "thin occluders"},
+    {.name = "tap_slope", SSG_FIELD_FLOAT(struct ssg_direct_light_params, tap_slope),
+     .def = 0.5, .min = 0, .max = 100, .unit = "texels per texel",
+     .help = "more depth offset for a PCF tap, per texel of its distance from the disc's "
+             "centre: no false shadow in concave corners (a stair's step); larger leaks at "
+             "a wall's foot (0.5: none; 1: 1.7 texels)"},
     {.name = "normal_offset", SSG_FIELD_FLOAT(struct ssg_direct_light_params, normal_offset),
      .def = 2, .min = 0, .max = 1000, .unit = "texels",
      .help = "the lookup point moves along the normal by normal_offset x sin(N, L) texels: "

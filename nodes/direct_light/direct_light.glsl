@@ -13,7 +13,7 @@ layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
 layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
 layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
 uniform int lights, res, samples;
-uniform float filter_radius, offset, normal_offset;
+uniform float filter_radius, offset, normal_offset, tap_slope;
 uniform float rot[9];
 uniform vec3 eye;
 const float MAX_RADIUS = 24.0, MAX_SLOPE = 10.0, EMPTY = 1.0e30, TINY = 1e-30;
@@ -72,7 +72,7 @@ float tap_limit(Lookup k, float x, float y)
         t = nd < 0.0 ? k.nq / nd : k.r + m;
     }
     t = clamp(t, k.r - m, k.r + m);
-    return t - k.bias;
+    return t - k.bias - k.texel * tap_slope * sqrt(dx * dx + dy * dy);
 }
 
 float bilinear_test(Lookup k, float x, float y)

@@ -32,6 +32,7 @@ struct ssg_direct_light_params {
     int samples;         /* PCF taps (Vogel disc); default 12 */
     float filter;        /* PCF disc radius, texels; default 1.5 */
     float offset;        /* constant depth offset, texels; default 0.5 */
+    float tap_slope;     /* more offset a texel of a tap's distance, texels; 0.5 */
     float normal_offset; /* lookup moved along N by normal_offset x sin(N, l) texels; 2 */
     float light_size;    /* point lights' diameter, scene units; 0 = hard (PCF only) */
     float sun_angle;     /* directional lights' angular diameter, degrees; 0 = hard */

@@ -88,7 +88,10 @@ static float occluder(const struct job *j, const struct lookup *k, int x, int y)
 
 /* The receiver's distance along the ray of texel coordinates (x, y) of the lookup's
    face, less the offset: a tap is lit where the occluder is at least this far. Kept
-   within SSG_DIRECT_LIGHT_MAX_SLOPE texels a texel of the centre's (a grazing plane). */
+   within SSG_DIRECT_LIGHT_MAX_SLOPE texels a texel of the centre's (a grazing plane), and
+   tap_slope texels more a texel of the tap's distance from the centre: where the surface
+   bends towards the light within the disc (a concave corner: a step's tread meeting the
+   next riser) the plane alone would shadow the corner over the disc's radius. */
 static float tap_limit(const struct job *j, const struct lookup *k, float x, float y)
 {
     float dx = x - k->x, dy = y - k->y, m = k->texel * SSG_DIRECT_LIGHT_MAX_SLOPE *
@@ -108,7 +111,7 @@ static float tap_limit(const struct job *j, const struct lookup *k, float x, flo
         t = nd < 0.0f ? k->nq / nd : k->r + m; /* the tap's ray meets the plane at t */
     }
     t = t < k->r + m ? (t > k->r - m ? t : k->r - m) : k->r + m;
-    return t - k->bias;
+    return t - k->bias - k->texel * j->c->p.tap_slope * sqrtf(dx * dx + dy * dy);
 }
 
 /* The bilinear blend of the four tests around texel coordinates (x, y). */

@@ -32,6 +32,7 @@ enum ssg_err ssg_direct_light_run_gl(const struct ssg_node_ctx *ctx, const void 
     ssg_gl_float(&p, "filter_radius", c->p.filter);
     ssg_gl_float(&p, "offset", c->p.offset);
     ssg_gl_float(&p, "normal_offset", c->p.normal_offset);
+    ssg_gl_float(&p, "tap_slope", c->p.tap_slope);
     ssg_gl_floats(&p, "rot", 9, c->rot);
     ssg_gl_vec3(&p, "eye", c->eye);
     ssg_gl_dispatch(&p, pos->width, pos->height);
