@@ -33,26 +33,26 @@ int cube_face(vec3 d) // ssg_lightmap_cube_face
     return d.z >= 0.0 ? 4 : 5;
 }
 
-float cube_distance(int first, int f, int x, int y)
+float cube_depth(int first, int f, int x, int y) // direct_light_cpu.c
 {
+    if (x >= 0 && y >= 0 && x < res && y < res)
+        return texelFetch(maps, ivec3(x, y, first + f), 0).r;
     float a = 2.0 * (float(x) + 0.5) / float(res) - 1.0;
     float b = 2.0 * (float(y) + 0.5) / float(res) - 1.0;
-    if (x >= 0 && y >= 0 && x < res && y < res)
-        return texelFetch(maps, ivec3(x, y, first + f), 0).r * sqrt(1.0 + a * a + b * b);
     vec3 d = fa(first + f) + a * fu(first + f) + b * fv(first + f);
     int g = first + cube_face(d);
     float z = dot(d, fa(g));
     int gx = clamp(int(floor((dot(d, fu(g)) / z + 1.0) * 0.5 * float(res))), 0, res - 1);
     int gy = clamp(int(floor((dot(d, fv(g)) / z + 1.0) * 0.5 * float(res))), 0, res - 1);
-    return texelFetch(maps, ivec3(gx, gy, g), 0).r * length(d) / z;
+    return texelFetch(maps, ivec3(gx, gy, g), 0).r / z;
 }
 
-struct Lookup { int l; int f; float x, y, r, texel, bias, gx, gy, nq; vec3 n; };
+struct Lookup { int l; int f; float x, y, r, z, texel, bias, gx, gy, nq; vec3 n; };
 
 float occluder(Lookup k, int x, int y)
 {
     if (light[k.l].point != 0)
-        return cube_distance(light[k.l].face, k.f, x, y);
+        return cube_depth(light[k.l].face, k.f, x, y);
     if (x < 0 || y < 0 || x >= res || y >= res)
         return EMPTY;
     return texelFetch(maps, ivec3(x, y, light[k.l].face), 0).r;
@@ -68,8 +68,10 @@ float tap_limit(Lookup k, float x, float y)
         int f = light[k.l].face + k.f;
         float a = 2.0 * x / float(res) - 1.0, b = 2.0 * y / float(res) - 1.0;
         vec3 d = fa(f) + a * fu(f) + b * fv(f);
-        float nd = dot(k.n, d) / length(d);
+        float len = length(d), nd = dot(k.n, d) / len;
         t = nd < 0.0 ? k.nq / nd : k.r + m;
+        t = clamp(t, k.r - m, k.r + m);
+        return (t - (k.bias + k.texel * tap_slope * sqrt(dx * dx + dy * dy))) / len;
     }
     t = clamp(t, k.r - m, k.r + m);
     return t - k.bias - k.texel * tap_slope * sqrt(dx * dx + dy * dy);
@@ -114,7 +116,7 @@ float pcf_radius(Lookup k, float cs, float sn)
     if (n == 0)
         return -1.0;
     float blocker = sum / float(n);
-    float penumbra = point ? spread * (k.r - blocker) / blocker : spread * (k.r - blocker);
+    float penumbra = point ? spread * (k.z - blocker) / blocker : spread * (k.z - blocker);
     return min(filter_radius + 0.5 * penumbra / k.texel, MAX_RADIUS);
 }
 
@@ -138,6 +140,7 @@ Lookup locate(int li, vec3 p, vec3 n, vec3 l)
     k.y = (dot(d, fv(f)) * scale + 1.0) * 0.5 * float(res);
     if (!point)
         k.r = z;
+    k.z = z;
     k.bias = offset * k.texel;
     k.gx = k.texel * dot(n, fu(f)) / cosine;
     k.gy = k.texel * dot(n, fv(f)) / cosine;

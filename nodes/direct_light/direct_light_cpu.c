@@ -32,16 +32,18 @@ static float luminance(float r, float g, float b)
     return 0.2126f * r + 0.7152f * g + 0.0722f * b;
 }
 
-/* A cube face's texel (x, y), maybe past its edge, as the distance from the light along
-   its ray to the nearest surface: read on the face its direction falls on. */
-static float cube_distance(const struct job *j, int first, int f, int x, int y)
+/* A cube face's texel (x, y), maybe past its edge, as the depth along face f's axis of
+   the nearest surface on its ray: read on the face its direction falls on (a texel past
+   the edge: the neighbour's depth z' at direction d, d's axis part 1 on f, is z' / (d .
+   axis') on f). */
+static float cube_depth(const struct job *j, int first, int f, int x, int y)
 {
     const int res = j->c->res;
+    if (x >= 0 && y >= 0 && x < res && y < res)
+        return j->maps[((size_t)(first + f) * res + y) * res + x];
     const struct ssg_lightmap_face *face = &j->c->faces[first + f];
     float a = 2.0f * ((float)x + 0.5f) / (float)res - 1.0f;
     float b = 2.0f * ((float)y + 0.5f) / (float)res - 1.0f;
-    if (x >= 0 && y >= 0 && x < res && y < res)
-        return j->maps[((size_t)(first + f) * res + y) * res + x] * sqrtf(1.0f + a * a + b * b);
     float d[3];
     for (int k = 0; k < 3; k++)
         d[k] = face->axis[k] + a * face->u[k] + b * face->v[k];
@@ -54,8 +56,7 @@ static float cube_distance(const struct job *j, int first, int f, int x, int y)
     int gy = (int)floorf((gb + 1.0f) * 0.5f * (float)res);
     gx = gx < 0 ? 0 : gx > res - 1 ? res - 1 : gx;
     gy = gy < 0 ? 0 : gy > res - 1 ? res - 1 : gy;
-    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    return j->maps[((size_t)g * res + gy) * res + gx] * len / z;
+    return j->maps[((size_t)g * res + gy) * res + gx] / z;
 }
 
 /* Where the receiver is on a light's maps: its face, texel coordinates and distance, and
@@ -67,6 +68,7 @@ struct lookup {
     int f;        /* face of the light (0 for a directional one) */
     float x, y;   /* texel coordinates on it */
     float r;      /* distance: along the ray (point) or depth (directional) */
+    float z;      /* depth along the face's axis (the maps' measure) */
     float texel;  /* a texel at the receiver, scene units */
     float bias;   /* the constant offset, scene units */
     float gx, gy; /* directional: the receiver plane's depth change a texel along x, y */
@@ -74,13 +76,13 @@ struct lookup {
     float nq;
 };
 
-/* The occluder distance at texel (x, y) of the lookup's face, SSG_SHADOW_EMPTY where the
-   map has none or (directional) the texel is off the map. */
+/* The occluder's depth along the lookup face's axis at its texel (x, y), SSG_SHADOW_EMPTY
+   where the map has none or (directional) the texel is off the map. */
 static float occluder(const struct job *j, const struct lookup *k, int x, int y)
 {
     const int res = j->c->res;
     if (k->l->point)
-        return cube_distance(j, k->l->face, k->f, x, y);
+        return cube_depth(j, k->l->face, k->f, x, y);
     if (x < 0 || y < 0 || x >= res || y >= res)
         return SSG_SHADOW_EMPTY;
     return j->maps[((size_t)k->l->face * res + y) * res + x];
@@ -107,8 +109,12 @@ static float tap_limit(const struct job *j, const struct lookup *k, float x, flo
             d[i] = f->axis[i] + a * f->u[i] + b * f->v[i];
             len2 += d[i] * d[i], nd += k->n[i] * d[i];
         }
-        nd /= sqrtf(len2);
+        float len = sqrtf(len2);
+        nd /= len;
         t = nd < 0.0f ? k->nq / nd : k->r + m; /* the tap's ray meets the plane at t */
+        t = t < k->r + m ? (t > k->r - m ? t : k->r - m) : k->r + m;
+        t -= k->bias + k->texel * j->c->p.tap_slope * sqrtf(dx * dx + dy * dy);
+        return t / len; /* along the ray -> along the face's axis, as the map */
     }
     t = t < k->r + m ? (t > k->r - m ? t : k->r - m) : k->r + m;
     return t - k->bias - k->texel * j->c->p.tap_slope * sqrtf(dx * dx + dy * dy);
@@ -151,8 +157,8 @@ static float filter_radius(const struct job *j, const struct lookup *k, float cs
     if (n == 0)
         return -1.0f;
     float blocker = sum / (float)n;
-    float penumbra = k->l->point ? spread * (k->r - blocker) / blocker
-                                 : spread * (k->r - blocker);
+    float penumbra = k->l->point ? spread * (k->z - blocker) / blocker
+                                 : spread * (k->z - blocker);
     float r = filter + 0.5f * penumbra / k->texel;
     return r < SSG_DIRECT_LIGHT_MAX_RADIUS ? r : SSG_DIRECT_LIGHT_MAX_RADIUS;
 }
@@ -183,6 +189,7 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
     const struct ssg_lightmap_face *f = &c->faces[light->face + k->f];
     ssg_lightmap_project(f, c->res, q, &k->x, &k->y, &z);
     k->r = light->point ? k->r : z;
+    k->z = z;
     k->bias = c->p.offset * k->texel;
     /* the receiver plane: n . (X - q) = 0 */
     float nu = n[0] * f->u[0] + n[1] * f->u[1] + n[2] * f->u[2];
