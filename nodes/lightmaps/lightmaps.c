@@ -142,4 +142,5 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     .check_scene = check_scene,
     .prepare = prepare,
     .run_cpu = ssg_lightmaps_run_cpu,
+    .run_gl = ssg_lightmaps_run_gl,
 };
