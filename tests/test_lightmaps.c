@@ -171,15 +171,15 @@ static void test_bounds(void)
     struct ssg_shape out[3];
     char why[300];
     p->resolution = 16;
-    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_E_SIZE);
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, NULL, out, why, sizeof why), SSG_E_SIZE);
     fprintf(stderr, "114 point lights: %s\n", why);
     ssg_scene_destroy(&s);
     s = scene_from_text("lightmaps_one", "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
                                          "point_light(position=[0, 1, 0], intensity=1)\n");
-    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_OK);
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, NULL, out, why, sizeof why), SSG_OK);
     CHECK_EQ(out[0].channels * 100 + out[2].channels, 618);
     p->resolution = 8192; /* 3 x 6 x 8192^2 floats: over 512 Mi */
-    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_E_SIZE);
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, NULL, out, why, sizeof why), SSG_E_SIZE);
     fprintf(stderr, "a point light at 8192: %s\n", why);
     ssg_scene_destroy(&s);
     free(params);

@@ -57,6 +57,22 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
+/* The maps must be this scene's (check_scene of node.h). */
+static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
+                                const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                                size_t why_len)
+{
+    (void)params, (void)out;
+    int need = ssg_lightmap_face_count(scene), have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
+    if (have != need) {
+        snprintf(why, why_len, "maps has %d faces but the scene's lights need %d (6 a point "
+                 "light, 1 a directional light): connect the depth output of a lightmaps "
+                 "node of the same scene", have, need);
+        return SSG_E_CHANNELS;
+    }
+    return SSG_OK;
+}
+
 /* The lights of the scene in map order, each with its first face. */
 static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_consts *c)
 {
@@ -88,16 +104,15 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         return ssg_node_fail(ctx, SSG_E_SCENE, "needs a scene");
     const struct ssg_shape *maps = &ctx->in_shape[SSG_DIRECT_LIGHT_IN_MAPS];
     int need = ssg_lightmap_face_count(ctx->scene);
-    if (maps->channels != need)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "maps has %d faces but the scene's lights "
-                             "need %d (6 a point light, 1 a directional light): connect the "
-                             "depth output of a lightmaps node of the same scene",
-                             maps->channels, need);
+    if (maps->channels != need) /* a graph refuses it first (check_scene) */
+        return ssg_node_fail(ctx, SSG_E_SCENE, "maps has %d faces but the scene's lights "
+                             "need %d: connect the depth output of a lightmaps node of the "
+                             "same scene", maps->channels, need);
     c->p = *p;
     c->res = maps->width;
     if (ssg_lightmap_faces(ctx->scene, c->faces, SSG_LIGHTMAP_FACES_MAX) < 0)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "more than %d map faces",
-                             SSG_LIGHTMAP_FACES_MAX);
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
+                             "faces", SSG_LIGHTMAP_FACES_MAX);
     ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);
     for (int k = 0; k < p->samples; k++) {
         double r = sqrt((k + 0.5) / p->samples), a = GOLDEN_ANGLE * k;
@@ -184,6 +199,7 @@ const struct ssg_node_desc ssg_node_direct_light = {
     .consts_size = sizeof(struct ssg_direct_light_consts),
     .needs_scene = 1,
     .check = check,
+    .check_scene = check_scene,
     .prepare = prepare,
     .run_cpu = ssg_direct_light_run_cpu,
     .run_gl = ssg_direct_light_run_gl,

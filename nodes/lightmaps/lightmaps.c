@@ -33,9 +33,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 
 /* The scene's face count sets the channels; refused over the image limits. */
 static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
-                                struct ssg_shape *out, char *why, size_t why_len)
+                                const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                                size_t why_len)
 {
     const struct ssg_lightmaps_params *p = params;
+    (void)in;
     long long f = ssg_lightmap_face_count(scene), r = p->resolution;
     if (f > SSG_LIGHTMAP_FACES_MAX) {
         snprintf(why, why_len, "the scene's lights need %lld map faces (6 a point light, 1 a "
@@ -83,8 +85,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->res = p->resolution;
     c->count = ssg_lightmap_faces(ctx->scene, c->faces, SSG_LIGHTMAP_FACES_MAX);
     if (c->count < 0 || c->count != ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "the scene's lights need %d map faces, the "
-                             "depth output has %d channels", ssg_lightmap_face_count(ctx->scene),
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need %d map faces, the "
+                             "depth image bound has %d channels (a graph sizes it itself)", ssg_lightmap_face_count(ctx->scene),
                              ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels);
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
     c->near_z = SSG_LIGHTMAPS_NEAR * sphere.radius;
