@@ -11,7 +11,7 @@
 #include "common/direct.h"
 #include "direct_light.h"
 
-enum { CHUNK = 64, ROWS_PER_BAND = 8 };
+enum { CHUNK = 64, ROWS_PER_BAND = 8, EARLY = 4 };
 
 struct job {
     const struct ssg_direct_light_consts *c;
@@ -216,13 +216,20 @@ static float visibility(const struct job *j, const struct ssg_direct_light_light
     float radius = filter_radius(j, &k, cs, sn);
     if (radius < 0.0f)
         return 1.0f;
+    /* The outermost EARLY taps first (the Vogel disc's last): where they all agree the
+       pixel is taken as wholly lit or wholly shadowed (most pixels: away from a shadow's
+       edge), else every tap counts. */
+    const int taps = c->p.samples, early = taps >= 2 * EARLY ? EARLY : 0;
     float sum = 0.0f;
-    for (int s = 0; s < c->p.samples; s++) {
+    for (int i = 0; i < taps; i++) {
+        int s = taps - 1 - i;
         float ox = cs * c->taps[2 * s] - sn * c->taps[2 * s + 1];
         float oy = sn * c->taps[2 * s] + cs * c->taps[2 * s + 1];
         sum += bilinear_test(j, &k, k.x + radius * ox, k.y + radius * oy);
+        if (i + 1 == early && (sum == 0.0f || sum == (float)early))
+            return sum / (float)early;
     }
-    return sum / (float)c->p.samples;
+    return sum / (float)taps;
 }
 
 /* The chunk's world positions and normals (background: normal 0). */
