@@ -35,7 +35,9 @@ static struct ssg_shape shape_of_type(unsigned types)
         return (struct ssg_shape){4, 4, 2, SSG_T_PATTERN};
     if (types & SSG_T_LIGHTS)
         return (struct ssg_shape){LIGHTS, 2, 3, SSG_T_LIGHTS};
-    return (struct ssg_shape){32, 32, LIGHTS, SSG_T_SHADOWMAPS};
+    if (types & SSG_T_SHADOWMAPS)
+        return (struct ssg_shape){32, 32, LIGHTS, SSG_T_SHADOWMAPS};
+    return (struct ssg_shape){32, 32, LIGHTS, SSG_T_LIGHTMAPS};
 }
 
 struct bound {

@@ -355,6 +355,63 @@ enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg
     return pass->err ? pass->err : (pass->err = e);
 }
 
+/* Attaches draw i's layers of every stack; the number of outputs. */
+static int attach_stacks(GLuint fbo, const struct ssg_gl_stack *stacks, int count, int i)
+{
+    GLenum draw[MAX_LAYERS];
+    int n = 0;
+    for (int k = 0; k < count; k++)
+        for (int l = 0; l < stacks[k].layers && n < MAX_LAYERS; l++, n++) {
+            glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0 + (GLenum)n,
+                                           ssg_gl_texture_of(stacks[k].image), 0,
+                                           i * stacks[k].layers + l);
+            draw[n] = GL_COLOR_ATTACHMENT0 + (GLenum)n;
+        }
+    glNamedFramebufferDrawBuffers(fbo, n, draw);
+    return n;
+}
+
+enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass, const struct ssg_gl_scene *s,
+                                      const struct ssg_gl_stack *stacks, int count, int draws)
+{
+    int outputs = 0;
+    for (int k = 0; k < count; k++)
+        outputs += stacks[k].layers;
+    if (!pass->err && outputs > MAX_LAYERS)
+        pass->err = fail(pass->ctx, SSG_E_VALUE, "a stacked draw has more than 8 outputs");
+    if (pass->err)
+        return pass->err;
+    GLuint depth = 0, prog = pass->program;
+    GLuint fbo = make_layer_target(stacks[0].image->width, stacks[0].image->height, &depth);
+    GLint layer_at = glGetUniformLocation(prog, "ssg_layer");
+    const float far = 1.0f;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, stacks[0].image->width, stacks[0].image->height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glUseProgram(prog);
+    for (int i = 0; i < draws && !pass->err; i++) {
+        attach_stacks(fbo, stacks, count, i);
+        if (i == 0 && glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) !=
+                          GL_FRAMEBUFFER_COMPLETE)
+            pass->err = fail(pass->ctx, SSG_E_BACKEND, "the GL framebuffer of a stacked "
+                                                       "draw is incomplete");
+        for (int k = 0, o = 0; k < count; k++)
+            for (int l = 0; l < stacks[k].layers; l++, o++)
+                glClearNamedFramebufferfv(fbo, GL_COLOR, o, &stacks[k].clear);
+        glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
+        if (layer_at >= 0)
+            glProgramUniform1i(prog, layer_at, i);
+        draw_meshes(s, prog);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &depth);
+    enum ssg_err e = gl_status(pass->ctx, "drawing the scene's stacked layers");
+    return pass->err ? pass->err : (pass->err = e);
+}
+
 void ssg_gl_scene_free(struct ssg_gl_scene **scene)
 {
     struct ssg_gl_scene *s = scene ? *scene : NULL;

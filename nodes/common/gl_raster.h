@@ -100,6 +100,21 @@ enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass,
                                       const struct ssg_gl_scene *scene,
                                       struct ssg_image *target, float clear);
 
+/* One image of a stacked draw: draw i writes its layers [i layers, (i + 1) layers). */
+struct ssg_gl_stack {
+    struct ssg_image *image;
+    int layers;  /* layers a draw writes */
+    float clear; /* their value where no fragment lands */
+};
+
+/* ssg_gl_scene_draw_layers for several images at once (lightmaps: depth, normal and flux
+ * of each face): `draws` draws, draw i with `uniform int ssg_layer` = i writing layers
+ * [i layers_k, (i + 1) layers_k) of stacks[k] to the fragment outputs in order (the first
+ * stack's at location 0, ...), at most 8 outputs; every image has the first one's width
+ * and height. Depth test LESS, no culling, as ssg_gl_scene_draw_layers. */
+enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+                                      const struct ssg_gl_stack *stacks, int count, int draws);
+
 void ssg_gl_scene_free(struct ssg_gl_scene **scene);
 
 #endif

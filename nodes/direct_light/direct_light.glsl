@@ -1,0 +1,220 @@
+// direct_light.glsl - `direct_light` on GL (direct_light_gl.c): per pixel, the scene's
+// lights in order, each as direct_light_cpu.c's add_light: the G-buffer's irradiance
+// (nodes/common/direct.h), the normal offset, the receiver plane, the PCF disc of bilinear
+// taps turned by interleaved gradient noise, the PCSS blocker search; the faces, lights
+// and taps are the CPU's bytes (storage buffers).
+uniform sampler2DArray position, normal, albedo, maps;
+layout(r32f) uniform writeonly image2DArray dst, dst_visibility;
+struct Face { int light; int ortho; float origin[3]; float u[3]; float v[3]; float axis[3];
+              float half_side; };
+struct Light { float pos[3]; float dir[3]; float color[3]; float intensity; int point;
+               int face; float texel; float spread; };
+layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
+layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
+layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
+uniform int lights, res, samples;
+uniform float filter_radius, offset, normal_offset, tap_slope;
+uniform float rot[9];
+uniform vec3 eye;
+const float MAX_RADIUS = 24.0, MAX_SLOPE = 10.0, EMPTY = 1.0e30, TINY = 1e-30;
+const int EARLY = 4; // direct_light_cpu.c's
+
+vec3 fu(int f) { return vec3(face[f].u[0], face[f].u[1], face[f].u[2]); }
+vec3 fv(int f) { return vec3(face[f].v[0], face[f].v[1], face[f].v[2]); }
+vec3 fa(int f) { return vec3(face[f].axis[0], face[f].axis[1], face[f].axis[2]); }
+vec3 fo(int f) { return vec3(face[f].origin[0], face[f].origin[1], face[f].origin[2]); }
+
+int cube_face(vec3 d) // ssg_lightmap_cube_face
+{
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z)
+        return d.x >= 0.0 ? 0 : 1;
+    if (a.y >= a.z)
+        return d.y >= 0.0 ? 2 : 3;
+    return d.z >= 0.0 ? 4 : 5;
+}
+
+float cube_depth(int first, int f, int x, int y) // direct_light_cpu.c
+{
+    if (x >= 0 && y >= 0 && x < res && y < res)
+        return texelFetch(maps, ivec3(x, y, first + f), 0).r;
+    float a = 2.0 * (float(x) + 0.5) / float(res) - 1.0;
+    float b = 2.0 * (float(y) + 0.5) / float(res) - 1.0;
+    vec3 d = fa(first + f) + a * fu(first + f) + b * fv(first + f);
+    int g = first + cube_face(d);
+    float z = dot(d, fa(g));
+    int gx = clamp(int(floor((dot(d, fu(g)) / z + 1.0) * 0.5 * float(res))), 0, res - 1);
+    int gy = clamp(int(floor((dot(d, fv(g)) / z + 1.0) * 0.5 * float(res))), 0, res - 1);
+    return texelFetch(maps, ivec3(gx, gy, g), 0).r / z;
+}
+
+struct Lookup { int l; int f; float x, y, r, z, texel, bias, gx, gy, nq; vec3 n; };
+
+float occluder(Lookup k, int x, int y)
+{
+    if (light[k.l].point != 0)
+        return cube_depth(light[k.l].face, k.f, x, y);
+    if (x < 0 || y < 0 || x >= res || y >= res)
+        return EMPTY;
+    return texelFetch(maps, ivec3(x, y, light[k.l].face), 0).r;
+}
+
+float tap_limit(Lookup k, float x, float y)
+{
+    float dx = x - k.x, dy = y - k.y;
+    float m = k.texel * MAX_SLOPE * (abs(dx) + abs(dy) + 1.0), t;
+    if (light[k.l].point == 0) {
+        t = k.r + k.gx * dx + k.gy * dy;
+    } else {
+        int f = light[k.l].face + k.f;
+        float a = 2.0 * x / float(res) - 1.0, b = 2.0 * y / float(res) - 1.0;
+        vec3 d = fa(f) + a * fu(f) + b * fv(f);
+        float len = length(d), nd = dot(k.n, d) / len;
+        t = nd < 0.0 ? k.nq / nd : k.r + m;
+        t = clamp(t, k.r - m, k.r + m);
+        return (t - (k.bias + k.texel * tap_slope * sqrt(dx * dx + dy * dy))) / len;
+    }
+    t = clamp(t, k.r - m, k.r + m);
+    return t - k.bias - k.texel * tap_slope * sqrt(dx * dx + dy * dy);
+}
+
+float bilinear_test(Lookup k, float x, float y)
+{
+    float fx = x - 0.5, fy = y - 0.5, x0 = floor(fx), y0 = floor(fy);
+    float wx = fx - x0, wy = fy - y0, limit = tap_limit(k, x, y);
+    int ix = int(x0), iy = int(y0);
+    float t00 = limit <= occluder(k, ix, iy) ? 1.0 : 0.0;
+    float t10 = limit <= occluder(k, ix + 1, iy) ? 1.0 : 0.0;
+    float t01 = limit <= occluder(k, ix, iy + 1) ? 1.0 : 0.0;
+    float t11 = limit <= occluder(k, ix + 1, iy + 1) ? 1.0 : 0.0;
+    return (1.0 - wy) * ((1.0 - wx) * t00 + wx * t10) + wy * ((1.0 - wx) * t01 + wx * t11);
+}
+
+vec2 tap(int s, float cs, float sn)
+{
+    return vec2(cs * taps[2 * s] - sn * taps[2 * s + 1], sn * taps[2 * s] + cs * taps[2 * s + 1]);
+}
+
+float pcf_radius(Lookup k, float cs, float sn)
+{
+    float spread = light[k.l].spread;
+    if (!(spread > 0.0))
+        return filter_radius;
+    bool point = light[k.l].point != 0;
+    float search = point ? spread / k.texel : k.r * spread / k.texel;
+    search = min(max(search, filter_radius), MAX_RADIUS);
+    float sum = 0.0;
+    int n = 0;
+    for (int s = 0; s < samples; s++) {
+        vec2 o = tap(s, cs, sn);
+        float x = k.x + search * o.x, y = k.y + search * o.y;
+        float d = occluder(k, int(floor(x)), int(floor(y)));
+        if (d < tap_limit(k, x, y)) {
+            sum += d;
+            n++;
+        }
+    }
+    if (n == 0)
+        return -1.0;
+    float blocker = sum / float(n);
+    float penumbra = point ? spread * (k.z - blocker) / blocker : spread * (k.z - blocker);
+    return min(filter_radius + 0.5 * penumbra / k.texel, MAX_RADIUS);
+}
+
+Lookup locate(int li, vec3 p, vec3 n, vec3 l)
+{
+    Lookup k;
+    k.l = li;
+    float cosine = dot(n, l), sine = sqrt(max(1.0 - cosine * cosine, 0.0)), dist = 1.0;
+    vec3 lp = vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]);
+    bool point = light[li].point != 0;
+    if (point)
+        dist = length(p - lp);
+    k.texel = light[li].texel * dist;
+    vec3 q = p + normal_offset * k.texel * sine * n;
+    k.f = point ? cube_face(q - lp) : 0;
+    k.r = length(q - lp);
+    int f = light[li].face + k.f;
+    vec3 d = q - fo(f);
+    float z = dot(d, fa(f)), scale = face[f].ortho != 0 ? 1.0 / face[f].half_side : 1.0 / z;
+    k.x = (dot(d, fu(f)) * scale + 1.0) * 0.5 * float(res);
+    k.y = (dot(d, fv(f)) * scale + 1.0) * 0.5 * float(res);
+    if (!point)
+        k.r = z;
+    k.z = z;
+    k.bias = offset * k.texel;
+    k.gx = k.texel * dot(n, fu(f)) / cosine;
+    k.gy = k.texel * dot(n, fv(f)) / cosine;
+    k.n = n;
+    k.nq = dot(n, q - lp);
+    return k;
+}
+
+float visibility(int li, ivec2 pix, vec3 p, vec3 n, vec3 l)
+{
+    Lookup k = locate(li, p, n, l);
+    float f = 0.06711056 * float(pix.x) + 0.00583715 * float(pix.y);
+    f = 52.9829189 * (f - floor(f));
+    float turn = (f - floor(f)) + 0.618034 * float(li);
+    float angle = 2.0 * SSG_PI * (turn - floor(turn)), cs = cos(angle), sn = sin(angle);
+    float radius = pcf_radius(k, cs, sn);
+    if (radius < 0.0)
+        return 1.0;
+    // the outermost EARLY taps first; all agreeing: wholly lit or shadowed (the CPU's)
+    int early = samples >= 2 * EARLY ? EARLY : 0;
+    float sum = 0.0;
+    for (int i = 0; i < samples; i++) {
+        vec2 o = tap(samples - 1 - i, cs, sn);
+        sum += bilinear_test(k, k.x + radius * o.x, k.y + radius * o.y);
+        if (i + 1 == early && (sum == 0.0 || sum == float(early)))
+            return sum / float(early);
+    }
+    return sum / float(samples);
+}
+
+// nodes/common/direct.h: the G-buffer's irradiance, E without the colour, and L.
+float irradiance(int li, vec3 p, vec3 n, out vec3 l)
+{
+    if (light[li].point == 0) {
+        l = -vec3(light[li].dir[0], light[li].dir[1], light[li].dir[2]);
+        precise float ndl = dot(n, l);
+        return light[li].intensity * max(ndl, 0.0);
+    }
+    precise vec3 d = vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]) - p;
+    precise float inv = 1.0 / sqrt(d.x * d.x + d.y * d.y + d.z * d.z + TINY);
+    l = d * inv;
+    precise float ndl = n.x * l.x + n.y * l.y + n.z * l.z;
+    return light[li].intensity * max(ndl, 0.0) * inv * inv;
+}
+
+float luminance(vec3 e) { return 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b; }
+
+void main()
+{
+    ivec2 pix = ssg_pixel();
+    if (ssg_outside(pix))
+        return;
+    vec3 v = ssg_load3(position, pix), m = ssg_load3(normal, pix);
+    precise vec3 p = eye + vec3(rot[0] * v.x + rot[3] * v.y + rot[6] * v.z,
+                                rot[1] * v.x + rot[4] * v.y + rot[7] * v.z,
+                                rot[2] * v.x + rot[5] * v.y + rot[8] * v.z);
+    precise vec3 n = vec3(rot[0] * m.x + rot[3] * m.y + rot[6] * m.z,
+                          rot[1] * m.x + rot[4] * m.y + rot[7] * m.z,
+                          rot[2] * m.x + rot[5] * m.y + rot[8] * m.z);
+    vec3 sum = vec3(0.0);
+    float lum_lit = 0.0, lum_all = 0.0;
+    for (int li = 0; li < lights; li++) {
+        vec3 l;
+        float e = irradiance(li, p, n, l);
+        if (!(e > 0.0))
+            continue;
+        float lit = visibility(li, pix, p, n, l) * e;
+        vec3 c = vec3(light[li].color[0], light[li].color[1], light[li].color[2]);
+        sum += lit * c;
+        lum_lit += lit * luminance(c);
+        lum_all += e * luminance(c);
+    }
+    bool bg = m.x == 0.0 && m.y == 0.0 && m.z == 0.0;
+    SSG_STORE3(dst, pix, bg ? vec3(0.0) : ssg_load3(albedo, pix) * 0.318309886183790671 * sum);
+    SSG_STORE1(dst_visibility, pix, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
+}

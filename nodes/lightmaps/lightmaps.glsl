@@ -1,0 +1,124 @@
+// lightmaps.glsl - `lightmaps` on GL (lightmaps_gl.c): the scene drawn once per face with
+// that face's projection (orthographic, or a 90 degree perspective along the cube axis,
+// GL clipping at the CPU's near plane); the nearest fragment of each texel intersects the
+// texel centre's ray with its own triangle (read from the scene's buffers, gl_raster.h)
+// and writes lightmaps_cpu.c's depth, normal (turned to the light) and flux.
+struct Mesh { int positions; int normals; int uvs; int indices; int material; };
+struct Material { float albedo[3]; float specular[3]; float shininess; int texels; int width;
+                  int height; };
+layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
+layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
+layout(std430, binding = 2) readonly buffer Texels { float texel[]; };
+layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
+layout(std430, binding = 4) readonly buffer Materials { Material scene_material[]; };
+// Per face (lightmaps_gl.c): origin, u, v, axis, half, ortho, flux rgb, has a light, 2 unused.
+layout(std430, binding = 5) readonly buffer Faces { float face[]; };
+const int FACE = 20;
+uniform int ssg_layer, ssg_mesh, res;
+uniform float near_z, far_z;
+
+vec3 face3(int k) { int o = FACE * ssg_layer + k; return vec3(face[o], face[o + 1], face[o + 2]); }
+
+#ifdef SSG_VERTEX
+layout(location = 0) in vec3 ssg_position;
+
+void main()
+{
+    vec3 d = ssg_position - face3(0);
+    float du = dot(d, face3(3)), dv = dot(d, face3(6)), z = dot(d, face3(9));
+    float half_side = face[FACE * ssg_layer + 12];
+    if (face[FACE * ssg_layer + 17] == 0.0)
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // the empty face of a scene without lights
+    else if (face[FACE * ssg_layer + 13] != 0.0)
+        gl_Position = vec4(du / half_side, dv / half_side, z / half_side - 1.0, 1.0);
+    else
+        gl_Position = vec4(du, dv, (z * (far_z + near_z) - 2.0 * far_z * near_z) /
+                                       (far_z - near_z), z);
+}
+#endif
+
+#ifdef SSG_FRAGMENT
+layout(location = 0) out float out_depth;
+layout(location = 1) out float out_nx;
+layout(location = 2) out float out_ny;
+layout(location = 3) out float out_nz;
+layout(location = 4) out float out_r;
+layout(location = 5) out float out_g;
+layout(location = 6) out float out_b;
+
+vec3 fetch3(int base, uint vertex)
+{
+    int o = base + 3 * int(vertex);
+    return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
+}
+
+vec2 fetch2(int base, uint vertex)
+{
+    int o = base + 2 * int(vertex);
+    return vec2(vdata[o], vdata[o + 1]);
+}
+
+int wrap(int i, int n)
+{
+    int r = abs(i) % n;
+    return i < 0 && r != 0 ? n - r : r;
+}
+
+vec3 texel3(Material m, int x, int y)
+{
+    int o = m.texels + 3 * (y * m.width + x);
+    return vec3(texel[o], texel[o + 1], texel[o + 2]);
+}
+
+// nodes/common/surface.c's sample_texture (gbuffer.glsl's copy)
+vec3 sample_texture(Material m, vec2 uv)
+{
+    float fx = uv.x * float(m.width) - 0.5, fy = uv.y * float(m.height) - 0.5;
+    float x0f = floor(fx), y0f = floor(fy), ax = fx - x0f, ay = fy - y0f;
+    int x0 = wrap(int(x0f), m.width), y0 = wrap(int(y0f), m.height);
+    int x1 = x0 + 1 < m.width ? x0 + 1 : 0, y1 = y0 + 1 < m.height ? y0 + 1 : 0;
+    vec3 a = texel3(m, x0, y0), b = texel3(m, x1, y0);
+    vec3 c = texel3(m, x0, y1), d = texel3(m, x1, y1);
+    return (1.0 - ay) * ((1.0 - ax) * a + ax * b) + ay * ((1.0 - ax) * c + ax * d);
+}
+
+void main()
+{
+    int x = int(gl_FragCoord.x), y = int(gl_FragCoord.y), f = FACE * ssg_layer;
+    float a = 2.0 * (float(x) + 0.5) / float(res) - 1.0;
+    float b = 2.0 * (float(y) + 0.5) / float(res) - 1.0;
+    bool ortho = face[f + 13] != 0.0;
+    vec3 u = face3(3), v = face3(6), axis = face3(9), o = face3(0), d = axis;
+    if (ortho)
+        o += face[f + 12] * (a * u + b * v);
+    else
+        d += a * u + b * v;
+    Mesh m = scene_mesh[ssg_mesh];
+    uint i0 = vindex[m.indices + 3 * gl_PrimitiveID], i1 = vindex[m.indices + 3 * gl_PrimitiveID + 1];
+    uint i2 = vindex[m.indices + 3 * gl_PrimitiveID + 2];
+    vec3 p0 = fetch3(m.positions, i0), e1 = fetch3(m.positions, i1) - p0;
+    vec3 e2 = fetch3(m.positions, i2) - p0, s = o - p0;
+    vec3 pv = cross(d, e2), qv = cross(s, e1);
+    float det = dot(e1, pv), inv = det != 0.0 ? 1.0 / det : 0.0;
+    float t = dot(e2, qv) * inv;
+    float bu = clamp(dot(s, pv) * inv, 0.0, 1.0);
+    float bv = clamp(dot(d, qv) * inv, 0.0, 1.0 - bu);
+    float w0 = 1.0 - bu - bv;
+    vec3 n = w0 * fetch3(m.normals, i0) + bu * fetch3(m.normals, i1) + bv * fetch3(m.normals, i2);
+    if (!(length(n) > 0.0))
+        n = cross(e1, e2);
+    n = normalize(n) * (dot(n, d) > 0.0 ? -1.0 : 1.0);
+    Material mat = scene_material[m.material];
+    vec3 albedo = vec3(mat.albedo[0], mat.albedo[1], mat.albedo[2]);
+    if (m.uvs >= 0 && mat.texels >= 0) {
+        vec2 uv = w0 * fetch2(m.uvs, i0) + bu * fetch2(m.uvs, i1) + bv * fetch2(m.uvs, i2);
+        albedo *= sample_texture(mat, uv);
+    }
+    float q = 1.0 + a * a + b * b, side = 2.0 / float(res);
+    float omega = ortho ? 1.0 : side * side / (q * sqrt(q));
+    vec3 flux = albedo * face3(14) * omega;
+    out_depth = t;
+    out_nx = n.x, out_ny = n.y, out_nz = n.z;
+    out_r = flux.r, out_g = flux.g, out_b = flux.b;
+}
+#endif
