@@ -12,7 +12,9 @@
  * Pixels whose ray passes within 0.2 % of an edge of the box or of a plane are left out
  * (a pixel centre on an edge belongs to either side). Expected depths hold to 1e-5
  * relative (float rounding of t). Also: an unbound `back` (NULL, as the executor leaves it
- * when nothing reads it) leaves every other output bit-identical.
+ * when nothing reads it) leaves every other output bit-identical, and a graph run binds
+ * `back` only when a node reads it: its peak of pooled images is one scalar image larger
+ * then (node.h's on_demand).
  *
  * Parity on the example scenes at 160 x 120: a pixel agrees when both backends give 0,
  * both +inf, or finite values within 2e-5 relative (measured worst on llvmpipe: 4.5e-6 on
@@ -217,6 +219,44 @@ static void unbound_changes_nothing(void)
     ssg_scene_destroy(&s);
 }
 
+/* Peak pooled bytes of a graph writing gbuffer's depth, and its back when read_back. */
+static size_t peak_bytes(int read_back)
+{
+    char path[1100], out[1100]; /* scene_node_path's buffer is reused by each call */
+    snprintf(path, sizeof path, "%s", scene_node_path(read_back ? "reads_back.graph"
+                                                                : "no_back.graph"));
+    snprintf(out, sizeof out, "%s", scene_node_path("peak"));
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    fprintf(f, "scene \"%s/examples/cornell.scene\"\nsize 64 48\ng = gbuffer()\n"
+            "out = write(g.depth, \"d\", png=0%s)\n", getenv("PWD") ? getenv("PWD") : ".",
+            read_back ? ", back=g.back" : "");
+    fclose(f);
+    struct ssg_run_stats stats = {0};
+    struct ssg_overrides ov = {.seed = -1};
+    struct ssg_run_options opt = {.out_dir = out, .stats = &stats};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(path, &ov, &g, &d);
+    if (!e)
+        e = ssg_graph_run(g, &opt, &d);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+    CHECK_EQ(e, SSG_OK);
+    size_t peak = stats.peak_pool_bytes;
+    ssg_run_stats_free(&stats);
+    return peak;
+}
+
+static void bound_only_when_read(void)
+{
+    size_t without = peak_bytes(0), with = peak_bytes(1);
+    fprintf(stderr, "peak pooled images: %zu bytes without a reader of back, %zu with\n",
+            without, with);
+    CHECK_EQ(with - without, 64 * 48 * sizeof(float));
+}
+
 /* 1 when the backends agree on pixel i's second layer (see the file comment). */
 static int agree(float cpu, float gl)
 {
@@ -270,6 +310,7 @@ int main(void)
              "plane(material=m, center=[0, 0, -4], normal=[0, 0, 1], size=[4, 0, 4])\n",
              two_planes);
     unbound_changes_nothing();
+    bound_only_when_read();
     parity("examples/thin_panel.scene", 0.001);
     parity("examples/table.scene", 0.001);
     parity("examples/cornell.scene", 0.001);
