@@ -6,7 +6,8 @@
  * direction (D, M, the screen step, the coefficients of the sample formulas), then per
  * step two straight loops over the chunk: one places the samples of both sides and
  * computes their pixel indices, one reads the depth there (the only gather) and updates
- * both horizons. A last loop per slice turns the horizons into the slice's terms. Every
+ * both horizons (with the back input also each side's bottom, horizon_back, from a second
+ * padded plane at the same index). A last loop per slice turns them into its terms. Every
  * loop vectorises (SSE4, AVX2 or AVX-512 through run-time selected clones): selects, no
  * branches, and no libm call but sqrtf (-fno-math-errno) and floorf / nearbyintf.
  *
