@@ -156,6 +156,10 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
             struct ssg_node_cost cost;
             ssg_node_cost_of(n->desc, &ctx, r->consts[p] ? r->consts[p] : n->params,
                              n->extra_count, &cost);
+            for (int k = 0; k < n->desc->output_count; k++) /* unread on_demand: unwritten */
+                if (!n->out_img[k])
+                    cost.bytes -= (double)n->out_shape[k].width * n->out_shape[k].height *
+                                  n->out_shape[k].channels * sizeof(float);
             r->prof.rows[p].bytes = cost.bytes;
             r->prof.rows[p].flops = cost.flops;
         }
