@@ -116,6 +116,8 @@ static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
     if (backend == SSG_BACKEND_GL) {
         double ms = 0;
         for (int i = 0; i < desc->output_count; i++) {
+            if (!out[i])
+                continue; /* an on-demand output left unbound */
             if (!e)
                 e = ssg_gl_to_cpu(out[i], &ms, &d);
             ssg_gl_image_free(out[i]);

@@ -1,7 +1,9 @@
 /* test_gl_gtao.c - CPU/GL parity of `gtao` (gl_parity.h) on G-buffers ray-cast from planes
  * (planes.h): both outputs, with and without the rotation tile and the depth input, hard
  * and faded falloff, thickness, power, max_screen_radius, odd slice counts, non-unit
- * normals, background pixels and a subsampled frame.
+ * normals, background pixels, a subsampled frame and the back input (a made-up second
+ * layer: finite thicknesses of 2 to 20 % of the depth in most 8 x 8 blocks, +inf in
+ * every third).
  *
  * Where differences come from: the shader does the CPU's operations in its order without
  * fused multiply-adds (`precise`) and reads the per-column basis, slice table and falloff
@@ -14,6 +16,23 @@
 #include "planes.h"
 #include "gl_parity.h" /* after planes.h: its G-buffer helpers */
 
+static struct ssg_image *back_layer; /* the back input of the cases that ask for 'b' */
+
+/* A second layer for g: depth times 1.02 to 1.2 by column, +inf in every third 8 x 8
+   block, 0 on background (gbuffer's conventions). */
+static struct ssg_image *make_back(const struct gbuf *g, int w, int h)
+{
+    struct ssg_image *b = ssg_image_create(w, h, 1);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * (size_t)w + (size_t)x;
+            float d = g->depth->data[i];
+            float thick = d * (1.02f + 0.18f * (float)(x % 7) / 6.0f);
+            b->data[i] = d > 0.0f ? ((x / 8 + y / 8) % 3 == 0 ? INFINITY : thick) : 0.0f;
+        }
+    return b;
+}
+
 static void run_case(const struct parity_inputs *in, const char *label, const char *opt,
                      const char *const *sets, int set_count, const struct ssg_frame *f,
                      struct parity_tol tol)
@@ -23,9 +42,10 @@ static void run_case(const struct parity_inputs *in, const char *label, const ch
         {0, "normal", strchr(opt, '2') ? in->nrm2 : in->g.nrm},
         {'r', "rotation", in->rot},
         {'d', "depth", in->g.depth},
+        {'b', "back", back_layer},
     };
-    struct ssg_binding b[4];
-    int n = parity_bind(t, 4, opt, b);
+    struct ssg_binding b[5];
+    int n = parity_bind(t, 5, opt, b);
     parity_node(label, "gtao", b, n, sets, set_count, f, tol);
     parity_check_darkens("gtao", &in->g, b, n, sets, set_count, f);
 }
@@ -49,6 +69,8 @@ static void cases(const struct parity_inputs *in, struct parity_tol tol)
     run_case(in, "5 thick power r2", "r2", thick, 4, NULL, tol);
     const char *cap[] = {"slices=8", "steps=12", "radius=2", "max_screen_radius=20"};
     run_case(in, "8x12 cap r", "r", cap, 4, NULL, tol);
+    run_case(in, "default back rdb", "rdb", def, 1, NULL, tol);
+    run_case(in, "3x6 falloff back db", "db", fall, 4, NULL, tol);
 }
 
 int main(void)
@@ -59,11 +81,15 @@ int main(void)
     const struct parity_tol tol = {.border = 0, .max_abs = 2e-4, .mean_abs = 4e-5};
     struct parity_inputs in;
     load_inputs(&in, corner_scene);
+    back_layer = make_back(&in.g, W, H);
     cases(&in, tol);
+    ssg_image_destroy(&back_layer);
     parity_inputs_free(&in);
 
     load_inputs(&in, parity_sky_scene);
+    back_layer = make_back(&in.g, W, H);
     cases(&in, tol);
+    ssg_image_destroy(&back_layer);
     struct ssg_frame big = parity_subsampled_frame();
     const char *def[] = {"radius=1.5"};
     run_case(&in, "default subsampled", "rd", def, 1, &big, tol);

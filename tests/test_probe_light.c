@@ -29,13 +29,14 @@ enum { W = 96, H = 72 };
 static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0};
 
 struct gbuf {
-    struct ssg_image *out[6]; /* gbuffer's outputs in port order */
+    struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* gbuffer's outputs in port order (back:
+                                                   NULL, not read) */
     float rot[9], eye[3];     /* view -> world */
 };
 
 static struct gbuf gbuffer(const struct ssg_scene *s)
 {
-    struct gbuf g;
+    struct gbuf g = {0};
     for (int i = 0; i < 6; i++)
         g.out[i] = ssg_image_create(W, H, i == SSG_GBUFFER_OUT_DEPTH ? 1 : 3);
     void *params = node_params(&ssg_node_gbuffer, NULL, 0);

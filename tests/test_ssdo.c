@@ -26,6 +26,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "gbuffer/gbuffer.h"
 #include "graph/exec.h"
 #include "graph/node.h"
 #include "scene/scene.h"
@@ -395,7 +396,7 @@ static void light_run(double lz, double m[2])
     struct ssg_node_ctx ctx = {.desc = &ssg_node_gbuffer, .instance = "s", .frame = &fr,
                                .scene = sc, .out_dir = ".", .diags = &d};
     static const int gch[6] = {3, 3, 1, 3, 3, 3};
-    struct ssg_image *gb[6],
+    struct ssg_image *gb[SSG_GBUFFER_OUTPUTS] = {0}, /* back: NULL, not read */
         *out[2] = {ssg_image_create(SW, SH, 1), ssg_image_create(SW, SH, 3)};
     for (int i = 0; i < 6; i++)
         gb[i] = ssg_image_create(SW, SH, gch[i]);

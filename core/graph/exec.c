@@ -121,7 +121,8 @@ static enum ssg_err run_backend(const struct ssg_node_desc *desc,
         t->gpu_ms = ssg_gl_timer_end();
     }
     for (int i = 0; i < desc->output_count; i++)
-        ssg_gl_mark_written(io->out[i], on_gl);
+        if (io->out[i]) /* an on_demand output nothing reads is not bound */
+            ssg_gl_mark_written(io->out[i], on_gl);
     return e;
 }
 
@@ -248,7 +249,8 @@ enum ssg_err ssg_node_verify_io(const struct ssg_node_ctx *ctx, const struct ssg
             e = verify_type(ctx, &d->inputs[i], &ctx->in_shape[i]);
     }
     for (int i = 0; i < d->output_count && !e; i++)
-        e = verify_one(ctx, "output", d->outputs[i].name, io->out[i], &ctx->out_shape[i]);
+        if (io->out[i] || !d->outputs[i].on_demand) /* unread on_demand: may be unbound */
+            e = verify_one(ctx, "output", d->outputs[i].name, io->out[i], &ctx->out_shape[i]);
     for (int i = 0; i < io->extra_count && !e; i++)
         e = verify_one(ctx, "input", io->extra_names[i], io->extra_in[i], &ctx->extra_shape[i]);
     return e;

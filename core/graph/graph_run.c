@@ -46,6 +46,8 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
         /* a requested output (ssg_overrides.outputs) is kept to the end of the run, so the
            last frame's can be handed out: the frame before's goes back to the pool here */
         release_output(r, n, k);
+        if (n->desc->outputs[k].on_demand && n->last_reader[k] < 0)
+            continue; /* nothing reads it: the node skips its work (node.h) */
         n->out_img[k] = ssg_pool_acquire(r->pool, s->width, s->height, s->channels);
         if (!n->out_img[k]) {
             ssg_diag_at(r->diags, SSG_E_NOMEM, n->loc, "out of memory for output '%s' of "
@@ -154,6 +156,10 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
             struct ssg_node_cost cost;
             ssg_node_cost_of(n->desc, &ctx, r->consts[p] ? r->consts[p] : n->params,
                              n->extra_count, &cost);
+            for (int k = 0; k < n->desc->output_count; k++) /* unread on_demand: unwritten */
+                if (!n->out_img[k])
+                    cost.bytes -= (double)n->out_shape[k].width * n->out_shape[k].height *
+                                  n->out_shape[k].channels * sizeof(float);
             r->prof.rows[p].bytes = cost.bytes;
             r->prof.rows[p].flops = cost.flops;
         }

@@ -83,6 +83,9 @@ struct ssg_port_desc {
     int lit;             /* output only: 1 = light of the scene's lights or environment,
                             all black without them (reading it from a scene that has
                             neither is an error at load) */
+    int on_demand;       /* output only: 1 = costs extra work that the node skips when
+                            nobody reads it: a graph run then binds no image (io->out[i]
+                            NULL), and the node must check before writing it */
 };
 
 /* Shape of an image flowing along an edge. */
@@ -140,7 +143,8 @@ void ssg_scratch_free(struct ssg_scratch *s);
 void ssg_metric_report(const struct ssg_node_ctx *ctx, const char *name, double value);
 
 /* The images of one run: inputs in port order (NULL = unconnected optional), outputs in
- * port order (allocated by the executor to the shape check() gave), then extra inputs. */
+ * port order (allocated by the executor to the shape check() gave; NULL for an on_demand
+ * output nothing reads), then extra inputs. */
 struct ssg_io {
     const struct ssg_image *const *in;
     struct ssg_image *const *out;

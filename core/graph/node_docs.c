@@ -135,7 +135,9 @@ static void markdown_ports(const char *title, const struct ssg_port_desc *ports,
         ssg_type_names(ports[i].types, types, sizeof types);
         fprintf(stream, "| `%s` | %s | %s%s |\n", ports[i].name,
                 ports[i].same_as ? ports[i].same_as : types, ports[i].doc,
-                ports[i].optional ? " (optional)" : "");
+                ports[i].optional    ? " (optional)"
+                : ports[i].on_demand ? " (computed only when read)"
+                                     : "");
     }
     fprintf(stream, "\n");
 }

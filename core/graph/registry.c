@@ -116,7 +116,9 @@ static void describe_ports(const char *title, const struct ssg_port_desc *ports,
         if (ports[i].same_as)
             snprintf(types, sizeof types, "same as %s", ports[i].same_as);
         fprintf(stream, "  %-16s %-22s %s%s\n", ports[i].name, types, ports[i].doc,
-                is_input && ports[i].optional ? " (optional)" : "");
+                is_input && ports[i].optional     ? " (optional)"
+                : !is_input && ports[i].on_demand ? " (computed only when read)"
+                                                  : "");
     }
 }
 

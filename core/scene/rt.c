@@ -140,20 +140,22 @@ void ssg_rt_intersect(const struct ssg_rt *rt, const float org[3], const float d
     set_hit(hit, rh.ray.tfar, rh.hit.u, rh.hit.v, rh.hit.geomID, rh.hit.primID);
 }
 
-/* Copies rays [first, first + n) into Embree's ray-hit layout. */
-static void fill_stream(struct RTCRayHit *rh, const struct ssg_rays *r, int first, int n)
+/* Copies rays [first, first + n) into Embree's ray-hit layout; tnears NULL = r->tnear. */
+static void fill_stream(struct RTCRayHit *rh, const struct ssg_rays *r, const float *tnears,
+                        int first, int n)
 {
     for (int k = 0; k < n; k++) {
         const float org[3] = {r->ox[first + k], r->oy[first + k], r->oz[first + k]};
         const float dir[3] = {r->dx[first + k], r->dy[first + k], r->dz[first + k]};
-        rh[k].ray = make_ray(org, dir, r->tnear, r->tfar);
+        float tnear = tnears ? tnears[first + k] : r->tnear;
+        rh[k].ray = make_ray(org, dir, tnear, r->tfar);
         rh[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     }
 }
 
-void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
-                           struct ssg_hit *hits)
+void ssg_rt_intersect_rays_past(const struct ssg_rt *rt, const struct ssg_rays *rays,
+                                const float *tnears, struct ssg_hit *hits)
 {
     struct RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
@@ -161,12 +163,18 @@ void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
     struct RTCRayHit rh[STREAM];
     for (int first = 0; first < rays->count; first += STREAM) {
         int n = rays->count - first < STREAM ? rays->count - first : STREAM;
-        fill_stream(rh, rays, first, n);
+        fill_stream(rh, rays, tnears, first, n);
         rtcIntersect1M(rt->scene, &ctx, rh, (unsigned)n, sizeof rh[0]);
         for (int k = 0; k < n; k++)
             set_hit(&hits[first + k], rh[k].ray.tfar, rh[k].hit.u, rh[k].hit.v,
                     rh[k].hit.geomID, rh[k].hit.primID);
     }
+}
+
+void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
+                           struct ssg_hit *hits)
+{
+    ssg_rt_intersect_rays_past(rt, rays, NULL, hits);
 }
 
 int ssg_rt_occluded(const struct ssg_rt *rt, const float org[3], const float dir[3],

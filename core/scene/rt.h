@@ -43,6 +43,11 @@ void ssg_rt_intersect(const struct ssg_rt *rt, const float org[3], const float d
 void ssg_rt_intersect_rays(const struct ssg_rt *rt, const struct ssg_rays *rays,
                            struct ssg_hit *hits);
 
+/* ssg_rt_intersect_rays with ray i starting at tnears[i] in place of rays->tnear: rays
+ * continued past a hit they must not find again (the G-buffer's second layer). */
+void ssg_rt_intersect_rays_past(const struct ssg_rt *rt, const struct ssg_rays *rays,
+                                const float *tnears, struct ssg_hit *hits);
+
 /* 1 when anything lies on the ray within [tnear, tfar], else 0 (cheaper than a hit). */
 int ssg_rt_occluded(const struct ssg_rt *rt, const float org[3], const float dir[3],
                     float tnear, float tfar);

@@ -265,18 +265,20 @@ static void draw_meshes(const struct ssg_gl_scene *s, GLuint prog)
     glBindVertexArray(0);
 }
 
-enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *s,
-                               const char *shader, const struct ssg_gl_camera *camera,
-                               struct ssg_image *target)
+enum ssg_err ssg_gl_scene_draw_pass(struct ssg_gl_pass *pass, const struct ssg_gl_scene *s,
+                                    const struct ssg_gl_camera *camera,
+                                    struct ssg_image *target)
 {
-    GLuint prog = ssg_gl_program_get(ctx, shader, NULL, SSG_GL_RASTER), depth = 0;
-    if (!prog)
-        return SSG_E_SHADER;
+    if (pass->err)
+        return pass->err;
+    const struct ssg_node_ctx *ctx = pass->ctx;
+    GLuint prog = pass->program, depth = 0;
     if (target->channels > MAX_LAYERS)
-        return fail(ctx, SSG_E_VALUE, "a raster target has more than 8 layers");
+        return pass->err = fail(ctx, SSG_E_VALUE, "a raster target has more than 8 layers");
     GLuint fbo = make_target(target, &depth);
     if (!fbo)
-        return fail(ctx, SSG_E_BACKEND, "the GL framebuffer for the scene is incomplete");
+        return pass->err = fail(ctx, SSG_E_BACKEND, "the GL framebuffer for the scene is "
+                                                    "incomplete");
     float m[16];
     const float zero[4] = {0, 0, 0, 0}, far = 1.0f;
     world_to_clip(camera, target->width, target->height, m);
@@ -295,7 +297,16 @@ enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(1, &depth);
-    return gl_status(ctx, "drawing the scene");
+    return pass->err = gl_status(ctx, "drawing the scene");
+}
+
+enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *s,
+                               const char *shader, const struct ssg_gl_camera *camera,
+                               struct ssg_image *target)
+{
+    struct ssg_gl_pass pass;
+    ssg_gl_raster_begin(&pass, ctx, shader);
+    return ssg_gl_scene_draw_pass(&pass, s, camera, target);
 }
 
 enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,

@@ -115,6 +115,13 @@ struct ssg_gl_stack {
 enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
                                       const struct ssg_gl_stack *stacks, int count, int draws);
 
+/* ssg_gl_scene_draw with a raster pass of ssg_gl_raster_begin whose inputs and uniforms
+ * the node has set (a depth peel reads the first layer's depth): the same drawing, the
+ * same program interface. Returns the pass's (sticky) error. */
+enum ssg_err ssg_gl_scene_draw_pass(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+                                    const struct ssg_gl_camera *camera,
+                                    struct ssg_image *target);
+
 void ssg_gl_scene_free(struct ssg_gl_scene **scene);
 
 #endif

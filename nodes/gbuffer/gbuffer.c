@@ -70,6 +70,10 @@ static const struct ssg_port_desc outputs[] = {
     [SSG_GBUFFER_OUT_ENVIRONMENT] = {.name = "environment", .types = SSG_T_COLOR, .lit = 1,
      .doc = "diffuse light of the scene's environment, no occlusion: albedo / pi * "
             "irradiance, linear RGB"},
+    [SSG_GBUFFER_OUT_BACK] = {.name = "back", .types = SSG_T_SCALAR, .on_demand = 1,
+     .doc = "linear depth along -z of the next surface behind the first on the pixel's "
+            "ray (depth * (1 + 1e-4) < back <= far); +inf where there is none, 0 = "
+            "background"},
 };
 _Static_assert(SSG_COUNT(outputs) == SSG_GBUFFER_OUTPUTS, "one entry a port enumerator");
 
@@ -94,7 +98,20 @@ const struct ssg_node_desc ssg_node_gbuffer = {
            "(material albedo times texture) and `direct` = sum over lights of (albedo/pi + "
            "specular * (N.H)^shininess) * E, with E = color * intensity * max(0, N.L) / d^2 "
            "for point lights (no 1/d^2 for directional lights). Surfaces outside [near, "
-           "far] and background pixels are 0 in every output.",
+           "far] and background pixels are 0 in every output. `back` (a second depth "
+           "layer, computed only when a node reads it) continues the pixel's ray past the "
+           "first surface and gives the depth, in `depth`'s convention, of the nearest "
+           "surface beyond depth + 1e-4 depth (so the first surface and triangles at its "
+           "very depth are never found again) up to far: for a closed mesh the ray's exit "
+           "point, so back - depth is the object's thickness along the ray; for a single "
+           "sheet the next surface behind it. Where the ray meets nothing more it is +inf: "
+           "a consumer that takes [depth, back] as the space the pixel's surface fills then "
+           "gets exactly the height-field assumption (infinitely thick) of screen-space "
+           "methods without a second layer, the safe answer for the single-sided walls, "
+           "floors and terrain that have nothing behind them (0 there would make them "
+           "infinitely thin and invisible to a sector-based consumer). 0 on background. "
+           "CPU: a second Embree ray; GL: a depth peel (a raster pass discarding fragments "
+           "at or before that depth), then the ray cast at the triangle found.",
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_gbuffer_params),
     .consts_size = sizeof(struct ssg_gbuffer_consts),

@@ -3,7 +3,7 @@
 // there (a visibility buffer, nodes/common/gl_raster.h), so depth and barycentrics come from the
 // ray as on the CPU; normal, albedo, direct and environment light then follow
 // gbuffer_cpu.c operation by operation, reading the scene's buffers (gl_raster.h).
-struct Mesh { int positions; int normals; int uvs; int indices; int material; };
+#include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
 struct Material {
     float albedo[3];
     float specular[3];
@@ -12,10 +12,7 @@ struct Material {
     int width;
     int height;
 };
-layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
-layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
 layout(std430, binding = 2) readonly buffer Texels { float texel[]; };
-layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
 layout(std430, binding = 4) readonly buffer Materials { Material scene_material[]; };
 // Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind
 // (0 point, 1 directional), unused.
@@ -33,7 +30,6 @@ layout(r32f) uniform writeonly image2DArray environment;
 uniform vec3 proj;          // f, cx, cy
 uniform float inv_f;        // 1 / f rounded on the CPU, as gbuffer_cpu.c has it
 uniform float rot[9];       // world -> view, row-major
-uniform vec3 eye;           // world
 uniform int face;           // 1 = the triangle's own normal
 uniform int light_count;
 uniform int env_mode;       // 0 black, 1 constant, 2 the irradiance table
@@ -46,12 +42,6 @@ const float PI_F = 3.14159265358979323846;
 const float TWO_PI_F = 6.28318530717958647692;
 const int ENV_W = 64, ENV_H = 32;              // SSG_ENV_COARSE_W, _H
 
-vec3 fetch3(int base, uint vertex)
-{
-    int o = base + 3 * int(vertex);
-    return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
-}
-
 vec2 fetch2(int base, uint vertex)
 {
     int o = base + 2 * int(vertex);
@@ -63,17 +53,6 @@ int wrap(int i, int n)
 {
     int r = abs(i) % n;
     return i < 0 && r != 0 ? n - r : r;
-}
-
-// (t, u, v) of the ray eye + t w in the plane of the triangle (Moller and Trumbore 1997).
-// No inside test: the rasteriser put the pixel centre on this triangle, and where it
-// misses by a rounding error the plane and the barycentrics extend continuously.
-vec3 intersect(vec3 w, vec3 p0, vec3 p1, vec3 p2)
-{
-    vec3 e1 = p1 - p0, e2 = p2 - p0, s = eye - p0;
-    vec3 pv = cross(w, e2), qv = cross(s, e1);
-    float inv_det = 1.0 / dot(e1, pv);
-    return vec3(dot(e2, qv), dot(s, pv), dot(w, qv)) * inv_det;
 }
 
 vec3 texel3(Material m, int x, int y)

@@ -16,8 +16,16 @@ enum ssg_gbuffer_output {
     SSG_GBUFFER_OUT_ALBEDO,
     SSG_GBUFFER_OUT_DIRECT,
     SSG_GBUFFER_OUT_ENVIRONMENT,
+    SSG_GBUFFER_OUT_BACK, /* on demand: only computed when something reads it */
     SSG_GBUFFER_OUTPUTS
 };
+
+/* The second layer (`back`) is the nearest surface whose depth exceeds depth + depth *
+   SSG_GBUFFER_BACK_GAP (float operations in that order, on both backends): the first
+   surface, and a coplanar or edge-adjacent triangle at its depth, is never found again.
+   1e-4 is 1000 times the float rounding of a depth and of the GL rasteriser's
+   interpolated depth, and thinner than any modelled wall (0.1 mm at 1 m). */
+#define SSG_GBUFFER_BACK_GAP 1e-4f
 
 enum ssg_gbuffer_normals {
     SSG_GBUFFER_NORMALS_SMOOTH, /* interpolated vertex normals */

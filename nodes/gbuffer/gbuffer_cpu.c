@@ -31,6 +31,7 @@ struct job {
     const struct ssg_gbuffer_consts *c;
     const struct ssg_scene *scene;
     float *pos[3], *nrm[3], *depth, *alb[3], *dir[3], *env[3]; /* output planes */
+    float *back;                  /* the second layer's plane; NULL = nobody reads it */
     int w, h;
 };
 
@@ -53,6 +54,7 @@ struct chunk {
     float lx[CHUNK], ly[CHUNK], lz[CHUNK];    /* one light: unit direction to it */
     float e[CHUNK], ndh[CHUNK], spec[CHUNK];  /* its irradiance, N.H and (N.H)^s */
     float lr[CHUNK], lg[CHUNK], lb[CHUNK];    /* direct light */
+    float tn[CHUNK], back[CHUNK];             /* second layer: where its ray starts, depth */
 };
 
 /* The rays of pixels [x0, x0 + count) of row y. */
@@ -78,6 +80,21 @@ static void trace(const struct job *j, struct chunk *k)
     struct ssg_rays rays = {k->count, k->ox, k->oy, k->oz, k->wx, k->wy, k->wz,
                             j->c->near_z, j->c->far_z};
     ssg_rt_intersect_rays(j->scene->rt, &rays, k->hits);
+}
+
+/* The second layer (gbuffer.h): each ray again, from past its first hit, to the next
+   surface; +inf where there is none, 0 on background. Runs after gather (it reuses hits). */
+static void trace_back(const struct job *j, struct chunk *k)
+{
+    for (int s = 0; s < k->count; s++)
+        k->tn[s] = k->t[s] + k->t[s] * SSG_GBUFFER_BACK_GAP;
+    struct ssg_rays rays = {k->count, k->ox, k->oy, k->oz, k->wx, k->wy, k->wz,
+                            j->c->near_z, j->c->far_z};
+    ssg_rt_intersect_rays_past(j->scene->rt, &rays, k->tn, k->hits);
+    for (int s = 0; s < k->count; s++) {
+        float next = k->hits[s].mesh >= 0 ? k->hits[s].t : INFINITY;
+        k->back[s] = k->t[s] > 0.0f ? next : 0.0f;
+    }
 }
 
 /* The scattered reads: per hit, its normal, depth and material. */
@@ -284,10 +301,14 @@ static void rows(void *user, int y0, int y1)
             make_rays(j, &k, x0, y);
             trace(j, &k);
             gather(j, &k);
+            if (j->back)
+                trace_back(j, &k);
             geometry(j, &k);
             lighting(j, &k);
             store(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
             store_environment(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
+            if (j->back)
+                store_plane(j->back + (size_t)y * (size_t)j->w + (size_t)x0, k.back, k.count);
         }
 #if defined(__SSE__)
     _mm_sfence(); /* the streaming stores are visible before the band counts as done */
@@ -309,6 +330,7 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         j.env[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_ENVIRONMENT], a);
     }
     j.depth = ssg_image_plane(out[SSG_GBUFFER_OUT_DEPTH], 0);
+    j.back = out[SSG_GBUFFER_OUT_BACK] ? out[SSG_GBUFFER_OUT_BACK]->data : NULL;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
     return SSG_OK;
 }

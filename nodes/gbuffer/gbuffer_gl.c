@@ -1,7 +1,9 @@
 /* gbuffer_gl.c - GL side of the `gbuffer` node (method in gbuffer.c): the scene is
  * rasterised into a visibility buffer (mesh and triangle per pixel, nodes/common/gl_raster.h,
  * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
- * its triangle and writes all six outputs with the CPU kernel's formulas. The scene is
+ * its triangle and writes the first layer's six outputs with the CPU kernel's formulas.
+ * When `back` is read, a depth peel (gbuffer_peel.glsl) and a second cast
+ * (gbuffer_back.glsl) give the second layer. The scene is
  * uploaded per run; the lights and the environment's irradiance table go in as they are
  * in the scene. */
 #include <stdlib.h>
@@ -76,6 +78,34 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
     return ssg_gl_pass_end(&p);
 }
 
+/* The second layer (gbuffer.c, `back`): a depth peel against the first layer's depth
+   into `ids` (its first use is over), then the ray cast at the triangle it found. */
+static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
+                         const struct ssg_gl_scene *scene, const struct ssg_gl_camera *cam,
+                         struct ssg_image *ids, const struct ssg_io *io)
+{
+    const struct ssg_image *first = io->out[SSG_GBUFFER_OUT_DEPTH];
+    struct ssg_gl_pass r;
+    ssg_gl_raster_begin(&r, ctx, "gbuffer_peel.glsl");
+    ssg_gl_input(&r, "first", first);
+    ssg_gl_float(&r, "gap", SSG_GBUFFER_BACK_GAP);
+    enum ssg_err e = ssg_gl_scene_draw_pass(&r, scene, cam, ids);
+    if (e)
+        return e;
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "gbuffer_back.glsl", NULL);
+    ssg_gl_scene_bind(scene);
+    ssg_gl_input(&p, "ids", ids);
+    ssg_gl_input(&p, "first", first);
+    ssg_gl_output(&p, "back", io->out[SSG_GBUFFER_OUT_BACK]);
+    ssg_gl_projection(&p, "proj", &c->proj);
+    ssg_gl_float(&p, "inv_f", 1.0f / c->proj.f);
+    ssg_gl_floats(&p, "rot", 9, c->rot);
+    ssg_gl_vec3(&p, "eye", c->eye);
+    ssg_gl_dispatch(&p, ids->width, ids->height);
+    return ssg_gl_pass_end(&p);
+}
+
 enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
@@ -91,6 +121,8 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
         e = ssg_gl_scene_draw(ctx, scene, "gbuffer_raster.glsl", &cam, ids);
     if (!e)
         e = shade(ctx, c, scene, ids, io);
+    if (!e && io->out[SSG_GBUFFER_OUT_BACK]) /* on demand: only when something reads it */
+        e = peel(ctx, c, scene, &cam, ids, io);
     ssg_gl_scene_free(&scene);
     ssg_gl_scratch_release(&ids);
     return e;

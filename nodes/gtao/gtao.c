@@ -51,6 +51,27 @@
  * out = clamp(ratio, 0, 1)^power; background pixels (depth 0 or no normal) get 1. Slices
  * within asin(0.1) of the tangent plane (|proj N|^2 < 0.01, near-grazing views) are
  * skipped, as in hbao.
+ * Second depth layer (ours; `back` connected, e.g. gbuffer.back, +inf = nothing behind;
+ * measured against reference_ao in /work/reports/layer2.md):
+ * a sample at pixel q stands for the solid segment of q's camera ray from its depth to
+ * its back depth, and occludes exactly the directions from P that pass through that
+ * segment: in the slice, the arc between its front point Q and its back point B (B on
+ * q's ray; the cosine B.V / |B| <= Q's since angles from V grow along a ray away from the
+ * eye), B taken no farther than where q's ray leaves the sphere of radius R about P
+ * (occluders beyond R do not count, as in reference_ao), and +inf (a single-sided wall,
+ * a floor) solid down to the hemisphere's limit, the height-field assumption. A side
+ * keeps one occluded arc, the smallest that holds the arcs of all its samples that rise
+ * above the tangent plane: from the highest front point (the horizon as before) down to
+ * the lowest bottom, so a gap under a thin occluder (the floor under a table top) stays
+ * open, while the gaps between occluders of one side are filled. Where the side's
+ * previous sample (P itself for the first) lies no more than 0.3 R behind the sample's
+ * back, the surface is taken to run on from it (a slanted face seen at a grazing angle,
+ * whose depth changes faster between samples than its thickness) and the arc reaches
+ * down to that sample. Visible = side(top) + side(lim) - side(bottom), each side's term
+ * the closed form above (and its bent-normal terms alike); a bottom at the tangent plane
+ * leaves exactly the horizon result, and back = +inf everywhere is gtao without back.
+ * The `thickness` heuristic is the guess that back replaces: the two are refused
+ * together.
  * Evaluation (both backends, gtao_cpu.c): the sample formulas are folded into per-step
  * coefficients affine in the sample's depth; acos is Abramowitz and Stegun's polynomial
  * 4.4.46 (|error| <= 2e-8), n = pi/2 - acos(sin n), and the terms in 2h - n, 3h - n,
@@ -75,6 +96,17 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                                                &in[SSG_GTAO_IN_DEPTH], NULL, why, why_len);
     if (e)
         return e;
+    const struct ssg_shape *back = &in[SSG_GTAO_IN_BACK];
+    if (back->channels != 0 && (back->channels != 1 || !ssg_shape_same_size(back, pos))) {
+        snprintf(why, why_len, "back must be a 1-channel image the size of position");
+        return SSG_E_SIZE;
+    }
+    const struct ssg_gtao_params *q = params;
+    if (back->channels != 0 && q && q->thickness > 0) {
+        snprintf(why, why_len, "thickness (a guess at how thick occluders are) and back "
+                 "(how thick they are) answer one question: give one");
+        return SSG_E_VALUE;
+    }
     /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
     out[SSG_GTAO_OUT_OUT] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     out[SSG_GTAO_OUT_BENT_NORMAL] =
@@ -104,6 +136,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     float range = q->falloff * q->radius;
     c->fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
     c->fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
+    c->link = SSG_GTAO_BACK_LINK * q->radius;
     for (int k = 0; k < q->slices; k++) {
         double a = M_PI * k / q->slices;
         c->slice_cos[k] = (float)cos(a);
@@ -145,6 +178,9 @@ static const struct ssg_port_desc inputs[] = {
      .doc = "per-pixel rotation tile (halton.rotation); none = fixed slices"},
     [SSG_GTAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
      .doc = "linear depth the points are reconstructed from; none = -position.z"},
+    [SSG_GTAO_IN_BACK] = {.name = "back", .types = SSG_T_SCALAR, .optional = 1,
+     .doc = "depth of the next surface behind each pixel's (gbuffer.back, +inf = none): "
+            "a sample occludes only between its depth and this; none = infinitely thick"},
 };
 _Static_assert(SSG_COUNT(inputs) == SSG_GTAO_INPUTS, "one entry a port enumerator");
 
@@ -182,7 +218,15 @@ const struct ssg_node_desc ssg_node_gtao = {
            "closed-form cosine-weighted integral between the two horizons, weighted by "
            "the length of the normal projected on the slice, is summed over slices and "
            "divided by the same sum with open horizons, so an open surface is exactly 1. "
-           "out = clamp(that, 0, 1)^power; background pixels are 1. bent_normal is the "
+           "out = clamp(that, 0, 1)^power; background pixels are 1. With `back` (the depth "
+           "of the next surface behind each pixel, gbuffer.back) a sample occludes only "
+           "the directions through its real thickness, between its front and its back "
+           "point (the back clipped to `radius`; +inf = solid, the height-field "
+           "assumption): a side keeps the arc from its highest front point down to the "
+           "lowest back point of the samples that rise above the tangent plane (down to "
+           "the previous sample where the surface runs on from it), and the visible part "
+           "is the rest of the side, so the floor under a thin table top sees past it "
+           "(thickness must then be 0). bent_normal is the "
            "normalised visibility-weighted mean direction (background 0). CPU and GL "
            "agree within 2e-4 on both outputs (tests/test_gl_gtao.c; both evaluate the "
            "same operations, acos as a polynomial, so only sqrt, division and pow may "

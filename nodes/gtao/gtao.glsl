@@ -10,6 +10,8 @@ layout(std430, binding = 0) readonly buffer Columns {
 #define SSG_SAMPLING_NO_KERNEL 1 // gtao marches along slices, it has no kernel
 #include "sampling.glsl" // position, depth, rotation and their helpers
 uniform sampler2DArray normal;
+uniform sampler2DArray back; // the depth of the next surface behind, when back_bound
+uniform bool back_bound;
 layout(r32f) uniform writeonly image2DArray dst;
 layout(r32f) uniform writeonly image2DArray bent;
 
@@ -22,6 +24,7 @@ uniform float p_thickness;
 uniform float p_power;
 uniform float p_max_screen_radius; // px (0 = no cap)
 uniform float fall_mul, fall_add;
+uniform float link;        // with back: prepare()'s link distance (gtao.c)
 uniform float invf;        // 1 / f
 uniform vec3 proj;         // (f, cx, cy) of this resolution
 uniform float slice_cos[32], slice_sin[32];
@@ -126,6 +129,50 @@ void horizon_one(float dq, float a, float r, float b, float e, float low, inout 
     }
 }
 
+// The back input at pixel p + o (inside: depth_at found the front there), as the CPU's
+// padded back plane has it: +inf where not a plausible depth.
+float back_at(ivec2 p, float ou, float ov)
+{
+    precise float qx = float(p.x) + ou, qy = float(p.y) + ov;
+    float d = texelFetch(back, ivec3(int(qx), int(qy), 0), 0).r;
+    return d > 0.0 && d <= 3.0e38 ? d : 1.0 / 0.0;
+}
+
+// gtao_cpu.c horizon_back: the sample occludes between its front and back points (the
+// back clipped to the sphere of radius R, down to the previous sample's front when the
+// surface runs on from it); raises the top hc, lowers the bottom bot.
+void horizon_back(float dq, float db, float a, float r, float b, float e, float low,
+                  inout float hc, inout float bot, inout float pdep, inout float pcos)
+{
+    precise float hv = dq * r + g_ldp, pv = dq * a + g_ldp, pd = dq * b;
+    precise float q = hv * hv + dq * dq * e;
+    precise float w;
+    if (p_falloff > 0.0) {
+        w = sqrt(q) * fall_mul + fall_add;
+        w = w < 0.0 ? 0.0 : w;
+        w = w < 1.0 ? w : 1.0;
+    } else {
+        w = q <= p_radius * p_radius ? 1.0 : 0.0;
+    }
+    precise float qa = r * r + e, qb = r * g_ldp, qc = g_ldp * g_ldp - p_radius * p_radius;
+    precise float disc = qb * qb - qa * qc;
+    precise float ex = (sqrt(disc > 0.0 ? disc : 0.0) - qb) / qa;
+    precise float d = db < ex ? db : ex;
+    d = d > dq ? d : dq;
+    precise float bv = d * a + g_ldp, bd = d * b;
+    precise float top = pv / sqrt(pv * pv + pd * pd), under = bv / sqrt(bv * bv + bd * bd);
+    precise float ft = low + w * (top - low), fu = low + w * (under - low);
+    fu = db < 1.0 / 0.0 ? fu : low; // none behind: solid
+    fu = pdep <= db + link && pcos < fu ? pcos : fu;
+    pdep = dq, pcos = ft;
+    if (!(w > 0.0 && ft > low + OPEN_EPS))
+        return;
+    if (fu < bot)
+        bot = fu;
+    if (ft > hc)
+        hc = ft;
+}
+
 // gtao_cpu.c horizon_fast: (hv, hq) = H'.V and |H'|^2 of the highest sample within R.
 void horizon_fast(float dq, float a, float r, float b, float e, inout float hv, inout float hq)
 {
@@ -165,6 +212,16 @@ vec3 side_arc(float hc, float low, float sg, float n, float cn, float sn)
     return r;
 }
 
+// gtao_cpu.c side_arc_back: visible = side up to the top + the arc from the bottom down.
+vec3 side_arc_back(float hc, float bot, float low, float sg, float n, float cn, float sn)
+{
+    vec3 t = side_arc(hc, low, sg, n, cn, sn);
+    vec3 u = side_arc(bot > 1.5 ? low : bot, low, sg, n, cn, sn);
+    vec3 o = side_arc(low, low, sg, n, cn, sn);
+    precise vec3 r = vec3(t.x + (o.x - u.x), t.y + (o.y - u.y), t.z + (o.z - u.z));
+    return r;
+}
+
 // gtao_cpu.c setup_slice, the steps (place_step, horizon_step) and finish_slice.
 void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
 {
@@ -182,8 +239,10 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
     precise float dxf = d.x * invf, dyf = -d.y * invf, mxf = mx * invf, myf = -my * invf;
     precise float ax = g_vxf + mxf * al, ay = g_vyf + myf * al;
     precise float bx = dxf + mxf * be, by = dyf + myf * be;
-    bool fast = p_falloff <= 0.0 && p_thickness <= 0.0;
+    bool fast = p_falloff <= 0.0 && p_thickness <= 0.0 && !back_bound;
     float low2 = -snn, low1 = snn, hc2 = low2, hc1 = low1, hq2 = 1.0, hq1 = 1.0;
+    float bot2 = 2.0, bot1 = 2.0; // with back: the sides' lowest bottoms (2 = none)
+    float pdep2 = g_dp, pdep1 = g_dp, pcos2 = low2, pcos1 = low1; // the last valid samples
     for (int st = 0; st < p_steps; st++) {
         precise float t = float(st) + g_u;
         precise float ou = roundEven(du * t), ov = roundEven(dv * t);
@@ -195,7 +254,14 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
         precise float e = bd * bd + c * c;
         precise float a2 = pa - g_l, a1 = -(pa + g_l), r2 = pr - g_l, r1 = -(pr + g_l);
         float d2 = depth_at(p, ou, ov), d1 = depth_at(p, -ou, -ov);
-        if (fast) {
+        if (back_bound) {
+            if (d2 < 1.0 / 0.0)
+                horizon_back(d2, back_at(p, ou, ov), a2, r2, bb, e, low2, hc2, bot2, pdep2,
+                             pcos2);
+            if (d1 < 1.0 / 0.0)
+                horizon_back(d1, back_at(p, -ou, -ov), a1, r1, bb, e, low1, hc1, bot1, pdep1,
+                             pcos1);
+        } else if (fast) {
             if (d2 < 1.0 / 0.0)
                 horizon_fast(d2, a2, r2, bb, e, hc2, hq2);
             if (d1 < 1.0 / 0.0)
@@ -212,7 +278,10 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
         hc2 = f2, hc1 = f1;
     }
     precise float n = HALF_PI - gtao_acos(snn);
-    vec3 a1 = side_arc(hc1, low1, -1.0, n, cn, snn), a2 = side_arc(hc2, low2, 1.0, n, cn, snn);
+    vec3 a1 = back_bound ? side_arc_back(hc1, bot1, low1, -1.0, n, cn, snn)
+                         : side_arc(hc1, low1, -1.0, n, cn, snn);
+    vec3 a2 = back_bound ? side_arc_back(hc2, bot2, low2, 1.0, n, cn, snn)
+                         : side_arc(hc2, low2, 1.0, n, cn, snn);
     precise float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
     precise float nv = vis + pl * (a1.x + a2.x);
     precise float no = open + pl * (0.25 * (cn + 2.0 * lim1 * snn + cn) +

@@ -6,7 +6,8 @@
  * direction (D, M, the screen step, the coefficients of the sample formulas), then per
  * step two straight loops over the chunk: one places the samples of both sides and
  * computes their pixel indices, one reads the depth there (the only gather) and updates
- * both horizons. A last loop per slice turns the horizons into the slice's terms. Every
+ * both horizons (with the back input also each side's bottom, horizon_back, from a second
+ * padded plane at the same index). A last loop per slice turns them into its terms. Every
  * loop vectorises (SSE4, AVX2 or AVX-512 through run-time selected clones): selects, no
  * branches, and no libm call but sqrtf (-fno-math-errno) and floorf / nearbyintf.
  *
@@ -56,6 +57,8 @@ struct job {
     const float *rot;             /* the tile, cos plane then sin plane; NULL = none */
     int n;                        /* tile side */
     float *padded;                /* the depth padded by +inf (ssg_sampling_pad_depth) */
+    const float *back;            /* the back input's plane; NULL = unconnected */
+    float *padded_back;           /* back padded likewise (gtao.c); NULL = unconnected */
     int pw;                       /* w + 2 */
     float *out, *bent;            /* outputs; bent: three planes */
     int w, h;
@@ -94,6 +97,10 @@ struct chunk {
                                               fast path: H'.V of the highest sample */
     float hq[2][CHUNK];                    /* the fast path: |H'|^2 of the highest
                                               sample (1 at first, with hc = low) */
+    float bot[2][CHUNK];                   /* with back: the lowest bottom cosine of the
+                                              samples that occlude (2 = none) */
+    float pdep[2][CHUNK], pcos[2][CHUNK];  /* with back: depth and faded cosine of the
+                                              side's last valid sample (P at first) */
     /* per step */
     float a[2][CHUNK], r[2][CHUNK];        /* H'.V = dq a + L dp, H.V = dq r + L dp */
     float b[CHUNK];                        /* sg H'.D = dq b (both sides) */
@@ -201,6 +208,9 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
         k->hc[0][i] = k->low[0][i] = -sn;
         k->hc[1][i] = k->low[1][i] = sn;
         k->hq[0][i] = k->hq[1][i] = 1.0f;
+        k->bot[0][i] = k->bot[1][i] = 2.0f;
+        k->pdep[0][i] = k->pdep[1][i] = k->dp[i];
+        k->pcos[0][i] = k->low[0][i], k->pcos[1][i] = k->low[1][i];
     }
 }
 
@@ -259,6 +269,47 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
     return up ? shc : thin ? pulled : hc;
 }
 
+/* One sample of one side with the back input (gtao.c): it occludes the arc between its
+   front point and its back point, the latter no farther than where the pixel's ray leaves
+   the sphere of radius R about P (the larger root d of (d r + L dp)^2 + d^2 e = R^2), both
+   faded towards the lowest by its weight; nothing behind (+inf) is solid down to the
+   lowest. When the side's previous sample (P itself at first) lies no farther than this
+   one's back, the front surface runs on from it, and the arc reaches down to it too. A
+   sample whose front point rises above the tangent plane raises the side's top hc and
+   lowers its bottom *bot; one on P's own plane or below changes neither. */
+static inline __attribute__((always_inline)) float
+horizon_back(float hc, float *bot, float *pdep, float *pcos, float low, float dq, float db,
+             float a, float r, float b, float e, float ldp, int ok,
+             const struct ssg_gtao_consts *c, float r2max, int linear)
+{
+    float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
+    float q = hv * hv + dq * dq * e;
+    float w;
+    if (linear) {
+        w = sqrtf(q) * c->fall_mul + c->fall_add;
+        w = w < 0.0f ? 0.0f : w;
+        w = w < 1.0f ? w : 1.0f;
+    } else {
+        w = q <= r2max ? 1.0f : 0.0f;
+    }
+    float qa = r * r + e, qb = r * ldp, qc = ldp * ldp - r2max;
+    float disc = qb * qb - qa * qc;
+    float exit = (sqrtf(disc > 0.0f ? disc : 0.0f) - qb) / qa;
+    float d = db < exit ? db : exit; /* db = +inf: the exit */
+    d = d > dq ? d : dq;             /* NaN (qa = 0) too: the front point */
+    float bv = d * a + ldp, bd = d * b;
+    float top = pv / sqrtf(pv * pv + pd * pd), under = bv / sqrtf(bv * bv + bd * bd);
+    top = low + w * (top - low);
+    under = db < INFINITY ? low + w * (under - low) : low; /* none behind: solid */
+    int valid = ok & (dq < INFINITY);
+    under = (*pdep <= db + c->link) & (*pcos < under) ? *pcos : under;
+    *pdep = valid ? dq : *pdep;
+    *pcos = valid ? top : *pcos;
+    int counts = valid & (w > 0.0f) & (top > low + OPEN_EPS);
+    *bot = counts & (under < *bot) ? under : *bot;
+    return counts & (top > hc) ? top : hc;
+}
+
 /* The fast path (hard cutoff, no thickness: the defaults): a side's horizon is the highest
    sample within R, and cosines are compared without a root or a division, as hbao_cpu.c
    does: pv / sqrt(q) > hv / sqrt(hq) exactly when pv |pv| hq > hv |hv| q (q, hq > 0); the
@@ -279,13 +330,24 @@ horizon_fast(float *restrict hv, float *restrict hq, float dq, float a, float r,
 }
 
 static inline __attribute__((always_inline)) void
-horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear, int fast)
+horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear, int fast,
+             int back)
 {
     /* Index (v, u) of the padded plane is pixel (v - 1, u - 1). */
     const float *restrict plane = j->padded + j->pw + 1;
+    const float *restrict bplane = back ? j->padded_back + j->pw + 1 : plane;
     const float r2max = j->c->p.radius * j->c->p.radius;
     for (int i = 0; i < len; i++) {
         float d0 = plane[k->idx[0][i]], d1 = plane[k->idx[1][i]];
+        if (back) {
+            float b0 = bplane[k->idx[0][i]], b1 = bplane[k->idx[1][i]];
+            for (int m = 0; m < 2; m++)
+                k->hc[m][i] = horizon_back(k->hc[m][i], &k->bot[m][i], &k->pdep[m][i],
+                                           &k->pcos[m][i], k->low[m][i], m ? d1 : d0,
+                                           m ? b1 : b0, k->a[m][i], k->r[m][i], k->b[i],
+                                           k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+            continue;
+        }
         if (fast) {
             horizon_fast(&k->hc[0][i], &k->hq[0][i], d0, k->a[0][i], k->r[0][i], k->b[i],
                          k->e[i], k->ldp[i], k->ok[i], r2max);
@@ -346,16 +408,35 @@ side_arc(float hc, float low, float sg, float n, float cn, float sn)
     return (struct arc){open ? o.a : g.a, open ? o.t0 : g.t0, open ? o.t1 : g.t1};
 }
 
+/* With back, a side's occluded arc runs from its top hc down to its bottom bot (gtao.c):
+   what is visible is the side up to hc plus the arc from bot to the hemisphere's limit,
+   side(hc) + open - side(bot), each term the side's integral from 0 plus one constant.
+   A bottom at (or below) the tangent plane gives open - open = 0: the plain horizon. */
+static inline __attribute__((always_inline)) struct arc
+side_arc_back(float hc, float bot, float low, float sg, float n, float cn, float sn)
+{
+    struct arc t = side_arc(hc, low, sg, n, cn, sn);
+    struct arc u = side_arc(bot > 1.5f ? low : bot, low, sg, n, cn, sn);
+    struct arc o = side_arc(low, low, sg, n, cn, sn);
+    return (struct arc){t.a + (o.a - u.a), t.t0 + (o.t0 - u.t0), t.t1 + (o.t1 - u.t1)};
+}
+
 /* Adds the slice's |proj N| a(h1, h2, n) to vis, its open value to open and its bent
    normal term to bsum; a disabled slice (pl 0) adds 0, which leaves the sums' bits. */
 static inline __attribute__((always_inline)) void finish_slice(struct chunk *restrict k,
-                                                               int len)
+                                                               int len, int back)
 {
     for (int i = 0; i < len; i++) {
         float cn = k->cn[i], sn = k->sn[i], pl = k->pl[i];
         float n = HALF_PI - gtao_acos(sn);
-        struct arc a1 = side_arc(k->hc[1][i], k->low[1][i], -1.0f, n, cn, sn);
-        struct arc a2 = side_arc(k->hc[0][i], k->low[0][i], 1.0f, n, cn, sn);
+        struct arc a1, a2;
+        if (back) {
+            a1 = side_arc_back(k->hc[1][i], k->bot[1][i], k->low[1][i], -1.0f, n, cn, sn);
+            a2 = side_arc_back(k->hc[0][i], k->bot[0][i], k->low[0][i], 1.0f, n, cn, sn);
+        } else {
+            a1 = side_arc(k->hc[1][i], k->low[1][i], -1.0f, n, cn, sn);
+            a2 = side_arc(k->hc[0][i], k->low[0][i], 1.0f, n, cn, sn);
+        }
         float lim1 = n - HALF_PI, lim2 = n + HALF_PI;
         int live = pl > 0.0f;
         float vis = pl * (a1.a + a2.a);
@@ -407,7 +488,7 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
    end. */
 static inline __attribute__((always_inline)) void
 chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len,
-           int linear, int fast)
+           int linear, int fast, int back)
 {
     const struct ssg_gtao_consts *c = j->c;
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
@@ -419,11 +500,11 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
         setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++) {
             place_step(j, k, len, (float)y, (float)st);
-            horizon_step(j, k, len, linear, fast);
+            horizon_step(j, k, len, linear, fast, back);
         }
         if (fast)
             fast_horizons(k, len);
-        finish_slice(k, len);
+        finish_slice(k, len, back);
     }
     finish_chunk(j, k, o, len);
 }
@@ -431,12 +512,15 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
 SSG_VECTOR_CLONES
 static void gtao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
-    if (j->c->p.falloff > 0.0f)
-        chunk_body(j, k, y, x0, len, 1, 0);
+    int linear = j->c->p.falloff > 0.0f;
+    if (j->padded_back)
+        chunk_body(j, k, y, x0, len, linear, 0, 1);
+    else if (linear)
+        chunk_body(j, k, y, x0, len, 1, 0, 0);
     else if (j->c->p.thickness > 0.0f)
-        chunk_body(j, k, y, x0, len, 0, 0);
+        chunk_body(j, k, y, x0, len, 0, 0, 0);
     else
-        chunk_body(j, k, y, x0, len, 0, 1);
+        chunk_body(j, k, y, x0, len, 0, 1, 0);
 }
 
 /* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
@@ -456,6 +540,8 @@ static void rows_pad(void *user, int y0, int y1)
 {
     const struct job *j = user;
     ssg_sampling_pad_depth(j->depth, j->depth_sign, j->w, y0, y1, j->padded);
+    if (j->padded_back) /* +inf (none behind) stays +inf; background is never read */
+        ssg_sampling_pad_depth(j->back, 1.0f, j->w, y0, y1, j->padded_back);
 }
 
 enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -478,13 +564,20 @@ enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
     j.pw = j.w + 2;
-    /* the node's scratch (node.h): kept between frames, no fresh pages each run */
-    j.padded = ssg_node_scratch(ctx, (size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
+    const struct ssg_image *back = io->in[SSG_GTAO_IN_BACK];
+    /* the node's scratch (node.h): kept between frames, no fresh pages each run; the
+       padded back plane follows the padded depth */
+    size_t plane = (size_t)j.pw * (size_t)(j.h + 2);
+    j.padded = ssg_node_scratch(ctx, (back ? 2 : 1) * plane * sizeof *j.padded);
     if (!j.padded)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
-    float *last = j.padded + (size_t)(j.h + 1) * (size_t)j.pw;
-    for (int x = 0; x < j.pw; x++)
-        j.padded[x] = last[x] = INFINITY;
+    j.back = back ? back->data : NULL;
+    j.padded_back = back ? j.padded + plane : NULL;
+    for (int p = 0; p < (back ? 2 : 1); p++) {
+        float *first = j.padded + p * plane, *last = first + (size_t)(j.h + 1) * (size_t)j.pw;
+        for (int x = 0; x < j.pw; x++)
+            first[x] = last[x] = INFINITY;
+    }
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows_pad, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     return SSG_OK;

@@ -19,11 +19,13 @@ enum ssg_err ssg_gtao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_input(&p, "normal", io->in[SSG_GTAO_IN_NORMAL]);
     ssg_gl_input(&p, "rotation", io->in[SSG_GTAO_IN_ROTATION]);
     ssg_gl_input(&p, "depth", io->in[SSG_GTAO_IN_DEPTH]);
+    ssg_gl_input(&p, "back", io->in[SSG_GTAO_IN_BACK]);
     ssg_gl_output(&p, "dst", io->out[SSG_GTAO_OUT_OUT]);
     ssg_gl_output(&p, "bent", io->out[SSG_GTAO_OUT_BENT_NORMAL]);
     ssg_gl_params(&p, ssg_node_gtao.params, q);
     ssg_gl_float(&p, "fall_mul", c->fall_mul);
     ssg_gl_float(&p, "fall_add", c->fall_add);
+    ssg_gl_float(&p, "link", c->link);
     ssg_gl_float(&p, "invf", 1.0f / c->proj.f);
     ssg_gl_projection(&p, "proj", &c->proj);
     ssg_gl_floats(&p, "slice_cos", q->slices, c->slice_cos);

@@ -1,0 +1,37 @@
+// gbuffer_back.glsl - the second layer's depth on GL (gbuffer.c, `back`): the pixel's ray
+// (gbuffer_cpu.c's make_rays) cast at the triangle gbuffer_peel.glsl found behind the
+// first surface, with gbuffer.glsl's intersection; +inf where the peel found none, 0 on
+// background, as the CPU's second Embree ray gives.
+#include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
+
+uniform sampler2DArray ids;   // the peel's layer 0: mesh + 1 (0 = none), layer 1: triangle
+uniform sampler2DArray first; // the first layer's depth (0 = background)
+layout(r32f) uniform writeonly image2DArray back;
+uniform vec3 proj;            // f, cx, cy
+uniform float inv_f;          // 1 / f rounded on the CPU
+uniform float rot[9];         // world -> view, row-major
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    int id = int(texelFetch(ids, ivec3(p, 0), 0).r) - 1;
+    if (!(texelFetch(first, ivec3(p, 0), 0).r > 0.0)) { // background
+        SSG_STORE1(back, p, 0.0);
+        return;
+    }
+    if (id < 0) { // nothing behind the first surface up to far
+        SSG_STORE1(back, p, 1.0 / 0.0);
+        return;
+    }
+    vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
+    vec3 w = vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6],  // world = rot^T view
+                  rot[1] * ray.x + rot[4] * ray.y - rot[7],
+                  rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+    Mesh me = scene_mesh[id];
+    int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
+    vec3 p0 = fetch3(me.positions, vindex[i3]), p1 = fetch3(me.positions, vindex[i3 + 1]);
+    vec3 p2 = fetch3(me.positions, vindex[i3 + 2]);
+    SSG_STORE1(back, p, intersect(w, p0, p1, p2).x);
+}

@@ -1,0 +1,36 @@
+// gbuffer_peel.glsl - the second layer's visibility pass on GL, a depth peel (Everitt,
+// "Interactive Order-Independent Transparency", NVIDIA 2001): the scene drawn again with
+// the depth test, every fragment at or before the first layer's depth d + d * gap
+// (gbuffer.h's SSG_GBUFFER_BACK_GAP) discarded, so the nearest surface left is the next
+// one along the pixel's ray. Writes mesh + 1 (0 = none) and triangle, as
+// gbuffer_raster.glsl does; gbuffer_back.glsl casts the ray at that triangle.
+#ifdef SSG_VERTEX
+layout(location = 0) in vec3 ssg_position;
+uniform mat4 ssg_world_to_clip;
+out float view_depth; // clip w = -z_view = the depth, interpolated perspective-correctly
+
+void main()
+{
+    gl_Position = ssg_world_to_clip * vec4(ssg_position, 1.0);
+    view_depth = gl_Position.w;
+}
+#endif
+
+#ifdef SSG_FRAGMENT
+uniform int ssg_mesh;
+uniform sampler2DArray first; // the first layer's depth (0 = background)
+uniform float gap;            // SSG_GBUFFER_BACK_GAP
+in float view_depth;
+layout(location = 0) out float mesh_id;  // layer 0
+layout(location = 1) out float triangle; // layer 1
+
+void main()
+{
+    float d = texelFetch(first, ivec3(ivec2(gl_FragCoord.xy), 0), 0).r;
+    precise float limit = d + d * gap;
+    if (!(d > 0.0) || !(view_depth > limit))
+        discard;
+    mesh_id = float(ssg_mesh + 1);
+    triangle = float(gl_PrimitiveID); // exact: gl_raster.c keeps meshes below 2^24 triangles
+}
+#endif
