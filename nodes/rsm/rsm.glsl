@@ -1,0 +1,94 @@
+// rsm.glsl - `rsm` on GL, last pass (rsm_gl.c): per pixel, rsm_cpu.c's gather: every VPL of
+// the list, or `samples` stratified draws by flux searched within their strata, each term
+// Phi cos cos / (d^2 max(d^2, r2)) x fade(d) in the CPU's order (`precise`).
+uniform sampler2DArray position, normal, albedo, list, count, first;
+uniform bool albedo_bound;
+layout(std430, binding = 1) readonly buffer Offsets { float offset[]; };
+layout(r32f) uniform writeonly image2DArray dst;
+uniform float rot[9];  // view -> world: world = eye + rot^T view
+uniform vec3 eye;
+uniform int samples;
+uniform float inv_samples, min_distance;
+const int TILE = 8;    // SSG_RSM_TILE
+
+int list_w;
+
+float vpl(int i, int k) { return texelFetch(list, ivec3(i % list_w, i / list_w, k), 0).r; }
+
+void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
+{
+    precise vec3 d = vec3(vpl(i, 0) - x.x, vpl(i, 1) - x.y, vpl(i, 2) - x.z);
+    precise float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+    precise float cs = -(vpl(i, 3) * d.x + vpl(i, 4) * d.y + vpl(i, 5) * d.z);
+    precise float cr = nx.x * d.x + nx.y * d.y + nx.z * d.z;
+    if (!(d2 > 0.0) || !(cs > 0.0) || !(cr > 0.0))
+        return;
+    float r2 = vpl(i, 9);
+    precise float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
+    if (min_distance > 0.0) {
+        precise float t = (sqrt(d2) - min_distance) / min_distance;
+        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+        g = g * (t * t * (3.0 - 2.0 * t));
+    }
+    precise float k = scale * g;
+    precise vec3 add = vec3(k * vpl(i, 6), k * vpl(i, 7), k * vpl(i, 8));
+    sum = vec3(sum.x + add.x, sum.y + add.y, sum.z + add.z);
+}
+
+int search(int lo, int hi, float u)
+{
+    while (lo < hi) {
+        int mid = (lo + hi) >> 1;
+        if (vpl(mid, 11) > u)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+vec3 gather(ivec2 p, vec3 x, vec3 nx, int n)
+{
+    precise vec3 sum = vec3(0.0);
+    if (samples == 0 || samples >= n) {
+        for (int i = 0; i < n; i++)
+            add_vpl(i, x, nx, 1.0, sum);
+        return sum;
+    }
+    float total = vpl(n - 1, 11);
+    float o = offset[(p.y % TILE) * TILE + p.x % TILE];
+    precise float step = inv_samples * total;
+    for (int k = 0; k < samples; k++) {
+        precise float u = (float(k) + o) * inv_samples * total;
+        int lo = int(texelFetch(first, ivec3(k, 0, 0), 0).r);
+        int hi = int(texelFetch(first, ivec3(k + 1, 0, 0), 0).r);
+        int i = search(lo, hi, u);
+        precise float scale = step / vpl(i, 10);
+        add_vpl(i, x, nx, scale, sum);
+    }
+    return sum;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    list_w = textureSize(list, 0).x;
+    vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
+    bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
+    int n = int(texelFetch(count, ivec3(0, 0, 0), 0).r);
+    precise vec3 sum = vec3(0.0);
+    if (!bg && n > 0) {
+        precise vec3 x, nx;
+        for (int i = 0; i < 3; i++) {
+            x[i] = eye[i] + rot[i] * P.x + rot[3 + i] * P.y + rot[6 + i] * P.z;
+            nx[i] = rot[i] * N.x + rot[3 + i] * N.y + rot[6 + i] * N.z;
+        }
+        sum = gather(p, x, nx, n);
+    }
+    vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0);
+    precise vec3 e = vec3(sum.x * 0.101321184, sum.y * 0.101321184, sum.z * 0.101321184);
+    precise vec3 o = vec3(a.x * e.x, a.y * e.y, a.z * e.z);
+    SSG_STORE3(dst, p, bg ? vec3(0.0) : o);
+}

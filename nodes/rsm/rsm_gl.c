@@ -1,0 +1,102 @@
+/* rsm_gl.c - GL side of the `rsm` node (method in rsm.c): the maps never leave the GPU. Four
+ * passes: the slots of every cell (rsm_cells.glsl, one invocation a cell), the list with
+ * its CDF and count (rsm_list.glsl, one invocation: a running sum), the strata's first
+ * VPLs (rsm_strata.glsl, one invocation a stratum) and the gather (rsm.glsl). The faces
+ * and the offset tile are the CPU's floats from prepare(), in storage buffers. */
+#include "gl/gl.h"
+#include "rsm.h"
+
+static void cells_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                       const struct ssg_io *io, struct ssg_image *cells, struct ssg_gl_pass *p)
+{
+    ssg_gl_pass_begin(p, ctx, "rsm_cells.glsl", NULL);
+    ssg_gl_input(p, "map_depth", io->in[SSG_RSM_IN_MAP_DEPTH]);
+    ssg_gl_input(p, "map_normal", io->in[SSG_RSM_IN_MAP_NORMAL]);
+    ssg_gl_input(p, "map_flux", io->in[SSG_RSM_IN_MAP_FLUX]);
+    ssg_gl_output(p, "cells", cells);
+    ssg_gl_buffer(p, 0, c->face, sizeof(float) * 16 * (size_t)c->faces);
+    ssg_gl_int(p, "res", c->res);
+    ssg_gl_int(p, "cell", c->p.cell);
+    ssg_gl_int(p, "ncells", c->cells);
+    ssg_gl_dispatch(p, c->cells, c->faces * c->cells);
+}
+
+static void list_pass(const struct ssg_node_ctx *ctx, const struct ssg_image *cells,
+                      struct ssg_image *list, struct ssg_image *count, struct ssg_gl_pass *p)
+{
+    ssg_gl_pass_begin(p, ctx, "rsm_list.glsl", NULL);
+    ssg_gl_input(p, "cells", cells);
+    ssg_gl_output(p, "list", list);
+    ssg_gl_output(p, "count", count);
+    ssg_gl_dispatch(p, 1, 1);
+}
+
+static void strata_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                        const struct ssg_image *list, const struct ssg_image *count,
+                        struct ssg_image *first, struct ssg_gl_pass *p)
+{
+    ssg_gl_pass_begin(p, ctx, "rsm_strata.glsl", NULL);
+    ssg_gl_input(p, "list", list);
+    ssg_gl_input(p, "count", count);
+    ssg_gl_output(p, "first", first);
+    ssg_gl_float(p, "inv_samples", c->inv_samples);
+    ssg_gl_dispatch(p, c->p.samples + 1, 1);
+}
+
+static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                        const struct ssg_io *io, const struct ssg_image *list,
+                        const struct ssg_image *count, const struct ssg_image *first,
+                        struct ssg_gl_pass *p)
+{
+    const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
+    ssg_gl_pass_begin(p, ctx, "rsm.glsl", NULL);
+    ssg_gl_input(p, "position", pos);
+    ssg_gl_input(p, "normal", io->in[SSG_RSM_IN_NORMAL]);
+    ssg_gl_input(p, "albedo", io->in[SSG_RSM_IN_ALBEDO]);
+    ssg_gl_input(p, "list", list);
+    ssg_gl_input(p, "count", count);
+    ssg_gl_input(p, "first", first);
+    ssg_gl_output(p, "dst", io->out[SSG_RSM_OUT_OUT]);
+    ssg_gl_buffer(p, 1, c->offset, sizeof c->offset);
+    ssg_gl_floats(p, "rot", 9, c->rot);
+    ssg_gl_vec3(p, "eye", c->eye);
+    ssg_gl_int(p, "samples", c->p.samples);
+    ssg_gl_float(p, "inv_samples", c->inv_samples);
+    ssg_gl_float(p, "min_distance", c->p.min_distance);
+    ssg_gl_dispatch(p, pos->width, pos->height);
+}
+
+enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                            const struct ssg_io *io)
+{
+    const struct ssg_rsm_consts *c = consts;
+    int gw = SSG_RSM_BINS * c->cells, gh = c->faces * c->cells;
+    struct ssg_image *cells = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_CELL_FLOATS);
+    struct ssg_image *list = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_SLOT);
+    struct ssg_image *count = ssg_gl_scratch(ctx, 1, 1, 1);
+    struct ssg_image *first = ssg_gl_scratch(ctx, c->p.samples + 1, 1, 1);
+    enum ssg_err e = SSG_E_NOMEM;
+    struct ssg_gl_pass p;
+    if (cells && list && count && first) {
+        cells_pass(ctx, c, io, cells, &p);
+        if (!(e = ssg_gl_pass_end(&p))) {
+            list_pass(ctx, cells, list, count, &p);
+            e = ssg_gl_pass_end(&p);
+        }
+        if (!e && c->p.samples > 0) {
+            strata_pass(ctx, c, list, count, first, &p);
+            e = ssg_gl_pass_end(&p);
+        }
+        if (!e) {
+            gather_pass(ctx, c, io, list, count, first, &p);
+            e = ssg_gl_pass_end(&p);
+        }
+    } else {
+        ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    }
+    ssg_gl_scratch_release(&cells);
+    ssg_gl_scratch_release(&list);
+    ssg_gl_scratch_release(&count);
+    ssg_gl_scratch_release(&first);
+    return e;
+}
