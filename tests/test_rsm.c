@@ -359,7 +359,7 @@ static void test_refusals(void)
                                                   m.flux, NULL};
     void *params = node_params(&ssg_node_rsm, NULL, 0);
     CHECK_EQ(node_run_scene(&ssg_node_rsm, point, &frame, params, in, out, SSG_BACKEND_CPU),
-             SSG_E_CHANNELS);
+             SSG_E_SCENE);
     free(params);
     ssg_image_destroy(&out[0]);
     gbuf_free(&g);

@@ -124,10 +124,10 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     const struct ssg_shape *maps = &ctx->in_shape[SSG_RSM_IN_MAP_DEPTH];
     int want = ssg_lightmap_faces(ctx->scene, c->face_s, SSG_LIGHTMAP_FACES_MAX);
     if (want < 0)
-        return ssg_node_fail(ctx, SSG_E_SIZE, "the scene's lights need more than %d map "
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     if (maps->channels != want)
-        return ssg_node_fail(ctx, SSG_E_CHANNELS, "the maps have %d faces but the scene's "
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the maps have %d faces but the scene's "
                              "lights need %d: connect the lightmaps node of the same scene",
                              maps->channels, want);
     c->faces = want;
