@@ -203,6 +203,12 @@ static void test_ssdo_combinations(void)
     CHECK_EQ(run_combine(&r, &p), SSG_OK);
     for (int c = 0; c < 3; c++)
         CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], m3[c] * (d[c] + e[c] + b[c]), 1e-6);
+    /* indirect_albedo: the bounce of a white receiver takes the albedo here */
+    p.indirect_albedo = 1;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(ssg_image_plane(r.out[0], c)[0], m3[c] * (d[c] + e[c] + a[c] * b[c]), 1e-6);
+    p.indirect_albedo = 0;
     /* SSAO-modulated ambient from the environment: direct + ao * environment. */
     r.in[SSG_COMBINE_IN_MODULATION] = NULL;
     r.in[SSG_COMBINE_IN_INDIRECT] = NULL;

@@ -228,6 +228,9 @@ static void combine_cases(void)
     const char *far_all[] = {"ambient=0.4", "far_bounce=false"};
     combine_case(&in, "far mod3 ao no far bounce", "aMeif", far_all, 2);
     combine_case(&in, "far alone", "ef", none, 1);
+    const char *ia[] = {"ambient=0.3", "indirect_albedo=true"};
+    combine_case(&in, "indirect x albedo", "Mi", ia, 2);
+    combine_case(&in, "far indirect x albedo", "mief", ia, 2);
     struct ssg_image **im = &in.direct;
     for (int i = 0; i < 8; i++)
         ssg_image_destroy(&im[i]);

@@ -5,7 +5,9 @@
  *         + (darken_indirect ? M : 1) * indirect                       (per channel)
  *
  * with M the modulation factor (1 or 3 channels, 1 when unconnected) and ao the ambient
- * occlusion (1 when unconnected).
+ * occlusion (1 when unconnected). With indirect_albedo, indirect stands for albedo x
+ * indirect: a white receiver's bounce made at low resolution (rsm without albedo) takes
+ * the full-resolution albedo here, after upsampling.
  * - SSAO: the ambient term is the ambient light of a diffuse surface (Belonogov, "Global
  *   Illumination methods in simulated VR environments", section 2.2.2) or the scene's
  *   environment light, darkened by AO as its visibility factor (Szentandrasi, "Modern
@@ -89,6 +91,10 @@ static const struct ssg_param_desc param_table[] = {
     {.name = "far_bounce", SSG_FIELD_BOOL(struct ssg_combine_params, far_bounce), .def = 1,
      .help = "with far_visibility: directions blocked beyond the modulation's reach bounce "
              "albedo x the pixel's own radiance"},
+    {.name = "indirect_albedo", SSG_FIELD_BOOL(struct ssg_combine_params, indirect_albedo),
+     .def = 0,
+     .help = "indirect is multiplied by albedo first: a white receiver's bounce (rsm "
+             "without albedo, upsampled) takes the full-resolution albedo"},
 };
 
 /* Flops per pixel (node.h): about 6 a colour channel (the light sum, the albedo product,

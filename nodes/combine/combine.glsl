@@ -10,7 +10,7 @@ uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound, far_
 uniform bool far_bounce;
 layout(r32f) uniform writeonly image2DArray dst;
 uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
-uniform bool darken_indirect;
+uniform bool darken_indirect, indirect_albedo;
 uniform vec3 k;              // ambient * ambient_color, made on the CPU
 
 float layer_or(sampler2DArray t, bool bound, ivec2 p, int layer, float unbound)
@@ -29,7 +29,8 @@ void main()
         float a = texelFetch(albedo, ivec3(p, c), 0).r;
         float m = layer_or(modulation, modulation_bound, p, min(c, modulation_last), 1.0);
         float env = layer_or(environment, environment_bound, p, c, 0.0);
-        float bounce = layer_or(indirect, indirect_bound, p, c, 0.0);
+        precise float bounce = layer_or(indirect, indirect_bound, p, c, 0.0);
+        bounce = indirect_albedo ? bounce * a : bounce;
         precise float ambient = env + k[c] * a;
         precise float o;
         if (far_visibility_bound) { // combine_cpu.c combine_channel_far

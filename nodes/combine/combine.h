@@ -33,6 +33,8 @@ struct ssg_combine_params {
     float ambient_color[3]; /* linear RGB tint of the ambient light, 0..100; default [1,1,1] */
     int darken_indirect;    /* 1 = the modulation factor also darkens indirect; default 1 */
     int far_bounce;         /* with far_visibility: add the far bounce; default 1 */
+    int indirect_albedo;    /* 1 = indirect is multiplied by albedo (an irradiance / pi made
+                               at low resolution, rsm without albedo); default 0 */
 };
 
 /* The CPU backend (combine_cpu.c); `consts` is a struct ssg_combine_params. */

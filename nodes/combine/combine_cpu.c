@@ -13,7 +13,7 @@ struct combine_job {
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
     const float *far;                   /* far_visibility, NULL = none */
-    int darken_indirect, far_bounce;
+    int darken_indirect, far_bounce, indirect_albedo;
     float *out[3];
     float k[3];                         /* ambient * ambient_color */
     int width;
@@ -25,12 +25,12 @@ static void combine_channel(const struct combine_job *j, int c, size_t begin, si
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c];
-    const int darken = j->darken_indirect;
+    const int darken = j->darken_indirect, ia = j->indirect_albedo;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
         float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f;
         float ambient = (env ? env[i] : 0.0f) + k * a[i];
-        float bounce = ind ? ind[i] : 0.0f;
+        float bounce = ind ? (ia ? ind[i] * a[i] : ind[i]) : 0.0f;
         o[i] = mi * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce;
     }
 }
@@ -41,7 +41,7 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c], *far = j->far;
-    const int darken = j->darken_indirect;
+    const int darken = j->darken_indirect, ia = j->indirect_albedo;
     const float fb = j->far_bounce ? 1.0f : 0.0f;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
@@ -49,7 +49,7 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
         float q = v > 0.0f ? mi / v : 1.0f;
         q = q < 1.0f ? q : 1.0f;
         float ambient = (env ? env[i] : 0.0f) + k * a[i];
-        float bounce = ind ? ind[i] : 0.0f;
+        float bounce = ind ? (ia ? ind[i] * a[i] : ind[i]) : 0.0f;
         float own = mi * d[i] + q * occ * ambient;
         float gap = mi - v;
         gap = gap > 0.0f ? gap : 0.0f;
@@ -80,7 +80,8 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *far = io->in[SSG_COMBINE_IN_FAR_VISIBILITY];
     struct combine_job job = {.ao = ao ? ao->data : NULL, .far = far ? far->data : NULL,
                               .width = out->width, .darken_indirect = p->darken_indirect,
-                              .far_bounce = p->far_bounce};
+                              .far_bounce = p->far_bounce,
+                              .indirect_albedo = p->indirect_albedo};
     for (int c = 0; c < 3; c++) {
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);

@@ -28,6 +28,7 @@ enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *cons
     ssg_gl_output(&p, "dst", out);
     ssg_gl_int(&p, "modulation_last", mod && mod->channels == 3 ? 2 : 0);
     ssg_gl_int(&p, "darken_indirect", prm->darken_indirect);
+    ssg_gl_int(&p, "indirect_albedo", prm->indirect_albedo);
     ssg_gl_vec3(&p, "k", k);
     ssg_gl_dispatch(&p, out->width, out->height);
     return ssg_gl_pass_end(&p);
