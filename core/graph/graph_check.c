@@ -314,6 +314,8 @@ static void infer_node(struct checker *c, struct gnode *n)
     char why[400];
     enum ssg_err e = ssg_shapes_infer(d, n->params, &c->g->frame, n->in_shape, n->out_shape,
                                       why, sizeof why);
+    if (!e && d->check_scene && c->g->scene)
+        e = d->check_scene(n->params, c->g->scene, n->out_shape, why, sizeof why);
     if (e) {
         ssg_diag_at(c->diags, e, n->loc, "node '%s' (%s): %s", n->name, d->name, why);
         fail(c, e);

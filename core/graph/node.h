@@ -175,6 +175,13 @@ struct ssg_node_desc {
     enum ssg_err (*check)(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len);
+    /* Optional, a needs_scene node whose output shapes depend on the scene (lightmaps:
+       one face a directional light, six a point light): called after check() with the
+       loaded scene when the graph is checked, may change the channels of `out` and
+       refuses what the scene makes too large. Runs without a graph (tests) bind images
+       of the right shape themselves. Return SSG_OK or an error code with why. */
+    enum ssg_err (*check_scene)(const void *params, const struct ssg_scene *scene,
+                                struct ssg_shape *out, char *why, size_t why_len);
     /* Optional, sinks that write files: the names of the files the node writes into the
        output folder under these parameters (write: <name>.exr, <name>.png), at most `max`
        names of SSG_FILE_NAME_MAX bytes; returns how many. Two live nodes that would write

@@ -18,6 +18,7 @@
 #include "gbuffer.h"
 #include "scene/env.h"
 #include "scene/rt.h"
+#include "common/direct.h"
 #include "common/surface.h"
 #include "scene/scene.h"
 
@@ -136,28 +137,26 @@ static void view_vectors(struct chunk *k)
     }
 }
 
-/* Irradiance E = intensity * max(0, N.L) / d^2 of a point light, and unit L. */
+/* Irradiance E of a point light and unit L (nodes/common/direct.h, shared with
+   direct_light). */
 static void point_light(struct chunk *k, const struct ssg_light *l)
 {
     for (int s = 0; s < k->count; s++) {
-        float lx = l->position[0] - k->px[s], ly = l->position[1] - k->py[s];
-        float lz = l->position[2] - k->pz[s];
-        float inv = 1.0f / sqrtf(lx * lx + ly * ly + lz * lz + TINY);
-        lx *= inv, ly *= inv, lz *= inv;
-        float ndl = k->nx[s] * lx + k->ny[s] * ly + k->nz[s] * lz;
-        k->e[s] = l->intensity * (ndl > 0.0f ? ndl : 0.0f) * inv * inv;
-        k->lx[s] = lx, k->ly[s] = ly, k->lz[s] = lz;
+        float d[3];
+        k->e[s] = ssg_point_irradiance(l->position, l->intensity, k->px[s], k->py[s],
+                                       k->pz[s], k->nx[s], k->ny[s], k->nz[s], d);
+        k->lx[s] = d[0], k->ly[s] = d[1], k->lz[s] = d[2];
     }
 }
 
-/* Irradiance E = intensity * max(0, N.L) of a directional light, and L. */
+/* Irradiance E of a directional light and L (nodes/common/direct.h). */
 static void directional_light(struct chunk *k, const struct ssg_light *l)
 {
-    const float lx = -l->direction[0], ly = -l->direction[1], lz = -l->direction[2];
     for (int s = 0; s < k->count; s++) {
-        float ndl = k->nx[s] * lx + k->ny[s] * ly + k->nz[s] * lz;
-        k->e[s] = l->intensity * (ndl > 0.0f ? ndl : 0.0f);
-        k->lx[s] = lx, k->ly[s] = ly, k->lz[s] = lz;
+        float d[3];
+        k->e[s] = ssg_directional_irradiance(l->direction, l->intensity, k->nx[s], k->ny[s],
+                                             k->nz[s], d);
+        k->lx[s] = d[0], k->ly[s] = d[1], k->lz[s] = d[2];
     }
 }
 

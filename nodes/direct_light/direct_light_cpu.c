@@ -1,0 +1,280 @@
+/* direct_light_cpu.c - CPU side of the `direct_light` node (method in direct_light.c).
+ * Rows in fixed bands; a band's rows in chunks of CHUNK pixels. Per light, the unshadowed
+ * irradiance of the whole chunk is one vectorised loop (nodes/common/direct.h, the
+ * G-buffer's own code); only the pixels it reaches run the shadow filter (gathers from
+ * the maps, per pixel), and the sums are again straight loops. A pixel depends only on
+ * its own inputs: the result does not depend on the threads. */
+#include "common/vector_loops.h" /* first: see there */
+#include <math.h>
+#include <stdlib.h>
+
+#include "common/direct.h"
+#include "direct_light.h"
+
+enum { CHUNK = 64, ROWS_PER_BAND = 8 };
+
+struct job {
+    const struct ssg_direct_light_consts *c;
+    const struct ssg_io *io;
+    const float *maps; /* the depth planes, face f at f R^2 */
+    int w, h;
+};
+
+struct chunk {
+    float px[CHUNK], py[CHUNK], pz[CHUNK], nx[CHUNK], ny[CHUNK], nz[CHUNK];
+    float e[CHUNK], v[CHUNK];               /* one light: irradiance, visibility */
+    float lx[CHUNK], ly[CHUNK], lz[CHUNK];  /* one light: unit direction to it */
+    float sum[3][CHUNK], lum_lit[CHUNK], lum_all[CHUNK];
+};
+
+static float luminance(float r, float g, float b)
+{
+    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
+}
+
+/* A cube face's texel (x, y), maybe past its edge, as the distance from the light along
+   its ray to the nearest surface: read on the face its direction falls on. */
+static float cube_distance(const struct job *j, int first, int f, int x, int y)
+{
+    const int res = j->c->res;
+    const struct ssg_lightmap_face *face = &j->c->faces[first + f];
+    float a = 2.0f * ((float)x + 0.5f) / (float)res - 1.0f;
+    float b = 2.0f * ((float)y + 0.5f) / (float)res - 1.0f;
+    if (x >= 0 && y >= 0 && x < res && y < res)
+        return j->maps[((size_t)(first + f) * res + y) * res + x] * sqrtf(1.0f + a * a + b * b);
+    float d[3];
+    for (int k = 0; k < 3; k++)
+        d[k] = face->axis[k] + a * face->u[k] + b * face->v[k];
+    int g = first + ssg_lightmap_cube_face(d);
+    const struct ssg_lightmap_face *o = &j->c->faces[g];
+    float z = d[0] * o->axis[0] + d[1] * o->axis[1] + d[2] * o->axis[2];
+    float ga = (d[0] * o->u[0] + d[1] * o->u[1] + d[2] * o->u[2]) / z;
+    float gb = (d[0] * o->v[0] + d[1] * o->v[1] + d[2] * o->v[2]) / z;
+    int gx = (int)floorf((ga + 1.0f) * 0.5f * (float)res);
+    int gy = (int)floorf((gb + 1.0f) * 0.5f * (float)res);
+    gx = gx < 0 ? 0 : gx > res - 1 ? res - 1 : gx;
+    gy = gy < 0 ? 0 : gy > res - 1 ? res - 1 : gy;
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return j->maps[((size_t)g * res + gy) * res + gx] * len / z;
+}
+
+/* Where the receiver is on a light's maps: its face, texel coordinates and distance. */
+struct lookup {
+    const struct ssg_direct_light_light *l;
+    int f;        /* face of the light (0 for a directional one) */
+    float x, y;   /* texel coordinates on it */
+    float r;      /* distance: along the ray (point) or depth (directional) */
+    float texel;  /* a texel at the receiver, scene units */
+};
+
+/* The occluder distance at texel (x, y) of the lookup's face, SSG_SHADOW_EMPTY where the
+   map has none or (directional) the texel is off the map. */
+static float occluder(const struct job *j, const struct lookup *k, int x, int y)
+{
+    const int res = j->c->res;
+    if (k->l->point)
+        return cube_distance(j, k->l->face, k->f, x, y);
+    if (x < 0 || y < 0 || x >= res || y >= res)
+        return SSG_SHADOW_EMPTY;
+    return j->maps[((size_t)k->l->face * res + y) * res + x];
+}
+
+/* The bilinear blend of the four tests around texel coordinates (x, y). */
+static float bilinear_test(const struct job *j, const struct lookup *k, float x, float y,
+                           float limit)
+{
+    float fx = x - 0.5f, fy = y - 0.5f, x0 = floorf(fx), y0 = floorf(fy);
+    float wx = fx - x0, wy = fy - y0;
+    int ix = (int)x0, iy = (int)y0;
+    float t00 = limit <= occluder(j, k, ix, iy) ? 1.0f : 0.0f;
+    float t10 = limit <= occluder(j, k, ix + 1, iy) ? 1.0f : 0.0f;
+    float t01 = limit <= occluder(j, k, ix, iy + 1) ? 1.0f : 0.0f;
+    float t11 = limit <= occluder(j, k, ix + 1, iy + 1) ? 1.0f : 0.0f;
+    return (1.0f - wy) * ((1.0f - wx) * t00 + wx * t10) + wy * ((1.0f - wx) * t01 + wx * t11);
+}
+
+/* The PCF radius in texels: `filter`, widened by the penumbra of the blockers found
+   within the light's footprint (PCSS); 0 > radius: no blocker, fully lit. */
+static float filter_radius(const struct job *j, const struct lookup *k, float cs, float sn,
+                           float limit)
+{
+    const struct ssg_direct_light_consts *c = j->c;
+    float filter = c->p.filter, spread = k->l->spread;
+    if (!(spread > 0.0f))
+        return filter;
+    float search = k->l->point ? spread / k->texel : k->r * spread / k->texel;
+    search = search > filter ? search : filter;
+    search = search < SSG_DIRECT_LIGHT_MAX_RADIUS ? search : SSG_DIRECT_LIGHT_MAX_RADIUS;
+    float sum = 0.0f;
+    int n = 0;
+    for (int s = 0; s < c->p.samples; s++) {
+        float ox = cs * c->taps[2 * s] - sn * c->taps[2 * s + 1];
+        float oy = sn * c->taps[2 * s] + cs * c->taps[2 * s + 1];
+        float d = occluder(j, k, (int)floorf(k->x + search * ox),
+                           (int)floorf(k->y + search * oy));
+        if (d < limit)
+            sum += d, n++;
+    }
+    if (n == 0)
+        return -1.0f;
+    float blocker = sum / (float)n;
+    float penumbra = k->l->point ? spread * (k->r - blocker) / blocker
+                                 : spread * (k->r - blocker);
+    float r = filter + 0.5f * penumbra / k->texel;
+    return r < SSG_DIRECT_LIGHT_MAX_RADIUS ? r : SSG_DIRECT_LIGHT_MAX_RADIUS;
+}
+
+/* The receiver p (normal n, unit direction l to the light) on light l's maps, moved along
+   its normal first (the normal offset). */
+static void locate(const struct job *j, const struct ssg_direct_light_light *light,
+                   const float p[3], const float n[3], const float l[3], struct lookup *k)
+{
+    const struct ssg_direct_light_consts *c = j->c;
+    float cosine = n[0] * l[0] + n[1] * l[1] + n[2] * l[2], c2 = 1.0f - cosine * cosine;
+    float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), dist = 1.0f;
+    if (light->point) {
+        float d[3] = {p[0] - light->pos[0], p[1] - light->pos[1], p[2] - light->pos[2]};
+        dist = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    k->l = light;
+    k->texel = light->texel * dist;
+    float lift = c->p.normal_offset * k->texel * sine, q[3], z;
+    for (int i = 0; i < 3; i++)
+        q[i] = p[i] + lift * n[i];
+    k->f = 0, k->x = k->y = 0.0f;
+    if (light->point) {
+        float d[3] = {q[0] - light->pos[0], q[1] - light->pos[1], q[2] - light->pos[2]};
+        k->f = ssg_lightmap_cube_face(d);
+        k->r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    ssg_lightmap_project(&c->faces[light->face + k->f], c->res, q, &k->x, &k->y, &z);
+    k->r = light->point ? k->r : z;
+}
+
+/* Light `light`'s visibility at pixel (x, y): PCF over the turned Vogel disc. */
+static float visibility(const struct job *j, const struct ssg_direct_light_light *light,
+                        int index, int x, int y, const float p[3], const float n[3],
+                        const float l[3])
+{
+    const struct ssg_direct_light_consts *c = j->c;
+    struct lookup k;
+    locate(j, light, p, n, l, &k);
+    float turn = ssg_direct_light_turn(x, y) + 0.618034f * (float)index;
+    float angle = 2.0f * (float)M_PI * (turn - floorf(turn));
+    float cs = cosf(angle), sn = sinf(angle);
+    float limit = k.r - c->p.offset * k.texel; /* lit when the occluder is at least this */
+    float radius = filter_radius(j, &k, cs, sn, limit);
+    if (radius < 0.0f)
+        return 1.0f;
+    float sum = 0.0f;
+    for (int s = 0; s < c->p.samples; s++) {
+        float ox = cs * c->taps[2 * s] - sn * c->taps[2 * s + 1];
+        float oy = sn * c->taps[2 * s] + cs * c->taps[2 * s + 1];
+        sum += bilinear_test(j, &k, k.x + radius * ox, k.y + radius * oy, limit);
+    }
+    return sum / (float)c->p.samples;
+}
+
+/* The chunk's world positions and normals (background: normal 0). */
+SSG_VECTOR_CLONES
+static void load(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
+{
+    const struct ssg_image *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION];
+    const struct ssg_image *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL];
+    const float *r = j->c->rot, *eye = j->c->eye;
+    size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
+    for (int i = 0; i < len; i++) {
+        float vx = pos->data[at + i], vy = pos->data[plane + at + i];
+        float vz = pos->data[2 * plane + at + i];
+        float mx = nrm->data[at + i], my = nrm->data[plane + at + i];
+        float mz = nrm->data[2 * plane + at + i];
+        k->px[i] = eye[0] + r[0] * vx + r[3] * vy + r[6] * vz;
+        k->py[i] = eye[1] + r[1] * vx + r[4] * vy + r[7] * vz;
+        k->pz[i] = eye[2] + r[2] * vx + r[5] * vy + r[8] * vz;
+        k->nx[i] = r[0] * mx + r[3] * my + r[6] * mz;
+        k->ny[i] = r[1] * mx + r[4] * my + r[7] * mz;
+        k->nz[i] = r[2] * mx + r[5] * my + r[8] * mz;
+        k->sum[0][i] = k->sum[1][i] = k->sum[2][i] = 0.0f;
+        k->lum_lit[i] = k->lum_all[i] = 0.0f;
+    }
+}
+
+/* Light li's unshadowed irradiance over the chunk: the G-buffer's formulas. */
+SSG_VECTOR_CLONES
+static int irradiance(const struct ssg_direct_light_light *l, int len, struct chunk *restrict k)
+{
+    int any = 0;
+    for (int i = 0; i < len; i++) {
+        float d[3];
+        k->e[i] = l->point ? ssg_point_irradiance(l->pos, l->intensity, k->px[i], k->py[i], k->pz[i],
+                                                  k->nx[i], k->ny[i], k->nz[i], d)
+                           : ssg_directional_irradiance(l->dir, l->intensity, k->nx[i], k->ny[i],
+                                                        k->nz[i], d);
+        k->lx[i] = d[0], k->ly[i] = d[1], k->lz[i] = d[2];
+        any |= k->e[i] > 0.0f;
+    }
+    return any;
+}
+
+static void add_light(const struct job *j, int li, int y, int x0, int len,
+                      struct chunk *restrict k)
+{
+    const struct ssg_direct_light_light *l = &j->c->light[li];
+    if (!irradiance(l, len, k))
+        return; /* a light behind the whole chunk adds exact zeros */
+    for (int i = 0; i < len; i++) {
+        float p[3] = {k->px[i], k->py[i], k->pz[i]}, n[3] = {k->nx[i], k->ny[i], k->nz[i]};
+        float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
+        k->v[i] = k->e[i] > 0.0f ? visibility(j, l, li, x0 + i, y, p, n, d) : 0.0f;
+    }
+    const float el = luminance(l->color[0], l->color[1], l->color[2]);
+    for (int i = 0; i < len; i++) {
+        float lit = k->v[i] * k->e[i];
+        k->sum[0][i] += lit * l->color[0], k->sum[1][i] += lit * l->color[1];
+        k->sum[2][i] += lit * l->color[2];
+        k->lum_lit[i] += lit * el, k->lum_all[i] += k->e[i] * el;
+    }
+}
+
+static void store(const struct job *j, int y, int x0, int len, const struct chunk *restrict k)
+{
+    const struct ssg_image *alb = j->io->in[SSG_DIRECT_LIGHT_IN_ALBEDO];
+    const struct ssg_image *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL];
+    size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
+    float *out = j->io->out[SSG_DIRECT_LIGHT_OUT_OUT]->data;
+    float *vis = j->io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]->data;
+    const float inv_pi = (float)(1.0 / M_PI);
+    for (int i = 0; i < len; i++) {
+        int bg = nrm->data[at + i] == 0.0f && nrm->data[plane + at + i] == 0.0f &&
+                 nrm->data[2 * plane + at + i] == 0.0f;
+        for (int c = 0; c < 3; c++)
+            out[c * plane + at + i] =
+                bg ? 0.0f : alb->data[c * plane + at + i] * inv_pi * k->sum[c][i];
+        vis[at + i] = bg || !(k->lum_all[i] > 0.0f) ? 1.0f : k->lum_lit[i] / k->lum_all[i];
+    }
+}
+
+static void rows(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct chunk k;
+    for (int y = y0; y < y1; y++)
+        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
+            int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
+            load(j, y, x0, len, &k);
+            for (int li = 0; li < j->c->lights; li++)
+                add_light(j, li, y, x0, len, &k);
+            store(j, y, x0, len, &k);
+        }
+}
+
+enum ssg_err ssg_direct_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                                      const struct ssg_io *io)
+{
+    (void)ctx;
+    const struct ssg_image *pos = io->in[SSG_DIRECT_LIGHT_IN_POSITION];
+    struct job j = {consts, io, io->in[SSG_DIRECT_LIGHT_IN_MAPS]->data, pos->width,
+                    pos->height};
+    ssg_parallel_rows(pos->height, ROWS_PER_BAND, rows, &j);
+    return SSG_OK;
+}

@@ -1,0 +1,145 @@
+/* lightmaps.c - the `lightmaps` node: the maps of the scene's own point and directional
+ * lights, as nodes/common/lightmap.h defines them (faces, texel rays, depth, and the
+ * reflective shadow map's normal and flux channels).
+ *
+ * Method: a shadow map per light (Williams, "Casting Curved Shadows on Curved Surfaces",
+ * SIGGRAPH 1978), a cube of six 90 degree faces around a point light (omnidirectional
+ * shadow maps, Gerasimov, GPU Gems ch. 12, 2004), and per texel the surface's normal and
+ * reflected flux of a reflective shadow map (Dachsbacher and Stamminger, "Reflective Shadow
+ * Maps", I3D 2005, sec. 3: depth, world position, normal, flux; the position is the texel's
+ * ray at its depth here, lightmap.h). Every texel samples its centre's ray: the CPU
+ * rasterises each triangle in fixed point (lightmaps_cpu.c, as shadowmaps_cpu.c) and then
+ * intersects the texel's ray with the nearest triangle found there for the normal, uv and
+ * depth (a visibility buffer, gl_raster.h); GL rasterises with a depth test and its
+ * fragment shader intersects the same ray with the same triangle. */
+#include <stdio.h>
+
+#include "graph/image.h"
+#include "scene/scene.h"
+#include "lightmaps.h"
+
+static enum ssg_err check(const void *params, const struct ssg_frame *frame,
+                          const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                          size_t why_len)
+{
+    const struct ssg_lightmaps_params *p = params;
+    (void)frame, (void)in, (void)why, (void)why_len;
+    static const int per_face[SSG_LIGHTMAPS_OUTPUTS] = {1, 3, 3};
+    for (int i = 0; i < SSG_LIGHTMAPS_OUTPUTS; i++)
+        out[i] = (struct ssg_shape){p->resolution, p->resolution, per_face[i],
+                                    SSG_T_LIGHTMAPS};
+    return SSG_OK;
+}
+
+/* The scene's face count sets the channels; refused over the image limits. */
+static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
+                                struct ssg_shape *out, char *why, size_t why_len)
+{
+    const struct ssg_lightmaps_params *p = params;
+    long long f = ssg_lightmap_face_count(scene), r = p->resolution;
+    if (f > SSG_LIGHTMAP_FACES_MAX) {
+        snprintf(why, why_len, "the scene's lights need %lld map faces (6 a point light, 1 a "
+                 "directional light), at most %d fit the normal and flux images' %d channels",
+                 f, SSG_LIGHTMAP_FACES_MAX, SSG_IMAGE_MAX_CHANNELS);
+        return SSG_E_SIZE;
+    }
+    if (3 * f * r * r > SSG_IMAGE_MAX_FLOATS) {
+        snprintf(why, why_len, "%lld faces of %lld x %lld need %.1f GiB for the normal and "
+                 "flux images each, over the limit of %.1f GiB an image "
+                 "(SSG_IMAGE_MAX_FLOATS): lower the resolution or the light count", f, r, r,
+                 (double)(3 * f * r * r) * 4.0 / (1 << 30),
+                 (double)SSG_IMAGE_MAX_FLOATS * 4.0 / (1 << 30));
+        return SSG_E_SIZE;
+    }
+    out[SSG_LIGHTMAPS_OUT_DEPTH].channels = (int)f;
+    out[SSG_LIGHTMAPS_OUT_NORMAL].channels = 3 * (int)f;
+    out[SSG_LIGHTMAPS_OUT_FLUX].channels = 3 * (int)f;
+    return SSG_OK;
+}
+
+/* The flux factor of each face (lightmap.h): orthographic E (2 half / R)^2, cube I (the
+   texel's solid angle is applied per texel). */
+static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_consts *c,
+                      int f, float flux[3])
+{
+    const struct ssg_lightmap_face *face = &c->faces[f];
+    float area = 1.0f;
+    if (face->ortho) {
+        float side = 2.0f * face->half / (float)c->res;
+        area = side * side;
+    }
+    for (int k = 0; k < 3; k++)
+        flux[k] = face->light < 0 ? 0.0f
+                                  : s->lights[face->light].color[k] *
+                                        s->lights[face->light].intensity * area;
+}
+
+static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
+{
+    const struct ssg_lightmaps_params *p = params;
+    struct ssg_lightmaps_consts *c = consts;
+    if (!ctx->scene)
+        return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
+    c->res = p->resolution;
+    c->count = ssg_lightmap_faces(ctx->scene, c->faces, SSG_LIGHTMAP_FACES_MAX);
+    if (c->count < 0 || c->count != ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels)
+        return ssg_node_fail(ctx, SSG_E_CHANNELS, "the scene's lights need %d map faces, the "
+                             "depth output has %d channels", ssg_lightmap_face_count(ctx->scene),
+                             ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels);
+    struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
+    c->near_z = SSG_LIGHTMAPS_NEAR * sphere.radius;
+    c->far_z = 0.0f;
+    for (int f = 0; f < c->count; f++) {
+        face_flux(ctx->scene, c, f, c->flux[f]);
+        const float *o = c->faces[f].origin;
+        float d[3] = {o[0] - sphere.centre[0], o[1] - sphere.centre[1], o[2] - sphere.centre[2]};
+        float far = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + sphere.radius;
+        c->far_z = far * 1.01f > c->far_z ? far * 1.01f : c->far_z;
+    }
+    return SSG_OK;
+}
+
+static const struct ssg_param_desc params[] = {
+    {.name = "resolution", SSG_FIELD_INT(struct ssg_lightmaps_params, resolution), .def = 512,
+     .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX, .unit = "texels",
+     .help = "side of every face (a point light has six, a directional light one); memory "
+             "7 x faces x resolution^2 floats"},
+};
+
+static const struct ssg_port_desc outputs[] = {
+    [SSG_LIGHTMAPS_OUT_DEPTH] = {.name = "depth", .types = SSG_T_LIGHTMAPS,
+     .doc = "R x R, channel f the depth of the nearest surface on face f (lightmap.h), "
+            "SSG_SHADOW_EMPTY where none"},
+    [SSG_LIGHTMAPS_OUT_NORMAL] = {.name = "normal", .types = SSG_T_LIGHTMAPS,
+     .doc = "R x R, channels 3f..3f+2 that surface's unit world normal, facing the light"},
+    [SSG_LIGHTMAPS_OUT_FLUX] = {.name = "flux", .types = SSG_T_LIGHTMAPS,
+     .doc = "R x R, channels 3f..3f+2 the RGB flux that surface reflects (albedo x flux "
+            "through the texel, W)"},
+};
+_Static_assert(SSG_COUNT(outputs) == SSG_LIGHTMAPS_OUTPUTS, "one entry a port enumerator");
+
+const struct ssg_node_desc ssg_node_lightmaps = {
+    .name = "lightmaps",
+    .summary = "shadow and reflective shadow maps of the scene's point and directional lights",
+    .method = "Williams 1978 (shadow maps); a cube of six faces a point light (Gerasimov, GPU "
+              "Gems ch. 12); Dachsbacher and Stamminger, Reflective Shadow Maps, I3D 2005, "
+              "sec. 3 (depth, normal, flux per texel); faces of nodes/common/lightmap.h",
+    .doc = "Renders the scene from each of its own lights (the scene's point_light and "
+           "directional_light lines, in order): a directional light gets one orthographic "
+           "face over the scene's bounding sphere, a point light a cube of six 90 degree "
+           "faces. Per texel (its centre's ray) the nearest surface, both sides of every "
+           "triangle: depth along the face's axis, its unit shading normal turned towards "
+           "the light, and the flux it reflects (albedo x the light's flux through the "
+           "texel). Surfaces nearer a point light than 0.001 x the scene's radius are cut. "
+           "Memory is 7 x faces x resolution^2 floats (a point light at 512: 42 MiB). "
+           "direct_light reads depth for shadows; a reflective-shadow-map gather reads all "
+           "three.",
+    SSG_NODE_OUTPUTS(outputs),
+    SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
+    .consts_size = sizeof(struct ssg_lightmaps_consts),
+    .needs_scene = 1,
+    .check = check,
+    .check_scene = check_scene,
+    .prepare = prepare,
+    .run_cpu = ssg_lightmaps_run_cpu,
+};

@@ -1,0 +1,222 @@
+/* test_lightmaps.c - the `lightmaps` node against what nodes/common/lightmap.h defines:
+ * - a cube's six faces' texel solid angles sum to 4 pi;
+ * - a plane under a directional light: its depth on the map is exact, its normal faces the
+ *   light whichever way the plane's own normal points, and the flux of all its texels is
+ *   albedo x E x its area;
+ * - a point light in a closed box: every texel of the six faces sees a wall at the right
+ *   depth (no cracks along the faces' edges or where the near plane clips), and the flux
+ *   sums to albedo x I x 4 pi;
+ * - a scene without point or directional lights has one empty face; a light of zero
+ *   intensity gives black flux and no NaN;
+ * - resolution 0 and 65536 are refused, so are more faces than the images hold and maps
+ *   over the memory limit (check_scene);
+ * - the maps do not depend on the thread count. */
+#include <math.h>
+#include <omp.h>
+#include <string.h>
+
+#include "check.h"
+#include "light_maps.h"
+
+static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0};
+
+static void test_solid_angles(void)
+{
+    const int res[] = {16, 64, 256};
+    for (int k = 0; k < 3; k++) {
+        double sum = 0;
+        for (int y = 0; y < res[k]; y++)
+            for (int x = 0; x < res[k]; x++)
+                sum += 6.0 * ssg_lightmap_texel_solid_angle(res[k], x, y);
+        fprintf(stderr, "cube %d: texel solid angles sum to 4 pi x %.6f\n", res[k],
+                sum / (4 * M_PI));
+        CHECK_NEAR(sum / (4 * M_PI), 1.0, k == 0 ? 2e-3 : 1e-4);
+    }
+}
+
+/* A 2 x 2 plane at y = 0.25 (normal up or down), the sun straight down on it. */
+static void plane_under_sun(const char *normal)
+{
+    char text[600];
+    snprintf(text, sizeof text,
+             "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+             "m = material(albedo=[0.5, 0.25, 0.8])\n"
+             "plane(material=m, center=[0, 0.25, 0], normal=%s, size=[2, 0, 2])\n"
+             "directional_light(direction=[0, -1, 0], color=[1, 0.5, 2], intensity=3)\n",
+             normal);
+    struct ssg_scene *s = scene_from_text("lightmaps_sun", text);
+    if (!s)
+        return;
+    const int res = 256;
+    struct ssg_image *m[3];
+    CHECK_EQ(maps_of(s, &FRAME, res, SSG_BACKEND_CPU, m), SSG_OK);
+    CHECK_EQ(m[0]->channels, 1);
+    float radius = ssg_scene_bounding_sphere(s).radius;
+    double flux[3] = {0, 0, 0};
+    int covered = 0;
+    for (int y = 0; y < res; y++)
+        for (int x = 0; x < res; x++) {
+            if (px_at(m[0], 0, x, y) >= SSG_SHADOW_EMPTY)
+                continue;
+            covered++;
+            CHECK_NEAR(px_at(m[0], 0, x, y), radius, 1e-5);
+            CHECK_EQ(px_at(m[1], 1, x, y), 1.0f); /* faces the light */
+            for (int c = 0; c < 3; c++)
+                flux[c] += px_at(m[2], c, x, y);
+        }
+    const double albedo[3] = {0.5, 0.25, 0.8}, e[3] = {3, 1.5, 6};
+    float texel = 2 * radius / res;
+    fprintf(stderr, "plane (normal %s) under the sun: %d texels (area %.4f), flux %.4f %.4f "
+            "%.4f, albedo E area %.4f %.4f %.4f\n", normal, covered,
+            covered * texel * texel, flux[0], flux[1], flux[2], albedo[0] * e[0] * 4,
+            albedo[1] * e[1] * 4, albedo[2] * e[2] * 4);
+    for (int c = 0; c < 3; c++) /* the texel centres quantise the edge: 8 / 2 texel / 4 */
+        CHECK_NEAR(flux[c] / (albedo[c] * e[c] * 4.0), 1.0, 8.0 * texel / 2.0 / 4.0);
+    images_free(m, 3);
+    ssg_scene_destroy(&s);
+}
+
+/* A point light inside a closed 2 x 2 x 2 box (a box primitive: both faces of its walls
+   count), off centre so the faces see walls at different depths. */
+static void test_closed_box(void)
+{
+    struct ssg_scene *s = scene_from_text(
+        "lightmaps_box", "camera(position=[0, 0, 5], target=[0, 0, 0])\n"
+                         "m = material(albedo=[0.6, 0.6, 0.6])\n"
+                         "box(material=m, center=[0, 0, 0], size=[2, 2, 2])\n"
+                         "point_light(position=[0.2, -0.3, 0.1], color=[1, 1, 1], "
+                         "intensity=2)\n");
+    if (!s)
+        return;
+    const int res = 64;
+    struct ssg_image *m[3];
+    CHECK_EQ(maps_of(s, &FRAME, res, SSG_BACKEND_CPU, m), SSG_OK);
+    CHECK_EQ(m[0]->channels, 6);
+    struct ssg_lightmap_face faces[6];
+    CHECK_EQ(ssg_lightmap_faces(s, faces, 6), 6);
+    double flux = 0, worst = 0;
+    int holes = 0;
+    for (int f = 0; f < 6; f++)
+        for (int y = 0; y < res; y++)
+            for (int x = 0; x < res; x++) {
+                float z = px_at(m[0], f, x, y), p[3];
+                holes += z >= SSG_SHADOW_EMPTY;
+                ssg_lightmap_texel_point(&faces[f], res, x, y, z, p);
+                /* the point is on a wall: one coordinate at +-1, the others inside */
+                float out = fmaxf(fabsf(p[0]), fmaxf(fabsf(p[1]), fabsf(p[2])));
+                worst = fmax(worst, fabs(out - 1.0));
+                flux += px_at(m[2], 3 * f, x, y);
+            }
+    fprintf(stderr, "point light in a closed box: %d empty texels, texel points off the walls "
+            "by %.2g at most, flux %.5f = albedo I 4 pi x %.6f\n", holes, worst, flux,
+            flux / (0.6 * 2 * 4 * M_PI));
+    CHECK_EQ(holes, 0);
+    CHECK(worst < 1e-4);
+    CHECK_NEAR(flux / (0.6 * 2 * 4 * M_PI), 1.0, 1e-3);
+    images_free(m, 3);
+    ssg_scene_destroy(&s);
+}
+
+static void test_no_lights_and_dark_light(void)
+{
+    struct ssg_scene *s = scene_from_text(
+        "lightmaps_none", "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                          "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n");
+    struct ssg_scene *d = scene_from_text(
+        "lightmaps_dark", "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                          "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n"
+                          "point_light(position=[0, 1, 0], color=[1, 1, 1], intensity=0)\n");
+    if (!s || !d)
+        return;
+    struct ssg_image *m[3];
+    CHECK_EQ(maps_of(s, &FRAME, 16, SSG_BACKEND_CPU, m), SSG_OK);
+    int bad = 0;
+    for (size_t i = 0; i < 16 * 16; i++)
+        bad += m[0]->data[i] != SSG_SHADOW_EMPTY;
+    for (size_t i = 0; i < 3 * 16 * 16; i++)
+        bad += m[1]->data[i] != 0.0f || m[2]->data[i] != 0.0f;
+    CHECK_EQ(bad, 0);
+    images_free(m, 3);
+    CHECK_EQ(maps_of(d, &FRAME, 32, SSG_BACKEND_CPU, m), SSG_OK);
+    int floor = 0;
+    for (size_t i = 0; i < 18 * 32 * 32; i++) {
+        bad += m[2]->data[i] != 0.0f || isnan(m[1]->data[i]);
+        floor += i < 6 * 32 * 32 && m[0]->data[i] < SSG_SHADOW_EMPTY;
+    }
+    CHECK_EQ(bad, 0);
+    CHECK(floor > 900); /* the floor fills the -y face: it still casts shadows */
+    images_free(m, 3);
+    ssg_scene_destroy(&s);
+    ssg_scene_destroy(&d);
+}
+
+static void test_bounds(void)
+{
+    void *params = node_params(&ssg_node_lightmaps, NULL, 0);
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_param_set_text(ssg_node_lightmaps.params, params, "resolution=0", "<test>",
+                                "lightmaps", &d), SSG_E_RANGE);
+    CHECK_EQ(ssg_param_set_text(ssg_node_lightmaps.params, params, "resolution=65536",
+                                "<test>", "lightmaps", &d), SSG_E_RANGE);
+    ssg_diags_print(&d, stderr);
+    /* 114 point lights: 684 faces, 2 more than the normal image's 2048 channels hold */
+    char *text = malloc(114 * 80 + 200);
+    strcpy(text, "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                 "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n");
+    for (int i = 0; i < 114; i++)
+        sprintf(text + strlen(text), "point_light(position=[0, %d, 0], intensity=1)\n", i + 1);
+    struct ssg_scene *s = scene_from_text("lightmaps_many", text);
+    free(text);
+    struct ssg_lightmaps_params *p = params;
+    struct ssg_shape out[3];
+    char why[300];
+    p->resolution = 16;
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_E_SIZE);
+    fprintf(stderr, "114 point lights: %s\n", why);
+    ssg_scene_destroy(&s);
+    s = scene_from_text("lightmaps_one", "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                                         "point_light(position=[0, 1, 0], intensity=1)\n");
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_OK);
+    CHECK_EQ(out[0].channels * 100 + out[2].channels, 618);
+    p->resolution = 8192; /* 3 x 6 x 8192^2 floats: over 512 Mi */
+    CHECK_EQ(ssg_node_lightmaps.check_scene(p, s, out, why, sizeof why), SSG_E_SIZE);
+    fprintf(stderr, "a point light at 8192: %s\n", why);
+    ssg_scene_destroy(&s);
+    free(params);
+}
+
+static void test_threads(void)
+{
+    struct ssg_scene *s = scene_from_text(
+        "lightmaps_threads", "camera(position=[0, 1, 3.9], target=[0, 1, 0])\n"
+                             "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n"
+                             "box(center=[0.2, 0.3, 0], size=[0.5, 0.6, 0.5], "
+                             "rotate=[0, 20, 0])\n"
+                             "point_light(position=[0, 1.5, 0.2], intensity=2)\n"
+                             "directional_light(direction=[-0.3, -1, -0.2], intensity=1)\n");
+    if (!s)
+        return;
+    struct ssg_image *a[3], *b[3];
+    omp_set_num_threads(1);
+    CHECK_EQ(maps_of(s, &FRAME, 48, SSG_BACKEND_CPU, a), SSG_OK);
+    omp_set_num_threads(3);
+    CHECK_EQ(maps_of(s, &FRAME, 48, SSG_BACKEND_CPU, b), SSG_OK);
+    for (int i = 0; i < 3; i++)
+        CHECK(memcmp(a[i]->data, b[i]->data,
+                     sizeof(float) * 48 * 48 * (size_t)a[i]->channels) == 0);
+    images_free(a, 3);
+    images_free(b, 3);
+    ssg_scene_destroy(&s);
+}
+
+int main(void)
+{
+    test_solid_angles();
+    plane_under_sun("[0, 1, 0]");
+    plane_under_sun("[0, -1, 0]");
+    test_closed_box();
+    test_no_lights_and_dark_light();
+    test_bounds();
+    test_threads();
+    return check_report();
+}
