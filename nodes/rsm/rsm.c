@@ -33,7 +33,9 @@
  * the VPL sum. The offset o is the pixel's in an 8 x 8 Bayer tile ((b + 0.5) / 64, b the
  * Bayer index, shifted mod 1 and over the tile by the frame's seed): neighbours draw
  * different strata, which the upsampling's joint bilateral filter averages (interleaved
- * sampling, Keller and Heidrich 2001). samples = 0, or at least the VPL count, is the exact
+ * sampling, Keller and Heidrich 2001). The pixels of one tile cell make the same draws, so
+ * the 64 x S searches of the CDF are made once a run and a pixel only evaluates its draws
+ * (which also lets the CPU run 64 such pixels of a row as one vector loop). samples = 0, or at least the VPL count, is the exact
  * VPL sum; with cell = 1 that is the texel sum above. */
 #include <stdio.h>
 
@@ -189,13 +191,13 @@ static const struct ssg_port_desc outputs[] = {
 _Static_assert(SSG_COUNT(outputs) == SSG_RSM_OUTPUTS, "one entry a port enumerator");
 
 /* Flops per pixel (node.h), by reading rsm_cpu.c: about 40 for the pixel's world frame and
-   output, per draw about 8 for the stratum search and 30 for the VPL's term. samples = 0
-   counts every slot: an upper bound. */
+   output, per draw about 30 for the VPL's term (the searches are per run, not per pixel).
+   samples = 0 counts every slot: an upper bound. */
 static double rsm_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_rsm_consts *c = consts;
     (void)in;
-    return 40.0 + (c->p.samples > 0 ? 38.0 * c->p.samples : 30.0 * c->slots);
+    return 40.0 + 30.0 * (c->p.samples > 0 ? c->p.samples : c->slots);
 }
 
 const struct ssg_node_desc ssg_node_rsm = {

@@ -1,9 +1,8 @@
 // rsm.glsl - `rsm` on GL, last pass (rsm_gl.c): per pixel, rsm_cpu.c's gather: every VPL of
-// the list, or `samples` stratified draws by flux searched within their strata, each term
+// the list, or the `samples` draws of the pixel's tile cell (rsm_picks.glsl), each term
 // Phi cos cos / (d^2 max(d^2, r2)) x fade(d) in the CPU's order (`precise`).
-uniform sampler2DArray position, normal, albedo, list, count, first;
+uniform sampler2DArray position, normal, albedo, list, count, pick;
 uniform bool albedo_bound;
-layout(std430, binding = 1) readonly buffer Offsets { float offset[]; };
 layout(r32f) uniform writeonly image2DArray dst;
 uniform float rot[9];  // view -> world: world = eye + rot^T view
 uniform vec3 eye;
@@ -35,18 +34,6 @@ void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
     sum = vec3(sum.x + add.x, sum.y + add.y, sum.z + add.z);
 }
 
-int search(int lo, int hi, float u)
-{
-    while (lo < hi) {
-        int mid = (lo + hi) >> 1;
-        if (vpl(mid, 11) > u)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return lo;
-}
-
 vec3 gather(ivec2 p, vec3 x, vec3 nx, int n)
 {
     precise vec3 sum = vec3(0.0);
@@ -56,13 +43,10 @@ vec3 gather(ivec2 p, vec3 x, vec3 nx, int n)
         return sum;
     }
     float total = vpl(n - 1, 11);
-    float o = offset[(p.y % TILE) * TILE + p.x % TILE];
+    int t = (p.y % TILE) * TILE + p.x % TILE;
     precise float step = inv_samples * total;
     for (int k = 0; k < samples; k++) {
-        precise float u = (float(k) + o) * inv_samples * total;
-        int lo = int(texelFetch(first, ivec3(k, 0, 0), 0).r);
-        int hi = int(texelFetch(first, ivec3(k + 1, 0, 0), 0).r);
-        int i = search(lo, hi, u);
+        int i = int(texelFetch(pick, ivec3(k, t, 0), 0).r);
         precise float scale = step / vpl(i, 10);
         add_vpl(i, x, nx, scale, sum);
     }

@@ -70,9 +70,15 @@ struct ssg_rsm_consts {
 void ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const float *normal,
                    const float *flux, int y0, int y1, float *slots);
 
-/* Compacts the non-empty slots into list (in slot order, CDF filled), returns their count;
-   first[0..samples] gets the stratum starts (ssg_rsm_strata) when samples > 0. */
-int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *first);
+/* Compacts the non-empty slots into list (in slot order, CDF filled), returns their count
+   n. When 0 < samples < n, pick[t S + k] gets draw k of every pixel at cell t of the
+   offset tile (ssg_rsm_pick). */
+int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *pick);
+
+/* Draw k of tile cell t: the VPL whose CDF interval holds u = (k + offset[t]) / S x total,
+   the smallest i with cdf_i > u (its last VPL when rounding puts u at the total). Every
+   pixel of one tile cell makes the same draws, so they are searched once a run. */
+int ssg_rsm_pick(const struct ssg_rsm_consts *c, const float *list, int count, int t, int k);
 
 /* The smallest i in [lo, hi] with list[i].cdf > u, hi when none is. */
 static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)

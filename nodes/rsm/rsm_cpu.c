@@ -2,6 +2,7 @@
  * bands, the list and its CDF on the node's thread (a running sum: one order, whatever the
  * threads), then every pixel's draws in row bands. Each pixel depends on its own inputs
  * and the list alone, so the output is the same for every thread count. */
+#include "common/vector_loops.h" /* first: see there */
 #include <stdint.h>
 
 #include "rsm.h"
@@ -24,89 +25,122 @@ struct job {
     const struct ssg_rsm_consts *c;
     const struct ssg_io *io;
     const float *list;
-    const int *first;
+    const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
     int count, w, h;
 };
 
-/* The receiver in world space: x = eye + rot^T p, n = rot^T n_view. */
-static void to_world(const struct ssg_rsm_consts *c, const float p[3], const float n[3],
-                     float x[3], float nx[3])
+enum { CHUNK = 64 };
+
+/* Pixels of one row that share a tile cell, so the same draws: every SSG_RSM_TILE-th. */
+struct chunk {
+    float x[3][CHUNK], n[3][CHUNK];  /* the receivers, world */
+    float sum[3][CHUNK];
+    int bg[CHUNK];
+};
+
+/* The receivers in world space: x = eye + rot^T p, n = rot^T n_view. */
+static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
 {
-    for (int i = 0; i < 3; i++) {
-        x[i] = c->eye[i] + c->rot[i] * p[0] + c->rot[3 + i] * p[1] + c->rot[6 + i] * p[2];
-        nx[i] = c->rot[i] * n[0] + c->rot[3 + i] * n[1] + c->rot[6 + i] * n[2];
+    const struct ssg_rsm_consts *c = j->c;
+    const float *pos = j->io->in[SSG_RSM_IN_POSITION]->data;
+    const float *nrm = j->io->in[SSG_RSM_IN_NORMAL]->data;
+    size_t plane = (size_t)j->w * j->h;
+    for (int i = 0; i < len; i++) {
+        size_t at = (size_t)y * j->w + x0 + (size_t)i * SSG_RSM_TILE;
+        float p[3] = {pos[at], pos[plane + at], pos[2 * plane + at]};
+        float n[3] = {nrm[at], nrm[plane + at], nrm[2 * plane + at]};
+        k->bg[i] = n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f;
+        for (int r = 0; r < 3; r++) {
+            k->x[r][i] = c->eye[r] + c->rot[r] * p[0] + c->rot[3 + r] * p[1] +
+                         c->rot[6 + r] * p[2];
+            k->n[r][i] = c->rot[r] * n[0] + c->rot[3 + r] * n[1] + c->rot[6 + r] * n[2];
+            k->sum[r][i] = 0.0f;
+        }
     }
 }
 
-/* VPL v's irradiance x pi at x (normal nx), times `scale`, into sum: Phi cos_v cos_x /
-   (d^2 max(d^2, r2)) x fade(d) (rsm.c). */
-static inline void add_vpl(const struct ssg_rsm_consts *c, const float *v, const float x[3],
-                           const float nx[3], float scale, float sum[3])
+/* VPL v's irradiance x pi at every receiver of the chunk, times `scale`, into the sums:
+   Phi cos_v cos_x / (d^2 max(d^2, r2)) x fade(d) (rsm.c), nothing behind either surface.
+   Branch-free over the pixels (a select, never a NaN added), so it vectorises; each
+   pixel's sum still runs in draw order, as on GL. */
+static inline __attribute__((always_inline)) void
+add_vpl(const struct ssg_rsm_consts *c, const float *restrict v, float scale, int len,
+        struct chunk *restrict k)
 {
-    float d[3] = {v[0] - x[0], v[1] - x[1], v[2] - x[2]};
-    float d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    float cs = -(v[3] * d[0] + v[4] * d[1] + v[5] * d[2]);
-    float cr = nx[0] * d[0] + nx[1] * d[1] + nx[2] * d[2];
-    if (!(d2 > 0.0f) || !(cs > 0.0f) || !(cr > 0.0f))
-        return;
-    float g = cs * cr / (d2 * (d2 > v[9] ? d2 : v[9]));
-    float m = c->p.min_distance;
-    if (m > 0.0f) {
-        float t = (sqrtf(d2) - m) / m;
-        t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
-        g = g * (t * t * (3.0f - 2.0f * t));
+    const float vx = v[0], vy = v[1], vz = v[2], nx = v[3], ny = v[4], nz = v[5];
+    const float r2 = v[9], m = c->p.min_distance;
+    const float f0 = v[6], f1 = v[7], f2 = v[8];
+    for (int i = 0; i < len; i++) {
+        float dx = vx - k->x[0][i], dy = vy - k->x[1][i], dz = vz - k->x[2][i];
+        float d2 = dx * dx + dy * dy + dz * dz;
+        float cs = -(nx * dx + ny * dy + nz * dz);
+        float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
+        float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
+        if (m > 0.0f) {
+            float t = (sqrtf(d2) - m) / m;
+            t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+            g = g * (t * t * (3.0f - 2.0f * t));
+        }
+        int ok = (d2 > 0.0f) & (cs > 0.0f) & (cr > 0.0f);
+        float w = ok ? scale * g : 0.0f;
+        k->sum[0][i] += w * f0;
+        k->sum[1][i] += w * f1;
+        k->sum[2][i] += w * f2;
     }
-    float k = scale * g;
-    for (int i = 0; i < 3; i++)
-        sum[i] += k * v[6 + i];
 }
 
-/* The pixel's sum of Phi x G over the VPLs: all of them, or `samples` stratified draws. */
-static void gather(const struct job *j, int px, int py, const float x[3], const float nx[3],
-                   float sum[3])
+/* Every VPL (samples 0 or at least the count), or the tile cell's draws, each weighted
+   1 / (S pdf) = total / (S w). */
+SSG_VECTOR_CLONES
+static void gather(const struct job *j, const int *pick, int len, struct chunk *restrict k)
 {
     const struct ssg_rsm_consts *c = j->c;
     const int S = c->p.samples, n = j->count;
     if (S == 0 || S >= n) {
         for (int i = 0; i < n; i++)
-            add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, x, nx, 1.0f, sum);
+            add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
         return;
     }
     float total = j->list[(size_t)(n - 1) * SSG_RSM_SLOT + 11];
-    float o = c->offset[(py % SSG_RSM_TILE) * SSG_RSM_TILE + px % SSG_RSM_TILE];
     float step = c->inv_samples * total;
-    for (int k = 0; k < S; k++) {
-        float u = ((float)k + o) * c->inv_samples * total;
-        int i = ssg_rsm_search(j->list, j->first[k], j->first[k + 1], u);
-        const float *v = j->list + (size_t)i * SSG_RSM_SLOT;
-        add_vpl(c, v, x, nx, step / v[10], sum);
+    for (int s = 0; s < S; s++) {
+        const float *v = j->list + (size_t)pick[s] * SSG_RSM_SLOT;
+        add_vpl(c, v, step / v[10], len, k);
+    }
+}
+
+static void store_chunk(const struct job *j, int y, int x0, int len,
+                        const struct chunk *restrict k)
+{
+    const struct ssg_image *alb = j->io->in[SSG_RSM_IN_ALBEDO];
+    float *out = j->io->out[SSG_RSM_OUT_OUT]->data;
+    size_t plane = (size_t)j->w * j->h;
+    for (int i = 0; i < len; i++) {
+        size_t at = (size_t)y * j->w + x0 + (size_t)i * SSG_RSM_TILE;
+        for (int r = 0; r < 3; r++) {
+            float a = alb ? alb->data[r * plane + at] : 1.0f;
+            /* E / pi = sum / pi^2 */
+            out[r * plane + at] = k->bg[i] ? 0.0f : a * (k->sum[r][i] * 0.101321184f);
+        }
     }
 }
 
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
-    const struct ssg_image *pos = j->io->in[SSG_RSM_IN_POSITION];
-    const struct ssg_image *nrm = j->io->in[SSG_RSM_IN_NORMAL];
-    const struct ssg_image *alb = j->io->in[SSG_RSM_IN_ALBEDO];
-    float *out = j->io->out[SSG_RSM_OUT_OUT]->data;
-    size_t plane = (size_t)j->w * j->h;
+    struct chunk k;
     for (int y = y0; y < y1; y++)
-        for (int x = 0; x < j->w; x++) {
-            size_t at = (size_t)y * j->w + x;
-            float p[3], n[3], xw[3], nw[3], sum[3] = {0.0f, 0.0f, 0.0f};
-            for (int k = 0; k < 3; k++) {
-                p[k] = pos->data[k * plane + at];
-                n[k] = nrm->data[k * plane + at];
-            }
-            int bg = n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f;
-            if (!bg && j->count > 0) {
-                to_world(j->c, p, n, xw, nw);
-                gather(j, x, y, xw, nw, sum);
-            }
-            for (int k = 0; k < 3; k++) {
-                float a = alb ? alb->data[k * plane + at] : 1.0f;
-                out[k * plane + at] = bg ? 0.0f : a * (sum[k] * 0.101321184f); /* 1 / pi^2 */
+        for (int tx = 0; tx < SSG_RSM_TILE && tx < j->w; tx++) {
+            int t = (y % SSG_RSM_TILE) * SSG_RSM_TILE + tx;
+            const int *pick = j->pick + (size_t)t * j->c->p.samples;
+            int all = (j->w - tx + SSG_RSM_TILE - 1) / SSG_RSM_TILE; /* pixels tx + 8 i */
+            for (int i0 = 0; i0 < all; i0 += CHUNK) {
+                int len = all - i0 < CHUNK ? all - i0 : CHUNK;
+                int x0 = tx + i0 * SSG_RSM_TILE;
+                load_chunk(j, y, x0, len, &k);
+                if (j->count > 0)
+                    gather(j, pick, len, &k);
+                store_chunk(j, y, x0, len, &k);
             }
         }
 }
@@ -117,16 +151,16 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_rsm_consts *c = consts;
     size_t slot_floats = (size_t)c->slots * SSG_RSM_SLOT;
     size_t bytes = 2 * slot_floats * sizeof(float) +
-                   sizeof(int) * (size_t)(c->p.samples + 1);
+                   sizeof(int) * SSG_RSM_TILE * SSG_RSM_TILE * (size_t)c->p.samples;
     float *slots = ssg_node_scratch(ctx, bytes);
     if (!slots)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     float *list = slots + slot_floats;
-    int *first = (int *)(list + slot_floats);
+    int *pick = (int *)(list + slot_floats);
     struct cells_job cj = {c, io, slots};
     ssg_parallel_rows(c->faces * c->cells, 2, cell_rows, &cj);
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
-    struct job j = {c, io, list, first, ssg_rsm_list(c, slots, list, first), pos->width,
+    struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
                     pos->height};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;

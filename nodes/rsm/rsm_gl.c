@@ -1,7 +1,8 @@
 /* rsm_gl.c - GL side of the `rsm` node (method in rsm.c): the maps never leave the GPU. Four
  * passes: the slots of every cell (rsm_cells.glsl, one invocation a cell), the list with
- * its CDF and count (rsm_list.glsl, one invocation: a running sum), the strata's first
- * VPLs (rsm_strata.glsl, one invocation a stratum) and the gather (rsm.glsl). The faces
+ * its CDF and count (rsm_list.glsl, one invocation: a running sum), the draws of each
+ * cell of the offset tile (rsm_picks.glsl, one invocation a draw) and the gather
+ * (rsm.glsl). The faces
  * and the offset tile are the CPU's floats from prepare(), in storage buffers. */
 #include "gl/gl.h"
 #include "rsm.h"
@@ -31,21 +32,22 @@ static void list_pass(const struct ssg_node_ctx *ctx, const struct ssg_image *ce
     ssg_gl_dispatch(p, 1, 1);
 }
 
-static void strata_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
-                        const struct ssg_image *list, const struct ssg_image *count,
-                        struct ssg_image *first, struct ssg_gl_pass *p)
+static void picks_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                       const struct ssg_image *list, const struct ssg_image *count,
+                       struct ssg_image *pick, struct ssg_gl_pass *p)
 {
-    ssg_gl_pass_begin(p, ctx, "rsm_strata.glsl", NULL);
+    ssg_gl_pass_begin(p, ctx, "rsm_picks.glsl", NULL);
     ssg_gl_input(p, "list", list);
     ssg_gl_input(p, "count", count);
-    ssg_gl_output(p, "first", first);
+    ssg_gl_output(p, "pick", pick);
+    ssg_gl_buffer(p, 1, c->offset, sizeof c->offset);
     ssg_gl_float(p, "inv_samples", c->inv_samples);
-    ssg_gl_dispatch(p, c->p.samples + 1, 1);
+    ssg_gl_dispatch(p, c->p.samples, SSG_RSM_TILE * SSG_RSM_TILE);
 }
 
 static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
                         const struct ssg_io *io, const struct ssg_image *list,
-                        const struct ssg_image *count, const struct ssg_image *first,
+                        const struct ssg_image *count, const struct ssg_image *pick,
                         struct ssg_gl_pass *p)
 {
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
@@ -55,9 +57,8 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     ssg_gl_input(p, "albedo", io->in[SSG_RSM_IN_ALBEDO]);
     ssg_gl_input(p, "list", list);
     ssg_gl_input(p, "count", count);
-    ssg_gl_input(p, "first", first);
+    ssg_gl_input(p, "pick", pick);
     ssg_gl_output(p, "dst", io->out[SSG_RSM_OUT_OUT]);
-    ssg_gl_buffer(p, 1, c->offset, sizeof c->offset);
     ssg_gl_floats(p, "rot", 9, c->rot);
     ssg_gl_vec3(p, "eye", c->eye);
     ssg_gl_int(p, "samples", c->p.samples);
@@ -74,21 +75,22 @@ enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     struct ssg_image *cells = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_CELL_FLOATS);
     struct ssg_image *list = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_SLOT);
     struct ssg_image *count = ssg_gl_scratch(ctx, 1, 1, 1);
-    struct ssg_image *first = ssg_gl_scratch(ctx, c->p.samples + 1, 1, 1);
+    int draws = c->p.samples > 0 ? c->p.samples : 1;
+    struct ssg_image *pick = ssg_gl_scratch(ctx, draws, SSG_RSM_TILE * SSG_RSM_TILE, 1);
     enum ssg_err e = SSG_E_NOMEM;
     struct ssg_gl_pass p;
-    if (cells && list && count && first) {
+    if (cells && list && count && pick) {
         cells_pass(ctx, c, io, cells, &p);
         if (!(e = ssg_gl_pass_end(&p))) {
             list_pass(ctx, cells, list, count, &p);
             e = ssg_gl_pass_end(&p);
         }
         if (!e && c->p.samples > 0) {
-            strata_pass(ctx, c, list, count, first, &p);
+            picks_pass(ctx, c, list, count, pick, &p);
             e = ssg_gl_pass_end(&p);
         }
         if (!e) {
-            gather_pass(ctx, c, io, list, count, first, &p);
+            gather_pass(ctx, c, io, list, count, pick, &p);
             e = ssg_gl_pass_end(&p);
         }
     } else {
@@ -97,6 +99,6 @@ enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_scratch_release(&cells);
     ssg_gl_scratch_release(&list);
     ssg_gl_scratch_release(&count);
-    ssg_gl_scratch_release(&first);
+    ssg_gl_scratch_release(&pick);
     return e;
 }

@@ -89,7 +89,14 @@ void ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const flo
     }
 }
 
-int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *first)
+int ssg_rsm_pick(const struct ssg_rsm_consts *c, const float *list, int count, int t, int k)
+{
+    float total = list[(size_t)(count - 1) * SSG_RSM_SLOT + 11];
+    float u = ((float)k + c->offset[t]) * c->inv_samples * total;
+    return ssg_rsm_search(list, 0, count - 1, u);
+}
+
+int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *pick)
 {
     int count = 0;
     float cdf = 0.0f;
@@ -104,10 +111,9 @@ int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list
         v[11] = cdf;
         count++;
     }
-    /* Stratum k of the draws holds u in [k, k + 1] / S x total: its VPLs lie between the
-       search results of its ends, so a pixel searches only there (the same VPL as a
-       search of the whole list, since the float operations are monotonic). */
-    for (int k = 0; c->p.samples > 0 && count > 0 && k <= c->p.samples; k++)
-        first[k] = ssg_rsm_search(list, 0, count - 1, (float)k * c->inv_samples * cdf);
+    const int S = c->p.samples;
+    for (int t = 0; S > 0 && S < count && t < SSG_RSM_TILE * SSG_RSM_TILE; t++)
+        for (int k = 0; k < S; k++)
+            pick[t * S + k] = ssg_rsm_pick(c, list, count, t, k);
     return count;
 }
