@@ -1,7 +1,8 @@
 /* test_gl_rsm.c - CPU/GL parity of `rsm` (gl_parity.h's check) on maps made by hand
  * (rsm_maps.h): a directional light's disc with varied normals and flux, and a point
  * light's cube with scattered texels on every face; the exact VPL sum and stratified
- * draws, with and without albedo, with min_distance, several cell sizes.
+ * draws, with and without albedo, with min_distance, several cell sizes, and maps with
+ * more VPLs than one llvmpipe shader loop may walk.
  *
  * Where differences come from: every pass does rsm_vpl.c's and rsm_cpu.c's operations in
  * their order without fused multiply-adds (`precise`), and the faces and offsets are the
@@ -129,6 +130,18 @@ static void test_cube(void)
     run_case(s, &m, &g, "cube 24 draws", 1, drawn, 2, tol);
     const char *fine[] = {"samples=64", "cell=1", "min_distance=0.5"};
     run_case(s, &m, &g, "cube 64 draws cell 1", 0, fine, 3, tol);
+    gbuf_free(&g);
+    maps_free(&m);
+    /* More slots and VPLs than llvmpipe lets one shader loop walk (65535 iterations):
+       the list and the exact sum run in several dispatches (rsm_gl.c) */
+    m = maps_make(s, 192);
+    cube(&m);
+    g = gbuf_make(s, 12, 8);
+    receivers(&g);
+    const char *big[] = {"samples=0", "cell=2"};
+    run_case(s, &m, &g, "cube 192 exact cell 2", 1, big, 2, tol);
+    const char *big_drawn[] = {"samples=32", "cell=2"};
+    run_case(s, &m, &g, "cube 192 32 draws cell 2", 1, big_drawn, 2, tol);
     gbuf_free(&g);
     maps_free(&m);
     ssg_scene_destroy(&s);

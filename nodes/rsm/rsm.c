@@ -157,7 +157,7 @@ static const struct ssg_param_desc params[] = {
      .help = "VPLs drawn per pixel in proportion to their flux (stratified, weighted by "
              "1 / pdf); 0, or at least the VPL count, sums every VPL exactly"},
     {.name = "cell", SSG_FIELD_INT(struct ssg_rsm_params, cell), .def = 4, .min = 1,
-     .max = 256, .unit = "texels",
+     .max = 128, .unit = "texels",
      .help = "side of the map cells merged into VPLs (per dominant normal axis): larger is "
              "fewer, coarser VPLs; 1 = one VPL a texel"},
     {.name = "min_distance", SSG_FIELD_FLOAT(struct ssg_rsm_params, min_distance), .def = 0,

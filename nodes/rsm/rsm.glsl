@@ -4,9 +4,12 @@
 uniform sampler2DArray position, normal, albedo, list, count, pick;
 uniform bool albedo_bound;
 layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform image2DArray acc;  // the sums between the dispatches of an exact run
 uniform float rot[9];  // view -> world: world = eye + rot^T view
 uniform vec3 eye;
 uniform int samples;
+uniform int vpl0, vpls;       // exact: this dispatch's VPLs [vpl0, vpl0 + vpls)
+uniform bool first, last;     // exact: the first and the last dispatch
 uniform float inv_samples, min_distance;
 const int TILE = 8;    // SSG_RSM_TILE
 
@@ -34,11 +37,11 @@ void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
     sum = vec3(sum.x + add.x, sum.y + add.y, sum.z + add.z);
 }
 
-vec3 gather(ivec2 p, vec3 x, vec3 nx, int n)
+vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
 {
-    precise vec3 sum = vec3(0.0);
+    precise vec3 sum = sum0;
     if (samples == 0 || samples >= n) {
-        for (int i = 0; i < n; i++)
+        for (int i = vpl0; i < min(vpl0 + vpls, n); i++)
             add_vpl(i, x, nx, 1.0, sum);
         return sum;
     }
@@ -62,14 +65,25 @@ void main()
     vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
     int n = int(texelFetch(count, ivec3(0, 0, 0), 0).r);
+    bool exact = samples == 0 || samples >= n;
+    if (!exact && !first)
+        return; // a sampled run is done in its first dispatch
     precise vec3 sum = vec3(0.0);
+    if (exact && !first)
+        sum = vec3(imageLoad(acc, ivec3(p, 0)).r, imageLoad(acc, ivec3(p, 1)).r,
+                   imageLoad(acc, ivec3(p, 2)).r);
     if (!bg && n > 0) {
         precise vec3 x, nx;
         for (int i = 0; i < 3; i++) {
             x[i] = eye[i] + rot[i] * P.x + rot[3 + i] * P.y + rot[6 + i] * P.z;
             nx[i] = rot[i] * N.x + rot[3 + i] * N.y + rot[6 + i] * N.z;
         }
-        sum = gather(p, x, nx, n);
+        sum = gather(p, x, nx, n, sum);
+    }
+    if (exact && !last) {
+        for (int c = 0; c < 3; c++)
+            imageStore(acc, ivec3(p, c), vec4(sum[c]));
+        return;
     }
     vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0);
     precise vec3 e = vec3(sum.x * 0.101321184, sum.y * 0.101321184, sum.z * 0.101321184);

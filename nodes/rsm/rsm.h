@@ -34,6 +34,10 @@ enum { SSG_RSM_TILE = 8 };      /* side of the interleaved offset tile, px */
 enum { SSG_RSM_SLOT = 12 };     /* floats a VPL slot holds (below) */
 enum { SSG_RSM_CELL_FLOATS = 11 }; /* of them, what the cell pass writes: all but the CDF */
 enum { SSG_RSM_SAMPLES_MAX = 4096 };
+/* Iterations one GL invocation's loops may make: llvmpipe ends a loop after 65535 (its
+   LP_MAX_TGSI_LOOP_ITERATIONS), silently; the long walks are split into dispatches of at
+   most this many. */
+enum { SSG_RSM_GL_ITERATIONS = 32768 };
 /* The surface area of a texel is its footprint across the ray over |cos(n, ray)|, the
    cosine floored here so that a grazing texel's area stays finite. */
 #define SSG_RSM_MIN_COSINE 0.1f
