@@ -2,8 +2,12 @@
  * passes: the slots of every cell (rsm_cells.glsl, one invocation a cell), the list with
  * its CDF and count (rsm_list.glsl, one invocation: a running sum), the draws of each
  * cell of the offset tile (rsm_picks.glsl, one invocation a draw) and the gather
- * (rsm.glsl). The faces
- * and the offset tile are the CPU's floats from prepare(), in storage buffers. */
+ * (rsm.glsl). The list walk and an exact gather are split into dispatches of at most
+ * SSG_RSM_GL_ITERATIONS loop iterations, their state in scratch images between them:
+ * llvmpipe silently ends a loop after 65535 iterations. The faces and the offset tile are
+ * the CPU's floats from prepare(), in storage buffers. Known cost: the list walk is one
+ * thread's work (about 0.5 s on llvmpipe for a point light's cube at 512 with cell 4;
+ * a two-level prefix sum, row by row, would make it parallel). */
 #include "gl/gl.h"
 #include "rsm.h"
 
