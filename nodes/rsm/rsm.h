@@ -70,9 +70,9 @@ struct ssg_rsm_consts {
 
 /* Builds the slots of rows y in [y0, y1) of the (6 C) x (F C) slot grid (every bin of the
    row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, in slot
-   order, [11] left 0. */
-void ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const float *normal,
-                   const float *flux, int y0, int y1, float *slots);
+   order, [11] left 0. Returns 0 when out of memory (its working rows), 1 otherwise. */
+int ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const float *normal,
+                  const float *flux, int y0, int y1, float *slots);
 
 /* Compacts the non-empty slots into list (in slot order, CDF filled), returns their count
    n. When 0 < samples < n, pick[t S + k] gets draw k of every pixel at cell t of the

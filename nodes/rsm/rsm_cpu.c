@@ -11,14 +11,16 @@ struct cells_job {
     const struct ssg_rsm_consts *c;
     const struct ssg_io *io;
     float *slots;
+    _Atomic int failed; /* a band ran out of memory */
 };
 
 static void cell_rows(void *user, int y0, int y1)
 {
-    const struct cells_job *j = user;
-    ssg_rsm_cells(j->c, j->io->in[SSG_RSM_IN_MAP_DEPTH]->data,
-                  j->io->in[SSG_RSM_IN_MAP_NORMAL]->data, j->io->in[SSG_RSM_IN_MAP_FLUX]->data,
-                  y0, y1, j->slots);
+    struct cells_job *j = user;
+    if (!ssg_rsm_cells(j->c, j->io->in[SSG_RSM_IN_MAP_DEPTH]->data,
+                       j->io->in[SSG_RSM_IN_MAP_NORMAL]->data,
+                       j->io->in[SSG_RSM_IN_MAP_FLUX]->data, y0, y1, j->slots))
+        j->failed = 1;
 }
 
 struct job {
@@ -157,8 +159,10 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     float *list = slots + slot_floats;
     int *pick = (int *)(list + slot_floats);
-    struct cells_job cj = {c, io, slots};
+    struct cells_job cj = {c, io, slots, 0};
     ssg_parallel_rows(c->faces * c->cells, 2, cell_rows, &cj);
+    if (cj.failed)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
     struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
                     pos->height};
