@@ -1,0 +1,92 @@
+// rsm.glsl - `rsm` on GL, last pass (rsm_gl.c): per pixel, rsm_cpu.c's gather: every VPL of
+// the list, or the `samples` draws of the pixel's tile cell (rsm_picks.glsl), each term
+// Phi cos cos / (d^2 max(d^2, r2)) x fade(d) in the CPU's order (`precise`).
+uniform sampler2DArray position, normal, albedo, list, count, pick;
+uniform bool albedo_bound;
+layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform image2DArray acc;  // the sums between the dispatches of an exact run
+uniform float rot[9];  // view -> world: world = eye + rot^T view
+uniform vec3 eye;
+uniform int samples;
+uniform int vpl0, vpls;       // exact: this dispatch's VPLs [vpl0, vpl0 + vpls)
+uniform bool first, last;     // exact: the first and the last dispatch
+uniform float inv_samples, min_distance;
+const int TILE = 8;    // SSG_RSM_TILE
+
+int list_w;
+
+float vpl(int i, int k) { return texelFetch(list, ivec3(i % list_w, i / list_w, k), 0).r; }
+
+void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
+{
+    precise vec3 d = vec3(vpl(i, 0) - x.x, vpl(i, 1) - x.y, vpl(i, 2) - x.z);
+    precise float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+    precise float cs = -(vpl(i, 3) * d.x + vpl(i, 4) * d.y + vpl(i, 5) * d.z);
+    precise float cr = nx.x * d.x + nx.y * d.y + nx.z * d.z;
+    if (!(d2 > 0.0) || !(cs > 0.0) || !(cr > 0.0))
+        return;
+    float r2 = vpl(i, 9);
+    precise float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
+    if (min_distance > 0.0) {
+        precise float t = (sqrt(d2) - min_distance) / min_distance;
+        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+        g = g * (t * t * (3.0 - 2.0 * t));
+    }
+    precise float k = scale * g;
+    precise vec3 add = vec3(k * vpl(i, 6), k * vpl(i, 7), k * vpl(i, 8));
+    sum = vec3(sum.x + add.x, sum.y + add.y, sum.z + add.z);
+}
+
+vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
+{
+    precise vec3 sum = sum0;
+    if (samples == 0 || samples >= n) {
+        for (int i = vpl0; i < min(vpl0 + vpls, n); i++)
+            add_vpl(i, x, nx, 1.0, sum);
+        return sum;
+    }
+    float total = vpl(n - 1, 11);
+    int t = (p.y % TILE) * TILE + p.x % TILE;
+    precise float step = inv_samples * total;
+    for (int k = 0; k < samples; k++) {
+        int i = int(texelFetch(pick, ivec3(k, t, 0), 0).r);
+        precise float scale = step / vpl(i, 10);
+        add_vpl(i, x, nx, scale, sum);
+    }
+    return sum;
+}
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    list_w = textureSize(list, 0).x;
+    vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
+    bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
+    int n = int(texelFetch(count, ivec3(0, 0, 0), 0).r);
+    bool exact = samples == 0 || samples >= n;
+    if (!exact && !first)
+        return; // a sampled run is done in its first dispatch
+    precise vec3 sum = vec3(0.0);
+    if (exact && !first)
+        sum = vec3(imageLoad(acc, ivec3(p, 0)).r, imageLoad(acc, ivec3(p, 1)).r,
+                   imageLoad(acc, ivec3(p, 2)).r);
+    if (!bg && n > 0) {
+        precise vec3 x, nx;
+        for (int i = 0; i < 3; i++) {
+            x[i] = eye[i] + rot[i] * P.x + rot[3 + i] * P.y + rot[6 + i] * P.z;
+            nx[i] = rot[i] * N.x + rot[3 + i] * N.y + rot[6 + i] * N.z;
+        }
+        sum = gather(p, x, nx, n, sum);
+    }
+    if (exact && !last) {
+        for (int c = 0; c < 3; c++)
+            imageStore(acc, ivec3(p, c), vec4(sum[c]));
+        return;
+    }
+    vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0);
+    precise vec3 e = vec3(sum.x * 0.101321184, sum.y * 0.101321184, sum.z * 0.101321184);
+    precise vec3 o = vec3(a.x * e.x, a.y * e.y, a.z * e.z);
+    SSG_STORE3(dst, p, bg ? vec3(0.0) : o);
+}

@@ -1,0 +1,107 @@
+/* rsm.h - the `rsm` node (rsm.c): one diffuse bounce of the scene's own lights gathered from
+ * their reflective shadow maps (nodes/common/lightmap.h). Shared by both backends: the
+ * constants prepare() makes, the virtual point lights (VPLs) every run makes from the maps
+ * and the layout both backends store them in (rsm_vpl.c on the CPU, rsm_cells.glsl and
+ * rsm_list.glsl on GL, the same float operations in the same order).
+ *
+ * VPL slots. Face f of the maps is cut into C x C cells of `cell` x `cell` texels (C =
+ * ceil(R / cell)); a cell's non-empty texels fall into 6 bins by the dominant axis of their
+ * normal (ssg_lightmap_cube_face), so that a cell across a corner gives one VPL a wall, not
+ * one with a mean normal pointing into the room. Slot s = ((f C + cy) C + cx) 6 + bin, laid
+ * out on a (6 C) x (F C) grid: x = 6 cx + bin, y = f C + cy. A slot whose bin holds no flux
+ * is empty; the list keeps the non-empty slots in slot order with the running sum of their
+ * weights (the CDF). Thread safety: everything here is pure. */
+#ifndef SSG_RSM_H
+#define SSG_RSM_H
+
+#include "graph/node.h"
+#include "common/lightmap.h"
+
+/* Ports: the descriptor's arrays are indexed by these (SSG_<NODE>_IN_<PORT>, ...). */
+enum ssg_rsm_input {
+    SSG_RSM_IN_POSITION,
+    SSG_RSM_IN_NORMAL,
+    SSG_RSM_IN_MAP_DEPTH,
+    SSG_RSM_IN_MAP_NORMAL,
+    SSG_RSM_IN_MAP_FLUX,
+    SSG_RSM_IN_ALBEDO,
+    SSG_RSM_INPUTS
+};
+enum ssg_rsm_output { SSG_RSM_OUT_OUT, SSG_RSM_OUTPUTS };
+
+enum { SSG_RSM_BINS = 6 };      /* VPLs a cell may give: one a dominant normal axis */
+enum { SSG_RSM_TILE = 8 };      /* side of the interleaved offset tile, px */
+enum { SSG_RSM_SLOT = 12 };     /* floats a VPL slot holds (below) */
+enum { SSG_RSM_CELL_FLOATS = 11 }; /* of them, what the cell pass writes: all but the CDF */
+enum { SSG_RSM_SAMPLES_MAX = 4096 };
+/* Iterations one GL invocation's loops may make: llvmpipe ends a loop after 65535 (its
+   LP_MAX_TGSI_LOOP_ITERATIONS), silently; the long walks are split into dispatches of at
+   most this many. */
+enum { SSG_RSM_GL_ITERATIONS = 32768 };
+/* The surface area of a texel is its footprint across the ray over |cos(n, ray)|, the
+   cosine floored here so that a grazing texel's area stays finite. */
+#define SSG_RSM_MIN_COSINE 0.1f
+
+/* One slot (floats, in this order): [0..2] position (world, flux-weighted), [3..5] unit
+   normal (world, flux-weighted), [6..8] RGB flux Phi (W, summed), [9] r2 = area / pi (the
+   squared radius of a disc of the cell's surface area, the floor of d^2), [10] weight
+   w = Phi.r + Phi.g + Phi.b, [11] the CDF (the list only: the sum of w up to here). */
+
+struct ssg_rsm_params {
+    int samples;        /* VPLs drawn per pixel; 0 = every VPL (exact sum); default 64 */
+    int cell;           /* side of a VPL cell, map texels; default 4 */
+    float min_distance; /* senders nearer than this fade out (world units); default 0 */
+};
+
+struct ssg_rsm_consts {
+    struct ssg_rsm_params p;
+    float rot[9], eye[3];   /* view -> world: world = eye + rot^T view */
+    int faces, res;         /* the maps' face count F and side R */
+    int cells;              /* cells per face side C = ceil(R / cell) */
+    int slots;              /* F C C 6 */
+    /* per face, 16 floats: origin[3], u[3], v[3], axis[3], half, ortho, texel area across
+       the ray (orthographic; cube: 0, per texel), unused */
+    float face[16 * SSG_LIGHTMAP_FACES_MAX];
+    struct ssg_lightmap_face face_s[SSG_LIGHTMAP_FACES_MAX]; /* the same faces, for C */
+    /* the per-pixel offset of the stratified draws, tile^2 values in [0, 1) */
+    float offset[SSG_RSM_TILE * SSG_RSM_TILE];
+    float inv_samples;      /* 1 / samples (0 when samples = 0) */
+};
+
+/* Builds the slots of rows y in [y0, y1) of the (6 C) x (F C) slot grid (every bin of the
+   row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, in slot
+   order, [11] left 0. Returns 0 when out of memory (its working rows), 1 otherwise. */
+int ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const float *normal,
+                  const float *flux, int y0, int y1, float *slots);
+
+/* Compacts the non-empty slots into list (in slot order, CDF filled), returns their count
+   n. When 0 < samples < n, pick[t S + k] gets draw k of every pixel at cell t of the
+   offset tile (ssg_rsm_pick). */
+int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *pick);
+
+/* Draw k of tile cell t: the VPL whose CDF interval holds u = (k + offset[t]) / S x total,
+   the smallest i with cdf_i > u (its last VPL when rounding puts u at the total). Every
+   pixel of one tile cell makes the same draws, so they are searched once a run. */
+int ssg_rsm_pick(const struct ssg_rsm_consts *c, const float *list, int count, int t, int k);
+
+/* The smallest i in [lo, hi] with list[i].cdf > u, hi when none is. */
+static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)
+{
+    while (lo < hi) {
+        int mid = (lo + hi) >> 1;
+        if (list[(size_t)mid * SSG_RSM_SLOT + 11] > u)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io);
+enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                            const struct ssg_io *io);
+
+extern const struct ssg_node_desc ssg_node_rsm;
+
+#endif

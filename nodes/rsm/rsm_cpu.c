@@ -1,0 +1,171 @@
+/* rsm_cpu.c - CPU side of the `rsm` node (method in rsm.c): the VPL slots of the maps in row
+ * bands, the list and its CDF on the node's thread (a running sum: one order, whatever the
+ * threads), then every pixel's draws in row bands. Each pixel depends on its own inputs
+ * and the list alone, so the output is the same for every thread count. */
+#include "common/vector_loops.h" /* first: see there */
+#include <stdint.h>
+
+#include "rsm.h"
+
+struct cells_job {
+    const struct ssg_rsm_consts *c;
+    const struct ssg_io *io;
+    float *slots;
+    _Atomic int failed; /* a band ran out of memory */
+};
+
+static void cell_rows(void *user, int y0, int y1)
+{
+    struct cells_job *j = user;
+    if (!ssg_rsm_cells(j->c, j->io->in[SSG_RSM_IN_MAP_DEPTH]->data,
+                       j->io->in[SSG_RSM_IN_MAP_NORMAL]->data,
+                       j->io->in[SSG_RSM_IN_MAP_FLUX]->data, y0, y1, j->slots))
+        j->failed = 1;
+}
+
+struct job {
+    const struct ssg_rsm_consts *c;
+    const struct ssg_io *io;
+    const float *list;
+    const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
+    int count, w, h;
+};
+
+enum { CHUNK = 64 };
+
+/* Pixels of one row that share a tile cell, so the same draws: every SSG_RSM_TILE-th. */
+struct chunk {
+    float x[3][CHUNK], n[3][CHUNK];  /* the receivers, world */
+    float sum[3][CHUNK];
+    int bg[CHUNK];
+};
+
+/* The receivers in world space: x = eye + rot^T p, n = rot^T n_view. */
+static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
+{
+    const struct ssg_rsm_consts *c = j->c;
+    const float *pos = j->io->in[SSG_RSM_IN_POSITION]->data;
+    const float *nrm = j->io->in[SSG_RSM_IN_NORMAL]->data;
+    size_t plane = (size_t)j->w * j->h;
+    for (int i = 0; i < len; i++) {
+        size_t at = (size_t)y * j->w + x0 + (size_t)i * SSG_RSM_TILE;
+        float p[3] = {pos[at], pos[plane + at], pos[2 * plane + at]};
+        float n[3] = {nrm[at], nrm[plane + at], nrm[2 * plane + at]};
+        k->bg[i] = n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f;
+        for (int r = 0; r < 3; r++) {
+            k->x[r][i] = c->eye[r] + c->rot[r] * p[0] + c->rot[3 + r] * p[1] +
+                         c->rot[6 + r] * p[2];
+            k->n[r][i] = c->rot[r] * n[0] + c->rot[3 + r] * n[1] + c->rot[6 + r] * n[2];
+            k->sum[r][i] = 0.0f;
+        }
+    }
+}
+
+/* VPL v's irradiance x pi at every receiver of the chunk, times `scale`, into the sums:
+   Phi cos_v cos_x / (d^2 max(d^2, r2)) x fade(d) (rsm.c), nothing behind either surface.
+   Branch-free over the pixels (a select, never a NaN added), so it vectorises; each
+   pixel's sum still runs in draw order, as on GL. */
+static inline __attribute__((always_inline)) void
+add_vpl(const struct ssg_rsm_consts *c, const float *restrict v, float scale, int len,
+        struct chunk *restrict k)
+{
+    const float vx = v[0], vy = v[1], vz = v[2], nx = v[3], ny = v[4], nz = v[5];
+    const float r2 = v[9], m = c->p.min_distance;
+    const float f0 = v[6], f1 = v[7], f2 = v[8];
+    for (int i = 0; i < len; i++) {
+        float dx = vx - k->x[0][i], dy = vy - k->x[1][i], dz = vz - k->x[2][i];
+        float d2 = dx * dx + dy * dy + dz * dz;
+        float cs = -(nx * dx + ny * dy + nz * dz);
+        float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
+        float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
+        if (m > 0.0f) {
+            float t = (sqrtf(d2) - m) / m;
+            t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+            g = g * (t * t * (3.0f - 2.0f * t));
+        }
+        int ok = (d2 > 0.0f) & (cs > 0.0f) & (cr > 0.0f);
+        float w = ok ? scale * g : 0.0f;
+        k->sum[0][i] += w * f0;
+        k->sum[1][i] += w * f1;
+        k->sum[2][i] += w * f2;
+    }
+}
+
+/* Every VPL (samples 0 or at least the count), or the tile cell's draws, each weighted
+   1 / (S pdf) = total / (S w). */
+SSG_VECTOR_CLONES
+static void gather(const struct job *j, const int *pick, int len, struct chunk *restrict k)
+{
+    const struct ssg_rsm_consts *c = j->c;
+    const int S = c->p.samples, n = j->count;
+    if (S == 0 || S >= n) {
+        for (int i = 0; i < n; i++)
+            add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+        return;
+    }
+    float total = j->list[(size_t)(n - 1) * SSG_RSM_SLOT + 11];
+    float step = c->inv_samples * total;
+    for (int s = 0; s < S; s++) {
+        const float *v = j->list + (size_t)pick[s] * SSG_RSM_SLOT;
+        add_vpl(c, v, step / v[10], len, k);
+    }
+}
+
+static void store_chunk(const struct job *j, int y, int x0, int len,
+                        const struct chunk *restrict k)
+{
+    const struct ssg_image *alb = j->io->in[SSG_RSM_IN_ALBEDO];
+    float *out = j->io->out[SSG_RSM_OUT_OUT]->data;
+    size_t plane = (size_t)j->w * j->h;
+    for (int i = 0; i < len; i++) {
+        size_t at = (size_t)y * j->w + x0 + (size_t)i * SSG_RSM_TILE;
+        for (int r = 0; r < 3; r++) {
+            float a = alb ? alb->data[r * plane + at] : 1.0f;
+            /* E / pi = sum / pi^2 */
+            out[r * plane + at] = k->bg[i] ? 0.0f : a * (k->sum[r][i] * 0.101321184f);
+        }
+    }
+}
+
+static void rows(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    struct chunk k;
+    for (int y = y0; y < y1; y++)
+        for (int tx = 0; tx < SSG_RSM_TILE && tx < j->w; tx++) {
+            int t = (y % SSG_RSM_TILE) * SSG_RSM_TILE + tx;
+            const int *pick = j->pick + (size_t)t * j->c->p.samples;
+            int all = (j->w - tx + SSG_RSM_TILE - 1) / SSG_RSM_TILE; /* pixels tx + 8 i */
+            for (int i0 = 0; i0 < all; i0 += CHUNK) {
+                int len = all - i0 < CHUNK ? all - i0 : CHUNK;
+                int x0 = tx + i0 * SSG_RSM_TILE;
+                load_chunk(j, y, x0, len, &k);
+                if (j->count > 0)
+                    gather(j, pick, len, &k);
+                store_chunk(j, y, x0, len, &k);
+            }
+        }
+}
+
+enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io)
+{
+    const struct ssg_rsm_consts *c = consts;
+    size_t slot_floats = (size_t)c->slots * SSG_RSM_SLOT;
+    size_t bytes = 2 * slot_floats * sizeof(float) +
+                   sizeof(int) * SSG_RSM_TILE * SSG_RSM_TILE * (size_t)c->p.samples;
+    float *slots = ssg_node_scratch(ctx, bytes);
+    if (!slots)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    float *list = slots + slot_floats;
+    int *pick = (int *)(list + slot_floats);
+    struct cells_job cj = {c, io, slots, 0};
+    ssg_parallel_rows(c->faces * c->cells, 2, cell_rows, &cj);
+    if (cj.failed)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
+    struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
+                    pos->height};
+    ssg_parallel_rows(pos->height, 4, rows, &j);
+    return SSG_OK;
+}
