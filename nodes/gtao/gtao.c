@@ -52,7 +52,7 @@
  * within asin(0.1) of the tangent plane (|proj N|^2 < 0.01, near-grazing views) are
  * skipped, as in hbao.
  * Second depth layer (ours; `back` connected, e.g. gbuffer.back, +inf = nothing behind;
- * measured against reference_ao in /work/reports/layer2.md):
+ * measured against reference_ao in docs/accuracy.md, "A second depth layer"):
  * a sample at pixel q stands for the solid segment of q's camera ray from its depth to
  * its back depth, and occludes exactly the directions from P that pass through that
  * segment: in the slice, the arc between its front point Q and its back point B (B on
