@@ -203,9 +203,10 @@ const struct ssg_node_desc ssg_node_ssilvb = {
            "sum of |proj N| A (A the slice's open measure), ^power; exactly 1 when nothing "
            "occludes, background 1. A sample's newly set bits receive its `light` when its "
            "surface faces the pixel: bounce = strength albedo sum |proj N| A sum L bits / "
-           "32 / sum |proj N| A (background 0). CPU and GL evaluate the same operations; a "
-           "sector boundary can round to the other side, so they agree within 0.05 per "
-           "pixel and 1e-3 in the mean (tests/test_gl_ssilvb.c).",
+           "32 / sum |proj N| A (background 0). CPU and GL evaluate the same operations in "
+           "the same order and agree within 2e-6 (tests/test_gl_ssilvb.c, llvmpipe: "
+           "identical but where pow rounds; a GL whose sqrt or division rounds "
+           "differently could move a sector boundary, 1/32 of a slice).",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssilvb_params),
     .consts_size = sizeof(struct ssg_ssilvb_consts),
