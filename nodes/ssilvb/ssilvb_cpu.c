@@ -46,7 +46,9 @@ struct job {
     const float *depth;           /* plane the depth is read from */
     float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
     const float *light[3], *albedo[3];
-    const float *back;            /* back depth plane, NULL = constant thickness */
+    const float *back;            /* back depth plane (unconnected: any plane, times 0) */
+    float back_mul;               /* 1 with back, 0 without: a load under a condition
+                                     would stop the step loop vectorising */
     float *padded;                /* the depth padded by +inf (ssg_sampling_pad_depth) */
     int pw;                       /* w + 2 */
     float *ao, *bounce;           /* outputs; bounce: three planes */
@@ -109,13 +111,16 @@ static inline __attribute__((always_inline)) float ign(float x, float y)
     return b - floorf(b);
 }
 
-/* Population count of 32 bits by shifts and masks (vectorises, unlike a popcnt call). */
+/* Population count of 32 bits by shifts, masks and adds. It vectorises where a popcnt
+   would not; GCC recognises the usual form with a final multiply as popcount and then
+   leaves the loop scalar, so this one adds the halves instead. */
 static inline __attribute__((always_inline)) uint32_t bit_count(uint32_t x)
 {
-    x = x - ((x >> 1) & 0x55555555u);
+    x = (x & 0x55555555u) + ((x >> 1) & 0x55555555u);
     x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
-    x = (x + (x >> 4)) & 0x0F0F0F0Fu;
-    return (x * 0x01010101u) >> 24;
+    x = (x & 0x0F0F0F0Fu) + ((x >> 4) & 0x0F0F0F0Fu);
+    x = (x & 0x00FF00FFu) + ((x >> 8) & 0x00FF00FFu);
+    return (x & 0x0000FFFFu) + (x >> 16);
 }
 
 /* The sectors whose centres lie in [min(u0, u1), max(u0, u1)] (u in [0, 1]). */
@@ -231,59 +236,75 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
     }
 }
 
-/* One sample of side m (sg = 1: +D at (ou, ov), sg = -1: -D at (-ou, -ov)): the sectors
-   it newly marks and, through them, its light when it faces the pixel. */
+/* Where the sample of side sg (1: +D at (ou, ov), -1: -D at (-ou, -ov)) lies: its index
+   in the padded depth plane and, clamped to the image, in the other planes (off screen
+   the padded plane gives +inf, so what the clamped pixel holds is never used). */
 static inline __attribute__((always_inline)) void
-sample_side(const struct job *j, struct chunk *restrict k, int i, float ou, float ov,
-            float sg, float ok, float bb, float e, float y)
+side_index(const struct job *j, const struct chunk *restrict k, int i, float su, float sv,
+           float y, int32_t *pidx, int32_t *q)
 {
     const float fw = (float)j->w, fh = (float)j->h;
-    const float *restrict plane = j->padded + j->pw + 1;
-    const float invf = 1.0f / j->c->proj.f, r2max = j->c->p.radius * j->c->p.radius;
-    float su = sg * ou, sv = sg * ov;
-    float pr = su * k->vxf[i] + sv * k->vyf[i], pa = su * k->ax[i] + sv * k->ay[i];
-    float l = k->lp[i], ldp = k->ldp[i];
-    float a = pa - l, r = pr - l;
-    float dq = plane[ssg_sampling_padded_index(k->xf[i], y, su, sv, fw, fh, j->pw)];
-    /* The unpadded pixel for the other planes (clamped; off screen dq is +inf). */
+    *pidx = ssg_sampling_padded_index(k->xf[i], y, su, sv, fw, fh, j->pw);
     float qx = k->xf[i] + su, qy = y + sv;
     qx = qx > 0.0f ? qx : 0.0f;
     qx = qx < fw - 1.0f ? qx : fw - 1.0f;
     qy = qy > 0.0f ? qy : 0.0f;
     qy = qy < fh - 1.0f ? qy : fh - 1.0f;
-    size_t q = (size_t)((int32_t)qy * j->w + (int32_t)qx);
+    *q = (int32_t)qy * j->w + (int32_t)qx;
+}
+
+/* Loop invariants in locals: read through the job inside the loop they could alias its
+   stores as far as the compiler knows, which keeps it scalar. */
+struct consts_v {
+    float invf, r2max, thickness;
+};
+
+/* The sample of side sg at depth dq (back depth bk, normal nq there): the sectors it
+   newly marks in *mask, and the weight t = w (new bits) / 32 its light gets when its
+   surface faces P (0 otherwise). Values in, values out: the gathers and the stores stay
+   in the caller's loop, where restrict lets it vectorise. */
+static inline __attribute__((always_inline)) float
+side_bits(const struct consts_v *cv, const struct chunk *restrict k, int i, float su,
+          float sv, float sg, float ok, float bb, float e, float dq, float bk, float qnx,
+          float qny, float qnz, uint32_t *mask)
+{
+    const float invf = cv->invf, r2max = cv->r2max;
+    float pr = su * k->vxf[i] + sv * k->vyf[i], pa = su * k->ax[i] + sv * k->ay[i];
+    float l = k->lp[i], ldp = k->ldp[i];
+    float a = pa - l, r = pr - l;
     float hv = dq * r + ldp;
     float d2 = hv * hv + dq * dq * e;
     int valid = (ok > 0.0f) & (dq < INFINITY) & (d2 <= r2max);
-    float bk = j->back ? j->back[q] : 0.0f;
-    float db = bk > dq ? bk : dq + j->c->p.thickness;
+    float db = bk > dq ? bk : dq + cv->thickness; /* bk 0 or NaN: the constant */
     db = db < BACK_MAX ? db : BACK_MAX;
     float dqs = valid ? dq : 1.0f, dbs = valid ? db : 1.0f;
     float cn = k->cn[i], sn = k->sn[i], g1 = k->g1[i], ia = k->ia[i];
-    int m = sg > 0.0f ? 0 : 1;
-    float lim = k->lim[m][i];
+    float lim = sg > 0.0f ? k->lim[0][i] : k->lim[1][i];
     float uf = sector_u(dqs * a + ldp, dqs * bb, sg, cn, sn, g1, ia, lim);
     float ub = sector_u(dbs * a + ldp, dbs * bb, sg, cn, sn, g1, ia, lim);
-    uint32_t bits = valid ? sector_bits(uf, ub) : 0u;
-    uint32_t fresh = bits & ~k->mask[i];
-    k->mask[i] |= bits;
+    uint32_t sb = sector_bits(uf, ub);
+    uint32_t bits = valid ? sb : 0u;
+    uint32_t fresh = bits & ~*mask;
+    *mask |= bits;
     /* The sender faces P when N_q . (Q - P) < 0, Q = dq (a_u', a_v', -1). */
     float aq = k->au[i] + su * invf, vq = k->av[i] - sv * invf;
-    float qnx = j->nrm[0][q], qny = j->nrm[1][q], qnz = j->nrm[2][q];
     float facing = dqs * (qnx * aq + qny * vq - qnz) -
                    k->dp[i] * (qnx * k->au[i] + qny * k->av[i] - qnz);
-    float t = facing < 0.0f ? (float)bit_count(fresh) * k->w32[i] : 0.0f;
-    for (int ch = 0; ch < 3; ch++) {
-        float lq = j->light[ch][q];
-        k->bsum[ch][i] += t > 0.0f ? t * lq : 0.0f;
-    }
+    return facing < 0.0f ? (float)(int32_t)bit_count(fresh) * k->w32[i] : 0.0f;
 }
 
 /* Step st of both sides: the samples lie at (st + u) step along the screen direction,
-   rounded to the nearest pixel (ties to even), -D's at the point reflection. */
+   rounded to the nearest pixel (ties to even), -D's at the point reflection; +D first. */
 static inline __attribute__((always_inline)) void
 step_both(const struct job *j, struct chunk *restrict k, int len, float y, float sf)
 {
+    const float *restrict depth = j->padded + j->pw + 1, *restrict back = j->back;
+    const float *restrict n0 = j->nrm[0], *restrict n1 = j->nrm[1], *restrict n2 = j->nrm[2];
+    const float *restrict l0 = j->light[0], *restrict l1 = j->light[1];
+    const float *restrict l2 = j->light[2];
+    const float bmul = j->back_mul;
+    const struct consts_v cv = {1.0f / j->c->proj.f, j->c->p.radius * j->c->p.radius,
+                                j->c->p.thickness};
     for (int i = 0; i < len; i++) {
         float t = sf + k->u[i];
         float ou = nearbyintf(k->du[i] * t), ov = nearbyintf(k->dv[i] * t);
@@ -292,8 +313,27 @@ step_both(const struct job *j, struct chunk *restrict k, int len, float y, float
         float bb = ou * k->bx[i] + ov * k->by[i];
         float ok = bb > fabsf(c) ? 1.0f : 0.0f;
         float e = bd * bd + c * c;
-        sample_side(j, k, i, ou, ov, 1.0f, ok, bb, e, y);
-        sample_side(j, k, i, ou, ov, -1.0f, ok, bb, e, y);
+        uint32_t mask = k->mask[i];
+        int32_t p0, q0, p1, q1;
+        side_index(j, k, i, ou, ov, y, &p0, &q0);
+        float w0 = side_bits(&cv, k, i, ou, ov, 1.0f, ok, bb, e, depth[p0], back[q0] * bmul,
+                             n0[q0], n1[q0], n2[q0], &mask);
+        side_index(j, k, i, -ou, -ov, y, &p1, &q1);
+        float w1 = side_bits(&cv, k, i, -ou, -ov, -1.0f, ok, bb, e, depth[p1],
+                             back[q1] * bmul, n0[q1], n1[q1], n2[q1], &mask);
+        /* Written out for both sides (a loop over them is not unrolled before the
+           vectoriser sees it); +D's light first. Loads before the selects: a load under
+           a condition would not vectorise. */
+        float a0 = l0[q0], a1 = l1[q0], a2 = l2[q0], c0 = l0[q1], c1 = l1[q1], c2 = l2[q1];
+        float s0 = k->bsum[0][i], s1 = k->bsum[1][i], s2 = k->bsum[2][i];
+        s0 += w0 > 0.0f ? w0 * a0 : 0.0f;
+        s1 += w0 > 0.0f ? w0 * a1 : 0.0f;
+        s2 += w0 > 0.0f ? w0 * a2 : 0.0f;
+        s0 += w1 > 0.0f ? w1 * c0 : 0.0f;
+        s1 += w1 > 0.0f ? w1 * c1 : 0.0f;
+        s2 += w1 > 0.0f ? w1 * c2 : 0.0f;
+        k->bsum[0][i] = s0, k->bsum[1][i] = s1, k->bsum[2][i] = s2;
+        k->mask[i] = mask;
     }
 }
 
@@ -392,7 +432,8 @@ enum ssg_err ssg_ssilvb_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     }
     j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
     j.depth_sign = dep ? 1.0f : -1.0f;
-    j.back = back ? back->data : NULL;
+    j.back = back ? back->data : j.depth;
+    j.back_mul = back ? 1.0f : 0.0f;
     j.pw = j.w + 2;
     j.padded = ssg_node_scratch(ctx, (size_t)j.pw * (size_t)(j.h + 2) * sizeof *j.padded);
     if (!j.padded)
