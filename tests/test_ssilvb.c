@@ -162,8 +162,10 @@ static void corner_case(const char *const *sets, int n, double band_tol, double 
     for (size_t o = 0; o < (size_t)W * H; o++)
         back->data[o] = g.depth->data[o] + 100.0f;
     const char *all[PIN_SETS_MAX];
-    const char *thick[] = {"thickness=100"};
-    int na = pin_sets(all, thick, 1, sets, n);
+    /* Pinned: the closed forms are for plain visibility and bounce (power and strength 1)
+       with a solid wall. */
+    const char *pinned[] = {"thickness=100", "power=1", "strength=1"};
+    int na = pin_sets(all, pinned, 3, sets, n);
     omp_set_num_threads(1);
     struct result one = run(&g, light, alb, NULL, all, na);
     omp_set_num_threads(2);
@@ -315,14 +317,14 @@ static void test_bar(void)
     char cap[64], cap1[64];
     snprintf(cap, sizeof cap, "max_screen_radius=%.6f", rp);
     snprintf(cap1, sizeof cap1, "max_screen_radius=%.6f", rp * 11.0 / 12.0);
-    const char *thin[] = {"radius=0.4", "slices=8", "steps=12", "thickness=0.1", cap};
-    const char *thick[] = {"radius=0.4", "slices=8", "steps=12", "thickness=0.3", cap};
-    const char *viab[] = {"radius=0.4", "slices=8", "steps=12", "thickness=0", cap};
-    const char *less[] = {"radius=0.4", "slices=8", "steps=11", "thickness=0.1", cap1};
-    struct result a = run(&g, light, alb, NULL, thin, 5);
-    struct result b = run(&g, light, alb, NULL, thick, 5);
-    struct result c = run(&g, light, alb, back, viab, 5);
-    struct result d = run(&g, light, alb, NULL, less, 5);
+    const char *thin[] = {"power=1", "radius=0.4", "slices=8", "steps=12", "thickness=0.1", cap};
+    const char *thick[] = {"power=1", "radius=0.4", "slices=8", "steps=12", "thickness=0.3", cap};
+    const char *viab[] = {"power=1", "radius=0.4", "slices=8", "steps=12", "thickness=0", cap};
+    const char *less[] = {"power=1", "radius=0.4", "slices=8", "steps=11", "thickness=0.1", cap1};
+    struct result a = run(&g, light, alb, NULL, thin, 6);
+    struct result b = run(&g, light, alb, NULL, thick, 6);
+    struct result c = run(&g, light, alb, back, viab, 6);
+    struct result d = run(&g, light, alb, NULL, less, 6);
     if (a.ao && b.ao && c.ao && d.ao) {
         double ea, fa, eb, fb, ec, fc, ed, fd;
         bar_errors(a.ao, 0.1, 0.4, &ea, &fa);

@@ -34,12 +34,12 @@ enum ssg_ssilvb_output {
 struct ssg_ssilvb_params {
     int slices;              /* slice directions per pixel, 1..32; default 4 */
     int steps;               /* samples per side of a slice, 1..64; default 12 */
-    float radius;            /* R, scene units, > 0; default 1 */
+    float radius;            /* R, scene units, > 0; default 2 */
     float thickness;         /* t, scene units: a sample occludes from its depth to its
                                 depth + t along its ray (`back` unconnected, or where back
                                 is not behind the sample); default 0.5 */
-    float power;             /* ao = visibility^power, 0.1..8; default 1 */
-    float strength;          /* bounce scale, 0..16; default 1 */
+    float power;             /* ao = visibility^power, 0.1..8; default 2.5 */
+    float strength;          /* bounce scale, 0..16; default 1.2 */
     float max_screen_radius; /* px; caps the march length (0 = no cap); default 0 */
 };
 
