@@ -296,7 +296,8 @@ side_bits(const struct consts_v *cv, const struct chunk *restrict k, int i, floa
 /* Step st of both sides: the samples lie at (st + u) step along the screen direction,
    rounded to the nearest pixel (ties to even), -D's at the point reflection; +D first. */
 static inline __attribute__((always_inline)) void
-step_both(const struct job *j, struct chunk *restrict k, int len, float y, float sf)
+step_both(const struct job *j, struct chunk *restrict k, int len, float y, float sf,
+          int has_back)
 {
     const float *restrict depth = j->padded + j->pw + 1, *restrict back = j->back;
     const float *restrict n0 = j->nrm[0], *restrict n1 = j->nrm[1], *restrict n2 = j->nrm[2];
@@ -316,11 +317,12 @@ step_both(const struct job *j, struct chunk *restrict k, int len, float y, float
         uint32_t mask = k->mask[i];
         int32_t p0, q0, p1, q1;
         side_index(j, k, i, ou, ov, y, &p0, &q0);
-        float w0 = side_bits(&cv, k, i, ou, ov, 1.0f, ok, bb, e, depth[p0], back[q0] * bmul,
-                             n0[q0], n1[q0], n2[q0], &mask);
         side_index(j, k, i, -ou, -ov, y, &p1, &q1);
-        float w1 = side_bits(&cv, k, i, -ou, -ov, -1.0f, ok, bb, e, depth[p1],
-                             back[q1] * bmul, n0[q1], n1[q1], n2[q1], &mask);
+        float b0 = has_back ? back[q0] * bmul : 0.0f, b1 = has_back ? back[q1] * bmul : 0.0f;
+        float w0 = side_bits(&cv, k, i, ou, ov, 1.0f, ok, bb, e, depth[p0], b0, n0[q0],
+                             n1[q0], n2[q0], &mask);
+        float w1 = side_bits(&cv, k, i, -ou, -ov, -1.0f, ok, bb, e, depth[p1], b1, n0[q1],
+                             n1[q1], n2[q1], &mask);
         /* Written out for both sides (a loop over them is not unrolled before the
            vectoriser sees it); +D's light first. Loads before the selects: a load under
            a condition would not vectorise. */
@@ -376,9 +378,11 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
     }
 }
 
-SSG_VECTOR_CLONES
-static void ssilvb_chunk_row(const struct job *j, struct chunk *restrict k, int y, int x0,
-                             int len)
+/* has_back is a constant in each copy (ssilvb_chunk_row): without the back input the
+   loop reads no back plane at all. */
+static inline __attribute__((always_inline)) void
+chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len,
+           int has_back)
 {
     const struct ssg_ssilvb_consts *c = j->c;
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
@@ -388,10 +392,20 @@ static void ssilvb_chunk_row(const struct job *j, struct chunk *restrict k, int 
     for (int s = 0; s < c->p.slices; s++) {
         setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++)
-            step_both(j, k, len, (float)y, (float)st);
+            step_both(j, k, len, (float)y, (float)st, has_back);
         finish_slice(k, len);
     }
     finish_chunk(j, k, o, len);
+}
+
+SSG_VECTOR_CLONES
+static void ssilvb_chunk_row(const struct job *j, struct chunk *restrict k, int y, int x0,
+                             int len)
+{
+    if (j->back_mul > 0.0f)
+        chunk_body(j, k, y, x0, len, 1);
+    else
+        chunk_body(j, k, y, x0, len, 0);
 }
 
 /* Chunk columns outside, rows inside: the rows of one band sample nearly the same part of
