@@ -164,7 +164,7 @@ void setup_slice(int k)
     s_mask = 0u;
 }
 
-// ssilvb_cpu.c sample_side.
+// ssilvb_cpu.c side_index and side_bits, and step_both's bounce sum for this side.
 void sample_side(ivec2 p, float ou, float ov, float sg, bool ok, float bb, float e)
 {
     precise float su = sg * ou, sv = sg * ov;
