@@ -59,11 +59,13 @@ void main()
         precise float cosine = N.x * frame(i, 12) + N.y * frame(i, 13) + N.z * frame(i, 14);
         if (!(cosine > 0.0))
             continue; // adds exact zeros (as the CPU's skipped lights)
-        float w = cosine;
-        float v = maps_bound ? visible(i, P, N, j, cosine) : 1.0;
         vec3 e = vec3(texelFetch(lights, ivec3(i, 1, 0), 0).r,
                       texelFetch(lights, ivec3(i, 1, 1), 0).r,
                       texelFetch(lights, ivec3(i, 1, 2), 0).r);
+        if (e == vec3(0.0))
+            continue; // a light that carries nothing (lightprobe missing=dark), as the CPU
+        float w = cosine;
+        float v = maps_bound ? visible(i, P, N, j, cosine) : 1.0;
         precise float lit = v * w;
         sum += lit * e;
         lum_lit += lit * luminance(e);

@@ -105,6 +105,8 @@ static inline __attribute__((always_inline)) void add_light(const struct job *j,
     float er = lights->data[n + li], eg = lights->data[3 * n + li],
           eb = lights->data[5 * n + li];
     float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
+    if (er == 0.0f && eg == 0.0f && eb == 0.0f)
+        return; /* a light that carries nothing (lightprobe missing=dark) adds exact zeros */
     /* A light behind every pixel of the chunk adds exact zeros: skip it (half the lights
        for a floor, whatever the backend, with the same sums). */
     int32_t facing = 0; /* an integer OR vectorises; a float max did not (45 % of the node) */
