@@ -1,19 +1,22 @@
 #!/usr/bin/env bash
 # `bench/bench.py --accuracy --part gi`, the GI half of docs/accuracy.md: at a tiny size and
 # one run it still scores every GI pipeline on every example scene under each light of
-# examples/lights (three rows a scene under the sun, five under the sky and the probe: a
-# finite rmse, a signed bias, an ssim), one summary row a pipeline and light, and the frame
-# times of ssdo.graph and hybrid_ssdo.graph.
+# its own lights and each light of examples/lights (four rows a scene under the sun, six
+# under its own lights, the sky and the probe: a finite rmse, a signed bias, an ssim and
+# the bounce's energy or -), one summary row a pipeline and light, and the frame times of
+# ssdo.graph, gi.graph and hybrid_ssdo.graph.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy_gi"
 python3 bench/bench.py --accuracy --part gi --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" \
     2> "$TMP/err" || fail "bench.py --accuracy --part gi failed: $(tail -3 "$TMP/err")"
 scenes=$(ls examples/*.scene | wc -l)
 grep -q '^# AO accuracy' "$TMP/acc.md" && fail "--part gi printed the AO table"
-gi=$(grep -cE '^\| (sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \|$' "$TMP/acc.md")
-[ "$gi" -eq $((13 * scenes)) ] || fail "expected $((13 * scenes)) GI rows, got $gi"
-summary=$(grep -cE '^\| (sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \|$' "$TMP/acc.md")
-[ "$summary" -eq 13 ] || fail "expected 13 GI summary rows, got $summary"
-grep -qE 'ssdo.graph on the Cornell box [0-9.]+ ms, hybrid_ssdo.graph on the courtyard [0-9.]+ ms' \
+gi=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+[ "$gi" -eq $((22 * scenes)) ] || fail "expected $((22 * scenes)) GI rows, got $gi"
+summary=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+[ "$summary" -eq 22 ] || fail "expected 22 GI summary rows, got $summary"
+bounce=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (ssdo|hybrid_ssdo|gi) \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
+[ "$bounce" -gt 0 ] || fail "no GI row has a bounce energy"
+grep -qE 'ssdo.graph on the Cornell box [0-9.]+ ms, gi.graph on the Cornell box [0-9.]+ ms, hybrid_ssdo.graph on the courtyard [0-9.]+ ms' \
     "$TMP/acc.md" || fail "the GI table lacks its frame times"
 finish test_accuracy_gi
