@@ -20,11 +20,13 @@ static inline float px_at(const struct ssg_image *im, int c, int x, int y)
 
 /* gbuffer's six outputs of scene s at the frame's size, on the CPU. */
 static inline void gbuffer_of(const struct ssg_scene *s, const struct ssg_frame *frame,
-                              struct ssg_image *out[6])
+                              struct ssg_image *out[SSG_GBUFFER_OUTPUTS])
 {
-    for (int i = 0; i < 6; i++)
-        out[i] = ssg_image_create(frame->width, frame->height,
-                                  i == SSG_GBUFFER_OUT_DEPTH ? 1 : 3);
+    for (int i = 0; i < SSG_GBUFFER_OUTPUTS; i++) /* back: on demand, not read here */
+        out[i] = i == SSG_GBUFFER_OUT_BACK
+                     ? NULL
+                     : ssg_image_create(frame->width, frame->height,
+                                        i == SSG_GBUFFER_OUT_DEPTH ? 1 : 3);
     void *params = node_params(&ssg_node_gbuffer, NULL, 0);
     CHECK_EQ(node_run_scene(&ssg_node_gbuffer, s, frame, params, NULL, out, SSG_BACKEND_CPU),
              SSG_OK);

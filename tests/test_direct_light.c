@@ -23,7 +23,7 @@ static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0};
 /* A scene with its G-buffer, maps and direct light (sets applied). */
 struct lit {
     struct ssg_scene *s;
-    struct ssg_image *g[6], *m[3], *r[2];
+    struct ssg_image *g[SSG_GBUFFER_OUTPUTS], *m[3], *r[2];
     float rot[9], eye[3];
 };
 
@@ -44,7 +44,7 @@ static int lit_make(struct lit *l, const char *name, const char *text, int res,
 
 static void lit_free(struct lit *l)
 {
-    images_free(l->g, 6);
+    images_free(l->g, SSG_GBUFFER_OUTPUTS);
     images_free(l->m, 3);
     images_free(l->r, 2);
     ssg_scene_destroy(&l->s);
@@ -263,7 +263,7 @@ static void test_wrong_maps(void)
                     "point_light(position=[0, 1, 0], intensity=1)\n");
     if (!s)
         return;
-    struct ssg_image *g[6], *r[2], *maps = ssg_image_create(16, 16, 1);
+    struct ssg_image *g[SSG_GBUFFER_OUTPUTS], *r[2], *maps = ssg_image_create(16, 16, 1);
     gbuffer_of(s, &FRAME, g);
     CHECK_EQ(direct_of(s, &FRAME, g, maps, NULL, 0, SSG_BACKEND_CPU, r), SSG_E_SCENE);
     struct ssg_shape in[4] = {{0}}, out[2];
@@ -274,7 +274,7 @@ static void test_wrong_maps(void)
     fprintf(stderr, "maps of 1 face for a point light: %s\n", why);
     in[SSG_DIRECT_LIGHT_IN_MAPS].channels = 6;
     CHECK_EQ(ssg_node_direct_light.check_scene(NULL, s, in, out, why, sizeof why), SSG_OK);
-    images_free(g, 6);
+    images_free(g, SSG_GBUFFER_OUTPUTS);
     images_free(r, 2);
     ssg_image_destroy(&maps);
     ssg_scene_destroy(&s);

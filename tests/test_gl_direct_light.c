@@ -21,7 +21,7 @@ static void parity(const char *name, const char *lights, const char *const *sets
     ssg_diags_print(&d, stderr);
     if (!s)
         return;
-    struct ssg_image *g[6], *m[3], *cpu[2], *gl[2];
+    struct ssg_image *g[SSG_GBUFFER_OUTPUTS], *m[3], *cpu[2], *gl[2];
     gbuffer_of(s, &FRAME, g);
     CHECK_EQ(maps_of(s, &FRAME, 256, SSG_BACKEND_CPU, m), SSG_OK);
     CHECK_EQ(direct_of(s, &FRAME, g, m[0], sets, n, SSG_BACKEND_CPU, cpu), SSG_OK);
@@ -42,7 +42,7 @@ static void parity(const char *name, const char *lights, const char *const *sets
         CHECK(mx <= 0.1 * scale);
         CHECK(mean <= 1e-5 * scale);
     }
-    images_free(g, 6);
+    images_free(g, SSG_GBUFFER_OUTPUTS);
     images_free(m, 3);
     images_free(cpu, 2);
     images_free(gl, 2);
