@@ -74,7 +74,7 @@ def gi_accuracy_table(binary, size, threads, runs):
           "and environment its file names) and relit by each file of `examples/lights/` "
           "(`--lights`: a sun alone, a uniform white sky, the courtyard probe), each "
           "pipeline's final image against `reference_gi` (direct light with ray-traced "
-          "shadows plus exactly one diffuse bounce, 64 paths a pixel), surface pixels only, "
+          "shadows plus exactly one diffuse bounce, 256 paths a pixel), surface pixels only, "
           "linear radiance. none: direct + environment light, no occlusion; ssao: direct + "
           "SSAO-darkened environment at the SSDO pipeline's radius, samples and filter (the "
           "baseline); ssdo: `graphs/ssdo.graph`; hybrid: `graphs/hybrid.graph`; hybrid_ssdo: "
