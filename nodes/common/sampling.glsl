@@ -96,3 +96,29 @@ bool ssg_project_sample(vec4 cz, vec4 cu, vec4 cv, vec3 s, float bias, out ivec2
     q = ivec2(int(u), int(v));
     return true;
 }
+
+// sampling.h's ssg_acos: Abramowitz and Stegun 4.4.46, the same operations (gtao, ssilvb).
+float ssg_acos(float x)
+{
+    precise float ax = abs(x);
+    precise float p = -0.0012624911;
+    p = p * ax + 0.0066700901;
+    p = p * ax - 0.0170881256;
+    p = p * ax + 0.0308918810;
+    p = p * ax - 0.0501743046;
+    p = p * ax + 0.0889789874;
+    p = p * ax - 0.2145988016;
+    p = p * ax + 1.5707963050;
+    precise float r = sqrt(1.0 - ax) * p;
+    precise float m = 3.14159265358979323846 - r;
+    return x < 0.0 ? m : r;
+}
+
+// sampling.h's ssg_ign: interleaved gradient noise (Jimenez 2014) in [0, 1).
+float ssg_ign(float x, float y)
+{
+    precise float a = 0.06711056 * x + 0.00583715 * y;
+    precise float b = 52.9829189 * (a - floor(a));
+    precise float r = b - floor(b);
+    return r;
+}

@@ -192,4 +192,30 @@ static inline __attribute__((always_inline)) int ssg_sampling_count(float v, int
     return n < k ? n : k;
 }
 
+/* acos by Abramowitz and Stegun 4.4.46 (|error| <= 2e-8 before float rounding), odd
+   symmetry about 1/2 pi for x < 0; NaN for |x| > 1: the horizon angles of gtao and ssilvb.
+   sampling.glsl's ssg_acos is the same operations. */
+static inline __attribute__((always_inline)) float ssg_acos(float x)
+{
+    float ax = fabsf(x);
+    float p = -0.0012624911f;
+    p = p * ax + 0.0066700901f;
+    p = p * ax - 0.0170881256f;
+    p = p * ax + 0.0308918810f;
+    p = p * ax - 0.0501743046f;
+    p = p * ax + 0.0889789874f;
+    p = p * ax - 0.2145988016f;
+    p = p * ax + 1.5707963050f;
+    float r = sqrtf(1.0f - ax) * p;
+    return x < 0.0f ? 3.14159265358979323846f - r : r;
+}
+
+/* Interleaved gradient noise (Jimenez 2014) at (x, y): in [0, 1) (sampling.glsl's ssg_ign). */
+static inline __attribute__((always_inline)) float ssg_ign(float x, float y)
+{
+    float a = 0.06711056f * x + 0.00583715f * y;
+    float b = 52.9829189f * (a - floorf(a));
+    return b - floorf(b);
+}
+
 #endif

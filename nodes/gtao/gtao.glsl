@@ -38,29 +38,10 @@ float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si, g_l, g_ldp,
 float g_e1n, g_e2n;
 vec3 g_v, g_n, g_e2;
 
-// gtao_cpu.c gtao_acos: Abramowitz and Stegun 4.4.46, the same operations.
-float gtao_acos(float x)
-{
-    precise float ax = abs(x);
-    precise float p = -0.0012624911;
-    p = p * ax + 0.0066700901;
-    p = p * ax - 0.0170881256;
-    p = p * ax + 0.0308918810;
-    p = p * ax - 0.0501743046;
-    p = p * ax + 0.0889789874;
-    p = p * ax - 0.2145988016;
-    p = p * ax + 1.5707963050;
-    precise float r = sqrt(1.0 - ax) * p;
-    precise float m = 3.14159265358979323846 - r;
-    return x < 0.0 ? m : r;
-}
-
 // 1 - interleaved gradient noise (gtao_cpu.c step_jitter).
 float step_jitter(ivec2 p)
 {
-    precise float a = 0.06711056 * float(p.x) + 0.00583715 * float(p.y);
-    precise float b = 52.9829189 * (a - floor(a));
-    precise float u = 1.0 - (b - floor(b));
+    precise float u = 1.0 - ssg_ign(float(p.x), float(p.y));
     return u;
 }
 
@@ -194,7 +175,7 @@ vec3 side_arc(float hc, float low, float sg, float n, float cn, float sn)
                               2.0 * sg * s2);
         return r;
     }
-    precise float h = sg * gtao_acos(hc);
+    precise float h = sg * ssg_acos(hc);
     bool clamp_h = sg > 0.0 ? !(h < lim) : !(h > lim);
     precise float ch = hc, sh = sg * sqrt((1.0 - hc) * (1.0 + hc));
     if (clamp_h) {
@@ -277,7 +258,7 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
         precise float f2 = hc2 / sqrt(hq2), f1 = hc1 / sqrt(hq1);
         hc2 = f2, hc1 = f1;
     }
-    precise float n = HALF_PI - gtao_acos(snn);
+    precise float n = HALF_PI - ssg_acos(snn);
     vec3 a1 = back_bound ? side_arc_back(hc1, bot1, low1, -1.0, n, cn, snn)
                          : side_arc(hc1, low1, -1.0, n, cn, snn);
     vec3 a2 = back_bound ? side_arc_back(hc2, bot2, low2, 1.0, n, cn, snn)

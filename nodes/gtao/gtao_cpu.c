@@ -21,7 +21,7 @@
  * (H.V)^2 + dq^2 ((H.D)^2 + (H.M)^2) / dq^2 (V, D, M orthonormal). The sample counts when
  * sg H'.D > |H.M|, i.e. b > |c| (dq > 0). The horizon cosine is H'.V / |H'|.
  * The slice's terms use no trigonometry but one acos per slice (its normal angle n =
- * pi/2 - acos(sin n)) and one per side with a horizon (gtao_acos, a polynomial that
+ * pi/2 - acos(sin n)) and one per side with a horizon (ssg_acos, a polynomial that
  * gtao.glsl evaluates by the same operations): sin h = sg sqrt((1 - cos h)(1 + cos h)),
  * and the cosines and sines of 2h - n, h -/+ n, 3h - n by the angle-sum formulas.
  *
@@ -44,7 +44,6 @@ enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 /* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao.c). */
 #define SLICE_MIN 0.01f
 #define HALF_PI 1.57079632679489661923f
-#define PI_F 3.14159265358979323846f
 /* A side's horizon cosine within this of its lowest counts as no horizon: samples of P's
    own plane land on the tangent only up to float rounding (gtao.c). */
 #define OPEN_EPS 1e-5f
@@ -109,30 +108,10 @@ struct chunk {
     int32_t idx[2][CHUNK];                 /* index in the padded plane */
 };
 
-/* acos by Abramowitz and Stegun 4.4.46 (|error| <= 2e-8 before float rounding), odd
-   symmetry about 1/2 pi for x < 0; NaN for |x| > 1. gtao.glsl's gtao_acos is the same
-   operations. */
-static inline __attribute__((always_inline)) float gtao_acos(float x)
-{
-    float ax = fabsf(x);
-    float p = -0.0012624911f;
-    p = p * ax + 0.0066700901f;
-    p = p * ax - 0.0170881256f;
-    p = p * ax + 0.0308918810f;
-    p = p * ax - 0.0501743046f;
-    p = p * ax + 0.0889789874f;
-    p = p * ax - 0.2145988016f;
-    p = p * ax + 1.5707963050f;
-    float r = sqrtf(1.0f - ax) * p;
-    return x < 0.0f ? PI_F - r : r;
-}
-
 /* 1 - interleaved gradient noise (Jimenez 2014) at the pixel: in (0, 1]. */
 static inline __attribute__((always_inline)) float step_jitter(float x, float y)
 {
-    float a = 0.06711056f * x + 0.00583715f * y;
-    float b = 52.9829189f * (a - floorf(a));
-    return 1.0f - (b - floorf(b));
+    return 1.0f - ssg_ign(x, y);
 }
 
 /* What depends on the pixel only: V, e2 = V x e1, V.N, the march length (gtao.c). */
@@ -392,7 +371,7 @@ side_arc(float hc, float low, float sg, float n, float cn, float sn)
     float c2 = cn * cn - sn * sn, s2 = 2.0f * sn * cn;
     struct arc o = {0.25f * (cn + 2.0f * lim * sn + cn), sg * (6.0f - 2.0f * c2),
                     2.0f * sg * s2};
-    float h = sg * gtao_acos(hc);
+    float h = sg * ssg_acos(hc);
     int clamp = sg > 0.0f ? !(h < lim) : !(h > lim); /* NaN (|hc| > 1) too */
     h = clamp ? lim : h;
     float ch = clamp ? -sg * sn : hc;
@@ -428,7 +407,7 @@ static inline __attribute__((always_inline)) void finish_slice(struct chunk *res
 {
     for (int i = 0; i < len; i++) {
         float cn = k->cn[i], sn = k->sn[i], pl = k->pl[i];
-        float n = HALF_PI - gtao_acos(sn);
+        float n = HALF_PI - ssg_acos(sn);
         struct arc a1, a2;
         if (back) {
             a1 = side_arc_back(k->hc[1][i], k->bot[1][i], k->low[1][i], -1.0f, n, cn, sn);

@@ -47,31 +47,6 @@ float s_w, s_w32;
 float s_lim[2];
 uint s_mask;
 
-// Abramowitz and Stegun 4.4.46, gtao_cpu.c's operations.
-float lvb_acos(float x)
-{
-    precise float ax = abs(x);
-    precise float p = -0.0012624911;
-    p = p * ax + 0.0066700901;
-    p = p * ax - 0.0170881256;
-    p = p * ax + 0.0308918810;
-    p = p * ax - 0.0501743046;
-    p = p * ax + 0.0889789874;
-    p = p * ax - 0.2145988016;
-    p = p * ax + 1.5707963050;
-    precise float r = sqrt(1.0 - ax) * p;
-    precise float m = 3.14159265358979323846 - r;
-    return x < 0.0 ? m : r;
-}
-
-float ign(float x, float y)
-{
-    precise float a = 0.06711056 * x + 0.00583715 * y;
-    precise float b = 52.9829189 * (a - floor(a));
-    precise float r = b - floor(b);
-    return r;
-}
-
 uint sector_bits(float u0, float u1)
 {
     float lo = u0 < u1 ? u0 : u1, hi = u0 < u1 ? u1 : u0;
@@ -89,7 +64,7 @@ float sector_u(float hv, float hd, float sg, float lim)
     c = c < 1.0 ? c : 1.0;
     c = c > -1.0 ? c : -1.0;
     precise float s2 = (1.0 - c) * (1.0 + c), s = sqrt(s2);
-    precise float a = lvb_acos(c);
+    precise float a = ssg_acos(c);
     precise float cm = 0.5 * (sg * s_cn * s2 + s_sn * (a - s * c));
     precise float u = (cm + s_g1) * s_ia;
     u = u > 0.0 ? u : 0.0;
@@ -124,12 +99,12 @@ void setup_pixel(ivec2 p)
     precise float st = rp / float(p_steps);
     g_step = st;
     precise float rx = xf + noise_off.x, ry = yf + noise_off.y;
-    precise float turn = ign(rx, ry) * float(TURNS);
+    precise float turn = ssg_ign(rx, ry) * float(TURNS);
     int t = int(turn);
     t = t < TURNS - 1 ? t : TURNS - 1;
     g_co = turn_cos[t], g_si = turn_sin[t];
     precise float jx = yf + noise_off.z, jy = xf + noise_off.w;
-    precise float u = 1.0 - ign(jx, jy);
+    precise float u = 1.0 - ssg_ign(jx, jy);
     g_u = u;
 }
 
@@ -151,7 +126,7 @@ void setup_slice(int k)
     precise float ax = g_vxf + mxf * al, ay = g_vyf + myf * al;
     precise float bx = dxf + mxf * be, by = dyf + myf * be;
     s_ax = ax, s_ay = ay, s_bx = bx, s_by = by;
-    precise float n = HALF_PI - lvb_acos(sn);
+    precise float n = HALF_PI - ssg_acos(sn);
     precise float area = cn + n * sn;
     s_cn = cn, s_sn = sn;
     precise float l0 = HALF_PI + n, l1 = HALF_PI - n;

@@ -35,7 +35,6 @@ enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 /* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao.c). */
 #define SLICE_MIN 0.01f
 #define HALF_PI 1.57079632679489661923f
-#define PI_F 3.14159265358979323846f
 /* The farthest back point used: its direction is then the sample's ray to float precision,
    and the products below stay finite. */
 #define BACK_MAX 1.0e6f
@@ -87,30 +86,6 @@ struct chunk {
     uint32_t mask[CHUNK];                  /* the slice's sectors */
 };
 
-/* acos by Abramowitz and Stegun 4.4.46, as gtao_cpu.c's gtao_acos (ssilvb.glsl's too). */
-static inline __attribute__((always_inline)) float lvb_acos(float x)
-{
-    float ax = fabsf(x);
-    float p = -0.0012624911f;
-    p = p * ax + 0.0066700901f;
-    p = p * ax - 0.0170881256f;
-    p = p * ax + 0.0308918810f;
-    p = p * ax - 0.0501743046f;
-    p = p * ax + 0.0889789874f;
-    p = p * ax - 0.2145988016f;
-    p = p * ax + 1.5707963050f;
-    float r = sqrtf(1.0f - ax) * p;
-    return x < 0.0f ? PI_F - r : r;
-}
-
-/* Interleaved gradient noise (Jimenez 2014) at (x, y): in [0, 1). */
-static inline __attribute__((always_inline)) float ign(float x, float y)
-{
-    float a = 0.06711056f * x + 0.00583715f * y;
-    float b = 52.9829189f * (a - floorf(a));
-    return b - floorf(b);
-}
-
 /* Population count of 32 bits by shifts, masks and adds. It vectorises where a popcnt
    would not; GCC recognises the usual form with a final multiply as popcount and then
    leaves the loop scalar, so this one adds the halves instead. */
@@ -143,7 +118,7 @@ sector_u(float hv, float hd, float sg, float cn, float sn, float g1, float ia, f
     c = c < 1.0f ? c : 1.0f;
     c = c > -1.0f ? c : -1.0f;
     float s2 = (1.0f - c) * (1.0f + c), s = sqrtf(s2);
-    float a = lvb_acos(c);
+    float a = ssg_acos(c);
     float cm = 0.5f * (sg * cn * s2 + sn * (a - s * c));
     float u = (cm + g1) * ia;
     u = u > 0.0f ? u : 0.0f;
@@ -186,12 +161,12 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
         float rp = f * radius / (near > half ? near : half);
         rp = cap > 0.0f && rp > cap ? cap : rp;
         k->step[i] = rp / fs;
-        float turn = ign(xf + no[0], yf + no[1]) * (float)SSG_SSILVB_TURNS;
+        float turn = ssg_ign(xf + no[0], yf + no[1]) * (float)SSG_SSILVB_TURNS;
         int32_t t = (int32_t)turn;
         t = t < SSG_SSILVB_TURNS - 1 ? t : SSG_SSILVB_TURNS - 1;
         k->co[i] = c->turn_cos[t];
         k->si[i] = c->turn_sin[t];
-        k->u[i] = 1.0f - ign(yf + no[2], xf + no[3]);
+        k->u[i] = 1.0f - ssg_ign(yf + no[2], xf + no[3]);
         k->vis[i] = k->wsum[i] = 0.0f;
         k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
     }
@@ -221,7 +196,7 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
         k->ay[i] = k->vyf[i] + myf * al;
         k->bx[i] = dxf + mxf * be;
         k->by[i] = dyf + myf * be;
-        float n = HALF_PI - lvb_acos(sn);
+        float n = HALF_PI - ssg_acos(sn);
         float area = cn + n * sn;
         k->cn[i] = cn, k->sn[i] = sn;
         k->lim[0][i] = HALF_PI + n;
