@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "version.h"
 
 struct library {

@@ -11,7 +11,7 @@
 
 #include "check.h"
 #include "graph/exec.h"
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "graph/node.h"
 #include "scene/scene.h"
 #include "scenes.h"

@@ -27,7 +27,7 @@
 
 #include "check.h"
 #include "graph/exec.h"
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "planes.h"
 #include "gl_parity.h" /* after planes.h: its G-buffer helpers */
 #include "scene/scene.h"

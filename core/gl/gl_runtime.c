@@ -7,7 +7,7 @@
 
 #include "graph/exec.h"
 #include "gl/gl.h"
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "gl/gl_fn.h"
 #include "gl/gl_runtime.h"
 #include "graph/image.h"

@@ -6,7 +6,7 @@
 #include <time.h>
 
 #include "graph/exec.h"
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "graph/image.h"
 #include "lang/parse.h"
 

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "graph/graph.h"
 #include "graph/image.h"
 #include "graph/metrics.h"

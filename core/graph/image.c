@@ -3,7 +3,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "graph/image.h"
 
 enum { HUGE_PAGE = 2 * 1024 * 1024 };

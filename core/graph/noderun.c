@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "graph/exec.h"
-#include "gl/gl_backend.h"
+#include "graph/gl_backend.h"
 #include "graph/image.h"
 #include "graph/metrics.h"
 #include "lang/parse.h"

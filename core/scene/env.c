@@ -13,10 +13,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lang/diag.h"
 #include "scene/env.h"
-#include "graph/node.h"
 #include "scene/scene.h"
 
+#ifndef M_PI /* C11's math.h need not define it */
+#define M_PI 3.14159265358979323846
+#endif
 #define TWO_PI (2.0 * M_PI)
 
 void ssg_env_direction(float u, float v, float d[3])

@@ -1,6 +1,8 @@
 /* gl_backend.h - the GL backend as the executor sees it (core/graph/exec.c, core/graph/graph.c,
  * core/graph/noderun.c): opening it, moving images between the CPU and GL, timer queries.
- * Internal to libssgraph.
+ * Internal to libssgraph. Declared here, in the graph layer, and implemented by core/gl
+ * (gl_runtime.c), so that the layers include only downwards: lang, scene, graph, then gl and
+ * io (tests/test_layers.sh).
  *
  * Residency: an image whose `gpu` field is NULL lives on the CPU only. Once a GL node reads
  * or writes it, it has a texture and two flags saying which copy is current; a transfer
