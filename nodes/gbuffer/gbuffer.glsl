@@ -4,16 +4,7 @@
 // ray as on the CPU; normal, albedo, direct and environment light then follow
 // gbuffer_cpu.c operation by operation, reading the scene's buffers (gl_raster.h).
 #include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
-struct Material {
-    float albedo[3];
-    float specular[3];
-    float shininess;
-    int texels; // float offset in texel[], -1 = no texture
-    int width;
-    int height;
-};
-layout(std430, binding = 2) readonly buffer Texels { float texel[]; };
-layout(std430, binding = 4) readonly buffer Materials { Material scene_material[]; };
+#include "surface.glsl"     // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind
 // (0 point, 1 directional), unused.
 layout(std430, binding = 5) readonly buffer Lights { float light[]; };
@@ -41,37 +32,6 @@ const float INV_PI = 0.318309886183790671538;  // (float)(1.0 / M_PI)
 const float PI_F = 3.14159265358979323846;
 const float TWO_PI_F = 6.28318530717958647692;
 const int ENV_W = 64, ENV_H = 32;              // SSG_ENV_COARSE_W, _H
-
-vec2 fetch2(int base, uint vertex)
-{
-    int o = base + 2 * int(vertex);
-    return vec2(vdata[o], vdata[o + 1]);
-}
-
-// The floor modulo that C's fmodf plus "add n when negative" gives for integers.
-int wrap(int i, int n)
-{
-    int r = abs(i) % n;
-    return i < 0 && r != 0 ? n - r : r;
-}
-
-vec3 texel3(Material m, int x, int y)
-{
-    int o = m.texels + 3 * (y * m.width + x);
-    return vec3(texel[o], texel[o + 1], texel[o + 2]);
-}
-
-// nodes/common/surface.c's sample_texture: bilinear between texel centres, wrapping around.
-vec3 sample_texture(Material m, vec2 uv)
-{
-    float fx = uv.x * float(m.width) - 0.5, fy = uv.y * float(m.height) - 0.5;
-    float x0f = floor(fx), y0f = floor(fy), ax = fx - x0f, ay = fy - y0f;
-    int x0 = wrap(int(x0f), m.width), y0 = wrap(int(y0f), m.height);
-    int x1 = x0 + 1 < m.width ? x0 + 1 : 0, y1 = y0 + 1 < m.height ? y0 + 1 : 0;
-    vec3 a = texel3(m, x0, y0), b = texel3(m, x1, y0);
-    vec3 c = texel3(m, x0, y1), d = texel3(m, x1, y1);
-    return (1.0 - ay) * ((1.0 - ax) * a + ax * b) + ay * ((1.0 - ax) * c + ax * d);
-}
 
 vec3 env_row(int y, int x0, int x1, float ax)
 {

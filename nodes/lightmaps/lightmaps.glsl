@@ -4,13 +4,10 @@
 // texel centre's ray with its own triangle (read from the scene's buffers, gl_raster.h)
 // and writes lightmaps_cpu.c's depth, normal (turned to the light) and flux.
 struct Mesh { int positions; int normals; int uvs; int indices; int material; };
-struct Material { float albedo[3]; float specular[3]; float shininess; int texels; int width;
-                  int height; };
 layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
 layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
-layout(std430, binding = 2) readonly buffer Texels { float texel[]; };
 layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
-layout(std430, binding = 4) readonly buffer Materials { Material scene_material[]; };
+#include "surface.glsl" // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per face (lightmaps_gl.c): origin, u, v, axis, half, ortho, flux rgb, has a light, 2 unused.
 layout(std430, binding = 5) readonly buffer Faces { float face[]; };
 const int FACE = 20;
@@ -50,36 +47,6 @@ vec3 fetch3(int base, uint vertex)
 {
     int o = base + 3 * int(vertex);
     return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
-}
-
-vec2 fetch2(int base, uint vertex)
-{
-    int o = base + 2 * int(vertex);
-    return vec2(vdata[o], vdata[o + 1]);
-}
-
-int wrap(int i, int n)
-{
-    int r = abs(i) % n;
-    return i < 0 && r != 0 ? n - r : r;
-}
-
-vec3 texel3(Material m, int x, int y)
-{
-    int o = m.texels + 3 * (y * m.width + x);
-    return vec3(texel[o], texel[o + 1], texel[o + 2]);
-}
-
-// nodes/common/surface.c's sample_texture (gbuffer.glsl's copy)
-vec3 sample_texture(Material m, vec2 uv)
-{
-    float fx = uv.x * float(m.width) - 0.5, fy = uv.y * float(m.height) - 0.5;
-    float x0f = floor(fx), y0f = floor(fy), ax = fx - x0f, ay = fy - y0f;
-    int x0 = wrap(int(x0f), m.width), y0 = wrap(int(y0f), m.height);
-    int x1 = x0 + 1 < m.width ? x0 + 1 : 0, y1 = y0 + 1 < m.height ? y0 + 1 : 0;
-    vec3 a = texel3(m, x0, y0), b = texel3(m, x1, y0);
-    vec3 c = texel3(m, x0, y1), d = texel3(m, x1, y1);
-    return (1.0 - ay) * ((1.0 - ax) * a + ax * b) + ay * ((1.0 - ax) * c + ax * d);
 }
 
 void main()
