@@ -335,35 +335,9 @@ static GLuint make_layer_target(int w, int h, GLuint *depth)
 enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, const struct ssg_gl_scene *s,
                                       struct ssg_image *target, float clear)
 {
-    if (pass->err)
-        return pass->err;
-    GLuint depth = 0, fbo = make_layer_target(target->width, target->height, &depth);
-    GLuint tex = ssg_gl_texture_of(target), prog = pass->program;
-    GLint layer_at = glGetUniformLocation(prog, "ssg_layer");
-    const float far = 1.0f;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glViewport(0, 0, target->width, target->height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glUseProgram(prog);
-    for (int i = 0; i < target->channels && !pass->err; i++) {
-        glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, tex, 0, i);
-        if (i == 0 && glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) !=
-                          GL_FRAMEBUFFER_COMPLETE)
-            pass->err = fail(pass->ctx, SSG_E_BACKEND, "the GL framebuffer of a layer is "
-                                                       "incomplete");
-        glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &clear);
-        glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
-        if (layer_at >= 0)
-            glProgramUniform1i(prog, layer_at, i);
-        draw_meshes(s, prog);
-    }
-    glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &depth);
-    enum ssg_err e = gl_status(pass->ctx, "drawing the scene's layers");
-    return pass->err ? pass->err : (pass->err = e);
+    /* One stack of one layer a draw: layer i is draw i. */
+    const struct ssg_gl_stack stack = {target, 1, clear};
+    return ssg_gl_scene_draw_stacks(pass, s, &stack, 1, target->channels);
 }
 
 /* Attaches draw i's layers of every stack; the number of outputs. */
