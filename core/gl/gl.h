@@ -23,10 +23,26 @@
  *   ssg_gl_dispatch(&p, w, h);
  *   return ssg_gl_pass_end(&p);
  *
+ * Binding by the tables. A node's shader that holds the line `#pragma ssg_params` gets its
+ * parameters declared from the descriptor's table (`uniform float p_radius;`, enum choices
+ * as `const int MODE_DISC = 2;`, rows marked host_only left out) and the pass binds their
+ * values itself; ssg_gl_ports binds every port by its name. A node with one pass then
+ * names nothing by hand:
+ *
+ *   struct ssg_gl_pass p;
+ *   ssg_gl_pass_begin(&p, ctx, "ao.glsl", NULL);  // #pragma ssg_params in ao.glsl
+ *   ssg_gl_ports(&p, io);                         // inputs as <port>, outputs dst_<port>
+ *   ssg_gl_projection(&p, "proj", &c->proj);      // what prepare() made, by name
+ *   ssg_gl_dispatch(&p, w, h);
+ *   return ssg_gl_pass_end(&p);
+ *
  * Errors are sticky: after the first failing call the pass does nothing and
  * ssg_gl_pass_end returns that error (already reported through ctx->diags), so a node can
- * chain calls and check once. Uniforms the shader does not use (optimised away) are
- * ignored. One thread (the executor's) uses GL at a time. */
+ * chain calls and check once. A name the program lacks is such an error ("<node>
+ * '<instance>': shader <file> has no active uniform '<name>'"), never a silent skip, and
+ * so is a declared parameter the shader never reads: compilers drop unused uniforms, so a
+ * node binds only what its shader (with these defines) reads. The optional names are
+ * `<input>_bound` and ssg_grid. One thread (the executor's) uses GL at a time. */
 #ifndef SSG_GL_H
 #define SSG_GL_H
 
@@ -64,6 +80,11 @@ void ssg_gl_input(struct ssg_gl_pass *pass, const char *name, const struct ssg_i
 /* Binds an image for writing as `layout(r32f) uniform image2DArray <name>` (imageStore;
  * also readable with imageLoad when declared without writeonly). */
 void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image *image);
+
+/* Binds every port by the descriptor's names: input i as ssg_gl_input(desc->inputs[i].name)
+ * and output i as `dst_<name>` (out is a GLSL keyword); an on_demand output nobody reads
+ * is left unbound. For a pass whose shader reads every port. */
+void ssg_gl_ports(struct ssg_gl_pass *pass, const struct ssg_io *io);
 
 /* Uniforms. Arrays: `count` values into `uniform float name[N]` (count <= N). */
 void ssg_gl_int(struct ssg_gl_pass *pass, const char *name, int value);

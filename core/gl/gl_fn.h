@@ -122,7 +122,7 @@ void ssg_gl_context_destroy(void);
 enum { SSG_GL_COMPUTE = 1, SSG_GL_RASTER = 2 };
 struct ssg_node_ctx;
 GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
-                          const char *defines, int stages);
+                          const char *defines, int stages, int *binds_params);
 void ssg_gl_programs_free(void);
 
 #endif

@@ -16,24 +16,88 @@ static int usable(const struct ssg_gl_pass *p)
     return p->err == SSG_OK && p->program != 0;
 }
 
-static GLint where(const struct ssg_gl_pass *p, const char *name)
+/* The location of an optional uniform (`<input>_bound`, ssg_grid): -1 when the shader
+   does not use it. */
+static GLint where_optional(const struct ssg_gl_pass *p, const char *name)
 {
     return usable(p) ? glGetUniformLocation(p->program, name) : -1;
+}
+
+/* The location of a uniform the node binds by name. A name the program lacks is an error
+   of the pass, never a silent skip: a renamed or misspelled uniform would otherwise leave
+   the shader reading zeros. GLSL compilers drop uniforms nothing reads, so a declared but
+   unused one is refused the same way (bind only what the shader reads). */
+static GLint where(struct ssg_gl_pass *p, const char *name)
+{
+    GLint loc = where_optional(p, name);
+    if (loc < 0 && usable(p))
+        p->err = ssg_node_fail(p->ctx, SSG_E_SHADER,
+                               "shader %s has no active uniform '%s' (not declared, or "
+                               "declared and unused: the compiler dropped it)",
+                               p->shader, name);
+    return loc;
+}
+
+/* Sets the value of every parameter the program declared by `#pragma ssg_params`
+   (gl_program.c) from the node's parameters (ctx->params), by its table. */
+static void bind_params(struct ssg_gl_pass *p)
+{
+    struct ssg_param_table table = p->ctx->desc->params;
+    if (!p->ctx->params) {
+        p->err = ssg_node_fail(p->ctx, SSG_E_BACKEND, "shader %s declares the node's "
+                               "parameters but the pass has none (run the node through "
+                               "the executor, which sets ctx->params)", p->shader);
+        return;
+    }
+    char name[96];
+    for (int i = 0; i < table.count && usable(p); i++) {
+        const struct ssg_param_desc *d = &table.params[i];
+        const void *at = (const char *)p->ctx->params + d->offset;
+        int is_int = d->type == SSG_P_INT || d->type == SSG_P_BOOL || d->type == SSG_P_ENUM;
+        if (d->host_only || (!is_int && d->type != SSG_P_FLOAT && d->type != SSG_P_VEC3))
+            continue;
+        snprintf(name, sizeof name, "p_%s", d->name);
+        GLint loc = where_optional(p, name);
+        if (loc < 0) {
+            p->err = ssg_node_fail(p->ctx, SSG_E_SHADER, "shader %s declares parameter "
+                                   "'%s' (#pragma ssg_params) but does not read it: read "
+                                   "it as %s, or mark its row host_only when only "
+                                   "prepare() or the CPU kernel needs it",
+                                   p->shader, d->name, name);
+        } else if (is_int) {
+            glProgramUniform1i(p->program, loc, *(const int *)at);
+        } else if (d->type == SSG_P_FLOAT) {
+            glProgramUniform1f(p->program, loc, *(const float *)at);
+        } else {
+            const float *v = at;
+            glProgramUniform3f(p->program, loc, v[0], v[1], v[2]);
+        }
+    }
+}
+
+enum ssg_err ssg_gl_pass_open(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
+                              const char *shader, const char *defines, int stages)
+{
+    memset(pass, 0, sizeof *pass);
+    pass->ctx = ctx;
+    pass->shader = shader;
+    int binds_params = 0;
+    pass->program = ssg_gl_program_get(ctx, shader, defines, stages, &binds_params);
+    if (!pass->program) {
+        pass->err = SSG_E_SHADER;
+        return pass->err;
+    }
+    if (binds_params)
+        bind_params(pass);
+    return pass->err;
 }
 
 enum ssg_err ssg_gl_pass_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
                                const char *shader, const char *defines)
 {
-    memset(pass, 0, sizeof *pass);
-    pass->ctx = ctx;
-    pass->shader = shader;
-    pass->program = ssg_gl_program_get(ctx, shader, defines, SSG_GL_COMPUTE);
-    if (!pass->program) {
-        pass->err = SSG_E_SHADER;
-        return pass->err;
-    }
-    glUseProgram(pass->program);
-    return SSG_OK;
+    if (ssg_gl_pass_open(pass, ctx, shader, defines, SSG_GL_COMPUTE) == SSG_OK)
+        glUseProgram(pass->program);
+    return pass->err;
 }
 
 void ssg_gl_input(struct ssg_gl_pass *pass, const char *name, const struct ssg_image *image)
@@ -41,7 +105,7 @@ void ssg_gl_input(struct ssg_gl_pass *pass, const char *name, const struct ssg_i
     GLint loc = where(pass, name);
     char bound[96];
     snprintf(bound, sizeof bound, "%s_bound", name);
-    GLint bound_loc = where(pass, bound);
+    GLint bound_loc = where_optional(pass, bound);
     if (bound_loc >= 0)
         glProgramUniform1i(pass->program, bound_loc, image != NULL);
     if (loc < 0)
@@ -60,6 +124,19 @@ void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image 
     glBindImageTexture((GLuint)unit, ssg_gl_texture_of(image), 0, GL_TRUE, 0, GL_READ_WRITE,
                        GL_R32F);
     glProgramUniform1i(pass->program, loc, unit);
+}
+
+void ssg_gl_ports(struct ssg_gl_pass *pass, const struct ssg_io *io)
+{
+    const struct ssg_node_desc *d = pass->ctx->desc;
+    char name[96];
+    for (int i = 0; i < d->input_count; i++)
+        ssg_gl_input(pass, d->inputs[i].name, io->in[i]);
+    for (int i = 0; i < d->output_count; i++) {
+        snprintf(name, sizeof name, "dst_%s", d->outputs[i].name);
+        if (io->out[i]) /* an on_demand output nobody reads is not bound (node.h) */
+            ssg_gl_output(pass, name, io->out[i]);
+    }
 }
 
 void ssg_gl_int(struct ssg_gl_pass *pass, const char *name, int value)
@@ -167,7 +244,7 @@ void ssg_gl_buffer(struct ssg_gl_pass *pass, int binding, const void *data, size
 
 void ssg_gl_dispatch(struct ssg_gl_pass *pass, int width, int height)
 {
-    GLint loc = where(pass, "ssg_grid");
+    GLint loc = where_optional(pass, "ssg_grid");
     if (!usable(pass) || width < 1 || height < 1)
         return;
     if (loc >= 0)

@@ -12,7 +12,15 @@
  * example nodes/common/sampling.glsl, the screen-space sampling of ssao, hbao and ssdo):
  * each is replaced by that shader file's text, numbered from INCLUDE_BASE + 1 (the k-th
  * include from INCLUDE_BASE + k * INCLUDE_STRIDE + 1), and the node's own numbering
- * resumes after it. One level: an included file includes nothing. */
+ * resumes after it. One level: an included file includes nothing.
+ *
+ * A node's own file may hold one line `#pragma ssg_params`: it is replaced (on that one
+ * line, so line numbers stay the file's) by the declarations of the node's parameters from
+ * its descriptor's table: `uniform float p_radius;` for each row not marked host_only
+ * (float -> float, int/bool/enum -> int, vec3 -> vec3), and for an enum its choices as
+ * `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The pass binds
+ * their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
+ * name. Such a program is the node type's own: the cache keys it by the table too. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,6 +51,7 @@ struct cached {
     char shader[64];
     char *defines;
     int stages;
+    const struct ssg_param_desc *params; /* the table its #pragma ssg_params declared */
     GLuint program;
 };
 static struct cached cache[CACHE_MAX];
@@ -226,7 +235,71 @@ static int has_include(const char *text)
     return 0;
 }
 
-/* src->text: the node's file with each #include line replaced by the file it names. */
+/* 1 when a line (n bytes, leading blanks allowed) is `#pragma ssg_params`. */
+static int is_params_pragma(const char *line, size_t n)
+{
+    static const char pragma[] = "#pragma ssg_params";
+    while (n && (*line == ' ' || *line == '\t'))
+        line++, n--;
+    while (n && (line[n - 1] == ' ' || line[n - 1] == '\t' || line[n - 1] == '\r'))
+        n--;
+    return n == sizeof pragma - 1 && !memcmp(line, pragma, n);
+}
+
+/* 1 when the shader file declares the node's parameters through the pragma. */
+static int declares_params(const char *text)
+{
+    for (const char *p = text; *p;) {
+        size_t n = strcspn(p, "\n");
+        if (is_params_pragma(p, n))
+            return 1;
+        p += n + (p[n] == '\n');
+    }
+    return 0;
+}
+
+/* Appends `text` upper-cased, with every character not allowed in a GLSL name as '_'. */
+static int append_upper(char **buf, size_t *len, size_t *cap, const char *text)
+{
+    int ok = 1;
+    for (const char *c = text; ok && *c; c++) {
+        char u = *c >= 'a' && *c <= 'z' ? (char)(*c - 'a' + 'A') : *c;
+        if (!((u >= 'A' && u <= 'Z') || (u >= '0' && u <= '9')))
+            u = '_';
+        ok = append(buf, len, cap, &u, 1);
+    }
+    return ok;
+}
+
+/* The one line that replaces `#pragma ssg_params`: the uniforms and enum constants of the
+   node's parameter table (see the top of this file). */
+static int append_params_block(char **buf, size_t *len, size_t *cap,
+                               struct ssg_param_table table)
+{
+    char decl[160];
+    int ok = 1;
+    for (int i = 0; ok && i < table.count; i++) {
+        const struct ssg_param_desc *d = &table.params[i];
+        const char *type = d->type == SSG_P_FLOAT ? "float"
+                           : d->type == SSG_P_VEC3 ? "vec3"
+                           : d->type == SSG_P_INT || d->type == SSG_P_BOOL ||
+                                   d->type == SSG_P_ENUM ? "int" : NULL;
+        if (!type || d->host_only)
+            continue;
+        snprintf(decl, sizeof decl, "uniform %s p_%s; ", type, d->name);
+        ok = append(buf, len, cap, decl, strlen(decl));
+        for (int k = 0; ok && d->type == SSG_P_ENUM && d->choices && d->choices[k]; k++) {
+            ok = append(buf, len, cap, "const int ", 10) && append_upper(buf, len, cap, d->name) &&
+                 append(buf, len, cap, "_", 1) && append_upper(buf, len, cap, d->choices[k]);
+            snprintf(decl, sizeof decl, " = %d; ", k);
+            ok = ok && append(buf, len, cap, decl, strlen(decl));
+        }
+    }
+    return ok && append(buf, len, cap, "\n", 1);
+}
+
+/* src->text: the node's file with each #include line replaced by the file it names, and
+   its `#pragma ssg_params` line by the node's parameter declarations. */
 static enum ssg_err resolve_includes(const struct ssg_node_ctx *ctx, const char *text,
                                      struct source *src)
 {
@@ -248,7 +321,9 @@ static enum ssg_err resolve_includes(const struct ssg_node_ctx *ctx, const char 
             free(buf);
             return SSG_E_SHADER;
         }
-        if (body) {
+        if (is_params_pragma(p, n)) {
+            ok = append_params_block(&buf, &len, &cap, ctx->desc->params);
+        } else if (body) {
             snprintf(mark, sizeof mark, "#line %d\n",
                      INCLUDE_BASE + src->includes * INCLUDE_STRIDE + 1);
             snprintf(src->include[src->includes++], sizeof src->include[0], "%s", name);
@@ -306,12 +381,15 @@ static GLuint build(const struct ssg_node_ctx *ctx, const char *shader, const ch
 }
 
 GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
-                          const char *defines, int stages)
+                          const char *defines, int stages, int *binds_params)
 {
-    const char *d = defines ? defines : "";
+    const char *d = defines ? defines : "", *text = ssg_shader_source(shader);
+    const int with_params = text && ctx->desc && declares_params(text);
+    const struct ssg_param_desc *table = with_params ? ctx->desc->params.params : NULL;
+    *binds_params = with_params;
     for (int i = 0; i < cache_count; i++)
         if (cache[i].stages == stages && !strcmp(cache[i].shader, shader) &&
-            !strcmp(cache[i].defines, d))
+            !strcmp(cache[i].defines, d) && cache[i].params == table)
             return cache[i].program;
     GLuint prog = build(ctx, shader, defines, stages);
     if (!prog || cache_count == CACHE_MAX || strlen(shader) >= sizeof cache[0].shader)
@@ -322,6 +400,7 @@ GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
         return prog;
     snprintf(c->shader, sizeof c->shader, "%s", shader);
     c->stages = stages;
+    c->params = table;
     c->program = prog;
     cache_count++;
     return prog;

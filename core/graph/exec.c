@@ -130,9 +130,11 @@ enum ssg_err ssg_node_prepare(const struct ssg_node_desc *desc, const struct ssg
                               const void *params, void **consts)
 {
     *consts = NULL;
-    if (!desc->consts_size)
+    size_t bytes = desc->consts_size_of ? desc->consts_size_of(params, ctx->in_shape)
+                                        : desc->consts_size;
+    if (!bytes)
         return SSG_OK;
-    *consts = calloc(1, desc->consts_size);
+    *consts = calloc(1, bytes);
     if (!*consts) {
         ssg_diag_file(ctx->diags, SSG_E_NOMEM, NULL, "out of memory preparing '%s'",
                       ctx->instance);
@@ -291,9 +293,11 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
     double t0 = ssg_now_ms();
     *timing = (struct ssg_node_timing){0};
     int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
-    enum ssg_err e = ssg_node_verify_io(ctx, io);
+    struct ssg_node_ctx run_ctx = *ctx;
+    run_ctx.params = params; /* what a GL pass binds by the table (gl.h) */
+    enum ssg_err e = ssg_node_verify_io(&run_ctx, io);
     if (!e)
-        e = run_backend(desc, ctx, consts ? consts : params, io, on_gl, timing);
+        e = run_backend(desc, &run_ctx, consts ? consts : params, io, on_gl, timing);
     timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
     return e;
 }

@@ -119,6 +119,10 @@ struct ssg_node_ctx {
                                       made them (write's EXR metadata); NULL = none */
     const char *const *sets;       /* the run's --set overrides as given (set_count) */
     int set_count;
+    const void *params;            /* the node's parameters (its table's struct) while
+                                      run_cpu or run_gl runs (set by the executor; a GL
+                                      pass binds them by the table, gl.h); NULL in check
+                                      and prepare, which get them as an argument */
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate
@@ -169,6 +173,10 @@ struct ssg_node_desc {
     struct ssg_param_table params;
     size_t params_size;  /* sizeof the params struct */
     size_t consts_size;  /* sizeof what prepare() writes; 0 = none */
+    /* Optional, instead of consts_size: the bytes prepare() writes for these parameters
+       and input shapes, for constants whose tables grow with a parameter (hbao's per-
+       direction steps): a struct ending in a flexible array, sized to what is used. */
+    size_t (*consts_size_of)(const void *params, const struct ssg_shape *in);
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */

@@ -57,6 +57,8 @@ struct ssg_param_desc {
     int def_ints_count;         /* ... and how many */
     int min_count, max_count;   /* INTS: allowed number of values (max <= SSG_INTS_MAX) */
     int required;               /* 1 = must be given (no default) */
+    int host_only;              /* 1 = read by the node's prepare() or CPU code only: no
+                                   GLSL uniform is declared or bound for it (gl.h) */
 };
 
 /* The storage of a parameter: its type and its offset in the owner's params struct, e.g.
@@ -89,6 +91,37 @@ struct ssg_param_desc {
     .type = SSG_P_VEC3, .offset = SSG_FIELD_OFFSET(owner, field, float(*)[3])
 #define SSG_FIELD_INTS(owner, field) \
     .type = SSG_P_INTS, .offset = SSG_FIELD_OFFSET(owner, field, struct ssg_ints *)
+
+/* One-line parameter rows (the idea of libplacebo's OPT_* rows). A node writes each
+ * parameter once, as one row of a list macro: its kind (the SSG_P_* suffix), its field,
+ * its one-line doc, then the rest of its entry as designated initialisers (default, range,
+ * unit, choices, host_only):
+ *   #define SSG_SSAO_PARAMS(P)                                                        \
+ *       P(FLOAT, radius, "hemisphere radius around the pixel", .def = 0.5,            \
+ *         .min = 1e-6, .max = 1e6, .unit = "scene units")                             \
+ *       P(ENUM, mode, "sampling region", .def = 0, .choices = ssg_ssao_mode_choices)
+ *   SSG_PARAMS_STRUCT(ssg_ssao_params, SSG_SSAO_PARAMS);          (in the node's header)
+ *   SSG_PARAMS_TABLE(params, ssg_ssao_params, SSG_SSAO_PARAMS);   (in its descriptor file)
+ * The struct gets one field a row, of the C type its kind stores (table above), and the
+ * table one entry a row, type-checked as SSG_FIELD_* checks it. A row needs at least one
+ * initialiser after the doc (ISO C wants an argument for `...`). One generated table a
+ * translation unit (the table names its struct through one file-scope typedef). A GL
+ * shader reads every row not marked host_only as `p_<field>` (gl.h, #pragma ssg_params). */
+#define SSG_PARAM_DECL_FLOAT(f) float f
+#define SSG_PARAM_DECL_INT(f) int f
+#define SSG_PARAM_DECL_BOOL(f) int f
+#define SSG_PARAM_DECL_ENUM(f) int f
+#define SSG_PARAM_DECL_STRING(f) char f[SSG_STR_MAX]
+#define SSG_PARAM_DECL_NAME(f) char f[SSG_NAME_MAX]
+#define SSG_PARAM_DECL_VEC3(f) float f[3]
+#define SSG_PARAM_DECL_INTS(f) struct ssg_ints f
+#define SSG_PARAM_AS_FIELD(kind, field, doc, ...) SSG_PARAM_DECL_##kind(field);
+#define SSG_PARAM_AS_ROW(kind, field, doc, ...) \
+    {.name = #field, SSG_FIELD_##kind(ssg_params_owner, field), .help = doc, __VA_ARGS__},
+#define SSG_PARAMS_STRUCT(tag, LIST) struct tag { LIST(SSG_PARAM_AS_FIELD) }
+#define SSG_PARAMS_TABLE(var, tag, LIST)  \
+    typedef struct tag ssg_params_owner; \
+    static const struct ssg_param_desc var[] = {LIST(SSG_PARAM_AS_ROW)}
 
 /* A table and its length, so callers pass one thing. */
 struct ssg_param_table {

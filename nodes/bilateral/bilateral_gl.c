@@ -15,7 +15,8 @@ static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
                      struct ssg_image *dst2, const struct ssg_bilateral_pass *pass)
 {
     ssg_gl_input(p, "src", src);
-    ssg_gl_input(p, "src2", src2);
+    if (src2) /* the shader reads src2 only when compiled with IN2_CH > 0 */
+        ssg_gl_input(p, "src2", src2);
     ssg_gl_output(p, "dst", dst);
     ssg_gl_output(p, "dst2", dst2);
     ssg_gl_ivec2(p, "reach", pass->rx, pass->ry);
@@ -44,13 +45,15 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_pass_begin(&p, ctx, "bilateral.glsl", defines);
     ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->size * (size_t)c->size);
     ssg_gl_input(&p, "depth", io->in[SSG_BILATERAL_IN_DEPTH]);
-    ssg_gl_input(&p, "normal", nrm);
+    if (nrm && c->normal_power > 0) { /* NORMALS 1: the only variant that reads them */
+        ssg_gl_input(&p, "normal", nrm);
+        ssg_gl_int(&p, "squarings", ssg_joint_squarings(c->normal_power));
+        ssg_gl_float(&p, "normal_power", (float)c->normal_power);
+        ssg_gl_float(&p, "normal_min", c->normal_min);
+    }
     ssg_gl_int(&p, "radius", c->radius);
     ssg_gl_int(&p, "size", c->size);
     ssg_gl_float(&p, "depth_scale", c->depth_scale);
-    ssg_gl_int(&p, "squarings", ssg_joint_squarings(c->normal_power));
-    ssg_gl_float(&p, "normal_power", (float)c->normal_power);
-    ssg_gl_float(&p, "normal_min", c->normal_min);
     for (int i = 0; i < passes; i++) {
         const struct ssg_image *src = i ? tmp[(i - 1) % 2] : io->in[SSG_BILATERAL_IN_IN];
         const struct ssg_image *src2 = i ? tmp2[(i - 1) % 2] : in2;

@@ -312,12 +312,7 @@ enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_
 enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
                                  const char *shader)
 {
-    memset(pass, 0, sizeof *pass);
-    pass->ctx = ctx;
-    pass->shader = shader;
-    pass->program = ssg_gl_program_get(ctx, shader, NULL, SSG_GL_RASTER);
-    pass->err = pass->program ? SSG_OK : SSG_E_SHADER;
-    return pass->err;
+    return ssg_gl_pass_open(pass, ctx, shader, NULL, SSG_GL_RASTER);
 }
 
 /* A framebuffer with a depth buffer of w x h and no colour attachment yet; 0 on failure. */

@@ -99,35 +99,17 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     struct ssg_ssao_consts *c = consts;
     c->p = *(const struct ssg_ssao_params *)params;
-    if (!(c->p.radius > 0))
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0");
-    return ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->proj);
+    enum ssg_err e =
+        ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->proj);
+    c->cap = c->p.max_screen_radius / c->proj.f;
+    c->capped = c->p.max_screen_radius > 0.0f;
+    c->inv_samples = 1.0f / (float)ctx->in_shape[SSG_SSAO_IN_KERNEL].width;
+    return e;
 }
 
-static const char *const range_choices[] = {"none", "hard", "smooth", NULL};
-static const char *const mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
-
-static const struct ssg_param_desc params[] = {
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, radius), .def = 0.5, .min = 1e-6,
-     .max = 1e6, .unit = "scene units", .help = "hemisphere radius around the pixel"},
-    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_ssao_params, bias), .def = 0, .min = 0,
-     .max = 1e6, .unit = "scene units",
-     .help = "a sample is occluded only when the surface is this much in front of it "
-             "(default 0: chosen by ssgraph tune over the example scenes, docs/accuracy.md)"},
-    {.name = "power", SSG_FIELD_FLOAT(struct ssg_ssao_params, power), .def = 2, .min = 0,
-     .max = 64, .help = "intensity: out = visibility^power (default 2: with 16 samples the "
-                        "lowest mean error against reference_ao, docs/accuracy.md)"},
-    {.name = "range_check", SSG_FIELD_ENUM(struct ssg_ssao_params, range_check),
-     .def = SSG_SSAO_RANGE_HARD, .choices = range_choices,
-     .help = "how occluders far in depth from the pixel are discounted"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_ssao_params, max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius; 0 = no cap"},
-    {.name = "mode", SSG_FIELD_ENUM(struct ssg_ssao_params, mode),
-     .def = SSG_SSAO_MODE_HEMISPHERE, .choices = mode_choices,
-     .help = "hemisphere about the normal; sphere (normal-free, Knuth and Kohlhammer); "
-             "disc (screen-space depth samples, Crytek 2007)"},
-};
+static const char *const ssg_ssao_range_choices[] = {"none", "hard", "smooth", NULL};
+static const char *const ssg_ssao_mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
+SSG_PARAMS_TABLE(params, ssg_ssao_params, SSG_SSAO_PARAMS);
 
 static const struct ssg_port_desc inputs[] = {
     [SSG_SSAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,

@@ -8,20 +8,14 @@
 uniform sampler2DArray normal;   // read in mode hemisphere only
 uniform sampler2DArray count;
 uniform bool count_bound;
-layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform writeonly image2DArray dst_out;
 
-uniform int mode;          // enum ssg_ssao_mode: 0 hemisphere, 1 sphere, 2 disc
-uniform int range_check;   // enum ssg_ssao_range: 0 none, 1 hard, 2 smooth
-uniform float radius;      // scene units
-uniform float bias;        // scene units
-uniform float power;
+#pragma ssg_params
 uniform float cap;         // max_screen_radius / f: r <= cap depth(P) when capped
 uniform bool capped;       // max_screen_radius > 0
 uniform float inv_samples; // 1 / K, rounded as the CPU does
 uniform vec3 proj;         // (f, cx, cy) of this resolution
 
-const int HEMISPHERE = 0, SPHERE = 1, DISC = 2;
-const int RANGE_NONE = 0, RANGE_HARD = 1;
 
 // The weighted occlusion of one placed sample: scene depth d at its pixel occludes when
 // 0 < d < zb (zb = -S.z - bias, or depth(P) - bias in disc mode), weighted by the range
@@ -32,9 +26,9 @@ float occlusion(ivec2 q, float zb, float dp, float r)
     if (!(d > 0.0 && d < zb))
         return 0.0;
     precise float gap = abs(dp - d);
-    if (range_check == RANGE_NONE || gap <= r)
+    if (p_range_check == RANGE_CHECK_NONE || gap <= r)
         return 1.0;
-    if (range_check == RANGE_HARD)
+    if (p_range_check == RANGE_CHECK_HARD)
         return 0.0;
     precise float t = r / gap; // smooth: smoothstep(0, 1, r / |dp - d|), gap > r
     precise float w = t * t * (3.0 - 2.0 * t);
@@ -62,7 +56,7 @@ frame_coeffs setup_frame(vec3 P, vec3 N, vec2 rot, float r)
     precise float nxr = r * N.x, nyr = r * N.y, nzr = r * N.z;
     precise float qz = -P.z;
     frame_coeffs k;
-    k.cz = vec4(qz - bias, -tz, -bz, -nzr);
+    k.cz = vec4(qz - p_bias, -tz, -bz, -nzr);
     precise float cu0 = f * P.x + cx * qz, cu1 = f * tx - cx * tz;
     precise float cu2 = f * bx - cx * bz, cu3 = f * nxr - cx * nzr;
     precise float cv0 = cy * qz - f * P.y, cv1 = -cy * tz - f * ty;
@@ -78,7 +72,7 @@ float sample_point(frame_coeffs k, vec3 s, float dp, float r)
 {
     ivec2 q;
     float zb;
-    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, bias, q, zb))
+    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, p_bias, q, zb))
         return 0.0;
     return occlusion(q, zb, dp, r);
 }
@@ -93,7 +87,7 @@ float sample_disc(ivec2 p, vec2 rot, vec3 s, float sgn, float rp, float dp, floa
     vec2 size = vec2(ssg_grid);
     if (!(u >= 0.0 && u < size.x && v >= 0.0 && v < size.y))
         return 0.0;
-    precise float zb = dp - bias;
+    precise float zb = dp - p_bias;
     return occlusion(ivec2(int(u), int(v)), zb, dp, r);
 }
 
@@ -102,9 +96,9 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
 {
     vec2 rot = ssg_tile_rotation(p);
     precise float rcap = cap * dp;
-    float r = capped && rcap < radius ? rcap : radius;
+    float r = capped && rcap < p_radius ? rcap : p_radius;
     precise float occ = 0.0;
-    if (mode == DISC) {
+    if (p_mode == MODE_DISC) {
         precise float rp = proj.x * r / dp;
         for (int s = 0; s < n; s++) {
             vec3 ks = ssg_kernel_sample(s);
@@ -117,7 +111,7 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
     for (int s = 0; s < n; s++) {
         vec3 ks = ssg_kernel_sample(s);
         occ += sample_point(k, ks, dp, r);
-        if (mode == SPHERE)
+        if (p_mode == MODE_SPHERE)
             occ += sample_point(k, -ks, dp, r);
     }
     return occ;
@@ -127,11 +121,11 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
 float visibility(float occ, int n, int samples)
 {
     precise float icnt = n == samples ? inv_samples : 1.0 / float(n);
-    precise float v = (mode == HEMISPHERE ? 1.0 : 2.0) - occ * icnt;
+    precise float v = (p_mode == MODE_HEMISPHERE ? 1.0 : 2.0) - occ * icnt;
     v = v > 0.0 ? v : 0.0;
-    v = v < 1.0 || mode == HEMISPHERE ? v : 1.0;
-    if (power != 1.0)
-        v = power == 0.0 ? 1.0 : pow(v, power); // powf(x, 0) = 1, even at 0
+    v = v < 1.0 || p_mode == MODE_HEMISPHERE ? v : 1.0;
+    if (p_power != 1.0)
+        v = p_power == 0.0 ? 1.0 : pow(v, p_power); // powf(x, 0) = 1, even at 0
     return v;
 }
 
@@ -141,12 +135,12 @@ void main()
     if (ssg_outside(p))
         return;
     float dp = ssg_scene_depth(p);
-    vec3 N = mode == HEMISPHERE ? ssg_load3(normal, p) : vec3(0.0, 0.0, 1.0);
+    vec3 N = p_mode == MODE_HEMISPHERE ? ssg_load3(normal, p) : vec3(0.0, 0.0, 1.0);
     if (!ssg_surface_normal(dp, N)) { // background or garbage: 1
-        SSG_STORE1(dst, p, 1.0);
+        SSG_STORE1(dst_out, p, 1.0);
         return;
     }
     int samples = textureSize(kernel, 0).x;
     int n = ssg_pixel_count(count, count_bound, p, samples);
-    SSG_STORE1(dst, p, visibility(occluded_sum(p, N, dp, n), n, samples));
+    SSG_STORE1(dst_out, p, visibility(occluded_sum(p, N, dp, n), n, samples));
 }

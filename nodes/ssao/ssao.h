@@ -35,21 +35,38 @@ enum ssg_ssao_output {
     SSG_SSAO_OUTPUTS
 };
 
-struct ssg_ssao_params {
-    float radius;            /* hemisphere radius, scene units, > 0; default 0.5 */
-    float bias;              /* depth margin before a sample counts as occluded, scene
-                                units; default 0 */
-    float power;             /* ao = visibility^power; default 2 */
-    int range_check;         /* enum ssg_ssao_range; default hard */
-    float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
-    int mode;                /* enum ssg_ssao_mode; default hemisphere */
-};
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range,
+   unit and choices. The struct below and the table in ssao.c are made from these rows;
+   the GL shader reads them as p_<field> (#pragma ssg_params). */
+#define SSG_SSAO_PARAMS(P)                                                                 \
+    P(FLOAT, radius, "hemisphere radius around the pixel", .def = 0.5, .min = 1e-6,        \
+      .max = 1e6, .unit = "scene units")                                                   \
+    P(FLOAT, bias,                                                                         \
+      "a sample is occluded only when the surface is this much in front of it (default "   \
+      "0: chosen by ssgraph tune over the example scenes, docs/accuracy.md)",              \
+      .def = 0, .min = 0, .max = 1e6, .unit = "scene units")                               \
+    P(FLOAT, power,                                                                        \
+      "intensity: out = visibility^power (default 2: with 16 samples the lowest mean "     \
+      "error against reference_ao, docs/accuracy.md)",                                     \
+      .def = 2, .min = 0, .max = 64)                                                       \
+    P(ENUM, range_check, "how occluders far in depth from the pixel are discounted",       \
+      .def = SSG_SSAO_RANGE_HARD, .choices = ssg_ssao_range_choices)                       \
+    P(FLOAT, max_screen_radius, "caps the projected radius; 0 = no cap", .def = 0,         \
+      .min = 0, .max = 16384, .unit = "px", .host_only = 1) /* prepare(): cap, capped */   \
+    P(ENUM, mode,                                                                          \
+      "hemisphere about the normal; sphere (normal-free, Knuth and Kohlhammer); disc "     \
+      "(screen-space depth samples, Crytek 2007)",                                         \
+      .def = SSG_SSAO_MODE_HEMISPHERE, .choices = ssg_ssao_mode_choices)
+SSG_PARAMS_STRUCT(ssg_ssao_params, SSG_SSAO_PARAMS);
 
 struct ssg_ssao_consts {
     struct ssg_ssao_params p; /* the parameters as given */
     struct ssg_projection proj; /* the frame's camera as seen by the G-buffer's
                                    resolution (ssg_projection_scaled: a subsampled
                                    G-buffer sees the same camera) */
+    float cap;         /* max_screen_radius / f: r <= cap depth(P) when capped */
+    int capped;        /* max_screen_radius > 0 */
+    float inv_samples; /* 1 / kernel width */
 };
 
 enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -17,7 +17,6 @@ enum ssg_err ssg_ssilvb_run_gl(const struct ssg_node_ctx *ctx, const void *const
     ssg_gl_buffer(&p, 0, c->e1, 2 * (size_t)pos->width * sizeof *c->e1);
     ssg_gl_input(&p, "position", pos);
     ssg_gl_input(&p, "normal", io->in[SSG_SSILVB_IN_NORMAL]);
-    ssg_gl_input(&p, "rotation", NULL);
     ssg_gl_input(&p, "depth", io->in[SSG_SSILVB_IN_DEPTH]);
     ssg_gl_input(&p, "light", io->in[SSG_SSILVB_IN_LIGHT]);
     ssg_gl_input(&p, "albedo", io->in[SSG_SSILVB_IN_ALBEDO]);

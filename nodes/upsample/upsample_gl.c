@@ -22,20 +22,25 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "upsample.glsl", defines);
     ssg_gl_input(&p, "src", io->in[SSG_UPSAMPLE_IN_IN]);
-    ssg_gl_input(&p, "src2", in2);
+    if (in2) /* read only when compiled with IN2_CH > 0 */
+        ssg_gl_input(&p, "src2", in2);
     ssg_gl_input(&p, "depth", io->in[SSG_UPSAMPLE_IN_DEPTH]);
-    ssg_gl_input(&p, "normal", io->in[SSG_UPSAMPLE_IN_NORMAL]);
+    const int normals = lnrm && c->normal_power > 0.0f; /* NORMALS: reads both normals */
+    if (normals)
+        ssg_gl_input(&p, "normal", io->in[SSG_UPSAMPLE_IN_NORMAL]);
     ssg_gl_input(&p, "low_depth", io->in[SSG_UPSAMPLE_IN_LOW_DEPTH]);
-    ssg_gl_input(&p, "low_normal", lnrm);
+    if (normals) {
+        ssg_gl_input(&p, "low_normal", lnrm);
+        ssg_gl_float(&p, "normal_power", c->normal_power);
+        ssg_gl_float(&p, "normal_min", c->normal_min);
+        ssg_gl_int(&p, "squarings", ssg_joint_squarings((int)c->normal_power));
+    }
     ssg_gl_output(&p, "dst", io->out[0]);
     ssg_gl_output(&p, "dst2", io->out[1]);
     ssg_gl_int(&p, "factor", k);
     ssg_gl_int(&p, "radius", c->radius);
     ssg_gl_float(&p, "spatial_k", c->spatial_k);
     ssg_gl_float(&p, "depth_scale", c->depth_scale);
-    ssg_gl_float(&p, "normal_power", c->normal_power);
-    ssg_gl_float(&p, "normal_min", c->normal_min);
-    ssg_gl_int(&p, "squarings", ssg_joint_squarings((int)c->normal_power));
     ssg_gl_dispatch(&p, io->out[0]->width, io->out[0]->height);
     return ssg_gl_pass_end(&p);
 }
