@@ -337,4 +337,19 @@ static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ss
 #define SSG_NODE_PARAMS(table, params_type) \
     .params = SSG_TABLE(table), .params_size = sizeof(params_type)
 
+/* One-line port rows, as parameters have (lang/params.h): a node lists each port once,
+ * with its enumerator, name, types, one-line doc and any further fields,
+ *   #define SSG_SSAO_IN(X)                                                          \
+ *       X(SSG_SSAO_IN_POSITION, "position", SSG_T_VECTOR, "view-space position")     \
+ *       X(SSG_SSAO_IN_NORMAL, "normal", SSG_T_VECTOR, "unit normal", .optional = 1)
+ *   SSG_PORT_ENUM(ssg_ssao_input, SSG_SSAO_IN, SSG_SSAO_INPUTS);   (in the header)
+ *   SSG_PORT_TABLE(inputs, SSG_SSAO_IN);                           (in the .c file)
+ * The enum gets the enumerators in order and the count last; the table one entry each,
+ * indexed by its enumerator, so the two cannot drift apart. */
+#define SSG_PORT_AS_ENUMERATOR(id, ...) id,
+#define SSG_PORT_AS_ROW(id, port, type_mask, text, ...) \
+    [id] = {.name = port, .types = type_mask, .doc = text, __VA_ARGS__},
+#define SSG_PORT_ENUM(tag, LIST, count) enum tag { LIST(SSG_PORT_AS_ENUMERATOR) count }
+#define SSG_PORT_TABLE(var, LIST) static const struct ssg_port_desc var[] = {LIST(SSG_PORT_AS_ROW)}
+
 #endif

@@ -111,27 +111,8 @@ static const char *const ssg_ssao_range_choices[] = {"none", "hard", "smooth", N
 static const char *const ssg_ssao_mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
 SSG_PARAMS_TABLE(params, ssg_ssao_params, SSG_SSAO_PARAMS);
 
-static const struct ssg_port_desc inputs[] = {
-    [SSG_SSAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position"},
-    [SSG_SSAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .optional = 1,
-     .doc = "unit view-space normal (mode hemisphere only; required there)"},
-    [SSG_SSAO_IN_KERNEL] = {.name = "kernel", .types = SSG_T_KERNEL,
-     .doc = "hemisphere samples (halton.samples)"},
-    [SSG_SSAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},
-    [SSG_SSAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth for the occluder lookup; none = -position.z"},
-    [SSG_SSAO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "per-pixel sample count (complexity.count): the first n of the kernel; none = all"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_SSAO_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_SSAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
-     .doc = "visibility, 1 = unoccluded"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_SSAO_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(inputs, SSG_SSAO_IN);
+SSG_PORT_TABLE(outputs, SSG_SSAO_OUT);
 
 /* Flops per pixel (node.h), by reading ssao_cpu.c: per kernel sample about 38 (placing
    and projecting it: three 4-term affine forms, a division, rounding and bounds; the

@@ -18,22 +18,22 @@ enum ssg_ssao_mode {
     SSG_SSAO_MODE_DISC,       /* normal-free: depth samples in a screen-space disc */
 };
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_ssao_input {
-    SSG_SSAO_IN_POSITION,
-    SSG_SSAO_IN_NORMAL,
-    SSG_SSAO_IN_KERNEL,
-    SSG_SSAO_IN_ROTATION,
-    SSG_SSAO_IN_DEPTH,
-    SSG_SSAO_IN_COUNT,
-    SSG_SSAO_INPUTS
-};
-enum ssg_ssao_output {
-    SSG_SSAO_OUT_OUT,
-    SSG_SSAO_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_SSAO_IN(X)                                                                     \
+    X(SSG_SSAO_IN_POSITION, "position", SSG_T_VECTOR, "view-space position")               \
+    X(SSG_SSAO_IN_NORMAL, "normal", SSG_T_VECTOR,                                          \
+      "unit view-space normal (mode hemisphere only; required there)", .optional = 1)      \
+    X(SSG_SSAO_IN_KERNEL, "kernel", SSG_T_KERNEL, "hemisphere samples (halton.samples)")    \
+    X(SSG_SSAO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
+      "per-pixel rotation tile (halton.rotation); none = no rotation", .optional = 1)      \
+    X(SSG_SSAO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
+      "linear depth for the occluder lookup; none = -position.z", .optional = 1)           \
+    X(SSG_SSAO_IN_COUNT, "count", SSG_T_SCALAR,                                            \
+      "per-pixel sample count (complexity.count): the first n of the kernel; none = all",  \
+      .optional = 1)
+#define SSG_SSAO_OUT(X) X(SSG_SSAO_OUT_OUT, "out", SSG_T_SCALAR, "visibility, 1 = unoccluded")
+SSG_PORT_ENUM(ssg_ssao_input, SSG_SSAO_IN, SSG_SSAO_INPUTS);
+SSG_PORT_ENUM(ssg_ssao_output, SSG_SSAO_OUT, SSG_SSAO_OUTPUTS);
 
 /* The parameters, one row each (lang/params.h): kind, field, doc, then default, range,
    unit and choices. The struct below and the table in ssao.c are made from these rows;
