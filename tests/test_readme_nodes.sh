@@ -2,6 +2,8 @@
 # test_readme_nodes.sh - the README's node table names every registered node once, and no
 # node that is not registered (`ssgraph nodes` reads the registry, nodes/nodes.def): a new
 # node without its README row, or a row left behind by a removed one, fails here.
+# tools/new-node.sh adds a new node's row (its descriptor's summary) with its registry line;
+# the table stays written by hand so that a row can say more than the one-line summary.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_readme_nodes"
 "$BIN" nodes | awk '{print $1}' | sort > "$TMP/registered" || fail "ssgraph nodes failed"

@@ -81,6 +81,15 @@ void ssg_node_ctx_set_shapes(struct ssg_node_ctx *ctx, const struct ssg_io_shape
 /* An image's shape with its type among `accepted` (ssg_type_of_image; 0 when none). */
 struct ssg_shape ssg_shape_of_image(const struct ssg_image *image, unsigned accepted);
 
+/* ssg_node_run (ssgraph.h) for a descriptor in hand rather than a registered name: a node
+ * not (yet) in nodes/nodes.def runs the same way, as the node template's test does
+ * (tests/test_node_template.sh). The caller has checked the arguments ssg_node_run checks
+ * (outputs non-NULL, counts matching their arrays). */
+enum ssg_err ssg_node_run_desc(const struct ssg_node_desc *desc, const struct ssg_binding *inputs,
+                               int input_count, const char *const *sets, int set_count,
+                               const struct ssg_frame *frame, struct ssg_outputs *outputs,
+                               struct ssg_diags *diags);
+
 /* Wall-clock milliseconds from an arbitrary origin. */
 double ssg_now_ms(void);
 

@@ -219,12 +219,23 @@ enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, in
                           ? "input_count does not match inputs" : "set_count does not match sets");
         return SSG_E_USAGE;
     }
-    struct single s = {.d = ssg_node_find(node, strlen(node))};
-    if (!s.d) {
+    const struct ssg_node_desc *d = ssg_node_find(node, strlen(node));
+    if (!d) {
         ssg_diag_file(diags, SSG_E_UNKNOWN_NODE, NULL, "unknown node '%s' (see ssgraph nodes)",
                       node);
         return SSG_E_UNKNOWN_NODE;
     }
+    return ssg_node_run_desc(d, inputs, input_count, sets, set_count, frame, outputs, diags);
+}
+
+enum ssg_err ssg_node_run_desc(const struct ssg_node_desc *d, const struct ssg_binding *inputs,
+                               int input_count, const char *const *sets, int set_count,
+                               const struct ssg_frame *frame, struct ssg_outputs *outputs,
+                               struct ssg_diags *diags)
+{
+    memset(outputs, 0, sizeof *outputs);
+    struct single s = {.d = d};
+    const char *node = d->name;
     if (s.d->needs_scene) {
         ssg_diag_file(diags, SSG_E_SCENE, NULL, "node '%s' renders a scene; run it in a graph "
                       "with a scene instead", node);
