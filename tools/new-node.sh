@@ -86,7 +86,8 @@ awk -v n="$table_end" -v row="| \`$name\` | $summary |" '{print} NR == n {print 
 echo "new-node.sh: wrote nodes/$name/ ($(ls "$root/nodes/$name" | tr '\n' ' ')), X($name) in nodes/nodes.def, its row in README.md"
 
 if [ -n "$build" ]; then
-    cmake --build "$build" -j"$(nproc)" > /dev/null || die "building $build failed"
+    log=$(cmake --build "$build" -j"$(nproc)" 2>&1) ||
+        { echo "$log" | tail -n 40 >&2; die "building $build failed (its last lines above)"; }
     "$build/ssgraph" docs > "$root/docs/nodes.md.tmp" && mv "$root/docs/nodes.md.tmp" "$root/docs/nodes.md"
     echo "new-node.sh: built $build and regenerated docs/nodes.md"
 else
