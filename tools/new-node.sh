@@ -12,8 +12,8 @@
 #   tools/new-node.sh --into DIR NAME      only the folder, as DIR/NAME/ (the build's
 #                                          template check, tests/CMakeLists.txt)
 #
-# NAME is [a-z][a-z0-9_]*, at most 40 characters, and no node or folder in nodes/ yet. A
-# refused name writes nothing. SSG_ROOT, when set, is the repository to write into
+# NAME is [a-z][a-z0-9_]*, at most 40 characters, no node or folder in nodes/ yet, and no
+# test's name in tests/ (test_NAME). A refused name writes nothing. SSG_ROOT, when set, is the repository to write into
 # (tests/test_new_node.sh runs the script on a scratch copy).
 set -euo pipefail
 
@@ -66,6 +66,9 @@ def=$root/nodes/nodes.def readme=$root/README.md
 [ ! -e "$root/nodes/$name" ] || die "nodes/$name already exists (pick another name)"
 grep -q "^X($name)\$" "$def" && die "node '$name' is already registered in nodes/nodes.def"
 grep -q "^| \`$name\` |" "$readme" && die "README.md's node table already has a row '$name'"
+for t in "$root/tests/test_$name.c" "$root/tests/test_$name.sh"; do
+    [ ! -e "$t" ] || die "tests/$(basename "$t") exists: the node's test_$name would have its name"
+done
 
 # The README row is the descriptor's .summary (the string literals after `.summary =` in
 # the template's NAME.c, joined), after the table's last row: edit both when the method
