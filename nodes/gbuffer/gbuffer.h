@@ -52,8 +52,9 @@ SSG_PARAMS_STRUCT(ssg_gbuffer_params, SSG_GBUFFER_PARAMS);
 struct ssg_gbuffer_consts {
     struct ssg_gbuffer_params p;
     struct ssg_projection proj; /* ssg_frame_projection of the frame */
-    float inv_f;                /* 1 / proj.f: a pixel's ray direction is (x - cx, cy - y)
-                                   inv_f, on both backends */
+    float inv_f;                /* 1 / proj.f: pixel (x, y)'s ray has view direction
+                                   ((x + 0.5 - cx) inv_f, -(y + 0.5 - cy) inv_f, -1) on
+                                   both backends */
     float rot[9];               /* world -> view rotation, row-major */
     float eye[3];               /* camera position, world */
     float near_z, far_z;        /* visible depth range, scene units */
