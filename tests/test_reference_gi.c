@@ -493,8 +493,15 @@ static void test_errors(void)
     struct result r;
     CHECK_EQ(run(NULL, &g, 16, 1, 1, 1, &r), SSG_E_SCENE);
     free_result(&r);
-    CHECK_EQ(run(s, &g, 0, 1, 1, 1, &r), SSG_E_VALUE);
-    free_result(&r);
+    /* samples 0: the table refuses it where a graph or command line gives it (the node
+       re-checks no range itself) */
+    struct ssg_reference_gi_params p;
+    struct ssg_diags d = {0};
+    ssg_params_defaults(ssg_node_reference_gi.params, &p);
+    CHECK_EQ(ssg_param_set_text(ssg_node_reference_gi.params, &p, "samples=0", "<test>",
+                                "reference_gi", &d),
+             SSG_E_RANGE);
+    CHECK_EQ(p.samples, 64);
     struct ssg_shape in[3] = {{W, H, 3, SSG_T_VECTOR}, {W, H, 3, SSG_T_VECTOR},
                               {W, H, 3, SSG_T_COLOR}};
     check_sizes(&ssg_node_reference_gi, in, 2, 3, 3);

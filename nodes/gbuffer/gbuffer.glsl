@@ -1,4 +1,4 @@
-// gbuffer.glsl - the G-buffer's shading pass on GL (method in gbuffer.c). Per pixel, the
+// gbuffer.glsl - the G-buffer's shading pass on GL (method in README.md). Per pixel, the
 // ray through the pixel centre is intersected with the triangle gbuffer_raster.glsl found
 // there (a visibility buffer, nodes/common/gl_raster.h), so depth and barycentrics come from the
 // ray as on the CPU; normal, albedo, direct and environment light then follow
@@ -18,10 +18,10 @@ layout(r32f) uniform writeonly image2DArray depth;
 layout(r32f) uniform writeonly image2DArray albedo;
 layout(r32f) uniform writeonly image2DArray direct;
 layout(r32f) uniform writeonly image2DArray environment;
+#pragma ssg_params
 uniform vec3 proj;          // f, cx, cy
 uniform float inv_f;        // 1 / f rounded on the CPU, as gbuffer_cpu.c has it
 uniform float rot[9];       // world -> view, row-major
-uniform int face;           // 1 = the triangle's own normal
 uniform int light_count;
 uniform int env_mode;       // 0 black, 1 constant, 2 the irradiance table
 uniform vec3 env_constant;  // mode 1: pi * the constant radiance
@@ -70,7 +70,7 @@ float blinn_phong(vec3 n, vec3 l, vec3 to_eye, float e, float shininess)
     return shininess == 0.0 ? 1.0 : ndh > 0.0 ? pow(ndh, shininess) : 0.0;
 }
 
-// Sum over the lights of (albedo / pi + specular * (N.H)^s) * colour * E (gbuffer.c).
+// Sum over the lights of (albedo / pi + specular * (N.H)^s) * colour * E (README.md).
 vec3 direct_light(vec3 n, vec3 pw, vec3 w, vec3 alb, Material m)
 {
     vec3 spec = vec3(m.specular[0], m.specular[1], m.specular[2]);
@@ -126,7 +126,7 @@ Surface surface_at(int id, int tri, vec2 ray, vec3 w)
     vec3 p2 = fetch3(me.positions, v.z);
     vec3 tuv = intersect(w, p0, p1, p2);
     float w0 = 1.0 - tuv.y - tuv.z;
-    vec3 n = face == 1 ? cross(p1 - p0, p2 - p0)
+    vec3 n = p_normals == NORMALS_FACE ? cross(p1 - p0, p2 - p0)
                        : w0 * fetch3(me.normals, v.x) + tuv.y * fetch3(me.normals, v.y) +
                              tuv.z * fetch3(me.normals, v.z);
     n *= 1.0 / sqrt(dot(n, n) + TINY);

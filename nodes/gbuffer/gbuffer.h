@@ -1,24 +1,32 @@
 /* gbuffer.h - parameters and prepared constants of the `gbuffer` node, shared by
- * gbuffer.c (descriptor, prepare) and gbuffer_cpu.c (the CPU kernel). Method and
- * conventions are described in gbuffer.c. */
+ * gbuffer.c (descriptor, prepare), gbuffer_cpu.c (the CPU kernel) and gbuffer_gl.c (the
+ * GL side). Method and conventions: README.md in this folder. */
 #ifndef SSG_GBUFFER_H
 #define SSG_GBUFFER_H
 
 #include "graph/node.h"
 
-/* Output ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_gbuffer_output {
-    SSG_GBUFFER_OUT_POSITION,
-    SSG_GBUFFER_OUT_NORMAL,
-    SSG_GBUFFER_OUT_DEPTH,
-    SSG_GBUFFER_OUT_ALBEDO,
-    SSG_GBUFFER_OUT_DIRECT,
-    SSG_GBUFFER_OUT_ENVIRONMENT,
-    SSG_GBUFFER_OUT_BACK, /* on demand: only computed when something reads it */
-    SSG_GBUFFER_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_GBUFFER_OUT(X)                                                                 \
+    X(SSG_GBUFFER_OUT_POSITION, "position", SSG_T_VECTOR,                                  \
+      "view-space position, 0 = background")                                               \
+    X(SSG_GBUFFER_OUT_NORMAL, "normal", SSG_T_VECTOR,                                      \
+      "unit view-space normal facing the camera")                                          \
+    X(SSG_GBUFFER_OUT_DEPTH, "depth", SSG_T_SCALAR,                                        \
+      "linear depth along -z, 0 = background")                                             \
+    X(SSG_GBUFFER_OUT_ALBEDO, "albedo", SSG_T_COLOR,                                       \
+      "material albedo times texture, linear RGB")                                         \
+    X(SSG_GBUFFER_OUT_DIRECT, "direct", SSG_T_COLOR,                                       \
+      "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB",         \
+      .lit = 1)                                                                            \
+    X(SSG_GBUFFER_OUT_ENVIRONMENT, "environment", SSG_T_COLOR,                             \
+      "diffuse light of the scene's environment, no occlusion: albedo / pi * "             \
+      "irradiance, linear RGB", .lit = 1)                                                  \
+    X(SSG_GBUFFER_OUT_BACK, "back", SSG_T_SCALAR,                                          \
+      "linear depth along -z of the next surface behind the first on the pixel's "        \
+      "ray (depth * (1 + 1e-4) < back <= far); +inf where there is none, 0 = "             \
+      "background", .on_demand = 1) /* only computed when something reads it */
+SSG_PORT_ENUM(ssg_gbuffer_output, SSG_GBUFFER_OUT, SSG_GBUFFER_OUTPUTS);
 
 /* The second layer (`back`) is the nearest surface whose depth exceeds depth + depth *
    SSG_GBUFFER_BACK_GAP (float operations in that order, on both backends): the first
@@ -32,13 +40,21 @@ enum ssg_gbuffer_normals {
     SSG_GBUFFER_NORMALS_FACE,   /* the triangle's geometric normal */
 };
 
-struct ssg_gbuffer_params {
-    int normals; /* enum ssg_gbuffer_normals; default smooth */
-};
+/* The parameters, one row each (lang/params.h); gbuffer.glsl reads them as p_<field>
+   (#pragma ssg_params). */
+#define SSG_GBUFFER_PARAMS(P)                                                              \
+    P(ENUM, normals,                                                                       \
+      "smooth: interpolated vertex normals; face: the triangle's own normal (no "         \
+      "self-occlusion of flat-shaded meshes in SSAO)",                                     \
+      .def = SSG_GBUFFER_NORMALS_SMOOTH, .choices = ssg_gbuffer_normals_choices)
+SSG_PARAMS_STRUCT(ssg_gbuffer_params, SSG_GBUFFER_PARAMS);
 
 struct ssg_gbuffer_consts {
     struct ssg_gbuffer_params p;
     struct ssg_projection proj; /* ssg_frame_projection of the frame */
+    float inv_f;                /* 1 / proj.f: pixel (x, y)'s ray has view direction
+                                   ((x + 0.5 - cx) inv_f, -(y + 0.5 - cy) inv_f, -1) on
+                                   both backends */
     float rot[9];               /* world -> view rotation, row-major */
     float eye[3];               /* camera position, world */
     float near_z, far_z;        /* visible depth range, scene units */

@@ -1,4 +1,4 @@
-// gbuffer_back.glsl - the second layer's depth on GL (gbuffer.c, `back`): the pixel's ray
+// gbuffer_back.glsl - the second layer's depth on GL (README.md, `back`): the pixel's ray
 // (gbuffer_cpu.c's make_rays) cast at the triangle gbuffer_peel.glsl found behind the
 // first surface, with gbuffer.glsl's intersection; +inf where the peel found none, 0 on
 // background, as the CPU's second Embree ray gives.

@@ -1,4 +1,4 @@
-/* gbuffer_cpu.c - CPU kernel of the `gbuffer` node (method in gbuffer.c).
+/* gbuffer_cpu.c - CPU kernel of the `gbuffer` node (method in README.md).
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows; a band's rows are cut into
  * segments of CHUNK pixels. A segment's primary rays go to Embree as one coherent ray
@@ -62,7 +62,7 @@ static void make_rays(const struct job *j, struct chunk *k, int x0, int y)
 {
     const struct ssg_gbuffer_consts *c = j->c;
     const float *r = c->rot;
-    float inv_f = 1.0f / c->proj.f, vy = -((float)y + 0.5f - c->proj.cy) * inv_f;
+    float inv_f = c->inv_f, vy = -((float)y + 0.5f - c->proj.cy) * inv_f;
     k->count = x0 + CHUNK < j->w ? CHUNK : j->w - x0;
     for (int s = 0; s < k->count; s++) {
         k->vx[s] = ((float)(x0 + s) + 0.5f - c->proj.cx) * inv_f;
@@ -190,7 +190,7 @@ static void specular(struct chunk *k)
         k->spec[s] = k->e[s] > 0.0f ? powf(k->ndh[s], k->shin[s]) : 0.0f;
 }
 
-/* Sums every light's Lambert + Blinn-Phong term into lr, lg, lb (gbuffer.c). */
+/* Sums every light's Lambert + Blinn-Phong term into lr, lg, lb (README.md). */
 static void lighting(const struct job *j, struct chunk *k)
 {
     const struct ssg_scene *sc = j->scene;

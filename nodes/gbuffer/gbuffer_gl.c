@@ -1,11 +1,12 @@
-/* gbuffer_gl.c - GL side of the `gbuffer` node (method in gbuffer.c): the scene is
+/* gbuffer_gl.c - GL side of the `gbuffer` node (method in README.md): the scene is
  * rasterised into a visibility buffer (mesh and triangle per pixel, nodes/common/gl_raster.h,
  * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
  * its triangle and writes the first layer's six outputs with the CPU kernel's formulas.
  * When `back` is read, a depth peel (gbuffer_peel.glsl) and a second cast
  * (gbuffer_back.glsl) give the second layer. The scene is
  * uploaded per run; the lights and the environment's irradiance table go in as they are
- * in the scene. */
+ * in the scene. gbuffer.glsl reads the parameters by the table (#pragma ssg_params); the
+ * passes write different outputs, so each names its images. */
 #include <stdlib.h>
 
 #include "scene/env.h"
@@ -68,17 +69,16 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
     for (int i = 0; i < SSG_COUNT(names); i++)
         ssg_gl_output(&p, names[i], io->out[i]);
     ssg_gl_projection(&p, "proj", &c->proj);
-    ssg_gl_float(&p, "inv_f", 1.0f / c->proj.f);
+    ssg_gl_float(&p, "inv_f", c->inv_f);
     ssg_gl_floats(&p, "rot", 9, c->rot);
     ssg_gl_vec3(&p, "eye", c->eye);
-    ssg_gl_int(&p, "face", c->p.normals == SSG_GBUFFER_NORMALS_FACE);
     ssg_gl_int(&p, "light_count", s->light_count);
     ssg_gl_dispatch(&p, ids->width, ids->height);
     free(lights);
     return ssg_gl_pass_end(&p);
 }
 
-/* The second layer (gbuffer.c, `back`): a depth peel against the first layer's depth
+/* The second layer (README.md, `back`): a depth peel against the first layer's depth
    into `ids` (its first use is over), then the ray cast at the triangle it found. */
 static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
                          const struct ssg_gl_scene *scene, const struct ssg_gl_camera *cam,
@@ -99,7 +99,7 @@ static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffe
     ssg_gl_input(&p, "first", first);
     ssg_gl_output(&p, "back", io->out[SSG_GBUFFER_OUT_BACK]);
     ssg_gl_projection(&p, "proj", &c->proj);
-    ssg_gl_float(&p, "inv_f", 1.0f / c->proj.f);
+    ssg_gl_float(&p, "inv_f", c->inv_f);
     ssg_gl_floats(&p, "rot", 9, c->rot);
     ssg_gl_vec3(&p, "eye", c->eye);
     ssg_gl_dispatch(&p, ids->width, ids->height);

@@ -1,16 +1,5 @@
-/* lightprobe.c - the `lightprobe` node: the scene's environment (an HDR lat-long light
- * probe or a constant sky) as N directional lights, the input of the hybrid AO's global
- * part (shadowmaps, probe_light).
- *
- * Method: Knuth and Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes",
- * sec. 3 "Global part" ("the process starts by converting the light probe into a set of
- * directional light sources") and sec. 4 ("we get our light setup by sampling the light
- * probe uniformly"): uniform = a spherical Fibonacci set. importance = Hammersley points
- * drawn by the probe's luminance (after Knuth and Fuhrmann 2005), so bright regions get
- * more, smaller lights. Each light's irradiance is the probe's integral over its Voronoi
- * region (lightprobe_regions.c; the paper gives no rule), so the lights' total equals the
- * probe's and an unshadowed surface of normal n receives about sum_i max(0, n.l_i) E_i
- * = E(n). Made once in prepare(); the backends copy it out. */
+/* lightprobe.c - the `lightprobe` node's descriptor and prepare: the scene's environment as
+ * N directional lights, made once in prepare(). The method and its sources: README.md here. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -60,11 +49,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 {
     const struct ssg_lightprobe_params *p = params;
     struct ssg_lightprobe_consts *c = consts;
-    if (p->count < SSG_LIGHTS_MIN || p->count > SSG_LIGHTS_MAX)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "count out of range");
     if (!ctx->scene || !ctx->scene->env)
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
-    if (!ctx->scene->env->has_light && p->missing)
+    if (!ctx->scene->env->has_light && p->missing == SSG_LIGHTPROBE_MISSING_DARK)
         return dark_lights(ctx, p->count, c);
     if (!ctx->scene->env->has_light) {
         char what[1400];
@@ -91,29 +78,19 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     return e ? ssg_node_fail(ctx, e, "out of memory") : SSG_OK;
 }
 
-static const char *const sampling_choices[] = {"uniform", "importance", NULL};
-static const char *const missing_choices[] = {"error", "dark", NULL};
+/* The consts hold the list itself: 6 count floats after the header. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    (void)in;
+    const struct ssg_lightprobe_params *p = params;
+    return sizeof(struct ssg_lightprobe_consts) + sizeof(float) * 6 * (size_t)p->count;
+}
 
-static const struct ssg_param_desc params[] = {
-    {.name = "count", SSG_FIELD_INT(struct ssg_lightprobe_params, count), .def = 128,
-     .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX, .unit = "lights",
-     .help = "directional lights N (the paper: 128 and 512, 2048 for its reference)"},
-    {.name = "sampling", SSG_FIELD_ENUM(struct ssg_lightprobe_params, sampling),
-     .def = SSG_LIGHTPROBE_UNIFORM, .choices = sampling_choices,
-     .help = "uniform: equal-area Fibonacci set (the paper); importance: denser where the "
-             "probe is bright"},
-    {.name = "missing", SSG_FIELD_ENUM(struct ssg_lightprobe_params, missing), .def = 0,
-     .choices = missing_choices,
-     .help = "a scene without environment light: error, or dark (N lights of irradiance 0, "
-             "so one graph serves scenes with and without a probe)"},
-};
+static const char *const ssg_lightprobe_sampling_choices[] = {"uniform", "importance", NULL};
+static const char *const ssg_lightprobe_missing_choices[] = {"error", "dark", NULL};
+SSG_PARAMS_TABLE(params, ssg_lightprobe_params, SSG_LIGHTPROBE_PARAMS);
 
-static const struct ssg_port_desc outputs[] = {
-    [SSG_LIGHTPROBE_OUT_LIGHTS] = {.name = "lights", .types = SSG_T_LIGHTS,
-     .doc = "N x 2: row 0 the unit world direction towards each light, row 1 its RGB "
-            "irradiance; the irradiances add up to the probe's integral"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_LIGHTPROBE_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(outputs, SSG_LIGHTPROBE_OUT);
 
 const struct ssg_node_desc ssg_node_lightprobe = {
     .name = "lightprobe",
@@ -122,18 +99,9 @@ const struct ssg_node_desc ssg_node_lightprobe = {
               "sec. 3 and 4 (global part: probe sampled uniformly into directional lights); "
               "importance sampling after Knuth and Fuhrmann 2005; each light's irradiance is "
               "its Voronoi region's integral of the probe (ours: the paper gives none)",
-    .doc = "Turns the scene's environment (environment(image=...) lat-long probe, or a "
-           "constant colour) into a light list: N directions, uniform (a spherical "
-           "Fibonacci set, about equal solid angles) or by importance (more lights where "
-           "the probe is bright), and for each the integral of the probe's radiance over "
-           "the directions nearer to it than to any other light, so the lights carry "
-           "exactly the probe's energy. Made once before the run (0.1 s for a 1024 x 512 "
-           "probe and 512 lights); feeds shadowmaps and probe_light. A scene without an "
-           "environment light is an error, or with missing=dark a list of lights that carry "
-           "nothing.",
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightprobe_params),
-    .consts_size = sizeof(struct ssg_lightprobe_consts),
+    .consts_size_of = consts_size_of,
     .needs_scene = 1,
     .check = check,
     .prepare = prepare,

@@ -1,10 +1,6 @@
 /* lightprobe.h - the `lightprobe` node's parameters and constants (lightprobe.c), shared by
  * its backends and tests: the scene's environment turned into a light list (SSG_T_LIGHTS,
- * nodes/common/shadowmap.h) once, in prepare().
- *
- * Method: Knuth and Kohlhammer, "A Hybrid Ambient Occlusion Technique for Dynamic Scenes",
- * sec. 3 and 4 ("Global part": the light probe is converted into directional lights by
- * sampling it uniformly); importance sampling after Knuth and Fuhrmann 2005. */
+ * nodes/common/shadowmap.h) once, in prepare(). Method: README.md in this folder. */
 #ifndef SSG_LIGHTPROBE_H
 #define SSG_LIGHTPROBE_H
 
@@ -12,30 +8,46 @@
 #include "graph/node.h"
 #include "common/shadowmap.h"
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_lightprobe_output {
-    SSG_LIGHTPROBE_OUT_LIGHTS,
-    SSG_LIGHTPROBE_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_LIGHTPROBE_OUT(X)                                                              \
+    X(SSG_LIGHTPROBE_OUT_LIGHTS, "lights", SSG_T_LIGHTS,                                   \
+      "N x 2: row 0 the unit world direction towards each light, row 1 its RGB "          \
+      "irradiance; the irradiances add up to the probe's integral")
+SSG_PORT_ENUM(ssg_lightprobe_output, SSG_LIGHTPROBE_OUT, SSG_LIGHTPROBE_OUTPUTS);
 
 enum ssg_lightprobe_sampling {
     SSG_LIGHTPROBE_UNIFORM,    /* a spherical Fibonacci set: near-equal areas 4 pi / N */
     SSG_LIGHTPROBE_IMPORTANCE, /* Hammersley points through the probe's luminance CDF */
 };
 
-struct ssg_lightprobe_params {
-    int count;    /* lights N, SSG_LIGHTS_MIN..SSG_LIGHTS_MAX; default 128 */
-    int sampling; /* enum ssg_lightprobe_sampling; default uniform */
-    int missing;  /* without environment light: 0 an error, 1 dark lights; default error */
+enum ssg_lightprobe_missing {
+    SSG_LIGHTPROBE_MISSING_ERROR, /* a scene without environment light is an error */
+    SSG_LIGHTPROBE_MISSING_DARK,  /* ... gets N lights of irradiance 0 */
 };
 
+/* The parameters, one row each (lang/params.h). The light list is made in prepare() and
+   copied out on both backends, so every row is host_only. */
+#define SSG_LIGHTPROBE_PARAMS(P)                                                           \
+    P(INT, count, "directional lights N (the paper: 128 and 512, 2048 for its reference)",  \
+      .def = 128, .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX, .unit = "lights",           \
+      .host_only = 1)                                                                      \
+    P(ENUM, sampling,                                                                      \
+      "uniform: equal-area Fibonacci set (the paper); importance: denser where the "      \
+      "probe is bright",                                                                   \
+      .def = SSG_LIGHTPROBE_UNIFORM, .choices = ssg_lightprobe_sampling_choices,           \
+      .host_only = 1)                                                                      \
+    P(ENUM, missing,                                                                       \
+      "a scene without environment light: error, or dark (N lights of irradiance 0, "     \
+      "so one graph serves scenes with and without a probe)",                              \
+      .def = SSG_LIGHTPROBE_MISSING_ERROR, .choices = ssg_lightprobe_missing_choices,      \
+      .host_only = 1)
+SSG_PARAMS_STRUCT(ssg_lightprobe_params, SSG_LIGHTPROBE_PARAMS);
+
 /* What prepare() makes: the light list exactly as the output image holds it (planar; row 0
- * the directions, row 1 the irradiances). */
+ * the directions, row 1 the irradiances), sized to `count` (consts_size_of). */
 struct ssg_lightprobe_consts {
     int count;
-    float lights[3 * 2 * SSG_LIGHTS_MAX]; /* channel c, row r, light i at
-                                             (c * 2 + r) * count + i */
+    float lights[]; /* 6 count floats: channel c, row r, light i at (c * 2 + r) * count + i */
 };
 
 /* Unit world directions of the N lights of a sampling (dirs: 3 N floats, xyz per light).

@@ -1,4 +1,4 @@
-/* lightprobe_cpu.c - CPU side of the `lightprobe` node (lightprobe.c): the light list was
+/* lightprobe_cpu.c - CPU side of the `lightprobe` node (README.md): the light list was
  * made in prepare(); running copies it into the output. */
 #include <string.h>
 

@@ -1,4 +1,4 @@
-/* lightprobe_gl.c - GL side of the `lightprobe` node (lightprobe.c): the light list made in
+/* lightprobe_gl.c - GL side of the `lightprobe` node (README.md): the light list made in
  * prepare() copied into the output texture (ssg_gl_fill), the CPU's very bytes. */
 #include "gl/gl.h"
 #include "lightprobe.h"

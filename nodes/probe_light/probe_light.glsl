@@ -2,13 +2,14 @@
 // lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, the
 // jittered texel and depth, one comparison against the light's map layer, sums in the same
 // order (`precise` keeps the CPU's roundings).
-uniform sampler2DArray position, normal, albedo, lights, frames, maps;
-uniform bool maps_bound;
+uniform sampler2DArray position, normal, albedo, lights, shadowmaps, frames;
+uniform bool shadowmaps_bound;
 layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
 layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
-layout(r32f) uniform writeonly image2DArray dst, dst_visibility;
-uniform int count, res, tile;
-uniform float noise_radius, offset_world, slope_world, normal_world;
+layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
+#pragma ssg_params
+uniform int count, res;
+uniform float offset_world, slope_world, normal_world;
 const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
 
 float frame(int light, int k)
@@ -25,7 +26,7 @@ float luminance(vec3 e)
 // V_i of point P (view space, normal N) with jitter j (texels) for light i, N.l_i = cosine.
 float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
 {
-    // the normal offset: P + N normal_world sin(N, l) (probe_light.c)
+    // the normal offset: P + N normal_world sin(N, l) (README.md)
     precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
     precise float lift = normal_world * sine;
     precise vec3 P = vec3(P0.x + lift * N.x, P0.y + lift * N.y, P0.z + lift * N.z);
@@ -40,7 +41,7 @@ float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
         return 1.0;
     precise float tangent = cosine > 0.0 ? sine / cosine : 0.0;
     tangent = tangent < MAX_SLOPE ? tangent : MAX_SLOPE;
-    precise float limit = texelFetch(maps, ivec3(int(x), int(y), i), 0).r +
+    precise float limit = texelFetch(shadowmaps, ivec3(int(x), int(y), i), 0).r +
                           (offset_world + slope_world * tangent);
     return d <= limit ? 1.0 : 0.0;
 }
@@ -51,8 +52,8 @@ void main()
     if (ssg_outside(p))
         return;
     vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
-    int cell = (p.y % tile) * tile + p.x % tile;
-    precise vec2 j = noise_radius * vec2(noise[cell], noise[tile * tile + cell]);
+    int tile = p_noise_tile, cell = (p.y % tile) * tile + p.x % tile;
+    precise vec2 j = p_noise_radius * vec2(noise[cell], noise[tile * tile + cell]);
     precise vec3 sum = vec3(0.0);
     precise float lum_lit = 0.0, lum_all = 0.0;
     for (int i = 0; i < count; i++) {
@@ -65,7 +66,7 @@ void main()
         if (e == vec3(0.0))
             continue; // a light that carries nothing (lightprobe missing=dark), as the CPU
         float w = cosine;
-        float v = maps_bound ? visible(i, P, N, j, cosine) : 1.0;
+        float v = shadowmaps_bound ? visible(i, P, N, j, cosine) : 1.0;
         precise float lit = v * w;
         sum += lit * e;
         lum_lit += lit * luminance(e);
@@ -73,6 +74,6 @@ void main()
     }
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
     precise vec3 out_rgb = ssg_load3(albedo, p) * 0.318309886183790671 * sum;
-    SSG_STORE3(dst, p, bg ? vec3(0.0) : out_rgb);
+    SSG_STORE3(dst_out, p, bg ? vec3(0.0) : out_rgb);
     SSG_STORE1(dst_visibility, p, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
 }

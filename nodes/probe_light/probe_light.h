@@ -1,6 +1,7 @@
-/* probe_light.h - the `probe_light` node (probe_light.c): the hybrid AO's global pass, a
- * G-buffer lit by a light list through its shadow maps. Shared by both backends: the
- * constants prepare() makes, and the per-light maps both compute the same way. */
+/* probe_light.h - the `probe_light` node (probe_light.c; method: README.md): the hybrid AO's
+ * global pass, a G-buffer lit by a light list through its shadow maps. Shared by both
+ * backends: the constants prepare() makes, and the per-light maps both compute the same
+ * way. */
 #ifndef SSG_PROBE_LIGHT_H
 #define SSG_PROBE_LIGHT_H
 
@@ -11,30 +12,51 @@ enum { SSG_PROBE_LIGHT_MAX_TILE = 16 };
 /* The largest tan(angle of N to l) the slope offset grows to (84 degrees). */
 #define SSG_PROBE_LIGHT_MAX_SLOPE 10.0f
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_probe_light_input {
-    SSG_PROBE_LIGHT_IN_POSITION,
-    SSG_PROBE_LIGHT_IN_NORMAL,
-    SSG_PROBE_LIGHT_IN_ALBEDO,
-    SSG_PROBE_LIGHT_IN_LIGHTS,
-    SSG_PROBE_LIGHT_IN_SHADOWMAPS,
-    SSG_PROBE_LIGHT_INPUTS
-};
-enum ssg_probe_light_output {
-    SSG_PROBE_LIGHT_OUT_OUT,
-    SSG_PROBE_LIGHT_OUT_VISIBILITY,
-    SSG_PROBE_LIGHT_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_PROBE_LIGHT_IN(X)                                                              \
+    X(SSG_PROBE_LIGHT_IN_POSITION, "position", SSG_T_VECTOR,                               \
+      "view-space position (gbuffer)")                                                     \
+    X(SSG_PROBE_LIGHT_IN_NORMAL, "normal", SSG_T_VECTOR,                                   \
+      "unit view-space normal, 0 = background (gbuffer)")                                  \
+    X(SSG_PROBE_LIGHT_IN_ALBEDO, "albedo", SSG_T_COLOR,                                    \
+      "diffuse albedo, linear RGB (gbuffer)")                                              \
+    X(SSG_PROBE_LIGHT_IN_LIGHTS, "lights", SSG_T_LIGHTS, "light list (lightprobe)")        \
+    X(SSG_PROBE_LIGHT_IN_SHADOWMAPS, "shadowmaps", SSG_T_SHADOWMAPS,                       \
+      "one map per light (shadowmaps); unconnected: no shadows", .optional = 1)
+#define SSG_PROBE_LIGHT_OUT(X)                                                             \
+    X(SSG_PROBE_LIGHT_OUT_OUT, "out", SSG_T_COLOR,                                         \
+      "albedo / pi * sum of shadowed Lambert light, linear RGB (like "                     \
+      "gbuffer.environment, with self-shadowing)")                                         \
+    X(SSG_PROBE_LIGHT_OUT_VISIBILITY, "visibility", SSG_T_SCALAR,                          \
+      "the lit fraction of the pixel's light (luminance-weighted), comparable with AO")
+SSG_PORT_ENUM(ssg_probe_light_input, SSG_PROBE_LIGHT_IN, SSG_PROBE_LIGHT_INPUTS);
+SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPUTS);
 
-struct ssg_probe_light_params {
-    float offset;       /* depth offset in map texels; default 0.5 */
-    float slope_offset; /* further offset in texels per unit tan(angle of N to l); default 0 */
-    float normal_offset; /* lookup moved along N by normal_offset x sin(N, l) texels;
-                            default 2 */
-    float noise_radius; /* lookup jitter radius in map texels; default 1 */
-    int noise_tile;     /* side of the tiled jitter pattern, px; default 4 */
-};
+/* The parameters, one row each (lang/params.h); probe_light.glsl reads the jitter's as
+   p_<field> (#pragma ssg_params). The offsets reach both backends in scene units, made in
+   prepare() (offset_world, ...): their rows are host_only. */
+#define SSG_PROBE_LIGHT_PARAMS(P)                                                          \
+    P(FLOAT, offset,                                                                       \
+      "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "        \
+      "self-shadowing, lets light through thin occluders",                                 \
+      .def = 0.5, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                 \
+    P(FLOAT, slope_offset,                                                                 \
+      "more depth offset where the light grazes the surface: + slope_offset x "            \
+      "tan(N, l) texels (tan up to 10); leaks through thin walls, normal_offset is "       \
+      "the default remedy",                                                                \
+      .def = 0, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                   \
+    P(FLOAT, normal_offset,                                                                \
+      "the lookup point moves along the normal by normal_offset x sin(N, l) texels: "      \
+      "no self-shadowing where the light grazes, no leak at a wall's foot (>= 0.7 + "      \
+      "noise_radius)",                                                                     \
+      .def = 2, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                   \
+    P(FLOAT, noise_radius,                                                                 \
+      "jitter of the map lookup (fig. 8): smoother shadows, needs a larger offset; "       \
+      "0 = none",                                                                          \
+      .def = 1, .min = 0, .max = 64, .unit = "texels")                                     \
+    P(INT, noise_tile, "side of the tiled jitter pattern", .def = 4, .min = 1,             \
+      .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px")
+SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
 
 struct ssg_probe_light_consts {
     struct ssg_probe_light_params p;
@@ -45,10 +67,13 @@ struct ssg_probe_light_consts {
     /* Of the inputs' shapes, for both backends: */
     int count;                          /* lights N (the light list's width) */
     int res;                            /* the maps' side R; 0 = no shadow maps */
+    int frame_res;                      /* R the light frames are made for: res, or 1
+                                           without maps (then unused, but finite) */
     float offset_world, slope_world;    /* offset and slope_offset in scene units (texels
                                            of 2 radius / R) */
     float normal_world;                 /* normal_offset in scene units */
-    float cos_sin[2 * SSG_LIGHTS_MAX];  /* ssg_probe_light_rotations of the N lights */
+    float cos_sin[];                    /* ssg_probe_light_rotations of the N lights, 2 N
+                                           floats (consts_size_of) */
 };
 
 /* What one light is to a view-space point p (floats, in this order):

@@ -1,4 +1,4 @@
-/* probe_light_cpu.c - CPU side of the `probe_light` node (method in probe_light.c). Rows of
+/* probe_light_cpu.c - CPU side of the `probe_light` node (method in README.md). Rows of
  * the G-buffer in fixed bands; in a band, chunks of CHUNK pixels are loaded once and every
  * light is applied to the whole chunk before the next, so a light's frame, irradiance and
  * map stay hot while the inner loop over pixels runs branch-free (vectorised, the map
@@ -71,7 +71,7 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
         float w = cosine > 0.0f ? cosine : 0.0f;
-        /* the normal offset: P + N normal_world sin(N, l) (probe_light.c) */
+        /* the normal offset: P + N normal_world sin(N, l) (README.md) */
         float c2 = 1.0f - w * w;
         float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
         float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
@@ -173,7 +173,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const float *l = io->in[SSG_PROBE_LIGHT_IN_LIGHTS]->data;
     for (int i = 0; i < count; i++) {
         float dir[3] = {l[i], l[2 * count + i], l[4 * count + i]};
-        ssg_probe_light_frame(c, dir, res ? res : 1, frames + SSG_PROBE_LIGHT_FRAME * i);
+        ssg_probe_light_frame(c, dir, c->frame_res, frames + SSG_PROBE_LIGHT_FRAME * i);
     }
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,

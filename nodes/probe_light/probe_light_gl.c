@@ -1,7 +1,8 @@
-/* probe_light_gl.c - GL side of the `probe_light` node (method in probe_light.c): a first
+/* probe_light_gl.c - GL side of the `probe_light` node (method in README.md): a first
  * pass turns the light list into every light's frame (probe_light_frames.glsl, the floats
  * of ssg_probe_light_frame) in a scratch image, so the list never returns to the CPU; the
- * second (probe_light.glsl) lights every pixel. The jitter tile and the per-light
+ * second (probe_light.glsl) lights every pixel, reading every port (bound by the table)
+ * and the jitter's parameters (#pragma ssg_params). The jitter tile and the per-light
  * rotations are the CPU's floats, in storage buffers. */
 #include <stdlib.h>
 
@@ -9,7 +10,7 @@
 #include "probe_light.h"
 
 static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_light_consts *c,
-                        const struct ssg_image *lights, int res, struct ssg_image *frames,
+                        const struct ssg_image *lights, struct ssg_image *frames,
                         struct ssg_gl_pass *p)
 {
     ssg_gl_pass_begin(p, ctx, "probe_light_frames.glsl", NULL);
@@ -19,31 +20,23 @@ static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_l
     ssg_gl_vec3(p, "eye", c->eye);
     ssg_gl_vec3(p, "centre", c->sphere.centre);
     ssg_gl_float(p, "radius", c->sphere.radius);
-    ssg_gl_int(p, "res", res);
+    ssg_gl_int(p, "res", c->frame_res);
     ssg_gl_dispatch(p, lights->width, 1);
 }
 
 static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_light_consts *c,
                        const struct ssg_io *io, const struct ssg_image *frames,
-                       const float *cos_sin, int count, int res, struct ssg_gl_pass *p)
+                       struct ssg_gl_pass *p)
 {
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
-    int tile = c->p.noise_tile;
+    size_t tile = (size_t)c->p.noise_tile;
     ssg_gl_pass_begin(p, ctx, "probe_light.glsl", NULL);
-    ssg_gl_input(p, "position", pos);
-    ssg_gl_input(p, "normal", io->in[SSG_PROBE_LIGHT_IN_NORMAL]);
-    ssg_gl_input(p, "albedo", io->in[SSG_PROBE_LIGHT_IN_ALBEDO]);
-    ssg_gl_input(p, "lights", io->in[SSG_PROBE_LIGHT_IN_LIGHTS]);
-    ssg_gl_input(p, "maps", io->in[SSG_PROBE_LIGHT_IN_SHADOWMAPS]);
+    ssg_gl_ports(p, io);
     ssg_gl_input(p, "frames", frames);
-    ssg_gl_output(p, "dst", io->out[0]);
-    ssg_gl_output(p, "dst_visibility", io->out[1]);
-    ssg_gl_buffer(p, 0, cos_sin, sizeof(float) * 2 * (size_t)count);
-    ssg_gl_buffer(p, 1, c->noise, sizeof(float) * 2 * (size_t)tile * (size_t)tile);
-    ssg_gl_int(p, "count", count);
-    ssg_gl_int(p, "res", res);
-    ssg_gl_int(p, "tile", tile);
-    ssg_gl_float(p, "noise_radius", c->p.noise_radius);
+    ssg_gl_buffer(p, 0, c->cos_sin, sizeof(float) * 2 * (size_t)c->count);
+    ssg_gl_buffer(p, 1, c->noise, sizeof(float) * 2 * tile * tile);
+    ssg_gl_int(p, "count", c->count);
+    ssg_gl_int(p, "res", c->res);
     ssg_gl_float(p, "offset_world", c->offset_world);
     ssg_gl_float(p, "slope_world", c->slope_world);
     ssg_gl_float(p, "normal_world", c->normal_world);
@@ -54,15 +47,14 @@ enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
-    const int count = c->count, res = c->res;
-    struct ssg_image *frames = ssg_gl_scratch(ctx, count, 1, SSG_PROBE_LIGHT_FRAME);
+    struct ssg_image *frames = ssg_gl_scratch(ctx, c->count, 1, SSG_PROBE_LIGHT_FRAME);
     if (!frames)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     enum ssg_err e;
     struct ssg_gl_pass p;
-    frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_IN_LIGHTS], res ? res : 1, frames, &p);
+    frames_pass(ctx, c, io->in[SSG_PROBE_LIGHT_IN_LIGHTS], frames, &p);
     if (!(e = ssg_gl_pass_end(&p))) {
-        light_pass(ctx, c, io, frames, c->cos_sin, count, res, &p);
+        light_pass(ctx, c, io, frames, &p);
         e = ssg_gl_pass_end(&p);
     }
     ssg_gl_scratch_release(&frames);

@@ -1,6 +1,6 @@
 /* reference_gi.h - parameters and prepared constants of the `reference_gi` node, shared by
  * reference_gi.c (descriptor, check, prepare) and reference_gi_cpu.c (the CPU kernel).
- * Method, estimators and sampling are described in reference_gi.c. */
+ * Method, estimators and sampling: README.md in this folder. */
 #ifndef SSG_REFERENCE_GI_H
 #define SSG_REFERENCE_GI_H
 
@@ -8,38 +8,48 @@
 
 #include "graph/node.h"
 
-/* Ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_reference_gi_input {
-    SSG_REFERENCE_GI_IN_POSITION,
-    SSG_REFERENCE_GI_IN_NORMAL,
-    SSG_REFERENCE_GI_IN_ALBEDO,
-    SSG_REFERENCE_GI_INPUTS
-};
-enum ssg_reference_gi_output {
-    SSG_REFERENCE_GI_OUT_DIRECT,
-    SSG_REFERENCE_GI_OUT_BOUNCE,
-    SSG_REFERENCE_GI_OUT_OUT,
-    SSG_REFERENCE_GI_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_REFERENCE_GI_IN(X)                                                             \
+    X(SSG_REFERENCE_GI_IN_POSITION, "position", SSG_T_VECTOR,                              \
+      "view-space position (gbuffer)")                                                     \
+    X(SSG_REFERENCE_GI_IN_NORMAL, "normal", SSG_T_VECTOR,                                  \
+      "unit view-space normal facing the camera, 0 = background (gbuffer)")                \
+    X(SSG_REFERENCE_GI_IN_ALBEDO, "albedo", SSG_T_COLOR,                                   \
+      "diffuse albedo, linear RGB (gbuffer)")
+#define SSG_REFERENCE_GI_OUT(X)                                                            \
+    X(SSG_REFERENCE_GI_OUT_DIRECT, "direct", SSG_T_COLOR,                                  \
+      "diffuse light of the lights and the environment with true shadows, linear RGB")     \
+    X(SSG_REFERENCE_GI_OUT_BOUNCE, "bounce", SSG_T_COLOR,                                  \
+      "one diffuse bounce of that light off the scene's surfaces, linear RGB")             \
+    X(SSG_REFERENCE_GI_OUT_OUT, "out", SSG_T_COLOR, "direct + bounce")
+SSG_PORT_ENUM(ssg_reference_gi_input, SSG_REFERENCE_GI_IN, SSG_REFERENCE_GI_INPUTS);
+SSG_PORT_ENUM(ssg_reference_gi_output, SSG_REFERENCE_GI_OUT, SSG_REFERENCE_GI_OUTPUTS);
 
 /* Largest `samples`: the sample tables of the constants hold this many points. */
 #define SSG_REFERENCE_GI_MAX_SAMPLES 65536
 
-struct ssg_reference_gi_params {
-    int samples;     /* environment samples and bounce paths per pixel, 1..65536; default 64 */
-    int bounce;      /* 1 = trace the one diffuse bounce; 0 = bounce output 0, no bounce
-                        rays; default 1 */
-    float offset;    /* ray origins move this far along the normal and this far back
-                        along the arriving ray, against self-intersection, scene units,
-                        >= 0; default 1e-3 (raised to 1024 float ulps of the point's
-                        magnitude, as in reference_ao) */
-    int environment; /* 1 = include the scene's environment light; default 1 */
-};
+/* The parameters, one row each (lang/params.h). A CPU-only node: every row is host_only. */
+#define SSG_REFERENCE_GI_PARAMS(P)                                                         \
+    P(INT, samples,                                                                        \
+      "environment samples (direct term) and bounce paths per pixel; the noise falls "     \
+      "as 1 / sqrt(samples) or faster (stratified)",                                       \
+      .def = 64, .min = 1, .max = SSG_REFERENCE_GI_MAX_SAMPLES, .host_only = 1)            \
+    P(BOOL, bounce,                                                                        \
+      "trace one diffuse bounce; false: the bounce output is 0 and no bounce rays "        \
+      "are cast",                                                                          \
+      .def = 1, .host_only = 1)                                                            \
+    P(FLOAT, offset,                                                                       \
+      "ray origins move this far along the normal and this far back along the "            \
+      "arriving ray, against self-intersection (at least 1024 float ulps of the "          \
+      "point's coordinates)",                                                              \
+      .def = 1e-3, .min = 0, .max = 1e6, .unit = "scene units", .host_only = 1)            \
+    P(BOOL, environment,                                                                   \
+      "include the scene's environment light (directly and at the bounce's end)",          \
+      .def = 1, .host_only = 1)
+SSG_PARAMS_STRUCT(ssg_reference_gi_params, SSG_REFERENCE_GI_PARAMS);
 
 /* The 4D Hammersley set (i / n, phi2(i), phi3(i), phi5(i)), i < n = samples, in the forms
-   the kernel reads (reference_gi.c): the first two coordinates serve the environment
+   the kernel reads (README.md, sampling): the first two coordinates serve the environment
    samples of the direct term and, mapped to the disk (Malley), the bounce directions; the
    last two the one environment sample at each bounce path's end. */
 struct ssg_reference_gi_table {

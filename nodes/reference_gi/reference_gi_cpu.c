@@ -1,5 +1,5 @@
 /* reference_gi_cpu.c - CPU kernel of the `reference_gi` node (method and estimators in
- * reference_gi.c).
+ * README.md).
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a scalar setup (world
  * point, normal and albedo, raised origin, rotated tangent frame, the hashed

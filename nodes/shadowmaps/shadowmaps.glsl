@@ -24,7 +24,7 @@ void main()
     // in [0, 2 radius] inside the sphere maps to [-1, 1].
     gl_Position = vec4(dot(d, u) / radius, dot(d, v) / radius, depth / radius - 1.0, 1.0);
     // A light that carries nothing casts no shadow worth drawing: every vertex outside the
-    // clip volume leaves its layer empty, as the CPU leaves its map (shadowmaps.c).
+    // clip volume leaves its layer empty, as the CPU leaves its map (README.md).
     vec3 e = vec3(texelFetch(lights, ivec3(ssg_layer, 1, 0), 0).r,
                   texelFetch(lights, ivec3(ssg_layer, 1, 1), 0).r,
                   texelFetch(lights, ivec3(ssg_layer, 1, 2), 0).r);

@@ -1,4 +1,4 @@
-/* shadowmaps_cpu.c - CPU side of the `shadowmaps` node (method in shadowmaps.c): each map
+/* shadowmaps_cpu.c - CPU side of the `shadowmaps` node (method in README.md): each map
  * is a depth-only rasterisation of every triangle of the scene, sampled at the texel
  * centres as GL's raster samples them.
  *
@@ -228,7 +228,7 @@ static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struc
     }
 }
 
-/* 1 when light i carries irradiance: a dark light's map stays empty (shadowmaps.c). */
+/* 1 when light i carries irradiance: a dark light's map stays empty (README.md). */
 static int light_carries(const struct ssg_image *lights, int i)
 {
     const int n = lights->width;

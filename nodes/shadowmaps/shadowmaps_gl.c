@@ -1,4 +1,4 @@
-/* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in shadowmaps.c): the scene is
+/* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in README.md): the scene is
  * uploaded (nodes/common/gl_raster.h) and drawn once per light into that light's layer of the
  * output texture array by shadowmaps.glsl, which reads the light's direction from the
  * light list itself, so the list never has to come back to the CPU. */
