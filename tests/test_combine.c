@@ -78,7 +78,7 @@ static void test_descriptor(void)
     CHECK_EQ(d->inputs[SSG_COMBINE_IN_AMBIENT_OCCLUSION].types, SSG_T_SCALAR);
     CHECK_EQ(d->output_count, 1);
     CHECK_EQ(d->outputs[0].types, SSG_T_COLOR);
-    CHECK_EQ(d->consts_size, 0);
+    CHECK_EQ(d->consts_size, sizeof(struct ssg_combine_consts));
     CHECK_EQ(d->params_size, sizeof(struct ssg_combine_params));
     CHECK(d->method && strstr(d->method, "3.1"));
 

@@ -1,21 +1,19 @@
-// combine.glsl - the `combine` node's GL side (equation in combine.c, C side combine_gl.c):
+// combine.glsl - the `combine` node's GL side (method in README.md, C side combine_gl.c):
 //   out = (darken_direct ? M : 1) direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
 //         + M ao albedo irradiance
-// (with far_visibility: the far-field form of combine.c)
+// (with far_visibility: the far-field form of README.md)
 // per channel, with the CPU kernel's stand-ins for unconnected inputs (ao, M = 1;
 // environment, indirect = 0) and its order of operations. `precise` keeps the compiler
 // from fusing multiply-adds the CPU rounds separately, so a GPU with IEEE float maths gives
 // the CPU's bits.
-uniform sampler2DArray direct, albedo, ao, indirect, modulation, environment, far_visibility,
-    irradiance;
-uniform bool ao_bound, indirect_bound, modulation_bound, environment_bound, far_visibility_bound,
-    irradiance_bound;
-uniform bool far_bounce;
-layout(r32f) uniform writeonly image2DArray dst;
+#pragma ssg_params
+uniform sampler2DArray direct, albedo, ambient_occlusion, indirect, modulation, environment,
+    far_visibility, irradiance;
+uniform bool ambient_occlusion_bound, indirect_bound, modulation_bound, environment_bound,
+    far_visibility_bound, irradiance_bound;
+layout(r32f) uniform writeonly image2DArray dst_out;
 uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
-uniform bool darken_indirect;
-uniform bool darken_direct;
-uniform vec3 k;              // ambient * ambient_color, made on the CPU
+uniform vec3 k;              // ambient * ambient_color, made by prepare()
 
 float layer_or(sampler2DArray t, bool bound, ivec2 p, int layer, float unbound)
 {
@@ -27,7 +25,8 @@ void main()
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
-    float occ = layer_or(ao, ao_bound, p, 0, 1.0);
+    float occ = layer_or(ambient_occlusion, ambient_occlusion_bound, p, 0, 1.0);
+    bool darken_direct = p_darken_direct != 0, darken_indirect = p_darken_indirect != 0;
     for (int c = 0; c < 3; c++) {
         float d = texelFetch(direct, ivec3(p, c), 0).r;
         float a = texelFetch(albedo, ivec3(p, c), 0).r;
@@ -46,12 +45,12 @@ void main()
             precise float gap = m - v;
             gap = gap > 0.0 ? gap : 0.0;
             precise float sent = irradiance_bound ? lit_env : own;
-            o = own + (darken_indirect ? m : 1.0) * bounce + (far_bounce ? 1.0 : 0.0) * a * gap * sent
+            o = own + (darken_indirect ? m : 1.0) * bounce + (p_far_bounce != 0 ? 1.0 : 0.0) * a * gap * sent
                 + m * occ * far_light;
         } else {
             o = (darken_direct ? m : 1.0) * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce
                 + m * occ * far_light;
         }
-        imageStore(dst, ivec3(p, c), vec4(o));
+        imageStore(dst_out, ivec3(p, c), vec4(o));
     }
 }

@@ -1,4 +1,4 @@
-/* combine_cpu.c - CPU kernel of the `combine` node (equation and sources in combine.c):
+/* combine_cpu.c - CPU kernel of the `combine` node (method in README.md):
  * one pass over fixed bands of rows, one plane at a time, so the inner loops are plain
  * contiguous multiply-adds the compiler vectorises. */
 #include "combine.h"
@@ -16,7 +16,7 @@ struct combine_job {
     const float *far;                   /* far_visibility, NULL = none */
     int darken_indirect, far_bounce, darken_direct;
     float *out[3];
-    float k[3];                         /* ambient * ambient_color */
+    float k[3];                         /* ambient * ambient_color (prepare) */
     int width;
 };
 
@@ -77,7 +77,8 @@ static void combine_rows(void *user, int y0, int y1)
 enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io)
 {
-    const struct ssg_combine_params *p = consts;
+    const struct ssg_combine_consts *k = consts;
+    const struct ssg_combine_params *p = &k->p;
     const struct ssg_image *direct = io->in[SSG_COMBINE_IN_DIRECT];
     const struct ssg_image *albedo = io->in[SSG_COMBINE_IN_ALBEDO];
     const struct ssg_image *ao = io->in[SSG_COMBINE_IN_AMBIENT_OCCLUSION];
@@ -85,7 +86,7 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *irradiance = io->in[SSG_COMBINE_IN_IRRADIANCE];
     const struct ssg_image *modulation = io->in[SSG_COMBINE_IN_MODULATION];
     const struct ssg_image *environment = io->in[SSG_COMBINE_IN_ENVIRONMENT];
-    struct ssg_image *out = io->out[0];
+    struct ssg_image *out = io->out[SSG_COMBINE_OUT_OUT];
     const struct ssg_image *far = io->in[SSG_COMBINE_IN_FAR_VISIBILITY];
     struct combine_job job = {.ao = ao ? ao->data : NULL, .far = far ? far->data : NULL,
                               .width = out->width, .darken_indirect = p->darken_indirect,
@@ -96,10 +97,10 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
         job.irradiance[c] = irradiance ? ssg_image_plane(irradiance, c) : NULL;
         job.environment[c] = environment ? ssg_image_plane(environment, c) : NULL;
-        job.modulation[c] =
-            modulation ? ssg_image_plane(modulation, modulation->channels == 1 ? 0 : c) : NULL;
+        int plane = c < k->modulation_last ? c : k->modulation_last;
+        job.modulation[c] = modulation ? ssg_image_plane(modulation, plane) : NULL;
         job.out[c] = ssg_image_plane(out, c);
-        job.k[c] = p->ambient * p->ambient_color[c];
+        job.k[c] = k->k[c];
     }
     ssg_parallel_rows(out->height, BAND_ROWS, combine_rows, &job);
     return SSG_OK;

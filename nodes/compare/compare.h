@@ -1,5 +1,6 @@
-/* compare.h - parameters and prepared constants of the `compare` node, shared by compare.c
- * (descriptor, check, prepare) and compare_cpu.c (the CPU kernel). Method in compare.c. */
+/* compare.h - ports, parameters and prepared constants of the `compare` node, shared by
+ * compare.c (descriptor, check, prepare) and compare_cpu.c (the CPU kernel). Method in
+ * README.md. */
 #ifndef SSG_COMPARE_H
 #define SSG_COMPARE_H
 
@@ -11,30 +12,41 @@
 /* Most channels an input may have (scalar 1, vector/color 3). */
 #define SSG_COMPARE_MAX_CHANNELS 4
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_compare_input {
-    SSG_COMPARE_IN_A,
-    SSG_COMPARE_IN_B,
-    SSG_COMPARE_IN_MASK,
-    SSG_COMPARE_INPUTS
-};
-enum ssg_compare_output {
-    SSG_COMPARE_OUT_DIFF,
-    SSG_COMPARE_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_COMPARE_IN(X)                                                                  \
+    X(SSG_COMPARE_IN_A, "a", SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR, "image under test") \
+    X(SSG_COMPARE_IN_B, "b", SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,                    \
+      "reference image, same type and size as a")                                          \
+    X(SSG_COMPARE_IN_MASK, "mask", SSG_T_SCALAR,                                           \
+      "pixels with mask > 0.5 are compared; none = every pixel", .optional = 1)
+#define SSG_COMPARE_OUT(X)                                                                 \
+    X(SSG_COMPARE_OUT_DIFF, "diff", SSG_T_COLOR,                                           \
+      "a - b on blue (a < b), white (equal), red (a > b); black = not compared")
+SSG_PORT_ENUM(ssg_compare_input, SSG_COMPARE_IN, SSG_COMPARE_INPUTS);
+SSG_PORT_ENUM(ssg_compare_output, SSG_COMPARE_OUT, SSG_COMPARE_OUTPUTS);
 
-struct ssg_compare_params {
-    float scale; /* |a - b| shown in full colour in `diff`, image units; default 0.25 */
-    float peak;  /* signal peak: PSNR's MAX and SSIM's dynamic range L; default 1 */
-    int edge;    /* > 0: only pixels within this many of the frame's border count, px;
-                    default 0 = every pixel of the frame */
-    struct ssg_ints region; /* [x0, y0, x1, y1]: only pixels x0 <= x < x1, y0 <= y < y1 of
-                               the frame count, px; default [0, 0, 0, 0] = the whole frame */
-    int banding; /* > 0: report banding with a moving window of lines i +- banding, px;
-                    default 0 = not measured */
-};
+/* The parameters, one row each (lang/params.h); the struct below and the table in
+   compare.c are made from these rows. region is [x0, y0, x1, y1] in frame pixels. */
+#define SSG_COMPARE_PARAMS(P)                                                              \
+    P(FLOAT, scale, "diff image: |a - b| at which the colour is pure red or blue",         \
+      .def = 0.25, .min = 1e-6, .max = 1e6)                                                \
+    P(FLOAT, peak,                                                                         \
+      "signal peak: PSNR's maximum and SSIM's dynamic range L (1 for AO, [0,1] data)",     \
+      .def = 1, .min = 1e-6, .max = 1e6)                                                   \
+    P(INT, edge,                                                                           \
+      "> 0: compare only the pixels within this distance of the frame's border (where "    \
+      "screen-space methods lack occluders); 0 = the whole frame",                         \
+      .def = 0, .min = 0, .max = 16384, .unit = "px")                                      \
+    P(INTS, region,                                                                        \
+      "[x0, y0, x1, y1]: compare only frame pixels x0 <= x < x1, y0 <= y < y1 (e.g. one "  \
+      "wall; cut to the frame); [0, 0, 0, 0] = the whole frame",                           \
+      .def_ints = {0, 0, 0, 0}, .def_ints_count = 4, .min_count = 4, .max_count = 4,       \
+      .min = 0, .max = 65536, .unit = "px")                                                \
+    P(INT, banding,                                                                        \
+      "> 0: also report banding, banding_rows, banding_cols: RMS of the row and column "   \
+      "means of a - b minus their moving average over lines i +- banding; 0 = off",        \
+      .def = 0, .min = 0, .max = 4096, .unit = "px")
+SSG_PARAMS_STRUCT(ssg_compare_params, SSG_COMPARE_PARAMS);
 
 struct ssg_compare_consts {
     double gauss[SSG_COMPARE_TAPS]; /* 1D Gaussian, sigma 1.5 px, sums to 1; the window is
@@ -50,7 +62,6 @@ struct ssg_compare_consts {
     int edge;                       /* as in the parameters */
     int banding;                    /* as in the parameters: the window's half-width */
 };
-
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                  const struct ssg_io *io);

@@ -1,4 +1,4 @@
-/* compare_cpu.c - CPU kernel of the `compare` node (method in compare.c).
+/* compare_cpu.c - CPU kernel of the `compare` node (method in README.md).
  *
  * Work is split over fixed bands of rows; each band writes its own partial sums (in double)
  * and the run adds them up in band order afterwards, so the metrics are the same bits
@@ -7,7 +7,7 @@
  * SSIM's local statistics are Gaussian sums of six pointwise moments of the counted pixels,
  * m, m a, m b, m a^2, m b^2, m a b (m = 1 for a counted pixel, else 0), each divided by the
  * Gaussian sum of m: that is the window renormalised over the counted pixels inside the
- * image (compare.c). The 2D Gaussian is separable, so each sum is a horizontal pass over
+ * image (README.md). The 2D Gaussian is separable, so each sum is a horizontal pass over
  * zero-padded rows, then a vertical pass (symmetric taps paired: 6 products a pass instead of
  * 121 for the 2D window). A band keeps the horizontal sums of the 11 rows around its current
  * row in a ring, filling it with its own rows plus 5 rows on either side; a row's sums depend
@@ -123,7 +123,7 @@ static void errors_row(const struct job *j, struct partial *p, int y)
     }
 }
 
-/* Blue-white-red of d = a - b (compare.c); the channel difference of largest magnitude. */
+/* Blue-white-red of d = a - b (README.md); the channel difference of largest magnitude. */
 static void diff_row(const struct job *j, int y)
 {
     size_t o = (size_t)y * (size_t)j->w;
@@ -305,7 +305,7 @@ static void band(void *user, int y0, int y1)
     window_free(&win);
 }
 
-/* Mean over the kept lines of h_i^2 (compare.c: the line means minus their moving average
+/* Mean over the kept lines of h_i^2 (README.md: the line means minus their moving average
    over i +- r, a least-squares line where the window is cut); NaN when no line has a
    counted pixel. m: scratch of `lines` doubles. */
 static double highpass_ms(const double *sum, const long long *count, int lines, int r,
@@ -340,7 +340,7 @@ static double highpass_ms(const double *sum, const long long *count, int lines, 
     return ms / kept;
 }
 
-/* banding_rows, banding_cols and banding (compare.c) from the line sums: the bands' column
+/* banding_rows, banding_cols and banding (README.md) from the line sums: the bands' column
    sums are added in band order first, so the result does not depend on the threads. */
 static enum ssg_err report_banding(const struct ssg_node_ctx *ctx, const struct job *j,
                                    int bands)

@@ -1,4 +1,4 @@
-// gaussian.glsl - one axis of the separable Gaussian (method in gaussian.c), per layer.
+// gaussian.glsl - one axis of the separable Gaussian (method in README.md), per layer.
 // Clamp-to-edge like the CPU kernel, taps summed in the same order (-radius..radius).
 layout(std430, binding = 0) readonly buffer Weights { float weight[]; };
 

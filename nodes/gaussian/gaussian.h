@@ -1,28 +1,33 @@
-/* gaussian.h - parameters and prepared constants of the `gaussian` node, shared by
- * gaussian.c (descriptor, check, prepare) and gaussian_cpu.c (the CPU kernel). Method in
- * gaussian.c. Read-only after prepare(); the kernel is thread-safe. */
+/* gaussian.h - ports, parameters and prepared constants of the `gaussian` node, shared by
+ * gaussian.c (descriptor, check, prepare), gaussian_cpu.c (the CPU kernel) and
+ * gaussian_gl.c (the GL side). Method in README.md. Read-only after prepare(); the kernel
+ * is thread-safe. */
 #ifndef SSG_GAUSSIAN_H
 #define SSG_GAUSSIAN_H
 
 #include "graph/node.h"
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_gaussian_input {
-    SSG_GAUSSIAN_IN_IN,
-    SSG_GAUSSIAN_INPUTS
-};
-enum ssg_gaussian_output {
-    SSG_GAUSSIAN_OUT_OUT,
-    SSG_GAUSSIAN_OUTPUTS
-};
-
 #define SSG_GAUSSIAN_MAX_SIZE 1023 /* widest window, px */
+#define SSG_GAUSSIAN_MAX_SIGMA 170 /* px: its window 2 ceil(3 sigma) + 1 = 1021 fits */
+_Static_assert(2 * 3 * SSG_GAUSSIAN_MAX_SIGMA + 1 <= SSG_GAUSSIAN_MAX_SIZE,
+               "the widest sigma's window fits the weight table");
 
-struct ssg_gaussian_params {
-    float sigma; /* standard deviation, px, > 0; default 2 */
-    int size;    /* window diameter, px, odd, 0 = 2 ceil(3 sigma) + 1; default 0 */
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_GAUSSIAN_IN(X)                                                                 \
+    X(SSG_GAUSSIAN_IN_IN, "in", SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR, "image to blur")
+#define SSG_GAUSSIAN_OUT(X)                                                                \
+    X(SSG_GAUSSIAN_OUT_OUT, "out", SSG_T_SCALAR, "blurred image", .same_as = "in")
+SSG_PORT_ENUM(ssg_gaussian_input, SSG_GAUSSIAN_IN, SSG_GAUSSIAN_INPUTS);
+SSG_PORT_ENUM(ssg_gaussian_output, SSG_GAUSSIAN_OUT, SSG_GAUSSIAN_OUTPUTS);
+
+/* The parameters, one row each (lang/params.h). Both only make the weights in prepare():
+   the shader reads the constants, no parameter. */
+#define SSG_GAUSSIAN_PARAMS(P)                                                             \
+    P(FLOAT, sigma, "standard deviation", .def = 2, .min = 0.01,                           \
+      .max = SSG_GAUSSIAN_MAX_SIGMA, .unit = "px", .host_only = 1)                         \
+    P(INT, size, "window diameter, odd; 0 = 2 ceil(3 sigma) + 1", .def = 0, .min = 0,      \
+      .max = SSG_GAUSSIAN_MAX_SIZE, .unit = "px", .host_only = 1)
+SSG_PARAMS_STRUCT(ssg_gaussian_params, SSG_GAUSSIAN_PARAMS);
 
 struct ssg_gaussian_consts {
     int radius;                             /* (size - 1) / 2, px */

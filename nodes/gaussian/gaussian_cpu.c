@@ -1,4 +1,4 @@
-/* gaussian_cpu.c - CPU kernel of the `gaussian` node (method in gaussian.c).
+/* gaussian_cpu.c - CPU kernel of the `gaussian` node (method in README.md).
  *
  * Two passes per channel, each a ssg_parallel_rows over fixed bands. Horizontal: each row
  * is copied into a scratch row padded by `radius` edge pixels on both sides (clamp to
@@ -68,10 +68,8 @@ enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *co
                                   const struct ssg_io *io)
 {
     const struct ssg_gaussian_consts *c = consts;
-    const struct ssg_image *in = io->in[0];
-    struct ssg_image *out = io->out[0];
-    if (c->radius < 0 || 2 * c->radius + 1 > SSG_GAUSSIAN_MAX_SIZE)
-        return ssg_node_fail(ctx, SSG_E_VALUE, "invalid window");
+    const struct ssg_image *in = io->in[SSG_GAUSSIAN_IN_IN];
+    struct ssg_image *out = io->out[SSG_GAUSSIAN_OUT_OUT];
     struct job j = {.c = c, .w = in->width, .h = in->height};
     size_t plane = (size_t)j.w * (size_t)j.h;
     size_t bands = (size_t)(j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;

@@ -1,4 +1,4 @@
-/* gaussian_gl.c - GL side of the `gaussian` node (method in gaussian.c): the horizontal
+/* gaussian_gl.c - GL side of the `gaussian` node (method in README.md): the horizontal
  * pass into a scratch image, then the vertical one, one dispatch per channel, the weights
  * from prepare() in a storage buffer. */
 #include "gaussian.h"
@@ -20,8 +20,8 @@ enum ssg_err ssg_gaussian_run_gl(const struct ssg_node_ctx *ctx, const void *con
                                  const struct ssg_io *io)
 {
     const struct ssg_gaussian_consts *c = consts;
-    const struct ssg_image *in = io->in[0];
-    struct ssg_image *out = io->out[0];
+    const struct ssg_image *in = io->in[SSG_GAUSSIAN_IN_IN];
+    struct ssg_image *out = io->out[SSG_GAUSSIAN_OUT_OUT];
     struct ssg_image *tmp = ssg_gl_scratch(ctx, in->width, in->height, in->channels);
     if (!tmp)
         return SSG_E_NOMEM;

@@ -1,4 +1,4 @@
-/* mosaic_cpu.c - the `mosaic` node's layout and resampling (method in mosaic.c). */
+/* mosaic_cpu.c - the `mosaic` node's layout and resampling (method in README.md). */
 #include <math.h>
 #include <string.h>
 
@@ -60,7 +60,7 @@ enum ssg_err ssg_mosaic_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
                                 const struct ssg_io *io)
 {
     const struct ssg_mosaic_params *p = consts;
-    struct ssg_image *out = io->out[0];
+    struct ssg_image *out = io->out[SSG_MOSAIC_OUT_OUT];
     int n = io->extra_count;
     if (n < 1)
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "needs at least one "

@@ -1,6 +1,6 @@
-/* reference_ao.h - parameters and prepared constants of the `reference_ao` node, shared by
- * reference_ao.c (descriptor, check, prepare) and reference_ao_cpu.c (the CPU kernel).
- * Method, conventions and the sampling are described in reference_ao.c. */
+/* reference_ao.h - ports, parameters and prepared constants of the `reference_ao` node,
+ * shared by reference_ao.c (descriptor, check, prepare) and reference_ao_cpu.c (the CPU
+ * kernel). Method, conventions and the sampling: README.md. */
 #ifndef SSG_REFERENCE_AO_H
 #define SSG_REFERENCE_AO_H
 
@@ -8,31 +8,37 @@
 
 #include "graph/node.h"
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_reference_ao_input {
-    SSG_REFERENCE_AO_IN_POSITION,
-    SSG_REFERENCE_AO_IN_NORMAL,
-    SSG_REFERENCE_AO_INPUTS
-};
-enum ssg_reference_ao_output {
-    SSG_REFERENCE_AO_OUT_OUT,
-    SSG_REFERENCE_AO_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_REFERENCE_AO_IN(X)                                                             \
+    X(SSG_REFERENCE_AO_IN_POSITION, "position", SSG_T_VECTOR,                              \
+      "view-space position (gbuffer)")                                                     \
+    X(SSG_REFERENCE_AO_IN_NORMAL, "normal", SSG_T_VECTOR,                                  \
+      "unit view-space normal facing the camera, 0 = background (gbuffer)")
+#define SSG_REFERENCE_AO_OUT(X)                                                            \
+    X(SSG_REFERENCE_AO_OUT_OUT, "out", SSG_T_SCALAR,                                       \
+      "visibility, 1 = unoccluded (cosine-weighted, distance-limited)")
+SSG_PORT_ENUM(ssg_reference_ao_input, SSG_REFERENCE_AO_IN, SSG_REFERENCE_AO_INPUTS);
+SSG_PORT_ENUM(ssg_reference_ao_output, SSG_REFERENCE_AO_OUT, SSG_REFERENCE_AO_OUTPUTS);
 
 /* Largest `rays`: the sample table of the constants holds this many directions. */
 #define SSG_REFERENCE_AO_MAX_RAYS 65536
 
-struct ssg_reference_ao_params {
-    int rays;           /* rays per pixel, 1..65536; default 256 */
-    float max_distance; /* occluders farther along the ray do not count, scene units, > 0;
-                           default 0.5 (the meaning of ssao's radius) */
-    float offset;       /* ray origins move this far along the normal and this far
-                           towards the camera, against self-intersection, scene units,
-                           >= 0; default 1e-3 (raised to 1024 float ulps of the point's
-                           magnitude, see reference_ao.c) */
-};
+/* The parameters, one row each (lang/params.h); the struct below and the table in
+   reference_ao.c are made from these rows. offset is raised to 1024 float ulps of the
+   point's magnitude (README.md, Geometry). */
+#define SSG_REFERENCE_AO_PARAMS(P)                                                         \
+    P(INT, rays,                                                                           \
+      "cosine-weighted rays per pixel; the standard error is sqrt(V (1 - V) / rays) or "   \
+      "less (stratified)",                                                                 \
+      .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS)                              \
+    P(FLOAT, max_distance,                                                                 \
+      "occluders farther along a ray do not count (the meaning of ssao's radius)",         \
+      .def = 0.5, .min = 1e-6, .max = 1e30, .unit = "scene units")                         \
+    P(FLOAT, offset,                                                                       \
+      "ray origins move this far along the normal and this far towards the camera, "       \
+      "against self-intersection (at least 1024 float ulps of the point's coordinates)",   \
+      .def = 1e-3, .min = 0, .max = 1e6, .unit = "scene units")
+SSG_PARAMS_STRUCT(ssg_reference_ao_params, SSG_REFERENCE_AO_PARAMS);
 
 struct ssg_reference_ao_consts {
     struct ssg_reference_ao_params p; /* the parameters as given */
@@ -41,7 +47,7 @@ struct ssg_reference_ao_consts {
     uint64_t seed;   /* the frame's seed: decides every pixel's rotation */
     /* The 2D Hammersley point set of `rays` points, mapped to the unit disk (Malley), in
        sample order: u = r^2 (so cos^2 theta = 1 - u) and the unit vector (c, s) at the
-       point's angle. Pixels shift u and turn the angle (reference_ao.c). */
+       point's angle. Pixels shift u and turn the angle (README.md). */
     float u[SSG_REFERENCE_AO_MAX_RAYS];
     float c[SSG_REFERENCE_AO_MAX_RAYS];
     float s[SSG_REFERENCE_AO_MAX_RAYS];

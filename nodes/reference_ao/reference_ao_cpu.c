@@ -1,4 +1,4 @@
-/* reference_ao_cpu.c - CPU kernel of the `reference_ao` node (method in reference_ao.c).
+/* reference_ao_cpu.c - CPU kernel of the `reference_ao` node (method in README.md).
  *
  * Bands of ROWS_PER_BAND rows go to ssg_parallel_rows. Per pixel, a short scalar setup
  * (world point and normal, raised origin, rotated tangent frame, the hashed shift of u:
@@ -114,7 +114,7 @@ enum ssg_err ssg_reference_ao_run_cpu(const struct ssg_node_ctx *ctx, const void
 {
     const struct ssg_image *pos = io->in[SSG_REFERENCE_AO_IN_POSITION];
     const struct ssg_image *nrm = io->in[SSG_REFERENCE_AO_IN_NORMAL];
-    struct ssg_image *out = io->out[0];
+    struct ssg_image *out = io->out[SSG_REFERENCE_AO_OUT_OUT];
     struct job j = {.c = consts,
                     .rt = ctx->scene->rt,
                     .scene = ctx->scene,

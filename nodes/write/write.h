@@ -1,6 +1,6 @@
-/* write.h - the parameters of the `write` sink node, shared by write.c (descriptor,
- * check), write_cpu.c (writing the files) and tests/test_write.c.
- * The files themselves are written by core/io/imageio.h. */
+/* write.h - ports and parameters of the `write` sink node, shared by write.c (descriptor,
+ * check), write_cpu.c (writing the files), write_meta.c and tests/test_write.c. Method in
+ * README.md; the files themselves are written by core/io/imageio.h. */
 #ifndef SSG_WRITE_H
 #define SSG_WRITE_H
 
@@ -8,22 +8,30 @@
 
 #include "graph/node.h"
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_write_input {
-    SSG_WRITE_IN_IMAGE,
-    SSG_WRITE_INPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_WRITE_IN(X)                                                                    \
+    X(SSG_WRITE_IN_IMAGE, "image", SSG_T_COLOR | SSG_T_SCALAR | SSG_T_VECTOR,              \
+      "main image: EXR channels R,G,B (Y when scalar) and the PNG preview")
+SSG_PORT_ENUM(ssg_write_input, SSG_WRITE_IN, SSG_WRITE_INPUTS);
 
-/* Parameters as the graph file sets them (see the table in write.c). */
-struct ssg_write_params {
-    char name[SSG_STR_MAX]; /* file stem: writes <out_dir>/<name>.exr and .png; required */
-    float exposure;         /* PNG exposure in stops (x 2^exposure), -20..20; default 0 */
-    int tonemap;            /* PNG tone curve, enum ssg_tonemap (imageio.h); default aces */
-    int png;                /* 1 = write the 8-bit PNG preview; default 1 */
-    int exr;                /* 1 = write the float EXR with every layer; default 1 */
-    int compression;        /* EXR compression, enum ssg_exr_compression; default zip */
-};
+/* The parameters, one row each (lang/params.h); the struct below and the table in write.c
+   are made from these rows. tonemap is an enum ssg_tonemap, compression an enum
+   ssg_exr_compression (io/imageio.h). */
+#define SSG_WRITE_PARAMS(P)                                                                \
+    P(STRING, name, "file stem: writes <out>/<name>.exr and <out>/<name>.png",             \
+      .required = 1)                                                                       \
+    P(FLOAT, exposure, "PNG only: values are scaled by 2^exposure before tone mapping",    \
+      .def = 0, .min = -20, .max = 20, .unit = "stops")                                    \
+    P(ENUM, tonemap,                                                                       \
+      "PNG only: clamp = min(x,1), reinhard = x/(1+x), aces = Narkowicz 2015 fit",         \
+      .def = SSG_TONEMAP_ACES, .choices = ssg_write_tonemap_choices)                       \
+    P(BOOL, png, "write the 8-bit sRGB PNG preview", .def = 1)                             \
+    P(BOOL, exr, "write the 32-bit float EXR with all layers", .def = 1)                   \
+    P(ENUM, compression,                                                                   \
+      "EXR compression, all lossless: zip (deflate level 1, chunks on every thread) is "   \
+      "small; none ~1.7x faster to write and ~9x larger; rle and piz are slower",          \
+      .def = SSG_EXR_ZIP, .choices = ssg_write_compression_choices)
+SSG_PARAMS_STRUCT(ssg_write_params, SSG_WRITE_PARAMS);
 
 /* 1 when `name` is a plain file stem: not empty, at most 200 bytes, no '/', '\', "..",
  * control characters or leading '.' (hidden names are reserved for temporary files).

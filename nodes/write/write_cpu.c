@@ -1,4 +1,4 @@
-/* write_cpu.c - what the `write` node does when it runs (method and layout in write.c):
+/* write_cpu.c - what the `write` node does when it runs (method and layout in README.md):
  * create the output directory, gather the layers, hand them to core/io/imageio.h. */
 #include <errno.h>
 #include <string.h>
@@ -53,7 +53,7 @@ static enum ssg_err frame_all(const struct ssg_node_ctx *ctx, const struct ssg_i
     if (n > MAX_LAYERS)
         return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", n, MAX_LAYERS);
     for (int i = 0; i < n; i++) {
-        const struct ssg_image *im = i ? io->extra_in[i - 1] : io->in[0];
+        const struct ssg_image *im = i ? io->extra_in[i - 1] : io->in[SSG_WRITE_IN_IMAGE];
         if (!(f->image[i] = frame_of(ctx, im, &f->owned[i]))) {
             framed_free(f, i);
             return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
@@ -114,7 +114,7 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     if (!ssg_write_name_ok(p->name, why, sizeof why)) {
         return ssg_node_fail(ctx, SSG_E_VALUE, "%s", why);
     }
-    if (!io->in[0]) {
+    if (!io->in[SSG_WRITE_IN_IMAGE]) {
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
