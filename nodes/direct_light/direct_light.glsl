@@ -4,7 +4,7 @@
 // taps turned by interleaved gradient noise, the PCSS blocker search; the faces, lights
 // and taps are the CPU's bytes (storage buffers).
 uniform sampler2DArray position, normal, albedo, maps;
-layout(r32f) uniform writeonly image2DArray dst, dst_visibility;
+layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 struct Face { int light; int ortho; float origin[3]; float u[3]; float v[3]; float axis[3];
               float half_side; };
 struct Light { float pos[3]; float dir[3]; float color[3]; float intensity; int point;
@@ -12,8 +12,8 @@ struct Light { float pos[3]; float dir[3]; float color[3]; float intensity; int 
 layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
 layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
 layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
-uniform int lights, res, samples;
-uniform float filter_radius, offset, normal_offset, tap_slope;
+#pragma ssg_params
+uniform int lights, res;
 uniform float rot[9];
 uniform vec3 eye;
 const float MAX_RADIUS = 24.0, MAX_SLOPE = 10.0, EMPTY = 1.0e30, TINY = 1e-30;
@@ -72,10 +72,10 @@ float tap_limit(Lookup k, float x, float y)
         float len = length(d), nd = dot(k.n, d) / len;
         t = nd < 0.0 ? k.nq / nd : k.r + m;
         t = clamp(t, k.r - m, k.r + m);
-        return (t - (k.bias + k.texel * tap_slope * sqrt(dx * dx + dy * dy))) / len;
+        return (t - (k.bias + k.texel * p_tap_slope * sqrt(dx * dx + dy * dy))) / len;
     }
     t = clamp(t, k.r - m, k.r + m);
-    return t - k.bias - k.texel * tap_slope * sqrt(dx * dx + dy * dy);
+    return t - k.bias - k.texel * p_tap_slope * sqrt(dx * dx + dy * dy);
 }
 
 float bilinear_test(Lookup k, float x, float y)
@@ -99,13 +99,13 @@ float pcf_radius(Lookup k, float cs, float sn)
 {
     float spread = light[k.l].spread;
     if (!(spread > 0.0))
-        return filter_radius;
+        return p_filter;
     bool point = light[k.l].point != 0;
     float search = point ? spread / k.texel : k.r * spread / k.texel;
-    search = min(max(search, filter_radius), MAX_RADIUS);
+    search = min(max(search, p_filter), MAX_RADIUS);
     float sum = 0.0;
     int n = 0;
-    for (int s = 0; s < samples; s++) {
+    for (int s = 0; s < p_samples; s++) {
         vec2 o = tap(s, cs, sn);
         float x = k.x + search * o.x, y = k.y + search * o.y;
         float d = occluder(k, int(floor(x)), int(floor(y)));
@@ -118,7 +118,7 @@ float pcf_radius(Lookup k, float cs, float sn)
         return -1.0;
     float blocker = sum / float(n);
     float penumbra = point ? spread * (k.z - blocker) / blocker : spread * (k.z - blocker);
-    return min(filter_radius + 0.5 * penumbra / k.texel, MAX_RADIUS);
+    return min(p_filter + 0.5 * penumbra / k.texel, MAX_RADIUS);
 }
 
 Lookup locate(int li, vec3 p, vec3 n, vec3 l)
@@ -131,7 +131,7 @@ Lookup locate(int li, vec3 p, vec3 n, vec3 l)
     if (point)
         dist = length(p - lp);
     k.texel = light[li].texel * dist;
-    vec3 q = p + normal_offset * k.texel * sine * n;
+    vec3 q = p + p_normal_offset * k.texel * sine * n;
     k.f = point ? cube_face(q - lp) : 0;
     k.r = length(q - lp);
     int f = light[li].face + k.f;
@@ -142,7 +142,7 @@ Lookup locate(int li, vec3 p, vec3 n, vec3 l)
     if (!point)
         k.r = z;
     k.z = z;
-    k.bias = offset * k.texel;
+    k.bias = p_offset * k.texel;
     k.gx = k.texel * dot(n, fu(f)) / cosine;
     k.gy = k.texel * dot(n, fv(f)) / cosine;
     k.n = n;
@@ -161,15 +161,15 @@ float visibility(int li, ivec2 pix, vec3 p, vec3 n, vec3 l)
     if (radius < 0.0)
         return 1.0;
     // the outermost EARLY taps first; all agreeing: wholly lit or shadowed (the CPU's)
-    int early = samples >= 2 * EARLY ? EARLY : 0;
+    int early = p_samples >= 2 * EARLY ? EARLY : 0;
     float sum = 0.0;
-    for (int i = 0; i < samples; i++) {
-        vec2 o = tap(samples - 1 - i, cs, sn);
+    for (int i = 0; i < p_samples; i++) {
+        vec2 o = tap(p_samples - 1 - i, cs, sn);
         sum += bilinear_test(k, k.x + radius * o.x, k.y + radius * o.y);
         if (i + 1 == early && (sum == 0.0 || sum == float(early)))
             return sum / float(early);
     }
-    return sum / float(samples);
+    return sum / float(p_samples);
 }
 
 // nodes/common/direct.h: the G-buffer's irradiance, E without the colour, and L.
@@ -215,6 +215,6 @@ void main()
         lum_all += e * luminance(c);
     }
     bool bg = m.x == 0.0 && m.y == 0.0 && m.z == 0.0;
-    SSG_STORE3(dst, pix, bg ? vec3(0.0) : ssg_load3(albedo, pix) * 0.318309886183790671 * sum);
+    SSG_STORE3(dst_out, pix, bg ? vec3(0.0) : ssg_load3(albedo, pix) * 0.318309886183790671 * sum);
     SSG_STORE1(dst_visibility, pix, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
 }

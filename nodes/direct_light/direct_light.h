@@ -1,4 +1,4 @@
-/* direct_light.h - the `direct_light` node (direct_light.c): a G-buffer lit by the scene's
+/* direct_light.h - the `direct_light` node (README.md): a G-buffer lit by the scene's
  * own point and directional lights through their maps (lightmaps), with filtered shadows.
  * Shared by both backends: the constants prepare() makes. */
 #ifndef SSG_DIRECT_LIGHT_H
@@ -13,30 +13,61 @@ enum { SSG_DIRECT_LIGHT_MAX_SAMPLES = 64, SSG_DIRECT_LIGHT_MAX_LIGHTS = SSG_LIGH
 /* The steepest receiver plane a tap follows, depth texels per texel (84 degrees). */
 #define SSG_DIRECT_LIGHT_MAX_SLOPE 10.0f
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_direct_light_input {
-    SSG_DIRECT_LIGHT_IN_POSITION,
-    SSG_DIRECT_LIGHT_IN_NORMAL,
-    SSG_DIRECT_LIGHT_IN_ALBEDO,
-    SSG_DIRECT_LIGHT_IN_MAPS,
-    SSG_DIRECT_LIGHT_INPUTS
-};
-enum ssg_direct_light_output {
-    SSG_DIRECT_LIGHT_OUT_OUT,
-    SSG_DIRECT_LIGHT_OUT_VISIBILITY,
-    SSG_DIRECT_LIGHT_OUTPUTS
-};
+/* Ports, one row each (graph/node.h): enumerator, name, types, doc, further fields. */
+#define SSG_DIRECT_LIGHT_IN(X)                                                             \
+    X(SSG_DIRECT_LIGHT_IN_POSITION, "position", SSG_T_VECTOR,                              \
+      "view-space position (gbuffer)")                                                     \
+    X(SSG_DIRECT_LIGHT_IN_NORMAL, "normal", SSG_T_VECTOR,                                  \
+      "unit view-space normal, 0 = background (gbuffer)")                                  \
+    X(SSG_DIRECT_LIGHT_IN_ALBEDO, "albedo", SSG_T_COLOR,                                   \
+      "diffuse albedo, linear RGB (gbuffer)")                                              \
+    X(SSG_DIRECT_LIGHT_IN_MAPS, "maps", SSG_T_LIGHTMAPS,                                   \
+      "the depth of the scene's lights' maps (lightmaps)")
+#define SSG_DIRECT_LIGHT_OUT(X)                                                            \
+    X(SSG_DIRECT_LIGHT_OUT_OUT, "out", SSG_T_COLOR,                                        \
+      "albedo / pi x the shadowed irradiance of the scene's lights (gbuffer.direct with "  \
+      "shadows, diffuse part)",                                                            \
+      .lit = 1)                                                                            \
+    X(SSG_DIRECT_LIGHT_OUT_VISIBILITY, "visibility", SSG_T_SCALAR,                         \
+      "the luminance-weighted share of the unshadowed direct light that arrives, 1 where " \
+      "none would")
+SSG_PORT_ENUM(ssg_direct_light_input, SSG_DIRECT_LIGHT_IN, SSG_DIRECT_LIGHT_INPUTS);
+SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OUTPUTS);
 
-struct ssg_direct_light_params {
-    int samples;         /* PCF taps (Vogel disc); default 12 */
-    float filter;        /* PCF disc radius, texels; default 1.5 */
-    float offset;        /* constant depth offset, texels; default 0.5 */
-    float tap_slope;     /* more offset a texel of a tap's distance, texels; 0.5 */
-    float normal_offset; /* lookup moved along N by normal_offset x sin(N, l) texels; 2 */
-    float light_size;    /* point lights' diameter, scene units; 0 = hard (PCF only) */
-    float sun_angle;     /* directional lights' angular diameter, degrees; 0 = hard */
-};
+/* The parameters, one row each (lang/params.h). The struct below and the table in
+   direct_light.c are made from these rows; the shader reads those not host_only as
+   p_<field> (#pragma ssg_params). */
+#define SSG_DIRECT_LIGHT_PARAMS(P)                                                         \
+    P(INT, samples,                                                                        \
+      "percentage-closer taps a light (a Vogel disc turned per pixel), each a bilinear "   \
+      "blend of four tests",                                                               \
+      .def = 12, .min = 1, .max = SSG_DIRECT_LIGHT_MAX_SAMPLES, .unit = "taps")            \
+    P(FLOAT, filter,                                                                       \
+      "radius of the PCF disc: wider softens the map's stair steps; 0 = one bilinear test", \
+      .def = 1.5, .min = 0, .max = SSG_DIRECT_LIGHT_MAX_RADIUS, .unit = "texels")          \
+    P(FLOAT, offset,                                                                       \
+      "constant depth offset of the test (map rounding); larger leaks light under thin "   \
+      "occluders",                                                                         \
+      .def = 0.5, .min = 0, .max = 1000, .unit = "texels")                                 \
+    P(FLOAT, tap_slope,                                                                    \
+      "more depth offset for a PCF tap, per texel of its distance from the disc's centre: " \
+      "no false shadow in concave corners (a stair's step); larger leaks at a wall's foot " \
+      "(0.5: none; 1: 1.7 texels)",                                                        \
+      .def = 0.5, .min = 0, .max = 100, .unit = "texels per texel")                        \
+    P(FLOAT, normal_offset,                                                                \
+      "the lookup point moves along the normal by normal_offset x sin(N, L) texels: no "   \
+      "self-shadowing where the light grazes, no leak at a wall's foot",                   \
+      .def = 2, .min = 0, .max = 1000, .unit = "texels")                                   \
+    P(FLOAT, light_size,                                                                   \
+      "point lights' diameter: > 0 gives contact-hardening soft shadows (PCSS); 0 = hard", \
+      .def = 0, .min = 0, .max = 1e6, .unit = "scene units",                               \
+      .host_only = 1) /* prepare(): the lights' spread */                                  \
+    P(FLOAT, sun_angle,                                                                    \
+      "directional lights' angular diameter (the sun: 0.53): > 0 gives PCSS soft "         \
+      "shadows; 0 = hard",                                                                 \
+      .def = 0, .min = 0, .max = 45, .unit = "degrees",                                    \
+      .host_only = 1) /* prepare(): the lights' spread */
+SSG_PARAMS_STRUCT(ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
 
 /* One light as both backends read it. */
 struct ssg_direct_light_light {
@@ -56,6 +87,7 @@ struct ssg_direct_light_consts {
     float rot[9], eye[3];  /* view -> world: world = eye + rot^T view */
     int res;               /* the maps' side R */
     int lights;            /* point and directional lights of the scene */
+    int face_count;        /* faces of the maps (the scene's; 1, empty, without lights) */
     float taps[2 * SSG_DIRECT_LIGHT_MAX_SAMPLES]; /* Vogel disc in the unit disc, x y x y */
     struct ssg_direct_light_light light[SSG_DIRECT_LIGHT_MAX_LIGHTS];
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];

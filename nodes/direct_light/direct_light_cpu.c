@@ -1,4 +1,4 @@
-/* direct_light_cpu.c - CPU side of the `direct_light` node (method in direct_light.c).
+/* direct_light_cpu.c - CPU side of the `direct_light` node (method in README.md).
  * Rows in fixed bands; a band's rows in chunks of CHUNK pixels. Per light, the unshadowed
  * irradiance of the whole chunk is one vectorised loop (nodes/common/direct.h, the
  * G-buffer's own code); only the pixels it reaches run the shadow filter (gathers from

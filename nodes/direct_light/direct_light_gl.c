@@ -1,6 +1,6 @@
-/* direct_light_gl.c - GL side of the `direct_light` node (method in direct_light.c): one
- * compute pass, direct_light.glsl, reading the faces, lights and taps prepare() made (the
- * CPU's bytes, in storage buffers). */
+/* direct_light_gl.c - GL side of the `direct_light` node (method in README.md): one compute
+ * pass, direct_light.glsl, reading the faces, lights and taps prepare() made (the CPU's
+ * bytes, in storage buffers); ports and parameters are bound by the descriptor's tables. */
 #include "gl/gl.h"
 #include "direct_light.h"
 
@@ -12,27 +12,14 @@ enum ssg_err ssg_direct_light_run_gl(const struct ssg_node_ctx *ctx, const void 
 {
     const struct ssg_direct_light_consts *c = consts;
     const struct ssg_image *pos = io->in[SSG_DIRECT_LIGHT_IN_POSITION];
-    int faces = c->lights ? c->light[c->lights - 1].face +
-                                (c->light[c->lights - 1].point ? SSG_LIGHTMAP_CUBE_FACES : 1)
-                          : 1;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "direct_light.glsl", NULL);
-    ssg_gl_input(&p, "position", pos);
-    ssg_gl_input(&p, "normal", io->in[SSG_DIRECT_LIGHT_IN_NORMAL]);
-    ssg_gl_input(&p, "albedo", io->in[SSG_DIRECT_LIGHT_IN_ALBEDO]);
-    ssg_gl_input(&p, "maps", io->in[SSG_DIRECT_LIGHT_IN_MAPS]);
-    ssg_gl_output(&p, "dst", io->out[SSG_DIRECT_LIGHT_OUT_OUT]);
-    ssg_gl_output(&p, "dst_visibility", io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]);
-    ssg_gl_buffer(&p, 0, c->faces, sizeof c->faces[0] * (size_t)faces);
+    ssg_gl_ports(&p, io);
+    ssg_gl_buffer(&p, 0, c->faces, sizeof c->faces[0] * (size_t)c->face_count);
     ssg_gl_buffer(&p, 1, c->light, sizeof c->light[0] * (size_t)(c->lights ? c->lights : 1));
     ssg_gl_buffer(&p, 2, c->taps, sizeof(float) * 2 * (size_t)c->p.samples);
     ssg_gl_int(&p, "lights", c->lights);
     ssg_gl_int(&p, "res", c->res);
-    ssg_gl_int(&p, "samples", c->p.samples);
-    ssg_gl_float(&p, "filter_radius", c->p.filter);
-    ssg_gl_float(&p, "offset", c->p.offset);
-    ssg_gl_float(&p, "normal_offset", c->p.normal_offset);
-    ssg_gl_float(&p, "tap_slope", c->p.tap_slope);
     ssg_gl_floats(&p, "rot", 9, c->rot);
     ssg_gl_vec3(&p, "eye", c->eye);
     ssg_gl_dispatch(&p, pos->width, pos->height);

@@ -1,17 +1,5 @@
-/* lightmaps.c - the `lightmaps` node: the maps of the scene's own point and directional
- * lights, as nodes/common/lightmap.h defines them (faces, texel rays, depth, and the
- * reflective shadow map's normal and flux channels).
- *
- * Method: a shadow map per light (Williams, "Casting Curved Shadows on Curved Surfaces",
- * SIGGRAPH 1978), a cube of six 90 degree faces around a point light (omnidirectional
- * shadow maps, Gerasimov, GPU Gems ch. 12, 2004), and per texel the surface's normal and
- * reflected flux of a reflective shadow map (Dachsbacher and Stamminger, "Reflective Shadow
- * Maps", I3D 2005, sec. 3: depth, world position, normal, flux; the position is the texel's
- * ray at its depth here, lightmap.h). Every texel samples its centre's ray: the CPU
- * rasterises each triangle in fixed point (lightmaps_cpu.c, as shadowmaps_cpu.c) and then
- * intersects the texel's ray with the nearest triangle found there for the normal, uv and
- * depth (a visibility buffer, gl_raster.h); GL rasterises with a depth test and its
- * fragment shader intersects the same ray with the same triangle. */
+/* lightmaps.c - the `lightmaps` node's descriptor, checks and prepare: shadow and reflective
+ * shadow maps of the scene's own lights. Method and conventions: README.md. */
 #include <stdio.h>
 
 #include "graph/image.h"
@@ -76,6 +64,21 @@ static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_cons
                                         s->lights[face->light].intensity * area;
 }
 
+/* The faces as lightmaps.glsl reads them (lightmaps.h). */
+static void pack_faces(struct ssg_lightmaps_consts *c)
+{
+    for (int i = 0; i < c->count; i++) {
+        const struct ssg_lightmap_face *face = &c->faces[i];
+        float *o = c->face_floats + (size_t)i * SSG_LIGHTMAPS_FACE_FLOATS;
+        for (int k = 0; k < 3; k++) {
+            o[k] = face->origin[k], o[3 + k] = face->u[k], o[6 + k] = face->v[k];
+            o[9 + k] = face->axis[k], o[14 + k] = c->flux[i][k];
+        }
+        o[12] = face->half, o[13] = (float)face->ortho, o[17] = face->light >= 0;
+        o[18] = o[19] = 0.0f;
+    }
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_lightmaps_params *p = params;
@@ -98,27 +101,12 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         float far = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + sphere.radius;
         c->far_z = far * 1.01f > c->far_z ? far * 1.01f : c->far_z;
     }
+    pack_faces(c);
     return SSG_OK;
 }
 
-static const struct ssg_param_desc params[] = {
-    {.name = "resolution", SSG_FIELD_INT(struct ssg_lightmaps_params, resolution), .def = 512,
-     .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX, .unit = "texels",
-     .help = "side of every face (a point light has six, a directional light one); memory "
-             "7 x faces x resolution^2 floats"},
-};
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_LIGHTMAPS_OUT_DEPTH] = {.name = "depth", .types = SSG_T_LIGHTMAPS,
-     .doc = "R x R, channel f the depth of the nearest surface on face f (lightmap.h), "
-            "SSG_SHADOW_EMPTY where none"},
-    [SSG_LIGHTMAPS_OUT_NORMAL] = {.name = "normal", .types = SSG_T_LIGHTMAPS,
-     .doc = "R x R, channels 3f..3f+2 that surface's unit world normal, facing the light"},
-    [SSG_LIGHTMAPS_OUT_FLUX] = {.name = "flux", .types = SSG_T_LIGHTMAPS,
-     .doc = "R x R, channels 3f..3f+2 the RGB flux that surface reflects (albedo x flux "
-            "through the texel, W)"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_LIGHTMAPS_OUTPUTS, "one entry a port enumerator");
+SSG_PARAMS_TABLE(params, ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
+SSG_PORT_TABLE(outputs, SSG_LIGHTMAPS_OUT);
 
 const struct ssg_node_desc ssg_node_lightmaps = {
     .name = "lightmaps",
@@ -126,16 +114,6 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     .method = "Williams 1978 (shadow maps); a cube of six faces a point light (Gerasimov, GPU "
               "Gems ch. 12); Dachsbacher and Stamminger, Reflective Shadow Maps, I3D 2005, "
               "sec. 3 (depth, normal, flux per texel); faces of nodes/common/lightmap.h",
-    .doc = "Renders the scene from each of its own lights (the scene's point_light and "
-           "directional_light lines, in order): a directional light gets one orthographic "
-           "face over the scene's bounding sphere, a point light a cube of six 90 degree "
-           "faces. Per texel (its centre's ray) the nearest surface, both sides of every "
-           "triangle: depth along the face's axis, its unit shading normal turned towards "
-           "the light, and the flux it reflects (albedo x the light's flux through the "
-           "texel). Surfaces nearer a point light than 0.001 x the scene's radius are cut. "
-           "Memory is 7 x faces x resolution^2 floats (a point light at 512: 42 MiB). "
-           "direct_light reads depth for shadows; a reflective-shadow-map gather reads all "
-           "three.",
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
     .consts_size = sizeof(struct ssg_lightmaps_consts),

@@ -8,10 +8,12 @@ layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
 layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
 layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
 #include "surface.glsl" // Material, texel, scene_material, fetch2, wrap, sample_texture
-// Per face (lightmaps_gl.c): origin, u, v, axis, half, ortho, flux rgb, has a light, 2 unused.
+// Per face (prepare()'s face_floats): origin, u, v, axis, half, ortho, flux rgb, has a light,
+// 2 unused.
 layout(std430, binding = 5) readonly buffer Faces { float face[]; };
 const int FACE = 20;
-uniform int ssg_layer, ssg_mesh, res;
+#pragma ssg_params
+uniform int ssg_layer, ssg_mesh;
 uniform float near_z, far_z;
 
 vec3 face3(int k) { int o = FACE * ssg_layer + k; return vec3(face[o], face[o + 1], face[o + 2]); }
@@ -52,8 +54,8 @@ vec3 fetch3(int base, uint vertex)
 void main()
 {
     int x = int(gl_FragCoord.x), y = int(gl_FragCoord.y), f = FACE * ssg_layer;
-    float a = 2.0 * (float(x) + 0.5) / float(res) - 1.0;
-    float b = 2.0 * (float(y) + 0.5) / float(res) - 1.0;
+    float a = 2.0 * (float(x) + 0.5) / float(p_resolution) - 1.0;
+    float b = 2.0 * (float(y) + 0.5) / float(p_resolution) - 1.0;
     bool ortho = face[f + 13] != 0.0;
     vec3 u = face3(3), v = face3(6), axis = face3(9), o = face3(0), d = axis;
     if (ortho)
@@ -81,7 +83,7 @@ void main()
         vec2 uv = w0 * fetch2(m.uvs, i0) + bu * fetch2(m.uvs, i1) + bv * fetch2(m.uvs, i2);
         albedo *= sample_texture(mat, uv);
     }
-    float q = 1.0 + a * a + b * b, side = 2.0 / float(res);
+    float q = 1.0 + a * a + b * b, side = 2.0 / float(p_resolution);
     float omega = ortho ? 1.0 : side * side / (q * sqrt(q));
     vec3 flux = albedo * face3(14) * omega;
     out_depth = t;

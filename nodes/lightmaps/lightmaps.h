@@ -1,4 +1,4 @@
-/* lightmaps.h - the `lightmaps` node (lightmaps.c): depth, normal and reflected flux of the
+/* lightmaps.h - the `lightmaps` node (README.md): depth, normal and reflected flux of the
  * nearest surface on every face of the scene's own lights' maps (nodes/common/lightmap.h),
  * shared by both backends. */
 #ifndef SSG_LIGHTMAPS_H
@@ -7,21 +7,34 @@
 #include "graph/node.h"
 #include "common/lightmap.h"
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_lightmaps_output {
-    SSG_LIGHTMAPS_OUT_DEPTH,
-    SSG_LIGHTMAPS_OUT_NORMAL,
-    SSG_LIGHTMAPS_OUT_FLUX,
-    SSG_LIGHTMAPS_OUTPUTS
-};
+/* Ports, one row each (graph/node.h): enumerator, name, types, doc. */
+#define SSG_LIGHTMAPS_OUT(X)                                                               \
+    X(SSG_LIGHTMAPS_OUT_DEPTH, "depth", SSG_T_LIGHTMAPS,                                   \
+      "R x R, channel f the depth of the nearest surface on face f (lightmap.h), "         \
+      "SSG_SHADOW_EMPTY where none")                                                       \
+    X(SSG_LIGHTMAPS_OUT_NORMAL, "normal", SSG_T_LIGHTMAPS,                                 \
+      "R x R, channels 3f..3f+2 that surface's unit world normal, facing the light")       \
+    X(SSG_LIGHTMAPS_OUT_FLUX, "flux", SSG_T_LIGHTMAPS,                                     \
+      "R x R, channels 3f..3f+2 the RGB flux that surface reflects (albedo x flux "        \
+      "through the texel, W)")
+SSG_PORT_ENUM(ssg_lightmaps_output, SSG_LIGHTMAPS_OUT, SSG_LIGHTMAPS_OUTPUTS);
 
 /* Bounds of the resolution parameter (texels a side). */
 enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
 
-struct ssg_lightmaps_params {
-    int resolution; /* map side R in texels; default 512 */
-};
+/* The parameters, one row each (lang/params.h). The struct below and the table in
+   lightmaps.c are made from these rows; the shader reads them as p_<field> (#pragma
+   ssg_params). */
+#define SSG_LIGHTMAPS_PARAMS(P)                                                            \
+    P(INT, resolution,                                                                     \
+      "side of every face (a point light has six, a directional light one); memory 7 x "   \
+      "faces x resolution^2 floats",                                                       \
+      .def = 512, .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX,              \
+      .unit = "texels")
+SSG_PARAMS_STRUCT(ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
+
+/* Floats a face takes in the GL shader's storage buffer (lightmaps.glsl's FACE). */
+enum { SSG_LIGHTMAPS_FACE_FLOATS = 20 };
 
 /* A cube face's near plane, as a fraction of the scene's bounding radius: nearer surfaces
    are cut (GL's clip and the CPU's polygon clip at the same plane). */
@@ -35,6 +48,9 @@ struct ssg_lightmaps_consts {
     float flux[SSG_LIGHTMAP_FACES_MAX][3]; /* per face: E x texel area (orthographic) or I
                                               (cube, times the texel's solid angle) */
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];
+    /* the same faces as lightmaps.glsl reads them, SSG_LIGHTMAPS_FACE_FLOATS each: origin,
+       u, v, axis, half, ortho, flux rgb, has a light (1 or 0), 2 unused */
+    float face_floats[SSG_LIGHTMAPS_FACE_FLOATS * SSG_LIGHTMAP_FACES_MAX];
 };
 
 enum ssg_err ssg_lightmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

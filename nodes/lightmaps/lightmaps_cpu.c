@@ -1,4 +1,4 @@
-/* lightmaps_cpu.c - CPU side of the `lightmaps` node (method in lightmaps.c).
+/* lightmaps_cpu.c - CPU side of the `lightmaps` node (method in README.md).
  *
  * Two passes. 1: every vertex of the scene onto every face, snapped to 1/SUB texel (the
  * fixed point GPUs use), in parallel over faces. 2: in parallel over strips of STRIP rows

@@ -1,42 +1,5 @@
-/* rsm.c - the `rsm` node: one diffuse bounce of every point and directional light of the
- * scene, beyond the screen, gathered from the lights' reflective shadow maps (Dachsbacher
- * and Stamminger, "Reflective Shadow Maps", I3D 2005). Per pixel of a view-space G-buffer
- * of any resolution (in practice a half or quarter one from `downsample`):
- *
- *   E(x) = sum over texels p of Phi_p / pi x max(0, n_p . (x - x_p)) max(0, n_x . (x_p - x))
- *          / (d^2 max(d^2, A_p / pi)) x fade(d),   d = |x_p - x|
- *   out  = albedo x E / pi   (albedo connected; otherwise E / pi)
- *
- * the paper's eq. 1 (sec. 3) with the 1/pi of a Lambertian sender (nodes/common/lightmap.h
- * states the units: Phi_p the flux the patch reflects, W). x_p is the texel's world point
- * from its depth (ssg_lightmap_texel_point). The paper's d^4 is d^2 x d^2; one d^2 is
- * clamped to at least A_p / pi, the squared radius of a disc of the patch's own surface
- * area A_p, so that no patch gives a receiver more than its radiosity Phi_p / A_p times the
- * cosines (what an infinite plane of that radiosity gives) where the point-light law
- * diverges (sec. 3 "near the light" artefacts the paper hides by sampling only away from
- * the receiver). fade(d) = 1 for min_distance m = 0; otherwise 0 for d <= m, 1 for
- * d >= 2 m, smoothstep t^2 (3 - 2 t), t = (d - m) / m, between: a screen-space pass that
- * weights its own near-field bounce by 1 - fade(d) counts every sender once.
- *
- * No visibility between sender and receiver: RSM's own limitation (sec. 3, "we ignore
- * occlusion for the indirect light sources"): light reaches through walls and boxes. The
- * pipeline darkens the bounce with a screen-space visibility (the AO of the same frame).
- *
- * Importance sampling (sec. 4 samples the map around the receiver's projection, which only
- * a directional light's single map allows; ours draws from every face by flux instead).
- * Once per run the maps become virtual point lights (rsm.h): each face is cut into cells of
- * `cell` x `cell` texels, a cell's texels binned by their normal's dominant axis, each bin
- * one VPL with the bin's summed flux and area and its flux-weighted position and normal;
- * empty bins are dropped. The VPL list carries the CDF of w = Phi.r + Phi.g + Phi.b. Per
- * pixel, `samples` draws u_k = (k + o) / S x total, k = 0..S-1 (stratified), pick the VPL
- * whose CDF interval holds u_k, each weighted by 1 / (S pdf) = total / (S w): unbiased for
- * the VPL sum. The offset o is the pixel's in an 8 x 8 Bayer tile ((b + 0.5) / 64, b the
- * Bayer index, shifted mod 1 and over the tile by the frame's seed): neighbours draw
- * different strata, which the upsampling's joint bilateral filter averages (interleaved
- * sampling, Keller and Heidrich 2001). The pixels of one tile cell make the same draws, so
- * the 64 x S searches of the CDF are made once a run and a pixel only evaluates its draws
- * (which also lets the CPU run 64 such pixels of a row as one vector loop). samples = 0, or at least the VPL count, is the exact
- * VPL sum; with cell = 1 that is the texel sum above. */
+/* rsm.c - the `rsm` node's descriptor, check and prepare: one diffuse bounce of the scene's
+ * lights from their reflective shadow maps. Method and conventions: README.md. */
 #include <stdio.h>
 
 #include "rsm.h"
@@ -144,6 +107,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         return ssg_node_fail(ctx, SSG_E_VALUE, "%d faces of %d x %d cells are too many VPL "
                              "slots: raise cell", c->faces, c->cells, c->cells);
     c->slots = c->faces * c->cells * c->cells * SSG_RSM_BINS;
+    c->grid_w = SSG_RSM_BINS * c->cells;
+    c->grid_h = c->faces * c->cells;
+    c->gl_list_rows = SSG_RSM_GL_ITERATIONS / c->grid_w;
     for (int f = 0; f < c->faces; f++)
         pack_face(&c->face_s[f], c->res, &c->face[16 * f]);
     make_offsets(ctx->frame ? ctx->frame->seed : 1, c->offset);
@@ -151,44 +117,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     return SSG_OK;
 }
 
-static const struct ssg_param_desc params[] = {
-    {.name = "samples", SSG_FIELD_INT(struct ssg_rsm_params, samples), .def = 64, .min = 0,
-     .max = SSG_RSM_SAMPLES_MAX,
-     .help = "VPLs drawn per pixel in proportion to their flux (stratified, weighted by "
-             "1 / pdf); 0, or at least the VPL count, sums every VPL exactly"},
-    {.name = "cell", SSG_FIELD_INT(struct ssg_rsm_params, cell), .def = 4, .min = 1,
-     .max = 128, .unit = "texels",
-     .help = "side of the map cells merged into VPLs (per dominant normal axis): larger is "
-             "fewer, coarser VPLs; 1 = one VPL a texel"},
-    {.name = "min_distance", SSG_FIELD_FLOAT(struct ssg_rsm_params, min_distance), .def = 0,
-     .min = 0, .max = 1e6, .unit = "world units",
-     .help = "senders nearer than this give nothing, fading in smoothly up to twice it, so a "
-             "screen-space pass can own the near field (weight 1 - fade); 0 = none excluded"},
-};
-
-static const struct ssg_port_desc inputs[] = {
-    [SSG_RSM_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-                             .doc = "view-space position (gbuffer or downsample), any size"},
-    [SSG_RSM_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
-                           .doc = "unit view-space normal, 0 = background"},
-    [SSG_RSM_IN_MAP_DEPTH] = {.name = "map_depth", .types = SSG_T_LIGHTMAPS,
-                              .doc = "the lights' map depths (lightmaps.depth)"},
-    [SSG_RSM_IN_MAP_NORMAL] = {.name = "map_normal", .types = SSG_T_LIGHTMAPS,
-                               .doc = "the lights' map normals (lightmaps.normal)"},
-    [SSG_RSM_IN_MAP_FLUX] = {.name = "map_flux", .types = SSG_T_LIGHTMAPS,
-                             .doc = "the lights' reflected flux (lightmaps.flux)"},
-    [SSG_RSM_IN_ALBEDO] = {.name = "albedo", .types = SSG_T_COLOR, .optional = 1,
-                           .doc = "diffuse albedo of the receivers; unconnected: out is the "
-                                  "bounce a white receiver sends, E / pi"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_RSM_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_RSM_OUT_OUT] = {.name = "out", .types = SSG_T_COLOR, .lit = 1,
-                         .doc = "one-bounce radiance albedo x E / pi (E / pi without albedo), "
-                                "linear RGB, unoccluded"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_RSM_OUTPUTS, "one entry a port enumerator");
+SSG_PARAMS_TABLE(params, ssg_rsm_params, SSG_RSM_PARAMS);
+SSG_PORT_TABLE(inputs, SSG_RSM_IN);
+SSG_PORT_TABLE(outputs, SSG_RSM_OUT);
 
 /* Flops per pixel (node.h), by reading rsm_cpu.c: about 40 for the pixel's world frame and
    output, per draw about 30 for the VPL's term (the searches are per run, not per pixel).
@@ -207,15 +138,6 @@ const struct ssg_node_desc ssg_node_rsm = {
               "(the map's texels as pixel lights, no occlusion between sender and receiver); "
               "texels merged into VPLs and drawn by flux (stratified, 1 / pdf) instead of "
               "the paper's screen-space pattern around the receiver's projection",
-    .doc = "Gathers the light the scene's point and directional lights reflect once off "
-           "every surface their maps see (lightmaps: depth, normal, flux), whether or not "
-           "it is on screen: E = sum of Phi / pi cos_sender cos_receiver / (d^2 max(d^2, "
-           "A / pi)) over VPLs made of cell x cell texels, `samples` of them drawn per "
-           "pixel by flux. No visibility between sender and receiver (RSM's limitation): "
-           "darken the result with the frame's AO. out = albedo x E / pi, or E / pi without "
-           "albedo, so that a graph can run it at low resolution, upsample and multiply by "
-           "the full-resolution albedo. min_distance leaves the near field (d < "
-           "min_distance, faded up to 2 min_distance) to a screen-space pass.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_rsm_params),
     .consts_size = sizeof(struct ssg_rsm_consts),

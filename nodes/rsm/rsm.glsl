@@ -7,10 +7,10 @@ layout(r32f) uniform writeonly image2DArray dst;
 layout(r32f) uniform image2DArray acc;  // the sums between the dispatches of an exact run
 uniform float rot[9];  // view -> world: world = eye + rot^T view
 uniform vec3 eye;
-uniform int samples;
+#pragma ssg_params
 uniform int vpl0, vpls;       // exact: this dispatch's VPLs [vpl0, vpl0 + vpls)
 uniform bool first, last;     // exact: the first and the last dispatch
-uniform float inv_samples, min_distance;
+uniform float inv_samples;
 const int TILE = 8;    // SSG_RSM_TILE
 
 int list_w;
@@ -27,8 +27,8 @@ void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
         return;
     float r2 = vpl(i, 9);
     precise float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
-    if (min_distance > 0.0) {
-        precise float t = (sqrt(d2) - min_distance) / min_distance;
+    if (p_min_distance > 0.0) {
+        precise float t = (sqrt(d2) - p_min_distance) / p_min_distance;
         t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
         g = g * (t * t * (3.0 - 2.0 * t));
     }
@@ -40,7 +40,7 @@ void add_vpl(int i, vec3 x, vec3 nx, float scale, inout vec3 sum)
 vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
 {
     precise vec3 sum = sum0;
-    if (samples == 0 || samples >= n) {
+    if (p_samples == 0 || p_samples >= n) {
         for (int i = vpl0; i < min(vpl0 + vpls, n); i++)
             add_vpl(i, x, nx, 1.0, sum);
         return sum;
@@ -48,7 +48,7 @@ vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
     float total = vpl(n - 1, 11);
     int t = (p.y % TILE) * TILE + p.x % TILE;
     precise float step = inv_samples * total;
-    for (int k = 0; k < samples; k++) {
+    for (int k = 0; k < p_samples; k++) {
         int i = int(texelFetch(pick, ivec3(k, t, 0), 0).r);
         precise float scale = step / vpl(i, 10);
         add_vpl(i, x, nx, scale, sum);
@@ -65,7 +65,7 @@ void main()
     vec3 P = ssg_load3(position, p), N = ssg_load3(normal, p);
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
     int n = int(texelFetch(count, ivec3(0, 0, 0), 0).r);
-    bool exact = samples == 0 || samples >= n;
+    bool exact = p_samples == 0 || p_samples >= n;
     if (!exact && !first)
         return; // a sampled run is done in its first dispatch
     precise vec3 sum = vec3(0.0);

@@ -1,4 +1,4 @@
-/* rsm.h - the `rsm` node (rsm.c): one diffuse bounce of the scene's own lights gathered from
+/* rsm.h - the `rsm` node (README.md): one diffuse bounce of the scene's own lights gathered from
  * their reflective shadow maps (nodes/common/lightmap.h). Shared by both backends: the
  * constants prepare() makes, the virtual point lights (VPLs) every run makes from the maps
  * and the layout both backends store them in (rsm_vpl.c on the CPU, rsm_cells.glsl and
@@ -17,17 +17,28 @@
 #include "graph/node.h"
 #include "common/lightmap.h"
 
-/* Ports: the descriptor's arrays are indexed by these (SSG_<NODE>_IN_<PORT>, ...). */
-enum ssg_rsm_input {
-    SSG_RSM_IN_POSITION,
-    SSG_RSM_IN_NORMAL,
-    SSG_RSM_IN_MAP_DEPTH,
-    SSG_RSM_IN_MAP_NORMAL,
-    SSG_RSM_IN_MAP_FLUX,
-    SSG_RSM_IN_ALBEDO,
-    SSG_RSM_INPUTS
-};
-enum ssg_rsm_output { SSG_RSM_OUT_OUT, SSG_RSM_OUTPUTS };
+/* Ports, one row each (graph/node.h): enumerator, name, types, doc, further fields. */
+#define SSG_RSM_IN(X)                                                                      \
+    X(SSG_RSM_IN_POSITION, "position", SSG_T_VECTOR,                                       \
+      "view-space position (gbuffer or downsample), any size")                             \
+    X(SSG_RSM_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal, 0 = background") \
+    X(SSG_RSM_IN_MAP_DEPTH, "map_depth", SSG_T_LIGHTMAPS,                                  \
+      "the lights' map depths (lightmaps.depth)")                                          \
+    X(SSG_RSM_IN_MAP_NORMAL, "map_normal", SSG_T_LIGHTMAPS,                                \
+      "the lights' map normals (lightmaps.normal)")                                        \
+    X(SSG_RSM_IN_MAP_FLUX, "map_flux", SSG_T_LIGHTMAPS,                                    \
+      "the lights' reflected flux (lightmaps.flux)")                                       \
+    X(SSG_RSM_IN_ALBEDO, "albedo", SSG_T_COLOR,                                            \
+      "diffuse albedo of the receivers; unconnected: out is the bounce a white receiver "  \
+      "sends, E / pi",                                                                     \
+      .optional = 1)
+#define SSG_RSM_OUT(X)                                                                     \
+    X(SSG_RSM_OUT_OUT, "out", SSG_T_COLOR,                                                 \
+      "one-bounce radiance albedo x E / pi (E / pi without albedo), linear RGB, "          \
+      "unoccluded",                                                                        \
+      .lit = 1)
+SSG_PORT_ENUM(ssg_rsm_input, SSG_RSM_IN, SSG_RSM_INPUTS);
+SSG_PORT_ENUM(ssg_rsm_output, SSG_RSM_OUT, SSG_RSM_OUTPUTS);
 
 enum { SSG_RSM_BINS = 6 };      /* VPLs a cell may give: one a dominant normal axis */
 enum { SSG_RSM_TILE = 8 };      /* side of the interleaved offset tile, px */
@@ -47,11 +58,24 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
    squared radius of a disc of the cell's surface area, the floor of d^2), [10] weight
    w = Phi.r + Phi.g + Phi.b, [11] the CDF (the list only: the sum of w up to here). */
 
-struct ssg_rsm_params {
-    int samples;        /* VPLs drawn per pixel; 0 = every VPL (exact sum); default 64 */
-    int cell;           /* side of a VPL cell, map texels; default 4 */
-    float min_distance; /* senders nearer than this fade out (world units); default 0 */
-};
+/* The parameters, one row each (lang/params.h). The struct below and the table in rsm.c
+   are made from these rows; the gather (rsm.glsl) reads those not host_only as p_<field>
+   (#pragma ssg_params). */
+#define SSG_RSM_PARAMS(P)                                                                  \
+    P(INT, samples,                                                                        \
+      "VPLs drawn per pixel in proportion to their flux (stratified, weighted by 1 / pdf); " \
+      "0, or at least the VPL count, sums every VPL exactly",                              \
+      .def = 64, .min = 0, .max = SSG_RSM_SAMPLES_MAX)                                     \
+    P(INT, cell,                                                                           \
+      "side of the map cells merged into VPLs (per dominant normal axis): larger is "      \
+      "fewer, coarser VPLs; 1 = one VPL a texel",                                          \
+      .def = 4, .min = 1, .max = 128, .unit = "texels",                                    \
+      .host_only = 1) /* prepare()'s slot grid; the cells pass gets it with the grid */    \
+    P(FLOAT, min_distance,                                                                 \
+      "senders nearer than this give nothing, fading in smoothly up to twice it, so a "    \
+      "screen-space pass can own the near field (weight 1 - fade); 0 = none excluded",     \
+      .def = 0, .min = 0, .max = 1e6, .unit = "world units")
+SSG_PARAMS_STRUCT(ssg_rsm_params, SSG_RSM_PARAMS);
 
 struct ssg_rsm_consts {
     struct ssg_rsm_params p;
@@ -59,6 +83,9 @@ struct ssg_rsm_consts {
     int faces, res;         /* the maps' face count F and side R */
     int cells;              /* cells per face side C = ceil(R / cell) */
     int slots;              /* F C C 6 */
+    int grid_w, grid_h;     /* the slot grid: 6 C x F C */
+    int gl_list_rows;       /* rows of the slot grid one GL dispatch of the list walk takes
+                               (SSG_RSM_GL_ITERATIONS / grid_w) */
     /* per face, 16 floats: origin[3], u[3], v[3], axis[3], half, ortho, texel area across
        the ray (orthographic; cube: 0, per texel), unused */
     float face[16 * SSG_LIGHTMAP_FACES_MAX];

@@ -1,4 +1,4 @@
-/* rsm_cpu.c - CPU side of the `rsm` node (method in rsm.c): the VPL slots of the maps in row
+/* rsm_cpu.c - CPU side of the `rsm` node (method in README.md): the VPL slots of the maps in row
  * bands, the list and its CDF on the node's thread (a running sum: one order, whatever the
  * threads), then every pixel's draws in row bands. Each pixel depends on its own inputs
  * and the list alone, so the output is the same for every thread count. */
@@ -62,7 +62,7 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
 }
 
 /* VPL v's irradiance x pi at every receiver of the chunk, times `scale`, into the sums:
-   Phi cos_v cos_x / (d^2 max(d^2, r2)) x fade(d) (rsm.c), nothing behind either surface.
+   Phi cos_v cos_x / (d^2 max(d^2, r2)) x fade(d) (README.md), nothing behind either surface.
    Branch-free over the pixels (a select, never a NaN added), so it vectorises; each
    pixel's sum still runs in draw order, as on GL. */
 static inline __attribute__((always_inline)) void
@@ -160,7 +160,7 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
     float *list = slots + slot_floats;
     int *pick = (int *)(list + slot_floats);
     struct cells_job cj = {c, io, slots, 0};
-    ssg_parallel_rows(c->faces * c->cells, 2, cell_rows, &cj);
+    ssg_parallel_rows(c->grid_h, 2, cell_rows, &cj);
     if (cj.failed)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];

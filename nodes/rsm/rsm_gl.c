@@ -1,11 +1,13 @@
-/* rsm_gl.c - GL side of the `rsm` node (method in rsm.c): the maps never leave the GPU. Four
+/* rsm_gl.c - GL side of the `rsm` node (method in README.md): the maps never leave the GPU. Four
  * passes: the slots of every cell (rsm_cells.glsl, one invocation a cell), the list with
  * its CDF and count (rsm_list.glsl, one invocation: a running sum), the draws of each
  * cell of the offset tile (rsm_picks.glsl, one invocation a draw) and the gather
  * (rsm.glsl). The list walk and an exact gather are split into dispatches of at most
  * SSG_RSM_GL_ITERATIONS loop iterations, their state in scratch images between them:
  * llvmpipe silently ends a loop after 65535 iterations. The faces and the offset tile are
- * the CPU's floats from prepare(), in storage buffers. Known cost: the list walk is one
+ * the CPU's floats from prepare(), in storage buffers, and so is the slot grid's shape.
+ * The gather's shader reads the parameters by the table (#pragma ssg_params); the cells
+ * pass gets `cell` (host_only) with the grid it makes. Known cost: the list walk is one
  * thread's work (about 0.5 s on llvmpipe for a point light's cube at 512 with cell 4;
  * a two-level prefix sum, row by row, would make it parallel). */
 #include "gl/gl.h"
@@ -23,20 +25,21 @@ static void cells_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_cons
     ssg_gl_int(p, "res", c->res);
     ssg_gl_int(p, "cell", c->p.cell);
     ssg_gl_int(p, "ncells", c->cells);
-    ssg_gl_dispatch(p, c->cells, c->faces * c->cells);
+    ssg_gl_dispatch(p, c->cells, c->grid_h);
 }
 
 /* One invocation walks the slots, at most SSG_RSM_GL_ITERATIONS a dispatch (rsm.h). */
-static void list_pass(const struct ssg_node_ctx *ctx, const struct ssg_image *cells,
-                      struct ssg_image *list, struct ssg_image *state, struct ssg_gl_pass *p)
+static void list_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                      const struct ssg_image *cells, struct ssg_image *list,
+                      struct ssg_image *state, struct ssg_gl_pass *p)
 {
-    int rows = SSG_RSM_GL_ITERATIONS / cells->width;
+    int rows = c->gl_list_rows;
     ssg_gl_pass_begin(p, ctx, "rsm_list.glsl", NULL);
     ssg_gl_input(p, "cells", cells);
     ssg_gl_output(p, "list", list);
     ssg_gl_output(p, "state", state);
     ssg_gl_int(p, "rows", rows);
-    for (int row0 = 0; row0 < cells->height; row0 += rows) {
+    for (int row0 = 0; row0 < c->grid_h; row0 += rows) {
         ssg_gl_int(p, "row0", row0);
         ssg_gl_dispatch(p, 1, 1);
     }
@@ -61,7 +64,7 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
                         struct ssg_image *acc, struct ssg_gl_pass *p)
 {
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
-    ssg_gl_pass_begin(p, ctx, "rsm.glsl", NULL);
+    ssg_gl_pass_begin(p, ctx, "rsm.glsl", NULL); /* binds samples, min_distance */
     ssg_gl_input(p, "position", pos);
     ssg_gl_input(p, "normal", io->in[SSG_RSM_IN_NORMAL]);
     ssg_gl_input(p, "albedo", io->in[SSG_RSM_IN_ALBEDO]);
@@ -71,9 +74,7 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     ssg_gl_output(p, "dst", io->out[SSG_RSM_OUT_OUT]);
     ssg_gl_floats(p, "rot", 9, c->rot);
     ssg_gl_vec3(p, "eye", c->eye);
-    ssg_gl_int(p, "samples", c->p.samples);
     ssg_gl_float(p, "inv_samples", c->inv_samples);
-    ssg_gl_float(p, "min_distance", c->p.min_distance);
     ssg_gl_output(p, "acc", acc);
     /* An exact sum walks the VPLs in dispatches of SSG_RSM_GL_ITERATIONS (rsm.h), the
        running sums kept in acc between them; the count is on the GPU, so every dispatch
@@ -93,7 +94,7 @@ enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                             const struct ssg_io *io)
 {
     const struct ssg_rsm_consts *c = consts;
-    int gw = SSG_RSM_BINS * c->cells, gh = c->faces * c->cells;
+    int gw = c->grid_w, gh = c->grid_h;
     struct ssg_image *cells = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_CELL_FLOATS);
     struct ssg_image *list = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_SLOT);
     struct ssg_image *count = ssg_gl_scratch(ctx, 1, 1, 2);
@@ -106,7 +107,7 @@ enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     if (cells && list && count && pick && acc) {
         cells_pass(ctx, c, io, cells, &p);
         if (!(e = ssg_gl_pass_end(&p))) {
-            list_pass(ctx, cells, list, count, &p);
+            list_pass(ctx, c, cells, list, count, &p);
             e = ssg_gl_pass_end(&p);
         }
         if (!e && c->p.samples > 0) {

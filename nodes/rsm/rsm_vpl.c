@@ -1,4 +1,4 @@
-/* rsm_vpl.c - the virtual point lights of the `rsm` node (layout in rsm.h, method in rsm.c),
+/* rsm_vpl.c - the virtual point lights of the `rsm` node (layout in rsm.h, method in README.md),
  * made on the CPU; rsm_cells.glsl and rsm_list.glsl make the same floats on GL, with the
  * same operations in the same order. */
 #include "common/vector_loops.h" /* first: see there */

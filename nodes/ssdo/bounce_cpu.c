@@ -1,4 +1,4 @@
-/* bounce_cpu.c - CPU kernel of the `bounce` node (method in bounce.c). The sampling,
+/* bounce_cpu.c - CPU kernel of the `bounce` node (method in bounce.md). The sampling,
  * visibility test and form factors are ssdo's shared code (ssdo_sampling.h), run in
  * the same order per pixel as ssdo_cpu.c runs them, so the output has the same bits as
  * ssdo's bounce output. Layout: chunks of a row in structure-of-arrays scratch, chunk
@@ -48,7 +48,7 @@ enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
 {
     const struct ssg_bounce_consts *c = consts;
     struct job j;
-    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, 1);
+    ssg_ssdo_job_init(&j.s, io, &c->g, &c->proj, 1);
     for (int ch = 0; ch < 3; ch++)
         j.out[ch] = ssg_image_plane(io->out[0], ch);
     ssg_parallel_rows(j.s.h, SSG_SSDO_ROWS_PER_BAND, band, &j);

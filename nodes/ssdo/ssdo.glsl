@@ -1,5 +1,5 @@
-// ssdo.glsl - the `ssdo` node on GL (method in ssdo.c), and with SSDO_BOUNCE_NODE defined
-// the `bounce` node (bounce.c): one invocation per pixel, the kernel samples in order.
+// ssdo.glsl - the `ssdo` node on GL (method in README.md), and with SSDO_BOUNCE_NODE defined
+// the `bounce` node (bounce.md): one invocation per pixel, the kernel samples in order.
 // Both nodes share ssdo_sampling.h's maths on the CPU, so they share this file on GL.
 // The maths is ssdo_cpu.c's and ssdo_sampling.h's lane by lane: the same tangent frame and
 // projective coefficients, the same sums in the same order (`precise`, so that no
@@ -9,31 +9,29 @@
 uniform sampler2DArray normal;
 uniform sampler2DArray albedo;
 uniform sampler2DArray light;    // the senders' radiance (bounce)
-layout(r32f) uniform writeonly image2DArray dst_bounce;
+layout(r32f) uniform writeonly image2DArray dst_out; // bounce: its only output
 
-uniform float radius;       // scene units
-uniform float bias;         // scene units
+// The parameters (p_<field>, from the node's table: bounce's are ssdo's sampling rows) and
+// what prepare() derived.
+#pragma ssg_params
 uniform float cap;          // max_screen_radius / f: r <= cap depth(P) when capped
 uniform bool capped;        // max_screen_radius > 0
-uniform float strength;     // multiplies the patch area
-uniform float min_distance; // sender distance clamp; <= 0: automatic
 uniform vec3 proj;          // (f, cx, cy) of this resolution
-uniform bool do_bounce;     // gather the bounce
 
-#ifndef SSDO_BOUNCE_NODE
+#ifdef SSDO_BOUNCE_NODE
+#define DO_BOUNCE true      // gather the bounce: the node's purpose
+#else
+#define DO_BOUNCE (p_bounce != 0)
 uniform sampler2DArray count;
 uniform bool count_bound;
-layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform writeonly image2DArray dst_bounce;
 // The environment as a view-space cube (core/scene/env.h), RGB per texel (env = ENV_CUBE).
 layout(std430, binding = 1) readonly buffer EnvCube { float cube_rgb[]; };
 
 const int MAX_LIGHTS = 8;   // SSG_SSDO_MAX_LIGHTS
 const int ENV_CUBE = 1;     // enum ssg_ssdo_env
 const int CUBE_SIZE = 16;   // SSG_ENV_CUBE_SIZE
-uniform int radiance;       // 1 = mode radiance, 0 = modulation
-uniform int out_channels;   // modulation: 1 (luminance) or 3
-uniform int lobe;           // 1..64
-uniform float power;        // modulation: out = M^power
+uniform int out_channels;   // of output out: 1 (modulation of luminances) or 3
 uniform int env;            // enum ssg_ssdo_env
 uniform vec3 env_rgb;       // constant environment radiance
 uniform int light_count;
@@ -69,24 +67,24 @@ pixel_frame setup_frame(vec3 P, vec3 N, vec2 rot, float dp, int n)
     precise vec3 T = vec3(co * t0 + si * b0, co * t1 + si * b1, co * t2 + si * b2);
     precise vec3 B = vec3(co * b0 - si * t0, co * b1 - si * t1, co * b2 - si * t2);
     precise float rcap = cap * dp;
-    float r = capped && rcap < radius ? rcap : radius;
+    float r = capped && rcap < p_radius ? rcap : p_radius;
     precise float qz = -P.z;
     precise float rtz = r * T.z, rbz = r * B.z, rnz = r * N.z;
     pixel_frame k;
     k.P = P, k.N = N, k.T = T, k.B = B;
-    k.cz = vec4(qz - bias, -rtz, -rbz, -rnz);
+    k.cz = vec4(qz - p_bias, -rtz, -rbz, -rnz);
     precise float cu0 = f * P.x + cx * qz, cu1 = f * (r * T.x) - cx * rtz;
     precise float cu2 = f * (r * B.x) - cx * rbz, cu3 = f * (r * N.x) - cx * rnz;
     precise float cv0 = cy * qz - f * P.y, cv1 = -cy * rtz - f * (r * T.y);
     precise float cv2 = -cy * rbz - f * (r * B.y), cv3 = -cy * rnz - f * (r * N.y);
     k.cu = vec4(cu0, cu1, cu2, cu3);
     k.cv = vec4(cv0, cv1, cv2, cv3);
-    precise float per_n = strength / float(n);
+    precise float per_n = p_strength / float(n);
     precise float r2 = r * r;
     precise float ff = per_n * r2;
     k.r2 = r2;
     k.ff = ff;
-    k.md2 = min_distance > 0.0 ? min_distance * min_distance : ff;
+    k.md2 = p_min_distance > 0.0 ? p_min_distance * p_min_distance : ff;
     return k;
 }
 
@@ -115,7 +113,7 @@ float sample_visibility(pixel_frame k, vec3 s, inout bounce_sum acc)
 {
     ivec2 q;
     float zb;
-    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, bias, q, zb))
+    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, p_bias, q, zb))
         return 1.0;
     float d = ssg_scene_depth(q);
     if (!(d > 0.0 && d < zb))
@@ -124,7 +122,7 @@ float sample_visibility(pixel_frame k, vec3 s, inout bounce_sum acc)
     precise float dd = dv.x * dv.x + dv.y * dv.y + dv.z * dv.z;
     if (!(dd <= k.r2))
         return 1.0;
-    if (do_bounce)
+    if (DO_BOUNCE)
         add_bounce(acc, k, q, dv, dd);
     return 0.0;
 }
@@ -160,7 +158,7 @@ void main()
     vec3 P, N;
     float dp;
     if (!load_pixel(p, P, N, dp)) {
-        SSG_STORE3(dst_bounce, p, vec3(0.0));
+        SSG_STORE3(dst_out, p, vec3(0.0));
         return;
     }
     int samples = textureSize(kernel, 0).x;
@@ -168,7 +166,7 @@ void main()
     bounce_sum acc = bounce_sum(0.0, vec3(0.0));
     for (int s = 0; s < samples; s++)
         sample_visibility(k, ssg_kernel_sample(s), acc);
-    SSG_STORE3(dst_bounce, p, finish_bounce(p, acc));
+    SSG_STORE3(dst_out, p, finish_bounce(p, acc));
 }
 
 #else
@@ -212,7 +210,7 @@ void setup_lights(pixel_frame k, out vec3 lt[MAX_LIGHTS], out float e[MAX_LIGHTS
 float lobe_pow(float cl, float nw)
 {
     precise float c = cl > 0.0 ? cl : 0.0, p = nw;
-    for (int e = lobe; e != 0; e >>= 1) {
+    for (int e = p_lobe; e != 0; e >>= 1) {
         if ((e & 1) != 0)
             p *= c;
         if (e > 1)
@@ -301,37 +299,38 @@ void light_totals(light_sums acc, float e[MAX_LIGHTS], float dw, out vec3 num, o
 // M^power (ssdo_cpu.c raise_to_power; powf(x, 0) = 1, even at 0).
 vec3 raised(vec3 m)
 {
-    if (power == 1.0)
+    if (p_power == 1.0)
         return m;
-    return power == 0.0 ? vec3(1.0) : pow(m, vec3(power));
+    return p_power == 0.0 ? vec3(1.0) : pow(m, vec3(p_power));
 }
 
 // Modulation (per channel or of luminances) or radiance (ssdo_cpu.c finish_chunk).
 void store_out(ivec2 p, vec3 num, vec3 den)
 {
-    if (radiance != 0) {
+    if (p_mode == MODE_RADIANCE) {
         const float inv_pi = 0.31830988618379067154; // (float)(1.0 / M_PI)
         vec3 a = ssg_load3(albedo, p);
         precise vec3 v = vec3(a.x * inv_pi * num.x, a.y * inv_pi * num.y, a.z * inv_pi * num.z);
-        SSG_STORE3(dst, p, v);
+        SSG_STORE3(dst_out, p, v);
     } else if (out_channels == 3) {
         precise vec3 q = vec3(num.x / den.x, num.y / den.y, num.z / den.z);
-        SSG_STORE3(dst, p, raised(vec3(den.x > 1e-30 ? q.x : 1.0, den.y > 1e-30 ? q.y : 1.0,
-                                       den.z > 1e-30 ? q.z : 1.0)));
+        SSG_STORE3(dst_out, p, raised(vec3(den.x > 1e-30 ? q.x : 1.0,
+                                           den.y > 1e-30 ? q.y : 1.0,
+                                           den.z > 1e-30 ? q.z : 1.0)));
     } else {
         precise float yn = 0.2126 * num.x + 0.7152 * num.y + 0.0722 * num.z;
         precise float yd = 0.2126 * den.x + 0.7152 * den.y + 0.0722 * den.z;
         precise float q = yn / yd;
-        SSG_STORE1(dst, p, raised(vec3(yd > 1e-30 ? q : 1.0)).x);
+        SSG_STORE1(dst_out, p, raised(vec3(yd > 1e-30 ? q : 1.0)).x);
     }
 }
 
 void store_background(ivec2 p)
 {
-    if (radiance != 0 || out_channels == 3)
-        SSG_STORE3(dst, p, vec3(radiance != 0 ? 0.0 : 1.0));
+    if (p_mode == MODE_RADIANCE || out_channels == 3)
+        SSG_STORE3(dst_out, p, vec3(p_mode == MODE_RADIANCE ? 0.0 : 1.0));
     else
-        SSG_STORE1(dst, p, 1.0);
+        SSG_STORE1(dst_out, p, 1.0);
     SSG_STORE3(dst_bounce, p, vec3(0.0));
 }
 
@@ -375,7 +374,7 @@ void main()
     precise float dw = acc.cosw > 0.0 ? 3.14159265358979 / acc.cosw : 0.0;
     light_totals(acc, e, dw, num, den);
     store_out(p, num, den);
-    SSG_STORE3(dst_bounce, p, do_bounce ? finish_bounce(p, b) : vec3(0.0));
+    SSG_STORE3(dst_bounce, p, DO_BOUNCE ? finish_bounce(p, b) : vec3(0.0));
 }
 
 #endif

@@ -1,6 +1,6 @@
 /* ssdo.h - parameters and prepared constants of the `ssdo` node, shared by ssdo.c
  * (descriptor, check, prepare), ssdo_cpu.c (the CPU kernel) and ssdo_gl.c (the GL side).
- * Method and conventions are described in ssdo.c; the per-sample maths it shares with
+ * Method and conventions: README.md in this folder; the per-sample maths it shares with
  * `bounce` in ssdo_sampling.h (on GL, ssdo.glsl serves both nodes).
  * Read-only after prepare(); the kernel is thread-safe. */
 #ifndef SSG_SSDO_H
@@ -13,29 +13,42 @@
 
 #define SSG_SSDO_MAX_LIGHTS 8
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_ssdo_output {
-    SSG_SSDO_OUT_OUT,
-    SSG_SSDO_OUT_BOUNCE,
-    SSG_SSDO_OUTPUTS
-};
+/* Output ports, one row each (graph/node.h); the inputs are ssdo_sampling.h's. */
+#define SSG_SSDO_OUT(X)                                                                    \
+    X(SSG_SSDO_OUT_OUT, "out", SSG_T_SCALAR | SSG_T_COLOR,                                 \
+      "modulation factor (scalar, or color with channels=3; 1 = unoccluded) or, mode "     \
+      "radiance, the directional light (color)")                                           \
+    X(SSG_SSDO_OUT_BOUNCE, "bounce", SSG_T_COLOR,                                          \
+      "one indirect bounce, albedo * sum F_i L_i; 0 when bounce=false")
+SSG_PORT_ENUM(ssg_ssdo_output, SSG_SSDO_OUT, SSG_SSDO_OUTPUTS);
 
 enum ssg_ssdo_mode {
     SSG_SSDO_MODE_MODULATION, /* one-step method (Szentandrasi sec. 4.1): lit / unoccluded */
     SSG_SSDO_MODE_RADIANCE,   /* two-step first pass: albedo / pi * directional light (eq. 2) */
 };
 
-struct ssg_ssdo_params {
-    struct ssg_ssdo_geom g; /* radius, bias, max_screen_radius, strength, min_distance */
-    int mode;               /* enum ssg_ssdo_mode; default modulation */
-    int channels;           /* modulation output channels, 1 or 3; default 1 */
-    int bounce;             /* 1 = compute the indirect bounce output; default 0 */
-    int lobe;               /* cosine power spreading a delta light over a cone, 1..64;
-                               default 4 */
-    float power;            /* modulation mode: out = M^power (per channel), 0..8;
-                               default 1 */
-};
+/* The parameters, one row each (lang/params.h): the sampling's (ssdo_sampling.h), then
+   ssdo's own. The struct below and the table in ssdo.c are made from these rows; the
+   shader reads those not host_only as p_<field> (#pragma ssg_params). */
+#define SSG_SSDO_PARAMS(P)                                                                 \
+    SSG_SSDO_GEOM_PARAMS(P)                                                                \
+    P(ENUM, mode,                                                                          \
+      "modulation: lit / unoccluded light (one-step, sec. 4.1); radiance: albedo/pi * "    \
+      "directional light (eq. 2)",                                                         \
+      .def = SSG_SSDO_MODE_MODULATION, .choices = ssg_ssdo_mode_choices)                   \
+    P(INT, channels, "modulation: 1 = one factor of the luminances, 3 = one per colour "   \
+      "channel", .def = 1, .min = 1, .max = 3,                                             \
+      .host_only = 1) /* check(), prepare(): out_channels */                               \
+    P(BOOL, bounce, "compute the indirect bounce output (needs albedo and light)",         \
+      .def = 0)                                                                            \
+    P(INT, lobe,                                                                           \
+      "cosine power of the cone over which a point or directional light is sampled",       \
+      .def = 4, .min = 1, .max = 64)                                                       \
+    P(FLOAT, power,                                                                        \
+      "modulation: out = M^power, the darkening ssao's power gives its AO (ssdo.graph "    \
+      "uses 2, measured: docs/accuracy.md)",                                               \
+      .def = 1, .min = 0, .max = 8)
+SSG_PARAMS_STRUCT(ssg_ssdo_params, SSG_SSDO_PARAMS);
 
 /* A scene light in view space. */
 struct ssg_ssdo_light {
@@ -50,6 +63,7 @@ struct ssg_ssdo_consts {
     struct ssg_ssdo_params p;   /* the parameters as given */
     struct ssg_projection proj; /* the frame's camera as the G-buffer's resolution sees
                                    it (ssg_sampling_projection) */
+    struct ssg_ssdo_geom g;     /* the sampling's constants (ssg_ssdo_geom_of) */
     int out_channels;           /* of output `out`: 1, or 3 (radiance, channels=3) */
     int light_count;            /* 0..SSG_SSDO_MAX_LIGHTS */
     struct ssg_ssdo_light lights[SSG_SSDO_MAX_LIGHTS];
@@ -63,11 +77,10 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
 /* The GL side (ssdo_gl.c, shader ssdo.glsl). */
 enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);
-/* Binds what ssdo.glsl's sampling reads (the inputs of ssdo_sampling.h's ports, the
-   geometry and the projection of position's size), for ssdo and bounce on GL. */
+/* Binds what ssdo.glsl's sampling reads besides the ports and the parameters (prepare()'s
+   cap and the projection of position's size), for ssdo and bounce on GL. */
 struct ssg_gl_pass;
-void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_io *io,
-                               const struct ssg_ssdo_geom *g,
+void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_ssdo_geom *g,
                                const struct ssg_projection *proj);
 
 #endif

@@ -1,4 +1,4 @@
-/* ssdo_cpu.c - CPU kernel of the `ssdo` node (method in ssdo.c; the sampling, visibility
+/* ssdo_cpu.c - CPU kernel of the `ssdo` node (method in README.md; the sampling, visibility
  * and bounce shared with `bounce` in ssdo_sampling.h).
  *
  * Layout for speed, as ssao_cpu.c: a row is cut into chunks of SSG_SSDO_CHUNK pixels whose
@@ -13,7 +13,7 @@
  * only on the inputs and every per-pixel sum runs in kernel order: the output does not
  * depend on the thread count; the FMA clones round a little differently from the
  * baseline's (vector_loops.h).
- * Per-pixel counts (the `count` input, ssdo.c): a chunk runs the samples up to the largest
+ * Per-pixel counts (the `count` input, README.md): a chunk runs the samples up to the largest
  * count among its surface pixels; a lane past its own count is no candidate of the depth
  * test (ssdo_sampling.h) and adds 0 to the light and environment sums (selects, so the
  * loops still vectorise), and its dw and patch area use its count. Adding a masked 0
@@ -434,7 +434,7 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     const struct ssg_image *pos = io->in[SSG_SSDO_IN_POSITION];
     const struct ssg_image *cnt = io->in[SSG_SSDO_IN_COUNT];
     struct job j = {.c = c, .out_channels = out_channels, .cnt = cnt ? cnt->data : NULL};
-    ssg_ssdo_job_init(&j.s, io, &c->p.g, &c->proj, c->p.bounce);
+    ssg_ssdo_job_init(&j.s, io, &c->g, &c->proj, c->p.bounce);
     for (int ch = 0; ch < 3; ch++) {
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);

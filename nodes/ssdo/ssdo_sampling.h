@@ -3,26 +3,9 @@
  * output is exactly ssdo's bounce output for the same inputs: the same loops, the same
  * operations in the same order.
  *
- * Method: Ritschel, Grosch and Seidel, "Approximating Dynamic Global Illumination in
- * Image Space" (I3D 2009), as described by Szentandrasi, "Modern Methods of Realistic
- * Lighting in Real Time", section 3.2 (eq. 1-4), and Belonogov, "Global Illumination
- * methods in simulated VR environments", chapter 4 (eq. 4.1-4.3).
- * Per pixel P (unit normal N, tangent frame T, B turned by the rotation tile as in ssao)
- * and kernel sample s (tangent space, |s| <= 1): S = P + r (T s.x + B s.y + N s.z), r the
- * radius (capped by max_screen_radius like ssao). S is projected; off screen, behind the
- * camera or over background it is visible (V = 1). Otherwise the scene depth z_i and
- * point P_i at S's pixel are read: S is occluded (V = 0) when z_i < depth(S) - bias and
- * |P_i - P| <= r (a hard range check: a far foreground object does not occlude).
- * Bounce (eq. 3/4 in the patch form): each occluded sample's pixel is a sender patch of
- * area A_s = strength pi r^2 / K with radiance L_i (the light input there) and normal N_i:
- *   v = P_i - P, w = v / |v|, d2 = max(|v|^2, min_distance^2),
- *   F_i = A_s max(0, N.w) max(0, -N_i.w) / (pi d2)   (point form factor),
- * and when sum F_i > 1 every F_i is scaled by 1 / sum (a receiver cannot see more than its
- * whole hemisphere), so bounce = albedo(P) sum F_i L_i <= albedo max L_i. Eq. 4's extra
- * delta-omega is dropped: A_s / d^2 already is the patch's solid angle (documented
- * deviation). min_distance 0 means the radius of the disc of area A_s, sqrt(A_s / pi) =
- * r sqrt(strength / K): closer than that a single patch's point form factor would exceed 1,
- * the whole hemisphere.
+ * The method (sampling, the visibility test with its hard range check, the bounce's patch
+ * form factors and their normalisation): README.md in this folder, "Sampling, visibility
+ * and the bounce".
  *
  * Layout (as ssao_cpu.c): chunks of CHUNK pixels of one row in structure-of-arrays
  * scratch; per kernel sample, straight loops over the chunk that GCC vectorises (the
@@ -41,64 +24,76 @@
 #include "common/sampling.h"
 #include "graph/node.h"
 
-/* Input ports of both nodes, in order: bounce has the first seven (albedo and light
-   required there, SSG_BOUNCE_INPUTS of them), ssdo all eight. The descriptors' arrays are
-   indexed by these (SSG_<NODE>_IN_<PORT>; the ports are ssdo's, so is the prefix). */
-enum ssg_ssdo_input {
-    SSG_SSDO_IN_POSITION,
-    SSG_SSDO_IN_NORMAL,
-    SSG_SSDO_IN_KERNEL,
-    SSG_SSDO_IN_ROTATION,
-    SSG_SSDO_IN_DEPTH,
-    SSG_SSDO_IN_ALBEDO,
-    SSG_SSDO_IN_LIGHT,
-    SSG_SSDO_IN_COUNT, /* ssdo only: the per-pixel sample count */
-    SSG_SSDO_INPUTS,
-    SSG_BOUNCE_INPUTS = SSG_SSDO_IN_COUNT
-};
+/* Input ports of both nodes, one row each (graph/node.h), in order: bounce has the first
+   seven (albedo and light required there, with its own docs: bounce.h), ssdo all eight.
+   Both descriptors' arrays are indexed by these enumerators (SSG_<NODE>_IN_<PORT>; the
+   ports are ssdo's, so is the prefix). */
+#define SSG_SSDO_GEOM_IN(X)                                                                \
+    X(SSG_SSDO_IN_POSITION, "position", SSG_T_VECTOR, "view-space position")               \
+    X(SSG_SSDO_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal")                \
+    X(SSG_SSDO_IN_KERNEL, "kernel", SSG_T_KERNEL,                                          \
+      "hemisphere samples, uniform in solid angle (halton mapping=uniform)")               \
+    X(SSG_SSDO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
+      "per-pixel rotation tile (halton.rotation); none = no rotation", .optional = 1)      \
+    X(SSG_SSDO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
+      "linear depth for the occluder lookup; none = -position.z", .optional = 1)
+#define SSG_SSDO_IN(X)                                                                     \
+    SSG_SSDO_GEOM_IN(X)                                                                    \
+    X(SSG_SSDO_IN_ALBEDO, "albedo", SSG_T_COLOR,                                           \
+      "diffuse albedo (mode radiance and bounce)", .optional = 1)                          \
+    X(SSG_SSDO_IN_LIGHT, "light", SSG_T_COLOR,                                             \
+      "outgoing radiance of each pixel, the bounce's senders (bounce)", .optional = 1)     \
+    X(SSG_SSDO_IN_COUNT, "count", SSG_T_SCALAR,                                            \
+      "per-pixel sample count (complexity.count): the first n of the kernel; none = all",  \
+      .optional = 1) /* ssdo only */
+SSG_PORT_ENUM(ssg_ssdo_input, SSG_SSDO_IN, SSG_SSDO_INPUTS);
+enum { SSG_BOUNCE_INPUTS = SSG_SSDO_IN_COUNT };
 
 enum { SSG_SSDO_CHUNK = SSG_SAMPLING_CHUNK, SSG_SSDO_ROWS_PER_BAND = 16 };
 
-/* The parameters the sampling and the bounce read (a part of each node's params). */
+/* The parameters of the sampling and the bounce, one row each (lang/params.h), the first
+   rows of both nodes' tables. max_screen_radius is read through prepare()'s cap. */
+#define SSG_SSDO_GEOM_PARAMS(P)                                                            \
+    P(FLOAT, radius, "r_max: hemisphere radius around the pixel", .def = 0.5, .min = 1e-6, \
+      .max = 1e6, .unit = "scene units")                                                   \
+    P(FLOAT, bias, "a sample is occluded only when the surface is this much in front of it", \
+      .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units")                            \
+    P(FLOAT, strength, "multiplies the sender patch area A_s = pi radius^2 / K", .def = 1,  \
+      .min = 0, .max = 64)                                                                 \
+    P(FLOAT, min_distance,                                                                 \
+      "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's form "     \
+      "factor reaches 1",                                                                  \
+      .def = 0, .min = 0, .max = 1e6, .unit = "scene units")                               \
+    P(FLOAT, max_screen_radius, "caps the projected radius; 0 = no cap", .def = 0,         \
+      .min = 0, .max = 16384, .unit = "px", .host_only = 1) /* prepare(): cap, capped */
+
+/* The sampling's constants, made once in prepare() from those rows (ssg_ssdo_geom_make)
+   and read by both backends. */
 struct ssg_ssdo_geom {
-    float radius;            /* r_max, scene units, > 0; default 0.5 */
-    float bias;              /* depth margin before a sample counts as occluded, scene
-                                units; default 0.02 */
-    float max_screen_radius; /* px; caps the projected radius (0 = no cap); default 0 */
-    float strength;          /* multiplies the patch area A_s; default 1 */
-    float min_distance;      /* clamp of the sender distance, scene units; 0 = the radius
-                                of a disc of area A_s; default 0 */
+    float radius;       /* r_max, scene units, > 0; default 0.5 */
+    float bias;         /* depth margin before a sample counts as occluded, scene units;
+                           default 0.02 */
+    float strength;     /* multiplies the patch area A_s; default 1 */
+    float min_distance; /* clamp of the sender distance, scene units; 0 = the radius of a
+                           disc of area A_s; default 0 */
+    float cap;          /* max_screen_radius / f: r <= cap depth(P) when capped */
+    int capped;         /* max_screen_radius > 0 (px; 0 = no cap, the default) */
 };
 
-/* The parameters of struct ssg_ssdo_geom, declared once for both nodes' tables: entries
-   of a struct ssg_param_desc array for a params struct `params_type` whose member `g` is the
-   geometry. */
-#define SSG_SSDO_GEOM_PARAMS(params_type)                                                \
-    {.name = "radius", SSG_FIELD_FLOAT(params_type, g.radius), .def = 0.5, .min = 1e-6,  \
-     .max = 1e6, .unit = "scene units", .help = "r_max: hemisphere radius around the pixel"},  \
-    {.name = "bias", SSG_FIELD_FLOAT(params_type, g.bias), .def = 0.02, .min = 0,        \
-     .max = 1e6, .unit = "scene units",                                                  \
-     .help = "a sample is occluded only when the surface is this much in front of it"},  \
-    {.name = "strength", SSG_FIELD_FLOAT(params_type, g.strength), .def = 1, .min = 0,   \
-     .max = 64, .help = "multiplies the sender patch area A_s = pi radius^2 / K"},       \
-    {.name = "min_distance", SSG_FIELD_FLOAT(params_type, g.min_distance), .def = 0,     \
-     .min = 0, .max = 1e6, .unit = "scene units",                                        \
-     .help = "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's "  \
-             "form factor reaches 1"},                                                   \
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(params_type, g.max_screen_radius),     \
-     .def = 0, .min = 0, .max = 16384, .unit = "px",                                     \
-     .help = "caps the projected radius; 0 = no cap"}
-
-/* The input ports both nodes begin with (SSG_SSDO_IN_POSITION .. SSG_SSDO_IN_DEPTH). */
-#define SSG_SSDO_GEOM_INPUTS                                                             \
-    [SSG_SSDO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR, .doc = "view-space position"},  \
-    [SSG_SSDO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR, .doc = "unit view-space normal"},  \
-    [SSG_SSDO_IN_KERNEL] = {.name = "kernel", .types = SSG_T_KERNEL,                     \
-     .doc = "hemisphere samples, uniform in solid angle (halton mapping=uniform)"},      \
-    [SSG_SSDO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,  \
-     .doc = "per-pixel rotation tile (halton.rotation); none = no rotation"},            \
-    [SSG_SSDO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,        \
-     .doc = "linear depth for the occluder lookup; none = -position.z"}
+/* The geometry of a node's parameters `p` (a struct holding SSG_SSDO_GEOM_PARAMS' rows)
+   at focal length f (px). */
+#define ssg_ssdo_geom_of(p, f)                                                             \
+    ssg_ssdo_geom_make((p)->radius, (p)->bias, (p)->strength, (p)->min_distance,           \
+                       (p)->max_screen_radius, (f))
+static inline struct ssg_ssdo_geom ssg_ssdo_geom_make(float radius, float bias,
+                                                      float strength, float min_distance,
+                                                      float max_screen_radius, float f)
+{
+    return (struct ssg_ssdo_geom){.radius = radius, .bias = bias, .strength = strength,
+                                  .min_distance = min_distance,
+                                  .cap = max_screen_radius / f,
+                                  .capped = max_screen_radius > 0.0f};
+}
 
 /* What one run reads: image planes, the kernel, the projection of this resolution. */
 struct ssg_ssdo_job {
@@ -198,8 +193,8 @@ static inline __attribute__((always_inline)) void
 ssg_ssdo_setup(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len)
 {
     const float f = j->f, cx = j->cx, cy = j->cy, radius = j->g.radius, bias = j->g.bias;
-    const float cap = j->g.max_screen_radius / j->f; /* r <= cap * depth */
-    const int capped = j->g.max_screen_radius > 0.0f;
+    const float cap = j->g.cap; /* r <= cap * depth */
+    const int capped = j->g.capped;
     const float per_k = j->g.strength / (float)j->count;
     const float md = j->g.min_distance;
     const int auto_md = !(md > 0.0f);

@@ -1,4 +1,4 @@
-// ssilvb.glsl - the `ssilvb` node on GL (method in ssilvb.c): one invocation per pixel,
+// ssilvb.glsl - the `ssilvb` node on GL (method in README.md): one invocation per pixel,
 // ssilvb_cpu.c's operations in its order for one lane of its chunk (`precise`: no
 // multiply-add fused where the CPU rounds twice): slices in order, per step the +D sample
 // then the -D one. Only sqrt and division may round differently from the CPU's, which can
@@ -14,17 +14,11 @@ uniform sampler2DArray light;
 uniform sampler2DArray albedo;
 uniform sampler2DArray back;
 uniform bool back_bound;
-layout(r32f) uniform writeonly image2DArray dst;
-layout(r32f) uniform writeonly image2DArray bounce;
+layout(r32f) uniform writeonly image2DArray dst_ao;
+layout(r32f) uniform writeonly image2DArray dst_bounce;
 
-// The parameters (ssg_gl_params: p_<name>) and what prepare() derived from them.
-uniform int p_slices;
-uniform int p_steps;
-uniform float p_radius;
-uniform float p_thickness;
-uniform float p_power;
-uniform float p_strength;
-uniform float p_max_screen_radius;
+// The parameters (p_<field>, from the descriptor's table) and what prepare() derived.
+#pragma ssg_params
 uniform float invf;     // 1 / f
 uniform vec3 proj;      // (f, cx, cy) of this resolution
 uniform vec4 noise_off; // the seed's offsets of the two noise patterns
@@ -192,8 +186,8 @@ void main()
     g_dp = ssg_scene_depth(p);
     vec3 N = ssg_load3(normal, p);
     if (!ssg_surface_normal(g_dp, N)) { // background or garbage: 1, no bounce
-        SSG_STORE1(dst, p, 1.0);
-        SSG_STORE3(bounce, p, vec3(0.0));
+        SSG_STORE1(dst_ao, p, 1.0);
+        SSG_STORE3(dst_bounce, p, vec3(0.0));
         return;
     }
     g_n = N;
@@ -219,11 +213,11 @@ void main()
     precise float v = g_wsum > 0.0 ? g_vis / g_wsum : 1.0;
     v = v > 0.0 ? v : 0.0;
     v = v < 1.0 ? v : 1.0;
-    SSG_STORE1(dst, p, p_power == 1.0 ? v : pow(v, p_power));
+    SSG_STORE1(dst_ao, p, p_power == 1.0 ? v : pow(v, p_power));
     vec3 alb = ssg_load3(albedo, p);
     precise vec3 s = g_wsum > 0.0 ? vec3(p_strength * g_b.x / g_wsum,
                                          p_strength * g_b.y / g_wsum,
                                          p_strength * g_b.z / g_wsum) : vec3(0.0);
     precise vec3 o = vec3(alb.x * s.x, alb.y * s.y, alb.z * s.z);
-    SSG_STORE3(bounce, p, o);
+    SSG_STORE3(dst_bounce, p, o);
 }

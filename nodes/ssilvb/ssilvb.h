@@ -1,6 +1,6 @@
 /* ssilvb.h - parameters and prepared constants of the `ssilvb` node, shared by ssilvb.c
  * (descriptor, check, prepare), ssilvb_cpu.c (the CPU kernel) and ssilvb_gl.c (the GL
- * side). Method and conventions are described in ssilvb.c. Read-only after prepare(); the
+ * side). Method and conventions: README.md in this folder. Read-only after prepare(); the
  * kernel is thread-safe. */
 #ifndef SSG_SSILVB_H
 #define SSG_SSILVB_H
@@ -15,37 +15,63 @@
 /* Levels of the per-pixel slice rotation: the noise picks one of these turns. */
 #define SSG_SSILVB_TURNS 64
 
-/* Ports: the descriptor's arrays are indexed by these. */
-enum ssg_ssilvb_input {
-    SSG_SSILVB_IN_POSITION,
-    SSG_SSILVB_IN_NORMAL,
-    SSG_SSILVB_IN_DEPTH,
-    SSG_SSILVB_IN_LIGHT,
-    SSG_SSILVB_IN_ALBEDO,
-    SSG_SSILVB_IN_BACK,
-    SSG_SSILVB_INPUTS
-};
-enum ssg_ssilvb_output {
-    SSG_SSILVB_OUT_AO,
-    SSG_SSILVB_OUT_BOUNCE,
-    SSG_SSILVB_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_SSILVB_IN(X)                                                                   \
+    X(SSG_SSILVB_IN_POSITION, "position", SSG_T_VECTOR,                                    \
+      "view-space position (its -z is the depth unless depth is given)")                   \
+    X(SSG_SSILVB_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal")              \
+    X(SSG_SSILVB_IN_DEPTH, "depth", SSG_T_SCALAR,                                          \
+      "linear depth the points are reconstructed from; none = -position.z", .optional = 1) \
+    X(SSG_SSILVB_IN_LIGHT, "light", SSG_T_COLOR,                                           \
+      "outgoing radiance of each pixel, the bounce's senders (as ssdo's light)")           \
+    X(SSG_SSILVB_IN_ALBEDO, "albedo", SSG_T_COLOR, "diffuse albedo of the receiver")       \
+    X(SSG_SSILVB_IN_BACK, "back", SSG_T_SCALAR,                                            \
+      "linear depth of the second surface behind the first along the pixel's ray; none "   \
+      "(or not behind) = depth + thickness",                                               \
+      .optional = 1)
+#define SSG_SSILVB_OUT(X)                                                                  \
+    X(SSG_SSILVB_OUT_AO, "ao", SSG_T_SCALAR,                                               \
+      "cosine-weighted visibility within radius from the sector bitmasks, 1 = unoccluded") \
+    X(SSG_SSILVB_OUT_BOUNCE, "bounce", SSG_T_COLOR,                                        \
+      "one indirect bounce from the on-screen senders, albedo / pi x received irradiance " \
+      "(as ssdo's bounce)")
+SSG_PORT_ENUM(ssg_ssilvb_input, SSG_SSILVB_IN, SSG_SSILVB_INPUTS);
+SSG_PORT_ENUM(ssg_ssilvb_output, SSG_SSILVB_OUT, SSG_SSILVB_OUTPUTS);
 
-struct ssg_ssilvb_params {
-    int slices;              /* slice directions per pixel, 1..32; default 4 */
-    int steps;               /* samples per side of a slice, 1..64; default 12 */
-    float radius;            /* R, scene units, > 0; default 2 */
-    float thickness;         /* t, scene units: a sample occludes from its depth to its
-                                depth + t along its ray (`back` unconnected, or where back
-                                is not behind the sample); default 0.5 */
-    float power;             /* ao = visibility^power, 0.1..8; default 2.5 */
-    float strength;          /* bounce scale, 0..16; default 1.2 */
-    float max_screen_radius; /* px; caps the march length (0 = no cap); default 0 */
-};
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range and
+   unit. The struct below and the table in ssilvb.c are made from these rows; the shader
+   reads every one as p_<field> (#pragma ssg_params). */
+#define SSG_SSILVB_PARAMS(P)                                                               \
+    P(INT, slices,                                                                         \
+      "slice directions per pixel over the half circle about the view vector, each "       \
+      "marched both ways (turned per pixel by the noise)",                                 \
+      .def = 4, .min = 1, .max = SSG_SSILVB_MAX_SLICES)                                    \
+    P(INT, steps, "depth samples on each side of a slice", .def = 12, .min = 1,            \
+      .max = SSG_SSILVB_MAX_STEPS)                                                         \
+    P(FLOAT, radius,                                                                       \
+      "R: samples farther than this from the pixel neither occlude nor send light",        \
+      .def = 2, .min = 1e-6, .max = 1e6, .unit = "scene units")                            \
+    P(FLOAT, thickness,                                                                    \
+      "depth of every occluder behind its front surface, where `back` is unconnected or "  \
+      "not behind it",                                                                     \
+      .def = 0.5, .min = 0, .max = 1e6, .unit = "scene units")                             \
+    P(FLOAT, power,                                                                        \
+      "ao = visibility^power (screen space misses what lies beyond the radius or off "     \
+      "screen; 2.5 measured against reference_gi)",                                        \
+      .def = 2.5, .min = 0.1, .max = 8)                                                    \
+    P(FLOAT, strength,                                                                     \
+      "scale of the bounce (1.2 measured against reference_gi: senders off screen or "     \
+      "beyond the radius are missing)",                                                    \
+      .def = 1.2, .min = 0, .max = 16)                                                     \
+    P(FLOAT, max_screen_radius,                                                            \
+      "caps the projected radius f R / (depth - R) of the march; 0 = no cap", .def = 0,    \
+      .min = 0, .max = 16384, .unit = "px")
+SSG_PARAMS_STRUCT(ssg_ssilvb_params, SSG_SSILVB_PARAMS);
 
 struct ssg_ssilvb_consts {
     struct ssg_ssilvb_params p;   /* the parameters as given */
     struct ssg_projection proj;   /* the frame's camera at the G-buffer's resolution */
+    float invf;                   /* 1 / proj.f */
     float noise_off[4];           /* seed-derived pixel offsets of the two noise patterns
                                      (rotation x, y; jitter x, y), whole numbers */
     float slice_cos[SSG_SSILVB_MAX_SLICES]; /* cos(pi k / slices) */
@@ -57,7 +83,7 @@ struct ssg_ssilvb_consts {
     float e1[2 * SSG_IMAGE_MAX_SIDE];
 };
 
-/* The descriptor (ssilvb.c); the GL side binds its parameter table. */
+/* The descriptor (ssilvb.c). */
 extern const struct ssg_node_desc ssg_node_ssilvb;
 
 enum ssg_err ssg_ssilvb_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

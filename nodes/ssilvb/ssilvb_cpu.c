@@ -1,4 +1,4 @@
-/* ssilvb_cpu.c - CPU kernel of the `ssilvb` node (method in ssilvb.c, the slice march in
+/* ssilvb_cpu.c - CPU kernel of the `ssilvb` node (method in README.md, the slice march in
  * gtao.c and gtao_cpu.c, whose layout this follows).
  *
  * Layout: a row is cut into chunks of CHUNK pixels held in structure-of-arrays scratch;
@@ -109,7 +109,7 @@ static inline __attribute__((always_inline)) uint32_t sector_bits(float u0, floa
 }
 
 /* The direction (hv, hd) = (H'.V, sg H'.D) of the slice (hd > 0) as the cumulative
-   cosine-weighted measure u in [0, 1] (ssilvb.c): C(theta) with theta = sg acos(c), then
+   cosine-weighted measure u in [0, 1] (README.md): C(theta) with theta = sg acos(c), then
    (C + g1) / A; past the hemisphere's edge (acos above lim) 1 on the +D side, 0 on -D. */
 static inline __attribute__((always_inline)) float
 sector_u(float hv, float hd, float sg, float cn, float sn, float g1, float ia, float lim)
@@ -132,7 +132,7 @@ static inline __attribute__((always_inline)) void
 setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
     const struct ssg_ssilvb_consts *c = j->c;
-    const float invf = 1.0f / c->proj.f, radius = c->p.radius, f = c->proj.f;
+    const float invf = c->invf, radius = c->p.radius, f = c->proj.f;
     const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
     const float av = -(yf + 0.5f - c->proj.cy) * invf;
     const float *no = c->noise_off;
@@ -173,7 +173,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
 }
 
 /* Slice direction phi = pi kd / slices + the pixel's turn: D, M = V x D, the normal's
-   angle n in the slice, the measures (ssilvb.c), the screen step and the sample
+   angle n in the slice, the measures (README.md), the screen step and the sample
    coefficients with gtao_cpu.c's tangent-plane correction folded in. */
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
@@ -279,7 +279,7 @@ step_both(const struct job *j, struct chunk *restrict k, int len, float y, float
     const float *restrict l0 = j->light[0], *restrict l1 = j->light[1];
     const float *restrict l2 = j->light[2];
     const float bmul = j->back_mul;
-    const struct consts_v cv = {1.0f / j->c->proj.f, j->c->p.radius * j->c->p.radius,
+    const struct consts_v cv = {j->c->invf, j->c->p.radius * j->c->p.radius,
                                 j->c->p.thickness};
     for (int i = 0; i < len; i++) {
         float t = sf + k->u[i];
