@@ -1,5 +1,5 @@
-/* atrous.h - the `atrous` node (atrous.c): the edge-avoiding a-trous wavelet filter, run by
- * the bilateral node's passes (nodes/bilateral/bilateral.h). */
+/* atrous.h - the `atrous` node (atrous.c; method in README.md here): the edge-avoiding
+ * a-trous wavelet filter, run by the bilateral node's passes (nodes/bilateral/bilateral.h). */
 #ifndef SSG_ATROUS_H
 #define SSG_ATROUS_H
 
@@ -8,11 +8,14 @@
 /* Passes at most: the footprint of n passes is 4 (2^n - 1) + 1 px wide (8: 1021 px). */
 enum { SSG_ATROUS_MAX_ITERATIONS = SSG_BILATERAL_MAX_PASSES };
 
-struct ssg_atrous_params {
-    int iterations;    /* passes, 1..8, tap spacing 1, 2, 4, ... px; default 3 */
-    float sigma_depth; /* depth difference as a fraction of the centre depth; default 0.05 */
-    int normal_power;  /* p of max(0, n.n')^p, 0..127, 0 = no normal term; default 16 */
-};
+/* The parameters, one row each (lang/params.h): the passes, then the edge-stopping rows
+   bilateral declares too. */
+#define SSG_ATROUS_PARAMS(P)                                                               \
+    P(INT, iterations,                                                                     \
+      "passes; pass i spaces its 5 x 5 taps 2^i px apart (3: 14 px each side)", .def = 3,  \
+      .min = 1, .max = SSG_ATROUS_MAX_ITERATIONS, .unit = "passes")                        \
+    SSG_BILATERAL_EDGE_PARAMS(P)
+SSG_PARAMS_STRUCT(ssg_atrous_params, SSG_ATROUS_PARAMS);
 
 extern const struct ssg_node_desc ssg_node_atrous;
 

@@ -1,4 +1,4 @@
-// bilateral.glsl - the `bilateral` node on GL (method in bilateral.c): one invocation per
+// bilateral.glsl - the `bilateral` node on GL (method in README.md): one invocation per
 // pixel sums the window's taps in the CPU kernel's order (dy, then dx, taps outside the
 // image skipped) with the same weights: spatial log-weight from prepare(), relative depth
 // term, normal term by squarings (power 2^m) or p ln(c), one exp. exp and ln are

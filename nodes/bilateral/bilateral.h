@@ -1,6 +1,6 @@
 /* bilateral.h - parameters and prepared constants of the `bilateral` node, shared by
  * bilateral.c (descriptor, check, prepare), bilateral_cpu.c (the CPU kernel) and
- * bilateral_gl.c (the GL side). Method in bilateral.c. */
+ * bilateral_gl.c (the GL side), and by the `atrous` node. Method: README.md here. */
 #ifndef SSG_BILATERAL_H
 #define SSG_BILATERAL_H
 
@@ -8,39 +8,44 @@
 
 #define SSG_BILATERAL_MAX_SIZE 63
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_bilateral_input {
-    SSG_BILATERAL_IN_IN,
-    SSG_BILATERAL_IN_DEPTH,
-    SSG_BILATERAL_IN_NORMAL,
-    SSG_BILATERAL_IN_IN2,
-    SSG_BILATERAL_INPUTS
-};
-enum ssg_bilateral_output {
-    SSG_BILATERAL_OUT_OUT,
-    SSG_BILATERAL_OUT_OUT2,
-    SSG_BILATERAL_OUTPUTS
-};
-
-struct ssg_bilateral_params {
-    int size;            /* window diameter, px, odd, 1..63; default 9 */
-    float sigma_spatial; /* px; 0 = size / 3; default 0 */
-    float sigma_depth;   /* depth difference as a fraction of the centre depth; 0.05 */
-    int normal_power;    /* p of max(0, n.n')^p, 0..127, 0 = no normal term; default 16 */
-    int separable;       /* 1 = horizontal then vertical pass (approximation); default 0 */
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. The
+   `atrous` node has the same ports (its descriptor names these tables). */
+#define SSG_BILATERAL_IMAGE_TYPES (SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR)
+#define SSG_BILATERAL_IN(X)                                                                \
+    X(SSG_BILATERAL_IN_IN, "in", SSG_BILATERAL_IMAGE_TYPES, "image to smooth")             \
+    X(SSG_BILATERAL_IN_DEPTH, "depth", SSG_T_SCALAR, "linear depth; 0 = background")       \
+    X(SSG_BILATERAL_IN_NORMAL, "normal", SSG_T_VECTOR,                                     \
+      "unit view-space normal; none = no normal term", .optional = 1)                      \
+    X(SSG_BILATERAL_IN_IN2, "in2", SSG_BILATERAL_IMAGE_TYPES,                              \
+      "a second image the size of in, filtered with in's weights", .optional = 1)
+#define SSG_BILATERAL_OUT(X)                                                               \
+    X(SSG_BILATERAL_OUT_OUT, "out", SSG_T_SCALAR, "smoothed image", .same_as = "in")       \
+    X(SSG_BILATERAL_OUT_OUT2, "out2", SSG_T_SCALAR,                                        \
+      "in2 smoothed with out's weights (type of in2); all 0, shaped like out, when in2 "   \
+      "is unconnected", .same_as = "in2")
+SSG_PORT_ENUM(ssg_bilateral_input, SSG_BILATERAL_IN, SSG_BILATERAL_INPUTS);
+SSG_PORT_ENUM(ssg_bilateral_output, SSG_BILATERAL_OUT, SSG_BILATERAL_OUTPUTS);
 
 /* The edge-stopping parameters both joint filters of this folder declare (bilateral and
-   atrous): entries of a struct ssg_param_desc array for a params struct `params_type`
-   with float sigma_depth and int normal_power members. */
-#define SSG_BILATERAL_EDGE_PARAMS(params_type)                                           \
-    {.name = "sigma_depth", SSG_FIELD_FLOAT(params_type, sigma_depth), .def = 0.05,      \
-     .min = 1e-6, .max = 1000,                                                           \
-     .help = "depth sigma as a fraction of the centre pixel's depth"},                  \
-    {.name = "normal_power", SSG_FIELD_INT(params_type, normal_power), .def = 16,         \
-     .min = 0, .max = 127, .help = "normal weight max(0, n.n')^p; 0 = off"}
+   atrous), as parameter rows (lang/params.h). No shader reads a parameter: the GL side
+   binds prepare()'s constants. */
+#define SSG_BILATERAL_EDGE_PARAMS(P)                                                       \
+    P(FLOAT, sigma_depth, "depth sigma as a fraction of the centre pixel's depth",         \
+      .def = 0.05, .min = 1e-6, .max = 1000)                                               \
+    P(INT, normal_power, "normal weight max(0, n.n')^p; 0 = off", .def = 16, .min = 0,     \
+      .max = 127)
+
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range and
+   unit. */
+#define SSG_BILATERAL_PARAMS(P)                                                            \
+    P(INT, size, "window diameter, odd", .def = 9, .min = 1,                               \
+      .max = SSG_BILATERAL_MAX_SIZE, .unit = "px")                                         \
+    P(FLOAT, sigma_spatial, "spatial Gaussian sigma; 0 = size / 3", .def = 0, .min = 0,    \
+      .max = 1000, .unit = "px")                                                           \
+    SSG_BILATERAL_EDGE_PARAMS(P)                                                           \
+    P(BOOL, separable,                                                                     \
+      "horizontal then vertical pass: O(size) per pixel, an approximation", .def = 0)
+SSG_PARAMS_STRUCT(ssg_bilateral_params, SSG_BILATERAL_PARAMS);
 
 struct ssg_bilateral_consts {
     int radius;          /* (size - 1) / 2, px */
@@ -48,6 +53,8 @@ struct ssg_bilateral_consts {
     float depth_scale;   /* 1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2 */
     int normal_power;    /* as in the parameters */
     float normal_min;    /* normal cosines below this weigh c^p < 1e-30 and count as 0 */
+    int squarings;       /* c^p by that many squarings of c; -1 = p ln(c) in the exponent
+                            (ssg_joint_squarings) */
     int separable;       /* as in the parameters */
     int atrous;          /* > 0: that many 5 x 5 passes, 1, 2, 4, ... px apart (the
                             `atrous` node's consts); 0 = bilateral */

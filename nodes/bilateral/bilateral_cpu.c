@@ -1,4 +1,4 @@
-/* bilateral_cpu.c - CPU kernel of the `bilateral` node (method in bilateral.c).
+/* bilateral_cpu.c - CPU kernel of the `bilateral` node (method in README.md).
  *
  * The loops run over output pixels innermost: a row is cut into chunks, and for each tap
  * (dy, dx) of the window one loop walks the chunk, reading the neighbours at a fixed
@@ -138,7 +138,8 @@ taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels,
 static inline __attribute__((always_inline)) void
 taps_of(const struct job *j, struct chunk *k, int y, int x0, int len, int channels)
 {
-    int mode = ssg_normal_mode(j->nrm[0] != NULL, j->c->normal_power);
+    int mode = ssg_normal_mode(j->nrm[0] != NULL && j->c->normal_power > 0,
+                               j->c->squarings);
 #define TAPS(m) taps(j, k, y, x0, len, channels, m)
     SSG_NORMAL_MODE_SWITCH(mode, TAPS)
 #undef TAPS

@@ -1,13 +1,12 @@
-/* bilateral_gl.c - GL side of the `bilateral` node (method in bilateral.c, shader
+/* bilateral_gl.c - GL side of the `bilateral` node (method in README.md, shader
  * bilateral.glsl): the full 2D window in one pass, or separable=true as a row pass into a
  * scratch image and a column pass over it, or the `atrous` node's dilated passes through
  * two scratch images in turn, as bilateral_cpu.c does. The spatial
  * log-weights from prepare() go to a storage buffer; the normal term's variant (by
- * squarings or through ln) is picked the same way as on the CPU. */
+ * squarings or through ln) is prepare()'s, as on the CPU. */
 #include <stdio.h>
 
 #include "bilateral.h"
-#include "common/joint_weights.h"
 #include "gl/gl.h"
 
 static void one_pass(struct ssg_gl_pass *p, const struct ssg_image *src,
@@ -47,7 +46,7 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     ssg_gl_input(&p, "depth", io->in[SSG_BILATERAL_IN_DEPTH]);
     if (nrm && c->normal_power > 0) { /* NORMALS 1: the only variant that reads them */
         ssg_gl_input(&p, "normal", nrm);
-        ssg_gl_int(&p, "squarings", ssg_joint_squarings(c->normal_power));
+        ssg_gl_int(&p, "squarings", c->squarings);
         ssg_gl_float(&p, "normal_power", (float)c->normal_power);
         ssg_gl_float(&p, "normal_min", c->normal_min);
     }

@@ -10,8 +10,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "common/joint_weights.h"
-
 /* e^x for x <= 0, clamped at -80 (weights below 1.8e-35 are 0 for every purpose and stay
    normal floats). x = k ln2 + g with |g| <= ln2 / 2; e^g by its Taylor series to g^6
    (error below 1.3e-7 relative), 2^k by building the float's exponent bits. */
@@ -50,15 +48,16 @@ static inline float log_pos(float c)
 
 /* How the joint filters compute the normal weight c^p, picked once per run: 0..6 =
    p = 2^mode, by mode squarings of c (the default 16 is 4); SSG_NORMAL_GENERAL = any other
-   power, p ln(c) added to the log-weight; SSG_NORMAL_OFF = no normals or p = 0. */
+   power, p ln(c) added to the log-weight; SSG_NORMAL_OFF = no normal term (no normals, or
+   p = 0). `squarings` is prepare()'s (struct ssg_joint_weights), which the GL side reads
+   too. */
 enum ssg_normal_mode { SSG_NORMAL_OFF = -1, SSG_NORMAL_GENERAL = 7 };
 
-static inline int ssg_normal_mode(int have_normals, int power)
+static inline int ssg_normal_mode(int normal_term, int squarings)
 {
-    int m = ssg_joint_squarings(power);
-    if (!have_normals || power <= 0)
+    if (!normal_term)
         return SSG_NORMAL_OFF;
-    return m >= 0 ? m : SSG_NORMAL_GENERAL;
+    return squarings >= 0 ? squarings : SSG_NORMAL_GENERAL;
 }
 
 /* The normal term of one tap with clamped cosine c: the factor c^p by squarings, or 1

@@ -1,7 +1,8 @@
-/* joint_weights.h - what the two geometry-aware (joint bilateral) filters, `bilateral` and
- * `upsample`, derive alike from their parameters in prepare(): the window radius, the
- * spatial Gaussian as a log-weight per px^2, the depth term's scale and the smallest
- * normal cosine that still weighs more than 1e-30. */
+/* joint_weights.h - what the geometry-aware (joint bilateral) filters, `bilateral`,
+ * `atrous` and `upsample`, derive alike from their parameters in prepare(): the window
+ * radius, the spatial Gaussian as a log-weight per px^2, the depth term's scale, how the
+ * normal term's power is taken and the smallest normal cosine that still weighs more
+ * than 1e-30. Both backends read these from the consts; neither recomputes one. */
 #ifndef SSG_JOINT_WEIGHTS_H
 #define SSG_JOINT_WEIGHTS_H
 
@@ -12,6 +13,8 @@ struct ssg_joint_weights {
     float spatial_k;   /* -0.5 / sigma_spatial^2: ln of the spatial weight per px^2 */
     float depth_scale; /* 1 / sigma_depth */
     float normal_min;  /* cosines below this weigh c^normal_power < 1e-30: 0 */
+    int squarings;     /* ssg_joint_squarings(normal_power): c^p by that many squarings,
+                          -1 = p ln(c) in the exponent */
 };
 
 /* The squarings that make `power` (a power of two up to 64), else -1: c^p by that many
@@ -36,22 +39,18 @@ static inline double ssg_joint_tap_flops(int normals, int power)
     return 17.0 + (ssg_joint_squarings(power) >= 0 ? 6.0 : 14.0);
 }
 
-/* Fills w from the filter's parameters (sigma_spatial 0 = size / 3); 0 when they are out of
- * range (size odd in 1..max_size, sigma_depth > 0, sigma_spatial >= 0, normal_power
- * 0..127): prepare() may be reached without the table's checks (a hand-built run). */
-static inline int ssg_joint_weights_make(int size, int max_size, float sigma_spatial,
-                                         float sigma_depth, int normal_power,
-                                         struct ssg_joint_weights *w)
+/* Fills w from the filter's parameters (sigma_spatial 0 = size / 3), which the parameter
+ * tables hold in range (size 1..max, sigma_depth > 0, sigma_spatial >= 0, normal_power
+ * 0..127) and check() keeps odd. */
+static inline void ssg_joint_weights_make(int size, float sigma_spatial, float sigma_depth,
+                                          int normal_power, struct ssg_joint_weights *w)
 {
-    if (size < 1 || size > max_size || size % 2 == 0 || !(sigma_depth > 0) ||
-        !(sigma_spatial >= 0) || normal_power < 0 || normal_power > 127)
-        return 0;
     float sigma = sigma_spatial > 0 ? sigma_spatial : (float)size / 3.0f;
     w->radius = (size - 1) / 2;
     w->spatial_k = -0.5f / (sigma * sigma);
     w->depth_scale = 1.0f / sigma_depth;
     w->normal_min = normal_power > 0 ? (float)pow(1e-30, 1.0 / normal_power) : 0.0f;
-    return 1;
+    w->squarings = ssg_joint_squarings(normal_power);
 }
 
 #endif

@@ -1,8 +1,7 @@
 /* complexity.h - parameters and prepared constants of the `complexity` node, shared by
  * complexity.c (descriptor, check, prepare), complexity_cpu.c (the CPU pass) and
- * complexity_gl.c (the GL side). Method and the gradient-to-count mapping are described
- * in complexity.c. Read-only after
- * prepare(); the pass is thread-safe. */
+ * complexity_gl.c (the GL side). Method and the gradient-to-count mapping: README.md in
+ * this folder. Read-only after prepare(); the pass is thread-safe. */
 #ifndef SSG_COMPLEXITY_H
 #define SSG_COMPLEXITY_H
 
@@ -11,36 +10,57 @@
 #define SSG_COMPLEXITY_MAX_SCALE 8       /* largest base cell side, px */
 #define SSG_COMPLEXITY_MAX_RESOLUTIONS 4 /* scales combined: scale, 2 scale, 4, 8 scale */
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_complexity_input {
-    SSG_COMPLEXITY_IN_DEPTH,
-    SSG_COMPLEXITY_IN_NORMAL,
-    SSG_COMPLEXITY_INPUTS
-};
-enum ssg_complexity_output {
-    SSG_COMPLEXITY_OUT_COUNT,
-    SSG_COMPLEXITY_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc. */
+#define SSG_COMPLEXITY_IN(X)                                                               \
+    X(SSG_COMPLEXITY_IN_DEPTH, "depth", SSG_T_SCALAR, "linear depth (0 = background)")     \
+    X(SSG_COMPLEXITY_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal")
+#define SSG_COMPLEXITY_OUT(X)                                                              \
+    X(SSG_COMPLEXITY_OUT_COUNT, "count", SSG_T_SCALAR,                                     \
+      "per-pixel sample count, one of levels (for ssao/hbao/ssdo.count)")
+SSG_PORT_ENUM(ssg_complexity_input, SSG_COMPLEXITY_IN, SSG_COMPLEXITY_INPUTS);
+SSG_PORT_ENUM(ssg_complexity_output, SSG_COMPLEXITY_OUT, SSG_COMPLEXITY_OUTPUTS);
 
-struct ssg_complexity_params {
-    struct ssg_ints levels;  /* sample counts, ascending, multiples of period; default
-                                [20, 30, 40, 50] */
-    int period;              /* Halton block size N_g (eq. 8), samples; default 10 */
-    int scale;               /* cell side of the finest grid, px: 1, 2, 4 or 8; default 4 */
-    int resolutions;         /* grids combined (scale, 2 scale, ...), 1..4; default 1 */
-    float normal_threshold;  /* normal gradient below which a cell is flat; default 0.1 */
-    float normal_gain;       /* t_n = clamp((g_n - threshold) gain, 0, 1); default 2 */
-    float depth_threshold;   /* relative depth gradient below which a cell is flat;
-                                default 0.02 */
-    float depth_gain;        /* t_d = clamp((g_d - threshold) gain, 0, 1); default 10 */
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range and
+   unit. complexity_weight.glsl reads the thresholds and gains as p_<field> (#pragma
+   ssg_params); the grids come from prepare() (host_only rows); levels is bound by hand. */
+#define SSG_COMPLEXITY_PARAMS(P)                                                           \
+    P(INTS, levels,                                                                        \
+      "sample counts, ascending, each a multiple of period (Szentandrasi table 1)",        \
+      .def_ints = {20, 30, 40, 50}, .def_ints_count = 4, .min_count = 1,                   \
+      .max_count = SSG_INTS_MAX, .min = 1, .max = 1024, .unit = "samples")                 \
+    P(INT, period, "Halton period N_g of the kernel (eq. 8): counts are whole periods",    \
+      .def = 10, .min = 1, .max = 1024, .unit = "samples", .host_only = 1) /* check() */   \
+    P(INT, scale, "cell side of the grid the gradients are taken on: 1, 2, 4 or 8",        \
+      .def = 4, .min = 1, .max = SSG_COMPLEXITY_MAX_SCALE, .unit = "px",                   \
+      .host_only = 1) /* prepare(): the grids */                                           \
+    P(INT, resolutions, "grids combined by max: cells of scale, 2 scale, ... px",          \
+      .def = 1, .min = 1, .max = SSG_COMPLEXITY_MAX_RESOLUTIONS,                           \
+      .host_only = 1) /* prepare(): the grids */                                           \
+    P(FLOAT, normal_threshold,                                                             \
+      "sum over neighbour cells of |n - n_nb| below which a cell is flat", .def = 0.1,     \
+      .min = 0, .max = 8)                                                                  \
+    P(FLOAT, normal_gain, "weight = (gradient - threshold) gain, clamped to [0, 1]",       \
+      .def = 2, .min = 0, .max = 1e6)                                                      \
+    P(FLOAT, depth_threshold,                                                              \
+      "sum of |n . (P_nb - P)| / depth (depth change off the tangent plane, relative) "    \
+      "below which a cell is flat",                                                        \
+      .def = 0.02, .min = 0, .max = 1e6)                                                   \
+    P(FLOAT, depth_gain, "weight = (gradient - threshold) gain, clamped to [0, 1]",        \
+      .def = 10, .min = 0, .max = 1e6)
+SSG_PARAMS_STRUCT(ssg_complexity_params, SSG_COMPLEXITY_PARAMS);
+
+/* One grid of cells, as prepare() lays it out for the inputs' size. */
+struct ssg_complexity_grid {
+    int side;   /* cell side, px: scale << r for grid r */
+    int gw, gh; /* cells across and down: ceil(width / side), ceil(height / side) */
 };
 
 struct ssg_complexity_consts {
     struct ssg_complexity_params p; /* the parameters as given */
     struct ssg_projection proj;     /* the frame's camera as the G-buffer's resolution
                                        sees it (ssg_sampling_projection) */
+    int grids;                      /* resolutions: grids combined */
+    struct ssg_complexity_grid grid[SSG_COMPLEXITY_MAX_RESOLUTIONS]; /* the first grids */
 };
 
 enum ssg_err ssg_complexity_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

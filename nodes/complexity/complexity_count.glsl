@@ -1,11 +1,11 @@
 // complexity_count.glsl - last pass of the `complexity` node's GL side (mapping in
-// complexity.c, C side complexity_gl.c): per pixel w = the max of its cell's weight over
-// the grids (grid r has cells of side scale << r, nearest, no filtering), then the count
+// README.md, C side complexity_gl.c): per pixel w = the max of its cell's weight over
+// the grids (grid r has cells of side side[r], nearest, no filtering), then the count
 // levels[min(L - 1, floor(w L))]; background pixels get the lowest level (w = 0).
 uniform sampler2DArray depth, normal;
 uniform sampler2DArray t0, t1, t2, t3; // weights of grids 0..3 (unused ones unbound)
-layout(r32f) uniform writeonly image2DArray dst;
-uniform int scale;      // cell side of grid 0, px
+layout(r32f) uniform writeonly image2DArray dst_count;
+uniform int side[4];    // cell side of each grid, px (prepare(): scale << r)
 uniform int grids;      // 1..4
 uniform int levels[8];  // SSG_INTS_MAX counts, ascending
 uniform int level_count;
@@ -20,7 +20,7 @@ bool is_surface(float d, vec3 n)
 // The larger of w and grid r's weight at pixel p; a NaN weight leaves w (as on the CPU).
 float max_cell(float w, sampler2DArray t, ivec2 p, int r)
 {
-    float v = texelFetch(t, ivec3(p / (scale << r), 0), 0).r;
+    float v = texelFetch(t, ivec3(p / side[r], 0), 0).r;
     return v > w ? v : w;
 }
 
@@ -40,5 +40,5 @@ void main()
             w = max_cell(w, t3, p, 3);
     }
     int level = min(int(w * float(level_count)), level_count - 1);
-    SSG_STORE1(dst, p, float(levels[level]));
+    SSG_STORE1(dst_count, p, float(levels[level]));
 }

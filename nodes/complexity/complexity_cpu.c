@@ -1,5 +1,5 @@
-/* complexity_cpu.c - CPU pass of the `complexity` node (method and mapping in
- * complexity.c; Szentandrasi section 4.3).
+/* complexity_cpu.c - CPU pass of the `complexity` node (method and mapping in README.md;
+ * Szentandrasi section 4.3).
  *
  * Three passes, each over fixed bands of rows (ssg_parallel_rows), so the result does not
  * depend on the thread count: per grid the cell means (sums in pixel order, in double so
@@ -85,7 +85,7 @@ static float clamp01(float v)
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
 }
 
-/* t of one non-empty cell (complexity.c): normal and relative depth gradients over the
+/* t of one non-empty cell (README.md): normal and relative depth gradients over the
    non-empty 4-neighbours, in the order left, right, up, down. */
 static float cell_weight(const struct ssg_complexity_params *p, const struct grid *g,
                          int gx, int gy)
@@ -146,15 +146,16 @@ static void pixel_rows(void *user, int y0, int y1)
         }
 }
 
-/* One allocation for every grid's planes (8 floats a cell); NULL when out of memory. */
+/* One allocation for every grid's planes (8 floats a cell), laid out as prepare() said;
+   NULL when out of memory. */
 static float *alloc_grids(struct job *j)
 {
     size_t total = 0;
     for (int r = 0; r < j->grids; r++) {
         struct grid *g = &j->g[r];
-        g->s = j->c->p.scale << r;
-        g->gw = (j->w + g->s - 1) / g->s;
-        g->gh = (j->h + g->s - 1) / g->s;
+        g->s = j->c->grid[r].side;
+        g->gw = j->c->grid[r].gw;
+        g->gh = j->c->grid[r].gh;
         total += (size_t)g->gw * (size_t)g->gh * 8;
     }
     float *mem = malloc(total * sizeof *mem), *at = mem;
@@ -179,7 +180,7 @@ enum ssg_err ssg_complexity_run_cpu(const struct ssg_node_ctx *ctx, const void *
     const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
     const struct ssg_image *nrm = io->in[SSG_COMPLEXITY_IN_NORMAL];
     struct job j = {.c = c, .depth = dep->data, .out = io->out[0]->data, .w = dep->width,
-                    .h = dep->height, .grids = c->p.resolutions};
+                    .h = dep->height, .grids = c->grids};
     for (int ch = 0; ch < 3; ch++)
         j.nrm[ch] = ssg_image_plane(nrm, ch);
     j.f = c->proj.f;

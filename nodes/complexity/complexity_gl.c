@@ -1,15 +1,15 @@
-/* complexity_gl.c - GL side of the `complexity` node (method and mapping in complexity.c,
- * CPU kernel complexity_cpu.c). The CPU's three steps as passes: per grid the cell means
+/* complexity_gl.c - GL side of the `complexity` node (method and mapping in README.md, CPU
+ * kernel complexity_cpu.c). The CPU's three steps as passes: per grid the cell means
  * (complexity_means.glsl, into two scratch images) and the cell weights
- * (complexity_weight.glsl, one small scratch image per grid), then per pixel the max over
- * the grids and the level (complexity_count.glsl): 2 resolutions + 1 dispatches. The
- * projection of the inputs' size is worked out here as on the CPU. */
+ * (complexity_weight.glsl, one small scratch image per grid, the thresholds and gains
+ * bound from the table), then per pixel the max over the grids and the level
+ * (complexity_count.glsl): 2 resolutions + 1 dispatches. The grids' layout and the
+ * projection are prepare()'s, as on the CPU. */
 #include "complexity.h"
 #include "gl/gl.h"
 
 /* The scratch images of one grid: means (normal + depth, point) and weights. */
 struct grid {
-    int side, gw, gh;
     struct ssg_image *nd, *pt, *t;
 };
 
@@ -23,11 +23,11 @@ static void release_grid(struct grid *g)
 /* Means then weights of one grid; its mean images go back to the scratch pool after. */
 static enum ssg_err grid_passes(const struct ssg_node_ctx *ctx,
                                 const struct ssg_complexity_consts *c, const struct ssg_io *io,
-                                const struct ssg_projection *sp, struct grid *g)
+                                const struct ssg_complexity_grid *cells, struct grid *g)
 {
-    g->nd = ssg_gl_scratch(ctx, g->gw, g->gh, 4);
-    g->pt = g->nd ? ssg_gl_scratch(ctx, g->gw, g->gh, 3) : NULL;
-    g->t = g->pt ? ssg_gl_scratch(ctx, g->gw, g->gh, 1) : NULL;
+    g->nd = ssg_gl_scratch(ctx, cells->gw, cells->gh, 4);
+    g->pt = g->nd ? ssg_gl_scratch(ctx, cells->gw, cells->gh, 3) : NULL;
+    g->t = g->pt ? ssg_gl_scratch(ctx, cells->gw, cells->gh, 1) : NULL;
     if (!g->t)
         return SSG_E_NOMEM;
     struct ssg_gl_pass p;
@@ -36,20 +36,16 @@ static enum ssg_err grid_passes(const struct ssg_node_ctx *ctx,
     ssg_gl_input(&p, "normal", io->in[SSG_COMPLEXITY_IN_NORMAL]);
     ssg_gl_output(&p, "nd", g->nd);
     ssg_gl_output(&p, "pt", g->pt);
-    ssg_gl_int(&p, "side", g->side);
-    ssg_gl_projection(&p, "proj", sp);
-    ssg_gl_dispatch(&p, g->gw, g->gh);
+    ssg_gl_int(&p, "side", cells->side);
+    ssg_gl_projection(&p, "proj", &c->proj);
+    ssg_gl_dispatch(&p, cells->gw, cells->gh);
     enum ssg_err e = ssg_gl_pass_end(&p);
     if (e == SSG_OK) {
         ssg_gl_pass_begin(&p, ctx, "complexity_weight.glsl", NULL);
         ssg_gl_input(&p, "nd", g->nd);
         ssg_gl_input(&p, "pt", g->pt);
         ssg_gl_output(&p, "weight", g->t);
-        ssg_gl_float(&p, "normal_threshold", c->p.normal_threshold);
-        ssg_gl_float(&p, "normal_gain", c->p.normal_gain);
-        ssg_gl_float(&p, "depth_threshold", c->p.depth_threshold);
-        ssg_gl_float(&p, "depth_gain", c->p.depth_gain);
-        ssg_gl_dispatch(&p, g->gw, g->gh);
+        ssg_gl_dispatch(&p, cells->gw, cells->gh);
         e = ssg_gl_pass_end(&p);
     }
     ssg_gl_scratch_release(&g->nd);
@@ -62,16 +58,17 @@ static enum ssg_err count_pass(const struct ssg_node_ctx *ctx,
                                const struct grid *g)
 {
     static const char *const names[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {"t0", "t1", "t2", "t3"};
+    int sides[SSG_COMPLEXITY_MAX_RESOLUTIONS];
     struct ssg_image *out = io->out[0];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "complexity_count.glsl", NULL);
-    ssg_gl_input(&p, "depth", io->in[SSG_COMPLEXITY_IN_DEPTH]);
-    ssg_gl_input(&p, "normal", io->in[SSG_COMPLEXITY_IN_NORMAL]);
-    for (int r = 0; r < SSG_COMPLEXITY_MAX_RESOLUTIONS; r++)
-        ssg_gl_input(&p, names[r], r < c->p.resolutions ? g[r].t : NULL);
-    ssg_gl_output(&p, "dst", out);
-    ssg_gl_int(&p, "scale", c->p.scale);
-    ssg_gl_int(&p, "grids", c->p.resolutions);
+    ssg_gl_ports(&p, io);
+    for (int r = 0; r < SSG_COMPLEXITY_MAX_RESOLUTIONS; r++) {
+        ssg_gl_input(&p, names[r], r < c->grids ? g[r].t : NULL);
+        sides[r] = r < c->grids ? c->grid[r].side : 1;
+    }
+    ssg_gl_ints(&p, "side", SSG_COMPLEXITY_MAX_RESOLUTIONS, sides);
+    ssg_gl_int(&p, "grids", c->grids);
     ssg_gl_ints(&p, "levels", c->p.levels.count, c->p.levels.v);
     ssg_gl_int(&p, "level_count", c->p.levels.count);
     ssg_gl_dispatch(&p, out->width, out->height);
@@ -82,19 +79,13 @@ enum ssg_err ssg_complexity_run_gl(const struct ssg_node_ctx *ctx, const void *c
                                    const struct ssg_io *io)
 {
     const struct ssg_complexity_consts *c = consts;
-    const struct ssg_image *dep = io->in[SSG_COMPLEXITY_IN_DEPTH];
-    const struct ssg_projection sp = c->proj;
     struct grid g[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {{0}};
     enum ssg_err e = SSG_OK;
-    for (int r = 0; e == SSG_OK && r < c->p.resolutions; r++) {
-        g[r].side = c->p.scale << r;
-        g[r].gw = (dep->width + g[r].side - 1) / g[r].side;
-        g[r].gh = (dep->height + g[r].side - 1) / g[r].side;
-        e = grid_passes(ctx, c, io, &sp, &g[r]);
-    }
+    for (int r = 0; e == SSG_OK && r < c->grids; r++)
+        e = grid_passes(ctx, c, io, &c->grid[r], &g[r]);
     if (e == SSG_OK)
         e = count_pass(ctx, c, io, g);
-    for (int r = 0; r < c->p.resolutions; r++)
+    for (int r = 0; r < c->grids; r++)
         release_grid(&g[r]);
     return e;
 }

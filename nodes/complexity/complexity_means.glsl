@@ -1,5 +1,5 @@
 // complexity_means.glsl - first pass of the `complexity` node's GL side (mapping in
-// complexity.c, C side complexity_gl.c): one invocation per cell of side `side` px, the
+// README.md, C side complexity_gl.c): one invocation per cell of side `side` px, the
 // means of its surface pixels' normal, depth and view-space point. Sums run in double and
 // in pixel order with the CPU kernel's expressions (complexity_cpu.c, cell_means), so the
 // means, rounded to float, are the CPU's: this is what keeps a plane's mean point on the

@@ -1,12 +1,13 @@
 // complexity_weight.glsl - second pass of the `complexity` node's GL side (mapping in
-// complexity.c, C side complexity_gl.c): one invocation per cell, its weight t from the
+// README.md, C side complexity_gl.c): one invocation per cell, its weight t from the
 // normal and relative depth gradients over its non-empty 4-neighbours, in the CPU's order
 // (left, right, up, down) and with its float expressions (complexity_cpu.c, cell_weight);
 // `precise` keeps multiply-adds unfused as on the CPU. 0 for an empty cell.
 uniform sampler2DArray nd; // mean normal x, y, z and mean depth (0 = empty cell)
 uniform sampler2DArray pt; // mean view-space point
 layout(r32f) uniform writeonly image2DArray weight;
-uniform float normal_threshold, normal_gain, depth_threshold, depth_gain;
+// p_normal_threshold, p_normal_gain, p_depth_threshold, p_depth_gain from the table:
+#pragma ssg_params
 
 vec4 load4(sampler2DArray t, ivec2 p)
 {
@@ -40,8 +41,8 @@ float cell_weight(ivec2 g, vec4 c)
         gd += abs(off) * inv;
     }
     gd /= c.w;
-    precise float tn = clamp01((gn - normal_threshold) * normal_gain);
-    precise float td = clamp01((gd - depth_threshold) * depth_gain);
+    precise float tn = clamp01((gn - p_normal_threshold) * p_normal_gain);
+    precise float td = clamp01((gd - p_depth_threshold) * p_depth_gain);
     return tn > td ? tn : td;
 }
 

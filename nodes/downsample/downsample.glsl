@@ -1,16 +1,17 @@
-// downsample.glsl - the `downsample` node on GL (method in downsample.c): one invocation
+// downsample.glsl - the `downsample` node on GL (method in README.md): one invocation
 // per output pixel picks its block's representative (the pixel whose depth is closest to
 // the median of the block's surface depths, ties to the first in row-major order, the
 // first pixel when all is background) exactly as downsample_cpu.c does, then copies every
 // port from it; an unconnected port's output is 0.
-uniform sampler2DArray in_depth;
-uniform sampler2DArray in_position, in_normal, in_albedo, in_direct, in_environment;
-uniform bool in_position_bound, in_normal_bound, in_albedo_bound, in_direct_bound,
-    in_environment_bound;
-layout(r32f) uniform writeonly image2DArray out_depth;
-layout(r32f) uniform writeonly image2DArray out_position, out_normal, out_albedo, out_direct,
-    out_environment;
-uniform int factor; // block side: 2 or 4
+// Inputs by their port names, outputs as dst_<port> (ssg_gl_ports); p_factor, the block
+// side (2 or 4), from the parameter table.
+uniform sampler2DArray depth;
+uniform sampler2DArray position, normal, albedo, direct, environment;
+uniform bool position_bound, normal_bound, albedo_bound, direct_bound, environment_bound;
+layout(r32f) uniform writeonly image2DArray dst_depth;
+layout(r32f) uniform writeonly image2DArray dst_position, dst_normal, dst_albedo, dst_direct,
+    dst_environment;
+#pragma ssg_params
 
 const int MAX_BLOCK = 16;
 
@@ -29,12 +30,12 @@ float median(inout float v[MAX_BLOCK], int n)
 
 ivec2 representative(ivec2 b)
 {
-    ivec2 p0 = b * factor, p1 = min(p0 + factor, textureSize(in_depth, 0).xy);
+    ivec2 p0 = b * p_factor, p1 = min(p0 + p_factor, textureSize(depth, 0).xy);
     float v[MAX_BLOCK];
     int n = 0;
     for (int y = p0.y; y < p1.y; y++)
         for (int x = p0.x; x < p1.x; x++) {
-            float d = ssg_load1(in_depth, ivec2(x, y));
+            float d = ssg_load1(depth, ivec2(x, y));
             if (d > 0.0)
                 v[n++] = d;
         }
@@ -44,7 +45,7 @@ ivec2 representative(ivec2 b)
     float m = median(v, n), best_err = uintBitsToFloat(0x7f800000u); // +inf
     for (int y = p0.y; y < p1.y; y++)
         for (int x = p0.x; x < p1.x; x++) {
-            float d = ssg_load1(in_depth, ivec2(x, y)), err = abs(d - m);
+            float d = ssg_load1(depth, ivec2(x, y)), err = abs(d - m);
             if (d > 0.0 && err < best_err) { // strict: ties keep the first
                 best_err = err;
                 best = ivec2(x, y);
@@ -54,7 +55,7 @@ ivec2 representative(ivec2 b)
 }
 
 #define COPY3(port, q, p) \
-    SSG_STORE3(out_##port, p, in_##port##_bound ? ssg_load3(in_##port, q) : vec3(0.0))
+    SSG_STORE3(dst_##port, p, port##_bound ? ssg_load3(port, q) : vec3(0.0))
 
 void main()
 {
@@ -62,7 +63,7 @@ void main()
     if (ssg_outside(p))
         return;
     ivec2 q = representative(p);
-    SSG_STORE1(out_depth, p, ssg_load1(in_depth, q));
+    SSG_STORE1(dst_depth, p, ssg_load1(depth, q));
     COPY3(position, q, p);
     COPY3(normal, q, p);
     COPY3(albedo, q, p);

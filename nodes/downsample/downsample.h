@@ -1,40 +1,49 @@
 /* downsample.h - parameters and ports of the `downsample` node, shared by downsample.c
  * (descriptor, check), downsample_cpu.c (the CPU kernel) and downsample_gl.c (the GL
- * side). Method in downsample.c. */
+ * side). Method: README.md in this folder. */
 #ifndef SSG_DOWNSAMPLE_H
 #define SSG_DOWNSAMPLE_H
 
 #include "graph/node.h"
 
-/* Ports, in order; output k copies input k. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_downsample_input {
-    SSG_DOWNSAMPLE_IN_DEPTH,
-    SSG_DOWNSAMPLE_IN_POSITION,
-    SSG_DOWNSAMPLE_IN_NORMAL,
-    SSG_DOWNSAMPLE_IN_ALBEDO,
-    SSG_DOWNSAMPLE_IN_DIRECT,
-    SSG_DOWNSAMPLE_IN_ENVIRONMENT,
-    SSG_DOWNSAMPLE_INPUTS
-};
-enum ssg_downsample_output {
-    SSG_DOWNSAMPLE_OUT_DEPTH,
-    SSG_DOWNSAMPLE_OUT_POSITION,
-    SSG_DOWNSAMPLE_OUT_NORMAL,
-    SSG_DOWNSAMPLE_OUT_ALBEDO,
-    SSG_DOWNSAMPLE_OUT_DIRECT,
-    SSG_DOWNSAMPLE_OUT_ENVIRONMENT,
-    SSG_DOWNSAMPLE_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. Output k
+   copies input k; inputs and outputs share their names (the shader's `<port>` and
+   `dst_<port>`, ssg_gl_ports). */
+#define SSG_DOWNSAMPLE_IN(X)                                                               \
+    X(SSG_DOWNSAMPLE_IN_DEPTH, "depth", SSG_T_SCALAR, "linear depth; 0 = background")      \
+    X(SSG_DOWNSAMPLE_IN_POSITION, "position", SSG_T_VECTOR, "view-space position",         \
+      .optional = 1)                                                                       \
+    X(SSG_DOWNSAMPLE_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal",          \
+      .optional = 1)                                                                       \
+    X(SSG_DOWNSAMPLE_IN_ALBEDO, "albedo", SSG_T_COLOR, "albedo", .optional = 1)            \
+    X(SSG_DOWNSAMPLE_IN_DIRECT, "direct", SSG_T_COLOR, "direct light", .optional = 1)      \
+    X(SSG_DOWNSAMPLE_IN_ENVIRONMENT, "environment", SSG_T_COLOR, "environment light",      \
+      .optional = 1)
+#define SSG_DOWNSAMPLE_OUT(X)                                                              \
+    X(SSG_DOWNSAMPLE_OUT_DEPTH, "depth", SSG_T_SCALAR, "depth of each block's chosen pixel") \
+    X(SSG_DOWNSAMPLE_OUT_POSITION, "position", SSG_T_VECTOR,                               \
+      "position of the chosen pixel; 0 when unconnected")                                  \
+    X(SSG_DOWNSAMPLE_OUT_NORMAL, "normal", SSG_T_VECTOR,                                   \
+      "normal of the chosen pixel; 0 when unconnected")                                    \
+    X(SSG_DOWNSAMPLE_OUT_ALBEDO, "albedo", SSG_T_COLOR,                                    \
+      "albedo of the chosen pixel; 0 when unconnected")                                    \
+    X(SSG_DOWNSAMPLE_OUT_DIRECT, "direct", SSG_T_COLOR,                                    \
+      "direct light of the chosen pixel; 0 when unconnected")                              \
+    X(SSG_DOWNSAMPLE_OUT_ENVIRONMENT, "environment", SSG_T_COLOR,                          \
+      "environment light of the chosen pixel; 0 when unconnected")
+SSG_PORT_ENUM(ssg_downsample_input, SSG_DOWNSAMPLE_IN, SSG_DOWNSAMPLE_INPUTS);
+SSG_PORT_ENUM(ssg_downsample_output, SSG_DOWNSAMPLE_OUT, SSG_DOWNSAMPLE_OUTPUTS);
 _Static_assert((int)SSG_DOWNSAMPLE_INPUTS == (int)SSG_DOWNSAMPLE_OUTPUTS,
                "downsample: output k is input k subsampled");
 
 #define SSG_DOWNSAMPLE_MAX_FACTOR 4
 
-struct ssg_downsample_params {
-    int factor; /* block side, px: 2 or 4; default 2 */
-};
+/* The parameter, one row (lang/params.h); the shader reads it as p_factor. */
+#define SSG_DOWNSAMPLE_PARAMS(P)                                                           \
+    P(INT, factor, "block side: 2 (half resolution) or 4", .def = 2, .min = 2,             \
+      .max = SSG_DOWNSAMPLE_MAX_FACTOR, .unit = "px")
+SSG_PARAMS_STRUCT(ssg_downsample_params, SSG_DOWNSAMPLE_PARAMS);
+
 enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                     const struct ssg_io *io);
 /* The GL side (downsample_gl.c, shader downsample*.glsl). */

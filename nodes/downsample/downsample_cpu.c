@@ -1,4 +1,4 @@
-/* downsample_cpu.c - CPU kernel of the `downsample` node (method in downsample.c).
+/* downsample_cpu.c - CPU kernel of the `downsample` node (method in README.md).
  *
  * Each band of output rows first picks the representative pixel of each block of its rows
  * (a tiny sort of at most 16 depths), then copies every connected plane from those pixels

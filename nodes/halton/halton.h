@@ -2,23 +2,22 @@
  * it is built on, shared by halton.c (descriptor, check, prepare), halton_cpu.c and
  * halton_gl.c (the copies into the outputs) and tests/test_halton.c.
  *
- * Method: Szentandrasi, "Modern Methods of Realistic Lighting in Real Time", section 4.2:
- * the Halton sequence (eq. 5-7) and its period property (eq. 8). Everything here is pure
- * and thread-safe. */
+ * Method (the Halton sequence, eq. 5-7, and its period property, eq. 8): README.md in
+ * this folder. Everything here is pure and thread-safe. */
 #ifndef SSG_HALTON_H
 #define SSG_HALTON_H
 
 #include <stdint.h>
 
-#include "lang/params.h"
+#include "graph/node.h"
 
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_halton_output {
-    SSG_HALTON_OUT_SAMPLES,
-    SSG_HALTON_OUT_ROTATION,
-    SSG_HALTON_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc. */
+#define SSG_HALTON_OUT(X)                                                                  \
+    X(SSG_HALTON_OUT_SAMPLES, "samples", SSG_T_KERNEL,                                     \
+      "count x 1 tangent-space offsets in the unit hemisphere around +z")                  \
+    X(SSG_HALTON_OUT_ROTATION, "rotation", SSG_T_PATTERN,                                  \
+      "n x n tile of (cos, sin) of a rotation about the normal")
+SSG_PORT_ENUM(ssg_halton_output, SSG_HALTON_OUT, SSG_HALTON_OUTPUTS);
 
 #define SSG_HALTON_MAX_COUNT 1024  /* most kernel samples */
 #define SSG_HALTON_MAX_PATTERN 64  /* largest rotation tile side */
@@ -35,20 +34,33 @@ enum ssg_halton_rotations {
     SSG_HALTON_BLUE_NOISE,  /* n*n angles on a void-and-cluster rank map (Ulichney 1993) */
 };
 
-/* Parameters as the graph file sets them (see the table in halton.c). */
-struct ssg_halton_params {
-    int count;             /* kernel samples, 1..1024; default 16 */
-    struct ssg_ints bases; /* 2 or 3 distinct primes: direction bases, then an optional
-                              radius base; default [2, 3] */
-    int offset;            /* first sequence index, >= 0; default 1 (index 0 is the point
-                              (0, 0, 0) in every base) */
-    int period;            /* eq. 8 period N_g in samples, 0 = off; default 0 */
-    int mapping;           /* enum ssg_halton_mapping; default cosine */
-    float falloff;         /* exponent of the length curve, > 0; default 2 */
-    float min_scale;       /* shortest sample length, fraction of the radius; default 0.1 */
-    int pattern;           /* rotation tile side n in pixels, 1..64; default 4 */
-    int rotations;         /* enum ssg_halton_rotations: the tile's layout; default tile */
-};
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range,
+   unit and choices. No shader reads them: prepare() makes the kernel and the tile. */
+#define SSG_HALTON_PARAMS(P)                                                               \
+    P(INT, count, "kernel samples", .def = 16, .min = 1, .max = SSG_HALTON_MAX_COUNT,      \
+      .unit = "samples")                                                                   \
+    P(INTS, bases, "distinct primes: elevation, azimuth, optional length (eq. 7)",         \
+      .def_ints = {2, 3}, .def_ints_count = 2, .min_count = 2, .max_count = 3, .min = 2,   \
+      .max = 997)                                                                          \
+    P(INT, offset, "first sequence index (0 is the point 0,0,0)", .def = 1, .min = 0,      \
+      .max = 1000000000)                                                                   \
+    P(INT, period,                                                                         \
+      "eq. 8 period N_g: blocks of N_g samples alike, prefixes quasi-uniform; 0 = off",    \
+      .def = 0, .min = 0, .max = SSG_HALTON_MAX_COUNT, .unit = "samples")                  \
+    P(ENUM, mapping, "direction density over the hemisphere", .def = SSG_HALTON_COSINE,    \
+      .choices = ssg_halton_mapping_choices)                                               \
+    P(FLOAT, falloff,                                                                      \
+      "length = lerp(min_scale, 1, t^falloff): > 1 packs samples near the centre",         \
+      .def = 2, .min = 0.01, .max = 16)                                                    \
+    P(FLOAT, min_scale, "shortest sample length as a fraction of the radius", .def = 0.1,  \
+      .min = 0, .max = 1)                                                                  \
+    P(INT, pattern, "side of the tiled rotation pattern", .def = 4, .min = 1,              \
+      .max = SSG_HALTON_MAX_PATTERN, .unit = "px")                                         \
+    P(ENUM, rotations,                                                                     \
+      "tile layout: tile = n*n angles, white; interleaved = n angles, every row and "      \
+      "column holds each once; blue_noise = n*n angles, void-and-cluster (n = 64)",        \
+      .def = SSG_HALTON_TILE, .choices = ssg_halton_rotations_choices)
+SSG_PARAMS_STRUCT(ssg_halton_params, SSG_HALTON_PARAMS);
 
 /* What prepare() computes and both backends read: images in the planar layout of
  * ssgraph.h, ready to be copied into the outputs. */
@@ -65,7 +77,7 @@ double ssg_halton_radical_inverse(uint64_t i, int base);
 
 /* The unit-cube point behind kernel sample `sample` (0-based): u[0], u[1] drive the
  * direction (eq. 7 with the first two bases at index offset + sample), u[2] the length
- * (third base, else the stratified value described in halton.c). */
+ * (third base, else the stratified value described in README.md). */
 void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3]);
 
 /* Largest k with base^k dividing period (0 when period <= 0): the number of leading
@@ -82,8 +94,6 @@ int ssg_halton_make_pattern(int kind, int n, uint64_t seed, float *pattern);
 int ssg_halton_blue_noise_ranks(int n, uint64_t seed, int *rank);
 
 /* The CPU backend (halton_cpu.c): copies the prepared kernel and tile into the outputs. */
-struct ssg_node_ctx;
-struct ssg_io;
 enum ssg_err ssg_halton_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io);
 /* The GL backend (halton_gl.c, ssg_gl_fill): the same copy on the GPU. */

@@ -1,6 +1,6 @@
-/* halton_cpu.c - CPU backend of the `halton` node: the kernel and the rotation tile were
- * computed by prepare() (halton.c); running is copying those bytes into the two outputs,
- * so every backend sees exactly the same samples. */
+/* halton_cpu.c - CPU backend of the `halton` node (method in README.md): the kernel and
+ * the rotation tile were computed by prepare() (halton.c); running is copying those bytes
+ * into the two outputs, so every backend sees exactly the same samples. */
 #include <string.h>
 
 #include "halton.h"

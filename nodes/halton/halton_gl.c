@@ -1,4 +1,4 @@
-/* halton_gl.c - GL side of the `halton` node (method in halton.c): prepare() already made
+/* halton_gl.c - GL side of the `halton` node (method in README.md): prepare() already made
  * the kernel and the rotation tile on the CPU, as for the CPU backend, so running is
  * copying those bytes into the two outputs (ssg_gl_fill). No Halton maths runs in GLSL:
  * both backends hold the very same floats. */

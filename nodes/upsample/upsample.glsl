@@ -1,4 +1,4 @@
-// upsample.glsl - the `upsample` node on GL (method in upsample.c): one invocation per
+// upsample.glsl - the `upsample` node on GL (method in README.md): one invocation per
 // full-res pixel sums the size x size low-res taps around the one containing it in the
 // CPU kernel's order (dy, then dx), relative to the centre tap's value, with the same
 // log-weights (spatial on the low-res grid, relative depth, p ln(n.N)) and one exp; when

@@ -1,6 +1,6 @@
 /* upsample.h - parameters and prepared constants of the `upsample` node, shared by
  * upsample.c (descriptor, check, prepare), upsample_cpu.c (the CPU kernel) and
- * upsample_gl.c (the GL side). Method in upsample.c. */
+ * upsample_gl.c (the GL side). Method: README.md in this folder. */
 #ifndef SSG_UPSAMPLE_H
 #define SSG_UPSAMPLE_H
 
@@ -9,30 +9,40 @@
 #define SSG_UPSAMPLE_MAX_SIZE 9
 #define SSG_UPSAMPLE_MAX_FACTOR 16
 
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_upsample_input {
-    SSG_UPSAMPLE_IN_IN,
-    SSG_UPSAMPLE_IN_DEPTH,
-    SSG_UPSAMPLE_IN_NORMAL,
-    SSG_UPSAMPLE_IN_LOW_DEPTH,
-    SSG_UPSAMPLE_IN_LOW_NORMAL,
-    SSG_UPSAMPLE_IN_IN2,
-    SSG_UPSAMPLE_INPUTS
-};
-enum ssg_upsample_output {
-    SSG_UPSAMPLE_OUT_OUT,
-    SSG_UPSAMPLE_OUT_OUT2,
-    SSG_UPSAMPLE_OUTPUTS
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+#define SSG_UPSAMPLE_IN(X)                                                                 \
+    X(SSG_UPSAMPLE_IN_IN, "in", SSG_T_SCALAR | SSG_T_COLOR, "low-resolution image")        \
+    X(SSG_UPSAMPLE_IN_DEPTH, "depth", SSG_T_SCALAR,                                        \
+      "full-resolution depth; 0 = background")                                             \
+    X(SSG_UPSAMPLE_IN_NORMAL, "normal", SSG_T_VECTOR,                                      \
+      "full-resolution unit normal; with low_normal, or neither", .optional = 1)           \
+    X(SSG_UPSAMPLE_IN_LOW_DEPTH, "low_depth", SSG_T_SCALAR,                                \
+      "the depth `in` was computed on (its size)")                                         \
+    X(SSG_UPSAMPLE_IN_LOW_NORMAL, "low_normal", SSG_T_VECTOR,                              \
+      "the normal `in` was computed on; none = no normal term", .optional = 1)             \
+    X(SSG_UPSAMPLE_IN_IN2, "in2", SSG_T_SCALAR | SSG_T_COLOR,                              \
+      "second low-res image (size of in), upsampled with the same weights", .optional = 1)
+#define SSG_UPSAMPLE_OUT(X)                                                                \
+    X(SSG_UPSAMPLE_OUT_OUT, "out", SSG_T_SCALAR,                                           \
+      "full-resolution image (size of depth); background 0", .same_as = "in")              \
+    X(SSG_UPSAMPLE_OUT_OUT2, "out2", SSG_T_SCALAR,                                         \
+      "in2 upsampled with out's weights (type of in2); all 0, shaped like out, when in2 "  \
+      "is unconnected", .same_as = "in2")
+SSG_PORT_ENUM(ssg_upsample_input, SSG_UPSAMPLE_IN, SSG_UPSAMPLE_INPUTS);
+SSG_PORT_ENUM(ssg_upsample_output, SSG_UPSAMPLE_OUT, SSG_UPSAMPLE_OUTPUTS);
 
-struct ssg_upsample_params {
-    int size;            /* low-res taps per side, odd, 1..9; default 3 */
-    float sigma_spatial; /* low-res px; 0 = size / 3; default 0 */
-    float sigma_depth;   /* depth difference as a fraction of the full-res depth; 0.05 */
-    int normal_power;    /* p of max(0, n.n')^p, 0..127, 0 = no normal term; default 16 */
-};
+/* The parameters, one row each (lang/params.h): kind, field, doc, then default, range and
+   unit. No shader reads a parameter: the GL side binds prepare()'s constants. */
+#define SSG_UPSAMPLE_PARAMS(P)                                                             \
+    P(INT, size, "taps per side around the low-res pixel, odd", .def = 3, .min = 1,        \
+      .max = SSG_UPSAMPLE_MAX_SIZE, .unit = "low-res px")                                  \
+    P(FLOAT, sigma_spatial, "spatial Gaussian sigma; 0 = size / 3", .def = 0, .min = 0,    \
+      .max = 1000, .unit = "low-res px")                                                   \
+    P(FLOAT, sigma_depth, "depth sigma as a fraction of the full-res pixel's depth",       \
+      .def = 0.05, .min = 1e-6, .max = 1000)                                               \
+    P(INT, normal_power, "normal weight max(0, n.N)^p; 0 = off", .def = 16, .min = 0,      \
+      .max = 127)
+SSG_PARAMS_STRUCT(ssg_upsample_params, SSG_UPSAMPLE_PARAMS);
 
 struct ssg_upsample_consts {
     int radius;          /* (size - 1) / 2, low-res px */
@@ -40,6 +50,8 @@ struct ssg_upsample_consts {
     float depth_scale;   /* 1 / sigma_depth */
     float normal_power;  /* as in the parameters */
     float normal_min;    /* cosines below this weigh c^p < 1e-30 and count as 0 */
+    int squarings;       /* c^p by that many squarings of c; -1 = p ln(c) in the exponent
+                            (ssg_joint_squarings) */
     int factor;          /* k: in is depth subsampled by k (ssg_upsample_factor) */
 };
 

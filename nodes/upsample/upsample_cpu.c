@@ -1,4 +1,4 @@
-/* upsample_cpu.c - CPU kernel of the `upsample` node (method in upsample.c).
+/* upsample_cpu.c - CPU kernel of the `upsample` node (method in README.md).
  *
  * As in bilateral_cpu.c the loops run over output pixels innermost: a full-res row is cut
  * into chunks, whose pixels are sorted by phase (x mod k, see struct chunk); for each
@@ -153,7 +153,8 @@ SSG_VECTOR_CLONES
 static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x0)
 {
     const int r = j->c->radius, ly = y / j->k;
-    const int mode = ssg_normal_mode(j->lnrm[0] != NULL, (int)j->c->normal_power);
+    const int mode = ssg_normal_mode(j->lnrm[0] != NULL && j->c->normal_power > 0.0f,
+                                     j->c->squarings);
     const float ks = j->c->spatial_k, v = ((float)y + 0.5f) / (float)j->k - 0.5f;
     for (int dy = -r; dy <= r; dy++) {
         int qy = ly + dy;

@@ -1,10 +1,10 @@
-/* upsample_gl.c - GL side of the `upsample` node (method in upsample.c, shader
+/* upsample_gl.c - GL side of the `upsample` node (method in README.md, shader
  * upsample.glsl): one pass over the full-res frame, in and the optional in2 upsampled
- * with the same weights, out2 written 0 when in2 is unconnected. */
+ * with the same weights, out2 written 0 when in2 is unconnected; every constant is
+ * prepare()'s, as on the CPU. */
 #include <stdio.h>
 
 #include "gl/gl.h"
-#include "common/joint_weights.h"
 #include "upsample.h"
 
 enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -33,7 +33,7 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
         ssg_gl_input(&p, "low_normal", lnrm);
         ssg_gl_float(&p, "normal_power", c->normal_power);
         ssg_gl_float(&p, "normal_min", c->normal_min);
-        ssg_gl_int(&p, "squarings", ssg_joint_squarings((int)c->normal_power));
+        ssg_gl_int(&p, "squarings", c->squarings);
     }
     ssg_gl_output(&p, "dst", io->out[0]);
     ssg_gl_output(&p, "dst2", io->out[1]);
