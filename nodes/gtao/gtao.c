@@ -87,51 +87,42 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    const struct ssg_shape *pos = &in[SSG_GTAO_IN_POSITION], *nrm = &in[SSG_GTAO_IN_NORMAL];
-    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
-        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
-        return SSG_E_SIZE;
-    }
-    enum ssg_err e = ssg_sampling_check_inputs(pos, NULL, &in[SSG_GTAO_IN_ROTATION],
-                                               &in[SSG_GTAO_IN_DEPTH], NULL, why, why_len);
+    const struct ssg_shape *pos = &in[SSG_GTAO_IN_POSITION], *back = &in[SSG_GTAO_IN_BACK];
+    enum ssg_err e = ssg_sampling_check_ao(pos, &in[SSG_GTAO_IN_NORMAL], NULL,
+                                           &in[SSG_GTAO_IN_ROTATION], &in[SSG_GTAO_IN_DEPTH],
+                                           NULL, out, why, why_len);
     if (e)
         return e;
-    const struct ssg_shape *back = &in[SSG_GTAO_IN_BACK];
     if (back->channels != 0 && (back->channels != 1 || !ssg_shape_same_size(back, pos))) {
         snprintf(why, why_len, "back must be a 1-channel image the size of position");
         return SSG_E_SIZE;
     }
-    const struct ssg_gtao_params *q = params;
-    if (back->channels != 0 && q && q->thickness > 0) {
+    if (back->channels != 0 && ((const struct ssg_gtao_params *)params)->thickness > 0) {
         snprintf(why, why_len, "thickness (a guess at how thick occluders are) and back "
                  "(how thick they are) answer one question: give one");
         return SSG_E_VALUE;
     }
-    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
-    out[SSG_GTAO_OUT_OUT] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     out[SSG_GTAO_OUT_BENT_NORMAL] =
         (struct ssg_shape){pos->width, pos->height, 3, SSG_T_VECTOR};
     return SSG_OK;
 }
 
+/* The consts with e1 for the G-buffer's columns. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    return sizeof(struct ssg_gtao_consts) + 2 * (size_t)in[SSG_GTAO_IN_POSITION].width *
+                                                sizeof(float);
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_gtao_consts *c = consts;
-    c->p = *(const struct ssg_gtao_params *)params;
     const struct ssg_gtao_params *q = &c->p;
-    /* prepare() may be reached without the table's range checks (a hand-built run). */
-    if (!(q->radius > 0) || q->slices < 1 || q->slices > SSG_GTAO_MAX_SLICES ||
-        q->steps < 1 || q->steps > SSG_GTAO_MAX_STEPS || !(q->falloff >= 0) ||
-        !(q->falloff <= 1) || !(q->thickness >= 0) || !(q->thickness < 1) ||
-        !(q->power > 0) || !(q->max_screen_radius >= 0))
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, 1..%d slices, 1..%d "
-                             "steps, falloff in [0, 1], thickness in [0, 1), power > 0",
-                             SSG_GTAO_MAX_SLICES, SSG_GTAO_MAX_STEPS);
+    c->p = *(const struct ssg_gtao_params *)params;
     const struct ssg_shape *pos = &ctx->in_shape[SSG_GTAO_IN_POSITION];
     enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    if (e)
-        return e;
     ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
+    c->invf = 1.0f / c->proj.f;
     /* XeGTAO's fade: w = 1 up to (1 - falloff) R, 0 at R: w = r mul + add. */
     float range = q->falloff * q->radius;
     c->fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
@@ -142,55 +133,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         c->slice_cos[k] = (float)cos(a);
         c->slice_sin[k] = (float)sin(a);
     }
-    return SSG_OK;
+    return e;
 }
 
-static const struct ssg_param_desc params[] = {
-    {.name = "slices", SSG_FIELD_INT(struct ssg_gtao_params, slices), .def = 8, .min = 1,
-     .max = SSG_GTAO_MAX_SLICES,
-     .help = "slice directions per pixel over the half circle about the view vector, "
-             "each marched both ways (turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_gtao_params, steps), .def = 12, .min = 1,
-     .max = SSG_GTAO_MAX_STEPS, .help = "depth samples on each side of a slice"},
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_gtao_params, radius), .def = 0.5,
-     .min = 1e-6, .max = 1e6, .unit = "scene units",
-     .help = "R: samples farther than this from the pixel are ignored"},
-    {.name = "falloff", SSG_FIELD_FLOAT(struct ssg_gtao_params, falloff), .def = 0, .min = 0,
-     .max = 1, .help = "fraction of R over which a sample's weight fades to 0 at R; "
-                       "0 = hard cutoff (reference_ao's distance limit)"},
-    {.name = "thickness", SSG_FIELD_FLOAT(struct ssg_gtao_params, thickness), .def = 0,
-     .min = 0, .max = 0.99,
-     .help = "thin-occluder heuristic: how far a sample below the horizon pulls it "
-             "down; 0 = depth samples are an infinitely thick height field"},
-    {.name = "power", SSG_FIELD_FLOAT(struct ssg_gtao_params, power), .def = 1, .min = 0.1,
-     .max = 8, .help = "out = visibility^power"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_gtao_params, max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
-};
+SSG_PARAMS_TABLE(params, ssg_gtao_params, SSG_GTAO_PARAMS);
 
-static const struct ssg_port_desc inputs[] = {
-    [SSG_GTAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position (its -z is the depth unless depth is given)"},
-    [SSG_GTAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal"},
-    [SSG_GTAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = fixed slices"},
-    [SSG_GTAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    [SSG_GTAO_IN_BACK] = {.name = "back", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "depth of the next surface behind each pixel's (gbuffer.back, +inf = none): "
-            "a sample occludes only between its depth and this; none = infinitely thick"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_GTAO_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_GTAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
-     .doc = "cosine-weighted visibility within radius, 1 = unoccluded"},
-    [SSG_GTAO_OUT_BENT_NORMAL] = {.name = "bent_normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space mean unoccluded direction; background 0"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_GTAO_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(inputs, SSG_GTAO_IN);
+SSG_PORT_TABLE(outputs, SSG_GTAO_OUT);
 
 /* Flops per pixel (node.h), by reading gtao_cpu.c: per slice about 70 (its frame and the
    arc integral's polynomials), per step of each side about 22, about 40 per pixel. */
@@ -233,7 +182,7 @@ const struct ssg_node_desc ssg_node_gtao = {
            "round differently).",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gtao_params),
-    .consts_size = sizeof(struct ssg_gtao_consts),
+    .consts_size_of = consts_size_of,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = gtao_flops,

@@ -119,7 +119,7 @@ static inline __attribute__((always_inline)) void
 setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
     const struct ssg_gtao_consts *c = j->c;
-    const float invf = 1.0f / c->proj.f, radius = c->p.radius, f = c->proj.f;
+    const float invf = c->invf, radius = c->p.radius, f = c->proj.f;
     const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
     const float av = -(yf + 0.5f - c->proj.cy) * invf;
     for (int i = 0; i < len; i++) {
@@ -162,7 +162,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
 {
-    const float invf = 1.0f / j->c->proj.f;
+    const float invf = j->c->invf;
     for (int i = 0; i < len; i++) {
         float cs = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
         float dx = cs * k->e1x[i] + s * k->e2[0][i], dy = s * k->e2[1][i];

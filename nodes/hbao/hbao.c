@@ -74,7 +74,6 @@
  * 8 directions give the bits of directions = 1, 2, 4, 8. Other counts use a prefix that is
  * as even as the order allows (3 of 8: 0, 180 and 90 degrees). Unconnected: all. */
 #include <math.h>
-#include <stdio.h>
 
 #include "common/sampling.h"
 #include "hbao.h"
@@ -125,97 +124,48 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    const struct ssg_shape *pos = &in[SSG_HBAO_IN_POSITION], *nrm = &in[SSG_HBAO_IN_NORMAL];
-    const struct ssg_shape *rot = &in[SSG_HBAO_IN_ROTATION], *dep = &in[SSG_HBAO_IN_DEPTH];
-    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
-        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
-        return SSG_E_SIZE;
-    }
-    enum ssg_err e = ssg_sampling_check_inputs(pos, NULL, rot, dep, &in[SSG_HBAO_IN_COUNT],
-                                               why, why_len);
-    if (e)
-        return e;
-    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
-    out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
-    return SSG_OK;
+    return ssg_sampling_check_ao(&in[SSG_HBAO_IN_POSITION], &in[SSG_HBAO_IN_NORMAL], NULL,
+                                 &in[SSG_HBAO_IN_ROTATION], &in[SSG_HBAO_IN_DEPTH],
+                                 &in[SSG_HBAO_IN_COUNT], out, why, why_len);
+}
+
+/* The consts with e1 for the G-buffer's columns. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    return sizeof(struct ssg_hbao_consts) + 2 * (size_t)in[SSG_HBAO_IN_POSITION].width *
+                                                sizeof(float);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_hbao_consts *c = consts;
+    const struct ssg_hbao_params *q = &c->p;
     c->p = *(const struct ssg_hbao_params *)params;
-    /* prepare() may be reached without the table's range checks (a hand-built run):
-       never index past the fixed arrays. */
-    if (!(c->p.radius > 0) || c->p.directions < 1 ||
-        c->p.directions > SSG_HBAO_MAX_DIRECTIONS || c->p.steps < 1 ||
-        c->p.steps > SSG_HBAO_MAX_STEPS || !(c->p.bias >= 0) || !(c->p.strength >= 0) ||
-        !(c->p.max_screen_radius >= 0))
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, 1..%d directions, 1..%d "
-                             "steps, bias and strength >= 0", SSG_HBAO_MAX_DIRECTIONS,
-                             SSG_HBAO_MAX_STEPS);
     const struct ssg_shape *pos = &ctx->in_shape[SSG_HBAO_IN_POSITION];
     enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    if (e)
-        return e;
     ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
-    c->cos_bias = (float)cos(c->p.bias);
-    c->sin_bias = (float)sin(c->p.bias);
-    for (int k = 0; k < c->p.directions; k++) {
-        double a = 2.0 * M_PI * k / c->p.directions;
+    c->invf = 1.0f / c->proj.f;
+    c->rf = c->proj.f * q->radius;
+    c->r2 = q->radius * q->radius;
+    c->inv_radius = 1.0f / q->radius;
+    c->inv_steps = 1.0f / (float)q->steps;
+    c->scale = q->strength / (float)q->directions;
+    c->cos_bias = (float)cos(q->bias);
+    c->sin_bias = (float)sin(q->bias);
+    for (int k = 0; k < q->directions; k++) {
+        double a = 2.0 * M_PI * k / q->directions;
         c->dir_cos[k] = (float)cos(a);
         c->dir_sin[k] = (float)sin(a);
     }
-    rank_directions(c->p.directions, c->dir_rank);
-    return SSG_OK;
+    rank_directions(q->directions, c->dir_rank);
+    return e;
 }
 
-static const char *const falloff_choices[] = {"linear", "none", NULL};
+static const char *const ssg_hbao_falloff_choices[] = {"linear", "none", NULL};
+SSG_PARAMS_TABLE(params, ssg_hbao_params, SSG_HBAO_PARAMS);
 
-static const struct ssg_param_desc params[] = {
-    {.name = "directions", SSG_FIELD_INT(struct ssg_hbao_params, directions), .def = 8,
-     .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS,
-     .help = "azimuths per pixel (uniform about the view "
-             "vector, turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_hbao_params, steps), .def = 6, .min = 1,
-     .max = SSG_HBAO_MAX_STEPS, .help = "depth samples marched along each direction"},
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, radius), .def = 0.5, .min = 1e-6,
-     .max = 1e6, .unit = "scene units",
-     .help = "R: occluders farther than this from the pixel are ignored"},
-    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_hbao_params, bias), .def = 0.25, .min = 0,
-     .max = 1.5, .unit = "radians",
-     .help = "tangent-angle bias against self occlusion (0.25 rad ~ 14 degrees; Bavoil's "
-             "0.1 lets tessellation and pixel steps read as occlusion)"},
-    {.name = "strength", SSG_FIELD_FLOAT(struct ssg_hbao_params, strength), .def = 1.25, .min = 0,
-     .max = 16, .help = "out = 1 - strength * occlusion, clamped to [0, 1] (default 1.25 "
-                        "with bias 0.25: the lowest mean error against reference_ao)"},
-    {.name = "falloff", SSG_FIELD_ENUM(struct ssg_hbao_params, falloff),
-     .def = SSG_HBAO_FALLOFF_NONE, .choices = falloff_choices,
-     .help = "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
-};
-
-static const struct ssg_port_desc inputs[] = {
-    [SSG_HBAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position (its -z is the depth unless depth is given)"},
-    [SSG_HBAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal"},
-    [SSG_HBAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
-    [SSG_HBAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    [SSG_HBAO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
-            "none = all"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_HBAO_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_HBAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
-     .doc = "visibility, 1 = unoccluded"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_HBAO_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(inputs, SSG_HBAO_IN);
+SSG_PORT_TABLE(outputs, SSG_HBAO_OUT);
 
 /* Flops per pixel (node.h), by reading hbao_cpu.c: per direction about 20 for its step
    and tangent, per step about 25 (place, index, the horizon's tangent, falloff, max),
@@ -247,7 +197,7 @@ const struct ssg_node_desc ssg_node_hbao = {
            "averages over those.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_hbao_params),
-    .consts_size = sizeof(struct ssg_hbao_consts),
+    .consts_size_of = consts_size_of,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = hbao_flops,

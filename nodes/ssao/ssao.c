@@ -73,26 +73,15 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           size_t why_len)
 {
     const struct ssg_ssao_params *p = params;
-    const struct ssg_shape *pos = &in[SSG_SSAO_IN_POSITION], *nrm = &in[SSG_SSAO_IN_NORMAL];
-    const struct ssg_shape *ker = &in[SSG_SSAO_IN_KERNEL], *rot = &in[SSG_SSAO_IN_ROTATION];
-    const struct ssg_shape *dep = &in[SSG_SSAO_IN_DEPTH];
-    if (p->mode == SSG_SSAO_MODE_HEMISPHERE && nrm->channels == 0) {
+    if (p->mode == SSG_SSAO_MODE_HEMISPHERE && in[SSG_SSAO_IN_NORMAL].channels == 0) {
         snprintf(why, why_len, "needs input 'normal' (mode hemisphere orients its samples "
                  "by it; modes sphere and disc do not)");
         return SSG_E_MISSING_INPUT;
     }
-    if (pos->channels != 3 || (nrm->channels != 0 && (nrm->channels != 3 ||
-                                                       !ssg_shape_same_size(pos, nrm)))) {
-        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
-        return SSG_E_SIZE;
-    }
-    enum ssg_err e = ssg_sampling_check_inputs(pos, ker, rot, dep, &in[SSG_SSAO_IN_COUNT],
-                                               why, why_len);
-    if (e)
-        return e;
-    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
-    out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
-    return SSG_OK;
+    return ssg_sampling_check_ao(&in[SSG_SSAO_IN_POSITION], &in[SSG_SSAO_IN_NORMAL],
+                                 &in[SSG_SSAO_IN_KERNEL], &in[SSG_SSAO_IN_ROTATION],
+                                 &in[SSG_SSAO_IN_DEPTH], &in[SSG_SSAO_IN_COUNT], out, why,
+                                 why_len);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
