@@ -8,7 +8,9 @@
  *     the instance, the port, the actual and the expected shape; the node never runs
  *     (its kernel would read past the smaller image: ASan would say so);
  *   - an optional input bound although the graph left it unconnected is refused;
- *   - every port has a name and a type (the arrays are indexed by the port enumerators).
+ *   - every port has a name and a type (the arrays are indexed by the port enumerators);
+ *   - the method text is in one place: the folder's README.md (embedded) or the
+ *     descriptor's doc, never both, never neither; and every README names a node.
  * Shapes: every input port gets a shape of its first accepted type on a 16x12 frame. */
 #include <stdio.h>
 #include <string.h>
@@ -128,11 +130,26 @@ static void test_ports_named(const struct ssg_node_desc *d)
         CHECK(d->outputs[i].name != NULL && d->outputs[i].types != 0);
 }
 
+static void test_doc_in_one_place(const struct ssg_node_desc *d)
+{
+    const char *readme = ssg_node_readme(d->name);
+    int has_doc = d->doc != NULL && d->doc[0] != 0;
+    if ((readme != NULL) == has_doc)
+        fprintf(stderr, "node %s: %s\n", d->name,
+                has_doc ? "has both nodes/<name>/README.md and a descriptor .doc"
+                        : "has neither README.md nor a descriptor .doc");
+    CHECK((readme != NULL) != has_doc);
+    int len;
+    ssg_node_doc(d, &len);
+    CHECK(len > 40);
+}
+
 static void test_node(const struct ssg_node_desc *d)
 {
     struct bound b;
     char msg[512];
     test_ports_named(d);
+    test_doc_in_one_place(d);
     bind_all(d, &b);
     CHECK_EQ(run(d, &b, msg, sizeof msg), SSG_OK);
     for (int i = 0; i < d->input_count; i++) {
@@ -165,5 +182,7 @@ int main(void)
         const char *name = ssg_node_name(n);
         test_node(ssg_node_find(name, strlen(name)));
     }
+    for (const struct ssg_node_readme *r = ssg_node_readmes; r->node; r++)
+        CHECK(ssg_node_find(r->node, strlen(r->node)) != NULL);
     return check_report();
 }

@@ -1,5 +1,5 @@
 /* shaders.h - the GLSL files compiled into the binary (core/gl/common.glsl and every
- * nodes/<name>/<file>.glsl), generated at build time by cmake/embed_shaders.cmake. */
+ * nodes/<name>/<file>.glsl), generated at build time by cmake/embed_files.cmake. */
 #ifndef SSG_SHADERS_H
 #define SSG_SHADERS_H
 

@@ -162,7 +162,9 @@ struct ssg_node_desc {
     const char *name;    /* "ssao" */
     const char *summary; /* one line for `ssgraph nodes` */
     const char *method;  /* paper, section and equation implemented */
-    const char *doc;     /* a paragraph for `describe` and docs */
+    const char *doc;     /* a paragraph for `describe` and docs; NULL when the node's folder
+                            has a README.md, which then is its doc (ssg_node_doc): the
+                            method text lives in one place */
     const struct ssg_port_desc *inputs;
     int input_count;
     const struct ssg_port_desc *outputs;
@@ -235,6 +237,20 @@ struct ssg_node_desc {
 const struct ssg_node_desc *ssg_node_find(const char *name, size_t len);
 /* The registry's index-th node (0 .. ssg_node_count() - 1), else NULL. */
 const struct ssg_node_desc *ssg_node_at(int index);
+/* A node's method text in one place: nodes/<name>/README.md (a second node in a folder:
+ * nodes/<folder>/<name>.md), embedded by the build (cmake/embed_files.cmake) into
+ * ssg_node_readmes[] (terminated by {NULL, NULL}), else the descriptor's doc. */
+struct ssg_node_readme {
+    const char *node; /* the folder's name, "ssao" */
+    const char *text; /* README.md */
+};
+extern const struct ssg_node_readme ssg_node_readmes[];
+/* The README.md of the node's folder (its first line, the `# title`, left out), or doc;
+ * *len is its length without trailing newlines (print it with "%.*s"). */
+const char *ssg_node_doc(const struct ssg_node_desc *d, int *len);
+/* The README.md of a node folder by name (whole text), or NULL. */
+const char *ssg_node_readme(const char *node);
+
 /* "cpu, gl" or "cpu only". */
 const char *ssg_node_backends(const struct ssg_node_desc *d);
 int ssg_port_find(const struct ssg_port_desc *ports, int count, const char *name, size_t len);

@@ -145,8 +145,10 @@ static void markdown_ports(const char *title, const struct ssg_port_desc *ports,
 static void markdown_node(int index, const struct graph_uses *u, FILE *stream)
 {
     const struct ssg_node_desc *d = ssg_node_at(index);
-    fprintf(stream, "## %s\n\n%s\n\n%s\n\n*Method:* %s\n\n*Backends:* %s\n\n", d->name,
-            d->summary, d->doc, d->method, ssg_node_backends(d));
+    int doc_len;
+    const char *doc = ssg_node_doc(d, &doc_len);
+    fprintf(stream, "## %s\n\n%s\n\n%.*s\n\n*Method:* %s\n\n*Backends:* %s\n\n", d->name,
+            d->summary, doc_len, doc, d->method, ssg_node_backends(d));
     markdown_used_by(u, index, stream);
     markdown_ports("Inputs", d->inputs, d->input_count, stream);
     markdown_ports("Outputs", d->outputs, d->output_count, stream);

@@ -122,6 +122,32 @@ static void describe_ports(const char *title, const struct ssg_port_desc *ports,
     }
 }
 
+const char *ssg_node_readme(const char *node)
+{
+    for (const struct ssg_node_readme *r = ssg_node_readmes; r->node; r++)
+        if (!strcmp(r->node, node))
+            return r->text;
+    return NULL;
+}
+
+const char *ssg_node_doc(const struct ssg_node_desc *d, int *len)
+{
+    const char *text = ssg_node_readme(d->name);
+    if (!text)
+        text = d->doc ? d->doc : "";
+    else if (text[0] == '#') { /* the title: `ssgraph describe` and docs/nodes.md have theirs */
+        const char *nl = strchr(text, '\n');
+        text = nl ? nl + 1 : "";
+    }
+    while (*text == '\n')
+        text++;
+    size_t n = strlen(text);
+    while (n && text[n - 1] == '\n')
+        n--;
+    *len = (int)n;
+    return text;
+}
+
 const char *ssg_node_backends(const struct ssg_node_desc *d)
 {
     return d->run_gl ? "cpu, gl" : "cpu only";
@@ -134,9 +160,11 @@ enum ssg_err ssg_node_describe(const char *node, FILE *stream)
     const struct ssg_node_desc *d = ssg_node_find(node, strlen(node));
     if (!d)
         return SSG_E_UNKNOWN_NODE;
-    fprintf(stream, "%s - %s\n\n%s\n\nMethod: %s\n\nBackends: %s (backend=cpu|gl on the "
-            "node, `backend` in the graph, --backend)\n\n", d->name, d->summary, d->doc,
-            d->method, ssg_node_backends(d));
+    int doc_len;
+    const char *doc = ssg_node_doc(d, &doc_len);
+    fprintf(stream, "%s - %s\n\n%.*s\n\nMethod: %s\n\nBackends: %s (backend=cpu|gl on the "
+            "node, `backend` in the graph, --backend)\n\n", d->name, d->summary,
+            doc_len, doc, d->method, ssg_node_backends(d));
     describe_ports("Inputs", d->inputs, d->input_count, 1, stream);
     if (d->extra_inputs)
         fprintf(stream, "  %-16s %-22s %s\n", "<name>=node.port", "any image",

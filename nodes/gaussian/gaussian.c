@@ -1,14 +1,5 @@
-/* gaussian.c - the `gaussian` node: a plain separable Gaussian blur.
- *
- * Method: Belonogov, "Global Illumination methods in simulated VR environments", section
- * 4.3.1: the Gaussian blur that smooths the rotation noise of SSAO, split into a horizontal
- * and a vertical pass (exact for a Gaussian, whose 2D kernel is the product of two 1D
- * ones); Szentandrasi, "Modern Methods of Realistic Lighting in Real Time", section 4.1,
- * for why it is only the baseline: it bleeds across edges, which the geometry-aware
- * `bilateral` node avoids. out(x, y) = sum_{i,j} w_i w_j in(x + i, y + j), with
- * w_i = exp(-i^2 / (2 sigma^2)) / sum_k exp(-k^2 / (2 sigma^2)) for |i| <= radius; pixels
- * outside the image repeat the nearest edge pixel (clamp to edge). Every channel is
- * filtered alike and background pixels are not special. */
+/* gaussian.c - the `gaussian` node's descriptor, check and prepare: a plain separable
+ * Gaussian blur. The method, its sources and conventions: README.md in this folder. */
 #include <math.h>
 #include <stdio.h>
 
@@ -95,9 +86,6 @@ const struct ssg_node_desc ssg_node_gaussian = {
     .method = "Belonogov, Global Illumination methods in simulated VR environments, sec. "
               "4.3.1 (Gaussian blur, horizontal then vertical pass); Szentandrasi, Modern "
               "Methods of Realistic Lighting in Real Time, sec. 4.1 (why it bleeds)",
-    .doc = "Normalised Gaussian weights exp(-i^2 / (2 sigma^2)) over a size x size window, "
-           "applied as a horizontal then a vertical pass; pixels beyond the border repeat "
-           "the edge pixel. Every channel alike; background pixels are not special.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gaussian_params),
     .consts_size = sizeof(struct ssg_gaussian_consts),
