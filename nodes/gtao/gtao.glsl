@@ -1,4 +1,4 @@
-// gtao.glsl - the `gtao` node on GL (method and geometry in gtao.c): one invocation per
+// gtao.glsl - the `gtao` node on GL (method and geometry in README.md): one invocation per
 // pixel, gtao_cpu.c's operations in its order for one lane of its chunk (`precise`: no
 // multiply-add fused where the CPU rounds twice): slices in order, per step the +D sample
 // then the -D one, the same folded sample formulas and polynomial acos. Only sqrt,

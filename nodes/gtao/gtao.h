@@ -1,6 +1,6 @@
 /* gtao.h - parameters and prepared constants of the `gtao` node, shared by gtao.c
  * (descriptor, check, prepare), gtao_cpu.c (the CPU kernel) and gtao_gl.c (the GL side).
- * Method and conventions are described in gtao.c. Read-only after prepare(); the kernel
+ * Method and conventions: README.md. Read-only after prepare(); the kernel
  * is thread-safe. */
 #ifndef SSG_GTAO_H
 #define SSG_GTAO_H
@@ -10,7 +10,7 @@
 #define SSG_GTAO_MAX_SLICES 32
 #define SSG_GTAO_MAX_STEPS 64
 /* With back: the side's previous sample links to a sample lying at most this times R
-   behind its back (gtao.c). Measured with graphs/ao_error.graph at 640x480, gtao's rmse
+   behind its back (README.md). Measured with graphs/ao_error.graph at 640x480, gtao's rmse
    against reference_ao: 0, 0.05, 0.1, 0.2, 0.4 gave 0.0516, 0.0504, 0.0493, 0.0469,
    0.0451 on the thin panel and 0.0319, 0.0317, 0.0317, 0.0320, 0.0338 on the table
    (0.0496 and 0.0698 without back); 0.3 (0.0456, 0.0326) keeps most of both gains. */
@@ -72,7 +72,7 @@ struct ssg_gtao_consts {
                                    (falloff > 0; falloff 0 is the test r <= R) */
     float link;                 /* with back: a sample's arc reaches down to the side's
                                    previous sample when that lies at most this far behind
-                                   the sample's back, scene units (gtao.c) */
+                                   the sample's back, scene units (README.md) */
     float slice_cos[SSG_GTAO_MAX_SLICES]; /* cos(pi k / slices) */
     float slice_sin[SSG_GTAO_MAX_SLICES]; /* sin(pi k / slices) */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at

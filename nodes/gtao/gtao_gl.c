@@ -1,4 +1,4 @@
-/* gtao_gl.c - GL side of the `gtao` node (method in gtao.c, shader gtao.glsl): one pass,
+/* gtao_gl.c - GL side of the `gtao` node (method in README.md, shader gtao.glsl): one pass,
  * one invocation per pixel, writing both outputs. Parameters and ports are bound by the
  * descriptor's tables; the projection, 1 / f, the columns' basis vectors, the slice
  * table and the falloff factors are prepare()'s, so both backends start from the same

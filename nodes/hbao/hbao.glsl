@@ -1,4 +1,4 @@
-// hbao.glsl - the `hbao` node on GL (method and geometry in hbao.c): one invocation per
+// hbao.glsl - the `hbao` node on GL (method and geometry in README.md): one invocation per
 // pixel. The maths is hbao_cpu.c's lane by lane: the same per-pixel basis and march
 // length (setup_chunk), per-direction coefficients (setup_direction), rounded steps,
 // slice projection and horizon tests (place_step, horizon_one), the same sums in the same

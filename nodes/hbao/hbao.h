@@ -1,6 +1,6 @@
 /* hbao.h - parameters and prepared constants of the `hbao` node, shared by hbao.c
  * (descriptor, check, prepare), hbao_cpu.c (the CPU kernel) and hbao_gl.c (the GL side).
- * Method and conventions are described in hbao.c. Read-only after prepare(); the kernel
+ * Method and conventions: README.md. Read-only after prepare(); the kernel
  * is thread-safe. */
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
@@ -71,7 +71,7 @@ struct ssg_hbao_consts {
     float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
     float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
     int dir_rank[SSG_HBAO_MAX_DIRECTIONS];  /* place of direction k in the order the count
-                                               input takes directions in (hbao.c) */
+                                               input takes directions in (README.md) */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
        [x] and e1z at [w + x]; read by both backends. */
     float e1[];

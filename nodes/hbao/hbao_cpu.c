@@ -1,4 +1,4 @@
-/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c): the march
+/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in README.md): the march
  * and its entry point; the image checks, pattern and column tables and the padded depth it
  * reads are prepared in hbao_pattern.c (the job they share: hbao_cpu.h).
  *
@@ -25,7 +25,7 @@
  *   and the border hold +inf: samples off screen are clamped into the border, and an
  *   infinite depth makes q inf or NaN, which fails q <= R^2: no other test is needed.
  * - The march is not normalised per direction (setup_direction).
- * Per-pixel counts of directions (the `count` input, hbao.c): a chunk marches only the
+ * Per-pixel counts of directions (the `count` input, README.md): a chunk marches only the
  * directions some lane needs; a lane's direction past its count starts with its horizon
  * at +inf, so no sample raises it (no term in the linear falloff), and finish_direction
  * adds 0 for it. Adding 0 leaves a sum's bits unchanged, and the division is by n_i,
@@ -150,7 +150,7 @@ static inline __attribute__((always_inline)) int load_chunk(const struct job *j,
 }
 
 /* What depends on the pixel only: V, the basis e1 = normalize(y x V), e2 = V x e1, the
-   tangent term V.N and the march length (hbao.c). */
+   tangent term V.N and the march length (README.md). */
 static inline __attribute__((always_inline)) void setup_chunk(const struct job *j,
                                                               struct chunk *restrict k,
                                                               int y, int x0, int len)
@@ -196,7 +196,7 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
    zenith; for -D, sin t changes sign and cos t does not). The screen direction
    (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)) is J D up to the factor f / depth and is not
    normalised: `steps` steps of step (su, sv), step = f R / (den steps), reach
-   f R |(su, sv)| / den, which is exactly the bound of hbao.c for this slice. */
+   f R |(su, sv)| / den, which is exactly the bound of README.md for this slice. */
 static inline __attribute__((always_inline)) void
 setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds,
                 int linear)
@@ -358,7 +358,7 @@ finish_direction(struct chunk *restrict k, int len, int m, int counted, int rank
     }
 }
 
-/* Count input: member m's direction (place `rank` in the order of hbao.c) is beyond the
+/* Count input: member m's direction (place `rank` in the order of README.md) is beyond the
    lanes' counts where rank >= n_i; there its horizon starts at +inf, which no sample
    rises above (the comparisons of horizon_one are false for it, and its gain is selected
    away). */

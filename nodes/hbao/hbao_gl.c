@@ -1,4 +1,4 @@
-/* hbao_gl.c - GL side of the `hbao` node (method in hbao.c, shader hbao.glsl): one pass,
+/* hbao_gl.c - GL side of the `hbao` node (method in README.md, shader hbao.glsl): one pass,
  * one invocation per pixel, both falloffs and every optional input. Parameters and ports
  * are bound by the descriptor's tables; the projection, the columns' basis vectors e1,
  * the direction tables and the derived values (1 / f, f R, 1 / steps, ...) are
