@@ -78,6 +78,25 @@ void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1
     }
 }
 
+enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
+                                        const struct ssg_shape *gbuffer,
+                                        struct ssg_projection *proj, float *invf, float *e1)
+{
+    enum ssg_err e = ssg_sampling_projection(ctx, gbuffer, proj);
+    *invf = 1.0f / proj->f;
+    ssg_sampling_column_basis(proj, gbuffer->width, e1);
+    return e;
+}
+
+void ssg_sampling_angles(int n, double turn, float *co, float *si)
+{
+    for (int k = 0; k < n; k++) {
+        double a = turn * k / n;
+        co[k] = (float)cos(a);
+        si[k] = (float)sin(a);
+    }
+}
+
 void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,
                             float *padded)
 {

@@ -56,6 +56,18 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
  * e1[w..2w). */
 void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
 
+/* prepare() of the horizon nodes (hbao, gtao): the camera as `gbuffer`'s size sees it
+ * (ssg_sampling_projection, whose error it returns), *invf = 1 / f for both backends, and
+ * the column basis e1 for its width (ssg_sampling_column_basis). */
+enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
+                                        const struct ssg_shape *gbuffer,
+                                        struct ssg_projection *proj, float *invf, float *e1);
+
+/* The azimuth tables of the horizon nodes: co[k], si[k] = cos, sin of turn k / n for
+ * k < n, in double rounded to float (turn 2 pi: hbao's directions round the circle; pi:
+ * gtao's slices over the half circle). */
+void ssg_sampling_angles(int n, double turn, float *co, float *si);
+
 /* The depth plane of the horizon nodes' CPU kernels (hbao, gtao), padded by one pixel:
  * rows [y0, y1) of the w-wide `depth` (times sign) into rows y0 + 1 .. of `padded`
  * (w + 2 wide, (h + 2) rows; the caller fills its first and last rows with +inf), with

@@ -42,20 +42,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_gtao_consts *c = consts;
     const struct ssg_gtao_params *q = &c->p;
     c->p = *(const struct ssg_gtao_params *)params;
-    const struct ssg_shape *pos = &ctx->in_shape[SSG_GTAO_IN_POSITION];
-    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
-    c->invf = 1.0f / c->proj.f;
+    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_GTAO_IN_POSITION],
+                                                &c->proj, &c->invf, c->e1);
     /* XeGTAO's fade: w = 1 up to (1 - falloff) R, 0 at R: w = r mul + add. */
     float range = q->falloff * q->radius;
     c->fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
     c->fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
     c->link = SSG_GTAO_BACK_LINK * q->radius;
-    for (int k = 0; k < q->slices; k++) {
-        double a = M_PI * k / q->slices;
-        c->slice_cos[k] = (float)cos(a);
-        c->slice_sin[k] = (float)sin(a);
-    }
+    ssg_sampling_angles(q->slices, M_PI, c->slice_cos, c->slice_sin);
     return e;
 }
 
@@ -69,7 +63,6 @@ SSG_PORT_TABLE(outputs, SSG_GTAO_OUT);
 static double gtao_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_gtao_consts *c = consts;
-    (void)in;
     return 40.0 + c->p.slices * (70.0 + 2.0 * 22.0 * c->p.steps);
 }
 

@@ -3,7 +3,7 @@
  * descriptor's tables; the projection, 1 / f, the columns' basis vectors, the slice
  * table and the falloff factors are prepare()'s, so both backends start from the same
  * bits. */
-#include "gl/gl.h"
+#include "common/sampling_gl.h"
 #include "gtao.h"
 
 enum ssg_err ssg_gtao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -12,14 +12,10 @@ enum ssg_err ssg_gtao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_gtao_consts *c = consts;
     const struct ssg_image *pos = io->in[SSG_GTAO_IN_POSITION];
     struct ssg_gl_pass p;
-    ssg_gl_pass_begin(&p, ctx, "gtao.glsl", NULL);
-    ssg_gl_buffer(&p, 0, c->e1, 2 * (size_t)pos->width * sizeof *c->e1);
-    ssg_gl_ports(&p, io);
+    ssg_sampling_gl_horizon(&p, ctx, "gtao.glsl", io, c->e1, &c->proj, c->invf);
     ssg_gl_float(&p, "fall_mul", c->fall_mul);
     ssg_gl_float(&p, "fall_add", c->fall_add);
     ssg_gl_float(&p, "link", c->link);
-    ssg_gl_float(&p, "invf", c->invf);
-    ssg_gl_projection(&p, "proj", &c->proj);
     ssg_gl_floats(&p, "slice_cos", c->p.slices, c->slice_cos);
     ssg_gl_floats(&p, "slice_sin", c->p.slices, c->slice_sin);
     ssg_gl_dispatch(&p, pos->width, pos->height);

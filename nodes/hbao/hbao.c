@@ -68,10 +68,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_hbao_consts *c = consts;
     const struct ssg_hbao_params *q = &c->p;
     c->p = *(const struct ssg_hbao_params *)params;
-    const struct ssg_shape *pos = &ctx->in_shape[SSG_HBAO_IN_POSITION];
-    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
-    c->invf = 1.0f / c->proj.f;
+    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
+                                                &c->proj, &c->invf, c->e1);
     c->rf = c->proj.f * q->radius;
     c->r2 = q->radius * q->radius;
     c->inv_radius = 1.0f / q->radius;
@@ -79,11 +77,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->scale = q->strength / (float)q->directions;
     c->cos_bias = (float)cos(q->bias);
     c->sin_bias = (float)sin(q->bias);
-    for (int k = 0; k < q->directions; k++) {
-        double a = 2.0 * M_PI * k / q->directions;
-        c->dir_cos[k] = (float)cos(a);
-        c->dir_sin[k] = (float)sin(a);
-    }
+    ssg_sampling_angles(q->directions, 2.0 * M_PI, c->dir_cos, c->dir_sin);
     rank_directions(q->directions, c->dir_rank);
     return e;
 }
@@ -100,7 +94,6 @@ SSG_PORT_TABLE(outputs, SSG_HBAO_OUT);
 static double hbao_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_hbao_consts *c = consts;
-    (void)in;
     return 40.0 + c->p.directions * (20.0 + 25.0 * c->p.steps);
 }
 

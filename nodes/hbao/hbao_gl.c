@@ -3,7 +3,7 @@
  * are bound by the descriptor's tables; the projection, the columns' basis vectors e1,
  * the direction tables and the derived values (1 / f, f R, 1 / steps, ...) are
  * prepare()'s, so both backends start from the same bits. */
-#include "gl/gl.h"
+#include "common/sampling_gl.h"
 #include "hbao.h"
 
 enum ssg_err ssg_hbao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -13,10 +13,7 @@ enum ssg_err ssg_hbao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_image *pos = io->in[SSG_HBAO_IN_POSITION];
     const int nd = c->p.directions;
     struct ssg_gl_pass p;
-    ssg_gl_pass_begin(&p, ctx, "hbao.glsl", NULL);
-    ssg_gl_buffer(&p, 0, c->e1, 2 * (size_t)pos->width * sizeof *c->e1);
-    ssg_gl_ports(&p, io);
-    ssg_gl_float(&p, "invf", c->invf);
+    ssg_sampling_gl_horizon(&p, ctx, "hbao.glsl", io, c->e1, &c->proj, c->invf);
     ssg_gl_float(&p, "rf", c->rf);
     ssg_gl_float(&p, "r2", c->r2);
     ssg_gl_float(&p, "inv_radius", c->inv_radius);
@@ -24,7 +21,6 @@ enum ssg_err ssg_hbao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_float(&p, "scale", c->scale);
     ssg_gl_float(&p, "cos_bias", c->cos_bias);
     ssg_gl_float(&p, "sin_bias", c->sin_bias);
-    ssg_gl_projection(&p, "proj", &c->proj);
     ssg_gl_floats(&p, "dir_cos", nd, c->dir_cos);
     ssg_gl_floats(&p, "dir_sin", nd, c->dir_sin);
     ssg_gl_ints(&p, "dir_rank", nd, c->dir_rank);

@@ -45,7 +45,6 @@ SSG_PORT_TABLE(outputs, SSG_SSAO_OUT);
    depth test, range check and sum), about 60 per pixel for its frame and the finish. */
 static double ssao_flops(const void *consts, const struct ssg_shape *in)
 {
-    (void)consts;
     return 60.0 + 38.0 * in[SSG_SSAO_IN_KERNEL].width;
 }
 
