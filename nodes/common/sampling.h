@@ -56,6 +56,18 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
  * e1[w..2w). */
 void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
 
+/* The input port rows the horizon nodes (hbao, gtao) share, one copy of their docs (node.h's
+ * one-line rows), given the node's four enumerators in this order and what the directions
+ * are called (the rotation's "none = fixed <what>"). */
+#define SSG_SAMPLING_HORIZON_IN(X, position, normal, rotation, depth, what)               \
+    X(position, "position", SSG_T_VECTOR,                                                  \
+      "view-space position (its -z is the depth unless depth is given)")                   \
+    X(normal, "normal", SSG_T_VECTOR, "unit view-space normal")                            \
+    X(rotation, "rotation", SSG_T_PATTERN,                                                 \
+      "per-pixel rotation tile (halton.rotation); none = fixed " what, .optional = 1)      \
+    X(depth, "depth", SSG_T_SCALAR,                                                        \
+      "linear depth the points are reconstructed from; none = -position.z", .optional = 1)
+
 /* prepare() of the horizon nodes (hbao, gtao): the camera as `gbuffer`'s size sees it
  * (ssg_sampling_projection, whose error it returns), *invf = 1 / f for both backends, and
  * the column basis e1 for its width (ssg_sampling_column_basis). */

@@ -5,6 +5,7 @@
 #ifndef SSG_GTAO_H
 #define SSG_GTAO_H
 
+#include "common/sampling.h"
 #include "graph/node.h"
 
 #define SSG_GTAO_MAX_SLICES 32
@@ -16,15 +17,11 @@
    (0.0496 and 0.0698 without back); 0.3 (0.0456, 0.0326) keeps most of both gains. */
 #define SSG_GTAO_BACK_LINK 0.3f
 
-/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields; the
+   G-buffer's four as the horizon nodes share them (common/sampling.h). */
 #define SSG_GTAO_IN(X)                                                                     \
-    X(SSG_GTAO_IN_POSITION, "position", SSG_T_VECTOR,                                      \
-      "view-space position (its -z is the depth unless depth is given)")                   \
-    X(SSG_GTAO_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal")                \
-    X(SSG_GTAO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
-      "per-pixel rotation tile (halton.rotation); none = fixed slices", .optional = 1)     \
-    X(SSG_GTAO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
-      "linear depth the points are reconstructed from; none = -position.z", .optional = 1) \
+    SSG_SAMPLING_HORIZON_IN(X, SSG_GTAO_IN_POSITION, SSG_GTAO_IN_NORMAL,                   \
+                            SSG_GTAO_IN_ROTATION, SSG_GTAO_IN_DEPTH, "slices")             \
     X(SSG_GTAO_IN_BACK, "back", SSG_T_SCALAR,                                              \
       "depth of the next surface behind each pixel's (gbuffer.back, +inf = none): a "      \
       "sample occludes only between its depth and this; none = infinitely thick",          \

@@ -5,6 +5,7 @@
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
+#include "common/sampling.h"
 #include "graph/node.h"
 
 #define SSG_HBAO_MAX_DIRECTIONS 64
@@ -16,15 +17,11 @@ enum ssg_hbao_falloff {
                                 with distance-limited references */
 };
 
-/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields; the
+   G-buffer's four as the horizon nodes share them (common/sampling.h). */
 #define SSG_HBAO_IN(X)                                                                     \
-    X(SSG_HBAO_IN_POSITION, "position", SSG_T_VECTOR,                                      \
-      "view-space position (its -z is the depth unless depth is given)")                   \
-    X(SSG_HBAO_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal")                \
-    X(SSG_HBAO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
-      "per-pixel rotation tile (halton.rotation); none = fixed directions", .optional = 1) \
-    X(SSG_HBAO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
-      "linear depth the points are reconstructed from; none = -position.z", .optional = 1) \
+    SSG_SAMPLING_HORIZON_IN(X, SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL,                   \
+                            SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH, "directions")         \
     X(SSG_HBAO_IN_COUNT, "count", SSG_T_SCALAR,                                            \
       "per-pixel number of directions (complexity.count), taken in a spread order; "       \
       "none = all", .optional = 1)
