@@ -57,20 +57,20 @@ int main(int argc, char **argv)
     if (!pos || !nrm || !out || !bent || !d)
         return 1;
     make_gbuffer(&frame, pos, nrm);
-    void *params = calloc(1, d->params_size), *consts = calloc(1, d->consts_size);
+    void *params = calloc(1, d->params_size), *consts = NULL;
     if (set_params(d, params, slices, steps, argc, argv, &diags)) {
         ssg_diags_print(&diags, stderr);
         return 2;
     }
     struct ssg_node_ctx ctx = {.desc = d, .instance = "t", .frame = &frame, .out_dir = "out",
                                .diags = &diags};
-    const struct ssg_image *in[4] = {pos, nrm, hal.images[1], NULL};
+    const struct ssg_image *in[5] = {pos, nrm, hal.images[1], NULL, NULL};
     struct ssg_image *outs[2] = {out, bent};
     struct ssg_io io = {.in = in, .out = outs};
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(d, &io, &shapes);
     ssg_node_ctx_set_shapes(&ctx, &shapes);
-    if (d->prepare(&ctx, params, consts) != SSG_OK) {
+    if (ssg_node_prepare(d, &ctx, params, &consts) != SSG_OK) {
         ssg_diags_print(&diags, stderr);
         return 1;
     }

@@ -55,7 +55,7 @@ int main(int argc, char **argv)
     const struct ssg_node_desc *d = ssg_node_find("hbao", 4);
     if (!d)
         return 1;
-    void *params = calloc(1, d->params_size), *consts = calloc(1, d->consts_size);
+    void *params = calloc(1, d->params_size), *consts = NULL;
     ssg_params_defaults(d->params, params);
     char dir_set[32], step_set[32];
     snprintf(dir_set, sizeof dir_set, "directions=%d", directions);
@@ -76,7 +76,7 @@ int main(int argc, char **argv)
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(d, &io, &shapes);
     ssg_node_ctx_set_shapes(&ctx, &shapes);
-    if (d->prepare(&ctx, params, consts) != SSG_OK) {
+    if (ssg_node_prepare(d, &ctx, params, &consts) != SSG_OK) {
         ssg_diags_print(&diags, stderr);
         return 1;
     }

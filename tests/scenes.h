@@ -71,7 +71,8 @@ static inline struct ssg_image *undefined_image(int width, int height, int chann
 }
 
 /* Runs desc on in -> out with scene s as the executor does: prepare() into calloc'd
-   constants of the descriptor's size, then run_cpu; diagnostics go to stderr. */
+   constants of the descriptor's size (or consts_size_of), then run_cpu; diagnostics go to
+   stderr. */
 static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc,
                                         const struct ssg_scene *s,
                                         const struct ssg_frame *frame, const void *params,
@@ -81,11 +82,12 @@ static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc,
     struct ssg_diags d = {0};
     struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,
                                .scene = s, .out_dir = ".", .diags = &d};
-    void *c = calloc(1, desc->consts_size);
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(desc, &io, &shapes);
     ssg_node_ctx_set_shapes(&ctx, &shapes);
+    void *c = calloc(1, desc->consts_size_of ? desc->consts_size_of(params, shapes.in)
+                                             : desc->consts_size);
     enum ssg_err e = c ? desc->prepare(&ctx, params, c) : SSG_E_NOMEM;
     if (!e)
         e = desc->run_cpu(&ctx, c, &io);

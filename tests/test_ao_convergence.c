@@ -413,7 +413,7 @@ static void test_open_plane(void)
         ssg_image_destroy(&ao);
     }
     struct ssg_image *hb = run_hbao(&g, "none", 32);
-    /* bias 0 leaves float rounding of the tangent (hbao.c: exact 1 needs a bias above it). */
+    /* bias 0 leaves float rounding of the tangent (hbao/README: exact 1 needs a bias above it). */
     double worst = 0;
     for (size_t o = 0; hb && o < (size_t)W * H; o++)
         worst = fmax(worst, 1.0 - hb->data[o]);

@@ -2,7 +2,7 @@
  * the closed forms of docs/analytic.md.
  *
  * Why GTAO is exactly 1 on an open plane: every sample is a point of the plane, brought
- * back onto the slice along the tangent plane (gtao.c), so its horizon cosine is the
+ * back onto the slice along the tangent plane (gtao/README), so its horizon cosine is the
  * tangent's up to float rounding, which is below the node's 1e-5 margin; both sides then
  * sit at the hemisphere's limits, where the node adds exactly the open value it divides
  * by.

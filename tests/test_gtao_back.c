@@ -1,5 +1,5 @@
 /* test_gtao_back.c - `gtao` with its optional `back` input (the depth of the next surface
- * behind each pixel, gbuffer's `back`; the rule is in gtao.c):
+ * behind each pixel, gbuffer's `back`; the rule is in gtao/README):
  * - back = +inf everywhere (nothing behind anything) is the height-field assumption, so
  *   the result equals gtao without back (planes.h's corner, ray-cast G-buffer), with and
  *   without falloff;

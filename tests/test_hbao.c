@@ -8,7 +8,7 @@
  * Why HBAO is exactly 1 on an open plane: every sample is a point of the plane, so its
  * offset H from the pixel's point lies in the tangent plane; the node brings samples
  * that the rounding to pixels moved off the slice back along the tangent plane
- * (hbao.c), so their elevation in the slice equals the tangent's up to float rounding of
+ * (hbao/README), so their elevation in the slice equals the tangent's up to float rounding of
  * the reconstruction; any bias above that rounding leaves no slice term, and the node
  * adds exact zeros.
  *
@@ -238,14 +238,14 @@ static double elevation(const double h[3], const double v[3])
     return dot3(h, v) / sqrt(dot3(h, h));
 }
 
-/* The slice marched up the centre column from floor pixel row y (hbao.c's geometry with
+/* The slice marched up the centre column from floor pixel row y (hbao README's geometry with
    V = (0, vy, vz), e1 = x, D = e2 = V x e1 = (0, vz, -vy)). Returns the sines of the
    tangent elevation t, of the horizon h* of the continuous march (the wall point at
    distance R, or t when the wall is out of reach), of the horizon h_lo of the lowest
    sample the node's march can end on (one step plus one pixel of rounding below h*),
    and the distance a of P from the wall. Independent of the node's code: the step
    length f R / (max(depth - R, depth / 2) steps) px along the unnormalised screen
-   direction is the documented one (hbao.c), the points come from this file's ray cast. */
+   direction is the documented one (hbao/README), the points come from this file's ray cast. */
 struct slice_ref {
     double sin_t, cos_t, sin_h, sin_h_lo, a;
 };
@@ -373,7 +373,7 @@ static double slice_term(const struct scene *s, const double p[3], double theta,
     double len = sqrt(dot3(p, p));
     double v[3] = {-p[0] / len, -p[1] / len, -p[2] / len}, e1[3], e2[3], d[3], m[3];
     *term_lo = 0;
-    /* e1 = normalize(y x V) = (vz, 0, -vx) / |..|, e2 = V x e1 (hbao.c). */
+    /* e1 = normalize(y x V) = (vz, 0, -vx) / |..|, e2 = V x e1 (hbao/README). */
     double h1 = sqrt(v[2] * v[2] + v[0] * v[0]);
     e1[0] = v[2] / h1, e1[1] = 0, e1[2] = -v[0] / h1;
     cross3(v, e1, e2);
@@ -410,7 +410,7 @@ static double slice_term(const struct scene *s, const double p[3], double theta,
     }
     double term = fmax(elevation(hvec, v) - stb, 0);
     /* The march: screen direction (su, sv) of D, step f R |(su, sv)| / (den steps) px
-       (hbao.c). The last sample within R lies at most one step and one pixel diagonal
+       (hbao/README). The last sample within R lies at most one step and one pixel diagonal
        (rounding at both ends) nearer P along the line than W*: the wall point seen
        there bounds the node's horizon from below. */
     struct ssg_frame f = frame();

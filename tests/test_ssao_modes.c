@@ -2,7 +2,7 @@
  * the plane G-buffers of planes.h, run through ssao_planes.h like the hemisphere mode's
  * tests in test_ssao.c. Kept apart from those because their claims rest on a different
  * argument: samples in opposite pairs, of which at most one can be behind a plane, and
- * the rescale by 2 in ssao.c. */
+ * the rescale by 2 in ssao/README. */
 #include <math.h>
 #include <omp.h>
 #include <string.h>
@@ -14,7 +14,7 @@
 #include "planes.h"
 #include "ssao_planes.h"
 
-/* The normal-free modes on open planes: exactly 1 after the rescale by 2 (ssao.c), with
+/* The normal-free modes on open planes: exactly 1 after the rescale by 2 (ssao/README), with
    and without the normal input (which they do not read), with every range check.
    sphere: each kernel sample s comes with -s, and of two opposite points at most one is
    behind a plane through P; the other is in front of it and, as for the hemisphere
@@ -113,7 +113,7 @@ static double plane_distance(const struct scene *s, int i, const double x[3])
 }
 
 /* The sphere mode in the corner, exactly and in expectation. Exactly: the test places
-   every sample itself (ssao.c: r times the kernel sample and its reflection, turned
+   every sample itself (ssao/README: r times the kernel sample and its reflection, turned
    about the view axis by the pixel's tile angle) and classifies it: in the air
    (unoccluded, the bias covers the lookup error), behind the floor or the wall by more
    than the margin of test_corner_closed_form in test_ssao.c (occluded: its depth

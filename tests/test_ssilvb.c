@@ -2,7 +2,7 @@
  * against closed forms (docs/analytic.md) and a numerical integral.
  *
  * Open planes: every sample of the pixel's own plane is brought back onto the slice along
- * the tangent plane (gtao.c), so its front direction is the hemisphere's edge up to float
+ * the tangent plane (gtao/README), so its front direction is the hemisphere's edge up to float
  * rounding and its back direction below it: no sector's centre lies between them, no bit
  * is set, ao is exactly 1 and the bounce exactly 0 (even with a bright floor).
  *

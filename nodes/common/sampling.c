@@ -35,6 +35,26 @@ enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
     return SSG_OK;
 }
 
+enum ssg_err ssg_sampling_check_ao(const struct ssg_shape *position,
+                                   const struct ssg_shape *normal,
+                                   const struct ssg_shape *kernel,
+                                   const struct ssg_shape *rotation,
+                                   const struct ssg_shape *depth,
+                                   const struct ssg_shape *count, struct ssg_shape *out,
+                                   char *why, size_t why_len)
+{
+    if (position->channels != 3 ||
+        (normal->channels != 0 &&
+         (normal->channels != 3 || !ssg_shape_same_size(position, normal)))) {
+        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
+        return SSG_E_SIZE;
+    }
+    enum ssg_err e =
+        ssg_sampling_check_inputs(position, kernel, rotation, depth, count, why, why_len);
+    out[0] = (struct ssg_shape){position->width, position->height, 1, SSG_T_SCALAR};
+    return e;
+}
+
 enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
                                      const struct ssg_shape *gbuffer,
                                      struct ssg_projection *out)
@@ -55,6 +75,25 @@ void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1
         float h = 1.0f / sqrtf(1.0f + au * au);
         e1[x] = h;
         e1[w + x] = au * h;
+    }
+}
+
+enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
+                                        const struct ssg_shape *gbuffer,
+                                        struct ssg_projection *proj, float *invf, float *e1)
+{
+    enum ssg_err e = ssg_sampling_projection(ctx, gbuffer, proj);
+    *invf = 1.0f / proj->f;
+    ssg_sampling_column_basis(proj, gbuffer->width, e1);
+    return e;
+}
+
+void ssg_sampling_angles(int n, double turn, float *co, float *si)
+{
+    for (int k = 0; k < n; k++) {
+        double a = turn * k / n;
+        co[k] = (float)cos(a);
+        si[k] = (float)sin(a);
     }
 }
 

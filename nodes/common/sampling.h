@@ -28,6 +28,20 @@ enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
                                        const struct ssg_shape *count, char *why,
                                        size_t why_len);
 
+/* check() of the ambient-occlusion nodes (ssao, hbao, gtao), one copy for the three:
+ * position and normal must be 3-channel images of one size (normal channels 0 =
+ * unconnected, an optional port), the other inputs as ssg_sampling_check_inputs checks
+ * them (kernel and count NULL: the node has no such port); out[0] becomes one channel at
+ * position's size (the nodes run at the G-buffer's resolution, which may be a subsampled
+ * frame). Returns SSG_OK, or the error code with the reason in why. */
+enum ssg_err ssg_sampling_check_ao(const struct ssg_shape *position,
+                                   const struct ssg_shape *normal,
+                                   const struct ssg_shape *kernel,
+                                   const struct ssg_shape *rotation,
+                                   const struct ssg_shape *depth,
+                                   const struct ssg_shape *count, struct ssg_shape *out,
+                                   char *why, size_t why_len);
+
 /* prepare() of a sampling node: the frame's camera as an image of `gbuffer`'s size sees it
  * (ssg_projection_scaled: a subsampled G-buffer sees the same camera). Reports "needs a
  * frame with size and field of view" through ctx and returns SSG_E_VALUE when the frame
@@ -41,6 +55,30 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
  * depends on the column x only. Writes e1x for the w columns to e1[0..w), e1z to
  * e1[w..2w). */
 void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
+
+/* The input port rows the horizon nodes (hbao, gtao) share, one copy of their docs (node.h's
+ * one-line rows), given the node's four enumerators in this order and what the directions
+ * are called (the rotation's "none = fixed <what>"). */
+#define SSG_SAMPLING_HORIZON_IN(X, position, normal, rotation, depth, what)               \
+    X(position, "position", SSG_T_VECTOR,                                                  \
+      "view-space position (its -z is the depth unless depth is given)")                   \
+    X(normal, "normal", SSG_T_VECTOR, "unit view-space normal")                            \
+    X(rotation, "rotation", SSG_T_PATTERN,                                                 \
+      "per-pixel rotation tile (halton.rotation); none = fixed " what, .optional = 1)      \
+    X(depth, "depth", SSG_T_SCALAR,                                                        \
+      "linear depth the points are reconstructed from; none = -position.z", .optional = 1)
+
+/* prepare() of the horizon nodes (hbao, gtao): the camera as `gbuffer`'s size sees it
+ * (ssg_sampling_projection, whose error it returns), *invf = 1 / f for both backends, and
+ * the column basis e1 for its width (ssg_sampling_column_basis). */
+enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
+                                        const struct ssg_shape *gbuffer,
+                                        struct ssg_projection *proj, float *invf, float *e1);
+
+/* The azimuth tables of the horizon nodes: co[k], si[k] = cos, sin of turn k / n for
+ * k < n, in double rounded to float (turn 2 pi: hbao's directions round the circle; pi:
+ * gtao's slices over the half circle). */
+void ssg_sampling_angles(int n, double turn, float *co, float *si);
 
 /* The depth plane of the horizon nodes' CPU kernels (hbao, gtao), padded by one pixel:
  * rows [y0, y1) of the w-wide `depth` (times sign) into rows y0 + 1 .. of `padded`
@@ -83,7 +121,9 @@ static inline void ssg_sampling_normalize(int len, float *restrict nx, float *re
  * +z, dp = 1) whose result the caller replaces. Normals are unit by the frame conventions
  * (node.h); the rare chunk holding one that is not gets a scalar pass, so the common case
  * stays a vector loop (sqrtf does not vectorise while it may set errno). Positions load
- * unconditionally: a load under a condition would stop vectorising. */
+ * unconditionally (a load under a condition would stop vectorising), in a loop of their
+ * own that pos NULL leaves out: a kernel that rebuilds its points from the depth (hbao)
+ * passes NULL for pos and px, py, pz. */
 static inline __attribute__((always_inline)) void
 ssg_sampling_load(const float *const pos[3], const float *const nrm[3], const float *depth,
                   float sign, size_t o, int len, int32_t *restrict fg, float *restrict nx,
@@ -92,8 +132,7 @@ ssg_sampling_load(const float *const pos[3], const float *const nrm[3], const fl
 {
     const float *restrict dpl = depth + o;
     const float *restrict nx0 = nrm[0] + o, *restrict ny0 = nrm[1] + o;
-    const float *restrict nz0 = nrm[2] + o, *restrict px0 = pos[0] + o;
-    const float *restrict py0 = pos[1] + o, *restrict pz0 = pos[2] + o;
+    const float *restrict nz0 = nrm[2] + o;
     int not_unit = 0;
     for (int i = 0; i < len; i++) {
         float x = nx0[i], y = ny0[i], z = nz0[i];
@@ -106,9 +145,15 @@ ssg_sampling_load(const float *const pos[3], const float *const nrm[3], const fl
         ny[i] = f ? y : 0.0f;
         nz[i] = f ? z : 1.0f;
         dp[i] = f ? d : 1.0f;
-        px[i] = px0[i];
-        py[i] = py0[i];
-        pz[i] = pz0[i];
+    }
+    if (pos) {
+        const float *restrict px0 = pos[0] + o, *restrict py0 = pos[1] + o;
+        const float *restrict pz0 = pos[2] + o;
+        for (int i = 0; i < len; i++) {
+            px[i] = px0[i];
+            py[i] = py0[i];
+            pz[i] = pz0[i];
+        }
     }
     if (not_unit)
         ssg_sampling_normalize(len, nx, ny, nz);

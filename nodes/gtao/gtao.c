@@ -1,82 +1,5 @@
-/* gtao.c - the `gtao` node: ground-truth ambient occlusion.
- *
- * Method: Jimenez, Wu, Pesce and Jarabo, "Practical Realtime Strategies for Accurate
- * Indirect Occlusion" (SIGGRAPH 2016 course; Activision tech. report ATVI-TR-16-01),
- * sec. 4: the cosine-weighted visibility
- *   V = (1 / pi) int_0^pi int_{h1(phi)}^{h2(phi)} cos(theta - n) |sin theta| dtheta dphi
- * is split into slices phi about the view vector V; within a slice, theta is the angle
- * from V, h1 <= 0 <= h2 the horizons on either side and n the angle of the normal
- * projected on the slice, whose length |proj N| weighs the slice. The inner integral is
- * closed form (sec. 4, "analytic inner integral"):
- *   a(h1, h2, n) = 1/4 (-cos(2 h1 - n) + cos n + 2 h1 sin n)
- *                + 1/4 (-cos(2 h2 - n) + cos n + 2 h2 sin n),
- * and the horizons are clamped to the hemisphere of the normal, h1 >= n - pi/2,
- * h2 <= n + pi/2 (sec. 4.1). Sample points come from the depth buffer (a height field);
- * sec. 4.3 "bounding the sampling area": only samples within `radius` R count, with a
- * linear fade over the last `falloff` R (XeGTAO's falloff range: the sample's horizon
- * cosine is blended towards the lowest one, cos(n -/+ pi/2), by its weight); sec. 4.3
- * "height-field assumption considerations": with `thickness` t > 0 a sample within reach
- * (weight > 0) lower than the horizon so far pulls it down, h <- h + t (sample - h) in
- * cosines (samples out of reach do not: that darkened every scene), so the horizon
- * recovers behind a thin occluder (t = 0: every depth sample is an infinitely thick
- * height field). This is the cosine-weighted, distance-limited visibility of
- * docs/analytic.md (1 = open) that reference_ao estimates by ray tracing.
- *
- * Geometry (view space, node.h) as in hbao.c: P the pixel's point, V = -P / |P|,
- * e1 = normalize(y x V) (per column, made here), e2 = V x e1; slice k has the direction
- * D = cos phi e1 + sin phi e2, phi = pi k / slices + psi (psi the rotation tile's angle
- * at (x mod n, y mod n); slices cover the half circle, each marched both ways),
- * M = V x D its plane's normal. The slice plane projects to the screen line through the
- * pixel along (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)); step j = 0..steps-1 lies at
- * (j + u) f R / (den steps) (su, sv) px, den = max(depth - R, depth / 2), capped by
- * max_screen_radius, rounded to the nearest pixel (ties to even), both ways: hbao.c shows
- * this reaches every point of the slice within R. u in (0, 1] is the step jitter,
- * 1 - Jimenez's interleaved gradient noise at the pixel ("Next Generation Post
- * Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014), computed by the same
- * float operations on both backends. A sample at pixel q gives Q from the depth at q
- * and H = Q - P; the rounding moves it up to half a pixel off the slice, and it is brought
- * back along the tangent plane (hbao_cpu.c place_step), so that a sample of P's own
- * plane lands exactly on the slice's tangent. Samples more off the slice than along it,
- * off screen or on background are skipped. The sample's horizon cosine is H'.V / |H'|;
- * its distance for the falloff is |H|.
- *
- * Normalisation (ours): with few slices the paper's mean of |proj N| a over slices is
- * not exactly 1 on an open tilted plane (it is 1 only in the limit of many slices). The
- * node divides the sum of |proj N| a by the sum of the same terms with the horizons at
- * the hemisphere's limits (the open value of each slice), which has the same limit, is
- * exactly 1 where nothing occludes (the same float operations on the same values) and
- * removes the per-pixel error of the slice quadrature from open regions.
- * Bent normal: the visibility-weighted mean direction of each slice (XeGTAO's closed
- * form, t0 D + t1 V weighted by |proj N|), summed and normalised; background 0.
- * out = clamp(ratio, 0, 1)^power; background pixels (depth 0 or no normal) get 1. Slices
- * within asin(0.1) of the tangent plane (|proj N|^2 < 0.01, near-grazing views) are
- * skipped, as in hbao.
- * Second depth layer (ours; `back` connected, e.g. gbuffer.back, +inf = nothing behind;
- * measured against reference_ao in docs/accuracy.md, "A second depth layer"):
- * a sample at pixel q stands for the solid segment of q's camera ray from its depth to
- * its back depth, and occludes exactly the directions from P that pass through that
- * segment: in the slice, the arc between its front point Q and its back point B (B on
- * q's ray; the cosine B.V / |B| <= Q's since angles from V grow along a ray away from the
- * eye), B taken no farther than where q's ray leaves the sphere of radius R about P
- * (occluders beyond R do not count, as in reference_ao), and +inf (a single-sided wall,
- * a floor) solid down to the hemisphere's limit, the height-field assumption. A side
- * keeps one occluded arc, the smallest that holds the arcs of all its samples that rise
- * above the tangent plane: from the highest front point (the horizon as before) down to
- * the lowest bottom, so a gap under a thin occluder (the floor under a table top) stays
- * open, while the gaps between occluders of one side are filled. Where the side's
- * previous sample (P itself for the first) lies no more than 0.3 R behind the sample's
- * back, the surface is taken to run on from it (a slanted face seen at a grazing angle,
- * whose depth changes faster between samples than its thickness) and the arc reaches
- * down to that sample. Visible = side(top) + side(lim) - side(bottom), each side's term
- * the closed form above (and its bent-normal terms alike); a bottom at the tangent plane
- * leaves exactly the horizon result, and back = +inf everywhere is gtao without back.
- * The `thickness` heuristic is the guess that back replaces: the two are refused
- * together.
- * Evaluation (both backends, gtao_cpu.c): the sample formulas are folded into per-step
- * coefficients affine in the sample's depth; acos is Abramowitz and Stegun's polynomial
- * 4.4.46 (|error| <= 2e-8), n = pi/2 - acos(sin n), and the terms in 2h - n, 3h - n,
- * h -/+ n come from cos h, sin h by the angle-sum formulas; with the defaults (no falloff,
- * no thickness) a side keeps its highest sample and takes one root per slice. */
+/* gtao.c - the `gtao` node's descriptor, check and prepare: ground-truth ambient
+ * occlusion. Method, geometry and sources: README.md in this folder. */
 #include <math.h>
 #include <stdio.h>
 
@@ -87,117 +10,59 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    const struct ssg_shape *pos = &in[SSG_GTAO_IN_POSITION], *nrm = &in[SSG_GTAO_IN_NORMAL];
-    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
-        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
-        return SSG_E_SIZE;
-    }
-    enum ssg_err e = ssg_sampling_check_inputs(pos, NULL, &in[SSG_GTAO_IN_ROTATION],
-                                               &in[SSG_GTAO_IN_DEPTH], NULL, why, why_len);
+    const struct ssg_shape *pos = &in[SSG_GTAO_IN_POSITION], *back = &in[SSG_GTAO_IN_BACK];
+    enum ssg_err e = ssg_sampling_check_ao(pos, &in[SSG_GTAO_IN_NORMAL], NULL,
+                                           &in[SSG_GTAO_IN_ROTATION], &in[SSG_GTAO_IN_DEPTH],
+                                           NULL, out, why, why_len);
     if (e)
         return e;
-    const struct ssg_shape *back = &in[SSG_GTAO_IN_BACK];
     if (back->channels != 0 && (back->channels != 1 || !ssg_shape_same_size(back, pos))) {
         snprintf(why, why_len, "back must be a 1-channel image the size of position");
         return SSG_E_SIZE;
     }
-    const struct ssg_gtao_params *q = params;
-    if (back->channels != 0 && q && q->thickness > 0) {
+    if (back->channels != 0 && ((const struct ssg_gtao_params *)params)->thickness > 0) {
         snprintf(why, why_len, "thickness (a guess at how thick occluders are) and back "
                  "(how thick they are) answer one question: give one");
         return SSG_E_VALUE;
     }
-    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
-    out[SSG_GTAO_OUT_OUT] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
     out[SSG_GTAO_OUT_BENT_NORMAL] =
         (struct ssg_shape){pos->width, pos->height, 3, SSG_T_VECTOR};
     return SSG_OK;
 }
 
+/* The consts with e1 for the G-buffer's columns. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    return sizeof(struct ssg_gtao_consts) + 2 * (size_t)in[SSG_GTAO_IN_POSITION].width *
+                                                sizeof(float);
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_gtao_consts *c = consts;
-    c->p = *(const struct ssg_gtao_params *)params;
     const struct ssg_gtao_params *q = &c->p;
-    /* prepare() may be reached without the table's range checks (a hand-built run). */
-    if (!(q->radius > 0) || q->slices < 1 || q->slices > SSG_GTAO_MAX_SLICES ||
-        q->steps < 1 || q->steps > SSG_GTAO_MAX_STEPS || !(q->falloff >= 0) ||
-        !(q->falloff <= 1) || !(q->thickness >= 0) || !(q->thickness < 1) ||
-        !(q->power > 0) || !(q->max_screen_radius >= 0))
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, 1..%d slices, 1..%d "
-                             "steps, falloff in [0, 1], thickness in [0, 1), power > 0",
-                             SSG_GTAO_MAX_SLICES, SSG_GTAO_MAX_STEPS);
-    const struct ssg_shape *pos = &ctx->in_shape[SSG_GTAO_IN_POSITION];
-    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    if (e)
-        return e;
-    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
+    c->p = *(const struct ssg_gtao_params *)params;
+    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_GTAO_IN_POSITION],
+                                                &c->proj, &c->invf, c->e1);
     /* XeGTAO's fade: w = 1 up to (1 - falloff) R, 0 at R: w = r mul + add. */
     float range = q->falloff * q->radius;
     c->fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
     c->fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
     c->link = SSG_GTAO_BACK_LINK * q->radius;
-    for (int k = 0; k < q->slices; k++) {
-        double a = M_PI * k / q->slices;
-        c->slice_cos[k] = (float)cos(a);
-        c->slice_sin[k] = (float)sin(a);
-    }
-    return SSG_OK;
+    ssg_sampling_angles(q->slices, M_PI, c->slice_cos, c->slice_sin);
+    return e;
 }
 
-static const struct ssg_param_desc params[] = {
-    {.name = "slices", SSG_FIELD_INT(struct ssg_gtao_params, slices), .def = 8, .min = 1,
-     .max = SSG_GTAO_MAX_SLICES,
-     .help = "slice directions per pixel over the half circle about the view vector, "
-             "each marched both ways (turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_gtao_params, steps), .def = 12, .min = 1,
-     .max = SSG_GTAO_MAX_STEPS, .help = "depth samples on each side of a slice"},
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_gtao_params, radius), .def = 0.5,
-     .min = 1e-6, .max = 1e6, .unit = "scene units",
-     .help = "R: samples farther than this from the pixel are ignored"},
-    {.name = "falloff", SSG_FIELD_FLOAT(struct ssg_gtao_params, falloff), .def = 0, .min = 0,
-     .max = 1, .help = "fraction of R over which a sample's weight fades to 0 at R; "
-                       "0 = hard cutoff (reference_ao's distance limit)"},
-    {.name = "thickness", SSG_FIELD_FLOAT(struct ssg_gtao_params, thickness), .def = 0,
-     .min = 0, .max = 0.99,
-     .help = "thin-occluder heuristic: how far a sample below the horizon pulls it "
-             "down; 0 = depth samples are an infinitely thick height field"},
-    {.name = "power", SSG_FIELD_FLOAT(struct ssg_gtao_params, power), .def = 1, .min = 0.1,
-     .max = 8, .help = "out = visibility^power"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_gtao_params, max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
-};
+SSG_PARAMS_TABLE(params, ssg_gtao_params, SSG_GTAO_PARAMS);
 
-static const struct ssg_port_desc inputs[] = {
-    [SSG_GTAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position (its -z is the depth unless depth is given)"},
-    [SSG_GTAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal"},
-    [SSG_GTAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = fixed slices"},
-    [SSG_GTAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    [SSG_GTAO_IN_BACK] = {.name = "back", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "depth of the next surface behind each pixel's (gbuffer.back, +inf = none): "
-            "a sample occludes only between its depth and this; none = infinitely thick"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_GTAO_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_GTAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
-     .doc = "cosine-weighted visibility within radius, 1 = unoccluded"},
-    [SSG_GTAO_OUT_BENT_NORMAL] = {.name = "bent_normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space mean unoccluded direction; background 0"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_GTAO_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(inputs, SSG_GTAO_IN);
+SSG_PORT_TABLE(outputs, SSG_GTAO_OUT);
 
 /* Flops per pixel (node.h), by reading gtao_cpu.c: per slice about 70 (its frame and the
    arc integral's polynomials), per step of each side about 22, about 40 per pixel. */
 static double gtao_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_gtao_consts *c = consts;
-    (void)in;
     return 40.0 + c->p.slices * (70.0 + 2.0 * 22.0 * c->p.steps);
 }
 
@@ -209,31 +74,9 @@ const struct ssg_node_desc ssg_node_gtao = {
               "two horizons per slice clamped to the normal's hemisphere, the analytic "
               "cosine-weighted inner integral weighted by the projected normal's length; "
               "sec. 4.3 distance falloff and thickness heuristic",
-    .doc = "For each pixel, `slices` slice directions over the half circle about the view "
-           "vector (turned by the rotation tile) are marched on screen both ways with "
-           "`steps` depth samples each, far enough to reach every point of the slice "
-           "within `radius`. Each side keeps its horizon (the highest sample within "
-           "`radius`, faded over the last `falloff` of it; with `thickness` > 0 a lower "
-           "sample pulls the horizon down), clamped to the normal's hemisphere. The "
-           "closed-form cosine-weighted integral between the two horizons, weighted by "
-           "the length of the normal projected on the slice, is summed over slices and "
-           "divided by the same sum with open horizons, so an open surface is exactly 1. "
-           "out = clamp(that, 0, 1)^power; background pixels are 1. With `back` (the depth "
-           "of the next surface behind each pixel, gbuffer.back) a sample occludes only "
-           "the directions through its real thickness, between its front and its back "
-           "point (the back clipped to `radius`; +inf = solid, the height-field "
-           "assumption): a side keeps the arc from its highest front point down to the "
-           "lowest back point of the samples that rise above the tangent plane (down to "
-           "the previous sample where the surface runs on from it), and the visible part "
-           "is the rest of the side, so the floor under a thin table top sees past it "
-           "(thickness must then be 0). bent_normal is the "
-           "normalised visibility-weighted mean direction (background 0). CPU and GL "
-           "agree within 2e-4 on both outputs (tests/test_gl_gtao.c; both evaluate the "
-           "same operations, acos as a polynomial, so only sqrt, division and pow may "
-           "round differently).",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gtao_params),
-    .consts_size = sizeof(struct ssg_gtao_consts),
+    .consts_size_of = consts_size_of,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = gtao_flops,

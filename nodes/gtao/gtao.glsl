@@ -1,4 +1,4 @@
-// gtao.glsl - the `gtao` node on GL (method and geometry in gtao.c): one invocation per
+// gtao.glsl - the `gtao` node on GL (method and geometry in README.md): one invocation per
 // pixel, gtao_cpu.c's operations in its order for one lane of its chunk (`precise`: no
 // multiply-add fused where the CPU rounds twice): slices in order, per step the +D sample
 // then the -D one, the same folded sample formulas and polynomial acos. Only sqrt,
@@ -12,17 +12,11 @@ layout(std430, binding = 0) readonly buffer Columns {
 uniform sampler2DArray normal;
 uniform sampler2DArray back; // the depth of the next surface behind, when back_bound
 uniform bool back_bound;
-layout(r32f) uniform writeonly image2DArray dst;
-layout(r32f) uniform writeonly image2DArray bent;
+layout(r32f) uniform writeonly image2DArray dst_out;
+layout(r32f) uniform writeonly image2DArray dst_bent_normal;
 
-// The parameters (ssg_gl_params: p_<name>) and what prepare() derived from them.
-uniform int p_slices;            // 1..32
-uniform int p_steps;             // 1..64
-uniform float p_radius;          // R
-uniform float p_falloff;         // fraction of R faded (0 = hard cutoff)
-uniform float p_thickness;
-uniform float p_power;
-uniform float p_max_screen_radius; // px (0 = no cap)
+// The parameters (#pragma ssg_params: p_<field>) and what prepare() derived from them.
+#pragma ssg_params
 uniform float fall_mul, fall_add;
 uniform float link;        // with back: prepare()'s link distance (gtao.c)
 uniform float invf;        // 1 / f
@@ -283,8 +277,8 @@ void main()
     g_dp = ssg_scene_depth(p);
     vec3 N = ssg_load3(normal, p);
     if (!ssg_surface_normal(g_dp, N)) { // background or garbage: 1, no bent normal
-        SSG_STORE1(dst, p, 1.0);
-        SSG_STORE3(bent, p, vec3(0.0));
+        SSG_STORE1(dst_out, p, 1.0);
+        SSG_STORE3(dst_bent_normal, p, vec3(0.0));
         return;
     }
     g_n = N;
@@ -296,8 +290,8 @@ void main()
     precise float v = open > 0.0 ? vis / open : 1.0;
     v = v > 0.0 ? v : 0.0;
     v = v < 1.0 ? v : 1.0;
-    SSG_STORE1(dst, p, p_power == 1.0 ? v : pow(v, p_power));
+    SSG_STORE1(dst_out, p, p_power == 1.0 ? v : pow(v, p_power));
     precise float bl = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
     precise float ib = bl > 0.0 ? 1.0 / bl : 0.0;
-    SSG_STORE3(bent, p, bl > 0.0 ? vec3(b.x * ib, b.y * ib, b.z * ib) : N);
+    SSG_STORE3(dst_bent_normal, p, bl > 0.0 ? vec3(b.x * ib, b.y * ib, b.z * ib) : N);
 }

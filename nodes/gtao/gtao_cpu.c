@@ -1,4 +1,4 @@
-/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in gtao.c).
+/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in README.md).
  *
  * Layout for speed, as in hbao_cpu.c: a row is cut into chunks of CHUNK pixels held in
  * structure-of-arrays scratch; per chunk, what depends on the pixel only (V, the basis,
@@ -17,7 +17,7 @@
  *   H.V = dq (ou Vx - ov Vy) / f - L (dq - dp),  H.D = dq (ou Dx - ov Dy) / f,
  *   H.M = dq (ou Mx - ov My) / f          (L = |P| / dp, V.D = V.M = 0),
  * all affine in dq; so are the components of H' (the sample brought back onto the slice
- * along the tangent plane, gtao.c): H'.V = dq a + L dp, sg H'.D = dq b. |H|^2 =
+ * along the tangent plane, README.md): H'.V = dq a + L dp, sg H'.D = dq b. |H|^2 =
  * (H.V)^2 + dq^2 ((H.D)^2 + (H.M)^2) / dq^2 (V, D, M orthonormal). The sample counts when
  * sg H'.D > |H.M|, i.e. b > |c| (dq > 0). The horizon cosine is H'.V / |H'|.
  * The slice's terms use no trigonometry but one acos per slice (its normal angle n =
@@ -41,11 +41,11 @@
 
 enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 
-/* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao.c). */
+/* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (README.md). */
 #define SLICE_MIN 0.01f
 #define HALF_PI 1.57079632679489661923f
 /* A side's horizon cosine within this of its lowest counts as no horizon: samples of P's
-   own plane land on the tangent only up to float rounding (gtao.c). */
+   own plane land on the tangent only up to float rounding (README.md). */
 #define OPEN_EPS 1e-5f
 
 struct job {
@@ -57,7 +57,7 @@ struct job {
     int n;                        /* tile side */
     float *padded;                /* the depth padded by +inf (ssg_sampling_pad_depth) */
     const float *back;            /* the back input's plane; NULL = unconnected */
-    float *padded_back;           /* back padded likewise (gtao.c); NULL = unconnected */
+    float *padded_back;           /* back padded likewise (README.md); NULL = unconnected */
     int pw;                       /* w + 2 */
     float *out, *bent;            /* outputs; bent: three planes */
     int w, h;
@@ -114,12 +114,12 @@ static inline __attribute__((always_inline)) float step_jitter(float x, float y)
     return 1.0f - ssg_ign(x, y);
 }
 
-/* What depends on the pixel only: V, e2 = V x e1, V.N, the march length (gtao.c). */
+/* What depends on the pixel only: V, e2 = V x e1, V.N, the march length (README.md). */
 static inline __attribute__((always_inline)) void
 setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
     const struct ssg_gtao_consts *c = j->c;
-    const float invf = 1.0f / c->proj.f, radius = c->p.radius, f = c->proj.f;
+    const float invf = c->invf, radius = c->p.radius, f = c->proj.f;
     const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
     const float av = -(yf + 0.5f - c->proj.cy) * invf;
     for (int i = 0; i < len; i++) {
@@ -144,7 +144,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
         k->e1n[i] = e1x * nx + e1z * nz;
         k->e2n[i] = e2x * nx + e2y * ny + e2z * nz;
         k->vn[i] = vn > 1e-6f ? vn : 1e-6f;
-        /* f R / den reaches every point of the slice within R (gtao.c). */
+        /* f R / den reaches every point of the slice within R (README.md). */
         float near = dp - radius, half = 0.5f * dp;
         float rp = f * radius / (near > half ? near : half);
         rp = cap > 0.0f && rp > cap ? cap : rp;
@@ -162,7 +162,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
 {
-    const float invf = 1.0f / j->c->proj.f;
+    const float invf = j->c->invf;
     for (int i = 0; i < len; i++) {
         float cs = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
         float dx = cs * k->e1x[i] + s * k->e2[0][i], dy = s * k->e2[1][i];
@@ -248,7 +248,7 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
     return up ? shc : thin ? pulled : hc;
 }
 
-/* One sample of one side with the back input (gtao.c): it occludes the arc between its
+/* One sample of one side with the back input (README.md): it occludes the arc between its
    front point and its back point, the latter no farther than where the pixel's ray leaves
    the sphere of radius R about P (the larger root d of (d r + L dp)^2 + d^2 e = R^2), both
    faded towards the lowest by its weight; nothing behind (+inf) is solid down to the
@@ -354,7 +354,7 @@ static inline __attribute__((always_inline)) void fast_horizons(struct chunk *re
 
 /* One side of a slice (sg = 1: +D, h2; sg = -1: -D, h1): its horizon angle h from V, half
    the inner integral 1/4 (cos n + 2 h sin n - cos(2 h - n)), and its share of the bent
-   normal's t0 and t1 (gtao.c). A side without a horizon lies at the hemisphere's limit
+   normal's t0 and t1 (README.md). A side without a horizon lies at the hemisphere's limit
    h = n + sg pi/2, where every term is algebraic in cos n, sin n (cos(2 h - n) = -cos n,
    sin(h - n) = sg, sin(3 h - n) = -sg cos 2n, sin(h + n) = sg cos 2n, cos(3 h - n) =
    sg sin 2n, cos(h + n) = -sg sin 2n): exactly the open value. Otherwise h = sg acos hc,
@@ -387,7 +387,7 @@ side_arc(float hc, float low, float sg, float n, float cn, float sn)
     return (struct arc){open ? o.a : g.a, open ? o.t0 : g.t0, open ? o.t1 : g.t1};
 }
 
-/* With back, a side's occluded arc runs from its top hc down to its bottom bot (gtao.c):
+/* With back, a side's occluded arc runs from its top hc down to its bottom bot (README.md):
    what is visible is the side up to hc plus the arc from bot to the hemisphere's limit,
    side(hc) + open - side(bot), each term the side's integral from 0 plus one constant.
    A bottom at (or below) the tangent plane gives open - open = 0: the plain horizon. */

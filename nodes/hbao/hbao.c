@@ -1,80 +1,6 @@
-/* hbao.c - the `hbao` node: horizon-based screen-space ambient occlusion.
- *
- * Method: Bavoil, Sainz and Dimitrov, "Image-Space Horizon-Based Ambient Occlusion"
- * (SIGGRAPH 2008 talk), as described by Belonogov, "Global Illumination methods in
- * simulated VR environments", section 3.3.1, eq. 3.1 and 3.2:
- *   A = 1 - 1/(2 pi) int_{-pi}^{pi} (sin h(theta) - sin t(theta)) W(theta) dtheta,
- * theta the azimuth about the view vector, t the signed elevation of the surface tangent,
- * h the elevation of the horizon (the highest point of the depth buffer, seen as a height
- * field, within R), W = max(0, 1 - r / R), r the distance from P to the horizon point.
- * The integral is estimated with `directions` azimuths per pixel, each ray-marched with
- * `steps` depth samples: as section 3.3.1 describes, a sample higher than the highest so
- * far raises the horizon and adds its own term, "every individual ambient occlusion
- * factors for each sample are accumulated": (sin h_j - sin h_{j-1}) W(r_j), from
- * h_0 = t + bias; lower samples are skipped. With falloff = none (W = 1 within R) the
- * terms telescope to eq. 3.2's sin h - sin t for the highest sample within R.
- * The azimuths are turned per pixel by the tiled rotation pattern (section 3.3.1: HBAO
- * inherits SSAO's rotation noise, removed by a blur afterwards).
- *
- * Geometry (view space, node.h). P is the pixel's point, V = -P / |P| the unit vector to
- * the eye. Azimuths are uniform about V: D(theta) = cos theta e1 + sin theta e2 with
- * e1 = normalize(y x V) (horizontal) and e2 = V x e1, theta_k = 2 pi k / directions + psi,
- * psi the pattern's angle at (x mod n, y mod n) (0 without a pattern). The plane through
- * the eye spanned by V and D projects to one screen line through the pixel, along
- * J D (J the projection's Jacobian at P), so marching that line visits exactly the
- * points of the slice: the sampled occluders and the angles of eq. 3.2 live in one plane.
- * A sample at pixel q gives Q, reconstructed from the depth at q and the camera (as HBAO
- * reconstructs from the depth buffer; P likewise, so a sample on P's own pixel gives
- * Q = P exactly), and H = Q - P. Rounding to pixel centres moves samples off the line by
- * up to half a pixel; H is brought back onto the slice along the tangent plane (not
- * orthogonally, see hbao_cpu.c place_step), giving H', and sin h = H'.V / r,
- * r = |H'| = sqrt((H'.V)^2 + (H'.D)^2). The tangent of the slice is the direction in it
- * perpendicular to the normal N: sin t = -(D.N) / sqrt((V.N)^2 + (D.N)^2). Any sample of
- * the tangent plane thus has h = t up to float rounding, whatever the rounding to
- * pixels: a flat plane gives exactly 1 once bias exceeds float rounding. Samples the
- * rounding moved more off the slice than along it are skipped, and so are slices within
- * 6 degrees of the tangent plane (V.N < 0.1, near-grazing views), where the tangent line
- * is ill-conditioned.
- * Because the slices are uniform in azimuth about V and cos(alpha) dalpha dtheta in
- * eq. 3.1 is the solid angle, with falloff = none and many directions and steps the node
- * tends to 1 - (solid angle above the tangent plane occluded within R) / (2 pi) when the
- * occluders are height fields: uniform weighting, not cosine weighting. For a floor at
- * distance a from an infinite wall that is (1 + a/R) / 2 for a < R (tests/test_hbao.c
- * derives it), where the cosine-weighted docs/analytic.md case 3 gives
- * 1 - (acos c - c sqrt(1 - c^2)) / pi, c = a/R: both 1/2 at the edge, both 1 at a >= R,
- * the uniform weighting darker in between (0.8 against 0.858 at c = 0.6).
- *
- * March: step j = 0..steps-1 lies at (j + u) step (su, sv) px from P's pixel, rounded to
- * the nearest pixel (ties to even), where (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)) is the
- * screen direction of D scaled so that a displacement beta D at depth d' moves the image
- * by f beta |(su, sv)| / (d' - beta Dz) px, and step = f R / (den steps),
- * den = max(depth - R, depth / 2). A point of the slice within R of P has depth at least
- * depth - R, so it lies within f R |(su, sv)| / (depth - R) px of P's pixel: the march
- * covers every point of the slice within R unless the camera is nearly inside the
- * sphere (depth < 2 R, where den is floored); max_screen_radius > 0 caps f R / den.
- * u in (0, 1] is the step jitter: 1 without a pattern, else 1 - frac(phi / 2 pi), phi
- * the pattern's angle half a tile away ((x + n/2) mod n, (y + n/2) mod n), so direction
- * and step jitter come from different cells. Samples off screen, on background
- * (depth 0) or beyond R (r > R) are skipped. The horizon starts at t + bias (Bavoil's
- * angle bias against the self-occlusion of tessellated or noisy surfaces; 0.1 rad ~
- * 5.7 degrees; t + bias beyond pi/2 means no occlusion in that slice).
- * out = clamp(1 - strength * mean over directions of the accumulated terms, 0, 1);
- * background pixels (depth 0 or no normal) get 1.
- *
- * Per-pixel counts (optional `count` input; Szentandrasi section 4.3, the `complexity`
- * node): hbao has no sample kernel, so the count is the number of DIRECTIONS pixel i uses:
- * n_i = round(count_i) (half up) clamped to [1, directions] (NaN = all), and the mean is
- * over those n_i. The directions are taken in an order whose prefixes spread round the
- * circle: with an even number the opposite pairs (k, k + directions/2) stay together
- * (ranks 2r, 2r + 1) and the pairs are ordered by farthest-point insertion on the half
- * circle (each next pair the one farthest in angle from those before, ties to the
- * lowest k); with an odd number the directions themselves are ordered so on the full
- * circle. For directions = 2^m every prefix of 2^j directions is exactly the set of
- * directions = 2^j (angles 2 pi k / 2^j, summed in the same order): counts 1, 2, 4, 8 of
- * 8 directions give the bits of directions = 1, 2, 4, 8. Other counts use a prefix that is
- * as even as the order allows (3 of 8: 0, 180 and 90 degrees). Unconnected: all. */
+/* hbao.c - the `hbao` node's descriptor, check and prepare (with the directions' count
+ * order): horizon-based ambient occlusion. Method, geometry and sources: README.md here. */
 #include <math.h>
-#include <stdio.h>
 
 #include "common/sampling.h"
 #include "hbao.h"
@@ -125,97 +51,42 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    const struct ssg_shape *pos = &in[SSG_HBAO_IN_POSITION], *nrm = &in[SSG_HBAO_IN_NORMAL];
-    const struct ssg_shape *rot = &in[SSG_HBAO_IN_ROTATION], *dep = &in[SSG_HBAO_IN_DEPTH];
-    if (pos->channels != 3 || nrm->channels != 3 || !ssg_shape_same_size(pos, nrm)) {
-        snprintf(why, why_len, "position and normal must be 3-channel images of one size");
-        return SSG_E_SIZE;
-    }
-    enum ssg_err e = ssg_sampling_check_inputs(pos, NULL, rot, dep, &in[SSG_HBAO_IN_COUNT],
-                                               why, why_len);
-    if (e)
-        return e;
-    /* Runs at the G-buffer's resolution, which may be a subsampled frame. */
-    out[0] = (struct ssg_shape){pos->width, pos->height, 1, SSG_T_SCALAR};
-    return SSG_OK;
+    return ssg_sampling_check_ao(&in[SSG_HBAO_IN_POSITION], &in[SSG_HBAO_IN_NORMAL], NULL,
+                                 &in[SSG_HBAO_IN_ROTATION], &in[SSG_HBAO_IN_DEPTH],
+                                 &in[SSG_HBAO_IN_COUNT], out, why, why_len);
+}
+
+/* The consts with e1 for the G-buffer's columns. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    return sizeof(struct ssg_hbao_consts) + 2 * (size_t)in[SSG_HBAO_IN_POSITION].width *
+                                                sizeof(float);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_hbao_consts *c = consts;
+    const struct ssg_hbao_params *q = &c->p;
     c->p = *(const struct ssg_hbao_params *)params;
-    /* prepare() may be reached without the table's range checks (a hand-built run):
-       never index past the fixed arrays. */
-    if (!(c->p.radius > 0) || c->p.directions < 1 ||
-        c->p.directions > SSG_HBAO_MAX_DIRECTIONS || c->p.steps < 1 ||
-        c->p.steps > SSG_HBAO_MAX_STEPS || !(c->p.bias >= 0) || !(c->p.strength >= 0) ||
-        !(c->p.max_screen_radius >= 0))
-        return ssg_node_fail(ctx, SSG_E_VALUE, "needs radius > 0, 1..%d directions, 1..%d "
-                             "steps, bias and strength >= 0", SSG_HBAO_MAX_DIRECTIONS,
-                             SSG_HBAO_MAX_STEPS);
-    const struct ssg_shape *pos = &ctx->in_shape[SSG_HBAO_IN_POSITION];
-    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
-    if (e)
-        return e;
-    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
-    c->cos_bias = (float)cos(c->p.bias);
-    c->sin_bias = (float)sin(c->p.bias);
-    for (int k = 0; k < c->p.directions; k++) {
-        double a = 2.0 * M_PI * k / c->p.directions;
-        c->dir_cos[k] = (float)cos(a);
-        c->dir_sin[k] = (float)sin(a);
-    }
-    rank_directions(c->p.directions, c->dir_rank);
-    return SSG_OK;
+    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
+                                                &c->proj, &c->invf, c->e1);
+    c->rf = c->proj.f * q->radius;
+    c->r2 = q->radius * q->radius;
+    c->inv_radius = 1.0f / q->radius;
+    c->inv_steps = 1.0f / (float)q->steps;
+    c->scale = q->strength / (float)q->directions;
+    c->cos_bias = (float)cos(q->bias);
+    c->sin_bias = (float)sin(q->bias);
+    ssg_sampling_angles(q->directions, 2.0 * M_PI, c->dir_cos, c->dir_sin);
+    rank_directions(q->directions, c->dir_rank);
+    return e;
 }
 
-static const char *const falloff_choices[] = {"linear", "none", NULL};
+static const char *const ssg_hbao_falloff_choices[] = {"linear", "none", NULL};
+SSG_PARAMS_TABLE(params, ssg_hbao_params, SSG_HBAO_PARAMS);
 
-static const struct ssg_param_desc params[] = {
-    {.name = "directions", SSG_FIELD_INT(struct ssg_hbao_params, directions), .def = 8,
-     .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS,
-     .help = "azimuths per pixel (uniform about the view "
-             "vector, turned by the rotation pattern)"},
-    {.name = "steps", SSG_FIELD_INT(struct ssg_hbao_params, steps), .def = 6, .min = 1,
-     .max = SSG_HBAO_MAX_STEPS, .help = "depth samples marched along each direction"},
-    {.name = "radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, radius), .def = 0.5, .min = 1e-6,
-     .max = 1e6, .unit = "scene units",
-     .help = "R: occluders farther than this from the pixel are ignored"},
-    {.name = "bias", SSG_FIELD_FLOAT(struct ssg_hbao_params, bias), .def = 0.25, .min = 0,
-     .max = 1.5, .unit = "radians",
-     .help = "tangent-angle bias against self occlusion (0.25 rad ~ 14 degrees; Bavoil's "
-             "0.1 lets tessellation and pixel steps read as occlusion)"},
-    {.name = "strength", SSG_FIELD_FLOAT(struct ssg_hbao_params, strength), .def = 1.25, .min = 0,
-     .max = 16, .help = "out = 1 - strength * occlusion, clamped to [0, 1] (default 1.25 "
-                        "with bias 0.25: the lowest mean error against reference_ao)"},
-    {.name = "falloff", SSG_FIELD_ENUM(struct ssg_hbao_params, falloff),
-     .def = SSG_HBAO_FALLOFF_NONE, .choices = falloff_choices,
-     .help = "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1"},
-    {.name = "max_screen_radius", SSG_FIELD_FLOAT(struct ssg_hbao_params, max_screen_radius),
-     .def = 0, .min = 0, .max = 16384, .unit = "px",
-     .help = "caps the projected radius f R / (depth - R) of the march; 0 = no cap"},
-};
-
-static const struct ssg_port_desc inputs[] = {
-    [SSG_HBAO_IN_POSITION] = {.name = "position", .types = SSG_T_VECTOR,
-     .doc = "view-space position (its -z is the depth unless depth is given)"},
-    [SSG_HBAO_IN_NORMAL] = {.name = "normal", .types = SSG_T_VECTOR,
-     .doc = "unit view-space normal"},
-    [SSG_HBAO_IN_ROTATION] = {.name = "rotation", .types = SSG_T_PATTERN, .optional = 1,
-     .doc = "per-pixel rotation tile (halton.rotation); none = fixed directions"},
-    [SSG_HBAO_IN_DEPTH] = {.name = "depth", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "linear depth the points are reconstructed from; none = -position.z"},
-    [SSG_HBAO_IN_COUNT] = {.name = "count", .types = SSG_T_SCALAR, .optional = 1,
-     .doc = "per-pixel number of directions (complexity.count), taken in a spread order; "
-            "none = all"},
-};
-_Static_assert(SSG_COUNT(inputs) == SSG_HBAO_INPUTS, "one entry a port enumerator");
-
-static const struct ssg_port_desc outputs[] = {
-    [SSG_HBAO_OUT_OUT] = {.name = "out", .types = SSG_T_SCALAR,
-     .doc = "visibility, 1 = unoccluded"},
-};
-_Static_assert(SSG_COUNT(outputs) == SSG_HBAO_OUTPUTS, "one entry a port enumerator");
+SSG_PORT_TABLE(inputs, SSG_HBAO_IN);
+SSG_PORT_TABLE(outputs, SSG_HBAO_OUT);
 
 /* Flops per pixel (node.h), by reading hbao_cpu.c: per direction about 20 for its step
    and tangent, per step about 25 (place, index, the horizon's tangent, falloff, max),
@@ -223,7 +94,6 @@ _Static_assert(SSG_COUNT(outputs) == SSG_HBAO_OUTPUTS, "one entry a port enumera
 static double hbao_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_hbao_consts *c = consts;
-    (void)in;
     return 40.0 + c->p.directions * (20.0 + 25.0 * c->p.steps);
 }
 
@@ -234,20 +104,9 @@ const struct ssg_node_desc ssg_node_hbao = {
               "(SIGGRAPH 2008), as in Belonogov, Global Illumination methods in simulated "
               "VR environments, sec. 3.3.1, eq. 3.1-3.2 (W = max(0, 1 - r/R), per-sample "
               "horizon terms, angle bias, rotated directions)",
-    .doc = "For each pixel, `directions` slices uniform in azimuth about the view vector "
-           "(turned by the rotation tile) are marched on screen with `steps` depth samples "
-           "each, far enough to reach every point of the slice within `radius`. Each "
-           "sample within `radius` that rises above the horizon so far (at first the "
-           "tangent's elevation t + `bias`) adds (sin h_j - sin h_{j-1}) W(r_j), W = "
-           "1 - r/R (falloff linear) or 1 (none: the slice adds sin h - sin(t + bias)). "
-           "out = clamp(1 - strength * mean over slices, 0, 1); background pixels are 1. "
-           "A flat open plane gives exactly 1. With the count input a pixel uses only its "
-           "first round(count) directions (clamped to [1, directions]) in an order whose "
-           "prefixes spread round the circle (for 8: 0, 180, 90, 270, 45, ... degrees) and "
-           "averages over those.",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_hbao_params),
-    .consts_size = sizeof(struct ssg_hbao_consts),
+    .consts_size_of = consts_size_of,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = hbao_flops,

@@ -1,4 +1,4 @@
-// hbao.glsl - the `hbao` node on GL (method and geometry in hbao.c): one invocation per
+// hbao.glsl - the `hbao` node on GL (method and geometry in README.md): one invocation per
 // pixel. The maths is hbao_cpu.c's lane by lane: the same per-pixel basis and march
 // length (setup_chunk), per-direction coefficients (setup_direction), rounded steps,
 // slice projection and horizon tests (place_step, horizon_one), the same sums in the same
@@ -15,20 +15,15 @@ layout(std430, binding = 0) readonly buffer Columns {
 uniform sampler2DArray normal;
 uniform sampler2DArray count;
 uniform bool count_bound;
-layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform writeonly image2DArray dst_out;
 
-uniform int directions;   // 1..64
-uniform int steps;        // 1..64
-uniform bool linear;      // falloff linear (W = 1 - r / R), else none
-uniform float radius;     // R
+#pragma ssg_params
 uniform float r2;         // R * R
 uniform float inv_radius; // 1 / R
-uniform float cap;        // max_screen_radius, px (0 = none)
 uniform float rf;         // f R
 uniform float invf;       // 1 / f
 uniform float inv_steps;  // 1 / steps
 uniform float cos_bias, sin_bias;
-uniform float strength;
 uniform float scale;      // strength / directions
 uniform vec3 proj;        // (f, cx, cy) of this resolution
 uniform float dir_cos[64], dir_sin[64];
@@ -63,7 +58,7 @@ void setup_pixel(ivec2 p, vec3 N)
     precise float av = -(float(p.y) + 0.5 - proj.z) * invf;
     precise float au = (float(p.x) + 0.5 - proj.y) * invf;
     precise float l = sqrt(au * au + av * av + 1.0);
-    precise float near = g_dp - radius, half_d = 0.5 * g_dp;
+    precise float near = g_dp - p_radius, half_d = 0.5 * g_dp;
     float den = near > half_d ? near : half_d;
     precise float inv = 1.0 / (l * den);
     precise float il = den * inv;
@@ -81,6 +76,7 @@ void setup_pixel(ivec2 p, vec3 N)
     precise float e2n = e2.x * N.x + e2.y * N.y + e2.z * N.z;
     g_e1n = e1n, g_e2n = e2n;
     precise float rp = rf * l * inv;
+    float cap = p_max_screen_radius; // px, 0 = no cap
     rp = cap > 0.0 && rp > cap ? cap : rp;
     precise float st = rp * inv_steps;
     g_step = st;
@@ -137,7 +133,7 @@ void horizon(ivec2 p, vec2 o, float a, float b, inout float bv, inout float bq,
     precise float q = hv * hv + hd * hd;
     if (!(q > 0.0 && q <= r2))
         return; // P's own pixel (q = 0) is never higher
-    if (linear) {
+    if (p_falloff == FALLOFF_LINEAR) {
         precise float r = sqrt(q);
         precise float sh = hv / r;
         if (sh > bv) {
@@ -162,7 +158,7 @@ void march(ivec2 p, int k, bool pair, bvec2 act, inout float occ)
     if (!on0 && !on1)
         return;
     float bv0 = sl.stb.x, bv1 = sl.stb.y, bq0 = 1.0, bq1 = 1.0;
-    for (int j = 0; j < steps; j++) {
+    for (int j = 0; j < p_steps; j++) {
         precise float t = float(j) + g_u;
         precise float ou = roundEven(sl.du * t), ov = roundEven(sl.dv * t);
         precise float pa = ou * sl.ax + ov * sl.ay;
@@ -176,7 +172,7 @@ void march(ivec2 p, int k, bool pair, bvec2 act, inout float occ)
         if (on1)
             horizon(p, -vec2(ou, ov), a1, b, bv1, bq1, occ);
     }
-    if (linear)
+    if (p_falloff == FALLOFF_LINEAR)
         return;
     // Falloff none: sin h - sin(t + bias) of the final horizon (finish_direction).
     precise float g0 = bv0 / sqrt(bq0) - sl.stb.x, g1 = bv1 / sqrt(bq1) - sl.stb.y;
@@ -192,15 +188,15 @@ void march(ivec2 p, int k, bool pair, bvec2 act, inout float occ)
 float occlusion(ivec2 p, int n)
 {
     precise float occ = 0.0;
-    int half_n = directions / 2;
-    if (directions % 2 == 0) {
+    int half_n = p_directions / 2;
+    if (p_directions % 2 == 0) {
         for (int k = 0; k < half_n; k++) {
             bvec2 act = bvec2(dir_rank[k] < n, dir_rank[k + half_n] < n);
             if (any(act))
                 march(p, k, true, act, occ);
         }
     } else {
-        for (int k = 0; k < directions; k++)
+        for (int k = 0; k < p_directions; k++)
             if (dir_rank[k] < n)
                 march(p, k, false, bvec2(true, false), occ);
     }
@@ -215,15 +211,15 @@ void main()
     g_dp = ssg_scene_depth(p);
     vec3 N = ssg_load3(normal, p);
     if (!ssg_surface_normal(g_dp, N)) { // background or garbage: 1
-        SSG_STORE1(dst, p, 1.0);
+        SSG_STORE1(dst_out, p, 1.0);
         return;
     }
     load_pattern(p);
     setup_pixel(p, N);
-    int n = ssg_pixel_count(count, count_bound, p, directions);
+    int n = ssg_pixel_count(count, count_bound, p, p_directions);
     float occ = occlusion(p, n);
-    precise float sc = n == directions ? scale : strength / float(n);
+    precise float sc = n == p_directions ? scale : p_strength / float(n);
     precise float v = 1.0 - occ * sc;
     v = v > 0.0 ? v : 0.0;
-    SSG_STORE1(dst, p, v < 1.0 ? v : 1.0);
+    SSG_STORE1(dst_out, p, v < 1.0 ? v : 1.0);
 }

@@ -1,31 +1,15 @@
 /* hbao.h - parameters and prepared constants of the `hbao` node, shared by hbao.c
  * (descriptor, check, prepare), hbao_cpu.c (the CPU kernel) and hbao_gl.c (the GL side).
- * Method and conventions are described in hbao.c. Read-only after prepare(); the kernel
+ * Method and conventions: README.md. Read-only after prepare(); the kernel
  * is thread-safe. */
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
-#include "graph/image.h"
+#include "common/sampling.h"
 #include "graph/node.h"
 
 #define SSG_HBAO_MAX_DIRECTIONS 64
 #define SSG_HBAO_MAX_STEPS 64
-
-/* Input ports, in order. */
-/* Ports: the descriptor's arrays are indexed by these (one naming rule:
-   SSG_<NODE>_IN_<PORT>, SSG_<NODE>_OUT_<PORT>; _INPUTS and _OUTPUTS count them). */
-enum ssg_hbao_input {
-    SSG_HBAO_IN_POSITION,
-    SSG_HBAO_IN_NORMAL,
-    SSG_HBAO_IN_ROTATION,
-    SSG_HBAO_IN_DEPTH,
-    SSG_HBAO_IN_COUNT,
-    SSG_HBAO_INPUTS
-};
-enum ssg_hbao_output {
-    SSG_HBAO_OUT_OUT,
-    SSG_HBAO_OUTPUTS
-};
 
 enum ssg_hbao_falloff {
     SSG_HBAO_FALLOFF_LINEAR, /* W = max(0, 1 - r / R) (Belonogov eq. 3.2) */
@@ -33,29 +17,61 @@ enum ssg_hbao_falloff {
                                 with distance-limited references */
 };
 
-struct ssg_hbao_params {
-    int directions;          /* azimuths per pixel, 1..64; default 8 */
-    int steps;               /* samples along each direction, 1..64; default 6 */
-    float radius;            /* R, scene units, > 0; default 0.5 */
-    float bias;              /* tangent-angle bias, radians, 0..1.5; default 0.25 (about
-                                14 degrees) */
-    float strength;          /* out = 1 - strength * occlusion, 0..16; default 1.25 */
-    int falloff;             /* enum ssg_hbao_falloff; default none */
-    float max_screen_radius; /* px; caps the march length (0 = no cap); default 0 */
-};
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields; the
+   G-buffer's four as the horizon nodes share them (common/sampling.h). */
+#define SSG_HBAO_IN(X)                                                                     \
+    SSG_SAMPLING_HORIZON_IN(X, SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL,                   \
+                            SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH, "directions")         \
+    X(SSG_HBAO_IN_COUNT, "count", SSG_T_SCALAR,                                            \
+      "per-pixel number of directions (complexity.count), taken in a spread order; "       \
+      "none = all", .optional = 1)
+#define SSG_HBAO_OUT(X) X(SSG_HBAO_OUT_OUT, "out", SSG_T_SCALAR, "visibility, 1 = unoccluded")
+SSG_PORT_ENUM(ssg_hbao_input, SSG_HBAO_IN, SSG_HBAO_INPUTS);
+SSG_PORT_ENUM(ssg_hbao_output, SSG_HBAO_OUT, SSG_HBAO_OUTPUTS);
 
+/* The parameters, one row each (lang/params.h); the GL shader reads them as p_<field>
+   (#pragma ssg_params), bias only through prepare()'s cos_bias and sin_bias. */
+#define SSG_HBAO_PARAMS(P)                                                                 \
+    P(INT, directions,                                                                     \
+      "azimuths per pixel (uniform about the view vector, turned by the rotation pattern)", \
+      .def = 8, .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS)                                  \
+    P(INT, steps, "depth samples marched along each direction", .def = 6, .min = 1,        \
+      .max = SSG_HBAO_MAX_STEPS)                                                           \
+    P(FLOAT, radius, "R: occluders farther than this from the pixel are ignored",          \
+      .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units")                          \
+    P(FLOAT, bias,                                                                         \
+      "tangent-angle bias against self occlusion (0.25 rad ~ 14 degrees; Bavoil's 0.1 "    \
+      "lets tessellation and pixel steps read as occlusion)",                              \
+      .def = 0.25, .min = 0, .max = 1.5, .unit = "radians", .host_only = 1)                \
+    P(FLOAT, strength,                                                                     \
+      "out = 1 - strength * occlusion, clamped to [0, 1] (default 1.25 with bias 0.25: "   \
+      "the lowest mean error against reference_ao)",                                       \
+      .def = 1.25, .min = 0, .max = 16)                                                    \
+    P(ENUM, falloff,                                                                       \
+      "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1",        \
+      .def = SSG_HBAO_FALLOFF_NONE, .choices = ssg_hbao_falloff_choices)                   \
+    P(FLOAT, max_screen_radius,                                                            \
+      "caps the projected radius f R / (depth - R) of the march; 0 = no cap", .def = 0,    \
+      .min = 0, .max = 16384, .unit = "px")
+SSG_PARAMS_STRUCT(ssg_hbao_params, SSG_HBAO_PARAMS);
+
+/* What prepare() makes once for both backends; sized to the G-buffer's width
+   (consts_size_of: the column table e1 is a flexible array). */
 struct ssg_hbao_consts {
     struct ssg_hbao_params p;    /* the parameters as given */
     struct ssg_projection proj;  /* the frame's camera as the G-buffer's resolution sees
                                     it (ssg_sampling_projection) */
+    float invf, rf;              /* 1 / f, f R */
+    float r2, inv_radius;        /* R^2, 1 / R */
+    float inv_steps, scale;      /* 1 / steps, strength / directions */
     float cos_bias, sin_bias;    /* of p.bias */
     float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
     float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
     int dir_rank[SSG_HBAO_MAX_DIRECTIONS];  /* place of direction k in the order the count
-                                               input takes directions in (hbao.c) */
+                                               input takes directions in (README.md) */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
        [x] and e1z at [w + x]; read by both backends. */
-    float e1[2 * SSG_IMAGE_MAX_SIDE];
+    float e1[];
 };
 
 enum ssg_err ssg_hbao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -1,4 +1,4 @@
-/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in hbao.c): the march
+/* hbao_cpu.c - CPU kernel of the `hbao` node (method and geometry in README.md): the march
  * and its entry point; the image checks, pattern and column tables and the padded depth it
  * reads are prepared in hbao_pattern.c (the job they share: hbao_cpu.h).
  *
@@ -25,7 +25,7 @@
  *   and the border hold +inf: samples off screen are clamped into the border, and an
  *   infinite depth makes q inf or NaN, which fails q <= R^2: no other test is needed.
  * - The march is not normalised per direction (setup_direction).
- * Per-pixel counts of directions (the `count` input, hbao.c): a chunk marches only the
+ * Per-pixel counts of directions (the `count` input, README.md): a chunk marches only the
  * directions some lane needs; a lane's direction past its count starts with its horizon
  * at +inf, so no sample raises it (no term in the linear falloff), and finish_direction
  * adds 0 for it. Adding 0 leaves a sum's bits unchanged, and the division is by n_i,
@@ -100,84 +100,64 @@ struct chunk {
                                               padded plane's pixel (0, 0) */
 };
 
-/* Loads the chunk's pixels and keeps only the surface ones, packed into the first lanes
-   (xs: their columns within the chunk): background pixels (depth 0 or no normal) are 1
-   and cost nothing more, which matters where the scene leaves much of the frame empty.
-   Returns the number of surface pixels. Normals are unit by the frame conventions
-   (node.h); the rare chunk holding one that is not gets a scalar pass, so the common
-   case stays a vector loop (sqrtf does not vectorise while it may set errno). */
+/* Loads the chunk's pixels (ssg_sampling_load: fg, the unit normal and the depth) and
+   keeps only the surface ones, packed into the first lanes (xs: their columns within the
+   chunk): background pixels (depth 0 or no normal) are 1 and cost nothing more, which
+   matters where the scene leaves much of the frame empty. Packing moves a lane only to
+   a lower one, so it runs in place. Returns the number of surface pixels. */
 static inline __attribute__((always_inline)) int load_chunk(const struct job *j,
                                                             struct chunk *restrict k,
                                                             int y, int x0, int len)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
     size_t po = (size_t)(y % j->n) * (size_t)j->w + (size_t)x0;
-    const float *restrict dpl = j->depth + o;
-    const float *restrict nx0 = j->nrm[0] + o, *restrict ny0 = j->nrm[1] + o;
-    const float *restrict nz0 = j->nrm[2] + o;
     const float *restrict rc = j->rot_c + po, *restrict rs = j->rot_s + po;
     const float *restrict ju = j->jitter + po;
-    const float sign = j->depth_sign;
+    ssg_sampling_load(NULL, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
+                      k->nz, NULL, NULL, NULL, k->dp);
     int all = 1;
-    for (int i = 0; i < len; i++) {
-        float nx = nx0[i], ny = ny0[i], nz = nz0[i];
-        float nn = nx * nx + ny * ny + nz * nz;
-        float d = sign * dpl[i];
-        /* Background (depth 0, normal 0) or garbage. */
-        int fg = (d > 0.0f) & (d <= 3.0e38f) & (nn > 1e-12f);
-        k->fg[i] = fg;
-        all &= fg;
-    }
-    int m = 0, not_unit = 0;
+    for (int i = 0; i < len; i++)
+        all &= k->fg[i];
     if (all) {
         /* The common case, a chunk all surface: straight vector copies. */
         for (int i = 0; i < len; i++) {
-            float nx = nx0[i], ny = ny0[i], nz = nz0[i];
-            not_unit |= fabsf(nx * nx + ny * ny + nz * nz - 1.0f) > 1e-5f;
             k->xs[i] = i;
-            k->nx[i] = nx;
-            k->ny[i] = ny;
-            k->nz[i] = nz;
-            k->dp[i] = sign * dpl[i];
             k->xf[i] = (float)(x0 + i);
             k->co[i] = rc[i];
             k->si[i] = rs[i];
             k->u[i] = ju[i];
             k->occ[i] = 0.0f;
         }
-        m = len;
+        return len;
     }
-    for (int i = 0; !all && i < len; i++) {
+    int m = 0;
+    for (int i = 0; i < len; i++) {
         if (!k->fg[i])
             continue;
         k->xs[m] = i;
-        k->nx[m] = nx0[i];
-        k->ny[m] = ny0[i];
-        k->nz[m] = nz0[i];
-        k->dp[m] = sign * dpl[i];
+        k->nx[m] = k->nx[i];
+        k->ny[m] = k->ny[i];
+        k->nz[m] = k->nz[i];
+        k->dp[m] = k->dp[i];
         k->xf[m] = (float)(x0 + i);
         k->co[m] = rc[i];
         k->si[m] = rs[i];
         k->u[m] = ju[i];
         k->occ[m] = 0.0f;
-        float nn = nx0[i] * nx0[i] + ny0[i] * ny0[i] + nz0[i] * nz0[i];
-        not_unit |= fabsf(nn - 1.0f) > 1e-5f;
         m++;
     }
-    if (not_unit)
-        ssg_sampling_normalize(m, k->nx, k->ny, k->nz);
     return m;
 }
 
 /* What depends on the pixel only: V, the basis e1 = normalize(y x V), e2 = V x e1, the
-   tangent term V.N and the march length (hbao.c). */
+   tangent term V.N and the march length (README.md). */
 static inline __attribute__((always_inline)) void setup_chunk(const struct job *j,
                                                               struct chunk *restrict k,
                                                               int y, int x0, int len)
 {
-    const float invf = 1.0f / j->f, radius = j->c->p.radius;
-    const float rf = j->f * radius, cap = j->c->p.max_screen_radius;
-    const float inv_steps = 1.0f / (float)j->c->p.steps;
+    const float invf = j->c->invf, radius = j->c->p.radius;
+    const float rf = j->c->rf, cap = j->c->p.max_screen_radius;
+    const float inv_steps = j->c->inv_steps;
     const float av = -((float)y + 0.5f - j->cy) * invf;
     for (int i = 0; i < len; i++) {
         float au = (k->xf[i] + 0.5f - j->cx) * invf;
@@ -216,12 +196,12 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
    zenith; for -D, sin t changes sign and cos t does not). The screen direction
    (su, sv) = (Dx + a_u Dz, -(Dy + a_v Dz)) is J D up to the factor f / depth and is not
    normalised: `steps` steps of step (su, sv), step = f R / (den steps), reach
-   f R |(su, sv)| / den, which is exactly the bound of hbao.c for this slice. */
+   f R |(su, sv)| / den, which is exactly the bound of README.md for this slice. */
 static inline __attribute__((always_inline)) void
 setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds,
                 int linear)
 {
-    const float invf = 1.0f / j->f, cb = j->c->cos_bias, sb = j->c->sin_bias;
+    const float invf = j->c->invf, cb = j->c->cos_bias, sb = j->c->sin_bias;
     for (int i = 0; i < len; i++) {
         float c = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
         float dx = c * k->e1x[i] + s * k->e2[0][i];
@@ -349,7 +329,7 @@ horizon_step(const struct job *j, struct chunk *restrict k, int len, int pair, i
     /* Index (v, u) of the padded plane is pixel (v - 1, u - 1): base it one row and one
        column in, so sample (su, sv) reads at sv * pw + su. */
     const float *restrict plane = j->padded + j->pw + 1;
-    const float r2 = j->c->p.radius * j->c->p.radius, inv_radius = 1.0f / j->c->p.radius;
+    const float r2 = j->c->r2, inv_radius = j->c->inv_radius;
     const int32_t *restrict i0 = k->idx[0], *restrict i1 = k->idx[1];
     float *restrict v0 = k->bv[0], *restrict v1 = k->bv[1];
     float *restrict q0 = k->bq[0], *restrict q1 = k->bq[1];
@@ -378,7 +358,7 @@ finish_direction(struct chunk *restrict k, int len, int m, int counted, int rank
     }
 }
 
-/* Count input: member m's direction (place `rank` in the order of hbao.c) is beyond the
+/* Count input: member m's direction (place `rank` in the order of README.md) is beyond the
    lanes' counts where rank >= n_i; there its horizon starts at +inf, which no sample
    rises above (the comparisons of horizon_one are false for it, and its gain is selected
    away). */
@@ -432,7 +412,7 @@ finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m
              int counted)
 {
     const float strength = j->c->p.strength;
-    const float scale = strength / (float)j->c->p.directions;
+    const float scale = j->c->scale;
     for (int i = 0; i < len; i++)
         out[i] = 1.0f;
     for (int i = 0; i < m; i++) {

@@ -1,6 +1,6 @@
 /* hbao_cpu.h - private to the CPU kernel of the `hbao` node: the job that hbao_cpu.c
  * (the march, the hot code) and hbao_pattern.c (the tables prepared before
- * it) share. Method and geometry are in hbao.c, the kernel's layout in hbao_cpu.c.
+ * it) share. Method and geometry are in README.md, the kernel's layout in hbao_cpu.c.
  * A job is filled once per run by ssg_hbao_run_cpu (its tables by
  * ssg_hbao_pattern_unroll and ssg_hbao_rows_pad), then only read by the bands that run
  * in parallel; the caller owns the tables and the padded plane and frees them. */
@@ -19,7 +19,7 @@ struct job {
                              (negative, NaN, inf) and a one-pixel border set to +inf */
     int pw;               /* w + 2, the padded row length */
     /* The pattern unrolled to full rows, n rows of w: cos and sin of the tile angle at
-       (x mod n, y mod n) and the step jitter u of the cell half a tile away (hbao.c). */
+       (x mod n, y mod n) and the step jitter u of the cell half a tile away (README.md). */
     const float *rot_c, *rot_s, *jitter;
     int n;                /* tile side; 1 without a pattern */
     const float *e1x, *e1z; /* per column: e1 = (1, 0, a_u) / sqrt(1 + a_u^2) (consts'

@@ -3,7 +3,7 @@
  * Dimitrov, "Image-Space Horizon-Based Ambient Occlusion", SIGGRAPH 2008: per-pixel
  * random rotation of the directions and jitter of the steps, from a tiled n x n texture)
  * unrolled to full rows, the per-column basis vector e1, and the depth plane padded by
- * one pixel of +inf. Method and geometry are in hbao.c; the job is in hbao_cpu.h. */
+ * one pixel of +inf. Method and geometry are in README.md; the job is in hbao_cpu.h. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stddef.h>

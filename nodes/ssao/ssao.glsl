@@ -1,4 +1,4 @@
-// ssao.glsl - the `ssao` node on GL (method in ssao.c): one invocation per pixel, all three
+// ssao.glsl - the `ssao` node on GL (method in README.md): one invocation per pixel, all three
 // modes. The maths is ssao_cpu.c's, lane by lane: the same tangent frame folded into the
 // same projective coefficients, the same sums in the same order (`precise`, so that no
 // multiply-add is fused where the CPU rounds twice), samples in kernel order, sphere mode's

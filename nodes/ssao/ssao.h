@@ -1,6 +1,6 @@
 /* ssao.h - parameters and prepared constants of the `ssao` node, shared by ssao.c
  * (descriptor, check, prepare), ssao_cpu.c (the CPU kernel) and ssao_gl.c (the GL side).
- * Method and conventions are described in ssao.c. */
+ * Method and conventions: README.md. */
 #ifndef SSG_SSAO_H
 #define SSG_SSAO_H
 

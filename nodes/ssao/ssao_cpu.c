@@ -1,4 +1,4 @@
-/* ssao_cpu.c - CPU kernel of the `ssao` node (method in ssao.c).
+/* ssao_cpu.c - CPU kernel of the `ssao` node (method in README.md).
  *
  * Layout for speed. A row is cut into chunks of CHUNK pixels; per chunk, each pixel's
  * rotated, radius-scaled tangent frame is folded once into projective coefficients
@@ -11,7 +11,7 @@
  * 512 KiB L2 for Rp up to about 130 (radius 0.5 at depth 5 in 1080p), and walking a band's
  * rows inside each chunk column (not columns inside rows) slides that window one row at
  * a time. max_screen_radius bounds Rp where near geometry would blow it up.
- * Per-pixel counts (the `count` input, ssao.c): a chunk runs the samples up to the largest
+ * Per-pixel counts (the `count` input, README.md): a chunk runs the samples up to the largest
  * count among its surface pixels, and a lane adds a sample's occlusion only while
  * s < n_i (a select, so the loops still vectorise); the division is by n_i. Adding a
  * masked 0 leaves a sum's bits unchanged, so count = K everywhere gives the bits of the
@@ -215,7 +215,7 @@ sample_loop(const struct job *j, struct chunk *k, int len, int used, int counted
     const int count = j->count, sphere = j->c->p.mode == SSG_SSAO_MODE_SPHERE;
     const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
     for (int s = 0; s < used; s++) {
-        /* The sphere mode adds each sample's point reflection (ssao.c), in this order. */
+        /* The sphere mode adds each sample's point reflection (README.md), in this order. */
         for (int m = 0; m <= sphere; m++) {
             float sx = m ? -kx[s] : kx[s], sy = m ? -ky[s] : ky[s], sz = m ? -kz[s] : kz[s];
             switch (j->c->p.range_check) {
@@ -331,7 +331,7 @@ static int load_counts(const struct job *j, struct chunk *restrict k, int y, int
 
 /* out = (1 - occluded / count)^power, or for the normal-free modes, whose 2 count
    samples leave half of them occluded on an open plane, clamp(2 (1 - occluded /
-   (2 count)), 0, 1)^power = clamp(2 - occluded / count, 0, 1)^power (ssao.c). */
+   (2 count)), 0, 1)^power = clamp(2 - occluded / count, 0, 1)^power (README.md). */
 static void finish_chunk(const struct job *j, struct chunk *k, int len, float *out)
 {
     const float inv_count = j->c->inv_samples, power = j->c->p.power;

@@ -1,4 +1,4 @@
-/* ssao_gl.c - GL side of the `ssao` node (method in ssao.c, shader ssao.glsl): one pass,
+/* ssao_gl.c - GL side of the `ssao` node (method in README.md, shader ssao.glsl): one pass,
  * one invocation per pixel, every mode, range check and optional input. Parameters and
  * ports are bound by the descriptor's tables; the constants are prepare()'s, so both
  * backends start from the same bits. */
