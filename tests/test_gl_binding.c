@@ -1,8 +1,9 @@
 /* test_gl_binding.c - binding by the tables on the GL backend (core/gl/gl.h): a name the
  * shader lacks is an error naming node, shader and uniform, never a silent skip; a
- * parameter the table declares for the shader (#pragma ssg_params) that the shader never
- * reads is an error naming it; a pass without the node's parameters is refused; and the
- * real ssao shader binds every row of its table and every port without naming one. */
+ * parameter or constant its tables declare for the shader (#pragma ssg_params,
+ * ssg_consts) that the shader never reads is an error naming it; a pass without the
+ * node's parameters is refused; and the real ssao shader binds every row of its tables
+ * without naming one. */
 #include <string.h>
 
 #include "check.h"
@@ -22,12 +23,13 @@ static int has_diag(const struct ssg_diags *d, const char *a, const char *b, con
 }
 
 static struct ssg_frame frame = {.width = 8, .height = 8, .fov_y = 60};
+static struct ssg_ssao_consts consts; /* the values do not matter here, only the names */
 
 static struct ssg_node_ctx ctx_of(const struct ssg_node_desc *desc, const void *params,
                                   struct ssg_diags *d)
 {
     return (struct ssg_node_ctx){.desc = desc, .instance = "ao", .frame = &frame, .diags = d,
-                                 .params = params};
+                                 .params = params, .consts = &consts};
 }
 
 /* The parameters bind by themselves; a misspelled uniform then fails the pass. */
@@ -50,13 +52,14 @@ static void misspelled_uniform_is_an_error(void)
 /* A row the shader does not read: the table declares p_<name>, the compiler drops it. */
 static void unread_parameter_is_an_error(void)
 {
-    struct ssg_param_desc rows[16];
+    static struct ssg_param_desc rows[16]; /* static: the program cache keys by the node */
     int n = ssg_node_ssao.params.count;
     CHECK(n < 16);
     memcpy(rows, ssg_node_ssao.params.params, (size_t)n * sizeof rows[0]);
     rows[n] = (struct ssg_param_desc){.name = "unread_knob", .type = SSG_P_FLOAT,
                                       .offset = 0, .def = 1};
-    struct ssg_node_desc desc = ssg_node_ssao;
+    static struct ssg_node_desc desc;
+    desc = ssg_node_ssao;
     desc.params = (struct ssg_param_table){rows, n + 1};
     struct ssg_ssao_params params;
     ssg_params_defaults(desc.params, &params);
@@ -66,6 +69,27 @@ static void unread_parameter_is_an_error(void)
     CHECK_EQ(ssg_gl_pass_begin(&p, &ctx, "ssao.glsl", NULL), SSG_E_SHADER);
     ssg_diags_print(&d, stderr);
     CHECK(has_diag(&d, "ssao 'ao'", "'unread_knob'", "p_unread_knob"));
+}
+
+/* The same for a constant's row: prepare() makes it, the shader never reads it. */
+static void unread_constant_is_an_error(void)
+{
+    static struct ssg_param_desc rows[8]; /* static, as above */
+    int n = ssg_node_ssao.uniforms.count;
+    CHECK(n > 0 && n < 8);
+    memcpy(rows, ssg_node_ssao.uniforms.params, (size_t)n * sizeof rows[0]);
+    rows[n] = (struct ssg_param_desc){.name = "unread_const", .type = SSG_P_FLOAT};
+    static struct ssg_node_desc desc;
+    desc = ssg_node_ssao;
+    desc.uniforms = (struct ssg_param_table){rows, n + 1};
+    struct ssg_ssao_params params;
+    ssg_params_defaults(desc.params, &params);
+    struct ssg_diags d = {0};
+    struct ssg_node_ctx ctx = ctx_of(&desc, &params, &d);
+    struct ssg_gl_pass p;
+    CHECK_EQ(ssg_gl_pass_begin(&p, &ctx, "ssao.glsl", NULL), SSG_E_SHADER);
+    ssg_diags_print(&d, stderr);
+    CHECK(has_diag(&d, "ssao 'ao'", "constant 'unread_const'", "ssg_consts"));
 }
 
 static void pass_without_parameters_is_refused(void)
@@ -86,6 +110,7 @@ int main(void)
     }
     misspelled_uniform_is_an_error();
     unread_parameter_is_an_error();
+    unread_constant_is_an_error();
     pass_without_parameters_is_refused();
     ssg_gl_close();
     return check_report();

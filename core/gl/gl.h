@@ -26,8 +26,9 @@
  * Binding by the tables. A node's shader that holds the line `#pragma ssg_params` gets its
  * parameters declared from the descriptor's table (`uniform float p_radius;`, enum choices
  * as `const int MODE_DISC = 2;`, rows marked host_only left out) and the pass binds their
- * values itself; ssg_gl_ports binds every port by its name. A node with one pass then
- * names nothing by hand:
+ * values itself; `#pragma ssg_consts` does the same for the rows of the constants
+ * prepare() made (the descriptor's `uniforms`, read under their own names); ssg_gl_ports
+ * binds every port by its name. A node with one pass then names nothing by hand:
  *
  *   struct ssg_gl_pass p;
  *   ssg_gl_pass_begin(&p, ctx, "ao.glsl", NULL);  // #pragma ssg_params in ao.glsl

@@ -120,9 +120,12 @@ void ssg_gl_context_destroy(void);
  * On failure reports "<node> '<instance>': shader <file>:<line>: <message>" (every
  * compiler line) and returns 0. */
 enum { SSG_GL_COMPUTE = 1, SSG_GL_RASTER = 2 };
+/* *binds: which of the node's tables the file declares (#pragma ssg_params, ssg_consts;
+ * gl_program.c), for the pass to bind. */
+enum { SSG_GL_BINDS_PARAMS = 1, SSG_GL_BINDS_CONSTS = 2 };
 struct ssg_node_ctx;
 GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
-                          const char *defines, int stages, int *binds_params);
+                          const char *defines, int stages, int *binds);
 void ssg_gl_programs_free(void);
 
 #endif

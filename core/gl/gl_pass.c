@@ -38,32 +38,35 @@ static GLint where(struct ssg_gl_pass *p, const char *name)
     return loc;
 }
 
-/* Sets the value of every parameter the program declared by `#pragma ssg_params`
-   (gl_program.c) from the node's parameters (ctx->params), by its table. */
-static void bind_params(struct ssg_gl_pass *p)
+/* Sets every uniform a table declared in the program (gl_program.c) from the struct at
+   `base`: the parameters (#pragma ssg_params, names p_<field>, from ctx->params) or the
+   constants (#pragma ssg_consts, names <field>, from the consts' uniforms member). */
+static void bind_table(struct ssg_gl_pass *p, struct ssg_param_table table, const void *base,
+                       const char *prefix, const char *pragma)
 {
-    struct ssg_param_table table = p->ctx->desc->params;
-    if (!p->ctx->params) {
-        p->err = ssg_node_fail(p->ctx, SSG_E_BACKEND, "shader %s declares the node's "
-                               "parameters but the pass has none (run the node through "
-                               "the executor, which sets ctx->params)", p->shader);
+    if (!base) {
+        p->err = ssg_node_fail(p->ctx, SSG_E_BACKEND, "shader %s has #pragma %s but the "
+                               "pass has no values for it (run the node through the "
+                               "executor, which sets ctx->params and ctx->consts)",
+                               p->shader, pragma);
         return;
     }
     char name[96];
     for (int i = 0; i < table.count && usable(p); i++) {
         const struct ssg_param_desc *d = &table.params[i];
-        const void *at = (const char *)p->ctx->params + d->offset;
+        const void *at = (const char *)base + d->offset;
         int is_int = d->type == SSG_P_INT || d->type == SSG_P_BOOL || d->type == SSG_P_ENUM;
         if (d->host_only || (!is_int && d->type != SSG_P_FLOAT && d->type != SSG_P_VEC3))
             continue;
-        snprintf(name, sizeof name, "p_%s", d->name);
+        snprintf(name, sizeof name, "%s%s", prefix, d->name);
         GLint loc = where_optional(p, name);
         if (loc < 0) {
-            p->err = ssg_node_fail(p->ctx, SSG_E_SHADER, "shader %s declares parameter "
-                                   "'%s' (#pragma ssg_params) but does not read it: read "
-                                   "it as %s, or mark its row host_only when only "
-                                   "prepare() or the CPU kernel needs it",
-                                   p->shader, d->name, name);
+            p->err = ssg_node_fail(p->ctx, SSG_E_SHADER, "shader %s declares %s '%s' "
+                                   "(#pragma %s) but does not read it: read it as %s, or "
+                                   "mark its row host_only when only prepare() or the "
+                                   "CPU kernel needs it", p->shader,
+                                   *prefix ? "parameter" : "constant", d->name, pragma,
+                                   name);
         } else if (is_int) {
             glProgramUniform1i(p->program, loc, *(const int *)at);
         } else if (d->type == SSG_P_FLOAT) {
@@ -81,14 +84,18 @@ enum ssg_err ssg_gl_pass_open(struct ssg_gl_pass *pass, const struct ssg_node_ct
     memset(pass, 0, sizeof *pass);
     pass->ctx = ctx;
     pass->shader = shader;
-    int binds_params = 0;
-    pass->program = ssg_gl_program_get(ctx, shader, defines, stages, &binds_params);
+    int binds = 0;
+    pass->program = ssg_gl_program_get(ctx, shader, defines, stages, &binds);
     if (!pass->program) {
         pass->err = SSG_E_SHADER;
         return pass->err;
     }
-    if (binds_params)
-        bind_params(pass);
+    if (binds & SSG_GL_BINDS_PARAMS)
+        bind_table(pass, ctx->desc->params, ctx->params, "p_", "ssg_params");
+    const char *consts = ctx->consts;
+    if (binds & SSG_GL_BINDS_CONSTS)
+        bind_table(pass, ctx->desc->uniforms, consts ? consts + ctx->desc->uniforms_offset : NULL,
+                   "", "ssg_consts");
     return pass->err;
 }
 

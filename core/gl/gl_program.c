@@ -20,7 +20,11 @@
  * (float -> float, int/bool/enum -> int, vec3 -> vec3), and for an enum its choices as
  * `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The pass binds
  * their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
- * name. Such a program is the node type's own: the cache keys it by the table too. */
+ * name. Likewise `#pragma ssg_consts` declares the node's constants' table (the
+ * descriptor's `uniforms`, rows of what prepare() makes) under their own names, `uniform
+ * float rf;`, bound from the consts: a constant is made once, in prepare(), and read by
+ * name by both backends. Such a program is the node type's own: the cache keys it by the
+ * descriptor too. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,7 +55,7 @@ struct cached {
     char shader[64];
     char *defines;
     int stages;
-    const struct ssg_param_desc *params; /* the table its #pragma ssg_params declared */
+    const struct ssg_node_desc *owner; /* the node whose tables its pragmas declared */
     GLuint program;
 };
 static struct cached cache[CACHE_MAX];
@@ -235,27 +239,28 @@ static int has_include(const char *text)
     return 0;
 }
 
-/* 1 when a line (n bytes, leading blanks allowed) is `#pragma ssg_params`. */
-static int is_params_pragma(const char *line, size_t n)
+/* 1 when a line (n bytes, leading blanks allowed) is exactly `pragma`. */
+static int is_pragma(const char *line, size_t n, const char *pragma)
 {
-    static const char pragma[] = "#pragma ssg_params";
     while (n && (*line == ' ' || *line == '\t'))
         line++, n--;
     while (n && (line[n - 1] == ' ' || line[n - 1] == '\t' || line[n - 1] == '\r'))
         n--;
-    return n == sizeof pragma - 1 && !memcmp(line, pragma, n);
+    return n == strlen(pragma) && !memcmp(line, pragma, n);
 }
 
-/* 1 when the shader file declares the node's parameters through the pragma. */
-static int declares_params(const char *text)
+/* SSG_GL_BINDS_PARAMS | SSG_GL_BINDS_CONSTS: the tables the shader file declares through
+   the pragmas. */
+static int declared_tables(const char *text)
 {
+    int binds = 0;
     for (const char *p = text; *p;) {
         size_t n = strcspn(p, "\n");
-        if (is_params_pragma(p, n))
-            return 1;
+        binds |= is_pragma(p, n, "#pragma ssg_params") ? SSG_GL_BINDS_PARAMS : 0;
+        binds |= is_pragma(p, n, "#pragma ssg_consts") ? SSG_GL_BINDS_CONSTS : 0;
         p += n + (p[n] == '\n');
     }
-    return 0;
+    return binds;
 }
 
 /* Appends `text` upper-cased, with every character not allowed in a GLSL name as '_'. */
@@ -271,10 +276,11 @@ static int append_upper(char **buf, size_t *len, size_t *cap, const char *text)
     return ok;
 }
 
-/* The one line that replaces `#pragma ssg_params`: the uniforms and enum constants of the
-   node's parameter table (see the top of this file). */
-static int append_params_block(char **buf, size_t *len, size_t *cap,
-                               struct ssg_param_table table)
+/* The one line that replaces `#pragma ssg_params` (prefix "p_": the uniforms and enum
+   constants of the node's parameter table) or `#pragma ssg_consts` (prefix "": the
+   uniforms of its constants' table); see the top of this file. */
+static int append_table_block(char **buf, size_t *len, size_t *cap,
+                              struct ssg_param_table table, const char *prefix)
 {
     char decl[160];
     int ok = 1;
@@ -286,7 +292,7 @@ static int append_params_block(char **buf, size_t *len, size_t *cap,
                                    d->type == SSG_P_ENUM ? "int" : NULL;
         if (!type || d->host_only)
             continue;
-        snprintf(decl, sizeof decl, "uniform %s p_%s; ", type, d->name);
+        snprintf(decl, sizeof decl, "uniform %s %s%s; ", type, prefix, d->name);
         ok = append(buf, len, cap, decl, strlen(decl));
         for (int k = 0; ok && d->type == SSG_P_ENUM && d->choices && d->choices[k]; k++) {
             ok = append(buf, len, cap, "const int ", 10) && append_upper(buf, len, cap, d->name) &&
@@ -321,8 +327,10 @@ static enum ssg_err resolve_includes(const struct ssg_node_ctx *ctx, const char 
             free(buf);
             return SSG_E_SHADER;
         }
-        if (is_params_pragma(p, n)) {
-            ok = append_params_block(&buf, &len, &cap, ctx->desc->params);
+        if (is_pragma(p, n, "#pragma ssg_params")) {
+            ok = append_table_block(&buf, &len, &cap, ctx->desc->params, "p_");
+        } else if (is_pragma(p, n, "#pragma ssg_consts")) {
+            ok = append_table_block(&buf, &len, &cap, ctx->desc->uniforms, "");
         } else if (body) {
             snprintf(mark, sizeof mark, "#line %d\n",
                      INCLUDE_BASE + src->includes * INCLUDE_STRIDE + 1);
@@ -381,15 +389,14 @@ static GLuint build(const struct ssg_node_ctx *ctx, const char *shader, const ch
 }
 
 GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
-                          const char *defines, int stages, int *binds_params)
+                          const char *defines, int stages, int *binds)
 {
     const char *d = defines ? defines : "", *text = ssg_shader_source(shader);
-    const int with_params = text && ctx->desc && declares_params(text);
-    const struct ssg_param_desc *table = with_params ? ctx->desc->params.params : NULL;
-    *binds_params = with_params;
+    *binds = text && ctx->desc ? declared_tables(text) : 0;
+    const struct ssg_node_desc *owner = *binds ? ctx->desc : NULL;
     for (int i = 0; i < cache_count; i++)
         if (cache[i].stages == stages && !strcmp(cache[i].shader, shader) &&
-            !strcmp(cache[i].defines, d) && cache[i].params == table)
+            !strcmp(cache[i].defines, d) && cache[i].owner == owner)
             return cache[i].program;
     GLuint prog = build(ctx, shader, defines, stages);
     if (!prog || cache_count == CACHE_MAX || strlen(shader) >= sizeof cache[0].shader)
@@ -400,7 +407,7 @@ GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
         return prog;
     snprintf(c->shader, sizeof c->shader, "%s", shader);
     c->stages = stages;
-    c->params = table;
+    c->owner = owner;
     c->program = prog;
     cache_count++;
     return prog;

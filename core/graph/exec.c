@@ -294,7 +294,8 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
     *timing = (struct ssg_node_timing){0};
     int on_gl = backend == SSG_BACKEND_GL && desc->run_gl;
     struct ssg_node_ctx run_ctx = *ctx;
-    run_ctx.params = params; /* what a GL pass binds by the table (gl.h) */
+    run_ctx.params = params; /* what a GL pass binds by the tables (gl.h) */
+    run_ctx.consts = consts;
     enum ssg_err e = ssg_node_verify_io(&run_ctx, io);
     if (!e)
         e = run_backend(desc, &run_ctx, consts ? consts : params, io, on_gl, timing);

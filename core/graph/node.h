@@ -123,6 +123,8 @@ struct ssg_node_ctx {
                                       run_cpu or run_gl runs (set by the executor; a GL
                                       pass binds them by the table, gl.h); NULL in check
                                       and prepare, which get them as an argument */
+    const void *consts;            /* what prepare() made, likewise while a backend runs
+                                      (NULL for a node without consts) */
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate
@@ -179,6 +181,12 @@ struct ssg_node_desc {
        and input shapes, for constants whose tables grow with a parameter (hbao's per-
        direction steps): a struct ending in a flexible array, sized to what is used. */
     size_t (*consts_size_of)(const void *params, const struct ssg_shape *in);
+    /* Optional: the rows of the constants both backends read by name (made in prepare()
+       into a struct generated from the rows, a member of the consts at uniforms_offset;
+       a shader with `#pragma ssg_consts` gets them as uniforms, bound by the pass).
+       SSG_NODE_UNIFORMS fills both. */
+    struct ssg_param_table uniforms;
+    size_t uniforms_offset;
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
@@ -352,6 +360,11 @@ static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ss
 #define SSG_NODE_PORTS(in, out) SSG_NODE_INPUTS(in), SSG_NODE_OUTPUTS(out)
 #define SSG_NODE_PARAMS(table, params_type) \
     .params = SSG_TABLE(table), .params_size = sizeof(params_type)
+
+/* The constants' rows (lang/params.h, SSG_UNIFORMS_TABLE) and where their struct sits in
+   the consts. */
+#define SSG_NODE_UNIFORMS(table, consts_type, member) \
+    .uniforms = SSG_TABLE(table), .uniforms_offset = offsetof(consts_type, member)
 
 /* One-line port rows, as parameters have (lang/params.h): a node lists each port once,
  * with its enumerator, name, types, one-line doc and any further fields,

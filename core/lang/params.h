@@ -123,6 +123,22 @@ struct ssg_param_desc {
     typedef struct tag ssg_params_owner; \
     static const struct ssg_param_desc var[] = {LIST(SSG_PARAM_AS_ROW)}
 
+/* Rows of constants, the same way: what a node's prepare() makes from its parameters and
+ * shapes for both backends (1 / f, R^2, a cap), one row each, kind FLOAT, INT, BOOL or
+ * VEC3, field and doc:
+ *   #define SSG_HBAO_UNIFORMS(U) U(FLOAT, rf, "f R") U(FLOAT, r2, "R^2")
+ *   SSG_UNIFORMS_STRUCT(ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);        (the struct)
+ *   SSG_UNIFORMS_TABLE(uniforms, ssg_hbao_uniforms, SSG_HBAO_UNIFORMS); (the table)
+ * The struct is a member of the node's consts (SSG_NODE_UNIFORMS in graph/node.h), and a
+ * shader with `#pragma ssg_consts` reads each row as a uniform of its own name. */
+#define SSG_UNIFORM_AS_FIELD(kind, field, doc) SSG_PARAM_DECL_##kind(field);
+#define SSG_UNIFORM_AS_ROW(kind, field, doc) \
+    {.name = #field, SSG_FIELD_##kind(ssg_uniforms_owner, field), .help = doc},
+#define SSG_UNIFORMS_STRUCT(tag, LIST) struct tag { LIST(SSG_UNIFORM_AS_FIELD) }
+#define SSG_UNIFORMS_TABLE(var, tag, LIST) \
+    typedef struct tag ssg_uniforms_owner; \
+    static const struct ssg_param_desc var[] = {LIST(SSG_UNIFORM_AS_ROW)}
+
 /* A table and its length, so callers pass one thing. */
 struct ssg_param_table {
     const struct ssg_param_desc *params;

@@ -46,14 +46,15 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
                                                 &c->proj, &c->invf, c->e1);
     /* XeGTAO's fade: w = 1 up to (1 - falloff) R, 0 at R: w = r mul + add. */
     float range = q->falloff * q->radius;
-    c->fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
-    c->fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
-    c->link = SSG_GTAO_BACK_LINK * q->radius;
+    c->u.fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
+    c->u.fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
+    c->u.link = SSG_GTAO_BACK_LINK * q->radius;
     ssg_sampling_angles(q->slices, M_PI, c->slice_cos, c->slice_sin);
     return e;
 }
 
 SSG_PARAMS_TABLE(params, ssg_gtao_params, SSG_GTAO_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_gtao_uniforms, SSG_GTAO_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_GTAO_IN);
 SSG_PORT_TABLE(outputs, SSG_GTAO_OUT);
@@ -77,6 +78,7 @@ const struct ssg_node_desc ssg_node_gtao = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gtao_params),
     .consts_size_of = consts_size_of,
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_gtao_consts, u),
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = gtao_flops,

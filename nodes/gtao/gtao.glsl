@@ -17,8 +17,7 @@ layout(r32f) uniform writeonly image2DArray dst_bent_normal;
 
 // The parameters (#pragma ssg_params: p_<field>) and what prepare() derived from them.
 #pragma ssg_params
-uniform float fall_mul, fall_add;
-uniform float link;        // with back: prepare()'s link distance (gtao.c)
+#pragma ssg_consts
 uniform float invf;        // 1 / f
 uniform vec3 proj;         // (f, cx, cy) of this resolution
 uniform float slice_cos[32], slice_sin[32];

@@ -61,15 +61,21 @@ SSG_PARAMS_STRUCT(ssg_gtao_params, SSG_GTAO_PARAMS);
 
 /* What prepare() makes once for both backends; sized to the G-buffer's width
    (consts_size_of: the column table e1 is a flexible array). */
+/* The constants prepare() makes for both backends, one row each (lang/params.h); the
+   shader reads them under these names (#pragma ssg_consts). Falloff weight w = clamp(r
+   fall_mul + fall_add, 0, 1) (falloff > 0; falloff 0 is the test r <= R); with back, a
+   sample's arc reaches down to the side's previous sample when that lies at most `link`
+   behind the sample's back, scene units (README.md). */
+#define SSG_GTAO_UNIFORMS(U)                                                               \
+    U(FLOAT, fall_mul, "falloff slope") U(FLOAT, fall_add, "falloff offset")               \
+    U(FLOAT, link, "with back: the arcs' link distance")
+SSG_UNIFORMS_STRUCT(ssg_gtao_uniforms, SSG_GTAO_UNIFORMS);
+
 struct ssg_gtao_consts {
     struct ssg_gtao_params p;   /* the parameters as given */
     struct ssg_projection proj; /* the frame's camera at the G-buffer's resolution */
     float invf;                 /* 1 / f */
-    float fall_mul, fall_add;   /* falloff weight w = clamp(r fall_mul + fall_add, 0, 1)
-                                   (falloff > 0; falloff 0 is the test r <= R) */
-    float link;                 /* with back: a sample's arc reaches down to the side's
-                                   previous sample when that lies at most this far behind
-                                   the sample's back, scene units (README.md) */
+    struct ssg_gtao_uniforms u; /* prepare()'s constants both backends read by name */
     float slice_cos[SSG_GTAO_MAX_SLICES]; /* cos(pi k / slices) */
     float slice_sin[SSG_GTAO_MAX_SLICES]; /* sin(pi k / slices) */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at

@@ -233,7 +233,7 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
     float q = hv * hv + dq * dq * e;
     float w;
     if (linear) {
-        w = sqrtf(q) * c->fall_mul + c->fall_add;
+        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
         w = w < 0.0f ? 0.0f : w;
         w = w < 1.0f ? w : 1.0f;
     } else {
@@ -265,7 +265,7 @@ horizon_back(float hc, float *bot, float *pdep, float *pcos, float low, float dq
     float q = hv * hv + dq * dq * e;
     float w;
     if (linear) {
-        w = sqrtf(q) * c->fall_mul + c->fall_add;
+        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
         w = w < 0.0f ? 0.0f : w;
         w = w < 1.0f ? w : 1.0f;
     } else {
@@ -281,7 +281,7 @@ horizon_back(float hc, float *bot, float *pdep, float *pcos, float low, float dq
     top = low + w * (top - low);
     under = db < INFINITY ? low + w * (under - low) : low; /* none behind: solid */
     int valid = ok & (dq < INFINITY);
-    under = (*pdep <= db + c->link) & (*pcos < under) ? *pcos : under;
+    under = (*pdep <= db + c->u.link) & (*pcos < under) ? *pcos : under;
     *pdep = valid ? dq : *pdep;
     *pcos = valid ? top : *pcos;
     int counts = valid & (w > 0.0f) & (top > low + OPEN_EPS);

@@ -13,9 +13,6 @@ enum ssg_err ssg_gtao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const struct ssg_image *pos = io->in[SSG_GTAO_IN_POSITION];
     struct ssg_gl_pass p;
     ssg_sampling_gl_horizon(&p, ctx, "gtao.glsl", io, c->e1, &c->proj, c->invf);
-    ssg_gl_float(&p, "fall_mul", c->fall_mul);
-    ssg_gl_float(&p, "fall_add", c->fall_add);
-    ssg_gl_float(&p, "link", c->link);
     ssg_gl_floats(&p, "slice_cos", c->p.slices, c->slice_cos);
     ssg_gl_floats(&p, "slice_sin", c->p.slices, c->slice_sin);
     ssg_gl_dispatch(&p, pos->width, pos->height);

@@ -70,13 +70,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *(const struct ssg_hbao_params *)params;
     enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
                                                 &c->proj, &c->invf, c->e1);
-    c->rf = c->proj.f * q->radius;
-    c->r2 = q->radius * q->radius;
-    c->inv_radius = 1.0f / q->radius;
-    c->inv_steps = 1.0f / (float)q->steps;
-    c->scale = q->strength / (float)q->directions;
-    c->cos_bias = (float)cos(q->bias);
-    c->sin_bias = (float)sin(q->bias);
+    c->u.rf = c->proj.f * q->radius;
+    c->u.r2 = q->radius * q->radius;
+    c->u.inv_radius = 1.0f / q->radius;
+    c->u.inv_steps = 1.0f / (float)q->steps;
+    c->u.scale = q->strength / (float)q->directions;
+    c->u.cos_bias = (float)cos(q->bias);
+    c->u.sin_bias = (float)sin(q->bias);
     ssg_sampling_angles(q->directions, 2.0 * M_PI, c->dir_cos, c->dir_sin);
     rank_directions(q->directions, c->dir_rank);
     return e;
@@ -84,6 +84,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 
 static const char *const ssg_hbao_falloff_choices[] = {"linear", "none", NULL};
 SSG_PARAMS_TABLE(params, ssg_hbao_params, SSG_HBAO_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_HBAO_IN);
 SSG_PORT_TABLE(outputs, SSG_HBAO_OUT);
@@ -107,6 +108,7 @@ const struct ssg_node_desc ssg_node_hbao = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_hbao_params),
     .consts_size_of = consts_size_of,
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_hbao_consts, u),
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = hbao_flops,

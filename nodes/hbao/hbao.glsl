@@ -18,13 +18,8 @@ uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
 
 #pragma ssg_params
-uniform float r2;         // R * R
-uniform float inv_radius; // 1 / R
-uniform float rf;         // f R
+#pragma ssg_consts
 uniform float invf;       // 1 / f
-uniform float inv_steps;  // 1 / steps
-uniform float cos_bias, sin_bias;
-uniform float scale;      // strength / directions
 uniform vec3 proj;        // (f, cx, cy) of this resolution
 uniform float dir_cos[64], dir_sin[64];
 uniform int dir_rank[64]; // place of each direction in the count input's order

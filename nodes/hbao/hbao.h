@@ -57,14 +57,20 @@ SSG_PARAMS_STRUCT(ssg_hbao_params, SSG_HBAO_PARAMS);
 
 /* What prepare() makes once for both backends; sized to the G-buffer's width
    (consts_size_of: the column table e1 is a flexible array). */
+/* The constants prepare() makes for both backends, one row each (lang/params.h); the
+   shader reads them under these names (#pragma ssg_consts). */
+#define SSG_HBAO_UNIFORMS(U)                                                               \
+    U(FLOAT, rf, "f R") U(FLOAT, r2, "R^2") U(FLOAT, inv_radius, "1 / R")                  \
+    U(FLOAT, inv_steps, "1 / steps") U(FLOAT, scale, "strength / directions")              \
+    U(FLOAT, cos_bias, "cos(bias)") U(FLOAT, sin_bias, "sin(bias)")
+SSG_UNIFORMS_STRUCT(ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);
+
 struct ssg_hbao_consts {
     struct ssg_hbao_params p;    /* the parameters as given */
     struct ssg_projection proj;  /* the frame's camera as the G-buffer's resolution sees
                                     it (ssg_sampling_projection) */
-    float invf, rf;              /* 1 / f, f R */
-    float r2, inv_radius;        /* R^2, 1 / R */
-    float inv_steps, scale;      /* 1 / steps, strength / directions */
-    float cos_bias, sin_bias;    /* of p.bias */
+    float invf;                  /* 1 / f */
+    struct ssg_hbao_uniforms u;  /* prepare()'s constants both backends read by name */
     float dir_cos[SSG_HBAO_MAX_DIRECTIONS]; /* cos(2 pi k / directions) */
     float dir_sin[SSG_HBAO_MAX_DIRECTIONS]; /* sin(2 pi k / directions) */
     int dir_rank[SSG_HBAO_MAX_DIRECTIONS];  /* place of direction k in the order the count

@@ -156,8 +156,8 @@ static inline __attribute__((always_inline)) void setup_chunk(const struct job *
                                                               int y, int x0, int len)
 {
     const float invf = j->c->invf, radius = j->c->p.radius;
-    const float rf = j->c->rf, cap = j->c->p.max_screen_radius;
-    const float inv_steps = j->c->inv_steps;
+    const float rf = j->c->u.rf, cap = j->c->p.max_screen_radius;
+    const float inv_steps = j->c->u.inv_steps;
     const float av = -((float)y + 0.5f - j->cy) * invf;
     for (int i = 0; i < len; i++) {
         float au = (k->xf[i] + 0.5f - j->cx) * invf;
@@ -201,7 +201,7 @@ static inline __attribute__((always_inline)) void
 setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc, float ds,
                 int linear)
 {
-    const float invf = j->c->invf, cb = j->c->cos_bias, sb = j->c->sin_bias;
+    const float invf = j->c->invf, cb = j->c->u.cos_bias, sb = j->c->u.sin_bias;
     for (int i = 0; i < len; i++) {
         float c = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
         float dx = c * k->e1x[i] + s * k->e2[0][i];
@@ -329,7 +329,7 @@ horizon_step(const struct job *j, struct chunk *restrict k, int len, int pair, i
     /* Index (v, u) of the padded plane is pixel (v - 1, u - 1): base it one row and one
        column in, so sample (su, sv) reads at sv * pw + su. */
     const float *restrict plane = j->padded + j->pw + 1;
-    const float r2 = j->c->r2, inv_radius = j->c->inv_radius;
+    const float r2 = j->c->u.r2, inv_radius = j->c->u.inv_radius;
     const int32_t *restrict i0 = k->idx[0], *restrict i1 = k->idx[1];
     float *restrict v0 = k->bv[0], *restrict v1 = k->bv[1];
     float *restrict q0 = k->bq[0], *restrict q1 = k->bq[1];
@@ -412,7 +412,7 @@ finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m
              int counted)
 {
     const float strength = j->c->p.strength;
-    const float scale = j->c->scale;
+    const float scale = j->c->u.scale;
     for (int i = 0; i < len; i++)
         out[i] = 1.0f;
     for (int i = 0; i < m; i++) {

@@ -14,13 +14,6 @@ enum ssg_err ssg_hbao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     const int nd = c->p.directions;
     struct ssg_gl_pass p;
     ssg_sampling_gl_horizon(&p, ctx, "hbao.glsl", io, c->e1, &c->proj, c->invf);
-    ssg_gl_float(&p, "rf", c->rf);
-    ssg_gl_float(&p, "r2", c->r2);
-    ssg_gl_float(&p, "inv_radius", c->inv_radius);
-    ssg_gl_float(&p, "inv_steps", c->inv_steps);
-    ssg_gl_float(&p, "scale", c->scale);
-    ssg_gl_float(&p, "cos_bias", c->cos_bias);
-    ssg_gl_float(&p, "sin_bias", c->sin_bias);
     ssg_gl_floats(&p, "dir_cos", nd, c->dir_cos);
     ssg_gl_floats(&p, "dir_sin", nd, c->dir_sin);
     ssg_gl_ints(&p, "dir_rank", nd, c->dir_rank);

@@ -27,15 +27,16 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *(const struct ssg_ssao_params *)params;
     enum ssg_err e =
         ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->proj);
-    c->cap = c->p.max_screen_radius / c->proj.f;
-    c->capped = c->p.max_screen_radius > 0.0f;
-    c->inv_samples = 1.0f / (float)ctx->in_shape[SSG_SSAO_IN_KERNEL].width;
+    c->u.cap = c->p.max_screen_radius / c->proj.f;
+    c->u.capped = c->p.max_screen_radius > 0.0f;
+    c->u.inv_samples = 1.0f / (float)ctx->in_shape[SSG_SSAO_IN_KERNEL].width;
     return e;
 }
 
 static const char *const ssg_ssao_range_choices[] = {"none", "hard", "smooth", NULL};
 static const char *const ssg_ssao_mode_choices[] = {"hemisphere", "sphere", "disc", NULL};
 SSG_PARAMS_TABLE(params, ssg_ssao_params, SSG_SSAO_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_ssao_uniforms, SSG_SSAO_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_SSAO_IN);
 SSG_PORT_TABLE(outputs, SSG_SSAO_OUT);
@@ -63,6 +64,7 @@ const struct ssg_node_desc ssg_node_ssao = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssao_params),
     .consts_size = sizeof(struct ssg_ssao_consts),
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_ssao_consts, u),
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = ssao_flops,

@@ -11,9 +11,7 @@ uniform bool count_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
 
 #pragma ssg_params
-uniform float cap;         // max_screen_radius / f: r <= cap depth(P) when capped
-uniform bool capped;       // max_screen_radius > 0
-uniform float inv_samples; // 1 / K, rounded as the CPU does
+#pragma ssg_consts
 uniform vec3 proj;         // (f, cx, cy) of this resolution
 
 
@@ -96,7 +94,7 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
 {
     vec2 rot = ssg_tile_rotation(p);
     precise float rcap = cap * dp;
-    float r = capped && rcap < p_radius ? rcap : p_radius;
+    float r = capped != 0 && rcap < p_radius ? rcap : p_radius;
     precise float occ = 0.0;
     if (p_mode == MODE_DISC) {
         precise float rp = proj.x * r / dp;

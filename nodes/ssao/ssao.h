@@ -59,14 +59,20 @@ SSG_PORT_ENUM(ssg_ssao_output, SSG_SSAO_OUT, SSG_SSAO_OUTPUTS);
       .def = SSG_SSAO_MODE_HEMISPHERE, .choices = ssg_ssao_mode_choices)
 SSG_PARAMS_STRUCT(ssg_ssao_params, SSG_SSAO_PARAMS);
 
+/* The constants prepare() makes for both backends, one row each (lang/params.h); the
+   shader reads them under these names (#pragma ssg_consts). */
+#define SSG_SSAO_UNIFORMS(U)                                                               \
+    U(FLOAT, cap, "max_screen_radius / f: r <= cap depth(P) when capped")                  \
+    U(BOOL, capped, "max_screen_radius > 0")                                               \
+    U(FLOAT, inv_samples, "1 / kernel width")
+SSG_UNIFORMS_STRUCT(ssg_ssao_uniforms, SSG_SSAO_UNIFORMS);
+
 struct ssg_ssao_consts {
     struct ssg_ssao_params p; /* the parameters as given */
     struct ssg_projection proj; /* the frame's camera as seen by the G-buffer's
                                    resolution (ssg_projection_scaled: a subsampled
                                    G-buffer sees the same camera) */
-    float cap;         /* max_screen_radius / f: r <= cap depth(P) when capped */
-    int capped;        /* max_screen_radius > 0 */
-    float inv_samples; /* 1 / kernel width */
+    struct ssg_ssao_uniforms u; /* prepare()'s constants both backends read by name */
 };
 
 enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -115,8 +115,8 @@ static void setup_chunk(const struct job *j, struct chunk *restrict k, int len)
 {
     const float f = j->f, cx = j->cx, cy = j->cy, radius = j->c->p.radius;
     const float bias = j->c->p.bias;
-    const float cap = j->c->cap; /* r <= cap * depth */
-    const int capped = j->c->capped;
+    const float cap = j->c->u.cap; /* r <= cap * depth */
+    const int capped = j->c->u.capped;
     for (int i = 0; i < len; i++) {
         float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i];
         float t[3], b[3];
@@ -248,8 +248,8 @@ static void sample_all(const struct job *j, struct chunk *k, int len, int used)
 static void setup_disc(const struct job *j, struct chunk *restrict k, int len)
 {
     const float radius = j->c->p.radius;
-    const float cap = j->c->cap; /* r <= cap * depth */
-    const int capped = j->c->capped;
+    const float cap = j->c->u.cap; /* r <= cap * depth */
+    const int capped = j->c->u.capped;
     for (int i = 0; i < len; i++) {
         float rcap = cap * k->dp[i];
         float r = capped & (rcap < radius) ? rcap : radius;
@@ -334,7 +334,7 @@ static int load_counts(const struct job *j, struct chunk *restrict k, int y, int
    (2 count)), 0, 1)^power = clamp(2 - occluded / count, 0, 1)^power (README.md). */
 static void finish_chunk(const struct job *j, struct chunk *k, int len, float *out)
 {
-    const float inv_count = j->c->inv_samples, power = j->c->p.power;
+    const float inv_count = j->c->u.inv_samples, power = j->c->p.power;
     /* Without counts every lane divides by K: the same bits as before counts existed. */
     for (int i = 0; !j->cnt && i < len; i++)
         k->icnt[i] = inv_count;

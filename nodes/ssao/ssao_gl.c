@@ -13,9 +13,6 @@ enum ssg_err ssg_ssao_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "ssao.glsl", NULL);
     ssg_gl_ports(&p, io);
-    ssg_gl_float(&p, "cap", c->cap);
-    ssg_gl_int(&p, "capped", c->capped);
-    ssg_gl_float(&p, "inv_samples", c->inv_samples);
     ssg_gl_projection(&p, "proj", &c->proj);
     ssg_gl_dispatch(&p, pos->width, pos->height);
     return ssg_gl_pass_end(&p);
