@@ -96,9 +96,6 @@ void ssg_gl_vec3(struct ssg_gl_pass *pass, const char *name, const float v[3]);
 void ssg_gl_vec4(struct ssg_gl_pass *pass, const char *name, const float v[4]);
 void ssg_gl_floats(struct ssg_gl_pass *pass, const char *name, int count, const float *v);
 void ssg_gl_ints(struct ssg_gl_pass *pass, const char *name, int count, const int *v);
-/* Sets every parameter of a node's table as a uniform named after it: float -> float,
- * int/bool/enum -> int, vec3 -> vec3 (strings, names and int lists are skipped). */
-void ssg_gl_params(struct ssg_gl_pass *pass, struct ssg_param_table table, const void *params);
 /* The projection of node.h as `uniform vec3 <name>` = (f, cx, cy). */
 void ssg_gl_projection(struct ssg_gl_pass *pass, const char *name,
                        const struct ssg_projection *p);

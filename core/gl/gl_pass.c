@@ -202,31 +202,6 @@ void ssg_gl_ints(struct ssg_gl_pass *pass, const char *name, int count, const in
         glProgramUniform1iv(pass->program, loc, count, v);
 }
 
-void ssg_gl_params(struct ssg_gl_pass *pass, struct ssg_param_table table, const void *params)
-{
-    char name[96];
-    for (int i = 0; i < table.count; i++) {
-        const struct ssg_param_desc *d = &table.params[i];
-        const char *at = (const char *)params + d->offset;
-        snprintf(name, sizeof name, "p_%s", d->name);
-        switch (d->type) {
-        case SSG_P_FLOAT:
-            ssg_gl_float(pass, name, *(const float *)(const void *)at);
-            break;
-        case SSG_P_INT:
-        case SSG_P_BOOL:
-        case SSG_P_ENUM:
-            ssg_gl_int(pass, name, *(const int *)(const void *)at);
-            break;
-        case SSG_P_VEC3:
-            ssg_gl_vec3(pass, name, (const float *)(const void *)at);
-            break;
-        default:
-            break;
-        }
-    }
-}
-
 void ssg_gl_projection(struct ssg_gl_pass *pass, const char *name,
                        const struct ssg_projection *p)
 {

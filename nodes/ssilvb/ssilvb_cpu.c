@@ -1,5 +1,5 @@
 /* ssilvb_cpu.c - CPU kernel of the `ssilvb` node (method in README.md, the slice march in
- * gtao.c and gtao_cpu.c, whose layout this follows).
+ * nodes/gtao/README.md and gtao_cpu.c, whose layout this follows).
  *
  * Layout: a row is cut into chunks of CHUNK pixels held in structure-of-arrays scratch;
  * per chunk what depends on the pixel only (V, the basis, the march length, the noise) is
@@ -32,7 +32,7 @@
 
 enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 
-/* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao.c). */
+/* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (gtao/README.md). */
 #define SLICE_MIN 0.01f
 #define HALF_PI 1.57079632679489661923f
 /* The farthest back point used: its direction is then the sample's ray to float precision,
@@ -203,7 +203,7 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
         k->lim[1][i] = HALF_PI - n;
         k->g1[i] = 0.5f * (cn + (n - HALF_PI) * sn);
         k->ia[i] = 1.0f / area;
-        /* A slice within asin(0.1) of the tangent plane adds nothing (gtao.c). */
+        /* A slice within asin(0.1) of the tangent plane adds nothing (gtao/README.md). */
         float w = sl >= SLICE_MIN ? pl * area : 0.0f;
         k->w[i] = w;
         k->w32[i] = w * (1.0f / 32.0f);
