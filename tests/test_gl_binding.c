@@ -49,47 +49,28 @@ static void misspelled_uniform_is_an_error(void)
     CHECK(has_diag(&d, "ssao 'ao'", "ssao.glsl", "'inv_sampels'"));
 }
 
-/* A row the shader does not read: the table declares p_<name>, the compiler drops it. */
-static void unread_parameter_is_an_error(void)
+/* A row the shader does not read: the table declares it, the compiler drops it. `which`
+   0 adds a parameter row (p_<name>), 1 a constant's row (<name>). */
+static void unread_row_is_an_error(int which, const char *name, const char *expect)
 {
-    static struct ssg_param_desc rows[16]; /* static: the program cache keys by the node */
-    int n = ssg_node_ssao.params.count;
-    CHECK(n < 16);
-    memcpy(rows, ssg_node_ssao.params.params, (size_t)n * sizeof rows[0]);
-    rows[n] = (struct ssg_param_desc){.name = "unread_knob", .type = SSG_P_FLOAT,
-                                      .offset = 0, .def = 1};
-    static struct ssg_node_desc desc;
-    desc = ssg_node_ssao;
-    desc.params = (struct ssg_param_table){rows, n + 1};
+    static struct ssg_param_desc rows[2][16]; /* static: the program cache keys by the node */
+    static struct ssg_node_desc descs[2];
+    struct ssg_node_desc *desc = &descs[which];
+    *desc = ssg_node_ssao;
+    struct ssg_param_table *table = which ? &desc->uniforms : &desc->params;
+    int n = table->count;
+    CHECK(n > 0 && n < 16);
+    memcpy(rows[which], table->params, (size_t)n * sizeof rows[0][0]);
+    rows[which][n] = (struct ssg_param_desc){.name = name, .type = SSG_P_FLOAT};
+    *table = (struct ssg_param_table){rows[which], n + 1};
     struct ssg_ssao_params params;
-    ssg_params_defaults(desc.params, &params);
+    ssg_params_defaults(ssg_node_ssao.params, &params);
     struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = ctx_of(&desc, &params, &d);
+    struct ssg_node_ctx ctx = ctx_of(desc, &params, &d);
     struct ssg_gl_pass p;
     CHECK_EQ(ssg_gl_pass_begin(&p, &ctx, "ssao.glsl", NULL), SSG_E_SHADER);
     ssg_diags_print(&d, stderr);
-    CHECK(has_diag(&d, "ssao 'ao'", "'unread_knob'", "p_unread_knob"));
-}
-
-/* The same for a constant's row: prepare() makes it, the shader never reads it. */
-static void unread_constant_is_an_error(void)
-{
-    static struct ssg_param_desc rows[8]; /* static, as above */
-    int n = ssg_node_ssao.uniforms.count;
-    CHECK(n > 0 && n < 8);
-    memcpy(rows, ssg_node_ssao.uniforms.params, (size_t)n * sizeof rows[0]);
-    rows[n] = (struct ssg_param_desc){.name = "unread_const", .type = SSG_P_FLOAT};
-    static struct ssg_node_desc desc;
-    desc = ssg_node_ssao;
-    desc.uniforms = (struct ssg_param_table){rows, n + 1};
-    struct ssg_ssao_params params;
-    ssg_params_defaults(desc.params, &params);
-    struct ssg_diags d = {0};
-    struct ssg_node_ctx ctx = ctx_of(&desc, &params, &d);
-    struct ssg_gl_pass p;
-    CHECK_EQ(ssg_gl_pass_begin(&p, &ctx, "ssao.glsl", NULL), SSG_E_SHADER);
-    ssg_diags_print(&d, stderr);
-    CHECK(has_diag(&d, "ssao 'ao'", "constant 'unread_const'", "ssg_consts"));
+    CHECK(has_diag(&d, "ssao 'ao'", name, expect));
 }
 
 static void pass_without_parameters_is_refused(void)
@@ -109,8 +90,8 @@ int main(void)
         return 1;
     }
     misspelled_uniform_is_an_error();
-    unread_parameter_is_an_error();
-    unread_constant_is_an_error();
+    unread_row_is_an_error(0, "unread_knob", "read it as p_unread_knob");
+    unread_row_is_an_error(1, "unread_const", "constant 'unread_const' (#pragma ssg_consts)");
     pass_without_parameters_is_refused();
     ssg_gl_close();
     return check_report();
