@@ -323,6 +323,22 @@ enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char 
 enum ssg_err ssg_graph_output(struct ssg_graph *graph, const char *port,
                               struct ssg_image **out, struct ssg_diags *diags);
 
+/* The camera of a loaded graph's scene, and a new one for the whole graph (every node that
+ * reads the camera sees it: the G-buffer, projections, ray tracers). A camera that cannot
+ * be (a coordinate not finite, target = position, up parallel to the view or zero, fov_y
+ * outside (0, 180)) is refused with why; a graph without a scene has no camera
+ * (SSG_E_SCENE). On a kept graph every node prepares and runs again after a new camera. */
+struct ssg_view {
+    float position[3]; /* world, scene units */
+    float target[3];   /* the world point looked at */
+    float up[3];       /* world up hint */
+    float fov_y;       /* vertical field of view, degrees */
+};
+enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_view *out,
+                            struct ssg_diags *diags);
+enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
+                                struct ssg_diags *diags);
+
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */
 enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);

@@ -8,6 +8,8 @@
  *     the readers (ssao's 1 / K), and still gives a fresh load's bytes;
  *   - a bad set (unknown node, unknown parameter, an input, a value out of range) is an
  *     error that leaves the graph as it was;
+ *   - a new camera (ssg_graph_set_view) changes the image, the old one back restores its
+ *     bytes, and impossible cameras are refused;
  *   - the memory limit evicts, and evicted nodes run again with the same bytes. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -172,6 +174,46 @@ static void only_what_changed_runs(const char *backend)
     ssg_graph_destroy(&g);
 }
 
+/* A new camera changes the image; the old camera back gives the first run's bytes again.
+   Bad cameras are refused and change nothing. */
+static void camera_moves_and_returns(const char *backend)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    struct ssg_view home, moved;
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_view(g, &home, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    struct ssg_image *first = NULL, *other = NULL;
+    CHECK_EQ(ssg_graph_output(g, "img.out", &first, &d), SSG_OK);
+    moved = home;
+    moved.position[0] += 0.4f;
+    moved.fov_y = home.fov_y * 0.8f;
+    CHECK_EQ(ssg_graph_set_view(g, &moved, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_output(g, "img.out", &other, &d), SSG_OK);
+    CHECK(!same_image(first, other));
+    ssg_image_destroy(&other);
+    struct ssg_view bad = home;
+    bad.up[0] = bad.target[0] - bad.position[0], bad.up[1] = bad.target[1] - bad.position[1];
+    bad.up[2] = bad.target[2] - bad.position[2];
+    struct ssg_diags refused = {0};
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &refused), SSG_E_VALUE);
+    bad = home, bad.fov_y = 180;
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &refused), SSG_E_VALUE);
+    ssg_diags_print(&refused, stderr);
+    CHECK_EQ(ssg_graph_set_view(g, &home, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_output(g, "img.out", &other, &d), SSG_OK);
+    CHECK(same_image(first, other));
+    ssg_image_destroy(&first);
+    ssg_image_destroy(&other);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
 /* halton's count is the kernel's width: ssao's prepared 1 / K must be made again. */
 static void shape_change_reprepares(const char *backend)
 {
@@ -247,6 +289,8 @@ int main(void)
     only_what_changed_runs("cpu");
     bad_sets_change_nothing();
     shape_change_reprepares("cpu");
+    camera_moves_and_returns("cpu");
+    camera_moves_and_returns("gl");
     shape_change_reprepares("gl");
     memory_limit_evicts();
     random_walk("graphs/ssao.graph", "cpu", ssao_choices, 6, 7);

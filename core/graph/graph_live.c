@@ -5,7 +5,9 @@
  * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs,
  * and those of every node whose shapes the change moved; a run re-runs every node whose
  * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
- * sequence of sets and runs gives the bytes of a fresh load with the final settings. */
+ * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
+ * camera (ssg_graph_set_view) makes every node prepare and run again. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -217,4 +219,68 @@ enum ssg_err ssg_graph_output(struct ssg_graph *g, const char *port, struct ssg_
         memcpy((*out)->data, im->data, (size_t)im->width * (size_t)im->height *
                                            (size_t)im->channels * sizeof *im->data);
     return e;
+}
+
+enum ssg_err ssg_graph_view(const struct ssg_graph *g, struct ssg_view *out,
+                            struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_view", "graph, out", 2, g, out))
+        return SSG_E_USAGE;
+    if (!g->scene) {
+        ssg_diag_file(diags, SSG_E_SCENE, g->path, "the graph has no scene, so no camera");
+        return SSG_E_SCENE;
+    }
+    const struct ssg_camera *c = &g->scene->camera;
+    memcpy(out->position, c->position, sizeof out->position);
+    memcpy(out->target, c->target, sizeof out->target);
+    memcpy(out->up, c->up, sizeof out->up);
+    out->fov_y = c->fov_y;
+    return SSG_OK;
+}
+
+/* Why a view cannot be a camera, or NULL when it can. */
+static const char *bad_view(const struct ssg_view *v)
+{
+    float d[3], side[3];
+    for (int k = 0; k < 3; k++) {
+        if (!isfinite(v->position[k]) || !isfinite(v->target[k]) || !isfinite(v->up[k]))
+            return "a coordinate is not a finite number";
+        d[k] = v->target[k] - v->position[k];
+    }
+    side[0] = d[1] * v->up[2] - d[2] * v->up[1];
+    side[1] = d[2] * v->up[0] - d[0] * v->up[2];
+    side[2] = d[0] * v->up[1] - d[1] * v->up[0];
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= 0)
+        return "the target is the position: no direction to look in";
+    if (side[0] * side[0] + side[1] * side[1] + side[2] * side[2] <= 0)
+        return "up is parallel to the view direction (or zero)";
+    if (!(v->fov_y > 0 && v->fov_y < 180))
+        return "fov_y must lie in (0, 180) degrees";
+    return NULL;
+}
+
+enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
+                                struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_set_view", "graph, view", 2, g, v))
+        return SSG_E_USAGE;
+    const char *why = bad_view(v);
+    if (!g->scene || why) {
+        ssg_diag_file(diags, g->scene ? SSG_E_VALUE : SSG_E_SCENE, g->path, "cannot set "
+                      "the camera: %s", g->scene ? why : "the graph has no scene");
+        return g->scene ? SSG_E_VALUE : SSG_E_SCENE;
+    }
+    struct ssg_camera *c = &g->scene->camera;
+    memcpy(c->position, v->position, sizeof c->position);
+    memcpy(c->target, v->target, sizeof c->target);
+    memcpy(c->up, v->up, sizeof c->up);
+    c->fov_y = v->fov_y;
+    g->frame.fov_y = v->fov_y;
+    struct ssg_diags quiet = {0};
+    ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
+    /* Every node may read the camera (the G-buffer, the projection in prepare(), the ray
+       tracers' frames): all prepare and run again. */
+    for (int p = 0; g->live && p < g->order_count; p++)
+        forget(g, p);
+    return SSG_OK;
 }
