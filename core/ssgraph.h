@@ -323,6 +323,14 @@ enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char 
 enum ssg_err ssg_graph_output(struct ssg_graph *graph, const char *port,
                               struct ssg_image **out, struct ssg_diags *diags);
 
+/* Supplies the image of an `input` node (docs/nodes.md): the graph keeps a copy, used by
+ * every run until the next supply. The image must have the node's output shape (its type's
+ * channels; the frame's size with its guard band unless the node's width and height say
+ * otherwise), else SSG_E_SIZE naming both; a node that is not an input is refused. On a
+ * kept graph the node and what reads it run again. */
+enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
+                              const struct ssg_image *image, struct ssg_diags *diags);
+
 /* The camera of a loaded graph's scene, and a new one for the whole graph (every node that
  * reads the camera sees it: the G-buffer, projections, ray tracers). A camera that cannot
  * be (a coordinate not finite, target = position, up parallel to the view or zero, fov_y

@@ -217,6 +217,8 @@ void ssg_graph_destroy(struct ssg_graph **graph)
     if (!graph || !*graph)
         return;
     ssg_live_free(*graph);
+    for (int i = 0; i < (*graph)->count; i++)
+        ssg_image_destroy(&(*graph)->nodes[i].supplied);
     ssg_scene_destroy(&(*graph)->scene);
     ssg_arena_free(&(*graph)->arena);
     free(*graph);

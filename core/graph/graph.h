@@ -40,6 +40,8 @@ struct gnode {
     enum ssg_backend backend;  /* backend= of the call; DEFAULT = the graph's */
     struct ssg_loc backend_loc; /* where backend= was written */
     enum ssg_backend runs_on;  /* resolved by validation: CPU or GL */
+    struct ssg_image *supplied; /* a supplied node's image (ssg_graph_supply), the graph's
+                                   own copy; NULL = none */
 };
 
 struct ssg_graph {

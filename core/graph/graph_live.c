@@ -284,3 +284,39 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
         forget(g, p);
     return SSG_OK;
 }
+
+enum ssg_err ssg_graph_supply(struct ssg_graph *g, const char *node,
+                              const struct ssg_image *image, struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_supply", "graph, node, image", 3, g, node, image))
+        return SSG_E_USAGE;
+    int i = ssg_graph_find(g, node, strlen(node));
+    struct gnode *n = i >= 0 ? &g->nodes[i] : NULL;
+    if (!n || !n->desc->supplied) {
+        ssg_diag_file(diags, n ? SSG_E_TYPE : SSG_E_UNKNOWN_NAME, g->path, "%s '%s' %s "
+                      "(expected a node of type input)", n ? "node" : "no node named", node,
+                      n ? "takes no supplied image" : "in the graph");
+        return n ? SSG_E_TYPE : SSG_E_UNKNOWN_NAME;
+    }
+    const struct ssg_shape *s = &n->out_shape[0];
+    if (image->width != s->width || image->height != s->height ||
+        image->channels != s->channels) {
+        ssg_diag_at(diags, SSG_E_SIZE, n->loc, "node '%s' (%s) was supplied a %dx%d image "
+                    "of %d channels (expected %dx%d with %d: its type and size, the frame's "
+                    "with its guard band unless width and height say otherwise)", n->name,
+                    n->desc->name, image->width, image->height, image->channels,
+                    s->width, s->height, s->channels);
+        return SSG_E_SIZE;
+    }
+    struct ssg_image *copy = ssg_image_create(image->width, image->height, image->channels);
+    if (!copy)
+        return SSG_E_NOMEM;
+    memcpy(copy->data, image->data, (size_t)image->width * (size_t)image->height *
+                                        (size_t)image->channels * sizeof *image->data);
+    ssg_image_destroy(&n->supplied);
+    n->supplied = copy;
+    for (int p = 0; g->live && p < g->order_count; p++)
+        if (g->order[p] == i)
+            forget(g, p);
+    return SSG_OK;
+}

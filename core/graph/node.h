@@ -125,6 +125,8 @@ struct ssg_node_ctx {
                                       and prepare, which get them as an argument */
     const void *consts;            /* what prepare() made, likewise while a backend runs
                                       (NULL for a node without consts) */
+    const struct ssg_image *supplied; /* a `supplied` node's image from the caller, of
+                                         output 0's shape; NULL = none supplied */
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate
@@ -190,6 +192,9 @@ struct ssg_node_desc {
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
+    int supplied;        /* 1 = a source whose image the caller supplies
+                            (ssg_graph_supply): the executor hands it to the node as
+                            ctx->supplied, which must match output 0's shape */
 
     /* Optional. Cross-parameter checks and output shapes. `out` arrives filled with the
        default shapes (frame size, type channels, or same_as); a node with kernel or pattern
