@@ -348,7 +348,7 @@ static void layer_info(const struct names *n, const char *name, int w, int h, in
                        struct ssg_layer_info *info)
 {
     memset(info, 0, sizeof *info);
-    snprintf(info->name, sizeof info->name, "%s", name);
+    snprintf(info->name, sizeof info->name, "%.*s", SSG_LAYER_NAME_MAX - 1, name);
     info->channel_count = select_channels(n, name, idx);
     for (int k = 0; k < info->channel_count && k < 4; k++)
         snprintf(info->channels[k], sizeof info->channels[k], "%.*s",
