@@ -1,7 +1,8 @@
 /* test_graph_outputs.c - requested outputs (ssg_overrides.outputs, ssg_run_options.outputs)
  * and ssg_graph_param: a load that asks for one port runs only what that port needs (no
  * sink, no file written), hands back the port's pixels equal to a whole run's, and names
- * what it lacks (node, port) with the code and place; a parameter's value and kind come
+ * what it lacks (node, port) with the code and place; with keep_sinks the sinks run too
+ * (ssgraph run --show); a parameter's value and kind come
  * back after set lines and overrides, and keys the graph lacks are refused with the node's
  * line:column. Graphs are written to SSG_TMP. */
 #include <stdio.h>
@@ -117,6 +118,38 @@ static void test_only_what_the_port_needs(const char *graph)
     ssg_image_destroy(&depth);
 }
 
+/* keep_sinks: the requested port is handed out and the graph's sinks still run (every
+   node, the file written); without outputs it changes nothing. */
+static void test_keep_sinks(const char *graph)
+{
+    char dir[600], written[700];
+    snprintf(dir, sizeof dir, "%s/keep", tmpdir);
+    snprintf(written, sizeof written, "%s/t.exr", dir);
+    for (int with_outputs = 0; with_outputs < 2; with_outputs++) {
+        unlink(written); /* the previous pass's */
+        const char *outs[] = {"g.depth"};
+        struct ssg_overrides ov = {.seed = -1, .outputs = with_outputs ? outs : NULL,
+                                   .output_count = with_outputs, .keep_sinks = 1};
+        struct ssg_image *im[1] = {NULL};
+        struct ssg_run_stats st = {0};
+        struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = &st,
+                                     .outputs = with_outputs ? im : NULL};
+        struct ssg_diags d = {0};
+        struct ssg_graph *g = NULL;
+        enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
+        if (!e)
+            e = ssg_graph_run(g, &ro, &d);
+        CHECK_EQ(e, SSG_OK);
+        ssg_diags_print(&d, stderr);
+        CHECK_EQ(st.node_count, 4); /* gbuffer, halton, ssao, write */
+        CHECK(access(written, F_OK) == 0);
+        CHECK(!with_outputs || (im[0] && im[0]->width == 24 && im[0]->channels == 1));
+        ssg_image_destroy(&im[0]);
+        ssg_run_stats_free(&st);
+        ssg_graph_destroy(&g);
+    }
+}
+
 /* A requested output the graph lacks: the code, in the file "<output>", at the column of
    the name that is wrong. */
 static void expect_output_error(const char *graph, const char *port, enum ssg_err code,
@@ -175,6 +208,7 @@ int main(void)
     const char *graph = graph_path();
     test_only_what_the_port_needs(graph);
     test_frames(graph);
+    test_keep_sinks(graph);
     expect_output_error(graph, "a.out", SSG_E_UNKNOWN_NAME, 1);
     expect_output_error(graph, "ao.diff", SSG_E_UNKNOWN_PORT, 4);
     expect_output_error(graph, "3", SSG_E_USAGE, 1);
