@@ -38,15 +38,17 @@ static const char *graph_path(void)
     return path;
 }
 
-/* One run of the graph asking for `port`: its image (NULL on failure), and the nodes run. */
-static struct ssg_image *run_port_frames(const char *graph, const char *port,
-                                         const char *dir, struct ssg_run_stats *st, int frames)
+/* One run of the graph asking for `port` (NULL: none), keeping its sinks or not: the
+   port's image (NULL on failure or without one), and the nodes run. */
+static struct ssg_image *run_with(const char *graph, const char *port, int keep_sinks,
+                                  const char *dir, struct ssg_run_stats *st, int frames)
 {
     const char *outs[] = {port};
-    struct ssg_overrides ov = {.seed = -1, .outputs = outs, .output_count = 1};
+    struct ssg_overrides ov = {.seed = -1, .outputs = port ? outs : NULL,
+                               .output_count = port != NULL, .keep_sinks = keep_sinks};
     struct ssg_image *im[1] = {NULL};
-    struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = st, .outputs = im,
-                                 .frames = frames};
+    struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = st,
+                                 .outputs = port ? im : NULL, .frames = frames};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
@@ -56,6 +58,12 @@ static struct ssg_image *run_port_frames(const char *graph, const char *port,
     ssg_diags_print(&d, stderr);
     ssg_graph_destroy(&g);
     return im[0];
+}
+
+static struct ssg_image *run_port_frames(const char *graph, const char *port,
+                                         const char *dir, struct ssg_run_stats *st, int frames)
+{
+    return run_with(graph, port, 0, dir, st, frames);
 }
 
 static struct ssg_image *run_port(const char *graph, const char *port, const char *dir,
@@ -127,26 +135,13 @@ static void test_keep_sinks(const char *graph)
     snprintf(written, sizeof written, "%s/t.exr", dir);
     for (int with_outputs = 0; with_outputs < 2; with_outputs++) {
         unlink(written); /* the previous pass's */
-        const char *outs[] = {"g.depth"};
-        struct ssg_overrides ov = {.seed = -1, .outputs = with_outputs ? outs : NULL,
-                                   .output_count = with_outputs, .keep_sinks = 1};
-        struct ssg_image *im[1] = {NULL};
         struct ssg_run_stats st = {0};
-        struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = &st,
-                                     .outputs = with_outputs ? im : NULL};
-        struct ssg_diags d = {0};
-        struct ssg_graph *g = NULL;
-        enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
-        if (!e)
-            e = ssg_graph_run(g, &ro, &d);
-        CHECK_EQ(e, SSG_OK);
-        ssg_diags_print(&d, stderr);
+        struct ssg_image *im = run_with(graph, with_outputs ? "g.depth" : NULL, 1, dir, &st, 1);
         CHECK_EQ(st.node_count, 4); /* gbuffer, halton, ssao, write */
         CHECK(access(written, F_OK) == 0);
-        CHECK(!with_outputs || (im[0] && im[0]->width == 24 && im[0]->channels == 1));
-        ssg_image_destroy(&im[0]);
+        CHECK(!with_outputs || (im && im->width == 24 && im->channels == 1));
+        ssg_image_destroy(&im);
         ssg_run_stats_free(&st);
-        ssg_graph_destroy(&g);
     }
 }
 
