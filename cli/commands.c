@@ -11,7 +11,9 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "file written is named on a line `wrote PATH` as it is written; then comes the\n"
      "table of every node's time (with --frames N a profile over the frames) and the\n"
      "metrics. -o DIR/NAME.exr names the graph's first write node's output: NAME.exr\n"
-     "and NAME.png in DIR, every other file of the run in DIR too (as --out DIR)."},
+     "and NAME.png in DIR, every other file of the run in DIR too (as --out DIR).\n"
+     "--show ao.out,g.normal also writes those ports as <out>/ao.out.exr and .png (as a\n"
+     "write node of the port would), without a change to the graph."},
     {SSG_CLI_CHECK, "check", "FILE", 1, 1,
      "validate a graph and its scene without running it (FILE.scene:\n"
      "validate a scene and load its meshes; a model file: describe it)",
@@ -58,6 +60,20 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "consumer's input or layer name). Nothing is validated beyond parsing, so a graph\n"
      "that does not check yet can still be drawn:\n"
      "  ssgraph dot graphs/ssdo.graph | dot -Tsvg > ssdo.svg"},
+    {SSG_CLI_LAYERS, "layers", "FILE", 1, 1,
+     "an image file's layers: channels, size, min/max/mean",
+     "Lists the layers of the image FILE (an EXR's named layers, its unnamed channels and\n"
+     "its depth Z; any other file: one unnamed layer), a line each: the name that reads\n"
+     "it (`ssgraph extract`, `ssgraph node --in PORT=FILE:LAYER`), its channels as the\n"
+     "file names them (what oiiotool's --ch wants: ao.Y), its size, and the minimum,\n"
+     "maximum and mean of its finite values (and how many are not finite)."},
+    {SSG_CLI_EXTRACT, "extract", "FILE LAYER", 2, 2,
+     "one layer of an EXR as PNG or EXR (-o OUT.png|OUT.exr)",
+     "Writes the layer LAYER of the image FILE to -o OUT.exr (32-bit float: Y, or R,G,B)\n"
+     "or OUT.png (the write node's 8-bit sRGB preview, grey for one channel; --tonemap,\n"
+     "--exposure). LAYER is a name `ssgraph layers` lists (`(unnamed)`: the unnamed\n"
+     "channels) or one channel of it (ao.Y; normal.X: that channel alone). An unknown\n"
+     "layer is an error naming the file's layers; no error leaves a file behind."},
     {SSG_CLI_NODES, "nodes", "", 0, 0, "list the nodes",
      "Lists every node type with its one-line summary."},
     {SSG_CLI_DESCRIBE, "describe", "NODE", 1, 1,

@@ -7,6 +7,7 @@
  *   ssgraph bench FILE --sweep NODE.PARAM=V1,V2,... [options]
  *   ssgraph tune FILE --reference NODE.PORT --image NODE.PORT --param NODE.P=LO:HI ...
  *   ssgraph dot FILE [-o FILE.dot]
+ *   ssgraph layers FILE.exr | extract FILE.exr LAYER -o OUT.png|OUT.exr
  *   ssgraph nodes | describe NODE | docs | help [COMMAND] | --version
  * The commands and their usage come from commands.c, the options from one table
  * (options.c); what a run printed comes back from the library as statistics and is
@@ -21,12 +22,14 @@
 
 #include "bench.h"
 #include "graph_info.h"
+#include "layers.h"
 #include "io/imageio.h"
 #include "io/stereo.h"
 #include "lang/files.h"
 #include "options.h"
 #include "report.h"
 #include "scene_info.h"
+#include "show.h"
 #include "ssgraph.h"
 #include "version.h"
 
@@ -60,21 +63,27 @@ static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char
     ov.eye_offset = eye * 0.5f * a->ipd;
     struct ssg_graph *g = NULL;
     struct ssg_run_stats st = {0};
+    static struct ssg_cli_show show; /* --show (checked by cmd_run) */
+    struct ssg_run_options ro = {
+        .out_dir = out_dir, .threads = a->threads, .frames = a->frames, .stats = &st,
+        .progress = !a->quiet && isatty(fileno(stderr)) ? ssg_report_progress : NULL,
+        .log = a->quiet || eye != 0.0f ? NULL : ssg_report_log, /* stereo: its join's */
+    };
+    if (a->show && !ssg_cli_show_parse(a->show, &show))
+        ssg_cli_show_request(&show, &ov, &ro);
     enum ssg_err e = ssg_graph_load(a->files[0], &ov, &g, d);
     if (!e) {
-        struct ssg_run_options ro = {
-            .out_dir = out_dir, .threads = a->threads, .frames = a->frames, .stats = &st,
-            .progress = !a->quiet && isatty(fileno(stderr)) ? ssg_report_progress : NULL,
-            .log = a->quiet || eye != 0.0f ? NULL : ssg_report_log, /* stereo: its join's */
-        };
         if (a->verbose && !a->quiet)
             ssg_cli_print_resolved(g, stdout);
         e = ssg_graph_run(g, &ro, d);
+        if (!e && a->show)
+            e = ssg_cli_show_write(&show, g, out_dir, a->tonemap, a->exposure, a->quiet, d);
         enum ssg_err shown = show_run(a, &st, d);
         e = e ? e : shown;
     }
     if (frame_ms)
         *frame_ms = st.frame_avg_ms;
+    ssg_cli_show_free(&show);
     ssg_run_stats_free(&st);
     ssg_graph_destroy(&g);
     return e;
@@ -166,6 +175,14 @@ static int cmd_run(struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
     int rc = a->output ? output_of_run(a) : 0;
+    struct ssg_cli_show show;
+    if (!rc && a->show && a->stereo)
+        rc = ssg_cli_usage_error("%s", "--show writes one view's ports: not with --stereo");
+    if (!rc && a->show)
+        rc = ssg_cli_show_parse(a->show, &show);
+    if (!rc && (a->tonemap || a->exposure != 0.0f) && !a->show)
+        rc = ssg_cli_usage_error("%s", "--tonemap and --exposure are the PNGs' of --show: "
+                                 "give --show NODE.PORT");
     if (rc)
         return rc;
     if (a->stereo)
@@ -380,6 +397,23 @@ static int cmd_dot(const struct ssg_cli_args *a)
     return conclude(&d, e);
 }
 
+/* `layers FILE`, `extract FILE LAYER -o OUT.png|OUT.exr` (layers.h). */
+static int cmd_layers(const struct ssg_cli_args *a, enum ssg_cli_command command)
+{
+    struct ssg_diags d = {0};
+    if (command == SSG_CLI_LAYERS)
+        return conclude(&d, ssg_cli_layers(a->files[0], stdout, &d));
+    size_t n = a->output ? strlen(a->output) : 0;
+    if (n <= 4 || (strcmp(a->output + n - 4, ".png") && strcmp(a->output + n - 4, ".exr")))
+        return ssg_cli_usage_error("extract writes -o OUT.png or OUT.exr, got '%s'",
+                                   a->output ? a->output : "no -o");
+    enum ssg_err e = ssg_cli_extract(a->files[0], a->files[1], a->output, a->tonemap,
+                                     a->exposure, &d);
+    if (!e)
+        printf("wrote %s\n", a->output);
+    return conclude(&d, e);
+}
+
 static int cmd_help(const struct ssg_cli_args *a)
 {
     enum ssg_cli_command command;
@@ -452,6 +486,8 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_DESCRIBE: return cmd_describe(a.files[0]);
     case SSG_CLI_DOCS: return cmd_docs(a.file_count ? a.files[0] : NULL);
     case SSG_CLI_HELP: return cmd_help(&a);
+    case SSG_CLI_LAYERS:
+    case SSG_CLI_EXTRACT: return cmd_layers(&a, command);
     }
     return EXIT_USAGE;
 }

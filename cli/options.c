@@ -156,6 +156,13 @@ static int take_backend(struct ssg_cli_args *a, const struct option *opt, const 
     return take_text(a, opt, value);
 }
 
+static int take_tonemap(struct ssg_cli_args *a, const struct option *opt, const char *value)
+{
+    if (strcmp(value, "clamp") && strcmp(value, "reinhard") && strcmp(value, "aces"))
+        return usage_errorf("%s expects %s, got '%s'", opt->name, opt->expects, value);
+    return take_text(a, opt, value);
+}
+
 #define OF(member) offsetof(struct ssg_cli_args, member)
 #define ALL_GRAPH (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE)
 
@@ -228,15 +235,28 @@ static const struct option options[] = {
              "every node's parameters (run); each output's size (node); every\n"
              "node's ms per cell (bench); each scene's reference time (tune)"},
     {.name = "--output", .short_name = 'o', .arg = "FILE",
-     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_DOT, .take = take_text,
-     .field = OF(output),
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_DOT | SSG_CLI_EXTRACT,
+     .take = take_text, .field = OF(output),
      .help = "the main output: run: DIR/NAME.exr names the first write node's\n"
              "EXR (its PNG beside it; the run's other files go to DIR too);\n"
              "node: the first output's EXR (others: FILE_<port>.exr); dot: the\n"
-             "DOT file (default: stdout)"},
+             "DOT file (default: stdout); extract: OUT.png or OUT.exr"},
     {.name = "--profile-json", .arg = "FILE", .commands = SSG_CLI_RUN, .take = take_text,
      .field = OF(profile_json),
      .help = "write that profile (or one frame's) as JSON"},
+    {.name = "--show", .arg = "NODE.PORT[,...]", .commands = SSG_CLI_RUN, .take = take_text,
+     .field = OF(show),
+     .help = "also write these ports (up to 8) as <out>/NODE.PORT.png and .exr,\n"
+             "framed and previewed as a write node would; the graph runs as it\n"
+             "is (its own files too)"},
+    {.name = "--tonemap", .arg = "CURVE", .commands = SSG_CLI_RUN | SSG_CLI_EXTRACT,
+     .take = take_tonemap, .field = OF(tonemap), .expects = "clamp, reinhard or aces",
+     .help = "the PNG's tone curve (run: of --show's): clamp, reinhard or aces\n"
+             "(default aces, as the write node's)"},
+    {.name = "--exposure", .arg = "STOPS", .commands = SSG_CLI_RUN | SSG_CLI_EXTRACT,
+     .take = take_float, .field = OF(exposure), .lo = -21, .hi = 21,
+     .expects = "stops in (-21, 21)",
+     .help = "the PNG's values times 2^STOPS before tone mapping (default 0)"},
     {.name = "--in", .arg = "PORT=FILE[:LAYER]", .commands = SSG_CLI_NODE, .take = take_list,
      .field = OF(inputs), .count = OF(input_count), .hi = SSG_CLI_MAX_INPUTS,
      .help = "bind an image file, or one EXR layer of it, to a port"},

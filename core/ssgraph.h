@@ -264,6 +264,10 @@ struct ssg_overrides {
                                    the graph lacks is reported (file "<output>"); NULL =
                                    the sinks decide, as always */
     int output_count;        /* entries of outputs, at most SSG_MAX_OUTPUTS */
+    int keep_sinks;          /* with outputs: 1 = the graph's sinks still load and run
+                                (and write their files) beside the requested outputs,
+                                which are handed out as well (`ssgraph run --show`);
+                                0 = the outputs replace the sinks, as described above */
 };
 
 /* Most outputs one load may request (ssg_overrides.outputs). */
@@ -391,6 +395,54 @@ enum ssg_err ssg_node_describe(const char *node, FILE *stream);
  * types, then each node's ports and parameters. With graphs_dir (NULL: left out), each
  * node also lists the .graph files of that folder and its sub-folders that use it. */
 void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
+
+/* ---- Looking at images: a run's ports and an EXR's layers (`ssgraph run --show`,
+ * `ssgraph layers`, `ssgraph extract`). Added for issue 31; core/graph/graph_show.c and
+ * core/io/image_show.c. ---- */
+
+/* The frame a loaded graph runs at, as its nodes see it: size, guard band, lens, seed. */
+void ssg_graph_frame(const struct ssg_graph *graph, struct ssg_frame *frame);
+
+/* The frame's part of an image, as the write node writes it: an image of the frame's full
+ * size with a guard band (ssg_frame_full_width x ssg_frame_full_height, guard > 0) loses
+ * its band into a new image, which *copy owns (the caller frees it) and which is returned;
+ * any other image (or any with frame NULL) is returned as it is, *copy NULL. NULL when
+ * out of memory, or when image or copy is NULL. */
+const struct ssg_image *ssg_image_framed(const struct ssg_frame *frame,
+                                         const struct ssg_image *image,
+                                         struct ssg_image **copy);
+
+/* Writes the 8-bit sRGB PNG preview the write node writes of its main image, through a
+ * temporary file renamed into place: every value times 2^exposure (stops), tone mapped by
+ * `tonemap` ("aces", the write node's default, when NULL; "reinhard"; "clamp"), sRGB
+ * encoded. 1 channel: grey; 3: colour; 2: red and green, blue 0; 4: the colour without
+ * alpha. Errors: SSG_E_VALUE for an unknown tone curve, SSG_E_CHANNELS for more than 4
+ * channels, SSG_E_IO, SSG_E_NOMEM. */
+enum ssg_err ssg_image_write_png(const char *path, const struct ssg_image *image,
+                                 const char *tonemap, float exposure,
+                                 struct ssg_diags *diags);
+
+#define SSG_LAYER_NAME_MAX 128 /* bytes of a layer or channel name, with its NUL */
+#define SSG_LAYERS_MAX 64      /* layers ssg_image_layers lists, at most */
+
+/* One layer of an image file: what ssg_image_read(path, name, ...) reads. */
+struct ssg_layer_info {
+    char name[SSG_LAYER_NAME_MAX]; /* as ssg_image_read's `layer` takes it ("ao",
+                                      "depth"); "" = the unnamed channels (R,G,B or Y) */
+    int channel_count;             /* channels it reads as (1..4; more: too many to read) */
+    char channels[4][SSG_LAYER_NAME_MAX]; /* the file's names of its first channels, in the
+                                             order read ("ao.Y"; "R", "G", "B"; depth's
+                                             "Z") */
+    int width, height;             /* pixels */
+};
+
+/* The layers of an image file: an EXR's unnamed channels (when it has some), each LAYER
+ * of its LAYER.suffix channels and `depth` for OpenEXR's bare Z, in the order of their
+ * first channel in the file (OpenEXR sorts channel names); any other file is one unnamed
+ * layer. Fills at most max
+ * entries, *count = how many the file has. Errors as ssg_image_read's. */
+enum ssg_err ssg_image_layers(const char *path, struct ssg_layer_info *layers, int max,
+                              int *count, struct ssg_diags *diags);
 
 #ifdef __cplusplus
 }

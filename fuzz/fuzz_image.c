@@ -1,7 +1,8 @@
 /* fuzz_image.c - libFuzzer target for image and light-probe loading: the input, named by
  * its magic bytes (.exr, .png, .hdr, else .img), is read as an image by OpenImageIO
  * (ssg_image_read: every layout, tiled or scanline, every channel count) and then as a
- * scene's environment probe (the probe checks and tables of core/scene/env.h). See
+ * scene's environment probe (the probe checks and tables of core/scene/env.h); its layers
+ * are listed (ssg_image_layers) and read by their names. See
  * fuzz_input.h. */
 #define _DEFAULT_SOURCE /* mkstemps */
 #include "fuzz_input.h"
@@ -35,10 +36,27 @@ static void load_as_probe(const char *image)
     unlink(scene);
 }
 
+/* Its layers as `ssgraph layers` lists them, the first few read by the names listed. */
+static void load_layers(const char *path)
+{
+    static struct ssg_layer_info layers[SSG_LAYERS_MAX];
+    struct ssg_diags diags = {0};
+    int count = 0;
+    if (ssg_image_layers(path, layers, SSG_LAYERS_MAX, &count, &diags) != SSG_OK)
+        return;
+    for (int i = 0; i < count && i < 4; i++) {
+        struct ssg_image *im = NULL;
+        struct ssg_diags d = {0};
+        ssg_image_read(path, layers[i].name[0] ? layers[i].name : NULL, &im, &d);
+        ssg_image_destroy(&im);
+    }
+}
+
 static void load_image(const char *path)
 {
     struct ssg_diags diags = {0};
     struct ssg_image *im = NULL;
+    load_layers(path);
     if (ssg_image_read(path, NULL, &im, &diags) == SSG_OK) {
         ssg_image_destroy(&im);
         load_as_probe(path);

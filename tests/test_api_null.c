@@ -82,6 +82,37 @@ static void images(void)
     CHECK(ssg_image_create(0, 0, 1) == NULL);
 }
 
+/* ssgraph.h's "Looking at images" section. */
+static void looking(void)
+{
+    struct ssg_diags d = {0};
+    struct ssg_image *im = ssg_image_create(2, 2, 1), *copy = im;
+    expect_usage(ssg_image_write_png(NULL, im, NULL, 0, &d), &d, "ssg_image_write_png",
+                 "path");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_write_png("x.png", NULL, NULL, 0, &d), &d, "ssg_image_write_png",
+                 "image");
+    struct ssg_layer_info info[1];
+    int count = 7;
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_layers(NULL, info, 1, &count, &d), &d, "ssg_image_layers", "path");
+    CHECK_EQ(count, 0);
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_layers("x.exr", info, 1, NULL, &d), &d, "ssg_image_layers",
+                 "count");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_image_layers("x.exr", NULL, 1, &count, &d), &d, "ssg_image_layers",
+                 "layers");
+    CHECK(ssg_image_framed(NULL, NULL, &copy) == NULL);
+    CHECK(ssg_image_framed(NULL, im, NULL) == NULL);
+    CHECK(ssg_image_framed(NULL, im, &copy) == im && copy == NULL);
+    struct ssg_frame f = {0};
+    ssg_graph_frame(NULL, &f);
+    CHECK(f.fov_y == SSG_DEFAULT_FOV_Y && f.seed == 1);
+    ssg_graph_frame(NULL, NULL);
+    ssg_image_destroy(&im);
+}
+
 static void nodes(void)
 {
     struct ssg_diags d = {0};
@@ -131,6 +162,7 @@ int main(void)
     graphs();
     graph_param();
     images();
+    looking();
     nodes();
     diagnostics();
     return check_report();

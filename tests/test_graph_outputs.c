@@ -1,7 +1,8 @@
 /* test_graph_outputs.c - requested outputs (ssg_overrides.outputs, ssg_run_options.outputs)
  * and ssg_graph_param: a load that asks for one port runs only what that port needs (no
  * sink, no file written), hands back the port's pixels equal to a whole run's, and names
- * what it lacks (node, port) with the code and place; a parameter's value and kind come
+ * what it lacks (node, port) with the code and place; with keep_sinks the sinks run too
+ * (ssgraph run --show); a parameter's value and kind come
  * back after set lines and overrides, and keys the graph lacks are refused with the node's
  * line:column. Graphs are written to SSG_TMP. */
 #include <stdio.h>
@@ -37,15 +38,17 @@ static const char *graph_path(void)
     return path;
 }
 
-/* One run of the graph asking for `port`: its image (NULL on failure), and the nodes run. */
-static struct ssg_image *run_port_frames(const char *graph, const char *port,
-                                         const char *dir, struct ssg_run_stats *st, int frames)
+/* One run of the graph asking for `port` (NULL: none), keeping its sinks or not: the
+   port's image (NULL on failure or without one), and the nodes run. */
+static struct ssg_image *run_with(const char *graph, const char *port, int keep_sinks,
+                                  const char *dir, struct ssg_run_stats *st, int frames)
 {
     const char *outs[] = {port};
-    struct ssg_overrides ov = {.seed = -1, .outputs = outs, .output_count = 1};
+    struct ssg_overrides ov = {.seed = -1, .outputs = port ? outs : NULL,
+                               .output_count = port != NULL, .keep_sinks = keep_sinks};
     struct ssg_image *im[1] = {NULL};
-    struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = st, .outputs = im,
-                                 .frames = frames};
+    struct ssg_run_options ro = {.out_dir = dir, .threads = 1, .stats = st,
+                                 .outputs = port ? im : NULL, .frames = frames};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
@@ -55,6 +58,12 @@ static struct ssg_image *run_port_frames(const char *graph, const char *port,
     ssg_diags_print(&d, stderr);
     ssg_graph_destroy(&g);
     return im[0];
+}
+
+static struct ssg_image *run_port_frames(const char *graph, const char *port,
+                                         const char *dir, struct ssg_run_stats *st, int frames)
+{
+    return run_with(graph, port, 0, dir, st, frames);
 }
 
 static struct ssg_image *run_port(const char *graph, const char *port, const char *dir,
@@ -117,6 +126,25 @@ static void test_only_what_the_port_needs(const char *graph)
     ssg_image_destroy(&depth);
 }
 
+/* keep_sinks: the requested port is handed out and the graph's sinks still run (every
+   node, the file written); without outputs it changes nothing. */
+static void test_keep_sinks(const char *graph)
+{
+    char dir[600], written[700];
+    snprintf(dir, sizeof dir, "%s/keep", tmpdir);
+    snprintf(written, sizeof written, "%s/t.exr", dir);
+    for (int with_outputs = 0; with_outputs < 2; with_outputs++) {
+        unlink(written); /* the previous pass's */
+        struct ssg_run_stats st = {0};
+        struct ssg_image *im = run_with(graph, with_outputs ? "g.depth" : NULL, 1, dir, &st, 1);
+        CHECK_EQ(st.node_count, 4); /* gbuffer, halton, ssao, write */
+        CHECK(access(written, F_OK) == 0);
+        CHECK(!with_outputs || (im && im->width == 24 && im->channels == 1));
+        ssg_image_destroy(&im);
+        ssg_run_stats_free(&st);
+    }
+}
+
 /* A requested output the graph lacks: the code, in the file "<output>", at the column of
    the name that is wrong. */
 static void expect_output_error(const char *graph, const char *port, enum ssg_err code,
@@ -175,6 +203,7 @@ int main(void)
     const char *graph = graph_path();
     test_only_what_the_port_needs(graph);
     test_frames(graph);
+    test_keep_sinks(graph);
     expect_output_error(graph, "a.out", SSG_E_UNKNOWN_NAME, 1);
     expect_output_error(graph, "ao.diff", SSG_E_UNKNOWN_PORT, 4);
     expect_output_error(graph, "3", SSG_E_USAGE, 1);

@@ -554,6 +554,10 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
         return;
     for (int i = 0; i < ov->output_count; i++)
         want_output(b, ov->outputs[i]);
+    /* keep_sinks: the sinks are marked live before validation, which then keeps them
+       beside the requested outputs (ssg_graph_validate) */
+    for (int i = 0; ov->keep_sinks && ov->output_count && i < b->g->count; i++)
+        b->g->nodes[i].live = b->g->nodes[i].desc->is_sink;
     for (int i = 0; i < ov->set_count; i++)
         apply_override(b, ov->sets[i]);
     if (ov->scene) {

@@ -434,18 +434,21 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         check_required(&c, n);
         resolve_backend(&c, n);
     }
-    /* Requested outputs replace the sinks: only what they need is live. */
+    /* Requested outputs replace the sinks: only what they need is live; unless the build
+       kept the sinks (ssg_overrides.keep_sinks), by marking them live before this. */
+    for (int i = 0; i < g->count; i++) {
+        struct gnode *n = &g->nodes[i];
+        if (n->desc->is_sink && (!g->wanted_count || n->live)) {
+            sinks++;
+            n->live = 0; /* mark_live walks only into nodes not yet live */
+            if (!mark_live(g, i))
+                fail(&c, SSG_E_NOMEM);
+        }
+    }
     for (int k = 0; k < g->wanted_count; k++) {
         resolve(&c, &g->wanted[k]);
         if (g->wanted[k].node >= 0 && !mark_live(g, g->wanted[k].node))
             fail(&c, SSG_E_NOMEM);
-    }
-    for (int i = 0; i < g->count && !g->wanted_count; i++) {
-        if (g->nodes[i].desc->is_sink) {
-            sinks++;
-            if (!mark_live(g, i))
-                fail(&c, SSG_E_NOMEM);
-        }
     }
     if (!sinks && !g->wanted_count) {
         ssg_diag_file(diags, SSG_E_VALUE, g->path, "the graph writes nothing (expected at "

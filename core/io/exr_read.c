@@ -111,23 +111,39 @@ static int select_channels(const struct names *n, const char *layer, int *idx)
     return count;
 }
 
+/* The layer channel c is in: the name before its last dot; "" (the unnamed channels) for
+   a name without one, but "depth" for OpenEXR's bare Z (exr_layers.h). */
+static void layer_of(const struct names *n, int c, char *layer, size_t len)
+{
+    const char *ch = name_of(n, c), *dot = strrchr(ch, '.');
+    snprintf(layer, len, "%.*s", dot ? (int)(dot - ch) : 0, dot ? ch : "");
+    if (!dot && !strcmp(ch, "Z"))
+        snprintf(layer, len, "depth");
+}
+
+/* 1 when an earlier channel than c is in the same layer (it was met already). */
+static int layer_seen(const struct names *n, int c, const char *layer)
+{
+    char other[SSG_EXR_NAME_LEN];
+    for (int k = 0; k < c; k++) {
+        layer_of(n, k, other, sizeof other);
+        if (!strcmp(other, layer))
+            return 1;
+    }
+    return 0;
+}
+
 /* "(unnamed), ao, depth": the layers of a file, for the message about a missing one. */
 static void layer_list(const struct names *n, char *out, size_t len)
 {
     size_t used = 0;
     out[0] = '\0';
     for (int c = 0; c < n->count && used + 1 < len; c++) {
-        const char *ch = name_of(n, c), *dot = strrchr(ch, '.');
         char layer[SSG_EXR_NAME_LEN];
-        snprintf(layer, sizeof layer, "%.*s", dot ? (int)(dot - ch) : 0, ch);
-        if (!dot)
-            snprintf(layer, sizeof layer, "%s", strcmp(ch, "Z") ? "(unnamed)" : "depth");
-        char probe[SSG_EXR_NAME_LEN + 4];
-        snprintf(probe, sizeof probe, ", %s,", layer);
-        char listed[1024];
-        snprintf(listed, sizeof listed, ", %s,", out);
-        if (!strstr(listed, probe))
-            used += (size_t)snprintf(out + used, len - used, "%s%s", used ? ", " : "", layer);
+        layer_of(n, c, layer, sizeof layer);
+        if (!layer_seen(n, c, layer))
+            used += (size_t)snprintf(out + used, len - used, "%s%s", used ? ", " : "",
+                                     layer[0] ? layer : "(unnamed)");
     }
 }
 
@@ -325,4 +341,49 @@ enum ssg_err ssg_exr_meta_read_fd(const char *path, int fd, struct ssg_exr_meta 
     }
     exr_finish(&ctx);
     return SSG_OK;
+}
+
+/* The layer `name` (channels picked as a read picks them) into info. */
+static void layer_info(const struct names *n, const char *name, int w, int h, int *idx,
+                       struct ssg_layer_info *info)
+{
+    memset(info, 0, sizeof *info);
+    snprintf(info->name, sizeof info->name, "%.*s", SSG_LAYER_NAME_MAX - 1, name);
+    info->channel_count = select_channels(n, name, idx);
+    for (int k = 0; k < info->channel_count && k < 4; k++)
+        snprintf(info->channels[k], sizeof info->channels[k], "%.*s",
+                 SSG_LAYER_NAME_MAX - 1, name_of(n, idx[k]));
+    info->width = w;
+    info->height = h;
+}
+
+enum ssg_err ssg_exr_layers_fd(const char *path, int fd, struct ssg_layer_info *layers,
+                               int max, int *count, struct ssg_diags *diags)
+{
+    struct ssg_exr_io io = {0};
+    exr_context_t ctx;
+    int w, h;
+    struct names n;
+    *count = 0;
+    enum ssg_err e = open_checked(path, fd, &io, &ctx, diags);
+    if (e)
+        return e;
+    e = read_shape(path, ctx, &w, &h, &n, diags);
+    int *idx = e ? NULL : malloc(sizeof *idx * (size_t)(n.count ? n.count : 1));
+    if (!e && !idx) {
+        ssg_diag_file(diags, SSG_E_NOMEM, path, "out of memory while reading");
+        e = SSG_E_NOMEM;
+    }
+    for (int c = 0; !e && c < n.count; c++) {
+        char layer[SSG_EXR_NAME_LEN];
+        layer_of(&n, c, layer, sizeof layer);
+        if (layer_seen(&n, c, layer))
+            continue;
+        if (*count < max)
+            layer_info(&n, layer, w, h, idx, &layers[*count]);
+        ++*count;
+    }
+    free(idx);
+    exr_finish(&ctx);
+    return e;
 }

@@ -29,6 +29,10 @@ enum ssg_err ssg_png_read_fd(const char *path, int fd, struct ssg_image **out,
 int ssg_image_plausible(const char *path, int w, int h, int nch, long long file_bytes,
                         struct ssg_diags *diags);
 
+/* ssg_image_layers of the EXR open as fd (exr_read.c). */
+enum ssg_err ssg_exr_layers_fd(const char *path, int fd, struct ssg_layer_info *layers,
+                               int max, int *count, struct ssg_diags *diags);
+
 /* ssg_exr_meta_read of the EXR open as fd. */
 enum ssg_err ssg_exr_meta_read_fd(const char *path, int fd, struct ssg_exr_meta *meta,
                                   int *found, struct ssg_diags *diags);

@@ -10,33 +10,11 @@
 enum { PATH_MAX_LEN = 4096, MAX_LAYERS = 64 };
 
 /* The images as written: each input, or a copy of its frame when it carries a guard band
-   (ssg_frame_region: the band never reaches a file). */
+   (ssg_image_framed, ssgraph.h: the band never reaches a file). */
 struct framed {
     const struct ssg_image *image[MAX_LAYERS];
     struct ssg_image *owned[MAX_LAYERS]; /* the copies, freed by framed_free */
 };
-
-static const struct ssg_image *frame_of(const struct ssg_node_ctx *ctx,
-                                        const struct ssg_image *im, struct ssg_image **copy)
-{
-    struct ssg_shape shape = {im->width, im->height, im->channels, 0};
-    int x0, y0, x1, y1;
-    ssg_frame_region(ctx->frame, &shape, &x0, &y0, &x1, &y1);
-    *copy = NULL;
-    if (x0 == 0 && y0 == 0 && x1 == im->width && y1 == im->height)
-        return im;
-    if (!(*copy = ssg_image_create(x1 - x0, y1 - y0, im->channels)))
-        return NULL;
-    for (int ch = 0; ch < im->channels; ch++) {
-        const float *src = ssg_image_plane(im, ch);
-        float *dst = ssg_image_plane(*copy, ch);
-        for (int y = y0; y < y1; y++)
-            memcpy(dst + (size_t)(y - y0) * (size_t)(x1 - x0),
-                   src + (size_t)y * (size_t)im->width + (size_t)x0,
-                   (size_t)(x1 - x0) * sizeof(float));
-    }
-    return *copy;
-}
 
 static void framed_free(struct framed *f, int n)
 {
@@ -54,7 +32,7 @@ static enum ssg_err frame_all(const struct ssg_node_ctx *ctx, const struct ssg_i
         return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", n, MAX_LAYERS);
     for (int i = 0; i < n; i++) {
         const struct ssg_image *im = i ? io->extra_in[i - 1] : io->in[SSG_WRITE_IN_IMAGE];
-        if (!(f->image[i] = frame_of(ctx, im, &f->owned[i]))) {
+        if (!(f->image[i] = ssg_image_framed(ctx->frame, im, &f->owned[i]))) {
             framed_free(f, i);
             return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
         }
