@@ -30,6 +30,15 @@ extern "C" {
 
 #define SSG_VERSION "0.1.0"
 
+/* Marks the functions of this interface: the only symbols libssgraph.so exports (the
+ * library is compiled with -fvisibility=hidden; tests/test_public_api.sh holds the
+ * exported set equal to the functions declared with SSG_API). */
+#if defined(__GNUC__)
+#define SSG_API __attribute__((visibility("default")))
+#else
+#define SSG_API
+#endif
+
 enum ssg_err {
 #define X(code, text) code,
 #include "errors.def"
@@ -38,8 +47,8 @@ enum ssg_err {
 };
 
 /* Short symbolic name ("SSG_E_CYCLE") and general description of an error code. */
-const char *ssg_err_name(enum ssg_err code);
-const char *ssg_err_text(enum ssg_err code);
+SSG_API const char *ssg_err_name(enum ssg_err code);
+SSG_API const char *ssg_err_text(enum ssg_err code);
 
 /* One diagnostic. line/column are 1-based; 0 where the message has no location. */
 struct ssg_diag {
@@ -65,9 +74,9 @@ struct ssg_diags {
 
 /* Prints every warning as `file:line:column: warning: message`, then every error as
  * `file:line:column: error: message`, one a line. */
-void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
+SSG_API void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
 /* First error code in the list, or SSG_OK. */
-enum ssg_err ssg_diags_first(const struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_diags_first(const struct ssg_diags *diags);
 
 /* A planar float image (see the header comment for the layout). */
 struct ssg_image {
@@ -80,8 +89,8 @@ struct ssg_image {
 };
 
 /* Allocates a zeroed image; NULL for absurd sizes or when out of memory. */
-struct ssg_image *ssg_image_create(int width, int height, int channels);
-void ssg_image_destroy(struct ssg_image **image);
+SSG_API struct ssg_image *ssg_image_create(int width, int height, int channels);
+SSG_API void ssg_image_destroy(struct ssg_image **image);
 static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
 {
     return im->data + (size_t)channel * (size_t)im->width * (size_t)im->height;
@@ -90,16 +99,16 @@ static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
 /* Reads an image file (EXR, PNG, HDR, ... through OpenImageIO) into a planar float image.
  * `layer` selects an EXR layer by name ("ao" reads channels "ao.*"); NULL reads the
  * unnamed channels (or all channels when the file has no unnamed ones). */
-enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
-                            struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
+                                    struct ssg_diags *diags);
 
 /* Writes an image as a 32-bit float EXR (1 channel: Y; 2: R,G; 3: R,G,B; 4: R,G,B,A),
  * through a temporary file renamed into place, so a failure leaves no partial file. */
-enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
-                             struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
+                                     struct ssg_diags *diags);
 
 /* Creates `dir` and every missing parent (mkdir -p); an existing non-directory is an error. */
-enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
 
 /* What a screen-space node needs to know about the frame besides its images. */
 struct ssg_frame {
@@ -199,7 +208,7 @@ struct ssg_run_stats {
 };
 
 /* Releases what a run put into *stats and zeroes it; NULL or a zeroed struct: nothing. */
-void ssg_run_stats_free(struct ssg_run_stats *stats);
+SSG_API void ssg_run_stats_free(struct ssg_run_stats *stats);
 
 /* Progress of a long node (reference_ao and reference_gi report it), for a progress bar. */
 struct ssg_progress_event {
@@ -273,17 +282,17 @@ struct ssg_graph;
 
 /* Parses, includes, applies overrides, loads the scene and validates the whole graph.
  * Every problem found goes into diags; on any error *out is NULL. */
-enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overrides,
-                            struct ssg_graph **out, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overrides,
+                                    struct ssg_graph **out, struct ssg_diags *diags);
 /* Same, validating only: does not load the scene's meshes or images. */
-enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
-                             struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
+                                     struct ssg_diags *diags);
 /* Runs every node in dependency order; writes files into options->out_dir. Prints
  * nothing: what it measured goes to options->stats, progress and notices to the
  * callbacks. Metrics that nodes report (compare) are written to <out_dir>/metrics.json. */
-enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
-                           struct ssg_diags *diags);
-void ssg_graph_destroy(struct ssg_graph **graph);
+SSG_API enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
+                                   struct ssg_diags *diags);
+SSG_API void ssg_graph_destroy(struct ssg_graph **graph);
 
 /* The value of a number parameter of a loaded graph's node, key "node.param" ("h.bias"),
  * as the graph, its set lines and the overrides left it; *integer (if not NULL) is 1 for an
@@ -292,16 +301,16 @@ void ssg_graph_destroy(struct ssg_graph **graph);
  * (SSG_E_UNKNOWN_NAME, at the graph file), no such parameter (SSG_E_UNKNOWN_PARAM) or one
  * that is not a number (a bool, a choice, a string, a list: SSG_E_TYPE), both at the node's
  * definition. */
-enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
-                             int *integer, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
+                                     int *integer, struct ssg_diags *diags);
 
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */
-enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
 
 /* Writes the Markdown reference of every scene entity and its parameters (docs/scenes.md),
  * from the same tables that parse and validate scene files. */
-void ssg_scenes_markdown(FILE *stream);
+SSG_API void ssg_scenes_markdown(FILE *stream);
 
 /* One input of a single-node run: an image bound to a named input port. */
 struct ssg_binding {
@@ -319,26 +328,199 @@ struct ssg_outputs {
     char metric_names[16][32];
     double metric_values[16];
 };
-void ssg_outputs_release(struct ssg_outputs *outputs);
+SSG_API void ssg_outputs_release(struct ssg_outputs *outputs);
 
 /* Runs one node alone on in-memory images. `sets` are "param=value" strings, and
  * "backend=gl" runs the node on the GL backend (outputs come back as CPU images). The frame
  * gives size and camera; its width/height default to the first input's size. */
-enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, int input_count,
-                          const char *const *sets, int set_count, const struct ssg_frame *frame,
-                          struct ssg_outputs *outputs, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs,
+                                  int input_count, const char *const *sets, int set_count,
+                                  const struct ssg_frame *frame, struct ssg_outputs *outputs,
+                                  struct ssg_diags *diags);
 
 /* The node registry: names, and a full description (ports, parameters, defaults, ranges,
  * units, doc) printed from the node's descriptor table. */
-int ssg_node_count(void);
-const char *ssg_node_name(int index);
-const char *ssg_node_summary(int index);
+SSG_API int ssg_node_count(void);
+SSG_API const char *ssg_node_name(int index);
+SSG_API const char *ssg_node_summary(int index);
 /* Returns SSG_E_UNKNOWN_NODE when no node has that name. */
-enum ssg_err ssg_node_describe(const char *node, FILE *stream);
+SSG_API enum ssg_err ssg_node_describe(const char *node, FILE *stream);
 /* Writes the Markdown reference of every node (docs/nodes.md): a glossary of the port
  * types, then each node's ports and parameters. With graphs_dir (NULL: left out), each
  * node also lists the .graph files of that folder and its sub-folders that use it. */
-void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
+SSG_API void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
+
+/* ======== Looking into a graph; files; what the command line needs ========
+ * Everything the ssgraph command line uses of the library is declared in this header: no
+ * file of cli/ includes another header of core/ (tests/test_public_api.sh holds it). */
+
+/* ---- A graph's structure and current values (ssgraph dot, -v, bench's reference key) */
+
+/* Reads a graph file (its includes and set lines) and builds its nodes without checking
+ * the graph as a whole or loading its scene: for looking at its structure. Unlike
+ * ssg_graph_load, *out is the graph as far as it could be built even when diags has errors
+ * (a node of an unknown type then has type NULL): NULL only when out of memory. Returns
+ * the first error. Release it with ssg_graph_destroy; do not run it. */
+SSG_API enum ssg_err ssg_graph_parse(const char *path, struct ssg_graph **out,
+                                     struct ssg_diags *diags);
+
+/* What a graph resolved; the strings belong to the graph. */
+struct ssg_graph_info {
+    const char *path;       /* the graph file as given */
+    const char *scene;      /* the scene file it uses, resolved; "" = none */
+    const char *lights;     /* the lights file replacing the scene's lights; "" = none */
+    struct ssg_frame frame; /* size, lens, seed and guard as the graph and overrides left
+                               them (a loaded graph's; only partly set by ssg_graph_parse) */
+    int node_count;         /* nodes, in file order (an include's where it stands) */
+    int run_count;          /* live nodes in run order (ssg_graph_run_node); 0 for a graph
+                               that was only parsed */
+};
+SSG_API void ssg_graph_inspect(const struct ssg_graph *graph, struct ssg_graph_info *info);
+
+/* One node of a graph; the strings belong to the graph (type and backend are static). */
+struct ssg_node_info {
+    const char *name;    /* instance name ("ao"; "write_1" when anonymous) */
+    const char *type;    /* node type ("ssao"); NULL when the file names an unknown one */
+    const char *backend; /* where it runs, "cpu" or "gl" once loaded ("default" before) */
+    int param_count;     /* parameters of its type (ssg_graph_node_param) */
+};
+/* Node `index` in file order (0 .. node_count - 1): SSG_OK, or SSG_E_USAGE out of range. */
+SSG_API enum ssg_err ssg_graph_node_inspect(const struct ssg_graph *graph, int index,
+                                            struct ssg_node_info *info);
+/* The file-order index of the node at run position `position` (0 .. run_count - 1), or
+ * -1 out of range. */
+SSG_API int ssg_graph_run_node(const struct ssg_graph *graph, int position);
+/* The file-order index of the node with that instance name, or -1. */
+SSG_API int ssg_graph_node_index(const struct ssg_graph *graph, const char *name);
+/* Parameter k (0 .. param_count - 1) of node `index`: returns its name (static) and writes
+ * its current value into value as -v prints it ("0.5", "true", "smooth"); NULL (value
+ * "") out of range. */
+SSG_API const char *ssg_graph_node_param(const struct ssg_graph *graph, int index, int k,
+                                         char *value, size_t len);
+/* Writes the graph as Graphviz DOT: a node per instance labelled with its name and type,
+ * an edge per connection labelled "output -> input" (the producer's port, the consumer's
+ * input or layer). */
+SSG_API void ssg_graph_dot(const struct ssg_graph *graph, FILE *stream);
+
+/* The type of parameter `param` of node type `node` as `ssgraph describe` names it
+ * ("float", "int", "bool", "enum", "string", "vec3", "int list", "name"); NULL when there
+ * is no such node or parameter. */
+SSG_API const char *ssg_node_param_type(const char *node, const char *param);
+
+/* ---- Files: read within limits, written whole or not at all (the rules: lang/files.h) */
+
+/* Reads a whole regular file of at most max_bytes into malloc'd memory with a NUL after
+ * the last byte; *len excludes it. SSG_E_IO (cannot open, not a regular file) or SSG_E_SIZE
+ * (too large) with the reason in why, e.g. "not a regular file (it is a FIFO)". */
+SSG_API enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data,
+                                    size_t *len, char *why, size_t why_len);
+
+#define SSG_TMP_MAX 64 /* temporaries registered at once, at most (more is an error) */
+
+/* One output being written: the temporary (open as fd until ssg_tmp_close) and its
+ * target. */
+struct ssg_tmp {
+    char path[4352];  /* the temporary: <dir>/.<stem>.tmp-<pid>-<n><ext> */
+    char target[4096];
+    int fd;           /* -1 once closed */
+    int lock_fd;      /* holds the temporary's lock until commit or discard, -1 = none */
+    int slot;         /* registry slot, -1 = none */
+};
+
+/* Creates the temporary of `target` (ext: its extension with the dot, which OpenImageIO
+ * reads to pick the format; "" for none; `what` names the content in messages, "image"),
+ * registered for removal on a signal. Also removes temporaries of dead processes in that
+ * folder. An existing target that is not a regular file (a device, FIFO, socket or
+ * directory) is refused with SSG_E_IO: the rename would replace it. */
+SSG_API enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
+                                    struct ssg_tmp *t, struct ssg_diags *diags);
+/* Flushes, syncs and closes t's descriptor: SSG_OK only if every byte reached the disk. */
+SSG_API enum ssg_err ssg_tmp_close(struct ssg_tmp *t, struct ssg_diags *diags);
+/* Renames every closed temporary over its target, in order; on any failure the rest are
+ * discarded. */
+SSG_API enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diags);
+/* Removes the temporaries (closing them first) and unregisters them. */
+SSG_API void ssg_tmp_discard(struct ssg_tmp *t, int count);
+/* Async-signal-safe: unlinks every registered temporary. For a signal handler. */
+SSG_API void ssg_tmp_remove_all(void);
+/* Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporaries,
+ * then die of the same signal. For programs (the CLI); a library user keeps its own. */
+SSG_API void ssg_tmp_remove_on_signals(void);
+
+/* Writes a text file whole or not at all through a temporary (above): fill() writes into
+ * it. `what` names the content in error messages ("metrics", "profile"). A path naming a
+ * character device or a FIFO (/dev/stdout, a named pipe) is written into as a stream, never
+ * replaced; any other existing non-regular file (a directory, a socket) is refused, as it
+ * is by ssg_tmp_create for every output. */
+SSG_API enum ssg_err ssg_write_text_file(const char *path, const char *what,
+                                         void (*fill)(FILE *f, const void *user),
+                                         const void *user, struct ssg_diags *diags);
+
+/* ---- Stereo runs (`ssgraph run --stereo`): each eye's graph run writes into a folder of
+ * its own, then ssg_stereo_join makes one multi-view EXR of each EXR the eyes share (the
+ * first view the default one, the others' channels named layer.VIEW.channel) and moves
+ * every other file, the PNG previews among them, next to it as STEM_VIEW.EXT
+ * (ssao_left.png, ssao_right.png). The eye folders are removed at the end either way
+ * (ssg_stereo_discard), and a killed run's by the next stereo run into the same folder
+ * (ssg_stereo_sweep). Touches only the folders it is given. */
+
+/* dirs[k] holds view views[k]'s files (count views, the first the default); the results go
+ * to out_dir, which is created if missing, each announced to log ("wrote out/ssao.exr";
+ * NULL = not). Every problem goes to diags. */
+SSG_API enum ssg_err ssg_stereo_join(const char *out_dir, const char *const *dirs,
+                                     const char *const *views, int count, ssg_log_fn log,
+                                     void *user, struct ssg_diags *diags);
+/* Removes the plain files in each of the count folders, then the folders (a failed run's
+ * leftovers); a missing folder is no error. */
+SSG_API void ssg_stereo_discard(const char *const *dirs, int count);
+/* Removes the eye folders (".stereo-VIEW-PID") in out_dir that a killed stereo run left:
+ * those whose process is gone. Called by each stereo run before it starts. */
+SSG_API void ssg_stereo_sweep(const char *out_dir);
+
+/* The camera a file records, for a node run on it (`ssgraph node`): the fov, near and far
+ * of an ssgraph EXR into frame->fov_y, near_z, far_z. spec is FILE or FILE:LAYER (the
+ * `--in` form; the layer does not matter: every view has the same lens). 1 when the file
+ * carries them; 0, frame untouched, for a foreign file or one that cannot be read (its
+ * image read reports why). */
+SSG_API int ssg_exr_frame_read(const char *spec, struct ssg_frame *frame);
+
+/* ---- The process and the machine (ssgraph --version, the profile) */
+
+#define SSG_LOADS_MAX 8 /* one-off loads kept (later ones are still taken out of nodes) */
+
+/* A library the process loaded once, at run time (the OpenImageIO module, the GL
+ * library): a node run that contained it is not charged for it. */
+struct ssg_load {
+    const char *what; /* "OpenImageIO module"; static */
+    double start_ms;  /* when it began, on the clock of the stats' times */
+    double ms;        /* how long it took */
+};
+/* Copies the process's loads so far, in order, into out (room for max); their count.
+ * Thread-safe. */
+SSG_API int ssg_loads(struct ssg_load *out, int max);
+
+/* Opens the GL backend as a graph run would (EGL on a GPU device, else OSMesa; the
+ * SSG_GL_PLATFORM variable chooses), writes what it opened into text ("OSMesa: llvmpipe
+ * (LLVM 15.0.6, 256 bits)") and closes it again. On failure reports "GL backend
+ * unavailable: <cause>" (SSG_E_BACKEND) and leaves text "". Waits while another thread's
+ * run holds GL. */
+SSG_API enum ssg_err ssg_gl_info(char *text, size_t len, struct ssg_diags *diags);
+
+/* ---- Scenes and models as a newcomer needs to see them (ssgraph check) */
+
+/* Loads and validates the scene at path with its meshes (problems go to diags) and, when
+ * it loads, writes "PATH: ok" and its summary to out: the bounds, the triangles of each
+ * mesh line with each mesh's box after the line's transform and an up-axis hint, the
+ * camera, the lights, and a scale hint when the scene's size does not suit the AO radius
+ * of the default graph. */
+SSG_API enum ssg_err ssg_scene_summary(const char *path, FILE *out, struct ssg_diags *diags);
+/* 1 when path's extension names a model format the scene's mesh() line reads; otherwise 0
+ * with the reason (the extension, or that there is none) in why. */
+SSG_API int ssg_model_supported(const char *path, char *why, size_t why_len);
+/* Loads the model at path (a problem goes to diags, at its line and column where the file
+ * has them) and writes "PATH: ok", its meshes with their boxes, its bounds, its up axis
+ * and on what that rests, a scale hint, and a scene file to paste around it to out. */
+SSG_API enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *diags);
 
 #ifdef __cplusplus
 }
