@@ -6,9 +6,12 @@
  * over the --mask pixels when one is given. The reference (and the mask) of each scene is
  * computed once, before the search, by loading the graph with only those outputs
  * requested (ssg_overrides.outputs): a 256-ray reference_ao costs far more than the AO being
- * tuned. Each evaluation then loads the graph with the values as --set lines and only the
- * image requested, so the graph's own writes, compares and reference never run again. A
- * parameter of a node the reference reads is refused: the cached reference would be wrong.
+ * tuned. Each scene's graph is then loaded once, with only the image requested, and kept
+ * live (ssg_graph_keep): an evaluation sets the values (ssg_graph_set) and runs it, so only
+ * the tuned nodes and what follows them run again, and the graph's own writes, compares
+ * and reference never do; the bytes are those of a fresh load with the values as --set
+ * lines (tests/test_live.c). A parameter of a node the reference reads is refused: the
+ * cached reference would be wrong.
  *
  * Bad input is found before the first evaluation and exits 1 with the graph's own message:
  * a parameter the graph lacks or that is no number, a range it refuses, a port it lacks, a
@@ -263,6 +266,35 @@ static enum ssg_err scene_rmse(const struct tune *t, int s, const struct ssg_ima
     return e;
 }
 
+/* Scene s's live graph with the values of ts.own (n of them, "node.p=value") set, run,
+   its image into *im. Loaded on first use with the user's overrides and only the image. */
+static enum ssg_err run_live(struct tune *t, int s, const struct tune_sets *ts,
+                             struct ssg_image **im, struct ssg_diags *d)
+{
+    enum ssg_err e = SSG_OK;
+    if (!t->live[s]) {
+        struct tune_sets own;
+        struct ssg_overrides ov = scene_overrides(t, s, &own, 0);
+        ov.outputs = &t->req->image;
+        ov.output_count = 1;
+        e = ssg_graph_load(t->req->graph, &ov, &t->live[s], d);
+        if (!e)
+            e = ssg_graph_keep(t->live[s], 0, d);
+    }
+    for (int k = 0; k < t->n && !e; k++) {
+        char key[200];
+        snprintf(key, sizeof key, "%s", ts->own[k]);
+        char *eq = strchr(key, '=');
+        *eq = 0;
+        e = ssg_graph_set(t->live[s], key, eq + 1, d);
+    }
+    struct ssg_run_options ro = {.out_dir = t->req->out_dir, .threads = t->req->threads,
+                                 .outputs = im,
+                                 .progress = isatty(fileno(stderr)) ? ssg_report_progress
+                                                                    : NULL};
+    return e ? e : ssg_graph_run(t->live[s], &ro, d);
+}
+
 /* The evaluation's failure as one line: the first message with its place. */
 static void record_failure(struct tune_eval *ev, enum ssg_err e, const struct ssg_diags *d,
                            const char *scene)
@@ -294,11 +326,8 @@ static double objective(void *user, const double *x)
     for (int s = 0; s < t->scene_count; s++)
         ev->errors[s] = NAN;
     for (int s = 0; s < t->scene_count && !e; s++) {
-        struct ssg_overrides ov = scene_overrides(t, s, &ts, t->n);
-        ov.outputs = &t->req->image;
-        ov.output_count = 1;
         struct ssg_image *im = NULL;
-        e = run_outputs(t, &ov, &im, NULL, &d);
+        e = run_live(t, s, &ts, &im, &d);
         if (!e)
             e = scene_rmse(t, s, im, &ev->errors[s], &d);
         ssg_image_destroy(&im);
@@ -339,6 +368,7 @@ static void free_tune(struct tune *t)
     for (int s = 0; s < t->scene_count; s++) {
         ssg_image_destroy(&t->ref[s]);
         ssg_image_destroy(&t->mask[s]);
+        ssg_graph_destroy(&t->live[s]);
     }
     free(t->evals);
 }

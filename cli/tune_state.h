@@ -30,6 +30,9 @@ struct tune {
     const char *scenes[SSG_TUNE_MAX_SCENES]; /* NULL = the graph's own */
     int scene_count;
     struct ssg_image *ref[SSG_TUNE_MAX_SCENES], *mask[SSG_TUNE_MAX_SCENES];
+    struct ssg_graph *live[SSG_TUNE_MAX_SCENES]; /* each scene's graph, loaded once with only
+                                                    the image live and kept between
+                                                    evaluations (ssg_graph_keep) */
     struct tune_eval *evals;          /* in the order they ran */
     int count, budget;
     int best;                         /* index into evals; -1 = none succeeded yet */

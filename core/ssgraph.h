@@ -304,6 +304,50 @@ SSG_API void ssg_graph_destroy(struct ssg_graph **graph);
 SSG_API enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
                                      int *integer, struct ssg_diags *diags);
 
+/* Live graphs: change a loaded graph and re-run only what the change affects.
+ *
+ * ssg_graph_keep makes the graph keep its run state from one ssg_graph_run to the next:
+ * every node's prepared constants and working memory, and every live node's output images
+ * (not only those a sink reads), at most max_bytes of images (0 = no limit; past it the
+ * largest node outputs are given back after the run, and those nodes run again next time).
+ * A kept graph's one-frame run then skips a node whose outputs are kept and none of whose
+ * producers ran; sinks (write, compare) always run. The run's stats show what ran: a
+ * skipped node has calls 0. A run of several frames runs everything.
+ *
+ * ssg_graph_set changes one parameter, key "node.param", value as written in a graph file
+ * ("0.25", "smooth", "true"), with the parsing and checks of --set; it reports errors (an
+ * unknown node or parameter, a value out of range, a shape the new value makes impossible)
+ * as ssg_graph_param and --set do, and then leaves the graph as it was. It marks the node,
+ * and every node whose shapes it changed, to prepare and run again; their readers run
+ * again because their producers ran. Whatever the sequence of sets and runs, a run gives
+ * the bytes of a fresh load with the final settings (tests/test_live.c).
+ *
+ * ssg_graph_output hands out a copy of an output's latest image, port "node.port", as a new
+ * CPU image the caller destroys; the graph must be kept and have run, and the node be
+ * live. The graph is not thread-safe: one call on a graph at a time. */
+SSG_API enum ssg_err ssg_graph_keep(struct ssg_graph *graph, size_t max_bytes,
+                                    struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char *value,
+                                   struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_output(struct ssg_graph *graph, const char *port,
+                                      struct ssg_image **out, struct ssg_diags *diags);
+
+/* The camera of a loaded graph's scene, and a new one for the whole graph (every node that
+ * reads the camera sees it: the G-buffer, projections, ray tracers). A camera that cannot
+ * be (a coordinate not finite, target = position, up parallel to the view or zero, fov_y
+ * outside (0, 180)) is refused with why; a graph without a scene has no camera
+ * (SSG_E_SCENE). On a kept graph every node prepares and runs again after a new camera. */
+struct ssg_view {
+    float position[3]; /* world, scene units */
+    float target[3];   /* the world point looked at */
+    float up[3];       /* world up hint */
+    float fov_y;       /* vertical field of view, degrees */
+};
+SSG_API enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_view *out,
+                                    struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
+                                        struct ssg_diags *diags);
+
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */
 SSG_API enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);

@@ -216,6 +216,7 @@ void ssg_graph_destroy(struct ssg_graph **graph)
 {
     if (!graph || !*graph)
         return;
+    ssg_live_free(*graph);
     ssg_scene_destroy(&(*graph)->scene);
     ssg_arena_free(&(*graph)->arena);
     free(*graph);

@@ -72,7 +72,31 @@ struct ssg_graph {
     int wanted_count;          /* 0 = the sinks decide what is live */
     const char **sets;         /* ssg_overrides.sets, copied: what the run's files record */
     int set_count;
+    struct ssg_live *live;     /* the run state kept between runs (ssg_graph_keep), NULL =
+                                  every run starts afresh */
 };
+
+/* What a live graph keeps from one ssg_graph_run to the next (graph_live.c): per run
+ * position, what prepare() made, its scratch, whether it is prepared, and whether its
+ * outputs are kept from the last run and still current; the pool the images live in. A
+ * changed parameter clears its node's entries (ssg_graph_set); a run then re-runs a node
+ * whose outputs are not kept or one of whose inputs' producers ran (graph_run.c). */
+struct ssg_live {
+    size_t max_bytes;          /* kept images beyond this are evicted, largest first */
+    struct ssg_pool *pool;
+    void **consts;
+    struct ssg_scratch *scratch;
+    unsigned char *prepared;
+    unsigned char *kept;
+    int count;                 /* run positions */
+    int used_gl;               /* a run used GL: images may hold textures */
+};
+/* After a live run: marks what ran as kept (nothing on error), then evicts the largest
+ * kept outputs while they exceed max_bytes (graph_live.c). */
+void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
+                        int used_gl);
+/* Frees a live graph's state (opening GL to delete textures where a run used it). */
+void ssg_live_free(struct ssg_graph *g);
 
 /* Reads path (and what it includes), builds nodes, applies `set` lines and overrides.
  * Reports every problem; returns the first error code. */
@@ -81,6 +105,12 @@ enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
 /* Checks connections, types, required inputs, cycles and shapes; fills the run order and
  * each output's last reader. Needs g->frame. */
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags);
+/* Shapes again, after a parameter changed (ssg_graph_set): every live node's check() in
+ * run order, as validation does. */
+enum ssg_err ssg_graph_reinfer(struct ssg_graph *g, struct ssg_diags *diags);
+/* Applies "node.param=value" as --set does (messages from source "<ssg_graph_set>"). */
+enum ssg_err ssg_graph_apply_set(struct ssg_graph *g, const char *text,
+                                 struct ssg_diags *diags);
 /* Index of the node with that name, or -1. */
 int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len);
 /* Adds node `index` (named) to the name table, growing it to keep it at most half full;

@@ -27,6 +27,8 @@ struct builder {
     int limit_hit;                        /* 1 = a limit was reported: read nothing more */
     int anonymous;
     int in_set;                           /* 1 = binding a set line or --set */
+    const char *set_origin;               /* the source name of a caller's set, NULL =
+                                             "<command line --set>" */
     enum ssg_err first;
 };
 
@@ -488,7 +490,8 @@ static struct ssg_source *caller_source(struct builder *b, const char *path, con
 /* "node.param=value" from the command line, parsed as a set line of its own source. */
 static void apply_override(struct builder *b, const char *text)
 {
-    struct ssg_source *src = caller_source(b, "<command line --set>", text);
+    struct ssg_source *src = caller_source(b, b->set_origin ? b->set_origin
+                                                            : "<command line --set>", text);
     if (!src)
         return;
     const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
@@ -518,6 +521,13 @@ static void apply_override(struct builder *b, const char *text)
     st->args = arg;
     st->arg_count = 1;
     apply_set(b, st);
+}
+
+enum ssg_err ssg_graph_apply_set(struct ssg_graph *g, const char *text, struct ssg_diags *diags)
+{
+    struct builder b = {.g = g, .diags = diags, .set_origin = "<ssg_graph_set>"};
+    apply_override(&b, text);
+    return b.first;
 }
 
 /* A requested output "node.port": a port reference, resolved as any input's. */

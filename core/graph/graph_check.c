@@ -413,6 +413,14 @@ static void check_output_clash(struct checker *c)
     free(w);
 }
 
+enum ssg_err ssg_graph_reinfer(struct ssg_graph *g, struct ssg_diags *diags)
+{
+    struct checker c = {g, diags, SSG_OK};
+    for (int p = 0; p < g->order_count; p++)
+        infer_node(&c, &g->nodes[g->order[p]]);
+    return c.first;
+}
+
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
 {
     struct checker c = {g, diags, SSG_OK};

@@ -29,6 +29,9 @@ struct run {
     struct ssg_profile prof;   /* per run position */
     struct ssg_metrics metrics;
     int uses_gl;               /* a node runs on GL: the backend is open */
+    struct ssg_live *live;     /* the graph's kept state (graph.h), NULL = a fresh run */
+    unsigned char *ran;        /* per node index: ran in this run (a live run skips a node
+                                  whose outputs are kept and none of whose producers ran) */
 };
 
 static void release_output(struct run *r, struct gnode *n, int port)
@@ -64,6 +67,8 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
  * p's own inputs is enough: constant work per position, linear in the graph. */
 static void release_after(struct run *r, int p)
 {
+    if (r->live)
+        return; /* a live graph keeps every output for the next run (graph.h) */
     struct ssg_graph *g = r->g;
     struct gnode *n = &g->nodes[g->order[p]];
     for (int k = 0; k < n->desc->output_count; k++)
@@ -78,6 +83,8 @@ static void release_after(struct run *r, int p)
 
 static void release_all(struct run *r)
 {
+    if (r->live)
+        return;
     for (int q = 0; q < r->g->order_count; q++) {
         struct gnode *n = &r->g->nodes[r->g->order[q]];
         for (int k = 0; k < SSG_MAX_PORTS; k++) {
@@ -191,12 +198,18 @@ static int run_init(struct run *r)
 {
     const struct ssg_graph *g = r->g;
     int count = g->order_count ? g->order_count : 1;
-    r->pool = ssg_pool_create();
     r->t = calloc((size_t)count, sizeof *r->t);
-    r->consts = calloc((size_t)count, sizeof *r->consts);
-    r->scratch = calloc((size_t)count, sizeof *r->scratch);
-    r->prepared = calloc((size_t)count, 1);
-    if (!r->pool || !r->t || !r->consts || !r->scratch || !r->prepared ||
+    r->ran = calloc((size_t)(g->count ? g->count : 1), 1);
+    if (r->live) {
+        r->pool = r->live->pool, r->consts = r->live->consts;
+        r->scratch = r->live->scratch, r->prepared = r->live->prepared;
+    } else {
+        r->pool = ssg_pool_create();
+        r->consts = calloc((size_t)count, sizeof *r->consts);
+        r->scratch = calloc((size_t)count, sizeof *r->scratch);
+        r->prepared = calloc((size_t)count, 1);
+    }
+    if (!r->pool || !r->t || !r->ran || !r->consts || !r->scratch || !r->prepared ||
         !ssg_profile_init(&r->prof, g->order_count))
         return 0;
     for (int p = 0; p < g->order_count; p++) {
@@ -212,6 +225,11 @@ static int run_init(struct run *r)
 
 static void run_free(struct run *r)
 {
+    free(r->t);
+    free(r->ran);
+    ssg_profile_free(&r->prof);
+    if (r->live)
+        return; /* the graph keeps the rest (ssg_live_free) */
     release_all(r);
     ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
     for (int p = 0; r->consts && p < r->g->order_count; p++)
@@ -221,8 +239,22 @@ static void run_free(struct run *r)
     free(r->consts);
     free(r->scratch);
     free(r->prepared);
-    free(r->t);
-    ssg_profile_free(&r->prof);
+}
+
+/* 1 when node n's outputs from an earlier run can stand: a live graph's one-frame run, its
+   outputs kept, none of its producers run in this one. Sinks always run (their files and
+   metrics are this run's). */
+static int can_skip(const struct run *r, int p, int frames)
+{
+    const struct gnode *n = &r->g->nodes[r->g->order[p]];
+    if (!r->live || frames > 1 || n->desc->is_sink || !r->live->kept[p])
+        return 0;
+    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
+        const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+        if (c->node >= 0 && r->ran[c->node])
+            return 0;
+    }
+    return 1;
 }
 
 /* One frame: every node in order, images given back after their last reader. Sinks
@@ -234,8 +266,11 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     double sum = 0;
     for (int p = 0; p < r->g->order_count && !e; p++) {
         int sink = r->g->nodes[r->g->order[p]].desc->is_sink;
+        if (can_skip(r, p, frames))
+            continue;
         if (!sink || frame == frames - 1)
             e = run_node(r, p, frame);
+        r->ran[r->g->order[p]] = 1;
         release_after(r, p);
         if (!sink)
             sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
@@ -327,7 +362,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     if (options && options->stats)
         *options->stats = (struct ssg_run_stats){0};
     struct run r = {.g = g, .opt = options ? options : &defaults, .diags = diags,
-                    .uses_gl = graph_uses_gl(g)};
+                    .uses_gl = graph_uses_gl(g), .live = g->live};
     if (r.opt->threads > 0)
         omp_set_num_threads(r.opt->threads);
     if (!run_init(&r)) {
@@ -347,6 +382,8 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         e = report(&r, ssg_now_ms() - t0);
     if (!e)
         e = hand_out(&r);
+    if (r.live)
+        ssg_live_after_run(g, r.ran, e, r.uses_gl);
     run_free(&r);
     if (r.uses_gl)
         ssg_gl_close();

@@ -1,0 +1,286 @@
+/* graph_live.c - live graphs (ssgraph.h): the run state kept from one ssg_graph_run to the
+ * next, parameters changed on a loaded graph, and the kept images handed out.
+ *
+ * Correctness rule: a node's outputs are reused only while nothing they depend on has
+ * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs,
+ * and those of every node whose shapes the change moved; a run re-runs every node whose
+ * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
+ * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
+ * camera (ssg_graph_set_view) makes every node prepare and run again. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "graph/gl_backend.h"
+#include "graph/graph.h"
+#include "graph/image.h"
+
+enum ssg_err ssg_graph_keep(struct ssg_graph *g, size_t max_bytes, struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_keep", "graph", 1, g))
+        return SSG_E_USAGE;
+    if (g->live) {
+        g->live->max_bytes = max_bytes;
+        return SSG_OK;
+    }
+    struct ssg_live *l = calloc(1, sizeof *l);
+    size_t count = (size_t)(g->order_count ? g->order_count : 1);
+    if (l) {
+        *l = (struct ssg_live){.max_bytes = max_bytes, .count = g->order_count,
+                               .pool = ssg_pool_create(),
+                               .consts = calloc(count, sizeof *l->consts),
+                               .scratch = calloc(count, sizeof *l->scratch),
+                               .prepared = calloc(count, 1), .kept = calloc(count, 1)};
+    }
+    g->live = l;
+    if (!l || !l->pool || !l->consts || !l->scratch || !l->prepared || !l->kept) {
+        ssg_live_free(g);
+        ssg_diag_file(diags, SSG_E_NOMEM, g->path, "out of memory keeping the run state");
+        return SSG_E_NOMEM;
+    }
+    return SSG_OK;
+}
+
+/* The bytes of the images node p's outputs hold now. */
+static size_t kept_bytes(const struct ssg_graph *g, int p)
+{
+    const struct gnode *n = &g->nodes[g->order[p]];
+    size_t bytes = 0;
+    for (int k = 0; k < n->desc->output_count; k++)
+        if (n->out_img[k])
+            bytes += (size_t)n->out_img[k]->width * (size_t)n->out_img[k]->height *
+                     (size_t)n->out_img[k]->channels * sizeof(float);
+    return bytes;
+}
+
+/* Gives back node p's output images and forgets that they were current. */
+static void evict(struct ssg_graph *g, int p)
+{
+    struct gnode *n = &g->nodes[g->order[p]];
+    for (int k = 0; k < SSG_MAX_PORTS; k++) {
+        ssg_pool_release(g->live->pool, n->out_img[k]);
+        n->out_img[k] = NULL;
+    }
+    g->live->kept[p] = 0;
+}
+
+/* Node p must prepare and run again: its parameters or its shapes changed. */
+static void forget(struct ssg_graph *g, int p)
+{
+    struct ssg_live *l = g->live;
+    free(l->consts[p]);
+    l->consts[p] = NULL;
+    l->prepared[p] = 0;
+    l->kept[p] = 0;
+}
+
+void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
+                        int used_gl)
+{
+    struct ssg_live *l = g->live;
+    l->used_gl |= used_gl;
+    for (int p = 0; p < g->order_count; p++)
+        if (ran[g->order[p]])
+            l->kept[p] = e == SSG_OK && !g->nodes[g->order[p]].desc->is_sink;
+    size_t total = 0;
+    for (int p = 0; p < g->order_count; p++)
+        total += kept_bytes(g, p);
+    while (l->max_bytes && total > l->max_bytes) { /* the eviction rule: largest first */
+        int worst = -1;
+        size_t most = 0;
+        for (int p = 0; p < g->order_count; p++)
+            if (kept_bytes(g, p) > most)
+                most = kept_bytes(g, p), worst = p;
+        if (worst < 0)
+            break;
+        evict(g, worst);
+        total -= most;
+    }
+}
+
+void ssg_live_free(struct ssg_graph *g)
+{
+    struct ssg_live *l = g->live;
+    if (!l)
+        return;
+    struct ssg_diags quiet = {0};
+    int gl = l->used_gl && ssg_gl_open(&quiet) == SSG_OK; /* textures die with GL current */
+    for (int p = 0; p < l->count && l->pool; p++)
+        evict(g, p);
+    ssg_pool_destroy(&l->pool);
+    if (gl)
+        ssg_gl_close();
+    for (int p = 0; l->consts && p < l->count; p++)
+        free(l->consts[p]);
+    for (int p = 0; l->scratch && p < l->count; p++)
+        ssg_scratch_free(&l->scratch[p]);
+    free(l->consts);
+    free(l->scratch);
+    free(l->prepared);
+    free(l->kept);
+    free(l);
+    g->live = NULL;
+}
+
+/* The node a key "node.param" names when the node has that parameter, else -1 with
+   *e set and reported as ssg_graph_param reports it. */
+static int find_param(struct ssg_graph *g, const char *key, enum ssg_err *e,
+                      struct ssg_diags *diags)
+{
+    double unused;
+    const char *dot = strchr(key, '.');
+    int i = dot ? ssg_graph_find(g, key, (size_t)(dot - key)) : -1;
+    if (i < 0 || ssg_param_find(g->nodes[i].desc->params, dot + 1, strlen(dot + 1)) < 0) {
+        *e = ssg_graph_param(g, key, &unused, NULL, diags); /* its message, same fault */
+        return -1;
+    }
+    return i;
+}
+
+enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *value,
+                           struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_set", "graph, key, value", 3, g, key, value))
+        return SSG_E_USAGE;
+    enum ssg_err e = SSG_OK;
+    int i = find_param(g, key, &e, diags);
+    if (i < 0)
+        return e;
+    struct gnode *n = &g->nodes[i];
+    size_t size = n->desc->params_size, text_len = strlen(key) + strlen(value) + 2;
+    struct ssg_shape(*shapes)[2][SSG_MAX_PORTS] = calloc((size_t)g->count + 1, sizeof *shapes);
+    void *old = malloc(size ? size : 1);
+    char *text = malloc(text_len);
+    if (!shapes || !old || !text) {
+        free(shapes), free(old), free(text);
+        return SSG_E_NOMEM;
+    }
+    memcpy(old, n->params, size);
+    for (int k = 0; k < g->count; k++) {
+        memcpy(shapes[k][0], g->nodes[k].in_shape, sizeof shapes[k][0]);
+        memcpy(shapes[k][1], g->nodes[k].out_shape, sizeof shapes[k][1]);
+    }
+    snprintf(text, text_len, "%s=%s", key, value);
+    e = ssg_graph_apply_set(g, text, diags);
+    if (!e)
+        e = ssg_graph_reinfer(g, diags);
+    if (e) { /* the graph stays as it was: the old value, the old shapes */
+        struct ssg_diags quiet = {0};
+        memcpy(n->params, old, size);
+        ssg_graph_reinfer(g, &quiet);
+    }
+    for (int p = 0; !e && g->live && p < g->order_count; p++) {
+        const struct gnode *m = &g->nodes[g->order[p]];
+        if (m == n || memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
+            memcmp(shapes[g->order[p]][1], m->out_shape, sizeof shapes[0][1]))
+            forget(g, p);
+    }
+    free(shapes), free(old), free(text);
+    return e;
+}
+
+enum ssg_err ssg_graph_output(struct ssg_graph *g, const char *port, struct ssg_image **out,
+                              struct ssg_diags *diags)
+{
+    if (out)
+        *out = NULL;
+    if (ssg_api_null(diags, "ssg_graph_output", "graph, port, out", 3, g, port, out))
+        return SSG_E_USAGE;
+    const char *dot = strchr(port, '.');
+    int i = dot ? ssg_graph_find(g, port, (size_t)(dot - port)) : -1;
+    const struct gnode *n = i >= 0 ? &g->nodes[i] : NULL;
+    int k = n ? ssg_port_find(n->desc->outputs, n->desc->output_count, dot + 1,
+                              strlen(dot + 1))
+              : -1;
+    if (k < 0) {
+        ssg_diag_file(diags, SSG_E_UNKNOWN_NAME, g->path, "no output '%s' in the graph "
+                      "(expected node.port of a node's output)", port);
+        return SSG_E_UNKNOWN_NAME;
+    }
+    int p = 0;
+    while (p < g->order_count && g->order[p] != i)
+        p++;
+    const struct ssg_image *im = n->out_img[k];
+    if (!g->live || p == g->order_count || !g->live->kept[p] || !im) {
+        ssg_diag_file(diags, SSG_E_USAGE, g->path, "'%s' has no current image: keep the "
+                      "run state (ssg_graph_keep) and run the graph first (the node must "
+                      "be live, and its output read or kept)", port);
+        return SSG_E_USAGE;
+    }
+    double ms = 0;
+    enum ssg_err e = SSG_OK;
+    if (im->gpu && !(e = ssg_gl_open(diags))) {
+        e = ssg_gl_to_cpu(im, &ms, diags);
+        ssg_gl_close();
+    }
+    if (!e && !(*out = ssg_image_create(im->width, im->height, im->channels)))
+        e = SSG_E_NOMEM;
+    if (!e)
+        memcpy((*out)->data, im->data, (size_t)im->width * (size_t)im->height *
+                                           (size_t)im->channels * sizeof *im->data);
+    return e;
+}
+
+enum ssg_err ssg_graph_view(const struct ssg_graph *g, struct ssg_view *out,
+                            struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_view", "graph, out", 2, g, out))
+        return SSG_E_USAGE;
+    if (!g->scene) {
+        ssg_diag_file(diags, SSG_E_SCENE, g->path, "the graph has no scene, so no camera");
+        return SSG_E_SCENE;
+    }
+    const struct ssg_camera *c = &g->scene->camera;
+    memcpy(out->position, c->position, sizeof out->position);
+    memcpy(out->target, c->target, sizeof out->target);
+    memcpy(out->up, c->up, sizeof out->up);
+    out->fov_y = c->fov_y;
+    return SSG_OK;
+}
+
+/* Why a view cannot be a camera, or NULL when it can. */
+static const char *bad_view(const struct ssg_view *v)
+{
+    float d[3], side[3];
+    for (int k = 0; k < 3; k++) {
+        if (!isfinite(v->position[k]) || !isfinite(v->target[k]) || !isfinite(v->up[k]))
+            return "a coordinate is not a finite number";
+        d[k] = v->target[k] - v->position[k];
+    }
+    side[0] = d[1] * v->up[2] - d[2] * v->up[1];
+    side[1] = d[2] * v->up[0] - d[0] * v->up[2];
+    side[2] = d[0] * v->up[1] - d[1] * v->up[0];
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= 0)
+        return "the target is the position: no direction to look in";
+    if (side[0] * side[0] + side[1] * side[1] + side[2] * side[2] <= 0)
+        return "up is parallel to the view direction (or zero)";
+    if (!(v->fov_y > 0 && v->fov_y < 180))
+        return "fov_y must lie in (0, 180) degrees";
+    return NULL;
+}
+
+enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
+                                struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_set_view", "graph, view", 2, g, v))
+        return SSG_E_USAGE;
+    const char *why = bad_view(v);
+    if (!g->scene || why) {
+        ssg_diag_file(diags, g->scene ? SSG_E_VALUE : SSG_E_SCENE, g->path, "cannot set "
+                      "the camera: %s", g->scene ? why : "the graph has no scene");
+        return g->scene ? SSG_E_VALUE : SSG_E_SCENE;
+    }
+    struct ssg_camera *c = &g->scene->camera;
+    memcpy(c->position, v->position, sizeof c->position);
+    memcpy(c->target, v->target, sizeof c->target);
+    memcpy(c->up, v->up, sizeof c->up);
+    c->fov_y = v->fov_y;
+    g->frame.fov_y = v->fov_y;
+    struct ssg_diags quiet = {0};
+    ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
+    /* Every node may read the camera (the G-buffer, the projection in prepare(), the ray
+       tracers' frames): all prepare and run again. */
+    for (int p = 0; g->live && p < g->order_count; p++)
+        forget(g, p);
+    return SSG_OK;
+}

@@ -1,0 +1,302 @@
+/* test_live.c - live graphs (ssgraph.h: ssg_graph_keep, ssg_graph_set, ssg_graph_output):
+ *   - any sequence of sets and runs on a kept graph gives the bytes of a fresh load with the
+ *     final settings (a seeded random sequence a graph and backend, several outputs
+ *     compared, CPU and GL);
+ *   - a set re-runs only the node and what follows it: after a change to the filter, the
+ *     G-buffer and the AO node are not run again (calls 0 in the stats), the filter is;
+ *   - a set of a shape-changing parameter (halton's count: the kernel's width) re-prepares
+ *     the readers (ssao's 1 / K), and still gives a fresh load's bytes;
+ *   - a bad set (unknown node, unknown parameter, an input, a value out of range) is an
+ *     error that leaves the graph as it was;
+ *   - a new camera (ssg_graph_set_view) changes the image, the old one back restores its
+ *     bytes, and impossible cameras are refused;
+ *   - the memory limit evicts, and evicted nodes run again with the same bytes. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "ssgraph.h"
+
+#define SIZE_W 40
+#define SIZE_H 28
+
+struct choice {
+    const char *key;
+    const char *values[4];
+};
+
+/* Parameters of graphs/ssao.graph and graphs/hbao.graph worth changing, early and late. */
+static const struct choice ssao_choices[] = {
+    {"ao.radius", {"0.25", "0.5", "0.8", NULL}},
+    {"ao.power", {"1", "2", "3", NULL}},
+    {"ao.mode", {"hemisphere", "sphere", "disc", NULL}},
+    {"b.size", {"5", "9", "13", NULL}},
+    {"k.count", {"8", "16", "12", NULL}},
+    {"img.ambient", {"0.3", "0.6", "1", NULL}},
+};
+static const struct choice hbao_choices[] = {
+    {"h.radius", {"0.3", "0.5", "0.9", NULL}},
+    {"h.steps", {"3", "6", "9", NULL}},
+    {"h.directions", {"4", "8", "6", NULL}},
+    {"b.size", {"5", "9", "11", NULL}},
+};
+
+static const char *const compared[] = {"img.out", "b.out", "g.depth"};
+
+static struct ssg_overrides base_overrides(const char *backend)
+{
+    return (struct ssg_overrides){.width = SIZE_W, .height = SIZE_H, .seed = -1,
+                                  .backend = backend};
+}
+
+static char out_dir[1024]; /* the test's scratch folder (SSG_TMP) */
+
+static int run_quiet(struct ssg_graph *g, const char *unused, struct ssg_run_stats *stats,
+                     struct ssg_diags *d)
+{
+    (void)unused;
+    struct ssg_run_options opt = {.out_dir = out_dir, .threads = 2, .stats = stats};
+    return ssg_graph_run(g, &opt, d);
+}
+
+/* The fresh load's images of `compared` with the sets in `sets`. */
+static void fresh_outputs(const char *graph, const char *backend, const char **sets, int count,
+                          struct ssg_image **images)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    ov.sets = sets, ov.set_count = count;
+    ov.outputs = compared, ov.output_count = 3;
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_load(graph, &ov, &g, &d), SSG_OK);
+    struct ssg_run_options opt = {.out_dir = out_dir, .threads = 2, .outputs = images};
+    CHECK_EQ(ssg_graph_run(g, &opt, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+static int same_image(const struct ssg_image *a, const struct ssg_image *b)
+{
+    return a && b && a->width == b->width && a->height == b->height &&
+           a->channels == b->channels &&
+           !memcmp(a->data, b->data,
+                   (size_t)a->width * (size_t)a->height * (size_t)a->channels * sizeof(float));
+}
+
+/* Compares the kept graph's outputs with a fresh load's under the same settings. */
+static void expect_fresh_bytes(struct ssg_graph *g, const char *graph, const char *backend,
+                               const char **sets, int count, const char *when)
+{
+    struct ssg_image *fresh[3] = {0};
+    fresh_outputs(graph, backend, sets, count, fresh);
+    for (int k = 0; k < 3; k++) {
+        struct ssg_image *live = NULL;
+        struct ssg_diags d = {0};
+        CHECK_EQ(ssg_graph_output(g, compared[k], &live, &d), SSG_OK);
+        if (!same_image(live, fresh[k]))
+            fprintf(stderr, "%s %s %s: %s differs from a fresh load\n", graph, backend, when,
+                    compared[k]);
+        CHECK(same_image(live, fresh[k]));
+        ssg_image_destroy(&live);
+        ssg_image_destroy(&fresh[k]);
+    }
+}
+
+static int calls_of(const struct ssg_run_stats *s, const char *node)
+{
+    for (int i = 0; i < s->node_count; i++)
+        if (!strcmp(s->nodes[i].name, node))
+            return s->nodes[i].calls;
+    return -1;
+}
+
+/* A seeded random walk of sets and runs; after each run the kept outputs must be a fresh
+   load's. The sets accumulate as --set would (the last value of a key wins). */
+static void random_walk(const char *graph, const char *backend, const struct choice *choices,
+                        int choice_count, unsigned seed)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_load(graph, &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    char sets[8][64];
+    const char *set_list[8];
+    int set_count = 0;
+    srand(seed);
+    for (int step = 0; step < 4; step++) {
+        const struct choice *c = &choices[rand() % choice_count];
+        const char *value = c->values[rand() % 3];
+        CHECK_EQ(ssg_graph_set(g, c->key, value, &d), SSG_OK);
+        snprintf(sets[set_count], sizeof sets[0], "%s=%s", c->key, value);
+        set_list[set_count] = sets[set_count];
+        set_count++;
+        if (rand() % 3 == 0 && step < 3)
+            continue; /* two sets before one run */
+        CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+        char when[32];
+        snprintf(when, sizeof when, "step %d", step);
+        expect_fresh_bytes(g, graph, backend, set_list, set_count, when);
+    }
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+/* A late change runs the late node and what follows; the early ones are reused. */
+static void only_what_changed_runs(const char *backend)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    struct ssg_run_stats s = {0};
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK(calls_of(&s, "g") == 1 && calls_of(&s, "ao") == 1);
+    ssg_run_stats_free(&s);
+    CHECK_EQ(ssg_graph_set(g, "b.size", "5", &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK_EQ(calls_of(&s, "g"), 0);
+    CHECK_EQ(calls_of(&s, "k"), 0);
+    CHECK_EQ(calls_of(&s, "ao"), 0);
+    CHECK_EQ(calls_of(&s, "b"), 1);
+    CHECK_EQ(calls_of(&s, "img"), 1);
+    CHECK_EQ(calls_of(&s, "out"), 1); /* sinks always run */
+    ssg_run_stats_free(&s);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK); /* nothing changed */
+    CHECK(calls_of(&s, "b") == 0 && calls_of(&s, "img") == 0);
+    ssg_run_stats_free(&s);
+    const char *sets[] = {"b.size=5"};
+    expect_fresh_bytes(g, "graphs/ssao.graph", backend, sets, 1, "after b.size");
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+/* A new camera changes the image; the old camera back gives the first run's bytes again.
+   Bad cameras are refused and change nothing. */
+static void camera_moves_and_returns(const char *backend)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    struct ssg_view home, moved;
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_view(g, &home, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    struct ssg_image *first = NULL, *other = NULL;
+    CHECK_EQ(ssg_graph_output(g, "img.out", &first, &d), SSG_OK);
+    moved = home;
+    moved.position[0] += 0.4f;
+    moved.fov_y = home.fov_y * 0.8f;
+    CHECK_EQ(ssg_graph_set_view(g, &moved, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_output(g, "img.out", &other, &d), SSG_OK);
+    CHECK(!same_image(first, other));
+    ssg_image_destroy(&other);
+    struct ssg_view bad = home;
+    bad.up[0] = bad.target[0] - bad.position[0], bad.up[1] = bad.target[1] - bad.position[1];
+    bad.up[2] = bad.target[2] - bad.position[2];
+    struct ssg_diags refused = {0};
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &refused), SSG_E_VALUE);
+    bad = home, bad.fov_y = 180;
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &refused), SSG_E_VALUE);
+    ssg_diags_print(&refused, stderr);
+    CHECK_EQ(ssg_graph_set_view(g, &home, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_output(g, "img.out", &other, &d), SSG_OK);
+    CHECK(same_image(first, other));
+    ssg_image_destroy(&first);
+    ssg_image_destroy(&other);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+/* halton's count is the kernel's width: ssao's prepared 1 / K must be made again. */
+static void shape_change_reprepares(const char *backend)
+{
+    struct ssg_overrides ov = base_overrides(backend);
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_set(g, "k.count", "8", &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    const char *sets[] = {"k.count=8"};
+    expect_fresh_bytes(g, "graphs/ssao.graph", backend, sets, 1, "after k.count");
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+static void bad_sets_change_nothing(void)
+{
+    struct ssg_overrides ov = base_overrides("cpu");
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    struct ssg_diags bad = {0};
+    CHECK_EQ(ssg_graph_set(g, "nosuch.radius", "1", &bad), SSG_E_UNKNOWN_NAME);
+    CHECK_EQ(ssg_graph_set(g, "ao.raduis", "1", &bad), SSG_E_UNKNOWN_PARAM);
+    CHECK_EQ(ssg_graph_set(g, "ao.depth", "g.depth", &bad), SSG_E_UNKNOWN_PARAM);
+    CHECK(ssg_graph_set(g, "ao.radius", "-3", &bad) != SSG_OK);
+    CHECK(ssg_graph_set(g, "b.size", "4", &bad) != SSG_OK); /* even: check() refuses */
+    CHECK(ssg_graph_set(g, "ao.mode", "cube", &bad) != SSG_OK);
+    ssg_diags_print(&bad, stderr);
+    CHECK(bad.count >= 6);
+    double radius = 0;
+    CHECK_EQ(ssg_graph_param(g, "ao.radius", &radius, NULL, &d), SSG_OK);
+    CHECK_NEAR(radius, 0.5, 1e-7);
+    struct ssg_run_stats s = {0};
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK(calls_of(&s, "ao") == 0 && calls_of(&s, "b") == 0); /* nothing was dirtied */
+    ssg_run_stats_free(&s);
+    expect_fresh_bytes(g, "graphs/ssao.graph", "cpu", NULL, 0, "after bad sets");
+    struct ssg_image *none = NULL;
+    CHECK(ssg_graph_output(g, "ao.nosuch", &none, &bad) != SSG_OK && none == NULL);
+    ssg_graph_destroy(&g);
+}
+
+/* A limit smaller than one frame's images evicts; the next run redoes the evicted nodes
+   and gives the same bytes. */
+static void memory_limit_evicts(void)
+{
+    struct ssg_overrides ov = base_overrides("cpu");
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    struct ssg_run_stats s = {0};
+    CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_keep(g, (size_t)SIZE_W * SIZE_H * 4 * 8, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK_EQ(calls_of(&s, "g"), 1); /* the G-buffer's 7 planes and more: evicted */
+    ssg_run_stats_free(&s);
+    struct ssg_image *img = NULL;
+    CHECK_EQ(ssg_graph_output(g, "img.out", &img, &d), SSG_OK);
+    ssg_image_destroy(&img);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+int main(void)
+{
+    const char *tmp = getenv("SSG_TMP");
+    snprintf(out_dir, sizeof out_dir, "%s", tmp ? tmp : CHECK_TMP_ROOT "/ssg_test_live");
+    only_what_changed_runs("cpu");
+    bad_sets_change_nothing();
+    shape_change_reprepares("cpu");
+    camera_moves_and_returns("cpu");
+    camera_moves_and_returns("gl");
+    shape_change_reprepares("gl");
+    memory_limit_evicts();
+    random_walk("graphs/ssao.graph", "cpu", ssao_choices, 6, 7);
+    random_walk("graphs/hbao.graph", "cpu", hbao_choices, 4, 11);
+    only_what_changed_runs("gl");
+    random_walk("graphs/ssao.graph", "gl", ssao_choices, 6, 5);
+    random_walk("graphs/hbao.graph", "gl", hbao_choices, 4, 3);
+    return check_report();
+}
