@@ -14,9 +14,8 @@
 #include <unistd.h>
 
 #include "bench_cells.h"
-#include "lang/files.h"
-#include "lang/diag.h"
 #include "report.h"
+#include "ssgraph.h"
 
 /* "node.param=v1,v2" into a sweep; 0 with a message when malformed. */
 static int parse_sweep(const char *spec, struct sweep *s)

@@ -15,7 +15,7 @@
 
 #include "bench_cells.h"
 #include "bench_json.h"
-#include "lang/files.h"
+#include "ssgraph.h"
 
 #define SHARD_JSON_MAX (256LL << 20)
 

@@ -10,8 +10,8 @@
 #include <string.h>
 
 #include "bench_cells.h"
-#include "lang/files.h"
 #include "plot.h"
+#include "ssgraph.h"
 #include "text_out.h"
 
 /* "rmse=0.0213;ssim=0.91" style: every metric of a cell as node.name=value. */

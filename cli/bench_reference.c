@@ -29,9 +29,7 @@
 #include <unistd.h>
 
 #include "bench_cells.h"
-#include "graph/graph.h"
 #include "graph_info.h"
-#include "lang/files.h"
 
 /* A file's fingerprint for the key; 0 for none or one that cannot be read (the scene's
    load then reports it). */
@@ -75,14 +73,16 @@ static char *reference_key(const struct ssg_graph *g, const struct ssg_bench_req
     fprintf(f, "ssgraph %s bench reference\noutput %s\neye_offset %.9g\n", SSG_VERSION,
             q->reference, (double)eye_offset);
     /* files by their real paths: graphs/../examples/x.scene and examples/x.scene agree */
+    struct ssg_graph_info info;
+    ssg_graph_inspect(g, &info);
     char scene[4096] = "", lights[4096] = "";
-    if (g->scene_path[0] && !realpath(g->scene_path, scene))
-        snprintf(scene, sizeof scene, "%s", g->scene_path);
-    if (g->lights_path[0] && !realpath(g->lights_path, lights))
-        snprintf(lights, sizeof lights, "%s", g->lights_path);
-    const struct ssg_frame *fr = &g->frame;
+    if (info.scene[0] && !realpath(info.scene, scene))
+        snprintf(scene, sizeof scene, "%s", info.scene);
+    if (info.lights[0] && !realpath(info.lights, lights))
+        snprintf(lights, sizeof lights, "%s", info.lights);
+    const struct ssg_frame *fr = &info.frame;
     fprintf(f, "scene %s %016" PRIx64 "\nlights %s %016" PRIx64 "\n", scene,
-            file_hash(g->scene_path), lights, file_hash(g->lights_path));
+            file_hash(info.scene), lights, file_hash(info.lights));
     fprintf(f, "frame %dx%d guard %d seed %" PRIu64 " fov %.9g near %.9g far %.9g\n",
             fr->width, fr->height, fr->guard, fr->seed, (double)fr->fov_y, (double)fr->near_z,
             (double)fr->far_z);
@@ -219,7 +219,9 @@ enum ssg_err ssg_bench_run_compared(const struct bench *b, const struct ssg_over
     struct ssg_outputs out = {0};
     if (!e) {
         struct ssg_binding bind[] = {{"a", im[0]}, {"b", ref}, {"mask", im[1]}};
-        e = ssg_node_run("compare", bind, q->mask ? 3 : 2, NULL, 0, &g->frame, &out, d);
+        struct ssg_graph_info info;
+        ssg_graph_inspect(g, &info);
+        e = ssg_node_run("compare", bind, q->mask ? 3 : 2, NULL, 0, &info.frame, &out, d);
     }
     if (!e)
         e = add_metrics(stats, &out);

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "bench_cells.h"
-#include "lang/files.h"
+#include "ssgraph.h"
 
 uint64_t ssg_bench_fnv1a(const void *data, size_t len)
 {

@@ -3,72 +3,20 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "graph/graph.h"
-#include "graph/node.h"
 #include "graph_info.h"
-#include "lang/files.h"
-#include "lang/params.h"
 
 /* The graph at path parsed and built (includes, set lines), not validated and without its
    scene; NULL when it cannot be read at all. Errors go to diags, *e the first. */
 static struct ssg_graph *build(const char *path, struct ssg_diags *diags, enum ssg_err *e)
 {
-    struct ssg_graph *g = calloc(1, sizeof *g);
-    if (!g) {
-        *e = SSG_E_NOMEM;
-        return NULL;
-    }
-    *e = ssg_graph_build(g, path, NULL, diags);
+    struct ssg_graph *g = NULL;
+    *e = ssg_graph_parse(path, &g, diags);
     return g;
-}
-
-/* A DOT identifier in quotes (names are the graph's identifiers; quoted all the same). */
-static void dot_id(FILE *f, const char *s, size_t len)
-{
-    fputc('"', f);
-    for (size_t i = 0; i < len && s[i]; i++) {
-        if (s[i] == '"' || s[i] == '\\')
-            fputc('\\', f);
-        fputc(s[i], f);
-    }
-    fputc('"', f);
-}
-
-/* One edge into node n from the reference c (producer.port), to its input `into`. */
-static void dot_edge(FILE *f, const struct gnode *n, const struct gconn *c, const char *into)
-{
-    if (!c->ref)
-        return;
-    fputs("  ", f);
-    dot_id(f, c->value.text, c->value.len);
-    fputs(" -> ", f);
-    dot_id(f, n->name, strlen(n->name));
-    fprintf(f, " [label=\"%.*s -> %s\"];\n", (int)c->value.member_len, c->value.member, into);
 }
 
 static void write_dot(FILE *f, const void *user)
 {
-    const struct ssg_graph *g = user;
-    const char *base = strrchr(g->path, '/');
-    base = base ? base + 1 : g->path;
-    fputs("digraph ", f);
-    dot_id(f, base, strcspn(base, "."));
-    fputs(" {\n  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n"
-          "  edge [fontname=\"Helvetica\", fontsize=10];\n", f);
-    for (int i = 0; i < g->count; i++) {
-        const struct gnode *n = &g->nodes[i];
-        fputs("  ", f);
-        dot_id(f, n->name, strlen(n->name));
-        fprintf(f, " [label=\"%s\\n(%s)\"];\n", n->name, n->desc->name);
-    }
-    for (int i = 0; i < g->count; i++) {
-        const struct gnode *n = &g->nodes[i];
-        for (int k = 0; k < n->desc->input_count; k++)
-            dot_edge(f, n, &n->in[k], n->desc->inputs[k].name);
-        for (int k = 0; k < n->extra_count; k++)
-            dot_edge(f, n, &n->extra[k], n->extra_names[k]);
-    }
-    fputs("}\n", f);
+    ssg_graph_dot(user, f);
 }
 
 enum ssg_err ssg_cli_dot(const char *path, const char *out_path, struct ssg_diags *diags)
@@ -95,36 +43,48 @@ int ssg_cli_first_write(const char *path, char *name, size_t len)
     enum ssg_err e;
     struct ssg_graph *g = build(path, &quiet, &e);
     int found = g && !e ? 0 : -1;
-    for (int i = 0; found == 0 && i < g->count; i++)
-        if (!strcmp(g->nodes[i].desc->name, "write")) {
-            snprintf(name, len, "%s", g->nodes[i].name);
+    struct ssg_graph_info info = {0};
+    if (!found)
+        ssg_graph_inspect(g, &info);
+    for (int i = 0; found == 0 && i < info.node_count; i++) {
+        struct ssg_node_info n;
+        ssg_graph_node_inspect(g, i, &n);
+        if (n.type && !strcmp(n.type, "write")) {
+            snprintf(name, len, "%s", n.name);
             found = 1;
         }
+    }
     ssg_graph_destroy(&g);
     return found;
 }
 
-/* The parameter `key` (len bytes) of a node type is a string. */
-static int is_string_param(const struct ssg_node_desc *desc, const char *key, size_t len)
+/* The parameter `key` (len bytes) of node type `type` is a string. */
+static int is_string_param(const char *type, const char *key, size_t len)
 {
-    int index = desc ? ssg_param_find(desc->params, key, len) : -1;
-    return index >= 0 && desc->params.params[index].type == SSG_P_STRING;
+    char param[128];
+    if (!type || len >= sizeof param)
+        return 0;
+    snprintf(param, sizeof param, "%.*s", (int)len, key);
+    const char *kind = ssg_node_param_type(type, param);
+    return kind && !strcmp(kind, "string");
 }
 
 /* The node type a --set entry names: `node`'s own, or the graph's instance before the dot
    (*key then starts after it). */
-static const struct ssg_node_desc *set_target(const struct ssg_graph *g,
-                                              const struct ssg_node_desc *node,
-                                              const char **key)
+static const char *set_target(const struct ssg_graph *g, const char *node, const char **key)
 {
     if (node)
         return node;
     const char *dot = strchr(*key, '.');
-    int index = dot ? ssg_graph_find(g, *key, (size_t)(dot - *key)) : -1;
-    if (index < 0)
+    char name[128];
+    if (!dot || (size_t)(dot - *key) >= sizeof name)
+        return NULL;
+    snprintf(name, sizeof name, "%.*s", (int)(dot - *key), *key);
+    struct ssg_node_info n;
+    if (ssg_graph_node_inspect(g, ssg_graph_node_index(g, name), &n))
         return NULL;
     *key = dot + 1;
-    return g->nodes[index].desc;
+    return n.type;
 }
 
 /* A --sweep of a string parameter with bare values: "w.name=a,b" -> "w.name=\"a\",\"b\""
@@ -132,7 +92,7 @@ static const struct ssg_node_desc *set_target(const struct ssg_graph *g,
 static int quote_sweep(struct ssg_cli_args *a, const struct ssg_graph *g, int k)
 {
     const char *key = a->sweeps[k], *eq = strchr(key, '=');
-    const struct ssg_node_desc *desc = eq ? set_target(g, NULL, &key) : NULL;
+    const char *desc = eq ? set_target(g, NULL, &key) : NULL;
     if (!desc || key > eq || !is_string_param(desc, key, (size_t)(eq - key)) ||
         strpbrk(eq + 1, "\"\n"))
         return 0;
@@ -159,15 +119,15 @@ int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command)
     struct ssg_diags quiet = {0};
     enum ssg_err e = SSG_OK;
     struct ssg_graph *g = NULL;
-    const struct ssg_node_desc *node = NULL;
+    const char *node = NULL; /* `node`'s type (unknown: no parameter is a string) */
     if (command == SSG_CLI_NODE)
-        node = ssg_node_find(a->files[0], strlen(a->files[0]));
+        node = a->files[0];
     else if (a->ov.set_count || a->sweep_count)
         g = build(a->files[0], &quiet, &e);
     int rc = 0;
     for (int i = 0; i < a->ov.set_count && (g || node) && !rc; i++) {
         const char *key = a->sets[i], *eq = strchr(key, '=');
-        const struct ssg_node_desc *desc = eq ? set_target(g, node, &key) : NULL;
+        const char *desc = eq ? set_target(g, node, &key) : NULL;
         if (!desc || key > eq || !is_string_param(desc, key, (size_t)(eq - key)) ||
             eq[1] == '"' || strpbrk(eq + 1, "\"\n"))
             continue;
@@ -188,26 +148,31 @@ int ssg_cli_quote_sets(struct ssg_cli_args *a, enum ssg_cli_command command)
 
 void ssg_cli_print_resolved(const struct ssg_graph *g, FILE *f)
 {
-    const struct ssg_frame *fr = &g->frame;
+    struct ssg_graph_info info;
+    ssg_graph_inspect(g, &info);
+    const struct ssg_frame *fr = &info.frame;
     fprintf(f, "graph %s: %dx%d, guard %d, seed %llu, fov %.6g, near %.6g, far %.6g, scene %s",
-            g->path, fr->width, fr->height, fr->guard, (unsigned long long)fr->seed,
-            fr->fov_y, fr->near_z, fr->far_z, g->scene_path[0] ? g->scene_path : "(none)");
-    if (g->lights_path[0])
-        fprintf(f, ", lights %s", g->lights_path);
+            info.path, fr->width, fr->height, fr->guard, (unsigned long long)fr->seed,
+            fr->fov_y, fr->near_z, fr->far_z, info.scene[0] ? info.scene : "(none)");
+    if (info.lights[0])
+        fprintf(f, ", lights %s", info.lights);
     fputc('\n', f);
     ssg_cli_print_node_params(g, f);
 }
 
 void ssg_cli_print_node_params(const struct ssg_graph *g, FILE *f)
 {
-    for (int p = 0; p < g->order_count; p++) {
-        const struct gnode *n = &g->nodes[g->order[p]];
-        fprintf(f, "  %-16s %-12s %-4s", n->name, n->desc->name,
-                ssg_backend_name(n->runs_on));
-        for (int k = 0; k < n->desc->params.count; k++) {
+    struct ssg_graph_info info;
+    ssg_graph_inspect(g, &info);
+    for (int p = 0; p < info.run_count; p++) {
+        int index = ssg_graph_run_node(g, p);
+        struct ssg_node_info n;
+        ssg_graph_node_inspect(g, index, &n);
+        fprintf(f, "  %-16s %-12s %-4s", n.name, n.type, n.backend);
+        for (int k = 0; k < n.param_count; k++) {
             char value[256];
-            ssg_param_format(&n->desc->params.params[k], n->params, value, sizeof value);
-            fprintf(f, " %s=%s", n->desc->params.params[k].name, value);
+            const char *name = ssg_graph_node_param(g, index, k, value, sizeof value);
+            fprintf(f, " %s=%s", name, value);
         }
         fputc('\n', f);
     }

@@ -1,7 +1,7 @@
 /* graph_info.h - what the command line reads of a graph besides running it (graph_info.c):
  * `ssgraph dot`, the write node that -o names, the --set values it quotes, and what -v
- * prints of a loaded graph. These look at the library's internal graph (graph/graph.h),
- * which only parses: no scene is loaded. Single-threaded, as the command line. */
+ * prints of a loaded graph, all through the public interface (ssg_graph_parse, which only
+ * parses: no scene is loaded; ssg_graph_inspect). Single-threaded, as the command line. */
 #ifndef SSG_CLI_GRAPH_INFO_H
 #define SSG_CLI_GRAPH_INFO_H
 

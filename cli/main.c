@@ -23,12 +23,8 @@
 #include "bench.h"
 #include "graph_info.h"
 #include "layers.h"
-#include "io/imageio.h"
-#include "io/stereo.h"
-#include "lang/files.h"
 #include "options.h"
 #include "report.h"
-#include "scene_info.h"
 #include "show.h"
 #include "ssgraph.h"
 #include "version.h"
@@ -102,7 +98,7 @@ static int cmd_stereo(struct ssg_cli_args a)
         a.ov.width = 1080, a.ov.height = 1200;
     enum ssg_err e = SSG_OK;
     /* each eye into a hidden folder of the output folder, then one multi-view EXR per
-       EXR and NAME_left/NAME_right per other file (io/stereo.h) */
+       EXR and NAME_left/NAME_right per other file (ssgraph.h, ssg_stereo_join) */
     const char *dirs[2] = {dir[0], dir[1]};
     for (int i = 0; i < 2; i++)
         snprintf(dir[i], sizeof dir[i], "%s/.stereo-%s-%ld", a.out_dir, names[i],
@@ -128,6 +124,18 @@ static int cmd_stereo(struct ssg_cli_args a)
     return conclude(&d, e);
 }
 
+/* 1 when `check` should take path for a model file: an extension the model reader knows
+   (ssg_model_supported), and not .scene or .graph. */
+static int is_model(const char *path)
+{
+    size_t len = strlen(path);
+    char why[512];
+    if ((len > 6 && !strcmp(path + len - 6, ".scene")) ||
+        (len > 6 && !strcmp(path + len - 6, ".graph")))
+        return 0;
+    return ssg_model_supported(path, why, sizeof why);
+}
+
 static int cmd_check(const struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
@@ -135,9 +143,9 @@ static int cmd_check(const struct ssg_cli_args *a)
     size_t len = strlen(file);
     int is_scene = len > 6 && !strcmp(file + len - 6, ".scene");
     if (is_scene) /* the scene's bounds, triangles, camera and lights too */
-        return conclude(&d, ssg_cli_check_scene(file, stdout, &d));
-    if (ssg_cli_is_model(file)) /* its meshes, up axis and a scene to place it in */
-        return conclude(&d, ssg_cli_check_model(file, stdout, &d));
+        return conclude(&d, ssg_scene_summary(file, stdout, &d));
+    if (is_model(file)) /* its meshes, up axis and a scene to place it in */
+        return conclude(&d, ssg_model_summary(file, stdout, &d));
     enum ssg_err e = ssg_graph_check(file, &a->ov, &d);
     if (!e)
         printf("%s: ok\n", file);

@@ -14,8 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "lang/files.h"
 #include "plot.h"
+#include "ssgraph.h"
 
 /* Runs `gnuplot -e "outfile='TMP'" NAME.gp` in dir, stderr into the log temporary. */
 static int gnuplot_child(const char *dir, const char *name, const char *out, int log_fd)

@@ -4,10 +4,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "graph/profile.h"
-#include "lang/files.h"
 #include "peak.h"
 #include "report.h"
+#include "ssgraph.h"
 
 enum { BAR = 30 }; /* width of the progress bar in characters */
 

@@ -25,8 +25,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "lang/files.h"
 #include "report.h"
+#include "ssgraph.h"
 #include "tune_search.h"
 #include "tune_state.h"
 

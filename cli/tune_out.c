@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lang/files.h"
+#include "ssgraph.h"
 #include "text_out.h"
 #include "tune_state.h"
 

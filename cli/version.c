@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "graph/gl_backend.h"
+#include "ssgraph.h"
 #include "version.h"
 
 struct library {
@@ -53,9 +53,9 @@ static void print_gl(void)
     const char *want = getenv("SSG_GL_PLATFORM");
     printf("gl platforms: EGL on a GPU device, else OSMesa (SSG_GL_PLATFORM=%s)\n",
            want && *want ? want : "auto");
-    if (ssg_gl_open(&d) == SSG_OK) {
-        printf("gl: %s\n", ssg_gl_describe());
-        ssg_gl_close();
+    char gl[256];
+    if (ssg_gl_info(gl, sizeof gl, &d) == SSG_OK) {
+        printf("gl: %s\n", gl);
     } else {
         printf("gl: unavailable: %s\n", d.count ? d.items[0].message : "unknown cause");
     }

@@ -5,7 +5,7 @@
 #   lib/ssgraph/libssgraph_oiio.so         the OpenImageIO module (opened on the first image;
 #                                          core/io/imageio_load.c looks for it there, relative
 #                                          to the library or the program)
-#   include/ssgraph/ssgraph.h, errors.def  the public C interface: #include <ssgraph/ssgraph.h>
+#   include/ssgraph/ssgraph.h, ssgraph_tools.h, errors.def  the public C interface: #include <ssgraph/ssgraph.h>
 #   lib/pkgconfig/ssgraph.pc               pkg-config (Libs.private: the static library's needs)
 #   lib/cmake/ssgraph/                     find_package(ssgraph): ssgraph::ssgraph (shared)
 #                                          and ssgraph::ssgraph_static
@@ -30,7 +30,7 @@ install(TARGETS ${SSG_LIBRARIES} EXPORT ssgraphTargets
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS ssgraph_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ssgraph_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/ssgraph)
-install(FILES core/ssgraph.h core/errors.def DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ssgraph)
+install(FILES core/ssgraph.h core/ssgraph_tools.h core/errors.def DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ssgraph)
 install(EXPORT ssgraphTargets NAMESPACE ssgraph:: DESTINATION ${SSG_CMAKE_DIR})
 
 configure_package_config_file(cmake/ssgraphConfig.cmake.in

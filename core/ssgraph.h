@@ -30,6 +30,15 @@ extern "C" {
 
 #define SSG_VERSION "0.1.0"
 
+/* Marks the functions of this interface: the only symbols libssgraph.so exports (the
+ * library is compiled with -fvisibility=hidden; tests/test_public_api.sh holds the
+ * exported set equal to the functions declared with SSG_API). */
+#if defined(__GNUC__)
+#define SSG_API __attribute__((visibility("default")))
+#else
+#define SSG_API
+#endif
+
 enum ssg_err {
 #define X(code, text) code,
 #include "errors.def"
@@ -38,8 +47,8 @@ enum ssg_err {
 };
 
 /* Short symbolic name ("SSG_E_CYCLE") and general description of an error code. */
-const char *ssg_err_name(enum ssg_err code);
-const char *ssg_err_text(enum ssg_err code);
+SSG_API const char *ssg_err_name(enum ssg_err code);
+SSG_API const char *ssg_err_text(enum ssg_err code);
 
 /* One diagnostic. line/column are 1-based; 0 where the message has no location. */
 struct ssg_diag {
@@ -65,9 +74,9 @@ struct ssg_diags {
 
 /* Prints every warning as `file:line:column: warning: message`, then every error as
  * `file:line:column: error: message`, one a line. */
-void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
+SSG_API void ssg_diags_print(const struct ssg_diags *diags, FILE *stream);
 /* First error code in the list, or SSG_OK. */
-enum ssg_err ssg_diags_first(const struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_diags_first(const struct ssg_diags *diags);
 
 /* A planar float image (see the header comment for the layout). */
 struct ssg_image {
@@ -80,8 +89,8 @@ struct ssg_image {
 };
 
 /* Allocates a zeroed image; NULL for absurd sizes or when out of memory. */
-struct ssg_image *ssg_image_create(int width, int height, int channels);
-void ssg_image_destroy(struct ssg_image **image);
+SSG_API struct ssg_image *ssg_image_create(int width, int height, int channels);
+SSG_API void ssg_image_destroy(struct ssg_image **image);
 static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
 {
     return im->data + (size_t)channel * (size_t)im->width * (size_t)im->height;
@@ -90,16 +99,16 @@ static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
 /* Reads an image file (EXR, PNG, HDR, ... through OpenImageIO) into a planar float image.
  * `layer` selects an EXR layer by name ("ao" reads channels "ao.*"); NULL reads the
  * unnamed channels (or all channels when the file has no unnamed ones). */
-enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
-                            struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
+                                    struct ssg_diags *diags);
 
 /* Writes an image as a 32-bit float EXR (1 channel: Y; 2: R,G; 3: R,G,B; 4: R,G,B,A),
  * through a temporary file renamed into place, so a failure leaves no partial file. */
-enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
-                             struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,
+                                     struct ssg_diags *diags);
 
 /* Creates `dir` and every missing parent (mkdir -p); an existing non-directory is an error. */
-enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_make_dirs(const char *dir, struct ssg_diags *diags);
 
 /* What a screen-space node needs to know about the frame besides its images. */
 struct ssg_frame {
@@ -199,7 +208,7 @@ struct ssg_run_stats {
 };
 
 /* Releases what a run put into *stats and zeroes it; NULL or a zeroed struct: nothing. */
-void ssg_run_stats_free(struct ssg_run_stats *stats);
+SSG_API void ssg_run_stats_free(struct ssg_run_stats *stats);
 
 /* Progress of a long node (reference_ao and reference_gi report it), for a progress bar. */
 struct ssg_progress_event {
@@ -277,17 +286,17 @@ struct ssg_graph;
 
 /* Parses, includes, applies overrides, loads the scene and validates the whole graph.
  * Every problem found goes into diags; on any error *out is NULL. */
-enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overrides,
-                            struct ssg_graph **out, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overrides,
+                                    struct ssg_graph **out, struct ssg_diags *diags);
 /* Same, validating only: does not load the scene's meshes or images. */
-enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
-                             struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *overrides,
+                                     struct ssg_diags *diags);
 /* Runs every node in dependency order; writes files into options->out_dir. Prints
  * nothing: what it measured goes to options->stats, progress and notices to the
  * callbacks. Metrics that nodes report (compare) are written to <out_dir>/metrics.json. */
-enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
-                           struct ssg_diags *diags);
-void ssg_graph_destroy(struct ssg_graph **graph);
+SSG_API enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
+                                   struct ssg_diags *diags);
+SSG_API void ssg_graph_destroy(struct ssg_graph **graph);
 
 /* The value of a number parameter of a loaded graph's node, key "node.param" ("h.bias"),
  * as the graph, its set lines and the overrides left it; *integer (if not NULL) is 1 for an
@@ -296,8 +305,8 @@ void ssg_graph_destroy(struct ssg_graph **graph);
  * (SSG_E_UNKNOWN_NAME, at the graph file), no such parameter (SSG_E_UNKNOWN_PARAM) or one
  * that is not a number (a bool, a choice, a string, a list: SSG_E_TYPE), both at the node's
  * definition. */
-enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
-                             int *integer, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
+                                     int *integer, struct ssg_diags *diags);
 
 /* Live graphs: change a loaded graph and re-run only what the change affects.
  *
@@ -320,19 +329,19 @@ enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, dou
  * ssg_graph_output hands out a copy of an output's latest image, port "node.port", as a new
  * CPU image the caller destroys; the graph must be kept and have run, and the node be
  * live. The graph is not thread-safe: one call on a graph at a time. */
-enum ssg_err ssg_graph_keep(struct ssg_graph *graph, size_t max_bytes,
-                            struct ssg_diags *diags);
-enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char *value,
-                           struct ssg_diags *diags);
-enum ssg_err ssg_graph_output(struct ssg_graph *graph, const char *port,
-                              struct ssg_image **out, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_keep(struct ssg_graph *graph, size_t max_bytes,
+                                    struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char *value,
+                                   struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_output(struct ssg_graph *graph, const char *port,
+                                      struct ssg_image **out, struct ssg_diags *diags);
 
 /* Supplies the image of an `input` node (docs/nodes.md): the graph keeps a copy, used by
  * every run until the next supply. The image must have the node's output shape (its type's
  * channels; the frame's size with its guard band unless the node's width and height say
  * otherwise), else SSG_E_SIZE naming both; a node that is not an input is refused. On a
  * kept graph the node and what reads it run again. */
-enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
+SSG_API enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
                               const struct ssg_image *image, struct ssg_diags *diags);
 
 /* The camera of a loaded graph's scene, and a new one for the whole graph (every node that
@@ -346,18 +355,18 @@ struct ssg_view {
     float up[3];       /* world up hint */
     float fov_y;       /* vertical field of view, degrees */
 };
-enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_view *out,
-                            struct ssg_diags *diags);
-enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
-                                struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_view *out,
+                                    struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
+                                        struct ssg_diags *diags);
 
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */
-enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
 
 /* Writes the Markdown reference of every scene entity and its parameters (docs/scenes.md),
  * from the same tables that parse and validate scene files. */
-void ssg_scenes_markdown(FILE *stream);
+SSG_API void ssg_scenes_markdown(FILE *stream);
 
 /* One input of a single-node run: an image bound to a named input port. */
 struct ssg_binding {
@@ -375,74 +384,30 @@ struct ssg_outputs {
     char metric_names[16][32];
     double metric_values[16];
 };
-void ssg_outputs_release(struct ssg_outputs *outputs);
+SSG_API void ssg_outputs_release(struct ssg_outputs *outputs);
 
 /* Runs one node alone on in-memory images. `sets` are "param=value" strings, and
  * "backend=gl" runs the node on the GL backend (outputs come back as CPU images). The frame
  * gives size and camera; its width/height default to the first input's size. */
-enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs, int input_count,
-                          const char *const *sets, int set_count, const struct ssg_frame *frame,
-                          struct ssg_outputs *outputs, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs,
+                                  int input_count, const char *const *sets, int set_count,
+                                  const struct ssg_frame *frame, struct ssg_outputs *outputs,
+                                  struct ssg_diags *diags);
 
 /* The node registry: names, and a full description (ports, parameters, defaults, ranges,
  * units, doc) printed from the node's descriptor table. */
-int ssg_node_count(void);
-const char *ssg_node_name(int index);
-const char *ssg_node_summary(int index);
+SSG_API int ssg_node_count(void);
+SSG_API const char *ssg_node_name(int index);
+SSG_API const char *ssg_node_summary(int index);
 /* Returns SSG_E_UNKNOWN_NODE when no node has that name. */
-enum ssg_err ssg_node_describe(const char *node, FILE *stream);
+SSG_API enum ssg_err ssg_node_describe(const char *node, FILE *stream);
 /* Writes the Markdown reference of every node (docs/nodes.md): a glossary of the port
  * types, then each node's ports and parameters. With graphs_dir (NULL: left out), each
  * node also lists the .graph files of that folder and its sub-folders that use it. */
-void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
+SSG_API void ssg_nodes_markdown(FILE *stream, const char *graphs_dir);
 
-/* ---- Looking at images: a run's ports and an EXR's layers (`ssgraph run --show`,
- * `ssgraph layers`, `ssgraph extract`). Added for issue 31; core/graph/graph_show.c and
- * core/io/image_show.c. ---- */
-
-/* The frame a loaded graph runs at, as its nodes see it: size, guard band, lens, seed. */
-void ssg_graph_frame(const struct ssg_graph *graph, struct ssg_frame *frame);
-
-/* The frame's part of an image, as the write node writes it: an image of the frame's full
- * size with a guard band (ssg_frame_full_width x ssg_frame_full_height, guard > 0) loses
- * its band into a new image, which *copy owns (the caller frees it) and which is returned;
- * any other image (or any with frame NULL) is returned as it is, *copy NULL. NULL when
- * out of memory, or when image or copy is NULL. */
-const struct ssg_image *ssg_image_framed(const struct ssg_frame *frame,
-                                         const struct ssg_image *image,
-                                         struct ssg_image **copy);
-
-/* Writes the 8-bit sRGB PNG preview the write node writes of its main image, through a
- * temporary file renamed into place: every value times 2^exposure (stops), tone mapped by
- * `tonemap` ("aces", the write node's default, when NULL; "reinhard"; "clamp"), sRGB
- * encoded. 1 channel: grey; 3: colour; 2: red and green, blue 0; 4: the colour without
- * alpha. Errors: SSG_E_VALUE for an unknown tone curve, SSG_E_CHANNELS for more than 4
- * channels, SSG_E_IO, SSG_E_NOMEM. */
-enum ssg_err ssg_image_write_png(const char *path, const struct ssg_image *image,
-                                 const char *tonemap, float exposure,
-                                 struct ssg_diags *diags);
-
-#define SSG_LAYER_NAME_MAX 128 /* bytes of a layer or channel name, with its NUL */
-#define SSG_LAYERS_MAX 64      /* layers ssg_image_layers lists, at most */
-
-/* One layer of an image file: what ssg_image_read(path, name, ...) reads. */
-struct ssg_layer_info {
-    char name[SSG_LAYER_NAME_MAX]; /* as ssg_image_read's `layer` takes it ("ao",
-                                      "depth"); "" = the unnamed channels (R,G,B or Y) */
-    int channel_count;             /* channels it reads as (1..4; more: too many to read) */
-    char channels[4][SSG_LAYER_NAME_MAX]; /* the file's names of its first channels, in the
-                                             order read ("ao.Y"; "R", "G", "B"; depth's
-                                             "Z") */
-    int width, height;             /* pixels */
-};
-
-/* The layers of an image file: an EXR's unnamed channels (when it has some), each LAYER
- * of its LAYER.suffix channels and `depth` for OpenEXR's bare Z, in the order of their
- * first channel in the file (OpenEXR sorts channel names); any other file is one unnamed
- * layer. Fills at most max
- * entries, *count = how many the file has. Errors as ssg_image_read's. */
-enum ssg_err ssg_image_layers(const char *path, struct ssg_layer_info *layers, int max,
-                              int *count, struct ssg_diags *diags);
+/* The rest of the interface: looking into a graph, files, what the command line needs. */
+#include "ssgraph_tools.h"
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,5 @@
 /* test_exr_views.c - the library side of EXR metadata, depth and views (io/imageio.h,
- * io/stereo.h; docs/exr.md), on tiny images with known values:
+ * ssgraph.h; docs/exr.md), on tiny images with known values:
  *  - a staged EXR with a struct ssg_exr_meta reads back through ssg_exr_meta_read (the
  *    numbers; strings are the shell test's, tests/test_exr_meta.sh); a file without it is
  *    foreign (found 0), ssg_exr_frame_read leaves the frame alone then;
@@ -18,7 +18,6 @@
 #include "check.h"
 #include "scratch.h"
 #include "io/imageio.h"
-#include "io/stereo.h"
 
 
 static struct ssg_image *filled(int w, int h, int channels, float base)

@@ -20,7 +20,7 @@ CC=${CC:-cc}
 cmake --install "$BUILD" --prefix "$PREFIX" >"$TMP/install.log" 2>&1 ||
     { fail "cmake --install failed: $(tail -5 "$TMP/install.log")"; finish test_install; }
 LIBDIR=$(dirname "$(find "$PREFIX" -name ssgraph.pc | head -1)")/..
-for f in bin/ssgraph include/ssgraph/ssgraph.h include/ssgraph/errors.def \
+for f in bin/ssgraph include/ssgraph/ssgraph.h include/ssgraph/ssgraph_tools.h include/ssgraph/errors.def \
          share/ssgraph/graphs/ssao.graph share/ssgraph/examples/cornell.scene; do
     [ -e "$PREFIX/$f" ] || fail "the install lacks $f"
 done

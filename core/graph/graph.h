@@ -72,6 +72,8 @@ struct ssg_graph {
                                   only they and what they read are live, and each keeps
                                   its image until the run hands it out */
     int wanted_count;          /* 0 = the sinks decide what is live */
+    int keep_sinks;            /* ssg_overrides.keep_sinks: with wanted outputs, the sinks
+                                  are live and run too */
     const char **sets;         /* ssg_overrides.sets, copied: what the run's files record */
     int set_count;
     struct ssg_live *live;     /* the run state kept between runs (ssg_graph_keep), NULL =

@@ -526,8 +526,7 @@ static void apply_override(struct builder *b, const char *text)
 enum ssg_err ssg_graph_apply_set(struct ssg_graph *g, const char *text, struct ssg_diags *diags)
 {
     struct builder b = {.g = g, .diags = diags, .set_origin = "<ssg_graph_set>"};
-    apply_override(&b, text);
-    return b.first;
+    return apply_override(&b, text), b.first;
 }
 
 /* A requested output "node.port": a port reference, resolved as any input's. */
@@ -554,10 +553,7 @@ static void apply_overrides(struct builder *b, const struct ssg_overrides *ov)
         return;
     for (int i = 0; i < ov->output_count; i++)
         want_output(b, ov->outputs[i]);
-    /* keep_sinks: the sinks are marked live before validation, which then keeps them
-       beside the requested outputs (ssg_graph_validate) */
-    for (int i = 0; ov->keep_sinks && ov->output_count && i < b->g->count; i++)
-        b->g->nodes[i].live = b->g->nodes[i].desc->is_sink;
+    b->g->keep_sinks = ov->keep_sinks; /* the sinks run beside the requested outputs */
     for (int i = 0; i < ov->set_count; i++)
         apply_override(b, ov->sets[i]);
     if (ov->scene) {

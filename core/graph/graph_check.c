@@ -434,11 +434,11 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         check_required(&c, n);
         resolve_backend(&c, n);
     }
-    /* Requested outputs replace the sinks: only what they need is live; unless the build
-       kept the sinks (ssg_overrides.keep_sinks), by marking them live before this. */
+    /* Requested outputs replace the sinks: only what they need is live; unless the caller
+       kept the sinks (ssg_overrides.keep_sinks). */
     for (int i = 0; i < g->count; i++) {
         struct gnode *n = &g->nodes[i];
-        if (n->desc->is_sink && (!g->wanted_count || n->live)) {
+        if (n->desc->is_sink && (!g->wanted_count || g->keep_sinks)) {
             sinks++;
             n->live = 0; /* mark_live walks only into nodes not yet live */
             if (!mark_live(g, i))

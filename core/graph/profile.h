@@ -54,21 +54,12 @@ int ssg_profile_frame(struct ssg_profile *p, double ms);
 int ssg_profile_stats(const struct ssg_profile *p, const struct ssg_node_timing *last,
                       struct ssg_run_stats *s);
 
-/* Most one-off loads kept (later ones are still taken out of nodes, not listed). */
-#define SSG_LOADS_MAX 8
-
-/* A library loaded once by the process. */
-struct ssg_load {
-    const char *what; /* "OpenImageIO module"; static */
-    double start_ms;  /* when it began, ssg_now_ms's clock (exec.h) */
-    double ms;        /* how long it took */
-};
+/* SSG_LOADS_MAX and struct ssg_load: in ssgraph.h (public). */
 
 /* Notes that `what` (a static string) was loaded from t0_ms to t1_ms (ssg_now_ms).
  * Thread-safe; call it once per load. */
 void ssg_load_note(const char *what, double t0_ms, double t1_ms);
 
-/* Copies the process's loads so far, in order, into out (room for max); their count. */
-int ssg_loads(struct ssg_load *out, int max);
+/* ssg_loads: in ssgraph.h (public). */
 
 #endif

@@ -123,12 +123,7 @@ enum ssg_err ssg_exr_stage(const char *path, const struct ssg_exr_layer *layers,
 enum ssg_err ssg_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,
                                struct ssg_diags *diags);
 
-/* The camera a file records, for a node run on it (`ssgraph node`): the fov, near and far
- * of an ssgraph EXR into frame->fov_y, near_z, far_z. spec is FILE or FILE:LAYER (the
- * `--in` form; the layer does not matter: every view has the same lens). 1 when the file
- * carries them; 0, frame untouched, for a foreign file or one that cannot be read (its
- * image read reports why). */
-int ssg_exr_frame_read(const char *spec, struct ssg_frame *frame);
+/* ssg_exr_frame_read: in ssgraph.h (public). */
 
 /* Joins single-view EXRs of one size (each an ssgraph EXR, e.g. a stereo run's eyes) into
  * one multi-view EXR (OpenEXR's multi-view convention): a multiView attribute listing

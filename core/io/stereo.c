@@ -1,5 +1,5 @@
 /* stereo.c - a stereo run's eye folders into multi-view EXRs and per-eye previews
- * (stereo.h). */
+ * (ssgraph.h, the stereo section). */
 #include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "io/imageio.h"
-#include "io/stereo.h"
+#include "ssgraph.h" /* ssg_stereo_join, _discard, _sweep */
 #include "lang/diag.h"
 #include "lang/files.h"
 

@@ -42,56 +42,16 @@ enum ssg_err ssg_input_open(const char *path, long long max_bytes, int *fd, char
 enum ssg_err ssg_input_check(const char *path, long long max_bytes, char *why,
                              size_t why_len);
 
-/* Reads a whole input (ssg_input_open's rules) into malloc'd memory with a NUL after the
- * last byte; *len excludes it. */
-enum ssg_err ssg_input_read(const char *path, long long max_bytes, char **data, size_t *len,
-                            char *why, size_t why_len);
+/* ssg_input_read: in ssgraph.h (public). */
 
 /* 1 when no process with this pid exists here (kill(pid, 0) fails with ESRCH): whatever it
  * left behind in an output folder (a temporary, a stereo eye's folder) is stale. 0 for
  * this process, a live one, or pid <= 0. */
 int ssg_pid_gone(long pid);
 
-#define SSG_TMP_MAX 64
+/* struct ssg_tmp, ssg_tmp_create, _close, _commit, _discard, _remove_all and
+ * _remove_on_signals: in ssgraph.h (public). */
 
-/* One output being written: the temporary (open as fd until ssg_tmp_close) and its
- * target. */
-struct ssg_tmp {
-    char path[4352];  /* the temporary: <dir>/.<stem>.tmp-<pid>-<n><ext> */
-    char target[4096];
-    int fd;           /* -1 once closed */
-    int lock_fd;      /* holds the temporary's lock until commit or discard, -1 = none */
-    int slot;         /* registry slot, -1 = none */
-};
-
-/* Creates the temporary of `target` (ext: its extension with the dot, which OpenImageIO
- * reads to pick the format; "" for none; `what` names the content in messages, "image"),
- * registered for removal on a signal. Also removes temporaries of dead processes in that
- * folder. An existing target that is not a regular file (a device, FIFO, socket or
- * directory) is refused with SSG_E_IO: the rename would replace it. */
-enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
-                            struct ssg_tmp *t, struct ssg_diags *diags);
-/* Flushes, syncs and closes t's descriptor: SSG_OK only if every byte reached the disk. */
-enum ssg_err ssg_tmp_close(struct ssg_tmp *t, struct ssg_diags *diags);
-/* Renames every closed temporary over its target, in order; on any failure the rest are
- * discarded. */
-enum ssg_err ssg_tmp_commit(struct ssg_tmp *t, int count, struct ssg_diags *diags);
-/* Removes the temporaries (closing them first) and unregisters them. */
-void ssg_tmp_discard(struct ssg_tmp *t, int count);
-
-/* Async-signal-safe: unlinks every registered temporary. For a signal handler. */
-void ssg_tmp_remove_all(void);
-/* Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove the temporaries,
- * then die of the same signal. For programs (the CLI); a library user keeps its own. */
-void ssg_tmp_remove_on_signals(void);
-
-/* Writes a text file whole or not at all through a temporary (above): fill() writes into
- * it. `what` names the content in error messages ("metrics", "profile"). A path naming a
- * character device or a FIFO (/dev/stdout, a named pipe) is written into as a stream, never
- * replaced; any other existing non-regular file (a directory, a socket) is refused, as it
- * is by ssg_tmp_create for every output. */
-enum ssg_err ssg_write_text_file(const char *path, const char *what,
-                                 void (*fill)(FILE *f, const void *user), const void *user,
-                                 struct ssg_diags *diags);
+/* ssg_write_text_file: in ssgraph.h (public). */
 
 #endif

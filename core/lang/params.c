@@ -295,7 +295,7 @@ enum ssg_err ssg_param_set_text(struct ssg_param_table table, void *params, cons
     return e;
 }
 
-static const char *type_name(const struct ssg_param_desc *p)
+const char *ssg_param_type_name(const struct ssg_param_desc *p)
 {
     static const char *const names[] = {"float", "int", "bool", "enum", "string", "vec3",
                                         "int list", "name"};
@@ -355,7 +355,7 @@ void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream)
     char def[128], expected[256];
     default_text(p, def, sizeof def);
     expected_text(p, expected, sizeof expected);
-    fprintf(stream, "  %-18s %-8s default %-14s %s\n  %18s %s\n", p->name, type_name(p), def,
+    fprintf(stream, "  %-18s %-8s default %-14s %s\n  %18s %s\n", p->name, ssg_param_type_name(p), def,
             expected, "", p->help ? p->help : "");
 }
 
@@ -364,6 +364,6 @@ void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream)
     char def[128], expected[256];
     default_text(p, def, sizeof def);
     expected_text(p, expected, sizeof expected);
-    fprintf(stream, "| `%s` | %s | `%s` | %s | %s |\n", p->name, type_name(p), def, expected,
+    fprintf(stream, "| `%s` | %s | `%s` | %s | %s |\n", p->name, ssg_param_type_name(p), def, expected,
             p->help ? p->help : "");
 }

@@ -171,6 +171,8 @@ void ssg_param_names(struct ssg_param_table table, char *buf, size_t len);
 void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream);
 /* Same as a Markdown table row. */
 void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream);
+/* The type as `describe` names it: "float", "int", "bool", "enum", "string", ... */
+const char *ssg_param_type_name(const struct ssg_param_desc *p);
 /* Formats the current value of parameter p in params as it would be written in a file. */
 void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *buf,
                       size_t len);

@@ -42,9 +42,7 @@ struct ssg_model_up {
     char basis[200]; /* what the axis rests on, "the glTF 2.0 specification (+Y up)" */
 };
 
-/* 1 when path's extension names a format ssg_model_load reads; otherwise 0 with the
- * reason (the extension, or that there is none) in why. */
-int ssg_model_supported(const char *path, char *why, size_t why_len);
+/* ssg_model_supported: in ssgraph.h (public). */
 
 /* Loads path by its extension (and, for glTF, by the version it declares). Returns
  * SSG_E_IO (unreadable), SSG_E_GLTF (malformed, unsupported content or format, or an

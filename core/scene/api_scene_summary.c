@@ -1,9 +1,9 @@
-/* scene_info.c - the summary `ssgraph check FILE.scene` and `ssgraph check MODEL` print
- * (scene_info.h). The library returns the loaded scene (scene/scene.h) or model
- * (scene/model.h) and the model's up axis; the printing, and the advice built on it (the
- * up-axis hint, the scale hint, a scene to paste), are here. */
-#include "scene_info.h"
-
+/* api_scene_summary.c - what `ssgraph check FILE.scene` and `ssgraph check MODEL` print
+ * (ssgraph.h, ssg_scene_summary and ssg_model_summary): a scene loaded with its meshes, or
+ * a model file alone, as a newcomer needs to see it before the first render. The loaded
+ * scene (scene/scene.h) or model (scene/model.h) and the model's up axis are read here;
+ * the advice built on them (the up-axis hint, the scale hint, a scene to paste) too.
+ * Writes to the stream the caller gives; reads the files only. */
 #include <math.h>
 #include <string.h>
 
@@ -11,6 +11,10 @@
 #include "lang/parse.h"
 #include "scene/model.h"
 #include "scene/scene.h"
+
+/* The AO radius of the default graph (graphs/ssdo.graph's ssdo radius), scene units: the
+   scale the hint compares the scene's bounding-box diagonal with. */
+#define DEFAULT_AO_RADIUS 0.5f
 
 /* Mesh lines listed one by one up to this many meshes (a model of thousands would bury
    the rest of the summary). */
@@ -175,20 +179,22 @@ static const char *unit_guess(float scale)
 static void print_scale_hint(FILE *out, const struct ssg_scene *s)
 {
     float diagonal;
-    float scale = ssg_scene_scale_hint(s, SSG_CLI_DEFAULT_AO_RADIUS, &diagonal);
+    float scale = ssg_scene_scale_hint(s, DEFAULT_AO_RADIUS, &diagonal);
     if (scale == 0.0f)
         return;
     fprintf(out, "  note: the models' bounding-box diagonal is %g scene units, %g times the "
             "AO radius %g of graphs/ssdo.graph: a model in %s? Add scale=%g to its mesh line",
-            (double)diagonal, (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS),
-            (double)SSG_CLI_DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
+            (double)diagonal, (double)(diagonal / DEFAULT_AO_RADIUS),
+            (double)DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
     for (int i = 0; i < s->model_count; i++)
         fprintf(out, "%s%s:%d", i ? ", " : " (", s->path, s->models[i].line);
     fprintf(out, "), or set the AO radius to match\n");
 }
 
-enum ssg_err ssg_cli_check_scene(const char *path, FILE *out, struct ssg_diags *diags)
+enum ssg_err ssg_scene_summary(const char *path, FILE *out, struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_scene_summary", "path, out", 2, path, out))
+        return SSG_E_USAGE;
     struct ssg_scene *s = NULL;
     enum ssg_err e = ssg_scene_load(path, 1, &s, diags);
     if (e)
@@ -213,16 +219,6 @@ enum ssg_err ssg_cli_check_scene(const char *path, FILE *out, struct ssg_diags *
     print_scale_hint(out, s);
     ssg_scene_destroy(&s);
     return SSG_OK;
-}
-
-int ssg_cli_is_model(const char *path)
-{
-    size_t len = strlen(path);
-    char why[512];
-    if ((len > 6 && !strcmp(path + len - 6, ".scene")) ||
-        (len > 6 && !strcmp(path + len - 6, ".graph")))
-        return 0;
-    return ssg_model_supported(path, why, sizeof why);
 }
 
 /* The loader's message as a diagnostic: "PATH:LINE:COLUMN: text" keeps its place. */
@@ -309,11 +305,13 @@ static float model_scale_hint(const struct ssg_gltf *g, float *diagonal)
     struct ssg_scene_model m = {.first_mesh = 0, .mesh_count = g->mesh_count};
     struct ssg_scene s = {.mesh_count = g->mesh_count, .meshes = g->meshes,
                           .model_count = 1, .models = &m};
-    return ssg_scene_scale_hint(&s, SSG_CLI_DEFAULT_AO_RADIUS, diagonal);
+    return ssg_scene_scale_hint(&s, DEFAULT_AO_RADIUS, diagonal);
 }
 
-enum ssg_err ssg_cli_check_model(const char *path, FILE *out, struct ssg_diags *diags)
+enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *diags)
 {
+    if (ssg_api_null(diags, "ssg_model_summary", "path, out", 2, path, out))
+        return SSG_E_USAGE;
     struct ssg_gltf *g = NULL;
     struct ssg_model_up up;
     char why[1024];
@@ -339,8 +337,8 @@ enum ssg_err ssg_cli_check_model(const char *path, FILE *out, struct ssg_diags *
     if (scale > 0.0f)
         fprintf(out, "  scale: the bounding-box diagonal is %g, %g times the AO radius %g of "
                 "graphs/ssdo.graph: a model in %s? scale=%g fits it\n", (double)diagonal,
-                (double)(diagonal / SSG_CLI_DEFAULT_AO_RADIUS),
-                (double)SSG_CLI_DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
+                (double)(diagonal / DEFAULT_AO_RADIUS),
+                (double)DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
     print_snippet(out, path, rotate, scale, lo, hi);
     ssg_gltf_destroy(&g);
     return SSG_OK;
