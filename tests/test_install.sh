@@ -48,6 +48,16 @@ if $CC -std=c11 $FLAGS "$SRC/docs/tutorial/hello.c" -o "$TMP/hello" $pc >"$TMP/h
 else
     fail "docs/tutorial/hello.c did not build as the tutorial says: $(cat "$TMP/hello.log")"
 fi
+# the tutorial's live-graph example: a sweep where only ao and what follows run again
+if $CC -std=c11 $FLAGS "$SRC/docs/tutorial/sweep_live.c" -o "$TMP/sweep_live" $pc \
+        >"$TMP/sweep.log" 2>&1; then
+    pushd "$TMP" >/dev/null # it writes out/sweep where it runs
+    expect_exit 0 "^radius 1     mean ambient occlusion 0\.[0-9]+ \(3 of 5 nodes ran\)$" \
+        env -u LD_LIBRARY_PATH "$TMP/sweep_live" "$SRC/docs/tutorial/first.graph"
+    popd >/dev/null
+else
+    fail "docs/tutorial/sweep_live.c did not build as the tutorial says: $(cat "$TMP/sweep.log")"
+fi
 pkg-config --modversion ssgraph | grep -qx "$(sed -n 's/^#define SSG_VERSION "\(.*\)"/\1/p' \
     "$SRC/core/ssgraph.h")" || fail "ssgraph.pc's version is not the header's"
 
