@@ -74,6 +74,7 @@ static void fed_equals_gbuffer(const char *backend)
 
     /* kept: a new normal image re-runs nrm and b, not pos */
     struct ssg_run_stats st = {0};
+    ssg_image_destroy(&fed);
     CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
     CHECK_EQ(ssg_graph_run(g, &opt, &d), SSG_OK);
     ssg_image_destroy(&fed);
