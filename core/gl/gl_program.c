@@ -55,7 +55,8 @@ struct cached {
     char shader[64];
     char *defines;
     int stages;
-    const struct ssg_node_desc *owner; /* the node whose tables its pragmas declared */
+    int binds;                         /* SSG_GL_BINDS_*: the pragmas of its file */
+    const struct ssg_node_desc *owner; /* the node whose tables they declared, else NULL */
     GLuint program;
 };
 static struct cached cache[CACHE_MAX];
@@ -391,13 +392,17 @@ static GLuint build(const struct ssg_node_ctx *ctx, const char *shader, const ch
 GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
                           const char *defines, int stages, int *binds)
 {
-    const char *d = defines ? defines : "", *text = ssg_shader_source(shader);
-    *binds = text && ctx->desc ? declared_tables(text) : 0;
-    const struct ssg_node_desc *owner = *binds ? ctx->desc : NULL;
+    const char *d = defines ? defines : "";
+    /* A program without pragmas serves every node; one with them only its own. The file
+       is read for its pragmas only when it is compiled, never on a hit. */
     for (int i = 0; i < cache_count; i++)
         if (cache[i].stages == stages && !strcmp(cache[i].shader, shader) &&
-            !strcmp(cache[i].defines, d) && cache[i].owner == owner)
+            !strcmp(cache[i].defines, d) && (!cache[i].binds || cache[i].owner == ctx->desc)) {
+            *binds = cache[i].binds;
             return cache[i].program;
+        }
+    const char *text = ssg_shader_source(shader);
+    *binds = text && ctx->desc ? declared_tables(text) : 0;
     GLuint prog = build(ctx, shader, defines, stages);
     if (!prog || cache_count == CACHE_MAX || strlen(shader) >= sizeof cache[0].shader)
         return prog; /* uncached (a rare overflow costs a recompile, never a wrong program) */
@@ -407,7 +412,8 @@ GLuint ssg_gl_program_get(const struct ssg_node_ctx *ctx, const char *shader,
         return prog;
     snprintf(c->shader, sizeof c->shader, "%s", shader);
     c->stages = stages;
-    c->owner = owner;
+    c->binds = *binds;
+    c->owner = *binds ? ctx->desc : NULL;
     c->program = prog;
     cache_count++;
     return prog;
