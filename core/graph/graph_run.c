@@ -83,8 +83,6 @@ static void release_after(struct run *r, int p)
 
 static void release_all(struct run *r)
 {
-    if (r->live)
-        return;
     for (int q = 0; q < r->g->order_count; q++) {
         struct gnode *n = &r->g->nodes[r->g->order[q]];
         for (int k = 0; k < SSG_MAX_PORTS; k++) {
