@@ -1,0 +1,262 @@
+#!/usr/bin/python3
+"""The page of `ssgraph view` in a real headless Chromium (tests/test_view_browser.sh starts
+the server). Usage: view_browser.py URL OUTDIR GRAPHFILE. It clicks the node `do` in the
+diagram, moves its radius slider, drags the camera, sets an A/B split with metrics, types a
+bad value and breaks the graph file on disk (the errors show at file:line:col and clear), and
+saves a variant; screenshots go to OUTDIR/viewer-*.png. Exits 1 with FAIL lines on failures.
+The graph is graphs/ssdo_realtime.graph: its node names and ports are used below."""
+import os
+import re
+import sys
+import time
+
+from selenium import webdriver
+from selenium.common.exceptions import TimeoutException, WebDriverException
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select, WebDriverWait
+
+URL, OUT, GRAPH = sys.argv[1], sys.argv[2], sys.argv[3]
+WAIT = 30  # seconds for one step; the graph runs on 2 busy cores
+failures = []
+
+# A cheap fingerprint of the canvas pixels, to see that what is drawn changed.
+CANVAS_HASH = """
+const c = document.getElementById('view');
+const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+let h = 0;
+for (let i = 0; i < d.length; i++) h = (Math.imul(h, 31) + d[i]) | 0;
+return [c.width, c.height, h];
+"""
+
+
+def fail(msg):
+    print(f"FAIL: {msg}", flush=True)
+    failures.append(msg)
+
+
+def browser():
+    opts = webdriver.ChromeOptions()
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                 "--window-size=1280,800", "--no-first-run", "--disable-extensions"):
+        opts.add_argument(flag)
+    opts.binary_location = "/usr/bin/chromium"
+    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+
+
+def wait_for(drv, what, cond):
+    """Waits until cond(drv) is truthy; a timeout is a failure named `what`."""
+    try:
+        return WebDriverWait(drv, WAIT, poll_frequency=0.1).until(lambda d: cond(d))
+    except TimeoutException:
+        fail(f"timed out waiting for {what}")
+        return None
+
+
+def text(drv, elem_id):
+    return drv.find_element(By.ID, elem_id).text
+
+
+def shot(drv, name):
+    drv.save_screenshot(os.path.join(OUT, f"viewer-{name}.png"))
+
+
+def generation(drv):
+    t = text(drv, "generation")
+    return int(t) if t.isdigit() else -1
+
+
+def ran_nodes(drv):
+    return set(text(drv, "ran-list").split())
+
+
+def step_load(drv):
+    drv.get(URL)
+    wait_for(drv, "the diagram", lambda d: d.find_elements(By.CSS_SELECTOR, "#diagram g.node"))
+    wait_for(drv, "the first image", lambda d: d.execute_script(CANVAS_HASH)[0] > 16)
+    if not text(drv, "hdr-graph").endswith("ssdo_realtime.graph"):
+        fail(f"header graph is '{text(drv, 'hdr-graph')}'")
+    if text(drv, "hdr-size") != "160x90":
+        fail(f"header size is '{text(drv, 'hdr-size')}'")
+    shot(drv, "overview")
+
+
+def step_click_node(drv):
+    nodes = drv.find_elements(By.CSS_SELECTOR, "#diagram g.node")
+    target = [g for g in nodes
+              if g.find_element(By.TAG_NAME, "title").get_attribute("textContent") == "do"]
+    if not target:
+        fail("no node 'do' in the diagram")
+        return
+    before = drv.execute_script(CANVAS_HASH)
+    # the node's label text is what a user clicks
+    target[0].find_element(By.TAG_NAME, "text").click()
+    wait_for(drv, "the panel of node do", lambda d: text(d, "node-name") == "do")
+    if not drv.find_elements(By.ID, "param-do-radius-slider"):
+        fail("node do has no radius slider in its panel")
+    if Select(drv.find_element(By.ID, "port-a")).first_selected_option.text != "do.out":
+        fail("clicking do did not show do.out")
+    if "selected" not in (target[0].get_attribute("class") or ""):
+        fail("the clicked node is not marked selected")
+    wait_for(drv, "do.out drawn", lambda d: d.execute_script(CANVAS_HASH) != before)
+
+
+def step_slider(drv):
+    """Moves do.radius with the mouse: the image changes, and only do and later nodes ran."""
+    before, gen = drv.execute_script(CANVAS_HASH), generation(drv)
+    radius = drv.find_element(By.ID, "param-do-radius").get_attribute("value")
+    slider = drv.find_element(By.ID, "param-do-radius-slider")
+    ActionChains(drv).click_and_hold(slider).move_by_offset(25, 0).pause(0.1) \
+        .move_by_offset(25, 0).release().perform()
+    wait_for(drv, "a run after the slider", lambda d: generation(d) > gen)
+    wait_for(drv, "the radius box to follow the slider",
+             lambda d: d.find_element(By.ID, "param-do-radius").get_attribute("value") != radius)
+    wait_for(drv, "the canvas to change after the slider",
+             lambda d: d.execute_script(CANVAS_HASH) != before)
+    wait_for(drv, "the last set to finish", lambda d: not d.find_element(By.ID, "busy").is_displayed())
+    ran = ran_nodes(drv)
+    if "do" not in ran or ran & {"g", "d", "k", "lit"}:
+        fail(f"after do.radius the nodes that ran were {sorted(ran)}: expected do and after only")
+    table_ran = {r.get_attribute("data-node") for r in
+                 drv.find_elements(By.CSS_SELECTOR, "#node-table tbody tr.ran")}
+    if table_ran != ran:
+        fail(f"the time table's ran rows {sorted(table_ran)} differ from {sorted(ran)}")
+    shot(drv, "params")
+
+
+def step_camera(drv):
+    """Drags on the canvas: orbit, then pan; the image changes and updates/s is shown."""
+    before = drv.execute_script(CANVAS_HASH)
+    Select(drv.find_element(By.ID, "port-a")).select_by_value("img.out")
+    wait_for(drv, "img.out drawn", lambda d: d.execute_script(CANVAS_HASH) != before)
+    before = drv.execute_script(CANVAS_HASH)
+    canvas = drv.find_element(By.ID, "view")
+    chain = ActionChains(drv).move_to_element(canvas).click_and_hold()
+    for _ in range(8):
+        chain = chain.move_by_offset(6, 2).pause(0.05)
+    chain.release().perform()
+    wait_for(drv, "updates/s shown", lambda d: "updates/s" in text(d, "cam-ups"))
+    wait_for(drv, "the full-size run after the drag",
+             lambda d: text(d, "last-run") == "full" and
+             not d.find_element(By.ID, "busy").is_displayed())
+    wait_for(drv, "the canvas to change after the orbit",
+             lambda d: d.execute_script(CANVAS_HASH) != before)
+    if "g" not in ran_nodes(drv):
+        fail(f"a camera move did not re-run the G-buffer: {sorted(ran_nodes(drv))}")
+    before = drv.execute_script(CANVAS_HASH)
+    ActionChains(drv).move_to_element(canvas).key_down(Keys.SHIFT).click_and_hold() \
+        .move_by_offset(-20, 10).pause(0.1).release().key_up(Keys.SHIFT).perform()
+    wait_for(drv, "the canvas to change after the pan",
+             lambda d: d.execute_script(CANVAS_HASH) != before)
+    shot(drv, "camera")
+
+
+def metric(drv, which):
+    m = re.search(which + r": RMSE ([-0-9.e+]+) SSIM ([-0-9.e+]+)", text(drv, "metrics"))
+    return (float(m.group(1)), float(m.group(2))) if m else None
+
+
+def step_ab(drv):
+    """A = img.out, B = g.direct against the reference g.direct: B is exact, A's error
+    changes when the radius changes."""
+    drv.find_element(By.ID, "ab-enable").click()
+    Select(drv.find_element(By.ID, "port-a")).select_by_value("img.out")
+    Select(drv.find_element(By.ID, "port-b")).select_by_value("g.direct")
+    Select(drv.find_element(By.ID, "port-ref")).select_by_value("g.direct")
+    wait_for(drv, "metrics of A and B", lambda d: metric(d, "A") and metric(d, "B"))
+    a, b = metric(drv, "A"), metric(drv, "B")
+    if b and (b[0] != 0 or abs(b[1] - 1) > 1e-6):
+        fail(f"B == reference but its metrics are {b}")
+    box = drv.find_element(By.ID, "param-do-radius")
+    box.clear()
+    box.send_keys("0.05", Keys.ENTER)
+    wait_for(drv, "A's metrics to update after a run",
+             lambda d: metric(d, "A") and metric(d, "A") != a)
+    shot(drv, "ab")
+
+
+def step_errors(drv):
+    """A bad value shows the server's file:line:col message; the file watcher's reload
+    error shows and clears when the file is good again."""
+    box = drv.find_element(By.ID, "param-do-radius")
+    box.clear()
+    box.send_keys("-1", Keys.ENTER)
+    err = wait_for(drv, "the error of a bad value",
+                   lambda d: d.find_element(By.ID, "request-error").is_displayed()
+                   and text(d, "request-error"))
+    if err and not re.search(r":\d+:\d+: error", err):
+        fail(f"the bad value's error is not file:line:col: {err}")
+    box.clear()
+    box.send_keys("0.3", Keys.ENTER)
+    wait_for(drv, "the error to clear after a good value",
+             lambda d: not d.find_element(By.ID, "request-error").is_displayed())
+    with open(GRAPH) as f:
+        good = f.read()
+    with open(GRAPH, "a") as f:
+        f.write("\nbroken = nosuchnode(\n")
+    err = wait_for(drv, "the reload error", lambda d: d.find_element(By.ID, "state-error")
+                   .is_displayed() and text(d, "state-error"))
+    if err and not re.search(r":\d+:\d+:", err):
+        fail(f"the reload error is not file:line:col: {err}")
+    shot(drv, "error")
+    with open(GRAPH, "w") as f:
+        f.write(good)
+    wait_for(drv, "the reload error to clear",
+             lambda d: not d.find_element(By.ID, "state-error").is_displayed())
+
+
+def step_save(drv):
+    name = f"viewtest_{os.getpid()}"
+    drv.find_element(By.ID, "save-name").send_keys(name)
+    drv.find_element(By.ID, "save-btn").click()
+    res = wait_for(drv, "the save result", lambda d: text(d, "save-result"))
+    path = os.path.join(os.path.dirname(GRAPH), name + ".graph")
+    if not res or not res.startswith("wrote ") or not os.path.exists(path):
+        fail(f"save said '{res}', {path} exists: {os.path.exists(path)}")
+        return
+    with open(path) as f:
+        saved = f.read()
+    if "include" not in saved or "do.radius" not in saved:
+        fail(f"the variant lacks the include or the radius: {saved}")
+    drv.find_element(By.ID, "save-btn").click()  # the same name again: 409
+    wait_for(drv, "the second save's error", lambda d: text(d, "save-result").startswith("error"))
+
+
+def js_errors(drv):
+    """Console errors other than the HTTP errors the test provokes on purpose."""
+    try:
+        logs = drv.get_log("browser")
+    except WebDriverException:
+        return
+    for e in logs:
+        if e["level"] == "SEVERE" and "Failed to load resource" not in e["message"]:
+            fail(f"browser console: {e['message']}")
+
+
+def main():
+    try:
+        drv = browser()
+    except WebDriverException as e:
+        print(f"FAIL: cannot start headless chromium with /usr/bin/chromedriver "
+              f"(packages in tools/debian-packages.txt): {e.msg}")
+        return 1
+    try:
+        for step in (step_load, step_click_node, step_slider, step_camera, step_ab,
+                     step_errors, step_save):
+            t0 = time.time()
+            step(drv)
+            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
+            if failures:
+                shot(drv, "failure")
+                break
+        js_errors(drv)
+    finally:
+        drv.quit()
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
