@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The page of `ssgraph view` in a real headless Chromium (Debian's chromium and chromedriver,
+# driven by python3-selenium: tests/view_browser.py): it loads the page, clicks a node, moves
+# a slider, drags the camera, sets an A/B split and checks the canvas pixels, the nodes that
+# ran and the metrics; a bad value and a broken graph file show their errors. The server runs
+# on a copy of graphs/ssdo_realtime.graph at 160x90 (the copy is what the watcher sees edited
+# and where the saved variant goes). Screenshots: $TMP/viewer-*.png (docs/images has copies).
+set -u
+source "$(dirname "$0")/lib.sh" "ssg_test_view_browser"
+
+for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
+    [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages.txt"
+done
+/usr/bin/python3 -c 'import selenium' 2> /dev/null ||
+    fail "python3-selenium is missing: install the packages in tools/debian-packages.txt"
+[ "$fails" -eq 0 ] || finish test_view_browser
+
+# The copy names its scene by absolute path, so it loads from the scratch folder.
+mkdir -p "$TMP/graph" "$TMP/home"
+sed "s|^scene \"\.\./|scene \"$PWD/|" graphs/ssdo_realtime.graph > "$TMP/graph/ssdo_realtime.graph"
+# Chromium keeps its profile and caches under HOME: keep them in the scratch folder.
+export HOME=$TMP/home XDG_CONFIG_HOME=$TMP/home XDG_CACHE_HOME=$TMP/home
+
+"$BIN" view "$TMP/graph/ssdo_realtime.graph" --size 160x90 --port 0 > "$TMP/server.log" 2>&1 &
+server=$!
+trap 'kill "$server" 2> /dev/null' EXIT
+
+# the URL line, once the graph has loaded and run (up to 60 s on busy cores)
+url=
+for _ in $(seq 600); do
+    url=$(grep -o 'http://127\.0\.0\.1:[0-9]*/?token=[0-9a-f]*' "$TMP/server.log" | head -1)
+    [ -n "$url" ] || ! kill -0 "$server" 2> /dev/null && break
+    sleep 0.1
+done
+if [ -z "$url" ]; then
+    fail "ssgraph view printed no URL: $(cat "$TMP/server.log")"
+    finish test_view_browser
+fi
+
+/usr/bin/python3 "$(dirname "$0")/view_browser.py" "$url" "$TMP" "$TMP/graph/ssdo_realtime.graph" ||
+    fail "the page in headless chromium (screenshots in $TMP, server log $TMP/server.log)"
+
+# SIGINT ends the server cleanly
+kill -INT "$server"
+wait "$server"
+rc=$?
+trap - EXIT
+[ "$rc" -eq 0 ] || fail "ssgraph view exited $rc after SIGINT: $(tail -5 "$TMP/server.log")"
+finish test_view_browser
