@@ -23,6 +23,7 @@
 #include "bench.h"
 #include "graph_info.h"
 #include "layers.h"
+#include "view/view.h"
 #include "options.h"
 #include "report.h"
 #include "show.h"
@@ -467,7 +468,8 @@ static int cmd_docs(const char *which)
     return EXIT_USAGE;
 }
 
-enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE };
+enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE |
+                    SSG_CLI_VIEW };
 
 /* A command on its parsed arguments (its usage for --help). */
 static int run_command(enum ssg_cli_command command, int argc, char **argv)
@@ -496,6 +498,7 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_HELP: return cmd_help(&a);
     case SSG_CLI_LAYERS:
     case SSG_CLI_EXTRACT: return cmd_layers(&a, command);
+    case SSG_CLI_VIEW: return ssg_cli_view(&a);
     }
     return EXIT_USAGE;
 }

@@ -67,6 +67,42 @@ SSG_API void ssg_graph_dot(const struct ssg_graph *graph, FILE *stream);
  * is no such node or parameter. */
 SSG_API const char *ssg_node_param_type(const char *node, const char *param);
 
+/* ---- Descriptors of parameters and ports, for a generated interface (ssgraph view) */
+
+/* Parameter k (0 .. param count - 1) of node type `node`, from the table that parses it;
+ * strings are static. */
+struct ssg_param_info {
+    const char *name;           /* "radius" */
+    const char *type;           /* as ssg_node_param_type names it */
+    const char *unit;           /* "scene units", "px", ...; NULL = none */
+    const char *doc;            /* one line */
+    int bounded;                /* 1 = min and max hold (number, vec3 or int-list values) */
+    double min, max;            /* inclusive */
+    const char *const *choices; /* an enum's names, NULL-terminated; NULL otherwise */
+};
+/* SSG_E_UNKNOWN_NODE without such a node type, SSG_E_USAGE with k out of range. */
+SSG_API enum ssg_err ssg_node_param_info(const char *node, int k, struct ssg_param_info *info);
+
+/* Port k of a graph's node `index`: its inputs (declared ports, then extra named inputs),
+ * then its outputs. Strings are static or the graph's, except from. */
+struct ssg_port_info {
+    const char *name;   /* "position" */
+    const char *type;   /* port type ("scalar"; docs/nodes.md); "" when not one type yet
+                           (an input's accepted set, or an output shaped like an input of a
+                           graph that was only parsed) */
+    const char *doc;    /* one line */
+    int output;         /* 1 = an output */
+    int optional;       /* input: may stay unconnected */
+    int channels;       /* an output's channels (0 when not known yet) */
+    int width, height;  /* an output's size on a loaded graph (0 before) */
+    char from[128];     /* input: the producer's "node.port" as written; "" = unconnected */
+};
+/* How many ports node `index` has (0 out of range or for an unknown type). */
+SSG_API int ssg_graph_port_count(const struct ssg_graph *graph, int index);
+/* SSG_E_USAGE with index or k out of range. */
+SSG_API enum ssg_err ssg_graph_port_inspect(const struct ssg_graph *graph, int index, int k,
+                                            struct ssg_port_info *info);
+
 /* ---- Files: read within limits, written whole or not at all (the rules: lang/files.h) */
 
 /* Reads a whole regular file of at most max_bytes into malloc'd memory with a NUL after
