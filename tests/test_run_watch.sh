@@ -34,10 +34,13 @@ wait_for() {
     done
 }
 
-# expect_line PATTERN FILE WHAT: wait_for, or fail showing what the watcher printed.
+# expect_line PATTERN FILE WHAT: wait_for, or fail showing what the watcher printed and
+# end the test (each later step would only wait out its own deadline).
 expect_line() {
-    wait_for "$1" "$2" ||
-        fail "$3: no line /$1/ in $2 within 20 s. stdout: $(cat "$LOG") stderr: $(cat "$ERR")"
+    wait_for "$1" "$2" && return
+    fail "$3: no line /$1/ in $2 within 20 s. stdout: $(cat "$LOG") stderr: $(cat "$ERR")"
+    kill -9 "$PID" 2>/dev/null
+    finish test_run_watch
 }
 
 # stop_watcher: SIGTERM, then its exit status must be 0 (waited for with a deadline).
