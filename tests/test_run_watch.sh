@@ -66,7 +66,7 @@ digest() { sha256sum "$OUT/ssao.exr" 2>/dev/null | cut -d' ' -f1; }
 # edit SED-EXPRESSION FILE: in place, through a new file renamed over it (as editors save).
 edit() { sed "$1" "$2" >"$2.new" && mv "$2.new" "$2"; }
 
-start --size 32x24 --quiet
+start --size 32x24 --quiet --set k.count=8
 expect_line '^watch: run 1 done' "$LOG" "first run"
 first=$(digest)
 [ -n "$first" ] || fail "the first run wrote no $OUT/ssao.exr"
@@ -92,6 +92,10 @@ edit 's/radus=0.9)/radius=0.7)/' "$W/ao.graph"
 expect_line '^watch: run 4 done' "$LOG" "fixed graph"
 fourth=$(digest)
 [ -n "$fourth" ] && [ "$fourth" != "$second" ] || fail "the fixed graph's EXR is unchanged"
+# each reload keeps the command line's overrides: the bytes of a fresh run with them
+"$BIN" run "$W/ao.graph" --threads 2 --out "$TMP/fresh" --size 32x24 --quiet --set k.count=8 ||
+    fail "a fresh run of the fixed graph failed"
+cmp -s "$OUT/ssao.exr" "$TMP/fresh/ssao.exr" || fail "the watcher's EXR differs from a fresh run's"
 
 # the scene file is watched too (an edit in place, same size: the mtime tells)
 sed -i 's/^# /#./' "$W/cornell.scene"
