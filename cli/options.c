@@ -259,6 +259,10 @@ static const struct option options[] = {
      .take = take_float, .field = OF(exposure), .lo = -21, .hi = 21,
      .expects = "stops in (-21, 21)",
      .help = "the PNG's values times 2^STOPS before tone mapping (default 0)"},
+    {.name = "--watch", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(watch),
+     .help = "run, then every 300 ms look whether the graph, its includes, the\n"
+             "scene, lights, models or images changed, and run again when one\n"
+             "did (a failed load prints its errors and waits); Ctrl-C ends (0)"},
     {.name = "--in", .arg = "PORT=FILE[:LAYER]", .commands = SSG_CLI_NODE, .take = take_list,
      .field = OF(inputs), .count = OF(input_count), .hi = SSG_CLI_MAX_INPUTS,
      .help = "bind an image file, or one EXR layer of it, to a port"},

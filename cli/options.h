@@ -84,6 +84,7 @@ struct ssg_cli_args {
     const char *tonemap;             /* run (--show), extract: --tonemap of the PNGs; NULL =
                                         the write node's default (aces) */
     float exposure;                  /* run (--show), extract: --exposure, stops; 0 */
+    int watch;                       /* run: --watch: run again on each change (watch.h) */
 };
 
 /* The command of that name ("run"); 0 when there is none. */

@@ -266,6 +266,50 @@ struct ssg_layer_info {
 SSG_API enum ssg_err ssg_image_layers(const char *path, struct ssg_layer_info *layers, int max,
                               int *count, struct ssg_diags *diags);
 
+/* ---- The files a graph depends on, for file watchers (`ssgraph run --watch`, the
+ * viewer's reload). Added for issue 31; core/graph/api_graph_files.c. ----
+ *
+ * A watcher lists them after each load and reloads when one changes on disk. Listing a
+ * graph that failed to load works too: ssg_graph_parse's graph (even one with errors)
+ * lists the files read so far, so a watcher whose reload failed still knows what to
+ * watch. Thread safety: as reading the graph; the scene and lights files are read again. */
+
+#define SSG_GRAPH_FILE_PATH_MAX 1024 /* bytes of a listed path, with its NUL */
+
+enum ssg_graph_file_kind {
+    SSG_GRAPH_FILE_GRAPH,       /* the top graph file or an included one */
+    SSG_GRAPH_FILE_SCENE,       /* the scene file */
+    SSG_GRAPH_FILE_LIGHTS,      /* the lights file that replaces the scene's lights */
+    SSG_GRAPH_FILE_MODEL,       /* a mesh(...) line's model file */
+    SSG_GRAPH_FILE_TEXTURE,     /* a material's texture */
+    SSG_GRAPH_FILE_ENVIRONMENT, /* the environment's image */
+};
+
+/* One file a graph depends on. */
+struct ssg_graph_file {
+    char path[SSG_GRAPH_FILE_PATH_MAX]; /* as it is opened: relative paths resolved against
+                                           the file that names them ("graphs/../x.scene") */
+    enum ssg_graph_file_kind kind;
+};
+
+/* Fills files[0 .. max-1] with the files graph depends on, each once, in this order: the
+ * graph files (the top one, then each include as it was first read; one that could not be
+ * opened is listed too, so its appearing can be seen), the scene file, the lights file,
+ * then the files the scene and lights files name (models, textures, the environment image;
+ * not those a model file names itself, such as a glTF's buffers). The scene and lights
+ * files are read again for that, whether or not the scene was loaded (a scene that does
+ * not parse adds what its readable statements name). Returns how many there are, which may
+ * exceed max (then only max were written); 0 for a NULL graph. files may be NULL when max
+ * is 0 (to count them). */
+SSG_API int ssg_graph_files(const struct ssg_graph *graph, struct ssg_graph_file *files,
+                            int max);
+/* The same for a scene file and a lights file (NULL or "" = none) without a graph: the
+ * files themselves, then what they name, as above. For a watcher whose graph did not load
+ * but whose scene was given on the command line (ssg_graph_parse knows only the graph's
+ * own). */
+SSG_API int ssg_scene_files(const char *scene, const char *lights,
+                            struct ssg_graph_file *files, int max);
+
 #ifdef __cplusplus
 }
 #endif
