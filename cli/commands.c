@@ -60,6 +60,17 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "consumer's input or layer name). Nothing is validated beyond parsing, so a graph\n"
      "that does not check yet can still be drawn:\n"
      "  ssgraph dot graphs/ssdo.graph | dot -Tsvg > ssdo.svg"},
+    {SSG_CLI_VIEW, "view", "FILE", 1, 1,
+     "look at a graph live in a local web page: any port, parameters, camera",
+     "Loads the graph FILE as a live graph, runs it, and serves a web page on 127.0.0.1\n"
+     "(--port, default a free one), printing its URL with a random token: open it in a\n"
+     "browser on this machine. The page draws the graph (click a node for its\n"
+     "parameters and ports), shows any port's image as floats (exposure, channels,\n"
+     "false colour, the value under the mouse), re-runs only what a changed parameter\n"
+     "affects, orbits the camera with the mouse, splits two ports A/B with their RMSE\n"
+     "and SSIM against a third, and saves the changes as a graph variant beside FILE.\n"
+     "Edits of the graph or its scene on disk reload it. Nothing is written into --out\n"
+     "but what compare nodes report. Ends on Ctrl-C (docs/viewer.md)."},
     {SSG_CLI_LAYERS, "layers", "FILE", 1, 1,
      "an image file's layers: channels, size, min/max/mean",
      "Lists the layers of the image FILE (an EXR's named layers, its unnamed channels and\n"

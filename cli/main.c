@@ -23,11 +23,13 @@
 #include "bench.h"
 #include "graph_info.h"
 #include "layers.h"
+#include "view/view.h"
 #include "options.h"
 #include "report.h"
 #include "show.h"
 #include "ssgraph.h"
 #include "version.h"
+#include "watch.h"
 
 enum { EXIT_INVALID = 1, EXIT_USAGE = SSG_CLI_EXIT_USAGE };
 
@@ -51,9 +53,10 @@ static enum ssg_err show_run(const struct ssg_cli_args *a, const struct ssg_run_
 /* One graph run with the command line's options into out_dir (eye: 0, or -1/+1 for the
    left/right eye of --stereo), printed; *frame_ms (if not NULL) its frame time. The
    progress bar is drawn only on a terminal (stderr); the `wrote` lines go to stdout; with
-   --quiet neither. */
+   --quiet neither. With --watch, `watch` is told of each load (watch.h). */
 static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char *out_dir,
-                             double *frame_ms, struct ssg_diags *d)
+                             double *frame_ms, struct ssg_cli_watch *watch,
+                             struct ssg_diags *d)
 {
     struct ssg_overrides ov = a->ov;
     ov.eye_offset = eye * 0.5f * a->ipd;
@@ -68,6 +71,8 @@ static enum ssg_err run_once(const struct ssg_cli_args *a, float eye, const char
     if (a->show && !ssg_cli_show_parse(a->show, &show))
         ssg_cli_show_request(&show, &ov, &ro);
     enum ssg_err e = ssg_graph_load(a->files[0], &ov, &g, d);
+    if (watch) /* what to watch next: this graph's files, or a failed one's (NULL) */
+        ssg_cli_watch_load(watch, g, &ov);
     if (!e) {
         if (a->verbose && !a->quiet)
             ssg_cli_print_resolved(g, stdout);
@@ -108,7 +113,7 @@ static int cmd_stereo(struct ssg_cli_args a)
         if (!a.quiet)
             printf("%s eye (camera moved %+g along its right axis):\n", names[i],
                    (i ? 0.5 : -0.5) * a.ipd);
-        e = run_once(&a, i ? 1.0f : -1.0f, dir[i], &ms[i], &d);
+        e = run_once(&a, i ? 1.0f : -1.0f, dir[i], &ms[i], NULL, &d);
     }
     if (e)
         ssg_stereo_discard(dirs, 2);
@@ -179,6 +184,13 @@ static int output_of_run(struct ssg_cli_args *a)
     return 0;
 }
 
+/* One run of --watch (watch.h). */
+static enum ssg_err watched_run(const struct ssg_cli_args *a, struct ssg_cli_watch *w,
+                                struct ssg_diags *d)
+{
+    return run_once(a, 0.0f, a->out_dir, NULL, w, d);
+}
+
 static int cmd_run(struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
@@ -188,6 +200,8 @@ static int cmd_run(struct ssg_cli_args *a)
         rc = ssg_cli_usage_error("%s", "--show writes one view's ports: not with --stereo");
     if (!rc && a->show)
         rc = ssg_cli_show_parse(a->show, &show);
+    if (!rc && a->watch && a->stereo)
+        rc = ssg_cli_usage_error("%s", "--watch runs one view: not with --stereo");
     if (!rc && (a->tonemap || a->exposure != 0.0f) && !a->show)
         rc = ssg_cli_usage_error("%s", "--tonemap and --exposure are the PNGs' of --show: "
                                  "give --show NODE.PORT");
@@ -195,7 +209,9 @@ static int cmd_run(struct ssg_cli_args *a)
         return rc;
     if (a->stereo)
         return cmd_stereo(*a);
-    return conclude(&d, run_once(a, 0.0f, a->out_dir, NULL, &d));
+    if (a->watch)
+        return ssg_cli_run_watch(a, watched_run);
+    return conclude(&d, run_once(a, 0.0f, a->out_dir, NULL, NULL, &d));
 }
 
 /* `--in port=file[:layer]` into a binding; the image is owned by the caller. The spec's
@@ -467,7 +483,8 @@ static int cmd_docs(const char *which)
     return EXIT_USAGE;
 }
 
-enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE };
+enum { TAKES_SETS = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE |
+                    SSG_CLI_VIEW };
 
 /* A command on its parsed arguments (its usage for --help). */
 static int run_command(enum ssg_cli_command command, int argc, char **argv)
@@ -496,6 +513,7 @@ static int run_command(enum ssg_cli_command command, int argc, char **argv)
     case SSG_CLI_HELP: return cmd_help(&a);
     case SSG_CLI_LAYERS:
     case SSG_CLI_EXTRACT: return cmd_layers(&a, command);
+    case SSG_CLI_VIEW: return ssg_cli_view(&a);
     }
     return EXIT_USAGE;
 }

@@ -164,7 +164,8 @@ static int take_tonemap(struct ssg_cli_args *a, const struct option *opt, const 
 }
 
 #define OF(member) offsetof(struct ssg_cli_args, member)
-#define ALL_GRAPH (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE)
+#define ALL_GRAPH \
+    (SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW)
 
 /* In the order of the usage text, which starts a heading where the commands change. */
 static const struct option options[] = {
@@ -183,30 +184,31 @@ static const struct option options[] = {
              "OSMesa; nodes without GL stay on the CPU); default: the graph's\n"
              "`backend` line and its nodes' backend= arguments, else cpu"},
     {.name = "--scene", .arg = "FILE",
-     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_scene, .field = OF(scenes), .count = OF(scene_count),
      .hi = SSG_TUNE_MAX_SCENES,
      .help = "use this scene instead of the graph's (tune: repeatable, the\n"
              "error is the mean over them; bench: two or more are a sweep,\n"
              "`scene`, the outermost)"},
     {.name = "--lights", .arg = "FILE",
-     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_text, .field = OF(ov.lights),
      .help = "replace the scene's lights and environment with those of FILE, a\n"
              "scene file of point_light, directional_light and environment only\n"
              "(examples/lights/: sun, sky, courtyard); default: the graph's\n"
              "`lights` line, else the scene's own"},
     {.name = "--guard", .arg = "G",
-     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_int, .field = OF(guard), .lo = 0, .hi = SSG_GUARD_MAX,
      .help = "render G pixels of guard band around the frame (instead of the\n"
              "graph's `guard` line): screen-space AO sees occluders just outside\n"
              "the frame; outputs and metrics stay frame-sized"},
     {.name = "--out", .arg = "DIR",
-     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE,
+     .commands = SSG_CLI_RUN | SSG_CLI_NODE | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_text, .field = OF(out_dir),
      .help = "output directory (default out)"},
-    {.name = "--threads", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH | SSG_CLI_TUNE,
+    {.name = "--threads", .arg = "N",
+     .commands = SSG_CLI_RUN | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_int, .field = OF(threads), .lo = 1, .hi = 1024,
      .help = "worker threads (default: all cores); never changes the result"},
     {.name = "--frames", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
@@ -257,6 +259,10 @@ static const struct option options[] = {
      .take = take_float, .field = OF(exposure), .lo = -21, .hi = 21,
      .expects = "stops in (-21, 21)",
      .help = "the PNG's values times 2^STOPS before tone mapping (default 0)"},
+    {.name = "--watch", .commands = SSG_CLI_RUN, .take = take_flag, .field = OF(watch),
+     .help = "run, then every 300 ms look whether the graph, its includes, the\n"
+             "scene, lights, models or images changed, and run again when one\n"
+             "did (a failed load prints its errors and waits); Ctrl-C ends (0)"},
     {.name = "--in", .arg = "PORT=FILE[:LAYER]", .commands = SSG_CLI_NODE, .take = take_list,
      .field = OF(inputs), .count = OF(input_count), .hi = SSG_CLI_MAX_INPUTS,
      .help = "bind an image file, or one EXR layer of it, to a port"},
@@ -307,6 +313,9 @@ static const struct option options[] = {
      .help = "the signal's peak for the PSNR (default 1)"},
     {.name = "--json", .commands = SSG_CLI_COMPARE, .take = take_flag, .field = OF(json),
      .help = "the metrics as one line of JSON"},
+    {.name = "--port", .arg = "N", .commands = SSG_CLI_VIEW, .take = take_int,
+     .field = OF(port), .lo = 0, .hi = 65535,
+     .help = "the port to listen on, on 127.0.0.1 only (default 0: a free one)"},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
 

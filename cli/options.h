@@ -29,6 +29,7 @@ enum ssg_cli_command {
     SSG_CLI_HELP = 1u << 10,
     SSG_CLI_LAYERS = 1u << 11,
     SSG_CLI_EXTRACT = 1u << 12,
+    SSG_CLI_VIEW = 1u << 13,
 };
 
 enum { SSG_CLI_MAX_FILES = 1024, SSG_CLI_MAX_SETS = 256, SSG_CLI_MAX_INPUTS = 24, SSG_CLI_EXIT_USAGE = 2,
@@ -78,10 +79,12 @@ struct ssg_cli_args {
     const char *mask;                /* compare: --mask FILE[:LAYER]; bench, tune: NODE.PORT */
     const char *peak;                /* compare: --peak, checked positive; NULL = 1 */
     int json;                        /* compare: --json */
+    int port;                        /* view: --port; 0 = a free one */
     const char *show;                /* run: --show NODE.PORT[,...], as written */
     const char *tonemap;             /* run (--show), extract: --tonemap of the PNGs; NULL =
                                         the write node's default (aces) */
     float exposure;                  /* run (--show), extract: --exposure, stops; 0 */
+    int watch;                       /* run: --watch: run again on each change (watch.h) */
 };
 
 /* The command of that name ("run"); 0 when there is none. */

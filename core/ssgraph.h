@@ -247,6 +247,10 @@ struct ssg_run_options {
                                     a new CPU image of the last frame's pixels, owned by
                                     the caller (ssg_image_destroy); all NULL on failure;
                                     NULL = not wanted */
+    int no_files;                /* 1 = the sinks that write files (write) do not run:
+                                    a live view that looks at the images (ssgraph view)
+                                    rather than writing them; metrics sinks (compare) still
+                                    do */
 };
 
 /* Command-line style overrides applied after the graph file is read. */

@@ -67,6 +67,42 @@ SSG_API void ssg_graph_dot(const struct ssg_graph *graph, FILE *stream);
  * is no such node or parameter. */
 SSG_API const char *ssg_node_param_type(const char *node, const char *param);
 
+/* ---- Descriptors of parameters and ports, for a generated interface (ssgraph view) */
+
+/* Parameter k (0 .. param count - 1) of node type `node`, from the table that parses it;
+ * strings are static. */
+struct ssg_param_info {
+    const char *name;           /* "radius" */
+    const char *type;           /* as ssg_node_param_type names it */
+    const char *unit;           /* "scene units", "px", ...; NULL = none */
+    const char *doc;            /* one line */
+    int bounded;                /* 1 = min and max hold (number, vec3 or int-list values) */
+    double min, max;            /* inclusive */
+    const char *const *choices; /* an enum's names, NULL-terminated; NULL otherwise */
+};
+/* SSG_E_UNKNOWN_NODE without such a node type, SSG_E_USAGE with k out of range. */
+SSG_API enum ssg_err ssg_node_param_info(const char *node, int k, struct ssg_param_info *info);
+
+/* Port k of a graph's node `index`: its inputs (declared ports, then extra named inputs),
+ * then its outputs. Strings are static or the graph's, except from. */
+struct ssg_port_info {
+    const char *name;   /* "position" */
+    const char *type;   /* port type ("scalar"; docs/nodes.md); "" when not one type yet
+                           (an input's accepted set, or an output shaped like an input of a
+                           graph that was only parsed) */
+    const char *doc;    /* one line */
+    int output;         /* 1 = an output */
+    int optional;       /* input: may stay unconnected */
+    int channels;       /* an output's channels (0 when not known yet) */
+    int width, height;  /* an output's size on a loaded graph (0 before) */
+    char from[128];     /* input: the producer's "node.port" as written; "" = unconnected */
+};
+/* How many ports node `index` has (0 out of range or for an unknown type). */
+SSG_API int ssg_graph_port_count(const struct ssg_graph *graph, int index);
+/* SSG_E_USAGE with index or k out of range. */
+SSG_API enum ssg_err ssg_graph_port_inspect(const struct ssg_graph *graph, int index, int k,
+                                            struct ssg_port_info *info);
+
 /* ---- Files: read within limits, written whole or not at all (the rules: lang/files.h) */
 
 /* Reads a whole regular file of at most max_bytes into malloc'd memory with a NUL after
@@ -229,6 +265,50 @@ struct ssg_layer_info {
  * entries, *count = how many the file has. Errors as ssg_image_read's. */
 SSG_API enum ssg_err ssg_image_layers(const char *path, struct ssg_layer_info *layers, int max,
                               int *count, struct ssg_diags *diags);
+
+/* ---- The files a graph depends on, for file watchers (`ssgraph run --watch`, the
+ * viewer's reload). Added for issue 31; core/graph/api_graph_files.c. ----
+ *
+ * A watcher lists them after each load and reloads when one changes on disk. Listing a
+ * graph that failed to load works too: ssg_graph_parse's graph (even one with errors)
+ * lists the files read so far, so a watcher whose reload failed still knows what to
+ * watch. Thread safety: as reading the graph; the scene and lights files are read again. */
+
+#define SSG_GRAPH_FILE_PATH_MAX 1024 /* bytes of a listed path, with its NUL */
+
+enum ssg_graph_file_kind {
+    SSG_GRAPH_FILE_GRAPH,       /* the top graph file or an included one */
+    SSG_GRAPH_FILE_SCENE,       /* the scene file */
+    SSG_GRAPH_FILE_LIGHTS,      /* the lights file that replaces the scene's lights */
+    SSG_GRAPH_FILE_MODEL,       /* a mesh(...) line's model file */
+    SSG_GRAPH_FILE_TEXTURE,     /* a material's texture */
+    SSG_GRAPH_FILE_ENVIRONMENT, /* the environment's image */
+};
+
+/* One file a graph depends on. */
+struct ssg_graph_file {
+    char path[SSG_GRAPH_FILE_PATH_MAX]; /* as it is opened: relative paths resolved against
+                                           the file that names them ("graphs/../x.scene") */
+    enum ssg_graph_file_kind kind;
+};
+
+/* Fills files[0 .. max-1] with the files graph depends on, each once, in this order: the
+ * graph files (the top one, then each include as it was first read; one that could not be
+ * opened is listed too, so its appearing can be seen), the scene file, the lights file,
+ * then the files the scene and lights files name (models, textures, the environment image;
+ * not those a model file names itself, such as a glTF's buffers). The scene and lights
+ * files are read again for that, whether or not the scene was loaded (a scene that does
+ * not parse adds what its readable statements name). Returns how many there are, which may
+ * exceed max (then only max were written); 0 for a NULL graph. files may be NULL when max
+ * is 0 (to count them). */
+SSG_API int ssg_graph_files(const struct ssg_graph *graph, struct ssg_graph_file *files,
+                            int max);
+/* The same for a scene file and a lights file (NULL or "" = none) without a graph: the
+ * files themselves, then what they name, as above. For a watcher whose graph did not load
+ * but whose scene was given on the command line (ssg_graph_parse knows only the graph's
+ * own). */
+SSG_API int ssg_scene_files(const char *scene, const char *lights,
+                            struct ssg_graph_file *files, int max);
 
 #ifdef __cplusplus
 }

@@ -17,7 +17,7 @@ expect_exit 2 "option '--seed' needs a value" "$BIN" check graphs/ssao.graph --s
 # alike, with only its own options ---
 "$BIN" help > "$TMP/help.txt" || fail "help"
 cmds=$(sed -n '/^commands:/,/^$/p' "$TMP/help.txt" | grep -oE '^  [a-z]+' | tr -d ' ')
-[ "$(echo $cmds)" = "run check node bench compare tune dot layers extract nodes describe docs help" ] \
+[ "$(echo $cmds)" = "run check node bench compare tune dot view layers extract nodes describe docs help" ] \
     || fail "help lists: $(echo $cmds)"
 for cmd in $cmds; do
     "$BIN" help "$cmd" > "$TMP/h_$cmd.txt" || fail "help $cmd"

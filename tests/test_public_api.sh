@@ -17,13 +17,18 @@ SO="$BUILD/libssgraph.so"
 # Prints "FILE:LINE: #include ..." for each include of a header in quotes that is neither
 # ssgraph.h nor a file of the same folder.
 foreign_includes() {
-    local dir=$1 f line name
-    for f in "$dir"/*; do
-        [ -f "$f" ] || continue
+    local dir=$1 f line name target root
+    root=$(realpath "$dir")
+    find "$dir" -type f | sort | while IFS= read -r f; do
         grep -n '^[[:space:]]*#[[:space:]]*include[[:space:]]*"' "$f" | while IFS= read -r line; do
             name=$(printf '%s\n' "$line" | sed -E 's/^[0-9]+:[^"]*"([^"]*)".*/\1/')
             [ "$name" = ssgraph.h ] && continue
-            case "$name" in */*) ;; *) [ -f "$dir/$name" ] && continue ;; esac
+            # cli's own headers, beside the file or in a folder of cli/ (view/view.h,
+            # ../options.h), never one that leads out of cli/
+            target=$(realpath -m "$(dirname "$f")/$name")
+            [ -f "$target" ] && case "$target" in "$root"/*) continue ;; esac
+            target=$(realpath -m "$root/$name")
+            [ -f "$target" ] && case "$target" in "$root"/*) continue ;; esac
             echo "$f:$line"
         done
     done
@@ -80,9 +85,11 @@ printf '#include <stdio.h>\n#include "ssgraph.h"\n#include "own.h"\n' >"$TMP/cli
 : >"$TMP/cli/own.h"
 printf '#include "own.h"\n #  include "lang/files.h"\n' >"$TMP/cli/bad.c"
 printf '#include "missing.h"\n' >"$TMP/cli/bad2.c"
+mkdir -p "$TMP/cli/sub" && : >"$TMP/outside.h"
+printf '#include "../own.h"\n#include "../../outside.h"\n' >"$TMP/cli/sub/nested.c"
 planted=$(foreign_includes "$TMP/cli")
-[ "$(echo "$planted" | grep -c .)" -eq 2 ] && echo "$planted" | grep -q 'bad.c:2:' &&
-    echo "$planted" | grep -q 'bad2.c:1:' ||
+[ "$(echo "$planted" | grep -c .)" -eq 3 ] && echo "$planted" | grep -q 'bad.c:2:' &&
+    echo "$planted" | grep -q 'bad2.c:1:' && echo "$planted" | grep -q 'nested.c:2:' ||
     fail "the include check missed or over-reported planted includes: $planted"
 printf 'SSG_API int ssg_a(void);\nSSG_API struct ssg_image *ssg_b(int x,\n    int y);\n%s\n%s\n' \
     'enum ssg_err ssg_c(int x);' 'static inline int ssg_d(void) { return 0; }' >"$TMP/h.h"

@@ -78,6 +78,7 @@ struct ssg_graph {
     int set_count;
     struct ssg_live *live;     /* the run state kept between runs (ssg_graph_keep), NULL =
                                   every run starts afresh */
+    struct ssg_file_list *files; /* graph files read (graph_files.h), NULL = none yet */
 };
 
 /* What a live graph keeps from one ssg_graph_run to the next (graph_live.c): per run

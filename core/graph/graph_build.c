@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "graph/graph.h"
+#include "graph/graph_files.h"
 
 /* What one graph may ask of the builder, each refused with a message: includes nest at
    most MAX_INCLUDE_DEPTH deep; at most MAX_FILES_READ file reads in all (the same file
@@ -412,6 +412,7 @@ static void read_file(struct builder *b, const char *path, struct ssg_loc from)
     b->files_read++;
     if (!within_limits(b, from, 0))
         return;
+    fail(b, ssg_graph_file_note(b->g, path)); /* for file watchers (api_graph_files.c) */
     struct ssg_file file;
     enum ssg_err e = ssg_parse_file(&b->g->arena, path, from, &file, b->diags);
     if (e)
@@ -589,8 +590,7 @@ enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
     g->width = 1280;
     g->height = 720;
     g->seed = 1;
-    struct ssg_loc none = {0};
-    read_file(b, path, none);
+    read_file(b, path, (struct ssg_loc){0});
     for (int i = 0; i < g->count; i++)
         bind_call(b, &g->nodes[i]);
     for (int i = 0; i < b->set_count; i++)

@@ -263,8 +263,9 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     enum ssg_err e = SSG_OK;
     double sum = 0;
     for (int p = 0; p < r->g->order_count && !e; p++) {
-        int sink = r->g->nodes[r->g->order[p]].desc->is_sink;
-        if (can_skip(r, p, frames))
+        const struct ssg_node_desc *desc = r->g->nodes[r->g->order[p]].desc;
+        int sink = desc->is_sink;
+        if (can_skip(r, p, frames) || (r->opt->no_files && desc->output_files))
             continue;
         if (!sink || frame == frames - 1)
             e = run_node(r, p, frame);

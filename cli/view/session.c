@@ -1,0 +1,313 @@
+/* session.c - the state of `ssgraph view` between requests (session.h). */
+#define _DEFAULT_SOURCE /* open_memstream */
+#include "session.h"
+
+#include "../watch.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { KEEP_BYTES = 1u << 30 }; /* images a graph keeps between runs, at most */
+
+char *view_diags_text(const struct ssg_diags *diags, enum ssg_err e)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f)
+        return NULL;
+    ssg_diags_print(diags, f);
+    if (e && diags->count == 0)
+        fprintf(f, "error: %s\n", ssg_err_text(e));
+    fclose(f);
+    return text;
+}
+
+enum ssg_err view_fail(struct ssg_diags *d, enum ssg_err code, const char *fmt, ...)
+{
+    d->total++;
+    if (d->count == SSG_DIAGS_MAX)
+        return code;
+    struct ssg_diag *item = &d->items[d->count++];
+    *item = (struct ssg_diag){.code = code};
+    snprintf(item->file, sizeof item->file, "<view>");
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(item->message, sizeof item->message, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static void set_error(struct view_session *s, const struct ssg_diags *d, enum ssg_err e)
+{
+    free(s->error);
+    s->error = e ? view_diags_text(d, e) : NULL;
+}
+
+/* Runs graph g (the full or the preview one) into the session's statistics. */
+static enum ssg_err run_graph(struct view_session *s, struct ssg_graph *g, int preview,
+                              struct ssg_diags *d)
+{
+    ssg_run_stats_free(&s->stats);
+    struct ssg_run_options ro = {.out_dir = s->args->out_dir, .threads = s->args->threads,
+                                 .stats = &s->stats, .no_files = 1};
+    enum ssg_err e = ssg_graph_run(g, &ro, d);
+    s->last_preview = preview;
+    s->generation++;
+    set_error(s, d, e);
+    return e;
+}
+
+/* The frame size a graph loaded with these overrides has. */
+static void frame_size(const struct ssg_graph *g, int *w, int *h)
+{
+    struct ssg_frame frame;
+    ssg_graph_frame(g, &frame);
+    *w = frame.width;
+    *h = frame.height;
+}
+
+/* Loads the graph at width x height (0: its own) with the session's changes and camera,
+ * kept between runs. */
+static enum ssg_err load(struct view_session *s, int width, int height, struct ssg_graph **out,
+                         struct ssg_diags *d)
+{
+    struct ssg_overrides ov = s->args->ov;
+    if (width) {
+        ov.width = width;
+        ov.height = height;
+    }
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(s->args->files[0], &ov, &g, d);
+    if (!e)
+        e = ssg_graph_keep(g, KEEP_BYTES, d);
+    for (int i = 0; !e && i < s->set_count; i++)
+        e = ssg_graph_set(g, s->sets[i].key, s->sets[i].value, d);
+    if (!e && s->camera_changed)
+        e = ssg_graph_set_view(g, &s->camera, d);
+    if (e)
+        ssg_graph_destroy(&g);
+    *out = g;
+    return e;
+}
+
+/* Takes the freshly loaded graph g as the session's full graph. */
+static void adopt(struct view_session *s, struct ssg_graph *g)
+{
+    struct ssg_diags ignored = {0};
+    ssg_graph_destroy(&s->g);
+    ssg_graph_destroy(&s->preview); /* loaded again on the next drag */
+    s->g = g;
+    frame_size(g, &s->width, &s->height);
+    s->preview_width = s->width / 2 > 16 ? s->width / 2 : s->width;
+    s->preview_height = s->width / 2 > 16 ? s->height / 2 : s->height;
+    if (s->preview_height < 1)
+        s->preview_height = 1;
+    if (!s->camera_changed)
+        s->has_camera = ssg_graph_view(g, &s->camera, &ignored) == SSG_OK;
+}
+
+static void watch_files(struct view_session *s, const struct ssg_graph *g);
+
+enum ssg_err view_session_open(struct view_session *s, const struct ssg_cli_args *args)
+{
+    *s = (struct view_session){.args = args};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g;
+    /* The watcher snapshots the files before the load reads them: an edit during the
+       load is seen by the first poll. */
+    s->watch = ssg_cli_watch_new(args->files[0]);
+    enum ssg_err e = load(s, 0, 0, &g, &d);
+    if (!e)
+        watch_files(s, g);
+    if (!e) {
+        adopt(s, g);
+        e = run_graph(s, s->g, 0, &d);
+    }
+    if (e) {
+        ssg_diags_print(&d, stderr);
+        view_session_close(s);
+    }
+    return e;
+}
+
+void view_session_close(struct view_session *s)
+{
+    ssg_graph_destroy(&s->g);
+    ssg_graph_destroy(&s->preview);
+    ssg_run_stats_free(&s->stats);
+    ssg_cli_watch_free(&s->watch);
+    free(s->error);
+    s->error = NULL;
+}
+
+/* Records key=value as this session's change of key (replacing an earlier one). */
+static enum ssg_err remember(struct view_session *s, const char *key, const char *value,
+                             struct ssg_diags *d)
+{
+    int i = 0;
+    while (i < s->set_count && strcmp(s->sets[i].key, key))
+        i++;
+    if (i == VIEW_MAX_SETS)
+        return view_fail(d, SSG_E_USAGE, "more than %d parameters changed in one session",
+                         VIEW_MAX_SETS);
+    snprintf(s->sets[i].key, sizeof s->sets[i].key, "%s", key);
+    snprintf(s->sets[i].value, sizeof s->sets[i].value, "%s", value);
+    if (i == s->set_count)
+        s->set_count++;
+    return SSG_OK;
+}
+
+enum ssg_err view_session_set(struct view_session *s, const char *assignment,
+                              struct ssg_diags *d)
+{
+    const char *eq = strchr(assignment, '=');
+    char key[VIEW_KEY_MAX];
+    if (!eq || eq == assignment || (size_t)(eq - assignment) >= sizeof key ||
+        strlen(eq + 1) >= VIEW_VALUE_MAX)
+        return view_fail(d, SSG_E_USAGE, "expected NODE.PARAM=VALUE (a key under %d bytes, "
+                         "a value under %d), got '%.200s'", VIEW_KEY_MAX, VIEW_VALUE_MAX,
+                         assignment);
+    snprintf(key, sizeof key, "%.*s", (int)(eq - assignment), assignment);
+    const char *value = eq + 1;
+    enum ssg_err e = ssg_graph_set(s->g, key, value, d);
+    if (!e && s->preview)
+        e = ssg_graph_set(s->preview, key, value, d); /* the same checks: it passes */
+    if (!e)
+        e = remember(s, key, value, d);
+    return e ? e : run_graph(s, s->g, 0, d);
+}
+
+enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *camera,
+                                 int preview, struct ssg_diags *d)
+{
+    enum ssg_err e = ssg_graph_set_view(s->g, camera, d);
+    if (e)
+        return e;
+    s->camera = *camera;
+    s->camera_changed = 1;
+    if (preview && !s->preview)
+        e = load(s, s->preview_width, s->preview_height, &s->preview, d);
+    else if (s->preview)
+        e = ssg_graph_set_view(s->preview, camera, d);
+    if (e)
+        return e;
+    return run_graph(s, preview ? s->preview : s->g, preview, d);
+}
+
+enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,
+                                struct ssg_image **out, struct ssg_diags *d)
+{
+    struct ssg_graph *g = preview && s->preview ? s->preview : s->g;
+    struct ssg_image *img = NULL, *copy = NULL;
+    *out = NULL;
+    enum ssg_err e = ssg_graph_output(g, port, &img, d);
+    if (e)
+        return e;
+    struct ssg_frame frame;
+    ssg_graph_frame(g, &frame);
+    const struct ssg_image *framed = ssg_image_framed(&frame, img, &copy);
+    if (!framed) {
+        ssg_image_destroy(&img);
+        return SSG_E_NOMEM;
+    }
+    if (copy) {
+        ssg_image_destroy(&img);
+        img = copy;
+    }
+    *out = img;
+    return SSG_OK;
+}
+
+/* What a saved variant holds (view_session_save). */
+struct variant {
+    const struct view_session *s;
+    const char *include; /* the graph's file name, beside the variant */
+};
+
+static void write_set(FILE *f, const char *assignment)
+{
+    const char *eq = strchr(assignment, '=');
+    if (eq)
+        fprintf(f, "set %.*s = %s\n", (int)(eq - assignment), assignment, eq + 1);
+}
+
+static void fill_variant(FILE *f, const void *user)
+{
+    const struct variant *v = user;
+    const struct view_session *s = v->s;
+    fprintf(f, "# A variant of %s saved by `ssgraph view`: the graph, then the parameters\n"
+               "# changed on the command line and in the page.\n", v->include);
+    fprintf(f, "include \"%s\"\n", v->include);
+    for (int i = 0; i < s->args->ov.set_count; i++)
+        write_set(f, s->args->ov.sets[i]);
+    for (int i = 0; i < s->set_count; i++)
+        fprintf(f, "set %s = %s\n", s->sets[i].key, s->sets[i].value);
+    if (s->camera_changed) {
+        const struct ssg_view *c = &s->camera;
+        fprintf(f, "# The page's camera (a scene file's camera line takes it):\n"
+                   "# camera(position=[%g, %g, %g], target=[%g, %g, %g], up=[%g, %g, %g], "
+                   "fov=%g)\n", c->position[0], c->position[1], c->position[2],
+                c->target[0], c->target[1], c->target[2], c->up[0], c->up[1], c->up[2],
+                c->fov_y);
+    }
+}
+
+static int valid_name(const char *name)
+{
+    size_t len = strlen(name);
+    if (len == 0 || len > 64)
+        return 0;
+    return strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
+           len;
+}
+
+enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
+                               size_t len, struct ssg_diags *d)
+{
+    if (!valid_name(name))
+        return view_fail(d, SSG_E_USAGE, "a variant's name is 1 to 64 letters, digits, '_' "
+                         "or '-', got '%.80s'", name);
+    const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
+    int dir = slash ? (int)(slash - graph + 1) : 0;
+    if ((size_t)snprintf(path, len, "%.*s%s.graph", dir, graph, name) >= len)
+        return view_fail(d, SSG_E_USAGE, "the variant's path is too long");
+    FILE *exists = fopen(path, "r");
+    if (exists) {
+        fclose(exists);
+        return view_fail(d, SSG_E_IO, "%s exists already: choose another name", path);
+    }
+    struct variant v = {.s = s, .include = graph + dir};
+    return ssg_write_text_file(path, "graph variant", fill_variant, &v, d);
+}
+
+/* The files the graph reads, watched (watch.h); after a load, or a failed one (g NULL). */
+static void watch_files(struct view_session *s, const struct ssg_graph *g)
+{
+    if (s->watch && ssg_cli_watch_load(s->watch, g, &s->args->ov))
+        fprintf(stderr, "ssgraph: view: out of memory: the file watcher keeps its old files\n");
+}
+
+int view_session_poll(struct view_session *s)
+{
+    const char *file = s->watch ? ssg_cli_watch_changed(s->watch) : NULL;
+    if (!file)
+        return 0;
+    printf("view: %s changed: reloading\n", file);
+    fflush(stdout);
+    struct ssg_diags d = {0};
+    struct ssg_graph *g;
+    enum ssg_err e = load(s, 0, 0, &g, &d);
+    if (!e) {
+        adopt(s, g);
+        e = run_graph(s, s->g, 0, &d);
+    } else {
+        s->generation++;
+        set_error(s, &d, e);
+    }
+    watch_files(s, e ? NULL : s->g);
+    if (e)
+        ssg_diags_print(&d, stderr);
+    return 1;
+}

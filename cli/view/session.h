@@ -1,0 +1,74 @@
+/* session.h - what `ssgraph view` holds between requests (session.c): the live graph at
+ * full size, a second one at preview size for camera drags (loaded on the first drag), the
+ * parameter changes made in this session (re-applied after a reload, written by "save as
+ * variant"), the camera, the last run's statistics and error, and a generation number
+ * that every run and reload raises so that a page knows when to fetch again.
+ * Not thread-safe: the server calls it from one thread at a time (server.c holds a lock). */
+#ifndef SSG_CLI_VIEW_SESSION_H
+#define SSG_CLI_VIEW_SESSION_H
+
+#include <stdio.h>
+
+#include "../options.h"
+#include "ssgraph.h"
+
+struct ssg_cli_watch;
+
+enum { VIEW_MAX_SETS = 256, VIEW_KEY_MAX = 128, VIEW_VALUE_MAX = 1024 };
+
+struct view_set {
+    char key[VIEW_KEY_MAX];     /* "ao.radius" */
+    char value[VIEW_VALUE_MAX]; /* as a graph file writes it ("0.3", "\"name\"") */
+};
+
+struct view_session {
+    const struct ssg_cli_args *args; /* the command line: graph, overrides, --out */
+    struct ssg_graph *g;             /* the last graph that loaded, kept (live) */
+    struct ssg_graph *preview;       /* the same at preview size; NULL until a drag */
+    int width, height;               /* the full frame (without guard) */
+    int preview_width, preview_height;
+    struct view_set sets[VIEW_MAX_SETS]; /* this session's changes, one per key, in order */
+    int set_count;
+    int has_camera, camera_changed;  /* the scene has a camera; the page moved it */
+    struct ssg_view camera;          /* the current one */
+    struct ssg_run_stats stats;      /* the last run's */
+    int last_preview;                /* 1 = the last run was the preview graph's */
+    unsigned generation;             /* raised by every run and reload */
+    char *error;                     /* the last failure's diagnostics as printed; NULL */
+    struct ssg_cli_watch *watch;     /* the graph's files (watch.h); NULL = none */
+};
+
+/* Loads the graph of args as a live graph and runs it once; on failure the diagnostics are
+ * printed to stderr and SSG_E_* is returned (nothing to serve). */
+enum ssg_err view_session_open(struct view_session *s, const struct ssg_cli_args *args);
+void view_session_close(struct view_session *s);
+
+/* Applies "node.param=value" to the graphs and runs the full one. A refused value leaves
+ * everything as it was and puts the reason into diags. */
+enum ssg_err view_session_set(struct view_session *s, const char *assignment,
+                              struct ssg_diags *diags);
+/* A new camera for both graphs; runs the preview graph (preview = 1, loading it on the
+ * first call) or the full one. */
+enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *camera,
+                                 int preview, struct ssg_diags *diags);
+/* The latest image of "node.port" (of the preview graph with preview = 1) without its
+ * guard band, as a new image the caller destroys. */
+enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,
+                                struct ssg_image **out, struct ssg_diags *diags);
+/* 1 when the watched files changed since the last load; reloads (the session's sets and
+ * camera applied again) and runs then: on failure s->error says why and the last good
+ * graph stays. 0 when nothing changed. */
+int view_session_poll(struct view_session *s);
+/* Writes NAME.graph beside the graph file: include + this session's set lines; the path
+ * written into path. SSG_E_IO when it exists or cannot be written (diags say which). */
+enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
+                               size_t len, struct ssg_diags *diags);
+
+/* Adds an error without a file position (file "<view>") to d; returns code. */
+enum ssg_err view_fail(struct ssg_diags *d, enum ssg_err code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* The diagnostics as `ssgraph run` prints them, as a new string (NULL on out of memory). */
+char *view_diags_text(const struct ssg_diags *diags, enum ssg_err e);
+
+#endif
