@@ -77,7 +77,7 @@ def step_load(drv):
     drv.get(URL)
     wait_for(drv, "the diagram", lambda d: d.find_elements(By.CSS_SELECTOR, "#diagram g.node"))
     wait_for(drv, "the first image", lambda d: d.execute_script(CANVAS_HASH)[0] > 16)
-    if not text(drv, "hdr-graph").endswith("ssdo_realtime.graph"):
+    if text(drv, "hdr-graph") != "ssdo_realtime.graph":
         fail(f"header graph is '{text(drv, 'hdr-graph')}'")
     if text(drv, "hdr-size") != "160x90":
         fail(f"header size is '{text(drv, 'hdr-size')}'")
@@ -92,7 +92,9 @@ def step_click_node(drv):
         fail("no node 'do' in the diagram")
         return
     before = drv.execute_script(CANVAS_HASH)
-    # the node's label text is what a user clicks
+    # the diagram enlarged, and the node's label clicked, as a user would
+    drv.find_element(By.ID, "diagram-expand").click()
+    shot(drv, "diagram")
     target[0].find_element(By.TAG_NAME, "text").click()
     wait_for(drv, "the panel of node do", lambda d: text(d, "node-name") == "do")
     if not drv.find_elements(By.ID, "param-do-radius-slider"):
@@ -109,8 +111,10 @@ def step_slider(drv):
     before, gen = drv.execute_script(CANVAS_HASH), generation(drv)
     radius = drv.find_element(By.ID, "param-do-radius").get_attribute("value")
     slider = drv.find_element(By.ID, "param-do-radius-slider")
-    ActionChains(drv).click_and_hold(slider).move_by_offset(25, 0).pause(0.1) \
-        .move_by_offset(25, 0).release().perform()
+    # grab the thumb where it is (a click elsewhere would jump) and drag it left a little
+    thumb = (float(slider.get_attribute("value")) / 1000 - 0.5) * (slider.size["width"] - 16)
+    ActionChains(drv).move_to_element_with_offset(slider, int(thumb), 0).click_and_hold() \
+        .move_by_offset(-8, 0).pause(0.1).move_by_offset(-8, 0).release().perform()
     wait_for(drv, "a run after the slider", lambda d: generation(d) > gen)
     wait_for(drv, "the radius box to follow the slider",
              lambda d: d.find_element(By.ID, "param-do-radius").get_attribute("value") != radius)

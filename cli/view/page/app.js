@@ -78,9 +78,12 @@ function applyState(st) {
   const newGen = st.generation !== S.gen;
   S.state = st;
   S.gen = st.generation;
-  if (!S.drag && st.camera) S.cam = JSON.parse(JSON.stringify(st.camera));
-  $('hdr-graph').textContent = st.graph;
-  $('hdr-scene').textContent = st.scene || '(none)';
+  if (!S.drag && !wheelTimer && st.camera) S.cam = JSON.parse(JSON.stringify(st.camera));
+  const base = (path) => path.split('/').pop();
+  $('hdr-graph').textContent = base(st.graph);
+  $('hdr-graph').title = st.graph;
+  $('hdr-scene').textContent = st.scene ? base(st.scene) : '(none)';
+  $('hdr-scene').title = st.scene;
   $('hdr-size').textContent = `${st.size[0]}x${st.size[1]}`;
   $('hdr-backend').textContent = st.backend;
   $('frame-ms').textContent = fmt(st.frame_ms);
@@ -165,9 +168,14 @@ async function loadDiagram(sig) {
   svg.style.height = 'auto';
   $('diagram').replaceChildren(document.importNode(svg, true));
   for (const g of $('diagram').querySelectorAll('g.node')) {
-    g.addEventListener('click', () => selectNode(nodeName(g), true));
+    g.addEventListener('click', () => { selectNode(nodeName(g), true); enlargeDiagram(false); });
   }
   markDiagram();
+}
+
+function enlargeDiagram(on) {
+  $('diagram').classList.toggle('wide', on);
+  $('diagram-expand').textContent = on ? 'close' : 'enlarge';
 }
 
 const nodeName = (g) => (g.querySelector('title') || {}).textContent || '';
@@ -183,13 +191,13 @@ function markDiagram() {
     g.classList.toggle('selected', n.name === S.selected);
     let t = g.querySelector('text.ms');
     if (!t) {
-      const label = g.querySelector('text');
-      if (!label) continue;
+      // under the node's box, where no label of dot's is
+      const box = g.getBBox();
       t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
       t.setAttribute('class', 'ms');
       t.setAttribute('text-anchor', 'middle');
-      t.setAttribute('x', label.getAttribute('x'));
-      t.setAttribute('y', String(parseFloat(label.getAttribute('y')) + 11));
+      t.setAttribute('x', String(box.x + box.width / 2));
+      t.setAttribute('y', String(box.y + box.height + 10));
       g.appendChild(t);
     }
     t.textContent = n.ran ? `${fmt(n.ms, 1)} ms` : 'kept';
@@ -220,7 +228,8 @@ function portList(n) {
   const out = [];
   for (const i of n.inputs) {
     const d = document.createElement('div');
-    d.textContent = `in  ${i.port} (${i.type}${i.optional ? ', optional' : ''}) \u2190 ${i.from || '-'}`;
+    const what = [i.type, i.optional ? 'optional' : ''].filter(Boolean).join(', ');
+    d.textContent = `in  ${i.port}${what ? ` (${what})` : ''} \u2190 ${i.from || '-'}`;
     out.push(d);
   }
   const d = document.createElement('div');
@@ -237,14 +246,17 @@ function portList(n) {
 }
 
 // How a number parameter's slider maps [0, 1000] to values: log when the range spans more
-// than 3 decades (from max/1e6 when min is 0), linear otherwise; null = unbounded.
+// than 3 decades, linear otherwise; null = unbounded. With a minimum of 0 the log part starts
+// 9 decades under the maximum (or under the current value) and the far left is 0 itself.
 function sliderScale(p) {
   if (p.min === null || p.max === null || !(p.max > p.min)) return null;
-  const lo = p.min > 0 ? p.min : p.max * 1e-6;
+  const cur = parseFloat(p.value);
+  let lo = p.min > 0 ? p.min : p.max * 1e-9;
+  if (p.min <= 0 && cur > 0 && cur < lo * 10) lo = cur / 10;
   if (p.min >= 0 && p.max > 0 && p.max / lo > 1000) {
     const a = Math.log(lo), b = Math.log(p.max);
-    return { to: (v) => Math.exp(a + (b - a) * v / 1000),
-      from: (x) => 1000 * (Math.log(Math.max(x, lo)) - a) / (b - a) };
+    return { to: (v) => (v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
+      from: (x) => (x <= lo ? 0 : 1000 * (Math.log(x) - a) / (b - a)) };
   }
   return { to: (v) => p.min + (p.max - p.min) * v / 1000,
     from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
@@ -512,9 +524,10 @@ function showPixel(ev) {
 }
 
 // ---- metrics ----------------------------------------------------------------------------
-let metricsBusy = false;
+let metricsBusy = false, metricsAgain = false;
+// The A/B metrics for the chosen ports; a call while one is on its way asks once more after.
 async function refreshMetrics() {
-  if (metricsBusy) return;
+  if (metricsBusy) { metricsAgain = true; return; }
   metricsBusy = true;
   const q = (k) => encodeURIComponent($(k).value);
   const el = $('metrics');
@@ -525,7 +538,10 @@ async function refreshMetrics() {
     const one = (k, r) => (r ? `${k}: RMSE ${r.rmse.toPrecision(4)} SSIM ${r.ssim.toFixed(4)}` : `${k}: -`);
     el.textContent = `${one('A', m.a)}  |  ${one('B', m.b)}  (gen ${S.gen})`;
   } catch (e) { el.textContent = `metrics: ${e}`; }
-  finally { metricsBusy = false; }
+  finally {
+    metricsBusy = false;
+    if (metricsAgain) { metricsAgain = false; refreshMetrics(); }
+  }
 }
 
 // ---- camera -----------------------------------------------------------------------------
@@ -642,7 +658,7 @@ function onWheel(ev) {
   zoom(S.cam, ev.deltaY);
   sendCamera(true);
   clearTimeout(wheelTimer);
-  wheelTimer = setTimeout(() => sendCamera(false), 250);
+  wheelTimer = setTimeout(() => { wheelTimer = null; sendCamera(false); }, 250);
 }
 
 // ---- save -------------------------------------------------------------------------------
@@ -679,6 +695,8 @@ function wire() {
   $('ab-enable').onchange = reload;
   $('port-ref').onchange = refreshMetrics;
   $('save-btn').onclick = saveVariant;
+  $('diagram-expand').onclick = () => enlargeDiagram(!$('diagram').classList.contains('wide'));
+  document.addEventListener('keydown', (ev) => { if (ev.key === 'Escape') enlargeDiagram(false); });
   $('save-name').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') saveVariant(); });
 }
 
