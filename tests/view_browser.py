@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The page of `ssgraph view` in a real headless Chromium (tests/test_view_browser.sh starts
-the server). Usage: view_browser.py URL OUTDIR GRAPHFILE. It clicks the node `do` in the
+the server). Usage: view_browser.py URL OUTDIR GRAPHFILE [WxH]. It clicks the node `do` in the
 diagram, moves its radius slider, drags the camera, sets an A/B split with metrics, types a
 bad value and breaks the graph file on disk (the errors show at file:line:col and clear), and
 saves a variant; screenshots go to OUTDIR/viewer-*.png. Exits 1 with FAIL lines on failures.
@@ -19,6 +19,7 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
 URL, OUT, GRAPH = sys.argv[1], sys.argv[2], sys.argv[3]
+SIZE = sys.argv[4] if len(sys.argv) > 4 else "160x90"  # the server's --size
 WAIT = 30  # seconds for one step; the graph runs on 2 busy cores
 failures = []
 
@@ -49,8 +50,9 @@ def browser():
 
 def wait_for(drv, what, cond):
     """Waits until cond(drv) is truthy; a timeout is a failure named `what`."""
-    try:
-        return WebDriverWait(drv, WAIT, poll_frequency=0.1).until(lambda d: cond(d))
+    try:  # after a failure, the rest of the step need not wait long to fail too
+        return WebDriverWait(drv, 3 if failures else WAIT, poll_frequency=0.1).until(
+            lambda d: cond(d))
     except TimeoutException:
         fail(f"timed out waiting for {what}")
         return None
@@ -79,7 +81,7 @@ def step_load(drv):
     wait_for(drv, "the first image", lambda d: d.execute_script(CANVAS_HASH)[0] > 16)
     if text(drv, "hdr-graph") != "ssdo_realtime.graph":
         fail(f"header graph is '{text(drv, 'hdr-graph')}'")
-    if text(drv, "hdr-size") != "160x90":
+    if text(drv, "hdr-size") != SIZE:
         fail(f"header size is '{text(drv, 'hdr-size')}'")
     shot(drv, "overview")
 

@@ -245,21 +245,23 @@ function portList(n) {
   return out;
 }
 
-// How a number parameter's slider maps [0, 1000] to values: log when the range spans more
-// than 3 decades, linear otherwise; null = unbounded. With a minimum of 0 the log part starts
-// 9 decades under the maximum (or under the current value) and the far left is 0 itself.
+// How a number parameter's slider maps [0, 1000] to values: linear when the range spans at
+// most 3 decades; otherwise logarithmic over 4 decades around the value the panel opened with
+// (a 12-decade slider would jump too far per pixel; the number box takes any value), or, for
+// a value of 0, over the 9 decades under the maximum with 0 itself at the far left.
+// null = unbounded (number box only).
 function sliderScale(p) {
   if (p.min === null || p.max === null || !(p.max > p.min)) return null;
-  const cur = parseFloat(p.value);
-  let lo = p.min > 0 ? p.min : p.max * 1e-9;
-  if (p.min <= 0 && cur > 0 && cur < lo * 10) lo = cur / 10;
-  if (p.min >= 0 && p.max > 0 && p.max / lo > 1000) {
-    const a = Math.log(lo), b = Math.log(p.max);
-    return { to: (v) => (v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
-      from: (x) => (x <= lo ? 0 : 1000 * (Math.log(x) - a) / (b - a)) };
+  const cur = parseFloat(p.value), lo0 = p.min > 0 ? p.min : p.max * 1e-9;
+  if (!(p.min >= 0 && p.max > 0 && p.max / lo0 > 1000)) {
+    return { to: (v) => p.min + (p.max - p.min) * v / 1000,
+      from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
   }
-  return { to: (v) => p.min + (p.max - p.min) * v / 1000,
-    from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
+  const zero = !(cur > 0);
+  const lo = zero ? lo0 : Math.max(lo0, cur / 100), hi = zero ? p.max : Math.min(p.max, cur * 100);
+  const a = Math.log(lo), b = Math.log(hi);
+  return { to: (v) => (zero && v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
+    from: (x) => (x <= lo ? 0 : Math.min(1000, 1000 * (Math.log(x) - a) / (b - a))) };
 }
 
 // A value as the graph file writes it: ints whole, floats with 6 significant digits.
@@ -311,6 +313,7 @@ function numberControls(row, n, p, id) {
   slider.id = `${id}-slider`;
   slider.min = '0'; slider.max = '1000'; slider.step = '1';
   slider.value = String(scale.from(parseFloat(p.value)));
+  slider.scale = scale; // refreshParamValues moves the thumb on the same scale
   slider.addEventListener('input', () => {
     box.value = numText(p, scale.to(+slider.value));
     sendParam(n.name, p.name, box.value, 60);
@@ -369,8 +372,7 @@ function refreshParamValues() {
     if (el.type === 'checkbox') el.checked = p.value === 'true';
     else if (el.value !== p.value && parseFloat(el.value) !== parseFloat(p.value)) {
       el.value = p.value;
-      const scale = sliderScale(p);
-      if (slider && scale) slider.value = String(scale.from(parseFloat(p.value)));
+      if (slider) slider.value = String(slider.scale.from(parseFloat(p.value)));
     }
   }
 }
@@ -485,11 +487,8 @@ function draw() {
   };
   const xs = Math.round(S.split * W);
   drawPort($('port-a').value, 0, split ? xs : W);
-  if (split) {
-    drawPort($('port-b').value, xs, W);
-    ctx.fillStyle = '#fff';
-    ctx.fillRect(xs - 0.5, 0, 1, H);
-  }
+  if (split) drawPort($('port-b').value, xs, W);
+  placeDivider();
   $('ab-labels').hidden = !split;
   $('ab-label-a').textContent = `A ${$('port-a').value}`;
   $('ab-label-b').textContent = `B ${$('port-b').value}`;
@@ -501,6 +500,15 @@ function fitCanvas() {
   const k = Math.min(st.clientWidth / cv.width, st.clientHeight / cv.height);
   cv.style.width = `${Math.floor(cv.width * k)}px`;
   cv.style.height = `${Math.floor(cv.height * k)}px`;
+}
+
+// The A/B divider: a one-pixel line over the canvas at screen resolution.
+function placeDivider() {
+  const cv = $('view'), div = $('ab-divider');
+  div.hidden = !$('ab-enable').checked;
+  div.style.left = `${cv.offsetLeft + Math.round(S.split * cv.clientWidth)}px`;
+  div.style.top = `${cv.offsetTop}px`;
+  div.style.height = `${cv.clientHeight}px`;
 }
 
 // The canvas position of a mouse event in full-frame pixels.
@@ -674,7 +682,8 @@ async function saveVariant() {
 // ---- wiring -----------------------------------------------------------------------------
 function wire() {
   const cv = $('view');
-  window.addEventListener('resize', fitCanvas);
+  // the stage changes size with the window and with the error bars above it
+  new ResizeObserver(() => { fitCanvas(); placeDivider(); }).observe($('stage'));
   cv.addEventListener('pointerdown', onPointerDown);
   cv.addEventListener('pointermove', onPointerMove);
   cv.addEventListener('pointerup', onPointerUp);
