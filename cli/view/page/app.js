@@ -537,14 +537,17 @@ let metricsBusy = false, metricsAgain = false;
 async function refreshMetrics() {
   if (metricsBusy) { metricsAgain = true; return; }
   metricsBusy = true;
-  const q = (k) => encodeURIComponent($(k).value);
+  // the text names the ports asked for, which may have changed by the time it answers
+  const [A, B, ref] = ['port-a', 'port-b', 'port-ref'].map((k) => $(k).value);
+  const q = encodeURIComponent;
   const el = $('metrics');
   try {
-    const resp = await api(`/api/metrics?ref=${q('port-ref')}&a=${q('port-a')}&b=${q('port-b')}`);
+    const resp = await api(`/api/metrics?ref=${q(ref)}&a=${q(A)}&b=${q(B)}`);
     if (!resp.ok) { el.textContent = `metrics: ${await errorText(resp)}`; return; }
     const m = await resp.json();
-    const one = (k, r) => (r ? `${k}: RMSE ${r.rmse.toPrecision(4)} SSIM ${r.ssim.toFixed(4)}` : `${k}: -`);
-    el.textContent = `${one('A', m.a)}  |  ${one('B', m.b)}  (gen ${S.gen})`;
+    const one = (k, port, r) => `${k} ${port}: ` +
+      (r ? `RMSE ${r.rmse.toPrecision(4)} SSIM ${r.ssim.toFixed(4)}` : '-');
+    el.textContent = `${one('A', A, m.a)}  |  ${one('B', B, m.b)}  against ${ref} (run ${S.gen})`;
   } catch (e) { el.textContent = `metrics: ${e}`; }
   finally {
     metricsBusy = false;
