@@ -131,6 +131,16 @@ def step_slider(drv):
     if table_ran != ran:
         fail(f"the time table's ran rows {sorted(table_ran)} differ from {sorted(ran)}")
     shot(drv, "params")
+    # the diagram says the same: a time under each node that ran, `kept` under the others
+    drv.find_element(By.ID, "diagram-expand").click()
+    labels = {g.find_element(By.TAG_NAME, "title").get_attribute("textContent"):
+              g.find_element(By.CSS_SELECTOR, "text.ms").get_attribute("textContent")
+              for g in drv.find_elements(By.CSS_SELECTOR, "#diagram g.node")}
+    shot(drv, "ran")
+    drv.find_element(By.ID, "diagram-close").click()
+    kept = {n for n, t in labels.items() if t == "kept"}
+    if ran & kept or "g" not in kept:
+        fail(f"the diagram's labels {labels} disagree with the nodes that ran {sorted(ran)}")
 
 
 def step_camera(drv):

@@ -173,9 +173,9 @@ async function loadDiagram(sig) {
   markDiagram();
 }
 
+// The diagram over the main area at a readable scale (dot lays graphs out wide).
 function enlargeDiagram(on) {
-  $('diagram').classList.toggle('wide', on);
-  $('diagram-expand').textContent = on ? 'close' : 'enlarge';
+  $('diagram-box').classList.toggle('wide', on);
 }
 
 const nodeName = (g) => (g.querySelector('title') || {}).textContent || '';
@@ -707,7 +707,8 @@ function wire() {
   $('ab-enable').onchange = reload;
   $('port-ref').onchange = refreshMetrics;
   $('save-btn').onclick = saveVariant;
-  $('diagram-expand').onclick = () => enlargeDiagram(!$('diagram').classList.contains('wide'));
+  $('diagram-expand').onclick = () => enlargeDiagram(true);
+  $('diagram-close').onclick = () => enlargeDiagram(false);
   document.addEventListener('keydown', (ev) => { if (ev.key === 'Escape') enlargeDiagram(false); });
   $('save-name').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') saveVariant(); });
 }
