@@ -14,6 +14,7 @@ from selenium import webdriver
 from selenium.common.exceptions import TimeoutException, WebDriverException
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
@@ -167,7 +168,37 @@ def step_camera(drv):
         .move_by_offset(-20, 10).pause(0.1).release().key_up(Keys.SHIFT).perform()
     wait_for(drv, "the canvas to change after the pan",
              lambda d: d.execute_script(CANVAS_HASH) != before)
+    wait_for(drv, "the full-size run after the pan", lambda d: text(d, "last-run") == "full")
+    before = drv.execute_script(CANVAS_HASH)
+    ActionChains(drv).scroll_from_origin(ScrollOrigin.from_element(canvas), 0, 300).perform()
+    wait_for(drv, "the canvas to change after the wheel zoom",
+             lambda d: d.execute_script(CANVAS_HASH) != before)
+    wait_for(drv, "the full-size run after the wheel",
+             lambda d: text(d, "last-run") == "full" and
+             not d.find_element(By.ID, "busy").is_displayed())
     shot(drv, "camera")
+
+
+def step_display(drv):
+    """Exposure, channel and false colour redraw the same floats; the pixel under the mouse
+    is read out."""
+    canvas = drv.find_element(By.ID, "view")
+    ActionChains(drv).move_to_element_with_offset(canvas, 10, 5).perform()
+    wait_for(drv, "the pixel readout", lambda d: re.search(
+        r"img\.out +x,y \d+,\d+: [-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+$", text(d, "pixel")))
+    gen, before = generation(drv), drv.execute_script(CANVAS_HASH)
+    drv.find_element(By.ID, "exposure").send_keys(*[Keys.ARROW_RIGHT] * 10)
+    if text(drv, "exposure-val") != "1.0":
+        fail(f"exposure shows {text(drv, 'exposure-val')} after +1 stop")
+    wait_for(drv, "the canvas to brighten", lambda d: d.execute_script(CANVAS_HASH) != before)
+    before = drv.execute_script(CANVAS_HASH)
+    Select(drv.find_element(By.ID, "channel")).select_by_value("g")
+    wait_for(drv, "the G channel in false colour",
+             lambda d: d.execute_script(CANVAS_HASH) != before)
+    if generation(drv) != gen:
+        fail("a display setting ran the graph")
+    Select(drv.find_element(By.ID, "channel")).select_by_value("rgb")
+    drv.find_element(By.ID, "fit-btn").click()
 
 
 def metric(drv, which, port):
@@ -264,7 +295,7 @@ def main():
               f"(packages in tools/debian-packages.txt): {e.msg}")
         return 1
     try:
-        for step in (step_load, step_click_node, step_slider, step_camera, step_ab,
+        for step in (step_load, step_click_node, step_slider, step_camera, step_display, step_ab,
                      step_errors, step_save):
             t0 = time.time()
             step(drv)

@@ -60,6 +60,7 @@ const S = {
   split: 0.5,         // the A/B divider as a fraction of the width
   ups: [],            // times of camera updates during the drag (updates per second)
   svgSig: '',         // the node list the diagram was fetched for
+  mouse: null,        // the last mouse event over the canvas (pixel readout)
 };
 let busyCount = 0;
 function setBusy(on) { busyCount += on ? 1 : -1; $('busy').hidden = busyCount <= 0; }
@@ -245,114 +246,11 @@ function portList(n) {
   return out;
 }
 
-// How a number parameter's slider maps [0, 1000] to values: linear when the range spans at
-// most 3 decades; otherwise logarithmic over 4 decades around the value the panel opened with
-// (a 12-decade slider would jump too far per pixel; the number box takes any value), or, for
-// a value of 0, over the 9 decades under the maximum with 0 itself at the far left.
-// null = unbounded (number box only).
-function sliderScale(p) {
-  if (p.min === null || p.max === null || !(p.max > p.min)) return null;
-  const cur = parseFloat(p.value), lo0 = p.min > 0 ? p.min : p.max * 1e-9;
-  if (!(p.min >= 0 && p.max > 0 && p.max / lo0 > 1000)) {
-    return { to: (v) => p.min + (p.max - p.min) * v / 1000,
-      from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
-  }
-  const zero = !(cur > 0);
-  const lo = zero ? lo0 : Math.max(lo0, cur / 100), hi = zero ? p.max : Math.min(p.max, cur * 100);
-  const a = Math.log(lo), b = Math.log(hi);
-  return { to: (v) => (zero && v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
-    from: (x) => (x <= lo ? 0 : Math.min(1000, 1000 * (Math.log(x) - a) / (b - a))) };
-}
-
-// A value as the graph file writes it: ints whole, floats with 6 significant digits.
-function numText(p, x) {
-  if (p.type === 'int') return String(Math.round(x));
-  return String(parseFloat(x.toPrecision(6)));
-}
-
 let debounce = null;
 function sendParam(node, param, value, delay) {
   clearTimeout(debounce);
   const go = () => setSender.send(`${node}.${param}`, `${node}.${param}=${value}`);
   if (delay) debounce = setTimeout(go, delay); else go();
-}
-
-function paramRow(n, p) {
-  const row = document.createElement('div');
-  row.className = 'param';
-  row.dataset.param = p.name;
-  row.title = [p.doc, p.unit ? `unit: ${p.unit}` : '',
-    p.min !== null && p.min !== undefined ? `range ${p.min} .. ${p.max}` : ''].filter(Boolean).join('\n');
-  const label = document.createElement('label');
-  label.textContent = p.name;
-  row.append(label);
-  const id = `param-${n.name}-${p.name}`;
-  if (p.type === 'float' || p.type === 'int') numberControls(row, n, p, id);
-  else if (p.type === 'enum' && p.choices) selectControl(row, n, p, id);
-  else if (p.type === 'bool') boolControl(row, n, p, id);
-  else textControl(row, n, p, id);
-  if (p.unit || p.doc) {
-    const u = document.createElement('div');
-    u.className = 'unit';
-    u.textContent = [p.unit, p.doc].filter(Boolean).join(' \u00b7 ');
-    row.append(u);
-  }
-  return row;
-}
-
-function numberControls(row, n, p, id) {
-  const box = document.createElement('input');
-  box.type = 'number';
-  box.id = id;
-  box.value = p.value;
-  box.step = p.type === 'int' ? '1' : 'any';
-  const scale = sliderScale(p);
-  if (!scale) { row.classList.add('wide'); row.append(box); return; }
-  const slider = document.createElement('input');
-  slider.type = 'range';
-  slider.id = `${id}-slider`;
-  slider.min = '0'; slider.max = '1000'; slider.step = '1';
-  slider.value = String(scale.from(parseFloat(p.value)));
-  slider.scale = scale; // refreshParamValues moves the thumb on the same scale
-  slider.addEventListener('input', () => {
-    box.value = numText(p, scale.to(+slider.value));
-    sendParam(n.name, p.name, box.value, 60);
-  });
-  box.addEventListener('change', () => {
-    slider.value = String(scale.from(parseFloat(box.value)));
-    sendParam(n.name, p.name, box.value, 0);
-  });
-  row.append(slider, box);
-}
-
-function selectControl(row, n, p, id) {
-  const sel = document.createElement('select');
-  sel.id = id;
-  sel.replaceChildren(...p.choices.map((c) => new Option(c, c)));
-  sel.value = p.value;
-  sel.addEventListener('change', () => sendParam(n.name, p.name, sel.value, 0));
-  row.classList.add('wide');
-  row.append(sel);
-}
-
-function boolControl(row, n, p, id) {
-  const cb = document.createElement('input');
-  cb.type = 'checkbox';
-  cb.id = id;
-  cb.checked = p.value === 'true';
-  cb.addEventListener('change', () => sendParam(n.name, p.name, cb.checked ? 'true' : 'false', 0));
-  row.classList.add('wide');
-  row.append(cb);
-}
-
-function textControl(row, n, p, id) {
-  const t = document.createElement('input');
-  t.type = 'text';
-  t.id = id;
-  t.value = p.value;
-  t.addEventListener('change', () => sendParam(n.name, p.name, t.value, 0));
-  row.classList.add('wide');
-  row.append(t);
 }
 
 // Values changed elsewhere (a reload, a rejected set) reach controls the user is not using.
@@ -381,14 +279,7 @@ function refreshParamValues() {
 async function fetchImage(port, preview) {
   const resp = await api(`/api/image?port=${encodeURIComponent(port)}${preview ? '&preview=1' : ''}`);
   if (!resp.ok) throw new Error(`${port}: ${await errorText(resp)}`);
-  const buf = await resp.arrayBuffer();
-  const dv = new DataView(buf);
-  const magic = String.fromCharCode(...new Uint8Array(buf, 0, 4));
-  if (magic !== 'SSGI') throw new Error(`${port}: not an SSGI image`);
-  const [w, h, c, gen] = [4, 8, 12, 16].map((o) => dv.getUint32(o, true));
-  if (buf.byteLength < 20 + w * h * c * 4) throw new Error(`${port}: image truncated`);
-  const data = new Float32Array(buf.slice(20, 20 + w * h * c * 4));
-  return { w, h, c, gen, preview, data };
+  return decodeImage(await resp.arrayBuffer(), port, preview);
 }
 
 let imageBusy = false, imageAgain = false;
@@ -412,57 +303,6 @@ async function refreshImages(preview) {
   }
 }
 
-// Perceptual false colour: viridis at 11 stops (matplotlib's table), linearly interpolated.
-const VIRIDIS = [[68, 1, 84], [72, 36, 117], [65, 68, 135], [53, 95, 141], [42, 120, 142],
-  [33, 145, 140], [34, 168, 132], [68, 191, 112], [122, 209, 81], [189, 223, 38], [253, 231, 37]];
-const VIRIDIS_LUT = (() => {
-  const lut = new Uint8ClampedArray(256 * 3);
-  for (let i = 0; i < 256; i++) {
-    const t = i / 255 * 10, k = Math.min(9, Math.floor(t)), f = t - k;
-    for (let j = 0; j < 3; j++) lut[i * 3 + j] = VIRIDIS[k][j] * (1 - f) + VIRIDIS[k + 1][j] * f;
-  }
-  return lut;
-})();
-// Linear [0, 1] -> sRGB bytes, 4096 steps.
-const SRGB_LUT = (() => {
-  const lut = new Uint8ClampedArray(4096);
-  for (let i = 0; i < 4096; i++) {
-    const x = i / 4095;
-    lut[i] = 255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * Math.pow(x, 1 / 2.4) - 0.055) + 0.5;
-  }
-  return lut;
-})();
-const srgb = (x) => SRGB_LUT[x <= 0 ? 0 : x >= 1 ? 4095 : (x * 4095) | 0];
-
-// The float image as RGBA bytes: exposure in stops, then the channel choice; one channel
-// (a one-channel image or R/G/B/A chosen) is grey or false colour.
-function toPixels(img) {
-  const gain = Math.pow(2, +$('exposure').value);
-  const ch = $('channel').value, cmap = $('colormap').value;
-  const out = new ImageData(img.w, img.h), px = out.data, d = img.data, c = img.c;
-  const pick = { r: 0, g: 1, b: 2, a: 3 }[ch];
-  const single = c === 1 || pick !== undefined;
-  const src = c === 1 ? 0 : pick;
-  for (let i = 0, n = img.w * img.h; i < n; i++) {
-    const o = i * 4;
-    if (single) {
-      const v = src < c ? d[i * c + src] * gain : (src === 3 ? 1 : 0);
-      if (cmap === 'viridis') {
-        const k = (v <= 0 ? 0 : v >= 1 ? 255 : (v * 255) | 0) * 3;
-        px[o] = VIRIDIS_LUT[k]; px[o + 1] = VIRIDIS_LUT[k + 1]; px[o + 2] = VIRIDIS_LUT[k + 2];
-      } else {
-        px[o] = px[o + 1] = px[o + 2] = srgb(v);
-      }
-    } else {
-      px[o] = srgb(d[i * c] * gain);
-      px[o + 1] = srgb(d[i * c + 1] * gain);
-      px[o + 2] = c > 2 ? srgb(d[i * c + 2] * gain) : 0;
-    }
-    px[o + 3] = 255;
-  }
-  return out;
-}
-
 const scratch = document.createElement('canvas');
 // Draws port A (and B right of the divider when split) scaled to the full frame size, so a
 // preview-size image fills the same canvas.
@@ -475,11 +315,13 @@ function draw() {
   ctx.fillStyle = '#000';
   ctx.fillRect(0, 0, W, H);
   const split = $('ab-enable').checked;
+  const view = { stops: +$('exposure').value, channel: $('channel').value,
+    colormap: $('colormap').value };
   const drawPort = (port, x0, x1) => {
     const img = S.images.get(port);
     if (!img) return;
     scratch.width = img.w; scratch.height = img.h;
-    scratch.getContext('2d').putImageData(toPixels(img), 0, 0);
+    scratch.getContext('2d').putImageData(toPixels(img, view), 0, 0);
     ctx.save();
     ctx.beginPath(); ctx.rect(x0, 0, x1 - x0, H); ctx.clip();
     ctx.drawImage(scratch, 0, 0, W, H);
@@ -490,6 +332,7 @@ function draw() {
   if (split) drawPort($('port-b').value, xs, W);
   placeDivider();
   $('ab-labels').hidden = !split;
+  if (S.mouse) showPixel(S.mouse);
   $('ab-label-a').textContent = `A ${$('port-a').value}`;
   $('ab-label-b').textContent = `B ${$('port-b').value}`;
 }
@@ -518,6 +361,7 @@ function framePos(ev) {
 }
 
 function showPixel(ev) {
+  S.mouse = ev; // read out again when the image under it changes
   if (!S.state) return;
   const [fx, fy] = framePos(ev);
   const split = $('ab-enable').checked && fx >= S.split * $('view').width;
@@ -558,45 +402,6 @@ async function refreshMetrics() {
 // ---- camera -----------------------------------------------------------------------------
 // The page moves its own copy of the camera (S.cam) and sends each pose; the server's answer
 // never overwrites the copy while a drag is on, so a slow answer does not make it jump back.
-const V = {
-  add: (a, b) => a.map((x, i) => x + b[i]), sub: (a, b) => a.map((x, i) => x - b[i]),
-  mul: (a, s) => a.map((x) => x * s), dot: (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2],
-  cross: (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]],
-  len: (a) => Math.hypot(a[0], a[1], a[2]),
-  norm: (a) => V.mul(a, 1 / (V.len(a) || 1)),
-};
-// v rotated by angle t around the unit axis k (Rodrigues).
-function rotate(v, k, t) {
-  const c = Math.cos(t), s = Math.sin(t);
-  return V.add(V.add(V.mul(v, c), V.mul(V.cross(k, v), s)), V.mul(k, V.dot(k, v) * (1 - c)));
-}
-
-function orbit(cam, dx, dy) {
-  const up = V.norm(cam.up);
-  let off = rotate(V.sub(cam.position, cam.target), up, -dx * 0.008);
-  const right = V.norm(V.cross(off, up));
-  const tilted = rotate(off, right, dy * 0.008);
-  const cosUp = V.dot(V.norm(tilted), up);
-  if (Math.abs(cosUp) < 0.995) off = tilted; // never over the pole
-  cam.position = V.add(cam.target, off);
-}
-
-function pan(cam, dx, dy) {
-  const off = V.sub(cam.position, cam.target);
-  const fwd = V.norm(V.mul(off, -1));
-  const right = V.norm(V.cross(fwd, cam.up)), camUp = V.cross(right, fwd);
-  const h = $('view').getBoundingClientRect().height || 1;
-  const k = 2 * V.len(off) * Math.tan((cam.fov_y * Math.PI) / 360) / h;
-  const move = V.add(V.mul(right, -dx * k), V.mul(camUp, dy * k));
-  cam.position = V.add(cam.position, move);
-  cam.target = V.add(cam.target, move);
-}
-
-function zoom(cam, wheel) {
-  const off = V.mul(V.sub(cam.position, cam.target), Math.exp(wheel * 0.001));
-  cam.position = V.add(cam.target, off);
-}
-
 const num = (x) => String(parseFloat(x.toPrecision(8)));
 function sendCamera(preview) {
   const c = S.cam;
@@ -649,7 +454,8 @@ function onPointerMove(ev) {
     return;
   }
   if (!dx && !dy) return;
-  if (S.drag.mode === 'orbit') orbit(S.cam, dx, dy); else pan(S.cam, dx, dy);
+  if (S.drag.mode === 'orbit') orbit(S.cam, dx, dy);
+  else pan(S.cam, dx, dy, cv.getBoundingClientRect().height);
   S.drag.moved = true;
   sendCamera(true);
 }

@@ -1,0 +1,108 @@
+// The parameter controls of `ssgraph view`'s page (app.js), generated from a node's
+// parameter descriptors in /api/state (type, value, min, max, unit, choices, doc). A change
+// calls sendParam(node, param, text, debounce_ms) of app.js.
+'use strict';
+
+// How a number parameter's slider maps [0, 1000] to values: linear when the range spans at
+// most 3 decades; otherwise logarithmic over 4 decades around the value the panel opened with
+// (a 12-decade slider would jump too far per pixel; the number box takes any value), or, for
+// a value of 0, over the 9 decades under the maximum with 0 itself at the far left.
+// null = unbounded (number box only).
+function sliderScale(p) {
+  if (p.min === null || p.max === null || !(p.max > p.min)) return null;
+  const cur = parseFloat(p.value), lo0 = p.min > 0 ? p.min : p.max * 1e-9;
+  if (!(p.min >= 0 && p.max > 0 && p.max / lo0 > 1000)) {
+    return { to: (v) => p.min + (p.max - p.min) * v / 1000,
+      from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
+  }
+  const zero = !(cur > 0);
+  const lo = zero ? lo0 : Math.max(lo0, cur / 100), hi = zero ? p.max : Math.min(p.max, cur * 100);
+  const a = Math.log(lo), b = Math.log(hi);
+  return { to: (v) => (zero && v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
+    from: (x) => (x <= lo ? 0 : Math.min(1000, 1000 * (Math.log(x) - a) / (b - a))) };
+}
+
+// A value as the graph file writes it: ints whole, floats with 6 significant digits.
+function numText(p, x) {
+  if (p.type === 'int') return String(Math.round(x));
+  return String(parseFloat(x.toPrecision(6)));
+}
+
+// One row of the node panel: the name, its control, and the unit and doc under it.
+function paramRow(n, p) {
+  const row = document.createElement('div');
+  row.className = 'param';
+  row.dataset.param = p.name;
+  row.title = [p.doc, p.unit ? `unit: ${p.unit}` : '',
+    p.min !== null && p.min !== undefined ? `range ${p.min} .. ${p.max}` : ''].filter(Boolean).join('\n');
+  const label = document.createElement('label');
+  label.textContent = p.name;
+  row.append(label);
+  const id = `param-${n.name}-${p.name}`;
+  if (p.type === 'float' || p.type === 'int') numberControls(row, n, p, id);
+  else if (p.type === 'enum' && p.choices) selectControl(row, n, p, id);
+  else if (p.type === 'bool') boolControl(row, n, p, id);
+  else textControl(row, n, p, id);
+  if (p.unit || p.doc) {
+    const u = document.createElement('div');
+    u.className = 'unit';
+    u.textContent = [p.unit, p.doc].filter(Boolean).join(' \u00b7 ');
+    row.append(u);
+  }
+  return row;
+}
+
+function numberControls(row, n, p, id) {
+  const box = document.createElement('input');
+  box.type = 'number';
+  box.id = id;
+  box.value = p.value;
+  box.step = p.type === 'int' ? '1' : 'any';
+  const scale = sliderScale(p);
+  if (!scale) { row.classList.add('wide'); row.append(box); return; }
+  const slider = document.createElement('input');
+  slider.type = 'range';
+  slider.id = `${id}-slider`;
+  slider.min = '0'; slider.max = '1000'; slider.step = '1';
+  slider.value = String(scale.from(parseFloat(p.value)));
+  slider.scale = scale; // refreshParamValues moves the thumb on the same scale
+  slider.addEventListener('input', () => {
+    box.value = numText(p, scale.to(+slider.value));
+    sendParam(n.name, p.name, box.value, 60);
+  });
+  box.addEventListener('change', () => {
+    slider.value = String(scale.from(parseFloat(box.value)));
+    sendParam(n.name, p.name, box.value, 0);
+  });
+  row.append(slider, box);
+}
+
+function selectControl(row, n, p, id) {
+  const sel = document.createElement('select');
+  sel.id = id;
+  sel.replaceChildren(...p.choices.map((c) => new Option(c, c)));
+  sel.value = p.value;
+  sel.addEventListener('change', () => sendParam(n.name, p.name, sel.value, 0));
+  row.classList.add('wide');
+  row.append(sel);
+}
+
+function boolControl(row, n, p, id) {
+  const cb = document.createElement('input');
+  cb.type = 'checkbox';
+  cb.id = id;
+  cb.checked = p.value === 'true';
+  cb.addEventListener('change', () => sendParam(n.name, p.name, cb.checked ? 'true' : 'false', 0));
+  row.classList.add('wide');
+  row.append(cb);
+}
+
+function textControl(row, n, p, id) {
+  const t = document.createElement('input');
+  t.type = 'text';
+  t.id = id;
+  t.value = p.value;
+  t.addEventListener('change', () => sendParam(n.name, p.name, t.value, 0));
+  row.classList.add('wide');
+  row.append(t);
+}
