@@ -79,6 +79,10 @@ function applyState(st) {
   const newGen = st.generation !== S.gen;
   S.state = st;
   S.gen = st.generation;
+  // the image first (its transfer overlaps the page's own updates below), unless the port
+  // selects are still empty (the first state)
+  const imageNow = newGen && $('port-a').value;
+  if (imageNow) refreshImages(st.last_run === 'preview');
   if (!S.drag && !wheelTimer && st.camera) S.cam = JSON.parse(JSON.stringify(st.camera));
   const base = (path) => path.split('/').pop();
   $('hdr-graph').textContent = base(st.graph);
@@ -95,6 +99,7 @@ function applyState(st) {
   se.textContent = st.error || '';
   se.hidden = !st.error;
   fillPortSelects(st);
+  if (newGen && !imageNow) refreshImages(st.last_run === 'preview');
   fillTimes(st);
   const sig = st.nodes.map((n) => n.name).join(',');
   if (sig !== S.svgSig) loadDiagram(sig); else markDiagram();
@@ -104,7 +109,6 @@ function applyState(st) {
   } else {
     refreshParamValues();
   }
-  if (newGen) refreshImages(st.last_run === 'preview');
 }
 
 async function poll() {
