@@ -144,6 +144,18 @@ def step_slider(drv):
         fail(f"the diagram's labels {labels} disagree with the nodes that ran {sorted(ran)}")
 
 
+def step_checkbox(drv):
+    """A bool parameter's checkbox sends its value (do.bounce off, then on again)."""
+    box = drv.find_element(By.ID, "param-do-bounce")
+    for want in (False, True):
+        gen = generation(drv)
+        box.click()
+        wait_for(drv, f"a run after do.bounce={want}", lambda d: generation(d) > gen)
+        wait_for(drv, "the set to finish", lambda d: not d.find_element(By.ID, "busy").is_displayed())
+        if box.is_selected() != want or "do" not in ran_nodes(drv):
+            fail(f"do.bounce checkbox: selected {box.is_selected()}, ran {sorted(ran_nodes(drv))}")
+
+
 def step_camera(drv):
     """Drags on the canvas: orbit, then pan; the image changes and updates/s is shown."""
     before = drv.execute_script(CANVAS_HASH)
@@ -295,8 +307,8 @@ def main():
               f"(packages in tools/debian-packages.txt): {e.msg}")
         return 1
     try:
-        for step in (step_load, step_click_node, step_slider, step_camera, step_display, step_ab,
-                     step_errors, step_save):
+        for step in (step_load, step_click_node, step_slider, step_checkbox, step_camera,
+                     step_display, step_ab, step_errors, step_save):
             t0 = time.time()
             step(drv)
             print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)

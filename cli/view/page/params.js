@@ -77,32 +77,32 @@ function numberControls(row, n, p, id) {
   row.append(slider, box);
 }
 
+// A control that fills the row (no slider): el gets the id, and read(el) is the value sent
+// when it changes.
+function wideControl(row, n, p, id, el, read) {
+  el.id = id;
+  el.addEventListener('change', () => sendParam(n.name, p.name, read(el), 0));
+  row.classList.add('wide');
+  row.append(el);
+}
+
 function selectControl(row, n, p, id) {
   const sel = document.createElement('select');
-  sel.id = id;
   sel.replaceChildren(...p.choices.map((c) => new Option(c, c)));
   sel.value = p.value;
-  sel.addEventListener('change', () => sendParam(n.name, p.name, sel.value, 0));
-  row.classList.add('wide');
-  row.append(sel);
+  wideControl(row, n, p, id, sel, (el) => el.value);
 }
 
 function boolControl(row, n, p, id) {
   const cb = document.createElement('input');
   cb.type = 'checkbox';
-  cb.id = id;
   cb.checked = p.value === 'true';
-  cb.addEventListener('change', () => sendParam(n.name, p.name, cb.checked ? 'true' : 'false', 0));
-  row.classList.add('wide');
-  row.append(cb);
+  wideControl(row, n, p, id, cb, (el) => (el.checked ? 'true' : 'false'));
 }
 
 function textControl(row, n, p, id) {
   const t = document.createElement('input');
   t.type = 'text';
-  t.id = id;
   t.value = p.value;
-  t.addEventListener('change', () => sendParam(n.name, p.name, t.value, 0));
-  row.classList.add('wide');
-  row.append(t);
+  wideControl(row, n, p, id, t, (el) => el.value);
 }
