@@ -2,8 +2,9 @@
  * next, parameters changed on a loaded graph, and the kept images handed out.
  *
  * Correctness rule: a node's outputs are reused only while nothing they depend on has
- * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs,
- * and those of every node whose shapes the change moved; a run re-runs every node whose
+ * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs
+ * (only its kept outputs when its check_params says the run alone reads the changed
+ * parameter, node.h), and both of every node whose shapes the change moved; a run re-runs every node whose
  * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
  * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
  * camera (ssg_graph_set_view) makes every node prepare and run again. */
@@ -72,6 +73,17 @@ static void forget(struct ssg_graph *g, int p)
     l->consts[p] = NULL;
     l->prepared[p] = 0;
     l->kept[p] = 0;
+}
+
+/* Node p's parameters changed from `old` and its shapes did not: it runs again, and
+   prepares again unless its check_params says the run alone reads what changed. */
+static void dirty(struct ssg_graph *g, int p, const void *old)
+{
+    const struct gnode *n = &g->nodes[g->order[p]];
+    if (n->desc->check_params && n->desc->check_params(old, n->params) == SSG_RECOMPUTE_RUN)
+        g->live->kept[p] = 0; /* its readers follow: they see it ran (graph_run.c) */
+    else
+        forget(g, p);
 }
 
 void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
@@ -171,9 +183,11 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
     }
     for (int p = 0; !e && g->live && p < g->order_count; p++) {
         const struct gnode *m = &g->nodes[g->order[p]];
-        if (m == n || memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
+        if (memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
             memcmp(shapes[g->order[p]][1], m->out_shape, sizeof shapes[0][1]))
             forget(g, p);
+        else if (m == n)
+            dirty(g, p, old);
     }
     free(shapes), free(old), free(text);
     return e;
