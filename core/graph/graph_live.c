@@ -149,6 +149,44 @@ static int find_param(struct ssg_graph *g, const char *key, enum ssg_err *e,
     return i;
 }
 
+/* 1 when the set line `line` ("node.param=value", spaces allowed) sets `key`. */
+static int sets_key(const char *line, const char *key)
+{
+    while (*line == ' ' || *line == '\t')
+        line++;
+    size_t n = strlen(key);
+    if (strncmp(line, key, n))
+        return 0;
+    line += n;
+    while (*line == ' ' || *line == '\t')
+        line++;
+    return *line == '=';
+}
+
+/* Records a set that took as the graph's set lines, which the run's files record (write's
+   EXR metadata): it replaces the line of the same key where there is one, else it comes
+   last, as --set would have listed it. In the graph's arena, freed with it. */
+static enum ssg_err record_set(struct ssg_graph *g, const char *key, const char *text)
+{
+    char *line = ssg_arena_strndup(&g->arena, text, strlen(text));
+    if (!line)
+        return SSG_E_NOMEM;
+    for (int k = g->set_count - 1; k >= 0; k--)
+        if (sets_key(g->sets[k], key)) {
+            g->sets[k] = line;
+            return SSG_OK;
+        }
+    const char **sets = ssg_arena_alloc(&g->arena, (size_t)(g->set_count + 1) * sizeof *sets);
+    if (!sets)
+        return SSG_E_NOMEM;
+    for (int k = 0; k < g->set_count; k++)
+        sets[k] = g->sets[k];
+    sets[g->set_count] = line;
+    g->sets = sets;
+    g->set_count++;
+    return SSG_OK;
+}
+
 enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *value,
                            struct ssg_diags *diags)
 {
@@ -176,6 +214,8 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
     e = ssg_graph_apply_set(g, text, diags);
     if (!e)
         e = ssg_graph_reinfer(g, diags);
+    if (!e)
+        e = record_set(g, key, text);
     if (e) { /* the graph stays as it was: the old value, the old shapes */
         struct ssg_diags quiet = {0};
         memcpy(n->params, old, size);
