@@ -162,6 +162,31 @@ struct ssg_io {
     const unsigned *extra_types;             /* type of each extra input */
 };
 
+/* What a parameter change makes a kept graph's node redo (ssg_graph_set; the descriptor's
+ * check_params, after vkdt's module check_params). Its readers run again in either case. */
+enum ssg_recompute {
+    SSG_RECOMPUTE_RUN = 1,     /* run again with the new value; prepare()'s constants stand */
+    SSG_RECOMPUTE_PREPARE = 2, /* prepare() and run again: any change of a node without
+                                  check_params, and any change that moves a shape */
+};
+
+/* 1 when the `size` bytes of two parameter structs differ at most in [offset, offset +
+ * len): a check_params's test "only this field changed" (SSG_PARAMS_ONLY_CHANGED). Bytewise
+ * is exact here: old_params is a copy of the node's block taken just before a set wrote
+ * one field into it, so padding and untouched fields hold the same bytes in both. */
+static inline int ssg_params_only_changed(const void *old_params, const void *new_params,
+                                          size_t size, size_t offset, size_t len)
+{
+    const unsigned char *a = old_params, *b = new_params;
+    for (size_t i = 0; i < size; i++)
+        if ((i < offset || i >= offset + len) && a[i] != b[i])
+            return 0;
+    return 1;
+}
+#define SSG_PARAMS_ONLY_CHANGED(type, old_params, new_params, member) \
+    ssg_params_only_changed(old_params, new_params, sizeof(type), offsetof(type, member), \
+                            sizeof(((const type *)0)->member))
+
 struct ssg_node_desc {
     const char *name;    /* "ssao" */
     const char *summary; /* one line for `ssgraph nodes` */
@@ -224,6 +249,14 @@ struct ssg_node_desc {
        run; both backends read these same bytes, so what depends only on parameters and
        shapes is computed here and never twice. Returns SSG_OK or ssg_node_fail(...). */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);
+    /* Optional (vkdt's check_params): what a change of the parameters from old_params to
+       new_params (one ssg_graph_set on a kept graph) requires of this node, an enum
+       ssg_recompute. SSG_RECOMPUTE_RUN only when every changed parameter is read by
+       run_cpu and run_gl from ctx->params alone (on GL: a row bound as p_<field>, not
+       host_only), never by check, prepare or from a copy in the consts: the run then
+       sees the new value with the old constants. NULL = any change prepares again, the
+       safe default; worth declaring where prepare() is costly. */
+    unsigned (*check_params)(const void *old_params, const void *new_params);
     /* Optional. Floating-point operations one run does per pixel of output 0 (a multiply,
        an add, a compare-and-select each count 1; a division or square root 1; the
        polynomial exp and log as their operations), from the parameters and the input
