@@ -165,7 +165,10 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .out_shape = n->out_shape, .extra_shape = extra_shape,
                                .run = r->opt, .scratch = &r->scratch[p],
                                .graph_path = g->path, .sets = (const char *const *)g->sets,
-                               .set_count = g->set_count, .supplied = n->supplied};
+                               .set_count = g->set_count, .supplied = n->supplied,
+                               .frame_index = frame,
+                               .prev_camera = g->scene ? &g->scene->camera : NULL,
+                               .history_reset = frame == 0};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();

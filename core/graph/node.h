@@ -127,6 +127,16 @@ struct ssg_node_ctx {
                                       (NULL for a node without consts) */
     const struct ssg_image *supplied; /* a `supplied` node's image from the caller, of
                                          output 0's shape; NULL = none supplied */
+    /* Time (docs/time.md). A run of N frames is a sequence: frame_index 0 .. N-1 at
+       time_s = frame_index / the scene's frame rate. prev_camera is the camera of the
+       frame before (motion vectors reproject through it); it is the current camera in
+       the first frame and after a cut. history_reset is 1 when no earlier frame may be
+       reused (the first frame, a cut, a new size or a change that invalidates history);
+       a node that keeps history then starts afresh. */
+    int frame_index;
+    double time_s;
+    const struct ssg_camera *prev_camera; /* NULL without a scene */
+    int history_reset;
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate
