@@ -41,16 +41,24 @@ static const struct guard_case cases[] = {
 
 static char out_dir[1024];
 
-/* A fresh load of the case on `backend`, at views[v] (0 = the graph's own), kept and run. */
-static struct ssg_graph *run_at(const struct guard_case *c, const char *backend,
-                                const struct ssg_view *views, int v)
+/* A fresh load of the case on `backend` at the test's size, or NULL. */
+static struct ssg_graph *load(const struct guard_case *c, const char *backend,
+                              struct ssg_diags *d)
 {
     struct ssg_overrides ov = {.width = SIZE_W, .height = SIZE_H, .seed = -1,
                                .backend = backend, .sets = c->sets,
                                .set_count = c->set_count};
     struct ssg_graph *g = NULL;
+    CHECK_EQ(ssg_graph_load(c->graph, &ov, &g, d), SSG_OK);
+    return g;
+}
+
+/* A fresh load of the case on `backend`, at views[v] (0 = the graph's own), kept and run. */
+static struct ssg_graph *run_at(const struct guard_case *c, const char *backend,
+                                const struct ssg_view *views, int v)
+{
     struct ssg_diags d = {0};
-    CHECK_EQ(ssg_graph_load(c->graph, &ov, &g, &d), SSG_OK);
+    struct ssg_graph *g = load(c, backend, &d);
     if (g && v > 0)
         CHECK_EQ(ssg_graph_set_view(g, &views[v], &d), SSG_OK);
     if (g)
@@ -66,12 +74,8 @@ static struct ssg_graph *run_at(const struct guard_case *c, const char *backend,
 static int views_of(const struct guard_case *c, const char *backend,
                     struct ssg_view views[VIEWS])
 {
-    struct ssg_overrides ov = {.width = SIZE_W, .height = SIZE_H, .seed = -1,
-                               .backend = backend, .sets = c->sets,
-                               .set_count = c->set_count};
-    struct ssg_graph *g = NULL;
     struct ssg_diags d = {0};
-    CHECK_EQ(ssg_graph_load(c->graph, &ov, &g, &d), SSG_OK);
+    struct ssg_graph *g = load(c, backend, &d);
     int ok = g && ssg_graph_view(g, &views[0], &d) == SSG_OK;
     CHECK(ok);
     ssg_diags_print(&d, stderr);
