@@ -7,7 +7,8 @@
  * parameter, node.h), and both of every node whose shapes the change moved; a run re-runs every node whose
  * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
  * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
- * camera (ssg_graph_set_view) makes every node prepare and run again. */
+ * camera (ssg_graph_set_view) makes every node prepare and run again except those that
+ * declare camera_independent (node.h); they still run when a producer runs. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -332,10 +333,12 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
     g->frame.fov_y = v->fov_y;
     struct ssg_diags quiet = {0};
     ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
-    /* Every node may read the camera (the G-buffer, the projection in prepare(), the ray
-       tracers' frames): all prepare and run again. */
+    /* A node may read the camera (the G-buffer, the projection in prepare(), the ray
+       tracers' frames): it prepares and runs again unless it declares that it does not.
+       The readers of a node that runs follow it (graph_run.c can_skip). */
     for (int p = 0; g->live && p < g->order_count; p++)
-        forget(g, p);
+        if (!g->nodes[g->order[p]].desc->camera_independent)
+            forget(g, p);
     return SSG_OK;
 }
 

@@ -227,6 +227,17 @@ struct ssg_node_desc {
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
+    /* 1 = nothing the node computes reads the camera: neither check, prepare, run_cpu nor
+       run_gl (nor its shaders, nor a helper it calls) reads ctx->frame's fov_y, near_z or
+       far_z, ssg_frame_projection, or ctx->scene->camera, directly or through view-space
+       data it makes itself. A new camera (ssg_graph_set_view) then keeps such a node's
+       outputs when its producers kept theirs (lightprobe's light list, shadow maps in
+       world space). 0 = the camera may matter: it prepares and runs again. The default
+       is 0 because the two mistakes differ: a node that forgets to say 1 only runs again
+       when the camera moves (slower), one that wrongly says 1 shows a stale image after a
+       camera move, which no ordinary run or parity test sees. tests/test_camera_deps.c
+       runs every node that says 1 at two cameras and requires the same bytes. */
+    int camera_independent;
     int supplied;        /* 1 = a source whose image the caller supplies
                             (ssg_graph_supply): the executor hands it to the node as
                             ctx->supplied, which must match output 0's shape */
