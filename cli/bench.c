@@ -1,6 +1,6 @@
 /* bench.c - `ssgraph bench FILE --sweep node.param=v1,v2,... [--sweep ...]`: the graph is
- * loaded and run for every combination of the sweeps' values (the cross product, first
- * sweep outermost), each cell over `frames` frames with every node prepared once; its
+ * loaded once (a live graph, once per scene) and run for every combination of the
+ * sweeps' values set on it (the cross product, first sweep outermost), each cell over `frames` frames with every node prepared once; its
  * frame time (median, min, max, average) and the metrics its compare nodes report go to
  * <out>/bench.csv (rewritten whole after every cell, so an interrupted bench keeps the
  * cells it finished), <out>/bench.json and <out>/bench.md (rewritten whole after every
@@ -107,14 +107,16 @@ void ssg_bench_free_cells(struct bench *b)
     b->cells = NULL;
 }
 
+/* A cell's run options: request q, output folder dir, its stats. */
+#define RUN_OPTIONS(q, dir, st)                                                             \
+    {.out_dir = (dir), .threads = (q)->threads, .frames = (q)->frames > 0 ? (q)->frames : 5, \
+     .stats = (st), .progress = isatty(fileno(stderr)) ? ssg_report_progress : NULL}
+
 static enum ssg_err run_graph_once(const char *graph, const struct ssg_overrides *ov,
                                    const struct ssg_bench_request *q, const char *dir,
                                    struct ssg_run_stats *stats, struct ssg_diags *d)
 {
-    struct ssg_run_options ro = {.out_dir = dir, .threads = q->threads,
-                                 .frames = q->frames > 0 ? q->frames : 5, .stats = stats,
-                                 .progress = isatty(fileno(stderr)) ? ssg_report_progress
-                                                                    : NULL};
+    struct ssg_run_options ro = RUN_OPTIONS(q, dir, stats);
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load(graph, ov, &g, d);
     if (!e)
@@ -236,9 +238,59 @@ static int check_sweeps(const struct bench *b)
     return ok;
 }
 
+/* A live graph (ssg_graph_keep) that the cells share: loaded once per scene, then each
+   cell's values set on it (ssg_graph_set: --set's parsing and checks, a fresh load's
+   bytes, tests/test_live.c), so a cell no longer pays the scene, its BVH and the
+   G-buffer's setup again. Only for runs of several frames (every node runs in each: the
+   frame time is the whole graph's, as with a fresh load) without --stereo or
+   --reference; anything the live graph cannot take (an input swept, a value refused, a
+   load that fails with the graph's own values) runs that cell from a fresh load, as
+   before, which then reports the error. */
+struct live_cells {
+    struct ssg_graph *g;
+    int scene;                          /* the scene value it was loaded with */
+    int applied[SSG_BENCH_MAX_SWEEPS];  /* value each sweep's key holds now, -1 = own */
+};
+
+static int live_fits(const struct ssg_bench_request *q)
+{
+    return !q->stereo && !q->reference && (q->frames <= 0 || q->frames > 1);
+}
+
+/* The live graph for cell c, loaded (or reloaded for another scene) and set to its values;
+   NULL when it cannot be. */
+static struct ssg_graph *live_graph(const struct bench *b, struct live_cells *l,
+                                    const struct cell *c)
+{
+    int scene = b->scene_axis ? c->index[0] : 0;
+    struct ssg_diags quiet = {0};
+    if (l->g && scene != l->scene)
+        ssg_graph_destroy(&l->g);
+    if (!l->g) {
+        int own[SSG_BENCH_MAX_SWEEPS];
+        for (int k = 0; k < SSG_BENCH_MAX_SWEEPS; k++)
+            own[k] = k == 0 && b->scene_axis ? scene : -1;
+        struct cell_sets cs;
+        struct ssg_overrides ov = cell_overrides(b, own, &cs);
+        if (ssg_graph_load(b->graph, &ov, &l->g, &quiet) || ssg_graph_keep(l->g, 0, &quiet))
+            ssg_graph_destroy(&l->g);
+        l->scene = scene;
+        for (int k = 0; k < SSG_BENCH_MAX_SWEEPS; k++)
+            l->applied[k] = -1;
+    }
+    for (int k = b->scene_axis; l->g && k < b->n; k++) {
+        if (l->applied[k] == c->index[k])
+            continue; /* unchanged: its node keeps its prepared constants */
+        if (ssg_graph_set(l->g, b->sweeps[k].key, ssg_bench_value(b, c, k), &quiet))
+            return NULL; /* the graph stays as it was (ssg_graph_set) */
+        l->applied[k] = c->index[k];
+    }
+    return l->g;
+}
+
 /* One cell: the graph with the user's --set and the cell's values, run `frames` times
    (for each eye with --stereo). */
-static void run_cell(const struct bench *b, int ci, struct cell *c)
+static void run_cell(const struct bench *b, struct live_cells *l, int ci, struct cell *c)
 {
     const struct ssg_bench_request *q = b->req;
     char dir[1100];
@@ -251,9 +303,12 @@ static void run_cell(const struct bench *b, int ci, struct cell *c)
         snprintf(dir, sizeof dir, "%s/cells/%d%s", q->out_dir, ci,
                  q->stereo ? (eye ? "/right" : "/left") : "");
         ov.eye_offset = q->stereo ? (eye ? 0.5f : -0.5f) * q->ipd : 0.0f;
+        struct ssg_graph *g = live_fits(q) ? live_graph(b, l, c) : NULL;
         if (q->reference) /* scored against the cached reference (bench_reference.c) */
             e = ssg_bench_run_compared(b, &ov, q->frames > 0 ? q->frames : 5,
                                        eye ? &st : &c->stats, &d);
+        else if (g)
+            e = ssg_graph_run(g, &(struct ssg_run_options)RUN_OPTIONS(q, dir, &c->stats), &d);
         else
             e = run_graph_once(b->graph, &ov, q, dir, eye ? &st : &c->stats, &d);
         if (!e && eye)
@@ -350,8 +405,9 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     }
     enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
+    struct live_cells live = {0};
     for (int ci = b.shard_index; ci < b.cell_count && !e; ci += b.shard_count) {
-        run_cell(&b, ci, &b.cells[ci]);
+        run_cell(&b, &live, ci, &b.cells[ci]);
         b.cells[ci].ran = 1;
         b.done++;
         failed += !b.cells[ci].ok;
@@ -365,6 +421,7 @@ int ssg_bench_main(const struct ssg_bench_request *req)
             break;
         }
     }
+    ssg_graph_destroy(&live.g);
     ssg_diags_print(&d, stderr);
     if (!e && failed >= 0 && b.done > 0 && !req->quiet) { /* "wrote" only what was */
         if (b.shard_count > 1)

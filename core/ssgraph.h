@@ -352,7 +352,9 @@ SSG_API enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
  * reads the camera sees it: the G-buffer, projections, ray tracers). A camera that cannot
  * be (a coordinate not finite, target = position, up parallel to the view or zero, fov_y
  * outside (0, 180)) is refused with why; a graph without a scene has no camera
- * (SSG_E_SCENE). On a kept graph every node prepares and runs again after a new camera. */
+ * (SSG_E_SCENE). On a kept graph a new camera makes every node prepare and run again
+ * except those that never read it (lightprobe, shadow maps, halton: camera_independent in
+ * docs/adding-a-node.md) whose producers are kept as well. */
 struct ssg_view {
     float position[3]; /* world, scene units */
     float target[3];   /* the world point looked at */

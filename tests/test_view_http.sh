@@ -93,6 +93,8 @@ cam="position=0,1,3.5&target=0,1,0&up=0,1,0&fov=40"
 expect_code 200 -H "$H" -d "$cam&preview=1" "$B/api/camera"
 grep -q '"last_run":"preview"' "$TMP/body" || fail "a drag did not run the preview"
 [ "$(client size img.out 1)" = "48 27 3" ] || fail "preview image is $(client size img.out 1)"
+# the full graph has the new camera but has not run it: asked for, it runs
+[ "$(client size img.out)" = "96 54 3" ] || fail "full image after a drag: $(client size img.out)"
 expect_code 200 -H "$H" -d "$cam&preview=0" "$B/api/camera"
 [ "$(client size img.out)" = "96 54 3" ] || fail "full image is $(client size img.out)"
 expect_code 400 -H "$H" -d "position=0,1,0&target=0,1,0&up=0,1,0&fov=40" "$B/api/camera"

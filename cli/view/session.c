@@ -53,6 +53,10 @@ static enum ssg_err run_graph(struct view_session *s, struct ssg_graph *g, int p
     struct ssg_run_options ro = {.out_dir = s->args->out_dir, .threads = s->args->threads,
                                  .stats = &s->stats, .no_files = 1};
     enum ssg_err e = ssg_graph_run(g, &ro, d);
+    if (preview)
+        s->preview_stale = 0;
+    else
+        s->full_stale = 0;
     s->last_preview = preview;
     s->generation++;
     set_error(s, d, e);
@@ -176,6 +180,7 @@ enum ssg_err view_session_set(struct view_session *s, const char *assignment,
         e = ssg_graph_set(s->preview, key, value, d); /* the same checks: it passes */
     if (!e)
         e = remember(s, key, value, d);
+    s->preview_stale = 1;
     return e ? e : run_graph(s, s->g, 0, d);
 }
 
@@ -193,6 +198,8 @@ enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *
         e = ssg_graph_set_view(s->preview, camera, d);
     if (e)
         return e;
+    s->full_stale = preview;
+    s->preview_stale = !preview;
     return run_graph(s, preview ? s->preview : s->g, preview, d);
 }
 
@@ -202,7 +209,11 @@ enum ssg_err view_session_image(struct view_session *s, const char *port, int pr
     struct ssg_graph *g = preview && s->preview ? s->preview : s->g;
     struct ssg_image *img = NULL, *copy = NULL;
     *out = NULL;
-    enum ssg_err e = ssg_graph_output(g, port, &img, d);
+    /* After a drag only the preview ran: the full graph runs when first asked for. */
+    int stale = g == s->g ? s->full_stale : s->preview_stale;
+    enum ssg_err e = stale ? run_graph(s, g, g != s->g, d) : SSG_OK;
+    if (!e)
+        e = ssg_graph_output(g, port, &img, d);
     if (e)
         return e;
     struct ssg_frame frame;

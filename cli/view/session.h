@@ -33,6 +33,10 @@ struct view_session {
     struct ssg_view camera;          /* the current one */
     struct ssg_run_stats stats;      /* the last run's */
     int last_preview;                /* 1 = the last run was the preview graph's */
+    int full_stale;                  /* 1 = the full graph has a camera it has not run
+                                        with (after a drag): it runs when asked for */
+    int preview_stale;               /* the same of the preview graph (after a set or a
+                                        release) */
     unsigned generation;             /* raised by every run and reload */
     char *error;                     /* the last failure's diagnostics as printed; NULL */
     struct ssg_cli_watch *watch;     /* the graph's files (watch.h); NULL = none */

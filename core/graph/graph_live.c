@@ -2,11 +2,13 @@
  * next, parameters changed on a loaded graph, and the kept images handed out.
  *
  * Correctness rule: a node's outputs are reused only while nothing they depend on has
- * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs,
- * and those of every node whose shapes the change moved; a run re-runs every node whose
+ * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs
+ * (only its kept outputs when its check_params says the run alone reads the changed
+ * parameter, node.h), and both of every node whose shapes the change moved; a run re-runs every node whose
  * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
  * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
- * camera (ssg_graph_set_view) makes every node prepare and run again. */
+ * camera (ssg_graph_set_view) makes every node prepare and run again except those that
+ * declare camera_independent (node.h); they still run when a producer runs. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,6 +76,17 @@ static void forget(struct ssg_graph *g, int p)
     l->kept[p] = 0;
 }
 
+/* Node p's parameters changed from `old` and its shapes did not: it runs again, and
+   prepares again unless its check_params says the run alone reads what changed. */
+static void dirty(struct ssg_graph *g, int p, const void *old)
+{
+    const struct gnode *n = &g->nodes[g->order[p]];
+    if (n->desc->check_params && n->desc->check_params(old, n->params) == SSG_RECOMPUTE_RUN)
+        g->live->kept[p] = 0; /* its readers follow: they see it ran (graph_run.c) */
+    else
+        forget(g, p);
+}
+
 void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
                         int used_gl)
 {
@@ -137,6 +150,44 @@ static int find_param(struct ssg_graph *g, const char *key, enum ssg_err *e,
     return i;
 }
 
+/* 1 when the set line `line` ("node.param=value", spaces allowed) sets `key`. */
+static int sets_key(const char *line, const char *key)
+{
+    while (*line == ' ' || *line == '\t')
+        line++;
+    size_t n = strlen(key);
+    if (strncmp(line, key, n))
+        return 0;
+    line += n;
+    while (*line == ' ' || *line == '\t')
+        line++;
+    return *line == '=';
+}
+
+/* Records a set that took as the graph's set lines, which the run's files record (write's
+   EXR metadata): it replaces the line of the same key where there is one, else it comes
+   last, as --set would have listed it. In the graph's arena, freed with it. */
+static enum ssg_err record_set(struct ssg_graph *g, const char *key, const char *text)
+{
+    char *line = ssg_arena_strndup(&g->arena, text, strlen(text));
+    if (!line)
+        return SSG_E_NOMEM;
+    for (int k = g->set_count - 1; k >= 0; k--)
+        if (sets_key(g->sets[k], key)) {
+            g->sets[k] = line;
+            return SSG_OK;
+        }
+    const char **sets = ssg_arena_alloc(&g->arena, (size_t)(g->set_count + 1) * sizeof *sets);
+    if (!sets)
+        return SSG_E_NOMEM;
+    for (int k = 0; k < g->set_count; k++)
+        sets[k] = g->sets[k];
+    sets[g->set_count] = line;
+    g->sets = sets;
+    g->set_count++;
+    return SSG_OK;
+}
+
 enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *value,
                            struct ssg_diags *diags)
 {
@@ -164,6 +215,8 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
     e = ssg_graph_apply_set(g, text, diags);
     if (!e)
         e = ssg_graph_reinfer(g, diags);
+    if (!e)
+        e = record_set(g, key, text);
     if (e) { /* the graph stays as it was: the old value, the old shapes */
         struct ssg_diags quiet = {0};
         memcpy(n->params, old, size);
@@ -171,9 +224,11 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
     }
     for (int p = 0; !e && g->live && p < g->order_count; p++) {
         const struct gnode *m = &g->nodes[g->order[p]];
-        if (m == n || memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
+        if (memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
             memcmp(shapes[g->order[p]][1], m->out_shape, sizeof shapes[0][1]))
             forget(g, p);
+        else if (m == n)
+            dirty(g, p, old);
     }
     free(shapes), free(old), free(text);
     return e;
@@ -278,10 +333,12 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
     g->frame.fov_y = v->fov_y;
     struct ssg_diags quiet = {0};
     ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
-    /* Every node may read the camera (the G-buffer, the projection in prepare(), the ray
-       tracers' frames): all prepare and run again. */
+    /* A node may read the camera (the G-buffer, the projection in prepare(), the ray
+       tracers' frames): it prepares and runs again unless it declares that it does not.
+       The readers of a node that runs follow it (graph_run.c can_skip). */
     for (int p = 0; g->live && p < g->order_count; p++)
-        forget(g, p);
+        if (!g->nodes[g->order[p]].desc->camera_independent)
+            forget(g, p);
     return SSG_OK;
 }
 

@@ -121,6 +121,21 @@ static void log_files(const struct run *r, const struct gnode *n)
         say(r, "wrote %s/%s", out_dir(r), files[i]);
 }
 
+/* The profile row's bytes and flops of the node at p (exec.h, ssg_node_cost). */
+static void set_cost(struct run *r, int p, const struct ssg_node_ctx *ctx)
+{
+    const struct gnode *n = &r->g->nodes[r->g->order[p]];
+    struct ssg_node_cost cost;
+    ssg_node_cost_of(n->desc, ctx, r->consts[p] ? r->consts[p] : n->params, n->extra_count,
+                     &cost);
+    for (int k = 0; k < n->desc->output_count; k++) /* unread on_demand: unwritten */
+        if (!n->out_img[k])
+            cost.bytes -= (double)n->out_shape[k].width * n->out_shape[k].height *
+                          n->out_shape[k].channels * sizeof(float);
+    r->prof.rows[p].bytes = cost.bytes;
+    r->prof.rows[p].flops = cost.flops;
+}
+
 /* Runs the node at position p; in the first frame it prepares it first (the timing of a
    one-frame run includes prepare, as ssg_node_execute's). A sink first runs in the last
    frame and is prepared there. */
@@ -150,25 +165,19 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .out_shape = n->out_shape, .extra_shape = extra_shape,
                                .run = r->opt, .scratch = &r->scratch[p],
                                .graph_path = g->path, .sets = (const char *const *)g->sets,
-                               .set_count = g->set_count, .supplied = n->supplied};
+                               .set_count = g->set_count, .supplied = n->supplied,
+                               .frame_index = frame,
+                               .prev_camera = g->scene ? &g->scene->camera : NULL,
+                               .history_reset = frame == 0};
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
         e = ssg_node_prepare(n->desc, &ctx, n->params, &r->consts[p]);
         prepare_ms = r->prof.rows[p].prepare_ms = ssg_now_ms() - t0;
         r->prepared[p] = 1;
-        if (!e) {
-            struct ssg_node_cost cost;
-            ssg_node_cost_of(n->desc, &ctx, r->consts[p] ? r->consts[p] : n->params,
-                             n->extra_count, &cost);
-            for (int k = 0; k < n->desc->output_count; k++) /* unread on_demand: unwritten */
-                if (!n->out_img[k])
-                    cost.bytes -= (double)n->out_shape[k].width * n->out_shape[k].height *
-                                  n->out_shape[k].channels * sizeof(float);
-            r->prof.rows[p].bytes = cost.bytes;
-            r->prof.rows[p].flops = cost.flops;
-        }
     }
+    if (!e) /* every run: a kept graph's node may run on constants of an earlier one */
+        set_cost(r, p, &ctx);
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
                                   &r->t[p]);

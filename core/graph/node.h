@@ -127,6 +127,16 @@ struct ssg_node_ctx {
                                       (NULL for a node without consts) */
     const struct ssg_image *supplied; /* a `supplied` node's image from the caller, of
                                          output 0's shape; NULL = none supplied */
+    /* Time (docs/time.md). A run of N frames is a sequence: frame_index 0 .. N-1 at
+       time_s = frame_index / the scene's frame rate. prev_camera is the camera of the
+       frame before (motion vectors reproject through it); it is the current camera in
+       the first frame and after a cut. history_reset is 1 when no earlier frame may be
+       reused (the first frame, a cut, a new size or a change that invalidates history);
+       a node that keeps history then starts afresh. */
+    int frame_index;
+    double time_s;
+    const struct ssg_camera *prev_camera; /* NULL without a scene */
+    int history_reset;
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate
@@ -162,6 +172,31 @@ struct ssg_io {
     const unsigned *extra_types;             /* type of each extra input */
 };
 
+/* What a parameter change makes a kept graph's node redo (ssg_graph_set; the descriptor's
+ * check_params, after vkdt's module check_params). Its readers run again in either case. */
+enum ssg_recompute {
+    SSG_RECOMPUTE_RUN = 1,     /* run again with the new value; prepare()'s constants stand */
+    SSG_RECOMPUTE_PREPARE = 2, /* prepare() and run again: any change of a node without
+                                  check_params, and any change that moves a shape */
+};
+
+/* 1 when the `size` bytes of two parameter structs differ at most in [offset, offset +
+ * len): a check_params's test "only this field changed" (SSG_PARAMS_ONLY_CHANGED). Bytewise
+ * is exact here: old_params is a copy of the node's block taken just before a set wrote
+ * one field into it, so padding and untouched fields hold the same bytes in both. */
+static inline int ssg_params_only_changed(const void *old_params, const void *new_params,
+                                          size_t size, size_t offset, size_t len)
+{
+    const unsigned char *a = old_params, *b = new_params;
+    for (size_t i = 0; i < size; i++)
+        if ((i < offset || i >= offset + len) && a[i] != b[i])
+            return 0;
+    return 1;
+}
+#define SSG_PARAMS_ONLY_CHANGED(type, old_params, new_params, member) \
+    ssg_params_only_changed(old_params, new_params, sizeof(type), offsetof(type, member), \
+                            sizeof(((const type *)0)->member))
+
 struct ssg_node_desc {
     const char *name;    /* "ssao" */
     const char *summary; /* one line for `ssgraph nodes` */
@@ -192,6 +227,17 @@ struct ssg_node_desc {
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
+    /* 1 = nothing the node computes reads the camera: neither check, prepare, run_cpu nor
+       run_gl (nor its shaders, nor a helper it calls) reads ctx->frame's fov_y, near_z or
+       far_z, ssg_frame_projection, or ctx->scene->camera, directly or through view-space
+       data it makes itself. A new camera (ssg_graph_set_view) then keeps such a node's
+       outputs when its producers kept theirs (lightprobe's light list, shadow maps in
+       world space). 0 = the camera may matter: it prepares and runs again. The default
+       is 0 because the two mistakes differ: a node that forgets to say 1 only runs again
+       when the camera moves (slower), one that wrongly says 1 shows a stale image after a
+       camera move, which no ordinary run or parity test sees. tests/test_camera_deps.c
+       runs every node that says 1 at two cameras and requires the same bytes. */
+    int camera_independent;
     int supplied;        /* 1 = a source whose image the caller supplies
                             (ssg_graph_supply): the executor hands it to the node as
                             ctx->supplied, which must match output 0's shape */
@@ -224,6 +270,14 @@ struct ssg_node_desc {
        run; both backends read these same bytes, so what depends only on parameters and
        shapes is computed here and never twice. Returns SSG_OK or ssg_node_fail(...). */
     enum ssg_err (*prepare)(const struct ssg_node_ctx *ctx, const void *params, void *consts);
+    /* Optional (vkdt's check_params): what a change of the parameters from old_params to
+       new_params (one ssg_graph_set on a kept graph) requires of this node, an enum
+       ssg_recompute. SSG_RECOMPUTE_RUN only when every changed parameter is read by
+       run_cpu and run_gl from ctx->params alone (on GL: a row bound as p_<field>, not
+       host_only), never by check, prepare or from a copy in the consts: the run then
+       sees the new value with the old constants. NULL = any change prepares again, the
+       safe default; worth declaring where prepare() is costly. */
+    unsigned (*check_params)(const void *old_params, const void *new_params);
     /* Optional. Floating-point operations one run does per pixel of output 0 (a multiply,
        an add, a compare-and-select each count 1; a division or square root 1; the
        polynomial exp and log as their operations), from the parameters and the input

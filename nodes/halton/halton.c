@@ -167,6 +167,7 @@ const struct ssg_node_desc ssg_node_halton = {
     SSG_NODE_PARAMS(params, struct ssg_halton_params),
     .consts_size = sizeof(struct ssg_halton_consts),
     .check = check,
+    .camera_independent = 1, /* kernels and rotations from the parameters and the seed */
     .prepare = prepare,
     .run_cpu = ssg_halton_run_cpu,
     .run_gl = ssg_halton_run_gl,

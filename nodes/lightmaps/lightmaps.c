@@ -118,6 +118,7 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
     .consts_size = sizeof(struct ssg_lightmaps_consts),
     .needs_scene = 1,
+    .camera_independent = 1, /* the lights' own views, in world space */
     .check = check,
     .check_scene = check_scene,
     .prepare = prepare,

@@ -103,6 +103,7 @@ const struct ssg_node_desc ssg_node_lightprobe = {
     SSG_NODE_PARAMS(params, struct ssg_lightprobe_params),
     .consts_size_of = consts_size_of,
     .needs_scene = 1,
+    .camera_independent = 1, /* the environment map alone makes the lights */
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_lightprobe_run_cpu,

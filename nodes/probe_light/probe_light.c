@@ -77,6 +77,16 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     return SSG_OK;
 }
 
+/* noise_radius is read by the runs alone (p_noise_radius on GL, ctx->params on the CPU):
+   a change of it alone keeps prepare()'s camera, noise tile and rotations (node.h). */
+static unsigned check_params(const void *old_params, const void *new_params)
+{
+    return SSG_PARAMS_ONLY_CHANGED(struct ssg_probe_light_params, old_params, new_params,
+                                   noise_radius)
+               ? SSG_RECOMPUTE_RUN
+               : SSG_RECOMPUTE_PREPARE;
+}
+
 static void rotate(const float rot[9], const float w[3], float out[3])
 {
     for (int i = 0; i < 3; i++)
@@ -151,6 +161,7 @@ const struct ssg_node_desc ssg_node_probe_light = {
     .needs_scene = 1,
     .check = check,
     .prepare = prepare,
+    .check_params = check_params,
     .flops_per_pixel = probe_light_flops,
     .run_cpu = ssg_probe_light_run_cpu,
     .run_gl = ssg_probe_light_run_gl,

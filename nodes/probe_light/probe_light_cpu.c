@@ -21,6 +21,8 @@ struct job {
     float offset_world;    /* offset in depth units: offset texels x 2 radius / res */
     float slope_world;     /* slope_offset texels in depth units */
     float normal_world;    /* normal_offset texels in scene units */
+    float noise_radius;    /* from ctx->params, not the consts: a change of it alone
+                              reruns without prepare() (check_params, probe_light.c) */
 };
 
 struct chunk {
@@ -51,8 +53,8 @@ load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k
         k->nx[i] = nrm->data[at + i], k->ny[i] = nrm->data[plane + at + i];
         k->nz[i] = nrm->data[2 * plane + at + i];
         int cell = row + (x0 + i) % tile;
-        k->jx[i] = j->c->p.noise_radius * j->c->noise[cell];
-        k->jy[i] = j->c->p.noise_radius * j->c->noise[cells + cell];
+        k->jx[i] = j->noise_radius * j->c->noise[cell];
+        k->jy[i] = j->noise_radius * j->c->noise[cells + cell];
         k->sum[0][i] = k->sum[1][i] = k->sum[2][i] = 0.0f;
         k->lum_lit[i] = k->lum_all[i] = 0.0f;
     }
@@ -176,8 +178,9 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
         ssg_probe_light_frame(c, dir, c->frame_res, frames + SSG_PROBE_LIGHT_FRAME * i);
     }
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
+    const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
-                    c->offset_world, c->slope_world, c->normal_world};
+                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
     return SSG_OK;

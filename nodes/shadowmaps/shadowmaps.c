@@ -47,6 +47,7 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_shadowmaps_params),
     .needs_scene = 1,
+    .camera_independent = 1, /* world-space maps around the scene's bounding sphere */
     .check = check,
     .run_cpu = ssg_shadowmaps_run_cpu,
     .run_gl = ssg_shadowmaps_run_gl,

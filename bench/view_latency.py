@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""view_latency.py - how quickly `ssgraph view` answers what the page does (issue 31's
+acceptance: a parameter change shows its image within 150 ms, a camera drag keeps at least
+10 updates a second). Starts the viewer, then times over HTTP, as the page does them:
+  set      POST /api/set of a new value, then GET /api/image of the shown port (the page's
+           whole round trip), and which nodes ran
+  drag     POST /api/camera with preview=1 (an orbit step), then the preview image: the
+           updates a second a drag keeps
+  release  POST /api/camera with preview=0, then the full image
+Prints the median, minimum and maximum of each, in ms. Measures; asserts nothing.
+
+  bench/view_latency.py [--bin build/ssgraph] [--graph graphs/ssdo_realtime.graph]
+                        [--size 640x360] [--param do.radius] [--values 0.3,0.4,...]
+                        [--port img.out] [--runs 21]
+"""
+import argparse
+import json
+import math
+import re
+import statistics
+import subprocess
+import sys
+import time
+import urllib.request
+
+
+def start(args):
+    proc = subprocess.Popen([args.bin, "view", args.graph, "--size", args.size, "--threads",
+                             str(args.threads)], stdout=subprocess.PIPE, text=True)
+    line = proc.stdout.readline()
+    m = re.search(r"http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]+)", line)
+    if not m:
+        proc.kill()
+        sys.exit("the viewer printed no URL: %r" % line)
+    return proc, "http://127.0.0.1:%s" % m.group(1), m.group(2)
+
+
+def request(base, token, path, body=None):
+    req = urllib.request.Request(base + path, data=body.encode() if body else None,
+                                 headers={"X-SSG-Token": token})
+    with urllib.request.urlopen(req, timeout=120) as r:
+        return r.read()
+
+
+def timed(fn):
+    t0 = time.perf_counter()
+    out = fn()
+    return (time.perf_counter() - t0) * 1000.0, out
+
+
+def report(name, times):
+    print("%-8s median %7.1f ms   min %7.1f   max %7.1f   (%d runs)" %
+          (name, statistics.median(times), min(times), max(times), len(times)))
+
+
+def orbit(camera, angle):
+    """The camera turned by angle (radians) about its target's vertical axis."""
+    p, t = camera["position"], camera["target"]
+    dx, dz = p[0] - t[0], p[2] - t[2]
+    c, s = math.cos(angle), math.sin(angle)
+    pos = [t[0] + c * dx - s * dz, p[1], t[2] + s * dx + c * dz]
+    fmt = lambda v: ",".join("%.6g" % x for x in v)
+    return "position=%s&target=%s&up=%s&fov=%g" % (fmt(pos), fmt(t), fmt(camera["up"]),
+                                                  camera["fov_y"])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", default="build/ssgraph")
+    ap.add_argument("--graph", default="graphs/ssdo_realtime.graph")
+    ap.add_argument("--size", default="640x360")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--param", default="do.radius")
+    ap.add_argument("--values", default="0.3,0.4,0.5,0.6")
+    ap.add_argument("--port", default="img.out")
+    ap.add_argument("--runs", type=int, default=21)
+    args = ap.parse_args()
+    proc, base, token = start(args)
+    try:
+        values = args.values.split(",")
+        sets, drags, releases, ran = [], [], [], set()
+        for i in range(args.runs):
+            body = "%s=%s" % (args.param, values[i % len(values)])
+            ms, state = timed(lambda: request(base, token, "/api/set", body))
+            ms2, _ = timed(lambda: request(base, token, "/api/image?port=" + args.port))
+            sets.append(ms + ms2)
+            ran.add(" ".join(n["name"] for n in json.loads(state)["nodes"] if n["ran"]))
+        camera = json.loads(request(base, token, "/api/state"))["camera"]
+        for i in range(args.runs):
+            body = orbit(camera, 0.02 * (i + 1)) + "&preview=1"
+            ms, _ = timed(lambda: request(base, token, "/api/camera", body))
+            ms2, _ = timed(lambda: request(base, token, "/api/image?preview=1&port=" + args.port))
+            drags.append(ms + ms2)
+        for i in range(max(3, args.runs // 4)):
+            body = orbit(camera, -0.02 * (i + 1)) + "&preview=0"
+            ms, _ = timed(lambda: request(base, token, "/api/camera", body))
+            ms2, _ = timed(lambda: request(base, token, "/api/image?port=" + args.port))
+            releases.append(ms + ms2)
+    finally:
+        proc.terminate()
+        proc.wait()
+    print("%s at %s, %d threads; %s changes, %s shown" % (args.graph, args.size, args.threads,
+                                                        args.param, args.port))
+    report("set", sets)
+    print("         nodes that ran: %s" % " | ".join(sorted(ran)))
+    report("drag", drags)
+    print("         %.1f updates a second (median)" % (1000.0 / statistics.median(drags)))
+    report("release", releases)
+
+
+if __name__ == "__main__":
+    main()
