@@ -325,9 +325,11 @@ SSG_API enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *
  * ssg_graph_set changes one parameter, key "node.param", value as written in a graph file
  * ("0.25", "smooth", "true"), with the parsing and checks of --set; it reports errors (an
  * unknown node or parameter, a value out of range, a shape the new value makes impossible)
- * as ssg_graph_param and --set do, and then leaves the graph as it was. It marks the node,
- * and every node whose shapes it changed, to prepare and run again; their readers run
- * again because their producers ran. Whatever the sequence of sets and runs, a run gives
+ * at the node's definition in its graph file ("graphs/x.graph:21:7: error: do.radius=-3:
+ * parameter 'radius' ... (node 'do' is defined here)"), and then leaves the graph as it
+ * was. It marks the node, and every node whose shapes it changed, to run again, and to
+ * prepare again unless the node declares the change needs none (check_params,
+ * docs/adding-a-node.md); their readers run again because their producers ran. Whatever the sequence of sets and runs, a run gives
  * the bytes of a fresh load with the final settings (tests/test_live.c).
  *
  * ssg_graph_output hands out a copy of an output's latest image, port "node.port", as a new

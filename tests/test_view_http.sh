@@ -82,7 +82,7 @@ for port_name in u.out img.out; do
         >"$TMP/diff.txt" 2>&1 || fail "the viewer's $port_name is not the CLI's: $(tail -3 "$TMP/diff.txt")"
 done
 expect_code 400 -H "$H" -d "do.radius=-3" "$B/api/set"
-grep -q 'ssg_graph_set>:1:[0-9]*: error: .*radius.*expects' "$TMP/body" ||
+grep -q 'ssdo_realtime.graph:[0-9]*:[0-9]*: error: do.radius=-3: .*radius.*expects' "$TMP/body" ||
     fail "a refused value names no position: $(cat "$TMP/body")"
 [ "$(client param do radius)" = 0.3 ] || fail "a refused value changed do.radius"
 expect_code 400 -H "$H" -d "nosuch.radius=1" "$B/api/set"

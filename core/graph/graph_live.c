@@ -188,6 +188,25 @@ static enum ssg_err record_set(struct ssg_graph *g, const char *key, const char 
     return SSG_OK;
 }
 
+/* The errors of a refused set from index `first` on point at the node's definition, the
+   place to change it for good, and quote the set ("do.radius=-3: parameter ..."). */
+static void at_node(const struct gnode *n, const char *text, struct ssg_diags *diags,
+                    int first)
+{
+    int line, column;
+    ssg_loc_linecol(n->loc, &line, &column);
+    for (int i = first; diags && n->loc.src && i < diags->count; i++) {
+        struct ssg_diag *d = &diags->items[i];
+        char message[sizeof d->message];
+        snprintf(message, sizeof message, "%s: %s (node '%s' is defined here)", text,
+                 d->message, n->name);
+        snprintf(d->message, sizeof d->message, "%s", message);
+        snprintf(d->file, sizeof d->file, "%s", n->loc.src->path);
+        d->line = line;
+        d->column = column;
+    }
+}
+
 enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *value,
                            struct ssg_diags *diags)
 {
@@ -212,7 +231,10 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
         memcpy(shapes[k][1], g->nodes[k].out_shape, sizeof shapes[k][1]);
     }
     snprintf(text, text_len, "%s=%s", key, value);
+    int first = diags ? diags->count : 0;
     e = ssg_graph_apply_set(g, text, diags);
+    if (e)
+        at_node(n, text, diags, first);
     if (!e)
         e = ssg_graph_reinfer(g, diags);
     if (!e)
