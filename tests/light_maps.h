@@ -22,8 +22,8 @@ static inline float px_at(const struct ssg_image *im, int c, int x, int y)
 static inline void gbuffer_of(const struct ssg_scene *s, const struct ssg_frame *frame,
                               struct ssg_image *out[SSG_GBUFFER_OUTPUTS])
 {
-    for (int i = 0; i < SSG_GBUFFER_OUTPUTS; i++) /* back: on demand, not read here */
-        out[i] = i == SSG_GBUFFER_OUT_BACK
+    for (int i = 0; i < SSG_GBUFFER_OUTPUTS; i++) /* back, motion: on demand, not read */
+        out[i] = i == SSG_GBUFFER_OUT_BACK || i == SSG_GBUFFER_OUT_MOTION
                      ? NULL
                      : ssg_image_create(frame->width, frame->height,
                                         i == SSG_GBUFFER_OUT_DEPTH ? 1 : 3);

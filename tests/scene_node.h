@@ -94,17 +94,21 @@ static inline void *node_params(const struct ssg_node_desc *desc, const char *co
 
 /* Runs the node on `backend` with the scene; `in` in port order (NULL = unconnected),
    `out` allocated by the caller to the node's output shapes. On GL the outputs come back
-   to the CPU and every GL copy is freed. Returns the node's error (printed). */
-static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
-                                          const struct ssg_scene *scene,
-                                          const struct ssg_frame *frame, const void *params,
-                                          const struct ssg_image *const *in,
-                                          struct ssg_image *const *out,
-                                          enum ssg_backend backend)
+   to the CPU and every GL copy is freed. Returns the node's error (printed). prev is the
+   previous frame's camera (ctx->prev_camera; NULL = the scene's, a first frame). */
+static inline enum ssg_err node_run_scene_prev(const struct ssg_node_desc *desc,
+                                               const struct ssg_scene *scene,
+                                               const struct ssg_camera *prev,
+                                               const struct ssg_frame *frame,
+                                               const void *params,
+                                               const struct ssg_image *const *in,
+                                               struct ssg_image *const *out,
+                                               enum ssg_backend backend)
 {
     struct ssg_diags d = {0};
     struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,
-                               .scene = scene, .out_dir = ".", .diags = &d};
+                               .scene = scene, .out_dir = ".", .diags = &d,
+                               .prev_camera = prev ? prev : scene ? &scene->camera : NULL};
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(desc, &io, &shapes);
@@ -129,6 +133,16 @@ static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
     }
     ssg_diags_print(&d, stderr);
     return e;
+}
+
+static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
+                                          const struct ssg_scene *scene,
+                                          const struct ssg_frame *frame, const void *params,
+                                          const struct ssg_image *const *in,
+                                          struct ssg_image *const *out,
+                                          enum ssg_backend backend)
+{
+    return node_run_scene_prev(desc, scene, NULL, frame, params, in, out, backend);
 }
 
 #endif

@@ -35,7 +35,7 @@ static const float env_radiance[3] = {0.1f, 0.2f, 0.25f};
 static const float sphere_c[3] = {1.2f, 0.9f, -3.0f}, sphere_r = 0.6f;
 
 struct gbuf {
-    struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* back: NULL, not read here */
+    struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* back, motion: NULL, not read */
 };
 
 static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *g,
@@ -55,7 +55,8 @@ static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *
         for (size_t k = 0; k < (size_t)W * H * (size_t)channels[i]; k++)
             g->out[i]->data[k] = -123.0f; /* outputs arrive with undefined contents */
     }
-    g->out[SSG_GBUFFER_OUT_BACK] = NULL; /* an on-demand output nobody reads */
+    g->out[SSG_GBUFFER_OUT_BACK] = NULL; /* on-demand outputs nobody reads */
+    g->out[SSG_GBUFFER_OUT_MOTION] = NULL;
     struct ssg_io io = {.out = g->out};
     enum ssg_err e = ssg_node_gbuffer.prepare(&ctx, &p, &c);
     return e ? e : ssg_node_gbuffer.run_cpu(&ctx, &c, &io);

@@ -29,8 +29,8 @@ enum { W = 96, H = 72 };
 static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0};
 
 struct gbuf {
-    struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* gbuffer's outputs in port order (back:
-                                                   NULL, not read) */
+    struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* gbuffer's outputs in port order (back,
+                                                   motion: NULL, not read) */
     float rot[9], eye[3];     /* view -> world */
 };
 

@@ -62,8 +62,8 @@ static const char *big_floor =
 
 /* The G-buffer inputs of the node, and world points and normals for the expectations. */
 struct gbuf {
-    struct ssg_image *img[SSG_GBUFFER_OUTPUTS]; /* gbuffer outputs, in its port order (back:
-                                                   NULL, not read) */
+    struct ssg_image *img[SSG_GBUFFER_OUTPUTS]; /* gbuffer outputs, in its port order (back,
+                                                   motion: NULL, not read) */
     double p[P][3], n[P][3];  /* world point and normal per pixel (0 = background) */
     int fg[P];
 };
@@ -91,7 +91,7 @@ static void make_gbuffer(const struct ssg_scene *s, struct gbuf *g)
     ssg_params_defaults(ssg_node_gbuffer.params, &p);
     for (int i = 0; i < 6; i++)
         g->img[i] = ssg_image_create(W, H, channels[i]);
-    g->img[SSG_GBUFFER_OUT_BACK] = NULL;
+    g->img[SSG_GBUFFER_OUT_BACK] = g->img[SSG_GBUFFER_OUT_MOTION] = NULL;
     struct ssg_io io = {.out = g->img};
     CHECK_EQ(ssg_node_gbuffer.prepare(&ctx, &p, &c), SSG_OK);
     CHECK_EQ(ssg_node_gbuffer.run_cpu(&ctx, &c, &io), SSG_OK);

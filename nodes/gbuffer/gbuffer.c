@@ -2,7 +2,47 @@
  * shading by ray casting. The method, its sources and conventions: README.md here. */
 #include "gbuffer.h"
 
+#include <string.h>
+
 #include "common/trace.h"
+#include "scene/scene.h"
+
+/* 1 when two cameras have the very same pose (position, target, up bit for bit). */
+static int same_pose(const struct ssg_camera *a, const struct ssg_camera *b)
+{
+    return !memcmp(a->position, b->position, sizeof a->position) &&
+           !memcmp(a->target, b->target, sizeof a->target) && !memcmp(a->up, b->up, sizeof a->up);
+}
+
+/* The previous camera seen from this one (gbuffer.h, README.md `motion`): a point at view
+   position q here is at world eye + rot^T q, so at rp (eye - ep + rot^T q) in the
+   previous view (rp, ep that camera's rotation and position), summed in double. The same
+   pose gives the exact identity and no move rather than the float rows' rounding (1e-7),
+   so a still camera has exactly zero motion. The previous focal length is the frame's
+   unless the previous camera's field of view differs (a zoom along a path). */
+static void prepare_motion(const struct ssg_node_ctx *ctx, struct ssg_gbuffer_consts *c)
+{
+    const struct ssg_camera *cur = &ctx->scene->camera;
+    const struct ssg_camera *prev = ctx->prev_camera ? ctx->prev_camera : cur;
+    struct ssg_frame pf = *ctx->frame;
+    if (prev->fov_y != cur->fov_y)
+        pf.fov_y = prev->fov_y;
+    c->prev_f = ssg_frame_projection(&pf).f;
+    float rp[9], ep[3];
+    ssg_camera_frame(prev, rp, ep);
+    int same = same_pose(prev, cur);
+    for (int r = 0; r < 3; r++) {
+        double move = 0.0;
+        for (int k = 0; k < 3; k++) {
+            double m = 0.0;
+            for (int i = 0; i < 3; i++)
+                m += (double)rp[3 * r + i] * c->rot[3 * k + i];
+            c->m_rot[3 * r + k] = same ? (float)(r == k) : (float)m;
+            move += (double)rp[3 * r + k] * ((double)c->eye[k] - ep[k]);
+        }
+        c->m_move[r] = same ? 0.0f : (float)move;
+    }
+}
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
@@ -20,6 +60,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->inv_f = 1.0f / c->proj.f;
     c->near_z = ctx->frame->near_z;
     c->far_z = ctx->frame->far_z;
+    prepare_motion(ctx, c);
     return SSG_OK;
 }
 

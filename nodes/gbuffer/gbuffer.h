@@ -25,7 +25,12 @@
     X(SSG_GBUFFER_OUT_BACK, "back", SSG_T_SCALAR,                                          \
       "linear depth along -z of the next surface behind the first on the pixel's "        \
       "ray (depth * (1 + 1e-4) < back <= far); +inf where there is none, 0 = "             \
-      "background", .on_demand = 1) /* only computed when something reads it */
+      "background", .on_demand = 1) /* only computed when something reads it */        \
+    X(SSG_GBUFFER_OUT_MOTION, "motion", SSG_T_VECTOR,                                      \
+      "screen motion to the previous frame (ctx->prev_camera): x, y = the surface "       \
+      "point's previous pixel position minus this one, in pixels (+x right, +y down); "   \
+      "z = its view depth in the previous camera; 0 = background",                        \
+      .on_demand = 1)
 SSG_PORT_ENUM(ssg_gbuffer_output, SSG_GBUFFER_OUT, SSG_GBUFFER_OUTPUTS);
 
 /* The second layer (`back`) is the nearest surface whose depth exceeds depth + depth *
@@ -58,6 +63,12 @@ struct ssg_gbuffer_consts {
     float rot[9];               /* world -> view rotation, row-major */
     float eye[3];               /* camera position, world */
     float near_z, far_z;        /* visible depth range, scene units */
+    /* Motion (README.md, `motion`): the point at view position q of this camera is at
+       m_rot q + m_move in the previous camera's view (prepare_motion, gbuffer.c). */
+    float m_rot[9];             /* this view -> the previous view, row-major */
+    float m_move[3];            /* this camera's position in the previous view */
+    float prev_f;               /* the previous frame's focal length, pixels (its
+                                   principal point is proj's: the same image size) */
 };
 
 enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

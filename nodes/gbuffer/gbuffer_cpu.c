@@ -32,6 +32,7 @@ struct job {
     const struct ssg_scene *scene;
     float *pos[3], *nrm[3], *depth, *alb[3], *dir[3], *env[3]; /* output planes */
     float *back;                  /* the second layer's plane; NULL = nobody reads it */
+    float *motion[3];             /* the motion planes; NULL = nobody reads them */
     int w, h;
 };
 
@@ -281,6 +282,35 @@ static void store(const struct job *j, struct chunk *k, size_t o)
         store_plane(to[p] + o, from[p], n);
 }
 
+/* Motion to the previous frame (README.md, `motion`) into px, py, pz (after store).
+   q = the hit t (vx, vy, -1) in the previous view, divided by t, so that for the same
+   camera (m_rot the identity, m_move 0) q is the ray itself and the motion is exactly
+   0; the previous pixel minus this one is f' (q.xy / -q.z - v) + (f' - f) v (y flipped:
+   rows go down), which keeps the rounding relative to the motion, not to the pixel's
+   distance from the centre. A point nearer than near in the previous view (behind its
+   camera, z <= 0, included) had no pixel there: x = y = 0, z as it is. gbuffer_motion.glsl
+   has the same operations. */
+static void motion(const struct job *j, struct chunk *k)
+{
+    const struct ssg_gbuffer_consts *c = j->c;
+    const float *m = c->m_rot, *mv = c->m_move;
+    const float fp = c->prev_f, df = c->prev_f - c->proj.f, near_z = c->near_z;
+    for (int s = 0; s < k->count; s++) {
+        float t = k->t[s], vx = k->vx[s], vy = k->vy[s];
+        float inv_t = t > 0.0f ? 1.0f / t : 0.0f;
+        float qx = m[0] * vx + m[1] * vy - m[2] + mv[0] * inv_t;
+        float qy = m[3] * vx + m[4] * vy - m[5] + mv[1] * inv_t;
+        float zq = 0.0f - (m[6] * vx + m[7] * vy - m[8] + mv[2] * inv_t);
+        float z = t > 0.0f ? t * zq : 0.0f;
+        int seen = z >= near_z;
+        float d = seen ? zq : 1.0f;
+        float mx = fp * (qx / d - vx) + df * vx, my = 0.0f - (fp * (qy / d - vy) + df * vy);
+        k->px[s] = seen ? mx : 0.0f;
+        k->py[s] = seen ? my : 0.0f;
+        k->pz[s] = z;
+    }
+}
+
 /* The environment output of the segment (after store: it reuses lr, lg, lb). */
 static void store_environment(const struct job *j, struct chunk *k, size_t o)
 {
@@ -288,6 +318,15 @@ static void store_environment(const struct job *j, struct chunk *k, size_t o)
     store_plane(j->env[0] + o, k->lr, k->count);
     store_plane(j->env[1] + o, k->lg, k->count);
     store_plane(j->env[2] + o, k->lb, k->count);
+}
+
+/* The motion output of the segment (after store: it reuses px, py, pz). */
+static void store_motion(const struct job *j, struct chunk *k, size_t o)
+{
+    motion(j, k);
+    store_plane(j->motion[0] + o, k->px, k->count);
+    store_plane(j->motion[1] + o, k->py, k->count);
+    store_plane(j->motion[2] + o, k->pz, k->count);
 }
 
 static void rows(void *user, int y0, int y1)
@@ -309,6 +348,8 @@ static void rows(void *user, int y0, int y1)
             store_environment(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
             if (j->back)
                 store_plane(j->back + (size_t)y * (size_t)j->w + (size_t)x0, k.back, k.count);
+            if (j->motion[0])
+                store_motion(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
         }
 #if defined(__SSE__)
     _mm_sfence(); /* the streaming stores are visible before the band counts as done */
@@ -331,6 +372,9 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     }
     j.depth = ssg_image_plane(out[SSG_GBUFFER_OUT_DEPTH], 0);
     j.back = out[SSG_GBUFFER_OUT_BACK] ? out[SSG_GBUFFER_OUT_BACK]->data : NULL;
+    for (int a = 0; a < 3; a++) /* on demand: only when something reads it */
+        j.motion[a] = out[SSG_GBUFFER_OUT_MOTION] ? ssg_image_plane(out[SSG_GBUFFER_OUT_MOTION], a)
+                                                  : NULL;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
     return SSG_OK;
 }

@@ -3,7 +3,8 @@
  * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
  * its triangle and writes the first layer's six outputs with the CPU kernel's formulas.
  * When `back` is read, a depth peel (gbuffer_peel.glsl) and a second cast
- * (gbuffer_back.glsl) give the second layer. The scene is
+ * (gbuffer_back.glsl) give the second layer; when `motion` is read, a pass of its own
+ * (gbuffer_motion.glsl) makes it from the first layer's depth. The scene is
  * uploaded per run; the lights and the environment's irradiance table go in as they are
  * in the scene. gbuffer.glsl reads the parameters by the table (#pragma ssg_params); the
  * passes write different outputs, so each names its images. */
@@ -106,6 +107,25 @@ static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffe
     return ssg_gl_pass_end(&p);
 }
 
+/* Motion to the previous frame (README.md, `motion`) from the depth the shading pass wrote. */
+static enum ssg_err motion(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
+                           const struct ssg_io *io)
+{
+    const struct ssg_image *depth = io->out[SSG_GBUFFER_OUT_DEPTH];
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, "gbuffer_motion.glsl", NULL);
+    ssg_gl_input(&p, "depth", depth);
+    ssg_gl_output(&p, "motion", io->out[SSG_GBUFFER_OUT_MOTION]);
+    ssg_gl_projection(&p, "proj", &c->proj);
+    ssg_gl_float(&p, "inv_f", c->inv_f);
+    ssg_gl_float(&p, "prev_f", c->prev_f);
+    ssg_gl_floats(&p, "m_rot", 9, c->m_rot);
+    ssg_gl_vec3(&p, "m_move", c->m_move);
+    ssg_gl_float(&p, "near_z", c->near_z);
+    ssg_gl_dispatch(&p, depth->width, depth->height);
+    return ssg_gl_pass_end(&p);
+}
+
 enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
@@ -123,6 +143,8 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
         e = shade(ctx, c, scene, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_BACK]) /* on demand: only when something reads it */
         e = peel(ctx, c, scene, &cam, ids, io);
+    if (!e && io->out[SSG_GBUFFER_OUT_MOTION]) /* likewise */
+        e = motion(ctx, c, io);
     ssg_gl_scene_free(&scene);
     ssg_gl_scratch_release(&ids);
     return e;

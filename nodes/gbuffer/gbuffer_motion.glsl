@@ -1,0 +1,34 @@
+// gbuffer_motion.glsl - the G-buffer's motion to the previous frame on GL (README.md,
+// `motion`): each pixel's surface point, from its depth and the pixel's ray, moved into
+// the previous camera's view and projected, with gbuffer_cpu.c's motion() operation by
+// operation (`precise`: no fused multiply-adds the CPU does not make).
+uniform sampler2DArray depth;  // the first layer's depth (0 = background)
+layout(r32f) uniform writeonly image2DArray motion;
+uniform vec3 proj;             // f, cx, cy
+uniform float inv_f;           // 1 / f rounded on the CPU
+uniform float prev_f;          // the previous frame's focal length
+uniform float m_rot[9];        // this view -> the previous view, row-major
+uniform vec3 m_move;           // this camera's position in the previous view
+uniform float near_z;
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    float t = texelFetch(depth, ivec3(p, 0), 0).r;
+    // the ray with view z = -1 (gbuffer_cpu.c's make_rays)
+    precise float vx = (float(p.x) + 0.5 - proj.y) * inv_f;
+    precise float vy = -(float(p.y) + 0.5 - proj.z) * inv_f;
+    precise float inv_t = t > 0.0 ? 1.0 / t : 0.0;
+    precise float qx = m_rot[0] * vx + m_rot[1] * vy - m_rot[2] + m_move.x * inv_t;
+    precise float qy = m_rot[3] * vx + m_rot[4] * vy - m_rot[5] + m_move.y * inv_t;
+    precise float zq = 0.0 - (m_rot[6] * vx + m_rot[7] * vy - m_rot[8] + m_move.z * inv_t);
+    precise float z = t > 0.0 ? t * zq : 0.0;
+    bool seen = z >= near_z;
+    precise float d = seen ? zq : 1.0;
+    precise float df = prev_f - proj.x;
+    precise float mx = prev_f * (qx / d - vx) + df * vx;
+    precise float my = 0.0 - (prev_f * (qy / d - vy) + df * vy);
+    SSG_STORE3(motion, p, seen ? vec3(mx, my, z) : vec3(0.0, 0.0, z));
+}
