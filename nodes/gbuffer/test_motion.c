@@ -19,6 +19,8 @@
  * t against ray casting by hand); every case holds to 1e-3 px and 1e-5 relative in z.
  * Background pixels are 0 in every channel.
  *
+ * 5. a zoom (the previous camera's fov 50 degrees, its focal length f'): the motion is
+ *    (f' - f) (vx, -vy), z = t.
  * Also a previous camera 4 ahead, between the box and the plane: the box was behind it
  * (z < near: x = y = 0, z its depth there, negative), the plane 1 ahead of it.
  *
@@ -116,6 +118,11 @@ static void expect_back(double vx, double vy, double t, double o[3])
     o[0] = focal() * vx * (t / (t + step) - 1.0);
     o[1] = -focal() * vy * (t / (t + step) - 1.0);
     o[2] = t + step;
+}
+
+static void expect_zoom(double vx, double vy, double t, double o[3])
+{
+    o[0] = (step - focal()) * vx, o[1] = -(step - focal()) * vy, o[2] = t;
 }
 
 /* Every pixel of r against want(); returns how many hit a surface. Also: 0 on background. */
@@ -235,6 +242,14 @@ static void analytic(const struct ssg_scene *s, enum ssg_backend b)
     r = render(s, &c, &FRAME, b);
     snprintf(label, sizeof label, "%s back d=%.2f", name, step);
     check_motion(label, &r, expect_back);
+    run_free(&r);
+
+    c = s->camera; /* 5: a zoom from fov 50 */
+    c.fov_y = 50.0f;
+    step = 0.5 * H / tan(0.5 * 50.0 * M_PI / 180.0);
+    r = render(s, &c, &FRAME, b);
+    snprintf(label, sizeof label, "%s zoom fov 50", name);
+    check_motion(label, &r, expect_zoom);
     run_free(&r);
 
     step = -4.0; /* 4: the previous camera 4 ahead, between box and plane: the box behind it */
