@@ -13,6 +13,9 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "graph/graph.h"
+#include "graph/graph_history.h"
+#include "graph/image.h"
 #include "ssgraph.h"
 
 enum { W = 16, H = 12 };
@@ -76,7 +79,7 @@ static void errors(void)
     expect_error("g = gbuffer()\nc = combine(direct=g.albedo, albedo=g.albedo, "
                  "ambient=prev(c.out))\n" TAIL, SSG_E_TYPE, 4, 60);
     /* a plain self-reference is still a cycle; prev() of it is not */
-    expect_error("g = gbuffer()\n" ACC "environment=c.out)\n" TAIL, SSG_E_CYCLE, 4, 1);
+    expect_error("g = gbuffer()\n" ACC "environment=c.out)\n" TAIL, SSG_E_CYCLE, 4, 5);
     struct ssg_diags d = {0};
     struct ssg_overrides ov = {.seed = -1};
     CHECK_EQ(ssg_graph_check(graph_file("ok", "g = gbuffer()\n" ACC
@@ -293,6 +296,65 @@ static void live(const char *backend)
     ssg_graph_destroy(&g);
 }
 
+/* ---- the executor's side, step by step (graph_history.h) ---- */
+
+static int all_zero(const struct ssg_image *im)
+{
+    for (size_t i = 0; im && i < (size_t)im->width * im->height * im->channels; i++)
+        if (im->data[i] != 0.0f)
+            return 0;
+    return im != NULL;
+}
+
+/* Binds node `name`'s inputs; returns the reset flag, the environment input in *env. */
+static int bind(struct ssg_graph *g, struct ssg_pool *pool, const char *name,
+                const struct ssg_image **env)
+{
+    const struct gnode *n = &g->nodes[ssg_graph_find(g, name, strlen(name))];
+    const struct ssg_image *in[SSG_MAX_PORTS] = {0}, *extra[SSG_MAX_EXTRA] = {0};
+    int reset = 7;
+    CHECK_EQ(ssg_history_bind(g, pool, n, in, extra, &reset), SSG_OK);
+    int port = ssg_port_find(n->desc->inputs, n->desc->input_count, "environment", 11);
+    *env = port >= 0 ? in[port] : NULL;
+    return reset;
+}
+
+static void reset_flags(void)
+{
+    struct ssg_graph *g = load("cpu", 1);
+    struct ssg_pool *pool = ssg_pool_create();
+    struct gnode *c = &g->nodes[ssg_graph_find(g, "c", 1)];
+    const struct ssg_image *env;
+    CHECK_EQ(ssg_history_begin(g, pool), SSG_OK);
+    ssg_history_frame(g, pool); /* frame 0: nothing before */
+    CHECK_EQ(bind(g, pool, "g", &env), -1); /* reads nothing through prev() */
+    CHECK_EQ(bind(g, pool, "c", &env), 1);
+    CHECK(all_zero(env) && env->width == W && env->height == H && env->channels == 3);
+    CHECK_EQ(ssg_history_keep(g, pool, c, 0), 1);
+    c->out_img[0] = ssg_pool_acquire(pool, W, H, 3);
+    c->out_img[0]->data[0] = 7.0f;
+    CHECK_EQ(bind(g, pool, "e", &env), 1); /* after c in frame 0: still nothing */
+    struct ssg_image *written = c->out_img[0];
+    ssg_history_frame(g, pool); /* frame 1: c's frame-0 image, before and after c runs */
+    CHECK_EQ(bind(g, pool, "z", &env), 0);
+    CHECK(env == written);
+    CHECK_EQ(ssg_history_keep(g, pool, c, 0), 1);
+    CHECK(c->out_img[0] == NULL); /* handed over, not copied */
+    c->out_img[0] = ssg_pool_acquire(pool, W, H, 3);
+    CHECK(c->out_img[0] != written);
+    CHECK_EQ(bind(g, pool, "e", &env), 0);
+    CHECK(env == written && env->data[0] == 7.0f);
+    ssg_history_cut(g);
+    ssg_history_frame(g, pool); /* a cut: nothing before again */
+    CHECK_EQ(bind(g, pool, "z", &env), 1);
+    CHECK(all_zero(env));
+    ssg_pool_release(pool, c->out_img[0]);
+    c->out_img[0] = NULL;
+    ssg_history_free(g, pool);
+    ssg_pool_destroy(&pool);
+    ssg_graph_destroy(&g);
+}
+
 int main(void)
 {
     const char *tmp = getenv("SSG_TMP");
@@ -304,6 +366,7 @@ int main(void)
     CHECK(getcwd(cwd, sizeof cwd) != NULL);
     snprintf(scene, sizeof scene, "%s/examples/cornell.scene", cwd);
     errors();
+    reset_flags();
     const char *backends[] = {"cpu", "gl"};
     for (int b = 0; b < 2; b++) {
         sequence(backends[b]);
