@@ -78,6 +78,9 @@ static void errors(void)
     /* a parameter takes no port reference, prev() or not */
     expect_error("g = gbuffer()\nc = combine(direct=g.albedo, albedo=g.albedo, "
                  "ambient=prev(c.out))\n" TAIL, SSG_E_TYPE, 4, 60);
+    /* an output whose shape would come from its own prev() has no shape to start from */
+    expect_error("g = gbuffer()\nx = downsample(depth=prev(x.depth))\nwrite(x.depth, \"x\")\n",
+                 SSG_E_SIZE, 4, 27);
     /* a plain self-reference is still a cycle; prev() of it is not */
     expect_error("g = gbuffer()\n" ACC "environment=c.out)\n" TAIL, SSG_E_CYCLE, 4, 5);
     struct ssg_diags d = {0};

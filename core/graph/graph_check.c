@@ -360,8 +360,17 @@ static void check_prev_shapes(struct checker *c)
                 continue;
             const struct ssg_shape *a = &n->in_shape[i];
             const struct ssg_shape *b = &c->g->nodes[conn->node].out_shape[conn->port];
-            if (a->width == b->width && a->height == b->height &&
-                a->channels == b->channels && a->type == b->type)
+            if (b->type == 0 && !c->first) { /* its check failed only in the quiet pass */
+                ssg_diag_at(c->diags, SSG_E_SIZE, conn->value.loc, "input '%s' of node '%s' "
+                            "(%s) reads %s, whose shape cannot be found without it "
+                            "(expected a node whose output shape does not come from its own "
+                            "prev() input)", n->desc->inputs[i].name, n->name, n->desc->name,
+                            conn->ref);
+                fail(c, SSG_E_SIZE);
+                continue;
+            }
+            if (b->type == 0 || (a->width == b->width && a->height == b->height &&
+                                 a->channels == b->channels && a->type == b->type))
                 continue;
             ssg_diag_at(c->diags, SSG_E_SIZE, conn->value.loc, "input '%s' of node '%s' "
                         "(%s) reads %s as %dx%dx%d, but the port is %dx%dx%d (expected a "
