@@ -47,16 +47,14 @@ static void expect_error(const char *body, enum ssg_err code, int line, int colu
 {
     struct ssg_diags d = {0};
     struct ssg_overrides ov = {.seed = -1};
-    enum ssg_err e = ssg_graph_check(graph_file("bad", body), &ov, &d);
-    CHECK_EQ(e, code);
-    CHECK(d.count >= 1);
-    if (d.count >= 1) {
-        CHECK_EQ(d.items[0].code, code);
-        CHECK_EQ(d.items[0].line, line);
-        CHECK_EQ(d.items[0].column, column);
-    }
-    if (e != code)
+    CHECK_EQ(ssg_graph_check(graph_file("bad", body), &ov, &d), code);
+    const struct ssg_diag none = {0}, *first = d.count ? &d.items[0] : &none;
+    int ok = first->code == code && first->line == line && first->column == column;
+    CHECK(ok);
+    if (!ok) {
+        fprintf(stderr, "  expected code %d at %d:%d in:\n%s", (int)code, line, column, body);
         ssg_diags_print(&d, stderr);
+    }
 }
 
 #define ACC "c = combine(direct=g.albedo, albedo=g.albedo, ambient=0, darken_direct=false, "
