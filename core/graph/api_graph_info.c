@@ -99,7 +99,9 @@ static void dot_edge(FILE *f, const struct gnode *n, const struct gconn *c, cons
     dot_id(f, c->value.text, c->value.len);
     fputs(" -> ", f);
     dot_id(f, n->name, strlen(n->name));
-    fprintf(f, " [label=\"%.*s -> %s\"];\n", (int)c->value.member_len, c->value.member, into);
+    fprintf(f, " [label=\"%s%.*s -> %s\"%s];\n", c->value.prev ? "prev " : "",
+            (int)c->value.member_len, c->value.member, into,
+            c->value.prev ? ", style=dashed" : ""); /* the previous frame's: no ordering */
 }
 
 void ssg_graph_dot(const struct ssg_graph *g, FILE *f)

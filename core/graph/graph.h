@@ -17,7 +17,8 @@ struct gconn {
     int node;            /* producer index, -1 = unconnected */
     int port;            /* producer output port */
     const char *ref;     /* "g.position" as written, for messages */
-    struct ssg_value value; /* the reference value (locations of node and port names) */
+    struct ssg_value value; /* the reference value (locations of node and port names;
+                               value.prev = 1: prev(node.port), graph_history.h) */
 };
 
 struct gnode {
@@ -79,6 +80,8 @@ struct ssg_graph {
     struct ssg_live *live;     /* the run state kept between runs (ssg_graph_keep), NULL =
                                   every run starts afresh */
     struct ssg_file_list *files; /* graph files read (graph_files.h), NULL = none yet */
+    struct ssg_history *history; /* the previous frame's images of the ports read through
+                                  prev() (graph_history.h), NULL = none kept */
 };
 
 /* What a live graph keeps from one ssg_graph_run to the next (graph_live.c): per run

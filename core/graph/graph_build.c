@@ -98,7 +98,8 @@ static void connect(struct builder *b, struct gconn *c, const struct ssg_value *
     c->node = -1; /* resolved by ssg_graph_validate once every node exists */
     c->value = *v;
     char ref[160];
-    snprintf(ref, sizeof ref, "%.*s.%.*s", (int)v->len, v->text, (int)v->member_len, v->member);
+    snprintf(ref, sizeof ref, v->prev ? "prev(%.*s.%.*s)" : "%.*s.%.*s", (int)v->len, v->text,
+             (int)v->member_len, v->member); /* prev(): graph_history.h */
     c->ref = ssg_arena_strndup(&b->g->arena, ref, strlen(ref));
 }
 
@@ -372,8 +373,7 @@ static void add_set(struct builder *b, const struct ssg_stmt *st)
 {
     if (b->set_count == b->set_cap) {
         int cap = b->set_cap ? 2 * b->set_cap : 64;
-        const struct ssg_stmt **sets =
-            ssg_arena_alloc(&b->g->arena, (size_t)cap * sizeof *sets);
+        const struct ssg_stmt **sets = ssg_arena_alloc(&b->g->arena, cap * sizeof *sets);
         if (!sets) {
             fail(b, SSG_E_NOMEM);
             return;

@@ -13,6 +13,8 @@ struct checker {
     struct ssg_graph *g;
     struct ssg_diags *diags;
     enum ssg_err first;
+    unsigned char *inferred; /* per node: shapes known; NULL = every producer's are (a
+                                prev() input then takes them as they stand) */
 };
 
 static void fail(struct checker *c, enum ssg_err e)
@@ -88,6 +90,9 @@ static void check_required(struct checker *c, struct gnode *n)
                                                      : &(n)->extra[k_ - SSG_MAX_PORTS];     \
              conn; conn = NULL)                                                             \
             if (conn->node >= 0)
+/* The same, without prev() inputs: the edges that order a frame. A prev() edge reads the
+   frame before, so it neither orders the graph nor makes a cycle (graph_history.h). */
+#define FOR_EACH_SAME_FRAME_INPUT(n, conn) FOR_EACH_INPUT(n, conn) if (!conn->value.prev)
 
 /* Marks node i and everything it reads as live, with an explicit stack: a chain of a
    hundred thousand nodes must not recurse that deep. */
@@ -134,7 +139,7 @@ static void report_cycle(struct checker *c, const int *unordered, int start)
         seen[at] = len + 1;
         path[len++] = at;
         int nxt = -1;
-        FOR_EACH_INPUT(&g->nodes[at], conn)
+        FOR_EACH_SAME_FRAME_INPUT(&g->nodes[at], conn)
         if (nxt < 0 && unordered[conn->node]) nxt = conn->node;
         if (nxt < 0)
             break;
@@ -148,7 +153,8 @@ static void report_cycle(struct checker *c, const int *unordered, int start)
     if (n < sizeof text)
         snprintf(text + n, sizeof text - n, "%s", g->nodes[path[len - 1]].name);
     ssg_diag_at(c->diags, SSG_E_CYCLE, g->nodes[at].loc, "the graph has a cycle: %s (expected "
-                "every node to depend only on nodes that do not depend on it)", text);
+                "every node to depend only on nodes that do not depend on it; prev(node.port) reads "
+                "the previous frame's image and makes no cycle)", text);
     fail(c, SSG_E_CYCLE);
     free(seen);
 }
@@ -197,7 +203,7 @@ static int readers_build(const struct ssg_graph *g, struct readers *r)
     r->first = calloc((size_t)g->count + 1, sizeof *r->first);
     size_t edges = 0;
     for (int i = 0; r->first && i < g->count; i++)
-        FOR_EACH_INPUT(&g->nodes[i], conn) r->first[conn->node + 1]++, edges++;
+        FOR_EACH_SAME_FRAME_INPUT(&g->nodes[i], conn) r->first[conn->node + 1]++, edges++;
     r->reader = malloc((edges ? edges : 1) * sizeof *r->reader);
     int *fill = calloc((size_t)g->count + 1, sizeof *fill);
     if (!r->first || !r->reader || !fill) {
@@ -207,7 +213,7 @@ static int readers_build(const struct ssg_graph *g, struct readers *r)
     for (int p = 0; p < g->count; p++)
         r->first[p + 1] += r->first[p];
     for (int i = 0; i < g->count; i++)
-        FOR_EACH_INPUT(&g->nodes[i], conn)
+        FOR_EACH_SAME_FRAME_INPUT(&g->nodes[i], conn)
         r->reader[r->first[conn->node] + fill[conn->node]++] = i;
     free(fill);
     return 1;
@@ -227,7 +233,7 @@ static void order_nodes(struct checker *c)
         goto done;
     }
     for (int i = 0; i < g->count; i++) {
-        FOR_EACH_INPUT(&g->nodes[i], conn) waiting[i]++;
+        FOR_EACH_SAME_FRAME_INPUT(&g->nodes[i], conn) waiting[i]++;
         if (g->nodes[i].live && !waiting[i])
             heap_push(&ready, i);
     }
@@ -252,6 +258,13 @@ done:
     free(ready.v);
     free(r.first);
     free(r.reader);
+}
+
+/* 1 when conn is a prev() input whose producer's shapes are not known yet (its own
+   output, a later node's, in the first of two passes): it counts as unconnected then. */
+static int prev_pending(const struct checker *c, const struct gconn *conn)
+{
+    return conn->node >= 0 && conn->value.prev && c->inferred && !c->inferred[conn->node];
 }
 
 static int check_type(struct checker *c, const struct gnode *n, const char *port,
@@ -295,11 +308,15 @@ static void infer_node(struct checker *c, struct gnode *n)
     const struct ssg_node_desc *d = n->desc;
     int ok = 1;
     for (int i = 0; i < d->input_count; i++)
-        if (n->in[i].node >= 0)
+        if (prev_pending(c, &n->in[i]))
+            n->in_shape[i] = (struct ssg_shape){0};
+        else if (n->in[i].node >= 0)
             ok &= check_type(c, n, d->inputs[i].name, d->inputs[i].types, &n->in[i],
                              &n->in_shape[i]);
     for (int i = 0; i < n->extra_count; i++) {
         struct ssg_shape s;
+        if (prev_pending(c, &n->extra[i]))
+            continue;
         if (n->extra[i].node >= 0 && check_type(c, n, n->extra_names[i], SSG_T_IMAGE,
                                                 &n->extra[i], &s) &&
             check_extra_size(c, n, i, &s))
@@ -324,6 +341,71 @@ static void infer_node(struct checker *c, struct gnode *n)
     }
 }
 
+static int has_prev(const struct ssg_graph *g)
+{
+    for (int p = 0; p < g->order_count; p++)
+        FOR_EACH_INPUT(&g->nodes[g->order[p]], conn) if (conn->value.prev) return 1;
+    return 0;
+}
+
+/* prev(x) has x's shape: a prev() input that came out otherwise (its node's output feeds
+   back into its own shape) is refused where it is written. */
+static void check_prev_shapes(struct checker *c)
+{
+    for (int p = 0; p < c->g->order_count; p++) {
+        const struct gnode *n = &c->g->nodes[c->g->order[p]];
+        for (int i = 0; i < n->desc->input_count; i++) {
+            const struct gconn *conn = &n->in[i];
+            if (conn->node < 0 || !conn->value.prev)
+                continue;
+            const struct ssg_shape *a = &n->in_shape[i];
+            const struct ssg_shape *b = &c->g->nodes[conn->node].out_shape[conn->port];
+            if (b->type == 0 && !c->first) { /* its check failed only in the quiet pass */
+                ssg_diag_at(c->diags, SSG_E_SIZE, conn->value.loc, "input '%s' of node '%s' "
+                            "(%s) reads %s, whose shape cannot be found without it "
+                            "(expected a node whose output shape does not come from its own "
+                            "prev() input)", n->desc->inputs[i].name, n->name, n->desc->name,
+                            conn->ref);
+                fail(c, SSG_E_SIZE);
+                continue;
+            }
+            if (b->type == 0 || (a->width == b->width && a->height == b->height &&
+                                 a->channels == b->channels && a->type == b->type))
+                continue;
+            ssg_diag_at(c->diags, SSG_E_SIZE, conn->value.loc, "input '%s' of node '%s' "
+                        "(%s) reads %s as %dx%dx%d, but the port is %dx%dx%d (expected a "
+                        "shape that does not depend on its own history)",
+                        n->desc->inputs[i].name, n->name, n->desc->name, conn->ref,
+                        a->width, a->height, a->channels, b->width, b->height, b->channels);
+            fail(c, SSG_E_SIZE);
+        }
+    }
+}
+
+/* Every live node's shapes, in run order. A prev() input read before its producer runs
+   (the node's own output, a later node's) needs shapes not known yet: a first, quiet
+   pass takes such inputs as unconnected to find them, the second reads them and reports.
+   Without prev() inputs: the one pass there always was. */
+static void infer_all(struct checker *c)
+{
+    struct ssg_graph *g = c->g;
+    if (has_prev(g)) {
+        struct ssg_diags *quiet = calloc(1, sizeof *quiet);
+        struct checker first = {g, quiet, SSG_OK, calloc((size_t)g->count + 1, 1)};
+        for (int p = 0; quiet && first.inferred && p < g->order_count; p++) {
+            infer_node(&first, &g->nodes[g->order[p]]);
+            first.inferred[g->order[p]] = 1;
+        }
+        if (!quiet || !first.inferred)
+            fail(c, SSG_E_NOMEM);
+        free(first.inferred);
+        free(quiet);
+    }
+    for (int p = 0; p < g->order_count; p++)
+        infer_node(c, &g->nodes[g->order[p]]);
+    check_prev_shapes(c);
+}
+
 static void last_readers(struct ssg_graph *g)
 {
     for (int p = 0; p < g->order_count; p++)
@@ -332,6 +414,13 @@ static void last_readers(struct ssg_graph *g)
     for (int p = 0; p < g->order_count; p++) {
         struct gnode *n = &g->nodes[g->order[p]];
         FOR_EACH_INPUT(n, conn) g->nodes[conn->node].last_reader[conn->port] = p;
+    }
+    /* A port read through prev() is kept past the frame: it becomes the next one's
+       history (graph_history.c). */
+    for (int p = 0; p < g->order_count; p++) {
+        struct gnode *n = &g->nodes[g->order[p]];
+        FOR_EACH_INPUT(n, conn) if (conn->value.prev)
+            g->nodes[conn->node].last_reader[conn->port] = g->order_count;
     }
     /* A requested output is read after the last position: kept until the run hands it
        out. */
@@ -415,15 +504,14 @@ static void check_output_clash(struct checker *c)
 
 enum ssg_err ssg_graph_reinfer(struct ssg_graph *g, struct ssg_diags *diags)
 {
-    struct checker c = {g, diags, SSG_OK};
-    for (int p = 0; p < g->order_count; p++)
-        infer_node(&c, &g->nodes[g->order[p]]);
+    struct checker c = {g, diags, SSG_OK, NULL};
+    infer_all(&c);
     return c.first;
 }
 
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
 {
-    struct checker c = {g, diags, SSG_OK};
+    struct checker c = {g, diags, SSG_OK, NULL};
     int sinks = 0;
     for (int i = 0; i < g->count; i++) {
         struct gnode *n = &g->nodes[i];
@@ -446,6 +534,12 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
         }
     }
     for (int k = 0; k < g->wanted_count; k++) {
+        if (g->wanted[k].value.prev) { /* the run hands out this frame's images */
+            ssg_diag_at(diags, SSG_E_USAGE, g->wanted[k].value.loc, "an output cannot be "
+                        "%s (expected node.port)", g->wanted[k].ref);
+            fail(&c, SSG_E_USAGE);
+            continue;
+        }
         resolve(&c, &g->wanted[k]);
         if (g->wanted[k].node >= 0 && !mark_live(g, g->wanted[k].node))
             fail(&c, SSG_E_NOMEM);
@@ -459,8 +553,7 @@ enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags)
     check_output_clash(&c);
     if (c.first)
         return c.first;
-    for (int p = 0; p < g->order_count; p++)
-        infer_node(&c, &g->nodes[g->order[p]]);
+    infer_all(&c);
     last_readers(g);
     return c.first;
 }

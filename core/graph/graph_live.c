@@ -15,6 +15,7 @@
 
 #include "graph/gl_backend.h"
 #include "graph/graph.h"
+#include "graph/graph_history.h"
 #include "graph/image.h"
 
 enum ssg_err ssg_graph_keep(struct ssg_graph *g, size_t max_bytes, struct ssg_diags *diags)
@@ -120,6 +121,7 @@ void ssg_live_free(struct ssg_graph *g)
     int gl = l->used_gl && ssg_gl_open(&quiet) == SSG_OK; /* textures die with GL current */
     for (int p = 0; p < l->count && l->pool; p++)
         evict(g, p);
+    ssg_history_free(g, l->pool);
     ssg_pool_destroy(&l->pool);
     if (gl)
         ssg_gl_close();
@@ -361,6 +363,7 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
     for (int p = 0; g->live && p < g->order_count; p++)
         if (!g->nodes[g->order[p]].desc->camera_independent)
             forget(g, p);
+    ssg_history_cut(g); /* a new camera is a cut: prev() inputs start afresh */
     return SSG_OK;
 }
 

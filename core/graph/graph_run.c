@@ -11,6 +11,7 @@
 
 #include "graph/gl_backend.h"
 #include "graph/graph.h"
+#include "graph/graph_history.h"
 #include "graph/image.h"
 #include "graph/metrics.h"
 #include "graph/profile.h"
@@ -48,7 +49,8 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
         const struct ssg_shape *s = &n->out_shape[k];
         /* a requested output (ssg_overrides.outputs) is kept to the end of the run, so the
            last frame's can be handed out: the frame before's goes back to the pool here */
-        release_output(r, n, k);
+        if (!ssg_history_keep(r->g, r->pool, n, k)) /* read through prev(): kept */
+            release_output(r, n, k);
         if (n->desc->outputs[k].on_demand && n->last_reader[k] < 0)
             continue; /* nothing reads it: the node skips its work (node.h) */
         n->out_img[k] = ssg_pool_acquire(r->pool, s->width, s->height, s->channels);
@@ -153,7 +155,10 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
         extra[k] = src->out_img[n->extra[k].port];
         extra_shape[k] = src->out_shape[n->extra[k].port];
     }
-    enum ssg_err e = allocate_outputs(r, n);
+    int history_reset; /* prev() inputs: the frame before's images (graph_history.h) */
+    enum ssg_err e = ssg_history_bind(g, r->pool, n, in, extra, &history_reset);
+    if (!e)
+        e = allocate_outputs(r, n);
     if (e)
         return e;
     struct ssg_io io = {.in = in, .out = n->out_img, .extra_count = n->extra_count,
@@ -169,6 +174,8 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .frame_index = frame,
                                .prev_camera = g->scene ? &g->scene->camera : NULL,
                                .history_reset = frame == 0};
+    if (history_reset >= 0)
+        ctx.history_reset = history_reset;
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
@@ -227,7 +234,7 @@ static int run_init(struct run *r)
     }
     r->prof.width = g->width, r->prof.height = g->height;
     r->prof.threads = omp_get_max_threads();
-    return 1;
+    return ssg_history_begin(r->g, r->pool) == SSG_OK;
 }
 
 static void run_free(struct run *r)
@@ -238,6 +245,7 @@ static void run_free(struct run *r)
     if (r->live)
         return; /* the graph keeps the rest (ssg_live_free) */
     release_all(r);
+    ssg_history_free(r->g, r->pool);
     ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
     for (int p = 0; r->consts && p < r->g->order_count; p++)
         free(r->consts[p]);
@@ -271,6 +279,7 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
 {
     enum ssg_err e = SSG_OK;
     double sum = 0;
+    ssg_history_frame(r->g, r->pool);
     for (int p = 0; p < r->g->order_count && !e; p++) {
         const struct ssg_node_desc *desc = r->g->nodes[r->g->order[p]].desc;
         int sink = desc->is_sink;

@@ -156,6 +156,24 @@ static int parse_list(struct parser *ps, struct ssg_value *v)
     return 1;
 }
 
+/* prev(node.port): the image that port had in the previous frame (graph.h, docs/time.md).
+   Only a plain reference may stand inside: prev(prev(x)) would ask for a history the
+   executor does not keep, so it is refused here rather than given a meaning. */
+static int parse_prev(struct parser *ps, struct ssg_value *v)
+{
+    const struct token *name = next(ps);
+    next(ps); /* the '(' parse_value saw */
+    if (!parse_value(ps, v))
+        return 0;
+    if (v->kind != SSG_V_REF || v->prev) {
+        error_at(ps, name->at, "prev() takes one port reference, prev(node.port), not %s",
+                 v->prev ? "prev() of prev()" : ssg_value_kind_text(v->kind));
+        return 0;
+    }
+    v->prev = 1;
+    return expect(ps, T_RPAREN, "to close prev(");
+}
+
 static int parse_value(struct parser *ps, struct ssg_value *v)
 {
     const struct token *t = peek(ps, 0);
@@ -184,6 +202,8 @@ static int parse_value(struct parser *ps, struct ssg_value *v)
         v->text = unescape(ps, t, &v->len);
         return v->text != NULL;
     case T_IDENT:
+        if (ssg_tok_eq(t->at, t->len, "prev") && peek(ps, 1)->kind == T_LPAREN)
+            return parse_prev(ps, v);
         next(ps);
         v->kind = SSG_V_IDENT;
         v->text = t->at;

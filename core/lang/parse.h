@@ -6,7 +6,8 @@
  *   set name.member = value                  an override of an earlier call's argument
  *   keyword value value ...                  a directive: scene "x", size 640 480, include "y"
  * Values: numbers (12, -0.5, 1e-3), strings ("..." with \" and \\), identifiers (true,
- * cosine, white), references (node.port) and lists ([2, 3]).
+ * cosine, white), references (node.port, or prev(node.port): that port's image in the
+ * previous frame) and lists ([2, 3]).
  *
  * Tokens point into the source text; line and column are worked out only when a message is
  * printed. Everything parsed lives in the caller's arena. */
@@ -40,6 +41,8 @@ struct ssg_value {
     const char *member;        /* REF: the port after the dot */
     size_t member_len;
     struct ssg_loc member_loc; /* REF: where the port name starts */
+    int prev;                  /* REF written prev(node.port): the image the port had in
+                                  the previous frame (loc: the node name inside) */
     struct ssg_value *items;   /* LIST */
     int count;                 /* LIST */
 };
