@@ -71,6 +71,12 @@ static void cases(const struct parity_inputs *in, struct parity_tol tol)
     run_case(in, "8x12 cap r", "r", cap, 4, NULL, tol);
     run_case(in, "default back rdb", "rdb", def, 1, NULL, tol);
     run_case(in, "3x6 falloff back db", "db", fall, 4, NULL, tol);
+    /* Per-frame samples (docs/time.md): frame 3's turned slices and shifted noise. */
+    const char *f0[] = {"radius=1.5", "frame=0"}, *f3[] = {"radius=1.5", "frame=3"};
+    run_case(in, "default rd frame 0", "rd", f0, 2, NULL, tol);
+    run_case(in, "default rd frame 3", "rd", f3, 2, NULL, tol);
+    const char *fall3[] = {"slices=3", "steps=6", "radius=1.2", "falloff=0.5", "frame=3"};
+    run_case(in, "3x6 falloff back db frame 3", "db", fall3, 5, NULL, tol);
 }
 
 int main(void)

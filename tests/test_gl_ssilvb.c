@@ -91,6 +91,13 @@ static void cases(const struct inputs *in, struct parity_tol tol)
     const char *cap[] = {"slices=8", "steps=12", "radius=2", "thickness=5",
                          "max_screen_radius=20"};
     run_case(in, "8x12 thick cap", "d", cap, 5, NULL, tol);
+    /* Per-frame samples (docs/time.md): frame 3's turned slices and shifted noise. */
+    const char *f0[] = {"radius=1.5", "frame=0"}, *f3[] = {"radius=1.5", "frame=3"};
+    run_case(in, "default d frame 0", "d", f0, 2, NULL, tol);
+    run_case(in, "default d frame 3", "d", f3, 2, NULL, tol);
+    const char *bk3[] = {"slices=5", "radius=1.5", "thickness=0", "power=2", "strength=3",
+                         "frame=3"};
+    run_case(in, "5 back power 2 frame 3", "db2", bk3, 6, NULL, tol);
 }
 
 int main(void)

@@ -74,13 +74,15 @@ static struct ssg_image *run_port(const char *graph, const char *port, const cha
 
 /* Several frames hand out the last frame's pixels, the one-frame image, and give every
    earlier frame's image of the port back (a leak here is what AddressSanitizer's build
-   reports: bench --reference runs its cells over several frames). */
+   reports: bench --reference runs its cells over several frames). The port is the
+   G-buffer's: at a still camera every frame has its pixels, where ao.out's samples move
+   from frame to frame (halton, docs/time.md). */
 static void test_frames(const char *graph)
 {
     char dir[600];
     snprintf(dir, sizeof dir, "%s/frames", tmpdir);
-    struct ssg_image *one = run_port_frames(graph, "ao.out", dir, NULL, 1);
-    struct ssg_image *three = run_port_frames(graph, "ao.out", dir, NULL, 3);
+    struct ssg_image *one = run_port_frames(graph, "g.depth", dir, NULL, 1);
+    struct ssg_image *three = run_port_frames(graph, "g.depth", dir, NULL, 3);
     CHECK(one && three);
     if (one && three)
         CHECK(one->width == three->width && one->height == three->height &&

@@ -19,6 +19,7 @@ struct single {
     const struct ssg_image *extra[SSG_MAX_EXTRA];
     unsigned extra_types[SSG_MAX_EXTRA];
     int extra_count;
+    int frame_index; /* "frame=N" among the sets: the run is frame N of a sequence */
 };
 
 static enum ssg_err bind_one(struct single *s, const struct ssg_binding *b,
@@ -119,10 +120,30 @@ static int backend_set(const struct ssg_node_desc *d, const char *set, enum ssg_
     return 1;
 }
 
-static enum ssg_err apply_sets(const struct ssg_node_desc *d, void *params,
-                               const char *const *sets, int count, enum ssg_backend *backend,
-                               struct ssg_diags *diags)
+/* "frame=N" among the sets (N >= 0): the node runs as frame N of a sequence (node.h's
+   frame_index), where per-frame samples move (docs/time.md); 1 when set was one. */
+static int frame_set(const struct ssg_node_desc *d, const char *set, int *frame,
+                     enum ssg_err *e, struct ssg_diags *diags)
 {
+    if (strncmp(set, "frame=", 6) != 0 || ssg_param_find(d->params, "frame", 5) >= 0)
+        return 0;
+    char *end;
+    long v = strtol(set + 6, &end, 10);
+    *e = SSG_OK;
+    if (end == set + 6 || *end || v < 0 || v > 1000000000) {
+        ssg_diag_file(diags, SSG_E_VALUE, "<--set>", "frame must be an integer from 0 to "
+                      "1000000000, got '%s'", set + 6);
+        *e = SSG_E_VALUE;
+    } else {
+        *frame = (int)v;
+    }
+    return 1;
+}
+
+static enum ssg_err apply_sets(struct single *s, void *params, const char *const *sets,
+                               int count, enum ssg_backend *backend, struct ssg_diags *diags)
+{
+    const struct ssg_node_desc *d = s->d;
     enum ssg_err first = SSG_OK;
     for (int i = 0; i < count; i++) {
         enum ssg_err e;
@@ -130,7 +151,8 @@ static enum ssg_err apply_sets(const struct ssg_node_desc *d, void *params,
             ssg_diag_file(diags, SSG_E_USAGE, NULL, "ssg_node_run: sets[%d] is NULL (expected "
                           "\"param=value\")", i);
             e = SSG_E_USAGE;
-        } else if (!backend_set(d, sets[i], backend, &e, diags))
+        } else if (!backend_set(d, sets[i], backend, &e, diags) &&
+                   !frame_set(d, sets[i], &s->frame_index, &e, diags))
             e = ssg_param_set_text(d->params, params, sets[i], "<--set>", d->name, diags);
         if (e && !first)
             first = e;
@@ -179,7 +201,8 @@ static enum ssg_err run_single(struct single *s, const void *params, const struc
     struct ssg_node_ctx ctx = {.desc = s->d, .instance = s->d->name, .frame = f,
                                .out_dir = "out", .diags = diags, .metrics = &metrics,
                                .in_shape = s->in_shape, .out_shape = out_shape,
-                               .extra_shape = extra_shape};
+                               .extra_shape = extra_shape, .frame_index = s->frame_index,
+                               .history_reset = 1};
     struct ssg_node_timing timing;
     if (backend == SSG_BACKEND_GL && (e = ssg_gl_open(diags)))
         return e;
@@ -246,7 +269,7 @@ enum ssg_err ssg_node_run_desc(const struct ssg_node_desc *d, const struct ssg_b
         return SSG_E_NOMEM;
     ssg_params_defaults(s.d->params, params);
     enum ssg_backend backend = SSG_BACKEND_CPU;
-    enum ssg_err e = apply_sets(s.d, params, sets, set_count, &backend, diags);
+    enum ssg_err e = apply_sets(&s, params, sets, set_count, &backend, diags);
     enum ssg_err b = bind_inputs(&s, inputs, input_count, diags);
     if (!e)
         e = b;

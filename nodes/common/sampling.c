@@ -90,11 +90,30 @@ enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
 
 void ssg_sampling_angles(int n, double turn, float *co, float *si)
 {
+    ssg_sampling_angles_at(n, turn, 0.0, co, si);
+}
+
+void ssg_sampling_angles_at(int n, double turn, double shift, float *co, float *si)
+{
     for (int k = 0; k < n; k++) {
-        double a = turn * k / n;
+        double a = turn * (k + shift) / n; /* k + 0.0 is k: frame 0 keeps its bits */
         co[k] = (float)cos(a);
         si[k] = (float)sin(a);
     }
+}
+
+double ssg_sampling_frame_turn(int frame)
+{
+    /* 1 / phi; the product is exact enough for any frame count a run reaches (2^31
+       frames lose 31 of the 53 bits, leaving 2^-22 of a turn). */
+    double t = (double)frame * 0.61803398874989484820;
+    return t - floor(t);
+}
+
+float ssg_sampling_frame_shift(int frame)
+{
+    int f = frame % 64;
+    return 5.588238f * (float)(f < 0 ? f + 64 : f);
 }
 
 void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,

@@ -79,6 +79,21 @@ enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
  * k < n, in double rounded to float (turn 2 pi: hbao's directions round the circle; pi:
  * gtao's slices over the half circle). */
 void ssg_sampling_angles(int n, double turn, float *co, float *si);
+/* The same tables turned by a fraction `shift` of one step: angle turn (k + shift) / n
+ * (shift 0 gives ssg_sampling_angles' bits). */
+void ssg_sampling_angles_at(int n, double turn, double shift, float *co, float *si);
+
+/* Per-frame samples (docs/time.md): what turns a sampling node's directions in frame
+ * `frame` of a sequence, so that averaging frames adds samples rather than repeating
+ * them. ssg_sampling_frame_turn is frac(frame / phi), the golden-ratio (Kronecker)
+ * sequence: any N consecutive frames split [0, 1) into gaps of at most three lengths
+ * (the three-distance theorem), the most even 1D sequence that can be extended frame by
+ * frame. ssg_sampling_frame_shift is the pixel offset of interleaved gradient noise in
+ * that frame, 5.588238 (frame mod 64) (Jimenez 2014, "Next Generation Post Processing in
+ * Call of Duty: Advanced Warfare", the temporal variant of ssg_ign). Both are exactly 0
+ * in frame 0, where every node gives its single-frame bytes. */
+double ssg_sampling_frame_turn(int frame);
+float ssg_sampling_frame_shift(int frame);
 
 /* The depth plane of the horizon nodes' CPU kernels (hbao, gtao), padded by one pixel:
  * rows [y0, y1) of the w-wide `depth` (times sign) into rows y0 + 1 .. of `padded`

@@ -49,8 +49,15 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->u.fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
     c->u.fall_add = q->falloff > 0 ? q->radius / range : 1.0f;
     c->u.link = SSG_GTAO_BACK_LINK * q->radius;
-    ssg_sampling_angles(q->slices, M_PI, c->slice_cos, c->slice_sin);
     return e;
+}
+
+void ssg_gtao_frame_of(const struct ssg_gtao_consts *c, int frame, struct ssg_gtao_frame *f)
+{
+    /* Frame 0: turn 0 and shift 0, the single-frame slices pi k / slices and noise. */
+    ssg_sampling_angles_at(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
+                           f->slice_sin);
+    f->shift = ssg_sampling_frame_shift(frame);
 }
 
 SSG_PARAMS_TABLE(params, ssg_gtao_params, SSG_GTAO_PARAMS);

@@ -20,7 +20,8 @@ layout(r32f) uniform writeonly image2DArray dst_bent_normal;
 #pragma ssg_consts
 uniform float invf;        // 1 / f
 uniform vec3 proj;         // (f, cx, cy) of this resolution
-uniform float slice_cos[32], slice_sin[32];
+uniform float slice_cos[32], slice_sin[32]; // this frame's (ssg_gtao_frame_of)
+uniform float noise_shift; // this frame's jitter noise offset, pixels
 
 const float SLICE_MIN = 0.01;
 const float HALF_PI = 1.57079632679489661923;
@@ -34,7 +35,8 @@ vec3 g_v, g_n, g_e2;
 // 1 - interleaved gradient noise (gtao_cpu.c step_jitter).
 float step_jitter(ivec2 p)
 {
-    precise float u = 1.0 - ssg_ign(float(p.x), float(p.y));
+    precise float x = float(p.x) + noise_shift, y = float(p.y) + noise_shift;
+    precise float u = 1.0 - ssg_ign(x, y);
     return u;
 }
 

@@ -76,12 +76,20 @@ struct ssg_gtao_consts {
     struct ssg_projection proj; /* the frame's camera at the G-buffer's resolution */
     float invf;                 /* 1 / f */
     struct ssg_gtao_uniforms u; /* prepare()'s constants both backends read by name */
-    float slice_cos[SSG_GTAO_MAX_SLICES]; /* cos(pi k / slices) */
-    float slice_sin[SSG_GTAO_MAX_SLICES]; /* sin(pi k / slices) */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
        [x] and e1z at [w + x] (ssg_sampling_column_basis); read by both backends. */
     float e1[];
 };
+
+/* What changes from one frame of a sequence to the next (README.md, "Frames"), made by
+   ssg_gtao_frame_of for both backends: the slice table turned by a golden-ratio fraction
+   of one slice, and the offset of the step jitter's noise. */
+struct ssg_gtao_frame {
+    float slice_cos[SSG_GTAO_MAX_SLICES]; /* cos(pi (k + ssg_sampling_frame_turn) / slices) */
+    float slice_sin[SSG_GTAO_MAX_SLICES]; /* sin of the same */
+    float shift; /* pixels added to both coordinates of the jitter noise; 0 in frame 0 */
+};
+void ssg_gtao_frame_of(const struct ssg_gtao_consts *c, int frame, struct ssg_gtao_frame *f);
 
 enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);

@@ -50,6 +50,7 @@ enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 
 struct job {
     const struct ssg_gtao_consts *c;
+    struct ssg_gtao_frame fr;     /* this frame's slices and noise offset */
     const float *pos[3], *nrm[3]; /* planes of the G-buffer */
     const float *depth;           /* plane the depth is read from */
     float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
@@ -149,7 +150,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
         float rp = f * radius / (near > half ? near : half);
         rp = cap > 0.0f && rp > cap ? cap : rp;
         k->step[i] = rp / fs;
-        k->u[i] = step_jitter(xf, yf);
+        k->u[i] = step_jitter(xf + j->fr.shift, yf + j->fr.shift);
         k->vis[i] = k->open[i] = 0.0f;
         k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
     }
@@ -476,7 +477,7 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
     ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
     setup_chunk(j, k, y, x0, len);
     for (int s = 0; s < c->p.slices; s++) {
-        setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
+        setup_slice(j, k, len, j->fr.slice_cos[s], j->fr.slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++) {
             place_step(j, k, len, (float)y, (float)st);
             horizon_step(j, k, len, linear, fast, back);
@@ -532,6 +533,7 @@ enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     const struct ssg_image *rot = io->in[SSG_GTAO_IN_ROTATION];
     const struct ssg_image *dep = io->in[SSG_GTAO_IN_DEPTH];
     struct job j = {.c = c, .w = pos->width, .h = pos->height};
+    ssg_gtao_frame_of(c, ctx->frame_index, &j.fr);
     j.out = io->out[SSG_GTAO_OUT_OUT]->data;
     j.bent = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data;
     for (int ch = 0; ch < 3; ch++) {

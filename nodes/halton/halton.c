@@ -7,6 +7,7 @@
 #include "halton.h"
 #include "graph/node.h"
 #include "common/random.h"
+#include "common/sampling.h"
 
 double ssg_halton_radical_inverse(uint64_t i, int base)
 {
@@ -36,7 +37,18 @@ int ssg_halton_period_digits(int period, int base)
 
 void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3])
 {
-    uint64_t index = (uint64_t)p->offset + (uint64_t)sample;
+    ssg_halton_point_at(p, 0, sample, u);
+}
+
+void ssg_halton_point_at(const struct ssg_halton_params *p, int frame, int sample,
+                         double u[3])
+{
+    uint64_t index = (uint64_t)p->offset + (uint64_t)frame * (uint64_t)p->count +
+                     (uint64_t)sample;
+    /* The stratified length's place in its stratum: the midpoint in frame 0, then the
+       golden-ratio sequence from it, so frames fill the strata evenly too. */
+    double t = 0.5 + ssg_sampling_frame_turn(frame);
+    double mid = t - floor(t);
     u[0] = ssg_halton_radical_inverse(index, p->bases.v[0]);
     u[1] = ssg_halton_radical_inverse(index, p->bases.v[1]);
     if (p->bases.count >= 3) {
@@ -44,9 +56,9 @@ void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3]
     } else if (p->period > 0) {
         int blocks = p->count / p->period;
         int r = sample % p->period, j = sample / p->period;
-        u[2] = ((double)r + ((double)j + 0.5) / blocks) / p->period;
+        u[2] = ((double)r + ((double)j + mid) / blocks) / p->period;
     } else {
-        u[2] = ((double)sample + 0.5) / p->count;
+        u[2] = ((double)sample + mid) / p->count;
     }
 }
 
@@ -132,19 +144,46 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
+/* The kernel of frame `frame`: count samples, planar (x plane, y, z). */
+static void make_kernel(const struct ssg_halton_params *p, int frame, float *kernel)
+{
+    for (int i = 0; i < p->count; i++) {
+        double u[3], s[3];
+        ssg_halton_point_at(p, frame, i, u);
+        map_sample(p, u, s);
+        for (int ch = 0; ch < 3; ch++)
+            kernel[ch * p->count + i] = (float)s[ch];
+    }
+}
+
+void ssg_halton_frame(const struct ssg_halton_consts *c, int frame, float *kernel,
+                      float *pattern)
+{
+    size_t cells = (size_t)c->n * (size_t)c->n;
+    if (frame == 0) { /* the single-frame bytes, -0 included */
+        memcpy(kernel, c->kernel, sizeof(float) * 3 * (size_t)c->count);
+        memcpy(pattern, c->pattern, sizeof(float) * 2 * cells);
+        return;
+    }
+    make_kernel(&c->p, frame, kernel);
+    /* Every pixel's angle advances by the same golden-ratio turn: each pixel's angles
+       over frames are then a Kronecker sequence, and the tile keeps its layout. */
+    double a = 2.0 * M_PI * ssg_sampling_frame_turn(frame), ca = cos(a), sa = sin(a);
+    for (size_t i = 0; i < cells; i++) {
+        double co = c->pattern[i], si = c->pattern[cells + i];
+        pattern[i] = (float)(co * ca - si * sa);
+        pattern[cells + i] = (float)(si * ca + co * sa);
+    }
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_halton_params *p = params;
     struct ssg_halton_consts *c = consts;
+    c->p = *p;
     c->count = p->count;
     c->n = p->pattern;
-    for (int i = 0; i < p->count; i++) {
-        double u[3], s[3];
-        ssg_halton_point(p, i, u);
-        map_sample(p, u, s);
-        for (int ch = 0; ch < 3; ch++)
-            c->kernel[ch * p->count + i] = (float)s[ch];
-    }
+    make_kernel(p, 0, c->kernel);
     if (!ssg_halton_make_pattern(p->rotations, p->pattern, ctx->frame ? ctx->frame->seed : 1,
                                  c->pattern))
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the blue-noise tile");

@@ -63,8 +63,10 @@ enum ssg_halton_rotations {
 SSG_PARAMS_STRUCT(ssg_halton_params, SSG_HALTON_PARAMS);
 
 /* What prepare() computes and both backends read: images in the planar layout of
- * ssgraph.h, ready to be copied into the outputs. */
+ * ssgraph.h, ready to be copied into the outputs: frame 0's. A later frame of a sequence
+ * is made from them and p by ssg_halton_frame. */
 struct ssg_halton_consts {
+    struct ssg_halton_params p; /* the parameters as given */
     int count;  /* kernel samples (kernel image width) */
     int n;      /* rotation tile side (pattern image width and height) */
     float kernel[3 * SSG_HALTON_MAX_COUNT];                       /* x plane, y, z */
@@ -79,6 +81,19 @@ double ssg_halton_radical_inverse(uint64_t i, int base);
  * direction (eq. 7 with the first two bases at index offset + sample), u[2] the length
  * (third base, else the stratified value described in README.md). */
 void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3]);
+/* The same in frame `frame` of a sequence (README.md, "Frames"): Halton index offset +
+ * frame * count + sample, so N frames of count samples use N * count distinct points; a
+ * stratified length moves within its stratum by the golden-ratio sequence. Frame 0 is
+ * ssg_halton_point. */
+void ssg_halton_point_at(const struct ssg_halton_params *p, int frame, int sample,
+                         double u[3]);
+
+/* Kernel (3 * count floats, planar) and rotation tile (2 * n * n floats) of frame
+ * `frame` from prepare()'s constants: the kernel of ssg_halton_point_at, the tile turned
+ * about the normal by 2 pi ssg_sampling_frame_turn(frame). Frame 0 copies the constants'
+ * bytes. Both backends run this, so they copy the same floats. */
+void ssg_halton_frame(const struct ssg_halton_consts *c, int frame, float *kernel,
+                      float *pattern);
 
 /* Largest k with base^k dividing period (0 when period <= 0): the number of leading
  * digits that eq. 8 guarantees samples sample and sample + m*period share. */

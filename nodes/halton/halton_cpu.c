@@ -1,8 +1,7 @@
-/* halton_cpu.c - CPU backend of the `halton` node (method in README.md): the kernel and
- * the rotation tile were computed by prepare() (halton.c); running is copying those bytes
- * into the two outputs, so every backend sees exactly the same samples. */
-#include <string.h>
-
+/* halton_cpu.c - CPU backend of the `halton` node (method in README.md): prepare()
+ * (halton.c) computed frame 0's kernel and rotation tile; ssg_halton_frame makes the
+ * running frame's from them (a copy in frame 0), and running is copying those bytes into
+ * the two outputs, so every backend sees exactly the same samples. */
 #include "halton.h"
 #include "graph/node.h"
 
@@ -10,8 +9,6 @@ enum ssg_err ssg_halton_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
                                 const struct ssg_io *io)
 {
     const struct ssg_halton_consts *c = consts;
-    struct ssg_image *kernel = io->out[0], *rotation = io->out[1];
-    memcpy(kernel->data, c->kernel, sizeof(float) * 3 * (size_t)c->count);
-    memcpy(rotation->data, c->pattern, sizeof(float) * 2 * (size_t)c->n * (size_t)c->n);
+    ssg_halton_frame(c, ctx->frame_index, io->out[0]->data, io->out[1]->data);
     return SSG_OK;
 }

@@ -44,22 +44,29 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 }
 
 /* The seed's pattern offsets (whole pixels below 1024: the noise's float arithmetic
-   stays as exact as at the origin) and the turn and slice tables. */
+   stays as exact as at the origin) and the turn table; the slices are the frame's
+   (ssg_ssilvb_frame_of). */
 static void prepare_tables(const struct ssg_node_ctx *ctx, struct ssg_ssilvb_consts *c)
 {
     uint64_t state = (ctx->frame ? ctx->frame->seed : 1) ^ 0xA54FF53A5F1D36F1ull;
     for (int i = 0; i < 4; i++)
         c->noise_off[i] = (float)(ssg_splitmix64(&state) % 1024u);
-    for (int k = 0; k < c->p.slices; k++) {
-        double a = M_PI * k / c->p.slices;
-        c->slice_cos[k] = (float)cos(a);
-        c->slice_sin[k] = (float)sin(a);
-    }
     for (int j = 0; j < SSG_SSILVB_TURNS; j++) {
         double a = M_PI * (j + 0.5) / (SSG_SSILVB_TURNS * (double)c->p.slices);
         c->turn_cos[j] = (float)cos(a);
         c->turn_sin[j] = (float)sin(a);
     }
+}
+
+void ssg_ssilvb_frame_of(const struct ssg_ssilvb_consts *c, int frame,
+                         struct ssg_ssilvb_frame *f)
+{
+    /* Frame 0: turn 0 and shift 0, the single-frame slices pi k / slices and offsets. */
+    ssg_sampling_angles_at(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
+                           f->slice_sin);
+    float shift = ssg_sampling_frame_shift(frame);
+    for (int i = 0; i < 4; i++)
+        f->noise_off[i] = c->noise_off[i] + shift;
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)

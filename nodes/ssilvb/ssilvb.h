@@ -74,14 +74,23 @@ struct ssg_ssilvb_consts {
     float invf;                   /* 1 / proj.f */
     float noise_off[4];           /* seed-derived pixel offsets of the two noise patterns
                                      (rotation x, y; jitter x, y), whole numbers */
-    float slice_cos[SSG_SSILVB_MAX_SLICES]; /* cos(pi k / slices) */
-    float slice_sin[SSG_SSILVB_MAX_SLICES]; /* sin(pi k / slices) */
     float turn_cos[SSG_SSILVB_TURNS];       /* cos(pi (j + 0.5) / (TURNS slices)) */
     float turn_sin[SSG_SSILVB_TURNS];       /* sin of the same */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
        [x] and e1z at [w + x] (ssg_sampling_column_basis); read by both backends. */
     float e1[2 * SSG_IMAGE_MAX_SIDE];
 };
+
+/* What changes from one frame of a sequence to the next (README.md, "Frames"), made by
+   ssg_ssilvb_frame_of for both backends: the slice table turned by a golden-ratio
+   fraction of one slice, and the noise offsets moved by the temporal noise shift. */
+struct ssg_ssilvb_frame {
+    float slice_cos[SSG_SSILVB_MAX_SLICES]; /* cos(pi (k + ssg_sampling_frame_turn) / slices) */
+    float slice_sin[SSG_SSILVB_MAX_SLICES]; /* sin of the same */
+    float noise_off[4]; /* the consts' offsets + ssg_sampling_frame_shift; theirs in frame 0 */
+};
+void ssg_ssilvb_frame_of(const struct ssg_ssilvb_consts *c, int frame,
+                         struct ssg_ssilvb_frame *f);
 
 /* The descriptor (ssilvb.c). */
 extern const struct ssg_node_desc ssg_node_ssilvb;

@@ -41,6 +41,7 @@ enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
 
 struct job {
     const struct ssg_ssilvb_consts *c;
+    struct ssg_ssilvb_frame fr;   /* this frame's slices and noise offsets */
     const float *pos[3], *nrm[3]; /* planes of the G-buffer */
     const float *depth;           /* plane the depth is read from */
     float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
@@ -135,7 +136,7 @@ setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int le
     const float invf = c->invf, radius = c->p.radius, f = c->proj.f;
     const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
     const float av = -(yf + 0.5f - c->proj.cy) * invf;
-    const float *no = c->noise_off;
+    const float *no = j->fr.noise_off;
     for (int i = 0; i < len; i++) {
         float xf = (float)(x0 + i);
         float au = (xf + 0.5f - c->proj.cx) * invf;
@@ -365,7 +366,7 @@ chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len
                       k->nz, k->px, k->py, k->pz, k->dp);
     setup_chunk(j, k, y, x0, len);
     for (int s = 0; s < c->p.slices; s++) {
-        setup_slice(j, k, len, c->slice_cos[s], c->slice_sin[s]);
+        setup_slice(j, k, len, j->fr.slice_cos[s], j->fr.slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++)
             step_both(j, k, len, (float)y, (float)st, has_back);
         finish_slice(k, len);
@@ -411,6 +412,7 @@ enum ssg_err ssg_ssilvb_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     const struct ssg_image *dep = io->in[SSG_SSILVB_IN_DEPTH];
     const struct ssg_image *back = io->in[SSG_SSILVB_IN_BACK];
     struct job j = {.c = c, .w = pos->width, .h = pos->height};
+    ssg_ssilvb_frame_of(c, ctx->frame_index, &j.fr);
     j.ao = io->out[SSG_SSILVB_OUT_AO]->data;
     j.bounce = io->out[SSG_SSILVB_OUT_BOUNCE]->data;
     for (int ch = 0; ch < 3; ch++) {
