@@ -87,7 +87,7 @@ reproject(const struct job *j, int y, int x0, int len, const float *restrict pre
     const float *restrict mx = j->motion[0], *restrict my = j->motion[1];
     const float *restrict mz = j->motion[2], *restrict depth = j->depth;
     const float *restrict n0 = j->nrm[0], *restrict n1 = j->nrm[1], *restrict n2 = j->nrm[2];
-    const int w = j->w, h = j->h;
+    const int iw = j->w, ih = j->h;
     const float tol = j->c->p.depth_tolerance, ntol = j->c->p.normal_tolerance;
     const float xmax = (float)j->w + 1.0f, ymax = (float)j->h + 1.0f;
     const size_t row = (size_t)y * (size_t)j->w + (size_t)x0;
@@ -105,8 +105,8 @@ reproject(const struct job *j, int y, int x0, int len, const float *restrict pre
 #pragma GCC unroll 4 /* so that the loop over pixels is the one vectorised */
         for (int t = 0; t < TAPS; t++) {
             int tx = ix + (t & 1), ty = iy + (t >> 1);
-            int inside = (tx >= 0) & (tx < w) & (ty >= 0) & (ty < h);
-            size_t q = inside ? (size_t)ty * (size_t)w + (size_t)tx : o;
+            int inside = (tx >= 0) & (tx < iw) & (ty >= 0) & (ty < ih);
+            size_t q = inside ? (size_t)ty * (size_t)iw + (size_t)tx : o;
             float wx = (t & 1) ? fx : 1.0f - fx, wy = (t >> 1) ? fy : 1.0f - fy;
             float pd = prev_depth[q];
             int ok = here & inside & (pd > 0.0f) & (fabsf(z - pd) <= tol * z);
