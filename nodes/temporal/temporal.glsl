@@ -24,8 +24,11 @@ float tap_w[4];
 float tap_sum(ivec2 p, vec3 m)
 {
     ivec2 size = ssg_grid;
-    float px = min(max(float(p.x) + m.x, -2.0), float(size.x) + 1.0);
-    float py = min(max(float(p.y) + m.y, -2.0), float(size.y) + 1.0);
+    float px = float(p.x) + m.x, py = float(p.y) + m.y;
+    px = px > -2.0 ? px : -2.0;
+    px = px < float(size.x) + 1.0 ? px : float(size.x) + 1.0;
+    py = py > -2.0 ? py : -2.0;
+    py = py < float(size.y) + 1.0 ? py : float(size.y) + 1.0;
     float fx0 = floor(px), fy0 = floor(py);
     precise float fx = px - fx0, fy = py - fy0;
     ivec2 i0 = ivec2(int(fx0), int(fy0));

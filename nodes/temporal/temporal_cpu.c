@@ -4,11 +4,12 @@
  * Fixed bands of rows (ssg_parallel_rows); every pixel is computed from the inputs alone,
  * so the result does not depend on the thread count. A row is cut into chunks and each
  * step is one straight loop over the chunk's pixels with per-pixel lanes (structure of
- * arrays), which the compiler vectorises: the 3 x 3 moments of in (neighbours at fixed
- * offsets: contiguous loads), the four bilinear history taps with their tests (index and
- * weight per tap; weight 0 for a rejected tap), then the clamp and blend (the history's
- * taps are gathers). No fused multiply-adds (SSG_VECTOR_FMA is not defined): every
- * multiply and add rounds as the shader's `precise` ones do. in2 rides along as further
+ * arrays): the 3 x 3 moments of in (neighbours at fixed offsets: contiguous loads,
+ * vectorised), the four bilinear history taps with their tests (index and weight per tap;
+ * weight 0 for a rejected tap; scalar, see reproject), then the clamp and blend
+ * (vectorised; the history's taps are gathers on AVX2 and up). No fused multiply-adds
+ * (SSG_VECTOR_FMA is not defined): every multiply and add rounds as the shader's
+ * `precise` ones do. in2 rides along as further
  * channels after in's, with in's taps, weights and blend factor and its own moments. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
@@ -75,27 +76,34 @@ moments(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
    its weight if it passes the tests (inside the image, previous surface present, relative
    depth difference within depth_tolerance, normals within normal_tolerance), else 0.
    Pixel (x, y)'s centre is x + 0.5, so the taps' top-left is floor(x + motion.x). The
-   depth test is |z - d'| <= tol z (the ratio of DESIGN without a division). `normals` is
-   a constant at each call site. */
+   depth test is |z - d'| <= tol z (the ratio of DESIGN without a division). The loop over
+   pixels does not vectorise yet (GCC 12 turns the tap loads into masked gathers it cannot
+   emit); the blend's gathers and the moments do. */
 SSG_VECTOR_CLONES static void
-reproject(const struct job *j, int y, int x0, int len, const float *restrict prev_depth,
-          const float *restrict pn0, const float *restrict pn1, const float *restrict pn2,
-          int (*restrict idx)[CHUNK], float (*restrict wt)[CHUNK], float *restrict wsums)
+reproject(const struct job *j, int y, int x0, int len, const float *restrict mx,
+          const float *restrict my, const float *restrict mz, const float *restrict depth,
+          const float *restrict n0, const float *restrict n1, const float *restrict n2,
+          const float *restrict prev_depth, const float *restrict pn0,
+          const float *restrict pn1, const float *restrict pn2, int (*restrict idx)[CHUNK],
+          float (*restrict wt)[CHUNK], float *restrict wsums)
 {
-    const int normals = pn0 != NULL;
-    /* the planes in locals: loaded once, so every access below has an affine base */
-    const float *restrict mx = j->motion[0], *restrict my = j->motion[1];
-    const float *restrict mz = j->motion[2], *restrict depth = j->depth;
-    const float *restrict n0 = j->nrm[0], *restrict n1 = j->nrm[1], *restrict n2 = j->nrm[2];
+    /* Every plane is a restrict parameter: so the compiler knows that the gathers and the
+       stores into the chunk do not overlap, and vectorises the loop over pixels. Without
+       normals the caller passes other planes and ntol -inf (the test always passes), so
+       that no load depends on a condition. */
     const int iw = j->w, ih = j->h;
-    const float tol = j->c->p.depth_tolerance, ntol = j->c->p.normal_tolerance;
+    const float tol = j->c->p.depth_tolerance;
+    const float ntol = j->nrm[0] ? j->c->p.normal_tolerance : -INFINITY;
     const float xmax = (float)j->w + 1.0f, ymax = (float)j->h + 1.0f;
     const size_t row = (size_t)y * (size_t)j->w + (size_t)x0;
     for (int i = 0; i < len; i++) {
         size_t o = row + (size_t)i;
         /* clamped so that a wild vector cannot overflow the int below */
-        float px = fminf(fmaxf((float)(x0 + i) + mx[o], -2.0f), xmax);
-        float py = fminf(fmaxf((float)y + my[o], -2.0f), ymax);
+        float px = (float)(x0 + i) + mx[o], py = (float)y + my[o];
+        px = px > -2.0f ? px : -2.0f; /* selects: fminf and fmaxf are libm calls here */
+        px = px < xmax ? px : xmax;
+        py = py > -2.0f ? py : -2.0f;
+        py = py < ymax ? py : ymax;
         float fx0 = floorf(px), fy0 = floorf(py);
         float fx = px - fx0, fy = py - fy0;
         int ix = (int)fx0, iy = (int)fy0;
@@ -110,10 +118,8 @@ reproject(const struct job *j, int y, int x0, int len, const float *restrict pre
             float wx = (t & 1) ? fx : 1.0f - fx, wy = (t >> 1) ? fy : 1.0f - fy;
             float pd = prev_depth[q];
             int ok = here & inside & (pd > 0.0f) & (fabsf(z - pd) <= tol * z);
-            if (normals) {
-                float c = n0[o] * pn0[q] + n1[o] * pn1[q] + n2[o] * pn2[q];
-                ok = ok & (c >= ntol);
-            }
+            float c = n0[o] * pn0[q] + n1[o] * pn1[q] + n2[o] * pn2[q];
+            ok = ok & (c >= ntol);
             float w = ok ? wx * wy : 0.0f;
             idx[t][i] = (int)q;
             wt[t][i] = w;
@@ -196,8 +202,10 @@ blend(const struct job *j, const struct chunk *k, int y, int x0, int len)
 static void temporal_chunk(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
     moments(j, k, y, x0, len);
-    reproject(j, y, x0, len, j->prev_depth, j->prev_nrm[0], j->prev_nrm[1], j->prev_nrm[2],
-              k->idx, k->wt, k->wsum);
+    const float *const *n = j->nrm[0] ? j->nrm : j->motion; /* any planes: see reproject */
+    const float *const *pn = j->nrm[0] ? j->prev_nrm : j->motion;
+    reproject(j, y, x0, len, j->motion[0], j->motion[1], j->motion[2], j->depth, n[0], n[1],
+              n[2], j->prev_depth, pn[0], pn[1], pn[2], k->idx, k->wt, k->wsum);
     blend(j, k, y, x0, len);
 }
 
