@@ -121,9 +121,11 @@ static void try_image(const struct ssg_node_desc *d, struct bound *b, struct ssg
     ssg_image_destroy(&bad);
 }
 
-/* Port arrays are indexed by their enumerators: a skipped enumerator leaves a hole. */
+/* Port arrays are indexed by their enumerators: a skipped enumerator leaves a hole. The
+   executor's per-node arrays hold SSG_MAX_PORTS ports a side. */
 static void test_ports_named(const struct ssg_node_desc *d)
 {
+    CHECK(d->input_count <= SSG_MAX_PORTS && d->output_count <= SSG_MAX_PORTS);
     for (int i = 0; i < d->input_count; i++)
         CHECK(d->inputs[i].name != NULL && d->inputs[i].types != 0);
     for (int i = 0; i < d->output_count; i++)

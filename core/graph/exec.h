@@ -6,8 +6,8 @@
 
 #include "graph/node.h"
 
-/* Most ports a node may have on either side. */
-#define SSG_MAX_PORTS 8
+/* Most ports a node may have on either side (the largest node today has 10 inputs). */
+#define SSG_MAX_PORTS 12
 /* Most extra named inputs (write's layers). */
 #define SSG_MAX_EXTRA 16
 
