@@ -368,6 +368,28 @@ SSG_API enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_vi
 SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
                                         struct ssg_diags *diags);
 
+/* Time (docs/time.md). Frame f of a sequence is at time f / fps (the scene's frame_rate,
+ * 30 without one); a scene with a camera path (camera_key lines or an orbit) gives each
+ * frame its camera, a scene without one keeps its camera in every frame. A run of N frames
+ * (ssg_run_options.frames) runs frames first .. first + N - 1, first = 0 unless
+ * ssg_graph_set_frame chose another; nodes see the frame's index, time, the camera of the
+ * frame before (prev_camera) and whether history may be reused (history_reset: 0 only
+ * when the frame follows on from the frame before without a cut of the path).
+ *
+ * ssg_graph_camera_at gives frame `frame_index`'s camera (the scene's camera for a scene
+ * without a path); SSG_E_SCENE without a scene, SSG_E_VALUE for a negative frame.
+ *
+ * ssg_graph_set_frame chooses the frame the next run starts at. On a kept graph
+ * (ssg_graph_keep) a one-frame run of frame last + 1 follows on from the last frame run
+ * (prev_camera its camera, history kept); any other frame is a cut. When the frame's
+ * camera differs from the last one, the nodes that read the camera prepare and run again,
+ * as after ssg_graph_set_view. A new camera from ssg_graph_set_view is a cut, and
+ * one-frame runs keep it (rather than the path's) until the next ssg_graph_set_frame. */
+SSG_API enum ssg_err ssg_graph_camera_at(const struct ssg_graph *graph, int frame_index,
+                                         struct ssg_view *out, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set_frame(struct ssg_graph *graph, int frame_index,
+                                         struct ssg_diags *diags);
+
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */
 SSG_API enum ssg_err ssg_scene_check(const char *path, struct ssg_diags *diags);
