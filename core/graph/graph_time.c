@@ -48,7 +48,7 @@ static void use_camera(struct ssg_graph *g, const struct ssg_camera *camera)
 int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int live,
                    struct ssg_time_step *step)
 {
-    step->time_s = frame / frames_per_second(g);
+    step->time_s = (float)(frame / frames_per_second(g)); /* as the path's (camera_path.c) */
     step->reset = 1;
     if (!g->scene)
         return 0;

@@ -159,10 +159,11 @@ void ssg_camera_path_eval(const struct ssg_camera_path *path, double t, struct s
 void ssg_camera_path_frame(const struct ssg_camera_path *path, int frame,
                            struct ssg_camera *out, int *cut)
 {
-    double t = frame / path->fps;
+    /* key times are the scene file's floats: a frame time rounded to float meets a key
+       written at that time (frame 3 at 30 fps is the key at time=0.1) */
+    double t = (float)(frame / path->fps), before = (float)((frame - 1) / path->fps);
     ssg_camera_path_eval(path, t, out);
-    *cut = frame > 0 && ssg_camera_path_piece(path, t) !=
-                            ssg_camera_path_piece(path, (frame - 1) / path->fps);
+    *cut = frame > 0 && ssg_camera_path_piece(path, t) != ssg_camera_path_piece(path, before);
 }
 
 int ssg_camera_differs(const struct ssg_camera *a, const struct ssg_camera *b)
