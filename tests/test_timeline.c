@@ -17,28 +17,37 @@
 
 #define SCENE "examples/cornell_path.scene"
 
-static long file_bytes(const char *path, unsigned char **out)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return -1;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    *out = malloc((size_t)n + 1);
-    long got = (long)fread(*out, 1, (size_t)n, f);
-    fclose(f);
-    return got == n ? n : -1;
-}
-
-/* 1 when the two files exist and hold the same bytes. */
+/* 1 when the two files exist and hold the same bytes (compared a block at a time). */
 static int same_file(const char *a, const char *b)
 {
-    unsigned char *x = NULL, *y = NULL;
-    long nx = file_bytes(a, &x), ny = file_bytes(b, &y);
-    int same = nx > 0 && nx == ny && memcmp(x, y, (size_t)nx) == 0;
-    free(x), free(y);
+    FILE *x = fopen(a, "rb"), *y = fopen(b, "rb");
+    int same = x && y;
+    unsigned char bx[4096], by[4096];
+    while (same) {
+        size_t nx = fread(bx, 1, sizeof bx, x), ny = fread(by, 1, sizeof by, y);
+        same = nx == ny && memcmp(bx, by, nx) == 0;
+        if (nx < sizeof bx)
+            break;
+    }
+    if (x)
+        fclose(x);
+    if (y)
+        fclose(y);
     return same;
+}
+
+/* The whole of a text file, NUL-terminated, malloc'd; NULL when unreadable. */
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *text = f ? calloc(1, 1 << 16) : NULL;
+    if (text && fread(text, 1, (1 << 16) - 1, f) == 0) {
+        free(text);
+        text = NULL;
+    }
+    if (f)
+        fclose(f);
+    return text;
 }
 
 /* graphs/ssao.graph on `scene` at 48x32, `frames` frames into dir; 0 on success. */
@@ -93,18 +102,16 @@ static const char *still_scene(void)
     CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), 0);
     CHECK_EQ(ssg_graph_camera_at(g, 2, &v, &d), 0);
     ssg_graph_destroy(&g);
-    unsigned char *text = NULL;
-    long n = file_bytes(SCENE, &text);
-    CHECK(n > 0);
-    if (n <= 0)
+    char *text = read_text(SCENE);
+    CHECK(text != NULL);
+    if (!text)
         return NULL;
-    text[n] = 0;
     static char out[16384];
     int len = snprintf(out, sizeof out, "camera(position=[%.9g, %.9g, %.9g], target=[%.9g, "
                        "%.9g, %.9g], up=[%.9g, %.9g, %.9g], fov=%.9g, near=0.05, far=20)\n",
                        v.position[0], v.position[1], v.position[2], v.target[0],
                        v.target[1], v.target[2], v.up[0], v.up[1], v.up[2], v.fov_y);
-    for (char *line = strtok((char *)text, "\n"); line; line = strtok(NULL, "\n"))
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
         if (strncmp(line, "camera", 6) && strncmp(line, "frame_rate", 10))
             len += snprintf(out + len, sizeof out - (size_t)len, "%s\n", line);
     free(text);
