@@ -170,7 +170,8 @@ struct ssg_run_node {
                                one-frame run, every sink) */
     double gpu_ms;          /* last frame: the GL timer query around its run, ms; 0 on cpu */
     double transfer_ms;     /* last frame: moving its inputs between CPU and GL, ms */
-    int calls;              /* runs: one a frame, a sink's one in the last frame only */
+    int calls;              /* runs: one a frame, a sink's one in the last frame only
+                               (one a frame with write sequence=true) */
     double avg_ms;          /* over its calls, prepare excluded */
     double min_ms, max_ms;  /* over its calls, prepare excluded; 0 without calls */
     double median_ms;       /* over its calls, prepare excluded: its steady time, without
@@ -179,7 +180,8 @@ struct ssg_run_node {
                                a frame with time, else 0 */
     double gpu_avg_ms;      /* over its calls; 0 on cpu */
     double transfer_avg_ms; /* over its calls */
-    double prepare_ms;      /* its one prepare() */
+    double prepare_ms;      /* its last prepare() (a camera path's new camera prepares
+                               the nodes that read it again, docs/time.md) */
     double bytes;           /* a run's images: every connected input and output once (the
                                least traffic it can have) */
     double flops;           /* a run's floating-point operations as the node declares them
@@ -235,9 +237,11 @@ typedef void (*ssg_log_fn)(void *user, const char *line);
 struct ssg_run_options {
     const char *out_dir;   /* directory for written files; default "out" */
     int threads;           /* OpenMP threads; 0 = all cores */
-    int frames;            /* run the graph this many times (0 = 1): every node prepares
-                              once, then runs every frame, but sinks (write, compare) only
-                              in the last */
+    int frames;            /* run the graph this many times (0 = 1): frames of a sequence
+                              (docs/time.md); every node prepares once (again when a
+                              camera path moves the camera, if it reads the camera), then
+                              runs every frame, but sinks (write, compare) only in the
+                              last (write sequence=true: in every frame) */
     struct ssg_run_stats *stats; /* filled by the run when not NULL (see its ownership) */
     ssg_progress_fn progress;    /* progress of long nodes; NULL = not reported */
     ssg_log_fn log;              /* the library's notices; NULL = not reported */
