@@ -7,7 +7,8 @@
  *   - scene files: keys in any order are sorted, a key's missing fov/up come from the
  *     camera line, the path sets the scene's camera at time 0;
  *   - errors at file:line:col with their code: two keys at one time, a lone key, an orbit
- *     beside keys, radius <= 0, period <= 0, a cut on the first key, a second orbit. */
+ *     beside keys, radius <= 0, period <= 0, a cut on the first key, a second orbit, a
+ *     key looking along the camera line's up. */
 #include <math.h>
 #include <string.h>
 
@@ -168,6 +169,9 @@ static const struct bad bads[] = {
     {"camera_key(time=0, position=[0,0,3], target=[0,0,3])\n"
      "camera_key(time=1, position=[1,0,3], target=[0,0,0])\n", SSG_E_VALUE, 1, "[0,0,3])"},
     {"frame_rate(fps=0)\n", SSG_E_RANGE, 1, "0)"},
+    {"camera(position=[0,3,0], up=[0,0,1])\n"
+     "camera_key(time=0, position=[0,0,3], target=[0,0,0])\n"
+     "camera_key(time=1, position=[1,0,3], target=[0,0,0])\n", SSG_E_VALUE, 2, "camera_key"},
     {"camera_key(position=[0,0,3], target=[0,0,0])\n", SSG_E_MISSING_INPUT, 1, "camera_key"},
 };
 

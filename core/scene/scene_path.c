@@ -60,18 +60,30 @@ static void fail_at(struct scene_loader *l, enum ssg_err code, struct ssg_loc at
     ssg_scene_fail(l, code);
 }
 
+/* The up a key gets: its own, else the camera line's (else the table's default). */
+static const float *key_up(const struct scene_loader *l, const struct scene_entity *e)
+{
+    if (given(e, "up"))
+        return ((const struct camera_key_args *)e->args)->up;
+    for (int i = 0; i < l->count; i++)
+        if (l->ents[i].kind == SK_CAMERA)
+            return ((const struct camera_args *)l->ents[i].args)->up;
+    return ((const struct camera_key_args *)e->args)->up;
+}
+
 /* A key's view must be a camera: a direction to look in, and an up not along it. */
 static void check_key_view(struct scene_loader *l, const struct scene_entity *e)
 {
     const struct camera_key_args *k = e->args;
+    const float *up = key_up(l, e);
     double f[3], x[3], ff = 0, xx = 0, uu = 0;
     for (int i = 0; i < 3; i++)
         f[i] = (double)k->target[i] - k->position[i];
-    x[0] = f[1] * k->up[2] - f[2] * k->up[1];
-    x[1] = f[2] * k->up[0] - f[0] * k->up[2];
-    x[2] = f[0] * k->up[1] - f[1] * k->up[0];
+    x[0] = f[1] * up[2] - f[2] * up[1];
+    x[1] = f[2] * up[0] - f[0] * up[2];
+    x[2] = f[0] * up[1] - f[1] * up[0];
     for (int i = 0; i < 3; i++)
-        ff += f[i] * f[i], xx += x[i] * x[i], uu += (double)k->up[i] * k->up[i];
+        ff += f[i] * f[i], xx += x[i] * x[i], uu += (double)up[i] * up[i];
     if (ff == 0)
         fail_at(l, SSG_E_VALUE, written_at(e, "target"), "'camera_key' argument 'target': "
                 "the target equals the position (at time %g; line %d)", k->time, line_of(e));
