@@ -4,7 +4,8 @@
  *   - the camera really moves: frames 0 and 2 differ, and frame 2 has the bytes of a
  *     one-frame run of a scene whose `camera` line is the path's camera at frame 2
  *     (ssg_graph_camera_at);
- *   - a live graph (ssg_graph_set_frame): frame 2 run alone has the same bytes again;
+ *   - ssg_graph_set_frame: frame 2 run alone has the same bytes again, also on a kept
+ *     graph (ssg_graph_keep) that ran frame 0 first (its camera readers run again);
  *   - history_reset: 1 in frame 0 and at a cut of the path, 0 between; prev_camera is the
  *     frame before's (ssg_time_begin, what the executor hands each node);
  *   - a scene without a path keeps its camera in every frame. */
@@ -50,7 +51,8 @@ static char *read_text(const char *path)
     return text;
 }
 
-/* graphs/ssao.graph on `scene` at 48x32, `frames` frames into dir; 0 on success. */
+/* graphs/ssao.graph on `scene` at 48x32, `frames` frames into dir; 0 on success. With
+   first < 0: a kept graph (ssg_graph_keep) runs frame 0, then frame -first alone. */
 static int run(const char *scene, int frames, int threads, int sequence, const char *dir,
                int first)
 {
@@ -60,9 +62,15 @@ static int run(const char *scene, int frames, int threads, int sequence, const c
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     enum ssg_err e = ssg_graph_load("graphs/ssao.graph", &ov, &g, &d);
+    struct ssg_run_options ro = {.out_dir = dir, .threads = threads, .frames = frames};
+    if (!e && first < 0) {
+        e = ssg_graph_keep(g, 0, &d);
+        if (!e)
+            e = ssg_graph_run(g, &ro, &d); /* frame 0, its outputs kept */
+        first = -first;
+    }
     if (!e && first)
         e = ssg_graph_set_frame(g, first, &d);
-    struct ssg_run_options ro = {.out_dir = dir, .threads = threads, .frames = frames};
     if (!e)
         e = ssg_graph_run(g, &ro, &d);
     if (e)
@@ -145,6 +153,11 @@ static void test_frame_camera(void)
     CHECK(same_pixels(a, b));
     CHECK_EQ(run(SCENE, 1, 2, 1, live, 2), 0); /* frame 2 alone (ssg_graph_set_frame) */
     snprintf(a, sizeof a, "%s/ssao_0002.exr", live);
+    CHECK(same_file(a, b));
+    /* a kept graph that ran frame 0: the camera's readers run again for frame 2 */
+    const char *kept = tmp_path("kept");
+    CHECK_EQ(run(SCENE, 1, 2, 1, kept, -2), 0);
+    snprintf(a, sizeof a, "%s/ssao_0002.exr", kept);
     CHECK(same_file(a, b));
 }
 
