@@ -213,9 +213,10 @@ static const struct option options[] = {
      .help = "worker threads (default: all cores); never changes the result"},
     {.name = "--frames", .arg = "N", .commands = SSG_CLI_RUN | SSG_CLI_BENCH,
      .take = take_int, .field = OF(frames), .lo = 1, .hi = 1000000,
-     .help = "run the graph N times (each node prepares once); run prints a\n"
-             "per-node profile: calls, avg/min/max ms, share of the frame;\n"
-             "bench times each cell over N frames (default 5)"},
+     .help = "run N frames (frame f at time f / fps: a scene's camera path\n"
+             "moves the camera, docs/time.md; write sequence=true writes each);\n"
+             "run prints a per-node profile: calls, avg/min/max ms, share of\n"
+             "the frame; bench times each cell over N frames (default 5)"},
     {.name = "--stereo", .commands = SSG_CLI_RUN | SSG_CLI_BENCH, .take = take_flag,
      .field = OF(stereo),
      .help = "both eyes of a head-mounted display, 1080x1200 each unless\n"

@@ -170,7 +170,8 @@ struct ssg_run_node {
                                one-frame run, every sink) */
     double gpu_ms;          /* last frame: the GL timer query around its run, ms; 0 on cpu */
     double transfer_ms;     /* last frame: moving its inputs between CPU and GL, ms */
-    int calls;              /* runs: one a frame, a sink's one in the last frame only */
+    int calls;              /* runs: one a frame, a sink's one in the last frame only
+                               (one a frame with write sequence=true) */
     double avg_ms;          /* over its calls, prepare excluded */
     double min_ms, max_ms;  /* over its calls, prepare excluded; 0 without calls */
     double median_ms;       /* over its calls, prepare excluded: its steady time, without
@@ -179,7 +180,8 @@ struct ssg_run_node {
                                a frame with time, else 0 */
     double gpu_avg_ms;      /* over its calls; 0 on cpu */
     double transfer_avg_ms; /* over its calls */
-    double prepare_ms;      /* its one prepare() */
+    double prepare_ms;      /* its last prepare() (a camera path's new camera prepares
+                               the nodes that read it again, docs/time.md) */
     double bytes;           /* a run's images: every connected input and output once (the
                                least traffic it can have) */
     double flops;           /* a run's floating-point operations as the node declares them
@@ -235,9 +237,11 @@ typedef void (*ssg_log_fn)(void *user, const char *line);
 struct ssg_run_options {
     const char *out_dir;   /* directory for written files; default "out" */
     int threads;           /* OpenMP threads; 0 = all cores */
-    int frames;            /* run the graph this many times (0 = 1): every node prepares
-                              once, then runs every frame, but sinks (write, compare) only
-                              in the last */
+    int frames;            /* run the graph this many times (0 = 1): frames of a sequence
+                              (docs/time.md); every node prepares once (again when a
+                              camera path moves the camera, if it reads the camera), then
+                              runs every frame, but sinks (write, compare) only in the
+                              last (write sequence=true: in every frame) */
     struct ssg_run_stats *stats; /* filled by the run when not NULL (see its ownership) */
     ssg_progress_fn progress;    /* progress of long nodes; NULL = not reported */
     ssg_log_fn log;              /* the library's notices; NULL = not reported */
@@ -367,6 +371,28 @@ SSG_API enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_vi
                                     struct ssg_diags *diags);
 SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
                                         struct ssg_diags *diags);
+
+/* Time (docs/time.md). Frame f of a sequence is at time f / fps (the scene's frame_rate,
+ * 30 without one); a scene with a camera path (camera_key lines or an orbit) gives each
+ * frame its camera, a scene without one keeps its camera in every frame. A run of N frames
+ * (ssg_run_options.frames) runs frames first .. first + N - 1, first = 0 unless
+ * ssg_graph_set_frame chose another; nodes see the frame's index, time, the camera of the
+ * frame before (prev_camera) and whether history may be reused (history_reset: 0 only
+ * when the frame follows on from the frame before without a cut of the path).
+ *
+ * ssg_graph_camera_at gives frame `frame_index`'s camera (the scene's camera for a scene
+ * without a path); SSG_E_SCENE without a scene, SSG_E_VALUE for a negative frame.
+ *
+ * ssg_graph_set_frame chooses the frame the next run starts at. On a kept graph
+ * (ssg_graph_keep) a one-frame run of frame last + 1 follows on from the last frame run
+ * (prev_camera its camera, history kept); any other frame is a cut. When the frame's
+ * camera differs from the last one, the nodes that read the camera prepare and run again,
+ * as after ssg_graph_set_view. A new camera from ssg_graph_set_view is a cut, and
+ * one-frame runs keep it (rather than the path's) until the next ssg_graph_set_frame. */
+SSG_API enum ssg_err ssg_graph_camera_at(const struct ssg_graph *graph, int frame_index,
+                                         struct ssg_view *out, struct ssg_diags *diags);
+SSG_API enum ssg_err ssg_graph_set_frame(struct ssg_graph *graph, int frame_index,
+                                         struct ssg_diags *diags);
 
 /* Parses and validates a scene file and every file it names (meshes included, so a broken
  * glTF is found), without building the ray-tracing scene. */

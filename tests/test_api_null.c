@@ -40,6 +40,11 @@ static void graphs(void)
     double v;
     expect_usage(ssg_graph_param(NULL, "a.b", &v, NULL, &d), &d, "ssg_graph_param", "graph");
     d = (struct ssg_diags){0};
+    struct ssg_view view;
+    expect_usage(ssg_graph_camera_at(NULL, 0, &view, &d), &d, "ssg_graph_camera_at", "graph");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_set_frame(NULL, 0, &d), &d, "ssg_graph_set_frame", "graph");
+    d = (struct ssg_diags){0};
     expect_usage(ssg_scene_check(NULL, &d), &d, "ssg_scene_check", "path");
     ssg_graph_destroy(NULL);
     g = NULL;

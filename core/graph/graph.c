@@ -10,6 +10,7 @@
 #include "graph/image.h"
 #include "lang/files.h"
 #include "lang/params.h"
+#include "scene/camera_path.h"
 
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
 {
@@ -20,22 +21,6 @@ static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
         }
     }
     return 0;
-}
-
-/* Moves the camera and its target along the camera's right axis (parallel stereo eyes). */
-static void shift_camera(struct ssg_camera *c, float offset)
-{
-    float f[3], r[3];
-    for (int k = 0; k < 3; k++)
-        f[k] = c->target[k] - c->position[k];
-    r[0] = f[1] * c->up[2] - f[2] * c->up[1];
-    r[1] = f[2] * c->up[0] - f[0] * c->up[2];
-    r[2] = f[0] * c->up[1] - f[1] * c->up[0];
-    float len = sqrtf(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-    for (int k = 0; k < 3 && len > 0; k++) {
-        c->position[k] += offset * r[k] / len;
-        c->target[k] += offset * r[k] / len;
-    }
 }
 
 /* Loads the scene (assets too when load_assets) and derives the frame from its camera. */
@@ -81,8 +66,9 @@ static enum ssg_err setup_frame(struct ssg_graph *g, int load_assets, float eye_
                                         load_assets, &g->scene, diags);
     if (e)
         return e;
+    g->eye_offset = eye_offset; /* each frame's camera of a path moves too (graph_time.c) */
     if (eye_offset != 0.0f)
-        shift_camera(&g->scene->camera, eye_offset);
+        ssg_camera_shift(&g->scene->camera, eye_offset);
     g->frame.fov_y = g->scene->camera.fov_y;
     g->frame.near_z = g->scene->camera.near_z;
     g->frame.far_z = g->scene->camera.far_z;

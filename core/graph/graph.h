@@ -21,6 +21,27 @@ struct gconn {
                                value.prev = 1: prev(node.port), graph_history.h) */
 };
 
+/* Where a graph stands in time (graph_time.c, docs/time.md): the frame the next run starts
+ * at and the last frame run, whose camera is the next frame's prev_camera when it follows
+ * on. */
+struct ssg_timeline {
+    int next;          /* first frame of the next run (ssg_graph_set_frame), 0 */
+    int last;          /* the last frame run, valid when has_last */
+    int has_last;      /* 0 = nothing to follow on from: none run yet, or a cut since */
+    int view_set;      /* 1 = ssg_graph_set_view's camera stands in for the path in
+                          one-frame runs, until ssg_graph_set_frame */
+    struct ssg_camera last_camera; /* the camera of frame `last` */
+    struct ssg_camera prepared_prev; /* the previous camera the nodes last prepared with */
+    int has_prepared_prev;
+};
+
+/* What one frame of a run sees of time (ssg_time_begin). */
+struct ssg_time_step {
+    double time_s;           /* frame / fps */
+    struct ssg_camera prev;  /* the camera of the frame before, or this one's */
+    int reset;               /* 1 = no earlier frame may be reused (node.h history_reset) */
+};
+
 struct gnode {
     const struct ssg_node_desc *desc;
     const char *name;          /* instance name ("ao"; "write_1" when anonymous) */
@@ -82,7 +103,18 @@ struct ssg_graph {
     struct ssg_file_list *files; /* graph files read (graph_files.h), NULL = none yet */
     struct ssg_history *history; /* the previous frame's images of the ports read through
                                   prev() (graph_history.h), NULL = none kept */
+    float eye_offset;          /* ssg_overrides.eye_offset: every camera moved sideways */
+    struct ssg_timeline time;  /* graph_time.c */
 };
+
+/* Before frame `frame` of a run (first: the run's first frame; frames: the run's count;
+ * live: the graph keeps its run state): puts the frame's camera (from the scene's path)
+ * into the scene and the frame, and fills *step. Returns 1 when the camera changed, so
+ * the nodes that read it must prepare again (graph_time.c). */
+int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int live,
+                   struct ssg_time_step *step);
+/* After frame `frame` ran: it is the one the next frame follows on from. */
+void ssg_time_end(struct ssg_graph *g, int frame);
 
 /* What a live graph keeps from one ssg_graph_run to the next (graph_live.c): per run
  * position, what prepare() made, its scratch, whether it is prepared, and whether its

@@ -480,7 +480,7 @@ static void check_output_clash(struct checker *c)
         if (!node->live || !node->desc->output_files)
             continue;
         char files[FILES_PER_NODE][SSG_FILE_NAME_MAX];
-        int k = node->desc->output_files(node->params, files, FILES_PER_NODE);
+        int k = node->desc->output_files(node->params, 0, files, FILES_PER_NODE);
         for (int f = 0; f < k; f++) {
             memcpy(w[n].file, files[f], sizeof w[n].file);
             w[n++].node = i;

@@ -355,6 +355,8 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
     memcpy(c->up, v->up, sizeof c->up);
     c->fov_y = v->fov_y;
     g->frame.fov_y = v->fov_y;
+    g->time.has_last = 0; /* a cut (graph_time.c); one-frame runs keep this view */
+    g->time.view_set = 1;
     struct ssg_diags quiet = {0};
     ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
     /* A node may read the camera (the G-buffer, the projection in prepare(), the ray

@@ -33,6 +33,8 @@ struct run {
     struct ssg_live *live;     /* the graph's kept state (graph.h), NULL = a fresh run */
     unsigned char *ran;        /* per node index: ran in this run (a live run skips a node
                                   whose outputs are kept and none of whose producers ran) */
+    int first_frame;           /* the frame index of the run's frame 0 (graph_time.c) */
+    struct ssg_time_step step; /* the frame being run: time, prev_camera, history_reset */
 };
 
 static void release_output(struct run *r, struct gnode *n, int port)
@@ -114,11 +116,11 @@ static void say(const struct run *r, const char *fmt, ...)
     r->opt->log(r->opt->user, line);
 }
 
-/* The files a sink that just ran has written, as its descriptor names them. */
-static void log_files(const struct run *r, const struct gnode *n)
+/* The files a sink that just ran in `frame` has written, as its descriptor names them. */
+static void log_files(const struct run *r, const struct gnode *n, int frame)
 {
     char files[4][SSG_FILE_NAME_MAX];
-    int count = n->desc->output_files ? n->desc->output_files(n->params, files, 4) : 0;
+    int count = n->desc->output_files ? n->desc->output_files(n->params, frame, files, 4) : 0;
     for (int i = 0; i < count; i++)
         say(r, "wrote %s/%s", out_dir(r), files[i]);
 }
@@ -171,11 +173,12 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .run = r->opt, .scratch = &r->scratch[p],
                                .graph_path = g->path, .sets = (const char *const *)g->sets,
                                .set_count = g->set_count, .supplied = n->supplied,
-                               .frame_index = frame,
-                               .prev_camera = g->scene ? &g->scene->camera : NULL,
-                               .history_reset = frame == 0};
-    if (history_reset >= 0)
-        ctx.history_reset = history_reset;
+                               .frame_index = r->first_frame + frame,
+                               .time_s = r->step.time_s,
+                               .prev_camera = g->scene ? &r->step.prev : NULL,
+                               .history_reset = r->step.reset};
+    if (history_reset >= 0) /* reads prev(): its history may be gone for its own reasons */
+        ctx.history_reset = history_reset || r->step.reset;
     double prepare_ms = 0;
     if (!r->prepared[p]) {
         double t0 = ssg_now_ms();
@@ -191,7 +194,7 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     if (!e && !ssg_profile_add(&r->prof, p, &r->t[p]))
         e = SSG_E_NOMEM;
     if (!e)
-        log_files(r, n);
+        log_files(r, n, r->first_frame + frame);
     r->t[p].ms += prepare_ms;
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
@@ -272,6 +275,38 @@ static int can_skip(const struct run *r, int p, int frames)
     return 1;
 }
 
+/* Node n runs in this frame: every node but a sink, which runs in the last frame only
+   unless it asks for every frame (write sequence=true). */
+static int runs_in(const struct gnode *n, int frame, int frames)
+{
+    const struct ssg_node_desc *desc = n->desc;
+    return !desc->is_sink || frame == frames - 1 ||
+           (desc->every_frame && desc->every_frame(n->params));
+}
+
+/* The camera moved between frames: every node that may read it prepares (and, on a live
+   graph, runs) again; those that declare camera_independent (node.h) keep their state. */
+static void forget_camera_nodes(struct run *r)
+{
+    for (int p = 0; p < r->g->order_count; p++) {
+        if (r->g->nodes[r->g->order[p]].desc->camera_independent)
+            continue;
+        free(r->consts[p]);
+        r->consts[p] = NULL;
+        r->prepared[p] = 0;
+        if (r->live)
+            r->live->kept[p] = 0;
+    }
+}
+
+/* Before frame `frame` of the run: its time, camera and history state (graph_time.c). */
+static void begin_frame(struct run *r, int frame, int frames)
+{
+    if (ssg_time_begin(r->g, r->first_frame + frame, frame == 0, frames, r->live != NULL,
+                       &r->step))
+        forget_camera_nodes(r);
+}
+
 /* One frame: every node in order, images given back after their last reader. Sinks
    (write, compare) run in the last frame only: a real-time frame shows its image rather
    than writing files, and the frame time is that of the passes. */
@@ -281,16 +316,16 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     double sum = 0;
     ssg_history_frame(r->g, r->pool);
     for (int p = 0; p < r->g->order_count && !e; p++) {
-        const struct ssg_node_desc *desc = r->g->nodes[r->g->order[p]].desc;
-        int sink = desc->is_sink;
-        if (can_skip(r, p, frames) || (r->opt->no_files && desc->output_files))
+        const struct gnode *n = &r->g->nodes[r->g->order[p]];
+        int sink = n->desc->is_sink, fresh = !r->prepared[p];
+        if (can_skip(r, p, frames) || (r->opt->no_files && n->desc->output_files))
             continue;
-        if (!sink || frame == frames - 1)
+        if (runs_in(n, frame, frames))
             e = run_node(r, p, frame);
         r->ran[r->g->order[p]] = 1;
         release_after(r, p);
-        if (!sink)
-            sum += r->t[p].ms - (frame == 0 ? r->prof.rows[p].prepare_ms : 0) +
+        if (!sink) /* the frame time leaves out a prepare made in this frame */
+            sum += r->t[p].ms - (fresh ? r->prof.rows[p].prepare_ms : 0) +
                    r->t[p].transfer_ms;
     }
     if (!e && !ssg_profile_frame(&r->prof, sum))
@@ -393,8 +428,13 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     int frames = r.opt->frames > 1 ? r.opt->frames : 1;
     enum ssg_err e = SSG_OK;
     double t0 = ssg_now_ms();
-    for (int f = 0; f < frames && !e; f++)
+    r.first_frame = g->time.next;
+    for (int f = 0; f < frames && !e; f++) {
+        begin_frame(&r, f, frames);
         e = run_frame(&r, f, frames);
+        if (!e)
+            ssg_time_end(g, r.first_frame + f);
+    }
     if (!e)
         e = report(&r, ssg_now_ms() - t0);
     if (!e)

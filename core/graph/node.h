@@ -259,11 +259,17 @@ struct ssg_node_desc {
                                 const struct ssg_shape *in, struct ssg_shape *out,
                                 char *why, size_t why_len);
     /* Optional, sinks that write files: the names of the files the node writes into the
-       output folder under these parameters (write: <name>.exr, <name>.png), at most `max`
-       names of SSG_FILE_NAME_MAX bytes; returns how many. Two live nodes that would write
-       one file are refused when the graph is checked: the second would silently replace
-       the first's. */
-    int (*output_files)(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max);
+       output folder under these parameters in frame `frame_index` (write: <name>.exr,
+       <name>.png; with sequence=true <name>_0003.exr...), at most `max` names of
+       SSG_FILE_NAME_MAX bytes; returns how many. Two live nodes that would write one file
+       (in frame 0) are refused when the graph is checked: the second would silently
+       replace the first's. */
+    int (*output_files)(const void *params, int frame_index, char (*files)[SSG_FILE_NAME_MAX],
+                        int max);
+    /* Optional, sinks: 1 when under these parameters the sink runs in every frame of a run
+       (write sequence=true: one set of files a frame); NULL or 0 = in the last frame
+       only, as every sink does by default. */
+    int (*every_frame)(const void *params);
     /* Optional. Turns parameters and the checked shapes (ctx->in_shape, ctx->out_shape)
        into the constants both backends read: sample kernels, the projection of the
        inputs' resolution, per-column or per-count tables. Called once before the first

@@ -282,7 +282,10 @@ static void check_entity(struct scene_loader *l, struct scene_entity *e)
     case SK_MATERIAL:
         check_file(l, e, "texture", ((const struct material_args *)e->args)->texture);
         break;
-    case SK_POINT_LIGHT: break;
+    case SK_POINT_LIGHT:
+    case SK_CAMERA_KEY:
+    case SK_ORBIT:
+    case SK_FRAME_RATE: break;
     case SK_DIRECTIONAL_LIGHT:
         if (e->at[param_index(e, "direction")].src &&
             is_zero3(((const struct light_args *)e->args)->direction))
@@ -385,11 +388,15 @@ static enum ssg_err read_scene(struct scene_loader *l, const char *path, const c
         check_entity(l, &l->ents[i]);
     check_unique(l, SK_CAMERA);
     check_unique(l, SK_ENVIRONMENT);
+    check_unique(l, SK_ORBIT);
+    check_unique(l, SK_FRAME_RATE);
+    if (!l->first)
+        ssg_scene_path_check(l);
     return l->first;
 }
 
 /* What a scene holds before any asset is loaded: the file's camera and environment. */
-static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
+static void scene_defaults(struct ssg_scene *s, struct scene_loader *l)
 {
     struct camera_args c;
     ssg_params_defaults(ssg_scene_kinds[SK_CAMERA].table, &c);
@@ -414,6 +421,7 @@ static void scene_defaults(struct ssg_scene *s, const struct scene_loader *l)
     s->camera.fov_y = c.fov;
     s->camera.near_z = c.near_z;
     s->camera.far_z = c.far_z;
+    ssg_scene_path_fill(l, &c);
 }
 
 enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
@@ -435,7 +443,7 @@ enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_a
     l.scene = s;
     if (read_scene(&l, path, lights) == SSG_OK) {
         scene_defaults(s, &l);
-        if (load_assets)
+        if (load_assets && !l.first)
             ssg_scene_build(&l);
     }
     ssg_arena_free(&l.arena);
@@ -463,6 +471,7 @@ void ssg_scene_destroy(struct ssg_scene **scene)
     free(s->materials);
     free(s->lights);
     free(s->models);
+    free(s->camera_path.keys);
     free(s);
     *scene = NULL;
 }

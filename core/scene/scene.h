@@ -29,6 +29,30 @@ struct ssg_camera {
     float far_z;       /* scene units */
 };
 
+/* A camera path (docs/time.md): camera_key lines (two or more) or an orbit, and the frame
+ * rate that turns frame numbers into times. Static geometry and lights only. Evaluated by
+ * camera_path.h. */
+struct ssg_camera_key {
+    double time;                         /* seconds from the start of the sequence */
+    float position[3], target[3], up[3]; /* world */
+    float fov_y;                         /* degrees */
+    int cut;                             /* 1 = the path jumps here from the key before */
+};
+struct ssg_orbit {
+    float target[3], up[3]; /* world; up is unit length */
+    float radius, height;   /* horizontal distance from target, height above it */
+    float period, start;    /* seconds a turn; degrees around up at time 0 */
+    float fov_y;            /* degrees */
+};
+struct ssg_camera_path {
+    double fps;                  /* frames per second (frame_rate, default 30) */
+    int key_count;               /* 0 = no keys, else >= 2 */
+    struct ssg_camera_key *keys; /* sorted by time; the scene owns them */
+    int has_orbit;               /* 1 = orbit (never together with keys) */
+    struct ssg_orbit orbit;
+    float near_z, far_z;         /* of the camera line, or its defaults */
+};
+
 enum ssg_light_kind { SSG_LIGHT_POINT, SSG_LIGHT_DIRECTIONAL };
 
 struct ssg_light {
@@ -85,7 +109,9 @@ struct ssg_scene {
     char path[512];
     char lights_path[512]; /* the lights file that replaced the scene's lights, "" = none */
     int has_camera;  /* 0 = neither the scene nor a glTF gave one; a default is used */
-    struct ssg_camera camera;
+    struct ssg_camera camera; /* with a path: the camera of the frame being run (time 0
+                                 after loading) */
+    struct ssg_camera_path camera_path; /* key_count 0 and has_orbit 0 = a static camera */
     struct ssg_environment environment;
     int light_count, material_count, mesh_count, texture_count;
     int light_lines; /* point_light and directional_light lines (after a lights file), known

@@ -14,6 +14,9 @@
 
 enum scene_kind {
     SK_CAMERA,
+    SK_CAMERA_KEY,
+    SK_ORBIT,
+    SK_FRAME_RATE,
     SK_MATERIAL,
     SK_POINT_LIGHT,
     SK_DIRECTIONAL_LIGHT,
@@ -30,6 +33,21 @@ struct camera_args {
     float position[3], target[3], up[3]; /* world, scene units */
     float fov;                           /* vertical, degrees */
     float near_z, far_z;                 /* scene units */
+};
+struct camera_key_args {
+    float time;                          /* seconds from the start of the sequence */
+    float position[3], target[3], up[3]; /* world, scene units */
+    float fov;                           /* vertical, degrees */
+    int cut;                             /* 1 = the path jumps to this key */
+};
+struct orbit_args {
+    float target[3], up[3]; /* world */
+    float radius, height;   /* scene units: horizontal distance, height above target */
+    float period, start;    /* seconds a turn; degrees at time 0 */
+    float fov;              /* vertical, degrees */
+};
+struct frame_rate_args {
+    float fps; /* frames per second */
 };
 struct material_args {
     float albedo[3], specular[3]; /* linear reflectances */
@@ -106,5 +124,13 @@ void ssg_scene_path(const struct scene_entity *e, const char *rel, char *out, si
 /* Loads textures, tessellates shapes, reads glTF files, picks the camera and builds the
  * Embree scene, for entities scene.c has validated. Problems go to l->diags. */
 void ssg_scene_build(struct scene_loader *l);
+
+/* The camera path (scene_path.c): checks the camera_key, orbit and frame_rate lines
+ * together (two keys at one time, a lone key, keys beside an orbit...), reporting at the
+ * line; then fills scene->camera_path from them, the `camera` line's arguments giving what a key
+ * or the orbit leaves out (up, fov, near, far), and, when there is a path, its camera at
+ * time 0 as the scene's camera. */
+void ssg_scene_path_check(struct scene_loader *l);
+void ssg_scene_path_fill(struct scene_loader *l, const struct camera_args *camera);
 
 #endif

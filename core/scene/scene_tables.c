@@ -34,6 +34,40 @@ static const struct ssg_param_desc camera_params[] = {
     FLOAT("far", camera_args, far_z, SSG_DEFAULT_FAR, 1e-6, BIG, "scene units",
           "far plane distance"),
 };
+static const struct ssg_param_desc camera_key_params[] = {
+    {.name = "time", SSG_FIELD_FLOAT(struct camera_key_args, time), .min = 0, .max = BIG,
+     .unit = "seconds", .help = "when the camera is here (frame f is at f / fps)",
+     .required = 1},
+    REQ_VEC3("position", camera_key_args, position, "scene units", "eye position"),
+    REQ_VEC3("target", camera_key_args, target, "scene units", "point looked at"),
+    VEC3("up", camera_key_args, up, 0, 1, 0, 0, 0, NULL,
+         "up direction hint; default: the camera line's"),
+    FLOAT("fov", camera_key_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
+          "vertical field of view; default: the camera line's"),
+    {.name = "cut", SSG_FIELD_BOOL(struct camera_key_args, cut), .def = 0,
+     .help = "the camera jumps to this key at its time (no path from the key before; "
+             "history starts afresh in that frame)"},
+};
+static const struct ssg_param_desc orbit_params[] = {
+    VEC3("target", orbit_args, target, 0, 0, 0, 0, 0, "scene units", "point circled and "
+         "looked at"),
+    FLOAT("radius", orbit_args, radius, 3, 1e-6, BIG, "scene units",
+          "horizontal distance from the target"),
+    FLOAT("height", orbit_args, height, 0, -BIG, BIG, "scene units",
+          "eye height above the target (along up)"),
+    FLOAT("period", orbit_args, period, 10, 1e-6, BIG, "seconds", "time of one turn"),
+    FLOAT("start", orbit_args, start, 0, -BIG, BIG, "degrees", "angle around up at time "
+          "0: 0 puts the eye on the target's +z side, 90 on its +x side (up = +y); the "
+          "angle grows with time"),
+    VEC3("up", orbit_args, up, 0, 1, 0, 0, 0, NULL, "the axis circled about, and the "
+         "camera's up"),
+    FLOAT("fov", orbit_args, fov, SSG_DEFAULT_FOV_Y, 1, 179, "degrees",
+          "vertical field of view; default: the camera line's"),
+};
+static const struct ssg_param_desc frame_rate_params[] = {
+    FLOAT("fps", frame_rate_args, fps, 30, 1e-3, 1e4, "frames/s",
+          "frames per second: frame f of a run is at time f / fps"),
+};
 static const struct ssg_param_desc material_params[] = {
     VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,
          "diffuse reflectance, linear RGB (multiplies the texture)"),
@@ -106,6 +140,23 @@ const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
     [SK_CAMERA] = KIND("camera", camera_params, camera_args,
                        "The view: a pinhole camera looking from `position` at `target`. At most "
                        "one; without it a glTF mesh's own camera is used, else the defaults."),
+    [SK_CAMERA_KEY] = KIND("camera_key", camera_key_params, camera_key_args,
+                           "One key of a camera path (docs/time.md): where the camera is "
+                           "at `time`. Two or more keys, in any order in the file, make a "
+                           "path that `run --frames N` follows: centripetal Catmull-Rom "
+                           "through the positions and, apart, the targets (end keys "
+                           "duplicated), up and fov linear; before the first key and after "
+                           "the last the camera stays there. `near` and `far` are the "
+                           "`camera` line's. The path replaces the `camera` line's view (and "
+                           "a glTF camera) from frame 0 on. Static geometry and lights "
+                           "only: nothing else moves."),
+    [SK_ORBIT] = KIND("orbit", orbit_params, orbit_args,
+                      "A camera path that circles `target` at `radius`, `height` above "
+                      "it, one turn per `period` seconds, looking at it (docs/time.md). At "
+                      "most one, and not beside camera_key lines."),
+    [SK_FRAME_RATE] = KIND("frame_rate", frame_rate_params, frame_rate_args,
+                           "Frames per second of the sequence (30 without this line): "
+                           "frame f is at time f / fps. At most one."),
     [SK_MATERIAL] = KIND("material", material_params, material_args,
                          "A named surface (`clay = material(...)`): Lambert albedo, optionally "
                          "textured, plus a Blinn-Phong highlight in the direct light. Shapes "

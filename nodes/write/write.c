@@ -48,15 +48,32 @@ static enum ssg_err write_check(const void *params, const struct ssg_frame *fram
     return SSG_OK;
 }
 
-static int output_files(const void *params, char (*files)[SSG_FILE_NAME_MAX], int max)
+void ssg_write_stem(const struct ssg_write_params *p, int frame_index, char *stem, size_t len)
+{
+    if (p->sequence)
+        snprintf(stem, len, "%.200s_%04d", p->name, frame_index);
+    else
+        snprintf(stem, len, "%.200s", p->name);
+}
+
+static int output_files(const void *params, int frame_index, char (*files)[SSG_FILE_NAME_MAX],
+                        int max)
 {
     const struct ssg_write_params *p = params;
+    char stem[224];
     int n = 0;
+    ssg_write_stem(p, frame_index, stem, sizeof stem);
     if (p->exr && n < max)
-        snprintf(files[n++], SSG_FILE_NAME_MAX, "%.200s.exr", p->name);
+        snprintf(files[n++], SSG_FILE_NAME_MAX, "%s.exr", stem);
     if (p->png && n < max)
-        snprintf(files[n++], SSG_FILE_NAME_MAX, "%.200s.png", p->name);
+        snprintf(files[n++], SSG_FILE_NAME_MAX, "%s.png", stem);
     return n;
+}
+
+/* A sequence writes in every frame; otherwise the last frame only (graph_run.c). */
+static int every_frame(const void *params)
+{
+    return ((const struct ssg_write_params *)params)->sequence;
 }
 
 const struct ssg_node_desc ssg_node_write = {
@@ -71,5 +88,6 @@ const struct ssg_node_desc ssg_node_write = {
     .is_sink = 1,
     .check = write_check,
     .output_files = output_files,
+    .every_frame = every_frame,
     .run_cpu = ssg_write_run_cpu,
 };

@@ -30,7 +30,10 @@ SSG_PORT_ENUM(ssg_write_input, SSG_WRITE_IN, SSG_WRITE_INPUTS);
     P(ENUM, compression,                                                                   \
       "EXR compression, all lossless: zip (deflate level 1, chunks on every thread) is "   \
       "small; none ~1.7x faster to write and ~9x larger; rle and piz are slower",          \
-      .def = SSG_EXR_ZIP, .choices = ssg_write_compression_choices)
+      .def = SSG_EXR_ZIP, .choices = ssg_write_compression_choices)                      \
+    P(BOOL, sequence,                                                                      \
+      "write every frame of a run as <name>_0000.exr/.png, <name>_0001... (the frame "     \
+      "index, 4 digits); false: the last frame only, as <name>.exr/.png", .def = 0)
 SSG_PARAMS_STRUCT(ssg_write_params, SSG_WRITE_PARAMS);
 
 /* 1 when `name` is a plain file stem: not empty, at most 200 bytes, no '/', '\', "..",
@@ -42,6 +45,10 @@ int ssg_write_name_ok(const char *name, char *why, size_t why_len);
  * camera from ctx->scene (none without a scene), the graph and --set list from ctx. */
 struct ssg_exr_meta;
 void ssg_write_meta(const struct ssg_node_ctx *ctx, struct ssg_exr_meta *meta);
+
+/* The file stem of frame `frame_index`: name, or name_0003 with sequence (at most
+ * 200 + 12 bytes, len >= 220). */
+void ssg_write_stem(const struct ssg_write_params *p, int frame_index, char *stem, size_t len);
 
 /* The CPU backend (write_cpu.c); `consts` is a struct ssg_write_params. */
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -96,6 +96,8 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
     }
     const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
+    char stem[224];
+    ssg_write_stem(p, ctx->frame_index, stem, sizeof stem);
     /* Both files are staged before either is renamed into place, so a failure (or a kill)
        while writing leaves the previous EXR and PNG together. The PNG goes first, staged
        and renamed, the EXR (the real output) last: a kill between the two renames leaves
@@ -109,12 +111,12 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
         return err;
     err = ssg_make_dirs(dir, ctx->diags);
     if (!err && p->png &&
-        !(err = make_path(path, sizeof path, dir, p->name, "png", ctx->diags)))
+        !(err = make_path(path, sizeof path, dir, stem, "png", ctx->diags)))
         if (!(err = ssg_png_stage(path, f.image[0], (enum ssg_tonemap)p->tonemap, p->exposure,
                                   &staged[n], ctx->diags)))
             n++;
     if (!err && p->exr &&
-        !(err = make_path(path, sizeof path, dir, p->name, "exr", ctx->diags)))
+        !(err = make_path(path, sizeof path, dir, stem, "exr", ctx->diags)))
         if (!(err = stage_exr(ctx, io, p, &f, path, &staged[n])))
             n++;
     framed_free(&f, io->extra_count + 1);
