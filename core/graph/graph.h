@@ -32,6 +32,7 @@ struct ssg_timeline {
                           one-frame runs, until ssg_graph_set_frame */
     struct ssg_camera last_camera; /* the camera of frame `last` */
     struct ssg_camera prepared_prev; /* the previous camera the nodes last prepared with */
+    int kept_frame;    /* the frame a live graph's kept outputs are of (set by every run) */
     int has_prepared_prev;
 };
 

@@ -299,12 +299,24 @@ static void forget_camera_nodes(struct run *r)
     }
 }
 
+/* A live graph runs another frame than the one its outputs are of: the nodes whose
+   output depends on the frame index (node.h per_frame) run again. */
+static void forget_frame_nodes(struct run *r, int frame_index)
+{
+    if (!r->live || r->g->time.kept_frame == frame_index)
+        return;
+    for (int p = 0; p < r->g->order_count; p++)
+        if (r->g->nodes[r->g->order[p]].desc->per_frame)
+            r->live->kept[p] = 0;
+}
+
 /* Before frame `frame` of the run: its time, camera and history state (graph_time.c). */
 static void begin_frame(struct run *r, int frame, int frames)
 {
     if (ssg_time_begin(r->g, r->first_frame + frame, frame == 0, frames, r->live != NULL,
                        &r->step))
         forget_camera_nodes(r);
+    forget_frame_nodes(r, r->first_frame + frame);
 }
 
 /* One frame: every node in order, images given back after their last reader. Sinks

@@ -65,8 +65,8 @@ int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int li
     step->prev = step->reset ? camera : g->time.last_camera;
     /* prepare() reads the previous camera too (gbuffer's motion): in the frame after the
        camera stops, the camera is the same but the previous one is not. */
-    if (!g->time.has_prepared_prev || ssg_camera_differs(&step->prev, &g->time.prepared_prev))
-        moved = 1;
+    if (g->time.has_prepared_prev && ssg_camera_differs(&step->prev, &g->time.prepared_prev))
+        moved = 1; /* (before any prepare there is nothing to redo) */
     g->time.prepared_prev = step->prev;
     g->time.has_prepared_prev = 1;
     return moved;
@@ -76,6 +76,7 @@ void ssg_time_end(struct ssg_graph *g, int frame)
 {
     g->time.last = frame;
     g->time.has_last = 1;
+    g->time.kept_frame = frame;
     if (g->scene)
         g->time.last_camera = g->scene->camera;
 }

@@ -238,6 +238,10 @@ struct ssg_node_desc {
        camera move, which no ordinary run or parity test sees. tests/test_camera_deps.c
        runs every node that says 1 at two cameras and requires the same bytes. */
     int camera_independent;
+    /* 1 = its output depends on ctx->frame_index (samples that turn every frame:
+       halton, gtao, ssilvb): a live graph runs it again when it runs another frame,
+       although its producers kept their outputs. */
+    int per_frame;
     int supplied;        /* 1 = a source whose image the caller supplies
                             (ssg_graph_supply): the executor hands it to the node as
                             ctx->supplied, which must match output 0's shape */

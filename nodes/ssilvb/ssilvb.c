@@ -108,6 +108,7 @@ const struct ssg_node_desc ssg_node_ssilvb = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssilvb_params),
     .consts_size = sizeof(struct ssg_ssilvb_consts),
+    .per_frame = 1, /* its slices turn every frame (docs/time.md) */
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = ssilvb_flops,
