@@ -4,6 +4,7 @@ and graphs/hybrid_ssdo_error.graph against reference_gi under each scene's own l
 each light of examples/lights, with the bounce's energy against the reference's."""
 import json
 import os
+import re
 import tempfile
 
 from bench import ROOT, frame_ms, run_cmd
@@ -13,12 +14,21 @@ ACCURACY_METHODS = [("ssao", "c_ssao", None), ("ssao + bilateral", "c_ssao_filte
                     ("gtao", "c_gtao", None), ("gtao + bilateral", "c_gtao_filtered", "gtao.graph")]
 
 
+
+def still_scenes():
+    """The example scenes with a still camera: the single-frame tables score frame 0 of one
+    view; a scene whose camera moves (camera_key, orbit: docs/time.md) is a sequence's."""
+    folder = os.path.join(ROOT, "examples")
+    moving = re.compile(r"^\s*(camera_key|orbit)\(", re.M)
+    return sorted(f for f in os.listdir(folder) if f.endswith(".scene") and
+                  not moving.search(open(os.path.join(folder, f)).read()))
+
 def accuracy_table(binary, size, threads, runs):
     """Every AO method of graphs/ao_error.graph against reference_ao on every example scene:
     RMSE, bias (mean of method - reference: > 0 = too bright, missed occlusion) and SSIM,
     and the frame time (median, write excluded) of the shipped graph that runs the method."""
     ao_error = os.path.join(ROOT, "graphs", "ao_error.graph")
-    scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
+    scenes = still_scenes()
     print(f"# AO accuracy of the shipped graphs, {size}\n")
     print("Each AO method of `graphs/ao_error.graph` against `reference_ao` (1024 cosine-weighted "
           "rays within the same 0.5 radius; its noise floor is about 0.01 RMSE) on every "
@@ -68,7 +78,7 @@ def gi_accuracy_table(binary, size, threads, runs):
     pipeline's bounce term over the reference's); per light the mean RMSE, the mean and
     worst ratio to the SSAO baseline and how many scenes are worse than it; and the frame
     time of ssdo.graph and gi.graph (Cornell box) and hybrid_ssdo.graph (courtyard)."""
-    scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples")) if f.endswith(".scene"))
+    scenes = still_scenes()
     print(f"\n# GI accuracy of the shipped graphs, {size}\n")
     print("Every example scene under its own lights (own: the point and directional lights "
           "and environment its file names) and relit by each file of `examples/lights/` "
