@@ -306,10 +306,10 @@ static int check_extra_size(struct checker *c, const struct gnode *n, int i,
 static void infer_node(struct checker *c, struct gnode *n)
 {
     const struct ssg_node_desc *d = n->desc;
-    int ok = 1;
+    int ok = 1, pending = 0;
     for (int i = 0; i < d->input_count; i++)
         if (prev_pending(c, &n->in[i]))
-            n->in_shape[i] = (struct ssg_shape){0};
+            n->in_shape[i] = (struct ssg_shape){0}, pending = 1;
         else if (n->in[i].node >= 0)
             ok &= check_type(c, n, d->inputs[i].name, d->inputs[i].types, &n->in[i],
                              &n->in_shape[i]);
@@ -334,6 +334,10 @@ static void infer_node(struct checker *c, struct gnode *n)
     if (!e && d->check_scene && c->g->scene)
         e = d->check_scene(n->params, c->g->scene, n->in_shape, n->out_shape, why,
                            sizeof why);
+    if (e && pending) /* the quiet first pass: a check that needs the prev() input's shape
+                         (history = prev(out) of out's size) cannot pass yet; the default
+                         shapes (same_as, frame size) stand in until the second pass */
+        return;
     if (e) {
         ssg_diag_at(c->diags, e, n->loc, "node '%s' (%s): %s", n->name, d->name, why);
         fail(c, e);
