@@ -106,6 +106,15 @@ grep -q '"rmse":0,"ssim":1' "$TMP/body" || fail "a port against itself: $(cat "$
 expect_code 200 -H "$H" "$B/api/graph.svg"
 grep -q '<title>do</title>' "$TMP/body" || fail "the diagram lacks node do"
 
+# --- sequences: a frame runs (a still scene keeps the camera the page set; a path's frames
+# move it: docs/time.md)
+expect_code 200 -H "$H" -d "frame=3" "$B/api/frame"
+grep -q '"frame":3,' "$TMP/body" || fail "state after frame=3: $(head -c 300 "$TMP/body")"
+grep -q '"position":\[0,1,3.5' "$TMP/body" || fail "frame 3 of a still scene moved the camera"
+expect_code 400 -H "$H" -d "frame=-1" "$B/api/frame"
+expect_code 400 -H "$H" -d "frame=x" "$B/api/frame"
+expect_code 200 -H "$H" -d "$cam&preview=0" "$B/api/camera"
+
 # --- save as variant: beside the graph, then it runs from the command line
 expect_code 200 -H "$H" -d "name=radius03" "$B/api/save"
 [ -f "$TMP/graphs/radius03.graph" ] || fail "no variant beside the graph"

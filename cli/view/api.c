@@ -168,8 +168,8 @@ char *view_state_json(const struct view_session *s, size_t *len)
     ssg_json_string(f, info.scene);
     fputs(",\"backend\":", f);
     ssg_json_string(f, s->args->ov.backend ? s->args->ov.backend : "graph");
-    fprintf(f, ",\"size\":[%d,%d],\"preview\":[%d,%d],\"last_run\":\"%s\",\"error\":",
-            s->width, s->height, s->preview_width, s->preview_height,
+    fprintf(f, ",\"size\":[%d,%d],\"preview\":[%d,%d],\"frame\":%d,\"last_run\":\"%s\","
+            "\"error\":", s->width, s->height, s->preview_width, s->preview_height, s->frame,
             s->last_preview ? "preview" : "full");
     if (s->error)
         ssg_json_string(f, s->error);

@@ -221,6 +221,20 @@ static void graph_svg_route(struct view_session *s, const struct view_request *r
     graph_svg(s, a);
 }
 
+static void frame(struct view_session *s, const struct view_request *req,
+                  struct view_answer *a)
+{
+    char text[32], end;
+    int n;
+    if (!form_value(req->body, "frame", text, sizeof text) ||
+        sscanf(text, "%d%c", &n, &end) != 1 || n < 0) {
+        view_answer_error(a, MHD_HTTP_BAD_REQUEST, "expected frame=N (0 or more)");
+        return;
+    }
+    struct ssg_diags d = {0};
+    changed(s, view_session_frame(s, n, &d), &d, a);
+}
+
 /* Every path of the interface and the one method it takes. */
 static const struct route {
     const char *path;
@@ -230,7 +244,7 @@ static const struct route {
 } routes[] = {
     {"/api/state", 0, state},     {"/api/image", 0, image},     {"/api/metrics", 0, metrics},
     {"/api/graph.svg", 0, graph_svg_route}, {"/api/set", 1, set},
-    {"/api/camera", 1, camera},   {"/api/save", 1, save},
+    {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
 };
 
 void view_route(struct view_session *s, const struct view_request *req, struct view_answer *a)

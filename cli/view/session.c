@@ -88,6 +88,8 @@ static enum ssg_err load(struct view_session *s, int width, int height, struct s
         e = ssg_graph_keep(g, KEEP_BYTES, d);
     for (int i = 0; !e && i < s->set_count; i++)
         e = ssg_graph_set(g, s->sets[i].key, s->sets[i].value, d);
+    if (!e && s->frame)
+        e = ssg_graph_set_frame(g, s->frame, d);
     if (!e && s->camera_changed)
         e = ssg_graph_set_view(g, &s->camera, d);
     if (e)
@@ -201,6 +203,23 @@ enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *
     s->full_stale = preview;
     s->preview_stale = !preview;
     return run_graph(s, preview ? s->preview : s->g, preview, d);
+}
+
+enum ssg_err view_session_frame(struct view_session *s, int frame, struct ssg_diags *d)
+{
+    enum ssg_err e = ssg_graph_set_frame(s->g, frame, d);
+    if (!e && s->preview)
+        e = ssg_graph_set_frame(s->preview, frame, d);
+    if (e)
+        return e;
+    struct ssg_diags ignored = {0};
+    s->frame = frame;
+    s->camera_changed = 0; /* the path's camera from now on */
+    s->preview_stale = 1;
+    e = run_graph(s, s->g, 0, d);
+    if (!e)
+        s->has_camera = ssg_graph_view(s->g, &s->camera, &ignored) == SSG_OK;
+    return e;
 }
 
 enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,

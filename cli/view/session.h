@@ -38,6 +38,7 @@ struct view_session {
     int preview_stale;               /* the same of the preview graph (after a set or a
                                         release) */
     unsigned generation;             /* raised by every run and reload */
+    int frame;                       /* the frame of the sequence shown (view_session_frame) */
     char *error;                     /* the last failure's diagnostics as printed; NULL */
     struct ssg_cli_watch *watch;     /* the graph's files (watch.h); NULL = none */
 };
@@ -55,6 +56,10 @@ enum ssg_err view_session_set(struct view_session *s, const char *assignment,
  * first call) or the full one. */
 enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *camera,
                                  int preview, struct ssg_diags *diags);
+/* Runs frame `frame` of the sequence (docs/time.md: a scene's camera path gives its camera;
+ * frame last + 1 follows on, keeping history; any other is a cut) on the full graph. The
+ * page's own camera gives way to the path's. */
+enum ssg_err view_session_frame(struct view_session *s, int frame, struct ssg_diags *diags);
 /* The latest image of "node.port" (of the preview graph with preview = 1) without its
  * guard band, as a new image the caller destroys. */
 enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,
