@@ -44,6 +44,21 @@ import numpy as np
 GHOST_FRAMES = 8
 RECOVERED = 1.10  # back to steady state: RMSE within 10 % of it
 
+OPTIONS = [  # name, default, help
+    ("scene", "examples/cornell_path.scene", "a scene with a camera path"),
+    ("size", "160x120", "WxH"),
+    ("frames", 30, "frames 0 .. N-1 of the path"),
+    ("layer", "ao", "the pipeline's EXR layer to score (ao_raw: before the filter)"),
+    ("rays", 256, "reference_ao rays"),
+    ("max-distance", "0.5", "reference_ao max_distance"),
+    ("seed", 1, "the seed of both runs"),
+    ("threads", 2, "ssgraph --threads"),
+    ("backend", "cpu", "ssgraph --backend"),
+    ("ssgraph", "build/ssgraph", "the ssgraph executable"),
+    ("plot", None, "write a PNG of RMSE over frames here"),
+    ("markdown", None, "write the tables here too"),
+]
+
 
 def run(cmd, **kw):
     p = subprocess.run(cmd, capture_output=True, text=True, **kw)
@@ -53,12 +68,8 @@ def run(cmd, **kw):
     return p.stdout
 
 
-def read_channels(exr, channels, tmp):
-    """The named channels of one EXR as 2-D float arrays, in that order: oiiotool copies them into a
-    temporary EXR and prints its pixels ("Pixel (x, y): v v ..." lines, 9 decimals)."""
-    part = os.path.join(tmp, "part.exr")
-    run(["oiiotool", exr, "--ch", ",".join(channels), "-d", "float", "-o", part])
-    text = run(["oiiotool", "--info", "-v", "--dumpdata", part])
+def parse_dump(text, exr, channels):
+    """One file's part of `oiiotool --info -v --dumpdata`: its channels as 2-D arrays."""
     size = re.search(r":\s+(\d+) x\s+(\d+), (\d+) channel", text)
     listed = re.search(r"channel list: (.*)", text)
     if not size or not listed:
@@ -73,6 +84,23 @@ def read_channels(exr, channels, tmp):
     for x, y, vals in rows:
         img[int(y), int(x)] = [float(v) for v in vals.split()]
     return [img[:, :, names.index(c)] for c in channels]  # EXR sorts its channels
+
+
+def read_sequence(files, channels, tmp):
+    """The named channels of every EXR, [file][channel] 2-D float arrays. Two oiiotool runs
+    for the lot (each start costs about 0.3 s): one copies the channels of every file into a
+    small EXR, one prints those files' pixels ("Pixel (x, y): v v ..." lines, 9 decimals)."""
+    copy, parts = ["oiiotool"], []
+    for i, exr in enumerate(files):
+        parts.append(os.path.join(tmp, "part_%04d.exr" % i))
+        copy += [exr, "--ch", ",".join(channels), "-d", "float", "-o", parts[-1]]
+    run(copy)
+    text = run(["oiiotool", "--info", "-v", "--dumpdata"] + parts)
+    starts = [text.find("Reading %s\n" % part) for part in parts] + [len(text)]
+    if any(s < 0 for s in starts) or starts != sorted(starts):
+        sys.exit("sequence.py: oiiotool did not describe every file")
+    return [parse_dump(text[starts[i]:starts[i + 1]], files[i], channels)
+            for i in range(len(files))]
 
 
 def sequence_files(folder, frames):
@@ -148,12 +176,8 @@ def reference_frames(a, tmp):
     print("reference: rendering %d frames (%d rays)" % (a.frames, a.rays), flush=True)
     run([a.ssgraph, "run", gpath, "--frames", str(a.frames), "--threads", str(a.threads),
          "--backend", a.backend, "--quiet", "--out", out])
-    ao, depth = [], []
-    for exr in sequence_files(out, a.frames):
-        y, z = read_channels(exr, ["Y", "Z"], tmp)
-        ao.append(y)
-        depth.append(z)
-    ao, depth = np.array(ao), np.array(depth)
+    frames = read_sequence(sequence_files(out, a.frames), ["Y", "Z"], tmp)
+    ao, depth = np.array([f[0] for f in frames]), np.array([f[1] for f in frames])
     if folder:  # image first, key last: a key names only a complete file
         try:
             os.makedirs(folder, exist_ok=True)
@@ -183,12 +207,9 @@ def pipeline_frames(a, graph, tnode, tmp):
            "--frames", str(a.frames), "--threads", str(a.threads), "--backend", a.backend,
            "--quiet", "--out", out, "--set", "out.sequence=true"]
     run(cmd)
-    ao, length = [], []
-    for exr in sequence_files(out, a.frames):
-        got = read_channels(exr, channels, tmp)
-        ao.append(got[0])
-        length.append(got[1] if tnode else None)
-    return np.array(ao), (np.array(length) if tnode else None)
+    frames = read_sequence(sequence_files(out, a.frames), channels, tmp)
+    ao = np.array([f[0] for f in frames])
+    return ao, (np.array([f[1] for f in frames]) if tnode else None)
 
 
 def mean_change(images, masks):
@@ -278,18 +299,9 @@ def plot(a, results, tmp):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("graphs", nargs="+")
-    p.add_argument("--scene", default="examples/cornell_path.scene")
-    p.add_argument("--size", default="160x120")
-    p.add_argument("--frames", type=int, default=30)
-    p.add_argument("--layer", default="ao", help="the pipeline's EXR layer to score")
-    p.add_argument("--rays", type=int, default=256, help="reference_ao rays")
-    p.add_argument("--max-distance", default="0.5", help="reference_ao max_distance")
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--threads", type=int, default=2)
-    p.add_argument("--backend", default="cpu")
-    p.add_argument("--ssgraph", default="build/ssgraph")
-    p.add_argument("--plot", help="PNG of RMSE over frames")
-    p.add_argument("--markdown", help="write the tables here too")
+    for name, default, what in OPTIONS:
+        p.add_argument("--" + name, default=default, type=type(default) if default else None,
+                       help=what)
     a = p.parse_args()
     a.width, a.height = (int(v) for v in a.size.lower().split("x"))
     if a.frames < 1:
