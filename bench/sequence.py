@@ -26,8 +26,9 @@ EXRs are read through oiiotool (--dumpdata of the wanted channels). The referenc
 cached like bench --reference's images: $SSGRAPH_CACHE/sequences, else
 $XDG_CACHE_HOME/ssgraph/sequences, else ~/.cache/ssgraph/sequences; <hash>.npz holds the
 frames and <hash>.key the key text (ssgraph's version, the scene file's bytes' sha256, size,
-frames, seed and the reference graph's text). The key is written last and compared in full,
-so a stale, partial or foreign file is rendered again.
+frames, seed and the reference graph's text, then a sha256 of the frames). The key is
+written last and compared in full, the frames' hash checked, so a stale, partial or corrupt
+file is rendered again.
 """
 import argparse
 import hashlib
@@ -38,6 +39,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import zipfile
 
 import numpy as np
 
@@ -151,6 +153,10 @@ def reference_graph(a):
             % (os.path.realpath(a.scene), a.width, a.height, a.seed, a.rays, a.max_distance))
 
 
+def pixels_hash(ao, depth):
+    return hashlib.sha256(ao.astype("<f8").tobytes() + depth.astype("<f8").tobytes()).hexdigest()
+
+
 def reference_frames(a, tmp):
     """The reference's AO and depth of every frame, (frames, h, w) each; cached."""
     text = reference_graph(a)
@@ -162,14 +168,16 @@ def reference_frames(a, tmp):
     base = os.path.join(cache_dir(), hashlib.sha256(key.encode()).hexdigest()[:32])
     folder = cache_dir()
     try:
-        if open(base + ".key").read() == key:
+        stored = open(base + ".key").read()
+        if stored.startswith(key):
             with np.load(base + ".npz") as z:
                 ao, depth = z["ao"], z["depth"]
-            if ao.shape == (a.frames, a.height, a.width) == depth.shape:
+            if (ao.shape == (a.frames, a.height, a.width) == depth.shape and
+                    stored[len(key):] == "pixels %s\n" % pixels_hash(ao, depth)):
                 print("reference: cached %s.npz" % base)
                 return ao, depth
-    except (OSError, ValueError, KeyError):
-        pass
+    except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile):
+        pass  # missing, stale, truncated or corrupt: render it again
     gpath, out = os.path.join(tmp, "reference.graph"), os.path.join(tmp, "reference")
     with open(gpath, "w") as f:
         f.write(text)
@@ -185,7 +193,7 @@ def reference_frames(a, tmp):
                 np.savez(f, ao=ao, depth=depth)
             os.replace(base + ".tmp.npz", base + ".npz")
             with open(base + ".key.tmp", "w") as f:
-                f.write(key)
+                f.write(key + "pixels %s\n" % pixels_hash(ao, depth))
             os.replace(base + ".key.tmp", base + ".key")
         except OSError:
             pass

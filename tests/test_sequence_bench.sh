@@ -5,7 +5,7 @@
 # temporal node's history length read back (every pixel new in frame 0), the summary lines
 # (mean_rmse, flicker, ghosting; skipped without a temporal node) and the plot. A second run
 # (of the temporal graph alone) takes the reference sequence from the cache and prints the
-# same table.
+# same table; a third, over a cached file whose pixels were changed, renders it again.
 set -u
 . "$(dirname "$0")/lib.sh" test_sequence_bench
 export SSGRAPH_CACHE="$TMP/cache"
@@ -61,5 +61,16 @@ section() { sed -n '/^## gtao_temporal.graph$/,/^- ghosting/p' "$1"; }
 one=$(section "$TMP/first.md")
 [ -n "$one" ] && [ "$one" = "$(section "$TMP/second.md")" ] ||
     fail "the cached reference gave other numbers"
+
+# a cached file whose frames no longer hash to its key is rendered again, with the same numbers
+npz=$(ls "$SSGRAPH_CACHE"/sequences/*.npz)
+"$PY" -c 'import numpy as np, sys
+z = dict(np.load(sys.argv[1]))
+z["ao"][0, 0, 0] += 0.5
+np.savez(open(sys.argv[1], "wb"), **z)' "$npz"
+seq_run graphs/gtao_temporal.graph --markdown "$TMP/third.md" > "$TMP/third.log" 2>&1 ||
+    fail "the run over a corrupt cache failed: $(cat "$TMP/third.log")"
+grep -q "^reference: rendering" "$TMP/third.log" || fail "a corrupt cached reference was used"
+[ "$one" = "$(section "$TMP/third.md")" ] || fail "the reference rendered again differs"
 
 finish test_sequence_bench
