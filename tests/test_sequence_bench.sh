@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# test_sequence_bench.sh - bench/sequence.py (docs/time.md, "Measuring sequences") at a tiny
+# size: for a temporal graph and a single-frame one over the camera path, one table row per
+# frame with finite numbers (the first frame's change is "nan": it has no frame before), the
+# temporal node's history length read back (every pixel new in frame 0), the summary lines
+# (mean_rmse, flicker, ghosting; skipped without a temporal node) and the plot. A second run
+# (of the temporal graph alone) takes the reference sequence from the cache and prints the
+# same table; a third, over a cached file whose pixels were changed, renders it again.
+set -u
+. "$(dirname "$0")/lib.sh" test_sequence_bench
+export SSGRAPH_CACHE="$TMP/cache"
+PY=/usr/bin/python3
+seq_run() {
+    "$PY" bench/sequence.py --ssgraph "$BIN" --scene examples/cornell_path.scene \
+        --size 32x24 --frames 4 --rays 32 "$@"
+}
+
+seq_run graphs/gtao_temporal.graph graphs/gtao.graph --markdown "$TMP/first.md" \
+    --plot "$TMP/rmse.png" > "$TMP/first.log" 2>&1 ||
+    fail "sequence.py failed: $(cat "$TMP/first.log")"
+grep -q "^reference: rendering 4 frames" "$TMP/first.log" || fail "no reference was rendered"
+[ -s "$TMP/rmse.png" ] || fail "no plot"
+
+"$PY" - "$TMP/first.md" << 'EOF' || fail "the tables are wrong (above)"
+import math, re, sys
+text = open(sys.argv[1]).read()
+bad = []
+for graph in ("gtao_temporal.graph", "gtao.graph"):
+    part = text.split("## %s\n" % graph)[1].split("\n## ")[0]
+    rows = [r.strip("|").split("|") for r in part.splitlines() if re.match(r"^\| \d", r)]
+    if [int(r[0]) for r in rows] != [0, 1, 2, 3]:
+        bad.append("%s: rows %s" % (graph, [r[0] for r in rows]))
+    for r in rows:
+        vals = [float(v) for v in r[1:]]
+        finite = [vals[0]] + (vals[1:3] if int(r[0]) > 0 else [])
+        if graph == "gtao_temporal.graph":
+            finite.append(vals[3])
+        if not all(math.isfinite(v) and v >= 0 for v in finite) or not 0 < vals[0] < 1:
+            bad.append("%s: row %s" % (graph, r))
+    temporal = graph == "gtao_temporal.graph"
+    if temporal and float(rows[0][4]) != 1.0:
+        bad.append("%s: frame 0 is not all new pixels: %s" % (graph, rows[0]))
+    for name in ("mean_rmse", "flicker"):
+        m = re.search(r"^- %s %s (\S+)$" % (name, re.escape(graph)), part, re.M)
+        if not m or not math.isfinite(float(m.group(1))):
+            bad.append("%s: no finite %s line" % (graph, name))
+    g = re.search(r"^- ghosting %s (.*)$" % re.escape(graph), part, re.M)
+    want = (r"frame [1-3] ratio [0-9.]+ recovery (\d+|never) steady [0-9.]+$" if temporal
+            else r"skipped \(no temporal node\)$")
+    if not g or not re.match(want, g.group(1)):
+        bad.append("%s: ghosting line %s" % (graph, g and g.group(0)))
+print("\n".join(bad))
+sys.exit(1 if bad else 0)
+EOF
+
+seq_run graphs/gtao_temporal.graph --markdown "$TMP/second.md" > "$TMP/second.log" 2>&1 ||
+    fail "the second run failed: $(cat "$TMP/second.log")"
+grep -q "^reference: cached" "$TMP/second.log" || fail "the second run did not use the cache"
+# the temporal graph's section, the same numbers from the cached reference
+section() { sed -n '/^## gtao_temporal.graph$/,/^- ghosting/p' "$1"; }
+one=$(section "$TMP/first.md")
+[ -n "$one" ] && [ "$one" = "$(section "$TMP/second.md")" ] ||
+    fail "the cached reference gave other numbers"
+
+# a cached file whose frames no longer hash to its key is rendered again, with the same numbers
+npz=$(ls "$SSGRAPH_CACHE"/sequences/*.npz)
+"$PY" -c 'import numpy as np, sys
+z = dict(np.load(sys.argv[1]))
+z["ao"][0, 0, 0] += 0.5
+np.savez(open(sys.argv[1], "wb"), **z)' "$npz"
+seq_run graphs/gtao_temporal.graph --markdown "$TMP/third.md" > "$TMP/third.log" 2>&1 ||
+    fail "the run over a corrupt cache failed: $(cat "$TMP/third.log")"
+grep -q "^reference: rendering" "$TMP/third.log" || fail "a corrupt cached reference was used"
+[ "$one" = "$(section "$TMP/third.md")" ] || fail "the reference rendered again differs"
+
+finish test_sequence_bench
