@@ -2,7 +2,6 @@
 #define _DEFAULT_SOURCE /* open_memstream, strdup */
 #include "route.h"
 
-#include <math.h>
 #include <microhttpd.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,16 +12,24 @@
 
 static const char *JSON = "application/json";
 
-void view_answer_error(struct view_answer *a, int status, const char *why)
+/* An answer of one JSON field, {"key": "text"}. */
+static void json_field(struct view_answer *a, int status, const char *key, const char *text)
 {
     *a = (struct view_answer){.status = status, .type = JSON};
     FILE *f = open_memstream(&a->body, &a->len);
     if (!f)
         return;
-    fputs("{\"error\":", f);
-    ssg_json_string(f, why);
+    fputs("{", f);
+    ssg_json_string(f, key);
+    fputs(":", f);
+    ssg_json_string(f, text);
     fputs("}\n", f);
     fclose(f);
+}
+
+void view_answer_error(struct view_answer *a, int status, const char *why)
+{
+    json_field(a, status, "error", why);
 }
 
 /* An error answer carrying the diagnostics as `ssgraph run` prints them. */
@@ -39,6 +46,14 @@ static void answer(struct view_answer *a, const char *type, char *body, size_t l
     *a = (struct view_answer){.status = MHD_HTTP_OK, .type = type, .body = body, .len = len};
     if (!body)
         view_answer_error(a, MHD_HTTP_INTERNAL_SERVER_ERROR, "out of memory");
+}
+
+/* The session's state as JSON (GET /api/state, and the answer to every change). */
+static void state_answer(const struct view_session *s, struct view_answer *a)
+{
+    size_t len = 0;
+    char *body = view_state_json(s, &len);
+    answer(a, JSON, body, len);
 }
 
 static const char *arg(const struct view_request *req, const char *name)
@@ -80,9 +95,7 @@ static void state(struct view_session *s, const struct view_request *req,
         *a = (struct view_answer){.status = MHD_HTTP_NO_CONTENT, .type = JSON};
         return;
     }
-    size_t len = 0;
-    char *body = view_state_json(s, &len);
-    answer(a, JSON, body, len);
+    state_answer(s, a);
 }
 
 static void image(struct view_session *s, const struct view_request *req,
@@ -120,8 +133,10 @@ static void metrics(struct view_session *s, const struct view_request *req,
         diags_error(a, MHD_HTTP_BAD_REQUEST, &d, ssg_diags_first(&d));
 }
 
-static void graph_svg(struct view_session *s, struct view_answer *a)
+static void graph_svg(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a)
 {
+    (void)req;
     struct ssg_diags d = {0};
     size_t len = 0;
     char *body = view_graph_svg(s, &len, &d);
@@ -139,9 +154,7 @@ static void changed(struct view_session *s, enum ssg_err e, const struct ssg_dia
         diags_error(a, MHD_HTTP_BAD_REQUEST, d, e);
         return;
     }
-    size_t len = 0;
-    char *body = view_state_json(s, &len);
-    answer(a, JSON, body, len);
+    state_answer(s, a);
 }
 
 /* The value of `name=` in a form body "a=1&b=2" into out; 0 when absent. */
@@ -198,27 +211,13 @@ static void save(struct view_session *s, const struct view_request *req,
         diags_error(a, e == SSG_E_IO ? MHD_HTTP_CONFLICT : MHD_HTTP_BAD_REQUEST, &d, e);
         return;
     }
-    *a = (struct view_answer){.status = MHD_HTTP_OK, .type = JSON};
-    FILE *f = open_memstream(&a->body, &a->len);
-    if (f) {
-        fputs("{\"path\":", f);
-        ssg_json_string(f, path);
-        fputs("}\n", f);
-        fclose(f);
-    }
+    json_field(a, MHD_HTTP_OK, "path", path);
 }
 
 static void set(struct view_session *s, const struct view_request *req, struct view_answer *a)
 {
     struct ssg_diags d = {0};
     changed(s, view_session_set(s, req->body, &d), &d, a);
-}
-
-static void graph_svg_route(struct view_session *s, const struct view_request *req,
-                            struct view_answer *a)
-{
-    (void)req;
-    graph_svg(s, a);
 }
 
 static void frame(struct view_session *s, const struct view_request *req,
@@ -243,7 +242,7 @@ static const struct route {
                    struct view_answer *a);
 } routes[] = {
     {"/api/state", 0, state},     {"/api/image", 0, image},     {"/api/metrics", 0, metrics},
-    {"/api/graph.svg", 0, graph_svg_route}, {"/api/set", 1, set},
+    {"/api/graph.svg", 0, graph_svg}, {"/api/set", 1, set},
     {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
 };
 

@@ -23,7 +23,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "api.h"
 #include "route.h"
 #include "session.h"
 
