@@ -42,6 +42,14 @@ static inline void fuzz_on_file(const uint8_t *data, size_t size, const char *su
     char path[4096];
     if (!fuzz_write_temp(data, size, suffix, path))
         return;
+    /* SSG_FUZZ_LAST=FILE keeps a copy of the input being run: when valgrind stops the
+       fuzzer at the first bad write (--exit-on-first-error), FILE is the culprit. */
+    const char *last = getenv("SSG_FUZZ_LAST");
+    FILE *keep = last && last[0] ? fopen(last, "wb") : NULL;
+    if (keep) {
+        fwrite(data, 1, size, keep);
+        fclose(keep);
+    }
     use(path);
     unlink(path);
 }

@@ -81,6 +81,14 @@ static void test_xml(void)
     const char *fine = "<COLLADA><float_array count=\"3\">0.5 -1e3 nan</float_array>"
                        "<vcount>3 4</vcount><p>0 1 2 3 4 -1</p></COLLADA>";
     expect_precheck(".dae", fine, strlen(fine), SSG_OK, NULL);
+    /* a primitive without its VERTEX input (read before its inputs: valgrind, fuzzed) */
+    const char *novertex = "<COLLADA>\n<mesh><triangles count=\"1\">\n<input xsemantic=\"VERTEX\" "
+                           "source=\"#v\"/><p>0 1 2</p></triangles></mesh></COLLADA>";
+    expect_precheck(".dae", novertex, strlen(novertex), SSG_E_GLTF, "m:2:7: ");
+    const char *vertex = "<COLLADA><mesh><polylist count='1'><input semantic='NORMAL'/>"
+                         "<input\tsemantic='VERTEX' source='#v'/><vcount>3</vcount>"
+                         "<p>0 1 2</p></polylist><lines/></mesh></COLLADA>";
+    expect_precheck(".dae", vertex, strlen(vertex), SSG_OK, NULL);
     char *flat = nested("<a>", "<!-- <b> --><![CDATA[<b>]]><?pi <b>?><b/><c x='>' y=\"<\"/>",
                         "", 300, "</a>");
     expect_precheck(".dae", flat, strlen(flat), SSG_OK, NULL);
@@ -143,6 +151,9 @@ static void test_ply(void)
     expect_precheck(".ply", format, strlen(format), SSG_E_GLTF, "m:3:14: "); /* fuzzed too */
     const char *digits = "ply\nformat ascii 1.0\nelement 22222222222face 2\nend_header\n";
     expect_precheck(".ply", digits, strlen(digits), SSG_E_GLTF, "m:3:9: "); /* and this */
+    const char *twice = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                        "element vertex 3\nproperty float x\nend_header\n0\n0\n1\n2\n";
+    expect_precheck(".ply", twice, strlen(twice), SSG_E_GLTF, "m:5:9: "); /* valgrind found */
     const char nul[] = "ply\nformat ascii 1.0\ncomment a\0b\nend_header\n"; /* and a hang */
     expect_precheck(".ply", nul, sizeof nul - 1, SSG_E_GLTF, "m:3:10: ");
     const char *hidden = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";

@@ -7,9 +7,13 @@
  *   - it reserves each count="N" attribute's worth of values (a float_array's, a polylist's
  *     vcount) before reading one.
  * So the index lists may hold only digits, signs and white space, and no count may exceed
- * the file's size in bytes (every value counted takes at least one). */
+ * the file's size in bytes (every value counted takes at least one). A third, also found by
+ * the fuzzer (under valgrind): a primitive (<triangles>, <polylist>, ...) without the
+ * <input semantic="VERTEX"> the COLLADA specification requires of it has the reader index
+ * before its input array, so each primitive with content must have one. */
 #include <ctype.h>
 #include <limits.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "scene/model_check.h"
@@ -27,12 +31,65 @@ static size_t name_length(const struct ssg_check *s, size_t at, size_t end)
     return i - at - 1;
 }
 
-static int is_index_list(const struct ssg_check *s, size_t at, size_t n)
+/* The elements that hold primitives, each with inputs and index lists. */
+static const char *const PRIMITIVES[] = {"triangles", "polylist", "polygons", "lines",
+                                         "linestrips", "trifans", "tristrips", NULL};
+
+static int name_in(const struct ssg_check *s, size_t at, size_t n, const char *const *list)
 {
-    for (const char *const *name = INDEX_LISTS; *name; name++)
+    for (const char *const *name = list; *name; name++)
         if (strlen(*name) == n && !memcmp(s->data + at + 1, *name, n))
             return 1;
     return 0;
+}
+
+static int is_index_list(const struct ssg_check *s, size_t at, size_t n)
+{
+    return name_in(s, at, n, INDEX_LISTS);
+}
+
+/* Where the text first occurs in [from, to); to when it does not. */
+static size_t find(const struct ssg_check *s, size_t from, size_t to, const char *text)
+{
+    size_t n = strlen(text);
+    for (size_t i = from; i + n <= to; i++) {
+        const char *hit = memchr(s->data + i, text[0], to - i);
+        if (!hit)
+            break;
+        i = (size_t)(hit - s->data);
+        if (i + n <= to && !memcmp(s->data + i, text, n))
+            return i;
+    }
+    return to;
+}
+
+/* 1 when the tag [at, end) has the attribute semantic="VERTEX" (either quote), its name
+   after white space as an XML reader splits it. */
+static int has_vertex_semantic(const struct ssg_check *s, size_t at, size_t end)
+{
+    static const char *const forms[] = {"semantic=\"VERTEX\"", "semantic='VERTEX'", NULL};
+    for (const char *const *form = forms; *form; form++)
+        for (size_t i = find(s, at, end, *form); i < end; i = find(s, i + 1, end, *form))
+            if (isspace((unsigned char)s->data[i - 1]))
+                return 1;
+    return 0;
+}
+
+/* An open primitive's content, up to its closing tag: one <input> with the VERTEX
+   semantic (primitives do not nest, so the first closing tag of its name ends it). */
+static enum ssg_err check_primitive(const struct ssg_check *s, size_t at, size_t end, size_t n)
+{
+    char close[16];
+    snprintf(close, sizeof close, "</%.*s", (int)n, s->data + at + 1);
+    size_t stop = find(s, end, s->len, close);
+    for (size_t i = find(s, end, stop, "<input"); i < stop; i = find(s, i + 1, stop, "<input")) {
+        size_t tag_end = find(s, i, stop, ">");
+        if (has_vertex_semantic(s, i, tag_end))
+            return SSG_OK;
+    }
+    return ssg_check_refuse_at(s, at, "<%.*s> without an <input semantic=\"VERTEX\"> (the "
+                               "importer would read before its inputs)", (int)n,
+                               s->data + at + 1);
 }
 
 /* The tag's count="N" attribute, N at most the file's size. */
@@ -77,5 +134,7 @@ enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, size_t at, size_t end,
     enum ssg_err e = check_count(s, at, end, n);
     if (!e && !closed && is_index_list(s, at, n))
         e = check_indices(s, at, end, n);
+    if (!e && !closed && name_in(s, at, n, PRIMITIVES))
+        e = check_primitive(s, at, end, n);
     return e;
 }

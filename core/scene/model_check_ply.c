@@ -29,6 +29,7 @@ struct ply_prop {
 
 struct ply_element {
     char name[32];
+    size_t name_at, name_len; /* the whole name in the file, for duplicates */
     unsigned long long count; /* entries, as the header claims */
     size_t at;                /* its header line, for messages */
     size_t min_bytes;         /* a binary entry's smallest size (lists empty, unknown types
@@ -123,10 +124,17 @@ static enum ssg_err add_element(const struct ssg_check *s, const struct ply_line
     if (isdigit((unsigned char)s->data[l->word[1]])) /* found by fuzz/fuzz_model.c */
         return ssg_check_refuse_at(s, l->word[1], "a PLY element name starting with a digit "
                                    "(Assimp reads an unknown name's digits as its count)");
+    for (int i = 0; i < h->element_count; i++) /* found by fuzz/fuzz_model.c */
+        if (h->elements[i].name_len == l->word_len[1] &&
+            !memcmp(s->data + h->elements[i].name_at, s->data + l->word[1], l->word_len[1]))
+            return ssg_check_refuse_at(s, l->word[1], "a second PLY element '%.*s' (Assimp "
+                                       "sizes its arrays by the first and overruns them)",
+                                       (int)l->word_len[1], s->data + l->word[1]);
     struct ply_element *e = &h->elements[h->element_count++];
     memset(e, 0, sizeof *e);
     size_t n = l->word_len[1] < sizeof e->name ? l->word_len[1] : sizeof e->name - 1;
     memcpy(e->name, s->data + l->word[1], n);
+    e->name_at = l->word[1], e->name_len = l->word_len[1];
     e->count = parse_count(s->data + l->word[2], l->word_len[2]);
     e->at = l->word[2];
     e->complete = e->sized = 1;
