@@ -503,10 +503,10 @@ static void apply_override(struct builder *b, const char *text)
         fail(b, SSG_E_USAGE);
         return;
     }
-    struct ssg_stmt *st = ssg_arena_alloc(&b->g->arena, sizeof *st);
-    struct ssg_arg *arg = ssg_arena_alloc(&b->g->arena, sizeof *arg);
-    if (!st || !arg)
-        return;
+    /* The statement is a temporary (binding copies what it needs; a live graph's every
+       ssg_graph_set comes here, so nothing of it may pile up in the graph's arena). */
+    struct ssg_stmt set = {0}, *st = &set;
+    struct ssg_arg one = {0}, *arg = &one;
     st->kind = SSG_S_SET;
     st->name = src->text;
     st->name_len = (size_t)(dot - src->text);

@@ -227,7 +227,9 @@ static void order_nodes(struct checker *c)
     int *waiting = calloc((size_t)g->count + 1, sizeof *waiting); /* unfinished inputs */
     struct heap ready = {malloc(((size_t)g->count + 1) * sizeof(int)), 0};
     struct readers r = {0};
-    g->order = ssg_arena_alloc(&g->arena, (size_t)(g->count ? g->count : 1) * sizeof *g->order);
+    if (!g->order) /* the node count never changes: a live graph's re-checks reuse it */
+        g->order = ssg_arena_alloc(&g->arena, (size_t)(g->count ? g->count : 1) *
+                                                  sizeof *g->order);
     if (!waiting || !ready.v || !g->order || !readers_build(g, &r)) {
         fail(c, SSG_E_NOMEM);
         goto done;

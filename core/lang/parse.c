@@ -19,7 +19,9 @@ enum {
 };
 
 struct parser {
-    struct lexer lex; /* the tokens, and the error count both halves add to */
+    struct lexer lex;          /* the tokens, and the error count both halves add to */
+    struct ssg_arena *values;  /* what the parse returns (strings, lists, arguments); the
+                                  tokens may live in another, shorter-lived arena */
     int pos;
     int nesting;  /* lists open around the value being parsed */
 };
@@ -87,7 +89,7 @@ static void recover(struct parser *ps)
 
 static const char *unescape(struct parser *ps, const struct token *t, size_t *len)
 {
-    char *out = ssg_arena_alloc(ps->lex.arena, t->len + 1);
+    char *out = ssg_arena_alloc(ps->values, t->len + 1);
     if (!out)
         return NULL;
     size_t n = 0;
@@ -149,7 +151,7 @@ static int parse_list(struct parser *ps, struct ssg_value *v)
         return 0;
     v->kind = SSG_V_LIST;
     v->count = count;
-    v->items = ssg_arena_alloc(ps->lex.arena, (size_t)(count ? count : 1) * sizeof *items);
+    v->items = ssg_arena_alloc(ps->values, (size_t)(count ? count : 1) * sizeof *items);
     if (!v->items)
         return 0;
     memcpy(v->items, items, (size_t)count * sizeof *items);
@@ -248,7 +250,7 @@ static int parse_arg(struct parser *ps, struct ssg_arg *arg)
 
 static struct ssg_arg *copy_args(struct parser *ps, const struct ssg_arg *args, int count)
 {
-    struct ssg_arg *out = ssg_arena_alloc(ps->lex.arena, (size_t)(count ? count : 1) * sizeof *out);
+    struct ssg_arg *out = ssg_arena_alloc(ps->values, (size_t)(count ? count : 1) * sizeof *out);
     if (out && count)
         memcpy(out, args, (size_t)count * sizeof *out);
     return out;
@@ -396,7 +398,7 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
 static enum ssg_err parse_source(struct ssg_arena *arena, const struct ssg_source *src,
                                  struct ssg_file *out, struct ssg_diags *diags)
 {
-    struct parser ps = {.lex = {.arena = arena, .src = src, .diags = diags}};
+    struct parser ps = {.lex = {.arena = arena, .src = src, .diags = diags}, .values = arena};
     memset(out, 0, sizeof *out);
     out->src = src;
     if (!ssg_lex(&ps.lex, src->text, src->text + src->len))
@@ -483,15 +485,21 @@ enum ssg_err ssg_parse_file(struct ssg_arena *arena, const char *path, struct ss
 enum ssg_err ssg_parse_value(struct ssg_arena *arena, const struct ssg_source *src,
                              const char *start, struct ssg_value *out, struct ssg_diags *diags)
 {
-    /* Tokenise only the tail, keeping locations relative to the whole source. */
-    struct parser ps = {.lex = {.arena = arena, .src = src, .diags = diags}};
-    if (!ssg_lex(&ps.lex, start, start + strlen(start)))
+    /* Tokenise only the tail, keeping locations relative to the whole source. The tokens
+       (6 KiB at least) are freed here: a live graph parses a value at every
+       ssg_graph_set, and its arena would otherwise grow by them each time. */
+    struct ssg_arena tokens = {0};
+    struct parser ps = {.lex = {.arena = &tokens, .src = src, .diags = diags}, .values = arena};
+    if (!ssg_lex(&ps.lex, start, start + strlen(start))) {
+        ssg_arena_free(&tokens);
         return SSG_E_NOMEM;
+    }
     int ok = !ps.lex.errors && parse_value(&ps, out);
     if (ok && peek(&ps, 0)->kind != T_NEWLINE && peek(&ps, 0)->kind != T_EOF) {
         error_at(&ps, peek(&ps, 0)->at, "expected one value, found more after it");
         ok = 0;
     }
+    ssg_arena_free(&tokens);
     return ok ? SSG_OK : SSG_E_SYNTAX;
 }
 
