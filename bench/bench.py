@@ -6,6 +6,7 @@
                            [--ssdo [--samples 12,24,36,64]] [--table1] [--backend]
                            [--hybrid] [--frame-budget]
                            [--accuracy [--part ao|gi] [--save docs/accuracy.md]]
+                           [--gallery [--scenes a,b] [--lights own,sky] [--paths N]]
 
 Each configuration runs `ssgraph run GRAPH --size WxH` RUNS times (after one warm-up run)
 in a fresh process; the per-node milliseconds come from the timing table ssgraph prints,
@@ -38,6 +39,10 @@ graphs/hybrid_ssdo_error.graph against reference_gi on every example scene under
 lights and each light of examples/lights/ (sun, sky, courtyard probe; a summary against
 the SSAO baseline per light, and each bounce's energy against the reference's), as the
 Markdown tables of docs/accuracy.md (--save it there).
+
+--gallery writes docs/gallery.md: every shipped pipeline on every example scene with a still
+camera beside converged truth (cached references), with error maps (FLIP) and crops of the
+worst region (bench/gallery.py).
 
 --ssdo times graphs/ssdo.graph on the Cornell box for each kernel size K and with the
 bounce on and off (the `do` node's median ms), and scores each final image against
@@ -414,10 +419,39 @@ def main():
     ap.add_argument("--hybrid", action="store_true",
                     help="hybrid AO: ms per frame for 128/512 lights and 256/1024 maps on "
                          "both backends, error against reference_gi, the paper's fps")
+    ap.add_argument("--gallery", action="store_true",
+                    help="every pipeline on every still example scene beside converged "
+                         "truth, error maps and crops: docs/gallery.md (bench/gallery.py; "
+                         "default 320x180)")
+    ap.add_argument("--paths", type=int, default=4096,
+                    help="with --gallery: reference_gi paths a pixel")
+    ap.add_argument("--rays", type=int, default=4096,
+                    help="with --gallery: reference_ao rays a pixel")
+    ap.add_argument("--scenes", help="with --gallery: comma-separated scene names "
+                                     "(default: every still example scene)")
+    ap.add_argument("--lights", default="own,sky,courtyard",
+                    help="with --gallery: lightings, of own, sky, courtyard, sun")
+    ap.add_argument("--gallery-out", default=os.path.join(ROOT, "docs", "gallery.md"),
+                    help="with --gallery: the Markdown file (its images go to "
+                         "docs/images/gallery beside it unless --gallery-images)")
+    ap.add_argument("--gallery-images", help="with --gallery: the folder of its pictures")
+    ap.add_argument("--self-error", action="store_true",
+                    help="with --gallery: a second reference per case with another seed, "
+                         "to state the truth's own noise")
     args = ap.parse_args()
     if args.save:
         sys.stdout = Tee(sys.stdout, args.save)
     binary = args.bin or build()
+    if args.gallery:
+        from accuracy import still_scenes
+        from gallery import gallery
+        scenes = args.scenes.split(",") if args.scenes else [
+            f[:-len(".scene")] for f in still_scenes()]
+        images = args.gallery_images or os.path.join(
+            os.path.dirname(os.path.abspath(args.gallery_out)), "images", "gallery")
+        gallery(binary, (args.size or ["320x180"])[0], args.paths, args.rays, scenes,
+                args.lights.split(","), images, args.gallery_out, args.self_error)
+        return
     if args.accuracy:
         from accuracy import accuracy_table, gi_accuracy_table  # the tables' own module
         size = (args.size or ["640x480"])[0]
