@@ -18,8 +18,8 @@ The references are cached like bench --reference's: $SSGRAPH_CACHE/gallery, else
 $XDG_CACHE_HOME/ssgraph/gallery, else ~/.cache/ssgraph/gallery; each <hash>.exr is keyed by
 ssgraph's version, the reference graph's text, the scene's and the lights' files and the
 files they name, the size, the path count and the seed (<hash>.key holds the key, written
-last). --self-error renders a second reference with another seed for each case and reports
-their difference (RMSE / sqrt 2 estimates one reference's own noise).
+last). --self-error renders two more references a case, with other seeds and a quarter of
+the paths, and states the truth's own noise from their difference (own_noise).
 
 Pictures: each case is one JPEG (top: truth, then every pipeline; bottom: each error map in
 false colour, mean FLIP or RMSE in the label), written to --out (docs/images/gallery);
@@ -126,6 +126,18 @@ def reference(binary, kind, scene, lights, size, count, seed):
         f.write(text)
     os.replace(keyfile + ".tmp", keyfile)
     return exr
+
+
+def own_noise(binary, scene, light, size, paths):
+    """The reference's own noise at `paths`, from two references of paths / 4 with other
+    seeds (2 and 3; the truth itself is seed 1): their RMSE / sqrt 2 is one quarter-path
+    reference's noise, half of it the full reference's (noise falls as 1 / sqrt(paths)).
+    Also the FLIP between the two quarter-path references, as measured."""
+    quarter = max(1, paths // 4)
+    a = reference(binary, "gi", scene, light, size, quarter, 2)
+    b = reference(binary, "gi", scene, light, size, quarter, 3)
+    m = json.loads(run([binary, "compare", a, b, "--mask", b + ":depth", "--json"]))
+    return m["rmse"] / math.sqrt(2) * math.sqrt(quarter / paths), m.get("flip")
 
 
 def render(binary, graph, extra, scene, lights, size, out):
@@ -285,10 +297,7 @@ def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_er
                 tag = "%s_%s" % (scene_name, light)
                 ref = reference(binary, "gi", scene, light, size, paths, 1)
                 if self_error:
-                    other = reference(binary, "gi", scene, light, size, paths, 2)
-                    m = json.loads(run([binary, "compare", other, ref, "--mask",
-                                        ref + ":depth", "--json"]))
-                    noise.append((tag, m["rmse"] / math.sqrt(2), m.get("flip")))
+                    noise.append((tag,) + own_noise(binary, scene, light, size, paths))
                 rows = []
                 for name, graph, extra in GI_PIPELINES:
                     if name in NEEDS_ENVIRONMENT and not has_environment(scene, light):
@@ -331,10 +340,13 @@ def write_markdown(path, folder, size, paths, rays, summary, sections, noise):
              ""]
     if noise:
         lines += ["## The truth's own error", "",
-                  "Two references with different seeds; RMSE / sqrt 2 is one reference's "
-                  "noise, FLIP between the two (when present) the error a perfect pipeline "
-                  "would still score:", "", "| case | noise rmse | flip of two seeds |",
-                  "|---|--:|--:|"]
+                  "Two more references with other seeds at a quarter of the paths: their "
+                  "RMSE / sqrt 2, halved (noise falls as 1 / sqrt(paths)), is the truth's own "
+                  "noise at %d paths; the FLIP between the two quarter-path references is "
+                  "shown as measured (an upper bound of what the truth's noise adds to a "
+                  "pipeline's FLIP):" % paths, "",
+                  "| case | noise rmse at %d paths | flip of two %d-path references |" % (
+                      paths, max(1, paths // 4)), "|---|--:|--:|"]
         lines += ["| %s | %.4f | %s |" % (t, r, "%.4f" % f if f is not None else "-")
                   for t, r, f in noise]
         lines.append("")

@@ -33,7 +33,7 @@ for pic in cornell_own_gi cornell_sky_gi cornell_ao cornell_sky_gi_hybrid_ssdo_c
     grep -q "images/gallery/$pic.jpg" "$md" || fail "$md does not show $pic.jpg"
 done
 keys=$(ls "$SSGRAPH_CACHE/gallery"/*.key | wc -l)
-[ "$keys" -eq 5 ] || fail "expected 5 cached references (2 lightings x 2 seeds + AO), got $keys"
+[ "$keys" -eq 7 ] || fail "expected 7 cached references (2 lightings x 3 + AO), got $keys"
 
 # again: every reference from the cache, the same tables
 before=$(stat -c %Y "$SSGRAPH_CACHE"/gallery/*.exr | sort | tr '\n' ' ')
@@ -43,7 +43,7 @@ after=$(stat -c %Y "$SSGRAPH_CACHE"/gallery/*.exr | sort | tr '\n' ' ')
 diff <(grep "^|" "$TMP/first/gallery.md") <(grep "^|" "$TMP/second/gallery.md") > /dev/null ||
     fail "the second run's tables differ"
 # another path count is another key (the AO reference's stays)
-gallery 9 third own > "$TMP/third.log" 2>&1 || fail "third gallery failed"
+gallery 12 third own > "$TMP/third.log" 2>&1 || fail "third gallery failed"
 keys=$(ls "$SSGRAPH_CACHE/gallery"/*.key | wc -l)
-[ "$keys" -eq 7 ] || fail "another path count should add 2 references, have $keys keys"
+[ "$keys" -eq 10 ] || fail "another path count should add 3 references, have $keys keys"
 finish test_gallery
