@@ -14,7 +14,7 @@
 #define SSG_FLIP_H
 
 /* The paper's default observer: a 0.7 m wide 3840-pixel monitor seen from 0.7 m,
-   ppd = 0.7 m * (3840 px / 0.7 m) * pi / 180 (HPG 2020, section 4). */
+   ppd = 0.7 m * (3840 px / 0.7 m) * pi / 180 (HPG 2020's default observer). */
 #define SSG_FLIP_DEFAULT_PPD 67.02064327658225
 /* Largest ppd accepted: the filter radii grow as 0.14 ppd (a 281-tap kernel here). */
 #define SSG_FLIP_MAX_PPD 1000.0

@@ -140,7 +140,8 @@ static void test_green_blue(void)
     ssg_image_destroy(&b);
 }
 
-/* Black against white, worked by hand from the formulas (HPG 2020 eqs. 3-5):
+/* Black against white, worked by hand from the formulas (HPG 2020: Hunt-adjusted L*a*b*, HyAB, the
+ * qc/pc/pt mapping):
  *   black: XYZ = 0, f(0) = 4/29, L = 116 * 4/29 - 16 = 0, a = b = 0.
  *   white: XYZ / white = 1, f(1) = 1, L = 100, a = b = 0 (Hunt: 0.01 L * 0 = 0).
  *   HyAB = |100 - 0| + 0 = 100; HyAB^0.7 = 10^1.4 = 25.118864.
