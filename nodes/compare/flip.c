@@ -109,9 +109,9 @@ static void normalise_signed(const double *v, float *k, int n)
         k[i] = (float)(v[i] > 0 ? v[i] / pos : v[i] < 0 ? v[i] / neg : 0.0);
 }
 
-/* The feature detectors: the 2D kernels are G'(x) g(y) and G''(x) g(y) (and transposed). Their sign
-   depends on x alone, so normalising the 2D kernel's positive and negative parts is
-   normalising the 1D derivative's and the 1D Gaussian separately. */
+/* The feature detectors: the 2D kernels are G'(x) g(y) and G''(x) g(y) (and
+   transposed). Their sign depends on x alone, so normalising the 2D kernel's positive
+   and negative parts is normalising the 1D derivative's and the 1D Gaussian separately. */
 static void feature_kernels(struct kernels *k, double ppd)
 {
     double sd = 0.5 * 0.082 * ppd, e[MAX_TAPS], d1[MAX_TAPS], d2[MAX_TAPS], s = 0;

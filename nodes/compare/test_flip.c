@@ -30,14 +30,16 @@ static void run(const struct ssg_image *a, const struct ssg_image *b, const char
     CHECK_EQ(e, SSG_OK);
 }
 
+/* A metric by name; NaN when the run did not report it (flip = off). */
 static double metric(const struct ssg_outputs *out, const char *name)
 {
-    for (int i = 0; i < out->metric_count; i++)
-        if (!strcmp(out->metric_names[i], name))
-            return out->metric_values[i];
-    return NAN;
+    int i = 0;
+    while (i < out->metric_count && strcmp(out->metric_names[i], name) != 0)
+        i++;
+    return i < out->metric_count ? out->metric_values[i] : NAN;
 }
 
+/* The map the run wrote to the `flip` output (ssg_node_run makes every output). */
 static const float *flip_map(const struct ssg_outputs *out)
 {
     for (int i = 0; i < out->count; i++)
@@ -47,24 +49,29 @@ static const float *flip_map(const struct ssg_outputs *out)
     return NULL;
 }
 
-static uint64_t rng_state = 7;
-static double uniform01(void)
+/* Noise in [-0.5, 0.5) from a hash of the pixel and channel (no state to share). */
+static double hash_noise(uint32_t x, uint32_t y, uint32_t c)
 {
-    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    uint32_t v = x * 73856093u ^ y * 19349663u ^ c * 83492791u;
+    v ^= v >> 16, v *= 0x7feb352du, v ^= v >> 15, v *= 0x846ca68bu, v ^= v >> 16;
+    return v / 4294967296.0 - 0.5;
 }
 
-/* Smooth colour structure, edges and noise in [0, 1.2] (a little over white). */
+/* A checkerboard of 9 x 7 cells over a smooth wave, with noise; in [0, 1.2] (a little
+   over white), so FLIP's colour, edges and points all see something. */
 static struct ssg_image *textured(int w, int h, int channels, double phase)
 {
     struct ssg_image *im = ssg_image_create(w, h, channels);
-    for (int c = 0; c < channels; c++)
-        for (int y = 0; y < h; y++)
-            for (int x = 0; x < w; x++) {
-                double v = 0.5 + 0.3 * sin(0.3 * x + phase + c) * cos(0.2 * y - phase) +
-                           0.2 * ((x / 9 + y / 7) % 2) + 0.15 * (uniform01() - 0.5);
-                ssg_image_plane(im, c)[(size_t)y * w + x] = (float)(v > 0 ? v : 0);
-            }
+    for (int c = 0; c < channels; c++) {
+        float *p = ssg_image_plane(im, c);
+        for (int i = 0; i < w * h; i++) {
+            int x = i % w, y = i / w;
+            double wave = sin(0.3 * x + phase + c) * cos(0.2 * y - phase);
+            double v = 0.5 + 0.3 * wave + 0.2 * ((x / 9 + y / 7) % 2) +
+                       0.15 * hash_noise((uint32_t)x, (uint32_t)y, (uint32_t)(c + 300 * phase));
+            p[i] = (float)(v > 0 ? v : 0);
+        }
+    }
     return im;
 }
 
@@ -140,8 +147,8 @@ static void test_green_blue(void)
     ssg_image_destroy(&b);
 }
 
-/* Black against white, worked by hand from the formulas (HPG 2020: Hunt-adjusted L*a*b*, HyAB, the
- * qc/pc/pt mapping):
+/* Black against white, worked by hand from the formulas (HPG 2020: Hunt-adjusted
+ * L*a*b*, HyAB, the qc/pc/pt mapping):
  *   black: XYZ = 0, f(0) = 4/29, L = 116 * 4/29 - 16 = 0, a = b = 0.
  *   white: XYZ / white = 1, f(1) = 1, L = 100, a = b = 0 (Hunt: 0.01 L * 0 = 0).
  *   HyAB = |100 - 0| + 0 = 100; HyAB^0.7 = 10^1.4 = 25.118864.
@@ -208,7 +215,7 @@ static void test_edge(void)
     ssg_image_destroy(&blurred);
 }
 
-/* 131 rows (three row bands of FLIP's and compare's, the last short), odd width. */
+/* 131 rows (3 row bands of compare's 64, 9 of FLIP's 16; the last short), odd width. */
 static void test_threads(void)
 {
     enum { W = 77, H = 131 };
