@@ -120,7 +120,8 @@ const struct ssg_node_desc ssg_node_compare = {
     .method = "RMSE, MAE, PSNR = 10 log10(peak^2 / MSE); SSIM: Wang, Bovik, Sheikh, "
               "Simoncelli, IEEE TIP 13(4) 2004, eqs. 13-17 (Gaussian window 11x11, sigma 1.5, "
               "K1 0.01, K2 0.03); FLIP: Andersson, Nilsson, Akenine-Moller, Oskarsson, "
-              "Astrom, Fairchild, HPG 2020 (CSF filters in YyCxCz, Hunt-adjusted L*a*b*, HyAB, edge and point features; qc 0.7, pc 0.4, pt 0.95, qf 0.5); "
+              "Astrom, Fairchild, HPG 2020 (CSF filters in YyCxCz, Hunt-adjusted L*a*b*, "
+              "HyAB, edge and point features; qc 0.7, pc 0.4, pt 0.95, qf 0.5); "
               "HDR-FLIP: Andersson, Nilsson, Shirley, Akenine-Moller, EG 2021 (ACES, "
               "exposures from the reference)",
     SSG_NODE_PORTS(inputs, outputs),
