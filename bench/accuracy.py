@@ -25,20 +25,23 @@ def still_scenes():
 
 def accuracy_table(binary, size, threads, runs):
     """Every AO method of graphs/ao_error.graph against reference_ao on every example scene:
-    RMSE, bias (mean of method - reference: > 0 = too bright, missed occlusion) and SSIM,
-    and the frame time (median, write excluded) of the shipped graph that runs the method."""
+    RMSE, FLIP (compare's LDR-FLIP of the grey AO, mean over the surface pixels), bias (mean
+    of method - reference: > 0 = too bright, missed occlusion) and SSIM, and the frame time
+    (median, write excluded) of the shipped graph that runs the method."""
     ao_error = os.path.join(ROOT, "graphs", "ao_error.graph")
     scenes = still_scenes()
     print(f"# AO accuracy of the shipped graphs, {size}\n")
     print("Each AO method of `graphs/ao_error.graph` against `reference_ao` (1024 cosine-weighted "
           "rays within the same 0.5 radius; its noise floor is about 0.01 RMSE) on every "
-          "example scene, surface pixels only. bias = mean(method - reference): positive = "
+          "example scene, surface pixels only. flip: mean LDR-FLIP (Andersson et al. 2020, the "
+          "AO value as grey, 67 pixels per degree; 0 = identical, 1 = green against blue; "
+          "docs/nodes.md#compare). bias = mean(method - reference): positive = "
           "too bright (missed occlusion). ms: median frame time of the shipped graph that "
           f"runs the method (`graphs/ssao.graph`, `graphs/hbao.graph`, `graphs/gtao.graph`; write excluded, "
           f"{runs} runs after a warm-up, {threads or os.cpu_count()} threads). Made by "
           f"`python3 bench/bench.py --accuracy --size {size}`.\n")
-    print("| scene | method | rmse | bias | ssim | ms |")
-    print("|---|---|---|---|---|---|")
+    print("| scene | method | rmse | flip | bias | ssim | ms |")
+    print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
             path = os.path.join(ROOT, "examples", scene)
@@ -74,10 +77,11 @@ def gi_accuracy_table(binary, size, threads, runs):
     """Every GI pipeline of graphs/gi_error.graph (and, where it runs, of
     graphs/hybrid_ssdo_error.graph) against reference_gi (direct light with true shadows
     plus one diffuse bounce) on every example scene under its own lights and each light of
-    examples/lights: per scene RMSE, bias, SSIM and the bounce energy (mean of the
-    pipeline's bounce term over the reference's); per light the mean RMSE, the mean and
-    worst ratio to the SSAO baseline and how many scenes are worse than it; and the frame
-    time of ssdo.graph and gi.graph (Cornell box) and hybrid_ssdo.graph (courtyard)."""
+    examples/lights: per scene RMSE, FLIP (HDR-FLIP of the linear images), bias, SSIM and
+    the bounce energy (mean of the pipeline's bounce term over the reference's); per light
+    the mean RMSE and FLIP, the mean and worst ratio to the SSAO baseline and how many
+    scenes are worse than it; and the frame time of ssdo.graph and gi.graph (Cornell box)
+    and hybrid_ssdo.graph (courtyard)."""
     scenes = still_scenes()
     print(f"\n# GI accuracy of the shipped graphs, {size}\n")
     print("Every example scene under its own lights (own: the point and directional lights "
@@ -85,7 +89,9 @@ def gi_accuracy_table(binary, size, threads, runs):
           "(`--lights`: a sun alone, a uniform white sky, the courtyard probe), each "
           "pipeline's final image against `reference_gi` (direct light with ray-traced "
           "shadows plus exactly one diffuse bounce, 256 paths a pixel), surface pixels only, "
-          "linear radiance. none: direct + environment light, no occlusion; ssao: direct + "
+          "linear radiance. flip: mean HDR-FLIP (Andersson et al. 2021: LDR-FLIP over the "
+          "exposures the reference spans, the largest per pixel; 0 = identical). none: "
+          "direct + environment light, no occlusion; ssao: direct + "
           "SSAO-darkened environment at the SSDO pipeline's radius, samples and filter (the "
           "baseline); ssdo: `graphs/ssdo.graph`; hybrid: `graphs/hybrid.graph`; hybrid_ssdo: "
           "`graphs/hybrid_ssdo.graph` (the hybrids need environment light: not under the "
@@ -98,7 +104,7 @@ def gi_accuracy_table(binary, size, threads, runs):
         for light, lights_file, graph in GI_LIGHTS:
             lights = (os.path.join(ROOT, "examples", "lights", lights_file + ".scene")
                       if lights_file else None)
-            per, energy = {}, {}
+            per, energy, flips = {}, {}, {}
             for scene in scenes:
                 path = os.path.join(ROOT, "examples", scene)
                 metrics = run_metrics(binary, os.path.join(ROOT, "graphs", graph), path, size,
@@ -108,12 +114,14 @@ def gi_accuracy_table(binary, size, threads, runs):
                         continue
                     m = metrics[node]
                     per.setdefault(name, {})[scene] = m["rmse"]
+                    flips.setdefault(name, []).append(m["flip"])
                     ratio = bounce_ratio(metrics, bounce_node)
                     if ratio is not None:
                         energy.setdefault(name, []).append(ratio)
                     shown = f"{ratio:.3f}" if ratio is not None else "-"
                     rows.append(f"| {light} | {scene[:-6]} | {name} | {m['rmse']:.4f} | "
-                                f"{m['bias']:+.4f} | {m['ssim']:.3f} | {shown} |")
+                                f"{m['flip']:.4f} | {m['bias']:+.4f} | {m['ssim']:.3f} | "
+                                f"{shown} |")
             base = per["ssao"]
             for name, _, what, _ in GI_METHODS:
                 if name not in per:
@@ -122,7 +130,9 @@ def gi_accuracy_table(binary, size, threads, runs):
                 mean = sum(per[name].values()) / len(per[name])
                 e = energy.get(name)
                 shown = f"{sum(e) / len(e):.3f}" if e else "-"
+                f = flips[name]
                 summary.append(f"| {light} | {name} ({what}) | {mean:.4f} | "
+                               f"{sum(f) / len(f):.4f} | "
                                f"{sum(r) / len(r):.3f} | {max(r):.3f} | "
                                f"{sum(x > 1.0 for x in r)} of {len(r)} | {shown} |")
         ms = [frame_ms(binary, os.path.join(ROOT, "graphs", g),
@@ -130,17 +140,17 @@ def gi_accuracy_table(binary, size, threads, runs):
                        os.path.join(tmp, "t"))[0]
               for g, sc in (("ssdo.graph", "cornell.scene"), ("gi.graph", "cornell.scene"),
                             ("hybrid_ssdo.graph", "courtyard.scene"))]
-    print("| light | method | mean rmse | mean ratio to ssao | worst ratio | scenes worse "
-          "than ssao | bounce |")
-    print("|---|---|---|---|---|---|---|")
+    print("| light | method | mean rmse | mean flip | mean ratio to ssao | worst ratio | "
+          "scenes worse than ssao | bounce |")
+    print("|---|---|---|---|---|---|---|---|")
     print("\n".join(summary))
     print(f"\nFrame time at {size} (median of {runs} runs after a warm-up, "
           f"{threads or os.cpu_count()} threads, write excluded): ssdo.graph on the Cornell "
           f"box {ms[0]:.1f} ms, gi.graph on the Cornell box {ms[1]:.1f} ms, "
           f"hybrid_ssdo.graph on the courtyard {ms[2]:.1f} ms (lightprobe's one-off "
           "conversion included).\n")
-    print("| light | scene | method | rmse | bias | ssim | bounce |")
-    print("|---|---|---|---|---|---|---|")
+    print("| light | scene | method | rmse | flip | bias | ssim | bounce |")
+    print("|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
 
 
@@ -166,5 +176,5 @@ def print_rows(binary, scene, scene_path, metrics, methods, size, threads, runs,
             frame, _ = frame_ms(binary, os.path.join(ROOT, "graphs", graph), scene_path, size,
                                 threads, runs, os.path.join(tmp, "t"))
             ms = f"{frame:.1f}"
-        print(f"| {scene[:-6]} | {label} | {m['rmse']:.3f} | {m['bias']:+.3f} | "
-              f"{m['ssim']:.3f} | {ms} |")
+        print(f"| {scene[:-6]} | {label} | {m['rmse']:.3f} | {m['flip']:.4f} | "
+              f"{m['bias']:+.3f} | {m['ssim']:.3f} | {ms} |")

@@ -167,7 +167,7 @@ def ssdo_table(binary, sizes, threads, runs, samples):
     graph = os.path.join(ROOT, "graphs", "ssdo.graph")
     reference = os.path.join(ROOT, "bench", "ssdo_reference.graph")
     print(f"{'size':<10} {'K':>4} {'bounce':>7} {'ssdo ms':>9} {'min':>8} {'max':>8} "
-          f"{'rmse':>8} {'ssim':>7}")
+          f"{'rmse':>8} {'flip':>7} {'ssim':>7}")
     with tempfile.TemporaryDirectory() as tmp:
         for size in sizes:
             ref_dir = os.path.join(tmp, "ref_" + size)
@@ -191,7 +191,7 @@ def ssdo_table(binary, sizes, threads, runs, samples):
                                               "--mask", ref + ":depth", "--json"]))
                     print(f"{size:<10} {k:>4} {bounce:>7} {statistics.median(times):>9.2f} "
                           f"{min(times):>8.2f} {max(times):>8.2f} {err['rmse']:>8.4f} "
-                          f"{err['ssim']:>7.4f}")
+                          f"{err['flip']:>7.4f} {err['ssim']:>7.4f}")
 
 
 PAPER_FPS = {128: 15, 512: 6}  # Knuth and Kohlhammer sec. 5, a GeForce 8 (2007)
@@ -204,7 +204,8 @@ def hybrid_table(binary, size, threads, runs):
     graph = os.path.join(ROOT, "graphs", "hybrid.graph")
     reference = os.path.join(ROOT, "bench", "hybrid_reference.graph")
     print(f"{'lights':>6} {'maps':>5} {'backend':<8} {'frame ms':>9} {'fps':>6} {'maps ms':>8} "
-          f"{'global ms':>9} {'probe ms':>8} {'rmse':>8} {'ssim':>7} {'paper fps':>9}")
+          f"{'global ms':>9} {'probe ms':>8} {'rmse':>8} {'flip':>7} {'ssim':>7} "
+          f"{'paper fps':>9}")
     with tempfile.TemporaryDirectory() as tmp:
         ref_dir = os.path.join(tmp, "ref")
         run_cmd([binary, "run", reference, "--size", size, "--out", ref_dir, "--quiet"])
@@ -234,7 +235,8 @@ def hybrid_table(binary, size, threads, runs):
                     print(f"{lights:>6} {res:>5} {backend:<8} {frame:>9.1f} "
                           f"{1000 / frame:>6.2f} {med('sm (shadowmaps)'):>8.1f} "
                           f"{med('glob (probe_light)'):>9.1f} {med('lp (lightprobe)'):>8.1f} "
-                          f"{err['rmse']:>8.4f} {err['ssim']:>7.4f} {PAPER_FPS[lights]:>9}",
+                          f"{err['rmse']:>8.4f} {err['flip']:>7.4f} {err['ssim']:>7.4f} "
+                          f"{PAPER_FPS[lights]:>9}",
                           flush=True)
     print(f"({size}, {runs} runs each after a warm-up, medians; threads: "
           f"{threads or os.cpu_count()}; frame = every node but write and the one-off "
@@ -267,8 +269,8 @@ def frame_ms(binary, graph, scene, size, threads, runs, out_dir):
 def table1(binary, size, threads, runs):
     """The rows of table 1 on its three scenes: ms per frame and error against truth."""
     reference = os.path.join(ROOT, "bench", "ssdo_reference.graph")
-    print(f"{'scene':<9} {'graph':<16} {'frame ms':>9} {'passes':>7} {'rmse':>8} {'ssim':>7} "
-          f"{'full passes':>12} {'speed-up':>9} {'full rmse':>10} {'error cost':>10}")
+    print(f"{'scene':<9} {'graph':<16} {'frame ms':>9} {'passes':>7} {'rmse':>8} {'flip':>7} "
+          f"{'ssim':>7} {'full passes':>12} {'speed-up':>9} {'full rmse':>10} {'error cost':>10}")
     with tempfile.TemporaryDirectory() as tmp:
         for label, scene_file in TABLE1_SCENES.items():
             scene = os.path.join(ROOT, "examples", scene_file)
@@ -288,7 +290,7 @@ def table1(binary, size, threads, runs):
                 ms, passes = frame_ms(binary, graph, scene, size, threads, runs, out_dir)
                 err = score(out_dir)
                 line = (f"{label:<9} {row:<16} {ms:>9.1f} {passes:>7.1f} {err['rmse']:>8.4f} "
-                        f"{err['ssim']:>7.4f}")
+                        f"{err['flip']:>7.4f} {err['ssim']:>7.4f}")
                 twin = os.path.join(ROOT, "bench", "table1_twins", row + "_full.graph")
                 if os.path.exists(twin):
                     full_dir = os.path.join(tmp, "full")

@@ -2,7 +2,7 @@
 # `bench/bench.py --accuracy --part gi`, the GI half of docs/accuracy.md: at a tiny size and
 # one run it still scores every GI pipeline on every example scene under each light of
 # its own lights and each light of examples/lights (four rows a scene under the sun, six
-# under its own lights, the sky and the probe: a finite rmse, a signed bias, an ssim and
+# under its own lights, the sky and the probe: a finite rmse and flip, a signed bias, an ssim and
 # the bounce's energy or -), one summary row a pipeline and light, and the frame times of
 # ssdo.graph, gi.graph and hybrid_ssdo.graph.
 set -u
@@ -11,9 +11,9 @@ python3 bench/bench.py --accuracy --part gi --bin "$BIN" --runs 1 --size 48x36 >
     2> "$TMP/err" || fail "bench.py --accuracy --part gi failed: $(tail -3 "$TMP/err")"
 scenes=$(grep -L -E '^[[:space:]]*(camera_key|orbit)\(' examples/*.scene | wc -l) # still cameras
 grep -q '^# AO accuracy' "$TMP/acc.md" && fail "--part gi printed the AO table"
-gi=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+gi=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| [0-9.]+ \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
 [ "$gi" -eq $((22 * scenes)) ] || fail "expected $((22 * scenes)) GI rows, got $gi"
-summary=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+summary=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \| ([0-9.]+|-) \|$' "$TMP/acc.md")
 [ "$summary" -eq 22 ] || fail "expected 22 GI summary rows, got $summary"
 bounce=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (ssdo|hybrid_ssdo|gi) \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
 [ "$bounce" -gt 0 ] || fail "no GI row has a bounce energy"

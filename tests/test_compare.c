@@ -74,10 +74,10 @@ static void test_identical(void)
         memcpy(b->data, a->data, sizeof(float) * 37 * 29 * channels);
         struct ssg_outputs out;
         CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
-        CHECK_EQ(out.metric_count, 8);
+        CHECK_EQ(out.metric_count, 9);
         const char *order[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels", "mean",
-                               "reference_mean"};
-        for (int i = 0; i < 8 && i < out.metric_count; i++)
+                               "reference_mean", "flip"};
+        for (int i = 0; i < 9 && i < out.metric_count; i++)
             CHECK(!strcmp(out.metric_names[i], order[i]));
         CHECK(metric(&out, "rmse") == 0.0);
         CHECK(metric(&out, "mae") == 0.0);

@@ -14,14 +14,14 @@ src="$TMP/run/ssao.exr"
 # --- identical images: exactly one line of JSON ---
 out=$("$BIN" compare "$src:ao" "$src:ao" --json) || fail "identical compare exited $?"
 [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] || fail "--json printed more than one line: $out"
-echo "$out" | grep -Eq '^\{"rmse":0,"mae":0,"bias":0,"psnr":null,"ssim":1,"pixels":3072,"mean":([0-9.]+),"reference_mean":\1\}$' \
+echo "$out" | grep -Eq '^\{"rmse":0,"mae":0,"bias":0,"psnr":null,"ssim":1,"pixels":3072,"mean":([0-9.]+),"reference_mean":\1,"flip":0\}$' \
     || fail "identical images: unexpected JSON $out"
 out=$("$BIN" compare "$src" "$src" --json) || fail "identical colour compare exited $?"
 echo "$out" | grep -q '"rmse":0,.*"ssim":1,' || fail "identical colour images: $out"
 
 # --- different images: a real, finite error; the table form ---
 out=$("$BIN" compare "$src:ao_raw" "$src:ao" --json) || fail "different compare exited $?"
-echo "$out" | grep -Eq '^\{"rmse":0\.[0-9]+(e-[0-9]+)?,"mae":0\.[0-9]+(e-[0-9]+)?,"bias":-?0\.[0-9]+(e-[0-9]+)?,"psnr":[0-9.]+,"ssim":0\.[0-9]+,"pixels":3072,"mean":[0-9.]+,"reference_mean":[0-9.]+\}$' \
+echo "$out" | grep -Eq '^\{"rmse":0\.[0-9]+(e-[0-9]+)?,"mae":0\.[0-9]+(e-[0-9]+)?,"bias":-?0\.[0-9]+(e-[0-9]+)?,"psnr":[0-9.]+,"ssim":0\.[0-9]+,"pixels":3072,"mean":[0-9.]+,"reference_mean":[0-9.]+,"flip":0\.[0-9]+(e-[0-9]+)?\}$' \
     || fail "different images: unexpected JSON $out"
 expect_exit 0 "^rmse +0\.[0-9]+" "$BIN" compare "$src:ao_raw" "$src:ao"
 expect_exit 0 "psnr +inf" "$BIN" compare "$src:ao" "$src:ao"
@@ -70,7 +70,7 @@ EOF
 expect_exit 0 "same +ssim +1" "$BIN" run "$TMP/cmp.graph" --out "$TMP/graph"
 json="$TMP/graph/metrics.json"
 [ -f "$json" ] || fail "run did not write $json"
-tr -d ' \n' < "$json" | grep -q '"same":{"rmse":0,"mae":0,"bias":0,"psnr":null,"ssim":1,"pixels":[0-9]*,"mean":[0-9.e-]*,"reference_mean":[0-9.e-]*}' \
+tr -d ' \n' < "$json" | grep -q '"same":{"rmse":0,"mae":0,"bias":0,"psnr":null,"ssim":1,"pixels":[0-9]*,"mean":[0-9.e-]*,"reference_mean":[0-9.e-]*,"flip":0}' \
     || fail "metrics.json lacks the identical comparison: $(cat "$json")"
 tr -d ' \n' < "$json" | grep -q '"albedo":{"rmse":0\.[0-9]*' \
     || fail "metrics.json lacks the albedo comparison: $(cat "$json")"

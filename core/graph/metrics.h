@@ -8,7 +8,9 @@
 
 #include "ssgraph.h"
 
-#define SSG_METRICS_MAX 128
+/* Room for 40 compare nodes of 12 metrics (banding and flip on) and more; 128 was full at
+   graphs/banding.graph (12 compare nodes), where the last node lost its last metric. */
+#define SSG_METRICS_MAX 512
 
 struct ssg_metric {
     char node[64];  /* node instance that reported it */

@@ -49,6 +49,9 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     out[0].height = a->height;
     out[0].channels = 3;
     out[0].type = SSG_T_COLOR;
+    out[1] = out[0];
+    out[1].channels = 1;
+    out[1].type = SSG_T_SCALAR;
     return SSG_OK;
 }
 
@@ -64,6 +67,18 @@ static void region_pixels(struct ssg_compare_consts *c, const struct ssg_ints *r
     c->ry0 = c->y0 + r->v[1] < c->y1 ? c->y0 + r->v[1] : c->y1;
     c->rx1 = c->x0 + r->v[2] < c->x1 ? c->x0 + r->v[2] : c->x1;
     c->ry1 = c->y0 + r->v[3] < c->y1 ? c->y0 + r->v[3] : c->y1;
+}
+
+const char *const ssg_compare_flip_choices[] = {"auto", "ldr", "hdr", "off", NULL};
+
+/* auto: LDR-FLIP for one channel (AO in [0, 1], the value as grey), HDR-FLIP for three
+   (our colour images are linear HDR radiance). By channels, not type: images read from
+   files (`ssgraph compare`, bench's cached references) arrive typed vector. */
+static int flip_mode(int mode, int channels)
+{
+    if (mode != SSG_COMPARE_FLIP_AUTO)
+        return mode;
+    return channels == 1 ? SSG_COMPARE_FLIP_LDR : SSG_COMPARE_FLIP_HDR;
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -86,6 +101,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->inv_scale = 1.0f / p->scale;
     c->edge = p->edge;
     c->banding = p->banding;
+    c->flip = flip_mode(p->flip, ctx->in_shape[SSG_COMPARE_IN_A].channels);
+    c->ppd = p->ppd;
     ssg_frame_region(ctx->frame, &ctx->in_shape[SSG_COMPARE_IN_A], &c->x0, &c->y0, &c->x1,
                      &c->y1);
     region_pixels(c, &p->region);
@@ -98,10 +115,15 @@ SSG_PORT_TABLE(outputs, SSG_COMPARE_OUT);
 
 const struct ssg_node_desc ssg_node_compare = {
     .name = "compare",
-    .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM and a diff image",
+    .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM, FLIP and a diff "
+               "image",
     .method = "RMSE, MAE, PSNR = 10 log10(peak^2 / MSE); SSIM: Wang, Bovik, Sheikh, "
               "Simoncelli, IEEE TIP 13(4) 2004, eqs. 13-17 (Gaussian window 11x11, sigma 1.5, "
-              "K1 0.01, K2 0.03)",
+              "K1 0.01, K2 0.03); FLIP: Andersson, Nilsson, Akenine-Moller, Oskarsson, "
+              "Astrom, Fairchild, HPG 2020 (CSF filters in YyCxCz, Hunt-adjusted L*a*b*, "
+              "HyAB, edge and point features; qc 0.7, pc 0.4, pt 0.95, qf 0.5); "
+              "HDR-FLIP: Andersson, Nilsson, Shirley, Akenine-Moller, EG 2021 (ACES, "
+              "exposures from the reference)",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_compare_params),
     .consts_size = sizeof(struct ssg_compare_consts),

@@ -4,6 +4,7 @@
 #ifndef SSG_COMPARE_H
 #define SSG_COMPARE_H
 
+#include "flip.h"
 #include "graph/node.h"
 
 /* SSIM window: 11 x 11 taps (Wang et al. 2004, section III-C). */
@@ -21,9 +22,20 @@
       "pixels with mask > 0.5 are compared; none = every pixel", .optional = 1)
 #define SSG_COMPARE_OUT(X)                                                                 \
     X(SSG_COMPARE_OUT_DIFF, "diff", SSG_T_COLOR,                                           \
-      "a - b on blue (a < b), white (equal), red (a > b); black = not compared")
+      "a - b on blue (a < b), white (equal), red (a > b); black = not compared")          \
+    X(SSG_COMPARE_OUT_FLIP, "flip", SSG_T_SCALAR,                                          \
+      "FLIP error map in [0, 1] (0 = not compared, or flip = off)", .on_demand = 1)
 SSG_PORT_ENUM(ssg_compare_input, SSG_COMPARE_IN, SSG_COMPARE_INPUTS);
 SSG_PORT_ENUM(ssg_compare_output, SSG_COMPARE_OUT, SSG_COMPARE_OUTPUTS);
+
+/* The `flip` parameter's choices, in the order of ssg_compare_flip_choices (compare.c). */
+enum ssg_compare_flip_mode {
+    SSG_COMPARE_FLIP_AUTO,
+    SSG_COMPARE_FLIP_LDR,
+    SSG_COMPARE_FLIP_HDR,
+    SSG_COMPARE_FLIP_OFF
+};
+extern const char *const ssg_compare_flip_choices[];
 
 /* The parameters, one row each (lang/params.h); the struct below and the table in
    compare.c are made from these rows. region is [x0, y0, x1, y1] in frame pixels. */
@@ -45,7 +57,15 @@ SSG_PORT_ENUM(ssg_compare_output, SSG_COMPARE_OUT, SSG_COMPARE_OUTPUTS);
     P(INT, banding,                                                                        \
       "> 0: also report banding, banding_rows, banding_cols: RMS of the row and column "   \
       "means of a - b minus their moving average over lines i +- banding; 0 = off",        \
-      .def = 0, .min = 0, .max = 4096, .unit = "px")
+      .def = 0, .min = 0, .max = 4096, .unit = "px")                                      \
+    P(ENUM, flip,                                                                          \
+      "FLIP metric (Andersson et al. 2020/2021): auto = LDR-FLIP for 1 channel (the "      \
+      "value as grey), HDR-FLIP for 3 (linear radiance); ldr; hdr; off = not reported",    \
+      .def = SSG_COMPARE_FLIP_AUTO, .choices = ssg_compare_flip_choices)                   \
+    P(FLOAT, ppd,                                                                          \
+      "FLIP's observer: pixels per degree of visual angle (default: a 0.7 m wide "         \
+      "3840-pixel monitor at 0.7 m)",                                                      \
+      .def = SSG_FLIP_DEFAULT_PPD, .min = 1, .max = SSG_FLIP_MAX_PPD, .unit = "px/deg")
 SSG_PARAMS_STRUCT(ssg_compare_params, SSG_COMPARE_PARAMS);
 
 struct ssg_compare_consts {
@@ -61,6 +81,9 @@ struct ssg_compare_consts {
                                        frame; the frame without one */
     int edge;                       /* as in the parameters */
     int banding;                    /* as in the parameters: the window's half-width */
+    int flip;                       /* FLIP resolved for the input type: LDR, HDR or OFF
+                                       (never AUTO) */
+    double ppd;                     /* as in the parameters */
 };
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

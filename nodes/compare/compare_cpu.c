@@ -13,7 +13,9 @@
  * row in a ring, filling it with its own rows plus 5 rows on either side; a row's sums depend
  * on that row only, so a pixel's value does not depend on its band. The moments are doubles:
  * E[a^2] - E[a]^2 cancels, and float would leave noise of 1e-7 in variances that
- * C2 = 9e-4 does not hide. About 90 cycles a pixel and channel on one core. */
+ * C2 = 9e-4 does not hide. About 90 cycles a pixel and channel on one core.
+ *
+ * FLIP is flip.c's; this file hands it the counted pixels and reports its mean. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdlib.h>
@@ -54,6 +56,7 @@ struct job {
     long long *row_count;    /* banding: h counted pixels of each row */
     int w, h, channels;      /* shape of a and b, px */
     struct partial *parts;   /* one per band */
+    unsigned char *on;       /* FLIP: w * h, 1 = counted(); NULL until report_flip */
 };
 
 /* 1 when pixel (x, y) counts: inside the frame's region (compare.c; the frame itself
@@ -410,6 +413,60 @@ static enum ssg_err report(const struct ssg_node_ctx *ctx, const struct job *j, 
     return j->row_sum ? report_banding(ctx, j, bands) : SSG_OK;
 }
 
+/* The compared pixels as bytes for flip.c (counted() is this file's). */
+static void counted_rows(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    for (int y = y0; y < y1; y++)
+        for (int x = 0; x < j->w; x++)
+            j->on[(size_t)y * (size_t)j->w + (size_t)x] = (unsigned char)counted(j, x, y);
+}
+
+/* FLIP (flip.c, README.md) of a against the reference b; its mean over the counted pixels
+   is the metric `flip`, reported after every other one so that those keep their order.
+   The map goes to the `flip` output when something reads it (0 where not counted), else
+   to a buffer of its own. The sum runs over the pixels in row order in one thread: the
+   same bits whatever the thread count. */
+static enum ssg_err report_flip(const struct ssg_node_ctx *ctx, struct job *j,
+                                struct ssg_image *out)
+{
+    size_t n = (size_t)j->w * (size_t)j->h;
+    float *map = out ? ssg_image_plane(out, 0) : NULL;
+    if (j->c->flip == SSG_COMPARE_FLIP_OFF) {
+        if (map)
+            memset(map, 0, n * sizeof(float));
+        return SSG_OK;
+    }
+    j->on = malloc(n + 1);
+    float *own = out ? NULL : malloc((n + 1) * sizeof(float));
+    struct ssg_flip_input in = {.w = j->w, .h = j->h, .on = j->on, .ppd = j->c->ppd,
+                                .hdr = j->c->flip == SSG_COMPARE_FLIP_HDR};
+    for (int ch = 0; ch < 3; ch++) {
+        in.test[ch] = j->a[ch < j->channels ? ch : 0]; /* a grey image: its plane thrice */
+        in.ref[ch] = j->b[ch < j->channels ? ch : 0];
+    }
+    map = out ? map : own;
+    enum ssg_err e = SSG_E_NOMEM;
+    if (j->on && map) {
+        ssg_parallel_rows(j->h, ROWS_PER_BAND, counted_rows, j);
+        e = ssg_flip_map(&in, map, NULL) ? SSG_E_NOMEM : SSG_OK;
+    }
+    if (e) {
+        free(j->on), free(own);
+        return ssg_node_fail(ctx, e, "out of memory for FLIP's planes");
+    }
+    double sum = 0;
+    long long count = 0;
+    for (size_t i = 0; i < n; i++) {
+        sum += j->on[i] ? (double)map[i] : 0.0;
+        count += j->on[i];
+        map[i] = j->on[i] ? map[i] : 0.0f;
+    }
+    ssg_metric_report(ctx, "flip", count ? sum / (double)count : NAN);
+    free(j->on), free(own);
+    return SSG_OK;
+}
+
 /* Banding's line buffers (off: all NULL): the rows', shared (one band writes each row),
    and each band's own column sums, zeroed. 0 when out of memory. */
 static int banding_alloc(struct job *j, int bands, double **cols, long long **counts)
@@ -454,6 +511,8 @@ enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     if (banding_alloc(&j, bands, &cols, &counts)) {
         ssg_parallel_rows(a->height, ROWS_PER_BAND, band, &j);
         e = report(ctx, &j, bands);
+        if (e == SSG_OK)
+            e = report_flip(ctx, &j, io->out[SSG_COMPARE_OUT_FLIP]);
     } else {
         ssg_node_fail(ctx, e, "out of memory for the banding lines");
     }
