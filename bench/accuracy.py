@@ -23,7 +23,7 @@ def still_scenes():
     return sorted(f for f in os.listdir(folder) if f.endswith(".scene") and
                   not moving.search(open(os.path.join(folder, f)).read()))
 
-def accuracy_table(binary, size, threads, runs):
+def accuracy_table(binary, size, threads, runs, rays=4096):
     """Every AO method of graphs/ao_error.graph against reference_ao on every example scene:
     RMSE, FLIP (compare's LDR-FLIP of the grey AO, mean over the surface pixels), bias (mean
     of method - reference: > 0 = too bright, missed occlusion) and SSIM, and the frame time
@@ -31,8 +31,9 @@ def accuracy_table(binary, size, threads, runs):
     ao_error = os.path.join(ROOT, "graphs", "ao_error.graph")
     scenes = still_scenes()
     print(f"# AO accuracy of the shipped graphs, {size}\n")
-    print("Each AO method of `graphs/ao_error.graph` against `reference_ao` (1024 cosine-weighted "
-          "rays within the same 0.5 radius; its noise floor is about 0.01 RMSE) on every "
+    print("Each AO method of `graphs/ao_error.graph` against `reference_ao` "
+          f"({rays} cosine-weighted rays within the same 0.5 radius: converged, its own noise "
+          f"about {0.01 * (1024 / rays) ** 0.5:.4f} RMSE, from 0.01 at 1024) on every "
           "example scene, surface pixels only. flip: mean LDR-FLIP (Andersson et al. 2020, the "
           "AO value as grey, 67 pixels per degree; 0 = identical, 1 = green against blue; "
           "docs/nodes.md#compare). bias = mean(method - reference): positive = "
@@ -45,7 +46,8 @@ def accuracy_table(binary, size, threads, runs):
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
             path = os.path.join(ROOT, "examples", scene)
-            metrics = run_metrics(binary, ao_error, path, size, threads, os.path.join(tmp, scene))
+            metrics = run_metrics(binary, ao_error, path, size, threads, os.path.join(tmp, scene),
+                                  truth=("ref.rays", rays))
             print_rows(binary, scene, path, metrics, ACCURACY_METHODS, size, threads, runs, tmp)
 
 
@@ -73,7 +75,7 @@ def bounce_ratio(metrics, node):
     return m["mean"] / m["reference_mean"]
 
 
-def gi_accuracy_table(binary, size, threads, runs):
+def gi_accuracy_table(binary, size, threads, runs, paths=4096):
     """Every GI pipeline of graphs/gi_error.graph (and, where it runs, of
     graphs/hybrid_ssdo_error.graph) against reference_gi (direct light with true shadows
     plus one diffuse bounce) on every example scene under its own lights and each light of
@@ -88,7 +90,8 @@ def gi_accuracy_table(binary, size, threads, runs):
           "and environment its file names) and relit by each file of `examples/lights/` "
           "(`--lights`: a sun alone, a uniform white sky, the courtyard probe), each "
           "pipeline's final image against `reference_gi` (direct light with ray-traced "
-          "shadows plus exactly one diffuse bounce, 256 paths a pixel), surface pixels only, "
+          f"shadows plus exactly one diffuse bounce, {paths} paths a pixel: converged, its own "
+          "noise stated in docs/gallery.md), surface pixels only, "
           "linear radiance. flip: mean HDR-FLIP (Andersson et al. 2021: LDR-FLIP over the "
           "exposures the reference spans, the largest per pixel; 0 = identical). none: "
           "direct + environment light, no occlusion; ssao: direct + "
@@ -108,7 +111,8 @@ def gi_accuracy_table(binary, size, threads, runs):
             for scene in scenes:
                 path = os.path.join(ROOT, "examples", scene)
                 metrics = run_metrics(binary, os.path.join(ROOT, "graphs", graph), path, size,
-                                      threads, os.path.join(tmp, light + scene), lights)
+                                      threads, os.path.join(tmp, light + scene), lights,
+                                      truth=("ref.samples", paths))
                 for name, node, _, bounce_node in GI_METHODS:
                     if node not in metrics:
                         continue
@@ -154,10 +158,13 @@ def gi_accuracy_table(binary, size, threads, runs):
     print("\n".join(rows))
 
 
-def run_metrics(binary, graph, scene_path, size, threads, out, lights=None):
-    """Runs graph on the scene (relit by the lights file, if one is given); its compare
-    nodes' metrics."""
+def run_metrics(binary, graph, scene_path, size, threads, out, lights=None, truth=None):
+    """Runs graph on the scene (relit by the lights file, if one is given), its reference
+    at truth = (its parameter, the count: issue 34's converged truth); its compare nodes'
+    metrics."""
     cmd = [binary, "run", graph, "--scene", scene_path, "--size", size, "--out", out, "--quiet"]
+    if truth:
+        cmd += ["--set", "%s=%d" % truth]
     if lights:
         cmd += ["--lights", lights]
     if threads:

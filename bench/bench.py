@@ -426,9 +426,9 @@ def main():
                          "truth, error maps and crops: docs/gallery.md (bench/gallery.py; "
                          "default 320x180)")
     ap.add_argument("--paths", type=int, default=4096,
-                    help="with --gallery: reference_gi paths a pixel")
+                    help="with --gallery and --accuracy: reference_gi paths a pixel")
     ap.add_argument("--rays", type=int, default=4096,
-                    help="with --gallery: reference_ao rays a pixel")
+                    help="with --gallery and --accuracy: reference_ao rays a pixel")
     ap.add_argument("--scenes", help="with --gallery: comma-separated scene names "
                                      "(default: every still example scene)")
     ap.add_argument("--lights", default="own,sky,courtyard",
@@ -458,9 +458,9 @@ def main():
         from accuracy import accuracy_table, gi_accuracy_table  # the tables' own module
         size = (args.size or ["640x480"])[0]
         if args.part != "gi":
-            accuracy_table(binary, size, args.threads, args.runs)
+            accuracy_table(binary, size, args.threads, args.runs, args.rays)
         if args.part != "ao":
-            gi_accuracy_table(binary, size, args.threads, args.runs)
+            gi_accuracy_table(binary, size, args.threads, args.runs, args.paths)
         return
     if args.frame_budget:
         frame_budget_table(binary, args.threads, args.runs)

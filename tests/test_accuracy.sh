@@ -5,7 +5,7 @@
 # are test_accuracy_gi.sh (two cases, so each stays short on a busy machine).
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy"
-python3 bench/bench.py --accuracy --part ao --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" 2> "$TMP/err" ||
+python3 bench/bench.py --accuracy --part ao --bin "$BIN" --runs 1 --size 48x36 --rays 64 > "$TMP/acc.md" 2> "$TMP/err" ||
     fail "bench.py --accuracy failed: $(tail -3 "$TMP/err")"
 scenes=$(grep -L -E '^[[:space:]]*(camera_key|orbit)\(' examples/*.scene | wc -l) # still cameras
 rows=$(grep -cE '^\| [a-z_]+ \| (ssao|hbao|gtao)( \+ bilateral)? \| [0-9.]+ \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")

@@ -7,7 +7,7 @@
 # ssdo.graph, gi.graph and hybrid_ssdo.graph.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_accuracy_gi"
-python3 bench/bench.py --accuracy --part gi --bin "$BIN" --runs 1 --size 48x36 > "$TMP/acc.md" \
+python3 bench/bench.py --accuracy --part gi --bin "$BIN" --runs 1 --size 48x36 --paths 16 > "$TMP/acc.md" \
     2> "$TMP/err" || fail "bench.py --accuracy --part gi failed: $(tail -3 "$TMP/err")"
 scenes=$(grep -L -E '^[[:space:]]*(camera_key|orbit)\(' examples/*.scene | wc -l) # still cameras
 grep -q '^# AO accuracy' "$TMP/acc.md" && fail "--part gi printed the AO table"
