@@ -437,6 +437,8 @@ def main():
                     help="with --gallery: the Markdown file (its images go to "
                          "docs/images/gallery beside it unless --gallery-images)")
     ap.add_argument("--gallery-images", help="with --gallery: the folder of its pictures")
+    ap.add_argument("--pipelines", help="with --gallery: comma-separated pipeline names "
+                                        "(default: all)")
     ap.add_argument("--self-error", action="store_true",
                     help="with --gallery: a second reference per case with another seed, "
                          "to state the truth's own noise")
@@ -452,7 +454,8 @@ def main():
         images = args.gallery_images or os.path.join(
             os.path.dirname(os.path.abspath(args.gallery_out)), "images", "gallery")
         gallery(binary, (args.size or ["320x180"])[0], args.paths, args.rays, scenes,
-                args.lights.split(","), images, args.gallery_out, args.self_error)
+                args.lights.split(","), images, args.gallery_out, args.self_error,
+                args.pipelines.split(",") if args.pipelines else None)
         return
     if args.accuracy:
         from accuracy import accuracy_table, gi_accuracy_table  # the tables' own module

@@ -287,7 +287,11 @@ def case_picture(case, kind, ref_img, surface, rows, folder):
     return name, metric, crops
 
 
-def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_error):
+def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_error,
+            pipelines=None):
+    """pipelines: the names to show (default all; an AO section only with an AO name)."""
+    gi = [p for p in GI_PIPELINES if not pipelines or p[0] in pipelines]
+    ao = [p for p in AO_PIPELINES if not pipelines or p[0] in pipelines]
     os.makedirs(folder, exist_ok=True)
     summary, sections, noise = {}, [], []
     with tempfile.TemporaryDirectory() as tmp:
@@ -299,7 +303,7 @@ def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_er
                 if self_error:
                     noise.append((tag,) + own_noise(binary, scene, light, size, paths))
                 rows = []
-                for name, graph, extra in GI_PIPELINES:
+                for name, graph, extra in gi:
                     if name in NEEDS_ENVIRONMENT and not has_environment(scene, light):
                         continue
                     out = render(binary, graph, extra, scene, light, size,
@@ -311,9 +315,11 @@ def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_er
                 pic, metric, crops = case_picture(tag, "gi", read(ref), surface(ref), rows,
                                                   folder)
                 sections.append((scene_name, light, pic, metric, rows, crops))
+            if not ao:
+                continue
             ref = reference(binary, "ao", scene, "own", size, rays, 1)
             rows = []
-            for name, graph in AO_PIPELINES:
+            for name, graph in ao:
                 out = render(binary, graph, (), scene, "own", size,
                              os.path.join(tmp, scene_name, name + ".exr"))
                 metrics, emap = score(binary, out + ":ao", ref, tmp, scene_name + name)
