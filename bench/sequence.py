@@ -4,6 +4,8 @@
     bench/sequence.py graphs/gtao_temporal.graph graphs/gtao.graph \
         --scene examples/cornell_path.scene --size 160x120 --frames 30 \
         --plot out/sequence.png --markdown bench/results/sequence_gtao.md
+    bench/sequence.py --reference gi --paths 64 graphs/gi_temporal.graph graphs/gi.graph \
+        --scene examples/cornell_orbit.scene --size 640x480 --frames 120
 
 For each graph: `ssgraph run GRAPH --frames N --set out.sequence=true` writes one EXR a frame
 (and, when the graph has a temporal node, its `length` output as the layer `length`). The
@@ -11,7 +13,13 @@ same frames of a reference sequence (gbuffer + reference_ao + write sequence=tru
 score each frame. Per frame: the RMSE of the pipeline's AO layer against the reference over
 the pixels with a surface (reference depth > 0), the mean |p_f - p_{f-1}| of the pipeline
 and of the reference, and the fraction of pixels whose history length is 1 (new to the
-temporal node). Summary lines per graph:
+temporal node).
+
+--reference gi scores a GI pipeline (graphs/gi.graph, gi_temporal.graph) instead: the
+reference is gbuffer + reference_gi (samples=--paths, as graphs/gi_error.graph has it), the
+pipeline's layer its write's main image (`image`: R,G,B, the colour reference_gi matches),
+and the RMSE and changes are taken over the three channels of the surface pixels (as
+`compare` does: over pixels x channels). Summary lines per graph:
 
     mean_rmse   the mean of the per-frame RMSEs over the path
     flicker     mean over frames f >= 1 of mean|p_f - p_{f-1}|, pipeline minus reference
@@ -22,13 +30,15 @@ temporal node). Summary lines per graph:
                 disocclusion's first 8), and the frames until the RMSE is back within 10 %
                 of steady state. Skipped for a graph without a temporal node.
 
-EXRs are read through oiiotool (--dumpdata of the wanted channels). The reference sequence is
-cached like bench --reference's images: $SSGRAPH_CACHE/sequences, else
+EXRs are read through Debian's python3-openimageio when it is importable (--reader auto; a
+640x480 gi.graph frame in 0.4 s), else through oiiotool (--dumpdata of the wanted channels,
+printed to 9 decimals: the same values within 5e-10, 13 times slower). The reference
+sequence is cached like bench --reference's images: $SSGRAPH_CACHE/sequences, else
 $XDG_CACHE_HOME/ssgraph/sequences, else ~/.cache/ssgraph/sequences; <hash>.npz holds the
-frames and <hash>.key the key text (ssgraph's version, the scene file's bytes' sha256, size,
-frames, seed and the reference graph's text, then a sha256 of the frames). The key is
-written last and compared in full, the frames' hash checked, so a stale, partial or corrupt
-file is rendered again.
+frames and <hash>.key the key text (in GI mode a line with the mode and the paths, then
+ssgraph's version, the scene file's bytes' sha256, size, frames, seed and the reference
+graph's text, then a sha256 of the frames). The key is written last and compared in full,
+the frames' hash checked, so a stale, partial or corrupt file is rendered again.
 """
 import argparse
 import hashlib
@@ -39,6 +49,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 import zipfile
 
 import numpy as np
@@ -50,13 +61,18 @@ OPTIONS = [  # name, default, help
     ("scene", "examples/cornell_path.scene", "a scene with a camera path"),
     ("size", "160x120", "WxH"),
     ("frames", 30, "frames 0 .. N-1 of the path"),
-    ("layer", "ao", "the pipeline's EXR layer to score (ao_raw: before the filter)"),
+    ("reference", "ao", "ao: reference_ao, the graph's AO layer; gi: reference_gi, its RGB image"),
+    ("layer", None, "the pipeline's EXR layer to score (ao: ao, ao_raw before the filter; "
+     "gi: image, the write's main R,G,B, or a colour layer such as near_bounce)"),
     ("rays", 256, "reference_ao rays"),
+    ("paths", 64, "reference_gi samples (paths a pixel)"),
     ("max-distance", "0.5", "reference_ao max_distance"),
     ("seed", 1, "the seed of both runs"),
     ("threads", 2, "ssgraph --threads"),
     ("backend", "cpu", "ssgraph --backend"),
     ("ssgraph", "build/ssgraph", "the ssgraph executable"),
+    ("reader", "auto", "how EXRs are read: oiio (python3-openimageio), oiiotool, auto (oiio "
+     "when importable)"),
     ("plot", None, "write a PNG of RMSE over frames here"),
     ("markdown", None, "write the tables here too"),
 ]
@@ -68,6 +84,15 @@ def run(cmd, **kw):
         sys.exit("sequence.py: %s failed (%d):\n%s%s" % (" ".join(cmd), p.returncode,
                                                           p.stdout, p.stderr))
     return p.stdout
+
+
+def timed(a, what, cmd):
+    """run(cmd), printing its wall time (the whole sequence, all frames) and per frame."""
+    start = time.monotonic()
+    run(cmd)
+    wall = time.monotonic() - start
+    print("wall: %s %.1f s (%.2f s a frame, %d threads)" % (what, wall, wall / a.frames,
+                                                             a.threads), flush=True)
 
 
 def parse_dump(text, exr, channels):
@@ -88,7 +113,7 @@ def parse_dump(text, exr, channels):
     return [img[:, :, names.index(c)] for c in channels]  # EXR sorts its channels
 
 
-def read_sequence(files, channels, tmp):
+def read_sequence_oiiotool(files, channels, tmp):
     """The named channels of every EXR, [file][channel] 2-D float arrays. Two oiiotool runs
     for the lot (each start costs about 0.3 s): one copies the channels of every file into a
     small EXR, one prints those files' pixels ("Pixel (x, y): v v ..." lines, 9 decimals)."""
@@ -103,6 +128,42 @@ def read_sequence(files, channels, tmp):
         sys.exit("sequence.py: oiiotool did not describe every file")
     return [parse_dump(text[starts[i]:starts[i + 1]], files[i], channels)
             for i in range(len(files))]
+
+
+def read_sequence_oiio(files, channels):
+    """The same arrays through Debian's python3-openimageio: each file read whole as 32-bit
+    floats (what write stores), the channels picked by name, widened to float64 as the
+    oiiotool path's parse is. About 13 times faster than parsing --dumpdata's text at
+    640x480."""
+    import OpenImageIO as oiio
+    out = []
+    for exr in files:
+        inp = oiio.ImageInput.open(exr)
+        if inp is None:
+            sys.exit("sequence.py: cannot read %s: %s" % (exr, oiio.geterror()))
+        names = list(inp.spec().channelnames)
+        pixels = inp.read_image(0, 0, 0, len(names), "float")
+        inp.close()
+        if pixels is None or any(c not in names for c in channels):
+            sys.exit("sequence.py: %s: channels %s, wanted %s" % (exr, names, channels))
+        out.append([np.asarray(pixels[:, :, names.index(c)], dtype=np.float64)
+                    for c in channels])
+    return out
+
+
+def oiio_importable():
+    try:
+        import OpenImageIO  # noqa: F401 (only whether it is there)
+        return True
+    except ImportError:
+        return False
+
+
+def read_sequence(a, files, channels, tmp):
+    """[file][channel] 2-D float64 arrays, through the reader --reader chose."""
+    if a.reader == "oiio":
+        return read_sequence_oiio(files, channels)
+    return read_sequence_oiiotool(files, channels, tmp)
 
 
 def sequence_files(folder, frames):
@@ -146,6 +207,12 @@ def cache_dir():
 
 
 def reference_graph(a):
+    if a.reference == "gi":  # graphs/gi_error.graph's reference: one bounce, P paths a pixel
+        return ('scene "%s"\nsize %d %d\nseed %d\n'
+                "g   = gbuffer()\n"
+                "ref = reference_gi(g.position, g.normal, g.albedo, samples=%d)\n"
+                'out = write(ref.out, "reference", sequence=true, depth=g.depth)\n'
+                % (os.path.realpath(a.scene), a.width, a.height, a.seed, a.paths))
     return ('scene "%s"\nsize %d %d\nseed %d\n'
             "g   = gbuffer()\n"
             "ref = reference_ao(g.position, g.normal, rays=%d, max_distance=%s)\n"
@@ -157,22 +224,34 @@ def pixels_hash(ao, depth):
     return hashlib.sha256(ao.astype("<f8").tobytes() + depth.astype("<f8").tobytes()).hexdigest()
 
 
+def stack(frames, n):
+    """(image, rest): the first n channels of every frame as one array, (frames, h, w) for
+    one channel, (frames, h, w, n) for more; the channels after them one array each."""
+    image = (np.array([f[0] for f in frames]) if n == 1 else
+             np.array([np.stack(f[:n], axis=-1) for f in frames]))
+    return image, [np.array([f[c] for f in frames]) for c in range(n, len(frames[0]))]
+
+
 def reference_frames(a, tmp):
-    """The reference's AO and depth of every frame, (frames, h, w) each; cached."""
+    """The reference's image (AO, or GI's RGB) and depth of every frame; cached."""
     text = reference_graph(a)
     version = " ".join(l for l in run([a.ssgraph, "--version"]).splitlines()
                        if l.startswith(("ssgraph", "embree")))
     scene_hash = hashlib.sha256(open(a.scene, "rb").read()).hexdigest()
     key = "ssgraph sequence reference\nversion %s\nscene %s\nframes %d backend %s\n%s" % (
         version, scene_hash, a.frames, a.backend, text)
+    if a.reference == "gi":  # the mode and the paths are in the graph's text too
+        key = "mode gi paths %d\n%s" % (a.paths, key)
+    name, shape = a.reference, (a.frames, a.height, a.width) + ((3,) if a.reference == "gi"
+                                                                 else ())
     base = os.path.join(cache_dir(), hashlib.sha256(key.encode()).hexdigest()[:32])
     folder = cache_dir()
     try:
         stored = open(base + ".key").read()
         if stored.startswith(key):
             with np.load(base + ".npz") as z:
-                ao, depth = z["ao"], z["depth"]
-            if (ao.shape == (a.frames, a.height, a.width) == depth.shape and
+                ao, depth = z[name], z["depth"]
+            if (ao.shape == shape and depth.shape == shape[:3] and
                     stored[len(key):] == "pixels %s\n" % pixels_hash(ao, depth)):
                 print("reference: cached %s.npz" % base)
                 return ao, depth
@@ -181,16 +260,19 @@ def reference_frames(a, tmp):
     gpath, out = os.path.join(tmp, "reference.graph"), os.path.join(tmp, "reference")
     with open(gpath, "w") as f:
         f.write(text)
-    print("reference: rendering %d frames (%d rays)" % (a.frames, a.rays), flush=True)
-    run([a.ssgraph, "run", gpath, "--frames", str(a.frames), "--threads", str(a.threads),
-         "--backend", a.backend, "--quiet", "--out", out])
-    frames = read_sequence(sequence_files(out, a.frames), ["Y", "Z"], tmp)
-    ao, depth = np.array([f[0] for f in frames]), np.array([f[1] for f in frames])
+    print("reference: rendering %d frames (%s)" % (
+        a.frames, "%d paths" % a.paths if a.reference == "gi" else "%d rays" % a.rays),
+        flush=True)
+    timed(a, "reference", [a.ssgraph, "run", gpath, "--frames", str(a.frames), "--threads",
+                           str(a.threads), "--backend", a.backend, "--quiet", "--out", out])
+    image = ["R", "G", "B"] if a.reference == "gi" else ["Y"]
+    frames = read_sequence(a, sequence_files(out, a.frames), image + ["Z"], tmp)
+    ao, (depth,) = stack(frames, len(image))
     if folder:  # image first, key last: a key names only a complete file
         try:
             os.makedirs(folder, exist_ok=True)
             with open(base + ".tmp.npz", "wb") as f:
-                np.savez(f, ao=ao, depth=depth)
+                np.savez(f, **{name: ao, "depth": depth})
             os.replace(base + ".tmp.npz", base + ".npz")
             with open(base + ".key.tmp", "w") as f:
                 f.write(key + "pixels %s\n" % pixels_hash(ao, depth))
@@ -201,9 +283,10 @@ def reference_frames(a, tmp):
 
 
 def pipeline_frames(a, graph, tnode, tmp):
-    """The pipeline's AO layer (and its temporal length) of every frame."""
+    """The pipeline's scored layer (AO, or an RGB image) and its temporal length, every frame."""
     out = os.path.join(tmp, "run_" + os.path.basename(graph))
-    channels = [a.layer + ".Y"]
+    channels = layer_channels(a)
+    n = len(channels)
     if tnode:  # the history length as one more layer of the graph's write
         wrapper = os.path.join(tmp, "length_" + os.path.basename(graph))
         with open(wrapper, "w") as f:
@@ -214,10 +297,18 @@ def pipeline_frames(a, graph, tnode, tmp):
     cmd = [a.ssgraph, "run", graph, "--scene", a.scene, "--size", "%dx%d" % (a.width, a.height),
            "--frames", str(a.frames), "--threads", str(a.threads), "--backend", a.backend,
            "--quiet", "--out", out, "--set", "out.sequence=true"]
-    run(cmd)
-    frames = read_sequence(sequence_files(out, a.frames), channels, tmp)
-    ao = np.array([f[0] for f in frames])
-    return ao, (np.array([f[1] for f in frames]) if tnode else None)
+    timed(a, os.path.basename(graph), cmd)
+    frames = read_sequence(a, sequence_files(out, a.frames), channels, tmp)
+    ao, rest = stack(frames, n)
+    return ao, (rest[0] if tnode else None)
+
+
+def layer_channels(a):
+    """The EXR channels of --layer: AO's scalar NAME.Y; GI's main R,G,B (`image`) or the
+    colour layer NAME.R/G/B."""
+    if a.reference == "ao":
+        return [a.layer + ".Y"]
+    return [c if a.layer == "image" else a.layer + "." + c for c in ("R", "G", "B")]
 
 
 def mean_change(images, masks):
@@ -295,11 +386,12 @@ def plot(a, results, tmp):
              % (ghost, ghost, ghost)) if ghost is not None else ""
     with open(gp, "w") as f:
         f.write("set terminal pngcairo size 900,500 noenhanced font 'sans,11'\n"
-                "set output '%s'\nset title 'AO error over the path: %s, %dx%d'\n"
-                "set xlabel 'frame'\nset ylabel 'RMSE against reference_ao'\n"
+                "set output '%s'\nset title '%s error over the path: %s, %dx%d'\n"
+                "set xlabel 'frame'\nset ylabel 'RMSE against reference_%s'\n"
                 "set key bottom right\nset grid\nset yrange [0:*]\nset xtics %d\n%s"
                 "plot for [i=0:%d] '%s' index i using 1:2 with linespoints title columnheader(1)\n"
-                % (os.path.abspath(a.plot), os.path.basename(a.scene), a.width, a.height,
+                % (os.path.abspath(a.plot), a.reference.upper(), os.path.basename(a.scene),
+                   a.width, a.height, a.reference,
                    max(1, a.frames // 15), marks, len(results) - 1, dat))
     run(["gnuplot", gp])
 
@@ -314,12 +406,21 @@ def main():
     a.width, a.height = (int(v) for v in a.size.lower().split("x"))
     if a.frames < 1:
         sys.exit("sequence.py: --frames must be >= 1")
+    if a.reference not in ("ao", "gi") or a.reader not in ("auto", "oiio", "oiiotool"):
+        sys.exit("sequence.py: --reference is ao or gi, --reader auto, oiio or oiiotool")
+    if a.layer is None:
+        a.layer = "ao" if a.reference == "ao" else "image"
+    if a.reader == "auto":
+        a.reader = "oiio" if oiio_importable() else "oiiotool"
+    print("reader: %s" % ("python3-openimageio" if a.reader == "oiio" else "oiiotool --dumpdata"))
     tmp = tempfile.mkdtemp(prefix="ssg_sequence_")
     try:
         ref_ao, ref_depth = reference_frames(a, tmp)
         results = [measure(a, g, ref_ao, ref_depth, tmp) for g in a.graphs]
-        lines = ["# Sequence: %s, %dx%d, %d frames, layer %s, reference_ao %d rays" % (
-            a.scene, a.width, a.height, a.frames, a.layer, a.rays), ""]
+        lines = ["# Sequence: %s, %dx%d, %d frames, layer %s, %s" % (
+            a.scene, a.width, a.height, a.frames, a.layer,
+            "reference_gi %d paths" % a.paths if a.reference == "gi" else
+            "reference_ao %d rays" % a.rays), ""]
         for r in results:
             lines += report_lines(r)
         text = "\n".join(lines)
