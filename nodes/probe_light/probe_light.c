@@ -55,6 +55,27 @@ static void make_noise(int tile, uint64_t seed, float *noise)
     }
 }
 
+/* The soft lookups' taps: n offsets spread evenly over the unit disc (Vogel's spiral, as
+   the jitter's but fixed: every pixel reads the same pattern, turned per light, so no
+   pixel differs from its neighbour by chance). */
+static void make_taps(int n, float *tap)
+{
+    for (int k = 0; k < n; k++) {
+        double r = sqrt((k + 0.5) / n), a = GOLDEN_ANGLE * k;
+        tap[k] = (float)(r * cos(a));
+        tap[n + k] = (float)(r * sin(a));
+    }
+}
+
+/* tan of the cone a light of N stands for: N uniform lights (lightprobe's default) each
+   gather the solid angle 4 pi / N, a cap of half-angle acos(1 - 2 / N); times softness,
+   at most 45 degrees (a list of very few lights would otherwise make hemispheres). */
+static double cone_tan_of(int count, double softness)
+{
+    double half = softness * acos(1.0 - 2.0 / (count > 1 ? count : 1));
+    return tan(half < M_PI / 4 ? half : M_PI / 4);
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_probe_light_params *p = params;
@@ -70,6 +91,10 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->res = maps->channels ? maps->width : 0;
     c->frame_res = c->res ? c->res : 1;
     float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
+    c->texel = texel;
+    c->cone_tan = p->softness > 0 && c->res ? (float)(cone_tan_of(c->count, p->softness) /
+                                                      texel) : 0.0f;
+    make_taps(p->taps, c->tap);
     c->offset_world = c->p.offset * texel;
     c->slope_world = c->p.slope_offset * texel;
     c->normal_world = c->p.normal_offset * texel;

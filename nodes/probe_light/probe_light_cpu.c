@@ -23,6 +23,8 @@ struct job {
     float normal_world;    /* normal_offset texels in scene units */
     float noise_radius;    /* from ctx->params, not the consts: a change of it alone
                               reruns without prepare() (check_params, probe_light.c) */
+    int taps;              /* soft lookups (cone_tan > 0): taps per search and filter */
+    float search;          /* the blocker search's radius, texels */
 };
 
 struct chunk {
@@ -33,6 +35,11 @@ struct chunk {
     float d[CHUNK];                                /* the pixel's depth, -inf: lit */
     float add[CHUNK];                              /* the depth offset there */
     float v[CHUNK];                                /* its visibility, 1 or 0 */
+    /* soft lookups, one light: the lifted point's texel and depth, the receiver plane's
+       depth per texel along x and y, the blockers' summed height and count, then the
+       penumbra's radius (texels) and the filter's lit taps */
+    float x[CHUNK], y[CHUNK], gx[CHUNK], gy[CHUNK], hsum[CHUNK], hcnt[CHUNK], rp[CHUNK];
+    float ref[CHUNK];                              /* one tap: its receiver depth */
 };
 
 static float luminance(float r, float g, float b)
@@ -96,6 +103,96 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
         k->v[i] = k->d[i] <= map[k->at[i]] + k->add[i] ? 1.0f : 0.0f;
 }
 
+/* Soft lookups, one light (README.md): each pixel's lifted point on the map (the normal
+   offset as light_visibility's, no jitter), its depth, the depth offset, and the slope of
+   its receiver plane in depth per texel, (N.u, N.v) / (s^2 N.l) (the map's scale s =
+   1 / texel), clamped to tan 10 as the slope offset is: a tap beside the pixel is
+   compared with its own surface there, not with the pixel's depth. */
+static inline __attribute__((always_inline)) void
+soft_setup(const struct job *j, const float *restrict f, int len, struct chunk *restrict k)
+{
+    const float normal_world = j->normal_world, offset = j->offset_world;
+    const float slope = j->slope_world, texel = j->c->texel;
+    const float tt = texel * texel, gmax = SSG_PROBE_LIGHT_MAX_SLOPE * texel;
+    for (int i = 0; i < len; i++) {
+        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+        float w = cosine > 0.0f ? cosine : 0.0f;
+        float c2 = 1.0f - w * w;
+        float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
+        float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
+        float qz = k->pz[i] + lift * k->nz[i];
+        k->x[i] = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
+        k->y[i] = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
+        k->d[i] = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+        float q = sine / cosine, nu = k->nx[i] * f[0] + k->ny[i] * f[1] + k->nz[i] * f[2];
+        float nv = k->nx[i] * f[4] + k->ny[i] * f[5] + k->nz[i] * f[6];
+        float gx = nu * tt / cosine, gy = nv * tt / cosine;
+        float tangent = cosine > 0.0f ? q : 0.0f;
+        tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
+        gx = cosine > 0.0f ? gx : 0.0f, gy = cosine > 0.0f ? gy : 0.0f;
+        k->gx[i] = gx > gmax ? gmax : (gx < -gmax ? -gmax : gx);
+        k->gy[i] = gy > gmax ? gmax : (gy < -gmax ? -gmax : gy);
+        k->add[i] = offset + slope * tangent;
+        k->hsum[i] = k->hcnt[i] = 0.0f, k->v[i] = 0.0f;
+    }
+}
+
+/* One tap of every pixel at (ox, oy) texels from its point times scale[i] (NULL: 1): the
+   texel it reads and the depth its receiver plane has there (-inf outside the map: lit). */
+static inline __attribute__((always_inline)) void
+soft_tap(const struct job *j, float ox, float oy, const float *restrict scale, int len,
+         struct chunk *restrict k)
+{
+    const int res = j->res;
+    const float fres = (float)res;
+    for (int i = 0; i < len; i++) {
+        float r = scale ? scale[i] : 1.0f, sx = r * ox, sy = r * oy;
+        float x = k->x[i] + sx, y = k->y[i] + sy;
+        int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
+        k->at[i] = inside ? (int32_t)y * res + (int32_t)x : 0;
+        k->ref[i] = inside ? k->d[i] + (k->gx[i] * sx + k->gy[i] * sy) : -INFINITY;
+    }
+}
+
+/* Light li's visibility of every pixel of the chunk, between 0 and 1, into k->v: the
+   blockers in the search disc (taps deeper than the map plus the offset), their mean
+   height over the receiver H; a penumbra of H x cone_tan texels (at least 1, at most the
+   search radius) filtered by as many taps (PCSS, Fernando 2005). No blocker: lit. */
+static inline __attribute__((always_inline)) void
+soft_visibility(const struct job *j, const float *restrict f, const float *restrict map,
+                float cr, float sr, int len, struct chunk *restrict k)
+{
+    const int n = j->taps;
+    const float *tap = j->c->tap, search = j->search, cone = j->c->cone_tan;
+    soft_setup(j, f, len, k);
+    for (int t = 0; t < n; t++) {
+        float ox = cr * tap[t] - sr * tap[n + t], oy = sr * tap[t] + cr * tap[n + t];
+        soft_tap(j, search * ox, search * oy, NULL, len, k);
+        for (int i = 0; i < len; i++) {
+            float h = k->ref[i] - map[k->at[i]];
+            int blocked = h > k->add[i];
+            k->hsum[i] += blocked ? h : 0.0f;
+            k->hcnt[i] += blocked ? 1.0f : 0.0f;
+        }
+    }
+    int32_t any = 0;
+    for (int i = 0; i < len; i++) {
+        float r = k->hsum[i] / (k->hcnt[i] > 0.0f ? k->hcnt[i] : 1.0f) * cone;
+        k->rp[i] = r > 1.0f ? (r < search ? r : search) : 1.0f;
+        any |= k->hcnt[i] > 0.0f;
+    }
+    if (any)
+        for (int t = 0; t < n; t++) {
+            float ox = cr * tap[t] - sr * tap[n + t], oy = sr * tap[t] + cr * tap[n + t];
+            soft_tap(j, ox, oy, k->rp, len, k);
+            for (int i = 0; i < len; i++)
+                k->v[i] += k->ref[i] - map[k->at[i]] > k->add[i] ? 0.0f : 1.0f;
+        }
+    const float share = 1.0f / (float)n;
+    for (int i = 0; i < len; i++)
+        k->v[i] = k->hcnt[i] > 0.0f ? k->v[i] * share : 1.0f;
+}
+
 /* Light li's share of every pixel of the chunk. */
 static inline __attribute__((always_inline)) void add_light(const struct job *j, int li,
                                                             int len, struct chunk *restrict k)
@@ -118,7 +215,9 @@ static inline __attribute__((always_inline)) void add_light(const struct job *j,
     }
     if (!facing)
         return;
-    if (maps)
+    if (maps && j->c->cone_tan > 0.0f)
+        soft_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
+    else if (maps)
         light_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
@@ -180,7 +279,8 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
-                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius};
+                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius,
+                    c->p.taps, c->p.search_radius};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
     return SSG_OK;
