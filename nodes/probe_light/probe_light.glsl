@@ -1,7 +1,8 @@
 // probe_light.glsl - `probe_light` on GL, second pass (probe_light_gl.c): per pixel, the
-// lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, the
-// jittered texel and depth, one comparison against the light's map layer, sums in the same
-// order (`precise` keeps the CPU's roundings).
+// lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, then
+// the soft lookup (soft_visible) or the jittered texel and depth and one comparison
+// against the light's map layer (visible), sums in the same order (`precise` keeps the
+// CPU's roundings).
 uniform sampler2DArray position, normal, albedo, lights, shadowmaps, frames;
 uniform bool shadowmaps_bound;
 layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
@@ -12,7 +13,7 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 uniform int count, res;
 uniform float offset_world, slope_world, normal_world;
 uniform float texel, cone_tan, search; // soft lookups: cone_tan 0 = hard
-uniform int taps;
+uniform int taps, search_taps;
 const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
 
 float frame(int light, int k)
@@ -81,23 +82,27 @@ float soft_visible(int i, vec3 P0, vec3 N, float cosine)
     precise float tangent = min(sine / cosine, MAX_SLOPE);
     precise float add = offset_world + slope_world * tangent;
     float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
-    precise float hsum = 0.0, hcnt = 0.0;
-    for (int t = 0; t < taps; t++) {
-        precise float ox = cr * tap[t] - sr * tap[taps + t];
-        precise float oy = sr * tap[t] + cr * tap[taps + t];
+    precise float hsum = 0.0, hcnt = 0.0, lit = 0.0;
+    int s0 = 2 * taps; // the search's pattern follows the filter's
+    for (int t = 0; t < search_taps; t++) {
+        precise float ox = cr * tap[s0 + t] - sr * tap[s0 + search_taps + t];
+        precise float oy = sr * tap[s0 + t] + cr * tap[s0 + search_taps + t];
         precise float sx = search * ox, sy = search * oy;
         float h = tap_height(i, x, y, d, g, sx, sy);
         if (h > add) {
             hsum += h;
             hcnt += 1.0;
+        } else if (t == 0) {
+            lit = 1.0; // the centre: the filter's first tap too
         }
     }
     if (!(hcnt > 0.0))
         return 1.0;
+    if (!(hcnt < float(search_taps)))
+        return 0.0; // the umbra, as the CPU's
     precise float r = hsum / hcnt * cone_tan;
     r = r > 1.0 ? (r < search ? r : search) : 1.0;
-    precise float lit = 0.0;
-    for (int t = 0; t < taps; t++) {
+    for (int t = 1; t < taps; t++) {
         precise float ox = cr * tap[t] - sr * tap[taps + t];
         precise float oy = sr * tap[t] + cr * tap[taps + t];
         precise float sx = r * ox, sy = r * oy;
