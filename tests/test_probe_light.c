@@ -393,9 +393,10 @@ static double penumbra_width(const struct one_light *o, double softness, double 
 {
     char set[40];
     snprintf(set, sizeof set, "softness=%g", softness);
-    const char *sets[] = {set, "taps=16", "search_taps=16"}; /* one light: a dense search */
+    /* one light: a dense search, wide enough for the 10 texels of the wider penumbra */
+    const char *sets[] = {set, "taps=16", "search_taps=16", "search_radius=16"};
     struct ssg_image *r[2];
-    light(o->s, &o->g, o->lights, o->maps, sets, 3, SSG_BACKEND_CPU, r);
+    light(o->s, &o->g, o->lights, o->maps, sets, 4, SSG_BACKEND_CPU, r);
     double lo = 1e9, hi = -1e9;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {

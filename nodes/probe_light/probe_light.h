@@ -69,7 +69,7 @@ SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPU
       "first at the pixel)", .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS,          \
       .unit = "taps", .host_only = 1)                                                      \
     P(FLOAT, search_radius, "soft lookups: the blocker search's radius, the widest "       \
-      "penumbra", .def = 16, .min = 1, .max = 256, .unit = "texels", .host_only = 1)
+      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels", .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
 
 struct ssg_probe_light_consts {
