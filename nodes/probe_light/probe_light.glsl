@@ -27,16 +27,26 @@ float luminance(vec3 e)
     return l;
 }
 
+// Point P0 (view space, normal N, sin(N, l_i) = sine) moved along the normal by
+// normal_world x sine (the normal offset, README.md), on light i's map: texel x, y, depth
+// (probe_light_cpu.c's lift).
+vec3 lifted(int i, vec3 P0, vec3 N, float sine)
+{
+    precise float up = normal_world * sine;
+    precise vec3 P = vec3(P0.x + up * N.x, P0.y + up * N.y, P0.z + up * N.z);
+    precise vec3 m;
+    m.x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
+    m.y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
+    m.z = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    return m;
+}
+
 // V_i of point P (view space, normal N) with jitter j (texels) for light i, N.l_i = cosine.
 float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
 {
-    // the normal offset: P + N normal_world sin(N, l) (README.md)
     precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
-    precise float lift = normal_world * sine;
-    precise vec3 P = vec3(P0.x + lift * N.x, P0.y + lift * N.y, P0.z + lift * N.z);
-    precise float x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
-    precise float y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
-    precise float d = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    vec3 m = lifted(i, P0, N, sine);
+    precise float x = m.x, y = m.y, d = m.z;
     float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
     precise float jx = cr * j.x - sr * j.y, jy = sr * j.x + cr * j.y;
     x += jx;
@@ -69,11 +79,8 @@ float tap_height(int i, float x, float y, float d, vec2 g, float ox, float oy)
 float soft_visible(int i, vec3 P0, vec3 N, float cosine)
 {
     precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
-    precise float lift = normal_world * sine;
-    precise vec3 P = vec3(P0.x + lift * N.x, P0.y + lift * N.y, P0.z + lift * N.z);
-    precise float x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
-    precise float y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
-    precise float d = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    vec3 m = lifted(i, P0, N, sine);
+    precise float x = m.x, y = m.y, d = m.z;
     precise float nu = N.x * frame(i, 0) + N.y * frame(i, 1) + N.z * frame(i, 2);
     precise float nv = N.x * frame(i, 4) + N.y * frame(i, 5) + N.z * frame(i, 6);
     precise float tt = texel * texel, gmax = MAX_SLOPE * texel;

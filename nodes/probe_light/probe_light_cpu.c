@@ -68,6 +68,29 @@ load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k
     }
 }
 
+/* Pixel i of the chunk on light f's map: its N.l (cosine), sin(N, l), and its point moved
+   along the normal by normal_world sin(N, l) (the normal offset, README.md) as texel x, y
+   and depth d. Both lookups start here. */
+struct lifted {
+    float cosine, sine, x, y, d;
+};
+
+static inline __attribute__((always_inline)) struct lifted
+lift(const float *restrict f, float normal_world, const struct chunk *restrict k, int i)
+{
+    struct lifted o;
+    o.cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+    float w = o.cosine > 0.0f ? o.cosine : 0.0f, c2 = 1.0f - w * w;
+    o.sine = sqrtf(c2 > 0.0f ? c2 : 0.0f);
+    float up = normal_world * o.sine;
+    float qx = k->px[i] + up * k->nx[i], qy = k->py[i] + up * k->ny[i];
+    float qz = k->pz[i] + up * k->nz[i];
+    o.x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
+    o.y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
+    o.d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+    return o;
+}
+
 /* Light li's visibility of every pixel of the chunk, 1 or 0, into k->v: one loop finds
    each pixel's texel and the depth it must not exceed, a second reads the map there (a
    gather, which GCC vectorises only in a loop of its own) and compares. */
@@ -79,16 +102,8 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
     const float fres = (float)res, normal_world = j->normal_world;
     const float offset = j->offset_world, slope = j->slope_world;
     for (int i = 0; i < len; i++) {
-        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
-        float w = cosine > 0.0f ? cosine : 0.0f;
-        /* the normal offset: P + N normal_world sin(N, l) (README.md) */
-        float c2 = 1.0f - w * w;
-        float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
-        float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
-        float qz = k->pz[i] + lift * k->nz[i];
-        float x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
-        float y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
-        float d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+        struct lifted o = lift(f, normal_world, k, i);
+        float cosine = o.cosine, sine = o.sine, x = o.x, y = o.y, d = o.d;
         x += cr * k->jx[i] - sr * k->jy[i];
         y += sr * k->jx[i] + cr * k->jy[i];
         int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
@@ -116,15 +131,9 @@ soft_setup(const struct job *j, const float *restrict f, int len, struct chunk *
     const float slope = j->slope_world, texel = j->c->texel;
     const float tt = texel * texel, gmax = SSG_PROBE_LIGHT_MAX_SLOPE * texel;
     for (int i = 0; i < len; i++) {
-        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
-        float w = cosine > 0.0f ? cosine : 0.0f;
-        float c2 = 1.0f - w * w;
-        float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
-        float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
-        float qz = k->pz[i] + lift * k->nz[i];
-        k->x[i] = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
-        k->y[i] = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
-        k->d[i] = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+        struct lifted o = lift(f, normal_world, k, i);
+        float cosine = o.cosine, sine = o.sine;
+        k->x[i] = o.x, k->y[i] = o.y, k->d[i] = o.d;
         float q = sine / cosine, nu = k->nx[i] * f[0] + k->ny[i] * f[1] + k->nz[i] * f[2];
         float nv = k->nx[i] * f[4] + k->ny[i] * f[5] + k->nz[i] * f[6];
         float gx = nu * tt / cosine, gy = nv * tt / cosine;
