@@ -178,14 +178,17 @@ static void test_open_floor(void)
     }
     struct ssg_image *l = light_list(dirs, 12), *m = maps_of(s, l, 256), *r[2], *z[2];
     light(s, &g, l, m, NULL, 0, SSG_BACKEND_CPU, r);
-    const char *none[] = {"offset=0", "slope_offset=0", "normal_offset=0", "noise_radius=0"};
-    light(s, &g, l, m, none, 4, SSG_BACKEND_CPU, z);
+    const char *none[] = {"offset=0", "slope_offset=0", "normal_offset=0", "noise_radius=0",
+                          "softness=0"};
+    light(s, &g, l, m, none, 5, SSG_BACKEND_CPU, z);
     int lit, dark, zlit, zdark;
     count_floor(r[1], &lit, &dark);
     count_floor(z[1], &zlit, &zdark);
     fprintf(stderr, "open floor: defaults %d lit / %d not; no offset %d lit / %d not\n", lit,
             dark, zlit, zdark);
     CHECK_EQ(dark, 0);
+    for (int i = 0; i < W * H; i++) /* soft lookups (the default): exactly unshadowed */
+        CHECK(r[1]->data[i] == 1.0f);
     CHECK(zdark > W * H / 20); /* self-shadowing without the shift */
     for (int i = 0; i < 2; i++) {
         ssg_image_destroy(&r[i]);
@@ -210,9 +213,10 @@ static void test_box_shadow(void)
     struct gbuf g = gbuffer(s);
     const float dirs[1][3] = {{1, 2, 0}};
     struct ssg_image *l = light_list(dirs, 1), *m = maps_of(s, l, 512), *r[2], *j[2];
-    const char *sharp[] = {"noise_radius=0"}, *noisy[] = {"noise_radius=4"};
-    light(s, &g, l, m, sharp, 1, SSG_BACKEND_CPU, r);
-    light(s, &g, l, m, noisy, 1, SSG_BACKEND_CPU, j);
+    const char *sharp[] = {"noise_radius=0", "softness=0"};
+    const char *noisy[] = {"noise_radius=4", "softness=0"};
+    light(s, &g, l, m, sharp, 2, SSG_BACKEND_CPU, r);
+    light(s, &g, l, m, noisy, 2, SSG_BACKEND_CPU, j);
     const float margin = 0.04f; /* ~2 texels of the 512 map over the floor's sphere */
     int in = 0, out = 0, wrong = 0, edge = 0, edge_lit = 0;
     for (int y = 0; y < H; y++)
@@ -298,9 +302,9 @@ static void test_bleeding(void)
     for (int k = 0; k < 2; k++) {
         char off[48];
         snprintf(off, sizeof off, "offset=%g", k ? 0.2 / texel : 1.5);
-        const char *sets[] = {off, "noise_radius=0"};
+        const char *sets[] = {off, "noise_radius=0", "softness=0"};
         struct ssg_image *r[2];
-        light(o.s, &o.g, o.lights, o.maps, sets, 2, SSG_BACKEND_CPU, r);
+        light(o.s, &o.g, o.lights, o.maps, sets, 3, SSG_BACKEND_CPU, r);
         n = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
@@ -359,23 +363,73 @@ static void test_wall_foot(void)
                                    "size=[0.3, 0, 1])\n", behind, 512);
     if (!o.ok)
         return;
-    const char *old[] = {"offset=1.5", "slope_offset=2", "normal_offset=0"};
+    /* the hard lookup's offsets: one light alone is no patch of a sphere to soften */
+    const char *old[] = {"softness=0", "offset=1.5", "slope_offset=2", "normal_offset=0"};
     double leak[2], side[2];
     int shadow_px = 0, side_px = 0;
     for (int k = 0; k < 2; k++) {
         struct ssg_image *r[2];
-        light(o.s, &o.g, o.lights, o.maps, old, k ? 3 : 0, SSG_BACKEND_CPU, r);
+        light(o.s, &o.g, o.lights, o.maps, old, k ? 4 : 1, SSG_BACKEND_CPU, r);
         wall_foot_leak(&o.g, r[1], o.texel, &leak[k], &side[k], &shadow_px, &side_px);
         for (int i = 0; i < 2; i++)
             ssg_image_destroy(&r[i]);
     }
     fprintf(stderr, "wall foot (%d px in the shadow, %d beside): light reaches %.2f texels "
-            "into the shadow with the defaults, %.2f with the slope-scaled offset; beside it "
+            "into the shadow with the normal offset, %.2f with the slope-scaled offset; beside it "
             "%.3f and %.3f lit\n", shadow_px, side_px, leak[0], leak[1], side[0], side[1]);
     CHECK(shadow_px > 300 && side_px > 300);
     CHECK(leak[0] <= 1.0);  /* within the map's texel of the foot */
     CHECK(leak[1] > 3.0);   /* what the defaults fixed: the test can fail */
     CHECK(side[0] == 1.0);  /* no self-shadowing where the light grazes the floor */
+    one_light_free(&o);
+}
+
+/* Soft lookups: the box of test_box_shadow seen from near its shadow's far edge (x = -0.5,
+   made by the top edge 0.559 from the floor along the light (1, 2, 0)), one light whose
+   cone is softness x pi (one light: acos(1 - 2 / 1) = pi). The penumbra across that edge,
+   the floor pixels neither lit nor dark, must be as wide as the cone makes it: full
+   width 2 x 0.559 tan(half-angle) across the light, / sin 63.4 degrees on the floor. */
+static double penumbra_width(const struct one_light *o, double softness, double *expect)
+{
+    char set[40];
+    snprintf(set, sizeof set, "softness=%g", softness);
+    /* one light: a dense search, wide enough for the 10 texels of the wider penumbra */
+    const char *sets[] = {set, "taps=16", "search_taps=16", "search_radius=16"};
+    struct ssg_image *r[2];
+    light(o->s, &o->g, o->lights, o->maps, sets, 4, SSG_BACKEND_CPU, r);
+    double lo = 1e9, hi = -1e9;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            float w[3], v = at(r[1], 0, x, y);
+            if (!world_of(&o->g, x, y, w) || w[1] > 1e-3f || fabsf(w[2]) > 0.1f ||
+                w[0] > -0.3f || !(v > 0.02f && v < 0.98f))
+                continue; /* floor pixels of the far edge's penumbra only */
+            lo = w[0] < lo ? w[0] : lo;
+            hi = w[0] > hi ? w[0] : hi;
+        }
+    for (int i = 0; i < 2; i++)
+        ssg_image_destroy(&r[i]);
+    *expect = 2.0 * 0.559 * tan(softness * M_PI) / sin(atan(2.0));
+    return hi - lo;
+}
+
+static void test_penumbra(void)
+{
+    const float dir[3] = {1, 2, 0};
+    struct one_light o = one_light("penumbra", "camera(position=[-0.5, 0.5, 0.6], "
+                                   "target=[-0.5, 0, 0])\n"
+                                   "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
+                                   "box(center=[0, 0.25, 0], size=[0.5, 0.5, 0.5])\n", dir, 512);
+    if (!o.ok)
+        return;
+    double want[2], got[2];
+    got[0] = penumbra_width(&o, 0.03, &want[0]);
+    got[1] = penumbra_width(&o, 0.06, &want[1]);
+    fprintf(stderr, "penumbra: %.3f wide at 5.4 degrees (cone: %.3f), %.3f at 10.8 (%.3f)\n",
+            got[0], want[0], got[1], want[1]);
+    for (int k = 0; k < 2; k++)
+        CHECK(got[k] > 0.75 * want[k] && got[k] < 1.25 * want[k]);
+    CHECK(got[1] > 1.6 * got[0] && got[1] < 2.4 * got[0]); /* it follows the angle */
     one_light_free(&o);
 }
 
@@ -394,6 +448,40 @@ static void test_count_mismatch(void)
     free(params);
 }
 
+/* CPU and GL on one G-buffer, light list and maps, with the parameters sets. */
+static void parity_case(const struct ssg_scene *s, const struct gbuf *g,
+                        const struct ssg_image *l, const struct ssg_image *m,
+                        const char *const *sets, int set_count, const char *name)
+{
+    struct ssg_image *cpu[2], *gl[2];
+    light(s, g, l, m, sets, set_count, SSG_BACKEND_CPU, cpu);
+    light(s, g, l, m, sets, set_count, SSG_BACKEND_GL, gl);
+    /* A binary test that flips where CPU and GL round a texel coordinate or a depth
+       differently moves one light's share of a pixel (~1/24 of it here, a tap's share of
+       that with soft lookups); such flips are rare: the mean stays tiny. Measured on
+       llvmpipe: identical (max 0), hard and soft. */
+    for (int k = 0; k < 2; k++) {
+        double mx = 0, mean = 0, scale = 0;
+        size_t n = (size_t)W * H * (size_t)cpu[k]->channels;
+        for (size_t i = 0; i < n; i++) {
+            double e = fabs((double)cpu[k]->data[i] - gl[k]->data[i]);
+            mx = e > mx ? e : mx;
+            mean += e;
+            scale = fabs(cpu[k]->data[i]) > scale ? fabs(cpu[k]->data[i]) : scale;
+        }
+        mean /= (double)n;
+        fprintf(stderr, "parity probe_light %s %-10s max %.3g (tol %.3g) mean %.3g (tol "
+                "%.3g)\n", name, k ? "visibility" : "out", mx, 0.1 * scale, mean,
+                1e-4 * scale);
+        CHECK(mx <= 0.1 * scale);
+        CHECK(mean <= 1e-4 * scale);
+    }
+    for (int i = 0; i < 2; i++) {
+        ssg_image_destroy(&cpu[i]);
+        ssg_image_destroy(&gl[i]);
+    }
+}
+
 static void test_parity(void)
 {
     struct ssg_diags d = {0};
@@ -408,31 +496,10 @@ static void test_parity(void)
         dirs[i][0] = (float)(r * cos(a)), dirs[i][1] = (float)y,
         dirs[i][2] = (float)(r * sin(a));
     }
-    struct ssg_image *l = light_list(dirs, 24), *m = maps_of(s, l, 256), *cpu[2], *gl[2];
-    light(s, &g, l, m, NULL, 0, SSG_BACKEND_CPU, cpu);
-    light(s, &g, l, m, NULL, 0, SSG_BACKEND_GL, gl);
-    /* A binary test that flips where CPU and GL round a texel coordinate or a depth
-       differently moves one light's share of a pixel (~1/24 of it here); such flips are
-       rare: the mean stays tiny. Measured on llvmpipe: identical (max 0). */
-    for (int k = 0; k < 2; k++) {
-        double mx = 0, mean = 0, scale = 0;
-        size_t n = (size_t)W * H * (size_t)cpu[k]->channels;
-        for (size_t i = 0; i < n; i++) {
-            double e = fabs((double)cpu[k]->data[i] - gl[k]->data[i]);
-            mx = e > mx ? e : mx;
-            mean += e;
-            scale = fabs(cpu[k]->data[i]) > scale ? fabs(cpu[k]->data[i]) : scale;
-        }
-        mean /= (double)n;
-        fprintf(stderr, "parity probe_light %-10s max %.3g (tol %.3g) mean %.3g (tol %.3g)\n",
-                k ? "visibility" : "out", mx, 0.1 * scale, mean, 1e-4 * scale);
-        CHECK(mx <= 0.1 * scale);
-        CHECK(mean <= 1e-4 * scale);
-    }
-    for (int i = 0; i < 2; i++) {
-        ssg_image_destroy(&cpu[i]);
-        ssg_image_destroy(&gl[i]);
-    }
+    struct ssg_image *l = light_list(dirs, 24), *m = maps_of(s, l, 256);
+    const char *hard[] = {"softness=0"};
+    parity_case(s, &g, l, m, NULL, 0, "soft");
+    parity_case(s, &g, l, m, hard, 1, "hard");
     ssg_image_destroy(&m);
     ssg_image_destroy(&l);
     gbuf_free(&g);
@@ -446,6 +513,7 @@ int main(void)
     test_box_shadow();
     test_bleeding();
     test_wall_foot();
+    test_penumbra();
     test_count_mismatch();
     test_parity();
     return check_report();

@@ -55,6 +55,29 @@ static void make_noise(int tile, uint64_t seed, float *noise)
     }
 }
 
+/* The soft lookups' taps: n offsets spread evenly over the unit disc (Vogel's spiral, as
+   the jitter's but fixed: every pixel reads the same pattern, turned per light, so no
+   pixel differs from its neighbour by chance). The first is the centre: a thin occluder
+   right over the pixel (a wall seen edge-on) is never missed by the blocker search, and
+   the filter's first tap is the search's first (read once). */
+static void make_taps(int n, float *tap)
+{
+    for (int k = 0; k < n; k++) {
+        double r = sqrt(k / (n - 0.5)), a = GOLDEN_ANGLE * k;
+        tap[k] = (float)(r * cos(a));
+        tap[n + k] = (float)(r * sin(a));
+    }
+}
+
+/* tan of the cone a light of N stands for: N uniform lights (lightprobe's default) each
+   gather the solid angle 4 pi / N, a cap of half-angle acos(1 - 2 / N); times softness,
+   at most 45 degrees (a list of very few lights would otherwise make hemispheres). */
+static double cone_tan_of(int count, double softness)
+{
+    double half = softness * acos(1.0 - 2.0 / (count > 1 ? count : 1));
+    return tan(half < M_PI / 4 ? half : M_PI / 4);
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_probe_light_params *p = params;
@@ -70,6 +93,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->res = maps->channels ? maps->width : 0;
     c->frame_res = c->res ? c->res : 1;
     float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
+    c->texel = texel;
+    c->cone_tan = p->softness > 0 && c->res ? (float)(cone_tan_of(c->count, p->softness) /
+                                                      texel) : 0.0f;
+    make_taps(p->taps, c->tap);
+    make_taps(p->search_taps, c->tap + 2 * p->taps);
     c->offset_world = c->p.offset * texel;
     c->slope_world = c->p.slope_offset * texel;
     c->normal_world = c->p.normal_offset * texel;
@@ -138,14 +166,17 @@ SSG_PORT_TABLE(inputs, SSG_PROBE_LIGHT_IN);
 SSG_PORT_TABLE(outputs, SSG_PROBE_LIGHT_OUT);
 
 /* Flops per pixel (node.h), by reading probe_light_cpu.c: per light about 15 for the
-   cosine and the sums, 45 more with shadow maps (the normal offset, the light-space
+   cosine and the sums, 45 more with hard shadow-map lookups (the normal offset, the light-space
    projection, the jitter, the slope-scaled depth test); about 20 a pixel to store. Lights
    behind a whole chunk are skipped, so this counts every light: an upper bound. */
 static double probe_light_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_probe_light_consts *c = consts;
     (void)in;
-    return 20.0 + c->count * (15.0 + (c->res > 0 ? 45.0 : 0.0));
+    /* soft lookups: 55 to set a light up (point, depth, receiver slope), about 15 a tap,
+       taps + search_taps taps (the filter and the search) */
+    double shadow = c->cone_tan > 0.0f ? 55.0 + 15.0 * (c->p.taps + c->p.search_taps) : 45.0;
+    return 20.0 + c->count * (15.0 + (c->res > 0 ? shadow : 0.0));
 }
 
 const struct ssg_node_desc ssg_node_probe_light = {
@@ -154,7 +185,9 @@ const struct ssg_node_desc ssg_node_probe_light = {
     .method = "Knuth and Kohlhammer, A Hybrid Ambient Occlusion Technique for Dynamic Scenes, "
               "sec. 3 and 4, figs. 1, 5 and 8: sum over lights of shadow-map visibility x "
               "Lambert x irradiance, the test shifted behind the occluder, jittered lookups "
-              "from a tiled noise texture (values and formula ours: the paper gives none)",
+              "from a tiled noise texture (values and formula ours: the paper gives none); "
+              "by default each light a cone of its share of the sphere, looked up as "
+              "percentage-closer soft shadows (Fernando 2005)",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_probe_light_params),
     .consts_size_of = consts_size_of,

@@ -1,15 +1,19 @@
 // probe_light.glsl - `probe_light` on GL, second pass (probe_light_gl.c): per pixel, the
-// lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, the
-// jittered texel and depth, one comparison against the light's map layer, sums in the same
-// order (`precise` keeps the CPU's roundings).
+// lights in list order, each as probe_light_cpu.c's add_light: N.l from the frame, then
+// the soft lookup (soft_visible) or the jittered texel and depth and one comparison
+// against the light's map layer (visible), sums in the same order (`precise` keeps the
+// CPU's roundings).
 uniform sampler2DArray position, normal, albedo, lights, shadowmaps, frames;
 uniform bool shadowmaps_bound;
 layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
 layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
+layout(std430, binding = 2) readonly buffer Taps { float tap[]; };
 layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 #pragma ssg_params
 uniform int count, res;
 uniform float offset_world, slope_world, normal_world;
+uniform float texel, cone_tan, search; // soft lookups: cone_tan 0 = hard
+uniform int taps, search_taps;
 const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
 
 float frame(int light, int k)
@@ -23,16 +27,26 @@ float luminance(vec3 e)
     return l;
 }
 
+// Point P0 (view space, normal N, sin(N, l_i) = sine) moved along the normal by
+// normal_world x sine (the normal offset, README.md), on light i's map: texel x, y, depth
+// (probe_light_cpu.c's lift).
+vec3 lifted(int i, vec3 P0, vec3 N, float sine)
+{
+    precise float up = normal_world * sine;
+    precise vec3 P = vec3(P0.x + up * N.x, P0.y + up * N.y, P0.z + up * N.z);
+    precise vec3 m;
+    m.x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
+    m.y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
+    m.z = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    return m;
+}
+
 // V_i of point P (view space, normal N) with jitter j (texels) for light i, N.l_i = cosine.
 float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
 {
-    // the normal offset: P + N normal_world sin(N, l) (README.md)
     precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
-    precise float lift = normal_world * sine;
-    precise vec3 P = vec3(P0.x + lift * N.x, P0.y + lift * N.y, P0.z + lift * N.z);
-    precise float x = P.x * frame(i, 0) + P.y * frame(i, 1) + P.z * frame(i, 2) + frame(i, 3);
-    precise float y = P.x * frame(i, 4) + P.y * frame(i, 5) + P.z * frame(i, 6) + frame(i, 7);
-    precise float d = P.x * frame(i, 8) + P.y * frame(i, 9) + P.z * frame(i, 10) + frame(i, 11);
+    vec3 m = lifted(i, P0, N, sine);
+    precise float x = m.x, y = m.y, d = m.z;
     float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
     precise float jx = cr * j.x - sr * j.y, jy = sr * j.x + cr * j.y;
     x += jx;
@@ -44,6 +58,66 @@ float visible(int i, vec3 P0, vec3 N, vec2 j, float cosine)
     precise float limit = texelFetch(shadowmaps, ivec3(int(x), int(y), i), 0).r +
                           (offset_world + slope_world * tangent);
     return d <= limit ? 1.0 : 0.0;
+}
+
+// One tap at (ox, oy) texels from the lifted point (x, y), depth d, receiver slope g:
+// the map's depth there minus the receiver plane's (probe_light_cpu.c's soft_tap); a
+// tap outside the map reads as lit (-inf, as the CPU's).
+float tap_height(int i, float x, float y, float d, vec2 g, float ox, float oy)
+{
+    precise float tx = x + ox, ty = y + oy;
+    if (!(tx >= 0.0 && ty >= 0.0 && tx < float(res) && ty < float(res)))
+        return -uintBitsToFloat(0x7F800000u); // -inf
+    precise float ref = d + (g.x * ox + g.y * oy);
+    precise float h = ref - texelFetch(shadowmaps, ivec3(int(tx), int(ty), i), 0).r;
+    return h;
+}
+
+// Soft V_i (README.md, soft lookups; probe_light_cpu.c's soft_visibility, the same
+// floats): a blocker search over search_radius texels, then a filter over the penumbra
+// their mean height over the receiver makes (PCSS).
+float soft_visible(int i, vec3 P0, vec3 N, float cosine)
+{
+    precise float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
+    vec3 m = lifted(i, P0, N, sine);
+    precise float x = m.x, y = m.y, d = m.z;
+    precise float nu = N.x * frame(i, 0) + N.y * frame(i, 1) + N.z * frame(i, 2);
+    precise float nv = N.x * frame(i, 4) + N.y * frame(i, 5) + N.z * frame(i, 6);
+    precise float tt = texel * texel, gmax = MAX_SLOPE * texel;
+    precise float gx = nu * tt / cosine, gy = nv * tt / cosine;
+    vec2 g = vec2(clamp(gx, -gmax, gmax), clamp(gy, -gmax, gmax));
+    precise float tangent = min(sine / cosine, MAX_SLOPE);
+    precise float add = offset_world + slope_world * tangent;
+    float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
+    precise float hsum = 0.0, hcnt = 0.0, lit = 0.0;
+    int s0 = 2 * taps; // the search's pattern follows the filter's
+    for (int t = 0; t < search_taps; t++) {
+        precise float ox = cr * tap[s0 + t] - sr * tap[s0 + search_taps + t];
+        precise float oy = sr * tap[s0 + t] + cr * tap[s0 + search_taps + t];
+        precise float sx = search * ox, sy = search * oy;
+        float h = tap_height(i, x, y, d, g, sx, sy);
+        if (h > add) {
+            hsum += h;
+            hcnt += 1.0;
+        } else if (t == 0) {
+            lit = 1.0; // the centre: the filter's first tap too
+        }
+    }
+    if (!(hcnt > 0.0))
+        return 1.0;
+    if (!(hcnt < float(search_taps)))
+        return 0.0; // the umbra, as the CPU's
+    precise float r = hsum / hcnt * cone_tan;
+    r = r > 1.0 ? (r < search ? r : search) : 1.0;
+    for (int t = 1; t < taps; t++) {
+        precise float ox = cr * tap[t] - sr * tap[taps + t];
+        precise float oy = sr * tap[t] + cr * tap[taps + t];
+        precise float sx = r * ox, sy = r * oy;
+        if (!(tap_height(i, x, y, d, g, sx, sy) > add))
+            lit += 1.0;
+    }
+    precise float share = 1.0 / float(taps);
+    return lit * share;
 }
 
 void main()
@@ -66,7 +140,9 @@ void main()
         if (e == vec3(0.0))
             continue; // a light that carries nothing (lightprobe missing=dark), as the CPU
         float w = cosine;
-        float v = shadowmaps_bound ? visible(i, P, N, j, cosine) : 1.0;
+        float v = !shadowmaps_bound ? 1.0
+                  : cone_tan > 0.0 ? soft_visible(i, P, N, cosine)
+                                   : visible(i, P, N, j, cosine);
         precise float lit = v * w;
         sum += lit * e;
         lum_lit += lit * luminance(e);

@@ -8,7 +8,7 @@
 #include "graph/node.h"
 #include "common/shadowmap.h"
 
-enum { SSG_PROBE_LIGHT_MAX_TILE = 16 };
+enum { SSG_PROBE_LIGHT_MAX_TILE = 16, SSG_PROBE_LIGHT_MAX_TAPS = 16 };
 /* The largest tan(angle of N to l) the slope offset grows to (84 degrees). */
 #define SSG_PROBE_LIGHT_MAX_SLOPE 10.0f
 
@@ -51,11 +51,25 @@ SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPU
       "noise_radius)",                                                                     \
       .def = 2, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                   \
     P(FLOAT, noise_radius,                                                                 \
-      "jitter of the map lookup (fig. 8): smoother shadows, needs a larger offset; "       \
-      "0 = none",                                                                          \
+      "hard lookups (softness=0): jitter of the map lookup (fig. 8), needs a larger "      \
+      "offset; 0 = none",                                                                  \
       .def = 1, .min = 0, .max = 64, .unit = "texels")                                     \
     P(INT, noise_tile, "side of the tiled jitter pattern", .def = 4, .min = 1,             \
-      .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px")
+      .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px")                                       \
+    P(FLOAT, softness,                                                                     \
+      "soft lookups (README.md): each light a cone of softness x its share of the "        \
+      "sphere's angular radius acos(1 - 2/N) (at most 45 degrees), its shadow a "          \
+      "penumbra as wide as that cone from the blocker (PCSS); 0 = one hard lookup, "       \
+      "jittered by noise_radius",                                                          \
+      .def = 1, .min = 0, .max = 4, .unit = "x", .host_only = 1)                           \
+    P(INT, taps, "soft lookups: map reads of the filter over the penumbra, per light",    \
+      .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS, .unit = "taps",                 \
+      .host_only = 1)                                                                      \
+    P(INT, search_taps, "soft lookups: map reads of the blocker search, per light (the "   \
+      "first at the pixel)", .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS,          \
+      .unit = "taps", .host_only = 1)                                                      \
+    P(FLOAT, search_radius, "soft lookups: the blocker search's radius, the widest "       \
+      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels", .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
 
 struct ssg_probe_light_consts {
@@ -72,6 +86,14 @@ struct ssg_probe_light_consts {
     float offset_world, slope_world;    /* offset and slope_offset in scene units (texels
                                            of 2 radius / R) */
     float normal_world;                 /* normal_offset in scene units */
+    float texel;                        /* the maps' texel 2 radius / R, scene units (0:
+                                           no maps) */
+    float cone_tan;                     /* soft lookups: tan of the light's cone half-angle
+                                           over texel (penumbra texels per scene unit of
+                                           blocker height); 0 = hard lookups */
+    /* soft lookups: the filter's taps' offsets in the unit disc (Vogel's spiral), x then
+       y, taps each; then the blocker search's, search_taps each */
+    float tap[4 * SSG_PROBE_LIGHT_MAX_TAPS];
     float cos_sin[];                    /* ssg_probe_light_rotations of the N lights, 2 N
                                            floats (consts_size_of) */
 };

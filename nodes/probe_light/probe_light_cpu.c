@@ -4,13 +4,14 @@
  * map stay hot while the inner loop over pixels runs branch-free (vectorised, the map
  * read a gather; compiled per instruction set, SSG_VECTOR_CLONES). The courtyard's 128
  * lights at 720p: 320-360 ms a frame with the scalar loop this replaced, 45-50 ms now on 2
- * threads, the same bits. Chunk columns outside, a band's rows inside, as ssdo_cpu.c. */
+ * threads, the same bits. Chunk columns outside, a band's rows inside, as ssdo_cpu.c.
+ * Soft lookups (soft_visibility) run the same way, one loop a tap. */
 #include "common/vector_loops.h" /* first: see there */
 #include <stdlib.h>
 
 #include "probe_light.h"
 
-enum { CHUNK = 64 };
+enum { CHUNK = 64, PART = 16 };
 
 struct job {
     const struct ssg_probe_light_consts *c;
@@ -23,6 +24,8 @@ struct job {
     float normal_world;    /* normal_offset texels in scene units */
     float noise_radius;    /* from ctx->params, not the consts: a change of it alone
                               reruns without prepare() (check_params, probe_light.c) */
+    int taps, search_taps; /* soft lookups (cone_tan > 0): taps of filter and search */
+    float search;          /* the blocker search's radius, texels */
 };
 
 struct chunk {
@@ -33,6 +36,11 @@ struct chunk {
     float d[CHUNK];                                /* the pixel's depth, -inf: lit */
     float add[CHUNK];                              /* the depth offset there */
     float v[CHUNK];                                /* its visibility, 1 or 0 */
+    /* soft lookups, one light: the lifted point's texel and depth, the receiver plane's
+       depth per texel along x and y, the blockers' summed height and count, then the
+       penumbra's radius (texels) and the filter's lit taps */
+    float x[CHUNK], y[CHUNK], gx[CHUNK], gy[CHUNK], hsum[CHUNK], hcnt[CHUNK], rp[CHUNK];
+    float ref[CHUNK];                              /* one tap: its receiver depth */
 };
 
 static float luminance(float r, float g, float b)
@@ -60,6 +68,29 @@ load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k
     }
 }
 
+/* Pixel i of the chunk on light f's map: its N.l (cosine), sin(N, l), and its point moved
+   along the normal by normal_world sin(N, l) (the normal offset, README.md) as texel x, y
+   and depth d. Both lookups start here. */
+struct lifted {
+    float cosine, sine, x, y, d;
+};
+
+static inline __attribute__((always_inline)) struct lifted
+lift(const float *restrict f, float normal_world, const struct chunk *restrict k, int i)
+{
+    struct lifted o;
+    o.cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
+    float w = o.cosine > 0.0f ? o.cosine : 0.0f, c2 = 1.0f - w * w;
+    o.sine = sqrtf(c2 > 0.0f ? c2 : 0.0f);
+    float up = normal_world * o.sine;
+    float qx = k->px[i] + up * k->nx[i], qy = k->py[i] + up * k->ny[i];
+    float qz = k->pz[i] + up * k->nz[i];
+    o.x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
+    o.y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
+    o.d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+    return o;
+}
+
 /* Light li's visibility of every pixel of the chunk, 1 or 0, into k->v: one loop finds
    each pixel's texel and the depth it must not exceed, a second reads the map there (a
    gather, which GCC vectorises only in a loop of its own) and compares. */
@@ -71,16 +102,8 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
     const float fres = (float)res, normal_world = j->normal_world;
     const float offset = j->offset_world, slope = j->slope_world;
     for (int i = 0; i < len; i++) {
-        float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
-        float w = cosine > 0.0f ? cosine : 0.0f;
-        /* the normal offset: P + N normal_world sin(N, l) (README.md) */
-        float c2 = 1.0f - w * w;
-        float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), lift = normal_world * sine;
-        float qx = k->px[i] + lift * k->nx[i], qy = k->py[i] + lift * k->ny[i];
-        float qz = k->pz[i] + lift * k->nz[i];
-        float x = qx * f[0] + qy * f[1] + qz * f[2] + f[3];
-        float y = qx * f[4] + qy * f[5] + qz * f[6] + f[7];
-        float d = qx * f[8] + qy * f[9] + qz * f[10] + f[11];
+        struct lifted o = lift(f, normal_world, k, i);
+        float cosine = o.cosine, sine = o.sine, x = o.x, y = o.y, d = o.d;
         x += cr * k->jx[i] - sr * k->jy[i];
         y += sr * k->jx[i] + cr * k->jy[i];
         int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
@@ -94,6 +117,99 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
     }
     for (int i = 0; i < len; i++)
         k->v[i] = k->d[i] <= map[k->at[i]] + k->add[i] ? 1.0f : 0.0f;
+}
+
+/* Soft lookups, one light (README.md): each pixel's lifted point on the map (the normal
+   offset as light_visibility's, no jitter), its depth, the depth offset, and the slope of
+   its receiver plane in depth per texel, (N.u, N.v) / (s^2 N.l) (the map's scale s =
+   1 / texel), clamped to tan 10 as the slope offset is: a tap beside the pixel is
+   compared with its own surface there, not with the pixel's depth. */
+static inline __attribute__((always_inline)) void
+soft_setup(const struct job *j, const float *restrict f, int len, struct chunk *restrict k)
+{
+    const float normal_world = j->normal_world, offset = j->offset_world;
+    const float slope = j->slope_world, texel = j->c->texel;
+    const float tt = texel * texel, gmax = SSG_PROBE_LIGHT_MAX_SLOPE * texel;
+    for (int i = 0; i < len; i++) {
+        struct lifted o = lift(f, normal_world, k, i);
+        float cosine = o.cosine, sine = o.sine;
+        k->x[i] = o.x, k->y[i] = o.y, k->d[i] = o.d;
+        float q = sine / cosine, nu = k->nx[i] * f[0] + k->ny[i] * f[1] + k->nz[i] * f[2];
+        float nv = k->nx[i] * f[4] + k->ny[i] * f[5] + k->nz[i] * f[6];
+        float gx = nu * tt / cosine, gy = nv * tt / cosine;
+        float tangent = cosine > 0.0f ? q : 0.0f;
+        tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
+        gx = cosine > 0.0f ? gx : 0.0f, gy = cosine > 0.0f ? gy : 0.0f;
+        k->gx[i] = gx > gmax ? gmax : (gx < -gmax ? -gmax : gx);
+        k->gy[i] = gy > gmax ? gmax : (gy < -gmax ? -gmax : gy);
+        k->add[i] = offset + slope * tangent;
+        k->hsum[i] = k->hcnt[i] = 0.0f, k->v[i] = 0.0f;
+    }
+}
+
+/* One tap of every pixel at (ox, oy) texels from its point times scale[i] (NULL: 1): the
+   texel it reads and the depth its receiver plane has there (-inf outside the map: lit). */
+static inline __attribute__((always_inline)) void
+soft_tap(const struct job *j, float ox, float oy, const float *restrict scale, int i0,
+         int i1, struct chunk *restrict k)
+{
+    const int res = j->res;
+    const float fres = (float)res;
+    for (int i = i0; i < i1; i++) {
+        float r = scale ? scale[i] : 1.0f, sx = r * ox, sy = r * oy;
+        float x = k->x[i] + sx, y = k->y[i] + sy;
+        int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
+        k->at[i] = inside ? (int32_t)y * res + (int32_t)x : 0;
+        k->ref[i] = inside ? k->d[i] + (k->gx[i] * sx + k->gy[i] * sy) : -INFINITY;
+    }
+}
+
+/* Light li's visibility of every pixel of the chunk, between 0 and 1, into k->v: the
+   blockers in the search disc (taps deeper than the map plus the offset), their mean
+   height over the receiver H; a penumbra of H x cone_tan texels (at least 1, at most the
+   search radius) filtered by as many taps (PCSS, Fernando 2005). No blocker: lit; every
+   tap a blocker: in the umbra (the filter's disc lies inside the search's), dark. A part
+   of PART pixels without one in a penumbra skips the filter: the same values, less work
+   (a light's penumbrae are bands a few pixels wide). */
+static inline __attribute__((always_inline)) void
+soft_visibility(const struct job *j, const float *restrict f, const float *restrict map,
+                float cr, float sr, int len, struct chunk *restrict k)
+{
+    const int n = j->taps, m = j->search_taps;
+    const float *tap = j->c->tap, *stap = tap + 2 * n, search = j->search;
+    const float cone = j->c->cone_tan;
+    soft_setup(j, f, len, k);
+    for (int t = 0; t < m; t++) {
+        float ox = cr * stap[t] - sr * stap[m + t], oy = sr * stap[t] + cr * stap[m + t];
+        soft_tap(j, search * ox, search * oy, NULL, 0, len, k);
+        for (int i = 0; i < len; i++) {
+            float h = k->ref[i] - map[k->at[i]];
+            int blocked = h > k->add[i];
+            k->hsum[i] += blocked ? h : 0.0f;
+            k->hcnt[i] += blocked ? 1.0f : 0.0f;
+            k->v[i] = t == 0 ? (blocked ? 0.0f : 1.0f) : k->v[i];
+        }
+    }
+    const float all = (float)m;
+    for (int i = 0; i < len; i++) {
+        float r = k->hsum[i] / (k->hcnt[i] > 0.0f ? k->hcnt[i] : 1.0f) * cone;
+        k->rp[i] = r > 1.0f ? (r < search ? r : search) : 1.0f;
+    }
+    for (int i0 = 0; i0 < len; i0 += PART) {
+        int i1 = len - i0 < PART ? len : i0 + PART;
+        int32_t any = 0; /* a pixel of the part in a penumbra: some blockers, not all */
+        for (int i = i0; i < i1; i++)
+            any |= (k->hcnt[i] > 0.0f) & (k->hcnt[i] < all);
+        for (int t = 1; any && t < n; t++) { /* tap 0, the centre, is the search's */
+            float ox = cr * tap[t] - sr * tap[n + t], oy = sr * tap[t] + cr * tap[n + t];
+            soft_tap(j, ox, oy, k->rp, i0, i1, k);
+            for (int i = i0; i < i1; i++)
+                k->v[i] += k->ref[i] - map[k->at[i]] > k->add[i] ? 0.0f : 1.0f;
+        }
+    }
+    const float share = 1.0f / (float)n;
+    for (int i = 0; i < len; i++)
+        k->v[i] = k->hcnt[i] < all ? (k->hcnt[i] > 0.0f ? k->v[i] * share : 1.0f) : 0.0f;
 }
 
 /* Light li's share of every pixel of the chunk. */
@@ -118,7 +234,9 @@ static inline __attribute__((always_inline)) void add_light(const struct job *j,
     }
     if (!facing)
         return;
-    if (maps)
+    if (maps && j->c->cone_tan > 0.0f)
+        soft_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
+    else if (maps)
         light_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
     for (int i = 0; i < len; i++) {
         float cosine = k->nx[i] * f[12] + k->ny[i] * f[13] + k->nz[i] * f[14];
@@ -180,7 +298,8 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
-                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius};
+                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius,
+                    c->p.taps, c->p.search_taps, c->p.search_radius};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
     return SSG_OK;

@@ -35,11 +35,17 @@ static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_li
     ssg_gl_input(p, "frames", frames);
     ssg_gl_buffer(p, 0, c->cos_sin, sizeof(float) * 2 * (size_t)c->count);
     ssg_gl_buffer(p, 1, c->noise, sizeof(float) * 2 * tile * tile);
+    ssg_gl_buffer(p, 2, c->tap, sizeof(float) * 2 * (size_t)(c->p.taps + c->p.search_taps));
     ssg_gl_int(p, "count", c->count);
     ssg_gl_int(p, "res", c->res);
     ssg_gl_float(p, "offset_world", c->offset_world);
     ssg_gl_float(p, "slope_world", c->slope_world);
     ssg_gl_float(p, "normal_world", c->normal_world);
+    ssg_gl_float(p, "texel", c->texel);
+    ssg_gl_float(p, "cone_tan", c->cone_tan);
+    ssg_gl_float(p, "search", c->p.search_radius);
+    ssg_gl_int(p, "taps", c->p.taps);
+    ssg_gl_int(p, "search_taps", c->p.search_taps);
     ssg_gl_dispatch(p, pos->width, pos->height);
 }
 
