@@ -89,6 +89,13 @@ static void test_xml(void)
                          "<input\tsemantic='VERTEX' source='#v'/><vcount>3</vcount>"
                          "<p>0 1 2</p></polylist><lines/></mesh></COLLADA>";
     expect_precheck(".dae", vertex, strlen(vertex), SSG_OK, NULL);
+    /* a data array without its count (a null read in the importer; fuzzed) */
+    const char *uncounted = "<COLLADA>\n <float_array id='a' xcount='3'>0 1 2</float_array>"
+                            "</COLLADA>";
+    expect_precheck(".dae", uncounted, strlen(uncounted), SSG_E_GLTF, "m:2:2: ");
+    const char *counted = "<COLLADA><float_array\ncount = \"3\" id='a'>0 1 2</float_array>"
+                          "<int_array count='0'/></COLLADA>";
+    expect_precheck(".dae", counted, strlen(counted), SSG_OK, NULL);
     char *flat = nested("<a>", "<!-- <b> --><![CDATA[<b>]]><?pi <b>?><b/><c x='>' y=\"<\"/>",
                         "", 300, "</a>");
     expect_precheck(".dae", flat, strlen(flat), SSG_OK, NULL);

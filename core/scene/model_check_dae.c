@@ -10,7 +10,9 @@
  * the file's size in bytes (every value counted takes at least one). A third, also found by
  * the fuzzer (under valgrind): a primitive (<triangles>, <polylist>, ...) without the
  * <input semantic="VERTEX"> the COLLADA specification requires of it has the reader index
- * before its input array, so each primitive with content must have one. */
+ * before its input array, so each primitive with content must have one. A fourth (fuzzed,
+ * a null read): a data array (<float_array>, <int_array>, ...) without its required count
+ * attribute. */
 #include <ctype.h>
 #include <limits.h>
 #include <stdio.h>
@@ -30,6 +32,10 @@ static size_t name_length(const struct ssg_check *s, size_t at, size_t end)
         i++;
     return i - at - 1;
 }
+
+/* The data arrays, whose count attribute the specification requires. */
+static const char *const ARRAYS[] = {"float_array", "int_array", "bool_array", "Name_array",
+                                     "IDREF_array", "SIDREF_array", "token_array", NULL};
 
 /* The elements that hold primitives, each with inputs and index lists. */
 static const char *const PRIMITIVES[] = {"triangles", "polylist", "polygons", "lines",
@@ -61,6 +67,27 @@ static size_t find(const struct ssg_check *s, size_t from, size_t to, const char
             return i;
     }
     return to;
+}
+
+/* 1 when the tag [at, end) has an attribute `name` (white space before it, then white
+   space or '=' after it), outside its quoted values. */
+static int has_attribute(const struct ssg_check *s, size_t at, size_t end, const char *name)
+{
+    size_t n = strlen(name);
+    char quote = 0;
+    for (size_t i = at + 1; i + n < end; i++) {
+        char c = s->data[i];
+        if (quote) {
+            quote = c == quote ? 0 : quote;
+        } else if (c == '"' || c == '\'') {
+            quote = c;
+        } else if (isspace((unsigned char)c) && !memcmp(s->data + i + 1, name, n)) {
+            char after = s->data[i + 1 + n];
+            if (after == '=' || isspace((unsigned char)after))
+                return 1;
+        }
+    }
+    return 0;
 }
 
 /* 1 when the tag [at, end) has the attribute semantic="VERTEX" (either quote), its name
@@ -136,5 +163,9 @@ enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, size_t at, size_t end,
         e = check_indices(s, at, end, n);
     if (!e && !closed && name_in(s, at, n, PRIMITIVES))
         e = check_primitive(s, at, end, n);
+    if (!e && name_in(s, at, n, ARRAYS) && !has_attribute(s, at, end, "count"))
+        e = ssg_check_refuse_at(s, at, "<%.*s> without the count attribute it must have (the "
+                                "importer would read through a null array)", (int)n,
+                                s->data + at + 1);
     return e;
 }
