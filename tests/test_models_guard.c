@@ -158,6 +158,12 @@ static void test_ply(void)
     expect_precheck(".ply", format, strlen(format), SSG_E_GLTF, "m:3:14: "); /* fuzzed too */
     const char *digits = "ply\nformat ascii 1.0\nelement 22222222222face 2\nend_header\n";
     expect_precheck(".ply", digits, strlen(digits), SSG_E_GLTF, "m:3:9: "); /* and this */
+    const char *digits18 = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n-555555555555555555.5 1 0\n"
+                           "3 0 1 2\n";
+    expect_precheck(".ply", digits18, strlen(digits18), SSG_E_GLTF, "m:12:1: "); /* fuzzed */
+    const char *digits17 = PLY_HEAD("ascii", "1") "0 0 0\n1 0 0\n-55555555555555555.5e-3 1 0\n"
+                           "3 0 1 2\n";
+    expect_precheck(".ply", digits17, strlen(digits17), SSG_OK, NULL);
     const char *twice = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                         "element vertex 3\nproperty float x\nend_header\n0\n0\n1\n2\n";
     expect_precheck(".ply", twice, strlen(twice), SSG_E_GLTF, "m:5:9: "); /* valgrind found */

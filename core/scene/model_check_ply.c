@@ -338,8 +338,36 @@ static enum ssg_err walk_ascii_entry(const struct ssg_check *s, const struct ply
     return SSG_OK;
 }
 
+/* Digits a number of the ASCII data may have before its point or exponent: a double's
+   precision and then some. Assimp's reader turns a longer run of digits (19 and more;
+   fuzzed) into a request for tens of gigabytes. */
+enum { MAX_INTEGER_DIGITS = 17 };
+
+static enum ssg_err check_ascii_numbers(const struct ssg_check *s, size_t at)
+{
+    for (size_t i = at; i < s->len;) {
+        size_t start = i + (s->data[i] == '-' || s->data[i] == '+');
+        size_t d = start;
+        while (d < s->len && isdigit((unsigned char)s->data[d]))
+            d++;
+        if (d - start > MAX_INTEGER_DIGITS)
+            return ssg_check_refuse_at(s, i, "a number with %zu digits before its point in "
+                                       "the PLY data (at most %d)", d - start,
+                                       MAX_INTEGER_DIGITS);
+        i = d > i ? d : i + 1;
+        while (i < s->len && !isspace((unsigned char)s->data[i]))
+            i++; /* the rest of this token */
+        while (i < s->len && isspace((unsigned char)s->data[i]))
+            i++;
+    }
+    return SSG_OK;
+}
+
 static enum ssg_err walk_ascii(const struct ssg_check *s, const struct ply_header *h)
 {
+    enum ssg_err numbers = check_ascii_numbers(s, h->data);
+    if (numbers)
+        return numbers;
     size_t at = h->data, end;
     for (int i = 0; i < h->element_count; i++) {
         const struct ply_element *e = &h->elements[i];
