@@ -68,18 +68,25 @@ static int starts(const struct ssg_check *s, size_t i, const char *text)
     return i + n <= s->len && memcmp(s->data + i, text, n) == 0;
 }
 
-/* Index just past the first `end` at or after i; len when there is none. */
-static size_t skip_past(const struct ssg_check *s, size_t i, const char *end)
+size_t ssg_check_find(const struct ssg_check *s, size_t from, size_t to, const char *text)
 {
-    for (size_t n = strlen(end); i + n <= s->len; i++) {
-        const char *hit = memchr(s->data + i, end[0], s->len - i);
+    size_t n = strlen(text);
+    for (size_t i = from; i + n <= to; i++) {
+        const char *hit = memchr(s->data + i, text[0], to - i);
         if (!hit)
             break;
         i = (size_t)(hit - s->data);
-        if (starts(s, i, end))
-            return i + n;
+        if (i + n <= to && !memcmp(s->data + i, text, n))
+            return i;
     }
-    return s->len;
+    return to;
+}
+
+/* Index just past the first `end` at or after i; len when there is none. */
+static size_t skip_past(const struct ssg_check *s, size_t i, const char *end)
+{
+    size_t at = ssg_check_find(s, i, s->len, end);
+    return at < s->len ? at + strlen(end) : s->len;
 }
 
 /* Past the tag opening at i, quoted attribute values honoured (they may hold '>');

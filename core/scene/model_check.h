@@ -29,6 +29,9 @@ enum ssg_err ssg_check_refuse_at(const struct ssg_check *s, size_t at, const cha
 enum ssg_err ssg_check_refuse(const struct ssg_check *s, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 
+/* Where `text` first occurs in [from, to); `to` when it does not. */
+size_t ssg_check_find(const struct ssg_check *s, size_t from, size_t to, const char *text);
+
 /* A PLY's header (ends in end_header within SSG_PLY_MAX_HEADER bytes) and its element
    and list counts against the bytes after it (model_check_ply.c). */
 #define SSG_PLY_MAX_HEADER (1 << 20)

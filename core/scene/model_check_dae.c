@@ -54,21 +54,6 @@ static int is_index_list(const struct ssg_check *s, size_t at, size_t n)
     return name_in(s, at, n, INDEX_LISTS);
 }
 
-/* Where the text first occurs in [from, to); to when it does not. */
-static size_t find(const struct ssg_check *s, size_t from, size_t to, const char *text)
-{
-    size_t n = strlen(text);
-    for (size_t i = from; i + n <= to; i++) {
-        const char *hit = memchr(s->data + i, text[0], to - i);
-        if (!hit)
-            break;
-        i = (size_t)(hit - s->data);
-        if (i + n <= to && !memcmp(s->data + i, text, n))
-            return i;
-    }
-    return to;
-}
-
 /* 1 when the tag [at, end) has an attribute `name` (white space before it, then white
    space or '=' after it), outside its quoted values. */
 static int has_attribute(const struct ssg_check *s, size_t at, size_t end, const char *name)
@@ -96,7 +81,8 @@ static int has_vertex_semantic(const struct ssg_check *s, size_t at, size_t end)
 {
     static const char *const forms[] = {"semantic=\"VERTEX\"", "semantic='VERTEX'", NULL};
     for (const char *const *form = forms; *form; form++)
-        for (size_t i = find(s, at, end, *form); i < end; i = find(s, i + 1, end, *form))
+        for (size_t i = ssg_check_find(s, at, end, *form); i < end;
+             i = ssg_check_find(s, i + 1, end, *form))
             if (isspace((unsigned char)s->data[i - 1]))
                 return 1;
     return 0;
@@ -108,9 +94,10 @@ static enum ssg_err check_primitive(const struct ssg_check *s, size_t at, size_t
 {
     char close[16];
     snprintf(close, sizeof close, "</%.*s", (int)n, s->data + at + 1);
-    size_t stop = find(s, end, s->len, close);
-    for (size_t i = find(s, end, stop, "<input"); i < stop; i = find(s, i + 1, stop, "<input")) {
-        size_t tag_end = find(s, i, stop, ">");
+    size_t stop = ssg_check_find(s, end, s->len, close);
+    for (size_t i = ssg_check_find(s, end, stop, "<input"); i < stop;
+         i = ssg_check_find(s, i + 1, stop, "<input")) {
+        size_t tag_end = ssg_check_find(s, i, stop, ">");
         if (has_vertex_semantic(s, i, tag_end))
             return SSG_OK;
     }
