@@ -37,6 +37,13 @@ def format_value(value: Value) -> str:
     raise TypeError("cannot write a %s as a parameter value" % type(value).__name__)
 
 
+def set_strings(items):
+    """("key", value) pairs as the C array of "key=value" strings the library's sets take:
+    (the strings, which must outlive the call, and the array; NULL for none)."""
+    texts = [ffi.new("char[]", ("%s=%s" % (k, format_value(v))).encode()) for k, v in items]
+    return texts, ffi.new("const char *[]", texts) if texts else ffi.NULL
+
+
 def parse_value(text: str, kind: str) -> Value:
     """A value as the library prints it, back in Python's terms by its parameter type
     (None for no value: a node type's descriptor without a graph)."""
@@ -185,9 +192,7 @@ class Graph:
             o.guard_given, o.guard = 1, int(guard)
         items = sets.items() if isinstance(sets, Mapping) else [
             tuple(s.split("=", 1)) for s in (sets or [])]
-        texts = [ffi.new("char[]", ("%s=%s" % (k, format_value(v))).encode())
-                 for k, v in items]
-        array = ffi.new("const char *[]", texts) if texts else ffi.NULL
+        texts, array = set_strings(items)
         o.sets, o.set_count = array, len(texts)
         out = ffi.new("struct ssg_graph **")
         diags = new_diags()

@@ -4,7 +4,7 @@ from typing import Dict, List, Mapping, Optional
 import numpy as np
 
 from ._errors import new_diags, raise_for
-from ._graph import Param, Value, _param, _text, format_value
+from ._graph import Param, Value, _param, _text, set_strings
 from ._images import from_library, to_library
 from ._lock import locked
 from ._ssgraph import ffi, lib
@@ -47,9 +47,7 @@ def run_node(node: str, inputs: Mapping[str, np.ndarray],
         sets["frame"] = int(frame)
     if backend is not None:
         sets["backend"] = backend
-    texts = [ffi.new("char[]", ("%s=%s" % (k, format_value(v))).encode())
-             for k, v in sets.items()]
-    set_array = ffi.new("const char *[]", texts) if texts else ffi.NULL
+    texts, set_array = set_strings(sets.items())
     f = ffi.new("struct ssg_frame *")
     first = next(iter(inputs.values()), None)
     f.width = int(width if width is not None else (first.shape[1] if first is not None else 0))
