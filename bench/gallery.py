@@ -28,16 +28,19 @@ enlarged. Display uses write's own tone map (ACES, Narkowicz 2015, then sRGB) fo
 and clamp for AO, the same for truth and pipeline. bench/gallery/artefacts.md (written by
 people, looking) is appended: what a viewer would call an artefact, with its cause.
 """
+import functools
 import hashlib
 import json
 import math
 import os
 import re
 import shutil
-import subprocess
 import tempfile
 
 import numpy as np
+
+from bench import run_cmd as run
+from sequence import cache_dir as sequence_cache_dir
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HERE = os.path.join(ROOT, "bench", "gallery")
@@ -59,21 +62,16 @@ def has_environment(scene, lights):
     return bool(re.search(r"^\s*environment\(", open(source).read(), re.M))
 
 
-def run(cmd):
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    if p.returncode != 0:
-        raise SystemExit("gallery: %s failed (%d):\n%s%s" % (" ".join(cmd), p.returncode,
-                                                            p.stdout, p.stderr))
-    return p.stdout
-
-
 def cache_dir():
-    own, xdg = os.environ.get("SSGRAPH_CACHE"), os.environ.get("XDG_CACHE_HOME")
-    base = own or os.path.join(xdg or os.path.join(os.path.expanduser("~"), ".cache"),
-                               "ssgraph")
-    path = os.path.join(base, "gallery")
+    path = sequence_cache_dir("gallery")
     os.makedirs(path, exist_ok=True)
     return path
+
+
+@functools.lru_cache(maxsize=None)
+def version(binary):
+    """ssgraph's version line, asked once a binary (every reference's key holds it)."""
+    return run([binary, "--version"]).splitlines()[0]
 
 
 def named_files(scene_path, seen=None):
@@ -101,9 +99,7 @@ def lights_file(lights):
 def reference(binary, kind, scene, lights, size, count, seed):
     """The cached reference EXR of one case (rendered when missing or stale)."""
     graph = os.path.join(HERE, "reference_%s.graph" % kind)
-    key = hashlib.sha256()
-    version = run([binary, "--version"]).splitlines()[0]
-    parts = [version, open(graph).read(), size, str(count), str(seed), kind]
+    parts = [version(binary), open(graph).read(), size, str(count), str(seed), kind]
     for path in named_files(scene) + named_files(lights_file(lights)):
         parts.append(os.path.relpath(path, ROOT))
         parts.append(hashlib.sha256(open(path, "rb").read()).hexdigest())

@@ -197,13 +197,15 @@ def temporal_node(graph, seen=None):
     return None
 
 
-def cache_dir():
+def cache_dir(kind="sequences"):
+    """The folder of one kind of cached reference, as bench --reference's cache is found:
+    $SSGRAPH_CACHE/KIND, else $XDG_CACHE_HOME/ssgraph/KIND, else ~/.cache/ssgraph/KIND."""
     own, xdg, home = (os.environ.get(k) for k in ("SSGRAPH_CACHE", "XDG_CACHE_HOME", "HOME"))
     if own:
-        return os.path.join(own, "sequences")
+        return os.path.join(own, kind)
     if xdg:
-        return os.path.join(xdg, "ssgraph", "sequences")
-    return os.path.join(home, ".cache", "ssgraph", "sequences") if home else ""
+        return os.path.join(xdg, "ssgraph", kind)
+    return os.path.join(home, ".cache", "ssgraph", kind) if home else ""
 
 
 def reference_graph(a):
