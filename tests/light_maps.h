@@ -33,21 +33,32 @@ static inline void gbuffer_of(const struct ssg_scene *s, const struct ssg_frame 
     free(params);
 }
 
-/* The lightmaps node's depth, normal and flux of scene s at resolution res. */
-static inline enum ssg_err maps_of(const struct ssg_scene *s, const struct ssg_frame *frame,
-                                   int res, enum ssg_backend backend, struct ssg_image *out[3])
+/* The lightmaps node's depth, normal and flux of scene s at resolution res, for the lights
+   src names. */
+static inline enum ssg_err maps_with(const struct ssg_scene *s, const struct ssg_frame *frame,
+                                     int res, struct ssg_lightmap_sources src,
+                                     enum ssg_backend backend, struct ssg_image *out[3])
 {
-    char set[40];
-    snprintf(set, sizeof set, "resolution=%d", res);
-    const char *sets[] = {set};
-    void *params = node_params(&ssg_node_lightmaps, sets, 1);
-    int f = ssg_lightmap_face_count(s);
+    char set[3][40];
+    snprintf(set[0], sizeof set[0], "resolution=%d", res);
+    snprintf(set[1], sizeof set[1], "own=%s", src.own ? "true" : "false");
+    snprintf(set[2], sizeof set[2], "environment=%d", src.environment);
+    const char *sets[] = {set[0], set[1], set[2]};
+    void *params = node_params(&ssg_node_lightmaps, sets, 3);
+    int f = ssg_lightmap_face_count(s, src);
     out[0] = ssg_image_create(res, res, f);
     out[1] = ssg_image_create(res, res, 3 * f);
     out[2] = ssg_image_create(res, res, 3 * f);
     enum ssg_err e = node_run_scene(&ssg_node_lightmaps, s, frame, params, NULL, out, backend);
     free(params);
     return e;
+}
+
+/* The maps of the scene's own lights alone. */
+static inline enum ssg_err maps_of(const struct ssg_scene *s, const struct ssg_frame *frame,
+                                   int res, enum ssg_backend backend, struct ssg_image *out[3])
+{
+    return maps_with(s, frame, res, SSG_LIGHTMAP_OWN_ONLY, backend, out);
 }
 
 static inline void images_free(struct ssg_image **im, int n)

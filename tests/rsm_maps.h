@@ -18,7 +18,7 @@ struct maps {
 static inline struct maps maps_make(const struct ssg_scene *s, int res)
 {
     struct maps m = {.res = res};
-    m.faces = ssg_lightmap_faces(s, m.face, SSG_LIGHTMAP_FACES_MAX);
+    m.faces = ssg_lightmap_faces(s, SSG_LIGHTMAP_OWN_ONLY, m.face, SSG_LIGHTMAP_FACES_MAX);
     m.depth = ssg_image_create(res, res, m.faces);
     m.normal = ssg_image_create(res, res, 3 * m.faces);
     m.flux = ssg_image_create(res, res, 3 * m.faces);

@@ -282,6 +282,17 @@ static void test_far_field(void)
     double env1 = 1.0 * 1.0 * 0.3; /* q = min(1, 0.9 / 0.5) = 1, ao 1 */
     CHECK_NEAR(ssg_image_plane(r.out[0], 1)[1],
                0.4 + env1 + 0.9 * 0.0 + 0.8 * (0.9 - 0.5) * env1 + 0.9 * 1.0 * 0.8 * 0.1, 1e-6);
+    /* environment_albedo: the environment is a white receiver's E / pi, times the albedo
+       here (0.5 and 0.8), with and without a far field */
+    p.environment_albedo = 1;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    double env_a = 0.8 * 0.3;
+    CHECK_NEAR(ssg_image_plane(r.out[0], 1)[1],
+               0.4 + env_a + 0.8 * (0.9 - 0.5) * env_a + 0.9 * 1.0 * 0.8 * 0.1, 1e-6);
+    r.in[SSG_COMBINE_IN_FAR_VISIBILITY] = NULL;
+    CHECK_EQ(run_combine(&r, &p), SSG_OK);
+    CHECK_NEAR(ssg_image_plane(r.out[0], 0)[0],
+               0.4 + 0.6 * 0.5 * 0.5 * 0.3 + 0.6 * 0.05 + 0.6 * 0.5 * 0.5 * 0.2, 1e-6);
     struct ssg_image *all[] = {direct, albedo, env, bounce, mod, far, ao, irr, r.out[0]};
     for (int i = 0; i < SSG_COUNT(all); i++)
         ssg_image_destroy(&all[i]);

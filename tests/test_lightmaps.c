@@ -10,6 +10,11 @@
  *   intensity gives black flux and no NaN;
  * - resolution 0 and 65536 are refused, so are more faces than the images hold and maps
  *   over the memory limit (check_scene);
+ * - the environment as N directional lights (own=false): a plane under a white sky
+ *   reflects albedo x sum E_i |cos| x its area (both sides), which tends to albedo x 2 pi x
+ *   area; the faces follow the own lights' and carry lightprobe's uniform directions; a
+ *   scene without environment light leaves them empty; own=false with no environment
+ *   lights is refused;
  * - the maps do not depend on the thread count. */
 #include <math.h>
 #include <omp.h>
@@ -17,6 +22,7 @@
 
 #include "check.h"
 #include "light_maps.h"
+#include "lightprobe/lightprobe.h"
 
 static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0};
 
@@ -93,7 +99,7 @@ static void test_closed_box(void)
     CHECK_EQ(maps_of(s, &FRAME, res, SSG_BACKEND_CPU, m), SSG_OK);
     CHECK_EQ(m[0]->channels, 6);
     struct ssg_lightmap_face faces[6];
-    CHECK_EQ(ssg_lightmap_faces(s, faces, 6), 6);
+    CHECK_EQ(ssg_lightmap_faces(s, SSG_LIGHTMAP_OWN_ONLY, faces, 6), 6);
     double flux = 0, worst = 0;
     int holes = 0;
     for (int f = 0; f < 6; f++)
@@ -148,6 +154,74 @@ static void test_no_lights_and_dark_light(void)
     images_free(m, 3);
     ssg_scene_destroy(&s);
     ssg_scene_destroy(&d);
+}
+
+/* A 2 x 2 plane at y = 0 under a white sky (radiance 1), no own lights, as 64 environment
+   lights at 128 texels. */
+static void test_environment(void)
+{
+    const char *sky = "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                      "m = material(albedo=[0.5, 0.5, 0.5])\n"
+                      "plane(material=m, center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n"
+                      "directional_light(direction=[0, -1, 0], intensity=1)\n";
+    char text[400];
+    snprintf(text, sizeof text, "%senvironment(color=[1, 1, 1])\n", sky);
+    struct ssg_scene *s = scene_from_text("lightmaps_sky", text);
+    struct ssg_scene *dark = scene_from_text("lightmaps_nosky", sky);
+    if (!s || !dark)
+        return;
+    enum { N = 64, RES = 128 };
+    const struct ssg_lightmap_sources env = {0, N}, both = {1, N};
+    struct ssg_lightmap_face faces[N + 1];
+    CHECK_EQ(ssg_lightmap_face_count(s, both), N + 1);
+    CHECK_EQ(ssg_lightmap_faces(s, both, faces, N + 1), N + 1);
+    float dirs[3 * N];
+    ssg_lightmap_env_directions(N, dirs);
+    CHECK_EQ(faces[0].light, 0);
+    int bad = 0;
+    for (int k = 0; k < N; k++) { /* face k + 1 looks along -d_k, light k */
+        const struct ssg_lightmap_face *f = &faces[k + 1];
+        bad += ssg_lightmap_face_env(f) != k || !f->ortho;
+        for (int c = 0; c < 3; c++)
+            bad += fabsf(f->axis[c] + dirs[3 * k + c]) > 1e-6f;
+    }
+    CHECK_EQ(bad, 0);
+    double e[3 * N];
+    CHECK_EQ(ssg_lightprobe_regions(s->env, dirs, N, e), SSG_OK);
+    double want = 0, total = 0;
+    for (int k = 0; k < N; k++) /* the plane's area 4, both sides, albedo 0.5 */
+        want += 0.5 * 4.0 * e[3 * k] * fabs(dirs[3 * k + 1]), total += e[3 * k];
+    struct ssg_image *m[3];
+    CHECK_EQ(maps_with(s, &FRAME, RES, env, SSG_BACKEND_CPU, m), SSG_OK);
+    CHECK_EQ(m[0]->channels, N);
+    double flux = 0;
+    for (size_t i = 0; i < (size_t)N * RES * RES; i++)
+        flux += m[2]->data[3 * (i / ((size_t)RES * RES)) * RES * RES + i % ((size_t)RES * RES)];
+    fprintf(stderr, "plane under a white sky as %d lights: flux %.4f, sum albedo E |cos| area "
+            "%.4f (x %.4f), albedo 2 pi area %.4f; the E_i sum to 4 pi x %.5f\n", N, flux,
+            want, flux / want, 0.5 * 2 * M_PI * 4, total / (4 * M_PI));
+    CHECK_NEAR(total / (4 * M_PI), 1.0, 1e-3);
+    CHECK_NEAR(flux / want, 1.0, 0.02); /* the texel centres quantise the plane's edges */
+    CHECK_NEAR(flux / (0.5 * 2 * M_PI * 4), 1.0, 0.05);
+    images_free(m, 3);
+    /* without environment light the environment's faces stay empty */
+    CHECK_EQ(maps_with(dark, &FRAME, 32, both, SSG_BACKEND_CPU, m), SSG_OK);
+    for (size_t i = 32 * 32; i < (size_t)(N + 1) * 32 * 32; i++)
+        bad += m[0]->data[i] != SSG_SHADOW_EMPTY;
+    for (size_t i = 3 * 32 * 32; i < 3 * (size_t)(N + 1) * 32 * 32; i++)
+        bad += m[2]->data[i] != 0.0f;
+    CHECK_EQ(bad, 0);
+    images_free(m, 3);
+    /* own=false, environment=0: nothing to map */
+    const char *none[] = {"own=false"};
+    void *params = node_params(&ssg_node_lightmaps, none, 1);
+    struct ssg_shape out[3];
+    char why[200];
+    CHECK_EQ(ssg_node_lightmaps.check(params, &FRAME, NULL, out, why, sizeof why), SSG_E_VALUE);
+    fprintf(stderr, "own=false environment=0: %s\n", why);
+    free(params);
+    ssg_scene_destroy(&s);
+    ssg_scene_destroy(&dark);
 }
 
 static void test_bounds(void)
@@ -216,6 +290,7 @@ int main(void)
     plane_under_sun("[0, -1, 0]");
     test_closed_box();
     test_no_lights_and_dark_light();
+    test_environment();
     test_bounds();
     test_threads();
     return check_report();

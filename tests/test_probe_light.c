@@ -70,6 +70,9 @@ static struct ssg_image *maps_of(const struct ssg_scene *s, const struct ssg_ima
 }
 
 /* probe_light's out (0) and visibility (1) into res[2]. */
+/* 1: light() leaves albedo unconnected (out is a white receiver's E / pi). */
+static int white_receiver;
+
 static void light(const struct ssg_scene *s, const struct gbuf *g,
                   const struct ssg_image *lights, const struct ssg_image *maps,
                   const char *const *sets, int set_count, enum ssg_backend backend,
@@ -79,7 +82,8 @@ static void light(const struct ssg_scene *s, const struct gbuf *g,
     res[1] = ssg_image_create(W, H, 1);
     const struct ssg_image *in[5] = {g->out[SSG_GBUFFER_OUT_POSITION],
                                      g->out[SSG_GBUFFER_OUT_NORMAL],
-                                     g->out[SSG_GBUFFER_OUT_ALBEDO], lights, maps};
+                                     white_receiver ? NULL : g->out[SSG_GBUFFER_OUT_ALBEDO],
+                                     lights, maps};
     void *params = node_params(&ssg_node_probe_light, sets, set_count);
     CHECK_EQ(node_run_scene(&ssg_node_probe_light, s, &FRAME, params, in, res, backend),
              SSG_OK);
@@ -142,8 +146,24 @@ static void test_unshadowed_sum(void)
         }
     fprintf(stderr, "no shadow maps: largest relative error %.3g\n", worst);
     CHECK(worst < 1e-5);
+    /* Without albedo: the same light on a white receiver, out x albedo = the out above
+       (the same float products but for the albedo's place in them). */
+    struct ssg_image *w[2];
+    white_receiver = 1;
+    light(s, &g, l, NULL, NULL, 0, SSG_BACKEND_CPU, w);
+    white_receiver = 0;
+    double off = 0;
+    for (size_t i = 0; i < (size_t)W * H; i++)
+        for (int c = 0; c < 3; c++) {
+            double a = ssg_image_plane(g.out[SSG_GBUFFER_OUT_ALBEDO], c)[i];
+            double e = fabs(a * ssg_image_plane(w[0], c)[i] - ssg_image_plane(r[0], c)[i]);
+            off = e > off ? e : off;
+        }
+    fprintf(stderr, "no albedo: albedo x out off by %.3g at most\n", off);
+    CHECK(off < 1e-6);
+    CHECK(memcmp(w[1]->data, r[1]->data, sizeof(float) * W * H) == 0);
     for (int i = 0; i < 2; i++)
-        ssg_image_destroy(&r[i]);
+        ssg_image_destroy(&r[i]), ssg_image_destroy(&w[i]);
     ssg_image_destroy(&l);
     gbuf_free(&g);
     ssg_scene_destroy(&s);
@@ -500,6 +520,9 @@ static void test_parity(void)
     const char *hard[] = {"softness=0"};
     parity_case(s, &g, l, m, NULL, 0, "soft");
     parity_case(s, &g, l, m, hard, 1, "hard");
+    white_receiver = 1; /* the shader's unbound albedo */
+    parity_case(s, &g, l, m, NULL, 0, "white");
+    white_receiver = 0;
     ssg_image_destroy(&m);
     ssg_image_destroy(&l);
     gbuf_free(&g);

@@ -361,6 +361,31 @@ static void test_refusals(void)
     CHECK_EQ(node_run_scene(&ssg_node_rsm, point, &frame, params, in, out, SSG_BACKEND_CPU),
              SSG_E_SCENE);
     free(params);
+    /* The sun's one face read as environment maps: 2 environment lights need 2 faces (own
+       false), and with own lights 1 + 2; environment 1 alone matches the face count. */
+    in[2] = m.depth, in[3] = m.normal, in[4] = m.flux;
+    const char *env2[] = {"own=false", "environment=2"}, *both[] = {"environment=2"};
+    const char *env1[] = {"own=false", "environment=1"};
+    const struct { const char *const *sets; int n; enum ssg_err want; } cases[] = {
+        {env2, 2, SSG_E_SCENE}, {both, 1, SSG_E_SCENE}, {env1, 2, SSG_OK}};
+    for (int i = 0; i < 3; i++) {
+        params = node_params(&ssg_node_rsm, cases[i].sets, cases[i].n);
+        CHECK_EQ(node_run_scene(&ssg_node_rsm, sun, &frame, params, in, out, SSG_BACKEND_CPU),
+                 cases[i].want);
+        free(params);
+    }
+    /* nothing to gather from */
+    const char *none[] = {"own=false"};
+    params = node_params(&ssg_node_rsm, none, 1);
+    struct ssg_shape shapes[SSG_RSM_INPUTS], o[1];
+    for (int i = 0; i < SSG_RSM_INPUTS; i++)
+        shapes[i] = in[i] ? (struct ssg_shape){in[i]->width, in[i]->height, in[i]->channels,
+                                               0}
+                          : (struct ssg_shape){0};
+    char why[200];
+    CHECK_EQ(ssg_node_rsm.check(params, &frame, shapes, o, why, sizeof why), SSG_E_VALUE);
+    fprintf(stderr, "rsm own=false environment=0: %s\n", why);
+    free(params);
     ssg_image_destroy(&out[0]);
     gbuf_free(&g);
     maps_free(&m);

@@ -51,6 +51,10 @@ SSG_PORT_ENUM(ssg_combine_output, SSG_COMBINE_OUT, SSG_COMBINE_OUTPUTS);
       "albedo x the pixel's own radiance (its environment part alone when irradiance is "  \
       "connected)",                                                                        \
       .def = 1)                                                                            \
+    P(BOOL, environment_albedo,                                                            \
+      "environment is E / pi of a white receiver (probe_light without albedo, computed "  \
+      "at low resolution and upsampled): it is multiplied by the albedo here",             \
+      .def = 0)                                                                            \
     P(BOOL, darken_direct,                                                                 \
       "the modulation factor darkens direct light (false for direct light that is "        \
       "already shadowed, direct_light.out)",                                               \

@@ -14,7 +14,7 @@ struct combine_job {
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
     const float *far;                   /* far_visibility, NULL = none */
-    int darken_indirect, far_bounce, darken_direct;
+    int darken_indirect, far_bounce, darken_direct, environment_albedo;
     float *out[3];
     float k[3];                         /* ambient * ambient_color (prepare) */
     int width;
@@ -26,11 +26,11 @@ static void combine_channel(const struct combine_job *j, int c, size_t begin, si
 {
     const float *d = j->direct[c], *a = j->albedo[c], *ao = j->ao, *ind = j->indirect[c];
     const float *env = j->environment[c], *m = j->modulation[c], *irr = j->irradiance[c];
-    const int darken = j->darken_indirect, dd = j->darken_direct;
+    const int darken = j->darken_indirect, dd = j->darken_direct, ea = j->environment_albedo;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
         float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f;
-        float ambient = (env ? env[i] : 0.0f) + k * a[i];
+        float ambient = (env ? env[i] * (ea ? a[i] : 1.0f) : 0.0f) + k * a[i];
         float bounce = ind ? ind[i] : 0.0f;
         float far_light = irr ? irr[i] * a[i] : 0.0f;
         o[i] = (dd ? mi : 1.0f) * d[i] + mi * occ * ambient + (darken ? mi : 1.0f) * bounce
@@ -47,12 +47,13 @@ static void combine_channel_far(const struct combine_job *j, int c, size_t begin
     const float *irr = j->irradiance[c];
     const int darken = j->darken_indirect, dd = j->darken_direct;
     const float fb = j->far_bounce ? 1.0f : 0.0f;
+    const int ea = j->environment_albedo;
     float *o = j->out[c], k = j->k[c];
     for (size_t i = begin; i < end; i++) {
         float mi = m ? m[i] : 1.0f, occ = ao ? ao[i] : 1.0f, v = far[i];
         float q = v > 0.0f ? mi / v : 1.0f;
         q = q < 1.0f ? q : 1.0f;
-        float ambient = (env ? env[i] : 0.0f) + k * a[i];
+        float ambient = (env ? env[i] * (ea ? a[i] : 1.0f) : 0.0f) + k * a[i];
         float bounce = ind ? ind[i] : 0.0f;
         float lit_env = q * occ * ambient;
         float own = (dd ? mi : 1.0f) * d[i] + lit_env;
@@ -90,7 +91,8 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     const struct ssg_image *far = io->in[SSG_COMBINE_IN_FAR_VISIBILITY];
     struct combine_job job = {.ao = ao ? ao->data : NULL, .far = far ? far->data : NULL,
                               .width = out->width, .darken_indirect = p->darken_indirect,
-                              .far_bounce = p->far_bounce, .darken_direct = p->darken_direct};
+                              .far_bounce = p->far_bounce, .darken_direct = p->darken_direct,
+                              .environment_albedo = p->environment_albedo};
     for (int c = 0; c < 3; c++) {
         job.direct[c] = ssg_image_plane(direct, c);
         job.albedo[c] = ssg_image_plane(albedo, c);

@@ -1,6 +1,7 @@
 /* lightmap.c - the faces of lightmap.h, built from the scene's lights alone. */
 #include "scene/scene.h"
 #include "common/lightmap.h"
+#include "lightprobe/lightprobe.h"
 
 /* The cube's faces: look axis, then u and v, with u x v = axis. */
 static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
@@ -9,7 +10,8 @@ static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
     {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
 };
 
-int ssg_lightmap_face_count(const struct ssg_scene *scene)
+/* Faces of the scene's own lights alone: at least 1. */
+static int own_face_count(const struct ssg_scene *scene)
 {
     int n = 0;
     for (int i = 0; scene && i < scene->light_count; i++)
@@ -17,10 +19,20 @@ int ssg_lightmap_face_count(const struct ssg_scene *scene)
     return n > 0 ? n : 1;
 }
 
-static void directional_face(const struct ssg_bounding_sphere *sphere,
-                             const struct ssg_light *light, struct ssg_lightmap_face *f)
+int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_sources src)
 {
-    float l[3] = {-light->direction[0], -light->direction[1], -light->direction[2]};
+    return (src.own ? own_face_count(scene) : 0) + src.environment;
+}
+
+void ssg_lightmap_env_directions(int count, float *dirs)
+{
+    ssg_lightprobe_directions(NULL, SSG_LIGHTPROBE_UNIFORM, count, dirs);
+}
+
+/* An orthographic face over the bounding sphere, looking along -l (l towards the light). */
+static void directional_face(const struct ssg_bounding_sphere *sphere, const float l[3],
+                             struct ssg_lightmap_face *f)
+{
     struct ssg_shadow_frame frame = ssg_shadow_frame_make(sphere, l);
     f->ortho = 1;
     f->half = frame.radius;
@@ -44,31 +56,48 @@ static void cube_face(const struct ssg_light *light, int side, struct ssg_lightm
     }
 }
 
-int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_face *faces,
-                       int max)
+/* The own lights' faces into faces[0 ..]; returns how many. */
+static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sphere *sphere,
+                     struct ssg_lightmap_face *faces)
 {
-    int count = ssg_lightmap_face_count(scene);
-    if (count > max)
-        return -1;
     if (!scene || scene->light_count == 0) {
         faces[0] = (struct ssg_lightmap_face){.light = -1, .ortho = 1, .half = 1.0f,
                                               .u = {1, 0, 0}, .v = {0, 1, 0},
                                               .axis = {0, 0, 1}};
         return 1;
     }
-    struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(scene);
     int n = 0;
     for (int i = 0; i < scene->light_count; i++) {
         const struct ssg_light *light = &scene->lights[i];
         if (light->kind == SSG_LIGHT_DIRECTIONAL) {
+            float l[3] = {-light->direction[0], -light->direction[1], -light->direction[2]};
             faces[n] = (struct ssg_lightmap_face){.light = i};
-            directional_face(&sphere, light, &faces[n++]);
+            directional_face(sphere, l, &faces[n++]);
             continue;
         }
         for (int side = 0; side < SSG_LIGHTMAP_CUBE_FACES; side++) {
             faces[n] = (struct ssg_lightmap_face){.light = i};
             cube_face(light, side, &faces[n++]);
         }
+    }
+    return n;
+}
+
+int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
+                       struct ssg_lightmap_face *faces, int max)
+{
+    int count = ssg_lightmap_face_count(scene, src);
+    if (count > max || src.environment < 0 || src.environment > SSG_LIGHTMAP_ENV_MAX)
+        return -1;
+    struct ssg_bounding_sphere sphere = {{0, 0, 0}, 1.0f};
+    if (scene)
+        sphere = ssg_scene_bounding_sphere(scene);
+    int n = src.own ? own_faces(scene, &sphere, faces) : 0;
+    float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
+    ssg_lightmap_env_directions(src.environment, dirs);
+    for (int k = 0; k < src.environment; k++) {
+        faces[n] = (struct ssg_lightmap_face){.light = SSG_LIGHTMAP_ENV_LIGHT(k)};
+        directional_face(&sphere, dirs + 3 * k, &faces[n++]);
     }
     return n;
 }

@@ -49,7 +49,8 @@ enum { SSG_LIGHTMAP_CUBE_FACES = 6 };
 enum { SSG_LIGHTMAP_FACES_MAX = 682 };
 
 struct ssg_lightmap_face {
-    int light;        /* index into scene->lights; -1 for the empty face of a scene without */
+    int light;        /* index into scene->lights; -1 for the empty face of a scene without;
+                         SSG_LIGHTMAP_ENV_LIGHT(k) for environment light k */
     int ortho;        /* 1: a directional light's orthographic map; 0: a cube face */
     float origin[3];  /* orthographic: the centre of the map's plane; cube: the light */
     float u[3], v[3]; /* the face's image axes (a along u, b along v) */
@@ -58,13 +59,36 @@ struct ssg_lightmap_face {
     float half;       /* orthographic: half the map's side, world units; cube: 1 */
 };
 
-/* Faces the scene's lights need: 1 a directional light, 6 a point light, at least 1. */
-int ssg_lightmap_face_count(const struct ssg_scene *scene);
+/* Which lights a set of maps holds: the scene's own (point and directional) lights, and
+   the environment as this many directional lights (0: none). At least one of the two. */
+struct ssg_lightmap_sources {
+    int own;
+    int environment;
+};
+#define SSG_LIGHTMAP_OWN_ONLY ((struct ssg_lightmap_sources){1, 0})
+/* Most environment lights a set of maps may hold. */
+enum { SSG_LIGHTMAP_ENV_MAX = 512 };
 
-/* The faces of every light, in order, into faces[0 .. count - 1]; returns the count (as
-   ssg_lightmap_face_count), or -1 when it is over max (nothing meaningful written). */
-int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_face *faces,
-                       int max);
+#define SSG_LIGHTMAP_ENV_LIGHT(k) (-2 - (k))
+/* The environment light a face maps (0 .. N - 1), or -1 for an own light's or empty face. */
+static inline int ssg_lightmap_face_env(const struct ssg_lightmap_face *f)
+{
+    return f->light <= -2 ? -2 - f->light : -1;
+}
+
+/* Faces the sources need: 1 a directional light, 6 a point light, 1 an environment light;
+   with own lights, at least 1 (the empty face of a scene without). */
+int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_sources src);
+
+/* The faces of every light, own lights first in scene order, then the environment's, into
+   faces[0 .. count - 1]; returns the count (as ssg_lightmap_face_count), or -1 when it is
+   over max (nothing meaningful written). */
+int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
+                       struct ssg_lightmap_face *faces, int max);
+
+/* The unit directions towards the N environment lights (3 N floats): the spherical
+   Fibonacci set of lightprobe's uniform sampling. */
+void ssg_lightmap_env_directions(int count, float *dirs);
 
 /* Where world point p falls on face f of resolution res: texel coordinates (x, y), not
    floored, inside the map for 0 <= x, y < res, and its depth z. Returns 0 when p is not

@@ -33,7 +33,7 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
                                 size_t why_len)
 {
     (void)params, (void)out;
-    int need = ssg_lightmap_face_count(scene), have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
+    int need = ssg_lightmap_face_count(scene, SSG_LIGHTMAP_OWN_ONLY), have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
     if (have != need) {
         snprintf(why, why_len, "maps has %d faces but the scene's lights need %d (6 a point "
                  "light, 1 a directional light): connect the depth output of a lightmaps "
@@ -47,7 +47,7 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
 static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_consts *c)
 {
     c->lights = 0;
-    for (int f = 0; f < ssg_lightmap_face_count(s); f++) {
+    for (int f = 0; f < ssg_lightmap_face_count(s, SSG_LIGHTMAP_OWN_ONLY); f++) {
         const struct ssg_lightmap_face *face = &c->faces[f];
         if (face->light < 0 || (f > 0 && c->faces[f - 1].light == face->light))
             continue;
@@ -73,7 +73,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (!ctx->scene)
         return ssg_node_fail(ctx, SSG_E_SCENE, "needs a scene");
     const struct ssg_shape *maps = &ctx->in_shape[SSG_DIRECT_LIGHT_IN_MAPS];
-    int need = ssg_lightmap_face_count(ctx->scene);
+    int need = ssg_lightmap_face_count(ctx->scene, SSG_LIGHTMAP_OWN_ONLY);
     if (maps->channels != need) /* a graph refuses it first (check_scene) */
         return ssg_node_fail(ctx, SSG_E_SCENE, "maps has %d faces but the scene's lights "
                              "need %d: connect the depth output of a lightmaps node of the "
@@ -81,7 +81,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     c->res = maps->width;
     c->face_count = need;
-    if (ssg_lightmap_faces(ctx->scene, c->faces, SSG_LIGHTMAP_FACES_MAX) < 0)
+    if (ssg_lightmap_faces(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, c->faces, SSG_LIGHTMAP_FACES_MAX) < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);

@@ -25,7 +25,7 @@ float median(inout float v[MAX_BLOCK], int n)
             v[k] = v[k - 1];
         v[k] = t;
     }
-    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    return v[(n - 1) / 2]; // the lower middle one for an even count, as the CPU
 }
 
 ivec2 representative(ivec2 b)

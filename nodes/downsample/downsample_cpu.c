@@ -24,8 +24,10 @@ struct job {
     int ow, oh; /* output size */
 };
 
-/* The median of n > 0 values (sorted in place): the middle one, or the mean of the two
-   middle ones for an even count. */
+/* The median of n > 0 values (sorted in place): the middle one, or for an even count the
+   lower (nearer) of the two middle ones, a depth the block has: the mean of the two would
+   lie exactly between them, and a block split two and two by an edge would then choose its
+   side by a rounding in the last bit, differently on each backend. */
 static float median(float *v, int n)
 {
     for (int i = 1; i < n; i++) {
@@ -35,7 +37,7 @@ static float median(float *v, int n)
             v[k] = v[k - 1];
         v[k] = t;
     }
-    return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
+    return v[(n - 1) / 2];
 }
 
 /* Input pixel index of block (bx, by)'s representative. */

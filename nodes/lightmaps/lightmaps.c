@@ -1,17 +1,30 @@
 /* lightmaps.c - the `lightmaps` node's descriptor, checks and prepare: shadow and reflective
  * shadow maps of the scene's own lights. Method and conventions: README.md. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "graph/image.h"
 #include "scene/scene.h"
 #include "lightmaps.h"
+#include "lightprobe/lightprobe.h"
+
+/* The lights the parameters ask for. */
+static struct ssg_lightmap_sources sources(const struct ssg_lightmaps_params *p)
+{
+    return (struct ssg_lightmap_sources){p->own, p->environment};
+}
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
     const struct ssg_lightmaps_params *p = params;
-    (void)frame, (void)in, (void)why, (void)why_len;
+    (void)frame, (void)in;
+    if (!p->own && p->environment == 0) {
+        snprintf(why, why_len, "own=false and environment=0 leave no light to map: keep the "
+                 "own lights or give the environment a light count");
+        return SSG_E_VALUE;
+    }
     static const int per_face[SSG_LIGHTMAPS_OUTPUTS] = {1, 3, 3};
     for (int i = 0; i < SSG_LIGHTMAPS_OUTPUTS; i++)
         out[i] = (struct ssg_shape){p->resolution, p->resolution, per_face[i],
@@ -26,7 +39,7 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
 {
     const struct ssg_lightmaps_params *p = params;
     (void)in;
-    long long f = ssg_lightmap_face_count(scene), r = p->resolution;
+    long long f = ssg_lightmap_face_count(scene, sources(p)), r = p->resolution;
     if (f > SSG_LIGHTMAP_FACES_MAX) {
         snprintf(why, why_len, "the scene's lights need %lld map faces (6 a point light, 1 a "
                  "directional light), at most %d fit the normal and flux images' %d channels",
@@ -48,9 +61,10 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
 }
 
 /* The flux factor of each face (lightmap.h): orthographic E (2 half / R)^2, cube I (the
-   texel's solid angle is applied per texel). */
+   texel's solid angle is applied per texel). env_e: the environment lights' irradiances
+   (3 a light), NULL without environment light. */
 static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_consts *c,
-                      int f, float flux[3])
+                      int f, const double *env_e, float flux[3])
 {
     const struct ssg_lightmap_face *face = &c->faces[f];
     float area = 1.0f;
@@ -58,10 +72,39 @@ static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_cons
         float side = 2.0f * face->half / (float)c->res;
         area = side * side;
     }
-    for (int k = 0; k < 3; k++)
-        flux[k] = face->light < 0 ? 0.0f
-                                  : s->lights[face->light].color[k] *
-                                        s->lights[face->light].intensity * area;
+    int env = ssg_lightmap_face_env(face);
+    for (int k = 0; k < 3; k++) {
+        float e = 0.0f;
+        if (env >= 0)
+            e = env_e ? (float)env_e[3 * env + k] : 0.0f;
+        else if (face->light >= 0)
+            e = s->lights[face->light].color[k] * s->lights[face->light].intensity;
+        flux[k] = e * area;
+    }
+}
+
+/* The environment lights' irradiances (lightprobe's regions for the uniform directions),
+   3 a light, into *e (malloc'd); *e stays NULL when there are none or the scene has no
+   environment light (its faces then stay empty). */
+static enum ssg_err env_irradiance(const struct ssg_scene *s, int count, double **e)
+{
+    *e = NULL;
+    if (count == 0 || !s->env || !s->env->has_light)
+        return SSG_OK;
+    float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
+    ssg_lightmap_env_directions(count, dirs);
+    *e = malloc(sizeof(double) * 3 * (size_t)count);
+    enum ssg_err err = *e ? ssg_lightprobe_regions(s->env, dirs, count, *e) : SSG_E_NOMEM;
+    if (err) {
+        free(*e);
+        *e = NULL;
+    }
+    return err;
+}
+
+static int has_flux(const float flux[3])
+{
+    return flux[0] > 0.0f || flux[1] > 0.0f || flux[2] > 0.0f;
 }
 
 /* The faces as lightmaps.glsl reads them (lightmaps.h). */
@@ -74,7 +117,10 @@ static void pack_faces(struct ssg_lightmaps_consts *c)
             o[k] = face->origin[k], o[3 + k] = face->u[k], o[6 + k] = face->v[k];
             o[9 + k] = face->axis[k], o[14 + k] = c->flux[i][k];
         }
-        o[12] = face->half, o[13] = (float)face->ortho, o[17] = face->light >= 0;
+        /* an own light's map is drawn even when it is dark (its shadows still count); an
+           environment light's only when it carries light */
+        int drawn = face->light >= 0 || (ssg_lightmap_face_env(face) >= 0 && has_flux(c->flux[i]));
+        o[12] = face->half, o[13] = (float)face->ortho, o[17] = (float)drawn;
         o[18] = o[19] = 0.0f;
     }
 }
@@ -86,21 +132,26 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (!ctx->scene)
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
     c->res = p->resolution;
-    c->count = ssg_lightmap_faces(ctx->scene, c->faces, SSG_LIGHTMAP_FACES_MAX);
+    c->count = ssg_lightmap_faces(ctx->scene, sources(p), c->faces, SSG_LIGHTMAP_FACES_MAX);
     if (c->count < 0 || c->count != ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need %d map faces, the "
-                             "depth image bound has %d channels (a graph sizes it itself)", ssg_lightmap_face_count(ctx->scene),
+                             "depth image bound has %d channels (a graph sizes it itself)",
+                             ssg_lightmap_face_count(ctx->scene, sources(p)),
                              ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels);
+    double *env_e;
+    if (env_irradiance(ctx->scene, p->environment, &env_e))
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the environment's lights");
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
     c->near_z = SSG_LIGHTMAPS_NEAR * sphere.radius;
     c->far_z = 0.0f;
     for (int f = 0; f < c->count; f++) {
-        face_flux(ctx->scene, c, f, c->flux[f]);
+        face_flux(ctx->scene, c, f, env_e, c->flux[f]);
         const float *o = c->faces[f].origin;
         float d[3] = {o[0] - sphere.centre[0], o[1] - sphere.centre[1], o[2] - sphere.centre[2]};
         float far = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + sphere.radius;
         c->far_z = far * 1.01f > c->far_z ? far * 1.01f : c->far_z;
     }
+    free(env_e);
     pack_faces(c);
     return SSG_OK;
 }

@@ -30,7 +30,14 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "side of every face (a point light has six, a directional light one); memory 7 x "   \
       "faces x resolution^2 floats",                                                       \
       .def = 512, .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX,              \
-      .unit = "texels")
+      .unit = "texels")                                                                    \
+    P(BOOL, own, "the scene's own point and directional lights (their faces first)",        \
+      .def = 1, .host_only = 1)                                                            \
+    P(INT, environment,                                                                    \
+      "the scene's environment as this many directional lights too (lightprobe's "        \
+      "uniform directions, each its share of the probe; 0 = none), so that rsm bounces "   \
+      "the sky or probe; an rsm reading these maps needs the same own and environment",   \
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
 
 /* Floats a face takes in the GL shader's storage buffer (lightmaps.glsl's FACE). */

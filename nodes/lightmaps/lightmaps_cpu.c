@@ -41,7 +41,7 @@ struct job {
     int32_t *sx, *sy;    /* per face, per vertex: snapped texel coordinates, 1/SUB */
     uint8_t *ok;         /* per face, per vertex: clip outcode, 0 = the fast path */
     int32_t *ids;        /* per face, per texel: global triangle number, -1 = none */
-    int strips;          /* strips a face */
+    int rows, strips;    /* rows a strip (STRIP or more), strips a face */
 };
 
 /* Face space of world point p: du, dv along u, v, z along the axis. */
@@ -451,15 +451,15 @@ static void strips(void *user, int i0, int i1)
     const struct job *j = user;
     const int res = j->c->res;
     for (int i = i0; i < i1; i++) {
-        int fi = i / j->strips, y0 = (i % j->strips) * STRIP;
+        int fi = i / j->strips, y0 = (i % j->strips) * j->rows;
         struct strip s = {ssg_image_plane(j->io->out[SSG_LIGHTMAPS_OUT_DEPTH], fi) +
                               (size_t)y0 * res,
                           j->ids + ((size_t)fi * res + y0) * res, res, y0,
-                          y0 + STRIP < res ? y0 + STRIP : res};
+                          y0 + j->rows < res ? y0 + j->rows : res};
         for (size_t k = 0; k < (size_t)(s.y1 - y0) * res; k++)
             s.depth[k] = SSG_SHADOW_EMPTY, s.ids[k] = -1;
-        if (j->c->faces[fi].light >= 0)
-            draw_strip(j, fi, &s);
+        if (j->c->face_floats[(size_t)fi * SSG_LIGHTMAPS_FACE_FLOATS + 17] != 0.0f)
+            draw_strip(j, fi, &s); /* a face with a light (lightmaps.h) */
         resolve_strip(j, fi, &s);
     }
 }
@@ -503,7 +503,13 @@ enum ssg_err ssg_lightmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *c
     j.ids = (int32_t *)mem;
     j.sx = j.ids + texels, j.sy = j.sx + nv;
     j.ok = (uint8_t *)(j.sy + nv);
-    j.strips = (res + STRIP - 1) / STRIP;
+    /* Strips of STRIP rows keep both threads busy on a single face; with many faces a
+       strip per face (or a few) is enough, and each strip scans every triangle once. The
+       maps are the same for any strip height (triangles are drawn in one order). */
+    j.rows = STRIP;
+    while (j.rows < res && (long)faces * ((res + 2 * j.rows - 1) / (2 * j.rows)) >= 16)
+        j.rows *= 2;
+    j.strips = (res + j.rows - 1) / j.rows;
     ssg_parallel_rows(faces, 1, project_faces, &j);
     ssg_parallel_rows(faces * j.strips, 1, strips, &j);
     free(j.first_tri);

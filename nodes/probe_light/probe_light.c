@@ -30,8 +30,9 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     }
     if (!ssg_shape_same_size(&in[SSG_PROBE_LIGHT_IN_POSITION],
                              &in[SSG_PROBE_LIGHT_IN_NORMAL]) ||
-        !ssg_shape_same_size(&in[SSG_PROBE_LIGHT_IN_POSITION],
-                             &in[SSG_PROBE_LIGHT_IN_ALBEDO])) {
+        (in[SSG_PROBE_LIGHT_IN_ALBEDO].channels &&
+         !ssg_shape_same_size(&in[SSG_PROBE_LIGHT_IN_POSITION],
+                              &in[SSG_PROBE_LIGHT_IN_ALBEDO]))) {
         snprintf(why, why_len, "position, normal and albedo must have one size");
         return SSG_E_SIZE;
     }

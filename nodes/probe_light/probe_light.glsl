@@ -4,6 +4,7 @@
 // against the light's map layer (visible), sums in the same order (`precise` keeps the
 // CPU's roundings).
 uniform sampler2DArray position, normal, albedo, lights, shadowmaps, frames;
+uniform bool albedo_bound; // unconnected: a white receiver's E / pi
 uniform bool shadowmaps_bound;
 layout(std430, binding = 0) readonly buffer Rotations { float cos_sin[]; };
 layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
@@ -149,7 +150,7 @@ void main()
         lum_all += w * luminance(e);
     }
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
-    precise vec3 out_rgb = ssg_load3(albedo, p) * 0.318309886183790671 * sum;
+    precise vec3 out_rgb = (albedo_bound ? ssg_load3(albedo, p) : vec3(1.0)) * 0.318309886183790671 * sum;
     SSG_STORE3(dst_out, p, bg ? vec3(0.0) : out_rgb);
     SSG_STORE1(dst_visibility, p, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
 }

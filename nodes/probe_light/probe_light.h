@@ -19,13 +19,16 @@ enum { SSG_PROBE_LIGHT_MAX_TILE = 16, SSG_PROBE_LIGHT_MAX_TAPS = 16 };
     X(SSG_PROBE_LIGHT_IN_NORMAL, "normal", SSG_T_VECTOR,                                   \
       "unit view-space normal, 0 = background (gbuffer)")                                  \
     X(SSG_PROBE_LIGHT_IN_ALBEDO, "albedo", SSG_T_COLOR,                                    \
-      "diffuse albedo, linear RGB (gbuffer)")                                              \
+      "diffuse albedo, linear RGB (gbuffer); unconnected: out is the light a white "       \
+      "receiver reflects, E / pi (for a low-resolution pass whose combine multiplies "     \
+      "the full-resolution albedo, combine environment_albedo)", .optional = 1)            \
     X(SSG_PROBE_LIGHT_IN_LIGHTS, "lights", SSG_T_LIGHTS, "light list (lightprobe)")        \
     X(SSG_PROBE_LIGHT_IN_SHADOWMAPS, "shadowmaps", SSG_T_SHADOWMAPS,                       \
       "one map per light (shadowmaps); unconnected: no shadows", .optional = 1)
 #define SSG_PROBE_LIGHT_OUT(X)                                                             \
     X(SSG_PROBE_LIGHT_OUT_OUT, "out", SSG_T_COLOR,                                         \
-      "albedo / pi * sum of shadowed Lambert light, linear RGB (like "                     \
+      "albedo / pi * sum of shadowed Lambert light (1 / pi without albedo), linear RGB "   \
+      "(like "                                                                             \
       "gbuffer.environment, with self-shadowing)")                                         \
     X(SSG_PROBE_LIGHT_OUT_VISIBILITY, "visibility", SSG_T_SCALAR,                          \
       "the lit fraction of the pixel's light (luminance-weighted), comparable with AO")

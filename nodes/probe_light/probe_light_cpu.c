@@ -255,9 +255,11 @@ store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *res
     float *out = j->io->out[0]->data, *vis = j->io->out[1]->data;
     for (int i = 0; i < len; i++) {
         int bg = k->nx[i] == 0.0f && k->ny[i] == 0.0f && k->nz[i] == 0.0f;
-        for (int c = 0; c < 3; c++)
+        for (int c = 0; c < 3; c++) /* no albedo: a white receiver's */
             out[c * plane + at + i] =
-                bg ? 0.0f : alb->data[c * plane + at + i] * (float)(1.0 / M_PI) * k->sum[c][i];
+                bg ? 0.0f
+                   : (alb ? alb->data[c * plane + at + i] : 1.0f) * (float)(1.0 / M_PI) *
+                         k->sum[c][i];
         vis[at + i] = bg || !(k->lum_all[i] > 0.0f) ? 1.0f : k->lum_lit[i] / k->lum_all[i];
     }
 }

@@ -11,8 +11,13 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    (void)params;
+    const struct ssg_rsm_params *p = params;
     (void)frame;
+    if (!p->own && p->environment == 0) {
+        snprintf(why, why_len, "own=false and environment=0 leave no map face to gather "
+                 "from: give the lightmaps node's own and environment values");
+        return SSG_E_VALUE;
+    }
     const struct ssg_shape *pos = &in[SSG_RSM_IN_POSITION];
     const struct ssg_shape *d = &in[SSG_RSM_IN_MAP_DEPTH], *n = &in[SSG_RSM_IN_MAP_NORMAL],
                            *f = &in[SSG_RSM_IN_MAP_FLUX];
@@ -87,14 +92,17 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);
     const struct ssg_shape *maps = &ctx->in_shape[SSG_RSM_IN_MAP_DEPTH];
-    int want = ssg_lightmap_faces(ctx->scene, c->face_s, SSG_LIGHTMAP_FACES_MAX);
+    struct ssg_lightmap_sources src = {p->own, p->environment};
+    int want = ssg_lightmap_faces(ctx->scene, src, c->face_s, SSG_LIGHTMAP_FACES_MAX);
     if (want < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     if (maps->channels != want)
-        return ssg_node_fail(ctx, SSG_E_SCENE, "the maps have %d faces but the scene's "
-                             "lights need %d: connect the lightmaps node of the same scene",
-                             maps->channels, want);
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the maps have %d faces but %s%s%d "
+                             "environment lights need %d: connect the lightmaps node of the "
+                             "same scene and give rsm its own and environment values",
+                             maps->channels, p->own ? "the scene's own lights" : "",
+                             p->own ? " and " : "", p->environment, want);
     c->faces = want;
     c->res = maps->width;
     c->cells = (c->res + p->cell - 1) / p->cell;

@@ -74,7 +74,13 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
     P(FLOAT, min_distance,                                                                 \
       "senders nearer than this give nothing, fading in smoothly up to twice it, so a "    \
       "screen-space pass can own the near field (weight 1 - fade); 0 = none excluded",     \
-      .def = 0, .min = 0, .max = 1e6, .unit = "world units")
+      .def = 0, .min = 0, .max = 1e6, .unit = "world units")                               \
+    P(BOOL, own, "the maps hold the scene's own lights (lightmaps' own, the same value)",  \
+      .def = 1, .host_only = 1)                                                            \
+    P(INT, environment,                                                                    \
+      "the maps hold this many environment lights (lightmaps' environment, the same "      \
+      "value)",                                                                            \
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_rsm_params, SSG_RSM_PARAMS);
 
 struct ssg_rsm_consts {
