@@ -351,6 +351,21 @@ static void test_determinism_and_seed(void)
     }
     CHECK_EQ(bad, 0);
     CHECK_EQ(dup, 0);
+    /* And they are the van der Corput set Phi_2(k), k = 0 .. 63, turned by the seeded
+       shift (halton_pattern.c): Phi_2 of 0 .. 2^6 - 1 is exactly {j / 64}, so every angle
+       is (j + w) / 64 of a turn with one w for all. Distinct unit angles alone hold for
+       any 64 indices (one index on, Phi_2(64) = 1/128 breaks the spacing). */
+    int off_grid = 0;
+    double w0 = 0;
+    for (int i = 0; i < 64; i++) {
+        double turn = atan2(a.pattern[64 + i], a.pattern[i]) / (2 * M_PI) * 64;
+        double w = turn - floor(turn);
+        if (i == 0)
+            w0 = w;
+        double dw = fabs(w - w0);
+        off_grid += fmin(dw, 1 - dw) > 1e-4;
+    }
+    CHECK_EQ(off_grid, 0);
     /* Through the public runner too: the outputs are the prepared bytes. */
     const char *sets[] = {"pattern=8"};
     struct ssg_outputs o1, o2;
