@@ -10,8 +10,7 @@
  * = 76.05 px) and the point P seen by the centre pixel (31, 31), whose ray is the view
  * axis: P = (0, 0, -5) on a plane facing the camera, normal +z, so the sample frame is
  * T = x, B = y, N = z (ssg_sampling_basis) and V = N. G-buffers are written from a depth
- * per pixel (position = depth times the pixel's ray, normal +z); only P's value is
- * checked. */
+ * per pixel (gbuf_from_depth, ssao_planes.h); only P's value is checked. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -23,25 +22,6 @@
 #include "ssao_planes.h"
 
 enum { SIDE = 63, CENTRE = 31, KERNEL = 4, STEPS = 3 };
-
-/* A G-buffer of the current W x H frame from depth(x, y) (pixel centres), all surface,
-   normal +z. */
-static struct gbuf from_depth(double (*depth)(int x, int y, int k), int k)
-{
-    struct gbuf g = {ssg_image_create(W, H, 3), ssg_image_create(W, H, 3),
-                     ssg_image_create(W, H, 1), calloc((size_t)W * H, sizeof(int))};
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            double dir[3], t = depth(x, y, k);
-            ray(x + 0.5, y + 0.5, dir);
-            size_t o = (size_t)y * W + (size_t)x;
-            for (int c = 0; c < 3; c++)
-                g.pos->data[(size_t)c * W * H + o] = (float)(t * dir[c]);
-            g.nrm->data[2 * (size_t)W * H + o] = 1.0f;
-            g.depth->data[o] = (float)t;
-        }
-    return g;
-}
 
 /* ssao's kernel: s_k = (0.7 cos a_k, 0.7 sin a_k, 0.5), a_k = k 45 degrees, so that the
    2 KERNEL places of the normal-free modes (each sample and its opposite) lie 45 degrees
@@ -90,7 +70,7 @@ static void test_ssao_each_sample(void)
     }
     static const char *const modes[] = {"mode=hemisphere", "mode=sphere", "mode=disc"};
     for (int k = 0; k < KERNEL; k++) {
-        struct gbuf g = from_depth(ssao_depth, k);
+        struct gbuf g = gbuf_from_depth(ssao_depth, k);
         for (int m = 0; m < 3; m++) {
             const char *sets[] = {modes[m], "radius=1", "bias=0.02", "range_check=none",
                                   "power=1"};
@@ -160,7 +140,7 @@ static void test_hbao_each_step(void)
         /* Within R at the far edge of the band: l = depth a_v / -cos e. */
         double ov = lround(hbao_row(k)) + 1, dq = 5.0 * ce / (ce + ov / fpx * RAMP_SIN);
         CHECK(dq * ov / fpx / ce < 0.98);
-        struct gbuf g = from_depth(hbao_depth, k);
+        struct gbuf g = gbuf_from_depth(hbao_depth, k);
         struct ssg_binding b[3] = {{"position", g.pos}, {"normal", g.nrm}, {"rotation", rot}};
         char steps[16];
         snprintf(steps, sizeof steps, "steps=%d", STEPS);

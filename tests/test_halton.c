@@ -26,6 +26,22 @@ static enum ssg_err run(const char *const *sets, int count, uint64_t seed,
     return e;
 }
 
+/* The node's descriptor, and in *p its default parameters with `set` applied (NULL:
+   none); NULL (a failed CHECK) when the node is missing. For the tests that call
+   prepare() themselves. */
+static const struct ssg_node_desc *defaults(struct ssg_halton_params *p, const char *set)
+{
+    const struct ssg_node_desc *d = ssg_node_find("halton", 6);
+    CHECK(d != NULL);
+    if (!d)
+        return NULL;
+    ssg_params_defaults(d->params, p);
+    struct ssg_diags diags = {0};
+    if (set)
+        CHECK_EQ(ssg_param_set_text(d->params, p, set, "<test>", "halton", &diags), SSG_OK);
+    return d;
+}
+
 static void test_radical_inverse(void)
 {
     /* Section 4.2's own example: 50 = 110010b -> 0.010011b = 0.296875, and its
@@ -232,12 +248,10 @@ static void test_fixed_values(void)
    sqrt(17/32), cos theta = sqrt(15/32), azimuth 2 pi 25/27. */
 static void test_frame_one(void)
 {
-    const struct ssg_node_desc *d = ssg_node_find("halton", 6);
-    CHECK(d != NULL);
+    struct ssg_halton_params p;
+    const struct ssg_node_desc *d = defaults(&p, NULL);
     if (!d)
         return;
-    struct ssg_halton_params p;
-    ssg_params_defaults(d->params, &p);
     struct ssg_diags diags = {0};
     struct ssg_frame f = frame_seed(1);
     struct ssg_node_ctx ctx = {.desc = d, .instance = "h", .frame = &f, .out_dir = "out",
@@ -314,15 +328,11 @@ static void test_direction_density(void)
 
 static void test_determinism_and_seed(void)
 {
-    const struct ssg_node_desc *d = ssg_node_find("halton", 6);
-    CHECK(d != NULL);
+    struct ssg_halton_params p;
+    const struct ssg_node_desc *d = defaults(&p, "pattern=8");
     if (!d)
         return;
-    struct ssg_halton_params p;
-    ssg_params_defaults(d->params, &p);
     struct ssg_diags diags = {0};
-    CHECK_EQ(ssg_param_set_text(d->params, &p, "pattern=8", "<test>", "halton", &diags),
-             SSG_OK);
     struct ssg_frame f1 = frame_seed(1), f2 = frame_seed(2);
     struct ssg_node_ctx ctx1 = {.desc = d, .instance = "h", .frame = &f1, .out_dir = "out",
                                 .diags = &diags};
