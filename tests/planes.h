@@ -157,7 +157,7 @@ static inline struct ssg_image *halton_rotation(void)
 }
 
 /* Counts pixels showing a surface whose value is not exactly 1. */
-static int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
+static inline int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
 {
     int n = 0;
     for (size_t i = 0; i < (size_t)W * H; i++)
@@ -165,8 +165,8 @@ static int count_not_one(const struct gbuf *g, const struct ssg_image *ao)
     return n;
 }
 
-static double mean_over(const struct ssg_image *ao, const int *which, int x0, int y0, int x1,
-                        int y1, int plane, int *count)
+static inline double mean_over(const struct ssg_image *ao, const int *which, int x0, int y0,
+                               int x1, int y1, int plane, int *count)
 {
     double sum = 0;
     *count = 0;

@@ -1,7 +1,8 @@
 /* ssao_planes.h - running the `ssao` node on the plane G-buffers of planes.h, shared by
  * test_ssao.c (the hemisphere mode) and test_ssao_modes.c (the normal-free sphere and disc
- * modes): its Halton kernel, one call of the node, and the bound on the depth lookup's
- * error that lets those tests claim exact answers. Header-only, like planes.h.
+ * modes) and test_ao_samples.c: its Halton kernel, one call of the node, a G-buffer
+ * written from a depth per pixel, and the bound on the depth lookup's error that lets
+ * those tests claim exact answers. Header-only, like planes.h.
  *
  * Why SSAO can be exactly 1 on an open plane: a sample S above the plane lies between the
  * camera and the plane along its own ray, so the true depth there is >= -S.z. The node
@@ -12,6 +13,7 @@
 #define SSG_TEST_SSAO_PLANES_H
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "check.h"
 #include "graph/node.h"
@@ -75,6 +77,27 @@ static inline double depth_bound(const struct scene *s)
             }
         }
     return bound;
+}
+
+/* A G-buffer of the current W x H frame written from a depth per pixel centre,
+   depth(x, y, arg): position = depth times the pixel's ray, normal +z, every pixel a
+   surface of plane 0. For scenes no set of planes makes (a step, an occluder with a
+   hole); release() frees it. */
+static inline struct gbuf gbuf_from_depth(double (*depth)(int x, int y, int arg), int arg)
+{
+    struct gbuf g = {ssg_image_create(W, H, 3), ssg_image_create(W, H, 3),
+                     ssg_image_create(W, H, 1), calloc((size_t)W * H, sizeof(int))};
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            double dir[3], t = depth(x, y, arg);
+            ray(x + 0.5, y + 0.5, dir);
+            size_t o = (size_t)y * W + (size_t)x;
+            for (int c = 0; c < 3; c++)
+                g.pos->data[(size_t)c * W * H + o] = (float)(t * dir[c]);
+            g.nrm->data[2 * (size_t)W * H + o] = 1.0f;
+            g.depth->data[o] = (float)t;
+        }
+    return g;
 }
 
 /* Longest view ray per unit depth in the frame: |(u, v, -1)| at a corner. */

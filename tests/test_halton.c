@@ -1,5 +1,7 @@
 /* test_halton.c - the `halton` node: radical inverse values of eq. 6 worked out by hand,
- * the period property of eq. 8, kernel geometry (hemisphere, length, direction density),
+ * the period property of eq. 8, the first kernel samples' values worked out by hand (of
+ * frame 0 and frame 1: the properties alone hold wherever the sequence starts), kernel
+ * geometry (hemisphere, length, direction density),
  * determinism, seed dependence of the rotation tile, and rejection of bad parameters. */
 #include <math.h>
 #include <string.h>
@@ -22,6 +24,22 @@ static enum ssg_err run(const char *const *sets, int count, uint64_t seed,
     struct ssg_frame frame = frame_seed(seed);
     enum ssg_err e = ssg_node_run("halton", NULL, 0, sets, count, &frame, out, &diags);
     return e;
+}
+
+/* The node's descriptor, and in *p its default parameters with `set` applied (NULL:
+   none); NULL (a failed CHECK) when the node is missing. For the tests that call
+   prepare() themselves. */
+static const struct ssg_node_desc *defaults(struct ssg_halton_params *p, const char *set)
+{
+    const struct ssg_node_desc *d = ssg_node_find("halton", 6);
+    CHECK(d != NULL);
+    if (!d)
+        return NULL;
+    ssg_params_defaults(d->params, p);
+    struct ssg_diags diags = {0};
+    if (set)
+        CHECK_EQ(ssg_param_set_text(d->params, p, set, "<test>", "halton", &diags), SSG_OK);
+    return d;
 }
 
 static void test_radical_inverse(void)
@@ -151,6 +169,103 @@ static void test_period_kernel(void)
     ssg_outputs_release(&out);
 }
 
+/* Kernel sample i of k against the point len * (x, y, z) with (x, y, z) a unit direction
+   worked out by hand; 2e-7 covers the float rounding of values below 1. */
+static void check_sample(const char *what, const struct ssg_image *k, int i, double len,
+                         double x, double y, double z)
+{
+    const double want[3] = {len * x, len * y, len * z};
+    int bad = 0;
+    for (int c = 0; c < 3; c++) {
+        CHECK_NEAR(k->data[c * k->width + i], want[c], 2e-7);
+        bad += !(fabs(k->data[c * k->width + i] - want[c]) <= 2e-7);
+    }
+    if (bad)
+        fprintf(stderr, "  %s, sample %d: (%.7f, %.7f, %.7f), expected (%.7f, %.7f, %.7f)\n",
+                what, i, k->data[i], k->data[k->width + i], k->data[2 * k->width + i],
+                want[0], want[1], want[2]);
+}
+
+/* The first samples' values, worked out by hand from eq. 6 and the mappings of halton.c,
+   so that a sequence shifted by one index (every property above holds wherever the
+   sequence starts) fails. Default count 16, bases [2, 3], falloff 2, min_scale 0.1; the
+   Halton index of sample i is offset + i, the length coordinate (no third base)
+   t = (i + 1/2) / 16, so len = 0.1 + 0.9 t^2: 0.1 + 0.9 / 1024 for sample 0 and
+   0.1 + 8.1 / 1024 for sample 1, whatever the offset.
+   offset 1 (the default), sample 0 = index 1: phi_2(1) = 1/2, phi_3(1) = 1/3, so the
+   azimuth is 2 pi / 3 (cos -1/2, sin sqrt(3)/2);
+     cosine (default): sin theta = sqrt(u0) = sqrt(1/2), cos theta = sqrt(1 - u0) =
+       sqrt(1/2): direction (-sqrt(2)/4, sqrt(6)/4, sqrt(2)/2);
+     uniform: cos theta = 1 - u0 = 1/2, sin theta = sqrt(3)/2:
+       direction (-sqrt(3)/4, 3/4, 1/2).
+   sample 1 = index 2: phi_2(2) = 1/4, phi_3(2) = 2/3, azimuth 4 pi / 3 (cos -1/2,
+   sin -sqrt(3)/2);
+     cosine: sin theta = 1/2, cos theta = sqrt(3)/2: (-1/4, -sqrt(3)/4, sqrt(3)/2);
+     uniform: cos theta = 3/4, sin theta = sqrt(7)/4: (-sqrt(7)/8, -sqrt(21)/8, 3/4).
+   offset 0, sample 0 = index 0: phi(0) = 0 in every base, the point (0, 0): straight up
+   the normal in either mapping, (0, 0, 1).
+   With a third base 5 the length is Halton too: t = phi_5(1) = 1/5 for sample 0 at
+   offset 1, phi_5(2) = 2/5 for sample 1, so len = 0.1 + 0.9 / 25 and 0.1 + 0.9 * 4 / 25. */
+static void test_fixed_values(void)
+{
+    const double len0 = 0.1 + 0.9 / 1024, len1 = 0.1 + 8.1 / 1024;
+    const double r2 = sqrt(2.0), r3 = sqrt(3.0), r6 = sqrt(6.0), r7 = sqrt(7.0);
+    const struct {
+        const char *sets[2]; /* NULL: the defaults (offset 1, cosine) */
+        int sample;
+        double len, x, y, z; /* len * (x, y, z), (x, y, z) a unit direction */
+    } cases[] = {
+        {{NULL}, 0, len0, -r2 / 4, r6 / 4, r2 / 2},
+        {{NULL}, 1, len1, -0.25, -r3 / 4, r3 / 2},
+        {{"offset=1", "mapping=cosine"}, 0, len0, -r2 / 4, r6 / 4, r2 / 2},
+        {{"offset=1", "mapping=cosine"}, 1, len1, -0.25, -r3 / 4, r3 / 2},
+        {{"offset=1", "mapping=uniform"}, 0, len0, -r3 / 4, 0.75, 0.5},
+        {{"offset=1", "mapping=uniform"}, 1, len1, -r7 / 8, -sqrt(21.0) / 8, 0.75},
+        {{"offset=0", "mapping=cosine"}, 0, len0, 0, 0, 1},
+        {{"offset=0", "mapping=uniform"}, 0, len0, 0, 0, 1},
+        {{"bases=[2,3,5]"}, 0, 0.1 + 0.9 / 25, -r2 / 4, r6 / 4, r2 / 2},
+        {{"bases=[2,3,5]"}, 1, 0.1 + 0.9 * 4 / 25, -0.25, -r3 / 4, r3 / 2},
+    };
+    for (int i = 0; i < SSG_COUNT(cases); i++) {
+        int n = !cases[i].sets[0] ? 0 : !cases[i].sets[1] ? 1 : 2;
+        struct ssg_outputs out;
+        CHECK_EQ(run(cases[i].sets, n, 1, &out), SSG_OK);
+        if (out.count == 2) {
+            char what[64];
+            snprintf(what, sizeof what, "%s%s%s", n ? cases[i].sets[0] : "defaults",
+                     n > 1 ? " " : "", n > 1 ? cases[i].sets[1] : "");
+            check_sample(what, out.images[0], cases[i].sample, cases[i].len, cases[i].x,
+                         cases[i].y, cases[i].z);
+        }
+        ssg_outputs_release(&out);
+    }
+}
+
+/* Frame 1 of a sequence (README.md, "Frames"): sample 0 is Halton index offset + count =
+   17 = 10001b = 122 in base 3, so u0 = 0.10001b = 17/32 and u1 = 0.221 (base 3) = 25/27;
+   its length coordinate is the midpoint moved by the golden-ratio turn,
+   t = frac(1/2 + 1/phi) / 16 = (1/phi - 1/2) / 16. Cosine direction: sin theta =
+   sqrt(17/32), cos theta = sqrt(15/32), azimuth 2 pi 25/27. */
+static void test_frame_one(void)
+{
+    struct ssg_halton_params p;
+    const struct ssg_node_desc *d = defaults(&p, NULL);
+    if (!d)
+        return;
+    struct ssg_diags diags = {0};
+    struct ssg_frame f = frame_seed(1);
+    struct ssg_node_ctx ctx = {.desc = d, .instance = "h", .frame = &f, .out_dir = "out",
+                               .diags = &diags};
+    static struct ssg_halton_consts c;
+    static float kernel[3 * 16], pattern[2 * 16];
+    CHECK_EQ(d->prepare(&ctx, &p, &c), SSG_OK);
+    ssg_halton_frame(&c, 1, kernel, pattern);
+    double t = (0.61803398874989485 - 0.5) / 16, len = 0.1 + 0.9 * t * t;
+    double st = sqrt(17.0 / 32), az = 2 * M_PI * 25 / 27;
+    struct ssg_image k = {.width = 16, .height = 1, .channels = 3, .data = kernel};
+    check_sample("frame 1", &k, 0, len, st * cos(az), st * sin(az), sqrt(15.0 / 32));
+}
+
 static void test_kernel_geometry(void)
 {
     static const char *const mappings[] = {"mapping=cosine", "mapping=uniform"};
@@ -213,15 +328,11 @@ static void test_direction_density(void)
 
 static void test_determinism_and_seed(void)
 {
-    const struct ssg_node_desc *d = ssg_node_find("halton", 6);
-    CHECK(d != NULL);
+    struct ssg_halton_params p;
+    const struct ssg_node_desc *d = defaults(&p, "pattern=8");
     if (!d)
         return;
-    struct ssg_halton_params p;
-    ssg_params_defaults(d->params, &p);
     struct ssg_diags diags = {0};
-    CHECK_EQ(ssg_param_set_text(d->params, &p, "pattern=8", "<test>", "halton", &diags),
-             SSG_OK);
     struct ssg_frame f1 = frame_seed(1), f2 = frame_seed(2);
     struct ssg_node_ctx ctx1 = {.desc = d, .instance = "h", .frame = &f1, .out_dir = "out",
                                 .diags = &diags};
@@ -250,6 +361,21 @@ static void test_determinism_and_seed(void)
     }
     CHECK_EQ(bad, 0);
     CHECK_EQ(dup, 0);
+    /* And they are the van der Corput set Phi_2(k), k = 0 .. 63, turned by the seeded
+       shift (halton_pattern.c): Phi_2 of 0 .. 2^6 - 1 is exactly {j / 64}, so every angle
+       is (j + w) / 64 of a turn with one w for all. Distinct unit angles alone hold for
+       any 64 indices (one index on, Phi_2(64) = 1/128 breaks the spacing). */
+    int off_grid = 0;
+    double w0 = 0;
+    for (int i = 0; i < 64; i++) {
+        double turn = atan2(a.pattern[64 + i], a.pattern[i]) / (2 * M_PI) * 64;
+        double w = turn - floor(turn);
+        if (i == 0)
+            w0 = w;
+        double dw = fabs(w - w0);
+        off_grid += fmin(dw, 1 - dw) > 1e-4;
+    }
+    CHECK_EQ(off_grid, 0);
     /* Through the public runner too: the outputs are the prepared bytes. */
     const char *sets[] = {"pattern=8"};
     struct ssg_outputs o1, o2;
@@ -299,6 +425,8 @@ int main(void)
     test_radical_inverse();
     test_period_property();
     test_period_kernel();
+    test_fixed_values();
+    test_frame_one();
     test_kernel_geometry();
     test_direction_density();
     test_determinism_and_seed();

@@ -261,20 +261,14 @@ static void test_floor_ceiling(const struct ssg_image *kernel, const struct ssg_
    samples. Without a range check that occludes them; with the hard check (3 > radius) it
    does not; the smooth one weights it by smoothstep(0.5 / 3) = 0.0741. Also checks the
    power and max_screen_radius parameters on the same scene. */
+static double step_depth(int x, int y, int unused)
+{
+    return x < W / 2 ? 2.0 : 5.0;
+}
+
 static void test_step(const struct ssg_image *kernel)
 {
-    struct gbuf g = {ssg_image_create(W, H, 3), ssg_image_create(W, H, 3),
-                     ssg_image_create(W, H, 1), NULL};
-    for (int y = 0; y < H; y++)
-        for (int x = 0; x < W; x++) {
-            double dir[3], t = x < W / 2 ? 2.0 : 5.0;
-            ray(x + 0.5, y + 0.5, dir);
-            size_t o = (size_t)y * W + (size_t)x;
-            for (int c = 0; c < 3; c++)
-                g.pos->data[(size_t)c * W * H + o] = (float)(t * dir[c]);
-            g.nrm->data[2 * (size_t)W * H + o] = 1.0f;
-            g.depth->data[o] = (float)t;
-        }
+    struct gbuf g = gbuf_from_depth(step_depth, 0);
     const char *none[] = {"range_check=none", "radius=0.5"};
     const char *hard[] = {"range_check=hard", "radius=0.5"};
     const char *smooth[] = {"range_check=smooth", "radius=0.5"};
