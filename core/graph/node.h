@@ -203,7 +203,10 @@ static inline int ssg_params_only_changed(const void *old_params, const void *ne
  * over what those tests measure on llvmpipe, so a slip in one backend that moves the
  * answer by more than rounding fails them (a bound 1000x the measurement let a wrong acos
  * coefficient in gtao's shader pass). {0, 0}: bit-exact, as measured; a driver that rounds
- * otherwise (a GPU's division or sqrt) must then measure and state its own bound. */
+ * otherwise (a GPU's division or sqrt) must then measure and state its own bound. Nodes
+ * that rasterise (gbuffer, lightmaps, shadowmaps) state none here: where a texel centre
+ * lies on an edge the rasteriser and the CPU may pick either surface, so their tests
+ * bound the share of texels that differ and the difference of the rest. */
 struct ssg_parity_bound {
     double max;  /* largest |gl - cpu| of one value, in the output's units; 0 = exact */
     double mean; /* mean |gl - cpu| over an output's values */
