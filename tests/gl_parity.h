@@ -1,8 +1,9 @@
 /* gl_parity.h - the CPU/GL parity check every node's GL test uses: one node run on both
  * backends (ssg_node_run with and without "backend=gl") on the same inputs, every output
  * compared over interior pixels (a border of `border` px left out, where clamped reads may
- * legitimately differ), the largest and the mean absolute difference against the
- * tolerances the test states. Prints one line per output so a run shows the margins.
+ * legitimately differ), the largest and the mean absolute difference against the node's
+ * stated bound (its descriptor's `parity`, node.h: parity_tol_of). Prints one line per
+ * output so a run shows the margins.
  * Also the inputs the node tests share (Halton kernels, count images, colour fields,
  * option-driven bindings) and, when planes.h is included before this header, the
  * helpers of the tests on its ray-cast G-buffers. Header-only, single-threaded. */
@@ -14,6 +15,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "graph/node.h"
 #include "ssgraph.h"
 
 struct parity_tol {
@@ -21,6 +23,18 @@ struct parity_tol {
     double max_abs;  /* largest |gl - cpu| allowed over the interior */
     double mean_abs; /* mean |gl - cpu| allowed */
 };
+
+/* The bound `node`'s descriptor states (node.h, struct ssg_parity_bound), no border: the
+   one place a node's CPU/GL tolerance is written. An unknown node fails a CHECK. */
+static inline struct parity_tol parity_tol_of(const char *node)
+{
+    const struct ssg_node_desc *d = ssg_node_find(node, strlen(node));
+    CHECK(d != NULL);
+    if (!d)
+        return (struct parity_tol){0, 0.0, 0.0};
+    return (struct parity_tol){.border = 0, .max_abs = d->parity.max,
+                               .mean_abs = d->parity.mean};
+}
 
 struct parity_diff {
     double max_abs, mean_abs;

@@ -1,13 +1,16 @@
 /* test_gl_direct_light.c - CPU/GL parity of `direct_light` on the Cornell box (its own
  * point light, six cube faces, PCF across the faces' edges) and on the same box under a
- * directional light with soft shadows (sun_angle), on the same CPU G-buffer and maps. A
- * tap's 0/1 test flips where the backends round a texel coordinate or a depth apart, so
- * the bound is on the mean, with a loose one on the largest difference (one bilinear tap
- * of 12: 0.1 of the scale). Measured on llvmpipe: max 3e-6, mean 1e-8 of the scale. */
+ * directional light with soft shadows (sun_angle), on the same CPU G-buffer and maps,
+ * within the descriptor's bound (gl_parity.h): 4x what these cases measure on llvmpipe,
+ * max 5.1e-6 (the sun's soft visibility), mean 1.1e-8. A tap's 0/1 test would flip where
+ * the backends round a texel coordinate or a depth apart (one bilinear tap of 12: up to
+ * 0.08 of a pixel's light); none does on llvmpipe, and a driver where some do needs a
+ * bound of its own. */
 #include <math.h>
 
 #include "check.h"
 #include "common/trace.h"
+#include "gl_parity.h"
 #include "light_maps.h"
 
 enum { W = 96, H = 72 };
@@ -27,20 +30,12 @@ static void parity(const char *name, const char *lights, const char *const *sets
     CHECK_EQ(direct_of(s, &FRAME, g, m[0], sets, n, SSG_BACKEND_CPU, cpu), SSG_OK);
     CHECK_EQ(direct_of(s, &FRAME, g, m[0], sets, n, SSG_BACKEND_GL, gl), SSG_OK);
     for (int k = 0; k < 2; k++) {
-        double mx = 0, mean = 0, scale = 0;
-        size_t count = (size_t)W * H * (size_t)cpu[k]->channels;
-        for (size_t i = 0; i < count; i++) {
-            double e = fabs((double)cpu[k]->data[i] - gl[k]->data[i]);
-            mx = e > mx ? e : mx;
-            mean += isfinite(e) ? e : 1e9;
-            scale = fmax(scale, fabs(cpu[k]->data[i]));
-        }
-        mean /= (double)count;
-        fprintf(stderr, "parity direct_light %s %-10s max %.3g (tol %.3g) mean %.3g (tol "
-                "%.3g)\n", name, k ? "visibility" : "out", mx, 0.1 * scale, mean,
-                1e-5 * scale);
-        CHECK(mx <= 0.1 * scale);
-        CHECK(mean <= 1e-5 * scale);
+        double peak = 0; /* the case does light some pixels */
+        for (size_t i = 0; i < (size_t)W * H * (size_t)cpu[k]->channels; i++)
+            peak = fmax(peak, cpu[k]->data[i]);
+        CHECK(peak > 0);
+        parity_check_output("direct_light", name, k ? "visibility" : "out", cpu[k], gl[k],
+                            parity_tol_of("direct_light"));
     }
     images_free(g, SSG_GBUFFER_OUTPUTS);
     images_free(m, 3);

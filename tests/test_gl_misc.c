@@ -16,36 +16,35 @@
  * level counts 1 to 8, odd sizes and a subsampled G-buffer (projection scaled).
  * combine: one multiply-add per term in the CPU's order, unfused; llvmpipe matches bit for
  * bit (measured 0). Every optional input alone and together, modulation of 1 and 3
- * channels, darken_indirect on and off, ambient and its colour. Tolerance: one ulp of the
- * largest output (values below 16), for a GPU whose float products round otherwise. */
+ * channels, darken_indirect on and off, ambient and its colour.
+ * Each node's bound is its descriptor's (gl_parity.h's parity_tol_of): 0 for all three. */
 #include <math.h>
 
 #include "check.h"
 #include "planes.h"
 #include "gl_parity.h" /* after planes.h: its G-buffer helpers */
 
-static const struct parity_tol EXACT = {.border = 0, .max_abs = 0.0, .mean_abs = 0.0};
-
 /* ---- halton ---- */
 
 static void halton_cases(void)
 {
+    const struct parity_tol exact = parity_tol_of("halton");
     struct ssg_frame f = {64, 48, 45.0f, 0.05f, 100.0f, 7, 0};
     const char *def[] = {"count=16"};
-    parity_node("default seed 7", "halton", NULL, 0, def, 1, &f, EXACT);
+    parity_node("default seed 7", "halton", NULL, 0, def, 1, &f, exact);
     const char *three[] = {"count=60", "bases=[2, 3, 5]", "period=30", "mapping=uniform",
                            "falloff=1", "pattern=8"};
-    parity_node("3 bases period", "halton", NULL, 0, three, 6, &f, EXACT);
+    parity_node("3 bases period", "halton", NULL, 0, three, 6, &f, exact);
     f.seed = 12345;
     const char *wide[] = {"count=1024", "bases=[5, 7]", "offset=0", "min_scale=0",
                           "falloff=0.5", "pattern=64"};
-    parity_node("1024 x 64 seed", "halton", NULL, 0, wide, 6, &f, EXACT);
+    parity_node("1024 x 64 seed", "halton", NULL, 0, wide, 6, &f, exact);
     const char *one[] = {"count=1", "pattern=1", "period=0"};
-    parity_node("1 x 1", "halton", NULL, 0, one, 3, &f, EXACT);
+    parity_node("1 x 1", "halton", NULL, 0, one, 3, &f, exact);
     const char *blue[] = {"rotations=blue_noise", "pattern=64"};
-    parity_node("blue noise 64", "halton", NULL, 0, blue, 2, &f, EXACT);
+    parity_node("blue noise 64", "halton", NULL, 0, blue, 2, &f, exact);
     const char *latin[] = {"rotations=interleaved", "pattern=5"};
-    parity_node("interleaved 5", "halton", NULL, 0, latin, 2, &f, EXACT);
+    parity_node("interleaved 5", "halton", NULL, 0, latin, 2, &f, exact);
 }
 
 /* ---- complexity ---- */
@@ -109,7 +108,7 @@ static void complexity_case(const char *label, struct gbuf *g, const char *const
                             const struct ssg_frame *f, int levels)
 {
     struct ssg_binding b[2] = {{"depth", g->depth}, {"normal", g->nrm}};
-    parity_node(label, "complexity", b, 2, sets, n, f, EXACT);
+    parity_node(label, "complexity", b, 2, sets, n, f, parity_tol_of("complexity"));
     struct ssg_outputs cpu = {0};
     struct ssg_diags d = {0};
     CHECK_EQ(ssg_node_run("complexity", b, 2, sets, n, f, &cpu, &d), SSG_OK);
@@ -198,11 +197,10 @@ static int bind_combine(const struct combine_inputs *in, const char *opt, struct
 static void combine_case(const struct combine_inputs *in, const char *label, const char *opt,
                          const char *const *sets, int n)
 {
-    /* One ulp at the largest outputs (below 16): room for a last-bit rounding only. */
-    const struct parity_tol ulp = {.border = 0, .max_abs = 9.6e-7, .mean_abs = 1e-8};
+    const struct parity_tol exact = parity_tol_of("combine");
     struct ssg_binding b[9];
     struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
-    parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, ulp);
+    parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, exact);
 }
 
 static void combine_cases(void)

@@ -197,6 +197,21 @@ static inline int ssg_params_only_changed(const void *old_params, const void *ne
     ssg_params_only_changed(old_params, new_params, sizeof(type), offsetof(type, member), \
                             sizeof(((const type *)0)->member))
 
+/* How far a node's GL outputs may be from its CPU outputs: |gl - cpu| of each value of
+ * every output, on the parity scenes of tests/test_gl_<node>.c (tests/gl_parity.h reads
+ * it from the descriptor, so the bound is stated once). Set to a small factor (about 4x)
+ * over what those tests measure on llvmpipe, so a slip in one backend that moves the
+ * answer by more than rounding fails them (a bound 1000x the measurement let a wrong acos
+ * coefficient in gtao's shader pass). {0, 0}: bit-exact, as measured; a driver that rounds
+ * otherwise (a GPU's division or sqrt) must then measure and state its own bound. Nodes
+ * that rasterise (gbuffer, lightmaps, shadowmaps) state none here: where a texel centre
+ * lies on an edge the rasteriser and the CPU may pick either surface, so their tests
+ * bound the share of texels that differ and the difference of the rest. */
+struct ssg_parity_bound {
+    double max;  /* largest |gl - cpu| of one value, in the output's units; 0 = exact */
+    double mean; /* mean |gl - cpu| over an output's values */
+};
+
 struct ssg_node_desc {
     const char *name;    /* "ssao" */
     const char *summary; /* one line for `ssgraph nodes` */
@@ -304,10 +319,13 @@ struct ssg_node_desc {
     /* The GL backend (nodes/<name>/<name>_gl.c, through core/gl/gl.h only), NULL = CPU only.
        Same contract as run_cpu: the runtime has made every input and output image a GL
        texture (io->in[i]->data must not be read), the same consts; it must write every
-       output pixel. The CPU result is the reference; tests/test_gl_parity.c states how
-       far this one may be from it. */
+       output pixel. The CPU result is the reference; `parity` below states how far
+       this one may be from it. */
     enum ssg_err (*run_gl)(const struct ssg_node_ctx *ctx, const void *consts,
                            const struct ssg_io *io);
+    /* How far run_gl's outputs may be from run_cpu's (struct ssg_parity_bound; the tests
+       read it). Zero = bit-exact; no effect on any output. */
+    struct ssg_parity_bound parity;
 };
 
 /* The registry, built from nodes/nodes.def. NULL when unknown. */

@@ -51,4 +51,5 @@ const struct ssg_node_desc ssg_node_atrous = {
     SSG_NODE_PARAMS(params, struct ssg_atrous_params),
     .check = check,
     .prepare = prepare,
+    .parity = {.max = 1.4e-6, .mean = 1.8e-7}, /* test_gl_filters.c: 3.6e-7, 4.5e-8: 4x */
 };

@@ -58,4 +58,5 @@ const struct ssg_node_desc ssg_node_downsample = {
     .flops_per_pixel = downsample_flops,
     .run_cpu = ssg_downsample_run_cpu,
     .run_gl = ssg_downsample_run_gl,
+    .parity = {.max = 0, .mean = 0}, /* selects pixels: bit-exact (test_gl_filters.c) */
 };

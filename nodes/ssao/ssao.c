@@ -70,4 +70,6 @@ const struct ssg_node_desc ssg_node_ssao = {
     .flops_per_pixel = ssao_flops,
     .run_cpu = ssg_ssao_run_cpu,
     .run_gl = ssg_ssao_run_gl,
+    /* test_gl_ssao.c: 1.8e-7, 1.3e-8 (pow): 2.8x, 3.8x */
+    .parity = {.max = 5e-7, .mean = 5e-8},
 };
