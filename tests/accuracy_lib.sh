@@ -27,7 +27,9 @@ accuracy_values() {
         return
     fi
     local out
-    out=$(python3 tests/accuracy_values.py check "$1" "$2" "$ACCURACY_EXPECTED") ||
+    if out=$(python3 tests/accuracy_values.py check "$1" "$2" "$ACCURACY_EXPECTED"); then
+        echo "$out"
+    else
         fail "the $1 table is not the expected one ($ACCURACY_EXPECTED):"$'\n'"$out"
-    echo "$out"
+    fi
 }
