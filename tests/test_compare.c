@@ -339,21 +339,38 @@ static void test_rejects(void)
     ssg_image_destroy(&small);
 }
 
+/* The metrics (every one: the band sums of rmse, mae, bias, the means and SSIM, FLIP's mean,
+   banding's line sums) and the diff, byte for byte, with 1, 2 and 3 threads. 151 x 261 is
+   5 of compare's 64-row bands (the last of 5 rows) and 17 of FLIP's 16: with 2 or 3
+   threads several bands meet in each sum, so a sum per thread instead of per band, or in
+   finishing order, changes the last bits. 101 rows (two bands) hid that: two partial sums
+   add the same either way, and squared float differences add exactly in double; 133 rows
+   (3 bands) showed a per-thread sum in 1 to 8 of the 12 comparisons, 261 rows in 8 to 12.
+   Each count runs 3 times: under dynamic scheduling one run may hand every band to one
+   thread. */
 static void test_threads(void)
 {
-    enum { W = 150, H = 101 };
+    enum { W = 151, H = 261 };
     struct ssg_image *a = textured(W, H, 3, 0.2), *b = textured(W, H, 3, 0.25);
     struct ssg_image *m = disc_mask(W, H);
-    struct ssg_outputs one, two;
-    omp_set_num_threads(1);
-    CHECK_EQ(run(a, b, m, NULL, 0, &one), SSG_OK);
-    omp_set_num_threads(2);
-    CHECK_EQ(run(a, b, m, NULL, 0, &two), SSG_OK);
-    CHECK_EQ(one.metric_count, two.metric_count);
-    CHECK(memcmp(one.metric_values, two.metric_values, sizeof one.metric_values) == 0);
-    CHECK(memcmp(one.images[0]->data, two.images[0]->data, sizeof(float) * 3 * W * H) == 0);
-    ssg_outputs_release(&one);
-    ssg_outputs_release(&two);
+    const char *banding[] = {"banding=6"};
+    for (int on = 0; on < 2; on++) {
+        struct ssg_outputs one, other;
+        omp_set_num_threads(1);
+        CHECK_EQ(run(a, b, m, banding, on, &one), SSG_OK);
+        CHECK_EQ(one.metric_count, on ? 12 : 9);
+        for (int k = 0; k < 6; k++) {
+            omp_set_num_threads(2 + k % 2);
+            CHECK_EQ(run(a, b, m, banding, on, &other), SSG_OK);
+            CHECK_EQ(one.metric_count, other.metric_count);
+            CHECK(memcmp(one.metric_values, other.metric_values,
+                         sizeof one.metric_values) == 0);
+            CHECK(memcmp(one.images[0]->data, other.images[0]->data,
+                         sizeof(float) * 3 * W * H) == 0);
+            ssg_outputs_release(&other);
+        }
+        ssg_outputs_release(&one);
+    }
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);
     ssg_image_destroy(&m);

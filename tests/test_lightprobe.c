@@ -8,7 +8,10 @@
  *   sum_i max(0, l_i.y) E_i, is within a stated tolerance of the exact integral of
  *   L max(0, y) over the probe's texels;
  * - importance sampling puts more lights where the probe is bright;
- * - errors (no environment, count out of range) and CPU/GL parity (the same bytes). */
+ * - errors (no environment, count out of range) and CPU/GL parity (the same bytes);
+ * - the lights' irradiances, as doubles, the same bits for 1, 2 and 3 threads on a probe of
+ *   many bands. */
+#include <omp.h>
 #include <string.h>
 
 #include "check.h"
@@ -249,11 +252,37 @@ static void test_errors(void)
     ssg_scene_destroy(&s);
 }
 
+/* The regions' irradiance sums bands of 4 probe rows, added in band order: on a 151 x 133
+   probe (34 bands, the last of one row) of uneven radiance, the doubles are the same bits for
+   1, 2 and 3 threads (a sum per thread instead of per band, or in finishing order, changes
+   the last bits; the node's float output would mostly round that away, so the doubles are
+   compared). Each count runs 3 times: one run may by chance hand every band to one thread. */
+static void test_threads(void)
+{
+    enum { PW = 151, PH = 133, N = 96 };
+    struct ssg_env env = {.has_light = 1, .has_image = 1, .width = PW, .height = PH};
+    env.radiance = malloc(sizeof(float) * 3 * PW * PH);
+    for (int i = 0; i < 3 * PW * PH; i++)
+        env.radiance[i] = (float)(1.0 + 0.9 * sin(0.37 * i) * cos(0.011 * i));
+    float dirs[3 * N];
+    ssg_lightprobe_directions(&env, SSG_LIGHTPROBE_UNIFORM, N, dirs);
+    double one[3 * N], other[3 * N];
+    omp_set_num_threads(1);
+    CHECK_EQ(ssg_lightprobe_regions(&env, dirs, N, one), SSG_OK);
+    for (int k = 0; k < 6; k++) {
+        omp_set_num_threads(2 + k % 2);
+        CHECK_EQ(ssg_lightprobe_regions(&env, dirs, N, other), SSG_OK);
+        CHECK(memcmp(one, other, sizeof one) == 0);
+    }
+    free(env.radiance);
+}
+
 int main(void)
 {
     test_constant_sky();
     test_one_bright_texel();
     test_courtyard_probe();
     test_errors();
+    test_threads();
     return check_report();
 }
