@@ -33,11 +33,13 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
                                 size_t why_len)
 {
     (void)params, (void)out;
-    int need = ssg_lightmap_face_count(scene, SSG_LIGHTMAP_OWN_ONLY), have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
+    int need = ssg_lightmap_face_count(scene, SSG_LIGHTMAP_OWN_ONLY);
+    int have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
     if (have != need) {
         snprintf(why, why_len, "maps has %d faces but the scene's lights need %d (6 a point "
                  "light, 1 a directional light): connect the depth output of a lightmaps "
-                 "node of the same scene", have, need);
+                 "node of the same scene with own=true and environment=0 (direct_light "
+                 "reads the own lights' maps only)", have, need);
         return SSG_E_CHANNELS;
     }
     return SSG_OK;
@@ -81,7 +83,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     c->res = maps->width;
     c->face_count = need;
-    if (ssg_lightmap_faces(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, c->faces, SSG_LIGHTMAP_FACES_MAX) < 0)
+    if (ssg_lightmap_faces(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, c->faces,
+                           SSG_LIGHTMAP_FACES_MAX) < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);

@@ -41,9 +41,10 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
     (void)in;
     long long f = ssg_lightmap_face_count(scene, sources(p)), r = p->resolution;
     if (f > SSG_LIGHTMAP_FACES_MAX) {
-        snprintf(why, why_len, "the scene's lights need %lld map faces (6 a point light, 1 a "
-                 "directional light), at most %d fit the normal and flux images' %d channels",
-                 f, SSG_LIGHTMAP_FACES_MAX, SSG_IMAGE_MAX_CHANNELS);
+        snprintf(why, why_len, "the lights need %lld map faces (own lights: 6 a point light, 1 "
+                 "a directional light; plus %d environment lights), at most %d fit the normal "
+                 "and flux images' %d channels: lower environment or the light count", f,
+                 p->environment, SSG_LIGHTMAP_FACES_MAX, SSG_IMAGE_MAX_CHANNELS);
         return SSG_E_SIZE;
     }
     if (3 * f * r * r > SSG_IMAGE_MAX_FLOATS) {
@@ -119,7 +120,8 @@ static void pack_faces(struct ssg_lightmaps_consts *c)
         }
         /* an own light's map is drawn even when it is dark (its shadows still count); an
            environment light's only when it carries light */
-        int drawn = face->light >= 0 || (ssg_lightmap_face_env(face) >= 0 && has_flux(c->flux[i]));
+        int drawn = face->light >= 0 ||
+                    (ssg_lightmap_face_env(face) >= 0 && has_flux(c->flux[i]));
         o[12] = face->half, o[13] = (float)face->ortho, o[17] = (float)drawn;
         o[18] = o[19] = 0.0f;
     }

@@ -95,8 +95,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_lightmap_sources src = {p->own, p->environment};
     int want = ssg_lightmap_faces(ctx->scene, src, c->face_s, SSG_LIGHTMAP_FACES_MAX);
     if (want < 0)
-        return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
-                             "faces", SSG_LIGHTMAP_FACES_MAX);
+        return ssg_node_fail(ctx, SSG_E_SCENE, "the own lights and %d environment lights need "
+                             "more than %d map faces", p->environment, SSG_LIGHTMAP_FACES_MAX);
     if (maps->channels != want)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the maps have %d faces but %s%s%d "
                              "environment lights need %d: connect the lightmaps node of the "
