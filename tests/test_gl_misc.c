@@ -238,6 +238,10 @@ static void combine_cases(void)
     const char *shadowed[] = {"ambient=0.2", "darken_direct=false"};
     combine_case(&in, "shadowed direct far irradiance", "amefri", shadowed, 2);
     combine_case(&in, "shadowed direct", "mi", shadowed, 2);
+    /* the environment as a white receiver's E / pi (probe_light without albedo) */
+    const char *white[] = {"ambient=0.3", "environment_albedo=true", "far_bounce=false"};
+    combine_case(&in, "environment albedo far irradiance", "amefri", white, 3);
+    combine_case(&in, "environment albedo", "ae", white, 3);
     struct ssg_image **im = &in.direct;
     for (int i = 0; i < 9; i++)
         ssg_image_destroy(&im[i]);
