@@ -1,4 +1,6 @@
 /* lightmap.c - the faces of lightmap.h, built from the scene's lights alone. */
+#include <stdio.h>
+
 #include "scene/scene.h"
 #include "common/lightmap.h"
 #include "lightprobe/lightprobe.h"
@@ -17,6 +19,16 @@ static int own_face_count(const struct ssg_scene *scene)
     for (int i = 0; scene && i < scene->light_count; i++)
         n += scene->lights[i].kind == SSG_LIGHT_POINT ? SSG_LIGHTMAP_CUBE_FACES : 1;
     return n > 0 ? n : 1;
+}
+
+enum ssg_err ssg_lightmap_sources_check(struct ssg_lightmap_sources src, char *why,
+                                        size_t why_len)
+{
+    if (src.own || src.environment > 0)
+        return SSG_OK;
+    snprintf(why, why_len, "own=false and environment=0 leave no light to map: keep the own "
+             "lights or give the environment a light count (rsm: the lightmaps node's values)");
+    return SSG_E_VALUE;
 }
 
 int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_sources src)

@@ -38,7 +38,9 @@
 #define SSG_LIGHTMAP_H
 
 #include <math.h>
+#include <stddef.h>
 
+#include "ssgraph.h" /* enum ssg_err */
 #include "common/shadowmap.h"
 
 struct ssg_scene;
@@ -85,6 +87,11 @@ int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_s
    over max (nothing meaningful written). */
 int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
                        struct ssg_lightmap_face *faces, int max);
+
+/* SSG_E_VALUE with the reason in why when src names no light at all (own false, no
+   environment lights): the check of every node that takes these two parameters. */
+enum ssg_err ssg_lightmap_sources_check(struct ssg_lightmap_sources src, char *why,
+                                        size_t why_len);
 
 /* The unit directions towards the N environment lights (3 N floats): the spherical
    Fibonacci set of lightprobe's uniform sampling. */

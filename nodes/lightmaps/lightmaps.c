@@ -20,11 +20,9 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 {
     const struct ssg_lightmaps_params *p = params;
     (void)frame, (void)in;
-    if (!p->own && p->environment == 0) {
-        snprintf(why, why_len, "own=false and environment=0 leave no light to map: keep the "
-                 "own lights or give the environment a light count");
-        return SSG_E_VALUE;
-    }
+    enum ssg_err e = ssg_lightmap_sources_check(sources(p), why, why_len);
+    if (e)
+        return e;
     static const int per_face[SSG_LIGHTMAPS_OUTPUTS] = {1, 3, 3};
     for (int i = 0; i < SSG_LIGHTMAPS_OUTPUTS; i++)
         out[i] = (struct ssg_shape){p->resolution, p->resolution, per_face[i],

@@ -13,11 +13,10 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 {
     const struct ssg_rsm_params *p = params;
     (void)frame;
-    if (!p->own && p->environment == 0) {
-        snprintf(why, why_len, "own=false and environment=0 leave no map face to gather "
-                 "from: give the lightmaps node's own and environment values");
-        return SSG_E_VALUE;
-    }
+    struct ssg_lightmap_sources src = {p->own, p->environment};
+    enum ssg_err e = ssg_lightmap_sources_check(src, why, why_len);
+    if (e)
+        return e;
     const struct ssg_shape *pos = &in[SSG_RSM_IN_POSITION];
     const struct ssg_shape *d = &in[SSG_RSM_IN_MAP_DEPTH], *n = &in[SSG_RSM_IN_MAP_NORMAL],
                            *f = &in[SSG_RSM_IN_MAP_FLUX];
