@@ -91,6 +91,17 @@ lift(const float *restrict f, float normal_world, const struct chunk *restrict k
     return o;
 }
 
+/* The depth offset of a lifted point (README.md): offset + slope x tan(N, l), the tangent
+   0 where the light is behind the surface and at most SSG_PROBE_LIGHT_MAX_SLOPE. */
+static inline __attribute__((always_inline)) float
+depth_offset(struct lifted o, float offset, float slope)
+{
+    float q = o.sine / o.cosine; /* sin / cos where it counts; no trapping maths */
+    float tangent = o.cosine > 0.0f ? q : 0.0f;
+    tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
+    return offset + slope * tangent;
+}
+
 /* Light li's visibility of every pixel of the chunk, 1 or 0, into k->v: one loop finds
    each pixel's texel and the depth it must not exceed, a second reads the map there (a
    gather, which GCC vectorises only in a loop of its own) and compares. */
@@ -103,17 +114,14 @@ light_visibility(const struct job *j, const float *restrict f, const float *rest
     const float offset = j->offset_world, slope = j->slope_world;
     for (int i = 0; i < len; i++) {
         struct lifted o = lift(f, normal_world, k, i);
-        float cosine = o.cosine, sine = o.sine, x = o.x, y = o.y, d = o.d;
+        float x = o.x, y = o.y;
         x += cr * k->jx[i] - sr * k->jy[i];
         y += sr * k->jx[i] + cr * k->jy[i];
         int inside = (x >= 0.0f) & (y >= 0.0f) & (x < fres) & (y < fres);
-        float q = sine / cosine; /* sin / cos where it counts; no trapping maths */
-        float tangent = cosine > 0.0f ? q : 0.0f;
-        tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
         /* outside the map: lit, whatever the texel 0 it reads holds */
         k->at[i] = inside ? (int32_t)y * res + (int32_t)x : 0; /* res^2 < 2^31 */
-        k->d[i] = inside ? d : -INFINITY;
-        k->add[i] = offset + slope * tangent;
+        k->d[i] = inside ? o.d : -INFINITY;
+        k->add[i] = depth_offset(o, offset, slope);
     }
     for (int i = 0; i < len; i++)
         k->v[i] = k->d[i] <= map[k->at[i]] + k->add[i] ? 1.0f : 0.0f;
@@ -132,17 +140,15 @@ soft_setup(const struct job *j, const float *restrict f, int len, struct chunk *
     const float tt = texel * texel, gmax = SSG_PROBE_LIGHT_MAX_SLOPE * texel;
     for (int i = 0; i < len; i++) {
         struct lifted o = lift(f, normal_world, k, i);
-        float cosine = o.cosine, sine = o.sine;
+        float cosine = o.cosine;
         k->x[i] = o.x, k->y[i] = o.y, k->d[i] = o.d;
-        float q = sine / cosine, nu = k->nx[i] * f[0] + k->ny[i] * f[1] + k->nz[i] * f[2];
+        float nu = k->nx[i] * f[0] + k->ny[i] * f[1] + k->nz[i] * f[2];
         float nv = k->nx[i] * f[4] + k->ny[i] * f[5] + k->nz[i] * f[6];
         float gx = nu * tt / cosine, gy = nv * tt / cosine;
-        float tangent = cosine > 0.0f ? q : 0.0f;
-        tangent = tangent < SSG_PROBE_LIGHT_MAX_SLOPE ? tangent : SSG_PROBE_LIGHT_MAX_SLOPE;
         gx = cosine > 0.0f ? gx : 0.0f, gy = cosine > 0.0f ? gy : 0.0f;
         k->gx[i] = gx > gmax ? gmax : (gx < -gmax ? -gmax : gx);
         k->gy[i] = gy > gmax ? gmax : (gy < -gmax ? -gmax : gy);
-        k->add[i] = offset + slope * tangent;
+        k->add[i] = depth_offset(o, offset, slope);
         k->hsum[i] = k->hcnt[i] = 0.0f, k->v[i] = 0.0f;
     }
 }
