@@ -31,7 +31,8 @@ void main()
         float d = texelFetch(direct, ivec3(p, c), 0).r;
         float a = texelFetch(albedo, ivec3(p, c), 0).r;
         float m = layer_or(modulation, modulation_bound, p, min(c, modulation_last), 1.0);
-        precise float env = layer_or(environment, environment_bound, p, c, 0.0) * (p_environment_albedo != 0 ? a : 1.0);
+        float env_albedo = p_environment_albedo != 0 ? a : 1.0; // E / pi of a white receiver
+        precise float env = layer_or(environment, environment_bound, p, c, 0.0) * env_albedo;
         float bounce = layer_or(indirect, indirect_bound, p, c, 0.0);
         precise float far_light = layer_or(irradiance, irradiance_bound, p, c, 0.0) * a;
         precise float ambient = env + k[c] * a;

@@ -150,7 +150,8 @@ void main()
         lum_all += w * luminance(e);
     }
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
-    precise vec3 out_rgb = (albedo_bound ? ssg_load3(albedo, p) : vec3(1.0)) * 0.318309886183790671 * sum;
+    vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0); // none: a white receiver
+    precise vec3 out_rgb = a * 0.318309886183790671 * sum;
     SSG_STORE3(dst_out, p, bg ? vec3(0.0) : out_rgb);
     SSG_STORE1(dst_visibility, p, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
 }
