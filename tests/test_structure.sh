@@ -27,6 +27,10 @@ shape_fail=$(files | grep -E '^nodes/.*\.(c|h)$' |
              xargs grep -nE 'ssg_node_fail\(ctx, SSG_E_(SIZE|CHANNELS)' | head -5)
 [ -z "$shape_fail" ] || fail "nodes failing on shapes at run time: $shape_fail"
 
+# Build and interpreter leftovers are never tracked (bench/__pycache__ crept back in twice).
+leftovers=$(git ls-files 2>/dev/null | grep -E '(^|/)__pycache__/|\.py[co]$|(^|/)build[^/]*/' | head -5)
+[ -z "$leftovers" ] || fail "generated files are tracked (git rm --cached them): $leftovers"
+
 for shader in nodes/ssao/ssao.glsl nodes/hbao/hbao.glsl nodes/ssdo/ssdo.glsl; do
     grep -q '^#include "sampling.glsl"' "$shader" || fail "$shader does not include sampling.glsl"
     grep -qE '^(float|vec3) (scene_depth|kernel_sample)\(' "$shader" &&
