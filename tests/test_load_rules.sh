@@ -94,7 +94,7 @@ mesh(file="wide.gltf")
 EOF
 expect_exit 1 "wide.gltf.*yfov 10.* rad .* is outside 1 to 179 degrees" "$BIN" check "$TMP/wide.scene"
 sed 's/"yfov": 0.8/"yfov": 0/' tests/fixtures/gltf/triangle.gltf > "$TMP/wide.gltf"
-expect_exit 1 "wide.scene:2:6: error: .*wide.gltf.*camera 0: yfov 0 rad" "$BIN" check "$TMP/wide.scene"
+expect_exit 1 "wide.scene:2:11: error: .*wide.gltf: camera 0: yfov 0 rad" "$BIN" check "$TMP/wide.scene"
 expect_exit 1 "wide.gltf: error: camera 0: yfov 0 rad" "$BIN" check "$TMP/wide.gltf"
 
 # --- check on an image or a binary file: what it is, and what check takes ---

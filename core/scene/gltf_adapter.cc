@@ -293,6 +293,14 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
    (yfov and znear > 0, zfar > znear) or its node gives it no direction: a camera that
    silently vanished left the user framing the bounds without knowing why. A field of
    view past 1 to 179 degrees is refused too (the scene format's range). */
+/* x as a message writes it: "0.8", not std::to_string's "0.800000". */
+std::string shown(double x)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
+
 void Flattener::add_camera(int index, const Mat4 &w)
 {
     const tinygltf::Camera &cam = m.cameras[(size_t)index];
@@ -301,15 +309,15 @@ void Flattener::add_camera(int index, const Mat4 &w)
                        (cam.name.empty() ? "" : " ('" + printable(cam.name) + "')");
     double degrees = p.yfov * 180.0 / 3.14159265358979323846;
     if (!(degrees >= 1.0 && degrees <= 179.0))
-        fail(name + ": yfov " + std::to_string(p.yfov) + " rad (" + std::to_string(degrees) +
+        fail(name + ": yfov " + shown(p.yfov) + " rad (" + shown(degrees) +
              " degrees) is outside 1 to 179 degrees (0.0175 to 3.124 rad; glTF's yfov is in "
              "radians and must be above 0)");
     if (!(p.znear > 0.0) || !std::isfinite(p.znear))
-        fail(name + ": znear " + std::to_string(p.znear) + " is not a finite distance above "
+        fail(name + ": znear " + shown(p.znear) + " is not a finite distance above "
              "0 (glTF requires znear > 0)");
     if (!(p.zfar >= 0.0) || !std::isfinite(p.zfar) || (p.zfar > 0.0 && p.zfar <= p.znear))
-        fail(name + ": zfar " + std::to_string(p.zfar) + " is not beyond znear " +
-             std::to_string(p.znear) + " (glTF requires zfar > znear, or no zfar)");
+        fail(name + ": zfar " + shown(p.zfar) + " is not beyond znear " +
+             shown(p.znear) + " (glTF requires zfar > znear, or no zfar)");
     double fwd[3] = {-w[8], -w[9], -w[10]}, up[3] = {w[4], w[5], w[6]};
     double fl = std::sqrt(fwd[0] * fwd[0] + fwd[1] * fwd[1] + fwd[2] * fwd[2]);
     double ul = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
