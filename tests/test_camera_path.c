@@ -1,5 +1,6 @@
 /* test_camera_path.c - camera paths (core/scene/camera_path.h, docs/time.md):
- *   - the Catmull-Rom path passes through every key exactly, at the key's time;
+ *   - the Catmull-Rom path passes through every key exactly, at the key's time, and
+ *     through positions worked out by hand in its first, middle and last segment;
  *   - it is continuous: small steps in time make small steps in position, also across keys;
  *   - a cut jumps: the camera holds the key before until the cut's time, and the frame that
  *     crosses the cut says so; clamped before the first key and after the last;
@@ -74,6 +75,44 @@ static void test_through_keys_and_continuous(void)
     ssg_camera_path_eval(&p, 2.25, &b);
     CHECK(dist(b.position, keys[2].position) > 0.1 && dist(b.position, keys[3].position) > 0.1);
     CHECK_NEAR(dist(b.up, (float[3]){0, 1, 0}), 0, 1e-6);
+}
+
+/* Positions worked out by hand, one in each segment of a 4-key path, so a segment that
+ * takes a wrong neighbour fails (not only "not a straight line"). Keys at t = 0, 1, 2, 3
+ * with x = 0, 1, 5, 14 (y and z fixed): the centripetal knot intervals sqrt|dx| are 1, 2,
+ * 3. The end condition (camera_path.c): the first segment's missing p0 and the last
+ * segment's missing p3 are the end key itself, a zero knot interval whose first-level lerp
+ * is that key. Barry-Goldman with t0 = 0, t at u = 0.5, all in x:
+ *   first  [0,1]: p = 0, 0, 1, 5; t1 = 0, t2 = 1, t3 = 3, t = 0.5
+ *          A1 = 0; A2 = (0.5*0 + 0.5*1)/1 = 0.5; A3 = (2.5*1 - 0.5*5)/2 = 0
+ *          B1 = (0.5*0 + 0.5*0.5)/1 = 0.25; B2 = (2.5*0.5 + 0.5*0)/3 = 5/12
+ *          C  = (0.5*0.25 + 0.5*5/12)/1 = 1/8 + 5/24 = 1/3
+ *   middle [1,2]: p = 0, 1, 5, 14; t1 = 1, t2 = 3, t3 = 6, t = 2
+ *          A1 = (-1*0 + 2*1)/1 = 2; A2 = (1*1 + 1*5)/2 = 3; A3 = (4*5 - 1*14)/3 = 2
+ *          B1 = (1*2 + 2*3)/3 = 8/3; B2 = (4*3 + 1*2)/5 = 14/5
+ *          C  = (1*8/3 + 1*14/5)/2 = 41/15
+ *   last   [2,3] (the segment before the last key): p = 1, 5, 14, 14; t1 = 2, t2 = 5,
+ *          t3 = 5, t = 3.5
+ *          A1 = (-1.5*1 + 3.5*5)/2 = 8; A2 = (1.5*5 + 1.5*14)/3 = 9.5; A3 = 14
+ *          B1 = (1.5*8 + 3.5*9.5)/5 = 9.05; B2 = (1.5*9.5 + 1.5*14)/3 = 11.75
+ *          C  = (1.5*9.05 + 1.5*11.75)/3 = 10.4
+ * The middle segment is the one before the last key's segment: a k3 that takes k + 1 for
+ * the last key (`k + 2 < b`) gives 91/30 there. (Taking p2 for the first segment's p0, or
+ * p1 for the last segment's p3, is no slip: with centripetal knots it gives the same curve
+ * as the duplicated end key, since the knots only shift.) */
+static void test_hand_worked(void)
+{
+    struct ssg_camera_key keys[] = {key(0, 0, 1, 3, 0), key(1, 1, 1, 3, 0), key(2, 5, 1, 3, 0),
+                                    key(3, 14, 1, 3, 0)};
+    struct ssg_camera_path p = keys_path(keys, COUNT(keys));
+    const double at[][2] = {{0.5, 1.0 / 3.0}, {1.5, 41.0 / 15.0}, {2.5, 10.4}};
+    for (int i = 0; i < COUNT(at); i++) {
+        struct ssg_camera c;
+        ssg_camera_path_eval(&p, at[i][0], &c);
+        CHECK_NEAR(c.position[0], at[i][1], 1e-5);
+        CHECK_NEAR(c.position[1], 1, 1e-6);
+        CHECK_NEAR(c.position[2], 3, 1e-6);
+    }
 }
 
 static void test_cut(void)
@@ -208,6 +247,7 @@ int main(void)
 {
     setup_tmp("camera_path");
     test_through_keys_and_continuous();
+    test_hand_worked();
     test_cut();
     test_orbit();
     test_scene_path();

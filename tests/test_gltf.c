@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "scratch.h"
 #include "scene/gltf.h"
 
 #define OBJ_PATH "/usr/share/glmark2/models/bunny.obj"
@@ -118,10 +119,59 @@ static void expect_failure(const char *path, enum ssg_err code, const char *word
     fprintf(stderr, "  (expected) %s\n", why);
 }
 
+/* tests/fixtures/gltf/triangle.gltf with `from` replaced by `to` (and `from2` by `to2`
+   when given), written to the scratch folder; NULL when that fails. */
+static const char *triangle_with(const char *from, const char *to, const char *from2,
+                                 const char *to2)
+{
+    static char text[8400], out[8400];
+    FILE *f = fopen("tests/fixtures/gltf/triangle.gltf", "r");
+    size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    if (f)
+        fclose(f);
+    text[n] = 0;
+    for (int k = 0; k < 2 && (k ? from2 : from); k++) {
+        const char *a = k ? from2 : from, *b = k ? to2 : to, *at = strstr(text, a);
+        CHECK(at != NULL);
+        if (!at)
+            return NULL;
+        snprintf(out, sizeof out, "%.*s%s%s", (int)(at - text), text, b, at + strlen(a));
+        snprintf(text, sizeof text, "%s", out);
+    }
+    return write_file("camera.gltf", text);
+}
+
+/* A camera glTF forbids is refused, naming the file and the camera, never dropped: yfov
+   at or below 0 or 179 degrees and more (1e999, no JSON number, is the parser's to refuse),
+   znear at or below 0, zfar before znear. */
+static void test_bad_cameras(void)
+{
+    static const char *const cases[][3] = {
+        {"\"yfov\": 0.8", "\"yfov\": 0", "camera 0: yfov 0"},
+        {"\"yfov\": 0.8", "\"yfov\": -0.8", "camera 0: yfov -0.8"},
+        {"\"yfov\": 0.8", "\"yfov\": 3.2", "camera 0: yfov 3.2"},
+        {"\"yfov\": 0.8", "\"yfov\": 1e999", ""}, /* JSON holds no infinity: the parser's */
+        {"\"znear\": 0.1", "\"znear\": 0", "camera 0: znear 0"},
+        {"\"znear\": 0.1", "\"znear\": -1", "camera 0: znear -1"},
+        {"\"zfar\": 50", "\"zfar\": 0.05", "camera 0: zfar 0.05"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *path = triangle_with(cases[i][0], cases[i][1], NULL, NULL);
+        if (path)
+            expect_failure(path, SSG_E_GLTF, cases[i][2]);
+    }
+    const char *named = triangle_with("\"yfov\": 0.8", "\"yfov\": -1", "\"type\": \"perspective\"",
+                                      "\"name\": \"eye\", \"type\": \"perspective\"");
+    if (named)
+        expect_failure(named, SSG_E_GLTF, "camera 0 ('eye'): yfov -1");
+}
+
 int main(void)
 {
+    setup_tmp("gltf");
     test_bunny();
     test_triangle();
+    test_bad_cameras();
     expect_failure("tests/fixtures/broken.gltf", SSG_E_GLTF, "");
     expect_failure("tests/fixtures/gltf/index_out_of_range.gltf", SSG_E_GLTF, "out of range");
     expect_failure("tests/fixtures/gltf/lines.gltf", SSG_E_GLTF, "not a triangle mode");

@@ -5,7 +5,9 @@
 #  - a node whose check failed is reported once: its readers add no follow-on errors;
 #  - a scene with no light and no environment: an error where the graph reads gbuffer's
 #    direct or environment light, a warning (exit 0) where it does not;
-#  - a glTF camera whose yfov is out of range names the file when the scene is checked.
+#  - a glTF camera whose yfov is out of range names the file when the scene is checked,
+#    and one glTF forbids (yfov <= 0) is refused the same way, never dropped;
+#  - `check` on an image or another binary file says what the file is and what check takes.
 set -u
 source "$(dirname "$0")/lib.sh" "test_load_rules"
 
@@ -91,5 +93,17 @@ point_light(position=[0, 2, 2], color=[1, 1, 1], intensity=5)
 mesh(file="wide.gltf")
 EOF
 expect_exit 1 "wide.gltf.*yfov 10.* rad .* is outside 1 to 179 degrees" "$BIN" check "$TMP/wide.scene"
+sed 's/"yfov": 0.8/"yfov": 0/' tests/fixtures/gltf/triangle.gltf > "$TMP/wide.gltf"
+expect_exit 1 "wide.scene:2:11: error: .*wide.gltf: camera 0: yfov 0 rad" "$BIN" check "$TMP/wide.scene"
+expect_exit 1 "wide.gltf: error: camera 0: yfov 0 rad" "$BIN" check "$TMP/wide.gltf"
+
+# --- check on an image or a binary file: what it is, and what check takes ---
+expect_exit 1 "garbage.png: error: a PNG image, not a graph, a scene or a model: .*graph file.*\.scene file.*model \(\.gltf" \
+    "$BIN" check tests/fixtures/garbage.png
+expect_exit 1 "scanline.exr: error: an OpenEXR image, not a graph.*ssgraph layers FILE" \
+    "$BIN" check tests/fixtures/images/scanline.exr
+printf 'g = gbuffer()\0\n' > "$TMP/nul.graph"
+expect_exit 1 "nul.graph: error: a binary file \(it holds NUL bytes\), not a graph" \
+    "$BIN" check "$TMP/nul.graph"
 
 finish test_load_rules

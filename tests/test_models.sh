@@ -7,6 +7,7 @@
 # writes nothing; graphs/ssao.graph renders examples/cup.scene (an OBJ). Issue 28: a DAE
 # nested 100,000 deep, a PLY header without end_header and one claiming 2e9 faces are
 # refused at their line:column before Assimp sees them (no crash, no hang, no 15 GB);
+# issue 42: a NaN or infinite vertex, normal or texture coordinate is refused;
 # `check MODEL` prints the meshes, bounds, up axis and a scene that loads; a box standing
 # Z-up as OBJ, FBX and 3DS gets the right up-axis advice for its reader (3DS arrives Y-up,
 # and rotate=[-90, 0, 0] would lay it on its back), and `check FILE.scene` each mesh's box
@@ -167,6 +168,24 @@ expect_exit 0 "plane\(center=\[0.5, 0, -1\], size=\[6, 0, 6\]\)" "cat" "$TMP/pas
 expect_exit 0 "largest along Y, the renderer's up" "$BIN" check "$TMP/pastedobj.scene"
 expect_exit 0 "up: \+Z, from the file's UpAxis metadata.*FBX reader: rotate=\[-90, 0, 0\] on the mesh line stands it up" \
     "$BIN" check "$TMP/tall.fbx"
+
+# --- issue 42: NaN or infinity in a vertex (position, normal or texture coordinate) is
+#     refused by check MODEL, naming the mesh and vertex, and no scene is suggested; a scene
+#     and a run refuse it at the mesh line ---
+printf 'v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n' > "$TMP/nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn inf 0 1\nf 1//1 2//2 3//1\n' > "$TMP/infn.obj"
+# (Assimp's OBJ reader reads `vt nan 0` as 0 0 itself; its PLY reader keeps the NaN)
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float s\nproperty float t\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 0 0\n1 0 0 nan 0\n0 1 0 0 1\n3 0 1 2\n' \
+    > "$TMP/nanuv.ply"
+expect_exit 1 "nan.obj: error: mesh 0.* vertex 1: its position is \(nan, 0, 0\) \(expected finite" \
+    "$BIN" check "$TMP/nan.obj"
+"$BIN" check "$TMP/nan.obj" 2>&1 | grep -Eq ": ok|scene around|mesh\(" \
+    && fail "check of a NaN vertex said ok or suggested a scene: $("$BIN" check "$TMP/nan.obj" 2>&1)"
+expect_exit 1 "infn.obj: error: mesh 0.* vertex 1: its normal is \(inf, 0, 1\)" \
+    "$BIN" check "$TMP/infn.obj"
+expect_exit 1 "nanuv.ply: error: mesh 0 vertex 1: its texture coordinate is \(nan, 0\)" \
+    "$BIN" check "$TMP/nanuv.ply"
+bad nan.obj "vertex 1: its position is \(nan, 0, 0\)"
 
 # --- check FILE.scene: each mesh's box after its transform, the up axis per reader ---
 z='(-?[0-9.]+e-0[6-9]|-?0)' # a quarter turn in floats leaves 0 as about 1e-7

@@ -79,7 +79,7 @@ static void test_xml(void)
                         "</COLLADA>\n";
     expect_precheck(".dae", count, strlen(count), SSG_E_GLTF, "m:2:28: ");
     const char *fine = "<COLLADA><float_array count=\"3\">0.5 -1e3 nan</float_array>"
-                       "<vcount>3 4</vcount><p>0 1 2 3 4 -1</p></COLLADA>";
+                       "<vcount>3 4</vcount><p>0 1 2 3 4 +5</p><v>0 -1</v></COLLADA>";
     expect_precheck(".dae", fine, strlen(fine), SSG_OK, NULL);
     /* a primitive without its VERTEX input (read before its inputs: valgrind, fuzzed) */
     const char *novertex = "<COLLADA>\n<mesh><triangles count=\"1\">\n<input xsemantic=\"VERTEX\" "
@@ -100,6 +100,71 @@ static void test_xml(void)
                         "", 300, "</a>");
     expect_precheck(".dae", flat, strlen(flat), SSG_OK, NULL);
     free(flat);
+}
+
+/* Every kind of data array the COLLADA pre-check lists (model_check_dae.c, ARRAYS): one
+   an <accessor> reads past (tests/fixtures/dae/past_KIND.dae: 3 values of 2, refused at
+   the accessor, 6:5), and one without its count (refused at the array). A kind dropped
+   from the list fails both. */
+static void test_dae_arrays(void)
+{
+    static const char *const kinds[] = {"float_array", "int_array", "bool_array",
+                                        "Name_array", "IDREF_array", "SIDREF_array",
+                                        "token_array"};
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+        char path[128], at[256], why[512] = "", text[160];
+        snprintf(path, sizeof path, "tests/fixtures/dae/past_%s.dae", kinds[k]);
+        snprintf(at, sizeof at, "%s:6:5: <accessor> reads past the end of its array 'a'",
+                 path);
+        CHECK_EQ(ssg_model_precheck(path, why, sizeof why), SSG_E_GLTF);
+        if (strncmp(why, at, strlen(at))) {
+            fprintf(stderr, "%s: '%s' does not start with '%s'\n", kinds[k], why, at);
+            CHECK(0);
+        }
+        snprintf(text, sizeof text, "<COLLADA>\n <%s id='a'>1</%s></COLLADA>", kinds[k],
+                 kinds[k]);
+        expect_precheck(".dae", text, strlen(text), SSG_E_GLTF, "m:2:2: ");
+    }
+}
+
+/* An accessor within its array passes (the last value read is the array's last, its
+   params may be fewer than its stride); one reading a value past it, by its count, its
+   offset or more params than its stride, is refused at the accessor; so are numbers the
+   XML reader would wrap or read as hexadecimal, and a negative index in <p>. */
+static void test_dae_accessors(void)
+{
+#define SOURCE(arr, acc) "<COLLADA><source>\n<float_array id='f' count='" arr "'/>\n<accessor " \
+                         "source='#f' " acc "><param name='X'/><param/></accessor></source>" \
+                         "</COLLADA>"
+    const char *const fits[] = {SOURCE("6", "count='3' stride='2'"),
+                                SOURCE("7", "count='3' stride='2' offset='1'"),
+                                SOURCE("8", "count='2' stride='3' offset='2'"),
+                                SOURCE("0", "count='0' stride='2'"), /* reads nothing */
+                                SOURCE("6", "count='2' stride='2'")};
+    for (size_t i = 0; i < sizeof fits / sizeof fits[0]; i++)
+        expect_precheck(".dae", fits[i], strlen(fits[i]), SSG_OK, NULL);
+    const char *const past[] = {SOURCE("5", "count='3' stride='2'"),
+                                SOURCE("6", "count='3' stride='2' offset='1'"),
+                                SOURCE("6", "count='3' stride='1' offset='4'"),
+                                SOURCE("2", "count='2'")}; /* stride 1, 2 params */
+    for (size_t i = 0; i < sizeof past / sizeof past[0]; i++)
+        expect_precheck(".dae", past[i], strlen(past[i]), SSG_E_GLTF, "m:3:1: <accessor>");
+    const char *wrapped = SOURCE("6", "count='3' offset='-1'");
+    expect_precheck(".dae", wrapped, strlen(wrapped), SSG_E_GLTF, "m:3:41: offset=");
+    const char *hex = SOURCE("6", "count='3' stride='0x2'");
+    expect_precheck(".dae", hex, strlen(hex), SSG_E_GLTF, "m:3:41: stride=");
+    const char *negative = SOURCE("-3", "count='1'");
+    expect_precheck(".dae", negative, strlen(negative), SSG_E_GLTF, "m:2:28: count=");
+#undef SOURCE
+    /* the last array of an id is the one the importer keeps */
+    const char *twice = "<COLLADA><float_array id='f' count='9'/>\n<accessor source='#f' "
+                        "count='9'/>\n<float_array id='f' count='1'/></COLLADA>";
+    expect_precheck(".dae", twice, strlen(twice), SSG_E_GLTF, "m:2:1: ");
+    const char *p = "<COLLADA><triangles><input semantic='VERTEX'/>\n<p>0 1 -2</p>"
+                    "</triangles></COLLADA>";
+    expect_precheck(".dae", p, strlen(p), SSG_E_GLTF, "m:2:8: <p> holds a negative");
+    const char *vcount = "<COLLADA>\n<vcount>3 -3</vcount></COLLADA>";
+    expect_precheck(".dae", vcount, strlen(vcount), SSG_E_GLTF, "m:2:11: ");
 }
 
 static void test_braces(void)
@@ -375,6 +440,8 @@ static void test_sandbox_model(void)
 int main(void)
 {
     test_xml();
+    test_dae_arrays();
+    test_dae_accessors();
     test_braces();
     test_ply();
     test_stl();

@@ -283,6 +283,11 @@ static void print_snippet(FILE *out, const char *path, const char *rotate, float
         sscanf(rotate, "[%f, %f, %f]", &rot[0], &rot[1], &rot[2]);
     place_box(lo, hi, rot, scale > 0.0f ? scale : 1.0f, plo, phi);
     float width = 3.0f * fmaxf(phi[0] - plo[0], phi[2] - plo[2]);
+    if (!isfinite(width) || !isfinite(plo[0] + phi[0]) || !isfinite(plo[2] + phi[2])) {
+        fprintf(out, "  no scene to suggest: the model's box (%g wide) overflows float once "
+                "placed (scale it down on its mesh line)\n", (double)width);
+        return;
+    }
     fprintf(out, "  a scene around it (docs/scenes.md), to save as %.*s.scene next to %s:\n",
             (int)(dot ? dot - name : (long)strlen(name)), name, name);
     fprintf(out, "    mesh(\"%s\"", name);
@@ -308,6 +313,25 @@ static float model_scale_hint(const struct ssg_gltf *g, float *diagonal)
     return ssg_scene_scale_hint(&s, DEFAULT_AO_RADIUS, diagonal);
 }
 
+/* Every vertex of the loaded model finite: the readers refuse NaN and infinity in the
+   file, but a node's transform can still overflow float, and the bounds, the hints and
+   the scene printed from them must never hold NaN or infinity. */
+static enum ssg_err model_finite(const struct ssg_gltf *g, const char *path,
+                                 struct ssg_diags *diags)
+{
+    for (int m = 0; m < g->mesh_count; m++)
+        for (size_t v = 0; v < 3 * (size_t)g->meshes[m].vertex_count; v++) {
+            const float *p = &g->meshes[m].positions[v - v % 3];
+            if (isfinite(g->meshes[m].positions[v]))
+                continue;
+            ssg_diag_file(diags, SSG_E_VALUE, path, "mesh %d vertex %zu is at (%g, %g, %g) "
+                          "after the file's node transforms (expected finite coordinates)",
+                          m, v / 3, (double)p[0], (double)p[1], (double)p[2]);
+            return SSG_E_VALUE;
+        }
+    return SSG_OK;
+}
+
 enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *diags)
 {
     if (ssg_api_null(diags, "ssg_model_summary", "path, out", 2, path, out))
@@ -318,6 +342,10 @@ enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *di
     enum ssg_err e = ssg_model_load_up(path, &g, &up, why, sizeof why);
     if (e) {
         model_diag(diags, e, path, why);
+        return e;
+    }
+    if ((e = model_finite(g, path, diags))) {
+        ssg_gltf_destroy(&g);
         return e;
     }
     long long triangles = 0;

@@ -253,6 +253,61 @@ void drop_empty_faces(const aiScene &scene)
     }
 }
 
+/* Mesh m's vertex v, as a message names it: "mesh 0 ('Cube') vertex 3". */
+std::string vertex_name(const aiMesh &mesh, unsigned m, unsigned v)
+{
+    std::string name = printable(std::string(mesh.mName.C_Str()));
+    return "mesh " + std::to_string(m) + (name.empty() ? "" : " ('" + name + "')") +
+           " vertex " + std::to_string(v);
+}
+
+std::string show(const aiVector3D &p, int n)
+{
+    std::string text = "(";
+    for (int k = 0; k < n; k++) {
+        char one[32];
+        std::snprintf(one, sizeof one, "%s%g", k ? ", " : "", (double)p[(unsigned)k]);
+        text += one;
+    }
+    return text + ")";
+}
+
+bool finite(const aiVector3D &p, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (!std::isfinite(p[(unsigned)k]))
+            return false;
+    return true;
+}
+
+/* NaN or infinity in what the file holds for a vertex, as read (before the post-processing
+   steps): a position would poison the bounds, the scene `check` suggests and the ray
+   tracer; a normal or texture coordinate means a broken file too, and is refused as the
+   glTF reader refuses it. The 3DS reader makes its normals itself (from smoothing groups,
+   NaN on a degenerate face), so its normals are left to add_mesh's replacement. */
+void check_finite(const aiScene &scene, const std::string &format)
+{
+    for (unsigned m = 0; m < scene.mNumMeshes; m++) {
+        if (!scene.mMeshes[m] || !scene.mMeshes[m]->mVertices)
+            continue; /* the validation step (after this) refuses it */
+        const aiMesh &mesh = *scene.mMeshes[m];
+        const aiVector3D *normals = format == "3DS" ? nullptr : mesh.mNormals;
+        for (unsigned v = 0; v < mesh.mNumVertices; v++) {
+            const char *what = !finite(mesh.mVertices[v], 3) ? "position"
+                               : normals && !finite(normals[v], 3) ? "normal"
+                               : mesh.mTextureCoords[0] && !finite(mesh.mTextureCoords[0][v], 2)
+                                   ? "texture coordinate"
+                                   : nullptr;
+            if (!what)
+                continue;
+            const aiVector3D &p = what[0] == 'p' ? mesh.mVertices[v]
+                                  : what[0] == 'n' ? normals[v] : mesh.mTextureCoords[0][v];
+            fail(vertex_name(mesh, m, v) + ": its " + what + " is " +
+                 show(p, what[0] == 't' ? 2 : 3) + " (expected finite values)");
+        }
+    }
+}
+
 /* "OBJ" for "cup.obj": the format as a message names it. */
 std::string format_name(const char *path)
 {
@@ -311,11 +366,12 @@ ssg_gltf *load(const char *path, ssg_model_up *up, bool flatten)
     /* read first, then mend, then post-process: a face without indices kills the process
        in Assimp's triangulation (below); the up axis alone needs none of the steps */
     const aiScene *scene = importer.ReadFile(path, 0u);
+    std::string format = format_name(path);
     if (scene && flatten) {
+        check_finite(*scene, format);
         drop_empty_faces(*importer.GetScene());
         scene = importer.ApplyPostProcessing(steps);
     }
-    std::string format = format_name(path);
     if (!io->failed.empty())
         fail("a file it names cannot be read: " + printable(io->failed));
     if (!scene) {

@@ -144,6 +144,7 @@ float srgb_to_linear(float c)
 }
 
 using model_adapter::Prim;
+using model_adapter::printable;
 using model_adapter::Tex;
 
 class Flattener {
@@ -164,7 +165,7 @@ class Flattener {
 
     void visit(int node, const Mat4 &parent, int depth);
     void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
-    void add_camera(const tinygltf::Camera &cam, const Mat4 &world);
+    void add_camera(int index, const Mat4 &world);
     void convert_materials();
     int texture(int gltf_index);
 };
@@ -209,7 +210,7 @@ void Flattener::visit(int index, const Mat4 &parent, int depth)
     }
     if (node.camera >= 0 && (size_t)node.camera < m.cameras.size() && !has_camera &&
         m.cameras[(size_t)node.camera].type == "perspective")
-        add_camera(m.cameras[(size_t)node.camera], world);
+        add_camera(node.camera, world);
     for (int c : node.children) visit(c, world, depth + 1);
 }
 
@@ -288,26 +289,46 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
     prims.push_back(std::move(out));
 }
 
-void Flattener::add_camera(const tinygltf::Camera &cam, const Mat4 &w)
+/* The camera a scene starts from is refused, never dropped, when glTF forbids its values
+   (yfov and znear > 0, zfar > znear) or its node gives it no direction: a camera that
+   silently vanished left the user framing the bounds without knowing why. A field of
+   view past 1 to 179 degrees is refused too (the scene format's range). */
+/* x as a message writes it: "0.8", not std::to_string's "0.800000". */
+std::string shown(double x)
 {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
+
+void Flattener::add_camera(int index, const Mat4 &w)
+{
+    const tinygltf::Camera &cam = m.cameras[(size_t)index];
     const tinygltf::PerspectiveCamera &p = cam.perspective;
+    std::string name = "camera " + std::to_string(index) +
+                       (cam.name.empty() ? "" : " ('" + printable(cam.name) + "')");
+    double degrees = p.yfov * 180.0 / 3.14159265358979323846;
+    if (!(degrees >= 1.0 && degrees <= 179.0))
+        fail(name + ": yfov " + shown(p.yfov) + " rad (" + shown(degrees) +
+             " degrees) is outside 1 to 179 degrees (0.0175 to 3.124 rad; glTF's yfov is in "
+             "radians and must be above 0)");
+    if (!(p.znear > 0.0) || !std::isfinite(p.znear))
+        fail(name + ": znear " + shown(p.znear) + " is not a finite distance above "
+             "0 (glTF requires znear > 0)");
+    if (!(p.zfar >= 0.0) || !std::isfinite(p.zfar) || (p.zfar > 0.0 && p.zfar <= p.znear))
+        fail(name + ": zfar " + shown(p.zfar) + " is not beyond znear " +
+             shown(p.znear) + " (glTF requires zfar > znear, or no zfar)");
     double fwd[3] = {-w[8], -w[9], -w[10]}, up[3] = {w[4], w[5], w[6]};
     double fl = std::sqrt(fwd[0] * fwd[0] + fwd[1] * fwd[1] + fwd[2] * fwd[2]);
     double ul = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
-    if (fl <= 0 || ul <= 0 || p.yfov <= 0 || p.znear <= 0)
-        return; /* a degenerate camera is ignored rather than failing the whole file */
+    if (!(fl > 0) || !(ul > 0) || !std::isfinite(fl) || !std::isfinite(ul))
+        fail(name + ": its node's transform leaves it no direction to look in (a zero or "
+             "non-finite scale)");
     for (int i = 0; i < 3; i++) {
         camera.position[i] = (float)w[12 + i];
         camera.target[i] = (float)(w[12 + i] + fwd[i] / fl);
         camera.up[i] = (float)(up[i] / ul);
     }
-    /* Checked here, where the file is known: a field of view past the scene format's
-       range used to fail only at run time, naming no file. */
-    double degrees = p.yfov * 180.0 / 3.14159265358979323846;
-    if (degrees < 1.0 || degrees > 179.0)
-        fail("camera '" + cam.name + "': yfov " + std::to_string(p.yfov) + " rad (" +
-             std::to_string(degrees) + " degrees) is outside 1 to 179 degrees (0.0175 to "
-             "3.124 rad; glTF's yfov is in radians)");
     camera.fov_y = (float)degrees;
     camera.near_z = (float)p.znear;
     /* zfar absent means an infinite projection; use a far plane well past the near one */

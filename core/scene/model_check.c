@@ -128,8 +128,8 @@ static size_t skip_declaration(const struct ssg_check *s, size_t i)
 
 /* Element nesting of an XML file: comments, CDATA, processing instructions and
    declarations open nothing; the deepest open tag is reported where it starts. A COLLADA
-   file's tags are checked one by one too (model_check_dae.c). */
-static enum ssg_err check_xml(const struct ssg_check *s, int collada)
+   file's tags are checked one by one too (model_check_dae.c), with dae (else NULL). */
+static enum ssg_err walk_xml(const struct ssg_check *s, struct ssg_dae_scan *dae)
 {
     int depth = 0;
     for (size_t i = 0; i < s->len;) {
@@ -156,12 +156,28 @@ static enum ssg_err check_xml(const struct ssg_check *s, int collada)
                 return ssg_check_refuse_at(s, at, "XML elements nested deeper than %d levels "
                                            "(the importer would overflow its stack)",
                                            SSG_MODEL_MAX_NESTING);
-            enum ssg_err e = collada ? ssg_check_dae_tag(s, at, i, closed) : SSG_OK;
+            enum ssg_err e = dae ? ssg_check_dae_tag(s, dae, at, i, closed) : SSG_OK;
             if (e)
                 return e;
         }
     }
     return SSG_OK;
+}
+
+/* An XML file's walk; a COLLADA file's twice (model_check.h, struct ssg_dae_scan). */
+static enum ssg_err check_xml(const struct ssg_check *s, int collada)
+{
+    if (!collada)
+        return walk_xml(s, NULL);
+    struct ssg_dae_scan dae = {0};
+    enum ssg_err e = walk_xml(s, &dae);
+    if (!e) {
+        ssg_check_dae_sort(&dae);
+        dae.pass = 1;
+        e = walk_xml(s, &dae);
+    }
+    ssg_check_dae_free(&dae);
+    return e;
 }
 
 /* Nesting of { and [ outside "strings": JSON, ASCII FBX, DirectX .x, ASE. */

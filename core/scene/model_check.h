@@ -37,8 +37,23 @@ size_t ssg_check_find(const struct ssg_check *s, size_t from, size_t to, const c
 #define SSG_PLY_MAX_HEADER (1 << 20)
 enum ssg_err ssg_check_ply(const struct ssg_check *s);
 
-/* One open tag [at, end) of a COLLADA file (closed: it ends in "/>"): its count attribute
-   against the file's size, and an index list's text (model_check_dae.c). */
-enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, size_t at, size_t end, int closed);
+/* What the COLLADA checks carry from tag to tag (model_check_dae.c). The walk over the
+   tags runs twice: pass 0 checks each tag alone and records every data array's id and
+   count (the importer keeps the last array of an id, and so does `arrays`), pass 1 checks
+   each <accessor> against the array it names. Zero-initialised; ssg_check_dae_free. */
+struct ssg_dae_scan {
+    int pass;                   /* 0 or 1 */
+    struct ssg_dae_array *arrays; /* malloc'd, sorted by id once pass 0 ends */
+    size_t array_count, array_cap;
+};
+
+/* One open tag [at, end) of a COLLADA file (closed: it ends in "/>"): in pass 0 its count
+   attribute against the file's size, an index list's text, a data array's count; in pass
+   1 an accessor's reach into its array. */
+enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, struct ssg_dae_scan *scan, size_t at,
+                               size_t end, int closed);
+/* Between the passes: the arrays sorted for lookup. */
+void ssg_check_dae_sort(struct ssg_dae_scan *scan);
+void ssg_check_dae_free(struct ssg_dae_scan *scan);
 
 #endif
