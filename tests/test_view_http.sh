@@ -13,6 +13,7 @@
 #   fix clears it), SIGTERM ends it with status 0.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_http"
+source "$(dirname "$0")/view_lib.sh"
 ROOT=$(pwd)
 mkdir -p "$TMP/graphs"
 cp graphs/ssdo_realtime.graph "$TMP/graphs/"
@@ -20,28 +21,9 @@ G=$TMP/graphs/ssdo_realtime.graph
 SIZE=96x54
 common=(--scene "$ROOT/examples/cornell.scene" --size $SIZE --threads 2)
 
-"$BIN" view "$G" "${common[@]}" --out "$TMP/out" >"$TMP/view.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null' EXIT
-url=
-for _ in $(seq 1 300); do # the load may take a while on a busy machine
-    url=$(grep -o 'http://127.0.0.1:[0-9]*/?token=[0-9a-f]*' "$TMP/view.log")
-    [ -n "$url" ] || ! kill -0 $pid 2>/dev/null && break
-    sleep 0.2
-done
-[ -n "$url" ] || { cat "$TMP/view.log"; fail "no URL printed"; finish test_view_http; }
-port=${url#http://127.0.0.1:}; port=${port%%/*}
-token=${url##*token=}
-B=http://127.0.0.1:$port
-H="X-SSG-Token: $token"
+view_start "$TMP/view.log" "$G" "${common[@]}" --out "$TMP/out" || {
+    fail "no URL printed"; finish test_view_http; }
 client() { python3 "$ROOT/tests/view_client.py" "$B" "$token" "$@"; }
-# code ARGS...: the HTTP status of a curl request
-code() { curl -s -o "$TMP/body" -w '%{http_code}' "$@"; }
-expect_code() {
-    local want=$1; shift
-    local got; got=$(code "$@")
-    [ "$got" = "$want" ] || fail "curl $* answered $got, expected $want: $(head -c 300 "$TMP/body")"
-}
 
 # --- safety
 expect_code 403 "$B/api/state"
@@ -158,9 +140,5 @@ gen=$(client wait_gen "$gen" 30)
 client state | grep -q '"error": null' || fail "the fixed graph still shows an error"
 
 # --- SIGTERM: a clean end
-kill -TERM $pid
-for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-wait $pid; rc=$?
-[ "$rc" -eq 0 ] || fail "SIGTERM ended the server with status $rc"
-trap - EXIT
+view_stop_within 2000 TERM
 finish test_view_http
