@@ -20,8 +20,9 @@ view_start() {
     H="X-SSG-Token: $token"
 }
 
-# code ARGS...: the HTTP status of a curl request (its body in $TMP/body)
-code() { curl -s -o "$TMP/body" -w '%{http_code}' "$@"; }
+# code ARGS...: the HTTP status of a curl request (its body in $TMP/body; 000 when no answer
+# came within 60 s: a blocked server fails its test rather than hanging it)
+code() { curl -s --max-time 60 -o "$TMP/body" -w '%{http_code}' "$@"; }
 expect_code() {
     local want=$1; shift
     local got; got=$(code "$@")
