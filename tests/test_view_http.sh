@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # `ssgraph view` over HTTP, from outside (tests/view_client.py; curl for the raw requests):
-# - safety: no token, a wrong token, a foreign Host (DNS rebinding) or Origin: 403; paths
-#   that try to leave the page (../, encoded): 404; a body over 64 KiB: 413 (announced or
-#   chunked); a method it does not serve: 405; many clients at once: every answer whole,
-#   the server alive and its state consistent;
+# - safety: no token, a wrong token (one that differs from it in the last character only),
+#   a foreign Host (DNS rebinding) or Origin: 403; paths that try to leave the page (../,
+#   encoded): 404; a body over 64 KiB: 413 (announced or chunked); a method it does not
+#   serve: 405; many clients at once: every answer whole, the server alive and its state
+#   consistent;
 # - a parameter change re-runs only the changed node and those after it (the stats say
 #   which ran), its image is bit for bit what `ssgraph run --show` writes with the same
 #   --set; a refused value answers 400 with file:line:col and changes nothing;
@@ -29,6 +30,17 @@ client() { python3 "$ROOT/tests/view_client.py" "$B" "$token" "$@"; }
 expect_code 403 "$B/api/state"
 expect_code 403 "$B/api/state?token=0123456789abcdef0123456789abcdef"
 expect_code 403 -H "X-SSG-Token: ${token}0" "$B/api/state"
+# near misses: the token with only its last (or only its first) character changed, each way
+# a token may come (a compare that stops before the end lets the first through)
+last=${token: -1}; first=${token:0:1}
+near_last=${token:0:31}$([ "$last" = 0 ] && echo 1 || echo 0)
+near_first=$([ "$first" = 0 ] && echo 1 || echo 0)${token:1}
+for near in "$near_last" "$near_first"; do
+    expect_code 403 "$B/api/state?token=$near"
+    expect_code 403 -H "X-SSG-Token: $near" "$B/api/state"
+    expect_code 403 -b "ssg_token=$near" "$B/api/state"
+    expect_code 403 -H "X-SSG-Token: $near" -d "do.radius=0.2" "$B/api/set"
+done
 expect_code 200 "$B/api/state?token=$token"
 expect_code 200 -H "$H" "$B/api/state"
 expect_code 200 -b "ssg_token=$token" "$B/api/state"

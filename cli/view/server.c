@@ -292,10 +292,10 @@ static struct MHD_Daemon *start(struct server *sv, unsigned port)
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     return MHD_start_daemon(
         MHD_USE_AUTO_INTERNAL_THREAD | MHD_USE_ERROR_LOG, (uint16_t)port, NULL, NULL, handle,
-        sv, MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr, MHD_OPTION_NOTIFY_COMPLETED,
+        sv, MHD_OPTION_EXTERNAL_LOGGER, mhd_log, sv, /* first: MHD says so otherwise */
+        MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr, MHD_OPTION_NOTIFY_COMPLETED,
         request_done, sv, MHD_OPTION_NOTIFY_CONNECTION, view_guard_notify, sv->guard,
-        MHD_OPTION_EXTERNAL_LOGGER, mhd_log, sv, MHD_OPTION_CONNECTION_LIMIT,
-        connection_limit(), MHD_OPTION_CONNECTION_TIMEOUT,
+        MHD_OPTION_CONNECTION_LIMIT, connection_limit(), MHD_OPTION_CONNECTION_TIMEOUT,
         (unsigned)(2 * VIEW_GUARD_MS / 1000), MHD_OPTION_CONNECTION_MEMORY_LIMIT,
         (size_t)(256 * 1024), MHD_OPTION_END);
 }
