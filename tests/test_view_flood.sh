@@ -10,11 +10,7 @@ set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_flood"
 source "$(dirname "$0")/view_lib.sh"
 ROOT=$(pwd)
-mkdir -p "$TMP/graphs"
-cp graphs/reference_ao.graph "$TMP/graphs/"
-view_start "$TMP/view.log" "$TMP/graphs/reference_ao.graph" --scene "$ROOT/examples/cornell.scene" \
-    --size 96x54 --threads 2 --set ref.rays=4 --out "$TMP/out" || {
-    fail "no URL printed"; finish test_view_flood; }
+view_start_ao 96x54
 
 # flood IDLE TRICKLE SECONDS NAME: the connections, from another process, in the background
 flood() {

@@ -8,11 +8,7 @@ set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_hostile"
 source "$(dirname "$0")/view_lib.sh"
 ROOT=$(pwd)
-mkdir -p "$TMP/graphs"
-cp graphs/reference_ao.graph "$TMP/graphs/"
-view_start "$TMP/view.log" "$TMP/graphs/reference_ao.graph" --scene "$ROOT/examples/cornell.scene" \
-    --size 48x27 --threads 2 --set ref.rays=4 --out "$TMP/out" || {
-    fail "no URL printed"; finish test_view_hostile; }
+view_start_ao 48x27
 alive() {
     kill -0 $pid 2>/dev/null || { fail "the server died after $1: $(tail -5 "$TMP/view.log")"; return 1; }
     expect_code 200 -H "$H" "$B/api/state"

@@ -20,6 +20,17 @@ view_start() {
     H="X-SSG-Token: $token"
 }
 
+# view_start_ao SIZE: view_start on a scratch copy of graphs/reference_ao.graph at SIZE with
+# 4 rays a pixel (cheap; ref.rays=65536 makes a run of seconds); ends the test when no URL
+# came. ROOT is the source folder.
+view_start_ao() {
+    mkdir -p "$TMP/graphs"
+    cp graphs/reference_ao.graph "$TMP/graphs/"
+    view_start "$TMP/view.log" "$TMP/graphs/reference_ao.graph" --scene "$ROOT/examples/cornell.scene" \
+        --size "$1" --threads 2 --set ref.rays=4 --out "$TMP/out" || {
+        fail "no URL printed"; finish "$(basename "$0" .sh)"; }
+}
+
 # code ARGS...: the HTTP status of a curl request (its body in $TMP/body; 000 when no answer
 # came within 60 s: a blocked server fails its test rather than hanging it)
 code() { curl -s --max-time 60 -o "$TMP/body" -w '%{http_code}' "$@"; }
