@@ -5,6 +5,8 @@
 # ran and the metrics; a bad value and a broken graph file show their errors. The server runs
 # on a copy of graphs/ssdo_realtime.graph at 160x90 (the copy is what the watcher sees edited
 # and where the saved variant goes). Screenshots: $TMP/viewer-*.png (docs/images has copies).
+# Everything is reached at 127.0.0.1, never by the name localhost (a minimal system has no
+# /etc/hosts): the server, chromedriver, and chromium, which view_browser.py starts itself.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_browser"
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # `ssgraph view` over HTTP, from outside (tests/view_client.py; curl for the raw requests):
-# - safety: no token, a wrong token, a foreign Host (DNS rebinding) or Origin: 403; paths
-#   that try to leave the page (../, encoded): 404; a body over 64 KiB: 413 (announced or
-#   chunked); a method it does not serve: 405; many clients at once: every answer whole,
-#   the server alive and its state consistent;
+# - safety: no token, a wrong token (one that differs from it in the last character only),
+#   a foreign Host (DNS rebinding) or Origin: 403; paths that try to leave the page (../,
+#   encoded): 404; a body over 64 KiB: 413 (announced or chunked); a method it does not
+#   serve: 405; many clients at once: every answer whole, the server alive and its state
+#   consistent;
 # - a parameter change re-runs only the changed node and those after it (the stats say
 #   which ran), its image is bit for bit what `ssgraph run --show` writes with the same
 #   --set; a refused value answers 400 with file:line:col and changes nothing;
@@ -13,6 +14,7 @@
 #   fix clears it), SIGTERM ends it with status 0.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_http"
+source "$(dirname "$0")/view_lib.sh"
 ROOT=$(pwd)
 mkdir -p "$TMP/graphs"
 cp graphs/ssdo_realtime.graph "$TMP/graphs/"
@@ -20,33 +22,25 @@ G=$TMP/graphs/ssdo_realtime.graph
 SIZE=96x54
 common=(--scene "$ROOT/examples/cornell.scene" --size $SIZE --threads 2)
 
-"$BIN" view "$G" "${common[@]}" --out "$TMP/out" >"$TMP/view.log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null' EXIT
-url=
-for _ in $(seq 1 300); do # the load may take a while on a busy machine
-    url=$(grep -o 'http://127.0.0.1:[0-9]*/?token=[0-9a-f]*' "$TMP/view.log")
-    [ -n "$url" ] || ! kill -0 $pid 2>/dev/null && break
-    sleep 0.2
-done
-[ -n "$url" ] || { cat "$TMP/view.log"; fail "no URL printed"; finish test_view_http; }
-port=${url#http://127.0.0.1:}; port=${port%%/*}
-token=${url##*token=}
-B=http://127.0.0.1:$port
-H="X-SSG-Token: $token"
+view_start "$TMP/view.log" "$G" "${common[@]}" --out "$TMP/out" || {
+    fail "no URL printed"; finish test_view_http; }
 client() { python3 "$ROOT/tests/view_client.py" "$B" "$token" "$@"; }
-# code ARGS...: the HTTP status of a curl request
-code() { curl -s -o "$TMP/body" -w '%{http_code}' "$@"; }
-expect_code() {
-    local want=$1; shift
-    local got; got=$(code "$@")
-    [ "$got" = "$want" ] || fail "curl $* answered $got, expected $want: $(head -c 300 "$TMP/body")"
-}
 
 # --- safety
 expect_code 403 "$B/api/state"
 expect_code 403 "$B/api/state?token=0123456789abcdef0123456789abcdef"
 expect_code 403 -H "X-SSG-Token: ${token}0" "$B/api/state"
+# near misses: the token with only its last (or only its first) character changed, each way
+# a token may come (a compare that stops before the end lets the first through)
+last=${token: -1}; first=${token:0:1}
+near_last=${token:0:31}$([ "$last" = 0 ] && echo 1 || echo 0)
+near_first=$([ "$first" = 0 ] && echo 1 || echo 0)${token:1}
+for near in "$near_last" "$near_first"; do
+    expect_code 403 "$B/api/state?token=$near"
+    expect_code 403 -H "X-SSG-Token: $near" "$B/api/state"
+    expect_code 403 -b "ssg_token=$near" "$B/api/state"
+    expect_code 403 -H "X-SSG-Token: $near" -d "do.radius=0.2" "$B/api/set"
+done
 expect_code 200 "$B/api/state?token=$token"
 expect_code 200 -H "$H" "$B/api/state"
 expect_code 200 -b "ssg_token=$token" "$B/api/state"
@@ -158,9 +152,5 @@ gen=$(client wait_gen "$gen" 30)
 client state | grep -q '"error": null' || fail "the fixed graph still shows an error"
 
 # --- SIGTERM: a clean end
-kill -TERM $pid
-for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-wait $pid; rc=$?
-[ "$rc" -eq 0 ] || fail "SIGTERM ended the server with status $rc"
-trap - EXIT
+view_stop_within 2000 TERM
 finish test_view_http

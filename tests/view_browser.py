@@ -7,6 +7,8 @@ saves a variant; screenshots go to OUTDIR/viewer-*.png. Exits 1 with FAIL lines 
 The graph is graphs/ssdo_realtime.graph: its node names and ports are used below."""
 import os
 import re
+import socket
+import subprocess
 import sys
 import time
 
@@ -16,6 +18,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common import utils
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
@@ -39,14 +42,57 @@ def fail(msg):
     failures.append(msg)
 
 
-def browser():
+class LoopbackService(Service):
+    """chromedriver asked for at 127.0.0.1: selenium's Service names it `localhost`, which a
+    minimal system without /etc/hosts does not resolve (the server is 127.0.0.1 too)."""
+
+    @property
+    def service_url(self):
+        return f"http://127.0.0.1:{self.port}"
+
+    def is_connectable(self):
+        return utils.is_connectable(self.port, "127.0.0.1")
+
+
+def localhost_note():
+    """Why chromedriver may not start here, when the cause is the name `localhost`."""
+    try:
+        socket.getaddrinfo("localhost", None)
+        return ""
+    except OSError:
+        return (" (`localhost` does not resolve here, e.g. no /etc/hosts: chromedriver and "
+                "chromium may still need it among themselves)")
+
+
+CHROMIUM_FLAGS = ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                  "--window-size=1280,800", "--no-first-run", "--disable-extensions")
+
+
+def start_chromium():
+    """Chromium started here, its DevTools on 127.0.0.1 at a free port, which chromedriver is
+    told (debuggerAddress): a chromium that chromedriver starts is reached at `localhost`."""
+    port = utils.free_port()
+    proc = subprocess.Popen(["/usr/bin/chromium", *CHROMIUM_FLAGS,
+                             "--remote-debugging-address=127.0.0.1",
+                             f"--remote-debugging-port={port}",
+                             f"--user-data-dir={os.path.join(OUT, 'chromium-profile')}",
+                             "about:blank"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    for _ in range(300):
+        if utils.is_connectable(port, "127.0.0.1"):
+            return proc, port
+        if proc.poll() is not None:
+            break
+        time.sleep(0.1)
+    proc.kill()
+    raise WebDriverException(f"chromium opened no DevTools port on 127.0.0.1:{port}")
+
+
+def browser(port):
     opts = webdriver.ChromeOptions()
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                 "--window-size=1280,800", "--no-first-run", "--disable-extensions"):
-        opts.add_argument(flag)
-    opts.binary_location = "/usr/bin/chromium"
+    opts.debugger_address = f"127.0.0.1:{port}"
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+    return webdriver.Chrome(service=LoopbackService("/usr/bin/chromedriver"), options=opts)
 
 
 def wait_for(drv, what, cond):
@@ -300,11 +346,15 @@ def js_errors(drv):
 
 
 def main():
+    chromium = None
     try:
-        drv = browser()
+        chromium, port = start_chromium()
+        drv = browser(port)
     except WebDriverException as e:
-        print(f"FAIL: cannot start headless chromium with /usr/bin/chromedriver "
-              f"(packages in tools/debian-packages.txt): {e.msg}")
+        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
+              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
+        if chromium:
+            chromium.kill()
         return 1
     try:
         for step in (step_load, step_click_node, step_slider, step_checkbox, step_camera,
@@ -318,6 +368,8 @@ def main():
         js_errors(drv)
     finally:
         drv.quit()
+        chromium.kill()
+        chromium.wait()
     return 1 if failures else 0
 
 

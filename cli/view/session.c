@@ -148,21 +148,14 @@ void view_session_close(struct view_session *s)
     s->error = NULL;
 }
 
-/* Records key=value as this session's change of key (replacing an earlier one). */
-static enum ssg_err remember(struct view_session *s, const char *key, const char *value,
-                             struct ssg_diags *d)
+/* The slot of key among this session's changes: its own, or the next free one
+ * (VIEW_MAX_SETS when there is none). */
+static int set_slot(const struct view_session *s, const char *key)
 {
     int i = 0;
     while (i < s->set_count && strcmp(s->sets[i].key, key))
         i++;
-    if (i == VIEW_MAX_SETS)
-        return view_fail(d, SSG_E_USAGE, "more than %d parameters changed in one session",
-                         VIEW_MAX_SETS);
-    snprintf(s->sets[i].key, sizeof s->sets[i].key, "%s", key);
-    snprintf(s->sets[i].value, sizeof s->sets[i].value, "%s", value);
-    if (i == s->set_count)
-        s->set_count++;
-    return SSG_OK;
+    return i;
 }
 
 enum ssg_err view_session_set(struct view_session *s, const char *assignment,
@@ -177,13 +170,23 @@ enum ssg_err view_session_set(struct view_session *s, const char *assignment,
                          assignment);
     snprintf(key, sizeof key, "%.*s", (int)(eq - assignment), assignment);
     const char *value = eq + 1;
+    /* Refused before anything is applied: a change the session cannot remember would be
+       in the graphs but lost at the next reload and missing from a saved variant. */
+    int slot = set_slot(s, key);
+    if (slot == VIEW_MAX_SETS)
+        return view_fail(d, SSG_E_USAGE, "more than %d parameters changed in one session "
+                         "(save a variant and open it to go on)", VIEW_MAX_SETS);
     enum ssg_err e = ssg_graph_set(s->g, key, value, d);
     if (!e && s->preview)
         e = ssg_graph_set(s->preview, key, value, d); /* the same checks: it passes */
-    if (!e)
-        e = remember(s, key, value, d);
+    if (e)
+        return e;
+    snprintf(s->sets[slot].key, sizeof s->sets[slot].key, "%s", key);
+    snprintf(s->sets[slot].value, sizeof s->sets[slot].value, "%s", value);
+    if (slot == s->set_count)
+        s->set_count++;
     s->preview_stale = 1;
-    return e ? e : run_graph(s, s->g, 0, d);
+    return run_graph(s, s->g, 0, d);
 }
 
 enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *camera,
@@ -248,68 +251,6 @@ enum ssg_err view_session_image(struct view_session *s, const char *port, int pr
     }
     *out = img;
     return SSG_OK;
-}
-
-/* What a saved variant holds (view_session_save). */
-struct variant {
-    const struct view_session *s;
-    const char *include; /* the graph's file name, beside the variant */
-};
-
-static void write_set(FILE *f, const char *assignment)
-{
-    const char *eq = strchr(assignment, '=');
-    if (eq)
-        fprintf(f, "set %.*s = %s\n", (int)(eq - assignment), assignment, eq + 1);
-}
-
-static void fill_variant(FILE *f, const void *user)
-{
-    const struct variant *v = user;
-    const struct view_session *s = v->s;
-    fprintf(f, "# A variant of %s saved by `ssgraph view`: the graph, then the parameters\n"
-               "# changed on the command line and in the page.\n", v->include);
-    fprintf(f, "include \"%s\"\n", v->include);
-    for (int i = 0; i < s->args->ov.set_count; i++)
-        write_set(f, s->args->ov.sets[i]);
-    for (int i = 0; i < s->set_count; i++)
-        fprintf(f, "set %s = %s\n", s->sets[i].key, s->sets[i].value);
-    if (s->camera_changed) {
-        const struct ssg_view *c = &s->camera;
-        fprintf(f, "# The page's camera (a scene file's camera line takes it):\n"
-                   "# camera(position=[%g, %g, %g], target=[%g, %g, %g], up=[%g, %g, %g], "
-                   "fov=%g)\n", c->position[0], c->position[1], c->position[2],
-                c->target[0], c->target[1], c->target[2], c->up[0], c->up[1], c->up[2],
-                c->fov_y);
-    }
-}
-
-static int valid_name(const char *name)
-{
-    size_t len = strlen(name);
-    if (len == 0 || len > 64)
-        return 0;
-    return strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
-           len;
-}
-
-enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
-                               size_t len, struct ssg_diags *d)
-{
-    if (!valid_name(name))
-        return view_fail(d, SSG_E_USAGE, "a variant's name is 1 to 64 letters, digits, '_' "
-                         "or '-', got '%.80s'", name);
-    const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
-    int dir = slash ? (int)(slash - graph + 1) : 0;
-    if ((size_t)snprintf(path, len, "%.*s%s.graph", dir, graph, name) >= len)
-        return view_fail(d, SSG_E_USAGE, "the variant's path is too long");
-    FILE *exists = fopen(path, "r");
-    if (exists) {
-        fclose(exists);
-        return view_fail(d, SSG_E_IO, "%s exists already: choose another name", path);
-    }
-    struct variant v = {.s = s, .include = graph + dir};
-    return ssg_write_text_file(path, "graph variant", fill_variant, &v, d);
 }
 
 /* The files the graph reads, watched (watch.h); after a load, or a failed one (g NULL). */

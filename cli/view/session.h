@@ -68,8 +68,12 @@ enum ssg_err view_session_image(struct view_session *s, const char *port, int pr
  * camera applied again) and runs then: on failure s->error says why and the last good
  * graph stays. 0 when nothing changed. */
 int view_session_poll(struct view_session *s);
-/* Writes NAME.graph beside the graph file: include + this session's set lines; the path
- * written into path. SSG_E_IO when it exists or cannot be written (diags say which). */
+/* Writes NAME.graph beside the graph file (variant.c): include, the server's --scene,
+ * --lights, --size, --guard and --seed as statements, the command line's and this
+ * session's set lines; the path written into path. Never waits on another program and
+ * never replaces: SSG_E_IO when the name exists in any form (a FIFO, a dangling link, a
+ * directory, a file nobody may read) or cannot be written; SSG_E_USAGE for a bad name or
+ * a name or value a graph file cannot hold (diags say which). */
 enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
                                size_t len, struct ssg_diags *diags);
 
