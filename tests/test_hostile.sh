@@ -216,4 +216,13 @@ for name in '"../escape"' '"/etc/escape"' '"a/b"'; do
     expect_exit 1 "not a plain file name" $T "$BIN" check graphs/ssao.graph --set "out.name=$name"
 done
 
+# --- a value is one line: the rest of it is refused, never dropped or applied ---
+expect_exit 1 "<command line --set>:1:14: error: a newline \(0x0a\)" \
+    $T "$BIN" run graphs/ssao.graph --size 16x12 --out "$TMP/oneline" \
+    --set 'ao.radius=0.3
+include "/etc/passwd"'
+[ -e "$TMP/oneline" ] && fail "a refused --set wrote $(ls -A "$TMP/oneline")"
+expect_exit 1 "<command line --set>:1:3: error: a tab \(0x09\)" \
+    $T "$BIN" check graphs/ssao.graph --set "ao$(printf '\t').radius=0.3"
+
 finish test_hostile

@@ -497,6 +497,11 @@ static void apply_override(struct builder *b, const char *text)
         return;
     const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
     struct ssg_loc at = {src, src->text};
+    enum ssg_err e = ssg_line_check(src, b->diags);
+    if (e) {
+        fail(b, e);
+        return;
+    }
     if (!dot || !eq || dot > eq) {
         ssg_diag_at(b->diags, SSG_E_USAGE, at, "expected --set node.param=value, got '%s'",
                     text);
@@ -514,7 +519,7 @@ static void apply_override(struct builder *b, const char *text)
     arg->key = dot + 1;
     arg->key_len = (size_t)(eq - dot - 1);
     arg->key_loc = (struct ssg_loc){src, dot + 1};
-    enum ssg_err e = ssg_parse_value(&b->g->arena, src, eq + 1, &arg->value, b->diags);
+    e = ssg_parse_value(&b->g->arena, src, eq + 1, &arg->value, b->diags);
     if (e) {
         fail(b, e);
         return;

@@ -214,16 +214,24 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
 {
     if (ssg_api_null(diags, "ssg_graph_set", "graph, key, value", 3, g, key, value))
         return SSG_E_USAGE;
-    enum ssg_err e = SSG_OK;
-    int i = find_param(g, key, &e, diags);
-    if (i < 0)
+    size_t text_len = strlen(key) + strlen(value) + 2;
+    char *text = malloc(text_len);
+    if (!text)
+        return SSG_E_NOMEM;
+    snprintf(text, text_len, "%s=%s", key, value);
+    /* one line, checked before the key is looked up and named in a message */
+    struct ssg_source line = {"<ssg_graph_set>", text, text_len - 1};
+    enum ssg_err e = ssg_line_check(&line, diags);
+    int i = e ? -1 : find_param(g, key, &e, diags);
+    if (i < 0) {
+        free(text);
         return e;
+    }
     struct gnode *n = &g->nodes[i];
-    size_t size = n->desc->params_size, text_len = strlen(key) + strlen(value) + 2;
+    size_t size = n->desc->params_size;
     struct ssg_shape(*shapes)[2][SSG_MAX_PORTS] = calloc((size_t)g->count + 1, sizeof *shapes);
     void *old = malloc(size ? size : 1);
-    char *text = malloc(text_len);
-    if (!shapes || !old || !text) {
+    if (!shapes || !old) {
         free(shapes), free(old), free(text);
         return SSG_E_NOMEM;
     }
@@ -232,7 +240,6 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
         memcpy(shapes[k][0], g->nodes[k].in_shape, sizeof shapes[k][0]);
         memcpy(shapes[k][1], g->nodes[k].out_shape, sizeof shapes[k][1]);
     }
-    snprintf(text, text_len, "%s=%s", key, value);
     int first = diags ? diags->count : 0;
     e = ssg_graph_apply_set(g, text, diags);
     if (e)

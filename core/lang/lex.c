@@ -3,6 +3,7 @@
  * works on characters where the parser works on tokens; the two share only lex.h. Errors
  * (a stray byte, an unterminated string, an overlong line) are reported and lexing goes
  * on, so one run reports every problem in a file. */
+#include <stdio.h>
 #include <string.h>
 
 #include "lang/lex.h"
@@ -97,13 +98,44 @@ static size_t number_length(const char *p)
     return (size_t)(s - p);
 }
 
+/* Bytes below 0x20 and 0x7f: never part of a value (a string spells them \\n, \\t). */
+static int is_control(char c)
+{
+    return (unsigned char)c < 0x20 || c == 0x7f;
+}
+
+/* How a message names control byte c: "a newline (0x0a)". */
+static void control_text(char c, char *buf, size_t len)
+{
+    static const struct {
+        char c;
+        const char *name;
+    } names[] = {{'\n', "a newline"}, {'\r', "a carriage return"}, {'\t', "a tab"},
+                 {0x1b, "an escape"}, {0x7f, "a delete"}};
+    const char *name = "a control character";
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (names[i].c == c)
+            name = names[i].name;
+    snprintf(buf, len, "%s (0x%02x)", name, (unsigned char)c);
+}
+
+/* A raw control byte inside a string: its first is reported (files are text; a tab or an
+   escape sequence pasted into a name would be written back raw by whoever saves it). */
 static size_t string_length(struct lexer *lx, const char *p)
 {
-    const char *s = p + 1;
+    const char *s = p + 1, *control = NULL;
     while (*s && *s != '"' && *s != '\n') {
-        if (*s == '\\' && s[1] && s[1] != '\n')
+        if (*s == '\\' && s[1] && !is_control(s[1]))
             s++;
+        else if (is_control(*s) && !control)
+            control = s;
         s++;
+    }
+    if (control) {
+        char what[48];
+        control_text(*control, what, sizeof what);
+        error_at(lx, control, "%s in a string (expected printable text; write a newline "
+                 "or a tab as \\n or \\t)", what);
     }
     if (*s != '"') {
         error_at(lx, p, "unterminated string (expected a closing '\"' on the same line)");
@@ -182,4 +214,20 @@ int ssg_lex(struct lexer *lx, const char *p, const char *end)
         }
     }
     return push_token(lx, T_NEWLINE, end, 0) && push_token(lx, T_EOF, end, 0);
+}
+
+enum ssg_err ssg_line_check(const struct ssg_source *src, struct ssg_diags *diags)
+{
+    for (const char *s = src->text; s < src->text + src->len; s++) {
+        if (!is_control(*s))
+            continue;
+        char what[48];
+        control_text(*s, what, sizeof what);
+        ssg_diag_at(diags, SSG_E_SYNTAX, (struct ssg_loc){src, s}, "%s in a setting "
+                    "given as one line (expected printable text: a value ends at the end "
+                    "of its text; write a newline or a tab in a string as \\n or \\t)",
+                    what);
+        return SSG_E_SYNTAX;
+    }
+    return SSG_OK;
 }

@@ -278,7 +278,9 @@ enum ssg_err ssg_param_set_text(struct ssg_param_table table, void *params, cons
     while (name_len && text[name_len - 1] == ' ')
         name_len--;
     int index = eq ? ssg_param_find(table, text, name_len) : -1;
-    if (!eq) {
+    if ((e = ssg_line_check(&src, diags))) {
+        /* reported before the text is named in any other message */
+    } else if (!eq) {
         ssg_diag_at(diags, e = SSG_E_SYNTAX, at, "expected parameter=value, found '%s'", text);
     } else if (index < 0) {
         char names[512];

@@ -488,6 +488,8 @@ enum ssg_err ssg_parse_value(struct ssg_arena *arena, const struct ssg_source *s
     /* Tokenise only the tail, keeping locations relative to the whole source. The tokens
        (6 KiB at least) are freed here: a live graph parses a value at every
        ssg_graph_set, and its arena would otherwise grow by them each time. */
+    if (ssg_line_check(src, diags))
+        return SSG_E_SYNTAX;
     struct ssg_arena tokens = {0};
     struct parser ps = {.lex = {.arena = &tokens, .src = src, .diags = diags}, .values = arena};
     if (!ssg_lex(&ps.lex, start, start + strlen(start))) {

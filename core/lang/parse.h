@@ -93,7 +93,14 @@ enum ssg_err ssg_parse_file(struct ssg_arena *arena, const char *path, struct ss
 /* Parses text already in memory (copied into the arena) under the name `origin`. */
 enum ssg_err ssg_parse_text(struct ssg_arena *arena, const char *origin, const char *text,
                             struct ssg_file *out, struct ssg_diags *diags);
-/* Parses a single value, e.g. the right side of a command-line `--set a.b=VALUE`. */
+/* 0 when a caller's one-line text (a --set, an ssg_graph_set key and value, an output
+ * name: all of src) holds no control character (a byte below 0x20, tab included, or 0x7f);
+ * else SSG_E_SYNTAX, reported at the first, named ("a newline (0x0a)"). Such a text is
+ * refused whole, never cut at the newline: what follows it would be dropped, or written
+ * as a line of its own by whoever saves the setting. */
+enum ssg_err ssg_line_check(const struct ssg_source *src, struct ssg_diags *diags);
+/* Parses a single value, e.g. the right side of a command-line `--set a.b=VALUE`. src is
+ * the caller's whole one-line text (key included), refused by ssg_line_check first. */
 enum ssg_err ssg_parse_value(struct ssg_arena *arena, const struct ssg_source *src,
                              const char *start, struct ssg_value *out, struct ssg_diags *diags);
 
