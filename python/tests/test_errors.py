@@ -240,3 +240,25 @@ def test_hostile_numbers_are_refused(g, value):
         g.set("ao.radius", value)
     assert g.get("ao.radius") == 0.5
 
+
+
+# ---- values are one line (issue 42, item 2): the library refuses a control character in
+# a value wherever values are parsed; Python hands the value over whole, never cut or
+# stripped. Needs the core refusal (branch t42b).
+
+@pytest.mark.parametrize("value", ["0.3\n0.9", "0.3\ninclude \"/etc/passwd\"", "0.3\r",
+                                   "\n0.3", "0.3\t\x1b[2J"])
+def test_a_control_character_in_a_value_is_refused(repo, value):
+    with ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12)) as g:
+        with pytest.raises(ssgraph.Error) as e:
+            g.set("ao.radius", value)
+        assert e.value.code == "SSG_E_SYNTAX"
+        assert g.get("ao.radius") == 0.5
+    with pytest.raises(ssgraph.Error):
+        ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12), sets={"ao.radius": value})
+    with pytest.raises(ssgraph.Error):
+        ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12), sets=["ao.radius=" + value])
+    pos, normal = plane_gbuffer(8, 6)
+    with pytest.raises(ssgraph.Error):
+        ssgraph.run_node("ssao", {"position": pos, "normal": normal}, {"radius": value})
+
