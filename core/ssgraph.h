@@ -356,8 +356,10 @@ SSG_API enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
 
 /* The camera of a loaded graph's scene, and a new one for the whole graph (every node that
  * reads the camera sees it: the G-buffer, projections, ray tracers). A camera that cannot
- * be (a coordinate not finite, target = position, up parallel to the view or zero, fov_y
- * outside (0, 180)) is refused with why; a graph without a scene has no camera
+ * be is refused with why (SSG_E_VALUE), as a scene file's would be: a coordinate not
+ * finite or past +-1e9 (the scene format's limit: then target - position is a finite
+ * float), target = position in float, up parallel to the view or zero, fov_y outside
+ * [0.001, 179.999]; a graph without a scene has no camera
  * (SSG_E_SCENE). On a kept graph a new camera makes every node prepare and run again
  * except those that never read it (lightprobe, shadow maps, halton: camera_independent in
  * docs/adding-a-node.md) whose producers are kept as well. */
@@ -376,7 +378,8 @@ SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ss
  * 30 without one); a scene with a camera path (camera_key lines or an orbit) gives each
  * frame its camera, a scene without one keeps its camera in every frame. A run of N frames
  * (ssg_run_options.frames) runs frames first .. first + N - 1, first = 0 unless
- * ssg_graph_set_frame chose another; nodes see the frame's index, time, the camera of the
+ * ssg_graph_set_frame chose another (a run whose last frame would pass INT_MAX is refused,
+ * SSG_E_VALUE, before it runs); nodes see the frame's index, time, the camera of the
  * frame before (prev_camera) and whether history may be reused (history_reset: 0 only
  * when the frame follows on from the frame before without a cut of the path).
  *

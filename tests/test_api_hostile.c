@@ -4,7 +4,16 @@
  *     (a newline, a tab, 0x7f, an escape) is refused whole at its column of
  *     "<ssg_graph_set>", never cut at the newline (which applied "0.3" and dropped an
  *     `include` line a viewer then saved); a raw control byte in a file's string is
- *     refused at its line and column. */
+ *     refused at its line and column;
+ *   - a number literal is read whole however long (62 zeros then 16 is 16, not the 1 a
+ *     63-character buffer left), or refused as out of range at its place;
+ *   - a camera whose inputs are finite but whose view direction is not (position 2e38,
+ *     target -2e38: it aborted inside Embree at the next run) is refused, and so are its
+ *     kin (past +-1e9, a fov whose projection overflows); the graph keeps its camera and
+ *     runs;
+ *   - frame INT_MAX runs, and runs again, without `last + 1` overflowing (UBSan), and a
+ *     sequence that would pass INT_MAX is refused before it runs. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +32,16 @@ static struct ssg_graph *load_ssao(void)
     CHECK_EQ(ssg_graph_load("graphs/ssao.graph", &ov, &g, &d), SSG_OK);
     ssg_diags_print(&d, stderr);
     return g;
+}
+
+static enum ssg_err run(struct ssg_graph *g, int frames)
+{
+    struct ssg_run_options opt = {.out_dir = out_dir, .threads = 1, .frames = frames,
+                                  .no_files = 1};
+    struct ssg_diags d = {0};
+    enum ssg_err e = ssg_graph_run(g, &opt, &d);
+    ssg_diags_print(&d, stderr);
+    return e;
 }
 
 /* ssg_graph_set(key, value) is refused with `code` at column `column` of key=value. */
@@ -83,6 +102,65 @@ static void file_strings_are_text(void)
     ssg_diags_print(&d, stderr);
 }
 
+static void long_literals_read_whole(void)
+{
+    struct ssg_graph *g = load_ssao();
+    char count[80], radius[120], huge[420];
+    snprintf(count, sizeof count, "%062d16", 0); /* 64 characters */
+    snprintf(radius, sizeof radius, "0.%070d5e70", 0); /* 0.5, written in 76 */
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_set(g, "k.count", count, &d), SSG_OK);
+    CHECK_EQ(param(g, "k.count"), 16);
+    CHECK_EQ(ssg_graph_set(g, "ao.radius", radius, &d), SSG_OK);
+    CHECK_NEAR(param(g, "ao.radius"), 0.5, 1e-7);
+    CHECK_EQ(d.count, 0);
+    memset(huge, '9', 400); /* 1e400: past a double, refused (at node k, as any value) */
+    huge[400] = 0;
+    CHECK_EQ(ssg_graph_set(g, "k.count", huge, &d), SSG_E_SYNTAX);
+    CHECK(d.count == 1 && d.items[0].code == SSG_E_SYNTAX && d.items[0].line == 12);
+    CHECK_EQ(param(g, "k.count"), 16);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+static void cameras_past_float(void)
+{
+    struct ssg_graph *g = load_ssao();
+    struct ssg_view home, bad;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_view(g, &home, &d), SSG_OK);
+    const struct ssg_view overflows = {{0, 0, 2e38f}, {0, 0, -2e38f}, {0, 1, 0}, 45};
+    CHECK_EQ(ssg_graph_set_view(g, &overflows, &d), SSG_E_VALUE);
+    bad = home, bad.position[0] = 3e9f; /* past the scene format's +-1e9 */
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &d), SSG_E_VALUE);
+    bad = home, bad.fov_y = 1e-30f; /* 1 / tan(fov / 2) is no float */
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &d), SSG_E_VALUE);
+    bad = home, memcpy(bad.target, bad.position, sizeof bad.target);
+    CHECK_EQ(ssg_graph_set_view(g, &bad, &d), SSG_E_VALUE);
+    CHECK_EQ(d.count, 4);
+    ssg_diags_print(&d, stderr);
+    struct ssg_view now;
+    CHECK_EQ(ssg_graph_view(g, &now, &d), SSG_OK);
+    CHECK(memcmp(&now, &home, sizeof now) == 0);
+    CHECK_EQ(run(g, 1), SSG_OK); /* the old camera: before the fix, Embree aborted */
+    ssg_graph_destroy(&g);
+}
+
+static void last_frame_index(void)
+{
+    struct ssg_graph *g = load_ssao();
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_set_frame(g, INT_MAX, &d), SSG_OK);
+    CHECK_EQ(run(g, 1), SSG_OK);
+    CHECK_EQ(run(g, 1), SSG_OK); /* follows on from INT_MAX? (last + 1 overflowed) */
+    CHECK_EQ(run(g, 2), SSG_E_VALUE); /* frames INT_MAX and INT_MAX + 1: refused */
+    CHECK_EQ(ssg_graph_set_frame(g, INT_MAX - 1, &d), SSG_OK);
+    CHECK_EQ(run(g, 2), SSG_OK); /* ends on INT_MAX exactly */
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
 int main(void)
 {
     const char *tmp = getenv("SSG_TMP");
@@ -90,5 +168,8 @@ int main(void)
     mkdir(out_dir, 0755);
     values_are_one_line();
     file_strings_are_text();
+    long_literals_read_whole();
+    cameras_past_float();
+    last_frame_index();
     return check_report();
 }

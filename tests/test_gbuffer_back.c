@@ -230,7 +230,7 @@ static size_t peak_bytes(int read_back)
     if (!f)
         return 0;
     fprintf(f, "scene \"%s/examples/cornell.scene\"\nsize 64 48\ng = gbuffer()\n"
-            "out = write(g.depth, \"d\", png=0%s)\n", getenv("PWD") ? getenv("PWD") : ".",
+            "out = write(g.depth, \"d\", png=0%s)\n", SSG_SOURCE_DIR,
             read_back ? ", back=g.back" : "");
     fclose(f);
     struct ssg_run_stats stats = {0};

@@ -9,7 +9,6 @@
  * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
  * camera (ssg_graph_set_view) makes every node prepare and run again except those that
  * declare camera_independent (node.h); they still run when a producer runs. */
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -324,43 +323,24 @@ enum ssg_err ssg_graph_view(const struct ssg_graph *g, struct ssg_view *out,
     return SSG_OK;
 }
 
-/* Why a view cannot be a camera, or NULL when it can. */
-static const char *bad_view(const struct ssg_view *v)
-{
-    float d[3], side[3];
-    for (int k = 0; k < 3; k++) {
-        if (!isfinite(v->position[k]) || !isfinite(v->target[k]) || !isfinite(v->up[k]))
-            return "a coordinate is not a finite number";
-        d[k] = v->target[k] - v->position[k];
-    }
-    side[0] = d[1] * v->up[2] - d[2] * v->up[1];
-    side[1] = d[2] * v->up[0] - d[0] * v->up[2];
-    side[2] = d[0] * v->up[1] - d[1] * v->up[0];
-    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= 0)
-        return "the target is the position: no direction to look in";
-    if (side[0] * side[0] + side[1] * side[1] + side[2] * side[2] <= 0)
-        return "up is parallel to the view direction (or zero)";
-    if (!(v->fov_y > 0 && v->fov_y < 180))
-        return "fov_y must lie in (0, 180) degrees";
-    return NULL;
-}
-
 enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
                                 struct ssg_diags *diags)
 {
     if (ssg_api_null(diags, "ssg_graph_set_view", "graph, view", 2, g, v))
         return SSG_E_USAGE;
-    const char *why = bad_view(v);
-    if (!g->scene || why) {
+    struct ssg_camera camera = g->scene ? g->scene->camera : (struct ssg_camera){0};
+    memcpy(camera.position, v->position, sizeof camera.position);
+    memcpy(camera.target, v->target, sizeof camera.target);
+    memcpy(camera.up, v->up, sizeof camera.up);
+    camera.fov_y = v->fov_y;
+    enum ssg_camera_part part;
+    const char *why = g->scene ? ssg_camera_fault(&camera, &part) : "the graph has no scene";
+    if (why) {
         ssg_diag_file(diags, g->scene ? SSG_E_VALUE : SSG_E_SCENE, g->path, "cannot set "
-                      "the camera: %s", g->scene ? why : "the graph has no scene");
+                      "the camera: %s", why);
         return g->scene ? SSG_E_VALUE : SSG_E_SCENE;
     }
-    struct ssg_camera *c = &g->scene->camera;
-    memcpy(c->position, v->position, sizeof c->position);
-    memcpy(c->target, v->target, sizeof c->target);
-    memcpy(c->up, v->up, sizeof c->up);
-    c->fov_y = v->fov_y;
+    g->scene->camera = camera;
     g->frame.fov_y = v->fov_y;
     g->time.has_last = 0; /* a cut (graph_time.c); one-frame runs keep this view */
     g->time.view_set = 1;

@@ -3,6 +3,7 @@
  * images from a pool, each given back after its last reader, each node timed; the
  * statistics (timings, profile, metrics) handed to the caller after the last frame. It
  * prints nothing: the files it writes are told through the run's log callback. */
+#include <limits.h>
 #include <omp.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -425,6 +426,12 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     struct ssg_run_options defaults = {0};
     if (options && options->stats)
         *options->stats = (struct ssg_run_stats){0};
+    int frames = options && options->frames > 1 ? options->frames : 1;
+    if (frames - 1 > INT_MAX - g->time.next) { /* frame indices are ints (node.h) */
+        ssg_diag_file(diags, SSG_E_VALUE, g->path, "%d frames from frame %d run past frame "
+                      "%d, the last a sequence may have", frames, g->time.next, INT_MAX);
+        return SSG_E_VALUE;
+    }
     struct run r = {.g = g, .opt = options ? options : &defaults, .diags = diags,
                     .uses_gl = graph_uses_gl(g), .live = g->live};
     if (r.opt->threads > 0)
@@ -437,7 +444,6 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         run_free(&r);
         return SSG_E_BACKEND;
     }
-    int frames = r.opt->frames > 1 ? r.opt->frames : 1;
     enum ssg_err e = SSG_OK;
     double t0 = ssg_now_ms();
     r.first_frame = g->time.next;

@@ -60,7 +60,8 @@ int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int li
         use_camera(g, &camera);
         moved = 1;
     }
-    int follows = first ? live && g->time.has_last && frame == g->time.last + 1 : 1;
+    /* frame - 1, not last + 1: last may be INT_MAX (ssg_graph_set_frame), frame is >= 0 */
+    int follows = first ? live && g->time.has_last && frame - 1 == g->time.last : 1;
     step->reset = !follows || cut;
     step->prev = step->reset ? camera : g->time.last_camera;
     /* prepare() reads the previous camera too (gbuffer's motion): in the frame after the

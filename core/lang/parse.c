@@ -176,28 +176,41 @@ static int parse_prev(struct parser *ps, struct ssg_value *v)
     return expect(ps, T_RPAREN, "to close prev(");
 }
 
+/* A number token read whole, however long (leading zeros, many digits): strtod needs it
+   alone and NUL-terminated, and the source holds more after it. Past a double's range it
+   is refused at its place, never cut to fit a buffer. */
+static int parse_number(struct parser *ps, const struct token *t, struct ssg_value *v)
+{
+    char small[64], *buf = t->len < sizeof small ? small : malloc(t->len + 1);
+    if (!buf) {
+        error_at(ps, t->at, "out of memory reading a number of %zu characters", t->len);
+        return 0;
+    }
+    memcpy(buf, t->at, t->len);
+    buf[t->len] = 0;
+    errno = 0;
+    v->kind = SSG_V_NUMBER;
+    v->number = strtod(buf, NULL);
+    v->is_integer = strpbrk(buf, ".eE") == NULL;
+    int out_of_range = errno == ERANGE;
+    if (buf != small)
+        free(buf);
+    if (out_of_range)
+        error_at(ps, t->at, "number '%.*s%s' (%zu characters) is out of the range of a "
+                 "double", (int)(t->len < 40 ? t->len : 40), t->at, t->len > 40 ? "..." : "",
+                 t->len);
+    return !out_of_range;
+}
+
 static int parse_value(struct parser *ps, struct ssg_value *v)
 {
     const struct token *t = peek(ps, 0);
     memset(v, 0, sizeof *v);
     v->loc = loc_of(ps, t->at);
     switch (t->kind) {
-    case T_NUMBER: {
+    case T_NUMBER:
         next(ps);
-        char buf[64];
-        size_t n = t->len < sizeof buf - 1 ? t->len : sizeof buf - 1;
-        memcpy(buf, t->at, n);
-        buf[n] = 0;
-        errno = 0;
-        v->kind = SSG_V_NUMBER;
-        v->number = strtod(buf, NULL);
-        v->is_integer = strpbrk(buf, ".eE") == NULL;
-        if (errno == ERANGE) {
-            error_at(ps, t->at, "number '%s' is out of the range of a double", buf);
-            return 0;
-        }
-        return 1;
-    }
+        return parse_number(ps, t, v);
     case T_STRING:
         next(ps);
         v->kind = SSG_V_STRING;

@@ -2,6 +2,7 @@
  * conventions of node.h (the camera looks down -z, x right, y up). */
 #include <math.h>
 
+#include "lang/params.h"
 #include "scene/scene.h"
 
 void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16])
@@ -40,4 +41,60 @@ void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16])
     m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
     m[14] = f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2];
     m[15] = 1.0f;
+}
+
+static int within(const float v[3])
+{
+    for (int i = 0; i < 3; i++)
+        if (!(fabsf(v[i]) <= SSG_PARAM_ABS_MAX)) /* NaN fails too */
+            return 0;
+    return 1;
+}
+
+static const char *fault(enum ssg_camera_part *part, enum ssg_camera_part which,
+                         const char *why)
+{
+    *part = which;
+    return why;
+}
+
+const char *ssg_camera_fault(const struct ssg_camera *c, enum ssg_camera_part *part)
+{
+    float f[3]; /* the direction as ssg_camera_view_matrix makes it */
+    double ff = 0, uu = 0, x[3], xx = 0;
+    *part = SSG_CAMERA_FINE;
+    if (!within(c->position) || !within(c->target))
+        return fault(part, SSG_CAMERA_POSITION, "a coordinate of position or target is not "
+                     "finite or lies past +-1e9 (the scene format's limit, which keeps the "
+                     "view direction and its square finite floats)");
+    if (!within(c->up))
+        return fault(part, SSG_CAMERA_UP, "a coordinate of up is not finite or lies past "
+                     "+-1e9");
+    for (int i = 0; i < 3; i++) {
+        f[i] = c->target[i] - c->position[i];
+        ff += (double)f[i] * f[i];
+        uu += (double)c->up[i] * c->up[i];
+    }
+    if (ff == 0)
+        return fault(part, SSG_CAMERA_TARGET, "the target is the position (in float): no "
+                     "direction to look in");
+    x[0] = (double)f[1] * c->up[2] - (double)f[2] * c->up[1];
+    x[1] = (double)f[2] * c->up[0] - (double)f[0] * c->up[2];
+    x[2] = (double)f[0] * c->up[1] - (double)f[1] * c->up[0];
+    for (int i = 0; i < 3; i++)
+        xx += x[i] * x[i];
+    if (!(xx > 1e-12 * ff * uu) || uu == 0)
+        return fault(part, SSG_CAMERA_UP, "up is zero or parallel to the view direction");
+    if (!(c->fov_y >= SSG_CAMERA_FOV_MIN && c->fov_y <= 180 - SSG_CAMERA_FOV_MIN))
+        return fault(part, SSG_CAMERA_FOV, "fov_y must lie in [0.001, 179.999] degrees");
+    if (!(c->near_z > 0 && c->far_z > c->near_z && isfinite(c->far_z)))
+        return fault(part, SSG_CAMERA_PLANES, "near and far must be finite with "
+                     "0 < near < far");
+    return NULL;
+}
+
+const char *ssg_camera_part_arg(enum ssg_camera_part part)
+{
+    static const char *const args[] = {"position", "position", "target", "up", "fov", "far"};
+    return args[part];
 }

@@ -248,21 +248,23 @@ static void check_material_ref(struct scene_loader *l, struct scene_entity *e, c
     problem(l, e, "material", i >= 0 ? SSG_E_TYPE : SSG_E_UNKNOWN_NAME, what);
 }
 
+struct ssg_camera ssg_scene_camera_of(const struct camera_args *a)
+{
+    struct ssg_camera c = {.fov_y = a->fov, .near_z = a->near_z, .far_z = a->far_z};
+    memcpy(c.position, a->position, sizeof c.position);
+    memcpy(c.target, a->target, sizeof c.target);
+    memcpy(c.up, a->up, sizeof c.up);
+    return c;
+}
+
 static void check_camera(struct scene_loader *l, const struct scene_entity *e)
 {
-    const struct camera_args *c = e->args;
-    float f[3] = {c->target[0] - c->position[0], c->target[1] - c->position[1],
-                  c->target[2] - c->position[2]};
-    float x[3] = {f[1] * c->up[2] - f[2] * c->up[1], f[2] * c->up[0] - f[0] * c->up[2],
-                  f[0] * c->up[1] - f[1] * c->up[0]};
-    if (is_zero3(f))
-        problem(l, e, "target", SSG_E_VALUE, "the target equals the position");
-    else if (sqrtf(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <=
-             1e-6f * sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) *
-                 sqrtf(c->up[0] * c->up[0] + c->up[1] * c->up[1] + c->up[2] * c->up[2]))
-        problem(l, e, "up", SSG_E_VALUE, "'up' is zero or parallel to the view direction");
-    if (c->near_z >= c->far_z)
-        problem(l, e, "far", SSG_E_RANGE, "'far' must be greater than 'near'");
+    struct ssg_camera c = ssg_scene_camera_of(e->args);
+    enum ssg_camera_part part;
+    const char *why = ssg_camera_fault(&c, &part);
+    if (why)
+        problem(l, e, ssg_camera_part_arg(part),
+                part == SSG_CAMERA_PLANES ? SSG_E_RANGE : SSG_E_VALUE, why);
 }
 
 static void check_plane(struct scene_loader *l, struct scene_entity *e)
@@ -415,12 +417,7 @@ static void scene_defaults(struct ssg_scene *s, struct scene_loader *l)
             s->environment.intensity = env->intensity;
         }
     }
-    memcpy(s->camera.position, c.position, sizeof c.position);
-    memcpy(s->camera.target, c.target, sizeof c.target);
-    memcpy(s->camera.up, c.up, sizeof c.up);
-    s->camera.fov_y = c.fov;
-    s->camera.near_z = c.near_z;
-    s->camera.far_z = c.far_z;
+    s->camera = ssg_scene_camera_of(&c);
     ssg_scene_path_fill(l, &c);
 }
 

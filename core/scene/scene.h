@@ -151,4 +151,26 @@ float ssg_scene_scale_hint(const struct ssg_scene *scene, float radius, float *d
  * node.h. */
 void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16]);
 
+/* The part of a camera at fault, so a scene file's message points at its argument. */
+enum ssg_camera_part {
+    SSG_CAMERA_FINE,
+    SSG_CAMERA_POSITION, /* position (or target) not finite, or past +-SSG_PARAM_ABS_MAX */
+    SSG_CAMERA_TARGET,   /* target - position is zero in float: nowhere to look */
+    SSG_CAMERA_UP,       /* up not finite, zero or parallel to the view direction */
+    SSG_CAMERA_FOV,      /* fov_y outside [SSG_CAMERA_FOV_MIN, 180 - SSG_CAMERA_FOV_MIN] */
+    SSG_CAMERA_PLANES,   /* near and far not 0 < near < far, finite */
+};
+#define SSG_CAMERA_FOV_MIN 1e-3 /* degrees: 1 / tan(fov / 2) stays a modest float */
+
+/* Why `camera` cannot be rendered, or NULL when it can, with *part the argument at fault.
+ * Every place a camera enters (a scene file's camera and camera_key lines, a glTF camera,
+ * ssg_graph_set_view) asks this one check: it judges what the renderer derives (the
+ * direction target - position in float, its length, its cross product with up, the
+ * projection's 1 / tan(fov / 2)), not only each input, since finite inputs near the float
+ * limit (2e38 and -2e38) give an infinite direction that aborted inside Embree. The
+ * check itself computes in double, so it cannot overflow. */
+const char *ssg_camera_fault(const struct ssg_camera *camera, enum ssg_camera_part *part);
+/* The scene file argument a part is written as: "position", "target", "up", "fov", "far". */
+const char *ssg_camera_part_arg(enum ssg_camera_part part);
+
 #endif

@@ -381,16 +381,14 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
         place_camera(&l->scene->camera, a);
         *camera_set = 1;
         const struct ssg_camera *c = &l->scene->camera;
-        for (int i = 0; i < 3; i++) {
-            if (fabsf(c->position[i]) <= SSG_PARAM_ABS_MAX &&
-                fabsf(c->target[i]) <= SSG_PARAM_ABS_MAX)
-                continue;
-            ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: its camera is at (%g, %g, %g) "
-                        "(expected finite coordinates within +-%g)", a->file,
+        enum ssg_camera_part part;
+        const char *fault = ssg_camera_fault(c, &part);
+        if (fault) {
+            ssg_diag_at(l->diags, SSG_E_VALUE, e->at[0], "%s: its camera at (%g, %g, %g) "
+                        "after translate, rotate and scale cannot be used: %s", a->file,
                         (double)c->position[0], (double)c->position[1],
-                        (double)c->position[2], SSG_PARAM_ABS_MAX);
+                        (double)c->position[2], fault);
             ssg_scene_fail(l, SSG_E_VALUE);
-            break;
         }
     }
     ssg_gltf_destroy(&g);

@@ -133,4 +133,7 @@ void ssg_scene_build(struct scene_loader *l);
 void ssg_scene_path_check(struct scene_loader *l);
 void ssg_scene_path_fill(struct scene_loader *l, const struct camera_args *camera);
 
+/* The camera a camera line's arguments describe (checked by ssg_camera_fault). */
+struct ssg_camera ssg_scene_camera_of(const struct camera_args *args);
+
 #endif

@@ -71,25 +71,26 @@ static const float *key_up(const struct scene_loader *l, const struct scene_enti
     return ((const struct camera_key_args *)e->args)->up;
 }
 
-/* A key's view must be a camera: a direction to look in, and an up not along it. */
+/* A key's view must be a camera as a camera line's must (ssg_camera_fault); its planes
+   are the camera line's, checked there. */
 static void check_key_view(struct scene_loader *l, const struct scene_entity *e)
 {
     const struct camera_key_args *k = e->args;
-    const float *up = key_up(l, e);
-    double f[3], x[3], ff = 0, xx = 0, uu = 0;
-    for (int i = 0; i < 3; i++)
-        f[i] = (double)k->target[i] - k->position[i];
-    x[0] = f[1] * up[2] - f[2] * up[1];
-    x[1] = f[2] * up[0] - f[0] * up[2];
-    x[2] = f[0] * up[1] - f[1] * up[0];
-    for (int i = 0; i < 3; i++)
-        ff += f[i] * f[i], xx += x[i] * x[i], uu += (double)up[i] * up[i];
-    if (ff == 0)
-        fail_at(l, SSG_E_VALUE, written_at(e, "target"), "'camera_key' argument 'target': "
-                "the target equals the position (at time %g; line %d)", k->time, line_of(e));
-    else if (xx <= 1e-12 * ff * uu)
-        fail_at(l, SSG_E_VALUE, written_at(e, "up"), "'camera_key' argument 'up': zero or "
-                "parallel to the view direction (at time %g; line %d)", k->time, line_of(e));
+    struct camera_args planes;
+    ssg_params_defaults(ssg_scene_kinds[SK_CAMERA].table, &planes);
+    struct camera_args args = {.fov = k->fov, .near_z = planes.near_z, .far_z = planes.far_z};
+    memcpy(args.position, k->position, sizeof args.position);
+    memcpy(args.target, k->target, sizeof args.target);
+    memcpy(args.up, key_up(l, e), sizeof args.up);
+    struct ssg_camera c = ssg_scene_camera_of(&args);
+    enum ssg_camera_part part;
+    const char *why = ssg_camera_fault(&c, &part);
+    if (!why)
+        return;
+    const char *arg = ssg_camera_part_arg(part);
+    ssg_diag_at(l->diags, SSG_E_VALUE, written_at(e, arg), "'camera_key' argument '%s': %s "
+                "(at time %g; line %d)", arg, why, (double)k->time, line_of(e));
+    ssg_scene_fail(l, SSG_E_VALUE);
 }
 
 static void check_keys(struct scene_loader *l, const int *index, int n)
