@@ -262,3 +262,26 @@ def test_a_control_character_in_a_value_is_refused(repo, value):
     with pytest.raises(ssgraph.Error):
         ssgraph.run_node("ssao", {"position": pos, "normal": normal}, {"radius": value})
 
+
+
+# ---- a camera whose derived quantities overflow (issue 42, item 3): refused with an
+# exception, not an abort inside Embree. Needs the core check (branch t42b).
+
+def test_an_overflowing_camera_is_refused(repo):
+    with ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12)) as graph:
+        cam = graph.camera
+        for position, target in [((2e38, 2e38, 2e38), (-2e38, -2e38, -2e38)),
+                                 ((3e38, 0.0, 0.0), (-3e38, 0.0, 0.0)),
+                                 ((float("nan"), 0.0, 0.0), (0.0, 0.0, 0.0)),
+                                 ((float("inf"), 0.0, 0.0), (0.0, 0.0, 0.0))]:
+            with pytest.raises(ssgraph.Error):
+                graph.camera = ssgraph.Camera(position, target, cam.up, cam.fov)
+            assert graph.camera == cam  # the camera is as it was
+        graph.run()  # and the graph still runs
+        for fov in (float("nan"), 0.0, 180.0, -1.0):
+            with pytest.raises(ssgraph.Error):
+                graph.camera = ssgraph.Camera(cam.position, cam.target, cam.up, fov)
+        with pytest.raises(TypeError, match="position"):
+            graph.camera = ssgraph.Camera((1.0, 2.0), cam.target, cam.up, cam.fov)
+        with pytest.raises(TypeError, match="target"):
+            graph.camera = ssgraph.Camera(cam.position, "abc", cam.up, cam.fov)
