@@ -96,6 +96,7 @@ struct ssg_diag {
 #define SSG_DIAGS_MAX ...
 #define SSG_WARNINGS_MAX ...
 #define SSG_MAX_OUTPUTS ...
+#define SSG_GUARD_MAX ...
 struct ssg_diags {
     int count; int total; struct ssg_diag items[...]; int warning_count;
     struct ssg_diag warnings[...]; ...;
@@ -144,6 +145,8 @@ enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *overri
 enum ssg_err ssg_graph_run(struct ssg_graph *graph, const struct ssg_run_options *options,
                            struct ssg_diags *diags);
 void ssg_graph_destroy(struct ssg_graph **graph);
+enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *key, double *value,
+                             int *integer, struct ssg_diags *diags);
 enum ssg_err ssg_graph_keep(struct ssg_graph *graph, size_t max_bytes, struct ssg_diags *diags);
 enum ssg_err ssg_graph_set(struct ssg_graph *graph, const char *key, const char *value,
                            struct ssg_diags *diags);

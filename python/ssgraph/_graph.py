@@ -3,12 +3,14 @@
 A loaded Graph keeps its run state between runs (ssg_graph_keep): a run after `set` runs
 only the nodes the change affects, and any sequence of sets and runs gives the bytes of a
 fresh load with the final settings."""
+import numbers
 import os
 from dataclasses import dataclass, field
 from typing import Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
+from . import _args
 from ._errors import Error, new_diags, raise_for, warnings_of
 from ._images import from_library, to_library
 from ._lock import locked
@@ -23,7 +25,9 @@ def _text(chars) -> str:
 
 def format_value(value: Value) -> str:
     """A Python value as a graph file writes it: True -> "true", 0.25 -> "0.25",
-    [1, 2, 3] -> "[1, 2, 3]"; a string as it is ("smooth", or a quoted name)."""
+    [1, 2, 3] -> "[1, 2, 3]"; a string as it is ("smooth", or a quoted name). A float is
+    written by repr, the shortest text that reads back as the same double (never "%g",
+    which keeps 6 digits): the library rounds that double to its float once."""
     if isinstance(value, (bool, np.bool_)):
         return "true" if value else "false"
     if isinstance(value, (int, np.integer)):
@@ -37,11 +41,34 @@ def format_value(value: Value) -> str:
     raise TypeError("cannot write a %s as a parameter value" % type(value).__name__)
 
 
-def set_strings(items):
+def set_strings(items, what: str = "sets"):
     """("key", value) pairs as the C array of "key=value" strings the library's sets take:
-    (the strings, which must outlive the call, and the array; NULL for none)."""
-    texts = [ffi.new("char[]", ("%s=%s" % (k, format_value(v))).encode()) for k, v in items]
+    (the strings, which must outlive the call, and the array; NULL for none). A key must be
+    a str without "=" (the library splits at the first one) and neither may hold a NUL."""
+    texts = []
+    for k, v in items:
+        key = _args.c_text(k, what + " key")
+        if b"=" in key:
+            raise _args.refuse("SSG_E_VALUE", "%s key %r holds '=' (the value would begin "
+                               "there)" % (what, k))
+        value = _args.c_text(format_value(v), "%s[%r]" % (what, k))
+        texts.append(ffi.new("char[]", key + b"=" + value))
     return texts, ffi.new("const char *[]", texts) if texts else ffi.NULL
+
+
+def split_sets(sets, what: str = "sets"):
+    """`sets` as ("key", value) pairs: a mapping's items, or "key=value" strings."""
+    if isinstance(sets, Mapping):
+        return list(sets.items())
+    if isinstance(sets, (str, bytes)):
+        raise TypeError("%s: expected a mapping or a list of \"node.param=value\" strings, "
+                        "got one %s" % (what, type(sets).__name__))
+    pairs = []
+    for s in sets or []:
+        if not isinstance(s, str) or "=" not in s:
+            raise TypeError("%s: expected \"node.param=value\", got %r" % (what, s))
+        pairs.append(tuple(s.split("=", 1)))
+    return pairs
 
 
 def parse_value(text: str, kind: str) -> Value:
@@ -157,14 +184,6 @@ def _metrics_dict(s) -> Dict[str, float]:
             for m in (s.metrics[i] for i in range(s.metric_count))}
 
 
-def _size(size) -> Tuple[int, int]:
-    if isinstance(size, str):
-        w, _, h = size.lower().partition("x")
-        return int(w), int(h)
-    w, h = size
-    return int(w), int(h)
-
-
 class Graph:
     """A loaded graph. Not for two threads at once on the same graph (calls take turns
     through the library's lock: docs/python.md, "Threads"). Close it with close(), a
@@ -172,35 +191,35 @@ class Graph:
 
     def __init__(self, path, *, scene=None, lights=None, size=None, sets=None, seed=None,
                  backend=None, guard=None, keep_bytes: int = 0):
-        self.path = os.fspath(path)
         self._handle = None
+        raw_path = _args.c_path(path, "path")
+        self.path = os.fsdecode(raw_path)
         keep = []  # C strings that must outlive the load call
         o = ffi.new("struct ssg_overrides *")
-        o.seed = -1 if seed is None else int(seed)
+        o.seed = -1 if seed is None else _args.integer(seed, "seed", 0, _args.SEED_MAX)
         if scene is not None:
-            keep.append(ffi.new("char[]", os.fspath(scene).encode()))
+            keep.append(ffi.new("char[]", _args.c_path(scene, "scene")))
             o.scene = keep[-1]
         if lights is not None:
-            keep.append(ffi.new("char[]", os.fspath(lights).encode()))
+            keep.append(ffi.new("char[]", _args.c_path(lights, "lights")))
             o.lights = keep[-1]
         if backend is not None:
-            keep.append(ffi.new("char[]", str(backend).encode()))
+            keep.append(ffi.new("char[]", _args.c_text(backend, "backend")))
             o.backend = keep[-1]
         if size is not None:
-            o.width, o.height = _size(size)
+            o.width, o.height = _args.size(size)
         if guard is not None:
-            o.guard_given, o.guard = 1, int(guard)
-        items = sets.items() if isinstance(sets, Mapping) else [
-            tuple(s.split("=", 1)) for s in (sets or [])]
-        texts, array = set_strings(items)
+            o.guard_given, o.guard = 1, _args.integer(guard, "guard", 0, _args.GUARD_MAX)
+        keep_bytes = _args.integer(keep_bytes, "keep_bytes", 0, 2 ** 63 - 1)
+        texts, array = set_strings(split_sets(sets))
         o.sets, o.set_count = array, len(texts)
         out = ffi.new("struct ssg_graph **")
         diags = new_diags()
         with locked():
-            err = lib.ssg_graph_load(self.path.encode(), o, out, diags)
+            err = lib.ssg_graph_load(raw_path, o, out, diags)
             if err == lib.SSG_OK:
                 self._handle = out[0]
-                err = lib.ssg_graph_keep(self._handle, int(keep_bytes), diags)
+                err = lib.ssg_graph_keep(self._handle, keep_bytes, diags)
         self.warnings = warnings_of(diags)
         if err != lib.SSG_OK:
             self.close()
@@ -279,7 +298,8 @@ class Graph:
         value = ffi.new("char[]", 512)
         for k in range(info.param_count):
             name = _text(lib.ssg_graph_node_param(self._g(), index, k, value, 512))
-            params[name] = _param(kind, k, _text(value))
+            params[name] = _param(kind, k, _text(value),
+                                  lambda: self._float("%s.%s" % (_text(info.name), name)))
         ports = []
         port = ffi.new("struct ssg_port_info *")
         for k in range(lib.ssg_graph_port_count(self._g(), index)):
@@ -289,8 +309,18 @@ class Graph:
                               port.width, port.height, _text(getattr(port, "from"))))
         return Node(_text(info.name), kind, _text(info.backend), params, ports)
 
+    def _float(self, key: str) -> float:
+        """A float parameter's value exactly (the library prints 6 digits: "%g")."""
+        value = ffi.new("double *")
+        self._call(lib.ssg_graph_param, _args.c_text(key, "key"), value, ffi.NULL,
+                   what="reading " + key)
+        return value[0]
+
     def get(self, key: str) -> Value:
-        """A parameter's current value, key "node.param" ("ao.radius")."""
+        """A parameter's current value, key "node.param" ("ao.radius"). A float is the
+        library's float exactly (0.1 set reads back as 0.10000000149011612, the float
+        nearest 0.1), a bool True or False."""
+        _args.c_text(key, "key")
         name, _, param = key.partition(".")
         node = self.node(name)
         if param not in node.params:
@@ -304,7 +334,8 @@ class Graph:
         """Sets one parameter, key "node.param", as `--set` would (the same parsing and
         checks; errors name the node's place in its graph file). Returns the graph, so
         that calls chain: g.set("ao.radius", 0.25).run()."""
-        self._call(lib.ssg_graph_set, key.encode(), format_value(value).encode(),
+        self._call(lib.ssg_graph_set, _args.c_text(key, "key"),
+                   _args.c_text(format_value(value), "value of " + repr(key)),
                    what="setting " + key)
         return self
 
@@ -325,29 +356,32 @@ class Graph:
     @camera.setter
     def camera(self, camera: Camera) -> None:
         view = ffi.new("struct ssg_view *")
-        view.position, view.target, view.up = (list(map(float, v)) for v in (
-            camera.position, camera.target, camera.up))
-        view.fov_y = float(camera.fov)
+        view.position, view.target, view.up = (_vec3(camera, n) for n in (
+            "position", "target", "up"))
+        view.fov_y = _real(camera.fov, "camera fov")
         self._call(lib.ssg_graph_set_view, view, what="setting the camera")
 
     def camera_at(self, frame: int) -> Camera:
         """Frame `frame`'s camera on the scene's camera path (the scene's camera without
         one)."""
         view = ffi.new("struct ssg_view *")
-        self._call(lib.ssg_graph_camera_at, int(frame), view, what="the camera path")
+        self._call(lib.ssg_graph_camera_at, _args.integer(frame, "frame", 0, _args.INT_MAX),
+                   view, what="the camera path")
         return _camera(view)
 
     def set_frame(self, frame: int) -> "Graph":
         """The frame the next run starts at (docs/time.md): the next frame after the last
         run follows on from it (history kept); any other is a cut."""
-        self._call(lib.ssg_graph_set_frame, int(frame), what="setting the frame")
+        self._call(lib.ssg_graph_set_frame, _args.integer(frame, "frame", 0, _args.INT_MAX),
+                   what="setting the frame")
         return self
 
     def supply(self, node: str, image: np.ndarray) -> "Graph":
         """Gives an `input` node its image (float32, H x W or H x W x C, C-contiguous; the
         node's size and channels): the graph keeps a copy for every later run."""
         owner = to_library(image, "supply(%r)" % node)
-        self._call(lib.ssg_graph_supply, node.encode(), owner, what="supplying " + node)
+        self._call(lib.ssg_graph_supply, _args.c_text(node, "node"), owner,
+                   what="supplying " + node)
         return self
 
     # ---- running
@@ -358,11 +392,13 @@ class Graph:
         into out_dir (default "out"), as `ssgraph run` does; by default they do not, and
         you read ports with output(). compare nodes always run (Run.metrics). The GIL is
         released while it runs."""
+        frames = _args.integer(frames, "frames", 1, _args.FRAMES_MAX)
+        threads = _args.integer(threads, "threads", 0, _args.THREADS_MAX)
+        folder = ffi.new("char[]", _args.c_path(out_dir, "out_dir")) if out_dir else ffi.NULL
         stats = ffi.new("struct ssg_run_stats *")
         options = ffi.new("struct ssg_run_options *")
-        options.frames, options.threads, options.stats = int(frames), int(threads), stats
+        options.frames, options.threads, options.stats = frames, threads, stats
         options.no_files = 0 if write else 1
-        folder = ffi.new("char[]", os.fspath(out_dir).encode()) if out_dir else ffi.NULL
         options.out_dir = folder
         diags = new_diags()
         try:
@@ -378,7 +414,8 @@ class Graph:
         array: H x W for one channel, H x W x C for more (planar: C x H x W). The graph
         must have run."""
         out = ffi.new("struct ssg_image **")
-        self._call(lib.ssg_graph_output, port.encode(), out, what="output " + port)
+        self._call(lib.ssg_graph_output, _args.c_text(port, "port"), out,
+                   what="output " + port)
         return from_library(out[0], planar)
 
     def __repr__(self) -> str:
@@ -389,7 +426,9 @@ class Graph:
                                                       self._info().node_count)
 
 
-def _param(kind: str, k: int, value: str) -> Param:
+def _param(kind: str, k: int, value: str, exact=None) -> Param:
+    """Parameter k of node type `kind`, its value from the library's text (a float's from
+    exact() when given: the text has 6 digits)."""
     info = ffi.new("struct ssg_param_info *")
     if lib.ssg_node_param_info(kind.encode(), k, info) != lib.SSG_OK:
         return Param("?", "?", value, "")
@@ -401,9 +440,25 @@ def _param(kind: str, k: int, value: str) -> Param:
             i += 1
         choices = tuple(choices)
     ptype = _text(info.type)
-    return Param(_text(info.name), ptype, parse_value(value, ptype), _text(info.doc),
+    parsed = exact() if exact is not None and ptype == "float" else parse_value(value, ptype)
+    return Param(_text(info.name), ptype, parsed, _text(info.doc),
                  _text(info.unit) or None, info.min if info.bounded else None,
                  info.max if info.bounded else None, choices)
+
+
+def _real(value, name: str) -> float:
+    """A real number as the library's float (NaN and infinities pass: the library refuses
+    them with the camera's own message)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError("%s: expected a number, got %r" % (name, value))
+    return float(value)
+
+
+def _vec3(camera: Camera, field: str) -> List[float]:
+    v = getattr(camera, field)
+    if isinstance(v, (str, bytes)) or not hasattr(v, "__len__") or len(v) != 3:
+        raise TypeError("camera %s: expected 3 numbers, got %r" % (field, v))
+    return [_real(x, "camera %s" % field) for x in v]
 
 
 def _camera(view) -> Camera:

@@ -5,10 +5,12 @@ Into the library: one copy, from the array into a new planar image (the array mu
 float32 and C-contiguous: nothing is converted behind the caller's back). Out of it: the
 library's image is viewed in place and interleaved into a new array (one copy), then freed;
 the array belongs to the caller and no later run changes it."""
+import os
 from typing import Optional
 
 import numpy as np
 
+from . import _args
 from ._errors import new_diags, raise_for
 from ._lock import locked
 from ._ssgraph import ffi, lib
@@ -71,20 +73,22 @@ def read_image(path: str, layer: Optional[str] = None) -> np.ndarray:
     """Reads an image file (EXR, PNG, HDR, ... through OpenImageIO) as float32: H x W for
     one channel, else H x W x C. `layer` picks an EXR layer by name ("ao" reads the
     channels "ao.*"); None reads the unnamed channels (or all when there are none)."""
+    raw = _args.c_path(path, "path")
+    name = _args.c_text(layer, "layer") if layer else ffi.NULL
     out = ffi.new("struct ssg_image **")
     diags = new_diags()
     with locked():
-        err = lib.ssg_image_read(str(path).encode(), layer.encode() if layer else ffi.NULL,
-                                 out, diags)
-    raise_for(err, diags, "reading " + str(path))
+        err = lib.ssg_image_read(raw, name, out, diags)
+    raise_for(err, diags, "reading " + os.fsdecode(raw))
     return from_library(out[0])
 
 
 def write_image(path: str, array: np.ndarray) -> None:
     """Writes a float32 array as a 32-bit float EXR (1 channel: Y; 3: R, G, B; 4: RGBA),
     through a temporary file renamed into place."""
+    raw = _args.c_path(path, "path")
     image = to_library(array, "write_image")
     diags = new_diags()
     with locked():
-        err = lib.ssg_image_write(str(path).encode(), image, diags)
-    raise_for(err, diags, "writing " + str(path))
+        err = lib.ssg_image_write(raw, image, diags)
+    raise_for(err, diags, "writing " + os.fsdecode(raw))

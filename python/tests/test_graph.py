@@ -161,3 +161,31 @@ def test_help_and_types():
     assert "load" in ssgraph.__doc__ and ssgraph.load.__doc__
     assert ssgraph.Graph.run.__annotations__["return"] is ssgraph.Run
     assert ssgraph.__version__.count(".") == 2
+
+
+def test_a_float_survives_set_and_get(repo):
+    """Python writes a float so that the library reads the same number (repr, not "%g"'s
+    6 digits) and reads it back exactly (not the library's "%g" text): the parameter is a
+    C float, so what comes back is the float nearest the value."""
+    with ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12)) as g:
+        for value in (0.123456789, 0.1, 1.0 / 3.0, 0.30000001192092896, 2.5e-6):
+            g.set("ao.radius", value)
+            want = float(np.float32(value))
+            assert g.get("ao.radius") == want, value
+            assert g.node("ao").params["radius"].value == want
+        g.set("ao.radius", np.float32(0.123456789))
+        assert g.get("ao.radius") == float(np.float32(0.123456789))
+    with ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12),
+                      sets={"ao.radius": 0.123456789}) as g:
+        assert g.get("ao.radius") == float(np.float32(0.123456789))
+
+
+def test_a_bool_survives_set_and_get(repo):
+    """"false" reads False and "true" True (bool("false") would be True)."""
+    with ssgraph.load(repo / "graphs/ssao.graph", size=(16, 12)) as g:
+        assert g.get("b.separable") is False  # the default
+        for value in (True, False, np.bool_(True), np.bool_(False)):
+            g.set("b.separable", value)
+            assert g.get("b.separable") is bool(value)
+            assert g.node("b").params["separable"].value is bool(value)
+        assert ssgraph.node_params("bilateral")["separable"].value is None  # no graph
