@@ -32,10 +32,12 @@ struct builder {
     enum ssg_err first;
 };
 
-static void fail(struct builder *b, enum ssg_err e)
+/* Keeps the first error; 1 when e is one, so that a caller can stop in the same line. */
+static int fail(struct builder *b, enum ssg_err e)
 {
-    if (!b->first)
+    if (e && !b->first)
         b->first = e;
+    return e != SSG_OK;
 }
 
 static struct gnode *add_node(struct builder *b, const struct ssg_stmt *st)
@@ -493,15 +495,10 @@ static void apply_override(struct builder *b, const char *text)
 {
     struct ssg_source *src = caller_source(b, b->set_origin ? b->set_origin
                                                             : "<command line --set>", text);
-    if (!src)
+    if (!src || fail(b, ssg_line_check(src, b->diags)))
         return;
     const char *dot = strchr(src->text, '.'), *eq = strchr(src->text, '=');
     struct ssg_loc at = {src, src->text};
-    enum ssg_err e = ssg_line_check(src, b->diags);
-    if (e) {
-        fail(b, e);
-        return;
-    }
     if (!dot || !eq || dot > eq) {
         ssg_diag_at(b->diags, SSG_E_USAGE, at, "expected --set node.param=value, got '%s'",
                     text);
@@ -519,11 +516,8 @@ static void apply_override(struct builder *b, const char *text)
     arg->key = dot + 1;
     arg->key_len = (size_t)(eq - dot - 1);
     arg->key_loc = (struct ssg_loc){src, dot + 1};
-    e = ssg_parse_value(&b->g->arena, src, eq + 1, &arg->value, b->diags);
-    if (e) {
-        fail(b, e);
+    if (fail(b, ssg_parse_value(&b->g->arena, src, eq + 1, &arg->value, b->diags)))
         return;
-    }
     st->args = arg;
     st->arg_count = 1;
     apply_set(b, st);
