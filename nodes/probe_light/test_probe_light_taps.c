@@ -38,6 +38,9 @@ static struct ssg_probe_light_consts *consts_alloc(void)
 /* Tap k of a set of n taps at t (x plane, then y plane) is (x, y), to float rounding. */
 static void check_tap(const float *t, int n, int k, double x, double y)
 {
+    if (!(fabs(t[k] - x) <= 1e-6 && fabs(t[n + k] - y) <= 1e-6))
+        fprintf(stderr, "n = %d, tap %d: (%.7f, %.7f), by hand (%.7f, %.7f)\n", n, k, t[k],
+                t[n + k], x, y);
     CHECK_NEAR(t[k], x, 1e-6);
     CHECK_NEAR(t[n + k], y, 1e-6);
 }

@@ -42,9 +42,9 @@ static void one_texel(const struct ssg_scene *s, int res, int cell, int x, int y
     double d2 = (double)h * h > r2 ? (double)h * h : r2;
     for (int c = 0; c < 3; c++) {
         double want = phi[c] / (M_PI * M_PI * d2), got = px(out, c, 0);
-        if (!(fabs(got - want) <= 1e-5 * want))
-            fprintf(stderr, "R %d cell %d, flux at texel (%d, %d) alone: channel %d %.7g, "
-                    "closed form %.7g\n", res, cell, x, y, c, got, want);
+        if (c == 0 && !(fabs(got - want) <= 1e-5 * want))
+            fprintf(stderr, "R %d cell %d, flux at texel (%d, %d) alone: red %.7g, closed "
+                    "form %.7g\n", res, cell, x, y, got, want);
         CHECK_NEAR(got, want, 1e-5 * want);
     }
     ssg_image_destroy(&out);
