@@ -96,4 +96,20 @@ static inline enum ssg_err run_prepared(const struct ssg_node_desc *desc,
     return e;
 }
 
+/* prepare() of desc alone, on input shapes `in` (port order) with scene s and a 16 x 16
+   frame of seed 1, into consts: for the tests of the constants both backends read (a slip
+   there passes every CPU/GL parity test). Returns its error; diagnostics go to stderr. */
+static inline enum ssg_err prepare_on(const struct ssg_node_desc *desc,
+                                      const struct ssg_scene *s, const struct ssg_shape *in,
+                                      const void *params, void *consts)
+{
+    struct ssg_frame frame = {16, 16, 45, 0.05f, 100, 1, 0};
+    struct ssg_diags d = {0};
+    struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = &frame,
+                               .scene = s, .out_dir = ".", .diags = &d, .in_shape = in};
+    enum ssg_err e = desc->prepare(&ctx, params, consts);
+    ssg_diags_print(&d, stderr);
+    return e;
+}
+
 #endif
