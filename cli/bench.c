@@ -363,6 +363,108 @@ static void progress(const struct bench *b, int ci, FILE *f, int tty)
     fflush(f);
 }
 
+/* ", a, b, c" of the graph's nodes (with metrics only: those whose type reports some). */
+static void node_list(const struct ssg_graph *g, int with_metrics, char *buf, size_t len)
+{
+    struct ssg_graph_info info;
+    ssg_graph_inspect(g, &info);
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < info.node_count && used < len; i++) {
+        struct ssg_node_info n;
+        if (ssg_graph_node_inspect(g, i, &n) || (with_metrics && !ssg_node_metric(n.type, 0)))
+            continue;
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "", n.name);
+    }
+}
+
+/* ", rmse, mae" of what node type `type` reports. */
+static void metric_list(const char *type, char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int k = 0; ssg_node_metric(type, k) && used < len; k++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", k ? ", " : "",
+                                 ssg_node_metric(type, k));
+}
+
+/* The type whose metrics --error's NODE reports: bench_reference's (with --reference) are a
+   compare's; NULL when NODE is no node of g. */
+static const char *metric_node_type(const struct bench *b, const struct ssg_graph *g,
+                                    const char *node)
+{
+    struct ssg_node_info n;
+    if (b->req->reference && !strcmp(node, "bench_reference"))
+        return "compare";
+    return ssg_graph_node_inspect(g, ssg_graph_node_index(g, node), &n) ? NULL : n.type;
+}
+
+/* --error NODE.METRIC: a node of the graph (or bench_reference) and a metric its type
+   reports; 0 with the names it could be. */
+static int check_error_metric(const struct bench *b, const struct ssg_graph *g)
+{
+    const char *spec = b->req->error_metric, *dot = strchr(spec, '.');
+    char node[128], list[2048];
+    snprintf(node, sizeof node, "%.*s", dot ? (int)(dot - spec) : 0, spec);
+    const char *type = dot && dot - spec < (long)sizeof node ? metric_node_type(b, g, node)
+                                                             : NULL;
+    for (int k = 0; type && ssg_node_metric(type, k); k++)
+        if (!strcmp(ssg_node_metric(type, k), dot + 1))
+            return 1;
+    if (type && ssg_node_metric(type, 0)) {
+        metric_list(type, list, sizeof list);
+        fprintf(stderr, "ssgraph: error: --error '%s': node '%s' (%s) reports no metric '%s' "
+                "(expected one of: %s)\n", spec, node, type, dot + 1, list);
+        return 0;
+    }
+    node_list(g, 1, list, sizeof list);
+    fprintf(stderr, "ssgraph: error: --error '%s': expected NODE.METRIC, NODE a node of %s "
+            "that reports metrics (%s%s%s)\n", spec, b->graph, list[0] ? "one of: " : "none "
+            "does: add a compare node", list, b->req->reference ? ", or bench_reference" : "");
+    return 0;
+}
+
+/* --time and --error name what the graph has: checked before anything runs or is written
+   (a misspelt name used to be found after the first cell, or never). */
+static int check_names(const struct bench *b)
+{
+    const struct ssg_bench_request *q = b->req;
+    if (!q->time_node && !q->error_metric)
+        return 1;
+    struct ssg_diags quiet = {0};
+    struct ssg_graph *g = NULL;
+    if (ssg_graph_parse(b->graph, &g, &quiet) != SSG_OK) {
+        ssg_graph_destroy(&g);
+        return 1; /* check_sweeps reports what is wrong with the graph */
+    }
+    int ok = 1;
+    if (q->time_node && ssg_graph_node_index(g, q->time_node) < 0) {
+        char list[2048];
+        node_list(g, 0, list, sizeof list);
+        fprintf(stderr, "ssgraph: error: --time '%s' is not a node of %s (expected one of: "
+                "%s)\n", q->time_node, b->graph, list);
+        ok = 0;
+    }
+    if (ok && q->error_metric)
+        ok = check_error_metric(b, g);
+    ssg_graph_destroy(&g);
+    return ok;
+}
+
+/* The files bench writes into --out can be written (a FIFO or a folder planted at
+   bench.md is refused before the first cell, not after it). */
+static enum ssg_err check_outputs(const struct bench *b, struct ssg_diags *d)
+{
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < 3 && !e; i++) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s", b->req->out_dir,
+                 (const char *[]){"bench.csv", "bench.json", "bench.md"}[i]);
+        e = ssg_output_check(path, "bench table", 0, d);
+    }
+    return e;
+}
+
 /* Whether the --time node (if any) is among the nodes a cell ran. */
 static int knows_time_node(const struct bench *b, const struct cell *c)
 {
@@ -396,6 +498,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         return 2;
     if (!ssg_bench_parse_shard(&b, req->shard) || !ssg_bench_define(&b))
         return 1;
+    if (!check_names(&b))
+        return 2;
     struct ssg_diags d = {0};
     if (!ssg_bench_make_cells(&b))
         return 1;
@@ -404,6 +508,8 @@ int ssg_bench_main(const struct ssg_bench_request *req)
         return 2;
     }
     enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
+    if (!e)
+        e = check_outputs(&b, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
     struct live_cells live = {0};
     for (int ci = b.shard_index; ci < b.cell_count && !e; ci += b.shard_count) {
@@ -415,8 +521,11 @@ int ssg_bench_main(const struct ssg_bench_request *req)
             progress(&b, ci, stderr, tty);
         e = ssg_bench_save(&b, &d);
         if (!e && b.cells[ci].ok && !knows_time_node(&b, &b.cells[ci])) {
-            fprintf(stderr, "ssgraph: error: --time '%s' is not a node of %s\n",
-                    req->time_node, req->graph);
+            /* a node of the graph (check_names) that no cell runs: none of its outputs
+               is read by a sink, or by --image with --reference */
+            fprintf(stderr, "ssgraph: error: --time '%s': the node does not run in %s's "
+                    "cells (nothing they write or compare reads it)\n", req->time_node,
+                    req->graph);
             failed = -1;
             break;
         }

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "bench_cells.h"
 #include "bench_json.h"
@@ -169,6 +170,8 @@ static int join(struct bench *b, struct ssg_bench_request *req, const struct sha
     b->req = req;
     b->graph = req->graph;
     fill_sweeps(b, first);
+    /* several --scene: the outermost sweep, "scene" (no --sweep key lacks a dot) */
+    b->scene_axis = b->n > 0 && !strcmp(b->sweeps[0].key, "scene");
     b->cell_count = first->cells_total;
     b->shard_index = 0;
     b->shard_count = 1;
@@ -215,6 +218,25 @@ static int write_merged(struct bench *b, const struct ssg_bench_request *req, in
     return failed ? 1 : 0;
 }
 
+/* --out must not be one of the shards: writing the joined tables there replaced that
+   shard's bench.json (and with it the only copy of its cells). Compared as files (device
+   and inode), so another spelling of the folder (a/../a, a link to it) is caught too. */
+static int out_is_input(const struct ssg_bench_request *q)
+{
+    struct stat out, in;
+    if (stat(q->out_dir, &out) != 0)
+        return 0; /* not there yet: no shard */
+    for (int i = 0; i < q->merge_count; i++)
+        if (stat(q->merge_dirs[i], &in) == 0 && in.st_dev == out.st_dev &&
+            in.st_ino == out.st_ino) {
+            fprintf(stderr, "ssgraph: error: bench --merge: --out %s is the shard folder %s: "
+                    "the joined tables would replace that shard's files (expected another "
+                    "folder)\n", q->out_dir, q->merge_dirs[i]);
+            return 1;
+        }
+    return 0;
+}
+
 int ssg_bench_merge(const struct ssg_bench_request *given)
 {
     struct ssg_bench_request req = *given;
@@ -223,6 +245,8 @@ int ssg_bench_merge(const struct ssg_bench_request *given)
         fprintf(stderr, "ssgraph: error: bench --merge expects the shard folders to join\n");
         return 2;
     }
+    if (out_is_input(given))
+        return 1;
     s.files = calloc((size_t)s.count, sizeof *s.files);
     int ok = s.files != NULL;
     for (int i = 0; ok && i < s.count; i++)

@@ -339,23 +339,34 @@ static void append(char *buf, size_t size, size_t *used, const char *fmt, ...)
 
 enum { SERIES_MAX = 300 }; /* bytes of a series name, "..." when cut */
 
-/* A successful cell as a plot point: x the first sweep's value (must be a number), series
-   the other sweeps' values, label every value; 0 when it is none. */
+/* The sweep on the x axis: the first --sweep. With several --scene the scenes are sweep 0
+   (file names, never numbers: with them on the axis nothing could be plotted) and each
+   scene is a series; scenes alone are numbered on the axis. */
+static int x_sweep(const struct bench *b)
+{
+    return b->scene_axis && b->n > 1 ? 1 : 0;
+}
+
+/* A successful cell as a plot point: x the x sweep's value (must be a number; a scene's
+   index), series the other sweeps' values, label every value; 0 when it is none. */
 static int plot_point(const struct bench *b, int ci, const char *err_name,
                       struct ssg_plot_point *p, char *series)
 {
     const struct cell *c = &b->cells[ci];
+    const int xk = x_sweep(b);
     char *end = NULL;
     if (!c->ran || !c->ok)
         return 0;
-    double x = b->n ? strtod(ssg_bench_value(b, c, 0), &end) : ci;
+    double x = !b->n ? ci : b->scene_axis && xk == 0 ? c->index[0]
+                                                      : strtod(ssg_bench_value(b, c, xk), &end);
     if (end && *end)
         return 0;
     size_t used = 0;
     series[0] = '\0';
-    for (int k = 1; k < b->n; k++)
-        append(series, SERIES_MAX, &used, "%s%s=%s", k > 1 ? " " : "", b->sweeps[k].key,
-               ssg_bench_value(b, c, k));
+    for (int k = 0; k < b->n; k++)
+        if (k != xk)
+            append(series, SERIES_MAX, &used, "%s%s=%s", used ? " " : "", b->sweeps[k].key,
+                   ssg_bench_value(b, c, k));
     if (b->n < 2)
         append(series, SERIES_MAX, &used, "%s", b->req->time_node ? b->req->time_node
                                                                   : "frame");
@@ -375,11 +386,10 @@ static void draw_both(const struct bench *b, const char *err_name, struct ssg_pl
 {
     const char *what = b->req->time_node ? b->req->time_node : "frame";
     char title[600], ms_label[300];
-    snprintf(title, sizeof title, "%s: ms against %s", b->req->graph,
-             b->n ? b->sweeps[0].key : "cell");
+    const char *x_name = b->n ? b->sweeps[x_sweep(b)].key : "cell";
+    snprintf(title, sizeof title, "%s: ms against %s", b->req->graph, x_name);
     snprintf(ms_label, sizeof ms_label, "ms (%s, median; bars: fastest to slowest)", what);
-    int ms_rc = ssg_plot_ms(b->req->out_dir, "bench_ms", title,
-                            b->n ? b->sweeps[0].key : "cell", ms_label, pts, n);
+    int ms_rc = ssg_plot_ms(b->req->out_dir, "bench_ms", title, x_name, ms_label, pts, n);
     *rc |= ms_rc;
     if (!ms_rc && !b->req->quiet)
         printf("wrote %s/bench_ms.png\n", b->req->out_dir);
@@ -411,8 +421,8 @@ int ssg_bench_draw_plots(const struct bench *b)
     for (int ci = 0; pts && series && ci < b->cell_count; ci++)
         n += plot_point(b, ci, err_name, &pts[n], series + (size_t)n * SERIES_MAX);
     if (n == 0) {
-        fprintf(stderr, "ssgraph: error: nothing to plot (no finished cell, or the first "
-                "sweep's values are not numbers)\n");
+        fprintf(stderr, "ssgraph: error: nothing to plot (no finished cell, or the values "
+                "of --sweep %s are not numbers)\n", b->n ? b->sweeps[x_sweep(b)].key : "");
         rc = 1;
     } else {
         qsort(pts, (size_t)n, sizeof *pts, by_series);

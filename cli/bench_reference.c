@@ -125,18 +125,26 @@ static void put_key(FILE *f, const void *user)
             k->im->channels, pixels_hash(k->im));
 }
 
-/* The image first, its key last: a key names only a complete image. */
+/* The image first, its key last: a key names only a complete image. A cache that cannot
+   be written (a full disk, a FIFO planted at a name: refused, never opened) is left alone,
+   with a warning unless quiet: the bench goes on without it. */
 static void cache_write(const char *dir, const char *base, const char *key,
-                        const struct ssg_image *im)
+                        const struct ssg_image *im, int quiet)
 {
     char path[4300];
-    struct ssg_diags quiet = {0};
+    struct ssg_diags d = {0};
     struct key_file k = {key, im};
     snprintf(path, sizeof path, "%s.exr", base);
-    if (ssg_make_dirs(dir, &quiet) || ssg_image_write(path, im, &quiet))
-        return;
+    enum ssg_err e = ssg_make_dirs(dir, &d);
+    if (!e)
+        e = ssg_image_write(path, im, &d);
     snprintf(path, sizeof path, "%s.key", base);
-    ssg_write_text_file(path, "reference cache key", put_key, &k, &quiet);
+    if (!e)
+        e = ssg_write_text_file(path, "reference cache key", put_key, &k, &d);
+    if (e && !quiet)
+        fprintf(stderr, "ssgraph: warning: the reference was not cached (%s): %s\n",
+                d.count ? d.items[0].file : dir, d.count ? d.items[0].message
+                                                         : ssg_err_text(e));
 }
 
 /* The graph with only `outputs` loaded: their images after `frames` frames. */
@@ -181,7 +189,7 @@ static enum ssg_err reference_image(const struct bench *b, const struct ssg_over
         struct ssg_run_options ro = {.threads = b->req->threads, .frames = 1, .outputs = ref};
         e = ssg_graph_run(g, &ro, d);
         if (!e && key && dir[0])
-            cache_write(dir, base, key, *ref);
+            cache_write(dir, base, key, *ref, b->req->quiet);
     }
     free(key);
     ssg_graph_destroy(&g);

@@ -30,7 +30,7 @@ enum ssg_err ssg_cli_dot(const char *path, const char *out_path, struct ssg_diag
         e = ssg_make_dirs(dir, diags);
     }
     if (!e && out_path)
-        e = ssg_write_text_file(out_path, "DOT graph", write_dot, g, diags);
+        e = ssg_write_text_stream(out_path, "DOT graph", write_dot, g, diags);
     else if (!e)
         write_dot(stdout, g);
     ssg_graph_destroy(&g);

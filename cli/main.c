@@ -228,6 +228,23 @@ static enum ssg_err watched_run(const struct ssg_cli_args *a, struct ssg_cli_wat
     return run_once(a, 0.0f, a->out_dir, NULL, w, d);
 }
 
+/* --profile-json is written after the run: a path that cannot take it (a folder, a
+   missing folder) is refused before the run writes anything (a FIFO or a device is
+   written into). The run makes --out first, so a profile directly in an --out that does
+   not exist yet is left to it. */
+static int profile_refused(const struct ssg_cli_args *a, struct ssg_diags *d)
+{
+    const char *p = a->profile_json, *slash = strrchr(p, '/');
+    size_t out = strlen(a->out_dir);
+    while (out > 1 && a->out_dir[out - 1] == '/')
+        out--;
+    struct stat st;
+    if (slash && (size_t)(slash - p) == out && !strncmp(p, a->out_dir, out) &&
+        stat(a->out_dir, &st) != 0)
+        return 0;
+    return ssg_output_check(p, "profile", 1, d) != SSG_OK;
+}
+
 static int cmd_run(struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
@@ -244,6 +261,8 @@ static int cmd_run(struct ssg_cli_args *a)
                                  "give --show NODE.PORT");
     if (rc)
         return rc;
+    if (a->profile_json && profile_refused(a, &d))
+        return conclude(&d, SSG_E_IO);
     if (a->stereo)
         return cmd_stereo(*a);
     if (a->watch)

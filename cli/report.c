@@ -189,7 +189,7 @@ static void write_json(FILE *f, const void *user)
 enum ssg_err ssg_report_write_json(const struct ssg_run_stats *stats, const char *path,
                                    struct ssg_diags *diags)
 {
-    return ssg_write_text_file(path, "profile", write_json, stats, diags);
+    return ssg_write_text_stream(path, "profile", write_json, stats, diags);
 }
 
 /* The library reports each rise of the whole percentage, so every event is drawn; the

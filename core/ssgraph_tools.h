@@ -66,6 +66,9 @@ SSG_API void ssg_graph_dot(const struct ssg_graph *graph, FILE *stream);
  * ("float", "int", "bool", "enum", "string", "vec3", "int list", "name"); NULL when there
  * is no such node or parameter. */
 SSG_API const char *ssg_node_param_type(const char *node, const char *param);
+/* Metric k (0, 1, ...) that node type `node` may report (compare: "rmse", "mae", ...), from
+ * its descriptor; NULL past the last, or for a node that reports none or is unknown. */
+SSG_API const char *ssg_node_metric(const char *node, int k);
 
 /* ---- Descriptors of parameters and ports, for a generated interface (ssgraph view) */
 
@@ -143,14 +146,29 @@ SSG_API void ssg_tmp_remove_all(void);
  * then die of the same signal. For programs (the CLI); a library user keeps its own. */
 SSG_API void ssg_tmp_remove_on_signals(void);
 
+/* Whether path can take an output, checked without opening it (nothing blocks): SSG_OK
+ * when it is a new name or a regular file in a folder this process can create files in,
+ * and with `streams` also when it is a character device or a FIFO (what
+ * ssg_write_text_stream writes into); else SSG_E_IO naming what it is (a directory, a
+ * FIFO, ...) or what is wrong with its folder (`what` names the content: "profile"). For
+ * checking an output before any work; every writer above checks again. */
+SSG_API enum ssg_err ssg_output_check(const char *path, const char *what, int streams,
+                                      struct ssg_diags *diags);
+
 /* Writes a text file whole or not at all through a temporary (above): fill() writes into
- * it. `what` names the content in error messages ("metrics", "profile"). A path naming a
- * character device or a FIFO (/dev/stdout, a named pipe) is written into as a stream, never
- * replaced; any other existing non-regular file (a directory, a socket) is refused, as it
- * is by ssg_tmp_create for every output. */
+ * it. `what` names the content in error messages ("metrics", "bench table"). For the files
+ * the program names (in an output folder, a cache): an existing target that is not a
+ * regular file (a FIFO, a device, a directory, a socket) is refused without being opened,
+ * as by ssg_tmp_create for every output, so a FIFO planted there never blocks a run. */
 SSG_API enum ssg_err ssg_write_text_file(const char *path, const char *what,
                                          void (*fill)(FILE *f, const void *user),
                                          const void *user, struct ssg_diags *diags);
+/* ssg_write_text_file for a file the user names (--profile-json, dot -o): a path naming a
+ * character device or a FIFO (/dev/stdout, a named pipe a script reads) is written into
+ * as a stream, never replaced (opening a FIFO waits for its reader). */
+SSG_API enum ssg_err ssg_write_text_stream(const char *path, const char *what,
+                                           void (*fill)(FILE *f, const void *user),
+                                           const void *user, struct ssg_diags *diags);
 
 /* ---- Stereo runs (`ssgraph run --stereo`): each eye's graph run writes into a folder of
  * its own, then ssg_stereo_join makes one multi-view EXR of each EXR the eyes share (the

@@ -82,6 +82,10 @@ static void images(void)
     expect_usage(ssg_image_write("x.exr", NULL, &d), &d, "ssg_image_write", "image");
     d = (struct ssg_diags){0};
     expect_usage(ssg_make_dirs(NULL, &d), &d, "ssg_make_dirs", "dir");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_output_check(NULL, "x", 0, &d), &d, "ssg_output_check", "path");
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_output_check("x", NULL, 0, &d), &d, "ssg_output_check", "what");
     ssg_image_destroy(NULL);
     ssg_image_destroy(&im);
     CHECK(ssg_image_create(0, 0, 1) == NULL);

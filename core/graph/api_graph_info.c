@@ -71,6 +71,15 @@ const char *ssg_graph_node_param(const struct ssg_graph *g, int index, int k, ch
     return n->desc->params.params[k].name;
 }
 
+const char *ssg_node_metric(const char *node, int k)
+{
+    const struct ssg_node_desc *desc = node ? ssg_node_find(node, strlen(node)) : NULL;
+    for (int i = 0; desc && desc->metrics && desc->metrics[i]; i++)
+        if (i == k)
+            return desc->metrics[i];
+    return NULL;
+}
+
 const char *ssg_node_param_type(const char *node, const char *param)
 {
     const struct ssg_node_desc *desc = ssg_node_find(node, strlen(node));

@@ -240,6 +240,9 @@ struct ssg_node_desc {
     struct ssg_param_table uniforms;
     size_t uniforms_offset;
     int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
+    /* The names of every metric the node may report (ssg_metric_report), NULL-terminated;
+       NULL = none. What `bench --error NODE.METRIC` is checked against before any run. */
+    const char *const *metrics;
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
     /* 1 = nothing the node computes reads the camera: neither check, prepare, run_cpu nor

@@ -1,6 +1,7 @@
 /* exr_core.c - OpenEXRCore contexts over our descriptors and the chunk loops (exr_core.h). */
 #define _GNU_SOURCE /* pread, pwrite */
 #include <errno.h>
+#include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
@@ -11,18 +12,63 @@
 
 /* ---- contexts ----------------------------------------------------------------------- */
 
-/* OpenEXR reports errors through this (by default it prints them: the library prints
-   nothing). Several chunk threads may fail at once: the first message is kept. */
-static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+/* The io of every live context, found by the context's address. OpenEXR reports errors
+   through on_error, sometimes with the context's lock held (a write_fn that fails inside
+   exr_write_scanline_chunk or exr_write_header), and that lock is not recursive: asking
+   OpenEXR for the user data there (exr_get_user_data takes the lock) waited for ever, so a
+   write on a full disk never returned. This list is ours, under a lock of ours that is
+   never held while OpenEXR is called. */
+static pthread_mutex_t live_lock = PTHREAD_MUTEX_INITIALIZER;
+static struct ssg_exr_io *live;
+
+/* Ties io to ctxt (once): from the calls that receive both, so that even the errors
+   exr_start_read reports, before it returns the context, find their io. */
+static void adopt(struct ssg_exr_io *io, exr_const_context_t ctxt)
 {
-    void *user = NULL;
-    if (exr_get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || !user)
-        return;
-    struct ssg_exr_io *io = user;
-    const char *text = msg && msg[0] ? msg : exr_get_error_code_as_string(code);
-    #pragma omp critical(ssg_exr_error)
+    pthread_mutex_lock(&live_lock);
+    if (!io->ctx) {
+        io->ctx = ctxt;
+        io->next = live;
+        live = io;
+    }
+    pthread_mutex_unlock(&live_lock);
+}
+
+static void release(struct ssg_exr_io *io)
+{
+    pthread_mutex_lock(&live_lock);
+    for (struct ssg_exr_io **at = &live; *at; at = &(*at)->next)
+        if (*at == io) {
+            *at = io->next;
+            break;
+        }
+    io->ctx = NULL;
+    io->next = NULL;
+    pthread_mutex_unlock(&live_lock);
+}
+
+/* Keeps text as io's reason unless it has one (several chunk threads may fail at once:
+   the first is kept). Under live_lock, as on_error reads the list. */
+static void keep_why(struct ssg_exr_io *io, const char *text)
+{
+    pthread_mutex_lock(&live_lock);
     if (!io->why[0])
         snprintf(io->why, sizeof io->why, "%s", text);
+    pthread_mutex_unlock(&live_lock);
+}
+
+/* OpenEXR reports errors through this (by default it prints them: the library prints
+   nothing). It calls nothing of OpenEXR's (see live). */
+static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+{
+    pthread_mutex_lock(&live_lock);
+    struct ssg_exr_io *io = live;
+    while (io && io->ctx != ctxt)
+        io = io->next;
+    pthread_mutex_unlock(&live_lock);
+    /* io lives on: its owner is in the OpenEXR call that reports this */
+    if (io)
+        keep_why(io, msg && msg[0] ? msg : exr_get_error_code_as_string(code));
 }
 
 /* pread until sz bytes or the end; a short count is OpenEXR's to report. */
@@ -31,12 +77,16 @@ static int64_t read_at(exr_const_context_t ctxt, void *user, void *buffer, uint6
 {
     struct ssg_exr_io *io = user;
     uint64_t done = 0;
+    adopt(io, ctxt);
     while (done < sz) {
         ssize_t n = pread(io->fd, (char *)buffer + done, sz - done, (off_t)(offset + done));
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0) {
-            error_cb(ctxt, EXR_ERR_READ_IO, "cannot read: %s", strerror(errno));
+            char why[300];
+            snprintf(why, sizeof why, "cannot read: %s", strerror(errno));
+            keep_why(io, why);
+            error_cb(ctxt, EXR_ERR_READ_IO, "%s", why);
             return -1;
         }
         if (n == 0)
@@ -52,19 +102,23 @@ static int64_t size_of(exr_const_context_t ctxt, void *user)
     return ((const struct ssg_exr_io *)user)->size;
 }
 
-/* pwrite all of it: a full disk or a file size limit is an error here, never a short file. */
+/* pwrite all of it: a full disk or a file size limit is an error here, never a short file;
+   its reason (the OS's: "No space left on device") is kept before OpenEXR hears of it. */
 static int64_t write_at(exr_const_context_t ctxt, void *user, const void *buffer, uint64_t sz,
                         uint64_t offset, exr_stream_error_func_ptr_t error_cb)
 {
     struct ssg_exr_io *io = user;
     uint64_t done = 0;
+    adopt(io, ctxt);
     while (done < sz) {
         ssize_t n = pwrite(io->fd, (const char *)buffer + done, sz - done,
                            (off_t)(offset + done));
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0) {
-            error_cb(ctxt, EXR_ERR_WRITE_IO, "%s", n < 0 ? strerror(errno) : "wrote nothing");
+            const char *why = n < 0 ? strerror(errno) : "wrote nothing";
+            keep_why(io, why);
+            error_cb(ctxt, EXR_ERR_WRITE_IO, "%s", why);
             return -1;
         }
         done += (uint64_t)n;
@@ -86,14 +140,15 @@ enum ssg_err ssg_exr_open_read(const char *path, struct ssg_exr_io *io, exr_cont
     init.read_fn = read_at;
     init.size_fn = size_of;
     io->why[0] = '\0';
+    io->ctx = NULL;
     *ctx = NULL;
     exr_result_t rv = exr_start_read(ctx, path, &init);
-    if (rv == EXR_ERR_SUCCESS)
+    if (rv == EXR_ERR_SUCCESS) {
+        adopt(io, *ctx);
         return SSG_OK;
+    }
     ssg_diag_file(diags, SSG_E_IMAGE, path, "not a readable image: %s", ssg_exr_why(io, rv));
-    if (*ctx)
-        exr_finish(ctx);
-    *ctx = NULL;
+    ssg_exr_finish(ctx, io);
     return SSG_E_IMAGE;
 }
 
@@ -108,15 +163,28 @@ enum ssg_err ssg_exr_open_write(const char *path, const char *t_path, struct ssg
        for files about 1.5% larger (imageio.h has the measurements) */
     init.zip_level = 1;
     io->why[0] = '\0';
+    io->ctx = NULL;
     *ctx = NULL;
     /* Our write_fn: OpenEXR neither opens nor, on failure, removes the file it is told
        of; it is told of the temporary anyway, never the output it will replace. */
     exr_result_t rv = exr_start_write(ctx, t_path, EXR_WRITE_FILE_DIRECTLY, &init);
-    if (rv == EXR_ERR_SUCCESS)
+    if (rv == EXR_ERR_SUCCESS) {
+        adopt(io, *ctx);
         return SSG_OK;
+    }
     ssg_diag_file(diags, SSG_E_IO, path, "cannot write image: %s", ssg_exr_why(io, rv));
-    *ctx = NULL;
+    *ctx = NULL; /* OpenEXR frees a context it failed to start writing */
+    release(io);
     return SSG_E_IO;
+}
+
+exr_result_t ssg_exr_finish(exr_context_t *ctx, struct ssg_exr_io *io)
+{
+    /* finishing a write writes the chunk table: its errors still find io */
+    exr_result_t rv = *ctx ? exr_finish(ctx) : EXR_ERR_SUCCESS;
+    *ctx = NULL;
+    release(io);
+    return rv;
 }
 
 exr_result_t ssg_exr_define_part(exr_context_t ctx, int width, int height,

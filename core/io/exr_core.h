@@ -19,11 +19,15 @@
 
 #include "ssgraph.h"
 
-/* What a context reads from or writes to, and what went wrong (the context's user data). */
+/* What a context reads from or writes to, and what went wrong (the context's user data).
+ * Zero-initialise it; from ssg_exr_open_* to ssg_exr_finish it is on a list of live ones
+ * (its error handler's: exr_core.c), so it must outlive the context. */
 struct ssg_exr_io {
-    int fd;           /* the file; the caller opens and closes it */
-    long long size;   /* reading: the file's bytes */
-    char why[400];    /* the first error reported, "" = none */
+    int fd;                    /* the file; the caller opens and closes it */
+    long long size;            /* reading: the file's bytes */
+    char why[400];             /* the first error reported, "" = none */
+    exr_const_context_t ctx;   /* the context it serves, NULL = none (exr_core.c's) */
+    struct ssg_exr_io *next;   /* the next live one (exr_core.c's) */
 };
 
 /* Starts reading the EXR open as io->fd (io->size set); SSG_OK, or SSG_E_IMAGE with the
@@ -35,6 +39,10 @@ enum ssg_err ssg_exr_open_read(const char *path, struct ssg_exr_io *io, exr_cont
  * (named in messages); one scanline part is added by the caller. */
 enum ssg_err ssg_exr_open_write(const char *path, const char *t_path, struct ssg_exr_io *io,
                                 exr_context_t *ctx, struct ssg_diags *diags);
+
+/* Finishes *ctx (NULL: nothing to finish; a write's chunk table is written here) and takes
+ * io off the live list; *ctx is NULL after. Every context opened above ends here. */
+exr_result_t ssg_exr_finish(exr_context_t *ctx, struct ssg_exr_io *io);
 
 /* The message of a failed call: what the context reported, else OpenEXR's text of rv. */
 const char *ssg_exr_why(const struct ssg_exr_io *io, exr_result_t rv);

@@ -275,7 +275,7 @@ enum ssg_err ssg_exr_read_fd(const char *path, int fd, const char *layer,
         e = read_layer(path, ctx, &io, layer ? layer : "", out, diags);
     else
         *elsewhere = 1;
-    exr_finish(&ctx);
+    ssg_exr_finish(&ctx, &io);
     return e;
 }
 
@@ -339,7 +339,7 @@ enum ssg_err ssg_exr_meta_read_fd(const char *path, int fd, struct ssg_exr_meta 
         *meta = m;
         *found = 1;
     }
-    exr_finish(&ctx);
+    ssg_exr_finish(&ctx, &io);
     return SSG_OK;
 }
 
@@ -384,6 +384,6 @@ enum ssg_err ssg_exr_layers_fd(const char *path, int fd, struct ssg_layer_info *
         ++*count;
     }
     free(idx);
-    exr_finish(&ctx);
+    ssg_exr_finish(&ctx, &io);
     return e;
 }

@@ -69,8 +69,7 @@ static enum ssg_err read_view(const char *file, struct view *v, struct ssg_diags
 
 static void close_view(struct view *v)
 {
-    if (v->ctx)
-        exr_finish(&v->ctx);
+    ssg_exr_finish(&v->ctx, &v->io);
     if (v->fd >= 0)
         close(v->fd);
     ssg_image_destroy(&v->pixels);
@@ -241,7 +240,7 @@ static enum ssg_err write_joined(const char *path, const struct view *v, int cou
         rv = exr_write_header(ctx);
     if (!rv)
         rv = ssg_exr_write_planes(ctx, sorted, v[0].pixels->width);
-    exr_result_t done = exr_finish(&ctx);
+    exr_result_t done = ssg_exr_finish(&ctx, &io);
     rv = rv ? rv : done;
     if (rv)
         ssg_diag_file(diags, SSG_E_IO, path, "cannot write image: %s", ssg_exr_why(&io, rv));

@@ -136,7 +136,7 @@ static exr_result_t write_file(const char *path, const struct channels *ch, int 
         rv = exr_write_header(ctx);
     if (!rv)
         rv = ssg_exr_write_planes(ctx, sorted, width);
-    exr_result_t done = exr_finish(&ctx);
+    exr_result_t done = ssg_exr_finish(&ctx, &io);
     rv = rv ? rv : done;
     if (rv)
         ssg_diag_file(diags, SSG_E_IO, path, "cannot write image: %s", ssg_exr_why(&io, rv));

@@ -260,20 +260,59 @@ static void remove_stale(const char *dir)
     closedir(d);
 }
 
-/* A rename would replace a device, a FIFO or a socket at the target with a regular file
-   (`--profile-json /dev/null` used to turn /dev/null into a file), and cannot replace a
-   directory: such a target is refused, naming what it is. Text outputs that may stream
-   into a device or FIFO go through ssg_write_text_file, which writes into them. */
-static int refuse_special_target(const char *target, struct ssg_diags *diags)
+/* Why target cannot be replaced by an output, checked without opening it (stat never
+   blocks; open on a FIFO waits for a reader): "" when it can. A rename would replace a
+   device, a FIFO or a socket at the target with a regular file (`--profile-json
+   /dev/null` used to turn /dev/null into a file), and cannot replace a directory; with
+   `streams`, a character device or FIFO is taken (ssg_write_text_stream writes into it). */
+static void kind_refusal(const char *target, int streams, char *why, size_t len)
 {
     struct stat st;
-    if (stat(target, &st) != 0 || S_ISREG(st.st_mode))
-        return 0;
-    ssg_diag_file(diags, SSG_E_IO, target, "cannot write an output here: it is %s, not a "
-                  "regular file (outputs are written to a temporary and renamed into place, "
-                  "which would replace it); expected a regular file or a new name",
-                  file_kind(st.st_mode));
-    return 1;
+    why[0] = '\0';
+    if (stat(target, &st) != 0 || S_ISREG(st.st_mode) ||
+        (streams && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))))
+        return;
+    snprintf(why, len, "cannot write an output here: it is %s, not a regular file (outputs "
+             "are written to a temporary and renamed into place, which would replace it); "
+             "expected a regular file or a new name", file_kind(st.st_mode));
+}
+
+/* Why no temporary can be made beside target: its folder is missing, not a folder, or
+   not one this process may create files in; "" when it can. `what` names the content. */
+static void folder_refusal(const char *target, const char *what, char *why, size_t len)
+{
+    struct stat st;
+    char dir[PATH_MAX_LEN];
+    const char *base;
+    split_path(target, dir, sizeof dir, &base);
+    const char *folder = dir[0] ? dir : ".";
+    why[0] = '\0';
+    if (!base[0])
+        snprintf(why, len, "cannot write %s: the path names a folder", what);
+    else if (stat(folder, &st) != 0)
+        snprintf(why, len, "cannot write %s: its folder '%s': %s", what, folder,
+                 strerror(errno));
+    else if (!S_ISDIR(st.st_mode))
+        snprintf(why, len, "cannot write %s: '%s' is not a folder", what, folder);
+    else if (access(folder, W_OK | X_OK) != 0)
+        snprintf(why, len, "cannot write %s: cannot create a file in '%s': %s", what, folder,
+                 strerror(errno));
+}
+
+enum ssg_err ssg_output_check(const char *path, const char *what, int streams,
+                              struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_output_check", "path, what", 2, path, what))
+        return SSG_E_USAGE;
+    char why[PATH_MAX_LEN + 200];
+    struct stat st;
+    kind_refusal(path, streams, why, sizeof why);
+    if (!why[0] && (stat(path, &st) != 0 || S_ISREG(st.st_mode)))
+        folder_refusal(path, what, why, sizeof why); /* a stream needs no temporary */
+    if (!why[0])
+        return SSG_OK;
+    ssg_diag_file(diags, SSG_E_IO, path, "%s", why);
+    return SSG_E_IO;
 }
 
 enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *what,
@@ -289,8 +328,12 @@ enum ssg_err ssg_tmp_create(const char *target, const char *ext, const char *wha
         return SSG_E_IO;
     }
     snprintf(t->target, sizeof t->target, "%s", target);
-    if (refuse_special_target(target, diags))
+    char why[300];
+    kind_refusal(target, 0, why, sizeof why);
+    if (why[0]) {
+        ssg_diag_file(diags, SSG_E_IO, target, "%s", why);
         return SSG_E_IO;
+    }
     split_path(target, dir, sizeof dir, &base);
     remove_stale(dir);
     /* A name that exists already (planted, or left by a process with a reused pid) is
@@ -400,7 +443,8 @@ static int is_stream(const char *path)
 }
 
 /* Writes a text output straight into a stream (no temporary: a stream cannot be renamed
-   over, and a reader sees it as it comes). */
+   over, and a reader sees it as it comes). Opening a FIFO waits for its reader: only for
+   a file the user named, who then reads it. */
 static enum ssg_err write_text_stream(const char *path, const char *what,
                                       void (*fill)(FILE *f, const void *user),
                                       const void *user, struct ssg_diags *diags)
@@ -429,8 +473,6 @@ enum ssg_err ssg_write_text_file(const char *path, const char *what,
                                  void (*fill)(FILE *f, const void *user), const void *user,
                                  struct ssg_diags *diags)
 {
-    if (is_stream(path))
-        return write_text_stream(path, what, fill, user, diags);
     struct ssg_tmp t;
     if (ssg_tmp_create(path, "", what, &t, diags))
         return SSG_E_IO;
@@ -452,4 +494,13 @@ enum ssg_err ssg_write_text_file(const char *path, const char *what,
         return SSG_E_IO;
     }
     return ssg_tmp_commit(&t, 1, diags);
+}
+
+enum ssg_err ssg_write_text_stream(const char *path, const char *what,
+                                   void (*fill)(FILE *f, const void *user), const void *user,
+                                   struct ssg_diags *diags)
+{
+    if (is_stream(path))
+        return write_text_stream(path, what, fill, user, diags);
+    return ssg_write_text_file(path, what, fill, user, diags);
 }

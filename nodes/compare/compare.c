@@ -113,6 +113,11 @@ SSG_PARAMS_TABLE(params, ssg_compare_params, SSG_COMPARE_PARAMS);
 SSG_PORT_TABLE(inputs, SSG_COMPARE_IN);
 SSG_PORT_TABLE(outputs, SSG_COMPARE_OUT);
 
+/* Every name compare_cpu.c reports (tests/test_node_metrics.c holds them equal). */
+static const char *const metrics[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels", "mean",
+                                      "reference_mean", "banding", "banding_rows",
+                                      "banding_cols", "flip", NULL};
+
 const struct ssg_node_desc ssg_node_compare = {
     .name = "compare",
     .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM, FLIP and a diff "
@@ -127,6 +132,7 @@ const struct ssg_node_desc ssg_node_compare = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_compare_params),
     .consts_size = sizeof(struct ssg_compare_consts),
+    .metrics = metrics,
     .is_sink = 1,
     .check = check,
     .prepare = prepare,
