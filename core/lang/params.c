@@ -304,6 +304,32 @@ const char *ssg_param_type_name(const struct ssg_param_desc *p)
     return names[p->type];
 }
 
+/* A string as a graph file writes it: quoted, with the four escapes the lexer reads (\", \\,
+   \n, \t), so that a formatted value pasted into a file (a viewer's variant, a history) is
+   one line that reads back the same. A value cut by len is cut before an escape, never in it. */
+static void format_string(const char *s, char *buf, size_t len)
+{
+    static const char plain[] = "\"\\\n\t", coded[] = "\"\\nt";
+    size_t n = 0;
+    if (len < 3) {
+        if (len)
+            buf[0] = '\0';
+        return;
+    }
+    buf[n++] = '"';
+    for (; *s; s++) {
+        const char *esc = strchr(plain, *s);
+        size_t need = esc ? 2 : 1;
+        if (n + need + 1 >= len) /* room for the closing quote and the NUL */
+            break;
+        if (esc)
+            buf[n++] = '\\';
+        buf[n++] = esc ? coded[esc - plain] : *s;
+    }
+    buf[n++] = '"';
+    buf[n] = '\0';
+}
+
 void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *buf, size_t len)
 {
     switch (p->type) {
@@ -313,7 +339,7 @@ void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *
         snprintf(buf, len, "%s", *CFIELD(params, p, int) ? "true" : "false");
         break;
     case SSG_P_ENUM: snprintf(buf, len, "%s", p->choices[*CFIELD(params, p, int)]); break;
-    case SSG_P_STRING: snprintf(buf, len, "\"%s\"", CFIELD(params, p, char)); break;
+    case SSG_P_STRING: format_string(CFIELD(params, p, char), buf, len); break;
     case SSG_P_NAME: snprintf(buf, len, "%s", CFIELD(params, p, char)); break;
     case SSG_P_VEC3: {
         const float *f = CFIELD(params, p, float);
