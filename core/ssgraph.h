@@ -426,7 +426,9 @@ SSG_API void ssg_outputs_release(struct ssg_outputs *outputs);
 /* Runs one node alone on in-memory images. `sets` are "param=value" strings, and
  * "backend=gl" runs the node on the GL backend (outputs come back as CPU images), and
  * "frame=N" runs it as frame N of a sequence (default 0; per-frame samples, docs/time.md).
- * The frame gives size and camera; its width/height default to the first input's size. */
+ * The frame gives size and camera; its width/height default to the first input's size.
+ * Its fov must lie in [0.001, 179.999] degrees and its planes be finite with near < far
+ * (a camera's bounds), else SSG_E_VALUE; zero (or less) means the default. */
 SSG_API enum ssg_err ssg_node_run(const char *node, const struct ssg_binding *inputs,
                                   int input_count, const char *const *sets, int set_count,
                                   const struct ssg_frame *frame, struct ssg_outputs *outputs,

@@ -11,6 +11,7 @@
  *     target -2e38: it aborted inside Embree at the next run) is refused, and so are its
  *     kin (past +-1e9, a fov whose projection overflows); the graph keeps its camera and
  *     runs;
+ *   - a single node's frame has the same fov and plane bounds (fov 1e-30 ran);
  *   - frame INT_MAX runs, and runs again, without `last + 1` overflowing (UBSan), and a
  *     sequence that would pass INT_MAX is refused before it runs. */
 #include <limits.h>
@@ -146,6 +147,28 @@ static void cameras_past_float(void)
     ssg_graph_destroy(&g);
 }
 
+/* A single node's frame has the camera's bounds too: fov 1e-30 (an infinite focal length),
+   fov 180 and far at infinity are refused, fov 45 runs. */
+static void node_frames_in_range(void)
+{
+    const float fovs[] = {1e-30f, 180.0f, 45.0f};
+    for (int i = 0; i < 3; i++) {
+        struct ssg_frame f = SSG_FRAME_DEFAULTS;
+        struct ssg_outputs out = {0};
+        struct ssg_diags d = {0};
+        f.fov_y = fovs[i];
+        CHECK_EQ(ssg_node_run("halton", NULL, 0, NULL, 0, &f, &out, &d),
+                 i < 2 ? SSG_E_VALUE : SSG_OK);
+        ssg_outputs_release(&out);
+    }
+    struct ssg_frame f = SSG_FRAME_DEFAULTS;
+    struct ssg_outputs out = {0};
+    struct ssg_diags d = {0};
+    f.far_z = 1.0f / 0.0f;
+    CHECK_EQ(ssg_node_run("halton", NULL, 0, NULL, 0, &f, &out, &d), SSG_E_VALUE);
+    ssg_outputs_release(&out);
+}
+
 static void last_frame_index(void)
 {
     struct ssg_graph *g = load_ssao();
@@ -170,6 +193,7 @@ int main(void)
     file_strings_are_text();
     long_literals_read_whole();
     cameras_past_float();
+    node_frames_in_range();
     last_frame_index();
     return check_report();
 }

@@ -1,6 +1,7 @@
 /* noderun.c - one node alone on in-memory images (ssg_node_run in ssgraph.h): how users
  * and our own tests call a node without a graph file. Inputs are matched to ports by name
  * and typed by their channel count; every problem is reported by port name. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "graph/image.h"
 #include "graph/metrics.h"
 #include "lang/parse.h"
+#include "scene/scene.h"
 
 struct single {
     const struct ssg_node_desc *d;
@@ -99,6 +101,20 @@ static struct ssg_frame make_frame(const struct single *s, const struct ssg_fram
         }
     }
     return f;
+}
+
+/* A caller's frame whose projection the nodes cannot use (fov 1e-30 gives an infinite focal
+   length) is refused, with the bounds a scene's camera has (ssg_camera_fault). */
+static enum ssg_err check_frame(const struct ssg_frame *f, struct ssg_diags *diags)
+{
+    if (f->fov_y >= SSG_CAMERA_FOV_MIN && f->fov_y <= 180 - SSG_CAMERA_FOV_MIN &&
+        f->far_z > f->near_z && isfinite(f->far_z))
+        return SSG_OK;
+    ssg_diag_file(diags, SSG_E_VALUE, NULL, "the frame's fov %g must lie in [%g, %g] degrees "
+                  "and its planes be finite with 0 < near (%g) < far (%g)", (double)f->fov_y,
+                  SSG_CAMERA_FOV_MIN, 180 - SSG_CAMERA_FOV_MIN, (double)f->near_z,
+                  (double)f->far_z);
+    return SSG_E_VALUE;
 }
 
 /* "backend=cpu|gl" among the sets (as in a graph file); 1 when sets[i] was one. */
@@ -276,6 +292,8 @@ enum ssg_err ssg_node_run_desc(const struct ssg_node_desc *d, const struct ssg_b
     /* No size check here: a node with no frame-sized output (halton) needs no frame;
        the shape check rejects a frame-sized output of a frame without a size. */
     struct ssg_frame f = make_frame(&s, frame);
+    if (!e)
+        e = check_frame(&f, diags);
     if (!e)
         e = run_single(&s, params, &f, backend, outputs, diags);
     free(params);
