@@ -230,6 +230,10 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *c, const char *u
         return MHD_YES;
     if (q->too_big)
         return refuse(c, MHD_HTTP_CONTENT_TOO_LARGE, "the body is over 64 KiB", sv);
+    /* The routes read the body as a C string: a NUL would cut it there, and what follows
+       ("name=ok\0/../../evil") would go unchecked and unseen. */
+    if (q->body && memchr(q->body, '\0', q->len))
+        return refuse(c, MHD_HTTP_BAD_REQUEST, "the body holds a NUL byte", sv);
     struct view_request req = {.method = method, .path = url, .body = q->body ? q->body : "",
                                .connection = c};
     return answer_request(sv, c, &req);
