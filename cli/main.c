@@ -238,6 +238,12 @@ static int profile_refused(const struct ssg_cli_args *a, struct ssg_diags *d)
     size_t out = strlen(a->out_dir);
     while (out > 1 && a->out_dir[out - 1] == '/')
         out--;
+    size_t len = strlen(p);
+    while (len > 1 && p[len - 1] == '/')
+        len--;
+    if (len == out && !strncmp(p, a->out_dir, out)) /* a folder the run is about to make */
+        return ssg_cli_usage_error("--profile-json %s names the --out folder itself: give a "
+                                   "file in it, e.g. --profile-json OUT/profile.json", p) != 0;
     struct stat st;
     if (slash && (size_t)(slash - p) == out && !strncmp(p, a->out_dir, out) &&
         stat(a->out_dir, &st) != 0)
@@ -435,13 +441,40 @@ static int cmd_compare(const struct ssg_cli_args *a)
     return conclude(&d, e);
 }
 
+/* The first option given that bench --merge would ignore (it runs nothing: the graph, the
+   sweep, the timed node, the metric and the reference are the shards'), or NULL. A silently
+   ignored option let a misspelled --error pass. */
+static const char *merge_ignores(const struct ssg_cli_args *a)
+{
+    const struct {
+        int given;
+        const char *name;
+    } options[] = {
+        {a->sweep_count > 0, "--sweep"}, {a->shard != NULL, "--shard"},
+        {a->scene_count > 0, "--scene"}, {a->ov.lights != NULL, "--lights"},
+        {a->ov.width > 0, "--size"}, {a->ov.set_count > 0, "--set"},
+        {a->seed >= 0, "--seed"}, {a->guard >= 0, "--guard"},
+        {a->ov.backend != NULL, "--backend"}, {a->frames > 0, "--frames"},
+        {a->threads > 0, "--threads"}, {a->stereo, "--stereo"},
+        {a->time_node != NULL, "--time"}, {a->error_metric != NULL, "--error"},
+        {a->reference != NULL, "--reference"}, {a->image != NULL, "--image"},
+        {a->mask != NULL, "--mask"},
+    };
+    for (size_t i = 0; i < sizeof options / sizeof options[0]; i++)
+        if (options[i].given)
+            return options[i].name;
+    return NULL;
+}
+
 static int cmd_bench(struct ssg_cli_args *a)
 {
     if (!a->merge && a->file_count != 1)
         return ssg_cli_usage_error("%s", "bench expects one graph FILE (or --merge DIR...)");
-    if (a->merge && (a->sweep_count || a->shard))
-        return ssg_cli_usage_error("%s", "bench --merge takes the sweep from its shards' "
-                                   "bench.json: it takes no --sweep or --shard");
+    const char *ignored = a->merge ? merge_ignores(a) : NULL;
+    if (ignored)
+        return ssg_cli_usage_error("bench --merge takes the graph, sweep, timed node, metric "
+                                   "and reference from its shards' bench.json: it takes no "
+                                   "%s (only --out, --plot, --quiet and --verbose)", ignored);
     if (a->stereo && !a->ov.width)
         a->ov.width = 1080, a->ov.height = 1200;
     struct ssg_bench_request req = {

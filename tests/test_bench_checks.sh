@@ -23,6 +23,14 @@ done
 [ "$(md5sum "$TMP/a/bench.json")" = "$before" ] || fail "--merge --out A changed shard A"
 expect_exit 0 "merged 2 shards: 2 cells" $T "$BIN" bench --merge "$TMP/a" "$TMP/b" \
     --out "$TMP/merged"
+# --merge runs nothing: an option it would ignore (a misspelt --error among them) is refused,
+# and nothing is written.
+for opt in "--error c_ssao.rmsee" "--time ao" "--frames 3" "--size 8x8" "--set ao.radius=1" \
+           "--reference ref.out" "--seed 3" "--scene examples/cornell.scene" "--threads 1"; do
+    expect_exit 2 "it takes no ${opt%% *} \(only --out, --plot" \
+        $T "$BIN" bench --merge "$TMP/a" "$TMP/b" $opt --out "$TMP/ignored"
+done
+[ -e "$TMP/ignored" ] && fail "a refused --merge wrote its --out"
 
 # --error: a metric the node does not report, and a node that reports none or is none.
 expect_exit 2 "--error 'c_ssao\.rsme': node 'c_ssao' \(compare\) reports no metric 'rsme' \(expected one of: rmse, mae, bias, psnr, ssim" \
@@ -56,6 +64,10 @@ expect_exit 1 "nope/p.json: error: cannot write profile: its folder .*No such fi
     $T "$BIN" run graphs/ssao.graph --size 16x12 --out "$TMP/profiled" -q \
     --profile-json "$TMP/nope/p.json"
 [ -e "$TMP/profiled" ] && fail "a refused --profile-json let the run write $(ls "$TMP/profiled")"
+# the --out folder itself, not made yet: it would be a folder when the profile is written
+expect_exit 1 "--profile-json .*/newout/ names the --out folder itself" $T "$BIN" run \
+    graphs/ssao.graph --size 32x24 -q --out "$TMP/newout" --profile-json "$TMP/newout/"
+[ -e "$TMP/newout" ] && fail "a refused --profile-json let the run write $(ls "$TMP/newout")"
 # ... but one in an --out the run makes is fine.
 $T "$BIN" run graphs/ssao.graph --size 16x12 --out "$TMP/made/" -q \
     --profile-json "$TMP/made/p.json" && [ -s "$TMP/made/p.json" ] \

@@ -91,5 +91,5 @@ j = json.load(open(sys.argv[1] + "/oldmerged/bench.json"))
 c = [c for c in j["cells"] if c["cell"] == 3][0]
 assert c["frame_median_ms"] == c["frame_avg_ms"] and c["node_median_ms"] == c["node_ms"], c
 PY
-expect_exit 2 "it takes no --sweep or --shard" "$BIN" bench --merge --shard 0/2 "$TMP/shard0"
+expect_exit 2 "it takes no --shard" "$BIN" bench --merge --shard 0/2 "$TMP/shard0"
 finish test_bench_shard
