@@ -8,7 +8,8 @@
 # nested 100,000 deep, a PLY header without end_header and one claiming 2e9 faces are
 # refused at their line:column before Assimp sees them (no crash, no hang, no 15 GB);
 # issue 42: a NaN or infinite vertex, normal or texture coordinate is refused;
-# `check MODEL` prints the meshes, bounds, up axis and a scene that loads; a box standing
+# `check MODEL` prints the meshes, bounds, up axis and a scene that loads (a model without
+# area too: a line, a point, says so and gets a floor of size 1 or more); a box standing
 # Z-up as OBJ, FBX and 3DS gets the right up-axis advice for its reader (3DS arrives Y-up,
 # and rotate=[-90, 0, 0] would lay it on its back), and `check FILE.scene` each mesh's box
 # after its transform.
@@ -168,6 +169,26 @@ expect_exit 0 "plane\(center=\[0.5, 0, -1\], size=\[6, 0, 6\]\)" "cat" "$TMP/pas
 expect_exit 0 "largest along Y, the renderer's up" "$BIN" check "$TMP/pastedobj.scene"
 expect_exit 0 "up: \+Z, from the file's UpAxis metadata.*FBX reader: rotate=\[-90, 0, 0\] on the mesh line stands it up" \
     "$BIN" check "$TMP/tall.fbx"
+
+# --- a model without area (its triangles on a line, or all at one point; standing on end
+#     after the suggested rotate, or far from the origin) is said to have none, and the
+#     scene suggested around it still loads: the floor is sized from the largest extent,
+#     at least 1 (size=[0, 0, 0] was refused by the scene reader) ---
+printf 'v 0 0 0\nv 0 1 0\nv 0 2 0\nf 1 2 3\n' > "$TMP/line.obj"
+printf 'v 0 0 0\nv 0 0 1\nv 0 0 2\nf 1 2 3\n' > "$TMP/zline.obj"
+printf 'v 1 2 3\nv 1 2 3\nv 1 2 3\nf 1 2 3\n' > "$TMP/point.obj"
+printf 'v 3e7 0 -3e7\nv 3e7 0 -3e7\nv 3e7 0 -3e7\nf 1 2 3\n' > "$TMP/farpoint.obj"
+for m in line zline point farpoint; do
+    expect_exit 0 "no area: every triangle's corners lie on one line or at one point" \
+        "$BIN" check "$TMP/$m.obj"
+    snippet $m.obj pasted$m
+    grep -q "^plane(center=" "$TMP/pasted$m.scene" \
+        || fail "$m snippet: $(cat "$TMP/pasted$m.scene")"
+    expect_exit 0 "pasted$m.scene: ok" "$BIN" check "$TMP/pasted$m.scene"
+done
+expect_exit 0 "plane\(center=\[0, 0, 0\], size=\[6, 0, 6\]\)" "cat" "$TMP/pastedline.scene"
+expect_exit 0 "plane\(center=\[1, 2, 3\], size=\[1, 0, 1\]\)" "cat" "$TMP/pastedpoint.scene"
+"$BIN" check "$TMP/tall.obj" | grep -q "no area" && fail "check of a box said it has no area"
 
 # --- issue 42: NaN or infinity in a vertex (position, normal or texture coordinate) is
 #     refused by check MODEL, naming the mesh and vertex, and no scene is suggested; a scene

@@ -2,7 +2,8 @@
  * (core/scene/model.h, issue 28). The pre-checks: XML nested 257 deep is refused at the
  * 257th tag's line and column (256 passes; comments, CDATA, empty tags and quoted '>' open
  * nothing), and so are 257 brackets in JSON (not those inside a string); a COLLADA index
- * list holding a character no integer has, and a count beyond the file's size; a PLY header
+ * list holding a character no integer has, an index or count past INT_MAX, a count beyond
+ * the file's size, an accessor whose stride is under its <param>s; a PLY header
  * without end_header, element counts beyond the bytes that follow (ASCII and binary, both
  * byte orders), a list longer than its line or its bytes, a binary STL whose 32-bit size
  * product wraps or does not match, a 3DS chunk or array larger than its parent. The child
@@ -165,6 +166,55 @@ static void test_dae_accessors(void)
     expect_precheck(".dae", p, strlen(p), SSG_E_GLTF, "m:2:8: <p> holds a negative");
     const char *vcount = "<COLLADA>\n<vcount>3 -3</vcount></COLLADA>";
     expect_precheck(".dae", vcount, strlen(vcount), SSG_E_GLTF, "m:2:11: ");
+}
+
+/* An index or count past INT_MAX in <p>, <vcount> or <h> is refused at its place (the
+   importer's int wraps 4294967298 to 2 and 2^31 to 0: a wrong triangle, no error);
+   2147483647 is the pre-check's to pass (the importer's own bound refuses it). */
+static void test_dae_huge_indices(void)
+{
+    static const char *const huge[] = {"2147483648", "4294967295", "4294967296", "4294967298",
+                                       "+4294967298", "18446744073709551618",
+                                       "000000000000000000000000000004294967298"};
+    static const char *const lists[] = {"p", "vcount", "h"};
+    for (size_t l = 0; l < sizeof lists / sizeof lists[0]; l++)
+        for (size_t i = 0; i <= sizeof huge / sizeof huge[0]; i++) {
+            const char *n = i < sizeof huge / sizeof huge[0] ? huge[i] : "2147483647";
+            char text[256], at[128];
+            snprintf(text, sizeof text, "<COLLADA><triangles><input semantic='VERTEX'/>\n"
+                     "<%s>0 1\n %s 2</%s></triangles></COLLADA>", lists[l], n, lists[l]);
+            snprintf(at, sizeof at, "m:3:2: <%s> holds %s,", lists[l], n);
+            if (i < sizeof huge / sizeof huge[0])
+                expect_precheck(".dae", text, strlen(text), SSG_E_GLTF, at);
+            else
+                expect_precheck(".dae", text, strlen(text), SSG_OK, NULL);
+        }
+}
+
+/* An accessor whose stride is less than its <param>s (0 included) reads overlapping
+   values (stride 0: every vertex the first) and is refused at the accessor; the stride
+   a message names is the one written, not a clamped one. */
+static void test_dae_strides(void)
+{
+#define SOURCE(acc) "<COLLADA><source>\n<float_array id='f' count='9'/>\n<accessor " \
+                    "source='#f' count='3' " acc "><param name='X'/><param name='Y'/>" \
+                    "<param name='Z'/></accessor></source></COLLADA>"
+    const char *const fewer[] = {SOURCE("stride='0'"), SOURCE("stride='1'"),
+                                 SOURCE("stride='2'"), SOURCE("")}; /* 1 when not given */
+    for (size_t i = 0; i < sizeof fewer / sizeof fewer[0]; i++)
+        expect_precheck(".dae", fewer[i], strlen(fewer[i]), SSG_E_GLTF,
+                        "m:3:1: <accessor> has stride ");
+    const char *three = SOURCE("stride='3'");
+    expect_precheck(".dae", three, strlen(three), SSG_OK, NULL);
+    const char *wide = SOURCE("stride='5000'");
+    expect_precheck(".dae", wide, strlen(wide), SSG_E_GLTF,
+                    "m:3:1: <accessor> reads past the end of its array 'f': offset 0 + "
+                    "(count 3 - 1) x stride 5000 + 5000 values");
+    const char *huge = SOURCE("stride='99999999999999999999999'");
+    expect_precheck(".dae", huge, strlen(huge), SSG_E_GLTF,
+                    "m:3:1: <accessor> reads past the end of its array 'f': offset 0 + "
+                    "(count 3 - 1) x stride 99999999999999999999999 + ");
+#undef SOURCE
 }
 
 static void test_braces(void)
@@ -442,6 +492,8 @@ int main(void)
     test_xml();
     test_dae_arrays();
     test_dae_accessors();
+    test_dae_huge_indices();
+    test_dae_strides();
     test_braces();
     test_ply();
     test_stl();

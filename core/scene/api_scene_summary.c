@@ -283,6 +283,13 @@ static void print_snippet(FILE *out, const char *path, const char *rotate, float
         sscanf(rotate, "[%f, %f, %f]", &rot[0], &rot[1], &rot[2]);
     place_box(lo, hi, rot, scale > 0.0f ? scale : 1.0f, plo, phi);
     float width = 3.0f * fmaxf(phi[0] - plo[0], phi[2] - plo[2]);
+    if (width == 0.0f) { /* a point or an upright line (no area): three times its height, at
+                            least 1 and a thousandth of its distance (a floor float can place;
+                            a plane of size 0 is refused) */
+        float far = fmaxf(fmaxf(fabsf(plo[0]), fabsf(phi[0])),
+                          fmaxf(fabsf(plo[2]), fabsf(phi[2])));
+        width = fmaxf(3.0f * (phi[1] - plo[1]), fmaxf(1.0f, 1e-3f * far));
+    }
     if (!isfinite(width) || !isfinite(plo[0] + phi[0]) || !isfinite(plo[2] + phi[2])) {
         fprintf(out, "  no scene to suggest: the model's box (%g wide) overflows float once "
                 "placed (scale it down on its mesh line)\n", (double)width);
@@ -302,6 +309,30 @@ static void print_snippet(FILE *out, const char *path, const char *rotate, float
                  "    environment(color=[0.6, 0.7, 0.9], intensity=0.5)\n"
                  "  and render it: ssgraph run graphs/ssdo.graph --scene %.*s.scene\n",
             (int)(dot ? dot - name : (long)strlen(name)), name);
+}
+
+/* 1 when a triangle of the model has area (its edges' cross product, in double, is not 0). */
+static int model_has_area(const struct ssg_gltf *g)
+{
+    for (int m = 0; m < g->mesh_count; m++) {
+        const struct ssg_mesh *mesh = &g->meshes[m];
+        for (size_t t = 0; t < (size_t)mesh->triangle_count; t++) {
+            const uint32_t *k = &mesh->indices[3 * t];
+            if (k[0] >= (uint32_t)mesh->vertex_count || k[1] >= (uint32_t)mesh->vertex_count ||
+                k[2] >= (uint32_t)mesh->vertex_count)
+                continue;
+            const float *a = &mesh->positions[3 * (size_t)k[0]],
+                        *b = &mesh->positions[3 * (size_t)k[1]],
+                        *c = &mesh->positions[3 * (size_t)k[2]];
+            double u[3], v[3];
+            for (int i = 0; i < 3; i++)
+                u[i] = (double)b[i] - a[i], v[i] = (double)c[i] - a[i];
+            if (u[1] * v[2] != u[2] * v[1] || u[2] * v[0] != u[0] * v[2] ||
+                u[0] * v[1] != u[1] * v[0])
+                return 1;
+        }
+    }
+    return 0;
 }
 
 /* The scale hint of a scene holding only this model (ssg_scene_scale_hint's rule). */
@@ -367,6 +398,9 @@ enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *di
                 "graphs/ssdo.graph: a model in %s? scale=%g fits it\n", (double)diagonal,
                 (double)(diagonal / DEFAULT_AO_RADIUS),
                 (double)DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
+    if (!model_has_area(g))
+        fprintf(out, "  no area: every triangle's corners lie on one line or at one point, so "
+                "the model renders as nothing\n");
     print_snippet(out, path, rotate, scale, lo, hi);
     ssg_gltf_destroy(&g);
     return SSG_OK;

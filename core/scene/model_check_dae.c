@@ -15,8 +15,9 @@
  * attribute. A fifth (issue 42): an <accessor> is trusted to stay inside the array its
  * source names, so count x stride + offset (and its <param>s) must fit in that array's
  * count, and its numbers be plain decimals (the XML reader takes "-1" and "0x7fffffff"
- * too); and <p>, <vcount> and <h> hold no negative number (an index or a count: the
- * reader would take -1 for 0, or for 4 billion). */
+ * too), and its stride be no less than its <param>s; and <p>, <vcount> and <h> hold no
+ * negative number and none past INT_MAX (an index or a count: the reader's int would take
+ * -1 for 0, or for 4 billion, and 4294967298 for 2). */
 #include <ctype.h>
 #include <limits.h>
 #include <stdint.h>
@@ -195,13 +196,39 @@ static enum ssg_err check_count(const struct ssg_check *s, size_t at, size_t end
     return e;
 }
 
-/* The text after an index list's tag, up to the next tag: integers only, and no negative
-   one where it is an index or a count. */
+/* The number at i of an index or count list ('+' and digits): refused when it does not
+   fit a non-negative int (the importer's strtol10 wraps 4294967298 to 2 and 2^31 to 0);
+   *last: its last byte. */
+static enum ssg_err check_index(const struct ssg_check *s, size_t at, size_t n, size_t i,
+                                size_t *last)
+{
+    unsigned long long value = 0;
+    size_t j = i + (s->data[i] == '+');
+    for (; j < s->len && isdigit((unsigned char)s->data[j]); j++)
+        value = value > INT_MAX ? value : value * 10 + (unsigned)(s->data[j] - '0');
+    *last = j - 1;
+    if (value <= INT_MAX)
+        return SSG_OK;
+    int quoted = shown(s, i, j - i);
+    return ssg_check_refuse_at(s, i, "<%.*s> holds %.*s%s, more than an index or a count can "
+                               "be (%d; the importer would wrap it to a small one)", (int)n,
+                               s->data + at + 1, quoted, s->data + i,
+                               (size_t)quoted < j - i ? "..." : "", INT_MAX);
+}
+
+/* The text after an index list's tag, up to the next tag: integers only, and where it is
+   an index or a count, none negative or past INT_MAX. */
 static enum ssg_err check_indices(const struct ssg_check *s, size_t at, size_t end, size_t n)
 {
     int is_unsigned = name_in(s, at, n, UNSIGNED_LISTS);
     for (size_t i = end; i < s->len && s->data[i] != '<'; i++) {
         char c = s->data[i];
+        if (is_unsigned && (c == '+' || isdigit((unsigned char)c))) {
+            enum ssg_err e = check_index(s, at, n, i, &i);
+            if (e)
+                return e;
+            continue;
+        }
         if (c == '-' && is_unsigned)
             return ssg_check_refuse_at(s, i, "<%.*s> holds a negative number (indices and "
                                        "counts start at 0; the importer would take -1 for "
@@ -314,9 +341,29 @@ static unsigned long long count_params(const struct ssg_check *s, size_t i)
     }
 }
 
+/* The tag's attribute `name` as written, its white space trimmed (a decimal number() has
+   passed, so printable), at most 40 bytes; fallback when it has none. */
+static const char *written(const struct ssg_check *s, size_t at, size_t end, const char *name,
+                           const char *fallback, char out[48])
+{
+    size_t v, len;
+    if (!attribute(s, at, end, name, &v, &len))
+        return fallback;
+    for (; len && isspace((unsigned char)s->data[v]); v++)
+        len--;
+    while (len && isspace((unsigned char)s->data[v + len - 1]))
+        len--;
+    int quoted = shown(s, v, len);
+    snprintf(out, 48, "%.*s%s", quoted, s->data + v, (size_t)quoted < len ? "..." : "");
+    return out;
+}
+
 /* Pass 1: an <accessor> reads values offset + k x stride + j (k < count, j < its <param>s
    and at least j = 0) of the array its source="#id" names, without a bound: the last of
-   them must lie inside that array. A source naming no array is the importer's to refuse. */
+   them must lie inside that array. A source naming no array is the importer's to refuse.
+   Its stride may not be less than its <param>s, nor 0 (its elements would overlap: stride
+   0 reads the first values for every one). Messages print the numbers as written (the
+   values read stop at the file's size). */
 static enum ssg_err check_accessor(const struct ssg_check *s, const struct ssg_dae_scan *scan,
                                    size_t at, size_t end, int closed)
 {
@@ -335,16 +382,27 @@ static enum ssg_err check_accessor(const struct ssg_check *s, const struct ssg_d
         return SSG_OK;
     unsigned long long params = closed ? 0 : count_params(s, end);
     unsigned long long last = params > stride ? params : stride > 0 ? stride : 1;
+    char stride_text[48], offset_text[48], count_text[48], last_text[48];
+    const char *stride_is = written(s, at, end, "stride", "1", stride_text);
     /* offset + (count - 1) x stride + last <= the array's count, without a product that
        could wrap */
     unsigned long long room = a->count >= offset + last ? a->count - offset - last : 0;
     if (a->count >= offset + last && (stride == 0 || count - 1 <= room / stride))
-        return SSG_OK;
+        return stride >= params && stride > 0
+                   ? SSG_OK
+                   : ssg_check_refuse_at(s, at, "<accessor> has stride %s but %llu <param>s "
+                                         "(its elements would overlap: the importer would "
+                                         "read the same values for two of them)", stride_is,
+                                         params);
+    snprintf(last_text, sizeof last_text, "%llu", params);
     return ssg_check_refuse_at(s, at, "<accessor> reads past the end of its array '%.*s': "
-                               "offset %llu + (count %llu - 1) x stride %llu + %llu values, "
-                               "but the array holds %llu (the importer would read beyond "
-                               "it)", shown(s, ref + 1, ref_len - 1), s->data + ref + 1,
-                               offset, count, stride, last, a->count);
+                               "offset %s + (count %s - 1) x stride %s + %s values, but the "
+                               "array holds %llu (the importer would read beyond it)",
+                               shown(s, ref + 1, ref_len - 1), s->data + ref + 1,
+                               written(s, at, end, "offset", "0", offset_text),
+                               written(s, at, end, "count", "0", count_text), stride_is,
+                               params > stride ? last_text : stride > 0 ? stride_is : "1",
+                               a->count);
 }
 
 enum ssg_err ssg_check_dae_tag(const struct ssg_check *s, struct ssg_dae_scan *scan, size_t at,
