@@ -14,7 +14,6 @@
  * printed by report.c; each file written is named on a `wrote PATH` line (not with
  * --quiet).
  * Exit status: 0 success, 1 invalid input or failed run, 2 bad command line. */
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +22,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "check_kind.h"
 #include "graph_info.h"
 #include "layers.h"
 #include "view/view.h"
@@ -131,45 +131,6 @@ static int cmd_stereo(struct ssg_cli_args a)
     return conclude(&d, e);
 }
 
-/* 1 when `check` should take path for a model file: an extension the model reader knows
-   (ssg_model_supported), and not .scene or .graph. */
-static int is_model(const char *path)
-{
-    size_t len = strlen(path);
-    char why[512];
-    if ((len > 6 && !strcmp(path + len - 6, ".scene")) ||
-        (len > 6 && !strcmp(path + len - 6, ".graph")))
-        return 0;
-    return ssg_model_supported(path, why, sizeof why);
-}
-
-/* What a file given to `check` is, when it is none of what check takes (a graph is text,
-   and so is a scene; a model is known by its extension first): "a PNG image", "a binary
-   file"; NULL for text, or for what cannot be read (the graph's load says why). Only a
-   regular file is read (a FIFO's open does not wait: O_NONBLOCK). */
-static const char *not_checkable(const char *path)
-{
-    static const struct {
-        const char *magic;
-        size_t len;
-        const char *kind;
-    } images[] = {{"\x89PNG\r\n\x1a\n", 8, "a PNG image"}, {"v/1\x01", 4, "an OpenEXR image"},
-                  {"\xff\xd8\xff", 3, "a JPEG image"}, {"#?RADIANCE", 10, "a Radiance HDR image"},
-                  {"#?RGBE", 6, "a Radiance HDR image"}, {"II*\0", 4, "a TIFF image"},
-                  {"MM\0*", 4, "a TIFF image"}, {"GIF8", 4, "a GIF image"}};
-    char head[4096];
-    struct stat st;
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0)
-        return NULL;
-    ssize_t n = !fstat(fd, &st) && S_ISREG(st.st_mode) ? pread(fd, head, sizeof head, 0) : -1;
-    close(fd);
-    for (size_t i = 0; i < sizeof images / sizeof images[0]; i++)
-        if (n >= (ssize_t)images[i].len && !memcmp(head, images[i].magic, images[i].len))
-            return images[i].kind;
-    return n > 0 && memchr(head, 0, (size_t)n) ? "a binary file (it holds NUL bytes)" : NULL;
-}
-
 static int cmd_check(const struct ssg_cli_args *a)
 {
     struct ssg_diags d = {0};
@@ -178,9 +139,9 @@ static int cmd_check(const struct ssg_cli_args *a)
     int is_scene = len > 6 && !strcmp(file + len - 6, ".scene");
     if (is_scene) /* the scene's bounds, triangles, camera and lights too */
         return conclude(&d, ssg_scene_summary(file, stdout, &d));
-    if (is_model(file)) /* its meshes, up axis and a scene to place it in */
+    if (ssg_cli_is_model(file)) /* its meshes, up axis and a scene to place it in */
         return conclude(&d, ssg_model_summary(file, stdout, &d));
-    const char *kind = not_checkable(file);
+    const char *kind = ssg_cli_not_checkable(file);
     if (kind) {
         fprintf(stderr, "%s: error: %s, not a graph, a scene or a model: `ssgraph check` "
                 "takes a graph file (text, such as graphs/ssao.graph), a .scene file or a "
