@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include "ssgraph.h"
-#include "ssgraph_tools.h"
 
 int ssg_cli_is_model(const char *path)
 {
