@@ -38,5 +38,5 @@ done
 expect_code 200 -H "$H" -d "frame=0" "$B/api/frame"
 grep -q "runtime error" "$TMP/view.log" && fail "a sanitizer report: $(grep -m3 "runtime error" "$TMP/view.log")"
 
-view_stop_within 2000 TERM
+view_stop_within 10000 TERM
 finish test_view_hostile

@@ -152,5 +152,5 @@ gen=$(client wait_gen "$gen" 30)
 client state | grep -q '"error": null' || fail "the fixed graph still shows an error"
 
 # --- SIGTERM: a clean end
-view_stop_within 2000 TERM
+view_stop_within 10000 TERM
 finish test_view_http

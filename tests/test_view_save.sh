@@ -118,5 +118,5 @@ expect_code 400 -H "$H" --data-binary $'ref.max_distance=0.3\ninclude "/etc/pass
 code -H "$H" -d "name=nl" "$B/api/save" >/dev/null
 grep -q '/etc/passwd' "$D/nl.graph" 2>/dev/null && fail "a value's newline became a line: $(cat "$D/nl.graph")"
 
-view_stop_within 2000 TERM
+view_stop_within 10000 TERM
 finish test_view_save

@@ -41,7 +41,8 @@ expect_code() {
 }
 
 # view_stop_within MS SIGNAL: sends SIGNAL and checks that the server ends within MS
-# milliseconds with status 0; sets stop_ms to the milliseconds it took.
+# milliseconds with status 0; sets stop_ms to the milliseconds it took. MS tells an end
+# from none (callers give 10 s: a busy machine must not fail it); the time is printed.
 view_stop_within() {
     local limit=$1 sig=$2 t0 took rc
     t0=$(date +%s%N)
