@@ -29,7 +29,7 @@ G=$D/'a"b.graph'
 common=(--scene examples/cornell.scene --size 48x27 --seed 7 --threads 2)
 view_start "$TMP/view.log" "$G" "${common[@]}" --set ref.rays=8 --out "$TMP/out" || {
     fail "no URL printed"; finish test_view_save; }
-post_save() { expect_code "$1" --max-time 5 -H "$H" -d "name=$2" "$B/api/save"; }
+post_save() { expect_code "$1" --max-time 20 -H "$H" -d "name=$2" "$B/api/save"; }
 
 # --- the variant carries the command line and runs without it, from elsewhere
 expect_code 200 -H "$H" -d "ref.max_distance=0.4" "$B/api/set"
@@ -64,7 +64,7 @@ done
 [ -L "$D/dangling.graph" ] && [ ! -e "$TMP/nowhere" ] || fail "the dangling link was written through or replaced"
 chmod 600 "$D/locked.graph"
 [ "$(cat "$D/locked.graph")" = keep ] || fail "the mode-000 file was overwritten"
-expect_code 200 --max-time 2 -H "$H" "$B/api/state" # the lock is free
+expect_code 200 --max-time 20 -H "$H" "$B/api/state" # the lock is free
 ls "$D" | grep -q 'tmp' && fail "a temporary was left: $(ls "$D")"
 
 # --- every character of a name is checked
@@ -74,9 +74,9 @@ done
 # a NUL in a body would cut it where the routes read it as text: refused whole, so neither the
 # name after it nor a set line after it goes unchecked
 printf 'name=ok\0/../../evil' > "$TMP/nul_name"
-expect_code 400 --max-time 5 -H "$H" --data-binary @"$TMP/nul_name" "$B/api/save"
+expect_code 400 --max-time 20 -H "$H" --data-binary @"$TMP/nul_name" "$B/api/save"
 printf 'ref.max_distance=0.35\0\ninclude "/etc/passwd"' > "$TMP/nul_set"
-expect_code 400 --max-time 5 -H "$H" --data-binary @"$TMP/nul_set" "$B/api/set"
+expect_code 400 --max-time 20 -H "$H" --data-binary @"$TMP/nul_set" "$B/api/set"
 [ ! -e "$D/ok.graph" ] || fail "a body cut at its NUL saved ok.graph"
 [ ! -e "$TMP/evil.graph" ] && [ ! -e "$D/evil.graph" ] && [ ! -e "$D/evil..graph" ] ||
     fail "a variant was written under a refused name: $(ls "$TMP" "$D")"
