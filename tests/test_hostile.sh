@@ -224,5 +224,11 @@ include "/etc/passwd"'
 [ -e "$TMP/oneline" ] && fail "a refused --set wrote $(ls -A "$TMP/oneline")"
 expect_exit 1 "<command line --set>:1:3: error: a tab \(0x09\)" \
     $T "$BIN" check graphs/ssao.graph --set "ao$(printf '\t').radius=0.3"
+# ... and a string's escaped newline, refused as a file name, is not echoed raw (it split
+# the message over two lines)
+out=$($T "$BIN" check graphs/ssao.graph --set 'out.name="a\nb"' 2>&1)
+echo "$out" | grep -q "control character (0x0a at byte 1)" ||
+    fail "an escaped newline in a name: $out"
+[ "$(echo "$out" | wc -l)" -eq 1 ] || fail "the message about a newline in a name spans lines: $out"
 
 finish test_hostile

@@ -16,6 +16,12 @@ int ssg_write_name_ok(const char *name, char *why, size_t why_len)
 {
     const char *problem = NULL;
     size_t len = strlen(name);
+    for (const unsigned char *c = (const unsigned char *)name; *c; c++)
+        if (*c < 0x20 || *c == 0x7f) { /* not echoed: a newline would split the message */
+            snprintf(why, why_len, "name is not a plain file name: it contains a control "
+                     "character (0x%02x at byte %d)", *c, (int)(c - (const unsigned char *)name));
+            return 0;
+        }
     if (len == 0)
         problem = "it is empty";
     else if (len > 200)
@@ -26,9 +32,6 @@ int ssg_write_name_ok(const char *name, char *why, size_t why_len)
         problem = "it contains '..'";
     else if (name[0] == '.')
         problem = "it starts with '.' (hidden names are kept for temporary files)";
-    for (const unsigned char *c = (const unsigned char *)name; !problem && *c; c++)
-        if (*c < 0x20 || *c == 0x7f)
-            problem = "it contains a control character";
     if (problem)
         snprintf(why, why_len, "name '%s' is not a plain file name: %s", name, problem);
     return problem == NULL;
