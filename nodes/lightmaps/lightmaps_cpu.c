@@ -3,7 +3,7 @@
  * Two passes. 1: every vertex of the scene onto every face, snapped to 1/SUB texel (the
  * fixed point GPUs use), in parallel over faces. 2: in parallel over strips of STRIP rows
  * of every face (so one directional light's single face still keeps every thread busy),
- * every triangle is rasterised into the strip as shadowmaps_cpu.c does (integer edge
+ * every triangle is rasterised into the strip by nodes/common/raster.h (integer edge
  * functions with an inclusive test: two triangles sharing an edge both cover a centre on
  * it, no cracks; both faces count; triangles without a texel centre in their box dropped
  * a block at a time in vector code), keeping per texel the nearest depth and the
@@ -24,11 +24,12 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "common/raster.h"
 #include "common/surface.h"
 #include "scene/scene.h"
 #include "lightmaps.h"
 
-enum { SUB = 256, STRIP = 16, BLOCK = 256, MAX_POLY = 9 };
+enum { SUB = SSG_RASTER_SUB, STRIP = 16, BLOCK = 256, MAX_POLY = 9 };
 #define GUARD 4.0f /* |a|, |b| of a cube face's fast-path vertex: texels in [-1.5 R, 2.5 R] */
 
 struct job {
@@ -94,33 +95,6 @@ static void project_faces(void *user, int f0, int f1)
         project_face(user, f);
 }
 
-static int64_t floor_div(int64_t n, int64_t d) /* d > 0 */
-{
-    return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
-/* The texel index of the first centre at or right of fixed-point coordinate c. */
-static int64_t first_centre(int64_t c)
-{
-    return -floor_div(SUB / 2 - c, SUB);
-}
-
-/* The span [*x0, *x1] of centres of a row on the inner side of an edge whose function is
-   a X + r at centre X. 0 when no centre of the row is (shadowmaps_cpu.c). */
-static int clip_span(int64_t a, int64_t r, int64_t *x0, int64_t *x1)
-{
-    if (a > 0) {
-        int64_t from = -floor_div(r, a);
-        *x0 = from > *x0 ? from : *x0;
-    } else if (a < 0) {
-        int64_t to = floor_div(r, -a);
-        *x1 = to < *x1 ? to : *x1;
-    } else if (r < 0) {
-        return 0;
-    }
-    return *x0 <= *x1;
-}
-
 /* A triangle's depth on the texel rays: z = (d0 - ka a - kb b) / (kz + qa a + qb b) with
    (a, b) the centre's face coordinates, kept in [lo, hi]. */
 struct plane {
@@ -155,36 +129,18 @@ struct strip {
     int res, y0, y1;
 };
 
-/* Every centre of the strip inside the snapped triangle (ax, ay), ... keeps the nearer of
+/* Every centre of the strip inside the snapped triangle (x[k], y[k]) keeps the nearer of
    its depth and the plane's, and the triangle's number id when nearer. */
 static void fill(const struct strip *s, const int64_t x[3], const int64_t y[3],
                  const struct plane *pl, int32_t id)
 {
-    int64_t lox = x[0] < x[1] ? x[0] : x[1], hix = x[0] > x[1] ? x[0] : x[1];
-    int64_t loy = y[0] < y[1] ? y[0] : y[1], hiy = y[0] > y[1] ? y[0] : y[1];
-    lox = x[2] < lox ? x[2] : lox, hix = x[2] > hix ? x[2] : hix;
-    loy = y[2] < loy ? y[2] : loy, hiy = y[2] > hiy ? y[2] : hiy;
-    int64_t X0 = first_centre(lox), X1 = first_centre(hix + 1) - 1;
-    int64_t Y0 = first_centre(loy), Y1 = first_centre(hiy + 1) - 1;
-    X0 = X0 > 0 ? X0 : 0, Y0 = Y0 > s->y0 ? Y0 : s->y0;
-    X1 = X1 < s->res - 1 ? X1 : s->res - 1, Y1 = Y1 < s->y1 - 1 ? Y1 : s->y1 - 1;
-    int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-    if (X0 > X1 || Y0 > Y1 || area == 0)
+    struct ssg_raster_tri t;
+    if (!ssg_raster_setup(x, y, s->res, s->y0, s->y1, &t))
         return;
-    int o[3] = {0, area > 0 ? 1 : 2, area > 0 ? 2 : 1}; /* counter-clockwise */
-    int64_t A[3], B[3], C[3];
-    for (int k = 0; k < 3; k++) {
-        int a = o[(k + 1) % 3], e = o[(k + 2) % 3];
-        A[k] = -(y[e] - y[a]), B[k] = x[e] - x[a];
-        C[k] = -(A[k] * x[a] + B[k] * y[a]);
-    }
     const double scale = 2.0 / s->res;
-    for (int64_t Y = Y0; Y <= Y1; Y++) {
-        int64_t py = Y * SUB + SUB / 2, x0 = X0, x1 = X1;
-        int inside = 1;
-        for (int k = 0; k < 3 && inside; k++)
-            inside = clip_span(A[k] * SUB, A[k] * (SUB / 2) + B[k] * py + C[k], &x0, &x1);
-        if (!inside)
+    for (int64_t Y = t.y0; Y <= t.y1; Y++) {
+        int64_t x0, x1;
+        if (!ssg_raster_span(&t, Y, &x0, &x1))
             continue;
         double b = ((double)Y + 0.5) * scale - 1.0;
         double num = pl->d0 - pl->kb * b, den = pl->kz + pl->qb * b;
@@ -254,7 +210,7 @@ static void fill_clipped(const struct strip *s, const double q[3][3], double nea
 }
 
 /* The triangles t0..t0+count-1 of a mesh that may cover a centre of the strip (or need the
-   slow path), into list; returns how many (shadowmaps_cpu.c's with_centres). */
+   slow path), into list; returns how many (raster.h: shadowmaps_cpu.c does the same). */
 static inline __attribute__((always_inline)) int
 candidates(const uint32_t *restrict idx, int t0, int count, const int32_t *restrict x,
            const int32_t *restrict y, const uint8_t *restrict ok, int res, int y0, int y1,
@@ -263,18 +219,10 @@ candidates(const uint32_t *restrict idx, int t0, int count, const int32_t *restr
     int32_t keep[BLOCK];
     for (int t = 0; t < count; t++) {
         uint32_t i = idx[3 * (t0 + t)], k = idx[3 * (t0 + t) + 1], l = idx[3 * (t0 + t) + 2];
-        int32_t xi = x[i], xk = x[k], xl = x[l], yi = y[i], yk = y[k], yl = y[l];
-        int32_t lox = xi < xk ? xi : xk, hix = xi > xk ? xi : xk;
-        int32_t loy = yi < yk ? yi : yk, hiy = yi > yk ? yi : yk;
-        lox = xl < lox ? xl : lox, hix = xl > hix ? xl : hix;
-        loy = yl < loy ? yl : loy, hiy = yl > hiy ? yl : hiy;
-        int32_t X0 = (lox + SUB / 2 - 1) >> 8, X1 = ((hix + SUB / 2) >> 8) - 1;
-        int32_t Y0 = (loy + SUB / 2 - 1) >> 8, Y1 = ((hiy + SUB / 2) >> 8) - 1;
-        X0 = X0 > 0 ? X0 : 0, Y0 = Y0 > y0 ? Y0 : y0;
-        X1 = X1 < res - 1 ? X1 : res - 1, Y1 = Y1 < y1 - 1 ? Y1 : y1 - 1;
         /* fast: no vertex outside a clip plane; out: all outside one (dropped) */
         int32_t fast = (ok[i] | ok[k] | ok[l]) == 0, out = (ok[i] & ok[k] & ok[l]) != 0;
-        keep[t] = (fast & (X0 <= X1) & (Y0 <= Y1)) | ((fast | out) ^ 1);
+        int32_t box = ssg_raster_box_has_centre(x[i], x[k], x[l], y[i], y[k], y[l], res, y0, y1);
+        keep[t] = (fast & box) | ((fast | out) ^ 1);
     }
     int n = 0;
     for (int t = 0; t < count; t++) {
@@ -283,7 +231,6 @@ candidates(const uint32_t *restrict idx, int t0, int count, const int32_t *restr
     }
     return n;
 }
-_Static_assert(SUB == 1 << 8, "candidates divides by SUB with shifts");
 
 /* One triangle into the strip: its depth plane, then the fast or the slow path. */
 static void draw_triangle(const struct job *j, const struct strip *s, int fi, int mi, int t,

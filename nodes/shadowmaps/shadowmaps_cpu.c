@@ -10,22 +10,24 @@
  * fills its rows as spans. Same errors against reference_gi on 11 scenes x 2 probes.
  *
  * Exactness: vertices are snapped to 1/256 texel (the fixed point GPUs use) and coverage
- * is decided by integer edge functions, so two triangles sharing an edge cover a centre
- * on it both (the test is inclusive and the shared edge's function is the exact negation):
- * no cracks. Both faces count. Depth is affine over an orthographic map: a centre's depth
- * comes from the plane through the three unsnapped vertices, in double, kept within
- * their depths (snapping moves a vertex up to 1/512 texel, which under a grazing light
- * would move depths by 20 times that). Each map is one band's alone and a texel keeps the
- * minimum, so the maps do not depend on the thread count or the triangle order. */
+ * is decided by integer edge functions (nodes/common/raster.h, shared with lightmaps_cpu.c),
+ * so two triangles sharing an edge cover a centre on it both (the test is inclusive and the
+ * shared edge's function is the exact negation): no cracks. Both faces count. Depth is
+ * affine over an orthographic map: a centre's depth comes from the plane through the three
+ * unsnapped vertices, in double, kept within their depths (snapping moves a vertex up to
+ * 1/512 texel, which under a grazing light would move depths by 20 times that). Each map
+ * is one band's alone and a texel keeps the minimum, so the maps do not depend on the
+ * thread count or the triangle order. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "common/raster.h"
 #include "scene/scene.h"
 #include "shadowmaps.h"
 
-enum { SUB = 256, MAX_BANDS = 8, BLOCK = 256 };
+enum { SUB = SSG_RASTER_SUB, MAX_BANDS = 8, BLOCK = 256 };
 
 struct job {
     const struct ssg_scene *scene;
@@ -70,33 +72,6 @@ static void to_map(const struct ssg_shadow_frame *f, int res, const struct ssg_m
     }
 }
 
-static int64_t floor_div(int64_t n, int64_t d) /* d > 0 */
-{
-    return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
-/* The texel index of the first centre at or right of fixed-point coordinate c. */
-static int64_t first_centre(int64_t c)
-{
-    return -floor_div(SUB / 2 - c, SUB);
-}
-
-/* The span [*x0, *x1] of centres of a row on the inner side of one edge whose function is
-   a X + r at centre X (a, r in 1/SUB^2). 0 when no centre of the row is. */
-static int clip_span(int64_t a, int64_t r, int64_t *x0, int64_t *x1)
-{
-    if (a > 0) { /* a X + r >= 0 from X = ceil(-r / a) on */
-        int64_t from = -floor_div(r, a);
-        *x0 = from > *x0 ? from : *x0;
-    } else if (a < 0) { /* up to floor(r / -a) */
-        int64_t to = floor_div(r, -a);
-        *x1 = to < *x1 ? to : *x1;
-    } else if (r < 0) {
-        return 0;
-    }
-    return *x0 <= *x1;
-}
-
 struct vertex {
     int64_t x, y;     /* snapped, 1/SUB texels: coverage */
     double fx, fy, d; /* unsnapped, texels, and depth: the depth plane */
@@ -128,40 +103,17 @@ static int depth_plane(const struct vertex *a, const struct vertex *b, const str
 static inline __attribute__((always_inline)) void
 triangle(float *map, int res, struct vertex a, struct vertex b, struct vertex c)
 {
-    int64_t lox = a.x < b.x ? a.x : b.x, hix = a.x > b.x ? a.x : b.x;
-    int64_t loy = a.y < b.y ? a.y : b.y, hiy = a.y > b.y ? a.y : b.y;
-    lox = c.x < lox ? c.x : lox, hix = c.x > hix ? c.x : hix;
-    loy = c.y < loy ? c.y : loy, hiy = c.y > hiy ? c.y : hiy;
-    int64_t X0 = first_centre(lox), X1 = first_centre(hix + 1) - 1;
-    int64_t Y0 = first_centre(loy), Y1 = first_centre(hiy + 1) - 1;
-    X0 = X0 > 0 ? X0 : 0, Y0 = Y0 > 0 ? Y0 : 0;
-    X1 = X1 < res - 1 ? X1 : res - 1, Y1 = Y1 < res - 1 ? Y1 : res - 1;
-    if (X0 > X1 || Y0 > Y1)
-        return; /* no centre in the box: most triangles of a fine mesh */
-    int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if (area == 0)
-        return; /* edge-on to the light */
-    if (area < 0) {
-        struct vertex t = b;
-        b = c, c = t, area = -area;
-    }
-    /* Edge k (opposite vertex k) at point p: A_k p.x + B_k p.y + C_k, >= 0 inside. */
+    int64_t x[3] = {a.x, b.x, c.x}, y[3] = {a.y, b.y, c.y};
+    struct ssg_raster_tri t;
+    if (!ssg_raster_setup(x, y, res, 0, res, &t))
+        return; /* no centre in the box (most triangles of a fine mesh), or edge-on */
     const struct vertex *v[3] = {&a, &b, &c};
-    int64_t A[3], B[3], C[3];
-    for (int k = 0; k < 3; k++) {
-        const struct vertex *s = v[(k + 1) % 3], *e = v[(k + 2) % 3];
-        A[k] = -(e->y - s->y), B[k] = e->x - s->x;
-        C[k] = -(A[k] * s->x + B[k] * s->y);
-    }
     struct plane pl;
-    if (!depth_plane(&a, &b, &c, &pl))
+    if (!depth_plane(v[t.order[0]], v[t.order[1]], v[t.order[2]], &pl))
         return;
-    for (int64_t Y = Y0; Y <= Y1; Y++) {
-        int64_t py = Y * SUB + SUB / 2, x0 = X0, x1 = X1;
-        int inside = 1;
-        for (int k = 0; k < 3 && inside; k++)
-            inside = clip_span(A[k] * SUB, A[k] * (SUB / 2) + B[k] * py + C[k], &x0, &x1);
-        if (!inside)
+    for (int64_t Y = t.y0; Y <= t.y1; Y++) {
+        int64_t x0, x1;
+        if (!ssg_raster_span(&t, Y, &x0, &x1))
             continue;
         double zy = pl.z + (double)Y * pl.dy;
         float *row = map + Y * res;
@@ -191,17 +143,7 @@ with_centres(const uint32_t *restrict idx, int t0, int count, const struct verts
     int32_t keep[BLOCK];
     for (int t = 0; t < count; t++) {
         uint32_t i = idx[3 * (t0 + t)], k = idx[3 * (t0 + t) + 1], l = idx[3 * (t0 + t) + 2];
-        int32_t xi = x[i], xk = x[k], xl = x[l], yi = y[i], yk = y[k], yl = y[l];
-        int32_t lox = xi < xk ? xi : xk, hix = xi > xk ? xi : xk;
-        int32_t loy = yi < yk ? yi : yk, hiy = yi > yk ? yi : yk;
-        lox = xl < lox ? xl : lox, hix = xl > hix ? xl : hix;
-        loy = yl < loy ? yl : loy, hiy = yl > hiy ? yl : hiy;
-        /* first centre at or after lo, last at or before hi (first_centre, shifts) */
-        int32_t X0 = (lox + SUB / 2 - 1) >> 8, X1 = ((hix + SUB / 2) >> 8) - 1;
-        int32_t Y0 = (loy + SUB / 2 - 1) >> 8, Y1 = ((hiy + SUB / 2) >> 8) - 1;
-        X0 = X0 > 0 ? X0 : 0, Y0 = Y0 > 0 ? Y0 : 0;
-        X1 = X1 < res - 1 ? X1 : res - 1, Y1 = Y1 < res - 1 ? Y1 : res - 1;
-        keep[t] = (X0 <= X1) & (Y0 <= Y1);
+        keep[t] = ssg_raster_box_has_centre(x[i], x[k], x[l], y[i], y[k], y[l], res, 0, res);
     }
     int n = 0;
     for (int t = 0; t < count; t++) {
@@ -210,7 +152,6 @@ with_centres(const uint32_t *restrict idx, int t0, int count, const struct verts
     }
     return n;
 }
-_Static_assert(SUB == 1 << 8, "with_centres divides by SUB with shifts");
 
 SSG_VECTOR_CLONES
 static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struct verts *v)
