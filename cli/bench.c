@@ -451,20 +451,6 @@ static int check_names(const struct bench *b)
     return ok;
 }
 
-/* The files bench writes into --out can be written (a FIFO or a folder planted at
-   bench.md is refused before the first cell, not after it). */
-static enum ssg_err check_outputs(const struct bench *b, struct ssg_diags *d)
-{
-    enum ssg_err e = SSG_OK;
-    for (int i = 0; i < 3 && !e; i++) {
-        char path[1200];
-        snprintf(path, sizeof path, "%s/%s", b->req->out_dir,
-                 (const char *[]){"bench.csv", "bench.json", "bench.md"}[i]);
-        e = ssg_output_check(path, "bench table", 0, d);
-    }
-    return e;
-}
-
 /* Whether the --time node (if any) is among the nodes a cell ran. */
 static int knows_time_node(const struct bench *b, const struct cell *c)
 {
@@ -509,7 +495,7 @@ int ssg_bench_main(const struct ssg_bench_request *req)
     }
     enum ssg_err e = ssg_make_dirs(req->out_dir, &d);
     if (!e)
-        e = check_outputs(&b, &d);
+        e = ssg_bench_check_tables(req->out_dir, &d);
     int tty = isatty(fileno(stderr)), failed = 0;
     struct live_cells live = {0};
     for (int ci = b.shard_index; ci < b.cell_count && !e; ci += b.shard_count) {
@@ -538,9 +524,7 @@ int ssg_bench_main(const struct ssg_bench_request *req)
                    b.shard_count, b.done, b.cell_count, failed);
         else
             printf("bench: %d cells, %d failed\n", b.cell_count, failed);
-        for (int i = 0; i < 3; i++)
-            printf("wrote %s/%s\n", req->out_dir, (const char *[]){"bench.csv", "bench.json",
-                                                                    "bench.md"}[i]);
+        ssg_bench_print_tables(req->out_dir);
         fflush(stdout);
     }
     if (!e && failed >= 0 && req->plot && ssg_bench_draw_plots(&b))

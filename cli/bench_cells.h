@@ -89,6 +89,11 @@ struct ssg_bench_ms ssg_bench_shown_ms(const struct bench *b, const struct cell 
  * temporary and a rename (files.h), so an interrupted bench keeps every finished cell and
  * no file is ever half-written or written through a planted link. */
 enum ssg_err ssg_bench_save(const struct bench *b, struct ssg_diags *d);
+/* Before the first cell: the three tables' names in out_dir can take them (a FIFO or a
+ * folder planted at bench.md is refused then, not after the first cell), ssg_output_check. */
+enum ssg_err ssg_bench_check_tables(const char *out_dir, struct ssg_diags *d);
+/* The `wrote OUT/bench.csv` lines of the three tables, to stdout. */
+void ssg_bench_print_tables(const char *out_dir);
 
 /* bench_ms.png and bench_pareto.png from the finished cells; 0 on success, else 1 with
  * the reason on stderr. */

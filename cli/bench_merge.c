@@ -208,9 +208,7 @@ static int write_merged(struct bench *b, const struct ssg_bench_request *req, in
     if (!req->quiet) {
         printf("bench: merged %d shards: %d cells, %d failed\n", shards, b->cell_count,
                failed);
-        for (int i = 0; i < 3; i++)
-            printf("wrote %s/%s\n", req->out_dir,
-                   (const char *[]){"bench.csv", "bench.json", "bench.md"}[i]);
+        ssg_bench_print_tables(req->out_dir);
         fflush(stdout);
     }
     if (req->plot && ssg_bench_draw_plots(b))

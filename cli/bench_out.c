@@ -298,16 +298,46 @@ static void write_csv(FILE *f, const void *user)
             csv_row(b, ci, f);
 }
 
+/* The three tables, in the order they are written, checked and named. */
+static const struct {
+    const char *name, *what;
+    void (*fill)(FILE *f, const void *b);
+} tables[] = {{"bench.csv", "bench table", write_csv},
+              {"bench.json", "bench results", write_json},
+              {"bench.md", "bench table", write_md}};
+enum { TABLE_COUNT = sizeof tables / sizeof tables[0] };
+
+static void table_path(const char *out_dir, int i, char *path, size_t len)
+{
+    snprintf(path, len, "%s/%s", out_dir, tables[i].name);
+}
+
 enum ssg_err ssg_bench_save(const struct bench *b, struct ssg_diags *d)
 {
     char path[1200];
-    snprintf(path, sizeof path, "%s/bench.csv", b->req->out_dir);
-    if (ssg_write_text_file(path, "bench table", write_csv, b, d))
-        return SSG_E_IO;
-    snprintf(path, sizeof path, "%s/bench.json", b->req->out_dir);
-    enum ssg_err e = ssg_write_text_file(path, "bench results", write_json, b, d);
-    snprintf(path, sizeof path, "%s/bench.md", b->req->out_dir);
-    return e ? e : ssg_write_text_file(path, "bench table", write_md, b, d);
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < TABLE_COUNT && !e; i++) {
+        table_path(b->req->out_dir, i, path, sizeof path);
+        e = ssg_write_text_file(path, tables[i].what, tables[i].fill, b, d);
+    }
+    return e;
+}
+
+enum ssg_err ssg_bench_check_tables(const char *out_dir, struct ssg_diags *d)
+{
+    char path[1200];
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < TABLE_COUNT && !e; i++) {
+        table_path(out_dir, i, path, sizeof path);
+        e = ssg_output_check(path, tables[i].what, 0, d);
+    }
+    return e;
+}
+
+void ssg_bench_print_tables(const char *out_dir)
+{
+    for (int i = 0; i < TABLE_COUNT; i++)
+        printf("wrote %s/%s\n", out_dir, tables[i].name);
 }
 
 static int by_series(const void *a, const void *b)
