@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The page of `ssgraph view` in a real headless Chromium (Debian's chromium and chromedriver,
-# driven by python3-selenium: tests/view_browser.py): it loads the page, clicks a node, moves
+# driven by python3-selenium: tests/view_browser.py): it loads the page, checks that it is ES
+# modules drawing in WebGL2 and that its tone curves give the CLI's PNG bytes, clicks a node, moves
 # a slider, drags the camera, sets an A/B split and checks the canvas pixels, the nodes that
 # ran and the metrics; a bad value and a broken graph file show their errors. The server runs
 # on a copy of graphs/ssdo_realtime.graph at 160x90 (the copy is what the watcher sees edited
@@ -23,6 +24,14 @@ sed "s|^scene \"\.\./|scene \"$PWD/|" graphs/ssdo_realtime.graph > "$TMP/graph/s
 # Chromium keeps its profile and caches under HOME: keep them in the scratch folder.
 export HOME=$TMP/home XDG_CONFIG_HOME=$TMP/home XDG_CACHE_HOME=$TMP/home
 
+# What the page's shader must show at +1 stop: the CLI's PNGs of a colour and a one-channel
+# port under each tone curve.
+for curve in clamp reinhard aces; do
+    "$BIN" run "$TMP/graph/ssdo_realtime.graph" --size 160x90 --show img.out,f.out --exposure 1 \
+        --tonemap "$curve" --out "$TMP/ref_$curve" -q > "$TMP/ref_$curve.log" 2>&1 ||
+        fail "ssgraph run --tonemap $curve: $(cat "$TMP/ref_$curve.log")"
+done
+
 "$BIN" view "$TMP/graph/ssdo_realtime.graph" --size 160x90 --port 0 > "$TMP/server.log" 2>&1 &
 server=$!
 trap 'kill "$server" 2> /dev/null' EXIT
@@ -39,7 +48,8 @@ if [ -z "$url" ]; then
     finish test_view_browser
 fi
 
-/usr/bin/python3 "$(dirname "$0")/view_browser.py" "$url" "$TMP" "$TMP/graph/ssdo_realtime.graph" ||
+/usr/bin/python3 "$(dirname "$0")/view_browser.py" "$url" "$TMP" "$TMP/graph/ssdo_realtime.graph" \
+    160x90 "$TMP" ||
     fail "the page in headless chromium (screenshots in $TMP, server log $TMP/server.log)"
 
 # SIGINT ends the server cleanly

@@ -1,16 +1,20 @@
 #!/usr/bin/python3
 """The page of `ssgraph view` in a real headless Chromium (tests/test_view_browser.sh starts
-the server). Usage: view_browser.py URL OUTDIR GRAPHFILE [WxH]. It clicks the node `do` in the
+the server). Usage: view_browser.py URL OUTDIR GRAPHFILE [WxH [REFDIR]]. It checks that the
+page is ES modules drawing in WebGL2 (none of the old page's globals), compares the canvas at
++1 stop under each tone curve with the CLI's PNGs in REFDIR (when given), clicks the node `do` in the
 diagram, moves its radius slider, drags the camera, sets an A/B split with metrics, types a
 bad value and breaks the graph file on disk (the errors show at file:line:col and clear), and
 saves a variant; screenshots go to OUTDIR/viewer-*.png. Exits 1 with FAIL lines on failures.
 The graph is graphs/ssdo_realtime.graph: its node names and ports are used below."""
+import base64
 import os
 import re
 import socket
 import subprocess
 import sys
 import time
+import zlib
 
 from selenium import webdriver
 from selenium.common.exceptions import TimeoutException, WebDriverException
@@ -24,16 +28,32 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 
 URL, OUT, GRAPH = sys.argv[1], sys.argv[2], sys.argv[3]
 SIZE = sys.argv[4] if len(sys.argv) > 4 else "160x90"  # the server's --size
+# REFDIR/ref_CURVE/{img.out,f.out}.png: `ssgraph run --show img.out,f.out --exposure 1
+# --tonemap CURVE` of the graph at SIZE (test_view_browser.sh writes them)
+REFS = sys.argv[5] if len(sys.argv) > 5 else None
 WAIT = 30  # seconds for one step; the graph runs on 2 busy cores
 failures = []
 
-# A cheap fingerprint of the canvas pixels, to see that what is drawn changed.
-CANVAS_HASH = """
+# The canvas's pixels as RGBA bytes, read through a 2D canvas (the page's is WebGL2).
+CANVAS_READ = """
 const c = document.getElementById('view');
-const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+const s = document.createElement('canvas');
+s.width = c.width; s.height = c.height;
+const x = s.getContext('2d');
+x.drawImage(c, 0, 0);
+const d = x.getImageData(0, 0, c.width, c.height).data;
+"""
+# A cheap fingerprint of the canvas pixels, to see that what is drawn changed.
+CANVAS_HASH = CANVAS_READ + """
 let h = 0;
 for (let i = 0; i < d.length; i++) h = (Math.imul(h, 31) + d[i]) | 0;
 return [c.width, c.height, h];
+"""
+# The canvas as [width, height, base64 of its RGBA bytes].
+CANVAS_BYTES = CANVAS_READ + """
+let b = '';
+for (let i = 0; i < d.length; i += 8192) b += String.fromCharCode(...d.subarray(i, i + 8192));
+return [c.width, c.height, btoa(b)];
 """
 
 
@@ -64,8 +84,11 @@ def localhost_note():
                 "chromium may still need it among themselves)")
 
 
-CHROMIUM_FLAGS = ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                  "--window-size=1280,800", "--no-first-run", "--disable-extensions")
+# --disable-gpu leaves WebGL2 to SwiftShader on the CPU, which --enable-unsafe-swiftshader
+# keeps allowed in Chromiums that would otherwise refuse it.
+CHROMIUM_FLAGS = ("--headless=new", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
+                  "--disable-dev-shm-usage", "--window-size=1280,800", "--no-first-run",
+                  "--disable-extensions")
 
 
 def start_chromium():
@@ -131,6 +154,109 @@ def step_load(drv):
     if text(drv, "hdr-size") != SIZE:
         fail(f"header size is '{text(drv, 'hdr-size')}'")
     shot(drv, "overview")
+
+
+# Names the page's classic scripts declared at their top level, shared by load order: a page
+# of ES modules leaves none of them (nor anything else) in the global scope.
+OLD_GLOBALS = ("S", "TOKEN", "$", "api", "errorText", "LatestSender", "applyState", "draw",
+               "toPixels", "decodeImage", "VIRIDIS_LUT", "SRGB_LUT", "orbit", "pan", "zoom",
+               "paramRow", "sendParam", "sliderScale", "selectNode", "timeState", "sendFrame",
+               "state", "render", "setDisplay")
+
+
+def step_modules(drv):
+    """The page is ES modules (each script type=module, served as JavaScript), none of the
+    old globals is visible, and the canvas is a WebGL2 canvas."""
+    leaked = drv.execute_script(
+        "return [" + ", ".join(f"typeof {n}" for n in OLD_GLOBALS) + "];")
+    leaked = [n for n, ty in zip(OLD_GLOBALS, leaked) if ty != "undefined"]
+    if leaked:
+        fail(f"names visible in the page's global scope (scripts sharing globals): {leaked}")
+    kinds = drv.execute_script("return [...document.scripts].map((s) => s.type);")
+    if not kinds or any(k != "module" for k in kinds):
+        fail(f"the page's scripts are {kinds}: expected type=module only")
+    mime = drv.execute_async_script("""const done = arguments[0];
+        fetch('app.js', {credentials: 'same-origin'}).then((r) => done(r.headers.get('Content-Type')));""")
+    if not (mime or "").startswith("text/javascript"):
+        fail(f"app.js is served as {mime}: a module script needs text/javascript")
+    if not drv.execute_script("return document.getElementById('view').getContext('webgl2') !== null;"):
+        fail("the canvas is not a WebGL2 canvas")
+
+
+def read_png(path):
+    """(width, height, channels, bytes) of an 8-bit gray or RGB PNG, non-interlaced (what
+    the CLI writes): the IDAT stream inflated and its row filters undone."""
+    with open(path, "rb") as f:
+        data = f.read()
+    pos, idat, head = 8, b"", None
+    while pos < len(data):
+        n = int.from_bytes(data[pos:pos + 4], "big")
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        head = body if kind == b"IHDR" else head
+        idat += body if kind == b"IDAT" else b""
+        pos += 12 + n
+    w, h = int.from_bytes(head[0:4], "big"), int.from_bytes(head[4:8], "big")
+    c = {0: 1, 2: 3}[head[9]]
+    raw, stride, out = zlib.decompress(idat), w * c, bytearray()
+    for y in range(h):
+        row = raw[y * (stride + 1):(y + 1) * (stride + 1)]
+        kind, line = row[0], bytearray(row[1:])
+        up = out[(y - 1) * stride:y * stride] if y else bytearray(stride)
+        for i in range(stride):
+            a, b, cc = line[i - c] if i >= c else 0, up[i], up[i - c] if i >= c else 0
+            pred = (0, a, b, (a + b) // 2, paeth(a, b, cc))[kind]
+            line[i] = (line[i] + pred) & 255
+        out += line
+    return w, h, c, bytes(out)
+
+
+def paeth(a, b, c):
+    p = a + b - c
+    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+    return a if pa <= pb and pa <= pc else b if pb <= pc else c
+
+
+def canvas_vs_png(drv, path):
+    """The largest difference, in 8-bit codes, between the canvas and the PNG (scaled to the
+    canvas by nearest pixel, grey as R = G = B), and where it is."""
+    W, H, b64 = drv.execute_script(CANVAS_BYTES)
+    px = base64.b64decode(b64)
+    w, h, c, ref = read_png(path)
+    worst = (0, None)
+    for y in range(H):
+        for x in range(W):
+            r = ((y * h // H) * w + x * w // W) * c
+            for k in range(3):
+                d = abs(px[(y * W + x) * 4 + k] - ref[r + (k if c == 3 else 0)])
+                worst = max(worst, (d, (x, y, k)), key=lambda t: t[0])
+    return worst
+
+
+def set_display(drv, stops, curve, colormap):
+    drv.execute_script("""const [stops, curve, cmap] = arguments, fire = (id, v, ev) => {
+        const el = document.getElementById(id); el.value = v; el.dispatchEvent(new Event(ev)); };
+        fire('exposure', stops, 'input'); fire('tonemap', curve, 'change');
+        fire('colormap', cmap, 'change');""", str(stops), curve, colormap)
+
+
+def step_tonemap(drv):
+    """At +1 stop under each tone curve the canvas holds the bytes of the CLI's PNGs (within
+    one code: the shader's pow is not libm's), for a colour port at the frame size and a
+    one-channel port at half of it shown grey: the shader's curves are the CLI's."""
+    if not REFS:
+        print("step_tonemap: no REFDIR given, the CLI's PNGs are not compared")
+        return
+    for port in ("img.out", "f.out"):
+        Select(drv.find_element(By.ID, "port-a")).select_by_value(port)
+        for curve in ("clamp", "reinhard", "aces"):
+            set_display(drv, 1, curve, "none")
+            path = os.path.join(REFS, f"ref_{curve}", f"{port}.png")
+            got = wait_for(drv, f"{port} under {curve} at +1 stop as {path}",
+                           lambda d: canvas_vs_png(d, path)[0] <= 1)
+            if not got:
+                fail(f"{port} {curve}: the canvas differs from {path} by "
+                     f"{canvas_vs_png(drv, path)} (codes, at x, y, channel)")
+    set_display(drv, 0, "clamp", "viridis")
 
 
 def step_click_node(drv):
@@ -285,6 +411,14 @@ def step_ab(drv):
     wait_for(drv, "A's metrics to update after a run",
              lambda d: metric(d, "A", "img.out") not in (None, a))
     shot(drv, "ab")
+    # the difference of a port with itself is black; with another, not
+    Select(drv.find_element(By.ID, "ab-mode")).select_by_value("diff")
+    wait_for(drv, "|img.out - g.direct| drawn", lambda d: any(
+        base64.b64decode(d.execute_script(CANVAS_BYTES)[2])[0::4]))
+    Select(drv.find_element(By.ID, "port-b")).select_by_value("img.out")
+    wait_for(drv, "|img.out - img.out| black", lambda d: not any(
+        v for i, v in enumerate(base64.b64decode(d.execute_script(CANVAS_BYTES)[2])) if i % 4 != 3))
+    Select(drv.find_element(By.ID, "ab-mode")).select_by_value("split")
 
 
 def step_errors(drv):
@@ -357,7 +491,7 @@ def main():
             chromium.kill()
         return 1
     try:
-        for step in (step_load, step_click_node, step_slider, step_checkbox, step_camera,
+        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider, step_checkbox, step_camera,
                      step_display, step_ab, step_errors, step_save):
             t0 = time.time()
             step(drv)

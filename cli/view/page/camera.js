@@ -1,6 +1,5 @@
-// Camera moves for `ssgraph view`'s page (app.js): orbit, pan and zoom of a camera
+// Camera moves for `ssgraph view`'s page (mouse.js): orbit, pan and zoom of a camera
 // {position, target, up, fov_y} in place, from mouse motion in screen pixels. No state.
-'use strict';
 
 const V = {
   add: (a, b) => a.map((x, i) => x + b[i]), sub: (a, b) => a.map((x, i) => x - b[i]),
@@ -17,7 +16,7 @@ function rotate(v, k, t) {
 
 // Turns the camera around its target: dx about the up axis, dy about the right axis, in
 // screen pixels.
-function orbit(cam, dx, dy) {
+export function orbit(cam, dx, dy) {
   const up = V.norm(cam.up);
   let off = rotate(V.sub(cam.position, cam.target), up, -dx * 0.008);
   const right = V.norm(V.cross(off, up));
@@ -29,7 +28,7 @@ function orbit(cam, dx, dy) {
 
 // Moves camera and target in the view plane; heightPx: the canvas height on screen, so the
 // point under the mouse at the target's distance follows the mouse.
-function pan(cam, dx, dy, heightPx) {
+export function pan(cam, dx, dy, heightPx) {
   const off = V.sub(cam.position, cam.target);
   const fwd = V.norm(V.mul(off, -1));
   const right = V.norm(V.cross(fwd, cam.up)), camUp = V.cross(right, fwd);
@@ -40,7 +39,7 @@ function pan(cam, dx, dy, heightPx) {
 }
 
 // Scales the distance to the target by exp(wheel / 1000) (a wheel notch is about 10%).
-function zoom(cam, wheel) {
+export function zoom(cam, wheel) {
   const off = V.mul(V.sub(cam.position, cam.target), Math.exp(wheel * 0.001));
   cam.position = V.add(cam.target, off);
 }

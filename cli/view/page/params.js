@@ -1,7 +1,6 @@
-// The parameter controls of `ssgraph view`'s page (app.js), generated from a node's
+// The parameter controls of `ssgraph view`'s page (panel.js), generated from a node's
 // parameter descriptors in /api/state (type, value, min, max, unit, choices, doc). A change
-// calls sendParam(node, param, text, debounce_ms) of app.js.
-'use strict';
+// calls send(node, param, text, debounce_ms), which the caller gives.
 
 // How a number parameter's slider maps [0, 1000] to values: linear when the range spans at
 // most 3 decades; otherwise logarithmic over 4 decades around the value the panel opened with
@@ -29,7 +28,7 @@ function numText(p, x) {
 }
 
 // One row of the node panel: the name, its control, and the unit and doc under it.
-function paramRow(n, p) {
+export function paramRow(n, p, send) {
   const row = document.createElement('div');
   row.className = 'param';
   row.dataset.param = p.name;
@@ -39,10 +38,10 @@ function paramRow(n, p) {
   label.textContent = p.name;
   row.append(label);
   const id = `param-${n.name}-${p.name}`;
-  if (p.type === 'float' || p.type === 'int') numberControls(row, n, p, id);
-  else if (p.type === 'enum' && p.choices) selectControl(row, n, p, id);
-  else if (p.type === 'bool') boolControl(row, n, p, id);
-  else textControl(row, n, p, id);
+  if (p.type === 'float' || p.type === 'int') numberControls(row, n, p, id, send);
+  else if (p.type === 'enum' && p.choices) selectControl(row, n, p, id, send);
+  else if (p.type === 'bool') boolControl(row, n, p, id, send);
+  else textControl(row, n, p, id, send);
   if (p.unit || p.doc) {
     const u = document.createElement('div');
     u.className = 'unit';
@@ -52,7 +51,7 @@ function paramRow(n, p) {
   return row;
 }
 
-function numberControls(row, n, p, id) {
+function numberControls(row, n, p, id, send) {
   const box = document.createElement('input');
   box.type = 'number';
   box.id = id;
@@ -68,41 +67,41 @@ function numberControls(row, n, p, id) {
   slider.scale = scale; // refreshParamValues moves the thumb on the same scale
   slider.addEventListener('input', () => {
     box.value = numText(p, scale.to(+slider.value));
-    sendParam(n.name, p.name, box.value, 60);
+    send(n.name, p.name, box.value, 60);
   });
   box.addEventListener('change', () => {
     slider.value = String(scale.from(parseFloat(box.value)));
-    sendParam(n.name, p.name, box.value, 0);
+    send(n.name, p.name, box.value, 0);
   });
   row.append(slider, box);
 }
 
 // A control that fills the row (no slider): el gets the id, and read(el) is the value sent
 // when it changes.
-function wideControl(row, n, p, id, el, read) {
+function wideControl(row, n, p, id, send, el, read) {
   el.id = id;
-  el.addEventListener('change', () => sendParam(n.name, p.name, read(el), 0));
+  el.addEventListener('change', () => send(n.name, p.name, read(el), 0));
   row.classList.add('wide');
   row.append(el);
 }
 
-function selectControl(row, n, p, id) {
+function selectControl(row, n, p, id, send) {
   const sel = document.createElement('select');
   sel.replaceChildren(...p.choices.map((c) => new Option(c, c)));
   sel.value = p.value;
-  wideControl(row, n, p, id, sel, (el) => el.value);
+  wideControl(row, n, p, id, send, sel, (el) => el.value);
 }
 
-function boolControl(row, n, p, id) {
+function boolControl(row, n, p, id, send) {
   const cb = document.createElement('input');
   cb.type = 'checkbox';
   cb.checked = p.value === 'true';
-  wideControl(row, n, p, id, cb, (el) => (el.checked ? 'true' : 'false'));
+  wideControl(row, n, p, id, send, cb, (el) => (el.checked ? 'true' : 'false'));
 }
 
-function textControl(row, n, p, id) {
+function textControl(row, n, p, id, send) {
   const t = document.createElement('input');
   t.type = 'text';
   t.value = p.value;
-  wideControl(row, n, p, id, t, (el) => el.value);
+  wideControl(row, n, p, id, send, t, (el) => el.value);
 }

@@ -1,0 +1,106 @@
+// The mouse on the canvas: drag to orbit, right or shift drag to pan, wheel to zoom, drag the
+// A/B divider, hover for the pixel readout. The page moves its own copy of the camera
+// (state.cam) and sends each pose; while the user steers, the server's answers never
+// overwrite it (state.js receive), so a slow answer does not make the camera jump back.
+import { orbit, pan, zoom } from './camera.js';
+import { LatestSender } from './net.js';
+import { framePos } from './render.js';
+import { setDivider, setPointer, state, steer } from './state.js';
+import { $ } from './ui.js';
+
+let drag = null;       // the current canvas drag: {mode, x, y, moved}
+let wheelTimer = null; // the full-size run after a wheel burst
+let camSender = null;
+const ups = [];        // times of the preview images drawn during a drag
+
+const num = (x) => String(parseFloat(x.toPrecision(8)));
+function sendCamera(preview) {
+  const c = state.cam;
+  const body = `position=${c.position.map(num)}&target=${c.target.map(num)}` +
+    `&up=${c.up.map(num)}&fov=${num(c.fov_y)}&preview=${preview ? 1 : 0}`;
+  camSender.send('camera', body);
+}
+
+// Updates per second while dragging: preview images drawn in the last second.
+export function countUpdate() {
+  const now = performance.now();
+  ups.push(now);
+  while (ups.length && now - ups[0] > 1000) ups.shift();
+  $('cam-ups').textContent = `camera: ${ups.length} updates/s`;
+}
+
+// Whether a mouse event is within 6 screen pixels of the A/B divider.
+function nearDivider(ev) {
+  const cv = $('view'), [fx] = framePos(ev);
+  const p = state.ports;
+  return p.ab && p.mode === 'split' &&
+    Math.abs(fx - state.divider * cv.width) < 6 * cv.width / cv.getBoundingClientRect().width;
+}
+
+function onPointerDown(ev) {
+  const mode = nearDivider(ev) ? 'divider' : ev.button === 2 || ev.shiftKey ? 'pan' : 'orbit';
+  if (mode !== 'divider' && !state.cam) {
+    $('cam-ups').textContent = 'camera: this graph has no camera';
+    return;
+  }
+  ev.preventDefault();
+  $('view').setPointerCapture(ev.pointerId);
+  drag = { mode, x: ev.clientX, y: ev.clientY, moved: false };
+  ups.length = 0;
+  $('view').classList.add('dragging');
+}
+
+function onPointerMove(ev) {
+  const cv = $('view');
+  if (!drag) {
+    setPointer(ev);
+    cv.classList.toggle('divider', nearDivider(ev));
+    return;
+  }
+  const dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
+  drag.x = ev.clientX; drag.y = ev.clientY;
+  const r = cv.getBoundingClientRect();
+  if (drag.mode === 'divider') { setDivider((ev.clientX - r.left) / r.width); return; }
+  if (!dx && !dy) return;
+  const cam = structuredClone(state.cam);
+  if (drag.mode === 'orbit') orbit(cam, dx, dy); else pan(cam, dx, dy, r.height);
+  drag.moved = true;
+  steer(cam, true);
+  sendCamera(true);
+}
+
+function onPointerUp() {
+  if (!drag) return;
+  const d = drag;
+  drag = null;
+  $('view').classList.remove('dragging');
+  if (d.mode === 'divider' || !d.moved) return;
+  steer(state.cam, false);
+  sendCamera(false);
+}
+
+function onWheel(ev) {
+  if (!state.cam) return;
+  ev.preventDefault();
+  const cam = structuredClone(state.cam);
+  zoom(cam, ev.deltaY);
+  steer(cam, true);
+  sendCamera(true);
+  clearTimeout(wheelTimer);
+  wheelTimer = setTimeout(() => { steer(state.cam, false); sendCamera(false); }, 250);
+}
+
+// onRunAnswer(body, resp): what app.js does with the answer to a camera request.
+export function wireMouse(onRunAnswer) {
+  camSender = new LatestSender('/api/camera', onRunAnswer);
+  const cv = $('view');
+  cv.addEventListener('pointerdown', onPointerDown);
+  cv.addEventListener('pointermove', onPointerMove);
+  cv.addEventListener('pointerup', onPointerUp);
+  cv.addEventListener('pointercancel', onPointerUp);
+  cv.addEventListener('wheel', onWheel, { passive: false });
+  cv.addEventListener('contextmenu', (ev) => ev.preventDefault());
+}
+
+// Whether a drag (not a divider move) is on: preview images count as camera updates.
+export const dragging = () => drag !== null && drag.mode !== 'divider';

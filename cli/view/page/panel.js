@@ -1,0 +1,171 @@
+// The page around the image: the header, the port lists, the last run's table, the graph
+// diagram and the selected node's panel, all drawn from the state (state.js). Clicks call
+// the actions app.js gives (panelActions), so this module changes no state itself.
+import { api, errorText } from './net.js';
+import { paramRow } from './params.js';
+import { findNode, state } from './state.js';
+import { $, fmt } from './ui.js';
+
+// pick(name, showOutput): select a node; showPort(port): show it as A;
+// send(node, param, text, delay_ms): a parameter change; idle(): no change on its way.
+const on = {};
+export function panelActions(actions) { Object.assign(on, actions); }
+
+export function showHeader(st) {
+  const base = (path) => path.split('/').pop();
+  $('hdr-graph').textContent = base(st.graph);
+  $('hdr-graph').title = st.graph;
+  $('hdr-scene').textContent = st.scene ? base(st.scene) : '(none)';
+  $('hdr-scene').title = st.scene;
+  $('hdr-size').textContent = `${st.size[0]}x${st.size[1]}`;
+  $('hdr-backend').textContent = st.backend;
+  $('frame-ms').textContent = fmt(st.frame_ms);
+  $('total-ms').textContent = fmt(st.total_ms);
+  $('last-run').textContent = st.last_run;
+  $('generation').textContent = st.generation;
+  const se = $('state-error');
+  se.textContent = st.error || '';
+  se.hidden = !st.error;
+}
+
+function fillSelect(sel, values) {
+  if ([...sel.options].map((o) => o.value).join() !== values.join()) {
+    sel.replaceChildren(...values.map((v) => new Option(v, v)));
+  }
+}
+
+// Every output of the graph in the port lists; returns {a, b, ref}: the ports shown so far
+// where they still exist, else the last output.
+export function portChoices(st) {
+  const ports = st.nodes.flatMap((n) => n.outputs.map((o) => `${n.name}.${o.port}`));
+  const last = ports[ports.length - 1] || '';
+  for (const id of ['port-a', 'port-b', 'port-ref']) fillSelect($(id), ports);
+  const keep = (p) => (ports.includes(p) ? p : last);
+  const p = state.ports;
+  return { a: keep(p.a), b: keep(p.b), ref: keep(p.ref) };
+}
+
+export function fillTimes(st) {
+  const rows = st.nodes.map((n) => {
+    const tr = document.createElement('tr');
+    tr.dataset.node = n.name;
+    tr.className = (n.ran ? 'ran ' : '') + (n.name === state.selected ? 'selected' : '');
+    for (const t of [n.name, n.type, n.ran ? 'yes' : 'kept', fmt(n.ms, 2)]) {
+      tr.insertCell().textContent = t;
+    }
+    tr.onclick = () => on.pick(n.name, true);
+    return tr;
+  });
+  $('node-table').tBodies[0].replaceChildren(...rows);
+  $('ran-list').textContent = st.nodes.filter((n) => n.ran).map((n) => n.name).join(' ') || '(none)';
+}
+
+// ---- diagram ----------------------------------------------------------------------------
+let svgSig = ''; // the node list the diagram was fetched for
+
+// The diagram for this state: fetched again when the node list changed, else re-marked.
+export function showDiagram(st) {
+  const sig = st.nodes.map((n) => n.name).join(',');
+  if (sig !== svgSig) loadDiagram(sig); else markDiagram();
+}
+
+async function loadDiagram(sig) {
+  svgSig = sig;
+  const resp = await api('/api/graph.svg');
+  if (!resp.ok) { $('diagram').textContent = await errorText(resp); return; }
+  const doc = new DOMParser().parseFromString(await resp.text(), 'image/svg+xml');
+  const svg = doc.documentElement;
+  if (svg.nodeName !== 'svg') { $('diagram').textContent = 'graph.svg: not an SVG'; return; }
+  // dot sizes the drawing in points; keep that size unless the column is narrower
+  svg.style.maxWidth = '100%';
+  svg.style.height = 'auto';
+  $('diagram').replaceChildren(document.importNode(svg, true));
+  for (const g of $('diagram').querySelectorAll('g.node')) {
+    g.addEventListener('click', () => { on.pick(nodeName(g), true); enlargeDiagram(false); });
+  }
+  markDiagram();
+}
+
+// The diagram over the main area at a readable scale (dot lays graphs out wide).
+export function enlargeDiagram(wide) {
+  $('diagram-box').classList.toggle('wide', wide);
+}
+
+const nodeName = (g) => (g.querySelector('title') || {}).textContent || '';
+
+// Each node of the diagram: class ran/selected and its last time under its label.
+export function markDiagram() {
+  if (!state.server) return;
+  const byName = new Map(state.server.nodes.map((n) => [n.name, n]));
+  for (const g of $('diagram').querySelectorAll('g.node')) {
+    const n = byName.get(nodeName(g));
+    if (!n) continue;
+    g.classList.toggle('ran', n.ran);
+    g.classList.toggle('selected', n.name === state.selected);
+    let t = g.querySelector('text.ms');
+    if (!t) {
+      // under the node's box, where no label of dot's is
+      const box = g.getBBox();
+      t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+      t.setAttribute('class', 'ms');
+      t.setAttribute('text-anchor', 'middle');
+      t.setAttribute('x', String(box.x + box.width / 2));
+      t.setAttribute('y', String(box.y + box.height + 10));
+      g.appendChild(t);
+    }
+    t.textContent = n.ran ? `${fmt(n.ms, 1)} ms` : 'kept';
+  }
+}
+
+// ---- node panel -------------------------------------------------------------------------
+// The selected node's summary, parameter controls and ports.
+export function showNode(n) {
+  $('node-name').textContent = n.name;
+  $('node-type').textContent = `${n.type} \u00b7 ${n.backend}`;
+  $('node-doc').textContent = n.doc || '';
+  $('params').replaceChildren(...n.params.map((p) => paramRow(n, p, on.send)));
+  $('ports').replaceChildren(...portList(n));
+}
+
+function portList(n) {
+  const out = [];
+  for (const i of n.inputs) {
+    const d = document.createElement('div');
+    const what = [i.type, i.optional ? 'optional' : ''].filter(Boolean).join(', ');
+    d.textContent = `in  ${i.port}${what ? ` (${what})` : ''} \u2190 ${i.from || '-'}`;
+    out.push(d);
+  }
+  const d = document.createElement('div');
+  d.append('out ');
+  for (const o of n.outputs) {
+    const b = document.createElement('button');
+    b.textContent = `${o.port} (${o.type}, ${o.channels} ch)`;
+    b.dataset.port = `${n.name}.${o.port}`;
+    b.onclick = () => on.showPort(b.dataset.port);
+    d.append(b);
+  }
+  out.push(d);
+  return out;
+}
+
+// Values changed elsewhere (a reload, a rejected set) reach controls the user is not using.
+export function refreshParamValues() {
+  const n = findNode(state.selected);
+  if (!n) return;
+  if (n.params.map((p) => p.name).join() !==
+      [...$('params').children].map((r) => r.dataset.param).join()) {
+    on.pick(n.name, false);
+    return;
+  }
+  for (const p of n.params) {
+    const id = `param-${n.name}-${p.name}`;
+    const el = $(id), slider = $(`${id}-slider`);
+    if (!el || el === document.activeElement || slider === document.activeElement) continue;
+    if (!on.idle()) continue;
+    if (el.type === 'checkbox') el.checked = p.value === 'true';
+    else if (el.value !== p.value && parseFloat(el.value) !== parseFloat(p.value)) {
+      el.value = p.value;
+      if (slider) slider.value = String(slider.scale.from(parseFloat(p.value)));
+    }
+  }
+}

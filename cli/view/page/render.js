@@ -1,0 +1,101 @@
+// The page's one render path: render() draws the image view from the state (state.js) and
+// nothing else: the canvas (tonemap.js), the A/B divider and labels, the controls that show
+// the display settings, and the value under the mouse. Every change reaches it the same way:
+// a mutation of the state asks for a render, and the renders asked for within one animation
+// frame are one render.
+import { state } from './state.js';
+import { ImageView } from './tonemap.js';
+import { $, showRequestError } from './ui.js';
+
+let view = null, queued = false, drawn = null;
+
+export function scheduleRender() {
+  if (queued) return;
+  queued = true;
+  requestAnimationFrame(render);
+}
+
+// What the canvas shows, from the state; the canvas is drawn again only when this changes.
+function frameOf(st) {
+  const p = state.ports, [W, H] = st.size;
+  const b = p.ab ? state.images.get(p.b) || null : null;
+  return { W, H, a: state.images.get(p.a) || null, b, difference: p.ab && p.mode === 'diff',
+    splitX: p.ab && p.mode === 'split' ? Math.round(state.divider * W) : W,
+    display: state.display };
+}
+
+const sameFrame = (f, g) => g && Object.keys(f).every((k) => f[k] === g[k]);
+
+function drawCanvas(f) {
+  const cv = $('view');
+  if (cv.width !== f.W || cv.height !== f.H) { cv.width = f.W; cv.height = f.H; drawn = null; }
+  if (sameFrame(f, drawn)) return;
+  if (!view) view = new ImageView(cv, () => { drawn = null; scheduleRender(); });
+  view.draw(f);
+  drawn = f;
+}
+
+export function render() {
+  queued = false;
+  const st = state.server;
+  if (!st) return;
+  try { drawCanvas(frameOf(st)); } catch (e) { showRequestError(String(e.message || e)); }
+  fitCanvas();
+  showControls();
+  placeDivider();
+  showPixel();
+}
+
+// The canvas as large as the stage allows at the image's aspect ratio (small frames scale up).
+function fitCanvas() {
+  const cv = $('view'), st = $('stage');
+  const k = Math.min(st.clientWidth / cv.width, st.clientHeight / cv.height);
+  cv.style.width = `${Math.floor(cv.width * k)}px`;
+  cv.style.height = `${Math.floor(cv.height * k)}px`;
+}
+
+// The toolbar says what the state holds (a port list refill, the 0 EV button).
+function showControls() {
+  const p = state.ports, d = state.display;
+  for (const [id, v] of [['port-a', p.a], ['port-b', p.b], ['port-ref', p.ref],
+    ['ab-mode', p.mode], ['channel', d.channel], ['colormap', d.colormap], ['tonemap', d.curve]]) {
+    if ($(id).value !== v) $(id).value = v;
+  }
+  $('ab-enable').checked = p.ab;
+  if (+$('exposure').value !== d.stops) $('exposure').value = String(d.stops);
+  $('exposure-val').textContent = d.stops.toFixed(1);
+  $('ab-labels').hidden = !p.ab;
+  $('ab-label-a').textContent = p.mode === 'diff' ? `|A - B|  A ${p.a}` : `A ${p.a}`;
+  $('ab-label-b').textContent = `B ${p.b}`;
+}
+
+// The A/B divider: a one-pixel line over the canvas at screen resolution.
+function placeDivider() {
+  const cv = $('view'), div = $('ab-divider');
+  div.hidden = !(state.ports.ab && state.ports.mode === 'split');
+  div.style.left = `${cv.offsetLeft + Math.round(state.divider * cv.clientWidth)}px`;
+  div.style.top = `${cv.offsetTop}px`;
+  div.style.height = `${cv.clientHeight}px`;
+}
+
+// The canvas position of a mouse event in full-frame pixels.
+export function framePos(ev) {
+  const cv = $('view'), r = cv.getBoundingClientRect();
+  return [(ev.clientX - r.left) * cv.width / r.width, (ev.clientY - r.top) * cv.height / r.height];
+}
+
+// The raw floats under the mouse, read from the image's array (before exposure).
+function showPixel() {
+  if (!state.pointer) return;
+  const [fx, fy] = framePos(state.pointer);
+  const p = state.ports, cv = $('view');
+  const right = p.ab && p.mode === 'split' && fx >= state.divider * cv.width;
+  const port = right ? p.b : p.a;
+  const img = state.images.get(port);
+  if (!img) return;
+  const x = Math.floor(fx * img.w / cv.width), y = Math.floor(fy * img.h / cv.height);
+  if (x < 0 || y < 0 || x >= img.w || y >= img.h) return;
+  const base = (y * img.w + x) * img.c;
+  const vals = [...img.data.subarray(base, base + img.c)].map((v) => v.toPrecision(5));
+  $('pixel').textContent = `${port}  x,y ${x},${y}${img.preview ? ' (preview)' : ''}: ${vals.join(', ')}`;
+}

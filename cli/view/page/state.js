@@ -1,0 +1,79 @@
+// The page's state (docs/viewer.md, "How the page is built"): the one object every module
+// reads, and the only functions that change it. Each change tells the listeners (app.js
+// subscribes the render path, render.js), so whatever changed, the canvas is drawn from
+// this state by one function. Writes from outside are refused: `state` is a read-only view.
+
+const s = {
+  server: null,       // the latest /api/state
+  gen: -1,            // its generation
+  selected: null,     // the selected node's name
+  images: new Map(),  // port -> {w, h, c, gen, preview, data: Float32Array} (image.js)
+  ports: Object.freeze({ a: '', b: '', ref: '', ab: false, mode: 'split' }),
+  display: Object.freeze({ stops: 0, curve: 'clamp', channel: 'rgb', colormap: 'viridis' }),
+  divider: 0.5,       // the A/B divider as a fraction of the width
+  cam: null,          // the camera the page is driving (a copy of server.camera)
+  steering: false,    // a drag or a wheel burst moves cam: the server's camera waits
+  pointer: null,      // the last {clientX, clientY} over the canvas (pixel readout)
+};
+
+const refuse = () => { throw new TypeError('the state changes only through state.js'); };
+export const state = new Proxy(s, { set: refuse, deleteProperty: refuse });
+
+// The node of the latest state by name, or undefined.
+export const findNode = (name) => s.server && s.server.nodes.find((n) => n.name === name);
+
+const listeners = [];
+// fn(what) after every change; what names the mutation.
+export function subscribe(fn) { listeners.push(fn); }
+function changed(what) { for (const fn of listeners) fn(what); }
+
+// A new /api/state. The server's camera replaces the page's copy unless the user is
+// steering, so a slow answer never makes a drag jump back. Returns whether it is a new run.
+export function receive(st) {
+  const newRun = st.generation !== s.gen;
+  s.server = st;
+  s.gen = st.generation;
+  if (!s.steering && st.camera) s.cam = structuredClone(st.camera);
+  changed('server');
+  return newRun;
+}
+
+// The fetched images of a run, by port (the others stay until replaced).
+export function storeImages(byPort) {
+  for (const [port, img] of byPort) s.images.set(port, img);
+  changed('images');
+}
+
+// How the floats are shown: any of {stops, curve, channel, colormap}.
+export function setDisplay(patch) {
+  s.display = Object.freeze({ ...s.display, ...patch });
+  changed('display');
+}
+
+// Which ports are shown: any of {a, b, ref, ab: the A/B view on, mode: 'split'|'diff'}.
+export function setPorts(patch) {
+  s.ports = Object.freeze({ ...s.ports, ...patch });
+  changed('ports');
+}
+
+export function setDivider(fraction) {
+  s.divider = Math.min(1, Math.max(0, fraction));
+  changed('divider');
+}
+
+export function select(name) {
+  s.selected = name;
+  changed('select');
+}
+
+// The camera the page drives (orbit, pan, zoom), and whether the user is steering it.
+export function steer(cam, steering) {
+  s.cam = cam;
+  s.steering = steering;
+  changed('camera');
+}
+
+export function setPointer(ev) {
+  s.pointer = ev && { clientX: ev.clientX, clientY: ev.clientY };
+  changed('pointer');
+}
