@@ -8,9 +8,16 @@ canvas every animation frame until its pixels differ: the time from the change t
 image on screen (request, run, image transfer, decode and draw). Prints the median, minimum and
 maximum. Measures; asserts nothing.
 
+With --exposure it measures a display change instead (no request, no run): the exposure
+slider set and its `input` fired, then, at the next animation frame (after the page's own
+frame callback has drawn) one canvas pixel read back, which waits for the draw to finish: the
+time from the change to the new image, including the wait for the frame (up to 16.7 ms at
+60 Hz), and the time the input handler itself held the main thread. Against the page before
+issue 43 (a JavaScript loop over every pixel in the handler) and after (one WebGL2 draw).
+
   bench/view_page_latency.py [--bin build/ssgraph] [--graph graphs/ssdo_realtime.graph]
                              [--size 640x360] [--node do] [--param radius]
-                             [--values 0.3,0.45,...] [--runs 15]
+                             [--values 0.3,0.45,...] [--runs 15] [--exposure]
 """
 import argparse
 import re
@@ -27,8 +34,11 @@ from selenium.webdriver.support.ui import WebDriverWait
 CHANGE_AND_WAIT = """
 const [id, value, done] = arguments;
 const c = document.getElementById('view');
-const hash = () => {
-  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+const s = document.createElement('canvas'), x = s.getContext('2d');
+const hash = () => { // read through a 2D canvas: the page's may be WebGL2
+  s.width = c.width; s.height = c.height;
+  x.drawImage(c, 0, 0);
+  const d = x.getImageData(0, 0, c.width, c.height).data;
   let h = 0;
   for (let i = 0; i < d.length; i += 7) h = (Math.imul(h, 31) + d[i]) | 0;
   return h;
@@ -44,11 +54,47 @@ const poll = () => {
 requestAnimationFrame(poll);
 """
 
+# Sets the exposure to each of the values in turn, one per animation frame; resolves with
+# {total, handler}: ms from each change to its pixel read back, and in the input handler.
+EXPOSURE_CHANGES = """
+const [values, done] = arguments;
+const c = document.getElementById('view'), ex = document.getElementById('exposure');
+const probe = document.createElement('canvas');
+probe.width = probe.height = 1;
+const px = probe.getContext('2d', {willReadFrequently: true});
+const total = [], handler = [];
+let i = 0;
+const step = () => {
+  const t0 = performance.now();
+  ex.value = values[i];
+  ex.dispatchEvent(new Event('input'));
+  const t1 = performance.now();
+  requestAnimationFrame(() => {
+    px.drawImage(c, c.width >> 1, c.height >> 1, 1, 1, 0, 0, 1, 1);
+    px.getImageData(0, 0, 1, 1);
+    total.push(performance.now() - t0);
+    handler.push(t1 - t0);
+    if (++i < values.length) step(); else done({total, handler});
+  });
+};
+requestAnimationFrame(step);
+"""
+
+# The sum of R, G and B of the canvas's centre pixel, and the canvas's size.
+CENTRE = """
+const c = document.getElementById('view'), s = document.createElement('canvas');
+s.width = s.height = 1;
+const x = s.getContext('2d');
+x.drawImage(c, c.width >> 1, c.height >> 1, 1, 1, 0, 0, 1, 1);
+const d = x.getImageData(0, 0, 1, 1).data;
+return [d[0] + d[1] + d[2], c.width, c.height];
+"""
+
 
 def browser():
     opts = webdriver.ChromeOptions()
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                 "--window-size=1280,800"):
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
+                 "--disable-dev-shm-usage", "--window-size=1280,800"):
         opts.add_argument(flag)
     opts.binary_location = "/usr/bin/chromium"
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
@@ -63,6 +109,8 @@ def main():
     ap.add_argument("--param", default="radius")
     ap.add_argument("--values", default="0.3,0.45,0.6,0.75,0.9")
     ap.add_argument("--runs", type=int, default=15)
+    ap.add_argument("--exposure", action="store_true",
+                    help="time exposure changes (display only) instead of parameter changes")
     args = ap.parse_args()
     server = subprocess.Popen([args.bin, "view", args.graph, "--size", args.size,
                                "--threads", "2"], stdout=subprocess.PIPE, text=True)
@@ -73,28 +121,47 @@ def main():
     drv = browser()
     try:
         drv.get(url.group(0))
+        drv.set_script_timeout(60)
         wait = WebDriverWait(drv, 60, poll_frequency=0.1)
-        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, f"#node-table [data-node='{args.node}']"))
-        drv.find_element(By.CSS_SELECTOR, f"#node-table [data-node='{args.node}']").click()
-        box = f"param-{args.node}-{args.param}"
-        wait.until(lambda d: d.find_elements(By.ID, box))
-        drv.set_script_timeout(30)
-        values = args.values.split(",")
-        times = []
-        for i in range(args.runs + 1):
-            ms = drv.execute_async_script(CHANGE_AND_WAIT, box, values[i % len(values)])
-            if i:  # the first change also warms the page's buffers
-                times.append(ms)
+        measure = measure_exposure if args.exposure else measure_param
+        times = measure(drv, wait, args)
     finally:
         drv.quit()
         server.terminate()
         server.wait()
+
+
+def measure_param(drv, wait, args):
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, f"#node-table [data-node='{args.node}']"))
+    drv.find_element(By.CSS_SELECTOR, f"#node-table [data-node='{args.node}']").click()
+    box = f"param-{args.node}-{args.param}"
+    wait.until(lambda d: d.find_elements(By.ID, box))
+    values = args.values.split(",")
+    times = []
+    for i in range(args.runs + 1):
+        ms = drv.execute_async_script(CHANGE_AND_WAIT, box, values[i % len(values)])
+        if i:  # the first change also warms the page's buffers
+            times.append(ms)
     if min(times) < 0:
         sys.exit("a change never reached the canvas")
     print("%s at %s: %s.%s changed in the page -> new image drawn" %
           (args.graph, args.size, args.node, args.param))
     print("median %.0f ms   min %.0f   max %.0f   (%d changes)" %
           (statistics.median(times), min(times), max(times), len(times)))
+
+
+def measure_exposure(drv, wait, args):
+    w, h = (int(v) for v in args.size.split("x"))
+    # the first image drawn: the canvas at the frame size and its centre no longer black
+    wait.until(lambda d: (lambda r: r[0] > 0 and r[1:] == [w, h])(d.execute_script(CENTRE)))
+    values = [str((i % 40 - 20) / 10) for i in range(args.runs + 1)]
+    r = drv.execute_async_script(EXPOSURE_CHANGES, values)
+    total, handler = r["total"][1:], r["handler"][1:]  # the first also warms the page up
+    print("%s at %s: exposure changed in the page -> new image read back" %
+          (args.graph, args.size))
+    for name, ms in (("change to image", total), ("input handler", handler)):
+        print("%-16s median %6.1f ms   min %6.1f   max %6.1f   (%d changes)" %
+              (name, statistics.median(ms), min(ms), max(ms), len(ms)))
 
 
 if __name__ == "__main__":

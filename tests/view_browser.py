@@ -256,7 +256,34 @@ def step_tonemap(drv):
             if not got:
                 fail(f"{port} {curve}: the canvas differs from {path} by "
                      f"{canvas_vs_png(drv, path)} (codes, at x, y, channel)")
+    # false colour: every pixel one of the 256 viridis entries (image.js's table)
     set_display(drv, 0, "clamp", "viridis")
+    wait_for(drv, "f.out in viridis", lambda d: not outside_viridis(d))
+    if outside_viridis(drv):
+        fail(f"f.out in false colour has colours outside viridis: {outside_viridis(drv)[:5]}")
+
+
+# matplotlib's viridis at 11 stops, as image.js interpolates it into 256 entries
+VIRIDIS = [(68, 1, 84), (72, 36, 117), (65, 68, 135), (53, 95, 141), (42, 120, 142),
+           (33, 145, 140), (34, 168, 132), (68, 191, 112), (122, 209, 81), (189, 223, 38),
+           (253, 231, 37)]
+
+
+def viridis_256():
+    """The 256 entries as bytes (a Uint8ClampedArray rounds half to even, as round does)."""
+    out = set()
+    for i in range(256):
+        t = i / 255 * 10
+        k = min(9, int(t))
+        out.add(bytes(round(VIRIDIS[k][j] * (1 - (t - k)) + VIRIDIS[k + 1][j] * (t - k))
+                      for j in range(3)))
+    return out
+
+
+def outside_viridis(drv):
+    """The canvas colours that are not viridis entries."""
+    px = base64.b64decode(drv.execute_script(CANVAS_BYTES)[2])
+    return sorted({px[i:i + 3] for i in range(0, len(px), 4)} - viridis_256())
 
 
 def step_click_node(drv):

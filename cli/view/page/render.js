@@ -19,9 +19,8 @@ export function scheduleRender() {
 function frameOf(st) {
   const p = state.ports, [W, H] = st.size;
   const b = p.ab ? state.images.get(p.b) || null : null;
-  return { W, H, a: state.images.get(p.a) || null, b, difference: p.ab && p.mode === 'diff',
-    splitX: p.ab && p.mode === 'split' ? Math.round(state.divider * W) : W,
-    display: state.display };
+  return { W, H, a: state.images.get(p.a) || null, b, ab: p.ab ? p.mode : 'none',
+    splitX: Math.round(state.divider * W), display: state.display };
 }
 
 const sameFrame = (f, g) => g && Object.keys(f).every((k) => f[k] === g[k]);

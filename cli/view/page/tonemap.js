@@ -2,9 +2,10 @@
 // once as a float texture, and a fragment shader applies exposure, the CLI's tone curves and
 // sRGB encoding (core/io/tonemap.h: the same formulas, constants and rounding, so the canvas
 // shows the bytes `ssgraph run --show ... --tonemap C --exposure E` writes to its PNGs), or
-// viridis false colour, and the A/B split or difference. A change of exposure, curve,
-// channel, colour map or divider is one draw of one triangle; no pixel loop runs in
-// JavaScript. A browser without WebGL2 gets a named error, not a second, slower path.
+// viridis false colour, and the A/B split or difference. A change of exposure or of the
+// divider is one draw of one triangle (of the curve, channel or colour map, the first time
+// also a program compiled); no pixel loop runs in JavaScript. A browser without WebGL2 gets
+// a named error, not a second, slower path.
 import { VIRIDIS_RGBA } from './image.js';
 
 const VERTEX = `#version 300 es
@@ -13,29 +14,31 @@ void main() { // one triangle that covers the canvas
   gl_Position = vec4(p, 0.0, 1.0);
 }`;
 
-const FRAGMENT = `#version 300 es
+// The fragment shader is specialised (as mpv's video/out/gpu writes its passes): the curve,
+// the A/B view and what each side shows are #defines and generated lines, so a pixel runs
+// straight-line code (on SwiftShader, the CPU WebGL of headless Chromium, every branch not
+// taken by the compiler costs its full price). A program per combination, made when first
+// needed; exposure and the divider stay uniforms, so dragging them never compiles.
+const HEAD = `#version 300 es
 precision highp float;
 precision highp int;
 uniform highp sampler2D imageA, imageB; // the float images, channels in .rgba
 uniform highp sampler2D viridis;        // 256x1, entry floor(255 v) for v in [0, 1]
 uniform ivec2 frame;                    // the canvas in pixels (the full frame size)
-uniform int channelsA, channelsB;       // channels of each image (4 at most); 0: none yet
-uniform int splitX;                     // B from this column on (frame.x: A alone)
-uniform bool difference;                // |A - B| over the whole frame
+uniform int splitX;                     // AB_SPLIT: B from this column on
 uniform float gain;                     // 2^stops
-uniform int curve;                      // 0 clamp, 1 reinhard, 2 aces (enum ssg_tonemap)
-uniform int pick;                       // -1 colour, 0..3 the one channel R, G, B, A
-uniform bool falseColour;               // one-channel views through viridis, else grey
 out vec4 colour;
 
 // ssg_tonemap_scaled: capped at 1e4 so the rational curves never see inf/inf.
 float tone(float v) {
   if (!(v > 0.0)) return 0.0; // negative, zero, NaN
   v = min(v, 1e4);
-  float d = v;
-  if (curve == 1) d = v / (1.0 + v);
-  else if (curve == 2) d = (v * (2.51 * v + 0.03)) / (v * (2.43 * v + 0.59) + 0.14);
-  return min(d, 1.0);
+#if CURVE == 1
+  v = v / (1.0 + v);
+#elif CURVE == 2
+  v = (v * (2.51 * v + 0.03)) / (v * (2.43 * v + 0.59) + 0.14);
+#endif
+  return min(v, 1.0);
 }
 
 // ssg_srgb8_scaled: IEC 61966-2-1 encoding, rounded to the nearest of 256 codes; the code
@@ -46,37 +49,78 @@ float code(float v) {
   return clamp(floor(s * 255.0 + 0.5), 0.0, 255.0) / 255.0;
 }
 
+// The exposure-scaled value in [0, 1] through the viridis table.
+vec3 falseColour(float v) {
+  v *= gain;
+  int k = !(v > 0.0) ? 0 : v >= 1.0 ? 255 : int(v * 255.0);
+  return texelFetch(viridis, ivec2(k, 0), 0).rgb;
+}
+
 // The texel under frame pixel p of an image of any size (a preview fills the frame).
 vec4 texel(highp sampler2D t, ivec2 p) {
   ivec2 size = textureSize(t, 0);
   ivec2 q = ivec2((vec2(p) + 0.5) * vec2(size) / vec2(frame));
   return texelFetch(t, min(q, size - 1), 0);
 }
+`;
 
-vec3 shade(vec4 px, int c) {
-  if (c == 0) return vec3(0.0);
-  if (c > 1 && pick < 0) return vec3(code(px.r), code(px.g), code(px.b));
-  float v = px[c == 1 ? 0 : pick]; // a missing channel reads 0 (R, G, B) or 1 (A)
-  if (!falseColour) return vec3(code(v));
-  v *= gain;
-  int k = !(v > 0.0) ? 0 : v >= 1.0 ? 255 : int(v * 255.0);
-  return texelFetch(viridis, ivec2(k, 0), 0).rgb;
+// What one side shows: colour (the first three channels), or one channel (a missing one
+// reads 0, or 1 for A) as grey or in false colour.
+const SHOW = { colour: 0, grey: 1, falseColour: 2 };
+const SHADE = [
+  () => 'vec3(code(px.r), code(px.g), code(px.b))',
+  (ch) => `vec3(code(px.${'rgba'[ch]}))`,
+  (ch) => `falseColour(px.${'rgba'[ch]})`,
+];
+const shadeFunction = (name, side) =>
+  `vec3 ${name}(vec4 px) { return ${SHADE[side.show](side.channel)}; }\n`;
+
+// The frame from the image(s), by A/B view: A alone, split at splitX, |A - B|.
+const AB = { none: 0, split: 1, diff: 2 };
+const MAIN = [
+  'shadeA(texel(imageA, p))',
+  'p.x < splitX ? shadeA(texel(imageA, p)) : shadeB(texel(imageB, p))',
+  'shadeA(abs(texel(imageA, p) - texel(imageB, p)))',
+];
+
+// The shader of one combination {curve, ab, a, b: {show, channel}}, and the uniforms it uses.
+function fragment(v) {
+  const text = HEAD.replace('\n', `\n#define CURVE ${v.curve}\n`) +
+    shadeFunction('shadeA', v.a) + shadeFunction('shadeB', v.b) +
+    'void main() {\n  ivec2 p = ivec2(int(gl_FragCoord.x), frame.y - 1 - int(gl_FragCoord.y));\n' +
+    `  colour = vec4(${MAIN[v.ab]}, 1.0);\n}\n`;
+  const uniforms = ['imageA', 'frame', 'gain'];
+  if (v.ab !== AB.none) uniforms.push('imageB');
+  if (v.ab === AB.split) uniforms.push('splitX');
+  if (v.a.show === SHOW.falseColour || (v.ab === AB.split && v.b.show === SHOW.falseColour)) {
+    uniforms.push('viridis');
+  }
+  return { text, uniforms };
 }
 
-void main() {
-  ivec2 p = ivec2(int(gl_FragCoord.x), frame.y - 1 - int(gl_FragCoord.y)); // rows top down
-  vec3 rgb;
-  if (difference) rgb = shade(abs(texel(imageA, p) - texel(imageB, p)), channelsA);
-  else if (p.x >= splitX) rgb = shade(texel(imageB, p), channelsB);
-  else rgb = shade(texel(imageA, p), channelsA);
-  colour = vec4(rgb, 1.0);
-}`;
+// Each uniform's value for a frame f (see ImageView.draw).
+const SETTERS = {
+  imageA: (gl, loc) => gl.uniform1i(loc, 0),
+  imageB: (gl, loc) => gl.uniform1i(loc, 1),
+  viridis: (gl, loc) => gl.uniform1i(loc, 2),
+  frame: (gl, loc, f) => gl.uniform2i(loc, f.W, f.H),
+  gain: (gl, loc, f) => gl.uniform1f(loc, 2 ** f.display.stops),
+  splitX: (gl, loc, f) => gl.uniform1i(loc, f.splitX),
+};
 
-// The uniforms' values by the page's names (state.js display).
+// The page's names (state.js display) as the shader's numbers.
 const CURVES = { clamp: 0, reinhard: 1, aces: 2 };
 const PICKS = { rgb: -1, r: 0, g: 1, b: 2, a: 3 };
 // Texture formats by channel count (an image of more channels shows its first four).
 const FORMATS = [null, ['R32F', 'RED'], ['RG32F', 'RG'], ['RGB32F', 'RGB'], ['RGBA32F', 'RGBA']];
+
+// What a side shows for an image (null: none yet, drawn black from the 1x1 zero texture).
+function sideOf(img, d) {
+  const pick = PICKS[d.channel] ?? -1;
+  if (!img || (img.c > 1 && pick < 0)) return { show: SHOW.colour, channel: 0 };
+  return { show: d.colormap === 'viridis' ? SHOW.falseColour : SHOW.grey,
+    channel: img.c === 1 ? 0 : pick };
+}
 
 function compile(gl, type, text) {
   const sh = gl.createShader(type);
@@ -88,10 +132,10 @@ function compile(gl, type, text) {
   return sh;
 }
 
-function link(gl) {
+function link(gl, fragmentText) {
   const prog = gl.createProgram();
   gl.attachShader(prog, compile(gl, gl.VERTEX_SHADER, VERTEX));
-  gl.attachShader(prog, compile(gl, gl.FRAGMENT_SHADER, FRAGMENT));
+  gl.attachShader(prog, compile(gl, gl.FRAGMENT_SHADER, fragmentText));
   gl.linkProgram(prog);
   if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) {
     throw new Error(`the display shader does not link: ${gl.getProgramInfoLog(prog)}`);
@@ -133,18 +177,24 @@ export class ImageView {
       stencil: false, preserveDrawingBuffer: true });
     if (!gl) throw new Error('this page needs WebGL2 to show images (any current browser has it)');
     this.gl = gl;
-    this.prog = link(gl);
-    this.loc = locations(gl, this.prog, ['imageA', 'imageB', 'viridis', 'frame', 'channelsA',
-      'channelsB', 'splitX', 'difference', 'gain', 'curve', 'pick', 'falseColour']);
+    this.programs = new Map(); // fragment(v) key -> {prog, loc}
     this.maxSize = gl.getParameter(gl.MAX_TEXTURE_SIZE);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     this.textures = [0, 1, 2].map(() => gl.createTexture());
+    this.zero = { w: 1, h: 1, c: 1, data: new Float32Array(1) };
     this.shown = [null, null]; // the image each of units 0 and 1 holds
-    const zero = { w: 1, h: 1, c: 1, data: new Float32Array(1) };
-    this.upload(0, zero);
-    this.upload(1, zero);
     this.bind(2, gl.RGBA8, 256, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(VIRIDIS_RGBA));
-    this.shown = [null, null];
+  }
+
+  // The program of a combination (fragment()), linked when first asked for.
+  program(v) {
+    const key = JSON.stringify(v);
+    if (!this.programs.has(key)) {
+      const { text, uniforms } = fragment(v);
+      const prog = link(this.gl, text);
+      this.programs.set(key, { prog, loc: locations(this.gl, prog, uniforms) });
+    }
+    return this.programs.get(key);
   }
 
   // Texture unit u holds pixels (w x 1 or the image's size) with nearest sampling.
@@ -171,27 +221,20 @@ export class ImageView {
     this.shown[u] = img;
   }
 
-  // One frame: {W, H, a, b: images or null, splitX, difference, display: state.display}.
+  // One frame: {W, H, a, b: images or null, ab: 'none'|'split'|'diff', splitX, display}.
   draw(f) {
-    const gl = this.gl, loc = this.loc, d = f.display;
-    if (f.a) this.upload(0, f.a);
-    if (f.b) this.upload(1, f.b);
+    const gl = this.gl, d = f.display;
+    this.upload(0, f.a || this.zero);
+    this.upload(1, f.b || this.zero);
+    const { prog, loc } = this.program({ curve: CURVES[d.curve] ?? 0, ab: AB[f.ab],
+      a: sideOf(f.a, d), b: sideOf(f.b, d) });
     gl.viewport(0, 0, f.W, f.H);
-    gl.useProgram(this.prog);
-    for (const [name, u] of [['imageA', 0], ['imageB', 1], ['viridis', 2]]) {
+    gl.useProgram(prog);
+    for (let u = 0; u < 3; u++) {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, this.textures[u]);
-      gl.uniform1i(loc[name], u);
     }
-    gl.uniform2i(loc.frame, f.W, f.H);
-    gl.uniform1i(loc.channelsA, f.a ? Math.min(f.a.c, 4) : 0);
-    gl.uniform1i(loc.channelsB, f.b ? Math.min(f.b.c, 4) : 0);
-    gl.uniform1i(loc.splitX, f.splitX);
-    gl.uniform1i(loc.difference, f.difference ? 1 : 0);
-    gl.uniform1f(loc.gain, 2 ** d.stops);
-    gl.uniform1i(loc.curve, CURVES[d.curve] ?? 0);
-    gl.uniform1i(loc.pick, PICKS[d.channel] ?? -1);
-    gl.uniform1i(loc.falseColour, d.colormap === 'viridis' ? 1 : 0);
+    for (const name of Object.keys(loc)) SETTERS[name](gl, loc[name], f);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 }
