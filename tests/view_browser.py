@@ -301,8 +301,9 @@ def step_click_node(drv):
     wait_for(drv, "the panel of node do", lambda d: text(d, "node-name") == "do")
     if not drv.find_elements(By.ID, "param-do-radius-slider"):
         fail("node do has no radius slider in its panel")
-    if Select(drv.find_element(By.ID, "port-a")).first_selected_option.text != "do.out":
-        fail("clicking do did not show do.out")
+    # the page shows a change at its next animation frame (render.js)
+    wait_for(drv, "clicking do to show do.out", lambda d: Select(
+        d.find_element(By.ID, "port-a")).first_selected_option.text == "do.out")
     if "selected" not in (target[0].get_attribute("class") or ""):
         fail("the clicked node is not marked selected")
     wait_for(drv, "do.out drawn", lambda d: d.execute_script(CANVAS_HASH) != before)
@@ -399,8 +400,8 @@ def step_display(drv):
         r"img\.out +x,y \d+,\d+: [-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+$", text(d, "pixel")))
     gen, before = generation(drv), drv.execute_script(CANVAS_HASH)
     drv.find_element(By.ID, "exposure").send_keys(*[Keys.ARROW_RIGHT] * 10)
-    if text(drv, "exposure-val") != "1.0":
-        fail(f"exposure shows {text(drv, 'exposure-val')} after +1 stop")
+    wait_for(drv, "the exposure to show 1.0 after +1 stop",
+             lambda d: text(d, "exposure-val") == "1.0")
     wait_for(drv, "the canvas to brighten", lambda d: d.execute_script(CANVAS_HASH) != before)
     before = drv.execute_script(CANVAS_HASH)
     Select(drv.find_element(By.ID, "channel")).select_by_value("g")
