@@ -23,8 +23,8 @@ static void print_loads(FILE *f, int name_width)
 /* One frame: every node's last run, the one-off loads, then the whole run's wall clock. */
 static void print_timings(const struct ssg_run_stats *s, FILE *f)
 {
-    fprintf(f, "%-16s %-12s %-4s %10s %10s %10s\n", "node", "type", "on", "ms", "gpu ms",
-            "xfer ms");
+    fprintf(f, "%-16s %-12s %-4s %10s %10s %10s  %s\n", "node", "type", "on", "ms", "gpu ms",
+            "xfer ms", "why");
     for (int i = 0; i < s->node_count; i++) {
         const struct ssg_run_node *n = &s->nodes[i];
         char gpu[32] = "-", xfer[32] = "-";
@@ -32,8 +32,12 @@ static void print_timings(const struct ssg_run_stats *s, FILE *f)
             snprintf(gpu, sizeof gpu, "%.2f", n->gpu_ms);
         if (n->transfer_ms > 0)
             snprintf(xfer, sizeof xfer, "%.2f", n->transfer_ms);
-        fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s\n", n->name, n->type, n->backend, n->ms,
-                gpu, xfer);
+        if (n->kept) /* its outputs stood: no time of this run */
+            fprintf(f, "%-16s %-12s %-4s %10s %10s %10s  %s\n", n->name, n->type, n->backend,
+                    "-", "-", "-", n->why);
+        else
+            fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s  %s\n", n->name, n->type,
+                    n->backend, n->ms, gpu, xfer, n->why);
     }
     print_loads(f, 16);
     fprintf(f, "%-16s %-12s %-4s %10.2f %10s %10s   (%dx%d, %d threads, peak images %.1f MB)\n",
@@ -41,10 +45,11 @@ static void print_timings(const struct ssg_run_stats *s, FILE *f)
             (double)s->peak_pool_bytes / (1024.0 * 1024.0));
 }
 
-/* A node ran in every frame: a pass, under the frame in the tree; else a sink. */
+/* A node ran or was kept in every frame: a pass, under the frame in the tree; else a
+   sink. */
 static int in_frame(const struct ssg_run_stats *s, const struct ssg_run_node *n)
 {
-    return n->calls == s->frames;
+    return n->calls + n->kept == s->frames;
 }
 
 /* The roofline columns of a row: GB/s, GFLOP/s, bound and the fraction of it. */
@@ -67,13 +72,13 @@ static void print_profile_row(const struct ssg_run_stats *s, const struct ssg_ru
     char gpu[32] = "-", share[16] = "     -", name[64], rates[80];
     if (!strcmp(n->backend, "gl"))
         snprintf(gpu, sizeof gpu, "%.2f", n->gpu_avg_ms);
-    if (in_frame(s, n) && s->frame_avg_ms > 0)
+    if (n->calls == s->frames && s->frame_avg_ms > 0)
         snprintf(share, sizeof share, "%5.1f%%", 100.0 * n->share);
     snprintf(name, sizeof name, "%s%s", in_frame(s, n) ? "  " : "", n->name);
     rate_columns(s, n, peak, rates, sizeof rates);
-    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f%s\n", name, n->type,
-            n->backend, n->calls, n->avg_ms, n->min_ms, n->max_ms, share, gpu, n->prepare_ms,
-            rates);
+    fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %7s %10s %10.2f%s  %s\n", name,
+            n->type, n->backend, n->calls, n->avg_ms, n->min_ms, n->max_ms, share, gpu,
+            n->prepare_ms, rates, n->why);
 }
 
 /* A profiler's tree: the frame at the root, the passes under it, then the sinks that ran
@@ -85,9 +90,9 @@ static void print_profile(const struct ssg_run_stats *s, FILE *f)
     char path[4096] = "";
     int have_peak = ssg_peak_load(&peak);
     ssg_peak_path(path, sizeof path);
-    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s %8s %8s %-7s %6s\n", "node",
-            "type", "on", "calls", "avg ms", "min ms", "max ms", "share", "gpu ms",
-            "prepare ms", "GB/s", "GFLOP/s", "bound", "%bound");
+    fprintf(f, "%-18s %-12s %-4s %6s %10s %10s %10s %7s %10s %10s %8s %8s %-7s %6s  %s\n",
+            "node", "type", "on", "calls", "avg ms", "min ms", "max ms", "share", "gpu ms",
+            "prepare ms", "GB/s", "GFLOP/s", "bound", "%bound", "why");
     double median = s->frame_median_ms;
     fprintf(f, "%-18s %-12s %-4s %6d %10.2f %10.2f %10.2f %6.1f%%   (%dx%d, %d threads, "
             "%.1f fps; median frame %.2f ms, %.1f fps)\n", "frame", "", "", s->frames, frame,
@@ -170,16 +175,17 @@ static void write_json(FILE *f, const void *user)
             snprintf(bound, sizeof bound, "\"%s\"", r.bound);
             snprintf(frac, sizeof frac, "%.6g", r.fraction);
         }
-        if (in_frame(s, n) && s->frame_avg_ms > 0)
+        if (n->calls == s->frames && s->frame_avg_ms > 0)
             snprintf(share, sizeof share, "%.6g", n->share);
         fprintf(f, "%s\n    {\"name\": \"%s\", \"type\": \"%s\", \"backend\": \"%s\", "
                 "\"calls\": %d, \"avg_ms\": %.6g, \"min_ms\": %.6g, \"max_ms\": %.6g, "
                 "\"median_ms\": %.6g, \"share\": %s, \"gpu_avg_ms\": %.6g, \"transfer_avg_ms\": %.6g, "
                 "\"prepare_ms\": %.6g, \"bytes\": %.0f, \"flops\": %s, \"gbps\": %.6g, "
-                "\"gflops\": %s, \"bound\": %s, \"fraction_of_bound\": %s}",
+                "\"gflops\": %s, \"bound\": %s, \"fraction_of_bound\": %s, \"kept\": %d, "
+                "\"why\": \"%s\"}",
                 i ? "," : "", n->name, n->type, n->backend, n->calls, n->avg_ms, n->min_ms,
                 n->max_ms, n->median_ms, share, n->gpu_avg_ms, n->transfer_avg_ms, n->prepare_ms, n->bytes,
-                flops, r.gbps, gflops, bound, frac);
+                flops, r.gbps, gflops, bound, frac, n->kept, n->why);
     }
     fputs("\n  ],\n", f);
     write_loads_json(f);

@@ -186,6 +186,12 @@ struct ssg_run_node {
                                least traffic it can have) */
     double flops;           /* a run's floating-point operations as the node declares them
                                (flops_per_pixel, node.h); -1 = not declared */
+    int kept;               /* frames in which it did not run: its outputs from before
+                               stood (a live graph's earlier run, a sequence's first frame) */
+    char *why;              /* why it ran or was kept, each reason with its count over the
+                               frames, first the reasons it ran: "first run", "camera moved
+                               x3", "parameter changed", "input g ran", "new frame x4",
+                               "kept x3" (docs/development.md); owned by the stats */
 };
 
 struct ssg_run_stats {
@@ -361,8 +367,8 @@ SSG_API enum ssg_err ssg_graph_supply(struct ssg_graph *graph, const char *node,
  * float), target = position in float, up parallel to the view or zero, fov_y outside
  * [0.001, 179.999]; a graph without a scene has no camera
  * (SSG_E_SCENE). On a kept graph a new camera makes every node prepare and run again
- * except those that never read it (lightprobe, shadow maps, halton: camera_independent in
- * docs/adding-a-node.md) whose producers are kept as well. */
+ * except those that never read it (lightprobe, shadow maps, halton: their descriptor's
+ * `reads` leaves out the camera, docs/development.md) whose producers are kept as well. */
 struct ssg_view {
     float position[3]; /* world, scene units */
     float target[3];   /* the world point looked at */
@@ -373,6 +379,18 @@ SSG_API enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_vi
                                     struct ssg_diags *diags);
 SSG_API enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
                                         struct ssg_diags *diags);
+
+/* Replaces the lights and environment of the graph's scene with those of the scene file
+ * `lights` (point_light, directional_light and environment lines only, as --lights and
+ * ssg_overrides.lights take), or with the scene file's own where lights is NULL; the
+ * geometry and camera stay. Refused, with the graph as it was, when the file does not
+ * load (its file:line:column), when the graph reads a light the new set leaves black, or
+ * when a node refuses the new lights' shapes; SSG_E_SCENE for a graph without a scene. On
+ * a kept graph the nodes that read the lights prepare and run again (direct light, the
+ * light and shadow maps, the probe's lights, the G-buffer's lit ports), and their readers
+ * after them; the rest are kept. */
+SSG_API enum ssg_err ssg_graph_set_lights(struct ssg_graph *graph, const char *lights,
+                                          struct ssg_diags *diags);
 
 /* Time (docs/time.md). Frame f of a sequence is at time f / fps (the scene's frame_rate,
  * 30 without one); a scene with a camera path (camera_key lines or an orbit) gives each

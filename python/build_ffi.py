@@ -119,7 +119,7 @@ struct ssg_run_metric { char node[64]; char name[32]; double value; ...; };
 struct ssg_run_node {
     char *name; const char *type; const char *backend; double ms; double gpu_ms;
     double transfer_ms; int calls; double avg_ms; double min_ms; double max_ms;
-    double median_ms; double share; double prepare_ms; ...;
+    double median_ms; double share; double prepare_ms; int kept; char *why; ...;
 };
 struct ssg_run_stats {
     int frames; double frame_avg_ms; double frame_min_ms; double frame_max_ms;
@@ -160,6 +160,8 @@ enum ssg_err ssg_graph_view(const struct ssg_graph *graph, struct ssg_view *out,
                             struct ssg_diags *diags);
 enum ssg_err ssg_graph_set_view(struct ssg_graph *graph, const struct ssg_view *view,
                                 struct ssg_diags *diags);
+enum ssg_err ssg_graph_set_lights(struct ssg_graph *graph, const char *lights,
+                                  struct ssg_diags *diags);
 enum ssg_err ssg_graph_camera_at(const struct ssg_graph *graph, int frame_index,
                                  struct ssg_view *out, struct ssg_diags *diags);
 enum ssg_err ssg_graph_set_frame(struct ssg_graph *graph, int frame_index,

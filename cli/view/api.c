@@ -139,6 +139,8 @@ static void json_node(FILE *f, const struct view_session *s, const struct ssg_gr
     fprintf(f, ",\"live\":%s,\"ran\":%s,\"ms\":", r ? "true" : "false",
             r && r->calls ? "true" : "false");
     ssg_json_number(f, r && r->calls ? r->ms : 0.0);
+    fputs(",\"why\":", f); /* why it ran or was kept (docs/development.md) */
+    ssg_json_string(f, r && r->why ? r->why : "");
     fputs(",\"doc\":", f);
     ssg_json_string(f, summary(n.type));
     fputs(",\"params\":[", f);

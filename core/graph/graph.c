@@ -15,7 +15,7 @@
 static int needs_scene(const struct ssg_graph *g, struct ssg_loc *where)
 {
     for (int i = 0; i < g->count; i++) {
-        if (g->nodes[i].desc->needs_scene) {
+        if (g->nodes[i].desc->reads & SSG_READS_SCENE) { /* declared: undeclared needs none */
             *where = g->nodes[i].loc;
             return 1;
         }
@@ -139,6 +139,44 @@ static enum ssg_err check_scene_light(const struct ssg_graph *g, struct ssg_diag
                 "directional_light or environment line in the scene, or --lights "
                 "examples/lights/sky.scene)", c->ref, g->nodes[reader].name, g->scene->path);
     return SSG_E_SCENE;
+}
+
+enum ssg_err ssg_graph_set_lights(struct ssg_graph *g, const char *lights,
+                                  struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_set_lights", "graph", 1, g))
+        return SSG_E_USAGE;
+    if (!g->scene) {
+        ssg_diag_file(diags, SSG_E_SCENE, g->path, "cannot set the lights: the graph has no "
+                      "scene (expected a line scene \"file.scene\" or --scene FILE)");
+        return SSG_E_SCENE;
+    }
+    struct ssg_scene *lit = NULL; /* the scene anew under these lights: they move over */
+    enum ssg_err e = ssg_scene_load_lit(g->scene_path, lights, 1, &lit, diags);
+    struct ssg_shapes_saved *shapes = e ? NULL : ssg_shapes_save(g);
+    if (!e && !shapes)
+        e = SSG_E_NOMEM;
+    if (!e) {
+        ssg_scene_swap_lights(g->scene, lit);
+        e = check_scene_light(g, diags);
+        if (!e)
+            e = ssg_graph_reinfer(g, diags);
+        if (e) { /* the graph stays as it was */
+            struct ssg_diags quiet = {0};
+            ssg_scene_swap_lights(g->scene, lit);
+            ssg_graph_reinfer(g, &quiet);
+        }
+    }
+    if (!e) {
+        snprintf(g->lights_path, sizeof g->lights_path, "%s", lights ? lights : "");
+        if (g->live)
+            ssg_redo_reading(g, g->live, SSG_READS_LIGHTS, SSG_RECOMPUTE_PREPARE,
+                             SSG_WHY_LIGHTS);
+        ssg_redo_moved(g, shapes);
+    }
+    free(shapes);
+    ssg_scene_destroy(&lit); /* with the lights it gave up */
+    return e;
 }
 
 static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,

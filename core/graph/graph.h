@@ -117,11 +117,13 @@ int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int li
 /* After frame `frame` ran: it is the one the next frame follows on from. */
 void ssg_time_end(struct ssg_graph *g, int frame);
 
-/* What a live graph keeps from one ssg_graph_run to the next (graph_live.c): per run
- * position, what prepare() made, its scratch, whether it is prepared, and whether its
- * outputs are kept from the last run and still current; the pool the images live in. A
- * changed parameter clears its node's entries (ssg_graph_set); a run then re-runs a node
- * whose outputs are not kept or one of whose inputs' producers ran (graph_run.c). */
+/* What a graph knows of its nodes between runs (a live graph: ssg_graph_keep) or between
+ * the frames of one run (every run has one; a live graph's is kept): per run position,
+ * what prepare() made, its scratch, whether it is prepared, whether its outputs are kept
+ * and still current, and why not (the reason of the event that cleared them); the pool
+ * the images live in. Only graph_redo.c's functions clear `kept`, `prepared` and `consts`
+ * for a reason; a run re-runs a node whose outputs are not kept or one of whose producers
+ * ran in the frame (ssg_redo_decide). */
 struct ssg_live {
     size_t max_bytes;          /* kept images beyond this are evicted, largest first */
     struct ssg_pool *pool;
@@ -129,13 +131,65 @@ struct ssg_live {
     struct ssg_scratch *scratch;
     unsigned char *prepared;
     unsigned char *kept;
+    unsigned char *why;        /* enum ssg_why of the first event since the node last ran */
     int count;                 /* run positions */
     int used_gl;               /* a run used GL: images may hold textures */
 };
-/* After a live run: marks what ran as kept (nothing on error), then evicts the largest
- * kept outputs while they exceed max_bytes (graph_live.c). */
-void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
-                        int used_gl);
+/* The arrays and pool of a state for `count` run positions; 0 on out of memory (what was
+   made is then freed by ssg_live_release). */
+int ssg_live_init(struct ssg_live *l, int count);
+/* Gives back every image the state holds (its nodes' outputs, the history) and frees its
+   arrays and pool; GL must be open where a run used it (textures). */
+void ssg_live_release(struct ssg_graph *g, struct ssg_live *l);
+/* After a live run: evicts the largest kept outputs while they exceed max_bytes
+   (graph_live.c). */
+void ssg_live_after_run(struct ssg_graph *g, int used_gl);
+
+/* Every node's shapes before a change (ssg_graph_set, ssg_graph_set_lights), malloc'd;
+   NULL on out of memory. ssg_redo_moved then makes every node whose shapes the change
+   moved redo its history (graph_live.c). */
+struct ssg_shapes_saved;
+struct ssg_shapes_saved *ssg_shapes_save(const struct ssg_graph *g);
+void ssg_redo_moved(struct ssg_graph *g, const struct ssg_shapes_saved *saved);
+
+/* Why a node ran in a frame, or that it was kept (graph_redo.c). When several hold, the
+ * first in this order is the one told. */
+enum ssg_why {
+    SSG_WHY_KEPT,     /* its outputs from before stand */
+    SSG_WHY_FIRST,    /* nothing from before: the first run */
+    SSG_WHY_SHAPE,    /* its input or output shapes changed */
+    SSG_WHY_PARAM,    /* one of its parameters changed */
+    SSG_WHY_SUPPLIED, /* the caller supplied a new image */
+    SSG_WHY_LIGHTS,   /* the scene's lights changed, and it reads them */
+    SSG_WHY_CAMERA,   /* the camera changed, and it reads it */
+    SSG_WHY_FRAME,    /* another frame, and it reads the frame index */
+    SSG_WHY_HISTORY,  /* it reads prev(): every frame is new to it */
+    SSG_WHY_EVICTED,  /* its kept outputs were given back (the live graph's memory bound) */
+    SSG_WHY_FAILED,   /* its last run failed */
+    SSG_WHY_SEQUENCE, /* a sequence keeps only what no frame of it can change */
+    SSG_WHY_INPUT,    /* a producer ran in this frame */
+    SSG_WHY_SINK,     /* a sink: its files and metrics are this run's */
+    SSG_WHY_COUNT
+};
+/* Node p (run position) must redo `level` (enum ssg_recompute: run, prepare, history) of
+   its work because of `why`: the one place a node's state is cleared. */
+void ssg_redo(struct ssg_graph *g, struct ssg_live *l, int p, unsigned level,
+              enum ssg_why why);
+/* The same for every node whose reads (node.h, ssg_node_reads) include one of `changed`. */
+void ssg_redo_reading(struct ssg_graph *g, struct ssg_live *l, unsigned changed,
+                      unsigned level, enum ssg_why why);
+/* Why node p runs in this frame, SSG_WHY_KEPT when it does not; ran[] marks the nodes
+   (by index) that ran in this frame; *producer the producer that ran (SSG_WHY_INPUT),
+   else -1. */
+enum ssg_why ssg_redo_decide(const struct ssg_graph *g, const struct ssg_live *l, int p,
+                             const unsigned char *ran, int *producer);
+/* After node p ran with result e: its outputs are kept when `keep` and it succeeded. */
+void ssg_redo_after(struct ssg_live *l, int p, int keep, enum ssg_err e);
+/* "first run", "camera moved"... */
+const char *ssg_why_text(enum ssg_why why);
+/* One line from the counts of each reason over a run's frames ("first run, kept x3");
+   producer names the producer of SSG_WHY_INPUT, NULL = none named. */
+void ssg_why_summary(const int *counts, const char *producer, char *buf, size_t len);
 /* Frees a live graph's state (opening GL to delete textures where a run used it). */
 void ssg_live_free(struct ssg_graph *g);
 

@@ -97,11 +97,20 @@ enum ssg_err ssg_history_begin(struct ssg_graph *g, struct ssg_pool *pool)
             }
         }
     }
-    /* A reader of prev() sees a new frame in every run: it never stands on kept outputs,
-       and its readers follow it (graph_run.c can_skip). Cleared after the slots looked. */
-    for (int p = 0; p < g->order_count; p++)
-        FOR_EACH_PREV(&g->nodes[g->order[p]], conn) g->live->kept[p] = 0;
-    return SSG_OK;
+    return SSG_OK; /* its readers run in every frame (graph_redo.c) */
+}
+
+int ssg_history_reads_prev(const struct gnode *n)
+{
+    FOR_EACH_PREV(n, conn) return 1;
+    return 0;
+}
+
+void ssg_history_forget_node(struct ssg_graph *g, struct ssg_pool *pool, int node)
+{
+    for (int i = 0; g->history && i < g->history->count; i++)
+        if (g->history->slots[i].node == node)
+            forget(&g->history->slots[i], pool);
 }
 
 void ssg_history_frame(struct ssg_graph *g, struct ssg_pool *pool)

@@ -28,9 +28,14 @@ struct ssg_pool;
 
 /* Before a run's first frame: makes the slots (none when nothing is read through prev());
    on a kept graph forgets the history of every port whose node will run afresh (a set, an
-   eviction: live->kept cleared) or whose shape changed, and makes every reader of prev()
-   run (its input is a new frame each run). SSG_E_NOMEM on out of memory. */
+   eviction: live->kept cleared) or whose shape changed. SSG_E_NOMEM on out of memory. */
 enum ssg_err ssg_history_begin(struct ssg_graph *g, struct ssg_pool *pool);
+/* 1 when node n reads an input through prev(): its input is a new frame in every frame,
+   so it runs in every one (graph_redo.c). */
+int ssg_history_reads_prev(const struct gnode *n);
+/* Forgets the frame before of every port of node `node` (index) read through prev(): its
+   readers start afresh (SSG_RECOMPUTE_HISTORY). */
+void ssg_history_forget_node(struct ssg_graph *g, struct ssg_pool *pool, int node);
 /* At the start of each frame: a new frame for the double buffers, and a pending cut
    (ssg_history_cut) empties every slot. */
 void ssg_history_frame(struct ssg_graph *g, struct ssg_pool *pool);

@@ -2,13 +2,13 @@
  * next, parameters changed on a loaded graph, and the kept images handed out.
  *
  * Correctness rule: a node's outputs are reused only while nothing they depend on has
- * changed. ssg_graph_set clears the changed node's prepared constants and kept outputs
- * (only its kept outputs when its check_params says the run alone reads the changed
- * parameter, node.h), and both of every node whose shapes the change moved; a run re-runs every node whose
- * outputs are not kept or one of whose producers ran (graph_run.c can_skip), so any
- * sequence of sets and runs gives the bytes of a fresh load with the final settings. A new
- * camera (ssg_graph_set_view) makes every node prepare and run again except those that
- * declare camera_independent (node.h); they still run when a producer runs. */
+ * changed. Every change here names what it changed to graph_redo.c (ssg_redo,
+ * ssg_redo_reading), the one rule for what runs again: a set, the node whose parameter it
+ * is (only a run when its check_params says the run alone reads it) and every node whose
+ * shapes moved; a new view, the camera's readers; new lights, theirs; a supplied image,
+ * its node. A run re-runs every node whose outputs are not kept or one of whose producers
+ * ran, so any sequence of changes and runs gives the bytes of a fresh load with the final
+ * settings. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,6 +16,17 @@
 #include "graph/graph.h"
 #include "graph/graph_history.h"
 #include "graph/image.h"
+
+int ssg_live_init(struct ssg_live *l, int count)
+{
+    size_t n = (size_t)(count ? count : 1);
+    *l = (struct ssg_live){.count = count, .pool = ssg_pool_create(),
+                           .consts = calloc(n, sizeof *l->consts),
+                           .scratch = calloc(n, sizeof *l->scratch),
+                           .prepared = calloc(n, 1), .kept = calloc(n, 1),
+                           .why = calloc(n, 1)};
+    return l->pool && l->consts && l->scratch && l->prepared && l->kept && l->why;
+}
 
 enum ssg_err ssg_graph_keep(struct ssg_graph *g, size_t max_bytes, struct ssg_diags *diags)
 {
@@ -26,20 +37,13 @@ enum ssg_err ssg_graph_keep(struct ssg_graph *g, size_t max_bytes, struct ssg_di
         return SSG_OK;
     }
     struct ssg_live *l = calloc(1, sizeof *l);
-    size_t count = (size_t)(g->order_count ? g->order_count : 1);
-    if (l) {
-        *l = (struct ssg_live){.max_bytes = max_bytes, .count = g->order_count,
-                               .pool = ssg_pool_create(),
-                               .consts = calloc(count, sizeof *l->consts),
-                               .scratch = calloc(count, sizeof *l->scratch),
-                               .prepared = calloc(count, 1), .kept = calloc(count, 1)};
-    }
     g->live = l;
-    if (!l || !l->pool || !l->consts || !l->scratch || !l->prepared || !l->kept) {
+    if (!l || !ssg_live_init(l, g->order_count)) {
         ssg_live_free(g);
         ssg_diag_file(diags, SSG_E_NOMEM, g->path, "out of memory keeping the run state");
         return SSG_E_NOMEM;
     }
+    l->max_bytes = max_bytes;
     return SSG_OK;
 }
 
@@ -55,46 +59,20 @@ static size_t kept_bytes(const struct ssg_graph *g, int p)
     return bytes;
 }
 
-/* Gives back node p's output images and forgets that they were current. */
-static void evict(struct ssg_graph *g, int p)
+/* Gives back node p's output images. */
+static void release_outputs(struct ssg_graph *g, struct ssg_live *l, int p)
 {
     struct gnode *n = &g->nodes[g->order[p]];
     for (int k = 0; k < SSG_MAX_PORTS; k++) {
-        ssg_pool_release(g->live->pool, n->out_img[k]);
+        ssg_pool_release(l->pool, n->out_img[k]);
         n->out_img[k] = NULL;
     }
-    g->live->kept[p] = 0;
 }
 
-/* Node p must prepare and run again: its parameters or its shapes changed. */
-static void forget(struct ssg_graph *g, int p)
-{
-    struct ssg_live *l = g->live;
-    free(l->consts[p]);
-    l->consts[p] = NULL;
-    l->prepared[p] = 0;
-    l->kept[p] = 0;
-}
-
-/* Node p's parameters changed from `old` and its shapes did not: it runs again, and
-   prepares again unless its check_params says the run alone reads what changed. */
-static void dirty(struct ssg_graph *g, int p, const void *old)
-{
-    const struct gnode *n = &g->nodes[g->order[p]];
-    if (n->desc->check_params && n->desc->check_params(old, n->params) == SSG_RECOMPUTE_RUN)
-        g->live->kept[p] = 0; /* its readers follow: they see it ran (graph_run.c) */
-    else
-        forget(g, p);
-}
-
-void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_err e,
-                        int used_gl)
+void ssg_live_after_run(struct ssg_graph *g, int used_gl)
 {
     struct ssg_live *l = g->live;
     l->used_gl |= used_gl;
-    for (int p = 0; p < g->order_count; p++)
-        if (ran[g->order[p]])
-            l->kept[p] = e == SSG_OK && !g->nodes[g->order[p]].desc->is_sink;
     size_t total = 0;
     for (int p = 0; p < g->order_count; p++)
         total += kept_bytes(g, p);
@@ -106,9 +84,28 @@ void ssg_live_after_run(struct ssg_graph *g, const unsigned char *ran, enum ssg_
                 most = kept_bytes(g, p), worst = p;
         if (worst < 0)
             break;
-        evict(g, worst);
+        release_outputs(g, l, worst);
+        ssg_redo(g, l, worst, SSG_RECOMPUTE_RUN, SSG_WHY_EVICTED);
         total -= most;
     }
+}
+
+void ssg_live_release(struct ssg_graph *g, struct ssg_live *l)
+{
+    for (int p = 0; p < l->count && l->pool; p++)
+        release_outputs(g, l, p);
+    ssg_history_free(g, l->pool);
+    ssg_pool_destroy(&l->pool);
+    for (int p = 0; l->consts && p < l->count; p++)
+        free(l->consts[p]);
+    for (int p = 0; l->scratch && p < l->count; p++)
+        ssg_scratch_free(&l->scratch[p]);
+    free(l->consts);
+    free(l->scratch);
+    free(l->prepared);
+    free(l->kept);
+    free(l->why);
+    *l = (struct ssg_live){0};
 }
 
 void ssg_live_free(struct ssg_graph *g)
@@ -118,22 +115,40 @@ void ssg_live_free(struct ssg_graph *g)
         return;
     struct ssg_diags quiet = {0};
     int gl = l->used_gl && ssg_gl_open(&quiet) == SSG_OK; /* textures die with GL current */
-    for (int p = 0; p < l->count && l->pool; p++)
-        evict(g, p);
-    ssg_history_free(g, l->pool);
-    ssg_pool_destroy(&l->pool);
+    ssg_live_release(g, l);
     if (gl)
         ssg_gl_close();
-    for (int p = 0; l->consts && p < l->count; p++)
-        free(l->consts[p]);
-    for (int p = 0; l->scratch && p < l->count; p++)
-        ssg_scratch_free(&l->scratch[p]);
-    free(l->consts);
-    free(l->scratch);
-    free(l->prepared);
-    free(l->kept);
     free(l);
     g->live = NULL;
+}
+
+/* Every node's shapes, to tell after a change which moved. */
+struct ssg_shapes_saved {
+    int count;
+    struct ssg_shape shape[][2][SSG_MAX_PORTS];
+};
+
+struct ssg_shapes_saved *ssg_shapes_save(const struct ssg_graph *g)
+{
+    struct ssg_shapes_saved *s = calloc(1, sizeof *s + (size_t)(g->count + 1) *
+                                                          sizeof s->shape[0]);
+    for (int k = 0; s && k < g->count; k++) {
+        memcpy(s->shape[k][0], g->nodes[k].in_shape, sizeof s->shape[k][0]);
+        memcpy(s->shape[k][1], g->nodes[k].out_shape, sizeof s->shape[k][1]);
+    }
+    if (s)
+        s->count = g->count;
+    return s;
+}
+
+void ssg_redo_moved(struct ssg_graph *g, const struct ssg_shapes_saved *saved)
+{
+    for (int p = 0; g->live && p < g->order_count; p++) {
+        const struct gnode *m = &g->nodes[g->order[p]];
+        if (memcmp(saved->shape[g->order[p]][0], m->in_shape, sizeof saved->shape[0][0]) ||
+            memcmp(saved->shape[g->order[p]][1], m->out_shape, sizeof saved->shape[0][1]))
+            ssg_redo(g, g->live, p, SSG_RECOMPUTE_HISTORY, SSG_WHY_SHAPE);
+    }
 }
 
 /* The node a key "node.param" names when the node has that parameter, else -1 with
@@ -228,17 +243,13 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
     }
     struct gnode *n = &g->nodes[i];
     size_t size = n->desc->params_size;
-    struct ssg_shape(*shapes)[2][SSG_MAX_PORTS] = calloc((size_t)g->count + 1, sizeof *shapes);
+    struct ssg_shapes_saved *shapes = ssg_shapes_save(g);
     void *old = malloc(size ? size : 1);
     if (!shapes || !old) {
         free(shapes), free(old), free(text);
         return SSG_E_NOMEM;
     }
     memcpy(old, n->params, size);
-    for (int k = 0; k < g->count; k++) {
-        memcpy(shapes[k][0], g->nodes[k].in_shape, sizeof shapes[k][0]);
-        memcpy(shapes[k][1], g->nodes[k].out_shape, sizeof shapes[k][1]);
-    }
     int first = diags ? diags->count : 0;
     e = ssg_graph_apply_set(g, text, diags);
     if (e)
@@ -252,14 +263,13 @@ enum ssg_err ssg_graph_set(struct ssg_graph *g, const char *key, const char *val
         memcpy(n->params, old, size);
         ssg_graph_reinfer(g, &quiet);
     }
-    for (int p = 0; !e && g->live && p < g->order_count; p++) {
-        const struct gnode *m = &g->nodes[g->order[p]];
-        if (memcmp(shapes[g->order[p]][0], m->in_shape, sizeof shapes[0][0]) ||
-            memcmp(shapes[g->order[p]][1], m->out_shape, sizeof shapes[0][1]))
-            forget(g, p);
-        else if (m == n)
-            dirty(g, p, old);
-    }
+    for (int p = 0; !e && g->live && p < g->order_count; p++)
+        if (g->order[p] == i) /* prepare again unless its check_params says the run alone
+                                 reads what changed (node.h) */
+            ssg_redo(g, g->live, p, n->desc->check_params ? n->desc->check_params(old,
+                     n->params) : SSG_RECOMPUTE_PREPARE, SSG_WHY_PARAM);
+    if (!e)
+        ssg_redo_moved(g, shapes);
     free(shapes), free(old), free(text);
     return e;
 }
@@ -346,12 +356,11 @@ enum ssg_err ssg_graph_set_view(struct ssg_graph *g, const struct ssg_view *v,
     g->time.view_set = 1;
     struct ssg_diags quiet = {0};
     ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
-    /* A node may read the camera (the G-buffer, the projection in prepare(), the ray
-       tracers' frames): it prepares and runs again unless it declares that it does not.
-       The readers of a node that runs follow it (graph_run.c can_skip). */
-    for (int p = 0; g->live && p < g->order_count; p++)
-        if (!g->nodes[g->order[p]].desc->camera_independent)
-            forget(g, p);
+    /* The camera's readers (the G-buffer, the projection in prepare(), the ray tracers'
+       frames) prepare and run again; the readers of a node that runs follow it. */
+    if (g->live)
+        ssg_redo_reading(g, g->live, SSG_READS_CAMERA, SSG_RECOMPUTE_HISTORY,
+                         SSG_WHY_CAMERA);
     ssg_history_cut(g); /* a new camera is a cut: prev() inputs start afresh */
     return SSG_OK;
 }
@@ -388,6 +397,6 @@ enum ssg_err ssg_graph_supply(struct ssg_graph *g, const char *node,
     n->supplied = copy;
     for (int p = 0; g->live && p < g->order_count; p++)
         if (g->order[p] == i)
-            forget(g, p);
+            ssg_redo(g, g->live, p, SSG_RECOMPUTE_PREPARE, SSG_WHY_SUPPLIED);
     return SSG_OK;
 }

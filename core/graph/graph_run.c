@@ -16,6 +16,7 @@
 #include "graph/image.h"
 #include "graph/metrics.h"
 #include "graph/profile.h"
+#include "scene/camera_path.h"
 
 struct run {
     struct ssg_graph *g;
@@ -23,17 +24,18 @@ struct run {
     const struct ssg_run_options *opt;
     struct ssg_diags *diags;
     struct ssg_node_timing *t; /* per run position, of the last frame */
-    void **consts;             /* per run position: what its prepare() made, once */
-    struct ssg_scratch *scratch; /* per run position: its working memory, kept between
-                                    frames (node.h) */
-    unsigned char *prepared;   /* per run position: 1 once prepare() ran (a sink runs in
-                                  the last frame only, so not always in frame 0) */
+    struct ssg_live *state;    /* per run position: consts, scratch, prepared, kept, why:
+                                  the graph's (live) or `own` (graph.h) */
+    struct ssg_live own;       /* a run that is not kept: its state for its frames */
+    unsigned char *hold;       /* per node index: 1 = its outputs stand through the run's
+                                  frames (no frame can change them), so they are kept */
+    int (*why)[SSG_WHY_COUNT]; /* per run position: how often each reason held */
+    int *producer;             /* per run position: the producer named by SSG_WHY_INPUT */
     struct ssg_profile prof;   /* per run position */
     struct ssg_metrics metrics;
     int uses_gl;               /* a node runs on GL: the backend is open */
     struct ssg_live *live;     /* the graph's kept state (graph.h), NULL = a fresh run */
-    unsigned char *ran;        /* per node index: ran in this run (a live run skips a node
-                                  whose outputs are kept and none of whose producers ran) */
+    unsigned char *ran;        /* per node index: ran in this frame */
     int first_frame;           /* the frame index of the run's frame 0 (graph_time.c) */
     struct ssg_time_step step; /* the frame being run: time, prev_camera, history_reset */
 };
@@ -81,19 +83,8 @@ static void release_after(struct run *r, int p)
             release_output(r, n, k);
     for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
         const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
-        if (c->node >= 0 && g->nodes[c->node].last_reader[c->port] == p)
+        if (c->node >= 0 && g->nodes[c->node].last_reader[c->port] == p && !r->hold[c->node])
             release_output(r, &g->nodes[c->node], c->port);
-    }
-}
-
-static void release_all(struct run *r)
-{
-    for (int q = 0; q < r->g->order_count; q++) {
-        struct gnode *n = &r->g->nodes[r->g->order[q]];
-        for (int k = 0; k < SSG_MAX_PORTS; k++) {
-            ssg_pool_release(r->pool, n->out_img[k]);
-            n->out_img[k] = NULL;
-        }
     }
 }
 
@@ -131,7 +122,8 @@ static void set_cost(struct run *r, int p, const struct ssg_node_ctx *ctx)
 {
     const struct gnode *n = &r->g->nodes[r->g->order[p]];
     struct ssg_node_cost cost;
-    ssg_node_cost_of(n->desc, ctx, r->consts[p] ? r->consts[p] : n->params, n->extra_count,
+    ssg_node_cost_of(n->desc, ctx, r->state->consts[p] ? r->state->consts[p] : n->params,
+                     n->extra_count,
                      &cost);
     for (int k = 0; k < n->desc->output_count; k++) /* unread on_demand: unwritten */
         if (!n->out_img[k])
@@ -171,7 +163,7 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .scene = g->scene, .out_dir = out_dir(r), .diags = r->diags,
                                .metrics = &r->metrics, .in_shape = n->in_shape,
                                .out_shape = n->out_shape, .extra_shape = extra_shape,
-                               .run = r->opt, .scratch = &r->scratch[p],
+                               .run = r->opt, .scratch = &r->state->scratch[p],
                                .graph_path = g->path, .sets = (const char *const *)g->sets,
                                .set_count = g->set_count, .supplied = n->supplied,
                                .frame_index = r->first_frame + frame,
@@ -181,16 +173,17 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     if (history_reset >= 0) /* reads prev(): its history may be gone for its own reasons */
         ctx.history_reset = history_reset || r->step.reset;
     double prepare_ms = 0;
-    if (!r->prepared[p]) {
+    if (!r->state->prepared[p]) {
         double t0 = ssg_now_ms();
-        e = ssg_node_prepare(n->desc, &ctx, n->params, &r->consts[p]);
+        e = ssg_node_prepare(n->desc, &ctx, n->params, &r->state->consts[p]);
         prepare_ms = r->prof.rows[p].prepare_ms = ssg_now_ms() - t0;
-        r->prepared[p] = 1;
+        r->state->prepared[p] = 1;
     }
     if (!e) /* every run: a kept graph's node may run on constants of an earlier one */
         set_cost(r, p, &ctx);
     if (!e)
-        e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->consts[p], &io, n->runs_on,
+        e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->state->consts[p], &io,
+                                  n->runs_on,
                                   &r->t[p]);
     if (!e && !ssg_profile_add(&r->prof, p, &r->t[p]))
         e = SSG_E_NOMEM;
@@ -211,25 +204,44 @@ static int graph_uses_gl(const struct ssg_graph *g)
     return 0;
 }
 
+/* Which nodes' outputs stand through all of a run's frames (r->hold): in a sequence,
+   those that read nothing a frame changes (the frame index; the camera, where a camera
+   path moves it), read no prev(), and whose producers stand too. They run in the first
+   frame only and keep their images to the end of the run; a one-frame run holds none. */
+static void mark_held(struct run *r, int frames)
+{
+    const struct ssg_graph *g = r->g;
+    int path = g->scene && ssg_camera_path_active(&g->scene->camera_path);
+    unsigned changing = SSG_READS_FRAME | (path ? SSG_READS_CAMERA : 0);
+    for (int p = 0; p < g->order_count; p++) {
+        const struct gnode *n = &g->nodes[g->order[p]];
+        int hold = frames > 1 && !n->desc->is_sink && !ssg_history_reads_prev(n) &&
+                   !(ssg_node_reads(n->desc) & changing);
+        for (int k = 0; hold && k < SSG_MAX_PORTS + n->extra_count; k++) {
+            const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k]
+                                                      : &n->extra[k - SSG_MAX_PORTS];
+            hold = c->node < 0 || r->hold[c->node];
+        }
+        r->hold[g->order[p]] = (unsigned char)hold;
+    }
+}
+
 /* The profile's rows and the per-position arrays of a run; 0 on out of memory. */
-static int run_init(struct run *r)
+static int run_init(struct run *r, int frames)
 {
     const struct ssg_graph *g = r->g;
     int count = g->order_count ? g->order_count : 1;
     r->t = calloc((size_t)count, sizeof *r->t);
     r->ran = calloc((size_t)(g->count ? g->count : 1), 1);
-    if (r->live) {
-        r->pool = r->live->pool, r->consts = r->live->consts;
-        r->scratch = r->live->scratch, r->prepared = r->live->prepared;
-    } else {
-        r->pool = ssg_pool_create();
-        r->consts = calloc((size_t)count, sizeof *r->consts);
-        r->scratch = calloc((size_t)count, sizeof *r->scratch);
-        r->prepared = calloc((size_t)count, 1);
-    }
-    if (!r->pool || !r->t || !r->ran || !r->consts || !r->scratch || !r->prepared ||
-        !ssg_profile_init(&r->prof, g->order_count))
+    r->hold = calloc((size_t)(g->count ? g->count : 1), 1);
+    r->why = calloc((size_t)count, sizeof *r->why);
+    r->producer = calloc((size_t)count, sizeof *r->producer);
+    r->state = r->live ? r->live : &r->own;
+    if ((!r->live && !ssg_live_init(&r->own, g->order_count)) || !r->t || !r->ran ||
+        !r->hold || !r->why || !r->producer || !ssg_profile_init(&r->prof, g->order_count))
         return 0;
+    r->pool = r->state->pool;
+    mark_held(r, frames);
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
         r->prof.rows[p] = (struct ssg_profile_row){.name = n->name, .type = n->desc->name,
@@ -245,35 +257,12 @@ static void run_free(struct run *r)
 {
     free(r->t);
     free(r->ran);
+    free(r->hold);
+    free(r->why);
+    free(r->producer);
     ssg_profile_free(&r->prof);
-    if (r->live)
-        return; /* the graph keeps the rest (ssg_live_free) */
-    release_all(r);
-    ssg_history_free(r->g, r->pool);
-    ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
-    for (int p = 0; r->consts && p < r->g->order_count; p++)
-        free(r->consts[p]);
-    for (int p = 0; r->scratch && p < r->g->order_count; p++)
-        ssg_scratch_free(&r->scratch[p]);
-    free(r->consts);
-    free(r->scratch);
-    free(r->prepared);
-}
-
-/* 1 when node n's outputs from an earlier run can stand: a live graph's one-frame run, its
-   outputs kept, none of its producers run in this one. Sinks always run (their files and
-   metrics are this run's). */
-static int can_skip(const struct run *r, int p, int frames)
-{
-    const struct gnode *n = &r->g->nodes[r->g->order[p]];
-    if (!r->live || frames > 1 || n->desc->is_sink || !r->live->kept[p])
-        return 0;
-    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
-        const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
-        if (c->node >= 0 && r->ran[c->node])
-            return 0;
-    }
-    return 1;
+    if (!r->live) /* a live graph keeps its state (ssg_live_free); GL is still open */
+        ssg_live_release(r->g, &r->own);
 }
 
 /* Node n runs in this frame: every node but a sink, which runs in the last frame only
@@ -285,39 +274,22 @@ static int runs_in(const struct gnode *n, int frame, int frames)
            (desc->every_frame && desc->every_frame(n->params));
 }
 
-/* The camera moved between frames: every node that may read it prepares (and, on a live
-   graph, runs) again; those that declare camera_independent (node.h) keep their state. */
-static void forget_camera_nodes(struct run *r)
-{
-    for (int p = 0; p < r->g->order_count; p++) {
-        if (r->g->nodes[r->g->order[p]].desc->camera_independent)
-            continue;
-        free(r->consts[p]);
-        r->consts[p] = NULL;
-        r->prepared[p] = 0;
-        if (r->live)
-            r->live->kept[p] = 0;
-    }
-}
-
-/* A live graph runs another frame than the one its outputs are of: the nodes whose
-   output depends on the frame index (node.h per_frame) run again. */
-static void forget_frame_nodes(struct run *r, int frame_index)
-{
-    if (!r->live || r->g->time.kept_frame == frame_index)
-        return;
-    for (int p = 0; p < r->g->order_count; p++)
-        if (r->g->nodes[r->g->order[p]].desc->per_frame)
-            r->live->kept[p] = 0;
-}
-
-/* Before frame `frame` of the run: its time, camera and history state (graph_time.c). */
+/* Before frame `frame` of the run: its time, camera and history state (graph_time.c),
+   and what they change (graph_redo.c): a moved camera its readers, another frame index
+   the frame's readers, and every prev() reader, whose input is a new frame. */
 static void begin_frame(struct run *r, int frame, int frames)
 {
-    if (ssg_time_begin(r->g, r->first_frame + frame, frame == 0, frames, r->live != NULL,
-                       &r->step))
-        forget_camera_nodes(r);
-    forget_frame_nodes(r, r->first_frame + frame);
+    struct ssg_graph *g = r->g;
+    int index = r->first_frame + frame;
+    if (ssg_time_begin(g, index, frame == 0, frames, r->live != NULL, &r->step))
+        ssg_redo_reading(g, r->state, SSG_READS_CAMERA, SSG_RECOMPUTE_PREPARE,
+                         SSG_WHY_CAMERA);
+    if (g->time.kept_frame != index)
+        ssg_redo_reading(g, r->state, SSG_READS_FRAME, SSG_RECOMPUTE_RUN, SSG_WHY_FRAME);
+    for (int p = 0; p < g->order_count; p++)
+        if (ssg_history_reads_prev(&g->nodes[g->order[p]]))
+            ssg_redo(g, r->state, p, SSG_RECOMPUTE_RUN, SSG_WHY_HISTORY);
+    memset(r->ran, 0, (size_t)g->count);
 }
 
 /* One frame: every node in order, images given back after their last reader. Sinks
@@ -330,13 +302,22 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     ssg_history_frame(r->g, r->pool);
     for (int p = 0; p < r->g->order_count && !e; p++) {
         const struct gnode *n = &r->g->nodes[r->g->order[p]];
-        int sink = n->desc->is_sink, fresh = !r->prepared[p];
-        if (can_skip(r, p, frames) || (r->opt->no_files && n->desc->output_files))
+        int sink = n->desc->is_sink, fresh = !r->state->prepared[p], producer;
+        if (r->opt->no_files && n->desc->output_files)
             continue;
-        if (runs_in(n, frame, frames))
+        enum ssg_why why = ssg_redo_decide(r->g, r->state, p, r->ran, &producer);
+        if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {
             e = run_node(r, p, frame);
-        r->ran[r->g->order[p]] = 1;
+            ssg_redo_after(r->state, p, !sink && (r->live || r->hold[r->g->order[p]]), e);
+            r->ran[r->g->order[p]] = 1;
+        }
+        if (why == SSG_WHY_KEPT || runs_in(n, frame, frames))
+            r->why[p][why]++;
+        if (producer >= 0)
+            r->producer[p] = producer;
         release_after(r, p);
+        if (why == SSG_WHY_KEPT)
+            continue;
         if (!sink) /* the frame time leaves out a prepare made in this frame */
             sum += r->t[p].ms - (fresh ? r->prof.rows[p].prepare_ms : 0) +
                    r->t[p].transfer_ms;
@@ -363,11 +344,26 @@ static int fill_reports(const struct run *r, struct ssg_run_stats *s)
     return 1;
 }
 
+/* Why each node ran or was kept, over the run's frames; 0 on out of memory. */
+static int fill_why(const struct run *r, struct ssg_run_stats *s)
+{
+    for (int p = 0; p < s->node_count; p++) {
+        char line[256];
+        int from = r->producer[p];
+        ssg_why_summary(r->why[p], from >= 0 ? r->g->nodes[from].name : NULL, line,
+                        sizeof line);
+        s->nodes[p].kept = r->why[p][SSG_WHY_KEPT];
+        if (!(s->nodes[p].why = strdup(line)))
+            return 0;
+    }
+    return 1;
+}
+
 /* What the frames measured, into the caller's stats (the pool still open: its peak). */
 static enum ssg_err fill_stats(const struct run *r, double total, struct ssg_run_stats *s)
 {
     *s = (struct ssg_run_stats){0};
-    if (!ssg_profile_stats(&r->prof, r->t, s) || !fill_reports(r, s)) {
+    if (!ssg_profile_stats(&r->prof, r->t, s) || !fill_why(r, s) || !fill_reports(r, s)) {
         ssg_run_stats_free(s);
         return SSG_E_NOMEM;
     }
@@ -436,7 +432,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
                     .uses_gl = graph_uses_gl(g), .live = g->live};
     if (r.opt->threads > 0)
         omp_set_num_threads(r.opt->threads);
-    if (!run_init(&r)) {
+    if (!run_init(&r, frames)) {
         run_free(&r);
         return SSG_E_NOMEM;
     }
@@ -458,7 +454,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
     if (!e)
         e = hand_out(&r);
     if (r.live)
-        ssg_live_after_run(g, r.ran, e, r.uses_gl);
+        ssg_live_after_run(g, r.uses_gl);
     run_free(&r);
     if (r.uses_gl)
         ssg_gl_close();

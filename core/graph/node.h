@@ -178,7 +178,31 @@ enum ssg_recompute {
     SSG_RECOMPUTE_RUN = 1,     /* run again with the new value; prepare()'s constants stand */
     SSG_RECOMPUTE_PREPARE = 2, /* prepare() and run again: any change of a node without
                                   check_params, and any change that moves a shape */
+    SSG_RECOMPUTE_HISTORY = 3, /* prepare, run, and forget the images of its outputs kept
+                                  from the frame before (prev() readers start afresh): a
+                                  new camera, a moved shape */
 };
+
+/* What a node reads besides its inputs and parameters (ssg_node_desc.reads). A change of
+ * one of them makes the nodes that read it run again, and their readers after them. */
+enum ssg_reads {
+    SSG_READS_INPUTS = 1u << 0, /* its inputs and parameters: every declared mask says it */
+    SSG_READS_SCENE = 1u << 1,  /* ctx->scene's geometry, materials or environment image: the
+                                   graph must have a scene (gbuffer, the light maps) */
+    SSG_READS_LIGHTS = 1u << 2, /* the scene's lights and environment, where there is a scene
+                                   (ssg_graph_set_lights changes them) */
+    SSG_READS_CAMERA = 1u << 3, /* the camera: ctx->frame's fov_y, near_z or far_z,
+                                   ssg_frame_projection, ctx->scene->camera or prev_camera,
+                                   directly, through a helper or through view-space data it
+                                   makes itself (a new view, a camera path's next frame) */
+    SSG_READS_FRAME = 1u << 4,  /* ctx->frame_index or time_s: samples that turn every frame
+                                   (halton, gtao, ssilvb) */
+};
+#define SSG_READS_ALL (SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | \
+                       SSG_READS_CAMERA | SSG_READS_FRAME)
+
+/* The node's reads, SSG_READS_ALL where the descriptor declares none. */
+static inline unsigned ssg_node_reads(const struct ssg_node_desc *desc);
 
 /* 1 when the `size` bytes of two parameter structs differ at most in [offset, offset +
  * len): a check_params's test "only this field changed" (SSG_PARAMS_ONLY_CHANGED). Bytewise
@@ -239,27 +263,22 @@ struct ssg_node_desc {
        SSG_NODE_UNIFORMS fills both. */
     struct ssg_param_table uniforms;
     size_t uniforms_offset;
-    int needs_scene;     /* 1 = reads ctx->scene (gbuffer) */
+    /* What the node reads besides its inputs and parameters (enum ssg_reads): the one
+       rule for what runs again (core/graph/graph_redo.c). A live graph's node, or one in
+       a sequence of frames, runs again when something it reads changed or one of its
+       producers ran; else its outputs from before stand. 0 = not declared: everything
+       (SSG_READS_ALL), the safe set, since the two mistakes differ: a node that reads
+       less than it says only runs more often (slower), one that reads more than it says
+       shows a stale image, which no ordinary run or parity test sees.
+       tests/test_camera_deps.c runs every node that leaves out SSG_READS_CAMERA at two
+       cameras, and every one that leaves out SSG_READS_LIGHTS under two light sets, and
+       requires the same bytes. */
+    unsigned reads;
     /* The names of every metric the node may report (ssg_metric_report), NULL-terminated;
        NULL = none. What `bench --error NODE.METRIC` is checked against before any run. */
     const char *const *metrics;
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
-    /* 1 = nothing the node computes reads the camera: neither check, prepare, run_cpu nor
-       run_gl (nor its shaders, nor a helper it calls) reads ctx->frame's fov_y, near_z or
-       far_z, ssg_frame_projection, or ctx->scene->camera, directly or through view-space
-       data it makes itself. A new camera (ssg_graph_set_view) then keeps such a node's
-       outputs when its producers kept theirs (lightprobe's light list, shadow maps in
-       world space). 0 = the camera may matter: it prepares and runs again. The default
-       is 0 because the two mistakes differ: a node that forgets to say 1 only runs again
-       when the camera moves (slower), one that wrongly says 1 shows a stale image after a
-       camera move, which no ordinary run or parity test sees. tests/test_camera_deps.c
-       runs every node that says 1 at two cameras and requires the same bytes. */
-    int camera_independent;
-    /* 1 = its output depends on ctx->frame_index (samples that turn every frame:
-       halton, gtao, ssilvb): a live graph runs it again when it runs another frame,
-       although its producers kept their outputs. */
-    int per_frame;
     int supplied;        /* 1 = a source whose image the caller supplies
                             (ssg_graph_supply): the executor hands it to the node as
                             ctx->supplied, which must match output 0's shape */
@@ -270,7 +289,7 @@ struct ssg_node_desc {
     enum ssg_err (*check)(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len);
-    /* Optional, a needs_scene node whose output shapes depend on the scene (lightmaps:
+    /* Optional, a node reading the scene whose output shapes depend on the scene (lightmaps:
        one face a directional light, six a point light): called after check() with the
        loaded scene when the graph is checked, with the input shapes: may change the
        channels of `out`, refuses what the scene makes too large and inputs that do not
@@ -470,5 +489,10 @@ static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ss
     [id] = {.name = port, .types = type_mask, .doc = text, __VA_ARGS__},
 #define SSG_PORT_ENUM(tag, LIST, count) enum tag { LIST(SSG_PORT_AS_ENUMERATOR) count }
 #define SSG_PORT_TABLE(var, LIST) static const struct ssg_port_desc var[] = {LIST(SSG_PORT_AS_ROW)}
+
+static inline unsigned ssg_node_reads(const struct ssg_node_desc *desc)
+{
+    return desc->reads ? desc->reads : SSG_READS_ALL;
+}
 
 #endif

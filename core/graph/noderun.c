@@ -275,7 +275,7 @@ enum ssg_err ssg_node_run_desc(const struct ssg_node_desc *d, const struct ssg_b
     memset(outputs, 0, sizeof *outputs);
     struct single s = {.d = d};
     const char *node = d->name;
-    if (s.d->needs_scene) {
+    if (s.d->reads & SSG_READS_SCENE) {
         ssg_diag_file(diags, SSG_E_SCENE, NULL, "node '%s' renders a scene; run it in a graph "
                       "with a scene instead", node);
         return SSG_E_SCENE;

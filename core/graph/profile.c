@@ -177,8 +177,10 @@ void ssg_run_stats_free(struct ssg_run_stats *stats)
 {
     if (!stats)
         return;
-    for (int i = 0; stats->nodes && i < stats->node_count; i++)
+    for (int i = 0; stats->nodes && i < stats->node_count; i++) {
         free(stats->nodes[i].name);
+        free(stats->nodes[i].why);
+    }
     free(stats->nodes);
     free(stats->metrics);
     free(stats->gl);

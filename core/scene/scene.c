@@ -452,6 +452,21 @@ enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_a
     return SSG_OK;
 }
 
+#define SWAP(type, x, y) do { type t_ = (x); (x) = (y); (y) = t_; } while (0)
+
+void ssg_scene_swap_lights(struct ssg_scene *a, struct ssg_scene *b)
+{
+    char path[sizeof a->lights_path];
+    memcpy(path, a->lights_path, sizeof path);
+    memcpy(a->lights_path, b->lights_path, sizeof path);
+    memcpy(b->lights_path, path, sizeof path);
+    SWAP(struct ssg_light *, a->lights, b->lights);
+    SWAP(int, a->light_count, b->light_count);
+    SWAP(int, a->light_lines, b->light_lines);
+    SWAP(struct ssg_environment, a->environment, b->environment);
+    SWAP(struct ssg_env *, a->env, b->env);
+}
+
 void ssg_scene_destroy(struct ssg_scene **scene)
 {
     if (!scene || !*scene)

@@ -131,6 +131,11 @@ struct ssg_scene {
  * `ssgraph check`): no meshes, images or Embree. All problems go into diags with location. */
 enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene **out,
                             struct ssg_diags *diags);
+/* Swaps the lights and environment of two loaded scenes (lights, light_count, light_lines,
+ * environment, env, lights_path): a scene takes another's lighting without reloading its
+ * geometry (ssg_graph_set_lights). */
+void ssg_scene_swap_lights(struct ssg_scene *a, struct ssg_scene *b);
+
 /* Same, with the scene's lights and environment replaced by those of the scene file
  * `lights` (which may hold only point_light, directional_light and environment; its image
  * paths are relative to itself): one geometry under a sun, a sky or a probe. lights NULL

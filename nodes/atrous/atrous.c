@@ -49,6 +49,7 @@ const struct ssg_node_desc ssg_node_atrous = {
               "colour term)",
     SSG_BILATERAL_FAMILY,
     SSG_NODE_PARAMS(params, struct ssg_atrous_params),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .parity = {.max = 1.4e-6, .mean = 1.8e-7}, /* test_gl_filters.c: 3.6e-7, 4.5e-8: 4x */

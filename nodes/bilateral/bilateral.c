@@ -116,6 +116,7 @@ const struct ssg_node_desc ssg_node_bilateral = {
               "4.3.2, eq. 4.5 with a depth range term, separable form eq. 4.6 and 4.7",
     SSG_BILATERAL_FAMILY,
     SSG_NODE_PARAMS(params, struct ssg_bilateral_params),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .parity = {.max = 3e-6, .mean = 3.7e-7}, /* test_gl_filters.c: 7.8e-7, 9.3e-8: 4x */

@@ -50,6 +50,7 @@ const struct ssg_node_desc ssg_node_combine = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(param_table, struct ssg_combine_params),
     .consts_size = sizeof(struct ssg_combine_consts),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = combine_flops,

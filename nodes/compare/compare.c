@@ -134,6 +134,7 @@ const struct ssg_node_desc ssg_node_compare = {
     .consts_size = sizeof(struct ssg_compare_consts),
     .metrics = metrics,
     .is_sink = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_compare_run_cpu,

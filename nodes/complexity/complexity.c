@@ -78,6 +78,7 @@ const struct ssg_node_desc ssg_node_complexity = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_complexity_params),
     .consts_size = sizeof(struct ssg_complexity_consts),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_complexity_run_cpu,

@@ -110,7 +110,7 @@ const struct ssg_node_desc ssg_node_direct_light = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_direct_light_params),
     .consts_size = sizeof(struct ssg_direct_light_consts),
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .check_scene = check_scene,
     .prepare = prepare,

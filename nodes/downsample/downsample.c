@@ -54,6 +54,7 @@ const struct ssg_node_desc ssg_node_downsample = {
               "(median-depth) sample is our choice",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_downsample_params),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .flops_per_pixel = downsample_flops,
     .run_cpu = ssg_downsample_run_cpu,

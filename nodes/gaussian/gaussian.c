@@ -61,6 +61,7 @@ const struct ssg_node_desc ssg_node_gaussian = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gaussian_params),
     .consts_size = sizeof(struct ssg_gaussian_consts),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = gaussian_flops,

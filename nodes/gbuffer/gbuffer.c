@@ -87,7 +87,7 @@ const struct ssg_node_desc ssg_node_gbuffer = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_gbuffer_params),
     .consts_size = sizeof(struct ssg_gbuffer_consts),
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .prepare = prepare,
     .flops_per_pixel = gbuffer_flops,
     .run_cpu = ssg_gbuffer_run_cpu,

@@ -85,7 +85,8 @@ const struct ssg_node_desc ssg_node_gtao = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gtao_params),
     .consts_size_of = consts_size_of,
-    .per_frame = 1, /* its slices turn every frame (docs/time.md) */
+    /* its slices turn every frame (docs/time.md) */
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA | SSG_READS_FRAME,
     SSG_NODE_UNIFORMS(uniforms, struct ssg_gtao_consts, u),
     .check = check,
     .prepare = prepare,

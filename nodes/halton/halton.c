@@ -206,8 +206,9 @@ const struct ssg_node_desc ssg_node_halton = {
     SSG_NODE_PARAMS(params, struct ssg_halton_params),
     .consts_size = sizeof(struct ssg_halton_consts),
     .check = check,
-    .per_frame = 1,          /* its kernel and tile turn every frame (docs/time.md) */
-    .camera_independent = 1, /* kernels and rotations from the parameters and the seed */
+    /* kernels and rotations from the parameters and the seed, turned every frame
+       (docs/time.md) */
+    .reads = SSG_READS_INPUTS | SSG_READS_FRAME,
     .prepare = prepare,
     .run_cpu = ssg_halton_run_cpu,
     .run_gl = ssg_halton_run_gl,

@@ -109,6 +109,7 @@ const struct ssg_node_desc ssg_node_hbao = {
     SSG_NODE_PARAMS(params, struct ssg_hbao_params),
     .consts_size_of = consts_size_of,
     SSG_NODE_UNIFORMS(uniforms, struct ssg_hbao_consts, u),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = hbao_flops,

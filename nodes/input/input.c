@@ -27,6 +27,7 @@ const struct ssg_node_desc ssg_node_input = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_input_params),
     .supplied = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .run_cpu = ssg_input_run_cpu,
     .run_gl = ssg_input_run_gl,

@@ -168,8 +168,8 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
     .consts_size = sizeof(struct ssg_lightmaps_consts),
-    .needs_scene = 1,
-    .camera_independent = 1, /* the lights' own views, in world space */
+    /* the lights' own views, in world space */
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
     .check = check,
     .check_scene = check_scene,
     .prepare = prepare,

@@ -102,8 +102,8 @@ const struct ssg_node_desc ssg_node_lightprobe = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightprobe_params),
     .consts_size_of = consts_size_of,
-    .needs_scene = 1,
-    .camera_independent = 1, /* the environment map alone makes the lights */
+    /* the environment map alone makes the lights */
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_lightprobe_run_cpu,

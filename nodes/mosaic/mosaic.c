@@ -13,5 +13,6 @@ const struct ssg_node_desc ssg_node_mosaic = {
     SSG_NODE_OUTPUTS(outputs),
     .extra_inputs = 1,
     SSG_NODE_PARAMS(params, struct ssg_mosaic_params),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .run_cpu = ssg_mosaic_run_cpu,
 };

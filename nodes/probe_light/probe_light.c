@@ -192,7 +192,7 @@ const struct ssg_node_desc ssg_node_probe_light = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_probe_light_params),
     .consts_size_of = consts_size_of,
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .check_params = check_params,

@@ -47,7 +47,7 @@ const struct ssg_node_desc ssg_node_reference_ao = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_reference_ao_params),
     .consts_size = sizeof(struct ssg_reference_ao_consts),
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_reference_ao_run_cpu,

@@ -68,7 +68,7 @@ const struct ssg_node_desc ssg_node_reference_gi = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_reference_gi_params),
     .consts_size = sizeof(struct ssg_reference_gi_consts),
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .run_cpu = ssg_reference_gi_run_cpu,

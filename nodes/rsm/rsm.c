@@ -148,7 +148,7 @@ const struct ssg_node_desc ssg_node_rsm = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_rsm_params),
     .consts_size = sizeof(struct ssg_rsm_consts),
-    .needs_scene = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = rsm_flops,

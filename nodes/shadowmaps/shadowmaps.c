@@ -46,8 +46,8 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
               "bounding sphere, linear depth (ours: the paper gives no fit or format)",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_shadowmaps_params),
-    .needs_scene = 1,
-    .camera_independent = 1, /* world-space maps around the scene's bounding sphere */
+    /* world-space maps around the scene's bounding sphere */
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
     .check = check,
     .run_cpu = ssg_shadowmaps_run_cpu,
     .run_gl = ssg_shadowmaps_run_gl,

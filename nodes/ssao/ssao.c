@@ -65,6 +65,7 @@ const struct ssg_node_desc ssg_node_ssao = {
     SSG_NODE_PARAMS(params, struct ssg_ssao_params),
     .consts_size = sizeof(struct ssg_ssao_consts),
     SSG_NODE_UNIFORMS(uniforms, struct ssg_ssao_consts, u),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = ssao_flops,

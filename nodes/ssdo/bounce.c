@@ -52,6 +52,7 @@ const struct ssg_node_desc ssg_node_bounce = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_bounce_params),
     .consts_size = sizeof(struct ssg_bounce_consts),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = bounce_flops,

@@ -142,6 +142,7 @@ const struct ssg_node_desc ssg_node_ssdo = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssdo_params),
     .consts_size = sizeof(struct ssg_ssdo_consts),
+    .reads = SSG_READS_INPUTS | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = ssdo_flops,

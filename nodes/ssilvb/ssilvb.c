@@ -108,7 +108,8 @@ const struct ssg_node_desc ssg_node_ssilvb = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssilvb_params),
     .consts_size = sizeof(struct ssg_ssilvb_consts),
-    .per_frame = 1, /* its slices turn every frame (docs/time.md) */
+    /* its slices turn every frame (docs/time.md) */
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA | SSG_READS_FRAME,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = ssilvb_flops,

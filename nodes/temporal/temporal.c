@@ -89,6 +89,7 @@ const struct ssg_node_desc ssg_node_temporal = {
     SSG_NODE_PARAMS(params, struct ssg_temporal_params),
     .consts_size = sizeof(struct ssg_temporal_consts),
     SSG_NODE_UNIFORMS(uniforms, struct ssg_temporal_consts, u),
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = flops,

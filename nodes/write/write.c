@@ -89,6 +89,7 @@ const struct ssg_node_desc ssg_node_write = {
     .extra_same_size = 1, /* one EXR part: every layer has the frame's size */
     SSG_NODE_PARAMS(param_table, struct ssg_write_params),
     .is_sink = 1,
+    .reads = SSG_READS_INPUTS | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = write_check,
     .output_files = output_files,
     .every_frame = every_frame,

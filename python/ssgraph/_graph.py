@@ -161,6 +161,12 @@ class Run:
         """The nodes that ran (a live graph skips those whose inputs did not change)."""
         return [n["name"] for n in self.stats["nodes"] if n["calls"] > 0]
 
+    @property
+    def why(self) -> Dict[str, str]:
+        """Why each node ran or was kept, by node name: "first run", "parameter changed",
+        "camera moved", "lights changed", "input g ran", "kept" (docs/development.md)."""
+        return {n["name"]: n["why"] for n in self.stats["nodes"]}
+
     def __repr__(self) -> str:
         return "<ssgraph.Run %d frame(s), %.2f ms a frame, %d node(s) ran>" % (
             self.stats["frames"], self.stats["frame_median_ms"], len(self.ran))
@@ -170,7 +176,8 @@ def _stats_dict(s) -> dict:
     nodes = [{"name": _text(n.name), "type": _text(n.type), "backend": _text(n.backend),
               "calls": n.calls, "ms": n.ms, "avg_ms": n.avg_ms, "min_ms": n.min_ms,
               "max_ms": n.max_ms, "median_ms": n.median_ms, "share": n.share,
-              "gpu_ms": n.gpu_ms, "transfer_ms": n.transfer_ms, "prepare_ms": n.prepare_ms}
+              "gpu_ms": n.gpu_ms, "transfer_ms": n.transfer_ms, "prepare_ms": n.prepare_ms,
+              "kept": n.kept, "why": _text(n.why)}
              for n in (s.nodes[i] for i in range(s.node_count))]
     return {"frames": s.frames, "frame_avg_ms": s.frame_avg_ms,
             "frame_min_ms": s.frame_min_ms, "frame_max_ms": s.frame_max_ms,
@@ -360,6 +367,15 @@ class Graph:
             "position", "target", "up"))
         view.fov_y = _real(camera.fov, "camera fov")
         self._call(lib.ssg_graph_set_view, view, what="setting the camera")
+
+    def set_lights(self, lights=None) -> "Graph":
+        """Lights the scene with the lights and environment of a lights file (as
+        `--lights`: examples/lights/sun.scene, sky.scene, courtyard.scene), or with the
+        scene's own with None. The nodes that read the lights run again; the rest are
+        kept. Returns the graph."""
+        path = ffi.NULL if lights is None else _args.c_path(lights, "lights")
+        self._call(lib.ssg_graph_set_lights, path, what="setting the lights")
+        return self
 
     def camera_at(self, frame: int) -> Camera:
         """Frame `frame`'s camera on the scene's camera path (the scene's camera without

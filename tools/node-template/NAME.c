@@ -22,6 +22,9 @@ const struct ssg_node_desc ssg_node_@name@ = {
               "pixel and channel; name the paper, section and equation of yours here",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_@name@_params),
+    /* What it reads besides inputs and parameters (node.h): the camera too until you know
+       it does not (then drop it, and tests/test_camera_deps.c checks that in a graph) */
+    .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .flops_per_pixel = flops,
     .run_cpu = ssg_@name@_run_cpu,
     .run_gl = ssg_@name@_run_gl,
