@@ -331,6 +331,11 @@ def step_slider(drv):
                  drv.find_elements(By.CSS_SELECTOR, "#node-table tbody tr.ran")}
     if table_ran != ran:
         fail(f"the time table's ran rows {sorted(table_ran)} differ from {sorted(ran)}")
+    why = {r.get_attribute("data-node"): r.find_elements(By.TAG_NAME, "td")[2].text
+           for r in drv.find_elements(By.CSS_SELECTOR, "#node-table tbody tr")}
+    if why.get("do") != "parameter changed" or why.get("g") != "kept":
+        fail(f"the time table's why column says {why}: expected do 'parameter changed', "
+             "g 'kept'")
     shot(drv, "params")
     # the diagram says the same: a time under each node that ran, `kept` under the others
     drv.find_element(By.ID, "diagram-expand").click()

@@ -50,7 +50,8 @@ export function fillTimes(st) {
     const tr = document.createElement('tr');
     tr.dataset.node = n.name;
     tr.className = (n.ran ? 'ran ' : '') + (n.name === state.selected ? 'selected' : '');
-    for (const t of [n.name, n.type, n.ran ? 'yes' : 'kept', fmt(n.ms, 2)]) {
+    // why: the library's reason it ran or was kept ("parameter changed", "input g ran")
+    for (const t of [n.name, n.type, n.why || (n.ran ? 'ran' : 'kept'), fmt(n.ms, 2)]) {
       tr.insertCell().textContent = t;
     }
     tr.onclick = () => on.pick(n.name, true);
@@ -114,6 +115,13 @@ export function markDiagram() {
       g.appendChild(t);
     }
     t.textContent = n.ran ? `${fmt(n.ms, 1)} ms` : 'kept';
+    let tip = g.querySelector('title.why');
+    if (!tip) {
+      tip = document.createElementNS('http://www.w3.org/2000/svg', 'title');
+      tip.setAttribute('class', 'why'); // after dot's own <title>, which names the node
+      g.appendChild(tip);
+    }
+    tip.textContent = n.why || '';
   }
 }
 
