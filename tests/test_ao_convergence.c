@@ -316,14 +316,15 @@ static void test_wall_ssao(void)
     W = saved_w, H = saved_h;
 }
 
-/* hbao in the corner's centre column (its slices are exact there, tests/test_hbao.c), 32
+/* hbao in the corner's centre column (its slices are exact there,
+   nodes/hbao/test_hbao.c), 32
    directions, 64 steps, no bias: falloff none -> (1 + c) / 2, falloff linear -> (1 + c -
    c ln c) / 2, both uniform solid-angle weightings (docs/occlusion.md). Tolerance: the march
    finds the highest sample within R, which lies up to one step (R depth / ((depth - R)
    steps) along the wall, plus half a pixel diagonal depth sqrt(2) / (2 f) of rounding) short of the true horizon; seen from P at a
    distance of at least a that changes sin h by at most that length / R, and only downwards
    (less occlusion): the value may exceed the limit by (step + pixel) / R. Below the limit it may go only by the rounding of samples onto the
-   slice, which tests/test_hbao.c bounds by 0.01. */
+   slice, which nodes/hbao/test_hbao.c bounds by 0.01. */
 static void test_wall_hbao(void)
 {
     int saved_w = W, saved_h = H;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_new_node.sh - tools/new-node.sh on a scratch copy of the files it edits (SSG_ROOT):
 # a bad name (not [a-z][a-z0-9_]*, too long, an existing node or folder, or the name of a
-# test in tests/ as test_NAME) is refused with a message naming it and nothing written; a good one gets its folder from the template with
+# test in tests/ or in a node's folder as test_NAME) is refused with a message naming it and nothing written; a good one gets its folder from the template with
 # every placeholder replaced, one X(NAME) line at the end of nodes/nodes.def, and one row
 # in README.md's node table, after its last row; a second run with that name is refused.
 # (That the template's files compile and run is tests/CMakeLists.txt's test_node_template.)
@@ -12,17 +12,18 @@ mkdir -p "$root/nodes"
 cp nodes/nodes.def README.md "$root/"
 mv "$root/nodes.def" "$root/nodes/"
 mkdir "$root/nodes/gaussian" "$root/nodes/common" "$root/tests"
-touch "$root/tests/test_contract.c"
+touch "$root/tests/test_contract.c" "$root/nodes/gaussian/test_gaussian_edges.c"
 new_node() { SSG_ROOT=$root bash tools/new-node.sh "$@"; }
 snapshot() { (cd "$root" && find . -type f | sort | xargs sha256sum); }
 
 before=$(snapshot)
 long=$(printf 'n%.0s' $(seq 41))
-for bad in Foo 1node my-node "my node" "" _x gaussian common ssao contract "$long"; do
+for bad in Foo 1node my-node "my node" "" _x gaussian common ssao contract gaussian_edges "$long"; do
     expect_exit 1 "error: .*(node name|already|would have its name)" new_node "$bad"
     [ "$(snapshot)" = "$before" ] || fail "refusing '$bad' changed files"
 done
 expect_exit 1 "usage" new_node --frobnicate x
+expect_exit 0 "tools/new-node.sh --into DIR NAME" new_node --help
 [ "$(snapshot)" = "$before" ] || fail "a bad option changed files"
 
 expect_exit 0 "wrote nodes/my_node2/" new_node my_node2

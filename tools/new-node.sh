@@ -11,10 +11,12 @@
 #   tools/new-node.sh [--build DIR] NAME   a node in this repository
 #   tools/new-node.sh --into DIR NAME      only the folder, as DIR/NAME/ (the build's
 #                                          template check, tests/CMakeLists.txt)
+#   tools/new-node.sh --help               this text
 #
 # NAME is [a-z][a-z0-9_]*, at most 40 characters, no node or folder in nodes/ yet, and no
-# test's name in tests/ (test_NAME). A refused name writes nothing. SSG_ROOT, when set, is the repository to write into
-# (tests/test_new_node.sh runs the script on a scratch copy).
+# test's name in tests/ or a node's folder (test_NAME). A refused name writes nothing.
+# SSG_ROOT, when set, is the repository to write into (tests/test_new_node.sh runs the
+# script on a scratch copy).
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -24,6 +26,7 @@ root=${SSG_ROOT:-$(dirname "$here")}
 die() { echo "new-node.sh: error: $*" >&2; exit 1; }
 usage() { die "usage: tools/new-node.sh [--build DIR | --into DIR] NAME"; }
 
+case ${1:-} in -h | --help) sed -n '2,/^set /{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 build="" into=""
 while [ $# -gt 1 ]; do
     case $1 in
@@ -66,8 +69,8 @@ def=$root/nodes/nodes.def readme=$root/README.md
 [ ! -e "$root/nodes/$name" ] || die "nodes/$name already exists (pick another name)"
 grep -q "^X($name)\$" "$def" && die "node '$name' is already registered in nodes/nodes.def"
 grep -q "^| \`$name\` |" "$readme" && die "README.md's node table already has a row '$name'"
-for t in "$root/tests/test_$name.c" "$root/tests/test_$name.sh"; do
-    [ ! -e "$t" ] || die "tests/$(basename "$t") exists: the node's test_$name would have its name"
+for t in "$root/tests/test_$name.c" "$root/tests/test_$name.sh" "$root"/nodes/*/"test_$name.c"; do
+    [ ! -e "$t" ] || die "${t#"$root"/} exists: the node's test_$name would have its name"
 done
 
 # The README row is the descriptor's .summary (the string literals after `.summary =` in

@@ -76,7 +76,7 @@ enum { SSG_BILATERAL_MAX_PASSES = 8 };
 int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
                          struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES]);
 
-/* What the `atrous` node (nodes/atrous/atrous.c) shares: its ports are bilateral's (the
+/* What the `atrous` node (atrous.c in this folder) shares: its ports are bilateral's (the
    port tables, their shape check), its consts a struct ssg_bilateral_consts, and so the
    flops (node.h; by reading bilateral_cpu.c: per tap the weight, ssg_joint_tap_flops, and
    2 a channel, per pass about 10 and 1 a channel to set up and finish) and both run

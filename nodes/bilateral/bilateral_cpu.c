@@ -23,7 +23,7 @@
 
 #include "bilateral.h"
 
-#include "bilateral_math.h"
+#include "common/bilateral_math.h"
 
 enum { CHUNK = 256, ROWS_PER_BAND = 4, MAX_CH = 6 };
 
@@ -196,7 +196,7 @@ static void band(void *user, int y0, int y1)
    and a one-column pass, each with the weights of the full filter restricted to its axis
    (the spatial Gaussian factors exactly; the depth and normal terms are taken against each
    pass's own centre pixel); a-trous is `atrous` passes of the 5 x 5 window, 1, 2, 4, ... px
-   apart (nodes/atrous). */
+   apart (atrous.c in this folder). */
 static enum ssg_err run_passes(const struct ssg_node_ctx *ctx, struct job *j, int passes,
                                const struct ssg_bilateral_pass *pass)
 {

@@ -1,6 +1,6 @@
 /* combine.h - ports, parameters and prepared constants of the `combine` node (final
  * shading), shared by combine.c (descriptor, check, prepare), combine_cpu.c (the kernel),
- * combine_gl.c (the GL side) and tests/test_combine.c. Method in README.md. */
+ * combine_gl.c (the GL side) and test_combine.c. Method in README.md. */
 #ifndef SSG_COMBINE_H
 #define SSG_COMBINE_H
 

@@ -3,7 +3,7 @@
 
 #include "scene/scene.h"
 #include "common/lightmap.h"
-#include "lightprobe/lightprobe.h"
+#include "common/env_lights.h"
 
 /* The cube's faces: look axis, then u and v, with u x v = axis. */
 static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
@@ -38,7 +38,7 @@ int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_s
 
 void ssg_lightmap_env_directions(int count, float *dirs)
 {
-    ssg_lightprobe_directions(NULL, SSG_LIGHTPROBE_UNIFORM, count, dirs);
+    ssg_env_lights_fibonacci(count, dirs);
 }
 
 /* An orthographic face over the bounding sphere, looking along -l (l towards the light). */

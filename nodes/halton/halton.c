@@ -9,20 +9,6 @@
 #include "common/random.h"
 #include "common/sampling.h"
 
-double ssg_halton_radical_inverse(uint64_t i, int base)
-{
-    /* Mirror the digits into an integer numerator over base^digits and divide once, so
-       the result is the correctly rounded value of eq. 6 rather than a sum of rounded
-       powers. */
-    uint64_t b = (uint64_t)base, num = 0, den = 1;
-    while (i > 0) {
-        num = num * b + i % b;
-        den *= b;
-        i /= b;
-    }
-    return (double)num / (double)den;
-}
-
 int ssg_halton_period_digits(int period, int base)
 {
     int k = 0;

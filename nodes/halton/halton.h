@@ -1,6 +1,7 @@
-/* halton.h - the parameters and constants of the `halton` node, and the radical inverse
- * it is built on, shared by halton.c (descriptor, check, prepare), halton_cpu.c and
- * halton_gl.c (the copies into the outputs) and tests/test_halton.c.
+/* halton.h - the parameters and constants of the `halton` node, shared by halton.c
+ * (descriptor, check, prepare), halton_pattern.c (the rotation tiles), halton_cpu.c and
+ * halton_gl.c (the copies into the outputs) and test_halton*.c here; the radical inverse
+ * it is built on is nodes/common/radical_inverse.h, which the environment's lights share.
  *
  * Method (the Halton sequence, eq. 5-7, and its period property, eq. 8): README.md in
  * this folder. Everything here is pure and thread-safe. */
@@ -9,6 +10,7 @@
 
 #include <stdint.h>
 
+#include "common/radical_inverse.h"
 #include "graph/node.h"
 
 /* Ports, one row each (node.h): enumerator, name, types, doc. */
@@ -72,10 +74,6 @@ struct ssg_halton_consts {
     float kernel[3 * SSG_HALTON_MAX_COUNT];                       /* x plane, y, z */
     float pattern[2 * SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN]; /* cos plane, sin */
 };
-
-/* Radical inverse Phi_b(i) of eq. 6: the base-b digits of i (eq. 5) mirrored about the
- * radix point. Exact (correctly rounded) for i < 2^32 and b <= 1000. */
-double ssg_halton_radical_inverse(uint64_t i, int base);
 
 /* The unit-cube point behind kernel sample `sample` (0-based): u[0], u[1] drive the
  * direction (eq. 7 with the first two bases at index offset + sample), u[2] the length

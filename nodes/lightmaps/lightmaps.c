@@ -6,7 +6,7 @@
 #include "graph/image.h"
 #include "scene/scene.h"
 #include "lightmaps.h"
-#include "lightprobe/lightprobe.h"
+#include "common/env_lights.h"
 
 /* The lights the parameters ask for. */
 static struct ssg_lightmap_sources sources(const struct ssg_lightmaps_params *p)
@@ -82,7 +82,7 @@ static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_cons
     }
 }
 
-/* The environment lights' irradiances (lightprobe's regions for the uniform directions),
+/* The environment lights' irradiances (env_lights.h's regions of the uniform directions),
    3 a light, into *e (malloc'd); *e stays NULL when there are none or the scene has no
    environment light (its faces then stay empty). */
 static enum ssg_err env_irradiance(const struct ssg_scene *s, int count, double **e)
@@ -93,7 +93,7 @@ static enum ssg_err env_irradiance(const struct ssg_scene *s, int count, double 
     float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
     ssg_lightmap_env_directions(count, dirs);
     *e = malloc(sizeof(double) * 3 * (size_t)count);
-    enum ssg_err err = *e ? ssg_lightprobe_regions(s->env, dirs, count, *e) : SSG_E_NOMEM;
+    enum ssg_err err = *e ? ssg_env_lights_regions(s->env, dirs, count, *e) : SSG_E_NOMEM;
     if (err) {
         free(*e);
         *e = NULL;

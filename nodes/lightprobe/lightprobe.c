@@ -68,8 +68,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     double *irradiance = malloc(sizeof(double) * 3 * (size_t)p->count);
     enum ssg_err e = dirs && irradiance ? SSG_OK : SSG_E_NOMEM;
     if (!e) {
-        ssg_lightprobe_directions(ctx->scene->env, p->sampling, p->count, dirs);
-        e = ssg_lightprobe_regions(ctx->scene->env, dirs, p->count, irradiance);
+        if (p->sampling == SSG_LIGHTPROBE_IMPORTANCE)
+            ssg_env_lights_importance(ctx->scene->env, p->count, dirs);
+        else
+            ssg_env_lights_fibonacci(p->count, dirs);
+        e = ssg_env_lights_regions(ctx->scene->env, dirs, p->count, irradiance);
     }
     if (!e)
         store_lights(c, dirs, irradiance);

@@ -6,6 +6,7 @@
 
 #include "scene/env.h"
 #include "graph/node.h"
+#include "common/env_lights.h"
 #include "common/shadowmap.h"
 
 /* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
@@ -49,18 +50,6 @@ struct ssg_lightprobe_consts {
     int count;
     float lights[]; /* 6 count floats: channel c, row r, light i at (c * 2 + r) * count + i */
 };
-
-/* Unit world directions of the N lights of a sampling (dirs: 3 N floats, xyz per light).
- * Importance sampling reads env; uniform does not. */
-void ssg_lightprobe_directions(const struct ssg_env *env, int sampling, int count,
-                               float *dirs);
-
-/* E_i of every light: the probe's radiance times solid angle summed over the texels whose
- * nearest light is i (its Voronoi region on the sphere at texel resolution), so the E_i
- * add up to the probe's whole integral. A constant environment is integrated on a fixed
- * internal lat-long grid. irradiance: 3 N doubles, rgb per light. */
-enum ssg_err ssg_lightprobe_regions(const struct ssg_env *env, const float *dirs, int count,
-                                    double *irradiance);
 
 enum ssg_err ssg_lightprobe_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                     const struct ssg_io *io);

@@ -21,7 +21,7 @@
 
 #include "upsample.h"
 
-#include "bilateral/bilateral_math.h"
+#include "common/bilateral_math.h"
 
 enum { CHUNK = 256, ROWS_PER_BAND = 4 };
 

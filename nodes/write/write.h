@@ -1,5 +1,5 @@
 /* write.h - ports and parameters of the `write` sink node, shared by write.c (descriptor,
- * check), write_cpu.c (writing the files), write_meta.c and tests/test_write.c. Method in
+ * check), write_cpu.c (writing the files), write_meta.c and test_write.c. Method in
  * README.md; the files themselves are written by core/io/imageio.h. */
 #ifndef SSG_WRITE_H
 #define SSG_WRITE_H

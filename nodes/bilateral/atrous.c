@@ -1,5 +1,5 @@
 /* atrous.c - the `atrous` node's descriptor, check and prepare: the edge-avoiding a-trous
- * wavelet filter, run by bilateral's passes. Method: README.md in this folder. */
+ * wavelet filter, run by bilateral's passes. Method: atrous.md in this folder. */
 #include <math.h>
 #include <stdio.h>
 

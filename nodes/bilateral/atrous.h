@@ -1,9 +1,10 @@
-/* atrous.h - the `atrous` node (atrous.c; method in README.md here): the edge-avoiding
- * a-trous wavelet filter, run by the bilateral node's passes (nodes/bilateral/bilateral.h). */
+/* atrous.h - the `atrous` node (atrous.c; method in atrous.md here): the edge-avoiding
+ * a-trous wavelet filter, run by the bilateral node's passes (bilateral.h): one folder,
+ * two descriptors, as ssdo's folder holds bounce. */
 #ifndef SSG_ATROUS_H
 #define SSG_ATROUS_H
 
-#include "bilateral/bilateral.h"
+#include "bilateral.h"
 
 /* Passes at most: the footprint of n passes is 4 (2^n - 1) + 1 px wide (8: 1021 px). */
 enum { SSG_ATROUS_MAX_ITERATIONS = SSG_BILATERAL_MAX_PASSES };

@@ -1,5 +1,5 @@
-/* lightprobe_regions.c - the directions of the `lightprobe` node's lights and the
- * irradiance each carries (lightprobe.h).
+/* env_lights.c - the directions of the environment's lights and the irradiance each
+ * carries (env_lights.h): the `lightprobe` node's list, the `lightmaps` node's faces.
  *
  * Irradiance: every probe texel gives its radiance times its exact solid angle to its
  * nearest light (largest dot product, lowest index on ties), so the lights' irradiances
@@ -17,8 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "halton/halton.h"
-#include "lightprobe.h"
+#include "common/env_lights.h"
+#include "common/radical_inverse.h"
 
 enum {
     CELLS_W = 64, CELLS_H = 32,  /* the candidate grid (5.6 degree cells) */
@@ -26,20 +26,21 @@ enum {
     BAND_ROWS = 4                 /* probe rows per parallel band (fixed: deterministic) */
 };
 
-void ssg_lightprobe_directions(const struct ssg_env *env, int sampling, int count,
-                               float *dirs)
+void ssg_env_lights_importance(const struct ssg_env *env, int count, float *dirs)
+{
+    for (int i = 0; i < count; i++) {
+        float rgb[3];
+        float u1 = (float)(((double)i + 0.5) / count);
+        float u2 = (float)ssg_halton_radical_inverse((uint64_t)i, 2);
+        ssg_env_sample(env, u1, u2, dirs + 3 * i, rgb);
+    }
+}
+
+void ssg_env_lights_fibonacci(int count, float *dirs)
 {
     const double golden = M_PI * (3.0 - sqrt(5.0));
     for (int i = 0; i < count; i++) {
         float *d = dirs + 3 * i;
-        if (sampling == SSG_LIGHTPROBE_IMPORTANCE) {
-            float rgb[3];
-            float u1 = (float)(((double)i + 0.5) / count);
-            float u2 = (float)ssg_halton_radical_inverse((uint64_t)i, 2);
-            ssg_env_sample(env, u1, u2, d, rgb);
-            continue;
-        }
-        /* Spherical Fibonacci points about the y (up) axis, the first near the zenith. */
         double y = 1.0 - (2.0 * i + 1.0) / count;
         double r = sqrt(fmax(0.0, 1.0 - y * y)), phi = golden * i;
         d[0] = (float)(r * cos(phi));
@@ -153,7 +154,7 @@ static void integrate_rows(void *user, int y0, int y1)
     }
 }
 
-enum ssg_err ssg_lightprobe_regions(const struct ssg_env *env, const float *dirs, int count,
+enum ssg_err ssg_env_lights_regions(const struct ssg_env *env, const float *dirs, int count,
                                     double *irradiance)
 {
     struct probe p = {env->width, env->height, env->radiance, {0, 0, 0}};

@@ -22,7 +22,7 @@
 
 #include "check.h"
 #include "light_maps.h"
-#include "lightprobe/lightprobe.h"
+#include "common/env_lights.h"
 
 static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0};
 
@@ -187,7 +187,7 @@ static void test_environment(void)
     }
     CHECK_EQ(bad, 0);
     double e[3 * N];
-    CHECK_EQ(ssg_lightprobe_regions(s->env, dirs, N, e), SSG_OK);
+    CHECK_EQ(ssg_env_lights_regions(s->env, dirs, N, e), SSG_OK);
     double want = 0, total = 0;
     for (int k = 0; k < N; k++) /* the plane's area 4, both sides, albedo 0.5 */
         want += 0.5 * 4.0 * e[3 * k] * fabs(dirs[3 * k + 1]), total += e[3 * k];

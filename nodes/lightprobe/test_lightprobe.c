@@ -265,13 +265,13 @@ static void test_threads(void)
     for (int i = 0; i < 3 * PW * PH; i++)
         env.radiance[i] = (float)(1.0 + 0.9 * sin(0.37 * i) * cos(0.011 * i));
     float dirs[3 * N];
-    ssg_lightprobe_directions(&env, SSG_LIGHTPROBE_UNIFORM, N, dirs);
+    ssg_env_lights_fibonacci(N, dirs);
     double one[3 * N], other[3 * N];
     omp_set_num_threads(1);
-    CHECK_EQ(ssg_lightprobe_regions(&env, dirs, N, one), SSG_OK);
+    CHECK_EQ(ssg_env_lights_regions(&env, dirs, N, one), SSG_OK);
     for (int k = 0; k < 6; k++) {
         omp_set_num_threads(2 + k % 2);
-        CHECK_EQ(ssg_lightprobe_regions(&env, dirs, N, other), SSG_OK);
+        CHECK_EQ(ssg_env_lights_regions(&env, dirs, N, other), SSG_OK);
         CHECK(memcmp(one, other, sizeof one) == 0);
     }
     free(env.radiance);
