@@ -44,24 +44,25 @@ expect_exit 2 "option '--frames' does not apply to 'check' \(it is an option of 
 # several, the metrics; --quiet none of it; nothing on stderr ---
 "$BIN" run graphs/ssao.graph --size 64x48 --out "$TMP/table" > "$TMP/table.txt" 2> "$TMP/table.err" \
     || fail "table run: $(tail -3 "$TMP/table.err")"
-grep -qE '^node +type +on +ms +gpu ms +xfer ms$' "$TMP/table.txt" || fail "run lost its table's header"
+grep -qE '^node +type +on +ms +gpu ms +xfer ms  why$' "$TMP/table.txt" || fail "run lost its table's header"
 for row in "g +gbuffer" "k +halton" "ao +ssao" "b +bilateral" "img +combine" "out +write"; do
-    grep -qE "^$row +cpu +[0-9]+\.[0-9]{2} +- +-$" "$TMP/table.txt" || fail "run's table lacks /$row/"
+    grep -qE "^$row +cpu +[0-9]+\.[0-9]{2} +- +-  (first run|sink)$" "$TMP/table.txt" \
+        || fail "run's table lacks /$row/"
 done
 grep -qE '^total +[0-9]+\.[0-9]{2} +\(64x48, [0-9]+ threads, peak images [0-9]+\.[0-9] MB\)$' \
     "$TMP/table.txt" || fail "run's table lacks its total: $(cat "$TMP/table.txt")"
-awk '/^node / { t = 1; next } t && !/^total/ && length($0) != 67 { bad = 1 } END { exit bad }' "$TMP/table.txt" \
-    || fail "a row of run's table is not 67 characters wide: $(cat "$TMP/table.txt")"
+awk '/^node / { t = 1; next } t && !/^total/ && (length($0) < 70 || substr($0, 67, 4) !~ /^[-0-9]  [a-z]$/) { bad = 1 } END { exit bad }' "$TMP/table.txt" \
+    || fail "a row of run's table is not 67 characters wide before its why: $(cat "$TMP/table.txt")"
 [ -s "$TMP/table.err" ] && fail "run printed to stderr: $(head -3 "$TMP/table.err")"
 "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 --out "$TMP/prof" > "$TMP/prof.txt" \
     || fail "profile run"
-grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms +GB/s +GFLOP/s +bound +%bound$' "$TMP/prof.txt" \
+grep -qE '^node +type +on +calls +avg ms +min ms +max ms +share +gpu ms +prepare ms +GB/s +GFLOP/s +bound +%bound  why$' "$TMP/prof.txt" \
     || fail "run --frames lost its profile's header"
 grep -qE '^frame +3( +[0-9]+\.[0-9]{2}){3} +100\.0%   \(64x48, [0-9]+ threads, [0-9]+\.[0-9] fps; median frame [0-9]+\.[0-9]{2} ms, [0-9]+\.[0-9] fps\)$' \
     "$TMP/prof.txt" || fail "the profile lacks its frame row: $(cat "$TMP/prof.txt")"
-grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)$' \
+grep -qE '^  ao +ssao +cpu +3( +[0-9]+\.[0-9]{2}){3} +[0-9]+\.[0-9]% +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)  first run, input k ran x2$' \
     "$TMP/prof.txt" || fail "the profile lacks the pass ao under the frame"
-grep -qE '^out +write +cpu +1( +[0-9]+\.[0-9]{2}){3} +- +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)$' "$TMP/prof.txt" \
+grep -qE '^out +write +cpu +1( +[0-9]+\.[0-9]{2}){3} +- +- +[0-9]+\.[0-9]{2} +[0-9]+\.[0-9]{2} +([0-9]+\.[0-9]{2}|-) +(memory|compute|-) +([0-9]+%|-)  sink$' "$TMP/prof.txt" \
     || fail "the profile lacks the sink out after the frame"
 "$BIN" run graphs/ao_error.graph --size 48x32 --out "$TMP/metrics" > "$TMP/metrics.txt" \
     || fail "metrics run"
@@ -224,8 +225,10 @@ expect_exit 1 "lightprobe 'lp': scene .*cornell.scene' has no environment light"
     "$BIN" run "$TMP/noenv.graph" --size 32x24 --out "$TMP/noenv_out"
 [ -e "$TMP/noenv_out/x.exr" ] && fail "a run without an environment still produced output"
 
-# --frames: every node runs N times (prepared once; the write only in the last frame) and
-# the profile lists each with its calls; --profile-json writes the same numbers. The
+# --frames: a node runs in every frame where something it reads changes (here halton's
+# samples turn, so ssao and what follows run N times; the G-buffer of a still camera runs
+# once and is kept; the write runs in the last frame only), prepared once, and the profile
+# lists each with its calls and why; --profile-json writes the same numbers. The
 # samples move from frame to frame (halton, docs/time.md): the last frame's image is not
 # the one-frame image, and is the same on 1 thread as on 2.
 expect_exit 0 "^frame +3 " "$BIN" run graphs/ssao.graph --size 64x48 --frames 3 \
@@ -236,8 +239,8 @@ cmp -s "$TMP/frames1/ssao.exr" "$TMP/frames3/ssao.exr" && fail "--frames 3 kept 
     --quiet || fail "--frames 3 --threads 1"
 cmp -s "$TMP/frames3t1/ssao.exr" "$TMP/frames3/ssao.exr" \
     || fail "--frames 3 depends on the thread count"
-# A node that keeps working memory between frames (the separable filter's scratch image,
-# node.h's ssg_node_scratch) gives the one-frame image in every frame of a still camera.
+# A still camera: the separable filter (its scratch image, node.h's ssg_node_scratch) reads
+# nothing a frame changes, so it runs once and its image stands: the one-frame image.
 printf 'scene "%s/examples/cornell.scene"\ng = gbuffer()\nf = bilateral(g.direct, depth=g.depth, normal=g.normal, size=9, separable=true)\nout = write(f.out, "sep")\n' \
     "$PWD" > "$TMP/separable.graph"
 for f in 1 3; do
@@ -251,9 +254,13 @@ p = json.load(open(sys.argv[1]))
 names = [n["name"] for n in p["nodes"]]
 assert p["frames"] == 3 and names == ["g", "k", "ao", "b", "img", "out"], names
 passes = [n for n in p["nodes"] if n["name"] != "out"]
-assert all(n["calls"] == 3 and n["min_ms"] <= n["avg_ms"] <= n["max_ms"] for n in passes)
+assert all(n["calls"] + n["kept"] == 3 and n["min_ms"] <= n["avg_ms"] <= n["max_ms"] for n in passes)
+calls = {n["name"]: (n["calls"], n["why"]) for n in p["nodes"]}
+assert calls["g"] == (1, "first run, kept x2"), calls  # a still camera: nothing g reads changes
+assert calls["k"] == (3, "first run, new frame x2") and calls["ao"][0] == 3, calls
 assert p["nodes"][-1]["calls"] == 1 and p["nodes"][-1]["share"] is None  # write: last frame
-assert abs(sum(n["share"] for n in passes) - 1) < 0.05
+work = sum(n["calls"] * n["avg_ms"] for n in passes)  # the frames' time is the passes'
+assert abs(work - 3 * p["frame"]["avg_ms"]) < 0.05 * 3 * p["frame"]["avg_ms"], work
 PY
 expect_exit 2 "--frames expects an integer" "$BIN" run graphs/ssao.graph --frames 0
 expect_exit 1 "nope/p.json.*cannot write profile" "$BIN" run graphs/ssao.graph --size 32x24 \

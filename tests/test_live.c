@@ -14,7 +14,7 @@
  *   - a new camera (ssg_graph_set_view) changes the image, the old one back restores its
  *     bytes, and impossible cameras are refused; the random walks on hybrid.graph and
  *     rsm.graph move the camera too (a fresh load then gets that camera before its run);
- *   - after a new camera the nodes that declare camera_independent (node.h) do not run
+ *   - after a new camera the nodes whose reads leave out the camera (node.h) do not run
  *     (lightprobe, shadowmaps, halton, lightmaps: calls 0), those that read it do;
  *   - the memory limit evicts, and evicted nodes run again with the same bytes. */
 #include <stdio.h>
@@ -373,7 +373,7 @@ static void run_only_change_keeps_prepare(const char *backend)
 }
 
 /* After a new camera only the nodes that read it run again: those that declare
-   camera_independent keep their outputs (calls 0), and the image is a fresh load's with
+   no camera keep their outputs (calls 0), and the image is a fresh load's with
    that camera. `skipped` and `ran` name nodes of the case's graph. */
 static void camera_skips_independent(const struct graph_case *gc, const char *backend,
                                      const char *const *skipped, const char *const *ran)
