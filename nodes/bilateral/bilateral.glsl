@@ -18,10 +18,10 @@ uniform sampler2DArray normal;
 layout(r32f) uniform writeonly image2DArray dst, dst2;
 uniform ivec2 reach;          // half-widths walked: (r, r), (r, 0) or (0, r)
 uniform int step;             // px between taps: 1, or an a-trous pass's dilation
-uniform int radius, size;     // of the spatial table: row (dy + radius) * size + dx + radius
-uniform float depth_scale;    // 1 / sigma_depth
-uniform int squarings;        // normal weight c^(2^squarings); -1: p ln(c) in the exponent
-uniform float normal_power, normal_min;
+// prepare()'s radius and size (of the spatial table: row (dy + radius) * size + dx +
+// radius), depth_scale (1 / sigma_depth), and with NORMALS squarings (normal weight
+// c^(2^squarings); -1: p ln(c) in the exponent), normal_power and normal_min:
+#pragma ssg_consts
 
 #if CHANNELS == 3
 #define VALUE vec3
@@ -44,7 +44,7 @@ float weight(ivec2 q, float es, float dc, float kd, vec3 nc)
 #if NORMALS
     vec3 nq = ssg_load3(normal, q);
     c0 = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
-    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
+    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, float(normal_power), squarings, e);
 #endif
     precise float w = ssg_exp_neg(e) * wn;
     w = w >= 1e-30 ? w : 0.0;
