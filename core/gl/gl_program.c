@@ -18,8 +18,8 @@
  * line, so line numbers stay the file's) by the declarations of the node's parameters from
  * its descriptor's table: `uniform float p_radius;` for each row not marked host_only
  * (float -> float, int/bool/enum -> int, vec3 -> vec3, mat3 -> float[9]), and for an enum
- * its choices as `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The pass binds
- * their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
+ * its choices as `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The
+ * pass binds their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
  * name. Likewise `#pragma ssg_consts` declares the node's constants' table (the
  * descriptor's `uniforms`, rows of what prepare() makes) under their own names, `uniform
  * float rf;`, bound from the consts: a constant is made once, in prepare(), and read by
