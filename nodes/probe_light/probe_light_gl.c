@@ -23,7 +23,7 @@ static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_l
     ssg_gl_vec3(p, "eye", c->eye);
     ssg_gl_vec3(p, "centre", c->sphere.centre);
     ssg_gl_float(p, "radius", c->sphere.radius);
-    ssg_gl_int(p, "res", c->frame_res);
+    ssg_gl_int(p, "frame_res", c->frame_res);
     ssg_gl_dispatch(p, lights->width, 1);
 }
 

@@ -14,6 +14,7 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_out2;
 // prepare()'s factor, radius, spatial_k, depth_scale and the normal term's normal_power,
 // normal_min and squarings (upsample.h):
 #pragma ssg_consts
+#include "joint_weights.glsl" // joint_weight(): a tap's weight, as the CPU's add_tap
 
 #if IN_CH == 3
 #define VALUE vec3
@@ -24,30 +25,6 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_out2;
 #define LOAD ssg_load1
 #define STORE SSG_STORE1
 #endif
-
-// Weight of low-res tap q with spatial log-weight es for a pixel of depth dp, kd =
-// depth_scale / dp and unit normal nc (add_tap).
-float weight(ivec2 q, float es, float dp, float kd, vec3 nc)
-{
-    float rd = ssg_load1(low_depth, q);
-    precise float delta = (rd - dp) * kd;
-    precise float e = es - 0.5 * delta * delta;
-    float c0 = 1.0;
-    precise float wn = 1.0;
-#if NORMALS
-    vec3 nq = ssg_load3(low_normal, q);
-    precise float cp = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
-    c0 = cp;
-    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
-#endif
-    precise float w = ssg_exp_neg(e) * wn;
-    w = w >= 1e-30 ? w : 0.0;
-    w = rd > 0.0 ? w : 0.0; // background lends nothing
-#if NORMALS
-    w = c0 >= normal_min ? w : 0.0;
-#endif
-    return w;
-}
 
 // No tap had weight: the tap of closest depth (first in tap order on ties), or the centre.
 ivec2 fallback(ivec2 l, float dp)
@@ -100,7 +77,7 @@ void main()
                     continue; // the CPU's padding: weight 0, adds nothing
                 precise float ex = u - float(dx);
                 precise float es = spatial_k * ex * ex + ey;
-                float w = weight(q, es, dp, kd, nc);
+                float w = joint_weight(low_depth, low_normal, q, es, dp, kd, nc);
                 wsum += w;
                 acc += w * (LOAD(src, q) - ref);
 #if IN2_CH
