@@ -28,7 +28,8 @@
  * as `const int MODE_DISC = 2;`, rows marked host_only left out) and the pass binds their
  * values itself; `#pragma ssg_consts` does the same for the rows of the constants
  * prepare() made (the descriptor's `uniforms`, read under their own names); ssg_gl_ports
- * binds every port by its name. A node with one pass then names nothing by hand:
+ * binds every port by its name (an input whose name is a GLSL keyword by its row's
+ * gl_name). A node with one pass then names nothing by hand:
  *
  *   struct ssg_gl_pass p;
  *   ssg_gl_pass_begin(&p, ctx, "ao.glsl", NULL);  // #pragma ssg_params in ao.glsl
@@ -36,6 +37,16 @@
  *   ssg_gl_projection(&p, "proj", &c->proj);      // what prepare() made, by name
  *   ssg_gl_dispatch(&p, w, h);
  *   return ssg_gl_pass_end(&p);
+ *
+ * Variants. A shader compiled with a define that turns a feature off (NORMALS 0) does not
+ * read that feature's uniforms, and the compiler drops them. A row or port marked
+ * `.gl_if = "NORMALS"` says so: the pass requires it where the program was compiled with
+ * NORMALS nonzero, and leaves it out where the program lacks it otherwise. Rows of kind
+ * MAT3 are read as `float name[9]` (row-major), PROJECTION rows as `vec3 name`.
+ *
+ * What stays bound by hand (ssg_gl_int and the rest below) is what is neither a
+ * parameter, a constant's row nor a port of the pass: a multi-pass node's scratch images
+ * and loop values. tests/test_structure_gl.sh lists each such binding with its reason.
  *
  * Errors are sticky: after the first failing call the pass does nothing and
  * ssg_gl_pass_end returns that error (already reported through ctx->diags), so a node can
@@ -57,6 +68,8 @@
 struct ssg_gl_pass {
     const struct ssg_node_ctx *ctx; /* the node running the pass (for messages) */
     const char *shader;             /* file name, for messages */
+    const char *defines;            /* as given to ssg_gl_pass_begin (kept: it must outlive
+                                       the pass), for the rows and ports marked gl_if */
     unsigned program;               /* GL program, 0 after an error */
     int next_unit;                  /* next free texture unit */
     int next_image;                 /* next free image unit */

@@ -1,6 +1,7 @@
 /* gl_pass.c - compute passes for the nodes' GL sides (gl.h): a program, its images and
  * uniforms, and dispatches. Errors are sticky per pass (see gl.h). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "gl/gl.h"
@@ -38,6 +39,29 @@ static GLint where(struct ssg_gl_pass *p, const char *name)
     return loc;
 }
 
+/* 1 when the pass's program was compiled with `name` defined nonzero (a `#define NAME
+   value` line of its defines, or one without a value), as GLSL's `#if NAME` reads it. */
+static int define_on(const struct ssg_gl_pass *p, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *d = p->defines; d && (d = strstr(d, "#define ")); d += 8) {
+        const char *at = d + 8;
+        if (strncmp(at, name, n) != 0 || (at[n] != ' ' && at[n] != '\n' && at[n] != 0))
+            continue;
+        char *end;
+        long v = strtol(at + n, &end, 0);
+        return end == at + n || v != 0;
+    }
+    return 0;
+}
+
+/* 1 when the program must read a row or port marked gl_if (NULL: always); one compiled
+   without that define may leave it out (a variant that does not need it). */
+static int required(const struct ssg_gl_pass *p, const char *gl_if)
+{
+    return !gl_if || define_on(p, gl_if);
+}
+
 /* Sets every uniform a table declared in the program (gl_program.c) from the struct at
    `base`: the parameters (#pragma ssg_params, names p_<field>, from ctx->params) or the
    constants (#pragma ssg_consts, names <field>, from the consts' uniforms member). */
@@ -56,10 +80,13 @@ static void bind_table(struct ssg_gl_pass *p, struct ssg_param_table table, cons
         const struct ssg_param_desc *d = &table.params[i];
         const void *at = (const char *)base + d->offset;
         int is_int = d->type == SSG_P_INT || d->type == SSG_P_BOOL || d->type == SSG_P_ENUM;
-        if (d->host_only || (!is_int && d->type != SSG_P_FLOAT && d->type != SSG_P_VEC3))
+        if (d->host_only || (!is_int && d->type != SSG_P_FLOAT && d->type != SSG_P_VEC3 &&
+                             d->type != SSG_P_MAT3))
             continue;
         snprintf(name, sizeof name, "%s%s", prefix, d->name);
         GLint loc = where_optional(p, name);
+        if (loc < 0 && !required(p, d->gl_if))
+            continue;
         if (loc < 0) {
             p->err = ssg_node_fail(p->ctx, SSG_E_SHADER, "shader %s declares %s '%s' "
                                    "(#pragma %s) but does not read it: read it as %s, or "
@@ -71,6 +98,8 @@ static void bind_table(struct ssg_gl_pass *p, struct ssg_param_table table, cons
             glProgramUniform1i(p->program, loc, *(const int *)at);
         } else if (d->type == SSG_P_FLOAT) {
             glProgramUniform1f(p->program, loc, *(const float *)at);
+        } else if (d->type == SSG_P_MAT3) {
+            glProgramUniform1fv(p->program, loc, 9, at);
         } else {
             const float *v = at;
             glProgramUniform3f(p->program, loc, v[0], v[1], v[2]);
@@ -84,6 +113,7 @@ enum ssg_err ssg_gl_pass_open(struct ssg_gl_pass *pass, const struct ssg_node_ct
     memset(pass, 0, sizeof *pass);
     pass->ctx = ctx;
     pass->shader = shader;
+    pass->defines = defines;
     int binds = 0;
     pass->program = ssg_gl_program_get(ctx, shader, defines, stages, &binds);
     if (!pass->program) {
@@ -133,16 +163,31 @@ void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image 
     glProgramUniform1i(pass->program, loc, unit);
 }
 
+/* Binds one port as ssg_gl_input or ssg_gl_output would; a port marked gl_if that this
+   program variant does not read is left out. */
+static void bind_port(struct ssg_gl_pass *pass, const struct ssg_port_desc *port,
+                      const char *name, const struct ssg_image *in, struct ssg_image *out)
+{
+    if (!required(pass, port->gl_if) && where_optional(pass, name) < 0)
+        return;
+    if (out)
+        ssg_gl_output(pass, name, out);
+    else
+        ssg_gl_input(pass, name, in);
+}
+
 void ssg_gl_ports(struct ssg_gl_pass *pass, const struct ssg_io *io)
 {
     const struct ssg_node_desc *d = pass->ctx->desc;
     char name[96];
-    for (int i = 0; i < d->input_count; i++)
-        ssg_gl_input(pass, d->inputs[i].name, io->in[i]);
+    for (int i = 0; i < d->input_count; i++) {
+        const struct ssg_port_desc *in = &d->inputs[i];
+        bind_port(pass, in, in->gl_name ? in->gl_name : in->name, io->in[i], NULL);
+    }
     for (int i = 0; i < d->output_count; i++) {
         snprintf(name, sizeof name, "dst_%s", d->outputs[i].name);
         if (io->out[i]) /* an on_demand output nobody reads is not bound (node.h) */
-            ssg_gl_output(pass, name, io->out[i]);
+            bind_port(pass, &d->outputs[i], name, NULL, io->out[i]);
     }
 }
 

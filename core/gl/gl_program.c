@@ -17,9 +17,9 @@
  * A node's own file may hold one line `#pragma ssg_params`: it is replaced (on that one
  * line, so line numbers stay the file's) by the declarations of the node's parameters from
  * its descriptor's table: `uniform float p_radius;` for each row not marked host_only
- * (float -> float, int/bool/enum -> int, vec3 -> vec3), and for an enum its choices as
- * `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The pass binds
- * their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
+ * (float -> float, int/bool/enum -> int, vec3 -> vec3, mat3 -> float[9]), and for an enum
+ * its choices as `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The
+ * pass binds their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
  * name. Likewise `#pragma ssg_consts` declares the node's constants' table (the
  * descriptor's `uniforms`, rows of what prepare() makes) under their own names, `uniform
  * float rf;`, bound from the consts: a constant is made once, in prepare(), and read by
@@ -287,13 +287,14 @@ static int append_table_block(char **buf, size_t *len, size_t *cap,
     int ok = 1;
     for (int i = 0; ok && i < table.count; i++) {
         const struct ssg_param_desc *d = &table.params[i];
-        const char *type = d->type == SSG_P_FLOAT ? "float"
+        const char *type = d->type == SSG_P_FLOAT || d->type == SSG_P_MAT3 ? "float"
                            : d->type == SSG_P_VEC3 ? "vec3"
                            : d->type == SSG_P_INT || d->type == SSG_P_BOOL ||
                                    d->type == SSG_P_ENUM ? "int" : NULL;
         if (!type || d->host_only)
             continue;
-        snprintf(decl, sizeof decl, "uniform %s %s%s; ", type, prefix, d->name);
+        snprintf(decl, sizeof decl, "uniform %s %s%s%s; ", type, prefix, d->name,
+                 d->type == SSG_P_MAT3 ? "[9]" : "");
         ok = append(buf, len, cap, decl, strlen(decl));
         for (int k = 0; ok && d->type == SSG_P_ENUM && d->choices && d->choices[k]; k++) {
             ok = append(buf, len, cap, "const int ", 10) && append_upper(buf, len, cap, d->name) &&

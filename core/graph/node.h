@@ -86,6 +86,10 @@ struct ssg_port_desc {
     int on_demand;       /* output only: 1 = costs extra work that the node skips when
                             nobody reads it: a graph run then binds no image (io->out[i]
                             NULL), and the node must check before writing it */
+    const char *gl_name; /* input only: the name ssg_gl_ports binds it as where its own
+                            is a GLSL keyword (`in`: "src"); NULL = its name (gl.h) */
+    const char *gl_if;   /* NULL, or a define of the node's shader: the shader reads the
+                            port only when compiled with it nonzero (gl.h) */
 };
 
 /* Shape of an image flowing along an edge. */
@@ -391,6 +395,14 @@ struct ssg_projection {
     float f;       /* focal length in pixels */
     float cx, cy;  /* principal point in pixels */
 };
+/* A projection as a row of constants (lang/params.h): kind PROJECTION, stored as the struct
+   and read by a shader as `vec3 name` = (f, cx, cy), the three floats in their order. */
+#define SSG_PARAM_DECL_PROJECTION(f) struct ssg_projection f
+#define SSG_FIELD_PROJECTION(owner, field) \
+    .type = SSG_P_VEC3, .offset = SSG_FIELD_OFFSET(owner, field, struct ssg_projection *)
+_Static_assert(sizeof(struct ssg_projection) == 3 * sizeof(float) &&
+                   offsetof(struct ssg_projection, cy) == 2 * sizeof(float),
+               "a projection row is bound as three consecutive floats");
 static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame *frame)
 {
     struct ssg_projection p;

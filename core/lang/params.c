@@ -51,6 +51,7 @@ void ssg_params_defaults(struct ssg_param_table table, void *params)
             snprintf(FIELD(params, p, char), SSG_NAME_MAX, "%s", p->def_str ? p->def_str : "");
             break;
         case SSG_P_VEC3: memcpy(FIELD(params, p, float), p->def3, 3 * sizeof(float)); break;
+        case SSG_P_MAT3: memset(FIELD(params, p, float), 0, 9 * sizeof(float)); break;
         case SSG_P_INTS: {
             struct ssg_ints *v = FIELD(params, p, struct ssg_ints);
             v->count = p->def_ints_count;
@@ -81,6 +82,7 @@ static void expected_text(const struct ssg_param_desc *p, char *buf, size_t len)
     case SSG_P_STRING: snprintf(buf, len, "a string"); break;
     case SSG_P_NAME: snprintf(buf, len, "a name"); break;
     case SSG_P_VEC3: snprintf(buf, len, "a list of 3 numbers%s%s%s", range, sp, unit); break;
+    case SSG_P_MAT3: snprintf(buf, len, "a 3 x 3 matrix (made by prepare())"); break;
     case SSG_P_INTS:
         snprintf(buf, len, "a list of %d to %d integers%s", p->min_count, p->max_count, range);
         break;
@@ -252,6 +254,7 @@ enum ssg_err ssg_param_set(struct ssg_param_table table, int index, void *params
         return set_text(p, FIELD(params, p, char), SSG_NAME_MAX, v, SSG_V_IDENT, owner, diags);
     case SSG_P_VEC3: return set_vec3(p, FIELD(params, p, float), v, owner, diags);
     case SSG_P_INTS: return set_ints(p, FIELD(params, p, struct ssg_ints), v, owner, diags);
+    case SSG_P_MAT3: break; /* a constant's row: no file sets it */
     }
     return SSG_E_VALUE;
 }
@@ -300,7 +303,7 @@ enum ssg_err ssg_param_set_text(struct ssg_param_table table, void *params, cons
 const char *ssg_param_type_name(const struct ssg_param_desc *p)
 {
     static const char *const names[] = {"float", "int", "bool", "enum", "string", "vec3",
-                                        "int list", "name"};
+                                        "int list", "name", "mat3"};
     return names[p->type];
 }
 
@@ -353,6 +356,12 @@ void ssg_param_format(const struct ssg_param_desc *p, const void *params, char *
             n += (size_t)snprintf(buf + n, len - n, "%s%d", i ? ", " : "", v->v[i]);
         if (n < len)
             snprintf(buf + n, len - n, "]");
+        break;
+    }
+    case SSG_P_MAT3: {
+        const float *m = CFIELD(params, p, float);
+        snprintf(buf, len, "[%g, %g, %g; %g, %g, %g; %g, %g, %g]", m[0], m[1], m[2], m[3],
+                 m[4], m[5], m[6], m[7], m[8]);
         break;
     }
     }

@@ -7,6 +7,8 @@
  *   SSG_P_ENUM   int (index into .choices)             SSG_P_STRING char[SSG_STR_MAX]
  *   SSG_P_VEC3   float[3]       SSG_P_INTS  struct ssg_ints
  *   SSG_P_NAME   char[SSG_NAME_MAX] (an identifier naming another entity, e.g. a material)
+ *   SSG_P_MAT3   float[9], a 3 x 3 matrix row by row: rows of constants only (below),
+ *                never parsed from a file
  * Tables are read-only and thread-safe. */
 #ifndef SSG_PARAMS_H
 #define SSG_PARAMS_H
@@ -34,6 +36,7 @@ enum ssg_param_type {
     SSG_P_VEC3,
     SSG_P_INTS,
     SSG_P_NAME,
+    SSG_P_MAT3,
 };
 
 struct ssg_ints {
@@ -59,6 +62,9 @@ struct ssg_param_desc {
     int required;               /* 1 = must be given (no default) */
     int host_only;              /* 1 = read by the node's prepare() or CPU code only: no
                                    GLSL uniform is declared or bound for it (gl.h) */
+    const char *gl_if;          /* NULL, or a define of the node's shader (NORMALS): the
+                                   shader reads the uniform only in programs compiled with
+                                   it nonzero, and the pass requires it there (gl.h) */
 };
 
 /* The storage of a parameter: its type and its offset in the owner's params struct, e.g.
@@ -91,6 +97,8 @@ struct ssg_param_desc {
     .type = SSG_P_VEC3, .offset = SSG_FIELD_OFFSET(owner, field, float(*)[3])
 #define SSG_FIELD_INTS(owner, field) \
     .type = SSG_P_INTS, .offset = SSG_FIELD_OFFSET(owner, field, struct ssg_ints *)
+#define SSG_FIELD_MAT3(owner, field) \
+    .type = SSG_P_MAT3, .offset = SSG_FIELD_OFFSET(owner, field, float(*)[9])
 
 /* One-line parameter rows (the idea of libplacebo's OPT_* rows). A node writes each
  * parameter once, as one row of a list macro: its kind (the SSG_P_* suffix), its field,
@@ -115,6 +123,7 @@ struct ssg_param_desc {
 #define SSG_PARAM_DECL_NAME(f) char f[SSG_NAME_MAX]
 #define SSG_PARAM_DECL_VEC3(f) float f[3]
 #define SSG_PARAM_DECL_INTS(f) struct ssg_ints f
+#define SSG_PARAM_DECL_MAT3(f) float f[9]
 #define SSG_PARAM_AS_FIELD(kind, field, doc, ...) SSG_PARAM_DECL_##kind(field);
 #define SSG_PARAM_AS_ROW(kind, field, doc, ...) \
     {.name = #field, SSG_FIELD_##kind(ssg_params_owner, field), .help = doc, __VA_ARGS__},
@@ -124,16 +133,19 @@ struct ssg_param_desc {
     static const struct ssg_param_desc var[] = {LIST(SSG_PARAM_AS_ROW)}
 
 /* Rows of constants, the same way: what a node's prepare() makes from its parameters and
- * shapes for both backends (1 / f, R^2, a cap), one row each, kind FLOAT, INT, BOOL or
- * VEC3, field and doc:
+ * shapes for both backends (1 / f, R^2, a cap), one row each: kind FLOAT, INT, BOOL, VEC3,
+ * MAT3 (float[9], read as `float name[9]`) or PROJECTION (struct ssg_projection, read as
+ * `vec3 name` = (f, cx, cy); graph/node.h), field, doc, then any further initialisers
+ * (.gl_if):
  *   #define SSG_HBAO_UNIFORMS(U) U(FLOAT, rf, "f R") U(FLOAT, r2, "R^2")
  *   SSG_UNIFORMS_STRUCT(ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);        (the struct)
  *   SSG_UNIFORMS_TABLE(uniforms, ssg_hbao_uniforms, SSG_HBAO_UNIFORMS); (the table)
  * The struct is a member of the node's consts (SSG_NODE_UNIFORMS in graph/node.h), and a
- * shader with `#pragma ssg_consts` reads each row as a uniform of its own name. */
-#define SSG_UNIFORM_AS_FIELD(kind, field, doc) SSG_PARAM_DECL_##kind(field);
-#define SSG_UNIFORM_AS_ROW(kind, field, doc) \
-    {.name = #field, SSG_FIELD_##kind(ssg_uniforms_owner, field), .help = doc},
+ * shader with `#pragma ssg_consts` reads each row as a uniform of its own name. (The doc
+ * opens the variadic part, so a row of three arguments is ISO C.) */
+#define SSG_UNIFORM_AS_FIELD(kind, field, ...) SSG_PARAM_DECL_##kind(field);
+#define SSG_UNIFORM_AS_ROW(kind, field, ...) \
+    {.name = #field, SSG_FIELD_##kind(ssg_uniforms_owner, field), .help = __VA_ARGS__},
 #define SSG_UNIFORMS_STRUCT(tag, LIST) struct tag { LIST(SSG_UNIFORM_AS_FIELD) }
 #define SSG_UNIFORMS_TABLE(var, tag, LIST) \
     typedef struct tag ssg_uniforms_owner; \

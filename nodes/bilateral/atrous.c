@@ -26,9 +26,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_joint_weights w;
     (void)ctx;
     ssg_joint_weights_make(5, 0.0f, p->sigma_depth, p->normal_power, &w);
-    *c = (struct ssg_bilateral_consts){.radius = 2, .size = 5, .depth_scale = w.depth_scale,
-                                       .normal_power = p->normal_power,
-                                       .normal_min = w.normal_min, .squarings = w.squarings,
+    *c = (struct ssg_bilateral_consts){.u = {.radius = 2, .size = 5,
+                                             .depth_scale = w.depth_scale,
+                                             .normal_power = p->normal_power,
+                                             .normal_min = w.normal_min,
+                                             .squarings = w.squarings},
                                        .atrous = p->iterations};
     /* the spatial term as a log-weight, as bilateral's Gaussian is */
     for (int dy = 0; dy < 5; dy++)
@@ -38,6 +40,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_atrous_params, SSG_ATROUS_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_bilateral_uniforms, SSG_BILATERAL_UNIFORMS);
 
 const struct ssg_node_desc ssg_node_atrous = {
     .name = "atrous",

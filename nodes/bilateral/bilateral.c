@@ -52,17 +52,17 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_joint_weights w;
     (void)ctx;
     ssg_joint_weights_make(p->size, p->sigma_spatial, p->sigma_depth, p->normal_power, &w);
-    c->radius = w.radius;
-    c->size = p->size;
-    c->depth_scale = w.depth_scale;
-    c->normal_power = p->normal_power;
-    c->normal_min = w.normal_min;
-    c->squarings = w.squarings;
+    c->u.radius = w.radius;
+    c->u.size = p->size;
+    c->u.depth_scale = w.depth_scale;
+    c->u.normal_power = p->normal_power;
+    c->u.normal_min = w.normal_min;
+    c->u.squarings = w.squarings;
     c->separable = p->separable;
     const float k = w.spatial_k;
-    for (int dy = -c->radius; dy <= c->radius; dy++)
-        for (int dx = -c->radius; dx <= c->radius; dx++)
-            c->spatial[(dy + c->radius) * c->size + dx + c->radius] =
+    for (int dy = -c->u.radius; dy <= c->u.radius; dy++)
+        for (int dx = -c->u.radius; dx <= c->u.radius; dx++)
+            c->spatial[(dy + c->u.radius) * c->u.size + dx + c->u.radius] =
                 k * (float)(dx * dx + dy * dy);
     return SSG_OK;
 }
@@ -72,19 +72,20 @@ int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
 {
     if (c->atrous > 0) {
         for (int i = 0; i < c->atrous; i++)
-            pass[i] = (struct ssg_bilateral_pass){c->radius, c->radius, 1 << i};
+            pass[i] = (struct ssg_bilateral_pass){c->u.radius, c->u.radius, 1 << i};
         return c->atrous;
     }
     if (c->separable) {
-        pass[0] = (struct ssg_bilateral_pass){c->radius, 0, 1};
-        pass[1] = (struct ssg_bilateral_pass){0, c->radius, 1};
+        pass[0] = (struct ssg_bilateral_pass){c->u.radius, 0, 1};
+        pass[1] = (struct ssg_bilateral_pass){0, c->u.radius, 1};
         return 2;
     }
-    pass[0] = (struct ssg_bilateral_pass){c->radius, c->radius, 1};
+    pass[0] = (struct ssg_bilateral_pass){c->u.radius, c->u.radius, 1};
     return 1;
 }
 
 SSG_PARAMS_TABLE(params, ssg_bilateral_params, SSG_BILATERAL_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_bilateral_uniforms, SSG_BILATERAL_UNIFORMS);
 
 /* The port tables, shared with the `atrous` node (bilateral.h). */
 const struct ssg_port_desc ssg_bilateral_inputs[SSG_BILATERAL_INPUTS] = {
@@ -97,7 +98,7 @@ double ssg_bilateral_flops(const void *consts, const struct ssg_shape *in)
     const struct ssg_bilateral_consts *c = consts;
     int ch = in[SSG_BILATERAL_IN_IN].channels + in[SSG_BILATERAL_IN_IN2].channels;
     double weight = ssg_joint_tap_flops(in[SSG_BILATERAL_IN_NORMAL].channels > 0,
-                                        c->normal_power);
+                                        c->u.normal_power);
     struct ssg_bilateral_pass pass[SSG_BILATERAL_MAX_PASSES];
     int passes = ssg_bilateral_passes(c, pass);
     double taps = 0.0;

@@ -18,10 +18,11 @@ uniform sampler2DArray normal;
 layout(r32f) uniform writeonly image2DArray dst, dst2;
 uniform ivec2 reach;          // half-widths walked: (r, r), (r, 0) or (0, r)
 uniform int step;             // px between taps: 1, or an a-trous pass's dilation
-uniform int radius, size;     // of the spatial table: row (dy + radius) * size + dx + radius
-uniform float depth_scale;    // 1 / sigma_depth
-uniform int squarings;        // normal weight c^(2^squarings); -1: p ln(c) in the exponent
-uniform float normal_power, normal_min;
+// prepare()'s radius and size (of the spatial table: row (dy + radius) * size + dx +
+// radius), depth_scale (1 / sigma_depth), and with NORMALS squarings (normal weight
+// c^(2^squarings); -1: p ln(c) in the exponent), normal_power and normal_min:
+#pragma ssg_consts
+#include "joint_weights.glsl" // joint_weight(): a tap's weight, as the CPU's add_tap
 
 #if CHANNELS == 3
 #define VALUE vec3
@@ -32,28 +33,6 @@ uniform float normal_power, normal_min;
 #define LOAD ssg_load1
 #define STORE SSG_STORE1
 #endif
-
-// Weight of tap q with spatial log-weight es for a centre of depth dc, kd = depth_scale /
-// dc and unit normal nc (add_tap).
-float weight(ivec2 q, float es, float dc, float kd, vec3 nc)
-{
-    float dq = ssg_load1(depth, q);
-    precise float delta = (dq - dc) * kd;
-    precise float e = es - 0.5 * delta * delta;
-    precise float wn = 1.0, c0 = 1.0;
-#if NORMALS
-    vec3 nq = ssg_load3(normal, q);
-    c0 = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
-    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
-#endif
-    precise float w = ssg_exp_neg(e) * wn;
-    w = w >= 1e-30 ? w : 0.0;
-    w = dq > 0.0 ? w : 0.0; // background lends nothing
-#if NORMALS
-    w = c0 >= normal_min ? w : 0.0;
-#endif
-    return w;
-}
 
 void main()
 {
@@ -77,7 +56,8 @@ void main()
             ivec2 q = p + ivec2(dx, dy) * step;
             if (q.x < 0 || q.x > last.x)
                 continue;
-            float w = weight(q, spatial[(dy + radius) * size + dx + radius], dc, kd, nc);
+            float w = joint_weight(depth, normal, q,
+                                   spatial[(dy + radius) * size + dx + radius], dc, kd, nc);
             wsum += w;
             acc += w * LOAD(src, q);
 #if IN2_CH

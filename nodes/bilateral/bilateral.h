@@ -47,14 +47,21 @@ SSG_PORT_ENUM(ssg_bilateral_output, SSG_BILATERAL_OUT, SSG_BILATERAL_OUTPUTS);
       "horizontal then vertical pass: O(size) per pixel, an approximation", .def = 0)
 SSG_PARAMS_STRUCT(ssg_bilateral_params, SSG_BILATERAL_PARAMS);
 
+/* The constants the shader reads by name (#pragma ssg_consts); the normal term's only in
+   the variant with normals (NORMALS, bilateral_gl.c). */
+#define SSG_BILATERAL_UNIFORMS(U)                                                          \
+    U(INT, radius, "(size - 1) / 2, px")                                                   \
+    U(INT, size, "2 * radius + 1, px")                                                     \
+    U(FLOAT, depth_scale, "1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2")      \
+    U(INT, normal_power, "as in the parameters", .gl_if = "NORMALS")                      \
+    U(FLOAT, normal_min, "normal cosines below this weigh c^p < 1e-30 and count as 0",    \
+      .gl_if = "NORMALS")                                                                  \
+    U(INT, squarings, "c^p by that many squarings of c; -1 = p ln(c) in the exponent "    \
+      "(ssg_joint_squarings)", .gl_if = "NORMALS")
+SSG_UNIFORMS_STRUCT(ssg_bilateral_uniforms, SSG_BILATERAL_UNIFORMS);
+
 struct ssg_bilateral_consts {
-    int radius;          /* (size - 1) / 2, px */
-    int size;            /* 2 * radius + 1, px */
-    float depth_scale;   /* 1 / sigma_depth: exponent -0.5 (dd * depth_scale / d)^2 */
-    int normal_power;    /* as in the parameters */
-    float normal_min;    /* normal cosines below this weigh c^p < 1e-30 and count as 0 */
-    int squarings;       /* c^p by that many squarings of c; -1 = p ln(c) in the exponent
-                            (ssg_joint_squarings) */
+    struct ssg_bilateral_uniforms u; /* what the shader reads */
     int separable;       /* as in the parameters */
     int atrous;          /* > 0: that many 5 x 5 passes, 1, 2, 4, ... px apart (the
                             `atrous` node's consts); 0 = bilateral */
@@ -86,10 +93,12 @@ extern const struct ssg_port_desc ssg_bilateral_outputs[SSG_BILATERAL_OUTPUTS];
 enum ssg_err ssg_bilateral_check_shapes(const struct ssg_shape *in, struct ssg_shape *out,
                                         char *why, size_t why_len);
 double ssg_bilateral_flops(const void *consts, const struct ssg_shape *in);
-/* The descriptor fields both nodes share: ports, consts, flops and run functions. */
+/* The descriptor fields both nodes share: ports, consts, flops and run functions, and the
+   constants' rows (each file makes its table `uniforms` from SSG_BILATERAL_UNIFORMS). */
 #define SSG_BILATERAL_FAMILY                                                             \
     SSG_NODE_PORTS(ssg_bilateral_inputs, ssg_bilateral_outputs),                          \
     .consts_size = sizeof(struct ssg_bilateral_consts),                                  \
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_bilateral_consts, u),                         \
     .flops_per_pixel = ssg_bilateral_flops, .run_cpu = ssg_bilateral_run_cpu,            \
     .run_gl = ssg_bilateral_run_gl
 enum ssg_err ssg_bilateral_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

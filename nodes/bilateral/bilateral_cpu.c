@@ -55,7 +55,7 @@ static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
     const float *restrict depth = j->depth + o;
-    const float scale = j->c->depth_scale;
+    const float scale = j->c->u.depth_scale;
     for (int i = 0; i < len; i++) {
         float d = depth[i];
         k->dc[i] = d;
@@ -87,7 +87,7 @@ add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1,
         int channels, int mode)
 {
     const float *restrict dq = j->depth + q;
-    const float p = (float)j->c->normal_power, cmin = j->c->normal_min;
+    const float p = (float)j->c->u.normal_power, cmin = j->c->u.normal_min;
     for (int i = i0; i < i1; i++) {
         float delta = (dq[i] - k->dc[i]) * k->kd[i];
         float e = es - 0.5f * delta * delta;
@@ -116,7 +116,7 @@ add_tap(const struct job *j, struct chunk *restrict k, size_t q, int i0, int i1,
 static inline __attribute__((always_inline)) void
 taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels, int mode)
 {
-    const int r = j->c->radius, size = j->c->size, rx = j->rx, ry = j->ry, step = j->step;
+    const int r = j->c->u.radius, size = j->c->u.size, rx = j->rx, ry = j->ry, step = j->step;
     for (int dy = -ry; dy <= ry; dy++) {
         int qy = y + dy * step;
         if (qy < 0 || qy >= j->h)
@@ -138,8 +138,8 @@ taps(const struct job *j, struct chunk *k, int y, int x0, int len, int channels,
 static inline __attribute__((always_inline)) void
 taps_of(const struct job *j, struct chunk *k, int y, int x0, int len, int channels)
 {
-    int mode = ssg_normal_mode(j->nrm[0] != NULL && j->c->normal_power > 0,
-                               j->c->squarings);
+    int mode = ssg_normal_mode(j->nrm[0] != NULL && j->c->u.normal_power > 0,
+                               j->c->u.squarings);
 #define TAPS(m) taps(j, k, y, x0, len, channels, m)
     SSG_NORMAL_MODE_SWITCH(mode, TAPS)
 #undef TAPS

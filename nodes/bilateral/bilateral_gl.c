@@ -3,7 +3,10 @@
  * scratch image and a column pass over it, or the `atrous` node's dilated passes through
  * two scratch images in turn, as bilateral_cpu.c does. The spatial
  * log-weights from prepare() go to a storage buffer; the normal term's variant (by
- * squarings or through ln) is prepare()'s, as on the CPU. */
+ * squarings or through ln) is prepare()'s, as on the CPU. prepare()'s constants are bound
+ * by the table (bilateral.h); by hand only what each pass has of its own (its source and
+ * destination, the inputs or scratch images, its reach and step) and the inputs every
+ * pass shares (ssg_gl_ports would bind in and out, which the passes replace). */
 #include <stdio.h>
 
 #include "bilateral.h"
@@ -39,20 +42,13 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_bilater
     snprintf(defines, sizeof defines,
              "#define CHANNELS %d\n#define IN2_CH %d\n#define NORMALS %d\n",
              io->in[SSG_BILATERAL_IN_IN]->channels, in2 ? in2->channels : 0,
-             nrm && c->normal_power > 0);
+             nrm && c->u.normal_power > 0);
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "bilateral.glsl", defines);
-    ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->size * (size_t)c->size);
+    ssg_gl_buffer(&p, 0, c->spatial, sizeof(float) * (size_t)c->u.size * (size_t)c->u.size);
     ssg_gl_input(&p, "depth", io->in[SSG_BILATERAL_IN_DEPTH]);
-    if (nrm && c->normal_power > 0) { /* NORMALS 1: the only variant that reads them */
+    if (nrm && c->u.normal_power > 0) /* NORMALS 1: the only variant that reads it */
         ssg_gl_input(&p, "normal", nrm);
-        ssg_gl_int(&p, "squarings", c->squarings);
-        ssg_gl_float(&p, "normal_power", (float)c->normal_power);
-        ssg_gl_float(&p, "normal_min", c->normal_min);
-    }
-    ssg_gl_int(&p, "radius", c->radius);
-    ssg_gl_int(&p, "size", c->size);
-    ssg_gl_float(&p, "depth_scale", c->depth_scale);
     for (int i = 0; i < passes; i++) {
         const struct ssg_image *src = i ? tmp[(i - 1) % 2] : io->in[SSG_BILATERAL_IN_IN];
         const struct ssg_image *src2 = i ? tmp2[(i - 1) % 2] : in2;

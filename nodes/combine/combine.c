@@ -15,6 +15,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 SSG_PORT_TABLE(inputs, SSG_COMBINE_IN);
 SSG_PORT_TABLE(outputs, SSG_COMBINE_OUT);
 SSG_PARAMS_TABLE(param_table, ssg_combine_params, SSG_COMBINE_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_combine_uniforms, SSG_COMBINE_UNIFORMS);
 
 /* The ambient factor and the modulation's planes, once for both backends. */
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -22,8 +23,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_combine_consts *c = consts;
     c->p = *(const struct ssg_combine_params *)params;
     for (int i = 0; i < 3; i++)
-        c->k[i] = c->p.ambient * c->p.ambient_color[i];
-    c->modulation_last = ctx->in_shape[SSG_COMBINE_IN_MODULATION].channels == 3 ? 2 : 0;
+        c->u.k[i] = c->p.ambient * c->p.ambient_color[i];
+    c->u.modulation_last = ctx->in_shape[SSG_COMBINE_IN_MODULATION].channels == 3 ? 2 : 0;
     return SSG_OK;
 }
 
@@ -50,6 +51,7 @@ const struct ssg_node_desc ssg_node_combine = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(param_table, struct ssg_combine_params),
     .consts_size = sizeof(struct ssg_combine_consts),
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_combine_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

@@ -12,8 +12,8 @@ uniform sampler2DArray direct, albedo, ambient_occlusion, indirect, modulation, 
 uniform bool ambient_occlusion_bound, indirect_bound, modulation_bound, environment_bound,
     far_visibility_bound, irradiance_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
-uniform int modulation_last; // last layer of the modulation: 0 (one factor) or 2 (RGB)
-uniform vec3 k;              // ambient * ambient_color, made by prepare()
+// prepare()'s modulation_last (its last layer: 0 or 2) and k (ambient * colour):
+#pragma ssg_consts
 
 float layer_or(sampler2DArray t, bool bound, ivec2 p, int layer, float unbound)
 {

@@ -61,11 +61,17 @@ SSG_PORT_ENUM(ssg_combine_output, SSG_COMBINE_OUT, SSG_COMBINE_OUTPUTS);
       .def = 1)
 SSG_PARAMS_STRUCT(ssg_combine_params, SSG_COMBINE_PARAMS);
 
+/* What prepare() makes for both backends (the shader reads it by name, #pragma
+   ssg_consts). */
+#define SSG_COMBINE_UNIFORMS(U)                                                            \
+    U(VEC3, k, "ambient * ambient_color, per channel")                                    \
+    U(INT, modulation_last, "last plane of the modulation: 0 (one factor, or none) or 2 " \
+      "(RGB); channel c reads plane min(c, this)")
+SSG_UNIFORMS_STRUCT(ssg_combine_uniforms, SSG_COMBINE_UNIFORMS);
+
 struct ssg_combine_consts {
-    struct ssg_combine_params p; /* the parameters as given */
-    float k[3];                  /* ambient * ambient_color, per channel */
-    int modulation_last;         /* last plane of the modulation: 0 (one factor, or none)
-                                    or 2 (RGB); channel c reads plane min(c, this) */
+    struct ssg_combine_params p;   /* the parameters as given */
+    struct ssg_combine_uniforms u; /* the constants both backends read */
 };
 
 /* The CPU backend (combine_cpu.c). */

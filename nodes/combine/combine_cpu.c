@@ -99,10 +99,10 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
         job.irradiance[c] = irradiance ? ssg_image_plane(irradiance, c) : NULL;
         job.environment[c] = environment ? ssg_image_plane(environment, c) : NULL;
-        int plane = c < k->modulation_last ? c : k->modulation_last;
+        int plane = c < k->u.modulation_last ? c : k->u.modulation_last;
         job.modulation[c] = modulation ? ssg_image_plane(modulation, plane) : NULL;
         job.out[c] = ssg_image_plane(out, c);
-        job.k[c] = k->k[c];
+        job.k[c] = k->u.k[c];
     }
     ssg_parallel_rows(out->height, BAND_ROWS, combine_rows, &job);
     return SSG_OK;

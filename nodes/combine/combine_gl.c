@@ -10,13 +10,10 @@
 enum ssg_err ssg_combine_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
-    const struct ssg_combine_consts *c = consts;
     struct ssg_image *out = io->out[SSG_COMBINE_OUT_OUT];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "combine.glsl", NULL);
     ssg_gl_ports(&p, io);
-    ssg_gl_int(&p, "modulation_last", c->modulation_last);
-    ssg_gl_vec3(&p, "k", c->k);
     ssg_gl_dispatch(&p, out->width, out->height);
     return ssg_gl_pass_end(&p);
 }

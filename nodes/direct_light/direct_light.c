@@ -48,13 +48,13 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
 /* The lights of the scene in map order, each with its first face. */
 static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_consts *c)
 {
-    c->lights = 0;
+    c->u.lights = 0;
     for (int f = 0; f < ssg_lightmap_face_count(s, SSG_LIGHTMAP_OWN_ONLY); f++) {
         const struct ssg_lightmap_face *face = &c->faces[f];
         if (face->light < 0 || (f > 0 && c->faces[f - 1].light == face->light))
             continue;
         const struct ssg_light *l = &s->lights[face->light];
-        struct ssg_direct_light_light *d = &c->light[c->lights++];
+        struct ssg_direct_light_light *d = &c->light[c->u.lights++];
         *d = (struct ssg_direct_light_light){.point = !face->ortho, .face = f};
         for (int k = 0; k < 3; k++) {
             d->pos[k] = l->position[k];
@@ -62,7 +62,7 @@ static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_const
             d->color[k] = l->color[k];
         }
         d->intensity = l->intensity;
-        d->texel = face->ortho ? 2.0f * face->half / (float)c->res : 2.0f / (float)c->res;
+        d->texel = face->ortho ? 2.0f * face->half / (float)c->u.res : 2.0f / (float)c->u.res;
         d->spread = face->ortho ? tanf(c->p.sun_angle * (float)(M_PI / 180.0))
                                 : c->p.light_size;
     }
@@ -81,13 +81,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
                              "need %d: connect the depth output of a lightmaps node of the "
                              "same scene", maps->channels, need);
     c->p = *p;
-    c->res = maps->width;
+    c->u.res = maps->width;
     c->face_count = need;
     if (ssg_lightmap_faces(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, c->faces,
                            SSG_LIGHTMAP_FACES_MAX) < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
-    ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);
+    ssg_camera_frame(&ctx->scene->camera, c->u.rot, c->u.eye);
     for (int k = 0; k < p->samples; k++) {
         double r = sqrt((k + 0.5) / p->samples), a = GOLDEN_ANGLE * k;
         c->taps[2 * k] = (float)(r * cos(a));
@@ -98,6 +98,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_direct_light_uniforms, SSG_DIRECT_LIGHT_UNIFORMS);
 SSG_PORT_TABLE(inputs, SSG_DIRECT_LIGHT_IN);
 SSG_PORT_TABLE(outputs, SSG_DIRECT_LIGHT_OUT);
 
@@ -110,6 +111,7 @@ const struct ssg_node_desc ssg_node_direct_light = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_direct_light_params),
     .consts_size = sizeof(struct ssg_direct_light_consts),
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_direct_light_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .check_scene = check_scene,

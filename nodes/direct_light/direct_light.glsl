@@ -13,9 +13,7 @@ layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
 layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
 layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
 #pragma ssg_params
-uniform int lights, res;
-uniform float rot[9];
-uniform vec3 eye;
+#pragma ssg_consts
 const float MAX_RADIUS = 24.0, MAX_SLOPE = 10.0, EMPTY = 1.0e30, TINY = 1e-30;
 const int EARLY = 4; // direct_light_cpu.c's
 

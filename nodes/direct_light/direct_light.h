@@ -82,11 +82,17 @@ struct ssg_direct_light_light {
     float spread;   /* soft shadows: point light_size; directional tan(sun_angle) */
 };
 
+/* What the shader reads by name (#pragma ssg_consts). */
+#define SSG_DIRECT_LIGHT_UNIFORMS(U)                                                       \
+    U(MAT3, rot, "view -> world: world = eye + rot^T view")                               \
+    U(VEC3, eye, "the camera's position, world")                                          \
+    U(INT, res, "the maps' side R")                                                        \
+    U(INT, lights, "point and directional lights of the scene")
+SSG_UNIFORMS_STRUCT(ssg_direct_light_uniforms, SSG_DIRECT_LIGHT_UNIFORMS);
+
 struct ssg_direct_light_consts {
     struct ssg_direct_light_params p;
-    float rot[9], eye[3];  /* view -> world: world = eye + rot^T view */
-    int res;               /* the maps' side R */
-    int lights;            /* point and directional lights of the scene */
+    struct ssg_direct_light_uniforms u; /* camera, maps' side and light count */
     int face_count;        /* faces of the maps (the scene's; 1, empty, without lights) */
     float taps[2 * SSG_DIRECT_LIGHT_MAX_SAMPLES]; /* Vogel disc in the unit disc, x y x y */
     struct ssg_direct_light_light light[SSG_DIRECT_LIGHT_MAX_LIGHTS];

@@ -38,7 +38,7 @@ static float luminance(float r, float g, float b)
    axis') on f). */
 static float cube_depth(const struct job *j, int first, int f, int x, int y)
 {
-    const int res = j->c->res;
+    const int res = j->c->u.res;
     if (x >= 0 && y >= 0 && x < res && y < res)
         return j->maps[((size_t)(first + f) * res + y) * res + x];
     const struct ssg_lightmap_face *face = &j->c->faces[first + f];
@@ -80,7 +80,7 @@ struct lookup {
    where the map has none or (directional) the texel is off the map. */
 static float occluder(const struct job *j, const struct lookup *k, int x, int y)
 {
-    const int res = j->c->res;
+    const int res = j->c->u.res;
     if (k->l->point)
         return cube_depth(j, k->l->face, k->f, x, y);
     if (x < 0 || y < 0 || x >= res || y >= res)
@@ -103,7 +103,7 @@ static float tap_limit(const struct job *j, const struct lookup *k, float x, flo
         t = k->r + k->gx * dx + k->gy * dy;
     } else {
         const struct ssg_lightmap_face *f = &j->c->faces[k->l->face + k->f];
-        float a = 2.0f * x / (float)j->c->res - 1.0f, b = 2.0f * y / (float)j->c->res - 1.0f;
+        float a = 2.0f * x / (float)j->c->u.res - 1.0f, b = 2.0f * y / (float)j->c->u.res - 1.0f;
         float d[3], len2 = 0.0f, nd = 0.0f;
         for (int i = 0; i < 3; i++) {
             d[i] = f->axis[i] + a * f->u[i] + b * f->v[i];
@@ -187,7 +187,7 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
         k->r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
     const struct ssg_lightmap_face *f = &c->faces[light->face + k->f];
-    ssg_lightmap_project(f, c->res, q, &k->x, &k->y, &z);
+    ssg_lightmap_project(f, c->u.res, q, &k->x, &k->y, &z);
     k->r = light->point ? k->r : z;
     k->z = z;
     k->bias = c->p.offset * k->texel;
@@ -238,7 +238,7 @@ static void load(const struct job *j, int y, int x0, int len, struct chunk *rest
 {
     const struct ssg_image *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION];
     const struct ssg_image *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL];
-    const float *r = j->c->rot, *eye = j->c->eye;
+    const float *r = j->c->u.rot, *eye = j->c->u.eye;
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
     for (int i = 0; i < len; i++) {
         float vx = pos->data[at + i], vy = pos->data[plane + at + i];
@@ -319,7 +319,7 @@ static void rows(void *user, int y0, int y1)
         for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
             int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
             load(j, y, x0, len, &k);
-            for (int li = 0; li < j->c->lights; li++)
+            for (int li = 0; li < j->c->u.lights; li++)
                 add_light(j, li, y, x0, len, &k);
             store(j, y, x0, len, &k);
         }

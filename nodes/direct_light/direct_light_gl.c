@@ -16,12 +16,8 @@ enum ssg_err ssg_direct_light_run_gl(const struct ssg_node_ctx *ctx, const void 
     ssg_gl_pass_begin(&p, ctx, "direct_light.glsl", NULL);
     ssg_gl_ports(&p, io);
     ssg_gl_buffer(&p, 0, c->faces, sizeof c->faces[0] * (size_t)c->face_count);
-    ssg_gl_buffer(&p, 1, c->light, sizeof c->light[0] * (size_t)(c->lights ? c->lights : 1));
+    ssg_gl_buffer(&p, 1, c->light, sizeof c->light[0] * (size_t)(c->u.lights ? c->u.lights : 1));
     ssg_gl_buffer(&p, 2, c->taps, sizeof(float) * 2 * (size_t)c->p.samples);
-    ssg_gl_int(&p, "lights", c->lights);
-    ssg_gl_int(&p, "res", c->res);
-    ssg_gl_floats(&p, "rot", 9, c->rot);
-    ssg_gl_vec3(&p, "eye", c->eye);
     ssg_gl_dispatch(&p, pos->width, pos->height);
     return ssg_gl_pass_end(&p);
 }

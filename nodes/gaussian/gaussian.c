@@ -30,11 +30,11 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     const struct ssg_gaussian_params *p = params;
     struct ssg_gaussian_consts *c = consts;
     int size = window_size(p);
-    c->radius = (size - 1) / 2;
+    c->u.radius = (size - 1) / 2;
     double w[SSG_GAUSSIAN_MAX_SIZE], sum = 0;
-    for (int i = -c->radius; i <= c->radius; i++) {
-        w[i + c->radius] = exp(-0.5 * (double)i * i / ((double)p->sigma * p->sigma));
-        sum += w[i + c->radius];
+    for (int i = -c->u.radius; i <= c->u.radius; i++) {
+        w[i + c->u.radius] = exp(-0.5 * (double)i * i / ((double)p->sigma * p->sigma));
+        sum += w[i + c->u.radius];
     }
     for (int i = 0; i < size; i++)
         c->weight[i] = (float)(w[i] / sum);
@@ -42,6 +42,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_gaussian_params, SSG_GAUSSIAN_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_gaussian_uniforms, SSG_GAUSSIAN_UNIFORMS);
 SSG_PORT_TABLE(inputs, SSG_GAUSSIAN_IN);
 SSG_PORT_TABLE(outputs, SSG_GAUSSIAN_OUT);
 
@@ -49,7 +50,7 @@ SSG_PORT_TABLE(outputs, SSG_GAUSSIAN_OUT);
 static double gaussian_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_gaussian_consts *c = consts;
-    return 2.0 * (2.0 * c->radius + 1.0) * 2.0 * in[SSG_GAUSSIAN_IN_IN].channels;
+    return 2.0 * (2.0 * c->u.radius + 1.0) * 2.0 * in[SSG_GAUSSIAN_IN_IN].channels;
 }
 
 const struct ssg_node_desc ssg_node_gaussian = {
@@ -61,6 +62,7 @@ const struct ssg_node_desc ssg_node_gaussian = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_gaussian_params),
     .consts_size = sizeof(struct ssg_gaussian_consts),
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_gaussian_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

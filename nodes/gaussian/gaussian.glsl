@@ -5,7 +5,7 @@ layout(std430, binding = 0) readonly buffer Weights { float weight[]; };
 uniform sampler2DArray src;
 layout(r32f) uniform writeonly image2DArray dst;
 uniform ivec2 axis;   // (1, 0) horizontal, (0, 1) vertical
-uniform int radius;
+#pragma ssg_consts
 uniform int layer;    // the channel being filtered
 
 void main()

@@ -29,8 +29,12 @@ SSG_PORT_ENUM(ssg_gaussian_output, SSG_GAUSSIAN_OUT, SSG_GAUSSIAN_OUTPUTS);
       .max = SSG_GAUSSIAN_MAX_SIZE, .unit = "px", .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_gaussian_params, SSG_GAUSSIAN_PARAMS);
 
+/* What the shader reads by name (#pragma ssg_consts). */
+#define SSG_GAUSSIAN_UNIFORMS(U) U(INT, radius, "(size - 1) / 2, px")
+SSG_UNIFORMS_STRUCT(ssg_gaussian_uniforms, SSG_GAUSSIAN_UNIFORMS);
+
 struct ssg_gaussian_consts {
-    int radius;                             /* (size - 1) / 2, px */
+    struct ssg_gaussian_uniforms u;         /* the radius */
     float weight[SSG_GAUSSIAN_MAX_SIZE];    /* normalised weights of offsets -radius..radius
                                                (index offset + radius); they sum to 1 */
 };

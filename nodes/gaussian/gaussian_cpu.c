@@ -26,7 +26,7 @@ struct job {
 static void horizontal(void *user, int y0, int y1)
 {
     const struct job *j = user;
-    const int r = j->c->radius, w = j->w, taps = 2 * r + 1;
+    const int r = j->c->u.radius, w = j->w, taps = 2 * r + 1;
     float *restrict pad = j->scratch + (size_t)(y0 / ROWS_PER_BAND) * (size_t)(w + 2 * r);
     for (int y = y0; y < y1; y++) {
         const float *restrict row = j->src + (size_t)y * (size_t)w;
@@ -49,7 +49,7 @@ static void horizontal(void *user, int y0, int y1)
 static void vertical(void *user, int y0, int y1)
 {
     const struct job *j = user;
-    const int r = j->c->radius, w = j->w, h = j->h, taps = 2 * r + 1;
+    const int r = j->c->u.radius, w = j->w, h = j->h, taps = 2 * r + 1;
     for (int y = y0; y < y1; y++) {
         float *restrict acc = j->dst + (size_t)y * (size_t)w;
         memset(acc, 0, (size_t)w * sizeof *acc);
@@ -75,7 +75,7 @@ enum ssg_err ssg_gaussian_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     size_t bands = (size_t)(j.h + ROWS_PER_BAND - 1) / ROWS_PER_BAND;
     /* the intermediate image, then the bands' padded rows, in the node's scratch (node.h):
        kept between frames, no fresh pages each run */
-    size_t rows = bands * (size_t)(j.w + 2 * c->radius);
+    size_t rows = bands * (size_t)(j.w + 2 * c->u.radius);
     j.tmp = ssg_node_scratch(ctx, (plane + rows) * sizeof *j.tmp);
     if (!j.tmp)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the intermediate image");

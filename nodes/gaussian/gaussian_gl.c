@@ -1,6 +1,8 @@
 /* gaussian_gl.c - GL side of the `gaussian` node (method in README.md): the horizontal
  * pass into a scratch image, then the vertical one, one dispatch per channel, the weights
- * from prepare() in a storage buffer. */
+ * from prepare() in a storage buffer, the radius by the table (#pragma ssg_consts). What
+ * is bound by hand is each dispatch's own: the scratch image between the passes, the
+ * axis and the channel. */
 #include "gaussian.h"
 #include "gl/gl.h"
 
@@ -27,8 +29,7 @@ enum ssg_err ssg_gaussian_run_gl(const struct ssg_node_ctx *ctx, const void *con
         return SSG_E_NOMEM;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "gaussian.glsl", NULL);
-    ssg_gl_buffer(&p, 0, c->weight, (size_t)(2 * c->radius + 1) * sizeof(float));
-    ssg_gl_int(&p, "radius", c->radius);
+    ssg_gl_buffer(&p, 0, c->weight, (size_t)(2 * c->u.radius + 1) * sizeof(float));
     one_axis(&p, in, tmp, 1, 0);
     one_axis(&p, tmp, out, 0, 1);
     ssg_gl_scratch_release(&tmp);

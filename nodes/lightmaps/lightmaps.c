@@ -142,14 +142,14 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (env_irradiance(ctx->scene, p->environment, &env_e))
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the environment's lights");
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
-    c->near_z = SSG_LIGHTMAPS_NEAR * sphere.radius;
-    c->far_z = 0.0f;
+    c->u.near_z = SSG_LIGHTMAPS_NEAR * sphere.radius;
+    c->u.far_z = 0.0f;
     for (int f = 0; f < c->count; f++) {
         face_flux(ctx->scene, c, f, env_e, c->flux[f]);
         const float *o = c->faces[f].origin;
         float d[3] = {o[0] - sphere.centre[0], o[1] - sphere.centre[1], o[2] - sphere.centre[2]};
         float far = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + sphere.radius;
-        c->far_z = far * 1.01f > c->far_z ? far * 1.01f : c->far_z;
+        c->u.far_z = far * 1.01f > c->u.far_z ? far * 1.01f : c->u.far_z;
     }
     free(env_e);
     pack_faces(c);
@@ -157,6 +157,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_lightmaps_uniforms, SSG_LIGHTMAPS_UNIFORMS);
 SSG_PORT_TABLE(outputs, SSG_LIGHTMAPS_OUT);
 
 const struct ssg_node_desc ssg_node_lightmaps = {
@@ -168,6 +169,7 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
     .consts_size = sizeof(struct ssg_lightmaps_consts),
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_lightmaps_consts, u),
     /* the lights' own views, in world space */
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
     .check = check,

@@ -14,7 +14,7 @@ layout(std430, binding = 5) readonly buffer Faces { float face[]; };
 const int FACE = 20;
 #pragma ssg_params
 uniform int ssg_layer, ssg_mesh;
-uniform float near_z, far_z;
+#pragma ssg_consts
 
 vec3 face3(int k) { int o = FACE * ssg_layer + k; return vec3(face[o], face[o + 1], face[o + 2]); }
 

@@ -47,11 +47,16 @@ enum { SSG_LIGHTMAPS_FACE_FLOATS = 20 };
    are cut (GL's clip and the CPU's polygon clip at the same plane). */
 #define SSG_LIGHTMAPS_NEAR 1.0e-3f
 
+/* The depth range the shader reads by name (#pragma ssg_consts). */
+#define SSG_LIGHTMAPS_UNIFORMS(U)                                                          \
+    U(FLOAT, near_z, "cube faces' near plane, scene units")                               \
+    U(FLOAT, far_z, "cube faces' far plane (GL depth range)")
+SSG_UNIFORMS_STRUCT(ssg_lightmaps_uniforms, SSG_LIGHTMAPS_UNIFORMS);
+
 /* The constants both backends read: the faces of the scene's lights. */
 struct ssg_lightmaps_consts {
     int res, count;                    /* R and the face count F */
-    float near_z;                      /* cube faces' near plane, scene units */
-    float far_z;                       /* cube faces' far plane (GL depth range) */
+    struct ssg_lightmaps_uniforms u;   /* the depth range */
     float flux[SSG_LIGHTMAP_FACES_MAX][3]; /* per face: E x texel area (orthographic) or I
                                               (cube, times the texel's solid angle) */
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];

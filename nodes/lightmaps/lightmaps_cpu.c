@@ -60,7 +60,7 @@ SSG_VECTOR_CLONES
 static void project_face(const struct job *j, int fi)
 {
     const struct ssg_lightmap_face *f = &j->c->faces[fi];
-    const float res = (float)j->c->res, near_z = j->c->near_z;
+    const float res = (float)j->c->res, near_z = j->c->u.near_z;
     const float inv_half = 1.0f / f->half;
     for (int mi = 0; mi < j->scene->mesh_count; mi++) {
         const struct ssg_mesh *m = &j->scene->meshes[mi];
@@ -243,15 +243,15 @@ static void draw_triangle(const struct job *j, const struct strip *s, int fi, in
     for (int k = 0; k < 3; k++)
         to_face(f, &m->positions[3 * (size_t)tri[k]], q[k]);
     struct plane pl;
-    if (!depth_plane(f, (const double(*)[3])q, j->c->near_z, &pl))
+    if (!depth_plane(f, (const double(*)[3])q, j->c->u.near_z, &pl))
         return;
     int32_t id = (int32_t)(j->first_tri[mi] + t);
     if ((ok[tri[0]] | ok[tri[1]] | ok[tri[2]]) == 0) {
         int64_t tx[3] = {x[tri[0]], x[tri[1]], x[tri[2]]};
         int64_t ty[3] = {y[tri[0]], y[tri[1]], y[tri[2]]};
         fill(s, tx, ty, &pl, id);
-    } else if (!f->ortho && fmax(q[0][2], fmax(q[1][2], q[2][2])) >= j->c->near_z) {
-        fill_clipped(s, (const double(*)[3])q, j->c->near_z, &pl, id);
+    } else if (!f->ortho && fmax(q[0][2], fmax(q[1][2], q[2][2])) >= j->c->u.near_z) {
+        fill_clipped(s, (const double(*)[3])q, j->c->u.near_z, &pl, id);
     }
 }
 

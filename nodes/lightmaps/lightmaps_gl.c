@@ -20,8 +20,6 @@ enum ssg_err ssg_lightmaps_run_gl(const struct ssg_node_ctx *ctx, const void *co
     ssg_gl_buffer(&pass, SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS, c->face_floats,
                   sizeof(float) * SSG_LIGHTMAPS_FACE_FLOATS * (size_t)c->count);
     ssg_gl_scene_bind(scene);
-    ssg_gl_float(&pass, "near_z", c->near_z);
-    ssg_gl_float(&pass, "far_z", c->far_z);
     const struct ssg_gl_stack stacks[SSG_LIGHTMAPS_OUTPUTS] = {
         {io->out[SSG_LIGHTMAPS_OUT_DEPTH], 1, SSG_SHADOW_EMPTY},
         {io->out[SSG_LIGHTMAPS_OUT_NORMAL], 3, 0.0f},

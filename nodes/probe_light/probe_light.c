@@ -90,19 +90,19 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->sphere = ssg_scene_bounding_sphere(ctx->scene);
     make_noise(p->noise_tile, ctx->frame ? ctx->frame->seed : 1, c->noise);
     const struct ssg_shape *maps = &ctx->in_shape[SSG_PROBE_LIGHT_IN_SHADOWMAPS];
-    c->count = ctx->in_shape[SSG_PROBE_LIGHT_IN_LIGHTS].width;
-    c->res = maps->channels ? maps->width : 0;
-    c->frame_res = c->res ? c->res : 1;
-    float texel = c->res ? 2.0f * c->sphere.radius / (float)c->res : 0.0f;
-    c->texel = texel;
-    c->cone_tan = p->softness > 0 && c->res ? (float)(cone_tan_of(c->count, p->softness) /
+    c->u.count = ctx->in_shape[SSG_PROBE_LIGHT_IN_LIGHTS].width;
+    c->u.res = maps->channels ? maps->width : 0;
+    c->frame_res = c->u.res ? c->u.res : 1;
+    float texel = c->u.res ? 2.0f * c->sphere.radius / (float)c->u.res : 0.0f;
+    c->u.texel = texel;
+    c->u.cone_tan = p->softness > 0 && c->u.res ? (float)(cone_tan_of(c->u.count, p->softness) /
                                                       texel) : 0.0f;
     make_taps(p->taps, c->tap);
     make_taps(p->search_taps, c->tap + 2 * p->taps);
-    c->offset_world = c->p.offset * texel;
-    c->slope_world = c->p.slope_offset * texel;
-    c->normal_world = c->p.normal_offset * texel;
-    ssg_probe_light_rotations(c->count, c->cos_sin);
+    c->u.offset_world = c->p.offset * texel;
+    c->u.slope_world = c->p.slope_offset * texel;
+    c->u.normal_world = c->p.normal_offset * texel;
+    ssg_probe_light_rotations(c->u.count, c->cos_sin);
     return SSG_OK;
 }
 
@@ -162,6 +162,7 @@ static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 }
 
 SSG_PARAMS_TABLE(params, ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_probe_light_uniforms, SSG_PROBE_LIGHT_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_PROBE_LIGHT_IN);
 SSG_PORT_TABLE(outputs, SSG_PROBE_LIGHT_OUT);
@@ -176,8 +177,8 @@ static double probe_light_flops(const void *consts, const struct ssg_shape *in)
     (void)in;
     /* soft lookups: 55 to set a light up (point, depth, receiver slope), about 15 a tap,
        taps + search_taps taps (the filter and the search) */
-    double shadow = c->cone_tan > 0.0f ? 55.0 + 15.0 * (c->p.taps + c->p.search_taps) : 45.0;
-    return 20.0 + c->count * (15.0 + (c->res > 0 ? shadow : 0.0));
+    double shadow = c->u.cone_tan > 0.0f ? 55.0 + 15.0 * (c->p.taps + c->p.search_taps) : 45.0;
+    return 20.0 + c->u.count * (15.0 + (c->u.res > 0 ? shadow : 0.0));
 }
 
 const struct ssg_node_desc ssg_node_probe_light = {
@@ -192,6 +193,7 @@ const struct ssg_node_desc ssg_node_probe_light = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_probe_light_params),
     .consts_size_of = consts_size_of,
+    SSG_NODE_UNIFORMS(uniforms, struct ssg_probe_light_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

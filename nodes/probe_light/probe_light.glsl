@@ -11,10 +11,7 @@ layout(std430, binding = 1) readonly buffer Noise { float noise[]; };
 layout(std430, binding = 2) readonly buffer Taps { float tap[]; };
 layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 #pragma ssg_params
-uniform int count, res;
-uniform float offset_world, slope_world, normal_world;
-uniform float texel, cone_tan, search; // soft lookups: cone_tan 0 = hard
-uniform int taps, search_taps;
+#pragma ssg_consts
 const float MAX_SLOPE = 10.0; // SSG_PROBE_LIGHT_MAX_SLOPE
 
 float frame(int light, int k)
@@ -91,11 +88,11 @@ float soft_visible(int i, vec3 P0, vec3 N, float cosine)
     precise float add = offset_world + slope_world * tangent;
     float cr = cos_sin[2 * i], sr = cos_sin[2 * i + 1];
     precise float hsum = 0.0, hcnt = 0.0, lit = 0.0;
-    int s0 = 2 * taps; // the search's pattern follows the filter's
-    for (int t = 0; t < search_taps; t++) {
-        precise float ox = cr * tap[s0 + t] - sr * tap[s0 + search_taps + t];
-        precise float oy = sr * tap[s0 + t] + cr * tap[s0 + search_taps + t];
-        precise float sx = search * ox, sy = search * oy;
+    int s0 = 2 * p_taps; // the search's pattern follows the filter's
+    for (int t = 0; t < p_search_taps; t++) {
+        precise float ox = cr * tap[s0 + t] - sr * tap[s0 + p_search_taps + t];
+        precise float oy = sr * tap[s0 + t] + cr * tap[s0 + p_search_taps + t];
+        precise float sx = p_search_radius * ox, sy = p_search_radius * oy;
         float h = tap_height(i, x, y, d, g, sx, sy);
         if (h > add) {
             hsum += h;
@@ -106,18 +103,18 @@ float soft_visible(int i, vec3 P0, vec3 N, float cosine)
     }
     if (!(hcnt > 0.0))
         return 1.0;
-    if (!(hcnt < float(search_taps)))
+    if (!(hcnt < float(p_search_taps)))
         return 0.0; // the umbra, as the CPU's
     precise float r = hsum / hcnt * cone_tan;
-    r = r > 1.0 ? (r < search ? r : search) : 1.0;
-    for (int t = 1; t < taps; t++) {
-        precise float ox = cr * tap[t] - sr * tap[taps + t];
-        precise float oy = sr * tap[t] + cr * tap[taps + t];
+    r = r > 1.0 ? (r < p_search_radius ? r : p_search_radius) : 1.0;
+    for (int t = 1; t < p_taps; t++) {
+        precise float ox = cr * tap[t] - sr * tap[p_taps + t];
+        precise float oy = sr * tap[t] + cr * tap[p_taps + t];
         precise float sx = r * ox, sy = r * oy;
         if (!(tap_height(i, x, y, d, g, sx, sy) > add))
             lit += 1.0;
     }
-    precise float share = 1.0 / float(taps);
+    precise float share = 1.0 / float(p_taps);
     return lit * share;
 }
 

@@ -35,9 +35,10 @@ enum { SSG_PROBE_LIGHT_MAX_TILE = 16, SSG_PROBE_LIGHT_MAX_TAPS = 16 };
 SSG_PORT_ENUM(ssg_probe_light_input, SSG_PROBE_LIGHT_IN, SSG_PROBE_LIGHT_INPUTS);
 SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPUTS);
 
-/* The parameters, one row each (lang/params.h); probe_light.glsl reads the jitter's as
-   p_<field> (#pragma ssg_params). The offsets reach both backends in scene units, made in
-   prepare() (offset_world, ...): their rows are host_only. */
+/* The parameters, one row each (lang/params.h); probe_light.glsl reads the jitter's and
+   the soft lookups' taps and search radius as p_<field> (#pragma ssg_params). The
+   offsets reach both backends in scene units, made in prepare() (offset_world, ...):
+   their rows are host_only. */
 #define SSG_PROBE_LIGHT_PARAMS(P)                                                          \
     P(FLOAT, offset,                                                                       \
       "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "        \
@@ -66,14 +67,26 @@ SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPU
       "jittered by noise_radius",                                                          \
       .def = 1, .min = 0, .max = 4, .unit = "x", .host_only = 1)                           \
     P(INT, taps, "soft lookups: map reads of the filter over the penumbra, per light",    \
-      .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS, .unit = "taps",                 \
-      .host_only = 1)                                                                      \
+      .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS, .unit = "taps")                 \
     P(INT, search_taps, "soft lookups: map reads of the blocker search, per light (the "   \
       "first at the pixel)", .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS,          \
-      .unit = "taps", .host_only = 1)                                                      \
+      .unit = "taps")                                                                      \
     P(FLOAT, search_radius, "soft lookups: the blocker search's radius, the widest "       \
-      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels", .host_only = 1)
+      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels")
 SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
+
+/* What prepare() makes of the inputs' shapes that probe_light.glsl reads by name (#pragma
+   ssg_consts). */
+#define SSG_PROBE_LIGHT_UNIFORMS(U)                                                        \
+    U(INT, count, "lights N (the light list's width)")                                    \
+    U(INT, res, "the maps' side R; 0 = no shadow maps")                                   \
+    U(FLOAT, offset_world, "offset in scene units (texels of 2 radius / R)")              \
+    U(FLOAT, slope_world, "slope_offset in scene units")                                  \
+    U(FLOAT, normal_world, "normal_offset in scene units")                                \
+    U(FLOAT, texel, "the maps' texel 2 radius / R, scene units (0: no maps)")             \
+    U(FLOAT, cone_tan, "soft lookups: tan of the light's cone half-angle over texel "     \
+      "(penumbra texels per scene unit of blocker height); 0 = hard lookups")
+SSG_UNIFORMS_STRUCT(ssg_probe_light_uniforms, SSG_PROBE_LIGHT_UNIFORMS);
 
 struct ssg_probe_light_consts {
     struct ssg_probe_light_params p;
@@ -82,18 +95,9 @@ struct ssg_probe_light_consts {
     /* the jitter tile: offsets in the unit disc, x plane then y plane, tile^2 each */
     float noise[2 * SSG_PROBE_LIGHT_MAX_TILE * SSG_PROBE_LIGHT_MAX_TILE];
     /* Of the inputs' shapes, for both backends: */
-    int count;                          /* lights N (the light list's width) */
-    int res;                            /* the maps' side R; 0 = no shadow maps */
+    struct ssg_probe_light_uniforms u;  /* what probe_light.glsl reads by name */
     int frame_res;                      /* R the light frames are made for: res, or 1
                                            without maps (then unused, but finite) */
-    float offset_world, slope_world;    /* offset and slope_offset in scene units (texels
-                                           of 2 radius / R) */
-    float normal_world;                 /* normal_offset in scene units */
-    float texel;                        /* the maps' texel 2 radius / R, scene units (0:
-                                           no maps) */
-    float cone_tan;                     /* soft lookups: tan of the light's cone half-angle
-                                           over texel (penumbra texels per scene unit of
-                                           blocker height); 0 = hard lookups */
     /* soft lookups: the filter's taps' offsets in the unit disc (Vogel's spiral), x then
        y, taps each; then the blocker search's, search_taps each */
     float tap[4 * SSG_PROBE_LIGHT_MAX_TAPS];

@@ -136,7 +136,7 @@ static inline __attribute__((always_inline)) void
 soft_setup(const struct job *j, const float *restrict f, int len, struct chunk *restrict k)
 {
     const float normal_world = j->normal_world, offset = j->offset_world;
-    const float slope = j->slope_world, texel = j->c->texel;
+    const float slope = j->slope_world, texel = j->c->u.texel;
     const float tt = texel * texel, gmax = SSG_PROBE_LIGHT_MAX_SLOPE * texel;
     for (int i = 0; i < len; i++) {
         struct lifted o = lift(f, normal_world, k, i);
@@ -183,7 +183,7 @@ soft_visibility(const struct job *j, const float *restrict f, const float *restr
 {
     const int n = j->taps, m = j->search_taps;
     const float *tap = j->c->tap, *stap = tap + 2 * n, search = j->search;
-    const float cone = j->c->cone_tan;
+    const float cone = j->c->u.cone_tan;
     soft_setup(j, f, len, k);
     for (int t = 0; t < m; t++) {
         float ox = cr * stap[t] - sr * stap[m + t], oy = sr * stap[t] + cr * stap[m + t];
@@ -240,7 +240,7 @@ static inline __attribute__((always_inline)) void add_light(const struct job *j,
     }
     if (!facing)
         return;
-    if (maps && j->c->cone_tan > 0.0f)
+    if (maps && j->c->u.cone_tan > 0.0f)
         soft_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
     else if (maps)
         light_visibility(j, f, ssg_image_plane(maps, li), cr, sr, len, k);
@@ -294,7 +294,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
                                      const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
-    const int count = c->count, res = c->res;
+    const int count = c->u.count, res = c->u.res;
     float *frames = malloc(sizeof(float) * SSG_PROBE_LIGHT_FRAME * (size_t)count);
     if (!frames)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
@@ -306,7 +306,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
     const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
-                    c->offset_world, c->slope_world, c->normal_world, p->noise_radius,
+                    c->u.offset_world, c->u.slope_world, c->u.normal_world, p->noise_radius,
                     c->p.taps, c->p.search_taps, c->p.search_radius};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);

@@ -7,7 +7,7 @@ layout(r32f) uniform writeonly image2DArray frames;
 uniform float rot[9];  // view -> world: world = eye + rot^T view
 uniform vec3 eye, centre;
 uniform float radius;
-uniform int res;
+uniform int frame_res;
 
 vec3 rotate(vec3 w)
 {
@@ -28,7 +28,7 @@ void main()
     vec3 u, v;
     ssg_shadow_basis(l, u, v);
     precise vec3 origin = centre + radius * l;
-    precise float s = 0.5 * float(res) / radius;
+    precise float s = 0.5 * float(frame_res) / radius;
     precise vec3 e = eye - origin;
     vec3 ru = rotate(u), rv = rotate(v), rl = rotate(l);
     precise float f[16];
@@ -38,8 +38,8 @@ void main()
         f[8 + k] = -rl[k];
         f[12 + k] = rl[k];
     }
-    f[3] = s * (e.x * u.x + e.y * u.y + e.z * u.z) + 0.5 * float(res);
-    f[7] = s * (e.x * v.x + e.y * v.y + e.z * v.z) + 0.5 * float(res);
+    f[3] = s * (e.x * u.x + e.y * u.y + e.z * u.z) + 0.5 * float(frame_res);
+    f[7] = s * (e.x * v.x + e.y * v.y + e.z * v.z) + 0.5 * float(frame_res);
     f[11] = -(e.x * l.x + e.y * l.y + e.z * l.z);
     f[15] = 0.0;
     for (int k = 0; k < 16; k++)

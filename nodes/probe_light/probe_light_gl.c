@@ -1,9 +1,12 @@
 /* probe_light_gl.c - GL side of the `probe_light` node (method in README.md): a first
  * pass turns the light list into every light's frame (probe_light_frames.glsl, the floats
  * of ssg_probe_light_frame) in a scratch image, so the list never returns to the CPU; the
- * second (probe_light.glsl) lights every pixel, reading every port (bound by the table)
- * and the jitter's parameters (#pragma ssg_params). The jitter tile and the per-light
- * rotations are the CPU's floats, in storage buffers. */
+ * second (probe_light.glsl) lights every pixel, reading every port (bound by the table),
+ * the parameters (#pragma ssg_params) and prepare()'s constants (#pragma ssg_consts), and
+ * the frames. The jitter tile and the per-light rotations are the CPU's floats, in storage
+ * buffers. The first pass's uniforms are bound by hand: the node's constants' table serves
+ * the second shader, and the frames pass is the node's inner step (a scratch image the
+ * light pass reads), as a loop value of a multi-pass node is. */
 #include <stdlib.h>
 
 #include "gl/gl.h"
@@ -20,7 +23,7 @@ static void frames_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_l
     ssg_gl_vec3(p, "eye", c->eye);
     ssg_gl_vec3(p, "centre", c->sphere.centre);
     ssg_gl_float(p, "radius", c->sphere.radius);
-    ssg_gl_int(p, "res", c->frame_res);
+    ssg_gl_int(p, "frame_res", c->frame_res);
     ssg_gl_dispatch(p, lights->width, 1);
 }
 
@@ -33,19 +36,9 @@ static void light_pass(const struct ssg_node_ctx *ctx, const struct ssg_probe_li
     ssg_gl_pass_begin(p, ctx, "probe_light.glsl", NULL);
     ssg_gl_ports(p, io);
     ssg_gl_input(p, "frames", frames);
-    ssg_gl_buffer(p, 0, c->cos_sin, sizeof(float) * 2 * (size_t)c->count);
+    ssg_gl_buffer(p, 0, c->cos_sin, sizeof(float) * 2 * (size_t)c->u.count);
     ssg_gl_buffer(p, 1, c->noise, sizeof(float) * 2 * tile * tile);
     ssg_gl_buffer(p, 2, c->tap, sizeof(float) * 2 * (size_t)(c->p.taps + c->p.search_taps));
-    ssg_gl_int(p, "count", c->count);
-    ssg_gl_int(p, "res", c->res);
-    ssg_gl_float(p, "offset_world", c->offset_world);
-    ssg_gl_float(p, "slope_world", c->slope_world);
-    ssg_gl_float(p, "normal_world", c->normal_world);
-    ssg_gl_float(p, "texel", c->texel);
-    ssg_gl_float(p, "cone_tan", c->cone_tan);
-    ssg_gl_float(p, "search", c->p.search_radius);
-    ssg_gl_int(p, "taps", c->p.taps);
-    ssg_gl_int(p, "search_taps", c->p.search_taps);
     ssg_gl_dispatch(p, pos->width, pos->height);
 }
 
@@ -53,7 +46,7 @@ enum ssg_err ssg_probe_light_run_gl(const struct ssg_node_ctx *ctx, const void *
                                     const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
-    struct ssg_image *frames = ssg_gl_scratch(ctx, c->count, 1, SSG_PROBE_LIGHT_FRAME);
+    struct ssg_image *frames = ssg_gl_scratch(ctx, c->u.count, 1, SSG_PROBE_LIGHT_FRAME);
     if (!frames)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     enum ssg_err e;

@@ -77,8 +77,8 @@ static void test_cone(const struct ssg_scene *s, struct ssg_probe_light_consts *
         const char *sets[] = {cases[i].set};
         if (!prepare_with(s, cases[i].lights, sets, 1, c))
             return;
-        CHECK_NEAR(c->texel, 2.0 * c->sphere.radius / RES, 1e-7);
-        CHECK_NEAR(c->cone_tan * c->texel, cases[i].tan, 1e-6);
+        CHECK_NEAR(c->u.texel, 2.0 * c->sphere.radius / RES, 1e-7);
+        CHECK_NEAR(c->u.cone_tan * c->u.texel, cases[i].tan, 1e-6);
     }
 }
 

@@ -4,14 +4,13 @@
 // CHANNELS (in's: 1 or 3), IN2_CH (0 or 3) and NORMALS (0 or 1) are defines from
 // temporal_gl.c.
 uniform sampler2DArray src;         // input port `in` (a GLSL keyword, hence the name)
-uniform sampler2DArray src2;        // in2 (read only with IN2_CH > 0)
+uniform sampler2DArray in2;         // read only with IN2_CH > 0
 uniform sampler2DArray history, history2, length_in;
 uniform sampler2DArray motion;      // x, y: previous pixel minus this one (px); z: depth there
 uniform sampler2DArray depth, prev_depth;
 uniform sampler2DArray normal, prev_normal; // read only with NORMALS
 layout(r32f) uniform writeonly image2DArray dst_out, dst_out2, dst_length;
 uniform int reset;                  // ctx->history_reset: out = in, length 1
-uniform float normal_tolerance;     // the parameter (host_only: bound only with NORMALS)
 
 #pragma ssg_params
 #pragma ssg_consts
@@ -49,7 +48,7 @@ float tap_sum(ivec2 p, vec3 m)
 #if NORMALS
         vec3 pn = ssg_load3(prev_normal, q);
         precise float c = n.x * pn.x + n.y * pn.y + n.z * pn.z;
-        ok = ok && c >= normal_tolerance;
+        ok = ok && c >= p_normal_tolerance;
 #endif
         precise float w = ok ? wx * wy : 0.0;
         tap_q[t] = q;
@@ -110,7 +109,7 @@ void main()
             imageStore(dst_out, ivec3(p, c), vec4(texelFetch(src, ivec3(p, c), 0).r));
 #if IN2_CH
         for (int c = 0; c < IN2_CH; c++)
-            imageStore(dst_out2, ivec3(p, c), vec4(texelFetch(src2, ivec3(p, c), 0).r));
+            imageStore(dst_out2, ivec3(p, c), vec4(texelFetch(in2, ivec3(p, c), 0).r));
 #endif
         SSG_STORE1(dst_length, p, 1.0);
     } else {
@@ -126,7 +125,7 @@ void main()
                                                           wsum)));
 #if IN2_CH
         for (int c = 0; c < IN2_CH; c++)
-            imageStore(dst_out2, ivec3(p, c), vec4(channel(src2, history2, c, p, valid,
+            imageStore(dst_out2, ivec3(p, c), vec4(channel(in2, history2, c, p, valid,
                                                            alpha, wsum)));
 #endif
     }

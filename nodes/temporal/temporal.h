@@ -10,30 +10,33 @@
 
 /* Ports, one row each (graph/node.h). history, history2, length_in, prev_depth and
    prev_normal are ordinary images: a graph wires them with prev(node.port) (the previous
-   frame's image of that port, all 0 with ctx->history_reset 1 in the first frame). `in`
-   is a GLSL keyword, so the GL side binds the ports by hand (temporal_gl.c). */
+   frame's image of that port, all 0 with ctx->history_reset 1 in the first frame). The
+   shader reads `in` as src (a GLSL keyword), in2 and history2 only with IN2_CH and the
+   normals only with NORMALS (its defines, temporal_gl.c). */
 #define SSG_TEMPORAL_VALUE_TYPES (SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR)
 #define SSG_TEMPORAL_IN(X)                                                                 \
     X(SSG_TEMPORAL_IN_IN, "in", SSG_TEMPORAL_VALUE_TYPES,                                  \
-      "this frame's noisy value (1 or 3 channels)")                                        \
+      "this frame's noisy value (1 or 3 channels)", .gl_name = "src")                     \
     X(SSG_TEMPORAL_IN_IN2, "in2", SSG_T_COLOR | SSG_T_VECTOR,                              \
       "a second value accumulated with in's weights (the bounce beside a modulation)",    \
-      .optional = 1)                                                                       \
+      .optional = 1, .gl_if = "IN2_CH")                                                    \
     X(SSG_TEMPORAL_IN_HISTORY, "history", SSG_TEMPORAL_VALUE_TYPES,                        \
       "the previous frame's out: prev(t.out)")                                             \
     X(SSG_TEMPORAL_IN_HISTORY2, "history2", SSG_T_COLOR | SSG_T_VECTOR,                    \
-      "the previous frame's out2: prev(t.out2); needed with in2", .optional = 1)           \
+      "the previous frame's out2: prev(t.out2); needed with in2", .optional = 1,           \
+      .gl_if = "IN2_CH")                                                                   \
     X(SSG_TEMPORAL_IN_LENGTH_IN, "length_in", SSG_T_SCALAR,                                \
       "the previous frame's length: prev(t.length)")                                       \
     X(SSG_TEMPORAL_IN_MOTION, "motion", SSG_T_VECTOR,                                      \
       "g.motion: previous pixel minus this pixel (x, y, px), previous view depth (z)")     \
     X(SSG_TEMPORAL_IN_DEPTH, "depth", SSG_T_SCALAR, "linear depth; 0 = background")        \
     X(SSG_TEMPORAL_IN_NORMAL, "normal", SSG_T_VECTOR,                                      \
-      "unit view-space normal; none = no normal test", .optional = 1)                      \
+      "unit view-space normal; none = no normal test", .optional = 1, .gl_if = "NORMALS")  \
     X(SSG_TEMPORAL_IN_PREV_DEPTH, "prev_depth", SSG_T_SCALAR,                              \
       "the previous frame's depth: prev(g.depth)")                                         \
     X(SSG_TEMPORAL_IN_PREV_NORMAL, "prev_normal", SSG_T_VECTOR,                            \
-      "the previous frame's normal: prev(g.normal); needed with normal", .optional = 1)
+      "the previous frame's normal: prev(g.normal); needed with normal", .optional = 1,    \
+      .gl_if = "NORMALS")
 #define SSG_TEMPORAL_OUT(X)                                                                \
     X(SSG_TEMPORAL_OUT_OUT, "out", SSG_T_SCALAR, "the accumulated value", .same_as = "in") \
     X(SSG_TEMPORAL_OUT_OUT2, "out2", SSG_T_SCALAR,                                         \
@@ -44,9 +47,9 @@
 SSG_PORT_ENUM(ssg_temporal_input, SSG_TEMPORAL_IN, SSG_TEMPORAL_INPUTS);
 SSG_PORT_ENUM(ssg_temporal_output, SSG_TEMPORAL_OUT, SSG_TEMPORAL_OUTPUTS);
 
-/* Parameters, one row each (lang/params.h). The shader reads gamma and depth_tolerance
-   as p_<field>; max_length reaches it as prepare()'s inv_max_length, normal_tolerance as
-   a uniform bound by hand (only the variant with normals reads it: temporal_gl.c). */
+/* Parameters, one row each (lang/params.h). The shader reads gamma, depth_tolerance and
+   (the variant with normals only) normal_tolerance as p_<field>; max_length reaches it as
+   prepare()'s inv_max_length. */
 #define SSG_TEMPORAL_PARAMS(P)                                                             \
     P(INT, max_length, "most frames averaged: past it, an exponential blend of weight "   \
       "1 / max_length", .def = 32, .min = 1, .max = 4096, .unit = "frames",               \
@@ -56,7 +59,7 @@ SSG_PORT_ENUM(ssg_temporal_output, SSG_TEMPORAL_OUT, SSG_TEMPORAL_OUTPUTS);
     P(FLOAT, depth_tolerance, "a history tap is rejected when |motion.z - prev_depth| / "  \
       "motion.z exceeds this", .def = 0.05, .min = 0, .max = 1000)                         \
     P(FLOAT, normal_tolerance, "a history tap is rejected when dot(normal, prev_normal) "  \
-      "is below this", .def = 0.9, .min = -1, .max = 1, .host_only = 1)
+      "is below this", .def = 0.9, .min = -1, .max = 1, .gl_if = "NORMALS")
 SSG_PARAMS_STRUCT(ssg_temporal_params, SSG_TEMPORAL_PARAMS);
 
 /* What prepare() makes once for both backends (the shader reads it by name,

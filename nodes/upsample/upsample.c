@@ -79,6 +79,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_upsample_params, SSG_UPSAMPLE_PARAMS);
+SSG_UNIFORMS_TABLE(uniforms, ssg_upsample_consts, SSG_UPSAMPLE_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_UPSAMPLE_IN);
 SSG_PORT_TABLE(outputs, SSG_UPSAMPLE_OUT);
@@ -106,6 +107,7 @@ const struct ssg_node_desc ssg_node_upsample = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_upsample_params),
     .consts_size = sizeof(struct ssg_upsample_consts),
+    .uniforms = SSG_TABLE(uniforms), /* the whole consts: uniforms_offset 0 */
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

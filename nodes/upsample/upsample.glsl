@@ -5,17 +5,16 @@
 // no tap has weight it takes the tap of closest depth (first in row-major order), the
 // centre when all are background. exp and ln are bilateral_math.h's polynomials (common.glsl);
 // `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
-// in2 rides along with the same weights into dst2; unconnected, dst2 is written 0.
+// in2 rides along with the same weights into dst_out2; unconnected, dst_out2 is written 0.
 // Defines from upsample_gl.c: IN_CH (1 or 3), IN2_CH (0, 1 or 3), NORMALS (0 or 1).
-uniform sampler2DArray src, src2;              // in, in2 (low res)
+uniform sampler2DArray src, in2;               // in (a GLSL keyword), in2 (low res)
 uniform sampler2DArray depth, normal;          // full res
 uniform sampler2DArray low_depth, low_normal;  // low res
-layout(r32f) uniform writeonly image2DArray dst, dst2;
-uniform int factor, radius;
-uniform float spatial_k;   // -0.5 / sigma_spatial^2
-uniform float depth_scale; // 1 / sigma_depth
-uniform float normal_power, normal_min;
-uniform int squarings;       // normal weight c^(2^squarings); -1: p ln(c) in the exponent
+layout(r32f) uniform writeonly image2DArray dst_out, dst_out2;
+// prepare()'s factor, radius, spatial_k, depth_scale and the normal term's normal_power,
+// normal_min and squarings (upsample.h):
+#pragma ssg_consts
+#include "joint_weights.glsl" // joint_weight(): a tap's weight, as the CPU's add_tap
 
 #if IN_CH == 3
 #define VALUE vec3
@@ -26,30 +25,6 @@ uniform int squarings;       // normal weight c^(2^squarings); -1: p ln(c) in th
 #define LOAD ssg_load1
 #define STORE SSG_STORE1
 #endif
-
-// Weight of low-res tap q with spatial log-weight es for a pixel of depth dp, kd =
-// depth_scale / dp and unit normal nc (add_tap).
-float weight(ivec2 q, float es, float dp, float kd, vec3 nc)
-{
-    float rd = ssg_load1(low_depth, q);
-    precise float delta = (rd - dp) * kd;
-    precise float e = es - 0.5 * delta * delta;
-    float c0 = 1.0;
-    precise float wn = 1.0;
-#if NORMALS
-    vec3 nq = ssg_load3(low_normal, q);
-    precise float cp = nc.x * nq.x + nc.y * nq.y + nc.z * nq.z;
-    c0 = cp;
-    wn = ssg_normal_factor(c0 >= normal_min ? c0 : 1.0, normal_power, squarings, e);
-#endif
-    precise float w = ssg_exp_neg(e) * wn;
-    w = w >= 1e-30 ? w : 0.0;
-    w = rd > 0.0 ? w : 0.0; // background lends nothing
-#if NORMALS
-    w = c0 >= normal_min ? w : 0.0;
-#endif
-    return w;
-}
 
 // No tap had weight: the tap of closest depth (first in tap order on ties), or the centre.
 ivec2 fallback(ivec2 l, float dp)
@@ -85,7 +60,7 @@ void main()
         VALUE ref = LOAD(src, l);
         precise VALUE acc = VALUE(0.0);
 #if IN2_CH
-        VALUE2 ref2 = LOAD2(src2, l);
+        VALUE2 ref2 = LOAD2(in2, l);
         precise VALUE2 acc2 = VALUE2(0.0);
 #endif
         precise float wsum = 0.0;
@@ -102,24 +77,24 @@ void main()
                     continue; // the CPU's padding: weight 0, adds nothing
                 precise float ex = u - float(dx);
                 precise float es = spatial_k * ex * ex + ey;
-                float w = weight(q, es, dp, kd, nc);
+                float w = joint_weight(low_depth, low_normal, q, es, dp, kd, nc);
                 wsum += w;
                 acc += w * (LOAD(src, q) - ref);
 #if IN2_CH
-                acc2 += w * (LOAD2(src2, q) - ref2);
+                acc2 += w * (LOAD2(in2, q) - ref2);
 #endif
             }
         }
         ivec2 f = wsum > 0.0 ? l : fallback(l, dp);
         val = wsum > 0.0 ? ref + acc / wsum : LOAD(src, f);
 #if IN2_CH
-        val2 = wsum > 0.0 ? ref2 + acc2 / wsum : LOAD2(src2, f);
+        val2 = wsum > 0.0 ? ref2 + acc2 / wsum : LOAD2(in2, f);
 #endif
     }
-    STORE(dst, p, val);
+    STORE(dst_out, p, val);
 #if IN2_CH
-    STORE2(dst2, p, val2);
+    STORE2(dst_out2, p, val2);
 #else
-    STORE(dst2, p, VALUE(0.0)); // out2 is all 0, shaped like out
+    STORE(dst_out2, p, VALUE(0.0)); // out2 is all 0, shaped like out
 #endif
 }

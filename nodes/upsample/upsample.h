@@ -9,19 +9,25 @@
 #define SSG_UPSAMPLE_MAX_SIZE 9
 #define SSG_UPSAMPLE_MAX_FACTOR 16
 
-/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. */
+/* Ports, one row each (node.h): enumerator, name, types, doc, further fields. The shader
+   reads `in` as src (a GLSL keyword), the normals only with NORMALS and in2 only with
+   IN2_CH (its defines, upsample_gl.c). */
 #define SSG_UPSAMPLE_IN(X)                                                                 \
-    X(SSG_UPSAMPLE_IN_IN, "in", SSG_T_SCALAR | SSG_T_COLOR, "low-resolution image")        \
+    X(SSG_UPSAMPLE_IN_IN, "in", SSG_T_SCALAR | SSG_T_COLOR, "low-resolution image",        \
+      .gl_name = "src")                                                                    \
     X(SSG_UPSAMPLE_IN_DEPTH, "depth", SSG_T_SCALAR,                                        \
       "full-resolution depth; 0 = background")                                             \
     X(SSG_UPSAMPLE_IN_NORMAL, "normal", SSG_T_VECTOR,                                      \
-      "full-resolution unit normal; with low_normal, or neither", .optional = 1)           \
+      "full-resolution unit normal; with low_normal, or neither", .optional = 1,           \
+      .gl_if = "NORMALS")                                                                  \
     X(SSG_UPSAMPLE_IN_LOW_DEPTH, "low_depth", SSG_T_SCALAR,                                \
       "the depth `in` was computed on (its size)")                                         \
     X(SSG_UPSAMPLE_IN_LOW_NORMAL, "low_normal", SSG_T_VECTOR,                              \
-      "the normal `in` was computed on; none = no normal term", .optional = 1)             \
+      "the normal `in` was computed on; none = no normal term", .optional = 1,             \
+      .gl_if = "NORMALS")                                                                  \
     X(SSG_UPSAMPLE_IN_IN2, "in2", SSG_T_SCALAR | SSG_T_COLOR,                              \
-      "second low-res image (size of in), upsampled with the same weights", .optional = 1)
+      "second low-res image (size of in), upsampled with the same weights", .optional = 1, \
+      .gl_if = "IN2_CH")
 #define SSG_UPSAMPLE_OUT(X)                                                                \
     X(SSG_UPSAMPLE_OUT_OUT, "out", SSG_T_SCALAR,                                           \
       "full-resolution image (size of depth); background 0", .same_as = "in")              \
@@ -44,16 +50,19 @@ SSG_PORT_ENUM(ssg_upsample_output, SSG_UPSAMPLE_OUT, SSG_UPSAMPLE_OUTPUTS);
       .max = 127)
 SSG_PARAMS_STRUCT(ssg_upsample_params, SSG_UPSAMPLE_PARAMS);
 
-struct ssg_upsample_consts {
-    int radius;          /* (size - 1) / 2, low-res px */
-    float spatial_k;     /* -0.5 / sigma_spatial^2: ln of the spatial weight per px^2 */
-    float depth_scale;   /* 1 / sigma_depth */
-    float normal_power;  /* as in the parameters */
-    float normal_min;    /* cosines below this weigh c^p < 1e-30 and count as 0 */
-    int squarings;       /* c^p by that many squarings of c; -1 = p ln(c) in the exponent
-                            (ssg_joint_squarings) */
-    int factor;          /* k: in is depth subsampled by k (ssg_upsample_factor) */
-};
+/* The constants prepare() makes, every one read by the shader by name (#pragma
+   ssg_consts): the consts are this struct. The normal term's only with NORMALS. */
+#define SSG_UPSAMPLE_UNIFORMS(U)                                                           \
+    U(INT, radius, "(size - 1) / 2, low-res px")                                          \
+    U(FLOAT, spatial_k, "-0.5 / sigma_spatial^2: ln of the spatial weight per px^2")      \
+    U(FLOAT, depth_scale, "1 / sigma_depth")                                              \
+    U(FLOAT, normal_power, "as in the parameters", .gl_if = "NORMALS")                    \
+    U(FLOAT, normal_min, "cosines below this weigh c^p < 1e-30 and count as 0",           \
+      .gl_if = "NORMALS")                                                                  \
+    U(INT, squarings, "c^p by that many squarings of c; -1 = p ln(c) in the exponent "    \
+      "(ssg_joint_squarings)", .gl_if = "NORMALS")                                        \
+    U(INT, factor, "k: in is depth subsampled by k (ssg_upsample_factor)")
+SSG_UNIFORMS_STRUCT(ssg_upsample_consts, SSG_UPSAMPLE_UNIFORMS);
 
 /* The integer factor k with ceil(width / k) = low_width and ceil(height / k) = low_height
  * (the sizes `downsample` makes), or 0 when there is none. */

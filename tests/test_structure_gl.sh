@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# How a node's GL side binds what its shaders read (core/gl/gl.h, issue 43 item 4):
+# parameters by the table (#pragma ssg_params), prepare()'s constants by the descriptor's
+# `uniforms` rows (#pragma ssg_consts), ports by ssg_gl_ports. A uniform bound by hand in
+# nodes/*/*_gl.c (ssg_gl_int, ssg_gl_input, ...) is refused unless it is listed below with
+# the reason no table can hold it, and never when it names a row of its node's tables; a
+# listed binding that is gone must leave the list too, so the list stays the truth.
+# And each GLSL helper function is defined once across the node shaders: a second copy
+# goes into nodes/common/*.glsl (as its C twin lives in nodes/common/*.h).
+set -u
+source "$(dirname "$0")/lib.sh" "ssg_test_structure_gl"
+
+# file, the name it binds by hand, and why no table holds it.
+allowed=$(cat <<'EOF'
+nodes/bilateral/bilateral_gl.c "src" each pass's source: in, or the scratch image of the pass before
+nodes/bilateral/bilateral_gl.c "src2" each pass's in2, or its scratch image
+nodes/bilateral/bilateral_gl.c "dst" each pass's destination: a scratch image, out for the last
+nodes/bilateral/bilateral_gl.c "dst2" likewise for in2's
+nodes/bilateral/bilateral_gl.c "reach" the pass's half-widths (separable: a row, then a column)
+nodes/bilateral/bilateral_gl.c "step" the pass's tap spacing (atrous: 1, 2, 4, ...)
+nodes/bilateral/bilateral_gl.c "depth" a port of a multi-pass node (ssg_gl_ports would bind in and out, which passes replace)
+nodes/bilateral/bilateral_gl.c "normal" likewise, and read only with normal_power > 0 as well as connected
+nodes/gaussian/gaussian_gl.c "src" each axis's source: in, then the scratch image
+nodes/gaussian/gaussian_gl.c "dst" each axis's destination: the scratch image, then out
+nodes/gaussian/gaussian_gl.c "axis" the pass's axis
+nodes/gaussian/gaussian_gl.c "layer" the dispatch's channel (a loop index)
+nodes/temporal/temporal_gl.c "reset" ctx->history_reset of this run, in no table
+nodes/probe_light/probe_light_gl.c "lights" the frames pass: the node's second shader (one consts table serves the light pass)
+nodes/probe_light/probe_light_gl.c "frames" the scratch image the frames pass writes and the light pass reads
+nodes/probe_light/probe_light_gl.c "rot" the frames pass (second shader), as "lights"
+nodes/probe_light/probe_light_gl.c "eye" the frames pass (second shader), as "lights"
+nodes/probe_light/probe_light_gl.c "centre" the frames pass: the bounding sphere, shared with the CPU's shadow frames
+nodes/probe_light/probe_light_gl.c "radius" the frames pass: likewise
+nodes/probe_light/probe_light_gl.c "frame_res" the frames pass (second shader), as "lights"
+nodes/shadowmaps/shadowmaps_gl.c "lights" a raster pass: its outputs are drawn layers, not image bindings (ssg_gl_ports)
+nodes/shadowmaps/shadowmaps_gl.c "centre" the scene's bounding sphere, taken at run time (shadowmaps has no prepare())
+nodes/shadowmaps/shadowmaps_gl.c "radius" likewise
+nodes/common/sampling_gl.c "invf" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
+nodes/common/sampling_gl.c "proj" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
+nodes/complexity/complexity_gl.c "depth" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "grids" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "level_count" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "levels" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "nd" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "normal" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "proj" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "pt" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "side" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "weight" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c names[r] not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "back" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "depth" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "env_constant" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "env_mode" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "env_pole" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "eye" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "first" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "gap" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "ids" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "inv_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "light_count" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "m_move" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "m_rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "motion" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "near_z" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "prev_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "proj" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c names[i] not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gtao/gtao_gl.c "noise_shift" being rewritten (issue 43 item 1)
+nodes/gtao/gtao_gl.c "slice_cos" being rewritten (issue 43 item 1)
+nodes/gtao/gtao_gl.c "slice_sin" being rewritten (issue 43 item 1)
+nodes/hbao/hbao_gl.c "dir_cos" being rewritten (issue 43 item 1)
+nodes/hbao/hbao_gl.c "dir_rank" being rewritten (issue 43 item 1)
+nodes/hbao/hbao_gl.c "dir_sin" being rewritten (issue 43 item 1)
+nodes/rsm/rsm_gl.c "acc" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "albedo" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "cell" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "cells" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "count" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "dst" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "eye" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "first" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "inv_samples" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "last" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "list" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "map_depth" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "map_flux" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "map_normal" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "ncells" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "normal" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "pick" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "position" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "res" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "rot" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "row0" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "rows" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "state" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "vpl0" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "vpls" not yet migrated (four passes over scratch images; issue 43 item 4, left)
+nodes/ssao/ssao_gl.c "proj" the projection of the G-buffer's size, shared with the horizon nodes' sampling (issue 43 item 1)
+nodes/ssdo/ssdo_gl.c "cap" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "capped" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "env" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "env_rgb" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "light_count" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "light_dir" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "light_rgb" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "light_v" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "out_channels" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssdo/ssdo_gl.c "proj" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/ssilvb/ssilvb_gl.c "invf" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "noise_off" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "proj" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "slice_cos" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "slice_sin" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "turn_cos" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "turn_sin" being rewritten (issue 43 item 1)
+EOF
+)
+
+# Every hand binding as `file name`, the name as written (a literal or an expression).
+bindings=$(git ls-files 'nodes/*/*_gl.c' 2>/dev/null | sort | while read -r f; do
+    grep -oE 'ssg_gl_(int|ivec2|float|vec2|vec3|vec4|floats|ints|input|output|projection)\([^,]+, *[^,)]+' "$f" |
+        sed -E 's/^[^,]+, *//' | sort -u | sed "s|^|$f |"
+done)
+listed=$(echo "$allowed" | awk '{print $1, $2}' | sort -u)
+new=$(comm -23 <(echo "$bindings" | sort -u) <(echo "$listed"))
+[ -z "$new" ] || fail "uniforms bound by hand (bind them from the tables: #pragma ssg_params, a
+\`uniforms\` row and #pragma ssg_consts, or ssg_gl_ports; or list them in this test with the
+reason no table holds them):
+$new"
+gone=$(comm -13 <(echo "$bindings" | sort -u) <(echo "$listed"))
+[ -z "$gone" ] || fail "listed hand bindings that are gone (remove them from the list): $gone"
+
+# A hand binding never names a row of its node's tables: that row is bound already (as
+# p_<field> or <field>), and a second binding under its own name would be a copy; nor a
+# parameter under its plain name (the old form, p_<field> is the table's).
+while read -r f name; do
+    [ -n "$f" ] || continue
+    # a node listed as not yet migrated still has its old form, listed
+    echo "$allowed" | grep -F "$f $name not yet migrated" > /dev/null && continue
+    dir=$(dirname "$f")
+    rows=$(cat "$dir"/*.h 2>/dev/null | grep -oE '\b[PU]\([A-Z0-9]+, *[a-z_0-9]+' |
+           sed -E 's/^P\([A-Z0-9]+, */p_/; s/^U\([A-Z0-9]+, *//')
+    plain=$(echo "$rows" | sed 's/^p_//')
+    bare=${name//\"/}
+    if echo "$rows" | grep -qx "$bare"; then
+        fail "$f binds \"$bare\" by hand, a row of its node's tables (bound by the pass)"
+    elif echo "$plain" | grep -qx "$bare" && echo "$rows" | grep -qx "p_$bare"; then
+        fail "$f binds parameter \"$bare\" by hand: read it as p_$bare (#pragma ssg_params)"
+    fi
+done <<< "$bindings"
+
+# GLSL helpers once: a function (return type, name, parameter types) defined in two node
+# shaders is a copy; it belongs in nodes/common/*.glsl, #include'd by both (as
+# joint_weights.glsl serves bilateral and upsample). main() is each shader's own; the
+# signatures below are known and wait for the change named.
+known=$(cat <<'EOF'
+void setup_pixel(ivec2) gtao and ssilvb: the horizon march moves into nodes/common/horizon.glsl (issue 43 item 1)
+vec3 fetch3(int,uint) gbuffer_ray and lightmaps: the scene's buffers move into core/gl (issue 43 item 2)
+float luminance(vec3) direct_light and probe_light: the C twins are copies too (direct_light_cpu.c, probe_light_cpu.c); share both at once
+void store_background(ivec2) gbuffer and ssdo: two different functions of one name
+bool is_surface(float,vec3) complexity_count and complexity_means: two shaders of one node
+EOF
+)
+defs=$(git ls-files 'nodes/*/*.glsl' 2>/dev/null | while read -r f; do
+    awk -v f="$f" '
+        /^(precise )?(float|vec[234]|ivec[234]|int|uint|bool|void) [a-z_A-Z0-9]+\(/ {
+            head = $0; sub(/\(.*/, "", head); args = $0; sub(/^[^(]*\(/, "", args)
+            sub(/\).*/, "", args); n = split(args, a, ","); sig = ""
+            for (i = 1; i <= n; i++) {   # a parameter: its words but the last
+                k = split(a[i], w, " "); t = ""
+                for (m = 1; m < k; m++) if (w[m] !~ /^(in|out|inout|const|precise)$/) t = t w[m]
+                sig = sig (i > 1 ? "," : "") t
+            }
+            if (head !~ / main$/) print head "(" sig ")\t" f }' "$f"
+done)
+twice=$(echo "$defs" | awk -F'\t' '{n[$1]++; at[$1] = at[$1] " " $2}
+                                   END {for (s in n) if (n[s] > 1) print s "\t" at[s]}' |
+        while IFS=$'\t' read -r sig at; do
+            echo "$known" | grep -qF "$sig " || echo "$sig:$at"; done)
+[ -z "$twice" ] || fail "GLSL functions defined in more than one shader (move one copy into
+nodes/common/*.glsl and #include it): $twice"
+stale=$(echo "$known" | while read -r ret rest; do sig="$ret ${rest%%)*})"
+        n=$(echo "$defs" | cut -f1 | grep -cxF "$sig"); [ "$n" -ge 2 ] || echo "$sig"; done)
+[ -z "$stale" ] || fail "signatures listed as known copies that are no longer twice: $stale"
+finish test_structure_gl
