@@ -9,6 +9,7 @@
 
 #include "lang/arena.h"
 #include "graph/exec.h"
+#include "graph/gl_backend.h"
 #include "lang/parse.h"
 #include "scene/scene.h"
 
@@ -131,6 +132,9 @@ struct ssg_live {
     unsigned char *kept;
     int count;                 /* run positions */
     int used_gl;               /* a run used GL: images may hold textures */
+    struct ssg_gl_shared gl;   /* the scene on GL, uploaded by the first run's first node
+                                  that asks and kept while the graph lives: its scene never
+                                  changes (whatever replaced it would clear this) */
 };
 /* After a live run: marks what ran as kept (nothing on error), then evicts the largest
  * kept outputs while they exceed max_bytes (graph_live.c). */

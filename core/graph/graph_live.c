@@ -122,6 +122,7 @@ void ssg_live_free(struct ssg_graph *g)
         evict(g, p);
     ssg_history_free(g, l->pool);
     ssg_pool_destroy(&l->pool);
+    ssg_gl_shared_clear(&l->gl);
     if (gl)
         ssg_gl_close();
     for (int p = 0; l->consts && p < l->count; p++)

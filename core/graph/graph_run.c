@@ -36,6 +36,8 @@ struct run {
                                   whose outputs are kept and none of whose producers ran) */
     int first_frame;           /* the frame index of the run's frame 0 (graph_time.c) */
     struct ssg_time_step step; /* the frame being run: time, prev_camera, history_reset */
+    struct ssg_gl_shared gl;   /* what a fresh run's GL nodes share (gl_backend.h); a live
+                                  run uses its graph's, kept across runs */
 };
 
 static void release_output(struct run *r, struct gnode *n, int port)
@@ -177,7 +179,8 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .frame_index = r->first_frame + frame,
                                .time_s = r->step.time_s,
                                .prev_camera = g->scene ? &r->step.prev : NULL,
-                               .history_reset = r->step.reset};
+                               .history_reset = r->step.reset,
+                               .gl_shared = r->live ? &r->live->gl : &r->gl};
     if (history_reset >= 0) /* reads prev(): its history may be gone for its own reasons */
         ctx.history_reset = history_reset || r->step.reset;
     double prepare_ms = 0;
@@ -249,6 +252,7 @@ static void run_free(struct run *r)
     if (r->live)
         return; /* the graph keeps the rest (ssg_live_free) */
     release_all(r);
+    ssg_gl_shared_clear(&r->gl); /* GL is still open where a node used it */
     ssg_history_free(r->g, r->pool);
     ssg_pool_destroy(&r->pool); /* deletes the textures too: GL is still open */
     for (int p = 0; r->consts && p < r->g->order_count; p++)
