@@ -2,8 +2,9 @@
 # The structure issue 14 set up stays: core/ in its layers; no source file over 600 lines;
 # every parameter table entry states its storage through a type-checked SSG_FIELD_* macro
 # (never a bare .offset); no node fails on an image's shape at run time (check() and the
-# executor's verification own shapes, core/graph/node.h); shaders share code through
-# #include of nodes/common/sampling.glsl rather than copies. Issue 43's two migrations stay
+# executor's verification own shapes, core/graph/node.h); no node calls GL or includes
+# core/gl's internals; shaders share code through #include of nodes/common/sampling.glsl
+# rather than copies. Issue 43's two migrations stay
 # done: a node's own tests live in its folder (nodes/<folder>/test_*.c, as the template's),
 # never in tests/; a node's code includes only its own folder, nodes/common and core, never
 # another node's folder (what two nodes share is nodes/common's).
@@ -29,6 +30,17 @@ bare=$(files | grep -E '^(core|nodes)/.*\.(c|h)$' | xargs grep -n '\.offset *= *
 shape_fail=$(files | grep -E '^nodes/.*\.(c|h)$' |
              xargs grep -nE 'ssg_node_fail\(ctx, SSG_E_(SIZE|CHANNELS)' | head -5)
 [ -z "$shape_fail" ] || fail "nodes failing on shapes at run time: $shape_fail"
+
+# A node never calls GL (core/gl/gl.h): its GL side is gl.h's passes and gl_scene.h's scene
+# and raster, which own the GL objects and share them over a run. The scene raster once lived
+# in nodes/common with some 65 raw GL calls and an upload per node (issue 43).
+node_sources=$(files | grep -E '^(nodes|tools/node-template)/.*\.(c|h|cc)$')
+raw_gl=$(echo "$node_sources" | xargs grep -nE '\bgl[A-Z][A-Za-z0-9]*[[:space:]]*\(|\bGL_[A-Z0-9_]+' |
+         head -5)
+[ -z "$raw_gl" ] || fail "nodes calling GL directly (use core/gl/gl.h, gl/gl_scene.h): $raw_gl"
+gl_inside=$(echo "$node_sources" | xargs grep -nE '#include "gl/' |
+            grep -vE '#include "gl/(gl|gl_scene)\.h"' | head -5)
+[ -z "$gl_inside" ] || fail "nodes including core/gl's internals (only gl/gl.h, gl/gl_scene.h): $gl_inside"
 
 # Build and interpreter leftovers are never tracked (bench/__pycache__ crept back in twice).
 leftovers=$(git ls-files 2>/dev/null | grep -E '(^|/)__pycache__/|\.py[co]$|(^|/)build[^/]*/' | head -5)

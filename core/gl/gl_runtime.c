@@ -104,6 +104,11 @@ void ssg_gl_close(void)
     pthread_mutex_unlock(&lock);
 }
 
+int ssg_gl_alive(void)
+{
+    return gl.created;
+}
+
 const char *ssg_gl_describe(void)
 {
     return gl.describe;

@@ -296,9 +296,13 @@ enum ssg_err ssg_node_run_prepared(const struct ssg_node_desc *desc,
     struct ssg_node_ctx run_ctx = *ctx;
     run_ctx.params = params; /* what a GL pass binds by the tables (gl.h) */
     run_ctx.consts = consts;
+    struct ssg_gl_shared own = {0}; /* a node run alone shares with nobody */
+    if (!run_ctx.gl_shared)
+        run_ctx.gl_shared = &own;
     enum ssg_err e = ssg_node_verify_io(&run_ctx, io);
     if (!e)
         e = run_backend(desc, &run_ctx, consts ? consts : params, io, on_gl, timing);
+    ssg_gl_shared_clear(&own);
     timing->ms = ssg_now_ms() - t0 - timing->transfer_ms;
     return e;
 }

@@ -47,4 +47,22 @@ void ssg_gl_image_free(struct ssg_image *image);
 void ssg_gl_timer_begin(void);
 double ssg_gl_timer_end(void);
 
+/* What the GL nodes of one run share (core/gl/gl_scene.c): the scene they draw and read,
+ * uploaded on the first node that asks (core/gl/gl_scene.h) instead of once per node.
+ * Owned by whoever owns the run: a fresh run (graph_run.c), a live graph across its runs
+ * (graph.h, struct ssg_live), or the executor for a node run alone (exec.c). Zero = nothing
+ * uploaded yet. ctx->gl_shared (node.h) points at it while a node runs. */
+struct ssg_gl_scene;
+struct ssg_scene;
+struct ssg_gl_shared {
+    struct ssg_gl_scene *scene;       /* the scene on GL; NULL until a node asks */
+    const struct ssg_scene *scene_of; /* the scene it was uploaded from (another one asked
+                                         for replaces it) */
+    int uploads;                      /* scenes uploaded into it so far (tests) */
+};
+/* Deletes what the run's nodes shared and zeroes it but for the count: at the end of the
+ * run, or when its scene changes. With GL open (ssg_gl_open) where anything was uploaded;
+ * after a failed open only the memory is freed (the GL objects went with the context). */
+void ssg_gl_shared_clear(struct ssg_gl_shared *shared);
+
 #endif

@@ -9,6 +9,7 @@
 
 #include "lang/arena.h"
 #include "graph/exec.h"
+#include "graph/gl_backend.h"
 #include "lang/parse.h"
 #include "scene/scene.h"
 
@@ -134,6 +135,9 @@ struct ssg_live {
     unsigned char *why;        /* enum ssg_why of the first event since the node last ran */
     int count;                 /* run positions */
     int used_gl;               /* a run used GL: images may hold textures */
+    struct ssg_gl_shared gl;   /* the scene on GL, uploaded by the first run's first node
+                                  that asks and kept while the graph lives: its scene never
+                                  changes (whatever replaced it would clear this) */
 };
 /* The arrays and pool of a state for `count` run positions; 0 on out of memory (what was
    made is then freed by ssg_live_release). */

@@ -92,6 +92,7 @@ void ssg_live_after_run(struct ssg_graph *g, int used_gl)
 
 void ssg_live_release(struct ssg_graph *g, struct ssg_live *l)
 {
+    ssg_gl_shared_clear(&l->gl);
     for (int p = 0; p < l->count && l->pool; p++)
         release_outputs(g, l, p);
     ssg_history_free(g, l->pool);

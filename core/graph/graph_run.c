@@ -169,7 +169,8 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .frame_index = r->first_frame + frame,
                                .time_s = r->step.time_s,
                                .prev_camera = g->scene ? &r->step.prev : NULL,
-                               .history_reset = r->step.reset};
+                               .history_reset = r->step.reset,
+                               .gl_shared = &r->state->gl};
     if (history_reset >= 0) /* reads prev(): its history may be gone for its own reasons */
         ctx.history_reset = history_reset || r->step.reset;
     double prepare_ms = 0;

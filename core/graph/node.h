@@ -42,6 +42,7 @@
 
 struct ssg_scene;
 struct ssg_metrics;
+struct ssg_gl_shared;
 
 #define SSG_FILE_NAME_MAX 256 /* bytes of an output file name, NUL included */
 
@@ -141,6 +142,10 @@ struct ssg_node_ctx {
     double time_s;
     const struct ssg_camera *prev_camera; /* NULL without a scene */
     int history_reset;
+    struct ssg_gl_shared *gl_shared; /* what the run's GL nodes share, the scene uploaded
+                                        once (core/gl/gl_scene.h), owned by the run
+                                        (graph/gl_backend.h); NULL = the executor lends
+                                        the node one of its own for the call */
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate

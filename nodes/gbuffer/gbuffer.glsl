@@ -1,8 +1,8 @@
 // gbuffer.glsl - the G-buffer's shading pass on GL (method in README.md). Per pixel, the
 // ray through the pixel centre is intersected with the triangle gbuffer_raster.glsl found
-// there (a visibility buffer, nodes/common/gl_raster.h), so depth and barycentrics come from the
+// there (a visibility buffer, core/gl/gl_scene.h), so depth and barycentrics come from the
 // ray as on the CPU; normal, albedo, direct and environment light then follow
-// gbuffer_cpu.c operation by operation, reading the scene's buffers (gl_raster.h).
+// gbuffer_cpu.c operation by operation, reading the scene's buffers (core/gl/gl_scene.h).
 #include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
 #include "surface.glsl"     // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind

@@ -1,19 +1,19 @@
 /* gbuffer_gl.c - GL side of the `gbuffer` node (method in README.md): the scene is
- * rasterised into a visibility buffer (mesh and triangle per pixel, nodes/common/gl_raster.h,
+ * rasterised into a visibility buffer (mesh and triangle per pixel, core/gl/gl_scene.h,
  * gbuffer_raster.glsl), then one compute pass (gbuffer.glsl) casts each pixel's ray at
  * its triangle and writes the first layer's six outputs with the CPU kernel's formulas.
  * When `back` is read, a depth peel (gbuffer_peel.glsl) and a second cast
  * (gbuffer_back.glsl) give the second layer; when `motion` is read, a pass of its own
- * (gbuffer_motion.glsl) makes it from the first layer's depth. The scene is
- * uploaded per run; the lights and the environment's irradiance table go in as they are
- * in the scene. gbuffer.glsl reads the parameters by the table (#pragma ssg_params); the
- * passes write different outputs, so each names its images. */
+ * (gbuffer_motion.glsl) makes it from the first layer's depth. The scene on GL is the
+ * run's (uploaded once for all its nodes); the lights and the environment's irradiance
+ * table go in as they are in the scene. gbuffer.glsl reads the parameters by the table
+ * (#pragma ssg_params); the passes write different outputs, so each names its images. */
 #include <stdlib.h>
 
 #include "scene/env.h"
 #include "gbuffer.h"
 #include "gl/gl.h"
-#include "common/gl_raster.h"
+#include "gl/gl_scene.h"
 #include "scene/scene.h"
 
 enum { LIGHT_FLOATS = 12, LIGHT_BINDING = 5, ENV_BINDING = 6 };
@@ -51,8 +51,7 @@ static void set_environment(struct ssg_gl_pass *p, const struct ssg_env *env)
 }
 
 static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
-                          const struct ssg_gl_scene *scene, const struct ssg_image *ids,
-                          const struct ssg_io *io)
+                          const struct ssg_image *ids, const struct ssg_io *io)
 {
     static const char *const names[] = {"position", "normal", "depth", "albedo", "direct",
                                         "environment"};
@@ -62,7 +61,7 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the lights");
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "gbuffer.glsl", NULL);
-    ssg_gl_scene_bind(scene);
+    ssg_gl_scene_bind(&p);
     ssg_gl_buffer(&p, LIGHT_BINDING, lights,
                   (size_t)s->light_count * LIGHT_FLOATS * sizeof(float));
     set_environment(&p, s->env);
@@ -82,20 +81,20 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
 /* The second layer (README.md, `back`): a depth peel against the first layer's depth
    into `ids` (its first use is over), then the ray cast at the triangle it found. */
 static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
-                         const struct ssg_gl_scene *scene, const struct ssg_gl_camera *cam,
-                         struct ssg_image *ids, const struct ssg_io *io)
+                         const struct ssg_gl_camera *cam, struct ssg_image *ids,
+                         const struct ssg_io *io)
 {
     const struct ssg_image *first = io->out[SSG_GBUFFER_OUT_DEPTH];
     struct ssg_gl_pass r;
     ssg_gl_raster_begin(&r, ctx, "gbuffer_peel.glsl");
     ssg_gl_input(&r, "first", first);
     ssg_gl_float(&r, "gap", SSG_GBUFFER_BACK_GAP);
-    enum ssg_err e = ssg_gl_scene_draw_pass(&r, scene, cam, ids);
+    enum ssg_err e = ssg_gl_scene_draw_pass(&r, cam, ids);
     if (e)
         return e;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "gbuffer_back.glsl", NULL);
-    ssg_gl_scene_bind(scene);
+    ssg_gl_scene_bind(&p);
     ssg_gl_input(&p, "ids", ids);
     ssg_gl_input(&p, "first", first);
     ssg_gl_output(&p, "back", io->out[SSG_GBUFFER_OUT_BACK]);
@@ -132,20 +131,16 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
     const struct ssg_gbuffer_consts *c = consts;
     int w = io->out[SSG_GBUFFER_OUT_DEPTH]->width, h = io->out[SSG_GBUFFER_OUT_DEPTH]->height;
     const struct ssg_gl_camera cam = {c->rot, c->eye, c->proj, c->near_z, c->far_z};
-    struct ssg_gl_scene *scene = NULL;
     struct ssg_image *ids = ssg_gl_scratch(ctx, w, h, 2);
     if (!ids)
         return SSG_E_NOMEM;
-    enum ssg_err e = ssg_gl_scene_upload(ctx, ctx->scene, &scene);
+    enum ssg_err e = ssg_gl_scene_draw(ctx, "gbuffer_raster.glsl", &cam, ids);
     if (!e)
-        e = ssg_gl_scene_draw(ctx, scene, "gbuffer_raster.glsl", &cam, ids);
-    if (!e)
-        e = shade(ctx, c, scene, ids, io);
+        e = shade(ctx, c, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_BACK]) /* on demand: only when something reads it */
-        e = peel(ctx, c, scene, &cam, ids, io);
+        e = peel(ctx, c, &cam, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_MOTION]) /* likewise */
         e = motion(ctx, c, io);
-    ssg_gl_scene_free(&scene);
     ssg_gl_scratch_release(&ids);
     return e;
 }

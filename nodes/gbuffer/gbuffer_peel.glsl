@@ -31,6 +31,6 @@ void main()
     if (!(d > 0.0) || !(view_depth > limit))
         discard;
     mesh_id = float(ssg_mesh + 1);
-    triangle = float(gl_PrimitiveID); // exact: gl_raster.c keeps meshes below 2^24 triangles
+    triangle = float(gl_PrimitiveID); // exact: gl_scene.c keeps meshes below 2^24 triangles
 }
 #endif

@@ -1,4 +1,4 @@
-// gbuffer_raster.glsl - the G-buffer's visibility pass on GL (nodes/common/gl_raster.h): each
+// gbuffer_raster.glsl - the G-buffer's visibility pass on GL (core/gl/gl_scene.h): each
 // pixel centre gets the mesh (+1, 0 = background) and the triangle of the nearest surface
 // there; gbuffer.glsl does the rest from the scene's own data.
 #ifdef SSG_VERTEX
@@ -19,6 +19,6 @@ layout(location = 1) out float triangle; // layer 1
 void main()
 {
     mesh_id = float(ssg_mesh + 1);
-    triangle = float(gl_PrimitiveID); // exact: gl_raster.c keeps meshes below 2^24 triangles
+    triangle = float(gl_PrimitiveID); // exact: gl_scene.c keeps meshes below 2^24 triangles
 }
 #endif

@@ -1,6 +1,6 @@
 // gbuffer_ray.glsl - what the G-buffer's compute passes on GL share (#include'd by
 // gbuffer.glsl and gbuffer_back.glsl): the scene's vertex, index and mesh buffers
-// (nodes/common/gl_raster.h), the camera's position and the intersection of a pixel's ray
+// (core/gl/gl_scene.h), the camera's position and the intersection of a pixel's ray
 // with the triangle the rasteriser found there, so that both layers' depths come from the
 // same float operations.
 struct Mesh { int positions; int normals; int uvs; int indices; int material; };

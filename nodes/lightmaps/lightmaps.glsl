@@ -1,7 +1,7 @@
 // lightmaps.glsl - `lightmaps` on GL (lightmaps_gl.c): the scene drawn once per face with
 // that face's projection (orthographic, or a 90 degree perspective along the cube axis,
 // GL clipping at the CPU's near plane); the nearest fragment of each texel intersects the
-// texel centre's ray with its own triangle (read from the scene's buffers, gl_raster.h)
+// texel centre's ray with its own triangle (read from the scene's buffers, core/gl/gl_scene.h)
 // and writes lightmaps_cpu.c's depth, normal (turned to the light) and flux.
 struct Mesh { int positions; int normals; int uvs; int indices; int material; };
 layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };

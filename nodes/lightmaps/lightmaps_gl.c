@@ -1,31 +1,25 @@
-/* lightmaps_gl.c - GL side of the `lightmaps` node (method in README.md): the scene is
- * uploaded (nodes/common/gl_raster.h) and drawn once per face into that face's layers of
+/* lightmaps_gl.c - GL side of the `lightmaps` node (method in README.md): the run's scene
+ * (core/gl/gl_scene.h) is drawn once per face into that face's layers of
  * the depth, normal and flux images (ssg_gl_scene_draw_stacks) by lightmaps.glsl, which
  * reads the faces prepare() packed from a storage buffer and the resolution by the
  * parameter table (#pragma ssg_params). */
 #include "gl/gl.h"
-#include "common/gl_raster.h"
+#include "gl/gl_scene.h"
 #include "lightmaps.h"
 
 enum ssg_err ssg_lightmaps_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                   const struct ssg_io *io)
 {
     const struct ssg_lightmaps_consts *c = consts;
-    struct ssg_gl_scene *scene = NULL;
-    enum ssg_err e = ssg_gl_scene_upload(ctx, ctx->scene, &scene);
-    if (e)
-        return e;
     struct ssg_gl_pass pass;
     ssg_gl_raster_begin(&pass, ctx, "lightmaps.glsl");
     ssg_gl_buffer(&pass, SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS, c->face_floats,
                   sizeof(float) * SSG_LIGHTMAPS_FACE_FLOATS * (size_t)c->count);
-    ssg_gl_scene_bind(scene);
+    ssg_gl_scene_bind(&pass);
     const struct ssg_gl_stack stacks[SSG_LIGHTMAPS_OUTPUTS] = {
         {io->out[SSG_LIGHTMAPS_OUT_DEPTH], 1, SSG_SHADOW_EMPTY},
         {io->out[SSG_LIGHTMAPS_OUT_NORMAL], 3, 0.0f},
         {io->out[SSG_LIGHTMAPS_OUT_FLUX], 3, 0.0f},
     };
-    e = ssg_gl_scene_draw_stacks(&pass, scene, stacks, SSG_LIGHTMAPS_OUTPUTS, c->count);
-    ssg_gl_scene_free(&scene);
-    return e;
+    return ssg_gl_scene_draw_stacks(&pass, stacks, SSG_LIGHTMAPS_OUTPUTS, c->count);
 }

@@ -1,9 +1,9 @@
-/* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in README.md): the scene is
- * uploaded (nodes/common/gl_raster.h) and drawn once per light into that light's layer of the
+/* shadowmaps_gl.c - GL side of the `shadowmaps` node (method in README.md): the run's scene
+ * (core/gl/gl_scene.h) is drawn once per light into that light's layer of the
  * output texture array by shadowmaps.glsl, which reads the light's direction from the
  * light list itself, so the list never has to come back to the CPU. */
 #include "gl/gl.h"
-#include "common/gl_raster.h"
+#include "gl/gl_scene.h"
 #include "shadowmaps.h"
 
 enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -13,16 +13,11 @@ enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *c
     enum ssg_err e = ssg_shadowmaps_check_run(ctx, p, io);
     if (e)
         return e;
-    struct ssg_gl_scene *scene = NULL;
-    if ((e = ssg_gl_scene_upload(ctx, ctx->scene, &scene)))
-        return e;
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
     struct ssg_gl_pass pass;
     ssg_gl_raster_begin(&pass, ctx, "shadowmaps.glsl");
     ssg_gl_input(&pass, "lights", io->in[0]);
     ssg_gl_vec3(&pass, "centre", sphere.centre);
     ssg_gl_float(&pass, "radius", sphere.radius);
-    e = ssg_gl_scene_draw_layers(&pass, scene, io->out[0], SSG_SHADOW_EMPTY);
-    ssg_gl_scene_free(&scene);
-    return e;
+    return ssg_gl_scene_draw_layers(&pass, io->out[0], SSG_SHADOW_EMPTY);
 }

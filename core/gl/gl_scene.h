@@ -1,7 +1,8 @@
-/* gl_raster.h - a loaded scene on the GL backend: its meshes, materials and textures in
- * storage buffers that compute passes read, and the one drawing ssgraph does, rasterising
- * the scene's triangles with a depth test into an image's layers. Nodes that need the
- * scene on GL (gbuffer) use this instead of GL; everything else is compute (core/gl/gl.h).
+/* gl_scene.h - the scene on the GL backend, as a node's GL side sees it: its meshes,
+ * materials and textures in storage buffers that compute passes read, and the one drawing
+ * ssgraph does, rasterising the scene's triangles with a depth test into an image's
+ * layers. Like gl.h, the whole of it a node may use (gbuffer, lightmaps, shadowmaps); a
+ * node never calls GL itself.
  *
  * The usual use is a visibility buffer (Burns and Hunt, "The Visibility Buffer: A
  * Cache-Friendly Approach to Deferred Shading", JCGT 2(2), 2013): the rasteriser finds
@@ -23,15 +24,19 @@
  * core/gl/gl.h's ssg_gl_buffer bindings from SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS on
  * stay free for the node's own data.
  *
- * An uploaded scene is the caller's until ssg_gl_scene_free; it is uploaded per run (a
- * memcpy-speed copy from the scene's arrays), so it never outlives the scene it came from.
- * Call on the executor's thread with the GL lock held (gl_backend.h), like all GL code. */
-#ifndef SSG_GL_RASTER_H
-#define SSG_GL_RASTER_H
+ * Ownership: a node never holds the scene. It is ctx->scene uploaded once for a whole run,
+ * on the first call below that needs it, and shared by every later node and frame of the
+ * run (a live graph keeps it across runs); the run frees it (core/gl/gl_scene.c,
+ * graph/gl_backend.h). So the calls below take a pass or ctx, never a scene, and an upload
+ * that fails (the scene beyond GL's limits: SSG_E_NOMEM, SSG_E_VALUE or SSG_E_BACKEND,
+ * reported as the node's error) is the pass's sticky error (gl.h). Call on the
+ * executor's thread with the GL lock held, like all GL code. */
+#ifndef SSG_GL_SCENE_H
+#define SSG_GL_SCENE_H
 
 #include <stdint.h>
 
-#include "graph/node.h"
+#include "gl/gl.h"
 
 enum { SSG_GL_SCENE_BINDING = 0, SSG_GL_SCENE_BUFFERS = 5 };
 
@@ -59,16 +64,9 @@ struct ssg_gl_camera {
     float near_z, far_z;         /* scene units; nearer and farther surfaces are clipped */
 };
 
-struct ssg_scene;
-struct ssg_gl_scene;
-
-/* Uploads the scene's meshes, materials and the textures they use. SSG_E_NOMEM or
- * SSG_E_BACKEND (reported as the node's error) when they do not fit the GL limits. */
-enum ssg_err ssg_gl_scene_upload(const struct ssg_node_ctx *ctx, const struct ssg_scene *scene,
-                                 struct ssg_gl_scene **out);
-
-/* Binds the buffers above for the compute passes that follow. */
-void ssg_gl_scene_bind(const struct ssg_gl_scene *scene);
+/* Binds the run's scene's buffers above for the pass's compute shader (uploading it first
+ * when no node of the run has). */
+void ssg_gl_scene_bind(struct ssg_gl_pass *pass);
 
 /* Clears `target` (a frame-sized image, one colour attachment per layer, at most 8) to 0
  * and draws every mesh with the raster program of `shader` (its SSG_VERTEX and
@@ -79,14 +77,12 @@ void ssg_gl_scene_bind(const struct ssg_gl_scene *scene);
  *   uniform mat4 ssg_world_to_clip;              the camera's projection
  *   uniform int ssg_mesh;                        index of the mesh being drawn
  * and writes `layout(location = i) out float` for layer i. */
-enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *scene,
-                               const char *shader, const struct ssg_gl_camera *camera,
-                               struct ssg_image *target);
+enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const char *shader,
+                               const struct ssg_gl_camera *camera, struct ssg_image *target);
 
 /* A raster pass whose uniforms the node sets with core/gl/gl.h's calls (ssg_gl_input,
  * ssg_gl_float, ...) before ssg_gl_scene_draw_layers: compiles (or finds) the program of
  * `shader`'s SSG_VERTEX and SSG_FRAGMENT halves. Errors are sticky as in gl.h. */
-struct ssg_gl_pass;
 enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node_ctx *ctx,
                                  const char *shader);
 
@@ -96,9 +92,8 @@ enum ssg_err ssg_gl_raster_begin(struct ssg_gl_pass *pass, const struct ssg_node
  * and makes gl_Position itself (the layer's own projection; NDC x, y in [-1, 1] cover the
  * image with texel row 0 at y = -1); the nearest fragment's `layout(location = 0) out
  * float` is kept (depth test LESS, no culling). Shadow maps are drawn this way. */
-enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass,
-                                      const struct ssg_gl_scene *scene,
-                                      struct ssg_image *target, float clear);
+enum ssg_err ssg_gl_scene_draw_layers(struct ssg_gl_pass *pass, struct ssg_image *target,
+                                      float clear);
 
 /* One image of a stacked draw: draw i writes its layers [i layers, (i + 1) layers). */
 struct ssg_gl_stack {
@@ -112,16 +107,14 @@ struct ssg_gl_stack {
  * [i layers_k, (i + 1) layers_k) of stacks[k] to the fragment outputs in order (the first
  * stack's at location 0, ...), at most 8 outputs; every image has the first one's width
  * and height. Depth test LESS, no culling, as ssg_gl_scene_draw_layers. */
-enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass,
                                       const struct ssg_gl_stack *stacks, int count, int draws);
 
 /* ssg_gl_scene_draw with a raster pass of ssg_gl_raster_begin whose inputs and uniforms
  * the node has set (a depth peel reads the first layer's depth): the same drawing, the
  * same program interface. Returns the pass's (sticky) error. */
-enum ssg_err ssg_gl_scene_draw_pass(struct ssg_gl_pass *pass, const struct ssg_gl_scene *scene,
+enum ssg_err ssg_gl_scene_draw_pass(struct ssg_gl_pass *pass,
                                     const struct ssg_gl_camera *camera,
                                     struct ssg_image *target);
-
-void ssg_gl_scene_free(struct ssg_gl_scene **scene);
 
 #endif

@@ -1,0 +1,269 @@
+/* gl_scene.c - the scene on GL (gl_scene.h): its meshes, materials and textures laid out
+ * and copied into storage buffers, once a run. The copy lives in the run's ssg_gl_shared
+ * (graph/gl_backend.h): the first node that binds or draws the scene uploads it, every
+ * later node and frame of the run (and of a live graph's later runs, the scene being
+ * the graph's for its whole life) finds it there, and the run's owner clears it. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gl/gl.h"
+#include "gl/gl_fn.h"
+#include "gl/gl_runtime.h"
+#include "gl/gl_scene.h"
+#include "graph/gl_backend.h"
+#include "scene/scene.h"
+
+enum { VDATA, INDEX, TEXEL, MESHES, MATERIALS };
+
+/* The fragment shader reports triangle numbers as floats: exact below 2^24. */
+#define MAX_MESH_TRIANGLES (1 << 24)
+
+struct ssg_gl_scene {
+    GLuint buffer[SSG_GL_SCENE_BUFFERS]; /* the storage buffers of gl_scene.h, in order */
+    GLuint vao;                 /* positions from vdata, indices from index[] */
+    const struct ssg_scene *scene; /* what was uploaded: its meshes' triangle counts */
+    struct ssg_gl_mesh *mesh;   /* the offsets, also needed for drawing */
+    struct ssg_gl_material *material; /* the records as uploaded */
+    size_t bytes[SSG_GL_SCENE_BUFFERS]; /* each buffer's size */
+};
+
+static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
+{
+    return ssg_node_fail(ctx, code, "%s", what);
+}
+
+/* Float offsets of every mesh's arrays in vdata and of its indices; sizes into s->bytes. */
+static enum ssg_err lay_out_meshes(const struct ssg_node_ctx *ctx, struct ssg_gl_scene *s)
+{
+    const struct ssg_scene *sc = s->scene;
+    size_t floats = 0, indices = 0;
+    for (int i = 0; i < sc->mesh_count; i++) {
+        const struct ssg_mesh *m = &sc->meshes[i];
+        size_t v = (size_t)m->vertex_count;
+        int uvs = m->uvs && sc->materials[m->material].texture >= 0; /* else unread */
+        if (m->triangle_count >= MAX_MESH_TRIANGLES)
+            return fail(ctx, SSG_E_VALUE, "a mesh has 2^24 triangles or more (the GL "
+                        "visibility buffer numbers them in floats)");
+        s->mesh[i] = (struct ssg_gl_mesh){(int32_t)floats, (int32_t)(floats + 3 * v),
+                                          uvs ? (int32_t)(floats + 6 * v) : -1,
+                                          (int32_t)indices, m->material};
+        floats += (uvs ? 8 : 6) * v;
+        indices += 3 * (size_t)m->triangle_count;
+        if (floats > INT32_MAX || indices > INT32_MAX)
+            return fail(ctx, SSG_E_NOMEM, "the scene's meshes are too large for GL");
+    }
+    s->bytes[VDATA] = floats * sizeof(float);
+    s->bytes[INDEX] = indices * sizeof(uint32_t);
+    s->bytes[MESHES] = (size_t)sc->mesh_count * sizeof(struct ssg_gl_mesh);
+    return SSG_OK;
+}
+
+/* The material records, with the float offset of each used texture in texel[]. */
+static enum ssg_err lay_out_materials(const struct ssg_node_ctx *ctx, struct ssg_gl_scene *s)
+{
+    const struct ssg_scene *sc = s->scene;
+    size_t texels = 0;
+    for (int i = 0; i < sc->material_count; i++) {
+        const struct ssg_material *mt = &sc->materials[i];
+        const struct ssg_texture *t = mt->texture >= 0 ? &sc->textures[mt->texture] : NULL;
+        struct ssg_gl_material *g = &s->material[i];
+        memcpy(g->albedo, mt->albedo, sizeof g->albedo);
+        memcpy(g->specular, mt->specular, sizeof g->specular);
+        g->shininess = mt->shininess;
+        g->texels = -1;
+        for (int j = 0; t && j < i && g->texels < 0; j++) /* a texture shared: upload once */
+            if (sc->materials[j].texture == mt->texture)
+                g->texels = s->material[j].texels;
+        if (t && g->texels < 0) {
+            g->texels = (int32_t)texels;
+            texels += 3 * (size_t)t->width * (size_t)t->height;
+        }
+        g->width = t ? t->width : 0, g->height = t ? t->height : 0;
+        if (texels > INT32_MAX)
+            return fail(ctx, SSG_E_NOMEM, "the scene's textures are too large for GL");
+    }
+    s->bytes[TEXEL] = texels * sizeof(float);
+    s->bytes[MATERIALS] = (size_t)sc->material_count * sizeof(struct ssg_gl_material);
+    return SSG_OK;
+}
+
+static enum ssg_err check_limits(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *s)
+{
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &most);
+    static const char *const what[] = {"vertices", "indices", "textures", "meshes",
+                                       "materials"};
+    for (int b = 0; b < SSG_GL_SCENE_BUFFERS; b++)
+        if (s->bytes[b] > (size_t)most) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "the scene's %s take %zu bytes, more than this GL's "
+                     "storage buffer limit of %d bytes", what[b], s->bytes[b], (int)most);
+            return fail(ctx, SSG_E_NOMEM, msg);
+        }
+    return SSG_OK;
+}
+
+/* Creates the buffers and copies the scene's arrays straight into them. */
+static void copy_data(struct ssg_gl_scene *s)
+{
+    const struct ssg_scene *sc = s->scene;
+    glCreateBuffers(SSG_GL_SCENE_BUFFERS, s->buffer);
+    for (int b = 0; b < SSG_GL_SCENE_BUFFERS; b++) /* 4 bytes at least: never size 0 */
+        glNamedBufferData(s->buffer[b], (GLsizeiptr)(s->bytes[b] ? s->bytes[b] : 4), NULL,
+                          GL_STATIC_DRAW);
+    for (int i = 0; i < sc->mesh_count; i++) {
+        const struct ssg_mesh *m = &sc->meshes[i];
+        const struct ssg_gl_mesh *g = &s->mesh[i];
+        GLsizeiptr v3 = (GLsizeiptr)(3 * sizeof(float) * (size_t)m->vertex_count);
+        glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->positions, v3, m->positions);
+        glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->normals, v3, m->normals);
+        if (g->uvs >= 0)
+            glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->uvs, v3 / 3 * 2, m->uvs);
+        glNamedBufferSubData(s->buffer[INDEX], 4 * (GLintptr)g->indices,
+                             (GLsizeiptr)(12 * (size_t)m->triangle_count), m->indices);
+    }
+    for (int i = 0; i < sc->material_count; i++) {
+        const struct ssg_gl_material *g = &s->material[i];
+        int first = g->texels >= 0; /* only the first material of a shared texture copies */
+        for (int j = 0; first && j < i; j++)
+            first = s->material[j].texels != g->texels;
+        if (first)
+            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->texels,
+                                 (GLsizeiptr)(12 * (size_t)g->width * (size_t)g->height),
+                                 sc->textures[sc->materials[i].texture].rgb);
+    }
+    if (s->bytes[MESHES])
+        glNamedBufferSubData(s->buffer[MESHES], 0, (GLsizeiptr)s->bytes[MESHES], s->mesh);
+    if (s->bytes[MATERIALS])
+        glNamedBufferSubData(s->buffer[MATERIALS], 0, (GLsizeiptr)s->bytes[MATERIALS],
+                             s->material);
+}
+
+static void make_vao(struct ssg_gl_scene *s)
+{
+    glCreateVertexArrays(1, &s->vao);
+    glVertexArrayAttribFormat(s->vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(s->vao, 0, 0);
+    glEnableVertexArrayAttrib(s->vao, 0);
+    glVertexArrayElementBuffer(s->vao, s->buffer[INDEX]);
+}
+
+enum ssg_err ssg_gl_node_status(const struct ssg_node_ctx *ctx, const char *doing)
+{
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR)
+        return SSG_OK;
+    char msg[160];
+    snprintf(msg, sizeof msg, "GL error 0x%04x while %s", (unsigned)e, doing);
+    return fail(ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND, msg);
+}
+
+static void scene_free(struct ssg_gl_scene **scene)
+{
+    struct ssg_gl_scene *s = *scene;
+    if (!s)
+        return;
+    if (s->buffer[0] && ssg_gl_alive()) /* GL defers the deletion until queued passes end */
+        glDeleteBuffers(SSG_GL_SCENE_BUFFERS, s->buffer);
+    if (s->vao && ssg_gl_alive())
+        glDeleteVertexArrays(1, &s->vao);
+    free(s->mesh);
+    free(s->material);
+    free(s);
+    *scene = NULL;
+}
+
+static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scene *scene,
+                           struct ssg_gl_scene **out)
+{
+    *out = NULL;
+    struct ssg_gl_scene *s = calloc(1, sizeof *s);
+    if (s) {
+        s->scene = scene;
+        s->mesh = calloc((size_t)scene->mesh_count + 1, sizeof *s->mesh);
+        s->material = calloc((size_t)scene->material_count + 1, sizeof *s->material);
+    }
+    if (!s || !s->mesh || !s->material) {
+        scene_free(&s);
+        return fail(ctx, SSG_E_NOMEM, "out of memory for the scene's GL tables");
+    }
+    enum ssg_err e = lay_out_meshes(ctx, s);
+    if (!e)
+        e = lay_out_materials(ctx, s);
+    if (!e)
+        e = check_limits(ctx, s);
+    if (!e) {
+        copy_data(s);
+        make_vao(s);
+        e = ssg_gl_node_status(ctx, "uploading the scene");
+    }
+    if (e)
+        scene_free(&s);
+    *out = s;
+    return e;
+}
+
+void ssg_gl_shared_clear(struct ssg_gl_shared *shared)
+{
+    scene_free(&shared->scene);
+    shared->scene_of = NULL;
+}
+
+/* The executor gives every node a holder (exec.c lends one to a node run alone), so a
+   NULL one is a caller bypassing it: an error, not a crash. */
+static enum ssg_err scene_of(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene **out)
+{
+    struct ssg_gl_shared *sh = ctx->gl_shared;
+    *out = NULL;
+    if (!sh)
+        return fail(ctx, SSG_E_BACKEND, "no run holds the GL scene (run the node through "
+                    "the executor)");
+    if (!ctx->scene)
+        return fail(ctx, SSG_E_SCENE, "the GL raster needs a scene");
+    if (sh->scene && sh->scene_of != ctx->scene)
+        ssg_gl_shared_clear(sh);
+    enum ssg_err e = SSG_OK;
+    if (!sh->scene) {
+        e = upload(ctx, ctx->scene, &sh->scene);
+        sh->scene_of = sh->scene ? ctx->scene : NULL;
+        sh->uploads += sh->scene != NULL;
+    }
+    *out = sh->scene;
+    return e;
+}
+
+const struct ssg_gl_scene *ssg_gl_scene_of(struct ssg_gl_pass *pass)
+{
+    const struct ssg_gl_scene *s = NULL;
+    if (!pass->err)
+        pass->err = scene_of(pass->ctx, &s);
+    return s;
+}
+
+void ssg_gl_scene_bind(struct ssg_gl_pass *pass)
+{
+    const struct ssg_gl_scene *s = ssg_gl_scene_of(pass);
+    for (int b = 0; s && b < SSG_GL_SCENE_BUFFERS; b++)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)(SSG_GL_SCENE_BINDING + b),
+                         s->buffer[b]);
+}
+
+void ssg_gl_scene_draw_meshes(const struct ssg_gl_scene *s, unsigned prog)
+{
+    GLint mesh_at = glGetUniformLocation(prog, "ssg_mesh");
+    glBindVertexArray(s->vao);
+    for (int i = 0; i < s->scene->mesh_count; i++) {
+        const struct ssg_gl_mesh *g = &s->mesh[i];
+        int triangles = s->scene->meshes[i].triangle_count;
+        if (triangles < 1)
+            continue;
+        glVertexArrayVertexBuffer(s->vao, 0, s->buffer[VDATA], 4 * (GLintptr)g->positions,
+                                  3 * sizeof(float));
+        if (mesh_at >= 0)
+            glProgramUniform1i(prog, mesh_at, i);
+        glDrawElements(GL_TRIANGLES, 3 * triangles, GL_UNSIGNED_INT,
+                       (const void *)(4 * (uintptr_t)g->indices));
+    }
+    glBindVertexArray(0);
+}
