@@ -65,10 +65,12 @@ const struct ssg_cli_command_info ssg_cli_commands[] = {
      "Loads the graph FILE as a live graph, runs it, and serves a web page on 127.0.0.1\n"
      "(--port, default a free one), printing its URL with a random token: open it in a\n"
      "browser on this machine. The page draws the graph (click a node for its\n"
-     "parameters and ports), shows any port's image as floats (exposure, channels,\n"
-     "false colour, the value under the mouse), re-runs only what a changed parameter\n"
-     "affects, orbits the camera with the mouse, splits two ports A/B with their RMSE\n"
-     "and SSIM against a third, and saves the changes as a graph variant beside FILE.\n"
+     "parameters and ports), shows any port's image as floats (exposure and the tone\n"
+     "curve in a WebGL2 shader, channels, false colour, the value under the mouse),\n"
+     "re-runs only what a changed parameter affects and says why each node ran or was\n"
+     "kept, orbits the camera with the mouse, splits two ports A/B (or shows |A - B|)\n"
+     "with their RMSE and SSIM against a third, and saves the changes as a graph\n"
+     "variant beside FILE.\n"
      "Edits of the graph or its scene on disk reload it. Nothing is written into --out\n"
      "but what compare nodes report. Ends on Ctrl-C (docs/viewer.md)."},
     {SSG_CLI_LAYERS, "layers", "FILE", 1, 1,
