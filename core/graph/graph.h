@@ -173,6 +173,7 @@ enum ssg_why {
     SSG_WHY_SEQUENCE, /* a sequence keeps only what no frame of it can change */
     SSG_WHY_INPUT,    /* a producer ran in this frame */
     SSG_WHY_SINK,     /* a sink: its files and metrics are this run's */
+    SSG_WHY_NO_FILES, /* a sink that writes files, not run: the run writes none (Python) */
     SSG_WHY_COUNT
 };
 /* Node p (run position) must redo `level` (enum ssg_recompute: run, prepare, history) of

@@ -41,6 +41,7 @@ static const char *const why_text[SSG_WHY_COUNT] = {
     [SSG_WHY_SEQUENCE] = "not kept in a sequence",
     [SSG_WHY_INPUT] = "input ran",
     [SSG_WHY_SINK] = "sink",
+    [SSG_WHY_NO_FILES] = "not run: no files",
 };
 
 const char *ssg_why_text(enum ssg_why why)

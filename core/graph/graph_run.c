@@ -304,8 +304,10 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
     for (int p = 0; p < r->g->order_count && !e; p++) {
         const struct gnode *n = &r->g->nodes[r->g->order[p]];
         int sink = n->desc->is_sink, fresh = !r->state->prepared[p], producer;
-        if (r->opt->no_files && n->desc->output_files)
+        if (r->opt->no_files && n->desc->output_files) {
+            r->why[p][SSG_WHY_NO_FILES] += frame == frames - 1; /* told once, as a sink */
             continue;
+        }
         enum ssg_why why = ssg_redo_decide(r->g, r->state, p, r->ran, &producer);
         if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {
             e = run_node(r, p, frame);

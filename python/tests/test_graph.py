@@ -102,6 +102,30 @@ def test_stats_and_metrics(repo):
     assert rmse and all(0 <= run.metrics[k] < 1 for k in rmse)
 
 
+def test_why_each_node_ran(repo):
+    """Run.why says why each node ran or was kept; set_lights relights, its readers alone
+    running again, with a fresh load's bytes; a lights file that does not load is refused."""
+    sets = {"lm.resolution": 64, "lb.resolution": 32, "sm.resolution": 64}
+    with ssgraph.load(repo / "graphs/gi.graph", size=SIZE, sets=sets) as g:
+        first = g.run().why
+        assert first.pop("out") == "not run: no files"  # Python's runs write no files
+        assert set(first.values()) == {"first run"}
+        g.set("gdo.radius", 0.4)
+        why = g.run().why
+        assert why["gdo"] == "parameter changed" and why["gf"] == "input gdo ran"
+        assert why["g"] == "kept" and why["lm"] == "kept"
+        sky = repo / "examples/lights/sky.scene"
+        relit = g.set_lights(sky).run()
+        assert relit.why["lp"] == "lights changed" and relit.why["gk"] == "kept"
+        with pytest.raises(ssgraph.Error):
+            g.set_lights(repo / "examples/lights/no_such.scene")
+        assert set(g.run().why.values()) == {"kept", "not run: no files"}
+        image = g.run().output("gi.out")
+    with ssgraph.load(repo / "graphs/gi.graph", size=SIZE, lights=sky,
+                      sets=dict(sets, **{"gdo.radius": 0.4})) as fresh:
+        assert np.array_equal(fresh.run().output("gi.out"), image)
+
+
 def test_camera(repo):
     with ssgraph.load(repo / "graphs/ssao.graph", size=SIZE) as g:
         before = g.run().output("b.out")
