@@ -37,17 +37,11 @@ nodes/shadowmaps/shadowmaps_gl.c "centre" the scene's bounding sphere, taken at 
 nodes/shadowmaps/shadowmaps_gl.c "radius" likewise
 nodes/common/sampling_gl.c "invf" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
 nodes/common/sampling_gl.c "proj" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
-nodes/complexity/complexity_gl.c "depth" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "grids" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "level_count" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "levels" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "nd" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "normal" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "proj" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "pt" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "side" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "weight" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c names[r] not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "nd" a grid's scratch image of mean normals and depths, written by its means pass, read by its weight pass
+nodes/complexity/complexity_gl.c "pt" a grid's scratch image of mean points, likewise
+nodes/complexity/complexity_gl.c "weight" a grid's scratch image of cell weights, read by the count pass as t<r>
+nodes/complexity/complexity_gl.c "side" the cell side of the grid this means pass is for (one pass a grid: a loop value)
+nodes/complexity/complexity_gl.c names[r] the grids' weight images (scratch), t0 to t3
 nodes/gbuffer/gbuffer_gl.c "back" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c "depth" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c "env_constant" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
