@@ -8,12 +8,7 @@ uniform sampler2DArray t0, t1, t2, t3; // weights of grids 0..3 (unused ones unb
 layout(r32f) uniform writeonly image2DArray dst_count;
 #pragma ssg_params
 
-// A surface pixel (node.h), the CPU's test.
-bool is_surface(float d, vec3 n)
-{
-    precise float nn = n.x * n.x + n.y * n.y + n.z * n.z;
-    return d > 0.0 && d <= 3.0e38 && nn > 1e-12;
-}
+#include "complexity_surface.glsl" // is_surface, the CPU's test
 
 // The larger of w and grid r's weight at pixel p; a NaN weight leaves w (as on the CPU).
 float max_cell(float w, sampler2DArray t, ivec2 p, int r)

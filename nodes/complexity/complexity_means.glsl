@@ -11,12 +11,7 @@ uniform int side;                               // cell side, px
 // proj (a constant of the table): (f, cx, cy) of the inputs' size
 #pragma ssg_consts
 
-// A surface pixel (node.h): depth > 0 and finite, non-zero normal (the CPU's test).
-bool is_surface(float d, vec3 n)
-{
-    precise float nn = n.x * n.x + n.y * n.y + n.z * n.z;
-    return d > 0.0 && d <= 3.0e38 && nn > 1e-12;
-}
+#include "complexity_surface.glsl" // is_surface, the CPU's test
 
 void main()
 {

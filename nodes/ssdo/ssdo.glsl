@@ -148,23 +148,24 @@ bool load_pixel(ivec2 p, out vec3 P, out vec3 N, out float dp)
     return ssg_surface_normal(dp, N);
 }
 
+// Each node's part of main() (at the end): what a background pixel gets, the samples a
+// pixel takes and its gather over them.
 #ifdef SSDO_BOUNCE_NODE
 
-void main()
+void store_background(ivec2 p)
 {
-    ivec2 p = ssg_pixel();
-    if (ssg_outside(p))
-        return;
-    vec3 P, N;
-    float dp;
-    if (!load_pixel(p, P, N, dp)) {
-        SSG_STORE3(dst_out, p, vec3(0.0));
-        return;
-    }
-    int samples = textureSize(kernel, 0).x;
-    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, samples);
+    SSG_STORE3(dst_out, p, vec3(0.0));
+}
+
+int pixel_samples(ivec2 p)
+{
+    return textureSize(kernel, 0).x;
+}
+
+void gather(ivec2 p, pixel_frame k, int n)
+{
     bounce_sum acc = bounce_sum(0.0, vec3(0.0));
-    for (int s = 0; s < samples; s++)
+    for (int s = 0; s < n; s++)
         sample_visibility(k, ssg_kernel_sample(s), acc);
     SSG_STORE3(dst_out, p, finish_bounce(p, acc));
 }
@@ -334,20 +335,13 @@ void store_background(ivec2 p)
     SSG_STORE3(dst_bounce, p, vec3(0.0));
 }
 
-void main()
+int pixel_samples(ivec2 p)
 {
-    ivec2 p = ssg_pixel();
-    if (ssg_outside(p))
-        return;
-    vec3 P, N;
-    float dp;
-    if (!load_pixel(p, P, N, dp)) {
-        store_background(p);
-        return;
-    }
-    int samples = textureSize(kernel, 0).x;
-    int n = ssg_pixel_count(count, count_bound, p, samples);
-    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, n);
+    return ssg_pixel_count(count, count_bound, p, textureSize(kernel, 0).x);
+}
+
+void gather(ivec2 p, pixel_frame k, int n)
+{
     vec3 lt[MAX_LIGHTS];
     float e[MAX_LIGHTS];
     setup_lights(k, lt, e);
@@ -378,3 +372,18 @@ void main()
 }
 
 #endif
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    vec3 P, N;
+    float dp;
+    if (!load_pixel(p, P, N, dp)) {
+        store_background(p);
+        return;
+    }
+    int n = pixel_samples(p);
+    gather(p, setup_frame(P, N, ssg_tile_rotation(p), dp, n), n);
+}
