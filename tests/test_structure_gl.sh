@@ -121,6 +121,16 @@ while read -r f name; do
     fi
 done <<< "$bindings"
 
+# A row's or port's .gl_in names shader files of the tree (a renamed shader would leave its
+# rows unchecked there): every name in a .gl_in string, or in a macro one is made of.
+gl_in=$(git ls-files 'nodes/*/*.h' 'nodes/*/*.c' 2>/dev/null | xargs cat |
+        grep -oE '(gl_in = |#define SSG_[A-Z_]*_GL_[A-Z_]+ )"[^"]*"' | sed -E 's/^[^"]*"//; s/"$//' |
+        tr ' ' '\n' | grep -v '^$' | sort -u)
+[ -n "$gl_in" ] || fail "no .gl_in names found (the pattern above no longer matches)"
+for s in $gl_in; do
+    git ls-files "nodes/*/$s" | grep -q . || fail ".gl_in names $s, which is no shader file"
+done
+
 # GLSL helpers once: a function (return type, name, parameter types) defined in two node
 # shaders is a copy; it belongs in nodes/common/*.glsl, #include'd by both (as
 # joint_weights.glsl serves bilateral and upsample). main() is each shader's own; the
