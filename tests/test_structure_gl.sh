@@ -37,17 +37,11 @@ nodes/shadowmaps/shadowmaps_gl.c "centre" the scene's bounding sphere, taken at 
 nodes/shadowmaps/shadowmaps_gl.c "radius" likewise
 nodes/common/sampling_gl.c "invf" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
 nodes/common/sampling_gl.c "proj" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
-nodes/complexity/complexity_gl.c "depth" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "grids" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "level_count" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "levels" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "nd" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "normal" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "proj" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "pt" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "side" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c "weight" not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
-nodes/complexity/complexity_gl.c names[r] not yet migrated (multi-pass over scratch grids; issue 43 item 4, left)
+nodes/complexity/complexity_gl.c "nd" a grid's scratch image of mean normals and depths, written by its means pass, read by its weight pass
+nodes/complexity/complexity_gl.c "pt" a grid's scratch image of mean points, likewise
+nodes/complexity/complexity_gl.c "weight" a grid's scratch image of cell weights, read by the count pass as t<r>
+nodes/complexity/complexity_gl.c "side" the cell side of the grid this means pass is for (one pass a grid: a loop value)
+nodes/complexity/complexity_gl.c names[r] the grids' weight images (scratch), t0 to t3
 nodes/gbuffer/gbuffer_gl.c "back" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c "depth" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c "env_constant" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
@@ -73,42 +67,17 @@ nodes/gtao/gtao_gl.c "slice_sin" being rewritten (issue 43 item 1)
 nodes/hbao/hbao_gl.c "dir_cos" being rewritten (issue 43 item 1)
 nodes/hbao/hbao_gl.c "dir_rank" being rewritten (issue 43 item 1)
 nodes/hbao/hbao_gl.c "dir_sin" being rewritten (issue 43 item 1)
-nodes/rsm/rsm_gl.c "acc" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "albedo" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "cell" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "cells" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "count" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "dst" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "eye" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "first" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "inv_samples" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "last" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "list" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "map_depth" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "map_flux" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "map_normal" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "ncells" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "normal" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "pick" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "position" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "res" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "rot" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "row0" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "rows" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "state" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "vpl0" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/rsm/rsm_gl.c "vpls" not yet migrated (four passes over scratch images; issue 43 item 4, left)
-nodes/ssao/ssao_gl.c "proj" the projection of the G-buffer's size, shared with the horizon nodes' sampling (issue 43 item 1)
-nodes/ssdo/ssdo_gl.c "cap" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "capped" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "env" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "env_rgb" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "light_count" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "light_dir" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "light_rgb" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "light_v" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "out_channels" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
-nodes/ssdo/ssdo_gl.c "proj" not yet migrated (lights are an array of structs shared with the CPU; issue 43 item 4, left)
+nodes/rsm/rsm_gl.c "cells" the scratch image of the slots: the cells pass writes it, the list pass reads it
+nodes/rsm/rsm_gl.c "list" the scratch image of the non-empty slots and their CDF, between the passes
+nodes/rsm/rsm_gl.c "state" the list walk's scratch (count, sum) carried between its dispatches
+nodes/rsm/rsm_gl.c "count" that scratch read by the picks and the gather (the VPL count)
+nodes/rsm/rsm_gl.c "pick" the scratch image of the draws the picks pass makes, read by the gather
+nodes/rsm/rsm_gl.c "acc" the gather's scratch sums between the dispatches of an exact run
+nodes/rsm/rsm_gl.c "row0" the list walk's dispatch: its first row (a loop value)
+nodes/rsm/rsm_gl.c "vpl0" the exact gather's dispatch: its first VPL (a loop value)
+nodes/rsm/rsm_gl.c "vpls" the exact gather's dispatch: how many VPLs (a loop value)
+nodes/rsm/rsm_gl.c "first" the exact gather's dispatch: the first (a loop value)
+nodes/rsm/rsm_gl.c "last" the exact gather's dispatch: the last (a loop value)
 nodes/ssilvb/ssilvb_gl.c "invf" being rewritten (issue 43 item 1)
 nodes/ssilvb/ssilvb_gl.c "noise_off" being rewritten (issue 43 item 1)
 nodes/ssilvb/ssilvb_gl.c "proj" being rewritten (issue 43 item 1)
@@ -152,6 +121,16 @@ while read -r f name; do
     fi
 done <<< "$bindings"
 
+# A row's or port's .gl_in names shader files of the tree (a renamed shader would leave its
+# rows unchecked there): every name in a .gl_in string, or in a macro one is made of.
+gl_in=$(git ls-files 'nodes/*/*.h' 'nodes/*/*.c' 2>/dev/null | xargs cat |
+        grep -oE '(gl_in = |#define SSG_[A-Z_]*_GL_[A-Z_]+ )"[^"]*"' | sed -E 's/^[^"]*"//; s/"$//' |
+        tr ' ' '\n' | grep -v '^$' | sort -u)
+[ -n "$gl_in" ] || fail "no .gl_in names found (the pattern above no longer matches)"
+for s in $gl_in; do
+    git ls-files "nodes/*/$s" | grep -q . || fail ".gl_in names $s, which is no shader file"
+done
+
 # GLSL helpers once: a function (return type, name, parameter types) defined in two node
 # shaders is a copy; it belongs in nodes/common/*.glsl, #include'd by both (as
 # joint_weights.glsl serves bilateral and upsample). main() is each shader's own; the
@@ -159,9 +138,7 @@ done <<< "$bindings"
 known=$(cat <<'EOF'
 void setup_pixel(ivec2) gtao and ssilvb: the horizon march moves into nodes/common/horizon.glsl (issue 43 item 1)
 vec3 fetch3(int,uint) gbuffer_ray and lightmaps: the scene's buffers move into core/gl (issue 43 item 2)
-float luminance(vec3) direct_light and probe_light: the C twins are copies too (direct_light_cpu.c, probe_light_cpu.c); share both at once
 void store_background(ivec2) gbuffer and ssdo: two different functions of one name
-bool is_surface(float,vec3) complexity_count and complexity_means: two shaders of one node
 EOF
 )
 defs=$(git ls-files 'nodes/*/*.glsl' 2>/dev/null | while read -r f; do
@@ -176,13 +153,14 @@ defs=$(git ls-files 'nodes/*/*.glsl' 2>/dev/null | while read -r f; do
             }
             if (head !~ / main$/) print head "(" sig ")\t" f }' "$f"
 done)
-twice=$(echo "$defs" | awk -F'\t' '{n[$1]++; at[$1] = at[$1] " " $2}
+# (one shader's variants, #ifdef'd, may each define it: counted once a file)
+twice=$(echo "$defs" | sort -u | awk -F'\t' '{n[$1]++; at[$1] = at[$1] " " $2}
                                    END {for (s in n) if (n[s] > 1) print s "\t" at[s]}' |
         while IFS=$'\t' read -r sig at; do
             echo "$known" | grep -qF "$sig " || echo "$sig:$at"; done)
 [ -z "$twice" ] || fail "GLSL functions defined in more than one shader (move one copy into
 nodes/common/*.glsl and #include it): $twice"
 stale=$(echo "$known" | while read -r ret rest; do sig="$ret ${rest%%)*})"
-        n=$(echo "$defs" | cut -f1 | grep -cxF "$sig"); [ "$n" -ge 2 ] || echo "$sig"; done)
+        n=$(echo "$defs" | sort -u | cut -f1 | grep -cxF "$sig"); [ "$n" -ge 2 ] || echo "$sig"; done)
 [ -z "$stale" ] || fail "signatures listed as known copies that are no longer twice: $stale"
 finish test_structure_gl

@@ -42,11 +42,20 @@
  * read that feature's uniforms, and the compiler drops them. A row or port marked
  * `.gl_if = "NORMALS"` says so: the pass requires it where the program was compiled with
  * NORMALS nonzero, and leaves it out where the program lacks it otherwise. Rows of kind
- * MAT3 are read as `float name[9]` (row-major), PROJECTION rows as `vec3 name`.
+ * MAT3 are read as `float name[9]` (row-major), PROJECTION rows as `vec3 name`, a
+ * parameter of kind INTS as `int p_name[SSG_INTS_MAX]` with its count `int p_name_count`
+ * (read where the shader needs it).
+ *
+ * Nodes of several shaders. One table serves every shader of the node; a row or port
+ * marked `.gl_in = "rsm_cells.glsl rsm.glsl"` is required only in the shaders named, and
+ * left out in the others, so each pass may hold both pragmas and call ssg_gl_ports. Rows
+ * of constants the consts already keep (a nested `g.cap`, a field the CPU names `cells`)
+ * are made by SSG_UNIFORMS_AT_TABLE (lang/params.h) over the consts' own fields.
  *
  * What stays bound by hand (ssg_gl_int and the rest below) is what is neither a
  * parameter, a constant's row nor a port of the pass: a multi-pass node's scratch images
  * and loop values. tests/test_structure_gl.sh lists each such binding with its reason.
+ * An array of structs (a light list) goes into a storage buffer as it is (ssg_gl_buffer).
  *
  * Errors are sticky: after the first failing call the pass does nothing and
  * ssg_gl_pass_end returns that error (already reported through ctx->diags), so a node can

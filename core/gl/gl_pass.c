@@ -55,11 +55,35 @@ static int define_on(const struct ssg_gl_pass *p, const char *name)
     return 0;
 }
 
-/* 1 when the program must read a row or port marked gl_if (NULL: always); one compiled
-   without that define may leave it out (a variant that does not need it). */
-static int required(const struct ssg_gl_pass *p, const char *gl_if)
+/* 1 when the pass's shader file is one of `files` (space-separated names). */
+static int shader_in(const struct ssg_gl_pass *p, const char *files)
 {
-    return !gl_if || define_on(p, gl_if);
+    size_t n = strlen(p->shader);
+    for (const char *f = files; *f; f += strcspn(f, " "), f += strspn(f, " "))
+        if (strncmp(f, p->shader, n) == 0 && (f[n] == ' ' || f[n] == 0))
+            return 1;
+    return 0;
+}
+
+/* 1 when the program must read a row or port marked gl_if (NULL: always) and gl_in (NULL:
+   every shader of the node); one compiled without that define (a variant that does not
+   need it), or another shader of the node, may leave it out. */
+static int required(const struct ssg_gl_pass *p, const char *gl_if, const char *gl_in)
+{
+    return (!gl_if || define_on(p, gl_if)) && (!gl_in || shader_in(p, gl_in));
+}
+
+/* An INTS row: its SSG_INTS_MAX values into `int <name>[]`, and the count into
+   `<name>_count` where the shader reads it. */
+static void bind_ints(struct ssg_gl_pass *p, GLint loc, const char *name,
+                      const struct ssg_ints *v)
+{
+    char count[104];
+    snprintf(count, sizeof count, "%s_count", name);
+    GLint count_loc = where_optional(p, count);
+    glProgramUniform1iv(p->program, loc, SSG_INTS_MAX, v->v);
+    if (count_loc >= 0)
+        glProgramUniform1i(p->program, count_loc, v->count);
 }
 
 /* Sets every uniform a table declared in the program (gl_program.c) from the struct at
@@ -81,11 +105,11 @@ static void bind_table(struct ssg_gl_pass *p, struct ssg_param_table table, cons
         const void *at = (const char *)base + d->offset;
         int is_int = d->type == SSG_P_INT || d->type == SSG_P_BOOL || d->type == SSG_P_ENUM;
         if (d->host_only || (!is_int && d->type != SSG_P_FLOAT && d->type != SSG_P_VEC3 &&
-                             d->type != SSG_P_MAT3))
+                             d->type != SSG_P_MAT3 && d->type != SSG_P_INTS))
             continue;
         snprintf(name, sizeof name, "%s%s", prefix, d->name);
         GLint loc = where_optional(p, name);
-        if (loc < 0 && !required(p, d->gl_if))
+        if (loc < 0 && !required(p, d->gl_if, d->gl_in))
             continue;
         if (loc < 0) {
             p->err = ssg_node_fail(p->ctx, SSG_E_SHADER, "shader %s declares %s '%s' "
@@ -100,6 +124,8 @@ static void bind_table(struct ssg_gl_pass *p, struct ssg_param_table table, cons
             glProgramUniform1f(p->program, loc, *(const float *)at);
         } else if (d->type == SSG_P_MAT3) {
             glProgramUniform1fv(p->program, loc, 9, at);
+        } else if (d->type == SSG_P_INTS) {
+            bind_ints(p, loc, name, at);
         } else {
             const float *v = at;
             glProgramUniform3f(p->program, loc, v[0], v[1], v[2]);
@@ -163,12 +189,12 @@ void ssg_gl_output(struct ssg_gl_pass *pass, const char *name, struct ssg_image 
     glProgramUniform1i(pass->program, loc, unit);
 }
 
-/* Binds one port as ssg_gl_input or ssg_gl_output would; a port marked gl_if that this
-   program variant does not read is left out. */
+/* Binds one port as ssg_gl_input or ssg_gl_output would; a port marked gl_if or gl_in
+   that this program variant or shader does not read is left out. */
 static void bind_port(struct ssg_gl_pass *pass, const struct ssg_port_desc *port,
                       const char *name, const struct ssg_image *in, struct ssg_image *out)
 {
-    if (!required(pass, port->gl_if) && where_optional(pass, name) < 0)
+    if (!required(pass, port->gl_if, port->gl_in) && where_optional(pass, name) < 0)
         return;
     if (out)
         ssg_gl_output(pass, name, out);

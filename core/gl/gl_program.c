@@ -17,7 +17,8 @@
  * A node's own file may hold one line `#pragma ssg_params`: it is replaced (on that one
  * line, so line numbers stay the file's) by the declarations of the node's parameters from
  * its descriptor's table: `uniform float p_radius;` for each row not marked host_only
- * (float -> float, int/bool/enum -> int, vec3 -> vec3, mat3 -> float[9]), and for an enum
+ * (float -> float, int/bool/enum -> int, vec3 -> vec3, mat3 -> float[9], an int list ->
+ * int[SSG_INTS_MAX] with its count as `int p_<field>_count`), and for an enum
  * its choices as `const int MODE_HEMISPHERE = 0;` (parameter and choice in capitals). The
  * pass binds their values (gl_pass.c), so a parameter is written once, in C, and read in GLSL by
  * name. Likewise `#pragma ssg_consts` declares the node's constants' table (the
@@ -290,12 +291,19 @@ static int append_table_block(char **buf, size_t *len, size_t *cap,
         const char *type = d->type == SSG_P_FLOAT || d->type == SSG_P_MAT3 ? "float"
                            : d->type == SSG_P_VEC3 ? "vec3"
                            : d->type == SSG_P_INT || d->type == SSG_P_BOOL ||
-                                   d->type == SSG_P_ENUM ? "int" : NULL;
+                                   d->type == SSG_P_ENUM || d->type == SSG_P_INTS ? "int"
+                                                                                 : NULL;
         if (!type || d->host_only)
             continue;
-        snprintf(decl, sizeof decl, "uniform %s %s%s%s; ", type, prefix, d->name,
-                 d->type == SSG_P_MAT3 ? "[9]" : "");
+        char size[16] = "";
+        if (d->type == SSG_P_MAT3 || d->type == SSG_P_INTS)
+            snprintf(size, sizeof size, "[%d]", d->type == SSG_P_MAT3 ? 9 : SSG_INTS_MAX);
+        snprintf(decl, sizeof decl, "uniform %s %s%s%s; ", type, prefix, d->name, size);
         ok = append(buf, len, cap, decl, strlen(decl));
+        if (ok && d->type == SSG_P_INTS) { /* its count, read where the shader needs it */
+            snprintf(decl, sizeof decl, "uniform int %s%s_count; ", prefix, d->name);
+            ok = append(buf, len, cap, decl, strlen(decl));
+        }
         for (int k = 0; ok && d->type == SSG_P_ENUM && d->choices && d->choices[k]; k++) {
             ok = append(buf, len, cap, "const int ", 10) && append_upper(buf, len, cap, d->name) &&
                  append(buf, len, cap, "_", 1) && append_upper(buf, len, cap, d->choices[k]);

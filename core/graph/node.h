@@ -91,6 +91,8 @@ struct ssg_port_desc {
                             is a GLSL keyword (`in`: "src"); NULL = its name (gl.h) */
     const char *gl_if;   /* NULL, or a define of the node's shader: the shader reads the
                             port only when compiled with it nonzero (gl.h) */
+    const char *gl_in;   /* NULL, or the node's shader files that read the port, space-
+                            separated: ssg_gl_ports skips it in the others (gl.h) */
 };
 
 /* Shape of an image flowing along an edge. */

@@ -65,6 +65,10 @@ struct ssg_param_desc {
     const char *gl_if;          /* NULL, or a define of the node's shader (NORMALS): the
                                    shader reads the uniform only in programs compiled with
                                    it nonzero, and the pass requires it there (gl.h) */
+    const char *gl_in;          /* NULL, or the node's shader files that read it, space-
+                                   separated ("rsm_cells.glsl rsm.glsl"), for a node of
+                                   several shaders: the pass requires it only in those, the
+                                   others may leave it out (gl.h) */
 };
 
 /* The storage of a parameter: its type and its offset in the owner's params struct, e.g.
@@ -150,6 +154,19 @@ struct ssg_param_desc {
 #define SSG_UNIFORMS_TABLE(var, tag, LIST) \
     typedef struct tag ssg_uniforms_owner; \
     static const struct ssg_param_desc var[] = {LIST(SSG_UNIFORM_AS_ROW)}
+
+/* Rows of constants that the consts already keep, at a path inside them (a nested member,
+ * a field the CPU reads under another name): kind, the GLSL name, the path, doc, then any
+ * further initialisers:
+ *   #define SSG_RSM_UNIFORMS(U) U(INT, ncells, cells, "cells per face side")
+ *   SSG_UNIFORMS_AT_TABLE(uniforms, ssg_rsm_consts, SSG_RSM_UNIFORMS);
+ * with the descriptor's `.uniforms = SSG_TABLE(uniforms)` and uniforms_offset 0 (the
+ * paths are the consts' own). Type-checked as SSG_FIELD_* checks a row. */
+#define SSG_UNIFORM_AT_ROW(kind, glsl_name, path, ...) \
+    {.name = #glsl_name, SSG_FIELD_##kind(ssg_uniforms_owner, path), .help = __VA_ARGS__},
+#define SSG_UNIFORMS_AT_TABLE(var, tag, LIST) \
+    typedef struct tag ssg_uniforms_owner; \
+    static const struct ssg_param_desc var[] = {LIST(SSG_UNIFORM_AT_ROW)}
 
 /* A table and its length, so callers pass one thing. */
 struct ssg_param_table {

@@ -64,6 +64,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_complexity_params, SSG_COMPLEXITY_PARAMS);
+SSG_UNIFORMS_AT_TABLE(uniforms, ssg_complexity_consts, SSG_COMPLEXITY_UNIFORMS);
 
 SSG_PORT_TABLE(inputs, SSG_COMPLEXITY_IN);
 SSG_PORT_TABLE(outputs, SSG_COMPLEXITY_OUT);
@@ -78,6 +79,7 @@ const struct ssg_node_desc ssg_node_complexity = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_complexity_params),
     .consts_size = sizeof(struct ssg_complexity_consts),
+    .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

@@ -4,7 +4,9 @@
  * (complexity_weight.glsl, one small scratch image per grid, the thresholds and gains
  * bound from the table), then per pixel the max over the grids and the level
  * (complexity_count.glsl): 2 resolutions + 1 dispatches. The grids' layout and the
- * projection are prepare()'s, as on the CPU. */
+ * projection are prepare()'s, as on the CPU. Ports, parameters and the projection are
+ * bound by the tables (each in the shaders its row's .gl_in names, complexity.h); by hand
+ * only the scratch images of each grid and the side of the grid a pass is for. */
 #include "complexity.h"
 #include "gl/gl.h"
 
@@ -32,12 +34,10 @@ static enum ssg_err grid_passes(const struct ssg_node_ctx *ctx,
         return SSG_E_NOMEM;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "complexity_means.glsl", NULL);
-    ssg_gl_input(&p, "depth", io->in[SSG_COMPLEXITY_IN_DEPTH]);
-    ssg_gl_input(&p, "normal", io->in[SSG_COMPLEXITY_IN_NORMAL]);
+    ssg_gl_ports(&p, io); /* depth, normal */
     ssg_gl_output(&p, "nd", g->nd);
     ssg_gl_output(&p, "pt", g->pt);
     ssg_gl_int(&p, "side", cells->side);
-    ssg_gl_projection(&p, "proj", &c->proj);
     ssg_gl_dispatch(&p, cells->gw, cells->gh);
     enum ssg_err e = ssg_gl_pass_end(&p);
     if (e == SSG_OK) {
@@ -58,19 +58,12 @@ static enum ssg_err count_pass(const struct ssg_node_ctx *ctx,
                                const struct grid *g)
 {
     static const char *const names[SSG_COMPLEXITY_MAX_RESOLUTIONS] = {"t0", "t1", "t2", "t3"};
-    int sides[SSG_COMPLEXITY_MAX_RESOLUTIONS];
     struct ssg_image *out = io->out[0];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "complexity_count.glsl", NULL);
     ssg_gl_ports(&p, io);
-    for (int r = 0; r < SSG_COMPLEXITY_MAX_RESOLUTIONS; r++) {
+    for (int r = 0; r < SSG_COMPLEXITY_MAX_RESOLUTIONS; r++)
         ssg_gl_input(&p, names[r], r < c->grids ? g[r].t : NULL);
-        sides[r] = r < c->grids ? c->grid[r].side : 1;
-    }
-    ssg_gl_ints(&p, "side", SSG_COMPLEXITY_MAX_RESOLUTIONS, sides);
-    ssg_gl_int(&p, "grids", c->grids);
-    ssg_gl_ints(&p, "levels", c->p.levels.count, c->p.levels.v);
-    ssg_gl_int(&p, "level_count", c->p.levels.count);
     ssg_gl_dispatch(&p, out->width, out->height);
     return ssg_gl_pass_end(&p);
 }

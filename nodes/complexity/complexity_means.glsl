@@ -8,14 +8,10 @@ uniform sampler2DArray depth, normal;
 layout(r32f) uniform writeonly image2DArray nd; // mean normal x, y, z and mean depth
 layout(r32f) uniform writeonly image2DArray pt; // mean view-space point
 uniform int side;                               // cell side, px
-uniform vec3 proj;                              // (f, cx, cy) of the inputs' size
+// proj (a constant of the table): (f, cx, cy) of the inputs' size
+#pragma ssg_consts
 
-// A surface pixel (node.h): depth > 0 and finite, non-zero normal (the CPU's test).
-bool is_surface(float d, vec3 n)
-{
-    precise float nn = n.x * n.x + n.y * n.y + n.z * n.z;
-    return d > 0.0 && d <= 3.0e38 && nn > 1e-12;
-}
+#include "complexity_surface.glsl" // is_surface, the CPU's test
 
 void main()
 {

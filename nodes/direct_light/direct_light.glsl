@@ -185,7 +185,7 @@ float irradiance(int li, vec3 p, vec3 n, out vec3 l)
     return light[li].intensity * max(ndl, 0.0) * inv * inv;
 }
 
-float luminance(vec3 e) { return 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b; }
+#include "luminance.glsl"
 
 void main()
 {

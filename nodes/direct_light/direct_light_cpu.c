@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "common/direct.h"
+#include "common/luminance.h"
 #include "direct_light.h"
 
 enum { CHUNK = 64, ROWS_PER_BAND = 8, EARLY = 4 };
@@ -26,11 +27,6 @@ struct chunk {
     float lx[CHUNK], ly[CHUNK], lz[CHUNK];  /* one light: unit direction to it */
     float sum[3][CHUNK], lum_lit[CHUNK], lum_all[CHUNK];
 };
-
-static float luminance(float r, float g, float b)
-{
-    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
-}
 
 /* A cube face's texel (x, y), maybe past its edge, as the depth along face f's axis of
    the nearest surface on its ray: read on the face its direction falls on (a texel past
@@ -284,7 +280,7 @@ static void add_light(const struct job *j, int li, int y, int x0, int len,
         float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
         k->v[i] = k->e[i] > 0.0f ? visibility(j, l, li, x0 + i, y, p, n, d) : 0.0f;
     }
-    const float el = luminance(l->color[0], l->color[1], l->color[2]);
+    const float el = ssg_luminance(l->color[0], l->color[1], l->color[2]);
     for (int i = 0; i < len; i++) {
         float lit = k->v[i] * k->e[i];
         k->sum[0][i] += lit * l->color[0], k->sum[1][i] += lit * l->color[1];

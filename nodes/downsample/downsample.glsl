@@ -15,17 +15,10 @@ layout(r32f) uniform writeonly image2DArray dst_position, dst_normal, dst_albedo
 
 const int MAX_BLOCK = 16;
 
-// The median of v[0 .. n - 1], n > 0 (insertion sort, as the CPU: the same float ops).
+// The median of v[0 .. n - 1], n > 0: the CPU's body (downsample_cpu.c), one text.
 float median(inout float v[MAX_BLOCK], int n)
 {
-    for (int i = 1; i < n; i++) {
-        float t = v[i];
-        int k = i;
-        for (; k > 0 && v[k - 1] > t; k--)
-            v[k] = v[k - 1];
-        v[k] = t;
-    }
-    return v[(n - 1) / 2]; // the lower middle one for an even count, as the CPU
+#include "median.glsl"
 }
 
 ivec2 representative(ivec2 b)

@@ -27,17 +27,11 @@ struct job {
 /* The median of n > 0 values (sorted in place): the middle one, or for an even count the
    lower (nearer) of the two middle ones, a depth the block has: the mean of the two would
    lie exactly between them, and a block split two and two by an edge would then choose its
-   side by a rounding in the last bit, differently on each backend. */
+   side by a rounding in the last bit, differently on each backend. The body is the GL
+   shader's too (nodes/common/median.glsl). */
 static float median(float *v, int n)
 {
-    for (int i = 1; i < n; i++) {
-        float t = v[i];
-        int k = i;
-        for (; k > 0 && v[k - 1] > t; k--)
-            v[k] = v[k - 1];
-        v[k] = t;
-    }
-    return v[(n - 1) / 2];
+#include "common/median.glsl"
 }
 
 /* Input pixel index of block (bx, by)'s representative. */

@@ -19,11 +19,7 @@ float frame(int light, int k)
     return texelFetch(frames, ivec3(light, 0, k), 0).r;
 }
 
-float luminance(vec3 e)
-{
-    precise float l = 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b;
-    return l;
-}
+#include "luminance.glsl"
 
 // Point P0 (view space, normal N, sin(N, l_i) = sine) moved along the normal by
 // normal_world x sine (the normal offset, README.md), on light i's map: texel x, y, depth

@@ -9,6 +9,7 @@
 #include "common/vector_loops.h" /* first: see there */
 #include <stdlib.h>
 
+#include "common/luminance.h"
 #include "probe_light.h"
 
 enum { CHUNK = 64, PART = 16 };
@@ -42,11 +43,6 @@ struct chunk {
     float x[CHUNK], y[CHUNK], gx[CHUNK], gy[CHUNK], hsum[CHUNK], hcnt[CHUNK], rp[CHUNK];
     float ref[CHUNK];                              /* one tap: its receiver depth */
 };
-
-static float luminance(float r, float g, float b)
-{
-    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
-}
 
 static inline __attribute__((always_inline)) void
 load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
@@ -228,7 +224,7 @@ static inline __attribute__((always_inline)) void add_light(const struct job *j,
     int n = j->count;
     float er = lights->data[n + li], eg = lights->data[3 * n + li],
           eb = lights->data[5 * n + li];
-    float el = luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
+    float el = ssg_luminance(er, eg, eb), cr = j->cos_sin[2 * li], sr = j->cos_sin[2 * li + 1];
     if (er == 0.0f && eg == 0.0f && eb == 0.0f)
         return; /* a light that carries nothing (lightprobe missing=dark) adds exact zeros */
     /* A light behind every pixel of the chunk adds exact zeros: skip it (half the lights

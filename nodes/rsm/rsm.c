@@ -125,6 +125,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_rsm_params, SSG_RSM_PARAMS);
+SSG_UNIFORMS_AT_TABLE(uniforms, ssg_rsm_consts, SSG_RSM_UNIFORMS);
 SSG_PORT_TABLE(inputs, SSG_RSM_IN);
 SSG_PORT_TABLE(outputs, SSG_RSM_OUT);
 
@@ -148,6 +149,7 @@ const struct ssg_node_desc ssg_node_rsm = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_rsm_params),
     .consts_size = sizeof(struct ssg_rsm_consts),
+    .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

@@ -3,14 +3,13 @@
 // Phi cos cos / (d^2 max(d^2, r2)) x fade(d) in the CPU's order (`precise`).
 uniform sampler2DArray position, normal, albedo, list, count, pick;
 uniform bool albedo_bound;
-layout(r32f) uniform writeonly image2DArray dst;
+layout(r32f) uniform writeonly image2DArray dst_out;
 layout(r32f) uniform image2DArray acc;  // the sums between the dispatches of an exact run
-uniform float rot[9];  // view -> world: world = eye + rot^T view
-uniform vec3 eye;
 #pragma ssg_params
+#pragma ssg_consts
+// rot[9], eye: view -> world, world = eye + rot^T view; inv_samples = 1 / samples
 uniform int vpl0, vpls;       // exact: this dispatch's VPLs [vpl0, vpl0 + vpls)
 uniform bool first, last;     // exact: the first and the last dispatch
-uniform float inv_samples;
 const int TILE = 8;    // SSG_RSM_TILE
 
 int list_w;
@@ -88,5 +87,5 @@ void main()
     vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0);
     precise vec3 e = vec3(sum.x * 0.101321184, sum.y * 0.101321184, sum.z * 0.101321184);
     precise vec3 o = vec3(a.x * e.x, a.y * e.y, a.z * e.z);
-    SSG_STORE3(dst, p, bg ? vec3(0.0) : o);
+    SSG_STORE3(dst_out, p, bg ? vec3(0.0) : o);
 }

@@ -17,26 +17,29 @@
 #include "graph/node.h"
 #include "common/lightmap.h"
 
-/* Ports, one row each (graph/node.h): enumerator, name, types, doc, further fields. */
+/* Ports, one row each (graph/node.h): enumerator, name, types, doc, further fields. On GL
+   the maps are read by the cells pass (rsm_cells.glsl), the rest by the gather (rsm.glsl):
+   .gl_in says which, and ssg_gl_ports binds each in its own. */
 #define SSG_RSM_IN(X)                                                                      \
     X(SSG_RSM_IN_POSITION, "position", SSG_T_VECTOR,                                       \
-      "view-space position (gbuffer or downsample), any size")                             \
-    X(SSG_RSM_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal, 0 = background") \
+      "view-space position (gbuffer or downsample), any size", .gl_in = "rsm.glsl")        \
+    X(SSG_RSM_IN_NORMAL, "normal", SSG_T_VECTOR, "unit view-space normal, 0 = background", \
+      .gl_in = "rsm.glsl")                                                                 \
     X(SSG_RSM_IN_MAP_DEPTH, "map_depth", SSG_T_LIGHTMAPS,                                  \
-      "the lights' map depths (lightmaps.depth)")                                          \
+      "the lights' map depths (lightmaps.depth)", .gl_in = "rsm_cells.glsl")               \
     X(SSG_RSM_IN_MAP_NORMAL, "map_normal", SSG_T_LIGHTMAPS,                                \
-      "the lights' map normals (lightmaps.normal)")                                        \
+      "the lights' map normals (lightmaps.normal)", .gl_in = "rsm_cells.glsl")             \
     X(SSG_RSM_IN_MAP_FLUX, "map_flux", SSG_T_LIGHTMAPS,                                    \
-      "the lights' reflected flux (lightmaps.flux)")                                       \
+      "the lights' reflected flux (lightmaps.flux)", .gl_in = "rsm_cells.glsl")            \
     X(SSG_RSM_IN_ALBEDO, "albedo", SSG_T_COLOR,                                            \
       "diffuse albedo of the receivers; unconnected: out is the bounce a white receiver "  \
       "sends, E / pi",                                                                     \
-      .optional = 1)
+      .optional = 1, .gl_in = "rsm.glsl")
 #define SSG_RSM_OUT(X)                                                                     \
     X(SSG_RSM_OUT_OUT, "out", SSG_T_COLOR,                                                 \
       "one-bounce radiance albedo x E / pi (E / pi without albedo), linear RGB, "          \
       "unoccluded",                                                                        \
-      .lit = 1)
+      .lit = 1, .gl_in = "rsm.glsl")
 SSG_PORT_ENUM(ssg_rsm_input, SSG_RSM_IN, SSG_RSM_INPUTS);
 SSG_PORT_ENUM(ssg_rsm_output, SSG_RSM_OUT, SSG_RSM_OUTPUTS);
 
@@ -59,22 +62,21 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
    w = Phi.r + Phi.g + Phi.b, [11] the CDF (the list only: the sum of w up to here). */
 
 /* The parameters, one row each (lang/params.h). The struct below and the table in rsm.c
-   are made from these rows; the gather (rsm.glsl) reads those not host_only as p_<field>
-   (#pragma ssg_params). */
+   are made from these rows; the GL passes read those not host_only as p_<field> (#pragma
+   ssg_params), each in the shader its .gl_in names. */
 #define SSG_RSM_PARAMS(P)                                                                  \
     P(INT, samples,                                                                        \
       "VPLs drawn per pixel in proportion to their flux (stratified, weighted by 1 / pdf); " \
       "0, or at least the VPL count, sums every VPL exactly",                              \
-      .def = 64, .min = 0, .max = SSG_RSM_SAMPLES_MAX)                                     \
+      .def = 64, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .gl_in = "rsm.glsl")                \
     P(INT, cell,                                                                           \
       "side of the map cells merged into VPLs (per dominant normal axis): larger is "      \
       "fewer, coarser VPLs; 1 = one VPL a texel",                                          \
-      .def = 4, .min = 1, .max = 128, .unit = "texels",                                    \
-      .host_only = 1) /* prepare()'s slot grid; the cells pass gets it with the grid */    \
+      .def = 4, .min = 1, .max = 128, .unit = "texels", .gl_in = "rsm_cells.glsl")         \
     P(FLOAT, min_distance,                                                                 \
       "senders nearer than this give nothing, fading in smoothly up to twice it, so a "    \
       "screen-space pass can own the near field (weight 1 - fade); 0 = none excluded",     \
-      .def = 0, .min = 0, .max = 1e6, .unit = "world units")                               \
+      .def = 0, .min = 0, .max = 1e6, .unit = "world units", .gl_in = "rsm.glsl")          \
     P(BOOL, own, "the maps hold the scene's own lights (lightmaps' own, the same value)",  \
       .def = 1, .host_only = 1)                                                            \
     P(INT, environment,                                                                    \
@@ -100,6 +102,18 @@ struct ssg_rsm_consts {
     float offset[SSG_RSM_TILE * SSG_RSM_TILE];
     float inv_samples;      /* 1 / samples (0 when samples = 0) */
 };
+
+/* The constants the GL passes read (#pragma ssg_consts), rows over the consts' own fields
+   (lang/params.h's SSG_UNIFORMS_AT_TABLE): kind, GLSL name, field, doc, the shaders. */
+#define SSG_RSM_UNIFORMS(U)                                                                \
+    U(MAT3, rot, rot, "view -> world rotation", .gl_in = "rsm.glsl")                        \
+    U(VEC3, eye, eye, "the camera's world position", .gl_in = "rsm.glsl")                  \
+    U(INT, res, res, "the maps' side R", .gl_in = "rsm_cells.glsl")                        \
+    U(INT, ncells, cells, "cells per face side C", .gl_in = "rsm_cells.glsl")              \
+    U(INT, rows, gl_list_rows, "slot grid rows a dispatch of the list walk takes",          \
+      .gl_in = "rsm_list.glsl")                                                            \
+    U(FLOAT, inv_samples, inv_samples, "1 / samples (0: exact)",                           \
+      .gl_in = "rsm_picks.glsl rsm.glsl")
 
 /* Builds the slots of rows y in [y0, y1) of the (6 C) x (F C) slot grid (every bin of the
    row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, in slot

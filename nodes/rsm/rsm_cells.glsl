@@ -4,7 +4,9 @@
 uniform sampler2DArray map_depth, map_normal, map_flux;
 layout(r32f) uniform writeonly image2DArray cells;
 layout(std430, binding = 0) readonly buffer Faces { float face[]; };
-uniform int res, cell, ncells;
+#pragma ssg_params
+#pragma ssg_consts
+// res: the maps' side; ncells: cells per face side; p_cell: texels per cell side
 const float MIN_COSINE = 0.1;   // SSG_RSM_MIN_COSINE
 const float EMPTY = 1.0e30;     // SSG_SHADOW_EMPTY
 const int BINS = 6;
@@ -113,8 +115,8 @@ void main()
         for (int k = 0; k < 3; k++)
             pw[3 * b + k] = nw[3 * b + k] = flux[3 * b + k] = 0.0;
     }
-    for (int y = cy * cell; y < (cy + 1) * cell && y < res; y++)
-        for (int x = cx * cell; x < (cx + 1) * cell && x < res; x++)
+    for (int y = cy * p_cell; y < (cy + 1) * p_cell && y < res; y++)
+        for (int x = cx * p_cell; x < (cx + 1) * p_cell && x < res; x++)
             add_texel(f, x, y);
     for (int b = 0; b < BINS; b++)
         store_slot(g, b);

@@ -6,8 +6,9 @@
  * SSG_RSM_GL_ITERATIONS loop iterations, their state in scratch images between them:
  * llvmpipe silently ends a loop after 65535 iterations. The faces and the offset tile are
  * the CPU's floats from prepare(), in storage buffers, and so is the slot grid's shape.
- * The gather's shader reads the parameters by the table (#pragma ssg_params); the cells
- * pass gets `cell` (host_only) with the grid it makes. Known cost: the list walk is one
+ * Ports, parameters and prepare()'s constants are bound by the descriptor's tables, each
+ * in the shaders its row's .gl_in names (rsm.h); what is bound here by hand is the
+ * scratch images between the passes and the dispatches' loop values. Known cost: the list walk is one
  * thread's work (about 0.5 s on llvmpipe for a point light's cube at 512 with cell 4;
  * a two-level prefix sum, row by row, would make it parallel). */
 #include "gl/gl.h"
@@ -17,14 +18,9 @@ static void cells_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_cons
                        const struct ssg_io *io, struct ssg_image *cells, struct ssg_gl_pass *p)
 {
     ssg_gl_pass_begin(p, ctx, "rsm_cells.glsl", NULL);
-    ssg_gl_input(p, "map_depth", io->in[SSG_RSM_IN_MAP_DEPTH]);
-    ssg_gl_input(p, "map_normal", io->in[SSG_RSM_IN_MAP_NORMAL]);
-    ssg_gl_input(p, "map_flux", io->in[SSG_RSM_IN_MAP_FLUX]);
+    ssg_gl_ports(p, io); /* the maps */
     ssg_gl_output(p, "cells", cells);
     ssg_gl_buffer(p, 0, c->face, sizeof(float) * 16 * (size_t)c->faces);
-    ssg_gl_int(p, "res", c->res);
-    ssg_gl_int(p, "cell", c->p.cell);
-    ssg_gl_int(p, "ncells", c->cells);
     ssg_gl_dispatch(p, c->cells, c->grid_h);
 }
 
@@ -38,7 +34,6 @@ static void list_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_const
     ssg_gl_input(p, "cells", cells);
     ssg_gl_output(p, "list", list);
     ssg_gl_output(p, "state", state);
-    ssg_gl_int(p, "rows", rows);
     for (int row0 = 0; row0 < c->grid_h; row0 += rows) {
         ssg_gl_int(p, "row0", row0);
         ssg_gl_dispatch(p, 1, 1);
@@ -54,7 +49,6 @@ static void picks_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_cons
     ssg_gl_input(p, "count", count);
     ssg_gl_output(p, "pick", pick);
     ssg_gl_buffer(p, 1, c->offset, sizeof c->offset);
-    ssg_gl_float(p, "inv_samples", c->inv_samples);
     ssg_gl_dispatch(p, c->p.samples, SSG_RSM_TILE * SSG_RSM_TILE);
 }
 
@@ -64,17 +58,11 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
                         struct ssg_image *acc, struct ssg_gl_pass *p)
 {
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
-    ssg_gl_pass_begin(p, ctx, "rsm.glsl", NULL); /* binds samples, min_distance */
-    ssg_gl_input(p, "position", pos);
-    ssg_gl_input(p, "normal", io->in[SSG_RSM_IN_NORMAL]);
-    ssg_gl_input(p, "albedo", io->in[SSG_RSM_IN_ALBEDO]);
+    ssg_gl_pass_begin(p, ctx, "rsm.glsl", NULL);
+    ssg_gl_ports(p, io); /* position, normal, albedo, out */
     ssg_gl_input(p, "list", list);
     ssg_gl_input(p, "count", count);
     ssg_gl_input(p, "pick", pick);
-    ssg_gl_output(p, "dst", io->out[SSG_RSM_OUT_OUT]);
-    ssg_gl_floats(p, "rot", 9, c->rot);
-    ssg_gl_vec3(p, "eye", c->eye);
-    ssg_gl_float(p, "inv_samples", c->inv_samples);
     ssg_gl_output(p, "acc", acc);
     /* An exact sum walks the VPLs in dispatches of SSG_RSM_GL_ITERATIONS (rsm.h), the
        running sums kept in acc between them; the count is on the GPU, so every dispatch

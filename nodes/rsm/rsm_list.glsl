@@ -8,7 +8,8 @@
 uniform sampler2DArray cells;
 layout(r32f) uniform writeonly image2DArray list;
 layout(r32f) uniform image2DArray state; // (count, cdf)
-uniform int row0, rows;
+#pragma ssg_consts
+uniform int row0;  // this dispatch's first row; rows (a constant): how many it takes
 
 void main()
 {

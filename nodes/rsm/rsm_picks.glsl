@@ -4,7 +4,8 @@
 uniform sampler2DArray list, count;
 layout(std430, binding = 1) readonly buffer Offsets { float offset[]; };
 layout(r32f) uniform writeonly image2DArray pick;
-uniform float inv_samples;
+#pragma ssg_consts
+// inv_samples (a constant): 1 / samples
 
 float cdf(int i, int w) { return texelFetch(list, ivec3(i % w, i / w, 11), 0).r; }
 

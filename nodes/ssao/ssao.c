@@ -26,8 +26,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_ssao_consts *c = consts;
     c->p = *(const struct ssg_ssao_params *)params;
     enum ssg_err e =
-        ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->proj);
-    c->u.cap = c->p.max_screen_radius / c->proj.f;
+        ssg_sampling_projection(ctx, &ctx->in_shape[SSG_SSAO_IN_POSITION], &c->u.proj);
+    c->u.cap = c->p.max_screen_radius / c->u.proj.f;
     c->u.capped = c->p.max_screen_radius > 0.0f;
     c->u.inv_samples = 1.0f / (float)ctx->in_shape[SSG_SSAO_IN_KERNEL].width;
     return e;

@@ -12,7 +12,7 @@ layout(r32f) uniform writeonly image2DArray dst_out;
 
 #pragma ssg_params
 #pragma ssg_consts
-uniform vec3 proj;         // (f, cx, cy) of this resolution
+// proj (a constant): (f, cx, cy) of this resolution
 
 
 // The weighted occlusion of one placed sample: scene depth d at its pixel occludes when

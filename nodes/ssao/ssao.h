@@ -64,14 +64,14 @@ SSG_PARAMS_STRUCT(ssg_ssao_params, SSG_SSAO_PARAMS);
 #define SSG_SSAO_UNIFORMS(U)                                                               \
     U(FLOAT, cap, "max_screen_radius / f: r <= cap depth(P) when capped")                  \
     U(BOOL, capped, "max_screen_radius > 0")                                               \
-    U(FLOAT, inv_samples, "1 / kernel width")
+    U(FLOAT, inv_samples, "1 / kernel width")                                              \
+    U(PROJECTION, proj,                                                                    \
+      "the frame's camera as seen by the G-buffer's resolution (ssg_projection_scaled: a " \
+      "subsampled G-buffer sees the same camera)")
 SSG_UNIFORMS_STRUCT(ssg_ssao_uniforms, SSG_SSAO_UNIFORMS);
 
 struct ssg_ssao_consts {
     struct ssg_ssao_params p; /* the parameters as given */
-    struct ssg_projection proj; /* the frame's camera as seen by the G-buffer's
-                                   resolution (ssg_projection_scaled: a subsampled
-                                   G-buffer sees the same camera) */
     struct ssg_ssao_uniforms u; /* prepare()'s constants both backends read by name */
 };
 

@@ -406,9 +406,9 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.rot = rot ? rot->data : NULL;
     j.n = rot ? rot->width : 1;
     j.cnt = io->in[SSG_SSAO_IN_COUNT] ? io->in[SSG_SSAO_IN_COUNT]->data : NULL;
-    j.f = c->proj.f;
-    j.cx = c->proj.cx;
-    j.cy = c->proj.cy;
+    j.f = c->u.proj.f;
+    j.cx = c->u.proj.cx;
+    j.cy = c->u.proj.cy;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     return SSG_OK;
 }

@@ -30,6 +30,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 }
 
 SSG_PARAMS_TABLE(params, ssg_bounce_params, SSG_SSDO_GEOM_PARAMS);
+SSG_UNIFORMS_AT_TABLE(uniforms, ssg_bounce_consts, SSG_SSDO_GEOM_UNIFORMS);
 SSG_PORT_TABLE(inputs, SSG_BOUNCE_IN);
 _Static_assert(SSG_COUNT(inputs) == SSG_BOUNCE_INPUTS, "one entry a port enumerator");
 SSG_PORT_TABLE(outputs, SSG_BOUNCE_OUT);
@@ -52,6 +53,7 @@ const struct ssg_node_desc ssg_node_bounce = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_bounce_params),
     .consts_size = sizeof(struct ssg_bounce_consts),
+    .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

@@ -115,6 +115,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 
 static const char *const ssg_ssdo_mode_choices[] = {"modulation", "radiance", NULL};
 SSG_PARAMS_TABLE(params, ssg_ssdo_params, SSG_SSDO_PARAMS);
+SSG_UNIFORMS_AT_TABLE(uniforms, ssg_ssdo_consts, SSG_SSDO_UNIFORMS);
 SSG_PORT_TABLE(inputs, SSG_SSDO_IN);
 SSG_PORT_TABLE(outputs, SSG_SSDO_OUT);
 
@@ -142,6 +143,7 @@ const struct ssg_node_desc ssg_node_ssdo = {
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssdo_params),
     .consts_size = sizeof(struct ssg_ssdo_consts),
+    .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
     .reads = SSG_READS_INPUTS | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .check = check,
     .prepare = prepare,

@@ -13,10 +13,10 @@ layout(r32f) uniform writeonly image2DArray dst_out; // bounce: its only output
 
 // The parameters (p_<field>, from the node's table: bounce's are ssdo's sampling rows) and
 // what prepare() derived.
+// cap, capped, proj: the node's constants (#pragma ssg_consts; bounce's are the first
+// three of ssdo's, ssdo_sampling.h), and ssdo's out_channels, env, env_rgb, light_count.
 #pragma ssg_params
-uniform float cap;          // max_screen_radius / f: r <= cap depth(P) when capped
-uniform bool capped;        // max_screen_radius > 0
-uniform vec3 proj;          // (f, cx, cy) of this resolution
+#pragma ssg_consts
 
 #ifdef SSDO_BOUNCE_NODE
 #define DO_BOUNCE true      // gather the bounce: the node's purpose
@@ -31,13 +31,13 @@ layout(std430, binding = 1) readonly buffer EnvCube { float cube_rgb[]; };
 const int MAX_LIGHTS = 8;   // SSG_SSDO_MAX_LIGHTS
 const int ENV_CUBE = 1;     // enum ssg_ssdo_env
 const int CUBE_SIZE = 16;   // SSG_ENV_CUBE_SIZE
-uniform int out_channels;   // of output out: 1 (modulation of luminances) or 3
-uniform int env;            // enum ssg_ssdo_env
-uniform vec3 env_rgb;       // constant environment radiance
-uniform int light_count;
-uniform int light_dir[MAX_LIGHTS];        // 1 = directional
-uniform float light_v[3 * MAX_LIGHTS];    // point: position; directional: unit direction
-uniform float light_rgb[3 * MAX_LIGHTS];  // colour * intensity
+// The lights, prepare()'s struct ssg_ssdo_light as it is (std430 lays it out as C does).
+struct ssdo_light {
+    int directional;  // 0 = point light at v, 1 = directional light from unit v
+    float v[3];       // point: view-space position; directional: unit direction to it
+    float rgb[3];     // colour * intensity
+};
+layout(std430, binding = 2) readonly buffer Lights { ssdo_light lights[]; };
 #endif
 
 // Per-pixel constants (ssg_ssdo_setup).
@@ -67,7 +67,7 @@ pixel_frame setup_frame(vec3 P, vec3 N, vec2 rot, float dp, int n)
     precise vec3 T = vec3(co * t0 + si * b0, co * t1 + si * b1, co * t2 + si * b2);
     precise vec3 B = vec3(co * b0 - si * t0, co * b1 - si * t1, co * b2 - si * t2);
     precise float rcap = cap * dp;
-    float r = capped && rcap < p_radius ? rcap : p_radius;
+    float r = capped != 0 && rcap < p_radius ? rcap : p_radius;
     precise float qz = -P.z;
     precise float rtz = r * T.z, rbz = r * B.z, rnz = r * N.z;
     pixel_frame k;
@@ -148,23 +148,24 @@ bool load_pixel(ivec2 p, out vec3 P, out vec3 N, out float dp)
     return ssg_surface_normal(dp, N);
 }
 
+// Each node's part of main() (at the end): what a background pixel gets, the samples a
+// pixel takes and its gather over them.
 #ifdef SSDO_BOUNCE_NODE
 
-void main()
+void store_background(ivec2 p)
 {
-    ivec2 p = ssg_pixel();
-    if (ssg_outside(p))
-        return;
-    vec3 P, N;
-    float dp;
-    if (!load_pixel(p, P, N, dp)) {
-        SSG_STORE3(dst_out, p, vec3(0.0));
-        return;
-    }
-    int samples = textureSize(kernel, 0).x;
-    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, samples);
+    SSG_STORE3(dst_out, p, vec3(0.0));
+}
+
+int pixel_samples(ivec2 p)
+{
+    return textureSize(kernel, 0).x;
+}
+
+void gather(ivec2 p, pixel_frame k, int n)
+{
     bounce_sum acc = bounce_sum(0.0, vec3(0.0));
-    for (int s = 0; s < samples; s++)
+    for (int s = 0; s < n; s++)
         sample_visibility(k, ssg_kernel_sample(s), acc);
     SSG_STORE3(dst_out, p, finish_bounce(p, acc));
 }
@@ -189,15 +190,15 @@ void setup_lights(pixel_frame k, out vec3 lt[MAX_LIGHTS], out float e[MAX_LIGHTS
         e[l] = 0.0;
         if (l >= light_count)
             continue;
-        float point = light_dir[l] != 0 ? 0.0 : 1.0;
-        precise float lx = light_v[3 * l] - point * k.P.x;
-        precise float ly = light_v[3 * l + 1] - point * k.P.y;
-        precise float lz = light_v[3 * l + 2] - point * k.P.z;
+        float point = lights[l].directional != 0 ? 0.0 : 1.0;
+        precise float lx = lights[l].v[0] - point * k.P.x;
+        precise float ly = lights[l].v[1] - point * k.P.y;
+        precise float lz = lights[l].v[2] - point * k.P.z;
         precise float d2 = lx * lx + ly * ly + lz * lz;
         precise float inv = 1.0 / sqrt(d2 > 1e-30 ? d2 : 1e-30);
         precise vec3 L = vec3(lx * inv, ly * inv, lz * inv);
         precise float ndl = k.N.x * L.x + k.N.y * L.y + k.N.z * L.z;
-        precise float fall = light_dir[l] != 0 ? 1.0 : inv * inv;
+        precise float fall = lights[l].directional != 0 ? 1.0 : inv * inv;
         precise float el = (ndl > 0.0 ? ndl : 0.0) * fall;
         e[l] = el;
         precise float tl = k.T.x * L.x + k.T.y * L.y + k.T.z * L.z;
@@ -287,8 +288,8 @@ void light_totals(light_sums acc, float e[MAX_LIGHTS], float dw, out vec3 num, o
             break;
         precise float q = acc.wv[l] / acc.ws[l];
         float vis = acc.ws[l] > 0.0 ? q : 1.0;
-        precise vec3 el = vec3(light_rgb[3 * l] * e[l], light_rgb[3 * l + 1] * e[l],
-                               light_rgb[3 * l + 2] * e[l]);
+        precise vec3 el = vec3(lights[l].rgb[0] * e[l], lights[l].rgb[1] * e[l],
+                               lights[l].rgb[2] * e[l]);
         precise vec3 ev = vec3(el.x * vis, el.y * vis, el.z * vis);
         num += ev;
         den += el;
@@ -334,20 +335,13 @@ void store_background(ivec2 p)
     SSG_STORE3(dst_bounce, p, vec3(0.0));
 }
 
-void main()
+int pixel_samples(ivec2 p)
 {
-    ivec2 p = ssg_pixel();
-    if (ssg_outside(p))
-        return;
-    vec3 P, N;
-    float dp;
-    if (!load_pixel(p, P, N, dp)) {
-        store_background(p);
-        return;
-    }
-    int samples = textureSize(kernel, 0).x;
-    int n = ssg_pixel_count(count, count_bound, p, samples);
-    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, n);
+    return ssg_pixel_count(count, count_bound, p, textureSize(kernel, 0).x);
+}
+
+void gather(ivec2 p, pixel_frame k, int n)
+{
     vec3 lt[MAX_LIGHTS];
     float e[MAX_LIGHTS];
     setup_lights(k, lt, e);
@@ -378,3 +372,18 @@ void main()
 }
 
 #endif
+
+void main()
+{
+    ivec2 p = ssg_pixel();
+    if (ssg_outside(p))
+        return;
+    vec3 P, N;
+    float dp;
+    if (!load_pixel(p, P, N, dp)) {
+        store_background(p);
+        return;
+    }
+    int n = pixel_samples(p);
+    gather(p, setup_frame(P, N, ssg_tile_rotation(p), dp, n), n);
+}

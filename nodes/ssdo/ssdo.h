@@ -50,12 +50,16 @@ enum ssg_ssdo_mode {
       .def = 1, .min = 0, .max = 8)
 SSG_PARAMS_STRUCT(ssg_ssdo_params, SSG_SSDO_PARAMS);
 
-/* A scene light in view space. */
+/* A scene light in view space. On GL the array is a storage buffer of these structs as
+   they are (ssdo.glsl's struct ssdo_light: std430 lays out an int and two float[3] as C
+   does, 28 bytes). */
 struct ssg_ssdo_light {
     int directional;  /* 0 = point light at `v`, 1 = directional light from unit `v` */
     float v[3];       /* point: view-space position; directional: unit direction to it */
     float rgb[3];     /* colour * intensity */
 };
+_Static_assert(sizeof(struct ssg_ssdo_light) == 7 * sizeof(float),
+               "ssdo.glsl reads the lights as std430 structs of 7 scalars");
 
 enum ssg_ssdo_env { SSG_SSDO_ENV_CONSTANT, SSG_SSDO_ENV_CUBE };
 
@@ -72,15 +76,19 @@ struct ssg_ssdo_consts {
     struct ssg_env_cube cube;   /* the probe in view space (env = cube) */
 };
 
+/* The constants ssdo.glsl reads (#pragma ssg_consts): the sampling's, then the lights'
+   and the environment's (the lights themselves and the cube: storage buffers). */
+#define SSG_SSDO_UNIFORMS(U)                                                               \
+    SSG_SSDO_GEOM_UNIFORMS(U)                                                              \
+    U(INT, out_channels, out_channels, "of output out: 1, or 3 (radiance, channels=3)")    \
+    U(INT, light_count, light_count, "lights in the storage buffer, 0..8")                 \
+    U(INT, env, env, "enum ssg_ssdo_env")                                                  \
+    U(VEC3, env_rgb, env_rgb, "constant environment radiance")
+
 enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io);
 /* The GL side (ssdo_gl.c, shader ssdo.glsl). */
 enum ssg_err ssg_ssdo_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);
-/* Binds what ssdo.glsl's sampling reads besides the ports and the parameters (prepare()'s
-   cap and the projection of position's size), for ssdo and bounce on GL. */
-struct ssg_gl_pass;
-void ssg_ssdo_gl_bind_geometry(struct ssg_gl_pass *p, const struct ssg_ssdo_geom *g,
-                               const struct ssg_projection *proj);
 
 #endif

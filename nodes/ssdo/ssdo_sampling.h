@@ -80,6 +80,14 @@ struct ssg_ssdo_geom {
     int capped;         /* max_screen_radius > 0 (px; 0 = no cap, the default) */
 };
 
+/* What ssdo.glsl's sampling reads of prepare()'s constants (#pragma ssg_consts), rows over
+   the fields both nodes' consts keep (g, proj; lang/params.h's SSG_UNIFORMS_AT_TABLE):
+   kind, GLSL name, field, doc. */
+#define SSG_SSDO_GEOM_UNIFORMS(U)                                                          \
+    U(FLOAT, cap, g.cap, "max_screen_radius / f: r <= cap depth(P) when capped")           \
+    U(BOOL, capped, g.capped, "max_screen_radius > 0")                                     \
+    U(PROJECTION, proj, proj, "(f, cx, cy) of this resolution")
+
 /* The geometry of a node's parameters `p` (a struct holding SSG_SSDO_GEOM_PARAMS' rows)
    at focal length f (px). */
 #define ssg_ssdo_geom_of(p, f)                                                             \
