@@ -2,7 +2,7 @@
  * order): horizon-based ambient occlusion. Method, geometry and sources: README.md here. */
 #include <math.h>
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "hbao.h"
 
 /* Farthest-point order of m positions on a circle of m (distance min(|a - b|,
@@ -68,8 +68,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_hbao_consts *c = consts;
     const struct ssg_hbao_params *q = &c->p;
     c->p = *(const struct ssg_hbao_params *)params;
-    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
-                                                &c->proj, &c->invf, c->e1);
+    enum ssg_err e = ssg_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
+                                       &c->proj, &c->invf, c->e1);
     c->u.rf = c->proj.f * q->radius;
     c->u.r2 = q->radius * q->radius;
     c->u.inv_radius = 1.0f / q->radius;
@@ -77,7 +77,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->u.scale = q->strength / (float)q->directions;
     c->u.cos_bias = (float)cos(q->bias);
     c->u.sin_bias = (float)sin(q->bias);
-    ssg_sampling_angles(q->directions, 2.0 * M_PI, c->dir_cos, c->dir_sin);
+    ssg_horizon_angles(q->directions, 2.0 * M_PI, 0.0, c->dir_cos, c->dir_sin);
     rank_directions(q->directions, c->dir_rank);
     return e;
 }
