@@ -68,6 +68,13 @@ enum {
 enum ssg_err ssg_horizon_frame(const struct ssg_node_ctx *ctx, const struct ssg_shape *gbuffer,
                                struct ssg_projection *proj, float *invf, float *e1);
 
+/* consts_size_of of a horizon node: its consts struct of `head` bytes ending in the column
+ * table e1 (2 floats a column of `position`). */
+static inline size_t ssg_horizon_consts_size(size_t head, const struct ssg_shape *position)
+{
+    return head + 2 * (size_t)position->width * sizeof(float);
+}
+
 /* The azimuth tables: co[k], si[k] = cos, sin of turn (k + shift) / n for k < n, in double
  * rounded to float (turn 2 pi: hbao's directions round the circle; pi: the slices over the
  * half circle; shift 0 for a fixed table, ssg_sampling_frame_turn for a frame's). */
@@ -282,6 +289,25 @@ ssg_horizon_fold(struct ssg_horizon_lanes *restrict k, int i, float dn, float is
     k->ay[i] = k->vyf[i] + k->myf[i] * al;
     k->bx[i] = k->dxf[i] + k->mxf[i] * be;
     k->by[i] = k->dyf[i] + k->myf[i] * be;
+}
+
+/* The slice of lane i (ssg_horizon_slice) with the normal projected on it: its length
+   pl = |proj N| and its angle n from V as cos n, sin n (the frame of the cosine-weighted
+   methods, gtao and ssilvb). */
+struct ssg_horizon_arc {
+    struct ssg_horizon_dir d;
+    float pl, cn, sn;
+};
+
+/* ssg_horizon_slice and ssg_horizon_fold with isl = mn / sl, for the slice's normal frame. */
+static inline __attribute__((always_inline)) struct ssg_horizon_arc
+ssg_horizon_slice_arc(struct ssg_horizon_lanes *restrict k, int i, float dc, float ds,
+                      float invf)
+{
+    struct ssg_horizon_dir d = ssg_horizon_slice(k, i, dc, ds, invf);
+    float pl = sqrtf(d.sl);
+    ssg_horizon_fold(k, i, d.dn, d.mn / d.sl);
+    return (struct ssg_horizon_arc){d, pl, k->vn[i] / pl, d.dn / pl};
 }
 
 /* One step of lane i on both sides (side 0: +D at (ou, ov), side 1: -D at (-ou, -ov)):

@@ -33,8 +33,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 /* The consts with e1 for the G-buffer's columns. */
 static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 {
-    return sizeof(struct ssg_gtao_consts) + 2 * (size_t)in[SSG_GTAO_IN_POSITION].width *
-                                                sizeof(float);
+    return ssg_horizon_consts_size(sizeof(struct ssg_gtao_consts), &in[SSG_GTAO_IN_POSITION]);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)

@@ -104,14 +104,12 @@ load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
 {
-    const float invf = j->r.invf;
     for (int i = 0; i < len; i++) {
-        struct ssg_horizon_dir d = ssg_horizon_slice(&k->h, i, dc, ds, invf);
-        float pl = sqrtf(d.sl), cn = k->h.vn[i] / pl, sn = d.dn / pl;
-        ssg_horizon_fold(&k->h, i, d.dn, d.mn / d.sl);
-        k->d[0][i] = d.dx, k->d[1][i] = d.dy, k->d[2][i] = d.dz;
+        struct ssg_horizon_arc n = ssg_horizon_slice_arc(&k->h, i, dc, ds, j->r.invf);
+        float cn = n.cn, sn = n.sn;
+        k->d[0][i] = n.d.dx, k->d[1][i] = n.d.dy, k->d[2][i] = n.d.dz;
         /* A slice within asin(0.1) of the tangent plane adds nothing (finish_slice). */
-        k->pl[i] = d.sl >= SSG_HORIZON_SLICE_MIN ? pl : 0.0f;
+        k->pl[i] = n.d.sl >= SSG_HORIZON_SLICE_MIN ? n.pl : 0.0f;
         k->cn[i] = cn, k->sn[i] = sn;
         k->hc[0][i] = k->low[0][i] = -sn;
         k->hc[1][i] = k->low[1][i] = sn;
@@ -138,6 +136,18 @@ place_step(const struct job *j, struct chunk *restrict k, int len, float y, floa
     }
 }
 
+/* A sample's weight at squared distance q from P: the linear fade of XeGTAO over the last
+   `falloff` of R (w = clamp(r fall_mul + fall_add, 0, 1)), or the hard cutoff r <= R. */
+static inline __attribute__((always_inline)) float
+weight(float q, const struct ssg_gtao_consts *c, float r2max, int linear)
+{
+    if (!linear)
+        return q <= r2max ? 1.0f : 0.0f;
+    float w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
+    w = w < 0.0f ? 0.0f : w;
+    return w < 1.0f ? w : 1.0f;
+}
+
 /* One sample of one side: its horizon cosine, faded towards the lowest by its weight,
    raises the horizon, or with thickness t > 0 a lower one within reach pulls it down.
    Samples off screen, on background (+inf) or off the slice (!ok) change nothing. */
@@ -147,14 +157,7 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
 {
     float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
     float q = hv * hv + dq * dq * e;
-    float w;
-    if (linear) {
-        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
-        w = w < 0.0f ? 0.0f : w;
-        w = w < 1.0f ? w : 1.0f;
-    } else {
-        w = q <= r2max ? 1.0f : 0.0f;
-    }
+    float w = weight(q, c, r2max, linear);
     float shc = pv / sqrtf(pv * pv + pd * pd);
     shc = low + w * (shc - low);
     int valid = ok & (dq < INFINITY);
@@ -179,14 +182,7 @@ horizon_back(float hc, float *bot, float *pdep, float *pcos, float low, float dq
 {
     float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
     float q = hv * hv + dq * dq * e;
-    float w;
-    if (linear) {
-        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
-        w = w < 0.0f ? 0.0f : w;
-        w = w < 1.0f ? w : 1.0f;
-    } else {
-        w = q <= r2max ? 1.0f : 0.0f;
-    }
+    float w = weight(q, c, r2max, linear);
     float qa = r * r + e, qb = r * ldp, qc = ldp * ldp - r2max;
     float disc = qb * qb - qa * qc;
     float exit = (sqrtf(disc > 0.0f ? disc : 0.0f) - qb) / qa;

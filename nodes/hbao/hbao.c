@@ -59,8 +59,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 /* The consts with e1 for the G-buffer's columns. */
 static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 {
-    return sizeof(struct ssg_hbao_consts) + 2 * (size_t)in[SSG_HBAO_IN_POSITION].width *
-                                                sizeof(float);
+    return ssg_horizon_consts_size(sizeof(struct ssg_hbao_consts), &in[SSG_HBAO_IN_POSITION]);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -70,7 +69,6 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *(const struct ssg_hbao_params *)params;
     enum ssg_err e = ssg_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
                                        &c->proj, &c->invf, c->e1);
-    c->u.rf = c->proj.f * q->radius;
     c->u.r2 = q->radius * q->radius;
     c->u.inv_radius = 1.0f / q->radius;
     c->u.inv_steps = 1.0f / (float)q->steps;

@@ -60,7 +60,7 @@ SSG_PARAMS_STRUCT(ssg_hbao_params, SSG_HBAO_PARAMS);
 /* The constants prepare() makes for both backends, one row each (lang/params.h); the
    shader reads them under these names (#pragma ssg_consts). */
 #define SSG_HBAO_UNIFORMS(U)                                                               \
-    U(FLOAT, rf, "f R") U(FLOAT, r2, "R^2") U(FLOAT, inv_radius, "1 / R")                  \
+    U(FLOAT, r2, "R^2") U(FLOAT, inv_radius, "1 / R")                                      \
     U(FLOAT, inv_steps, "1 / steps") U(FLOAT, scale, "strength / directions")              \
     U(FLOAT, cos_bias, "cos(bias)") U(FLOAT, sin_bias, "sin(bias)")
 SSG_UNIFORMS_STRUCT(ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);

@@ -72,9 +72,7 @@ void ssg_ssilvb_frame_of(const struct ssg_ssilvb_consts *c, int frame,
 /* The consts with e1 for the G-buffer's columns. */
 static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 {
-    (void)params;
-    return sizeof(struct ssg_ssilvb_consts) + 2 * (size_t)in[SSG_SSILVB_IN_POSITION].width *
-                                                  sizeof(float);
+    return ssg_horizon_consts_size(sizeof(struct ssg_ssilvb_consts), &in[SSG_SSILVB_IN_POSITION]);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)

@@ -130,11 +130,9 @@ load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
 {
-    const float invf = j->r.invf;
     for (int i = 0; i < len; i++) {
-        struct ssg_horizon_dir d = ssg_horizon_slice(&k->h, i, dc, ds, invf);
-        float pl = sqrtf(d.sl), cn = k->h.vn[i] / pl, sn = d.dn / pl;
-        ssg_horizon_fold(&k->h, i, d.dn, d.mn / d.sl);
+        struct ssg_horizon_arc a = ssg_horizon_slice_arc(&k->h, i, dc, ds, j->r.invf);
+        float cn = a.cn, sn = a.sn;
         float n = HALF_PI - ssg_acos(sn);
         float area = cn + n * sn;
         k->cn[i] = cn, k->sn[i] = sn;
@@ -143,7 +141,7 @@ setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, fl
         k->g1[i] = 0.5f * (cn + (n - HALF_PI) * sn);
         k->ia[i] = 1.0f / area;
         /* A slice within asin(0.1) of the tangent plane adds nothing (gtao/README.md). */
-        float w = d.sl >= SSG_HORIZON_SLICE_MIN ? pl * area : 0.0f;
+        float w = a.d.sl >= SSG_HORIZON_SLICE_MIN ? a.pl * area : 0.0f;
         k->w[i] = w;
         k->w32[i] = w * (1.0f / 32.0f);
         k->mask[i] = 0u;
