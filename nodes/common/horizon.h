@@ -176,7 +176,8 @@ struct ssg_horizon_lanes {
    and keeps the surface ones, packed into the first lanes with their columns xs and xf:
    background (depth 0 or no normal) costs nothing more, which matters where the scene
    leaves much of the frame empty. Packing moves a lane only to a lower one, so it runs in
-   place. Returns the number of lanes; the node then sets their co, si and u. */
+   place. Returns the number of lanes; the node then sets their co, si and u
+   (ssg_horizon_pack). */
 static inline __attribute__((always_inline)) int
 ssg_horizon_load(const struct ssg_horizon_run *r, struct ssg_horizon_lanes *restrict k, int y,
                  int x0, int len)
@@ -207,6 +208,35 @@ ssg_horizon_load(const struct ssg_horizon_run *r, struct ssg_horizon_lanes *rest
         m++;
     }
     return m;
+}
+
+/* Per-column values of the chunk (v[x] for its len columns) kept for its m lanes: v[i] =
+   v[xs[i]], in place (xs[i] >= i, and rises); nothing to move when every column is a
+   lane. A node fills its per-column turn and jitter this way, in straight loops over the
+   columns. */
+static inline __attribute__((always_inline)) void
+ssg_horizon_pack(const struct ssg_horizon_lanes *restrict k, int m, int len, float *v)
+{
+    for (int i = 0; m < len && i < m; i++)
+        v[i] = v[k->xs[i]];
+}
+
+/* The m lanes' values v written to the chunk's len columns of out, `background` where a
+   column is no lane: a straight copy when every column is a lane, so the common case
+   stays a vector loop (a scatter does not vectorise). */
+static inline __attribute__((always_inline)) void
+ssg_horizon_unpack(const struct ssg_horizon_lanes *restrict k, int m, int len,
+                   const float *restrict v, float *restrict out, float background)
+{
+    if (m == len) {
+        for (int i = 0; i < len; i++)
+            out[i] = v[i];
+        return;
+    }
+    for (int i = 0; i < len; i++)
+        out[i] = background;
+    for (int i = 0; i < m; i++)
+        out[k->xs[i]] = v[i];
 }
 
 /* What depends on the pixel only, for lanes [0, m) of row y: V, e2 = V x e1, the tangent
@@ -345,14 +375,14 @@ ssg_horizon_place(struct ssg_horizon_bounds bo, const struct ssg_horizon_lanes *
     struct ssg_horizon_step s;
     float t = sf + k->u[i];
     float ou = nearbyintf(k->du[i] * t), ov = nearbyintf(k->dv[i] * t);
-    float pa = ou * k->ax[i] + ov * k->ay[i], pr = ou * k->vxf[i] + ov * k->vyf[i];
-    float bd = ou * k->dxf[i] + ov * k->dyf[i];
+    float pa = ou * k->ax[i] + ov * k->ay[i];
+    float b = ou * k->bx[i] + ov * k->by[i];
+    float c = ou * k->mxf[i] + ov * k->myf[i];
+    float pr = ou * k->vxf[i] + ov * k->vyf[i], bd = ou * k->dxf[i] + ov * k->dyf[i];
     float l = k->lp[i];
-    s.ou = ou, s.ov = ov;
-    s.b = ou * k->bx[i] + ov * k->by[i];
-    s.c = ou * k->mxf[i] + ov * k->myf[i];
-    s.ok = s.b > fabsf(s.c);
-    s.e = bd * bd + s.c * s.c;
+    s.ou = ou, s.ov = ov, s.b = b, s.c = c;
+    s.ok = b > fabsf(c);
+    s.e = bd * bd + c * c;
     s.a[0] = pa - l, s.a[1] = -(pa + l);
     s.r[0] = pr - l, s.r[1] = -(pr + l);
     s.idx[0] = ssg_horizon_padded_index(k->xf[i], y, ou, ov, bo.fw, bo.fh, bo.pw);

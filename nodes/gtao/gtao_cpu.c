@@ -45,7 +45,7 @@ struct job {
     struct ssg_horizon_run r;     /* the G-buffer and the march (horizon.h); first */
     const struct ssg_gtao_consts *c;
     struct ssg_gtao_frame fr;     /* this frame's slices and noise offset */
-    const float *rot;             /* the tile, cos plane then sin plane (n x n) */
+    const float *rot;             /* the tile, cos plane then sin plane (n x n); NULL = none */
     int n;                        /* tile side */
     float *out, *bent;            /* outputs; bent: three planes */
 };
@@ -82,19 +82,17 @@ _Static_assert(sizeof(struct chunk) <= SSG_HORIZON_CHUNK_BYTES, "gtao's chunk");
 static inline __attribute__((always_inline)) int
 load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
-    const int m = ssg_horizon_load(&j->r, &k->h, y, x0, len), n = j->n;
-    const float *rc = j->rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
+    const int m = ssg_horizon_load(&j->r, &k->h, y, x0, len);
     const float shift = j->fr.shift, yf = (float)y;
-    for (int i = 0; i < m; i++) {
-        int xm = (x0 + k->h.xs[i]) % n;
-        k->h.co[i] = rc[xm];
-        k->h.si[i] = rs[xm];
-    }
-    for (int i = 0; i < m; i++) {
-        k->h.u[i] = 1.0f - ssg_ign(k->h.xf[i] + shift, yf + shift);
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->h.co, k->h.si);
+    for (int i = 0; i < len; i++) {
+        k->h.u[i] = 1.0f - ssg_ign((float)(x0 + i) + shift, yf + shift);
         k->vis[i] = k->open[i] = 0.0f;
         k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
     }
+    ssg_horizon_pack(&k->h, m, len, k->h.co);
+    ssg_horizon_pack(&k->h, m, len, k->h.si);
+    ssg_horizon_pack(&k->h, m, len, k->h.u);
     return m;
 }
 
@@ -345,15 +343,15 @@ static inline __attribute__((always_inline)) void finish_slice(struct chunk *res
 }
 
 /* out = clamp(vis / open, 0, 1)^power and the normalised bent normal (no slice, all
-   grazing: the normal itself) of the m lanes; background 1 and 0. */
+   grazing: the normal itself) of the m lanes, computed in the slice's arrays (free by
+   now); background 1 and 0. */
 static inline __attribute__((always_inline)) void
 finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len, int m)
 {
     const size_t plane = (size_t)j->r.w * (size_t)j->r.h;
     const float power = j->c->p.power;
-    float *restrict out = j->out + o, *restrict b0 = j->bent + o;
-    float *restrict b1 = b0 + plane, *restrict b2 = b1 + plane;
-    float *restrict v = k->pl; /* the last slice's, free by now */
+    float *restrict v = k->pl, *restrict n0 = k->d[0], *restrict n1 = k->d[1];
+    float *restrict n2 = k->d[2];
     for (int i = 0; i < m; i++) {
         float a = k->open[i] > 0.0f ? k->vis[i] / k->open[i] : 1.0f;
         a = a > 0.0f ? a : 0.0f;
@@ -361,20 +359,19 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len, i
     }
     for (int i = 0; power != 1.0f && i < m; i++)
         v[i] = powf(v[i], power);
-    for (int i = 0; i < len; i++) {
-        out[i] = 1.0f;
-        b0[i] = b1[i] = b2[i] = 0.0f;
-    }
     for (int i = 0; i < m; i++) {
         float bx = k->bsum[0][i], by = k->bsum[1][i], bz = k->bsum[2][i];
         float bl = sqrtf(bx * bx + by * by + bz * bz);
         float ib = bl > 0.0f ? 1.0f / bl : 0.0f;
-        int some = bl > 0.0f, x = k->h.xs[i];
-        out[x] = v[i];
-        b0[x] = some ? bx * ib : k->h.nx[i];
-        b1[x] = some ? by * ib : k->h.ny[i];
-        b2[x] = some ? bz * ib : k->h.nz[i];
+        int some = bl > 0.0f;
+        n0[i] = some ? bx * ib : k->h.nx[i];
+        n1[i] = some ? by * ib : k->h.ny[i];
+        n2[i] = some ? bz * ib : k->h.nz[i];
     }
+    ssg_horizon_unpack(&k->h, m, len, v, j->out + o, 1.0f);
+    ssg_horizon_unpack(&k->h, m, len, n0, j->bent + o, 0.0f);
+    ssg_horizon_unpack(&k->h, m, len, n1, j->bent + plane + o, 0.0f);
+    ssg_horizon_unpack(&k->h, m, len, n2, j->bent + 2 * plane + o, 0.0f);
 }
 
 /* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES). */
@@ -416,14 +413,13 @@ static void gtao_chunk_row(const struct ssg_horizon_run *r, void *chunk, int y, 
 enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io)
 {
-    static const float no_rotation[2] = {1.0f, 0.0f}; /* a 1 x 1 tile: cos 1, sin 0 */
     const struct ssg_gtao_consts *c = consts;
     const struct ssg_image *rot = io->in[SSG_GTAO_IN_ROTATION];
     const struct ssg_image *back = io->in[SSG_GTAO_IN_BACK];
     struct job j = {.r = {.proj = c->proj, .invf = c->invf, .e1 = c->e1, .radius = c->p.radius,
                           .cap = c->p.max_screen_radius, .steps = c->p.steps,
                           .back = back ? back->data : NULL, .row = gtao_chunk_row},
-                    .c = c, .rot = rot ? rot->data : no_rotation, .n = rot ? rot->width : 1,
+                    .c = c, .rot = rot ? rot->data : NULL, .n = rot ? rot->width : 1,
                     .out = io->out[SSG_GTAO_OUT_OUT]->data,
                     .bent = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data};
     ssg_gtao_frame_of(c, ctx->frame_index, &j.fr);

@@ -75,13 +75,15 @@ static inline __attribute__((always_inline)) int load_chunk(const struct job *j,
     size_t po = (size_t)(y % j->n) * (size_t)j->r.w + (size_t)x0;
     const float *restrict rc = j->rot_c + po, *restrict rs = j->rot_s + po;
     const float *restrict ju = j->jitter + po;
-    for (int i = 0; i < m; i++) {
-        int x = k->h.xs[i];
-        k->h.co[i] = rc[x];
-        k->h.si[i] = rs[x];
-        k->h.u[i] = ju[x];
+    for (int i = 0; i < len; i++) {
+        k->h.co[i] = rc[i];
+        k->h.si[i] = rs[i];
+        k->h.u[i] = ju[i];
         k->occ[i] = 0.0f;
     }
+    ssg_horizon_pack(&k->h, m, len, k->h.co);
+    ssg_horizon_pack(&k->h, m, len, k->h.si);
+    ssg_horizon_pack(&k->h, m, len, k->h.u);
     return m;
 }
 
@@ -123,8 +125,11 @@ setup_direction(const struct job *j, struct chunk *restrict k, int len, float dc
    since H'.D = dq b and H.M = dq c share the factor dq > 0 the test is b > |c|, and a
    NaN in a rejects the sample. That happens within a pixel or two of P, mostly on
    surfaces seen at a grazing angle, and for an occluder so nearly straight above P that
-   its forward offset is below the rounding's. -D's b equals D's (both odd in the offset
-   and in the direction): one b serves both. */
+   its forward offset is below the rounding's. The NaN is added rather than selected: a
+   select lets the compiler load a's inputs under the condition (masked loads, slower);
+   adding 0 keeps every other a but turns -0 into +0, which dq a + L dp (L dp > 0) does
+   not tell apart. -D's b equals D's (both odd in the offset and in the direction): one b
+   serves both. */
 static inline __attribute__((always_inline)) void
 place_step(const struct job *j, struct chunk *restrict k, int len, int pair, float y,
            float jf)
@@ -134,12 +139,13 @@ place_step(const struct job *j, struct chunk *restrict k, int len, int pair, flo
     float *restrict a0 = k->a[0], *restrict a1 = k->a[1], *restrict kb = k->b;
     for (int i = 0; i < len; i++) {
         struct ssg_horizon_step s = ssg_horizon_place(bo, &k->h, i, y, jf);
+        float reject = s.ok ? 0.0f : __builtin_nanf("");
         kb[i] = s.b;
         i0[i] = s.idx[0];
-        a0[i] = s.ok ? s.a[0] : __builtin_nanf("");
+        a0[i] = s.a[0] + reject;
         if (pair) {
             i1[i] = s.idx[1];
-            a1[i] = s.ok ? s.a[1] : __builtin_nanf("");
+            a1[i] = s.a[1] + reject;
         }
     }
 }
@@ -260,20 +266,21 @@ march(const struct job *j, struct chunk *restrict k, int len, float y, int d, in
         finish_direction(k, len, 1, counted, r1);
 }
 
+/* out = 1 - occ scale, clamped, of the m lanes (in a[0], free by now); background 1. */
 static inline __attribute__((always_inline)) void
-finish_chunk(const struct job *j, const struct chunk *restrict k, int len, int m, float *out,
+finish_chunk(const struct job *j, struct chunk *restrict k, int len, int m, float *out,
              int counted)
 {
     const float strength = j->c->p.strength;
     const float scale = j->c->u.scale;
-    for (int i = 0; i < len; i++)
-        out[i] = 1.0f;
+    float *restrict v = k->a[0];
     for (int i = 0; i < m; i++) {
         float sc = counted ? strength / (float)k->cnt[i] : scale;
-        float v = 1.0f - k->occ[i] * sc;
-        v = v > 0.0f ? v : 0.0f;
-        out[k->h.xs[i]] = v < 1.0f ? v : 1.0f;
+        float a = 1.0f - k->occ[i] * sc;
+        a = a > 0.0f ? a : 0.0f;
+        v[i] = a < 1.0f ? a : 1.0f;
     }
+    ssg_horizon_unpack(&k->h, m, len, v, out, 1.0f);
 }
 
 /* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES).

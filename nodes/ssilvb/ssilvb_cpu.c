@@ -110,8 +110,8 @@ load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len
     const struct ssg_ssilvb_consts *c = j->c;
     const int m = ssg_horizon_load(&j->r, &k->h, y, x0, len);
     const float *no = j->fr.noise_off, yf = (float)y;
-    for (int i = 0; i < m; i++) {
-        float xf = k->h.xf[i];
+    for (int i = 0; i < len; i++) {
+        float xf = (float)(x0 + i);
         float turn = ssg_ign(xf + no[0], yf + no[1]) * (float)SSG_SSILVB_TURNS;
         int32_t t = (int32_t)turn;
         t = t < SSG_SSILVB_TURNS - 1 ? t : SSG_SSILVB_TURNS - 1;
@@ -121,6 +121,9 @@ load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len
         k->vis[i] = k->wsum[i] = 0.0f;
         k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
     }
+    ssg_horizon_pack(&k->h, m, len, k->h.co);
+    ssg_horizon_pack(&k->h, m, len, k->h.si);
+    ssg_horizon_pack(&k->h, m, len, k->h.u);
     return m;
 }
 
@@ -256,14 +259,14 @@ static inline __attribute__((always_inline)) void finish_slice(struct chunk *res
     }
 }
 
-/* ao = (vis / wsum)^power, bounce = strength albedo bsum / wsum of the m lanes;
-   background 1 and 0. */
+/* ao = (vis / wsum)^power, bounce = strength albedo bsum / wsum of the m lanes, computed
+   in the slice's arrays (free by now); background 1 and 0. */
 static inline __attribute__((always_inline)) void
 finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len, int m)
 {
     const size_t plane = (size_t)j->r.w * (size_t)j->r.h;
     const float power = j->c->p.power, strength = j->c->p.strength;
-    float *restrict ao = j->ao + o, *restrict v = k->cn; /* the last slice's, free */
+    float *restrict v = k->cn, *restrict sc = k->sn;
     for (int i = 0; i < m; i++) {
         float ws = k->wsum[i];
         float a = ws > 0.0f ? k->vis[i] / ws : 1.0f;
@@ -272,20 +275,17 @@ finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len, i
     }
     for (int i = 0; power != 1.0f && i < m; i++)
         v[i] = powf(v[i], power);
-    for (int i = 0; i < len; i++)
-        ao[i] = 1.0f;
-    for (int i = 0; i < m; i++)
-        ao[k->h.xs[i]] = v[i];
+    ssg_horizon_unpack(&k->h, m, len, v, j->ao + o, 1.0f);
     for (int ch = 0; ch < 3; ch++) {
         float *restrict b = j->bounce + (size_t)ch * plane + o;
         const float *restrict alb = j->albedo[ch] + o;
-        for (int i = 0; i < len; i++)
-            b[i] = 0.0f;
         for (int i = 0; i < m; i++) {
             float ws = k->wsum[i];
-            float s = ws > 0.0f ? strength * k->bsum[ch][i] / ws : 0.0f;
-            b[k->h.xs[i]] = alb[k->h.xs[i]] * s;
+            sc[i] = ws > 0.0f ? strength * k->bsum[ch][i] / ws : 0.0f;
         }
+        ssg_horizon_unpack(&k->h, m, len, sc, b, 0.0f);
+        for (int i = 0; i < len; i++)
+            b[i] = k->h.fg[i] ? alb[i] * b[i] : 0.0f;
     }
 }
 
