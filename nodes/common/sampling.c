@@ -68,40 +68,6 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
     return SSG_OK;
 }
 
-void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1)
-{
-    for (int x = 0; x < w; x++) {
-        float au = ((float)x + 0.5f - sp->cx) / sp->f;
-        float h = 1.0f / sqrtf(1.0f + au * au);
-        e1[x] = h;
-        e1[w + x] = au * h;
-    }
-}
-
-enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
-                                        const struct ssg_shape *gbuffer,
-                                        struct ssg_projection *proj, float *invf, float *e1)
-{
-    enum ssg_err e = ssg_sampling_projection(ctx, gbuffer, proj);
-    *invf = 1.0f / proj->f;
-    ssg_sampling_column_basis(proj, gbuffer->width, e1);
-    return e;
-}
-
-void ssg_sampling_angles(int n, double turn, float *co, float *si)
-{
-    ssg_sampling_angles_at(n, turn, 0.0, co, si);
-}
-
-void ssg_sampling_angles_at(int n, double turn, double shift, float *co, float *si)
-{
-    for (int k = 0; k < n; k++) {
-        double a = turn * (k + shift) / n; /* k + 0.0 is k: frame 0 keeps its bits */
-        co[k] = (float)cos(a);
-        si[k] = (float)sin(a);
-    }
-}
-
 double ssg_sampling_frame_turn(int frame)
 {
     /* 1 / phi; the product is exact enough for any frame count a run reaches (2^31
@@ -114,20 +80,4 @@ float ssg_sampling_frame_shift(int frame)
 {
     int f = frame % 64;
     return 5.588238f * (float)(f < 0 ? f + 64 : f);
-}
-
-void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,
-                            float *padded)
-{
-    const size_t pw = (size_t)w + 2;
-    for (int y = y0; y < y1; y++) {
-        const float *restrict src = depth + (size_t)y * (size_t)w;
-        float *restrict dst = padded + (size_t)(y + 1) * pw;
-        dst[0] = INFINITY;
-        dst[w + 1] = INFINITY;
-        for (int x = 0; x < w; x++) {
-            float d = sign * src[x];
-            dst[x + 1] = (d > 0.0f) & (d <= 3.0e38f) ? d : INFINITY;
-        }
-    }
 }

@@ -21,7 +21,8 @@ float ssg_scene_depth(ivec2 q)
 }
 
 // The depth of an occluder at pixel q (inside the image), or -1 where the CPU kernels of
-// the horizon nodes (hbao, gtao) find none: background, negative, NaN or infinite depth.
+// the horizon nodes (horizon.h's padded plane) find none: background, negative, NaN or
+// infinite depth.
 float ssg_occluder_depth(ivec2 q)
 {
     float d = ssg_scene_depth(q);
@@ -112,13 +113,4 @@ float ssg_acos(float x)
     precise float r = sqrt(1.0 - ax) * p;
     precise float m = 3.14159265358979323846 - r;
     return x < 0.0 ? m : r;
-}
-
-// sampling.h's ssg_ign: interleaved gradient noise (Jimenez 2014) in [0, 1).
-float ssg_ign(float x, float y)
-{
-    precise float a = 0.06711056 * x + 0.00583715 * y;
-    precise float b = 52.9829189 * (a - floor(a));
-    precise float r = b - floor(b);
-    return r;
 }

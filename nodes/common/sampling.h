@@ -50,39 +50,6 @@ enum ssg_err ssg_sampling_projection(const struct ssg_node_ctx *ctx,
                                      const struct ssg_shape *gbuffer,
                                      struct ssg_projection *out);
 
-/* The per-column basis vector of the horizon nodes (hbao, gtao), made in prepare() for both
- * backends: e1 = normalize(y x V) = (1, 0, a_u) / sqrt(1 + a_u^2), a_u = (x + 0.5 - cx) / f,
- * depends on the column x only. Writes e1x for the w columns to e1[0..w), e1z to
- * e1[w..2w). */
-void ssg_sampling_column_basis(const struct ssg_projection *sp, int w, float *e1);
-
-/* The input port rows the horizon nodes (hbao, gtao) share, one copy of their docs (node.h's
- * one-line rows), given the node's four enumerators in this order and what the directions
- * are called (the rotation's "none = fixed <what>"). */
-#define SSG_SAMPLING_HORIZON_IN(X, position, normal, rotation, depth, what)               \
-    X(position, "position", SSG_T_VECTOR,                                                  \
-      "view-space position (its -z is the depth unless depth is given)")                   \
-    X(normal, "normal", SSG_T_VECTOR, "unit view-space normal")                            \
-    X(rotation, "rotation", SSG_T_PATTERN,                                                 \
-      "per-pixel rotation tile (halton.rotation); none = fixed " what, .optional = 1)      \
-    X(depth, "depth", SSG_T_SCALAR,                                                        \
-      "linear depth the points are reconstructed from; none = -position.z", .optional = 1)
-
-/* prepare() of the horizon nodes (hbao, gtao): the camera as `gbuffer`'s size sees it
- * (ssg_sampling_projection, whose error it returns), *invf = 1 / f for both backends, and
- * the column basis e1 for its width (ssg_sampling_column_basis). */
-enum ssg_err ssg_sampling_horizon_frame(const struct ssg_node_ctx *ctx,
-                                        const struct ssg_shape *gbuffer,
-                                        struct ssg_projection *proj, float *invf, float *e1);
-
-/* The azimuth tables of the horizon nodes: co[k], si[k] = cos, sin of turn k / n for
- * k < n, in double rounded to float (turn 2 pi: hbao's directions round the circle; pi:
- * gtao's slices over the half circle). */
-void ssg_sampling_angles(int n, double turn, float *co, float *si);
-/* The same tables turned by a fraction `shift` of one step: angle turn (k + shift) / n
- * (shift 0 gives ssg_sampling_angles' bits). */
-void ssg_sampling_angles_at(int n, double turn, double shift, float *co, float *si);
-
 /* Per-frame samples (docs/time.md): what turns a sampling node's directions in frame
  * `frame` of a sequence, so that averaging frames adds samples rather than repeating
  * them. ssg_sampling_frame_turn is frac(frame / phi), the golden-ratio (Kronecker)
@@ -94,29 +61,6 @@ void ssg_sampling_angles_at(int n, double turn, double shift, float *co, float *
  * in frame 0, where every node gives its single-frame bytes. */
 double ssg_sampling_frame_turn(int frame);
 float ssg_sampling_frame_shift(int frame);
-
-/* The depth plane of the horizon nodes' CPU kernels (hbao, gtao), padded by one pixel:
- * rows [y0, y1) of the w-wide `depth` (times sign) into rows y0 + 1 .. of `padded`
- * (w + 2 wide, (h + 2) rows; the caller fills its first and last rows with +inf), with
- * background (0), garbage (negative, NaN, inf) and the border column set to +inf. A sample
- * clamped into the border, or on background, then reads +inf: no occluder, no test. */
-void ssg_sampling_pad_depth(const float *depth, float sign, int w, int y0, int y1,
-                            float *padded);
-
-/* The index in a plane padded by ssg_sampling_pad_depth (row length pw, based one row and
- * one column in) of the sample at (x + ou, y + ov). A sample off screen is clamped into
- * the border, whose infinite depth makes it no occluder: the clamp replaces a test
- * (ou, ov are finite: rounded products of finite values). */
-static inline __attribute__((always_inline)) int32_t
-ssg_sampling_padded_index(float x, float y, float ou, float ov, float fw, float fh, int pw)
-{
-    float su = x + ou, sv = y + ov;
-    su = su < -1.0f ? -1.0f : su;
-    su = su < fw ? su : fw;
-    sv = sv < -1.0f ? -1.0f : sv;
-    sv = sv < fh ? sv : fh;
-    return (int)sv * pw + (int)su;
-}
 
 /* The scalar pass of a chunk holding a normal that is not unit: every normal of the chunk
  * divided by its length (a unit one keeps its bits to within the rounding of 1 / 1). */
@@ -268,14 +212,6 @@ static inline __attribute__((always_inline)) float ssg_acos(float x)
     p = p * ax + 1.5707963050f;
     float r = sqrtf(1.0f - ax) * p;
     return x < 0.0f ? 3.14159265358979323846f - r : r;
-}
-
-/* Interleaved gradient noise (Jimenez 2014) at (x, y): in [0, 1) (sampling.glsl's ssg_ign). */
-static inline __attribute__((always_inline)) float ssg_ign(float x, float y)
-{
-    float a = 0.06711056f * x + 0.00583715f * y;
-    float b = 52.9829189f * (a - floorf(a));
-    return b - floorf(b);
 }
 
 #endif

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "gtao.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
@@ -33,8 +33,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 /* The consts with e1 for the G-buffer's columns. */
 static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 {
-    return sizeof(struct ssg_gtao_consts) + 2 * (size_t)in[SSG_GTAO_IN_POSITION].width *
-                                                sizeof(float);
+    return ssg_horizon_consts_size(sizeof(struct ssg_gtao_consts), &in[SSG_GTAO_IN_POSITION]);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -42,8 +41,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_gtao_consts *c = consts;
     const struct ssg_gtao_params *q = &c->p;
     c->p = *(const struct ssg_gtao_params *)params;
-    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_GTAO_IN_POSITION],
-                                                &c->proj, &c->invf, c->e1);
+    enum ssg_err e = ssg_horizon_frame(ctx, &ctx->in_shape[SSG_GTAO_IN_POSITION],
+                                       &c->proj, &c->invf, c->e1);
     /* XeGTAO's fade: w = 1 up to (1 - falloff) R, 0 at R: w = r mul + add. */
     float range = q->falloff * q->radius;
     c->u.fall_mul = q->falloff > 0 ? -1.0f / range : 0.0f;
@@ -55,7 +54,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
 void ssg_gtao_frame_of(const struct ssg_gtao_consts *c, int frame, struct ssg_gtao_frame *f)
 {
     /* Frame 0: turn 0 and shift 0, the single-frame slices pi k / slices and noise. */
-    ssg_sampling_angles_at(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
+    ssg_horizon_angles(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
                            f->slice_sin);
     f->shift = ssg_sampling_frame_shift(frame);
 }

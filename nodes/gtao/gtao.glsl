@@ -1,15 +1,11 @@
 // gtao.glsl - the `gtao` node on GL (method and geometry in README.md): one invocation per
-// pixel, gtao_cpu.c's operations in its order for one lane of its chunk (`precise`: no
+// pixel, its integrator on the march of nodes/common/horizon.glsl, gtao_cpu.c's
+// operations in its order for one lane of its chunk (`precise`: no
 // multiply-add fused where the CPU rounds twice): slices in order, per step the +D sample
 // then the -D one, the same folded sample formulas and polynomial acos. Only sqrt,
 // division and pow (power != 1) may round differently from the CPU's.
-layout(std430, binding = 0) readonly buffer Columns {
-    float e1[]; // per column x: e1x at x, e1z at width + x (prepare()'s, gtao.c)
-};
-
 #define SSG_SAMPLING_NO_KERNEL 1 // gtao marches along slices, it has no kernel
 #include "sampling.glsl" // position, depth, rotation and their helpers
-uniform sampler2DArray normal;
 uniform sampler2DArray back; // the depth of the next surface behind, when back_bound
 uniform bool back_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
@@ -18,68 +14,38 @@ layout(r32f) uniform writeonly image2DArray dst_bent_normal;
 // The parameters (#pragma ssg_params: p_<field>) and what prepare() derived from them.
 #pragma ssg_params
 #pragma ssg_consts
-uniform float invf;        // 1 / f
-uniform vec3 proj;         // (f, cx, cy) of this resolution
 uniform float slice_cos[32], slice_sin[32]; // this frame's (ssg_gtao_frame_of)
 uniform float noise_shift; // this frame's jitter noise offset, pixels
+#include "horizon.glsl" // the march: e1, invf, proj, the pixel, the slice, the steps
 
-const float SLICE_MIN = 0.01;
-const float HALF_PI = 1.57079632679489661923;
+const float HALF_PI = SSG_HORIZON_HALF_PI;
 const float OPEN_EPS = 1e-5; // gtao_cpu.c: a horizon this close to its lowest is none
 
-// gtao_cpu.c struct chunk, one lane.
-float g_dp, g_au, g_av, g_e1x, g_e1z, g_vn, g_step, g_u, g_co, g_si, g_l, g_ldp, g_vxf, g_vyf;
-float g_e1n, g_e2n;
-vec3 g_v, g_n, g_e2;
-
-// 1 - interleaved gradient noise (gtao_cpu.c step_jitter).
-float step_jitter(ivec2 p)
+// gtao_cpu.c load_chunk and ssg_horizon_setup: the tile's rotation, the step jitter
+// 1 - interleaved gradient noise, and the march's step.
+void setup_pixel(ivec2 p)
 {
     precise float x = float(p.x) + noise_shift, y = float(p.y) + noise_shift;
     precise float u = 1.0 - ssg_ign(x, y);
-    return u;
-}
-
-// gtao_cpu.c setup_chunk.
-void setup_pixel(ivec2 p)
-{
-    precise float au = (float(p.x) + 0.5 - proj.y) * invf;
-    precise float av = -(float(p.y) + 0.5 - proj.z) * invf;
-    precise float l = sqrt(au * au + av * av + 1.0), il = 1.0 / l;
-    precise vec3 v = vec3(-au * il, -av * il, il);
-    g_au = au, g_av = av, g_v = v, g_l = l;
-    precise float ldp = l * g_dp, vxf = v.x * invf, vyf = -v.y * invf;
-    g_ldp = ldp, g_vxf = vxf, g_vyf = vyf;
-    g_e1x = e1[p.x];
-    g_e1z = e1[ssg_grid.x + p.x];
-    precise vec3 e2 = vec3(v.y * g_e1z, v.z * g_e1x - v.x * g_e1z, -v.y * g_e1x);
-    g_e2 = e2;
-    precise float e1n = g_e1x * g_n.x + g_e1z * g_n.z;
-    precise float e2n = e2.x * g_n.x + e2.y * g_n.y + e2.z * g_n.z;
-    g_e1n = e1n, g_e2n = e2n;
-    precise float vn = v.x * g_n.x + v.y * g_n.y + v.z * g_n.z;
-    g_vn = vn > 1e-6 ? vn : 1e-6;
-    precise float near = g_dp - p_radius, half_d = 0.5 * g_dp;
-    precise float rp = proj.x * p_radius / (near > half_d ? near : half_d);
-    rp = p_max_screen_radius > 0.0 && rp > p_max_screen_radius ? p_max_screen_radius : rp;
-    precise float st = rp / float(p_steps);
-    g_step = st;
-    g_u = step_jitter(p);
+    g_u = u;
     g_co = 1.0, g_si = 0.0;
     if (rotation_bound) {
         vec2 r = ssg_tile_rotation(p);
         g_co = r.x, g_si = r.y;
     }
+    precise float rp = ssg_horizon_pixel(p, p_radius, p_max_screen_radius, false);
+    precise float st = rp / float(p_steps);
+    g_step = st;
 }
 
-// The depth at pixel p + o, or +inf off screen or on background (the CPU's padded plane).
-float depth_at(ivec2 p, float ou, float ov)
+// gtao_cpu.c weight: the linear fade, or the hard cutoff r <= R.
+float weight(float q)
 {
-    precise float qx = float(p.x) + ou, qy = float(p.y) + ov;
-    if (!(qx >= 0.0 && qx < float(ssg_grid.x) && qy >= 0.0 && qy < float(ssg_grid.y)))
-        return 1.0 / 0.0;
-    float d = ssg_occluder_depth(ivec2(int(qx), int(qy)));
-    return d < 0.0 ? 1.0 / 0.0 : d;
+    if (!(p_falloff > 0.0))
+        return q <= p_radius * p_radius ? 1.0 : 0.0;
+    precise float w = sqrt(q) * fall_mul + fall_add;
+    w = w < 0.0 ? 0.0 : w;
+    return w < 1.0 ? w : 1.0;
 }
 
 // gtao_cpu.c horizon_one (general path): hc is the side's horizon cosine.
@@ -87,14 +53,7 @@ void horizon_one(float dq, float a, float r, float b, float e, float low, inout 
 {
     precise float hv = dq * r + g_ldp, pv = dq * a + g_ldp, pd = dq * b;
     precise float q = hv * hv + dq * dq * e;
-    precise float w;
-    if (p_falloff > 0.0) {
-        w = sqrt(q) * fall_mul + fall_add;
-        w = w < 0.0 ? 0.0 : w;
-        w = w < 1.0 ? w : 1.0;
-    } else {
-        w = q <= p_radius * p_radius ? 1.0 : 0.0;
-    }
+    float w = weight(q);
     precise float shc = pv / sqrt(pv * pv + pd * pd);
     precise float sh = low + w * (shc - low);
     if (sh > hc)
@@ -105,7 +64,7 @@ void horizon_one(float dq, float a, float r, float b, float e, float low, inout 
     }
 }
 
-// The back input at pixel p + o (inside: depth_at found the front there), as the CPU's
+// The back input at pixel p + o (inside: ssg_horizon_depth found the front there), as the CPU's
 // padded back plane has it: +inf where not a plausible depth.
 float back_at(ivec2 p, float ou, float ov)
 {
@@ -122,14 +81,7 @@ void horizon_back(float dq, float db, float a, float r, float b, float e, float 
 {
     precise float hv = dq * r + g_ldp, pv = dq * a + g_ldp, pd = dq * b;
     precise float q = hv * hv + dq * dq * e;
-    precise float w;
-    if (p_falloff > 0.0) {
-        w = sqrt(q) * fall_mul + fall_add;
-        w = w < 0.0 ? 0.0 : w;
-        w = w < 1.0 ? w : 1.0;
-    } else {
-        w = q <= p_radius * p_radius ? 1.0 : 0.0;
-    }
+    float w = weight(q);
     precise float qa = r * r + e, qb = r * g_ldp, qc = g_ldp * g_ldp - p_radius * p_radius;
     precise float disc = qb * qb - qa * qc;
     precise float ex = (sqrt(disc > 0.0 ? disc : 0.0) - qb) / qa;
@@ -201,35 +153,21 @@ vec3 side_arc_back(float hc, float bot, float low, float sg, float n, float cn, 
 // gtao_cpu.c setup_slice, the steps (place_step, horizon_step) and finish_slice.
 void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
 {
-    float dc = slice_cos[k], ds = slice_sin[k];
-    precise float cs = dc * g_co - ds * g_si, s = ds * g_co + dc * g_si;
-    precise vec3 d = vec3(cs * g_e1x + s * g_e2.x, s * g_e2.y, cs * g_e1z + s * g_e2.z);
-    precise float mx = cs * g_e2.x - s * g_e1x, my = cs * g_e2.y;
-    precise float dn = cs * g_e1n + s * g_e2n, mn = cs * g_e2n - s * g_e1n;
-    precise float sl = g_vn * g_vn + dn * dn;
-    if (!(sl >= SLICE_MIN))
+    ssg_horizon_slice_arc(slice_cos[k], slice_sin[k]);
+    if (!(s_sl >= SSG_HORIZON_SLICE_MIN))
         return;
-    precise float pl = sqrt(sl), cn = g_vn / pl, snn = dn / pl;
-    precise float isl = mn / sl, al = isl * g_vn, be = isl * dn;
-    precise float du = (d.x + g_au * d.z) * g_step, dv = -(d.y + g_av * d.z) * g_step;
-    precise float dxf = d.x * invf, dyf = -d.y * invf, mxf = mx * invf, myf = -my * invf;
-    precise float ax = g_vxf + mxf * al, ay = g_vyf + myf * al;
-    precise float bx = dxf + mxf * be, by = dyf + myf * be;
+    float pl = s_pl, cn = s_cn, snn = s_sn;
     bool fast = p_falloff <= 0.0 && p_thickness <= 0.0 && !back_bound;
     float low2 = -snn, low1 = snn, hc2 = low2, hc1 = low1, hq2 = 1.0, hq1 = 1.0;
     float bot2 = 2.0, bot1 = 2.0; // with back: the sides' lowest bottoms (2 = none)
     float pdep2 = g_dp, pdep1 = g_dp, pcos2 = low2, pcos1 = low1; // the last valid samples
     for (int st = 0; st < p_steps; st++) {
-        precise float t = float(st) + g_u;
-        precise float ou = roundEven(du * t), ov = roundEven(dv * t);
-        precise float pr = ou * g_vxf + ov * g_vyf, c = ou * mxf + ov * myf;
-        precise float bd = ou * dxf + ov * dyf, pa = ou * ax + ov * ay;
-        precise float bb = ou * bx + ov * by;
-        if (!(bb > abs(c)))
+        ssg_horizon_place(st);
+        if (!t_ok)
             continue; // more off the slice than along it, or P's own pixel
-        precise float e = bd * bd + c * c;
-        precise float a2 = pa - g_l, a1 = -(pa + g_l), r2 = pr - g_l, r1 = -(pr + g_l);
-        float d2 = depth_at(p, ou, ov), d1 = depth_at(p, -ou, -ov);
+        float ou = t_ou, ov = t_ov, bb = t_b, e = t_e;
+        float a2 = t_a.x, a1 = t_a.y, r2 = t_r.x, r1 = t_r.y;
+        float d2 = ssg_horizon_depth(p, ou, ov), d1 = ssg_horizon_depth(p, -ou, -ov);
         if (back_bound) {
             if (d2 < 1.0 / 0.0)
                 horizon_back(d2, back_at(p, ou, ov), a2, r2, bb, e, low2, hc2, bot2, pdep2,
@@ -265,8 +203,9 @@ void slice(ivec2 p, int k, inout float vis, inout float open, inout vec3 b)
     vis = nv, open = no;
     precise float t0 = (a1.y + a2.y + 16.0 * snn) / 12.0;
     precise float t1 = (a1.z + a2.z + 8.0 * cn) / 12.0;
-    precise vec3 nb = vec3(b.x + pl * (t0 * d.x + t1 * g_v.x), b.y + pl * (t0 * d.y + t1 * g_v.y),
-                           b.z + pl * (t0 * d.z + t1 * g_v.z));
+    precise vec3 nb = vec3(b.x + pl * (t0 * s_d.x + t1 * g_v.x),
+                           b.y + pl * (t0 * s_d.y + t1 * g_v.y),
+                           b.z + pl * (t0 * s_d.z + t1 * g_v.z));
     b = nb;
 }
 
@@ -275,14 +214,11 @@ void main()
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
-    g_dp = ssg_scene_depth(p);
-    vec3 N = ssg_load3(normal, p);
-    if (!ssg_surface_normal(g_dp, N)) { // background or garbage: 1, no bent normal
+    if (!ssg_horizon_surface(p)) { // background or garbage: 1, no bent normal
         SSG_STORE1(dst_out, p, 1.0);
         SSG_STORE3(dst_bent_normal, p, vec3(0.0));
         return;
     }
-    g_n = N;
     setup_pixel(p);
     float vis = 0.0, open = 0.0;
     vec3 b = vec3(0.0);
@@ -294,5 +230,5 @@ void main()
     SSG_STORE1(dst_out, p, p_power == 1.0 ? v : pow(v, p_power));
     precise float bl = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
     precise float ib = bl > 0.0 ? 1.0 / bl : 0.0;
-    SSG_STORE3(dst_bent_normal, p, bl > 0.0 ? vec3(b.x * ib, b.y * ib, b.z * ib) : N);
+    SSG_STORE3(dst_bent_normal, p, bl > 0.0 ? vec3(b.x * ib, b.y * ib, b.z * ib) : g_n);
 }

@@ -5,7 +5,7 @@
 #ifndef SSG_GTAO_H
 #define SSG_GTAO_H
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "graph/node.h"
 
 #define SSG_GTAO_MAX_SLICES 32
@@ -18,9 +18,9 @@
 #define SSG_GTAO_BACK_LINK 0.3f
 
 /* Ports, one row each (node.h): enumerator, name, types, doc, further fields; the
-   G-buffer's four as the horizon nodes share them (common/sampling.h). */
+   G-buffer's four as the horizon nodes share them (common/horizon.h). */
 #define SSG_GTAO_IN(X)                                                                     \
-    SSG_SAMPLING_HORIZON_IN(X, SSG_GTAO_IN_POSITION, SSG_GTAO_IN_NORMAL,                   \
+    SSG_HORIZON_IN(X, SSG_GTAO_IN_POSITION, SSG_GTAO_IN_NORMAL,                   \
                             SSG_GTAO_IN_ROTATION, SSG_GTAO_IN_DEPTH, "slices")             \
     X(SSG_GTAO_IN_BACK, "back", SSG_T_SCALAR,                                              \
       "depth of the next surface behind each pixel's (gbuffer.back, +inf = none): a "      \
@@ -77,7 +77,7 @@ struct ssg_gtao_consts {
     float invf;                 /* 1 / f */
     struct ssg_gtao_uniforms u; /* prepare()'s constants both backends read by name */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
-       [x] and e1z at [w + x] (ssg_sampling_column_basis); read by both backends. */
+       [x] and e1z at [w + x] (ssg_horizon_frame); read by both backends. */
     float e1[];
 };
 

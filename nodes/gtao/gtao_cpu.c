@@ -1,25 +1,20 @@
-/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in README.md).
+/* gtao_cpu.c - CPU kernel of the `gtao` node (method and geometry in README.md): its
+ * integrator on the horizon march of nodes/common/horizon.h, which loads and packs the
+ * chunk's surface pixels, sets up what depends on the pixel and on the slice, places the
+ * samples and drives the rows.
  *
- * Layout for speed, as in hbao_cpu.c: a row is cut into chunks of CHUNK pixels held in
- * structure-of-arrays scratch; per chunk, what depends on the pixel only (V, the basis,
- * the march length, the jitter) is set up once, then per slice what depends on its
- * direction (D, M, the screen step, the coefficients of the sample formulas), then per
- * step two straight loops over the chunk: one places the samples of both sides and
- * computes their pixel indices, one reads the depth there (the only gather) and updates
- * both horizons (with the back input also each side's bottom, horizon_back, from a second
- * padded plane at the same index). A last loop per slice turns them into its terms. Every
- * loop vectorises (SSE4, AVX2 or AVX-512 through run-time selected clones): selects, no
- * branches, and no libm call but sqrtf (-fno-math-errno) and floorf / nearbyintf.
+ * Layout for speed (horizon.h): per slice, per step two straight loops over the chunk:
+ * one places the samples of both sides and computes their pixel indices, one reads the
+ * depth there (the only gather) and updates both horizons (with the back input also each
+ * side's bottom, horizon_back, from a second padded plane at the same index). A last loop
+ * per slice turns them into its terms. Every loop vectorises (SSE4, AVX2 or AVX-512
+ * through run-time selected clones): selects, no branches, and no libm call but sqrtf
+ * (-fno-math-errno) and floorf / nearbyintf.
  *
- * Per sample, as in hbao_cpu.c, everything but the depth dq is folded into per-step
- * coefficients: with Q = dq (a_u', a_v', -1) the sample's point and P = dp (a_u, a_v, -1),
- * H = Q - P has, for the offset (ou, ov) (px; -D's sample is at (-ou, -ov)),
- *   H.V = dq (ou Vx - ov Vy) / f - L (dq - dp),  H.D = dq (ou Dx - ov Dy) / f,
- *   H.M = dq (ou Mx - ov My) / f          (L = |P| / dp, V.D = V.M = 0),
- * all affine in dq; so are the components of H' (the sample brought back onto the slice
- * along the tangent plane, README.md): H'.V = dq a + L dp, sg H'.D = dq b. |H|^2 =
- * (H.V)^2 + dq^2 ((H.D)^2 + (H.M)^2) / dq^2 (V, D, M orthonormal). The sample counts when
- * sg H'.D > |H.M|, i.e. b > |c| (dq > 0). The horizon cosine is H'.V / |H'|.
+ * Per sample everything but the depth dq is folded into per-step coefficients
+ * (ssg_horizon_place): H'.V = dq a + L dp, sg H'.D = dq b (the sample brought back onto
+ * the slice along the tangent plane, README.md), H.V = dq r + L dp and |H|^2 = (H.V)^2 +
+ * dq^2 e; the sample counts when b > |c|. The horizon cosine is H'.V / |H'|.
  * The slice's terms use no trigonometry but one acos per slice (its normal angle n =
  * pi/2 - acos(sin n)) and one per side with a horizon (ssg_acos, a polynomial that
  * gtao.glsl evaluates by the same operations): sin h = sg sqrt((1 - cos h)(1 + cos h)),
@@ -36,62 +31,33 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "gtao.h"
 
-enum { CHUNK = SSG_SAMPLING_CHUNK, ROWS_PER_BAND = 32 };
+enum { CHUNK = SSG_HORIZON_CHUNK };
 
-/* |proj N|^2 below this: the slice lies within asin(0.1) of the tangent plane (README.md). */
-#define SLICE_MIN 0.01f
-#define HALF_PI 1.57079632679489661923f
+#define HALF_PI SSG_HORIZON_HALF_PI
 /* A side's horizon cosine within this of its lowest counts as no horizon: samples of P's
    own plane land on the tangent only up to float rounding (README.md). */
 #define OPEN_EPS 1e-5f
 
 struct job {
+    struct ssg_horizon_run r;     /* the G-buffer and the march (horizon.h); first */
     const struct ssg_gtao_consts *c;
     struct ssg_gtao_frame fr;     /* this frame's slices and noise offset */
-    const float *pos[3], *nrm[3]; /* planes of the G-buffer */
-    const float *depth;           /* plane the depth is read from */
-    float depth_sign;             /* depth = depth_sign * plane: 1 for depth, -1 for z */
-    const float *rot;             /* the tile, cos plane then sin plane; NULL = none */
+    const float *rot;             /* the tile, cos plane then sin plane (n x n); NULL = none */
     int n;                        /* tile side */
-    float *padded;                /* the depth padded by +inf (ssg_sampling_pad_depth) */
-    const float *back;            /* the back input's plane; NULL = unconnected */
-    float *padded_back;           /* back padded likewise (README.md); NULL = unconnected */
-    int pw;                       /* w + 2 */
     float *out, *bent;            /* outputs; bent: three planes */
-    int w, h;
 };
 
-/* Per-lane values of one chunk, structure of arrays; side m = 0 is +D, m = 1 is -D. */
+/* gtao's lanes of one chunk on horizon.h's, structure of arrays; side m = 0 is +D, m = 1
+   is -D. */
 struct chunk {
-    /* per pixel; CHUNK floats are whole cache lines, so every array starts on one */
-    _Alignas(64) float dp[CHUNK];          /* depth of P */
-    float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
-    float px[CHUNK], py[CHUNK], pz[CHUNK]; /* P (loaded by ssg_sampling_load; unused) */
-    int32_t fg[CHUNK];                     /* 1 = surface, 0 = background */
-    float co[CHUNK], si[CHUNK];            /* rotation of the tile */
-    float xf[CHUNK];                       /* pixel column */
-    float u[CHUNK];                        /* step jitter in (0, 1] */
-    float lp[CHUNK], ldp[CHUNK];           /* L = |P| / dp, L dp */
-    float v[3][CHUNK];                     /* V */
-    float vxf[CHUNK], vyf[CHUNK];          /* Vx / f, -Vy / f */
-    float e1x[CHUNK], e1z[CHUNK];          /* e1 = (e1x, 0, e1z) */
-    float e2[3][CHUNK];                    /* e2 = V x e1 */
-    float e1n[CHUNK], e2n[CHUNK];          /* e1.N, e2.N */
-    float au[CHUNK], av[CHUNK];            /* a_u, a_v of P's pixel */
-    float vn[CHUNK];                       /* V.N, floored at 1e-6 */
-    float step[CHUNK];                     /* march length / steps, px */
+    struct ssg_horizon_lanes h;            /* the pixels and the slice (horizon.h) */
     float vis[CHUNK], open[CHUNK];         /* sums over slices of |proj N| a, open a */
     float bsum[3][CHUNK];                  /* sum over slices of the bent-normal terms */
     /* per slice */
     float d[3][CHUNK];                     /* D */
-    float du[CHUNK], dv[CHUNK];            /* screen step of D, px per step */
-    float dxf[CHUNK], dyf[CHUNK];          /* Dx / f, -Dy / f */
-    float mxf[CHUNK], myf[CHUNK];          /* Mx / f, -My / f */
-    float ax[CHUNK], ay[CHUNK];            /* a = ou ax + ov ay -/+ L */
-    float bx[CHUNK], by[CHUNK];            /* b = ou bx + ov by */
     float cn[CHUNK], sn[CHUNK], pl[CHUNK]; /* cos n, sin n, |proj N| */
     float hc[2][CHUNK], low[2][CHUNK];     /* horizon cosine so far, its lowest; the
                                               fast path: H'.V of the highest sample */
@@ -108,119 +74,76 @@ struct chunk {
     int32_t ok[CHUNK];                     /* b > |c|: the sample is along the slice */
     int32_t idx[2][CHUNK];                 /* index in the padded plane */
 };
+_Static_assert(sizeof(struct chunk) <= SSG_HORIZON_CHUNK_BYTES, "gtao's chunk");
 
-/* 1 - interleaved gradient noise (Jimenez 2014) at the pixel: in (0, 1]. */
-static inline __attribute__((always_inline)) float step_jitter(float x, float y)
+/* The chunk's surface pixels (ssg_horizon_load) with the tile's rotation and the step
+   jitter, 1 - interleaved gradient noise (Jimenez 2014) at the pixel, in (0, 1]; the sums
+   start at 0. Returns the number of lanes. */
+static inline __attribute__((always_inline)) int
+load_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
 {
-    return 1.0f - ssg_ign(x, y);
-}
-
-/* What depends on the pixel only: V, e2 = V x e1, V.N, the march length (README.md). */
-static inline __attribute__((always_inline)) void
-setup_chunk(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
-{
-    const struct ssg_gtao_consts *c = j->c;
-    const float invf = c->invf, radius = c->p.radius, f = c->proj.f;
-    const float cap = c->p.max_screen_radius, fs = (float)c->p.steps, yf = (float)y;
-    const float av = -(yf + 0.5f - c->proj.cy) * invf;
+    const int m = ssg_horizon_load(&j->r, &k->h, y, x0, len);
+    const float shift = j->fr.shift, yf = (float)y;
+    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->h.co, k->h.si);
     for (int i = 0; i < len; i++) {
-        float xf = (float)(x0 + i);
-        float au = (xf + 0.5f - c->proj.cx) * invf;
-        float l = sqrtf(au * au + av * av + 1.0f), il = 1.0f / l;
-        float vx = -au * il, vy = -av * il, vz = il;
-        float e1x = c->e1[x0 + i], e1z = c->e1[j->w + x0 + i];
-        float e2x = vy * e1z, e2y = vz * e1x - vx * e1z, e2z = -vy * e1x;
-        float nx = k->nx[i], ny = k->ny[i], nz = k->nz[i], dp = k->dp[i];
-        float vn = vx * nx + vy * ny + vz * nz;
-        k->xf[i] = xf;
-        k->au[i] = au;
-        k->av[i] = av;
-        k->lp[i] = l;
-        k->ldp[i] = l * dp;
-        k->v[0][i] = vx, k->v[1][i] = vy, k->v[2][i] = vz;
-        k->vxf[i] = vx * invf;
-        k->vyf[i] = -vy * invf;
-        k->e1x[i] = e1x, k->e1z[i] = e1z;
-        k->e2[0][i] = e2x, k->e2[1][i] = e2y, k->e2[2][i] = e2z;
-        k->e1n[i] = e1x * nx + e1z * nz;
-        k->e2n[i] = e2x * nx + e2y * ny + e2z * nz;
-        k->vn[i] = vn > 1e-6f ? vn : 1e-6f;
-        /* f R / den reaches every point of the slice within R (README.md). */
-        float near = dp - radius, half = 0.5f * dp;
-        float rp = f * radius / (near > half ? near : half);
-        rp = cap > 0.0f && rp > cap ? cap : rp;
-        k->step[i] = rp / fs;
-        k->u[i] = step_jitter(xf + j->fr.shift, yf + j->fr.shift);
+        k->h.u[i] = 1.0f - ssg_ign((float)(x0 + i) + shift, yf + shift);
         k->vis[i] = k->open[i] = 0.0f;
         k->bsum[0][i] = k->bsum[1][i] = k->bsum[2][i] = 0.0f;
     }
+    ssg_horizon_pack(&k->h, m, len, k->h.co);
+    ssg_horizon_pack(&k->h, m, len, k->h.si);
+    ssg_horizon_pack(&k->h, m, len, k->h.u);
+    return m;
 }
 
-/* Slice direction phi = pi kd / slices + psi: D, M = V x D (= c e2 - s e1), the normal
-   projected on the slice (cos n, sin n, |proj N|), the screen step and the coefficients
-   of the sample formulas, with the tangent-plane correction al, be of hbao_cpu.c's
-   place_step folded in; horizons start at their lowest, cos(n -/+ pi/2). */
+/* Slice direction phi = pi kd / slices + psi (ssg_horizon_slice): the normal projected on
+   the slice (cos n, sin n, |proj N|) and the tangent-plane correction (ssg_horizon_fold);
+   horizons start at their lowest, cos(n -/+ pi/2). */
 static inline __attribute__((always_inline)) void
 setup_slice(const struct job *j, struct chunk *restrict k, int len, float dc, float ds)
 {
-    const float invf = j->c->invf;
     for (int i = 0; i < len; i++) {
-        float cs = dc * k->co[i] - ds * k->si[i], s = ds * k->co[i] + dc * k->si[i];
-        float dx = cs * k->e1x[i] + s * k->e2[0][i], dy = s * k->e2[1][i];
-        float dz = cs * k->e1z[i] + s * k->e2[2][i];
-        float mx = cs * k->e2[0][i] - s * k->e1x[i], my = cs * k->e2[1][i];
-        float dn = cs * k->e1n[i] + s * k->e2n[i], mn = cs * k->e2n[i] - s * k->e1n[i];
-        float vn = k->vn[i], sl = vn * vn + dn * dn;
-        float pl = sqrtf(sl), cn = vn / pl, sn = dn / pl;
-        float isl = mn / sl, al = isl * vn, be = isl * dn;
-        k->d[0][i] = dx, k->d[1][i] = dy, k->d[2][i] = dz;
-        k->du[i] = (dx + k->au[i] * dz) * k->step[i];
-        k->dv[i] = -(dy + k->av[i] * dz) * k->step[i];
-        float dxf = dx * invf, dyf = -dy * invf, mxf = mx * invf, myf = -my * invf;
-        k->dxf[i] = dxf, k->dyf[i] = dyf, k->mxf[i] = mxf, k->myf[i] = myf;
-        k->ax[i] = k->vxf[i] + mxf * al;
-        k->ay[i] = k->vyf[i] + myf * al;
-        k->bx[i] = dxf + mxf * be;
-        k->by[i] = dyf + myf * be;
+        struct ssg_horizon_arc n = ssg_horizon_slice_arc(&k->h, i, dc, ds, j->r.invf);
+        float cn = n.cn, sn = n.sn;
+        k->d[0][i] = n.d.dx, k->d[1][i] = n.d.dy, k->d[2][i] = n.d.dz;
         /* A slice within asin(0.1) of the tangent plane adds nothing (finish_slice). */
-        k->pl[i] = sl >= SLICE_MIN ? pl : 0.0f;
+        k->pl[i] = n.d.sl >= SSG_HORIZON_SLICE_MIN ? n.pl : 0.0f;
         k->cn[i] = cn, k->sn[i] = sn;
         k->hc[0][i] = k->low[0][i] = -sn;
         k->hc[1][i] = k->low[1][i] = sn;
         k->hq[0][i] = k->hq[1][i] = 1.0f;
         k->bot[0][i] = k->bot[1][i] = 2.0f;
-        k->pdep[0][i] = k->pdep[1][i] = k->dp[i];
+        k->pdep[0][i] = k->pdep[1][i] = k->h.dp[i];
         k->pcos[0][i] = k->low[0][i], k->pcos[1][i] = k->low[1][i];
     }
 }
 
-/* Step s of both sides for the whole chunk: the sample lies at (s + u) step along the
-   screen direction, rounded to the nearest pixel (ties to even); -D's is the point
-   reflection (rint is odd), whose coefficients are D's with the signs the header gives. */
+/* Step s of both sides for the whole chunk (ssg_horizon_place). */
 static inline __attribute__((always_inline)) void
 place_step(const struct job *j, struct chunk *restrict k, int len, float y, float sf)
 {
-    const float fw = (float)j->w, fh = (float)j->h;
-    const int pw = j->pw;
+    const struct ssg_horizon_bounds bo = ssg_horizon_bounds(&j->r);
     for (int i = 0; i < len; i++) {
-        float t = sf + k->u[i];
-        float ou = nearbyintf(k->du[i] * t), ov = nearbyintf(k->dv[i] * t);
-        float pr = ou * k->vxf[i] + ov * k->vyf[i];
-        float c = ou * k->mxf[i] + ov * k->myf[i];
-        float bd = ou * k->dxf[i] + ov * k->dyf[i];
-        float pa = ou * k->ax[i] + ov * k->ay[i];
-        float b = ou * k->bx[i] + ov * k->by[i];
-        float l = k->lp[i];
-        k->ok[i] = b > fabsf(c);
-        k->b[i] = b;
-        k->e[i] = bd * bd + c * c;
-        k->a[0][i] = pa - l;
-        k->a[1][i] = -(pa + l);
-        k->r[0][i] = pr - l;
-        k->r[1][i] = -(pr + l);
-        k->idx[0][i] = ssg_sampling_padded_index(k->xf[i], y, ou, ov, fw, fh, pw);
-        k->idx[1][i] = ssg_sampling_padded_index(k->xf[i], y, -ou, -ov, fw, fh, pw);
+        struct ssg_horizon_step s = ssg_horizon_place(bo, &k->h, i, y, sf);
+        k->ok[i] = s.ok;
+        k->b[i] = s.b;
+        k->e[i] = s.e;
+        k->a[0][i] = s.a[0], k->a[1][i] = s.a[1];
+        k->r[0][i] = s.r[0], k->r[1][i] = s.r[1];
+        k->idx[0][i] = s.idx[0], k->idx[1][i] = s.idx[1];
     }
+}
+
+/* A sample's weight at squared distance q from P: the linear fade of XeGTAO over the last
+   `falloff` of R (w = clamp(r fall_mul + fall_add, 0, 1)), or the hard cutoff r <= R. */
+static inline __attribute__((always_inline)) float
+weight(float q, const struct ssg_gtao_consts *c, float r2max, int linear)
+{
+    if (!linear)
+        return q <= r2max ? 1.0f : 0.0f;
+    float w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
+    w = w < 0.0f ? 0.0f : w;
+    return w < 1.0f ? w : 1.0f;
 }
 
 /* One sample of one side: its horizon cosine, faded towards the lowest by its weight,
@@ -232,14 +155,7 @@ horizon_one(float hc, float low, float dq, float a, float r, float b, float e, f
 {
     float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
     float q = hv * hv + dq * dq * e;
-    float w;
-    if (linear) {
-        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
-        w = w < 0.0f ? 0.0f : w;
-        w = w < 1.0f ? w : 1.0f;
-    } else {
-        w = q <= r2max ? 1.0f : 0.0f;
-    }
+    float w = weight(q, c, r2max, linear);
     float shc = pv / sqrtf(pv * pv + pd * pd);
     shc = low + w * (shc - low);
     int valid = ok & (dq < INFINITY);
@@ -264,14 +180,7 @@ horizon_back(float hc, float *bot, float *pdep, float *pcos, float low, float dq
 {
     float hv = dq * r + ldp, pv = dq * a + ldp, pd = dq * b;
     float q = hv * hv + dq * dq * e;
-    float w;
-    if (linear) {
-        w = sqrtf(q) * c->u.fall_mul + c->u.fall_add;
-        w = w < 0.0f ? 0.0f : w;
-        w = w < 1.0f ? w : 1.0f;
-    } else {
-        w = q <= r2max ? 1.0f : 0.0f;
-    }
+    float w = weight(q, c, r2max, linear);
     float qa = r * r + e, qb = r * ldp, qc = ldp * ldp - r2max;
     float disc = qb * qb - qa * qc;
     float exit = (sqrtf(disc > 0.0f ? disc : 0.0f) - qb) / qa;
@@ -313,9 +222,8 @@ static inline __attribute__((always_inline)) void
 horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear, int fast,
              int back)
 {
-    /* Index (v, u) of the padded plane is pixel (v - 1, u - 1). */
-    const float *restrict plane = j->padded + j->pw + 1;
-    const float *restrict bplane = back ? j->padded_back + j->pw + 1 : plane;
+    const float *restrict plane = ssg_horizon_plane(&j->r, j->r.padded);
+    const float *restrict bplane = back ? ssg_horizon_plane(&j->r, j->r.padded_back) : plane;
     const float r2max = j->c->p.radius * j->c->p.radius;
     for (int i = 0; i < len; i++) {
         float d0 = plane[k->idx[0][i]], d1 = plane[k->idx[1][i]];
@@ -325,20 +233,20 @@ horizon_step(const struct job *j, struct chunk *restrict k, int len, int linear,
                 k->hc[m][i] = horizon_back(k->hc[m][i], &k->bot[m][i], &k->pdep[m][i],
                                            &k->pcos[m][i], k->low[m][i], m ? d1 : d0,
                                            m ? b1 : b0, k->a[m][i], k->r[m][i], k->b[i],
-                                           k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+                                           k->e[i], k->h.ldp[i], k->ok[i], j->c, r2max, linear);
             continue;
         }
         if (fast) {
             horizon_fast(&k->hc[0][i], &k->hq[0][i], d0, k->a[0][i], k->r[0][i], k->b[i],
-                         k->e[i], k->ldp[i], k->ok[i], r2max);
+                         k->e[i], k->h.ldp[i], k->ok[i], r2max);
             horizon_fast(&k->hc[1][i], &k->hq[1][i], d1, k->a[1][i], k->r[1][i], k->b[i],
-                         k->e[i], k->ldp[i], k->ok[i], r2max);
+                         k->e[i], k->h.ldp[i], k->ok[i], r2max);
             continue;
         }
         k->hc[0][i] = horizon_one(k->hc[0][i], k->low[0][i], d0, k->a[0][i], k->r[0][i],
-                                  k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+                                  k->b[i], k->e[i], k->h.ldp[i], k->ok[i], j->c, r2max, linear);
         k->hc[1][i] = horizon_one(k->hc[1][i], k->low[1][i], d1, k->a[1][i], k->r[1][i],
-                                  k->b[i], k->e[i], k->ldp[i], k->ok[i], j->c, r2max, linear);
+                                  k->b[i], k->e[i], k->h.ldp[i], k->ok[i], j->c, r2max, linear);
     }
 }
 
@@ -428,138 +336,94 @@ static inline __attribute__((always_inline)) void finish_slice(struct chunk *res
         float t0 = (a1.t0 + a2.t0 + 16.0f * sn) / 12.0f;
         float t1 = (a1.t1 + a2.t1 + 8.0f * cn) / 12.0f;
         for (int m = 0; m < 3; m++) {
-            float bt = pl * (t0 * k->d[m][i] + t1 * k->v[m][i]);
+            float bt = pl * (t0 * k->d[m][i] + t1 * k->h.v[m][i]);
             k->bsum[m][i] += live ? bt : 0.0f;
         }
     }
 }
 
 /* out = clamp(vis / open, 0, 1)^power and the normalised bent normal (no slice, all
-   grazing: the normal itself); background 1 and 0. */
+   grazing: the normal itself) of the m lanes, computed in the slice's arrays (free by
+   now); background 1 and 0. */
 static inline __attribute__((always_inline)) void
-finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len)
+finish_chunk(const struct job *j, struct chunk *restrict k, size_t o, int len, int m)
 {
-    const size_t plane = (size_t)j->w * (size_t)j->h;
+    const size_t plane = (size_t)j->r.w * (size_t)j->r.h;
     const float power = j->c->p.power;
-    float *restrict out = j->out + o, *restrict b0 = j->bent + o;
-    float *restrict b1 = b0 + plane, *restrict b2 = b1 + plane;
-    for (int i = 0; i < len; i++) {
-        float v = k->open[i] > 0.0f ? k->vis[i] / k->open[i] : 1.0f;
-        v = v > 0.0f ? v : 0.0f;
-        out[i] = v < 1.0f ? v : 1.0f;
+    float *restrict v = k->pl, *restrict n0 = k->d[0], *restrict n1 = k->d[1];
+    float *restrict n2 = k->d[2];
+    for (int i = 0; i < m; i++) {
+        float a = k->open[i] > 0.0f ? k->vis[i] / k->open[i] : 1.0f;
+        a = a > 0.0f ? a : 0.0f;
+        v[i] = a < 1.0f ? a : 1.0f;
     }
-    for (int i = 0; power != 1.0f && i < len; i++)
-        out[i] = powf(out[i], power);
-    for (int i = 0; i < len; i++) {
+    for (int i = 0; power != 1.0f && i < m; i++)
+        v[i] = powf(v[i], power);
+    for (int i = 0; i < m; i++) {
         float bx = k->bsum[0][i], by = k->bsum[1][i], bz = k->bsum[2][i];
         float bl = sqrtf(bx * bx + by * by + bz * bz);
         float ib = bl > 0.0f ? 1.0f / bl : 0.0f;
-        int fg = k->fg[i], some = bl > 0.0f;
-        out[i] = fg ? out[i] : 1.0f;
-        b0[i] = fg ? (some ? bx * ib : k->nx[i]) : 0.0f;
-        b1[i] = fg ? (some ? by * ib : k->ny[i]) : 0.0f;
-        b2[i] = fg ? (some ? bz * ib : k->nz[i]) : 0.0f;
+        int some = bl > 0.0f;
+        n0[i] = some ? bx * ib : k->h.nx[i];
+        n1[i] = some ? by * ib : k->h.ny[i];
+        n2[i] = some ? bz * ib : k->h.nz[i];
     }
+    ssg_horizon_unpack(&k->h, m, len, v, j->out + o, 1.0f);
+    ssg_horizon_unpack(&k->h, m, len, n0, j->bent + o, 0.0f);
+    ssg_horizon_unpack(&k->h, m, len, n1, j->bent + plane + o, 0.0f);
+    ssg_horizon_unpack(&k->h, m, len, n2, j->bent + 2 * plane + o, 0.0f);
 }
 
-/* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES).
-   Background lanes are
-   marched like the others with harmless values (ssg_sampling_load) and replaced at the
-   end. */
+/* One row of one chunk: the hot code, compiled per instruction set (SSG_VECTOR_CLONES). */
 static inline __attribute__((always_inline)) void
 chunk_body(const struct job *j, struct chunk *restrict k, int y, int x0, int len,
            int linear, int fast, int back)
 {
     const struct ssg_gtao_consts *c = j->c;
-    size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
-    ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
-                      k->nz, k->px, k->py, k->pz, k->dp);
-    ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
-    setup_chunk(j, k, y, x0, len);
+    const int m = load_chunk(j, k, y, x0, len);
+    ssg_horizon_setup(&j->r, &k->h, y, x0, m, 0);
     for (int s = 0; s < c->p.slices; s++) {
-        setup_slice(j, k, len, j->fr.slice_cos[s], j->fr.slice_sin[s]);
+        setup_slice(j, k, m, j->fr.slice_cos[s], j->fr.slice_sin[s]);
         for (int st = 0; st < c->p.steps; st++) {
-            place_step(j, k, len, (float)y, (float)st);
-            horizon_step(j, k, len, linear, fast, back);
+            place_step(j, k, m, (float)y, (float)st);
+            horizon_step(j, k, m, linear, fast, back);
         }
         if (fast)
-            fast_horizons(k, len);
-        finish_slice(k, len, back);
+            fast_horizons(k, m);
+        finish_slice(k, m, back);
     }
-    finish_chunk(j, k, o, len);
+    finish_chunk(j, k, (size_t)y * (size_t)j->r.w + (size_t)x0, len, m);
 }
 
 SSG_VECTOR_CLONES
-static void gtao_chunk_row(const struct job *j, struct chunk *k, int y, int x0, int len)
+static void gtao_chunk_row(const struct ssg_horizon_run *r, void *chunk, int y, int x0, int len)
 {
+    const struct job *j = (const struct job *)r; /* r is the job's first member */
     int linear = j->c->p.falloff > 0.0f;
-    if (j->padded_back)
-        chunk_body(j, k, y, x0, len, linear, 0, 1);
+    if (r->padded_back)
+        chunk_body(j, chunk, y, x0, len, linear, 0, 1);
     else if (linear)
-        chunk_body(j, k, y, x0, len, 1, 0, 0);
+        chunk_body(j, chunk, y, x0, len, 1, 0, 0);
     else if (j->c->p.thickness > 0.0f)
-        chunk_body(j, k, y, x0, len, 0, 0, 0);
+        chunk_body(j, chunk, y, x0, len, 0, 0, 0);
     else
-        chunk_body(j, k, y, x0, len, 0, 1, 0);
-}
-
-/* Chunk columns outside, rows inside: the rows of one band sample nearly the same part
-   of the depth plane, which then stays in cache from one row to the next. */
-static void band(void *user, int y0, int y1)
-{
-    const struct job *j = user;
-    struct chunk k;
-    for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
-        int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
-        for (int y = y0; y < y1; y++)
-            gtao_chunk_row(j, &k, y, x0, len);
-    }
-}
-
-static void rows_pad(void *user, int y0, int y1)
-{
-    const struct job *j = user;
-    ssg_sampling_pad_depth(j->depth, j->depth_sign, j->w, y0, y1, j->padded);
-    if (j->padded_back) /* +inf (none behind) stays +inf; background is never read */
-        ssg_sampling_pad_depth(j->back, 1.0f, j->w, y0, y1, j->padded_back);
+        chunk_body(j, chunk, y, x0, len, 0, 1, 0);
 }
 
 enum ssg_err ssg_gtao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                               const struct ssg_io *io)
 {
     const struct ssg_gtao_consts *c = consts;
-    const struct ssg_image *pos = io->in[SSG_GTAO_IN_POSITION];
-    const struct ssg_image *nrm = io->in[SSG_GTAO_IN_NORMAL];
     const struct ssg_image *rot = io->in[SSG_GTAO_IN_ROTATION];
-    const struct ssg_image *dep = io->in[SSG_GTAO_IN_DEPTH];
-    struct job j = {.c = c, .w = pos->width, .h = pos->height};
-    ssg_gtao_frame_of(c, ctx->frame_index, &j.fr);
-    j.out = io->out[SSG_GTAO_OUT_OUT]->data;
-    j.bent = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data;
-    for (int ch = 0; ch < 3; ch++) {
-        j.pos[ch] = ssg_image_plane(pos, ch);
-        j.nrm[ch] = ssg_image_plane(nrm, ch);
-    }
-    j.depth = dep ? dep->data : ssg_image_plane(pos, 2);
-    j.depth_sign = dep ? 1.0f : -1.0f;
-    j.rot = rot ? rot->data : NULL;
-    j.n = rot ? rot->width : 1;
-    j.pw = j.w + 2;
     const struct ssg_image *back = io->in[SSG_GTAO_IN_BACK];
-    /* the node's scratch (node.h): kept between frames, no fresh pages each run; the
-       padded back plane follows the padded depth */
-    size_t plane = (size_t)j.pw * (size_t)(j.h + 2);
-    j.padded = ssg_node_scratch(ctx, (back ? 2 : 1) * plane * sizeof *j.padded);
-    if (!j.padded)
-        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the padded depth");
-    j.back = back ? back->data : NULL;
-    j.padded_back = back ? j.padded + plane : NULL;
-    for (int p = 0; p < (back ? 2 : 1); p++) {
-        float *first = j.padded + p * plane, *last = first + (size_t)(j.h + 1) * (size_t)j.pw;
-        for (int x = 0; x < j.pw; x++)
-            first[x] = last[x] = INFINITY;
-    }
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, rows_pad, &j);
-    ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
-    return SSG_OK;
+    struct job j = {.r = {.proj = c->proj, .invf = c->invf, .e1 = c->e1, .radius = c->p.radius,
+                          .cap = c->p.max_screen_radius, .steps = c->p.steps,
+                          .back = back ? back->data : NULL, .row = gtao_chunk_row},
+                    .c = c, .rot = rot ? rot->data : NULL, .n = rot ? rot->width : 1,
+                    .out = io->out[SSG_GTAO_OUT_OUT]->data,
+                    .bent = io->out[SSG_GTAO_OUT_BENT_NORMAL]->data};
+    ssg_gtao_frame_of(c, ctx->frame_index, &j.fr);
+    ssg_horizon_gbuffer(&j.r, io->in[SSG_GTAO_IN_POSITION], io->in[SSG_GTAO_IN_NORMAL],
+                        io->in[SSG_GTAO_IN_DEPTH]);
+    return ssg_horizon_execute(ctx, &j.r);
 }

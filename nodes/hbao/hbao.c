@@ -2,7 +2,7 @@
  * order): horizon-based ambient occlusion. Method, geometry and sources: README.md here. */
 #include <math.h>
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "hbao.h"
 
 /* Farthest-point order of m positions on a circle of m (distance min(|a - b|,
@@ -59,8 +59,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 /* The consts with e1 for the G-buffer's columns. */
 static size_t consts_size_of(const void *params, const struct ssg_shape *in)
 {
-    return sizeof(struct ssg_hbao_consts) + 2 * (size_t)in[SSG_HBAO_IN_POSITION].width *
-                                                sizeof(float);
+    return ssg_horizon_consts_size(sizeof(struct ssg_hbao_consts), &in[SSG_HBAO_IN_POSITION]);
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -68,16 +67,15 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     struct ssg_hbao_consts *c = consts;
     const struct ssg_hbao_params *q = &c->p;
     c->p = *(const struct ssg_hbao_params *)params;
-    enum ssg_err e = ssg_sampling_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
-                                                &c->proj, &c->invf, c->e1);
-    c->u.rf = c->proj.f * q->radius;
+    enum ssg_err e = ssg_horizon_frame(ctx, &ctx->in_shape[SSG_HBAO_IN_POSITION],
+                                       &c->proj, &c->invf, c->e1);
     c->u.r2 = q->radius * q->radius;
     c->u.inv_radius = 1.0f / q->radius;
     c->u.inv_steps = 1.0f / (float)q->steps;
     c->u.scale = q->strength / (float)q->directions;
     c->u.cos_bias = (float)cos(q->bias);
     c->u.sin_bias = (float)sin(q->bias);
-    ssg_sampling_angles(q->directions, 2.0 * M_PI, c->dir_cos, c->dir_sin);
+    ssg_horizon_angles(q->directions, 2.0 * M_PI, 0.0, c->dir_cos, c->dir_sin);
     rank_directions(q->directions, c->dir_rank);
     return e;
 }

@@ -5,7 +5,7 @@
 #ifndef SSG_HBAO_H
 #define SSG_HBAO_H
 
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "graph/node.h"
 
 #define SSG_HBAO_MAX_DIRECTIONS 64
@@ -18,9 +18,9 @@ enum ssg_hbao_falloff {
 };
 
 /* Ports, one row each (node.h): enumerator, name, types, doc, further fields; the
-   G-buffer's four as the horizon nodes share them (common/sampling.h). */
+   G-buffer's four as the horizon nodes share them (common/horizon.h). */
 #define SSG_HBAO_IN(X)                                                                     \
-    SSG_SAMPLING_HORIZON_IN(X, SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL,                   \
+    SSG_HORIZON_IN(X, SSG_HBAO_IN_POSITION, SSG_HBAO_IN_NORMAL,                   \
                             SSG_HBAO_IN_ROTATION, SSG_HBAO_IN_DEPTH, "directions")         \
     X(SSG_HBAO_IN_COUNT, "count", SSG_T_SCALAR,                                            \
       "per-pixel number of directions (complexity.count), taken in a spread order; "       \
@@ -60,7 +60,7 @@ SSG_PARAMS_STRUCT(ssg_hbao_params, SSG_HBAO_PARAMS);
 /* The constants prepare() makes for both backends, one row each (lang/params.h); the
    shader reads them under these names (#pragma ssg_consts). */
 #define SSG_HBAO_UNIFORMS(U)                                                               \
-    U(FLOAT, rf, "f R") U(FLOAT, r2, "R^2") U(FLOAT, inv_radius, "1 / R")                  \
+    U(FLOAT, r2, "R^2") U(FLOAT, inv_radius, "1 / R")                                      \
     U(FLOAT, inv_steps, "1 / steps") U(FLOAT, scale, "strength / directions")              \
     U(FLOAT, cos_bias, "cos(bias)") U(FLOAT, sin_bias, "sin(bias)")
 SSG_UNIFORMS_STRUCT(ssg_hbao_uniforms, SSG_HBAO_UNIFORMS);

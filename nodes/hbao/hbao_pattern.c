@@ -1,15 +1,13 @@
 /* hbao_pattern.c - what the CPU kernel of the `hbao` node reads, prepared before the
- * march (hbao_cpu.c): the rotation pattern (Bavoil, Sainz and
- * Dimitrov, "Image-Space Horizon-Based Ambient Occlusion", SIGGRAPH 2008: per-pixel
- * random rotation of the directions and jitter of the steps, from a tiled n x n texture)
- * unrolled to full rows, the per-column basis vector e1, and the depth plane padded by
- * one pixel of +inf. Method and geometry are in README.md; the job is in hbao_cpu.h. */
+ * march (hbao_cpu.c): the rotation pattern (Bavoil, Sainz and Dimitrov, "Image-Space
+ * Horizon-Based Ambient Occlusion", SIGGRAPH 2008: per-pixel random rotation of the
+ * directions and jitter of the steps, from a tiled n x n texture) unrolled to full rows.
+ * Method and geometry are in README.md; the job is in hbao_cpu.h. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "common/sampling.h"
 #include "hbao_cpu.h"
 
 /* The pattern unrolled to n full rows (see struct job; without a pattern one row of
@@ -46,9 +44,3 @@ float *ssg_hbao_pattern_unroll(const struct ssg_image *rot, int w, struct job *j
     return mem;
 }
 
-/* Fills the padded depth plane (struct job), rows [y0, y1) of the image. */
-void ssg_hbao_rows_pad(void *user, int y0, int y1)
-{
-    const struct job *j = user;
-    ssg_sampling_pad_depth(j->depth, j->depth_sign, j->w, y0, y1, j->padded);
-}

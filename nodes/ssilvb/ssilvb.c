@@ -4,7 +4,7 @@
 #include <stdio.h>
 
 #include "common/random.h"
-#include "common/sampling.h"
+#include "common/horizon.h"
 #include "ssilvb.h"
 
 static int color_like(const struct ssg_shape *s, const struct ssg_shape *pos)
@@ -62,23 +62,27 @@ void ssg_ssilvb_frame_of(const struct ssg_ssilvb_consts *c, int frame,
                          struct ssg_ssilvb_frame *f)
 {
     /* Frame 0: turn 0 and shift 0, the single-frame slices pi k / slices and offsets. */
-    ssg_sampling_angles_at(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
+    ssg_horizon_angles(c->p.slices, M_PI, ssg_sampling_frame_turn(frame), f->slice_cos,
                            f->slice_sin);
     float shift = ssg_sampling_frame_shift(frame);
     for (int i = 0; i < 4; i++)
         f->noise_off[i] = c->noise_off[i] + shift;
 }
 
+/* The consts with e1 for the G-buffer's columns. */
+static size_t consts_size_of(const void *params, const struct ssg_shape *in)
+{
+    return ssg_horizon_consts_size(sizeof(struct ssg_ssilvb_consts), &in[SSG_SSILVB_IN_POSITION]);
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_ssilvb_consts *c = consts;
     c->p = *(const struct ssg_ssilvb_params *)params;
-    const struct ssg_shape *pos = &ctx->in_shape[SSG_SSILVB_IN_POSITION];
-    enum ssg_err e = ssg_sampling_projection(ctx, pos, &c->proj);
+    enum ssg_err e = ssg_horizon_frame(ctx, &ctx->in_shape[SSG_SSILVB_IN_POSITION], &c->proj,
+                                       &c->invf, c->e1);
     if (e)
         return e;
-    c->invf = 1.0f / c->proj.f;
-    ssg_sampling_column_basis(&c->proj, pos->width, c->e1);
     prepare_tables(ctx, c);
     return SSG_OK;
 }
@@ -107,7 +111,7 @@ const struct ssg_node_desc ssg_node_ssilvb = {
               "sectors a sample newly occludes; sectors of equal cosine-weighted measure",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_ssilvb_params),
-    .consts_size = sizeof(struct ssg_ssilvb_consts),
+    .consts_size_of = consts_size_of,
     /* its slices turn every frame (docs/time.md) */
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA | SSG_READS_FRAME,
     .check = check,

@@ -5,7 +5,7 @@
 #ifndef SSG_SSILVB_H
 #define SSG_SSILVB_H
 
-#include "graph/image.h"
+#include "common/horizon.h"
 #include "graph/node.h"
 
 #define SSG_SSILVB_MAX_SLICES 32
@@ -77,8 +77,9 @@ struct ssg_ssilvb_consts {
     float turn_cos[SSG_SSILVB_TURNS];       /* cos(pi (j + 0.5) / (TURNS slices)) */
     float turn_sin[SSG_SSILVB_TURNS];       /* sin of the same */
     /* Per column x of the G-buffer (width w): e1 = (1, 0, a_u) / sqrt(1 + a_u^2), e1x at
-       [x] and e1z at [w + x] (ssg_sampling_column_basis); read by both backends. */
-    float e1[2 * SSG_IMAGE_MAX_SIDE];
+       [x] and e1z at [w + x] (ssg_horizon_frame); read by both backends; sized by
+       consts_size_of. */
+    float e1[];
 };
 
 /* What changes from one frame of a sequence to the next (README.md, "Frames"), made by

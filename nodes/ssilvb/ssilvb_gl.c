@@ -3,7 +3,7 @@
  * descriptor's tables; the projection, 1 / f, the columns' basis vectors, the turn table
  * and the seed's noise offsets are prepare()'s, the frame's slice table and offsets
  * ssg_ssilvb_frame_of's, so both backends start from the same bits. */
-#include "gl/gl.h"
+#include "common/horizon_gl.h"
 #include "ssilvb.h"
 
 enum ssg_err ssg_ssilvb_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
@@ -12,11 +12,7 @@ enum ssg_err ssg_ssilvb_run_gl(const struct ssg_node_ctx *ctx, const void *const
     const struct ssg_ssilvb_consts *c = consts;
     const struct ssg_image *pos = io->in[SSG_SSILVB_IN_POSITION];
     struct ssg_gl_pass p;
-    ssg_gl_pass_begin(&p, ctx, "ssilvb.glsl", NULL);
-    ssg_gl_buffer(&p, 0, c->e1, 2 * (size_t)pos->width * sizeof *c->e1);
-    ssg_gl_ports(&p, io);
-    ssg_gl_float(&p, "invf", c->invf);
-    ssg_gl_projection(&p, "proj", &c->proj);
+    ssg_horizon_gl_begin(&p, ctx, "ssilvb.glsl", io, c->e1, &c->proj, c->invf);
     struct ssg_ssilvb_frame fr;
     ssg_ssilvb_frame_of(c, ctx->frame_index, &fr);
     ssg_gl_vec4(&p, "noise_off", fr.noise_off);
