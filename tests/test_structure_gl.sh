@@ -35,8 +35,8 @@ nodes/probe_light/probe_light_gl.c "frame_res" the frames pass (second shader), 
 nodes/shadowmaps/shadowmaps_gl.c "lights" a raster pass: its outputs are drawn layers, not image bindings (ssg_gl_ports)
 nodes/shadowmaps/shadowmaps_gl.c "centre" the scene's bounding sphere, taken at run time (shadowmaps has no prepare())
 nodes/shadowmaps/shadowmaps_gl.c "radius" likewise
-nodes/common/sampling_gl.c "invf" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
-nodes/common/sampling_gl.c "proj" the horizon nodes' shared pass (hbao, gtao, ssilvb: being rewritten, issue 43 item 1)
+nodes/common/horizon_gl.c "invf" the three horizon nodes' shared setup: a member of three consts structs, bound in this one place (horizon.h)
+nodes/common/horizon_gl.c "proj" likewise
 nodes/complexity/complexity_gl.c "nd" a grid's scratch image of mean normals and depths, written by its means pass, read by its weight pass
 nodes/complexity/complexity_gl.c "pt" a grid's scratch image of mean points, likewise
 nodes/complexity/complexity_gl.c "weight" a grid's scratch image of cell weights, read by the count pass as t<r>
@@ -61,12 +61,12 @@ nodes/gbuffer/gbuffer_gl.c "prev_f" not yet migrated (three raster/compute passe
 nodes/gbuffer/gbuffer_gl.c "proj" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c "rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
 nodes/gbuffer/gbuffer_gl.c names[i] not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gtao/gtao_gl.c "noise_shift" being rewritten (issue 43 item 1)
-nodes/gtao/gtao_gl.c "slice_cos" being rewritten (issue 43 item 1)
-nodes/gtao/gtao_gl.c "slice_sin" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_cos" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_rank" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_sin" being rewritten (issue 43 item 1)
+nodes/gtao/gtao_gl.c "noise_shift" this frame's turn of the slices (ssg_gtao_frame_of, from ctx->frame_index): in no table
+nodes/gtao/gtao_gl.c "slice_cos" this frame's slice directions (ssg_gtao_frame_of): a per-frame array, in no table
+nodes/gtao/gtao_gl.c "slice_sin" likewise
+nodes/hbao/hbao_gl.c "dir_cos" the consts' flexible tail (consts_size_of), one a direction: an array no fixed row holds
+nodes/hbao/hbao_gl.c "dir_rank" likewise
+nodes/hbao/hbao_gl.c "dir_sin" likewise
 nodes/rsm/rsm_gl.c "cells" the scratch image of the slots: the cells pass writes it, the list pass reads it
 nodes/rsm/rsm_gl.c "list" the scratch image of the non-empty slots and their CDF, between the passes
 nodes/rsm/rsm_gl.c "state" the list walk's scratch (count, sum) carried between its dispatches
@@ -78,13 +78,11 @@ nodes/rsm/rsm_gl.c "vpl0" the exact gather's dispatch: its first VPL (a loop val
 nodes/rsm/rsm_gl.c "vpls" the exact gather's dispatch: how many VPLs (a loop value)
 nodes/rsm/rsm_gl.c "first" the exact gather's dispatch: the first (a loop value)
 nodes/rsm/rsm_gl.c "last" the exact gather's dispatch: the last (a loop value)
-nodes/ssilvb/ssilvb_gl.c "invf" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "noise_off" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "proj" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "slice_cos" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "slice_sin" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "turn_cos" being rewritten (issue 43 item 1)
-nodes/ssilvb/ssilvb_gl.c "turn_sin" being rewritten (issue 43 item 1)
+nodes/ssilvb/ssilvb_gl.c "noise_off" this frame's noise offsets (ssg_ssilvb_frame_of, from ctx->frame_index): in no table
+nodes/ssilvb/ssilvb_gl.c "slice_cos" this frame's slice directions (ssg_ssilvb_frame_of): a per-frame array
+nodes/ssilvb/ssilvb_gl.c "slice_sin" likewise
+nodes/ssilvb/ssilvb_gl.c "turn_cos" a float array of the consts (rows hold scalars, vectors and matrices, not arrays)
+nodes/ssilvb/ssilvb_gl.c "turn_sin" likewise
 EOF
 )
 
@@ -136,7 +134,7 @@ done
 # joint_weights.glsl serves bilateral and upsample). main() is each shader's own; the
 # signatures below are known and wait for the change named.
 known=$(cat <<'EOF'
-void setup_pixel(ivec2) gtao and ssilvb: the horizon march moves into nodes/common/horizon.glsl (issue 43 item 1)
+void setup_pixel(ivec2) gtao and ssilvb: two functions of one name, each its own turn and jitter (the shared setup is horizon.glsl's ssg_horizon_pixel)
 vec3 fetch3(int,uint) gbuffer_ray and lightmaps: the scene's buffers move into core/gl (issue 43 item 2)
 void store_background(ivec2) gbuffer and ssdo: two different functions of one name
 EOF
