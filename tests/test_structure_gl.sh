@@ -42,25 +42,8 @@ nodes/complexity/complexity_gl.c "pt" a grid's scratch image of mean points, lik
 nodes/complexity/complexity_gl.c "weight" a grid's scratch image of cell weights, read by the count pass as t<r>
 nodes/complexity/complexity_gl.c "side" the cell side of the grid this means pass is for (one pass a grid: a loop value)
 nodes/complexity/complexity_gl.c names[r] the grids' weight images (scratch), t0 to t3
-nodes/gbuffer/gbuffer_gl.c "back" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "depth" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_constant" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_mode" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_pole" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "eye" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "first" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "gap" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "ids" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "inv_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "light_count" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "m_move" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "m_rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "motion" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "near_z" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "prev_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "proj" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c names[i] not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "ids" the visibility buffer (scratch): the raster pass writes it, the shading pass reads it, the peel redraws it for the back pass
+nodes/gbuffer/gbuffer_gl.c "first" the first layer's depth, the shading pass's output read by the peel, back and motion passes
 nodes/gtao/gtao_gl.c "noise_shift" being rewritten (issue 43 item 1)
 nodes/gtao/gtao_gl.c "slice_cos" being rewritten (issue 43 item 1)
 nodes/gtao/gtao_gl.c "slice_sin" being rewritten (issue 43 item 1)
@@ -137,7 +120,6 @@ done
 # signatures below are known and wait for the change named.
 known=$(cat <<'EOF'
 void setup_pixel(ivec2) gtao and ssilvb: the horizon march moves into nodes/common/horizon.glsl (issue 43 item 1)
-vec3 fetch3(int,uint) gbuffer_ray and lightmaps: the scene's buffers move into core/gl (issue 43 item 2)
 void store_background(ivec2) gbuffer and ssdo: two different functions of one name
 EOF
 )
