@@ -1,6 +1,6 @@
 // surface.glsl - the scene's materials and textures on GL, the twin of nodes/common/surface.c
-// that gbuffer.glsl and lightmaps.glsl share (#include "surface.glsl" after the Vertices
-// buffer, whose vdata fetch2 reads; the buffers are core/gl/gl_scene.h's bindings).
+// that gbuffer.glsl and lightmaps.glsl share (#include "surface.glsl" after scene.glsl,
+// whose vdata fetch2 reads; the buffers are core/gl/gl_scene.h's bindings).
 struct Material {
     float albedo[3];
     float specular[3];

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "common/trace.h"
+#include "scene/env.h"
 #include "scene/scene.h"
 
 /* 1 when two cameras have the very same pose (position, target, up bit for bit). */
@@ -44,6 +45,22 @@ static void prepare_motion(const struct ssg_node_ctx *ctx, struct ssg_gbuffer_co
     }
 }
 
+/* What the GL shaders read of the scene's lights and environment (gbuffer.h): the light
+   count, the environment's mode (black, constant as pi * radiance like ssg_env_irradiance,
+   or the irradiance table, whose poles are values of their own) and the peel's gap. */
+static void prepare_gl(const struct ssg_scene *s, struct ssg_gbuffer_consts *c)
+{
+    const struct ssg_env *env = s->env;
+    c->light_count = s->light_count;
+    c->env_mode = !env || !env->has_light ? 0 : env->has_image ? 2 : 1;
+    for (int k = 0; k < 3; k++) {
+        c->env_constant[k] = c->env_mode == 1 ? (float)M_PI * env->constant[k] : 0.0f;
+        c->env_pole[0][k] = c->env_mode == 2 ? env->irradiance_pole[0][k] : 0.0f;
+        c->env_pole[1][k] = c->env_mode == 2 ? env->irradiance_pole[1][k] : 0.0f;
+    }
+    c->gap = SSG_GBUFFER_BACK_GAP;
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_gbuffer_consts *c = consts;
@@ -61,6 +78,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->near_z = ctx->frame->near_z;
     c->far_z = ctx->frame->far_z;
     prepare_motion(ctx, c);
+    prepare_gl(ctx->scene, c);
     return SSG_OK;
 }
 
@@ -68,6 +86,7 @@ static const char *const ssg_gbuffer_normals_choices[] = {"smooth", "face", NULL
 SSG_PARAMS_TABLE(params, ssg_gbuffer_params, SSG_GBUFFER_PARAMS);
 
 SSG_PORT_TABLE(outputs, SSG_GBUFFER_OUT);
+SSG_UNIFORMS_AT_TABLE(uniforms, ssg_gbuffer_consts, SSG_GBUFFER_UNIFORMS);
 
 /* Flops per pixel (node.h), by reading gbuffer_cpu.c, for one light: about 10 for the
    ray, 35 for the normal, frame and hit point, 35 a light (Lambert and Blinn-Phong), 25
@@ -87,6 +106,7 @@ const struct ssg_node_desc ssg_node_gbuffer = {
     SSG_NODE_OUTPUTS(outputs),
     SSG_NODE_PARAMS(params, struct ssg_gbuffer_params),
     .consts_size = sizeof(struct ssg_gbuffer_consts),
+    .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
     .prepare = prepare,
     .flops_per_pixel = gbuffer_flops,

@@ -3,8 +3,15 @@
 // there (a visibility buffer, core/gl/gl_scene.h), so depth and barycentrics come from the
 // ray as on the CPU; normal, albedo, direct and environment light then follow
 // gbuffer_cpu.c operation by operation, reading the scene's buffers (core/gl/gl_scene.h).
-#include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
+#include "scene.glsl"       // Mesh, vdata, vindex, scene_mesh, fetch3
 #include "surface.glsl"     // Material, texel, scene_material, fetch2, wrap, sample_texture
+#pragma ssg_params
+// proj, inv_f (1 / f rounded on the CPU, as gbuffer_cpu.c has it), rot (world -> view,
+// row-major), eye, light_count, env_mode (0 black, 1 constant, 2 the irradiance table),
+// env_constant (mode 1: pi * the constant radiance), env_north, env_south (mode 2: the
+// table's values at the poles): gbuffer.h's rows
+#pragma ssg_consts
+#include "gbuffer_ray.glsl" // intersect
 // Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind
 // (0 point, 1 directional), unused.
 layout(std430, binding = 5) readonly buffer Lights { float light[]; };
@@ -12,20 +19,12 @@ layout(std430, binding = 5) readonly buffer Lights { float light[]; };
 layout(std430, binding = 6) readonly buffer Irradiance { float irradiance[]; };
 
 uniform sampler2DArray ids; // layer 0: mesh + 1 (0 = background), layer 1: triangle
-layout(r32f) uniform writeonly image2DArray position;
-layout(r32f) uniform writeonly image2DArray normal;
-layout(r32f) uniform writeonly image2DArray depth;
-layout(r32f) uniform writeonly image2DArray albedo;
-layout(r32f) uniform writeonly image2DArray direct;
-layout(r32f) uniform writeonly image2DArray environment;
-#pragma ssg_params
-uniform vec3 proj;          // f, cx, cy
-uniform float inv_f;        // 1 / f rounded on the CPU, as gbuffer_cpu.c has it
-uniform float rot[9];       // world -> view, row-major
-uniform int light_count;
-uniform int env_mode;       // 0 black, 1 constant, 2 the irradiance table
-uniform vec3 env_constant;  // mode 1: pi * the constant radiance
-uniform float env_pole[6];  // mode 2: the table's values at the north and south pole
+layout(r32f) uniform writeonly image2DArray dst_position;
+layout(r32f) uniform writeonly image2DArray dst_normal;
+layout(r32f) uniform writeonly image2DArray dst_depth;
+layout(r32f) uniform writeonly image2DArray dst_albedo;
+layout(r32f) uniform writeonly image2DArray dst_direct;
+layout(r32f) uniform writeonly image2DArray dst_environment;
 
 const float TINY = 1e-30;                      // gbuffer_cpu.c's
 const float INV_PI = 0.318309886183790671538;  // (float)(1.0 / M_PI)
@@ -36,9 +35,9 @@ const int ENV_W = 64, ENV_H = 32;              // SSG_ENV_COARSE_W, _H
 vec3 env_row(int y, int x0, int x1, float ax)
 {
     if (y < 0)
-        return vec3(env_pole[0], env_pole[1], env_pole[2]);
+        return env_north;
     if (y > ENV_H - 1)
-        return vec3(env_pole[3], env_pole[4], env_pole[5]);
+        return env_south;
     int a = 3 * (y * ENV_W + x0), b = 3 * (y * ENV_W + x1);
     vec3 ta = vec3(irradiance[a], irradiance[a + 1], irradiance[a + 2]);
     vec3 tb = vec3(irradiance[b], irradiance[b + 1], irradiance[b + 2]);
@@ -106,12 +105,12 @@ vec3 surface_albedo(Mesh me, Material m, uvec3 tri, float u, float v)
 
 void store_background(ivec2 p)
 {
-    SSG_STORE3(position, p, vec3(0.0));
-    SSG_STORE3(normal, p, vec3(0.0));
-    SSG_STORE1(depth, p, 0.0);
-    SSG_STORE3(albedo, p, vec3(0.0));
-    SSG_STORE3(direct, p, vec3(0.0));
-    SSG_STORE3(environment, p, vec3(0.0));
+    SSG_STORE3(dst_position, p, vec3(0.0));
+    SSG_STORE3(dst_normal, p, vec3(0.0));
+    SSG_STORE1(dst_depth, p, 0.0);
+    SSG_STORE3(dst_albedo, p, vec3(0.0));
+    SSG_STORE3(dst_direct, p, vec3(0.0));
+    SSG_STORE3(dst_environment, p, vec3(0.0));
 }
 
 // The surface hit by the pixel's ray w (view direction ray, z = -1) on triangle `tri` of
@@ -157,10 +156,10 @@ void main()
     Surface s = surface_at(id, int(texelFetch(ids, ivec3(p, 1), 0).r), ray, w);
     Material m = scene_material[scene_mesh[id].material];
     vec3 e_env = env_mode == 2 ? env_irradiance(s.n) : env_mode == 1 ? env_constant : vec3(0.0);
-    SSG_STORE3(position, p, vec3(s.t * ray.x, s.t * ray.y, 0.0 - s.t));
-    SSG_STORE3(normal, p, s.nv);
-    SSG_STORE1(depth, p, s.t);
-    SSG_STORE3(albedo, p, s.alb);
-    SSG_STORE3(direct, p, direct_light(s.n, eye + s.t * w, w, s.alb, m));
-    SSG_STORE3(environment, p, s.alb * INV_PI * e_env);
+    SSG_STORE3(dst_position, p, vec3(s.t * ray.x, s.t * ray.y, 0.0 - s.t));
+    SSG_STORE3(dst_normal, p, s.nv);
+    SSG_STORE1(dst_depth, p, s.t);
+    SSG_STORE3(dst_albedo, p, s.alb);
+    SSG_STORE3(dst_direct, p, direct_light(s.n, eye + s.t * w, w, s.alb, m));
+    SSG_STORE3(dst_environment, p, s.alb * INV_PI * e_env);
 }

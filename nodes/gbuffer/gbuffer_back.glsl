@@ -2,14 +2,14 @@
 // (gbuffer_cpu.c's make_rays) cast at the triangle gbuffer_peel.glsl found behind the
 // first surface, with gbuffer.glsl's intersection; +inf where the peel found none, 0 on
 // background, as the CPU's second Embree ray gives.
-#include "gbuffer_ray.glsl" // Mesh, vdata, vindex, scene_mesh, eye, fetch3, intersect
+#include "scene.glsl"       // Mesh, vdata, vindex, scene_mesh, fetch3
+#pragma ssg_consts
+// proj (f, cx, cy), inv_f (1 / f rounded on the CPU), rot (world -> view, row-major), eye
+#include "gbuffer_ray.glsl" // intersect
 
 uniform sampler2DArray ids;   // the peel's layer 0: mesh + 1 (0 = none), layer 1: triangle
 uniform sampler2DArray first; // the first layer's depth (0 = background)
-layout(r32f) uniform writeonly image2DArray back;
-uniform vec3 proj;            // f, cx, cy
-uniform float inv_f;          // 1 / f rounded on the CPU
-uniform float rot[9];         // world -> view, row-major
+layout(r32f) uniform writeonly image2DArray dst_back;
 
 void main()
 {
@@ -18,11 +18,11 @@ void main()
         return;
     int id = int(texelFetch(ids, ivec3(p, 0), 0).r) - 1;
     if (!(texelFetch(first, ivec3(p, 0), 0).r > 0.0)) { // background
-        SSG_STORE1(back, p, 0.0);
+        SSG_STORE1(dst_back, p, 0.0);
         return;
     }
     if (id < 0) { // nothing behind the first surface up to far
-        SSG_STORE1(back, p, 1.0 / 0.0);
+        SSG_STORE1(dst_back, p, 1.0 / 0.0);
         return;
     }
     vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
@@ -33,5 +33,5 @@ void main()
     int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
     vec3 p0 = fetch3(me.positions, vindex[i3]), p1 = fetch3(me.positions, vindex[i3 + 1]);
     vec3 p2 = fetch3(me.positions, vindex[i3 + 2]);
-    SSG_STORE1(back, p, intersect(w, p0, p1, p2).x);
+    SSG_STORE1(dst_back, p, intersect(w, p0, p1, p2).x);
 }

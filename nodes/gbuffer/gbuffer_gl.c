@@ -6,8 +6,11 @@
  * (gbuffer_back.glsl) give the second layer; when `motion` is read, a pass of its own
  * (gbuffer_motion.glsl) makes it from the first layer's depth. The scene on GL is the
  * run's (uploaded once for all its nodes); the lights and the environment's irradiance
- * table go in as they are in the scene. gbuffer.glsl reads the parameters by the table
- * (#pragma ssg_params); the passes write different outputs, so each names its images. */
+ * table go in as they are in the scene. The shaders read the parameters and prepare()'s
+ * constants by the tables (#pragma ssg_params, ssg_consts: gbuffer.h's rows, each marked
+ * with the shaders that read it) and write their outputs by ssg_gl_ports (each port marked
+ * with the pass that writes it); by hand are only the images between the passes: the
+ * visibility buffer `ids` and the first layer's depth `first`. */
 #include <stdlib.h>
 
 #include "scene/env.h"
@@ -33,28 +36,9 @@ static float *pack_lights(const struct ssg_scene *s)
     return f;
 }
 
-/* The environment: black, constant (pi * radiance, as ssg_env_irradiance) or the table. */
-static void set_environment(struct ssg_gl_pass *p, const struct ssg_env *env)
-{
-    int mode = !env || !env->has_light ? 0 : env->has_image ? 2 : 1;
-    float constant[3] = {0, 0, 0};
-    for (int c = 0; mode == 1 && c < 3; c++)
-        constant[c] = (float)M_PI * env->constant[c];
-    ssg_gl_int(p, "env_mode", mode);
-    ssg_gl_vec3(p, "env_constant", constant);
-    if (mode == 2) {
-        ssg_gl_buffer(p, ENV_BINDING, env->irradiance, sizeof env->irradiance);
-        ssg_gl_floats(p, "env_pole", 6, &env->irradiance_pole[0][0]);
-    } else {
-        ssg_gl_buffer(p, ENV_BINDING, NULL, 0);
-    }
-}
-
 static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
                           const struct ssg_image *ids, const struct ssg_io *io)
 {
-    static const char *const names[] = {"position", "normal", "depth", "albedo", "direct",
-                                        "environment"};
     const struct ssg_scene *s = ctx->scene;
     float *lights = pack_lights(s);
     if (!lights)
@@ -64,15 +48,12 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
     ssg_gl_scene_bind(&p);
     ssg_gl_buffer(&p, LIGHT_BINDING, lights,
                   (size_t)s->light_count * LIGHT_FLOATS * sizeof(float));
-    set_environment(&p, s->env);
+    if (c->env_mode == 2) /* the irradiance table (prepare_gl, gbuffer.c) */
+        ssg_gl_buffer(&p, ENV_BINDING, s->env->irradiance, sizeof s->env->irradiance);
+    else
+        ssg_gl_buffer(&p, ENV_BINDING, NULL, 0);
     ssg_gl_input(&p, "ids", ids);
-    for (int i = 0; i < SSG_COUNT(names); i++)
-        ssg_gl_output(&p, names[i], io->out[i]);
-    ssg_gl_projection(&p, "proj", &c->proj);
-    ssg_gl_float(&p, "inv_f", c->inv_f);
-    ssg_gl_floats(&p, "rot", 9, c->rot);
-    ssg_gl_vec3(&p, "eye", c->eye);
-    ssg_gl_int(&p, "light_count", s->light_count);
+    ssg_gl_ports(&p, io);
     ssg_gl_dispatch(&p, ids->width, ids->height);
     free(lights);
     return ssg_gl_pass_end(&p);
@@ -80,15 +61,13 @@ static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuff
 
 /* The second layer (README.md, `back`): a depth peel against the first layer's depth
    into `ids` (its first use is over), then the ray cast at the triangle it found. */
-static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
-                         const struct ssg_gl_camera *cam, struct ssg_image *ids,
-                         const struct ssg_io *io)
+static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gl_camera *cam,
+                         struct ssg_image *ids, const struct ssg_io *io)
 {
     const struct ssg_image *first = io->out[SSG_GBUFFER_OUT_DEPTH];
     struct ssg_gl_pass r;
     ssg_gl_raster_begin(&r, ctx, "gbuffer_peel.glsl");
     ssg_gl_input(&r, "first", first);
-    ssg_gl_float(&r, "gap", SSG_GBUFFER_BACK_GAP);
     enum ssg_err e = ssg_gl_scene_draw_pass(&r, cam, ids);
     if (e)
         return e;
@@ -97,31 +76,20 @@ static enum ssg_err peel(const struct ssg_node_ctx *ctx, const struct ssg_gbuffe
     ssg_gl_scene_bind(&p);
     ssg_gl_input(&p, "ids", ids);
     ssg_gl_input(&p, "first", first);
-    ssg_gl_output(&p, "back", io->out[SSG_GBUFFER_OUT_BACK]);
-    ssg_gl_projection(&p, "proj", &c->proj);
-    ssg_gl_float(&p, "inv_f", c->inv_f);
-    ssg_gl_floats(&p, "rot", 9, c->rot);
-    ssg_gl_vec3(&p, "eye", c->eye);
+    ssg_gl_ports(&p, io);
     ssg_gl_dispatch(&p, ids->width, ids->height);
     return ssg_gl_pass_end(&p);
 }
 
 /* Motion to the previous frame (README.md, `motion`) from the depth the shading pass wrote. */
-static enum ssg_err motion(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
-                           const struct ssg_io *io)
+static enum ssg_err motion(const struct ssg_node_ctx *ctx, const struct ssg_io *io)
 {
-    const struct ssg_image *depth = io->out[SSG_GBUFFER_OUT_DEPTH];
+    const struct ssg_image *first = io->out[SSG_GBUFFER_OUT_DEPTH];
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "gbuffer_motion.glsl", NULL);
-    ssg_gl_input(&p, "depth", depth);
-    ssg_gl_output(&p, "motion", io->out[SSG_GBUFFER_OUT_MOTION]);
-    ssg_gl_projection(&p, "proj", &c->proj);
-    ssg_gl_float(&p, "inv_f", c->inv_f);
-    ssg_gl_float(&p, "prev_f", c->prev_f);
-    ssg_gl_floats(&p, "m_rot", 9, c->m_rot);
-    ssg_gl_vec3(&p, "m_move", c->m_move);
-    ssg_gl_float(&p, "near_z", c->near_z);
-    ssg_gl_dispatch(&p, depth->width, depth->height);
+    ssg_gl_input(&p, "first", first);
+    ssg_gl_ports(&p, io);
+    ssg_gl_dispatch(&p, first->width, first->height);
     return ssg_gl_pass_end(&p);
 }
 
@@ -138,9 +106,9 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
     if (!e)
         e = shade(ctx, c, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_BACK]) /* on demand: only when something reads it */
-        e = peel(ctx, c, &cam, ids, io);
+        e = peel(ctx, &cam, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_MOTION]) /* likewise */
-        e = motion(ctx, c, io);
+        e = motion(ctx, io);
     ssg_gl_scratch_release(&ids);
     return e;
 }

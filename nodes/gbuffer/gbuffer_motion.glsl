@@ -2,21 +2,19 @@
 // `motion`): each pixel's surface point, from its depth and the pixel's ray, moved into
 // the previous camera's view and projected, with gbuffer_cpu.c's motion() operation by
 // operation (`precise`: no fused multiply-adds the CPU does not make).
-uniform sampler2DArray depth;  // the first layer's depth (0 = background)
-layout(r32f) uniform writeonly image2DArray motion;
-uniform vec3 proj;             // f, cx, cy
-uniform float inv_f;           // 1 / f rounded on the CPU
-uniform float prev_f;          // the previous frame's focal length
-uniform float m_rot[9];        // this view -> the previous view, row-major
-uniform vec3 m_move;           // this camera's position in the previous view
-uniform float near_z;
+uniform sampler2DArray first;  // the first layer's depth (0 = background)
+layout(r32f) uniform writeonly image2DArray dst_motion;
+#pragma ssg_consts
+// proj (f, cx, cy), inv_f (1 / f rounded on the CPU), prev_f (the previous frame's focal
+// length), m_rot (this view -> the previous view, row-major), m_move (this camera's
+// position in the previous view), near_z: gbuffer.h's rows
 
 void main()
 {
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
-    float t = texelFetch(depth, ivec3(p, 0), 0).r;
+    float t = texelFetch(first, ivec3(p, 0), 0).r;
     // the ray with view z = -1 (gbuffer_cpu.c's make_rays)
     precise float vx = (float(p.x) + 0.5 - proj.y) * inv_f;
     precise float vy = -(float(p.y) + 0.5 - proj.z) * inv_f;
@@ -30,5 +28,5 @@ void main()
     precise float df = prev_f - proj.x;
     precise float mx = prev_f * (qx / d - vx) + df * vx;
     precise float my = 0.0 - (prev_f * (qy / d - vy) + df * vy);
-    SSG_STORE3(motion, p, seen ? vec3(mx, my, z) : vec3(0.0, 0.0, z));
+    SSG_STORE3(dst_motion, p, seen ? vec3(mx, my, z) : vec3(0.0, 0.0, z));
 }

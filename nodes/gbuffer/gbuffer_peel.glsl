@@ -19,7 +19,8 @@ void main()
 #ifdef SSG_FRAGMENT
 uniform int ssg_mesh;
 uniform sampler2DArray first; // the first layer's depth (0 = background)
-uniform float gap;            // SSG_GBUFFER_BACK_GAP
+#pragma ssg_consts
+// gap: gbuffer.h's SSG_GBUFFER_BACK_GAP
 in float view_depth;
 layout(location = 0) out float mesh_id;  // layer 0
 layout(location = 1) out float triangle; // layer 1

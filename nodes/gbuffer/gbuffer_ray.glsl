@@ -1,19 +1,7 @@
 // gbuffer_ray.glsl - what the G-buffer's compute passes on GL share (#include'd by
-// gbuffer.glsl and gbuffer_back.glsl): the scene's vertex, index and mesh buffers
-// (core/gl/gl_scene.h), the camera's position and the intersection of a pixel's ray
-// with the triangle the rasteriser found there, so that both layers' depths come from the
-// same float operations.
-struct Mesh { int positions; int normals; int uvs; int indices; int material; };
-layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
-layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
-layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
-uniform vec3 eye;           // world
-
-vec3 fetch3(int base, uint vertex)
-{
-    int o = base + 3 * int(vertex);
-    return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
-}
+// gbuffer.glsl and gbuffer_back.glsl after scene.glsl and #pragma ssg_consts, whose `eye`
+// is the camera's world position): the intersection of a pixel's ray with the triangle the
+// rasteriser found there, so that both layers' depths come from the same float operations.
 
 // (t, u, v) of the ray eye + t w in the plane of the triangle (Moller and Trumbore 1997).
 // No inside test: the rasteriser put the pixel centre on this triangle, and where it

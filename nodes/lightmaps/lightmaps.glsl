@@ -3,10 +3,7 @@
 // GL clipping at the CPU's near plane); the nearest fragment of each texel intersects the
 // texel centre's ray with its own triangle (read from the scene's buffers, core/gl/gl_scene.h)
 // and writes lightmaps_cpu.c's depth, normal (turned to the light) and flux.
-struct Mesh { int positions; int normals; int uvs; int indices; int material; };
-layout(std430, binding = 0) readonly buffer Vertices { float vdata[]; };
-layout(std430, binding = 1) readonly buffer Indices { uint vindex[]; };
-layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
+#include "scene.glsl"   // Mesh, vdata, vindex, scene_mesh, fetch3
 #include "surface.glsl" // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per face (prepare()'s face_floats): origin, u, v, axis, half, ortho, flux rgb, has a light,
 // 2 unused.
@@ -44,12 +41,6 @@ layout(location = 3) out float out_nz;
 layout(location = 4) out float out_r;
 layout(location = 5) out float out_g;
 layout(location = 6) out float out_b;
-
-vec3 fetch3(int base, uint vertex)
-{
-    int o = base + 3 * int(vertex);
-    return vec3(vdata[o], vdata[o + 1], vdata[o + 2]);
-}
 
 void main()
 {
