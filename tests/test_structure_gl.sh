@@ -42,42 +42,14 @@ nodes/complexity/complexity_gl.c "pt" a grid's scratch image of mean points, lik
 nodes/complexity/complexity_gl.c "weight" a grid's scratch image of cell weights, read by the count pass as t<r>
 nodes/complexity/complexity_gl.c "side" the cell side of the grid this means pass is for (one pass a grid: a loop value)
 nodes/complexity/complexity_gl.c names[r] the grids' weight images (scratch), t0 to t3
-<<<<<<< HEAD
-nodes/gbuffer/gbuffer_gl.c "back" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "depth" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_constant" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_mode" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "env_pole" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "eye" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "first" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "gap" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "ids" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "inv_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "light_count" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "m_move" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "m_rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "motion" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "near_z" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "prev_f" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "proj" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c "rot" not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
-nodes/gbuffer/gbuffer_gl.c names[i] not yet migrated (three raster/compute passes, core/gl move under way; issue 43 item 4, left)
+nodes/gbuffer/gbuffer_gl.c "ids" the visibility buffer (scratch): the raster pass writes it, the shading pass reads it, the peel redraws it for the back pass
+nodes/gbuffer/gbuffer_gl.c "first" the first layer's depth, the shading pass's output read by the peel, back and motion passes
 nodes/gtao/gtao_gl.c "noise_shift" this frame's turn of the slices (ssg_gtao_frame_of, from ctx->frame_index): in no table
 nodes/gtao/gtao_gl.c "slice_cos" this frame's slice directions (ssg_gtao_frame_of): a per-frame array, in no table
 nodes/gtao/gtao_gl.c "slice_sin" likewise
 nodes/hbao/hbao_gl.c "dir_cos" the consts' flexible tail (consts_size_of), one a direction: an array no fixed row holds
 nodes/hbao/hbao_gl.c "dir_rank" likewise
 nodes/hbao/hbao_gl.c "dir_sin" likewise
-=======
-nodes/gbuffer/gbuffer_gl.c "ids" the visibility buffer (scratch): the raster pass writes it, the shading pass reads it, the peel redraws it for the back pass
-nodes/gbuffer/gbuffer_gl.c "first" the first layer's depth, the shading pass's output read by the peel, back and motion passes
-nodes/gtao/gtao_gl.c "noise_shift" being rewritten (issue 43 item 1)
-nodes/gtao/gtao_gl.c "slice_cos" being rewritten (issue 43 item 1)
-nodes/gtao/gtao_gl.c "slice_sin" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_cos" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_rank" being rewritten (issue 43 item 1)
-nodes/hbao/hbao_gl.c "dir_sin" being rewritten (issue 43 item 1)
->>>>>>> t43x
 nodes/rsm/rsm_gl.c "cells" the scratch image of the slots: the cells pass writes it, the list pass reads it
 nodes/rsm/rsm_gl.c "list" the scratch image of the non-empty slots and their CDF, between the passes
 nodes/rsm/rsm_gl.c "state" the list walk's scratch (count, sum) carried between its dispatches
@@ -143,12 +115,7 @@ done
 # joint_weights.glsl serves bilateral and upsample). main() is each shader's own; the
 # signatures below are known and wait for the change named.
 known=$(cat <<'EOF'
-<<<<<<< HEAD
 void setup_pixel(ivec2) gtao and ssilvb: two functions of one name, each its own turn and jitter (the shared setup is horizon.glsl's ssg_horizon_pixel)
-vec3 fetch3(int,uint) gbuffer_ray and lightmaps: the scene's buffers move into core/gl (issue 43 item 2)
-=======
-void setup_pixel(ivec2) gtao and ssilvb: the horizon march moves into nodes/common/horizon.glsl (issue 43 item 1)
->>>>>>> t43x
 void store_background(ivec2) gbuffer and ssdo: two different functions of one name
 EOF
 )
