@@ -102,8 +102,8 @@ static void kept_by_camera_move(const struct ssg_graph *g, unsigned char *kept)
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
         int keep = !(ssg_node_reads(n->desc) & SSG_READS_CAMERA);
-        for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
-            const struct gconn *in = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+        for (int k = 0; k < ssg_gnode_conn_count(n); k++) {
+            const struct gconn *in = ssg_gnode_conn(n, k);
             if (in->node >= 0 && !kept[in->node])
                 keep = 0;
         }
@@ -221,8 +221,8 @@ static struct ssg_graph *run_lit(const struct light_case *c, const char *backend
 /* 1 when every connected input of node n holds the same bytes in a and b. */
 static int same_inputs(struct ssg_graph *a, struct ssg_graph *b, const struct gnode *n)
 {
-    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
-        const struct gconn *in = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+    for (int k = 0; k < ssg_gnode_conn_count(n); k++) {
+        const struct gconn *in = ssg_gnode_conn(n, k);
         if (in->node < 0)
             continue;
         const struct gnode *src = &a->nodes[in->node];

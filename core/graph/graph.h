@@ -109,6 +109,17 @@ struct ssg_graph {
     struct ssg_timeline time;  /* graph_time.c */
 };
 
+/* Node n's connections, its ports' then its extra inputs': k from 0 to
+   ssg_gnode_conn_count(n) - 1; an unconnected one has node < 0. */
+static inline int ssg_gnode_conn_count(const struct gnode *n)
+{
+    return SSG_MAX_PORTS + n->extra_count;
+}
+static inline const struct gconn *ssg_gnode_conn(const struct gnode *n, int k)
+{
+    return k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+}
+
 /* Before frame `frame` of a run (first: the run's first frame; frames: the run's count;
  * live: the graph keeps its run state): puts the frame's camera (from the scene's path)
  * into the scene and the frame, and fills *step. Returns 1 when the camera changed, so

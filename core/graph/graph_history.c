@@ -36,10 +36,8 @@ static struct slot *find_slot(const struct ssg_history *h, int node, int port)
 
 /* Visits the connections of node n that are written prev(node.port). */
 #define FOR_EACH_PREV(n, conn)                                                              \
-    for (int k_ = 0; k_ < SSG_MAX_PORTS + (n)->extra_count; k_++)                           \
-        for (const struct gconn *conn = k_ < SSG_MAX_PORTS ? &(n)->in[k_]                   \
-                                                           : &(n)->extra[k_ - SSG_MAX_PORTS]; \
-             conn; conn = NULL)                                                             \
+    for (int k_ = 0; k_ < ssg_gnode_conn_count(n); k_++)                                    \
+        for (const struct gconn *conn = ssg_gnode_conn(n, k_); conn; conn = NULL)           \
             if (conn->node >= 0 && conn->value.prev)
 
 /* One slot per distinct port that a live node reads through prev(); 0 on out of memory. */

@@ -81,8 +81,8 @@ enum ssg_why ssg_redo_decide(const struct ssg_graph *g, const struct ssg_live *l
     enum ssg_why why = l->kept[p] ? SSG_WHY_KEPT : l->why[p] ? l->why[p] : SSG_WHY_FIRST;
     if (why != SSG_WHY_KEPT && why != SSG_WHY_SEQUENCE)
         return why; /* its own event comes before its producers' */
-    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
-        const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+    for (int k = 0; k < ssg_gnode_conn_count(n); k++) {
+        const struct gconn *c = ssg_gnode_conn(n, k);
         if (c->node >= 0 && ran[c->node]) {
             *producer = c->node;
             return SSG_WHY_INPUT;

@@ -81,8 +81,8 @@ static void release_after(struct run *r, int p)
     for (int k = 0; k < n->desc->output_count; k++)
         if (n->last_reader[k] < 0)
             release_output(r, n, k);
-    for (int k = 0; k < SSG_MAX_PORTS + n->extra_count; k++) {
-        const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
+    for (int k = 0; k < ssg_gnode_conn_count(n); k++) {
+        const struct gconn *c = ssg_gnode_conn(n, k);
         if (c->node >= 0 && g->nodes[c->node].last_reader[c->port] == p && !r->hold[c->node])
             release_output(r, &g->nodes[c->node], c->port);
     }
@@ -218,11 +218,8 @@ static void mark_held(struct run *r, int frames)
         const struct gnode *n = &g->nodes[g->order[p]];
         int hold = frames > 1 && !n->desc->is_sink && !ssg_history_reads_prev(n) &&
                    !(ssg_node_reads(n->desc) & changing);
-        for (int k = 0; hold && k < SSG_MAX_PORTS + n->extra_count; k++) {
-            const struct gconn *c = k < SSG_MAX_PORTS ? &n->in[k]
-                                                      : &n->extra[k - SSG_MAX_PORTS];
-            hold = c->node < 0 || r->hold[c->node];
-        }
+        for (int k = 0; hold && k < ssg_gnode_conn_count(n); k++)
+            hold = ssg_gnode_conn(n, k)->node < 0 || r->hold[ssg_gnode_conn(n, k)->node];
         r->hold[g->order[p]] = (unsigned char)hold;
     }
 }
