@@ -5,8 +5,9 @@
  * H = sum_t g_t cos(2 pi t / lambda) (the cut kernel's response; exp(-2 pi^2 sigma^2 /
  * lambda^2) for the whole Gaussian), so d = A H sin(2 pi x / lambda): peak to peak 2 A H,
  * RMS A H / sqrt(2). The noise must not count, the seam must be masked by the depth input
- * (and counts without it), the measured pixels are those 3 sigma from every edge, the
- * measure is off by default, and its bits do not depend on the thread count. */
+ * (and counts without it), the measured pixels are those 3 sigma from every edge, the map
+ * holds d, a reference that is not smooth at the scale is left out, the measure is off by
+ * default, and its bits do not depend on the thread count. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -76,6 +77,15 @@ static double response(void)
     return num / den;
 }
 
+static const float *map_of(const struct ssg_outputs *out)
+{
+    for (int i = 0; i < out->count; i++)
+        if (!strcmp(out->names[i], "structure"))
+            return out->images[i]->data;
+    CHECK(0);
+    return NULL;
+}
+
 static void release(struct ssg_outputs *out, struct ssg_image **a, struct ssg_image **b,
                     struct ssg_image **z)
 {
@@ -115,6 +125,40 @@ static void test_sine(void)
     /* Within 1 % (the seam's tail at 3 sigma, test_no_depth). */
     CHECK_NEAR(compare_metric(&out, "structure_pp"), 2.0 * AMP * hr, 0.01 * AMP * hr);
     CHECK_NEAR(compare_metric(&out, "structure_rms"), AMP * hr * sine_rms(), 0.01 * AMP * hr);
+    /* The map: d at a crest (x = 40 = 8 + 32, row 64), 0 outside the measured pixels. */
+    const float *map = map_of(&out);
+    CHECK_NEAR(map[64 * W + 40], AMP * hr, 0.01 * AMP * hr);
+    CHECK(map[64 * W + 5] == 0.0f && map[64 * W + 128] == 0.0f && map[3 * W + 40] == 0.0f);
+    release(&out, &a, &b, &z);
+}
+
+/* The smoothness test: where the reference itself carries a sine of wavelength 64 and
+   relative amplitude 0.6 (left half), its blurs of deviation 4 and 8 pass it at 0.926 and
+   0.735 of that, so they differ by 0.6 x 0.191 |sin| = 0.115 |sin|: over the threshold
+   0.05 where |sin| > 0.435, a part of the left half's columns. A threshold no difference
+   reaches keeps every pixel the flat reference keeps. */
+static void test_smooth(void)
+{
+    struct ssg_image *a, *b, *z;
+    make_case(0, 0, 0, &a, &b, &z);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W / 2; x++) {
+            float v = (float)(0.5 * (1.0 + 0.6 * sin(2.0 * PI * x / 64)));
+            a->data[(size_t)y * W + (size_t)x] = b->data[(size_t)y * W + (size_t)x] = v;
+        }
+    struct ssg_binding bind[3] = {{"a", a}, {"b", b}, {"depth", z}};
+    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    const char *sets[] = {"structure=true", "structure_sigma=0.015625", "flip=off",
+                          "structure_smooth=1e6"};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs out;
+    CHECK_EQ(ssg_node_run("compare", bind, 3, sets, 3, &frame, &out, &diags), SSG_OK);
+    double kept = compare_metric(&out, "structure_pixels");
+    CHECK(kept > 102.0 * 102 && kept < 1.8 * 102 * 102); /* the right half, some of the left */
+    CHECK(compare_metric(&out, "structure_pp") < 1e-6);  /* a = b: no error anywhere */
+    ssg_outputs_release(&out);
+    CHECK_EQ(ssg_node_run("compare", bind, 3, sets, 4, &frame, &out, &diags), SSG_OK);
+    CHECK_EQ(compare_metric(&out, "structure_pixels"), 2.0 * 102 * 102);
     release(&out, &a, &b, &z);
 }
 
@@ -191,6 +235,7 @@ int main(void)
     test_sine();
     test_noise();
     test_no_depth();
+    test_smooth();
     test_off();
     test_threads();
     return check_report();
