@@ -1,5 +1,5 @@
 /* compare_test.h - helpers shared by the compare node's tests (test_compare*.c): a metric
- * by name from a run's outputs, and a seeded normal deviate for noise images. Static
+ * by name from a run's outputs, an output image by name, and a seeded normal deviate for noise images. Static
  * inline functions: a test that uses one of them only compiles without a warning. */
 #ifndef SSG_COMPARE_TEST_H
 #define SSG_COMPARE_TEST_H
@@ -21,6 +21,17 @@ static inline double compare_metric(const struct ssg_outputs *out, const char *n
     fprintf(stderr, "metric '%s' not reported\n", name);
     CHECK(0);
     return NAN;
+}
+
+/* The image the run wrote to output `name` (ssg_node_run makes every output, on_demand
+   ones too); a failed check (and NULL) when there is none. */
+static inline const float *compare_output(const struct ssg_outputs *out, const char *name)
+{
+    for (int i = 0; i < out->count; i++)
+        if (!strcmp(out->names[i], name))
+            return out->images[i]->data;
+    CHECK(0);
+    return NULL;
 }
 
 /* A standard normal deviate (Box-Muller) from a 64-bit LCG: the same noise on every

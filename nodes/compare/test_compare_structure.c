@@ -77,15 +77,6 @@ static double response(void)
     return num / den;
 }
 
-static const float *map_of(const struct ssg_outputs *out)
-{
-    for (int i = 0; i < out->count; i++)
-        if (!strcmp(out->names[i], "structure"))
-            return out->images[i]->data;
-    CHECK(0);
-    return NULL;
-}
-
 static void release(struct ssg_outputs *out, struct ssg_image **a, struct ssg_image **b,
                     struct ssg_image **z)
 {
@@ -126,7 +117,7 @@ static void test_sine(void)
     CHECK_NEAR(compare_metric(&out, "structure_pp"), 2.0 * AMP * hr, 0.01 * AMP * hr);
     CHECK_NEAR(compare_metric(&out, "structure_rms"), AMP * hr * sine_rms(), 0.01 * AMP * hr);
     /* The map: d at a crest (x = 40 = 8 + 32, row 64), 0 outside the measured pixels. */
-    const float *map = map_of(&out);
+    const float *map = compare_output(&out, "structure");
     CHECK_NEAR(map[64 * W + 40], AMP * hr, 0.01 * AMP * hr);
     CHECK(map[64 * W + 5] == 0.0f && map[64 * W + 128] == 0.0f && map[3 * W + 40] == 0.0f);
     release(&out, &a, &b, &z);
