@@ -100,19 +100,22 @@ def gi_accuracy_table(binary, size, threads, runs, paths=4096):
           "`graphs/hybrid_ssdo.graph` (the hybrids need environment light: not under the "
           "sun); gi: `graphs/gi.graph`. bounce: the mean of the pipeline's bounce term over "
           "the mean of the reference's bounce (1 = the right energy; - where the pipeline "
-          "has none). Graphs: `graphs/gi_error.graph`, `graphs/hybrid_ssdo_error.graph`. "
+          "has none). structure_pp: compare's structure measure, the peak to peak of the "
+          "error's low-frequency part G(a - b) / G(b) where the truth is smooth and away "
+          "from depth jumps (docs/nodes.md#compare; - where no pixel qualifies). Graphs: `graphs/gi_error.graph`, `graphs/hybrid_ssdo_error.graph`. "
           f"Made by `python3 bench/bench.py --accuracy --size {size}`.\n")
     rows, summary = [], []
     with tempfile.TemporaryDirectory() as tmp:
         for light, lights_file, graph in GI_LIGHTS:
             lights = (os.path.join(ROOT, "examples", "lights", lights_file + ".scene")
                       if lights_file else None)
-            per, energy, flips = {}, {}, {}
+            per, energy, flips, structure = {}, {}, {}, {}
             for scene in scenes:
                 path = os.path.join(ROOT, "examples", scene)
                 metrics = run_metrics(binary, os.path.join(ROOT, "graphs", graph), path, size,
                                       threads, os.path.join(tmp, light + scene), lights,
-                                      truth=("ref.samples", paths))
+                                      truth=("ref.samples", paths),
+                                      sets=structure_sets(graph))
                 for name, node, _, bounce_node in GI_METHODS:
                     if node not in metrics:
                         continue
@@ -123,9 +126,10 @@ def gi_accuracy_table(binary, size, threads, runs, paths=4096):
                     if ratio is not None:
                         energy.setdefault(name, []).append(ratio)
                     shown = f"{ratio:.3f}" if ratio is not None else "-"
+                    structure.setdefault(name, []).append(m["structure_pp"])
                     rows.append(f"| {light} | {scene[:-6]} | {name} | {m['rmse']:.4f} | "
-                                f"{m['flip']:.4f} | {m['bias']:+.4f} | {m['ssim']:.3f} | "
-                                f"{shown} |")
+                                f"{m['flip']:.4f} | {cell(m['structure_pp'])} | "
+                                f"{m['bias']:+.4f} | {m['ssim']:.3f} | {shown} |")
             base = per["ssao"]
             for name, _, what, _ in GI_METHODS:
                 if name not in per:
@@ -135,8 +139,10 @@ def gi_accuracy_table(binary, size, threads, runs, paths=4096):
                 e = energy.get(name)
                 shown = f"{sum(e) / len(e):.3f}" if e else "-"
                 f = flips[name]
+                st = [x for x in structure[name] if x is not None]
                 summary.append(f"| {light} | {name} ({what}) | {mean:.4f} | "
                                f"{sum(f) / len(f):.4f} | "
+                               f"{cell(sum(st) / len(st) if st else None)} | "
                                f"{sum(r) / len(r):.3f} | {max(r):.3f} | "
                                f"{sum(x > 1.0 for x in r)} of {len(r)} | {shown} |")
         ms = [frame_ms(binary, os.path.join(ROOT, "graphs", g),
@@ -144,25 +150,45 @@ def gi_accuracy_table(binary, size, threads, runs, paths=4096):
                        os.path.join(tmp, "t"))[0]
               for g, sc in (("ssdo.graph", "cornell.scene"), ("gi.graph", "cornell.scene"),
                             ("hybrid_ssdo.graph", "courtyard.scene"))]
-    print("| light | method | mean rmse | mean flip | mean ratio to ssao | worst ratio | "
-          "scenes worse than ssao | bounce |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| light | method | mean rmse | mean flip | mean structure_pp | mean ratio to ssao | "
+          "worst ratio | scenes worse than ssao | bounce |")
+    print("|---|---|---|---|---|---|---|---|---|")
     print("\n".join(summary))
     print(f"\nFrame time at {size} (median of {runs} runs after a warm-up, "
           f"{threads or os.cpu_count()} threads, write excluded): ssdo.graph on the Cornell "
           f"box {ms[0]:.1f} ms, gi.graph on the Cornell box {ms[1]:.1f} ms, "
           f"hybrid_ssdo.graph on the courtyard {ms[2]:.1f} ms (lightprobe's one-off "
           "conversion included).\n")
-    print("| light | scene | method | rmse | flip | bias | ssim | bounce |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| light | scene | method | rmse | flip | structure_pp | bias | ssim | bounce |")
+    print("|---|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
 
 
-def run_metrics(binary, graph, scene_path, size, threads, out, lights=None, truth=None):
+def structure_sets(graph):
+    """--set values that turn on compare's structure measure in the c_* nodes of the graph
+    and of the graphs it includes (those that score a whole pipeline; they take the depth
+    it needs)."""
+    text = open(os.path.join(ROOT, "graphs", graph)).read()
+    names = re.findall(r"^(c_\w+)\s*=\s*compare\(", text, re.M)
+    sets = ["%s.structure=true" % n for n in names]
+    for included in re.findall(r'^include\s+"([^"]+)"', text, re.M):
+        sets += structure_sets(included)
+    return sets
+
+
+def cell(value):
+    """A table cell of 4 decimals, or - for a missing (null) value."""
+    return f"{value:.4f}" if value is not None else "-"
+
+
+def run_metrics(binary, graph, scene_path, size, threads, out, lights=None, truth=None,
+                sets=()):
     """Runs graph on the scene (relit by the lights file, if one is given), its reference
-    at truth = (its parameter, the count: issue 34's converged truth); its compare nodes'
-    metrics."""
+    at truth = (its parameter, the count: issue 34's converged truth), with `sets` as
+    --set values; its compare nodes' metrics."""
     cmd = [binary, "run", graph, "--scene", scene_path, "--size", size, "--out", out, "--quiet"]
+    for value in sets:
+        cmd += ["--set", value]
     if truth:
         cmd += ["--set", "%s=%d" % truth]
     if lights:

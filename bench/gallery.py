@@ -11,8 +11,9 @@ against bench/gallery/reference_gi.graph (`--paths` paths a pixel) under each sc
 lights and each light of --lights (examples/lights/: sky, courtyard probe, sun); the AO
 pipelines (ssao, hbao, gtao; their filtered `ao` layer) against bench/gallery/
 reference_ao.graph (`--rays` rays). Every image is compared with `ssgraph compare` (RMSE,
-SSIM and FLIP when the build's compare has it) over the pixels with a surface, and its
-error map comes from `ssgraph node compare` (the `flip` output, else `diff`).
+SSIM, FLIP and the structure measure, structure_pp, with the truth's depth: blotches where
+the truth is smooth) over the pixels with a surface, and its error map comes from
+`ssgraph node compare` (the `flip` output, else `diff`).
 
 The references are cached like bench --reference's: $SSGRAPH_CACHE/gallery, else
 $XDG_CACHE_HOME/ssgraph/gallery, else ~/.cache/ssgraph/gallery; each <hash>.exr is keyed by
@@ -128,12 +129,15 @@ def own_noise(binary, scene, light, size, paths):
     """The reference's own noise at `paths`, from two references of paths / 4 with other
     seeds (2 and 3; the truth itself is seed 1): their RMSE / sqrt 2 is one quarter-path
     reference's noise, half of it the full reference's (noise falls as 1 / sqrt(paths)).
-    Also the FLIP between the two quarter-path references, as measured."""
+    Also the FLIP and the structure measure between the two quarter-path references, as
+    measured."""
     quarter = max(1, paths // 4)
     a = reference(binary, "gi", scene, light, size, quarter, 2)
     b = reference(binary, "gi", scene, light, size, quarter, 3)
-    m = json.loads(run([binary, "compare", a, b, "--mask", b + ":depth", "--json"]))
-    return m["rmse"] / math.sqrt(2) * math.sqrt(quarter / paths), m.get("flip")
+    m = json.loads(run([binary, "compare", a, b, "--mask", b + ":depth", "--depth",
+                        b + ":depth", "--json"]))
+    return (m["rmse"] / math.sqrt(2) * math.sqrt(quarter / paths), m.get("flip"),
+            m.get("structure_pp"))
 
 
 def render(binary, graph, extra, scene, lights, size, out):
@@ -148,7 +152,8 @@ def render(binary, graph, extra, scene, lights, size, out):
 def score(binary, image, ref, tmp, tag):
     """compare's metrics (a dict) and the error map (an EXR path) of image against ref."""
     mask = ref + ":depth"
-    metrics = json.loads(run([binary, "compare", image, ref, "--mask", mask, "--json"]))
+    metrics = json.loads(run([binary, "compare", image, ref, "--mask", mask, "--depth", mask,
+                              "--json"]))
     folder = os.path.join(tmp, "cmp_" + tag)
     out = run([binary, "node", "compare", "--in", "a=" + image, "--in", "b=" + ref,
                "--in", "mask=" + mask, "--out", folder])
@@ -261,8 +266,10 @@ def case_picture(case, kind, ref_img, surface, rows, folder):
     for r in rows:
         top.append(label(display(r["image"], kind), r["name"]))
         err = r["map"] if r["map"] is not None else np.abs(r["image"] - ref_img)
-        bottom.append(label(false_colour(err, scale), "%s %.3f" % (metric,
-                                                                  r["metrics"][metric])))
+        text = "%s %.3f" % (metric, r["metrics"][metric])
+        if r["metrics"].get("structure_pp") is not None:
+            text += " st %.2f" % r["metrics"]["structure_pp"]
+        bottom.append(label(false_colour(err, scale), text))
     gap = np.full((truth.shape[0], 3, 3), 255, np.uint8)
     row = lambda ts: np.concatenate(sum([[t, gap] for t in ts], [])[:-1], axis=1)
     picture = np.concatenate([row(top), np.full((3, row(top).shape[1], 3), 255, np.uint8),
@@ -328,6 +335,17 @@ def gallery(binary, size, paths, rays, scenes, lights, folder, markdown, self_er
     write_markdown(markdown, folder, size, paths, rays, summary, sections, noise)
 
 
+def fmt(value):
+    """A table cell: 4 decimals, or - where the metric is missing (or null: no pixel)."""
+    return "%.4f" % value if value is not None else "-"
+
+
+def mean_of(metrics, key):
+    """The mean of one metric over the cases that have it, else None."""
+    values = [m[key] for m in metrics if m.get(key) is not None]
+    return float(np.mean(values)) if values else None
+
+
 def write_markdown(path, folder, size, paths, rays, summary, sections, noise):
     rel = os.path.relpath(folder, os.path.dirname(os.path.abspath(path)))
     lines = ["# Gallery: every pipeline beside converged truth", "",
@@ -346,19 +364,22 @@ def write_markdown(path, folder, size, paths, rays, summary, sections, noise):
                   "RMSE / sqrt 2, halved (noise falls as 1 / sqrt(paths)), is the truth's own "
                   "noise at %d paths; the FLIP between the two quarter-path references is "
                   "shown as measured (an upper bound of what the truth's noise adds to a "
-                  "pipeline's FLIP):" % paths, "",
-                  "| case | noise rmse at %d paths | flip of two %d-path references |" % (
-                      paths, max(1, paths // 4)), "|---|--:|--:|"]
-        lines += ["| %s | %.4f | %s |" % (t, r, "%.4f" % f if f is not None else "-")
-                  for t, r, f in noise]
+                  "pipeline's FLIP), and so is their structure measure (structure_pp: "
+                  "blotches the truth's own noise leaves after the wide blur):" % paths, "",
+                  "| case | noise rmse at %d paths | flip of two %d-path references | "
+                  "structure_pp of them |" % (paths, max(1, paths // 4)),
+                  "|---|--:|--:|--:|"]
+        lines += ["| %s | %.4f | %s | %s |" % (t, r, fmt(f), fmt(st)) for t, r, f, st in noise]
         lines.append("")
     lines += ["## Summary", "", "Mean over the scenes of each pipeline's score, per lighting:",
-              "", "| pipeline | lighting | scenes | mean flip | mean rmse |", "|---|---|--:|--:|--:|"]
+              "(structure_pp: the peak to peak of the error's low-frequency part where "
+              "the truth is smooth, `compare`'s structure measure, nodes/compare/README.md)",
+              "", "| pipeline | lighting | scenes | mean flip | mean rmse | "
+              "mean structure_pp |", "|---|---|--:|--:|--:|--:|"]
     for (name, light), ms in summary.items():
-        flips = [m["flip"] for m in ms if "flip" in m]
-        lines.append("| %s | %s | %d | %s | %.4f |" % (
-            name, light, len(ms), "%.4f" % np.mean(flips) if flips else "-",
-            np.mean([m["rmse"] for m in ms])))
+        lines.append("| %s | %s | %d | %s | %.4f | %s |" % (
+            name, light, len(ms), fmt(mean_of(ms, "flip")), np.mean([m["rmse"] for m in ms]),
+            fmt(mean_of(ms, "structure_pp"))))
     lines.append("")
     artefacts = os.path.join(HERE, "artefacts.md")
     if os.path.exists(artefacts):
@@ -368,8 +389,9 @@ def write_markdown(path, folder, size, paths, rays, summary, sections, noise):
         lines += ["## %s, %s" % (scene, title), "",
                   "![%s %s](%s/%s)" % (scene, light, rel, pic), "",
                   " | ".join("%s: %s" % (r["name"], ", ".join(
-                      "%s %.4f" % (k, r["metrics"][k]) for k in ("flip", "rmse", "ssim")
-                      if k in r["metrics"])) for r in rows),
+                      "%s %.4f" % (k, r["metrics"][k])
+                      for k in ("flip", "rmse", "structure_pp", "ssim")
+                      if r["metrics"].get(k) is not None)) for r in rows),
                   ""]
         for name, crop, (y, x, h, w) in crops:
             lines += ["%s, worst window at (%d, %d), %dx%d: truth | %s | error" % (

@@ -3,7 +3,7 @@
  *   ssgraph run FILE [options]        validate, then run a graph and write its outputs
  *   ssgraph check FILE [options]      validate only (no meshes or images are loaded)
  *   ssgraph node NAME --in port=FILE[:LAYER]... [--set p=v]... [--out DIR | -o FILE]
- *   ssgraph compare A B [--mask M] [--json] [--peak P]
+ *   ssgraph compare A B [--mask M] [--depth D] [--json] [--peak P]
  *   ssgraph bench FILE --sweep NODE.PARAM=V1,V2,... [options]
  *   ssgraph tune FILE --reference NODE.PORT --image NODE.PORT --param NODE.P=LO:HI ...
  *   ssgraph dot FILE [-o FILE.dot]
@@ -376,24 +376,26 @@ static int cmd_node(const struct ssg_cli_args *a)
 /* `compare A B`: the compare node on the two images (and --mask), its metrics printed. */
 static int cmd_compare(const struct ssg_cli_args *a)
 {
-    static const char *const ports[3] = {"a", "b", "mask"};
-    const char *files[3] = {a->files[0], a->files[1], a->mask};
-    char peak[64], specs[3][1100], names[3][64];
+    static const char *const ports[4] = {"a", "b", "mask", "depth"};
+    const char *files[4] = {a->files[0], a->files[1], a->mask, a->depth};
+    char peak[64], specs[4][1100], names[4][64];
     snprintf(peak, sizeof peak, "peak=%s", a->peak ? a->peak : "1");
-    const char *sets[1] = {peak};
+    const char *sets[2] = {peak, "structure=true"};
     struct ssg_diags d = {0};
-    struct ssg_binding bind[3] = {{0}};
-    int count = a->mask ? 3 : 2;
+    struct ssg_binding bind[4] = {{0}};
+    int count = 0;
     enum ssg_err e = SSG_OK;
-    for (int i = 0; i < count; i++) {
+    for (int i = 0; i < 4; i++) {
+        if (!files[i])
+            continue;
         snprintf(specs[i], sizeof specs[i], "%s=%s", ports[i], files[i]);
-        enum ssg_err r = read_input(specs[i], &bind[i], names[i], sizeof names[i], &d);
+        enum ssg_err r = read_input(specs[i], &bind[count++], names[i], sizeof names[i], &d);
         if (r && !e)
             e = r;
     }
     struct ssg_outputs out = {0};
     if (!e)
-        e = ssg_node_run("compare", bind, count, sets, 1, NULL, &out, &d);
+        e = ssg_node_run("compare", bind, count, sets, a->depth ? 2 : 1, NULL, &out, &d);
     if (!e)
         print_metrics(&out, a->json);
     ssg_outputs_release(&out);

@@ -312,6 +312,10 @@ static const struct option options[] = {
     {.name = "--peak", .arg = "P", .commands = SSG_CLI_COMPARE, .take = take_positive_text,
      .field = OF(peak), .expects = "a positive number",
      .help = "the signal's peak for the PSNR (default 1)"},
+    {.name = "--depth", .arg = "D", .commands = SSG_CLI_COMPARE, .take = take_text,
+     .field = OF(depth),
+     .help = "FILE[:LAYER], the reference's view depth: also report the structure\n"
+             "measure (structure_pp, structure_rms, structure_pixels) away from its jumps"},
     {.name = "--json", .commands = SSG_CLI_COMPARE, .take = take_flag, .field = OF(json),
      .help = "the metrics as one line of JSON"},
     {.name = "--port", .arg = "N", .commands = SSG_CLI_VIEW, .take = take_int,

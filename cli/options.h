@@ -78,6 +78,7 @@ struct ssg_cli_args {
     float ipd;                       /* run, bench: --ipd, scene units; default 0.064 */
     const char *mask;                /* compare: --mask FILE[:LAYER]; bench, tune: NODE.PORT */
     const char *peak;                /* compare: --peak, checked positive; NULL = 1 */
+    const char *depth;               /* compare: --depth FILE[:LAYER]; NULL = no structure */
     int json;                        /* compare: --json */
     int port;                        /* view: --port; 0 = a free one */
     const char *show;                /* run: --show NODE.PORT[,...], as written */

@@ -36,6 +36,13 @@ out=$("$BIN" compare "$src:ao_raw" "$src:ao" --mask "$src:depth" --json) || fail
 n=$(echo "$out" | sed 's/.*"pixels":\([0-9]*\).*/\1/')
 [ "$n" -gt 0 ] && [ "$n" -lt 3072 ] || fail "--mask did not restrict the pixels: $out"
 
+# --- --depth turns on the structure measure: identical images have d = 0 everywhere ---
+out=$("$BIN" compare "$src:ao" "$src:ao" --mask "$src:depth" --depth "$src:depth" --json) \
+    || fail "--depth compare exited $?"
+echo "$out" | grep -Eq '"structure_pp":(0|null),"structure_rms":(0|null),"structure_pixels":[0-9]+,' \
+    || fail "--depth: no structure measure in $out"
+expect_exit 1 "missing.exr" "$BIN" compare "$src:ao" "$src:ao" --depth "$TMP/missing.exr"
+
 # --- errors: clear message, exit 1 (bad input) or 2 (bad command line) ---
 expect_exit 1 "$TMP/missing.exr" "$BIN" compare "$TMP/missing.exr" "$src:ao"
 expect_exit 1 "$TMP/missing.exr" "$BIN" compare "$src:ao" "$TMP/missing.exr" --json

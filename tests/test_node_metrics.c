@@ -24,10 +24,10 @@ int main(void)
         b->data[i] = (float)(i % 5) / 5.0f;
     }
     struct ssg_binding bind[] = {{"a", a}, {"b", b}};
-    const char *sets[] = {"banding=2", "flip=ldr"};
+    const char *sets[] = {"banding=2", "flip=ldr", "structure=true"};
     struct ssg_outputs out = {0};
     struct ssg_diags d = {0};
-    CHECK_EQ(ssg_node_run("compare", bind, 2, sets, 2, NULL, &out, &d), SSG_OK);
+    CHECK_EQ(ssg_node_run("compare", bind, 2, sets, 3, NULL, &out, &d), SSG_OK);
     ssg_diags_print(&d, stderr);
     int count = 0;
     while (ssg_node_metric("compare", count))

@@ -35,6 +35,12 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                  a->width, a->height, m->width, m->height);
         return SSG_E_SIZE;
     }
+    const struct ssg_shape *z = &in[SSG_COMPARE_IN_DEPTH];
+    if (z->channels != 0 && (z->width != a->width || z->height != a->height)) {
+        snprintf(why, why_len, "depth must have the size of a and b (%dx%d), got %dx%d",
+                 a->width, a->height, z->width, z->height);
+        return SSG_E_SIZE;
+    }
     const struct ssg_compare_params *p = params;
     const struct ssg_ints *r = &p->region;
     int whole = r->v[0] == 0 && r->v[1] == 0 && r->v[2] == 0 && r->v[3] == 0;
@@ -52,6 +58,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     out[1] = out[0];
     out[1].channels = 1;
     out[1].type = SSG_T_SCALAR;
+    out[2] = out[1];
     return SSG_OK;
 }
 
@@ -106,6 +113,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     ssg_frame_region(ctx->frame, &ctx->in_shape[SSG_COMPARE_IN_A], &c->x0, &c->y0, &c->x1,
                      &c->y1);
     region_pixels(c, &p->region);
+    c->structure = p->structure;
+    c->structure_sigma = p->structure_sigma * (c->x1 - c->x0);
+    c->structure_smooth = p->structure_smooth;
     return SSG_OK;
 }
 
@@ -116,19 +126,22 @@ SSG_PORT_TABLE(outputs, SSG_COMPARE_OUT);
 /* Every name compare_cpu.c reports (tests/test_node_metrics.c holds them equal). */
 static const char *const metrics[] = {"rmse", "mae", "bias", "psnr", "ssim", "pixels", "mean",
                                       "reference_mean", "banding", "banding_rows",
-                                      "banding_cols", "flip", NULL};
+                                      "banding_cols", "structure_pp",
+                                      "structure_rms", "structure_pixels",
+                                      "flip", NULL};
 
 const struct ssg_node_desc ssg_node_compare = {
     .name = "compare",
-    .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM, FLIP and a diff "
-               "image",
+    .summary = "error of image a against reference b: RMSE, MAE, PSNR, SSIM, FLIP, structure "
+               "and a diff image",
     .method = "RMSE, MAE, PSNR = 10 log10(peak^2 / MSE); SSIM: Wang, Bovik, Sheikh, "
               "Simoncelli, IEEE TIP 13(4) 2004, eqs. 13-17 (Gaussian window 11x11, sigma 1.5, "
               "K1 0.01, K2 0.03); FLIP: Andersson, Nilsson, Akenine-Moller, Oskarsson, "
               "Astrom, Fairchild, HPG 2020 (CSF filters in YyCxCz, Hunt-adjusted L*a*b*, "
               "HyAB, edge and point features; qc 0.7, pc 0.4, pt 0.95, qf 0.5); "
               "HDR-FLIP: Andersson, Nilsson, Shirley, Akenine-Moller, EG 2021 (ACES, "
-              "exposures from the reference)",
+              "exposures from the reference); structure: G(a - b) / G(b), G a Gaussian of "
+              "deviation structure_sigma x width, where b is smooth and far from edges",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_compare_params),
     .consts_size = sizeof(struct ssg_compare_consts),

@@ -19,12 +19,18 @@
     X(SSG_COMPARE_IN_B, "b", SSG_T_SCALAR | SSG_T_COLOR | SSG_T_VECTOR,                    \
       "reference image, same type and size as a")                                          \
     X(SSG_COMPARE_IN_MASK, "mask", SSG_T_SCALAR,                                           \
-      "pixels with mask > 0.5 are compared; none = every pixel", .optional = 1)
+      "pixels with mask > 0.5 are compared; none = every pixel", .optional = 1)         \
+    X(SSG_COMPARE_IN_DEPTH, "depth", SSG_T_SCALAR,                                         \
+      "view depth of b, for the structure measure: no pixel near a depth jump is "        \
+      "measured; none = no depth edges", .optional = 1)
 #define SSG_COMPARE_OUT(X)                                                                 \
     X(SSG_COMPARE_OUT_DIFF, "diff", SSG_T_COLOR,                                           \
       "a - b on blue (a < b), white (equal), red (a > b); black = not compared")          \
     X(SSG_COMPARE_OUT_FLIP, "flip", SSG_T_SCALAR,                                          \
-      "FLIP error map in [0, 1] (0 = not compared, or flip = off)", .on_demand = 1)
+      "FLIP error map in [0, 1] (0 = not compared, or flip = off)", .on_demand = 1)      \
+    X(SSG_COMPARE_OUT_STRUCTURE, "structure", SSG_T_SCALAR,                                \
+      "the structure measure's d = G(a - b) / G(b) on the measured pixels, 0 elsewhere "  \
+      "(and with structure = false)", .on_demand = 1)
 SSG_PORT_ENUM(ssg_compare_input, SSG_COMPARE_IN, SSG_COMPARE_INPUTS);
 SSG_PORT_ENUM(ssg_compare_output, SSG_COMPARE_OUT, SSG_COMPARE_OUTPUTS);
 
@@ -65,7 +71,18 @@ extern const char *const ssg_compare_flip_choices[];
     P(FLOAT, ppd,                                                                          \
       "FLIP's observer: pixels per degree of visual angle (default: a 0.7 m wide "         \
       "3840-pixel monitor at 0.7 m)",                                                      \
-      .def = SSG_FLIP_DEFAULT_PPD, .min = 1, .max = SSG_FLIP_MAX_PPD, .unit = "px/deg")
+      .def = SSG_FLIP_DEFAULT_PPD, .min = 1, .max = SSG_FLIP_MAX_PPD, .unit = "px/deg")    \
+    P(BOOL, structure,                                                                     \
+      "also report structure_pp, structure_rms, structure_pixels: the low-frequency "     \
+      "relative error G(a - b) / G(b) where b is smooth (README.md)",                     \
+      .def = 0)                                                                            \
+    P(FLOAT, structure_sigma,                                                              \
+      "the structure measure's Gaussian deviation, as a fraction of the frame's width",   \
+      .def = 0.01, .min = 1e-4, .max = 1)                                                  \
+    P(FLOAT, structure_smooth,                                                             \
+      "the structure measure's smoothness test: b counts as smooth where its blurs of "   \
+      "deviation sigma and 2 sigma differ by at most this fraction",                      \
+      .def = 0.05, .min = 1e-6, .max = 1e6)
 SSG_PARAMS_STRUCT(ssg_compare_params, SSG_COMPARE_PARAMS);
 
 struct ssg_compare_consts {
@@ -84,6 +101,9 @@ struct ssg_compare_consts {
     int flip;                       /* FLIP resolved for the input type: LDR, HDR or OFF
                                        (never AUTO) */
     double ppd;                     /* as in the parameters */
+    int structure;                  /* 1 = report the structure measure */
+    double structure_sigma;         /* its deviation, px: structure_sigma x frame width */
+    double structure_smooth;        /* as in the parameters */
 };
 
 enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -15,13 +15,15 @@
  * E[a^2] - E[a]^2 cancels, and float would leave noise of 1e-7 in variances that
  * C2 = 9e-4 does not hide. About 90 cycles a pixel and channel on one core.
  *
- * FLIP is flip.c's; this file hands it the counted pixels and reports its mean. */
+ * FLIP is flip.c's and the structure measure structure.c's; this file hands them the
+ * counted pixels and reports what they find. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "compare.h"
+#include "structure.h"
 
 enum {
     R = SSG_COMPARE_RADIUS,
@@ -56,7 +58,8 @@ struct job {
     long long *row_count;    /* banding: h counted pixels of each row */
     int w, h, channels;      /* shape of a and b, px */
     struct partial *parts;   /* one per band */
-    unsigned char *on;       /* FLIP: w * h, 1 = counted(); NULL until report_flip */
+    unsigned char *on;       /* FLIP and structure: w * h, 1 = counted(); NULL outside
+                                report_maps */
 };
 
 /* 1 when pixel (x, y) counts: inside the frame's region (compare.c; the frame itself
@@ -437,7 +440,6 @@ static enum ssg_err report_flip(const struct ssg_node_ctx *ctx, struct job *j,
             memset(map, 0, n * sizeof(float));
         return SSG_OK;
     }
-    j->on = malloc(n + 1);
     float *own = out ? NULL : malloc((n + 1) * sizeof(float));
     struct ssg_flip_input in = {.w = j->w, .h = j->h, .on = j->on, .ppd = j->c->ppd,
                                 .hdr = j->c->flip == SSG_COMPARE_FLIP_HDR};
@@ -446,14 +448,9 @@ static enum ssg_err report_flip(const struct ssg_node_ctx *ctx, struct job *j,
         in.ref[ch] = j->b[ch < j->channels ? ch : 0];
     }
     map = out ? map : own;
-    enum ssg_err e = SSG_E_NOMEM;
-    if (j->on && map) {
-        ssg_parallel_rows(j->h, ROWS_PER_BAND, counted_rows, j);
-        e = ssg_flip_map(&in, map, NULL) ? SSG_E_NOMEM : SSG_OK;
-    }
-    if (e) {
-        free(j->on), free(own);
-        return ssg_node_fail(ctx, e, "out of memory for FLIP's planes");
+    if (!map || ssg_flip_map(&in, map, NULL)) {
+        free(own);
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for FLIP's planes");
     }
     double sum = 0;
     long long count = 0;
@@ -463,8 +460,53 @@ static enum ssg_err report_flip(const struct ssg_node_ctx *ctx, struct job *j,
         map[i] = j->on[i] ? map[i] : 0.0f;
     }
     ssg_metric_report(ctx, "flip", count ? sum / (double)count : NAN);
-    free(j->on), free(own);
+    free(own);
     return SSG_OK;
+}
+
+/* The structure measure (structure.c, README.md) of the channels' mean, when asked for;
+   its map goes to the `structure` output when something reads it (all 0 when off). */
+static enum ssg_err report_structure(const struct ssg_node_ctx *ctx, const struct job *j,
+                                     const struct ssg_image *depth, struct ssg_image *out)
+{
+    float *map = out ? ssg_image_plane(out, 0) : NULL;
+    if (!j->c->structure) {
+        if (map)
+            memset(map, 0, (size_t)j->w * (size_t)j->h * sizeof(float));
+        return SSG_OK;
+    }
+    struct ssg_structure_input in = {.w = j->w, .h = j->h, .channels = j->channels,
+                                     .on = j->on, .depth = depth ? depth->data : NULL,
+                                     .sigma = j->c->structure_sigma,
+                                     .smooth = j->c->structure_smooth};
+    for (int ch = 0; ch < j->channels; ch++)
+        in.test[ch] = j->a[ch], in.ref[ch] = j->b[ch];
+    struct ssg_structure_result r;
+    if (ssg_structure_measure(&in, map, &r))
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the structure planes");
+    ssg_metric_report(ctx, "structure_pp", r.pp);
+    ssg_metric_report(ctx, "structure_rms", r.rms);
+    ssg_metric_report(ctx, "structure_pixels", (double)r.pixels);
+    return SSG_OK;
+}
+
+/* The structure measure, then FLIP: both on the compared pixels as bytes (j->on). */
+static enum ssg_err report_maps(const struct ssg_node_ctx *ctx, struct job *j,
+                                const struct ssg_io *io)
+{
+    if (!j->c->structure && j->c->flip == SSG_COMPARE_FLIP_OFF)
+        return report_flip(ctx, j, io->out[SSG_COMPARE_OUT_FLIP]);
+    j->on = malloc((size_t)j->w * (size_t)j->h + 1);
+    if (!j->on)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the compared pixels");
+    ssg_parallel_rows(j->h, ROWS_PER_BAND, counted_rows, j);
+    enum ssg_err e = report_structure(ctx, j, io->in[SSG_COMPARE_IN_DEPTH],
+                                      io->out[SSG_COMPARE_OUT_STRUCTURE]);
+    if (!e)
+        e = report_flip(ctx, j, io->out[SSG_COMPARE_OUT_FLIP]);
+    free(j->on);
+    j->on = NULL;
+    return e;
 }
 
 /* Banding's line buffers (off: all NULL): the rows', shared (one band writes each row),
@@ -512,7 +554,7 @@ enum ssg_err ssg_compare_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         ssg_parallel_rows(a->height, ROWS_PER_BAND, band, &j);
         e = report(ctx, &j, bands);
         if (e == SSG_OK)
-            e = report_flip(ctx, &j, io->out[SSG_COMPARE_OUT_FLIP]);
+            e = report_maps(ctx, &j, io);
     } else {
         ssg_node_fail(ctx, e, "out of memory for the banding lines");
     }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "compare_test.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -27,15 +28,6 @@ static enum ssg_err run(const struct ssg_image *a, const struct ssg_image *b,
     return e;
 }
 
-static double metric(const struct ssg_outputs *out, const char *name)
-{
-    for (int i = 0; i < out->metric_count; i++)
-        if (!strcmp(out->metric_names[i], name))
-            return out->metric_values[i];
-    fprintf(stderr, "metric '%s' not reported\n", name);
-    CHECK(0);
-    return NAN;
-}
 
 static uint64_t rng_state = 99;
 static double uniform01(void)
@@ -79,12 +71,12 @@ static void test_identical(void)
                                "reference_mean", "flip"};
         for (int i = 0; i < 9 && i < out.metric_count; i++)
             CHECK(!strcmp(out.metric_names[i], order[i]));
-        CHECK(metric(&out, "rmse") == 0.0);
-        CHECK(metric(&out, "mae") == 0.0);
-        CHECK(metric(&out, "bias") == 0.0);
-        CHECK(isinf(metric(&out, "psnr")) && metric(&out, "psnr") > 0);
-        CHECK(metric(&out, "ssim") == 1.0);
-        CHECK_EQ(metric(&out, "pixels"), 37 * 29);
+        CHECK(compare_metric(&out, "rmse") == 0.0);
+        CHECK(compare_metric(&out, "mae") == 0.0);
+        CHECK(compare_metric(&out, "bias") == 0.0);
+        CHECK(isinf(compare_metric(&out, "psnr")) && compare_metric(&out, "psnr") > 0);
+        CHECK(compare_metric(&out, "ssim") == 1.0);
+        CHECK_EQ(compare_metric(&out, "pixels"), 37 * 29);
         /* diff is white everywhere */
         CHECK_EQ(out.images[0]->channels, 3);
         for (size_t i = 0; i < (size_t)3 * 37 * 29; i++)
@@ -109,20 +101,20 @@ static void test_offset(void)
     }
     struct ssg_outputs out;
     CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
-    CHECK_NEAR(metric(&out, "rmse"), d, 1e-15);
-    CHECK_NEAR(metric(&out, "mae"), d, 1e-15);
-    CHECK_NEAR(metric(&out, "bias"), -d, 1e-15); /* a = b - d: a is darker */
+    CHECK_NEAR(compare_metric(&out, "rmse"), d, 1e-15);
+    CHECK_NEAR(compare_metric(&out, "mae"), d, 1e-15);
+    CHECK_NEAR(compare_metric(&out, "bias"), -d, 1e-15); /* a = b - d: a is darker */
     double sum_a = 0;
     for (size_t i = 0; i < (size_t)3 * 23 * 17; i++)
         sum_a += a->data[i];
-    CHECK_NEAR(metric(&out, "mean"), sum_a / (3 * 23 * 17), 1e-12);
-    CHECK_NEAR(metric(&out, "reference_mean"), sum_a / (3 * 23 * 17) + d, 1e-12);
-    CHECK_NEAR(metric(&out, "psnr"), 10 * log10(1 / (d * d)), 1e-12);
+    CHECK_NEAR(compare_metric(&out, "mean"), sum_a / (3 * 23 * 17), 1e-12);
+    CHECK_NEAR(compare_metric(&out, "reference_mean"), sum_a / (3 * 23 * 17) + d, 1e-12);
+    CHECK_NEAR(compare_metric(&out, "psnr"), 10 * log10(1 / (d * d)), 1e-12);
     ssg_outputs_release(&out);
     /* PSNR scales with the peak: 20 log10(peak / rmse) */
     const char *peak2[] = {"peak=2"};
     CHECK_EQ(run(a, b, NULL, peak2, 1, &out), SSG_OK);
-    CHECK_NEAR(metric(&out, "psnr"), 20 * log10(2 / d), 1e-12);
+    CHECK_NEAR(compare_metric(&out, "psnr"), 20 * log10(2 / d), 1e-12);
     ssg_outputs_release(&out);
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);
@@ -140,7 +132,7 @@ static void test_ssim_constant(void)
         double k1 = (0.01 * peak) * (0.01 * peak);
         struct ssg_outputs out;
         CHECK_EQ(run(a, b, NULL, sets, 1, &out), SSG_OK);
-        CHECK_NEAR(metric(&out, "ssim"), (2 * fa * fb + k1) / (fa * fa + fb * fb + k1), 1e-12);
+        CHECK_NEAR(compare_metric(&out, "ssim"), (2 * fa * fb + k1) / (fa * fa + fb * fb + k1), 1e-12);
         ssg_outputs_release(&out);
     }
     ssg_image_destroy(&a);
@@ -227,11 +219,11 @@ static void test_ssim_direct(void)
         struct ssg_outputs out;
         const char *peak[] = {"peak=1.5"};
         CHECK_EQ(run(a, b, NULL, peak, 1, &out), SSG_OK);
-        double plain = metric(&out, "ssim");
+        double plain = compare_metric(&out, "ssim");
         CHECK_NEAR(plain, ssim_direct(a, b, NULL, 1.5), 1e-10);
         ssg_outputs_release(&out);
         CHECK_EQ(run(a, b, m, NULL, 0, &out), SSG_OK);
-        CHECK_NEAR(metric(&out, "ssim"), ssim_direct(a, b, m, 1.0), 1e-10);
+        CHECK_NEAR(compare_metric(&out, "ssim"), ssim_direct(a, b, m, 1.0), 1e-10);
         CHECK(plain > 0.05 && plain < 0.95); /* a case where SSIM is far from trivial */
         ssg_outputs_release(&out);
         ssg_image_destroy(&a);
@@ -254,11 +246,11 @@ static void test_mask(void)
     }
     struct ssg_outputs out;
     CHECK_EQ(run(a, b, m, NULL, 0, &out), SSG_OK);
-    CHECK(metric(&out, "rmse") == 0.0);
-    CHECK(metric(&out, "mae") == 0.0);
-    CHECK(isinf(metric(&out, "psnr")));
-    CHECK(metric(&out, "ssim") == 1.0);
-    CHECK_EQ(metric(&out, "pixels"), inside);
+    CHECK(compare_metric(&out, "rmse") == 0.0);
+    CHECK(compare_metric(&out, "mae") == 0.0);
+    CHECK(isinf(compare_metric(&out, "psnr")));
+    CHECK(compare_metric(&out, "ssim") == 1.0);
+    CHECK_EQ(compare_metric(&out, "pixels"), inside);
     CHECK(inside > 100 && inside < W * H - 100);
     const float *r = ssg_image_plane(out.images[0], 0);
     for (int i = 0; i < W * H; i++)
@@ -271,15 +263,15 @@ static void test_mask(void)
     for (int i = 0; i < W * H; i++)
         b->data[i] = m->data[i] > 0.5f ? a->data[i] : a->data[i] + 0.5f;
     CHECK_EQ(run(a, b, NULL, NULL, 0, &out), SSG_OK);
-    CHECK_NEAR(metric(&out, "mae"), 0.5 * (W * H - inside) / (W * H), 1e-7);
-    CHECK(metric(&out, "ssim") < 0.99);
+    CHECK_NEAR(compare_metric(&out, "mae"), 0.5 * (W * H - inside) / (W * H), 1e-7);
+    CHECK(compare_metric(&out, "ssim") < 0.99);
     ssg_outputs_release(&out);
     /* an empty mask counts nothing: the metrics are undefined */
     memset(m->data, 0, sizeof(float) * W * H);
     CHECK_EQ(run(a, b, m, NULL, 0, &out), SSG_OK);
-    CHECK_EQ(metric(&out, "pixels"), 0);
-    CHECK(isnan(metric(&out, "rmse")) && isnan(metric(&out, "psnr")));
-    CHECK(isnan(metric(&out, "ssim")));
+    CHECK_EQ(compare_metric(&out, "pixels"), 0);
+    CHECK(isnan(compare_metric(&out, "rmse")) && isnan(compare_metric(&out, "psnr")));
+    CHECK(isnan(compare_metric(&out, "ssim")));
     ssg_outputs_release(&out);
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);

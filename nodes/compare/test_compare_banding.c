@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "compare_test.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -23,26 +24,8 @@ static enum ssg_err run(const struct ssg_image *a, const struct ssg_image *b,
     return ssg_node_run("compare", bind, 2, sets, set_count, &frame, out, &diags);
 }
 
-static double metric(const struct ssg_outputs *out, const char *name)
-{
-    for (int i = 0; i < out->metric_count; i++)
-        if (!strcmp(out->metric_names[i], name))
-            return out->metric_values[i];
-    fprintf(stderr, "metric '%s' not reported\n", name);
-    CHECK(0);
-    return NAN;
-}
-
 static uint64_t rng_state = 7;
-static double gauss01(void)
-{
-    double u[2];
-    for (int i = 0; i < 2; i++) {
-        rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
-        u[i] = ((double)(rng_state >> 11) + 0.5) * (1.0 / 9007199254740992.0);
-    }
-    return sqrt(-2.0 * log(u[0])) * cos(2.0 * M_PI * u[1]);
-}
+static double gauss01(void) { return compare_gauss(&rng_state); }
 
 enum { KIND_VSTRIPES, KIND_HSTRIPES, KIND_NOISE, KIND_LINEAR, KIND_SMOOTH };
 
@@ -108,7 +91,7 @@ static void test_stripes(void)
         make_pair(200, 160, kind, amp, &a, &b);
         struct ssg_outputs out;
         CHECK_EQ(run(a, b, sets, 1, &out), SSG_OK);
-        double band = metric(&out, "banding");
+        double band = compare_metric(&out, "banding");
         CHECK_NEAR(band, direct_banding(a, b, 8), 1e-9);
         /* A (1 - 1/17) in the interior; the 2 x 8 end lines of each side fit a line to
            alternating values and keep a little more. */
@@ -116,8 +99,8 @@ static void test_stripes(void)
         /* Vertical stripes are all column structure, horizontal all row structure. */
         const char *on = kind == KIND_VSTRIPES ? "banding_cols" : "banding_rows";
         const char *off = kind == KIND_VSTRIPES ? "banding_rows" : "banding_cols";
-        CHECK_NEAR(metric(&out, on), band, 1e-12);
-        CHECK(metric(&out, off) < 1e-7);
+        CHECK_NEAR(compare_metric(&out, on), band, 1e-12);
+        CHECK(compare_metric(&out, off) < 1e-7);
         ssg_outputs_release(&out);
         ssg_image_destroy(&a);
         ssg_image_destroy(&b);
@@ -132,7 +115,7 @@ static void test_noise_and_gradients(void)
     struct ssg_outputs out;
     make_pair(200, 160, KIND_NOISE, amp, &a, &b);
     CHECK_EQ(run(a, b, sets, 1, &out), SSG_OK);
-    double noise = metric(&out, "banding");
+    double noise = compare_metric(&out, "banding");
     double floor_ = amp * sqrt(1.0 / 160 + 1.0 / 200);
     CHECK_NEAR(noise, direct_banding(a, b, 8), 1e-9);
     CHECK(noise > 0.7 * floor_ && noise < 1.3 * floor_);
@@ -142,15 +125,15 @@ static void test_noise_and_gradients(void)
     ssg_image_destroy(&b);
     make_pair(200, 160, KIND_LINEAR, 1.0, &a, &b);
     CHECK_EQ(run(a, b, sets, 1, &out), SSG_OK);
-    CHECK(metric(&out, "banding") < 1e-6); /* float images: e rounded to ~3e-8 */
+    CHECK(compare_metric(&out, "banding") < 1e-6); /* float images: e rounded to ~3e-8 */
     ssg_outputs_release(&out);
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);
     make_pair(200, 160, KIND_SMOOTH, 1.0, &a, &b);
     CHECK_EQ(run(a, b, sets, 1, &out), SSG_OK);
     /* A large error, hardly any of it banding: a curvature c leaves c r (r + 1) / 3. */
-    CHECK(metric(&out, "rmse") > 0.3);
-    CHECK(metric(&out, "banding") < 0.002 * metric(&out, "rmse"));
+    CHECK(compare_metric(&out, "rmse") > 0.3);
+    CHECK(compare_metric(&out, "banding") < 0.002 * compare_metric(&out, "rmse"));
     ssg_outputs_release(&out);
     ssg_image_destroy(&a);
     ssg_image_destroy(&b);
@@ -169,23 +152,23 @@ static void test_region(void)
     struct ssg_outputs in, whole;
     const char *sets[] = {"banding=8", "region=[40, 30, 120, 90]"};
     CHECK_EQ(run(a, b, sets, 2, &in), SSG_OK);
-    CHECK_EQ(metric(&in, "pixels"), 80 * 60);
-    CHECK_NEAR(metric(&in, "rmse"), 0.05, 1e-6);
-    CHECK(metric(&in, "banding") > 0.05 * 16.0 / 17.0);
+    CHECK_EQ(compare_metric(&in, "pixels"), 80 * 60);
+    CHECK_NEAR(compare_metric(&in, "rmse"), 0.05, 1e-6);
+    CHECK(compare_metric(&in, "banding") > 0.05 * 16.0 / 17.0);
     CHECK_EQ(run(a, b, NULL, 0, &whole), SSG_OK);
     CHECK_EQ(whole.metric_count, 9); /* with flip */
-    CHECK_EQ(metric(&whole, "pixels"), 200 * 160);
+    CHECK_EQ(compare_metric(&whole, "pixels"), 200 * 160);
     ssg_outputs_release(&in);
     ssg_outputs_release(&whole);
     /* Cut to the frame: 160 columns x 60 rows; wholly outside: no pixel, NaN. */
     const char *part[] = {"region=[40, 30, 900, 90]"};
     CHECK_EQ(run(a, b, part, 1, &whole), SSG_OK);
-    CHECK_EQ(metric(&whole, "pixels"), 160 * 60);
+    CHECK_EQ(compare_metric(&whole, "pixels"), 160 * 60);
     ssg_outputs_release(&whole);
     const char *outside[] = {"region=[300, 200, 400, 300]", "banding=4"};
     CHECK_EQ(run(a, b, outside, 2, &whole), SSG_OK);
-    CHECK_EQ(metric(&whole, "pixels"), 0);
-    CHECK(isnan(metric(&whole, "rmse")) && isnan(metric(&whole, "banding")));
+    CHECK_EQ(compare_metric(&whole, "pixels"), 0);
+    CHECK(isnan(compare_metric(&whole, "rmse")) && isnan(compare_metric(&whole, "banding")));
     ssg_outputs_release(&whole);
     const char *empty[] = {"region=[40, 30, 40, 90]"};
     CHECK_EQ(run(a, b, empty, 1, &whole), SSG_E_VALUE);
@@ -213,7 +196,7 @@ static void test_threads(void)
     CHECK_EQ(one.metric_count, 12); /* with flip */
     CHECK_EQ(one.metric_count, four.metric_count);
     CHECK(memcmp(one.metric_values, four.metric_values, sizeof one.metric_values) == 0);
-    CHECK(metric(&one, "banding_cols") > 0.003); /* the period-3 column pattern */
+    CHECK(compare_metric(&one, "banding_cols") > 0.003); /* the period-3 column pattern */
     ssg_outputs_release(&one);
     ssg_outputs_release(&four);
     ssg_image_destroy(&a);

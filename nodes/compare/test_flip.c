@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "compare_test.h"
 #include "graph/node.h"
 #include "ssgraph.h"
 
@@ -37,16 +38,6 @@ static double metric(const struct ssg_outputs *out, const char *name)
     while (i < out->metric_count && strcmp(out->metric_names[i], name) != 0)
         i++;
     return i < out->metric_count ? out->metric_values[i] : NAN;
-}
-
-/* The map the run wrote to the `flip` output (ssg_node_run makes every output). */
-static const float *flip_map(const struct ssg_outputs *out)
-{
-    for (int i = 0; i < out->count; i++)
-        if (!strcmp(out->names[i], "flip"))
-            return out->images[i]->data;
-    CHECK(0);
-    return NULL;
 }
 
 /* Noise in [-0.5, 0.5) from a hash of the pixel and channel (no state to share). */
@@ -88,7 +79,7 @@ static struct ssg_image *uniform(int w, int h, float r, float g, float b)
 /* Every map value in [0, 1]; returns the largest. */
 static float map_range(const struct ssg_outputs *out, size_t n)
 {
-    const float *m = flip_map(out);
+    const float *m = compare_output(out, "flip");
     float most = 0;
     for (size_t i = 0; i < n; i++) {
         CHECK(m[i] >= 0.0f && m[i] <= 1.0f);
@@ -121,7 +112,7 @@ static void test_symmetry(void)
     struct ssg_outputs ab, ba;
     run(a, b, "ldr", &ab);
     run(b, a, "ldr", &ba);
-    const float *m1 = flip_map(&ab), *m2 = flip_map(&ba);
+    const float *m1 = compare_output(&ab, "flip"), *m2 = compare_output(&ba, "flip");
     for (int i = 0; i < W * H; i++)
         CHECK_NEAR(m1[i], m2[i], 1e-6);
     CHECK(metric(&ab, "flip") > 0.05);
@@ -141,7 +132,7 @@ static void test_green_blue(void)
     struct ssg_outputs out;
     run(g, b, "ldr", &out);
     CHECK_NEAR(metric(&out, "flip"), 1.0, 1e-3);
-    CHECK_NEAR(flip_map(&out)[15 * 40 + 20], 1.0, 1e-3);
+    CHECK_NEAR(compare_output(&out, "flip")[15 * 40 + 20], 1.0, 1e-3);
     ssg_outputs_release(&out);
     ssg_image_destroy(&g);
     ssg_image_destroy(&b);
@@ -229,7 +220,7 @@ static void test_threads(void)
         run(a, b, modes[m], &two);
         double f1 = metric(&one, "flip"), f2 = metric(&two, "flip");
         CHECK(memcmp(&f1, &f2, sizeof f1) == 0);
-        CHECK(memcmp(flip_map(&one), flip_map(&two), sizeof(float) * W * H) == 0);
+        CHECK(memcmp(compare_output(&one, "flip"), compare_output(&two, "flip"), sizeof(float) * W * H) == 0);
         map_range(&one, W * H);
         ssg_outputs_release(&one);
         ssg_outputs_release(&two);
@@ -257,7 +248,7 @@ static void test_hdr(void)
     struct ssg_outputs ldr, hdr;
     run(test, ref, "ldr", &ldr);
     run(test, ref, "hdr", &hdr);
-    const float *ml = flip_map(&ldr), *mh = flip_map(&hdr);
+    const float *ml = compare_output(&ldr, "flip"), *mh = compare_output(&hdr, "flip");
     int bright = 4 * W + 4, dark = (H - 5) * W + W - 5;
     printf("bright square: ldr %.4f hdr %.4f; dark square: ldr %.4f hdr %.4f\n", ml[bright],
            mh[bright], ml[dark], mh[dark]);
