@@ -34,17 +34,18 @@ static inline void gbuffer_of(const struct ssg_scene *s, const struct ssg_frame 
 }
 
 /* The lightmaps node's depth, normal and flux of scene s at resolution res, for the lights
-   src names. */
-static inline enum ssg_err maps_with(const struct ssg_scene *s, const struct ssg_frame *frame,
-                                     int res, struct ssg_lightmap_sources src,
-                                     enum ssg_backend backend, struct ssg_image *out[3])
+   src names, a directional light's map fitted by `fit` ("scene" or "view"). */
+static inline enum ssg_err maps_fit(const struct ssg_scene *s, const struct ssg_frame *frame,
+                                    int res, struct ssg_lightmap_sources src, const char *fit,
+                                    enum ssg_backend backend, struct ssg_image *out[3])
 {
-    char set[3][40];
+    char set[4][40];
     snprintf(set[0], sizeof set[0], "resolution=%d", res);
     snprintf(set[1], sizeof set[1], "own=%s", src.own ? "true" : "false");
     snprintf(set[2], sizeof set[2], "environment=%d", src.environment);
-    const char *sets[] = {set[0], set[1], set[2]};
-    void *params = node_params(&ssg_node_lightmaps, sets, 3);
+    snprintf(set[3], sizeof set[3], "fit=%s", fit);
+    const char *sets[] = {set[0], set[1], set[2], set[3]};
+    void *params = node_params(&ssg_node_lightmaps, sets, 4);
     int f = ssg_lightmap_face_count(s, src);
     out[0] = ssg_image_create(res, res, f);
     out[1] = ssg_image_create(res, res, 3 * f);
@@ -52,6 +53,14 @@ static inline enum ssg_err maps_with(const struct ssg_scene *s, const struct ssg
     enum ssg_err e = node_run_scene(&ssg_node_lightmaps, s, frame, params, NULL, out, backend);
     free(params);
     return e;
+}
+
+/* The maps of the lights src names over the scene's bounding sphere (fit=scene). */
+static inline enum ssg_err maps_with(const struct ssg_scene *s, const struct ssg_frame *frame,
+                                     int res, struct ssg_lightmap_sources src,
+                                     enum ssg_backend backend, struct ssg_image *out[3])
+{
+    return maps_fit(s, frame, res, src, "scene", backend, out);
 }
 
 /* The maps of the scene's own lights alone. */

@@ -101,7 +101,7 @@ static void kept_by_camera_move(const struct ssg_graph *g, unsigned char *kept)
 {
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
-        int keep = !(ssg_node_reads(n->desc) & SSG_READS_CAMERA);
+        int keep = !(ssg_gnode_reads(g, n) & SSG_READS_CAMERA);
         for (int k = 0; k < ssg_gnode_conn_count(n); k++) {
             const struct gconn *in = ssg_gnode_conn(n, k);
             if (in->node >= 0 && !kept[in->node])

@@ -211,11 +211,51 @@ static void orbit_sequence(void)
     ssg_graph_destroy(&g);
 }
 
+/* Four frames under a sun: gi.graph's direct-light maps are fitted to the view
+   (lightmaps fit=view), so on an orbit they are made again for each moved camera, and
+   only then: the reflective shadow maps (fit=scene) and, with a still camera, the fitted
+   maps too are made once. */
+static void sun_sequence(const char *scene, const struct expect *want, int count)
+{
+    struct ssg_overrides ov = {.width = 48, .height = 32, .seed = -1, .sets = sets,
+                               .set_count = 3, .scene = scene,
+                               .lights = "examples/lights/sun.scene"};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = NULL;
+    CHECK_EQ(ssg_graph_load(GRAPH, &ov, &g, &d), SSG_OK);
+    struct ssg_run_stats s = {0};
+    int ran = g && run(g, 4, &s);
+    for (int k = 0; ran && k < count; k++) {
+        const struct ssg_run_node *n = node_of(&s, want[k].node);
+        int ok = n && n->why && !strcmp(n->why, want[k].why);
+        if (!ok)
+            fprintf(stderr, "%s under the sun: node %s says '%s', expected '%s'\n", scene,
+                    want[k].node, n && n->why ? n->why : "(none)", want[k].why);
+        CHECK(ok);
+    }
+    ssg_run_stats_free(&s);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+static void sun_sequences(void)
+{
+    static const struct expect orbit[] = {
+        {"lm", "first run, camera moved x3"}, {"dl", "first run, camera moved x3"},
+        {"lb", "first run, kept x3"}};
+    static const struct expect still[] = {
+        {"lm", "first run, kept x3"}, {"dl", "first run, kept x3"},
+        {"lb", "first run, kept x3"}};
+    sun_sequence("examples/cornell_orbit.scene", orbit, 3);
+    sun_sequence("examples/cornell.scene", still, 3);
+}
+
 int main(void)
 {
     const char *tmp = getenv("SSG_TMP");
     snprintf(out_dir, sizeof out_dir, "%s", tmp ? tmp : CHECK_TMP_ROOT "/ssg_test_redo");
     changes_in_turn();
     orbit_sequence();
+    sun_sequences();
     return check_report();
 }

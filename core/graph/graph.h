@@ -120,6 +120,14 @@ static inline const struct gconn *ssg_gnode_conn(const struct gnode *n, int k)
     return k < SSG_MAX_PORTS ? &n->in[k] : &n->extra[k - SSG_MAX_PORTS];
 }
 
+/* What node n of g reads under its parameters and g's scene (node.h,
+   ssg_node_reads_with): the one mask the redo rule, a sequence's held nodes and
+   tests/test_camera_deps.c use. */
+static inline unsigned ssg_gnode_reads(const struct ssg_graph *g, const struct gnode *n)
+{
+    return ssg_node_reads_with(n->desc, n->params, g->scene);
+}
+
 /* Before frame `frame` of a run (first: the run's first frame; frames: the run's count;
  * live: the graph keeps its run state): puts the frame's camera (from the scene's path)
  * into the scene and the frame, and fills *step. Returns 1 when the camera changed, so

@@ -67,7 +67,7 @@ void ssg_redo_reading(struct ssg_graph *g, struct ssg_live *l, unsigned changed,
                       unsigned level, enum ssg_why why)
 {
     for (int p = 0; p < g->order_count; p++)
-        if (ssg_node_reads(g->nodes[g->order[p]].desc) & changed)
+        if (ssg_gnode_reads(g, &g->nodes[g->order[p]]) & changed)
             ssg_redo(g, l, p, level, why);
 }
 

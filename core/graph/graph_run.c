@@ -217,7 +217,7 @@ static void mark_held(struct run *r, int frames)
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
         int hold = frames > 1 && !n->desc->is_sink && !ssg_history_reads_prev(n) &&
-                   !(ssg_node_reads(n->desc) & changing);
+                   !(ssg_gnode_reads(g, n) & changing);
         for (int k = 0; hold && k < ssg_gnode_conn_count(n); k++)
             hold = ssg_gnode_conn(n, k)->node < 0 || r->hold[ssg_gnode_conn(n, k)->node];
         r->hold[g->order[p]] = (unsigned char)hold;

@@ -214,6 +214,10 @@ enum ssg_reads {
 
 /* The node's reads, SSG_READS_ALL where the descriptor declares none. */
 static inline unsigned ssg_node_reads(const struct ssg_node_desc *desc);
+/* A node's reads under its parameters and scene: ssg_node_reads narrowed by the
+   descriptor's reads_of, where it has one. */
+static inline unsigned ssg_node_reads_with(const struct ssg_node_desc *desc,
+                                           const void *params, const struct ssg_scene *scene);
 
 /* 1 when the `size` bytes of two parameter structs differ at most in [offset, offset +
  * len): a check_params's test "only this field changed" (SSG_PARAMS_ONLY_CHANGED). Bytewise
@@ -285,6 +289,11 @@ struct ssg_node_desc {
        cameras, and every one that leaves out SSG_READS_LIGHTS under two light sets, and
        requires the same bytes. */
     unsigned reads;
+    /* Optional: the reads of a node under these parameters and scene (NULL: none loaded),
+       a subset of .reads, where they decide whether it reads something (lightmaps reads
+       the camera only with fit=view and a directional light); NULL = .reads. What runs
+       again and what a sequence holds follow it (ssg_node_reads_with). */
+    unsigned (*reads_of)(const void *params, const struct ssg_scene *scene);
     /* The names of every metric the node may report (ssg_metric_report), NULL-terminated;
        NULL = none. What `bench --error NODE.METRIC` is checked against before any run. */
     const char *const *metrics;
@@ -512,6 +521,13 @@ static inline int ssg_shape_same_size(const struct ssg_shape *a, const struct ss
 static inline unsigned ssg_node_reads(const struct ssg_node_desc *desc)
 {
     return desc->reads ? desc->reads : SSG_READS_ALL;
+}
+
+static inline unsigned ssg_node_reads_with(const struct ssg_node_desc *desc,
+                                           const void *params, const struct ssg_scene *scene)
+{
+    unsigned all = ssg_node_reads(desc);
+    return desc->reads_of && params ? all & desc->reads_of(params, scene) : all;
 }
 
 #endif

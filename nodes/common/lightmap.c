@@ -68,6 +68,8 @@ static void cube_face(const struct ssg_light *light, int side, struct ssg_lightm
     }
 }
 
+const char *const ssg_lightmap_fit_choices[] = {"scene", "view", NULL};
+
 /* The own lights' faces into faces[0 ..]; returns how many. */
 static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sphere *sphere,
                      struct ssg_lightmap_face *faces)
@@ -95,8 +97,26 @@ static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sp
     return n;
 }
 
+/* The own directional lights' faces (after own_faces) fitted to the view. */
+static void fit_to_view(const struct ssg_scene *scene, const struct ssg_lightmap_view *view,
+                        struct ssg_lightmap_face *faces, int n)
+{
+    float lo[3], hi[3];
+    ssg_scene_bounds(scene, lo, hi);
+    for (int i = 0; i < n; i++)
+        if (faces[i].light >= 0 && faces[i].ortho)
+            ssg_lightmap_fit_view(view, lo, hi, &faces[i]);
+}
+
 int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
                        struct ssg_lightmap_face *faces, int max)
+{
+    return ssg_lightmap_faces_fit(scene, src, SSG_LIGHTMAP_FIT_SCENE, NULL, faces, max);
+}
+
+int ssg_lightmap_faces_fit(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
+                           enum ssg_lightmap_fit fit, const struct ssg_lightmap_view *view,
+                           struct ssg_lightmap_face *faces, int max)
 {
     int count = ssg_lightmap_face_count(scene, src);
     if (count > max || src.environment < 0 || src.environment > SSG_LIGHTMAP_ENV_MAX)
@@ -105,6 +125,8 @@ int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_source
     if (scene)
         sphere = ssg_scene_bounding_sphere(scene);
     int n = src.own ? own_faces(scene, &sphere, faces) : 0;
+    if (fit == SSG_LIGHTMAP_FIT_VIEW && scene && view)
+        fit_to_view(scene, view, faces, n);
     float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
     ssg_lightmap_env_directions(src.environment, dirs);
     for (int k = 0; k < src.environment; k++) {

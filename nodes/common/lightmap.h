@@ -44,6 +44,8 @@
 #include "common/shadowmap.h"
 
 struct ssg_scene;
+struct ssg_camera;
+struct ssg_frame;
 
 enum { SSG_LIGHTMAP_CUBE_FACES = 6 };
 /* Most faces one set of maps may have: the normal and flux images hold 3 channels a face
@@ -87,6 +89,41 @@ int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_s
    over max (nothing meaningful written). */
 int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
                        struct ssg_lightmap_face *faces, int max);
+
+/* Where a directional light's map lies (the `fit` parameter of lightmaps and direct_light,
+   which must agree: both build the faces). SCENE: over the scene's bounding sphere, the
+   same for every camera (what a reflective shadow map needs, its senders off screen too).
+   VIEW: a square in the light's plane around what the camera can see (its frustum, near to
+   far, clipped to the scene's box), turned in the plane to the smallest such square, padded
+   by SSG_LIGHTMAP_FIT_PAD texels; the depth axis and the plane stay the scene fit's, so
+   every occluder between the light and what is seen is still in the map. Never larger than
+   the scene fit; nothing visible keeps the scene fit. Environment lights always SCENE. */
+enum ssg_lightmap_fit { SSG_LIGHTMAP_FIT_SCENE, SSG_LIGHTMAP_FIT_VIEW };
+/* Their names as parameters take them ("scene", "view"), NULL-terminated. */
+extern const char *const ssg_lightmap_fit_choices[];
+/* Texels of margin a view-fitted map keeps on every side: a pixel at the view's edge still
+   finds its PCF disc (1.5 texels) and normal offset (2 texels) in the map. */
+enum { SSG_LIGHTMAP_FIT_PAD = 8 };
+
+/* What a view fit reads: the frame (size with guard band, fov_y, near_z, far_z), the
+   camera's pose and the maps' side R (the padding is in texels). */
+struct ssg_lightmap_view {
+    const struct ssg_frame *frame;
+    const struct ssg_camera *camera;
+    int res;
+};
+
+/* ssg_lightmap_faces with the own directional lights' maps fitted by `fit`; view is read
+   only for SSG_LIGHTMAP_FIT_VIEW (may be NULL otherwise). */
+int ssg_lightmap_faces_fit(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
+                           enum ssg_lightmap_fit fit, const struct ssg_lightmap_view *view,
+                           struct ssg_lightmap_face *faces, int max);
+
+/* Fits orthographic face f (a scene-fit face: its plane, axis and frame) to the part of
+   the box [lo, hi] the view sees (lightmap_fit.c); returns 1 when it did, 0 when it left f
+   as it was (nothing of the box visible, or no smaller than f). */
+int ssg_lightmap_fit_view(const struct ssg_lightmap_view *view, const float lo[3],
+                          const float hi[3], struct ssg_lightmap_face *f);
 
 /* SSG_E_VALUE with the reason in why when src names no light at all (own false, no
    environment lights): the check of every node that takes these two parameters. */

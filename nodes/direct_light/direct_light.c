@@ -83,8 +83,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     c->u.res = maps->width;
     c->face_count = need;
-    if (ssg_lightmap_faces(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, c->faces,
-                           SSG_LIGHTMAP_FACES_MAX) < 0)
+    struct ssg_lightmap_view view = {ctx->frame, &ctx->scene->camera, maps->width};
+    if (ssg_lightmap_faces_fit(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, p->fit, &view, c->faces,
+                               SSG_LIGHTMAP_FACES_MAX) < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     ssg_camera_frame(&ctx->scene->camera, c->u.rot, c->u.eye);

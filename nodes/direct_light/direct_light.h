@@ -66,7 +66,11 @@ SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OU
       "directional lights' angular diameter (the sun: 0.53): > 0 gives PCSS soft "         \
       "shadows; 0 = hard",                                                                 \
       .def = 0, .min = 0, .max = 45, .unit = "degrees",                                    \
-      .host_only = 1) /* prepare(): the lights' spread */
+      .host_only = 1) /* prepare(): the lights' spread */                                  \
+    P(ENUM, fit,                                                                           \
+      "where the maps' directional lights lie: the fit of the lightmaps node that made "  \
+      "them (scene or view; the two must agree)",                                          \
+      .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
 
 /* One light as both backends read it. */

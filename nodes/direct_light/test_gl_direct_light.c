@@ -16,7 +16,8 @@
 enum { W = 96, H = 72 };
 static const struct ssg_frame FRAME = {W, H, 40, 0.05f, 20, 1, 0};
 
-static void parity(const char *name, const char *lights, const char *const *sets, int n)
+static void parity(const char *name, const char *lights, const char *const *sets, int n,
+                   const char *fit)
 {
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
@@ -26,7 +27,7 @@ static void parity(const char *name, const char *lights, const char *const *sets
         return;
     struct ssg_image *g[SSG_GBUFFER_OUTPUTS], *m[3], *cpu[2], *gl[2];
     gbuffer_of(s, &FRAME, g);
-    CHECK_EQ(maps_of(s, &FRAME, 256, SSG_BACKEND_CPU, m), SSG_OK);
+    CHECK_EQ(maps_fit(s, &FRAME, 256, SSG_LIGHTMAP_OWN_ONLY, fit, SSG_BACKEND_CPU, m), SSG_OK);
     CHECK_EQ(direct_of(s, &FRAME, g, m[0], sets, n, SSG_BACKEND_CPU, cpu), SSG_OK);
     CHECK_EQ(direct_of(s, &FRAME, g, m[0], sets, n, SSG_BACKEND_GL, gl), SSG_OK);
     for (int k = 0; k < 2; k++) {
@@ -46,8 +47,11 @@ static void parity(const char *name, const char *lights, const char *const *sets
 
 int main(void)
 {
-    parity("point", NULL, NULL, 0);
+    parity("point", NULL, NULL, 0, "scene");
     const char *soft[] = {"sun_angle=2", "samples=16"};
-    parity("sun", "examples/lights/sun.scene", soft, 2);
+    parity("sun", "examples/lights/sun.scene", soft, 2, "scene");
+    /* the sun's map fitted to the view, read with the same fit */
+    const char *fitted[] = {"fit=view"};
+    parity("sun fitted", "examples/lights/sun.scene", fitted, 1, "view");
     return check_report();
 }

@@ -106,8 +106,8 @@ static int has_flux(const float flux[3])
     return flux[0] > 0.0f || flux[1] > 0.0f || flux[2] > 0.0f;
 }
 
-/* The faces as lightmaps.glsl reads them (lightmaps.h). */
-static void pack_faces(struct ssg_lightmaps_consts *c)
+/* The faces as lightmaps.glsl reads them (lightmaps.h); radius: the scene's. */
+static void pack_faces(struct ssg_lightmaps_consts *c, float radius)
 {
     for (int i = 0; i < c->count; i++) {
         const struct ssg_lightmap_face *face = &c->faces[i];
@@ -121,7 +121,7 @@ static void pack_faces(struct ssg_lightmaps_consts *c)
         int drawn = face->light >= 0 ||
                     (ssg_lightmap_face_env(face) >= 0 && has_flux(c->flux[i]));
         o[12] = face->half, o[13] = (float)face->ortho, o[17] = (float)drawn;
-        o[18] = o[19] = 0.0f;
+        o[18] = radius, o[19] = 0.0f;
     }
 }
 
@@ -132,7 +132,9 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (!ctx->scene)
         return ssg_node_fail(ctx, SSG_E_VALUE, "needs a scene");
     c->res = p->resolution;
-    c->count = ssg_lightmap_faces(ctx->scene, sources(p), c->faces, SSG_LIGHTMAP_FACES_MAX);
+    struct ssg_lightmap_view view = {ctx->frame, &ctx->scene->camera, p->resolution};
+    c->count = ssg_lightmap_faces_fit(ctx->scene, sources(p), p->fit, &view, c->faces,
+                                      SSG_LIGHTMAP_FACES_MAX);
     if (c->count < 0 || c->count != ctx->out_shape[SSG_LIGHTMAPS_OUT_DEPTH].channels)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need %d map faces, the "
                              "depth image bound has %d channels (a graph sizes it itself)",
@@ -152,8 +154,21 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         c->u.far_z = far * 1.01f > c->u.far_z ? far * 1.01f : c->u.far_z;
     }
     free(env_e);
-    pack_faces(c);
+    pack_faces(c, sphere.radius);
     return SSG_OK;
+}
+
+/* The camera only where a directional light's map follows it (a point light's cube does
+   not): without a scene, the camera too. */
+static unsigned reads_of(const void *params, const struct ssg_scene *scene)
+{
+    const struct ssg_lightmaps_params *p = params;
+    int follows = p->fit == SSG_LIGHTMAP_FIT_VIEW && p->own;
+    for (int i = 0; follows && scene && i < scene->light_count; i++)
+        if (scene->lights[i].kind == SSG_LIGHT_DIRECTIONAL)
+            return SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA;
+    return SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS |
+           (follows && !scene ? SSG_READS_CAMERA : 0);
 }
 
 SSG_PARAMS_TABLE(params, ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
@@ -170,8 +185,9 @@ const struct ssg_node_desc ssg_node_lightmaps = {
     SSG_NODE_PARAMS(params, struct ssg_lightmaps_params),
     .consts_size = sizeof(struct ssg_lightmaps_consts),
     SSG_NODE_UNIFORMS(uniforms, struct ssg_lightmaps_consts, u),
-    /* the lights' own views, in world space */
-    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
+    /* the lights' own views, in world space; fit=view follows the camera (reads_of) */
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
+    .reads_of = reads_of,
     .check = check,
     .check_scene = check_scene,
     .prepare = prepare,

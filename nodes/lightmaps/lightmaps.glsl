@@ -6,7 +6,7 @@
 #include "scene.glsl"   // Mesh, vdata, vindex, scene_mesh, fetch3
 #include "surface.glsl" // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per face (prepare()'s face_floats): origin, u, v, axis, half, ortho, flux rgb, has a light,
-// 2 unused.
+// the depth range's half (orthographic: the scene's radius, whatever the map's side), 1 unused.
 layout(std430, binding = 5) readonly buffer Faces { float face[]; };
 const int FACE = 20;
 #pragma ssg_params
@@ -25,8 +25,9 @@ void main()
     float half_side = face[FACE * ssg_layer + 12];
     if (face[FACE * ssg_layer + 17] == 0.0)
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // the empty face of a scene without lights
-    else if (face[FACE * ssg_layer + 13] != 0.0)
-        gl_Position = vec4(du / half_side, dv / half_side, z / half_side - 1.0, 1.0);
+    else if (face[FACE * ssg_layer + 13] != 0.0) // depth 0 .. 2 radius: the whole scene
+        gl_Position = vec4(du / half_side, dv / half_side, z / face[FACE * ssg_layer + 18] - 1.0,
+                           1.0);
     else
         gl_Position = vec4(du, dv, (z * (far_z + near_z) - 2.0 * far_z * near_z) /
                                        (far_z - near_z), z);

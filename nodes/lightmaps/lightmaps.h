@@ -37,7 +37,13 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "the scene's environment as this many directional lights too (lightprobe's "        \
       "uniform directions, each its share of the probe; 0 = none), so that rsm bounces "   \
       "the sky or probe; an rsm reading these maps needs the same own and environment",   \
-      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)  \
+    P(ENUM, fit,                                                                           \
+      "a directional light's map over the scene's bounding sphere, or over what the "     \
+      "camera sees (view: finer shadows, made again when the camera moves; a "            \
+      "direct_light reading it needs the same fit; an rsm needs scene, its senders off "  \
+      "screen)",                                                                           \
+      .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
 
 /* Floats a face takes in the GL shader's storage buffer (lightmaps.glsl's FACE). */
@@ -61,7 +67,9 @@ struct ssg_lightmaps_consts {
                                               (cube, times the texel's solid angle) */
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];
     /* the same faces as lightmaps.glsl reads them, SSG_LIGHTMAPS_FACE_FLOATS each: origin,
-       u, v, axis, half, ortho, flux rgb, has a light (1 or 0), 2 unused */
+       u, v, axis, half, ortho, flux rgb, has a light (1 or 0), the depth range's half
+       (the scene's radius: an orthographic face spans depths 0 .. 2 radius, also when
+       fitted to the view, whose plane is the scene fit's), 1 unused */
     float face_floats[SSG_LIGHTMAPS_FACE_FLOATS * SSG_LIGHTMAP_FACES_MAX];
 };
 

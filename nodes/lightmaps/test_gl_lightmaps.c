@@ -16,7 +16,7 @@ static const struct ssg_frame FRAME = {32, 24, 40, 0.05f, 20, 1, 0};
 /* Texels whose depth differs by more than `tol` (in share of the texels), and the mean
    |difference| of each output over the texels whose depth agrees. */
 static void parity(const char *scene, const char *lights, struct ssg_lightmap_sources src,
-                   int res, double max_share, const double mean_tol[3])
+                   const char *fit, int res, double max_share, const double mean_tol[3])
 {
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
@@ -25,8 +25,8 @@ static void parity(const char *scene, const char *lights, struct ssg_lightmap_so
     if (!s)
         return;
     struct ssg_image *cpu[3], *gl[3];
-    CHECK_EQ(maps_with(s, &FRAME, res, src, SSG_BACKEND_CPU, cpu), SSG_OK);
-    CHECK_EQ(maps_with(s, &FRAME, res, src, SSG_BACKEND_GL, gl), SSG_OK);
+    CHECK_EQ(maps_fit(s, &FRAME, res, src, fit, SSG_BACKEND_CPU, cpu), SSG_OK);
+    CHECK_EQ(maps_fit(s, &FRAME, res, src, fit, SSG_BACKEND_GL, gl), SSG_OK);
     float tol = 1e-3f * ssg_scene_bounding_sphere(s).radius;
     size_t texels = (size_t)res * res, n = texels * (size_t)cpu[0]->channels, off = 0;
     double mean[3] = {0, 0, 0};
@@ -71,12 +71,18 @@ int main(void)
        bunny under the sun and the probe 0 % off, at most 9.8e-8, 1.7e-8 and 0 (the same
        flux bits), so 0 texels off and flux exact there. */
     const double cornell[3] = {1.7e-8, 8.2e-4, 1.1e-7}, bunny[3] = {4e-7, 6.8e-8, 0};
-    parity("examples/cornell.scene", NULL, SSG_LIGHTMAP_OWN_ONLY, 128, 0.0013, cornell);
-    parity("examples/bunny.scene", "examples/lights/sun.scene", SSG_LIGHTMAP_OWN_ONLY, 256,
-           0, bunny);
+    parity("examples/cornell.scene", NULL, SSG_LIGHTMAP_OWN_ONLY, "scene", 128, 0.0013,
+           cornell);
+    parity("examples/bunny.scene", "examples/lights/sun.scene", SSG_LIGHTMAP_OWN_ONLY,
+           "scene", 256, 0, bunny);
+    /* the sun's map fitted to the view (fit=view): the same faces on both backends, the
+       bunny's texels finer */
+    parity("examples/bunny.scene", "examples/lights/sun.scene", SSG_LIGHTMAP_OWN_ONLY, "view",
+           256, 0, bunny);
     /* the courtyard probe as 16 environment lights (own=false): the faces of the lights
        that carry light */
     const struct ssg_lightmap_sources env = {0, 16};
-    parity("examples/bunny.scene", "examples/lights/courtyard.scene", env, 128, 0, bunny);
+    parity("examples/bunny.scene", "examples/lights/courtyard.scene", env, "scene", 128, 0,
+           bunny);
     return check_report();
 }

@@ -92,8 +92,70 @@ static void test_ortho_face(const struct ssg_scene *s)
         CHECK_NEAR(c[i], -f[0].axis[i], 1e-6);
 }
 
+/* The view fit (lightmap.h, SSG_LIGHTMAP_FIT_VIEW) by hand. The sun straight down, l = +y:
+   ssg_shadow_frame_make gives u = +x, v = -z (Duff et al. with l = (0, 1, 0): sign 1,
+   a = -1, b = 0). The scene's box is x, z in [-20, 20], y in [0, 1]. A camera at height 10
+   looking straight down with a 90 degree square frame sees, at distance d, the square of
+   half side d; clipped to the box (d from 9 to 10) the widest is the floor's, d = 10: the
+   square x, z in [cx - 10, cx + 10] x [-10, 10] for a camera above (cx, 10, 0). Its
+   smallest square in the light's plane is itself, side 20, not turned; with the padding of
+   8 texels a side at R = 64 the map's half side is 10 x 64 / 48 = 40 / 3, centred over
+   (cx, 0): the floor's corner (cx + 10, 0, 10) lands at texel x = (10 / (40 / 3) + 1) 32 =
+   56 = R - 8, y = (-10 / (40 / 3) + 1) 32 = 8 (v = -z). The depth axis and the plane stay
+   the scene fit's. The same camera turned 45 degrees about the vertical (up along
+   (1, 0, -1)) sees that square turned, and the fit turns with it: half side 40 / 3 again
+   (unturned it would need 10 sqrt 2 x 64 / 48) and u = (u + v) / sqrt 2. A camera looking
+   up sees none of the box: the scene fit stays. */
+static void fit_case(const char *camera, float cx, float turn, int fitted)
+{
+    char text[600];
+    snprintf(text, sizeof text, "%s\nplane(center=[0, 0, 0], normal=[0, 1, 0], "
+             "size=[40, 0, 40])\nbox(center=[0, 0.5, 0], size=[1, 1, 1])\n"
+             "directional_light(direction=[0, -1, 0])\n", camera);
+    struct ssg_scene *s = scene_from_text("lm_fit_view", text);
+    if (!s)
+        return;
+    const struct ssg_frame frame = {64, 64, 90, 1, 20, 1, 0};
+    struct ssg_lightmap_view view = {&frame, &s->camera, 64};
+    struct ssg_lightmap_face scene_fit[1], f[1];
+    CHECK_EQ(ssg_lightmap_faces(s, SSG_LIGHTMAP_OWN_ONLY, scene_fit, 1), 1);
+    CHECK_EQ(ssg_lightmap_faces_fit(s, SSG_LIGHTMAP_OWN_ONLY, SSG_LIGHTMAP_FIT_VIEW, &view, f,
+                                    1), 1);
+    float half = fitted ? 40.0f / 3.0f : scene_fit[0].half;
+    float c = cosf(turn), sn = sinf(turn);
+    CHECK_NEAR(f[0].half, half, 1e-4);
+    CHECK_NEAR(f[0].origin[0], fitted ? cx : scene_fit[0].origin[0], 1e-4);
+    CHECK_NEAR(f[0].origin[1], scene_fit[0].origin[1], 1e-6);
+    CHECK_NEAR(f[0].origin[2], scene_fit[0].origin[2], 1e-4);
+    for (int k = 0; k < 3; k++) {
+        CHECK(f[0].axis[k] == scene_fit[0].axis[k]);
+        CHECK_NEAR(f[0].u[k], c * scene_fit[0].u[k] + sn * scene_fit[0].v[k], 1e-5);
+        CHECK_NEAR(f[0].v[k], -sn * scene_fit[0].u[k] + c * scene_fit[0].v[k], 1e-5);
+    }
+    if (fitted && turn == 0.0f) {
+        float corner[3] = {cx + 10.0f, 0.0f, 10.0f}, x = -1, y = -1, z = -1;
+        CHECK(ssg_lightmap_project(&f[0], 64, corner, &x, &y, &z));
+        CHECK_NEAR(x, 56.0f, 1e-3);
+        CHECK_NEAR(y, 8.0f, 1e-3);
+    }
+    ssg_scene_destroy(&s);
+}
+
+static void test_fit_view(void)
+{
+    fit_case("camera(position=[0, 10, 0], target=[0, 0, 0], up=[0, 0, -1], fov=90, "
+             "near=1, far=20)", 0.0f, 0.0f, 1);
+    fit_case("camera(position=[3, 10, 0], target=[3, 0, 0], up=[0, 0, -1], fov=90, "
+             "near=1, far=20)", 3.0f, 0.0f, 1);
+    fit_case("camera(position=[0, 10, 0], target=[0, 0, 0], up=[1, 0, -1], fov=90, "
+             "near=1, far=20)", 0.0f, (float)(M_PI / 4), 1);
+    fit_case("camera(position=[0, 10, 0], target=[0, 20, 0], up=[0, 0, -1], fov=90, "
+             "near=1, far=5)", 0.0f, 0.0f, 0);
+}
+
 int main(void)
 {
+    test_fit_view();
     const char *base = "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
                        "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n";
     char text[400];
