@@ -170,9 +170,19 @@ def render(binary, size, paths, out_dir):
     return os.path.join(out_dir, "gi_error.exr")
 
 
+def surface_of(exr, *images):
+    """The pixels with a surface: the EXR's depth where it has one, else where any image is
+    not black (gi_error.graph writes no depth: its write node has no input to spare; a
+    surface black in every image shows no ratio either way)."""
+    depth = read(exr + ":depth")
+    if depth.shape[2]:
+        return depth[..., 0] > 0
+    return np.any([np.any(img != 0, axis=2) for img in images], axis=0)
+
+
 def compose(exr, blur):
     truth, gi, ssdo = read(exr)[..., :3], read(exr + ":gi"), read(exr + ":ssdo")
-    surface = read(exr + ":depth")[..., 0] > 0
+    surface = surface_of(exr, truth, gi, ssdo)
     r = log_ratio(gi, truth, surface, blur)
     first = worst_window(np.abs(r), surface)
     second = second_window(np.abs(r), surface, first)
