@@ -59,6 +59,7 @@ struct chunk {
     int count[SSG_UPSAMPLE_MAX_FACTOR];    /* pixels of each phase in this chunk */
     float dp[CHUNK], kd[CHUNK];            /* depth, depth_scale / depth */
     float gx[CHUNK], gy[CHUNK];            /* depth slope per full-res px (plane_slope) */
+    float sx[CHUNK], sy[CHUNK];            /* the same in pixel order (row_slopes) */
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
     float ref[MAX_CH][CHUNK];              /* centre tap's value: sums are relative to it */
     float acc[MAX_CH][CHUNK], wsum[CHUNK];
@@ -99,18 +100,41 @@ static void sample_offset(const struct job *j, int qx, int qy, float dq, float *
             }
 }
 
+/* plane_slope along x at pixel x of a row, 0 for a neighbour outside the image. */
+static float slope_x(const struct job *j, const float *row, int x)
+{
+    return plane_slope(row[x], x > 0 ? row[x - 1] : 0.0f, x + 1 < j->w ? row[x + 1] : 0.0f,
+                       j->c->max_slope);
+}
+
+/* The slopes of full-res pixels x0 .. x0 + len - 1 of row y, in pixel order into sx, sy:
+   straight loops over the row (along x over its interior, both neighbours inside the
+   image; the image's first and last pixel apart), where one call a pixel would not
+   vectorise. */
+static void row_slopes(const struct job *j, int y, int x0, int len, float *sx, float *sy)
+{
+    const float *row = j->depth + (size_t)y * (size_t)j->w, ms = j->c->max_slope;
+    const int has_up = y > 0, has_down = y + 1 < j->h;
+    const float *up = has_up ? row - j->w : row, *down = has_down ? row + j->w : row;
+    for (int t = 0; t < len; t++) {
+        int x = x0 + t;
+        sy[t] = plane_slope(row[x], has_up ? up[x] : 0.0f, has_down ? down[x] : 0.0f, ms);
+    }
+    int a = x0 == 0 ? 1 : 0, b = x0 + len == j->w ? len - 1 : len;
+    for (int t = a; t < b; t++)
+        sx[t] = plane_slope(row[x0 + t], row[x0 + t - 1], row[x0 + t + 1], ms);
+    if (a == 1)
+        sx[0] = slope_x(j, row, x0);
+    if (b == len - 1 && len - 1 >= a)
+        sx[len - 1] = slope_x(j, row, x0 + len - 1);
+}
+
 static void setup_pixel(const struct job *j, struct chunk *k, int i, int x, int y, size_t lo)
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x;
     float d = j->depth[o];
     k->dp[i] = d;
     k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
-    /* the four neighbours' depths, 0 outside the image */
-    const float *at = j->depth + o, ms = j->c->max_slope;
-    float left = x > 0 ? at[-1] : 0.0f, right = x + 1 < j->w ? at[1] : 0.0f;
-    float up = y > 0 ? at[-j->w] : 0.0f, down = y + 1 < j->h ? at[j->w] : 0.0f;
-    k->gx[i] = plane_slope(d, left, right, ms);
-    k->gy[i] = plane_slope(d, up, down, ms);
     k->wsum[i] = 0.0f;
     for (int ch = 0; ch < j->channels; ch++) {
         k->acc[ch][i] = 0.0f;
@@ -128,11 +152,15 @@ static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int
 {
     size_t lrow = (size_t)(y / j->k) * (size_t)j->lw;
     k->per_phase = cw / j->k;
+    row_slopes(j, y, x0, len, k->sx, k->sy);
     for (int m = 0; m < j->k; m++) {
         k->count[m] = m < len ? (len - m + j->k - 1) / j->k : 0;
-        for (int t = 0; t < k->count[m]; t++)
-            setup_pixel(j, k, m * k->per_phase + t, x0 + m + j->k * t, y,
-                        lrow + (size_t)(x0 / j->k + t));
+        for (int t = 0; t < k->count[m]; t++) {
+            int i = m * k->per_phase + t, c = m + j->k * t;
+            setup_pixel(j, k, i, x0 + c, y, lrow + (size_t)(x0 / j->k + t));
+            k->gx[i] = k->sx[c];
+            k->gy[i] = k->sy[c];
+        }
     }
 }
 
