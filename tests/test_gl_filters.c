@@ -2,7 +2,8 @@
  * `bilateral` (full window and separable, every normal-term variant, no normal, 1 and 3
  * channels), `atrous` (1 to 4 dilated passes, rgb, in2, without normals), `upsample`
  * (factors 2, 3 and 4, odd sizes, in2 of 1 and 3 channels or none,
- * with and without normals, the closest-depth and centre fallbacks) and `downsample`
+ * with and without normals, the closest-depth and centre fallbacks, samples taken all over
+ * their blocks, slanted planes) and `downsample`
  * (factors 2 and 4, odd sizes, depth ties, background blocks, all or few ports).
  *
  * The G-buffer is synthetic: two tilted surfaces meeting at a depth step, a background
@@ -18,7 +19,7 @@
 
 /* bilateral, atrous and upsample: each node's descriptor states its bound, 4x what these
    cases measure on llvmpipe in a Release build (bilateral max 7.8e-7, mean 9.3e-8; atrous
-   3.6e-7, 4.5e-8; upsample 3.0e-7, 3.2e-8; a Debug build's CPU side gives 0). GLSL lets a
+   3.6e-7, 4.5e-8; upsample 3.0e-7, 3.5e-8; a Debug build's CPU side gives 0). GLSL lets a
    GPU be 2.5 ulp off in a division and inexact in sqrt: with every division and 1/sqrt
    of both shaders perturbed by 3e-7 relative, these cases measured up to 9.5e-7 max and
    3.6e-7 mean, which such a GPU would need as its own bound. No border: taps outside the
@@ -151,16 +152,23 @@ static void atrous_cases(void)
     free_gbuf(&g);
 }
 
-/* Every k-th pixel of a full-res image (a low-res guide for factors downsample lacks). */
+/* One pixel of each k x k block of a full-res image, the one a hash picks (clipped to the
+   image), as downsample keeps one (a low-res guide for factors downsample lacks): upsample
+   finds it again by its depth on the tilted planes, so the taps sit all over their blocks. */
 static struct ssg_image *subsample(const struct ssg_image *im, int k)
 {
     int lw = (im->width + k - 1) / k, lh = (im->height + k - 1) / k;
     struct ssg_image *low = ssg_image_create(lw, lh, im->channels);
-    for (int c = 0; c < im->channels; c++)
-        for (int y = 0; y < lh; y++)
-            for (int x = 0; x < lw; x++)
+    for (int y = 0; y < lh; y++)
+        for (int x = 0; x < lw; x++) {
+            unsigned h = (unsigned)(hash01((unsigned)(y * lw + x)) * (float)(k * k));
+            int px = x * k + (int)(h % (unsigned)k), py = y * k + (int)(h / (unsigned)k);
+            px = px < im->width ? px : im->width - 1;
+            py = py < im->height ? py : im->height - 1;
+            for (int c = 0; c < im->channels; c++)
                 low->data[((size_t)c * lh + y) * lw + x] =
-                    im->data[((size_t)c * im->height + y * k) * im->width + x * k];
+                    im->data[((size_t)c * im->height + py) * im->width + px];
+        }
     return low;
 }
 

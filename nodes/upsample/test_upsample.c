@@ -184,14 +184,15 @@ static void test_step(void)
 }
 
 /* A smooth ramp on a plane of constant depth: the low-res pixel (X, Y) holds the ramp
-   r(x, y) = 0.2 + 0.01 x + 0.005 y at its centre, full-res coordinates (2X + 1, 2Y + 1).
-   The depth term is 1, so the output is the ramp at the Gaussian-weighted mean of the tap
-   centres. A full-res pixel sits at low-res offset u = +-0.25 from its block's centre; with
-   3 taps at u - 0.75, u + 0.25, u + 1.25 (or mirrored) and sigma 1 the weights are
-   e^-0.28125, e^-0.03125, e^-0.78125, whose mean offset is 0.1139 low-res px = 0.2278
-   full-res px. So |out - r(x + 0.5, y + 0.5)| <= 0.2278 (0.01 + 0.005) + 1e-6 = 0.003418
-   + 1e-6 away from the border (taps cut off there). It also must not be better than the
-   bound allows by accident: the largest error is that bias, not 0. */
+   r(x, y) = 0.2 + 0.01 x + 0.005 y at its block's first pixel (2X, 2Y), the one
+   `downsample` keeps when a block's depths are equal and the one upsample finds there. The
+   depth term is 1 (flat plane: slope 0), so the output is the ramp at the Gaussian-weighted
+   mean of the sample positions, sigma 1 low-res px = 2 full-res px. An even coordinate has
+   its samples at -2, 0, +2: no bias; an odd one at -3, -1, +1 with weights e^-1.125,
+   e^-0.125, e^-0.125, whose mean offset is -3 e^-1.125 / (e^-1.125 + 2 e^-0.125) =
+   -0.4661 full-res px. So |out - r(x, y)| <= 0.4661 (0.01 + 0.005) + 1e-6 away from the
+   border (taps cut off there), at most 1e-6 where x and y are both even, and the largest
+   error is that bias, not 0. */
 static void test_ramp(void)
 {
     enum { FW = 48, FH = 36 };
@@ -204,29 +205,95 @@ static void test_ramp(void)
         for (int x = 0; x < FW / 2; x++) {
             size_t o = (size_t)y * (FW / 2) + (size_t)x;
             s.low_depth->data[o] = 3.0f;
-            s.in->data[o] = (float)(0.2 + 0.01 * (2 * x + 1) + 0.005 * (2 * y + 1));
+            s.in->data[o] = (float)(0.2 + 0.01 * (2 * x) + 0.005 * (2 * y));
         }
     struct ssg_image *out = upsample(&s, NULL, 0);
     if (out) {
-        double worst = 0;
+        double worst = 0, worst_even = 0;
         for (int y = 4; y < FH - 4; y++)
             for (int x = 4; x < FW - 4; x++) {
-                double want = 0.2 + 0.01 * (x + 0.5) + 0.005 * (y + 0.5);
-                worst = fmax(worst, fabs(out->data[(size_t)y * FW + (size_t)x] - want));
+                double want = 0.2 + 0.01 * x + 0.005 * y;
+                double err = fabs(out->data[(size_t)y * FW + (size_t)x] - want);
+                worst = fmax(worst, err);
+                if (x % 2 == 0 && y % 2 == 0)
+                    worst_even = fmax(worst_even, err);
             }
-        CHECK(worst <= 0.2278 * 0.015 + 1e-6);
-        CHECK(worst > 0.5 * 0.2278 * 0.015);
+        CHECK(worst <= 0.4661 * 0.015 + 1e-6);
+        CHECK(worst > 0.5 * 0.4661 * 0.015);
+        CHECK(worst_even <= 1e-6);
     }
     ssg_image_destroy(&out);
     free_set(&s);
 }
 
+/* Depth of full-res pixel (x, y) of a w x h image, 0 outside (the formula's). */
+static double depth_or_0(const struct ssg_image *d, int x, int y)
+{
+    if (x < 0 || y < 0 || x >= d->width || y >= d->height)
+        return 0.0;
+    return d->data[(size_t)y * (size_t)d->width + (size_t)x];
+}
+
+/* The README's slope: the one-sided difference of smaller magnitude over surface
+   neighbours (lo, hi > 0), ties hi - d, 0 when neither is a surface or it is steeper
+   than 0.25 d. */
+static double slope_of(double d, double lo, double hi)
+{
+    double f = hi > 0 ? hi - d : INFINITY, b = lo > 0 ? d - lo : INFINITY;
+    double s = fabs(f) <= fabs(b) ? f : b;
+    return fabs(s) <= 0.25 * d ? s : 0.0;
+}
+
+/* The README's sample position of low-res pixel (qx, qy) at depth dq, factor 2: the first
+   full-res pixel of its block (row-major) of depth dq, else the block's centre. */
+static void sample_at(const struct ssg_image *d, int qx, int qy, double dq, double *sx,
+                      double *sy)
+{
+    *sx = 2 * qx + 0.5, *sy = 2 * qy + 0.5;
+    for (int y = 2 * qy; y < 2 * qy + 2; y++)
+        for (int x = 2 * qx; x < 2 * qx + 2; x++)
+            if (dq > 0 && depth_or_0(d, x, y) == dq) {
+                *sx = x, *sy = y;
+                return;
+            }
+}
+
 /* The documented weights, in double, on random depths and normals (factor 2, size 5, a
-   general normal power and a power of two): |node - formula| < 1e-5 (polynomial exp and
-   ln, a few 1e-7 relative per weight). */
+   general normal power and a power of two), half the low-res depths copied from a pixel
+   of their block (so that the sample positions are found there), the rest not (centre):
+   |node - formula| < 1e-5 (polynomial exp and ln, a few 1e-7 relative per weight). */
+static double formula_at(const struct set *s, int x, int y, int ch, int power)
+{
+    enum { R = 2 };
+    const int fw = s->depth->width, lw = s->in->width, lh = s->in->height;
+    size_t o = (size_t)y * fw + (size_t)x, fp = (size_t)fw * s->depth->height;
+    size_t lp = (size_t)lw * lh;
+    double dp = s->depth->data[o];
+    double gx = slope_of(dp, depth_or_0(s->depth, x - 1, y), depth_or_0(s->depth, x + 1, y));
+    double gy = slope_of(dp, depth_or_0(s->depth, x, y - 1), depth_or_0(s->depth, x, y + 1));
+    double num = 0, den = 0;
+    for (int qy = y / 2 - R; qy <= y / 2 + R; qy++)
+        for (int qx = x / 2 - R; qx <= x / 2 + R; qx++) {
+            if (qx < 0 || qx >= lw || qy < 0 || qy >= lh)
+                continue;
+            size_t q = (size_t)qy * lw + (size_t)qx;
+            double sx, sy, c = 0, dq = s->low_depth->data[q];
+            sample_at(s->depth, qx, qy, dq, &sx, &sy);
+            double rx = x - sx, ry = y - sy, plane = dp - (gx * rx + gy * ry);
+            double dd = (dq - plane) / (0.03 * dp);
+            for (int k = 0; k < 3; k++)
+                c += (double)s->normal->data[k * fp + o] * s->low_normal->data[k * lp + q];
+            double w = exp(-(rx * rx + ry * ry) / (2 * 2.6 * 2.6)) * exp(-0.5 * dd * dd) *
+                       pow(fmax(c, 0), power);
+            num += w * s->in->data[ch * lp + q];
+            den += w;
+        }
+    return num / den;
+}
+
 static void test_formula(void)
 {
-    enum { FW = 21, FH = 15, LW = 11, LH = 8, R = 2 };
+    enum { FW = 21, FH = 15, LW = 11, LH = 8 };
     struct set s = {ssg_image_create(FW, FH, 1), ssg_image_create(FW, FH, 3),
                     ssg_image_create(LW, LH, 3), ssg_image_create(LW, LH, 1),
                     ssg_image_create(LW, LH, 3)};
@@ -237,7 +304,10 @@ static void test_formula(void)
     for (int i = 0; i < LW * LH; i++) {
         for (int c = 0; c < 3; c++)
             s.in->data[(size_t)c * LW * LH + (size_t)i] = (float)uniform01();
-        s.low_depth->data[i] = (float)(2.0 + 0.1 * uniform01());
+        int qx = i % LW, qy = i / LW, px = 2 * qx + i % 2, py = 2 * qy + (i / 3) % 2;
+        s.low_depth->data[i] = i % 4 < 2 && px < FW && py < FH
+                                   ? s.depth->data[(size_t)py * FW + (size_t)px]
+                                   : (float)(2.0 + 0.1 * uniform01());
         set_normal(s.low_normal, (size_t)i, uniform01() - 0.5, uniform01() - 0.5, 1.0);
     }
     static const int powers[] = {5, 8};
@@ -249,31 +319,12 @@ static void test_formula(void)
         if (!out)
             continue;
         double worst = 0;
-        size_t fp = FW * FH, lp = LW * LH;
         for (int y = 0; y < FH; y++)
-            for (int x = 0; x < FW; x++) {
-                size_t o = (size_t)y * FW + (size_t)x;
-                double u = (x + 0.5) / 2 - 0.5, v = (y + 0.5) / 2 - 0.5, dp = s.depth->data[o];
-                double num[3] = {0}, den = 0;
-                for (int qy = y / 2 - R; qy <= y / 2 + R; qy++)
-                    for (int qx = x / 2 - R; qx <= x / 2 + R; qx++) {
-                        if (qx < 0 || qx >= LW || qy < 0 || qy >= LH)
-                            continue;
-                        size_t q = (size_t)qy * LW + (size_t)qx;
-                        double dd = (s.low_depth->data[q] - dp) / (0.03 * dp), c = 0;
-                        for (int ch = 0; ch < 3; ch++)
-                            c += (double)s.normal->data[ch * fp + o] *
-                                 s.low_normal->data[ch * lp + q];
-                        double w = exp(-((u - qx) * (u - qx) + (v - qy) * (v - qy)) /
-                                       (2 * 1.3 * 1.3)) * exp(-0.5 * dd * dd) *
-                                   pow(fmax(c, 0), powers[k]);
-                        for (int ch = 0; ch < 3; ch++)
-                            num[ch] += w * s.in->data[ch * lp + q];
-                        den += w;
-                    }
+            for (int x = 0; x < FW; x++)
                 for (int ch = 0; ch < 3; ch++)
-                    worst = fmax(worst, fabs(out->data[ch * fp + o] - num[ch] / den));
-            }
+                    worst = fmax(worst, fabs(out->data[(size_t)ch * FW * FH +
+                                                       (size_t)y * FW + (size_t)x] -
+                                             formula_at(&s, x, y, ch, powers[k])));
         CHECK(worst < 1e-5);
         ssg_image_destroy(&out);
     }
@@ -317,30 +368,34 @@ static void test_constant(void)
     free_set(&s);
 }
 
-/* Pixels none of the taps sampled: over low-res depths 5, 6 / 7, 8 (values 10, 20 / 30,
-   40) the full-res pixel (0,0) at depth 1 has no weight (exp(-0.5 (4 / 0.05)^2) = 0): it
-   takes the tap of closest depth, 10; pixel (1,0) at depth 100 takes the 8, 40. Pixel
-   (2,0) at depth 6 is a normal case: the 6 (value 20) dominates, the 5 and 7 weigh
-   e^-5.6 of it and less, moving it by well under 0.5. Pixel (3,3) is background: 0. With
-   all taps background (low depth 0) the pixel's own block, the centre tap, is taken. */
+/* Pixels none of the taps sampled, over low-res depths 5, 6 / 7, 8 (values 10, 20 / 30,
+   40), full-res depths (rows top down; 0 = background)
+       1 0 100 0
+       0 6  0  6
+       6 6  6  6
+       6 6  6  0
+   Pixel (0,0) at depth 1 and (2,0) at depth 100 have only background beside them (their
+   planes are flat: slope 0) and no weight (exp(-0.5 (4 / 0.05)^2) = 0): they take the tap
+   of closest depth, 10 and 40. Pixel (1,2) at depth 6 is a normal case: the 6 (value 20,
+   taken at (3,1), 5 full-res px^2 away: e^-0.625) dominates, the 5 and 7 weigh e^-5.9 and
+   e^-5.6 (depth 1/6 off: e^-5.56), the 8 e^-22, moving it by well under 0.5. Pixel (3,3) is
+   background: 0. With all taps background (low depth 0) the pixel's own block, the
+   centre tap, is taken. */
 static void test_fallback(void)
 {
     struct set s = {.depth = ssg_image_create(4, 4, 1), .in = ssg_image_create(2, 2, 1),
                     .low_depth = ssg_image_create(2, 2, 1)};
     static const float low_depth[4] = {5, 6, 7, 8}, values[4] = {10, 20, 30, 40};
-    for (int i = 0; i < 16; i++)
-        s.depth->data[i] = 6.0f;
-    s.depth->data[0] = 1.0f;
-    s.depth->data[1] = 100.0f;
-    s.depth->data[15] = 0.0f;
+    static const float depth[16] = {1, 0, 100, 0, 0, 6, 0, 6, 6, 6, 6, 6, 6, 6, 6, 0};
+    memcpy(s.depth->data, depth, sizeof depth);
     memcpy(s.low_depth->data, low_depth, sizeof low_depth);
     memcpy(s.in->data, values, sizeof values);
     struct ssg_image *out = upsample(&s, NULL, 0);
     if (out) {
         CHECK(out->data[0] == 10.0f);
-        CHECK(out->data[1] == 40.0f);
+        CHECK(out->data[2] == 40.0f);
         CHECK(out->data[15] == 0.0f); /* background */
-        CHECK_NEAR(out->data[2], 20.0, 0.5); /* depth 6: the 6 dominates (others e^-6.9) */
+        CHECK_NEAR(out->data[9], 20.0, 0.5); /* depth 6: the 6 dominates */
         ssg_image_destroy(&out);
     }
     for (int i = 0; i < 4; i++)

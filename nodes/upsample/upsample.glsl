@@ -1,7 +1,8 @@
 // upsample.glsl - the `upsample` node on GL (method in README.md): one invocation per
 // full-res pixel sums the size x size low-res taps around the one containing it in the
 // CPU kernel's order (dy, then dx), relative to the centre tap's value, with the same
-// log-weights (spatial on the low-res grid, relative depth, p ln(n.N)) and one exp; when
+// log-weights (spatial from where each sample was taken, depth against the pixel's own
+// plane there, p ln(n.N)) and one exp; when
 // no tap has weight it takes the tap of closest depth (first in row-major order), the
 // centre when all are background. exp and ln are bilateral_math.h's polynomials (common.glsl);
 // `precise` keeps the compiler from fusing the multiply-adds the CPU rounds twice.
@@ -11,8 +12,8 @@ uniform sampler2DArray src, in2;               // in (a GLSL keyword), in2 (low 
 uniform sampler2DArray depth, normal;          // full res
 uniform sampler2DArray low_depth, low_normal;  // low res
 layout(r32f) uniform writeonly image2DArray dst_out, dst_out2;
-// prepare()'s factor, radius, spatial_k, depth_scale and the normal term's normal_power,
-// normal_min and squarings (upsample.h):
+// prepare()'s factor, radius, spatial_k, depth_scale, max_slope and the normal term's
+// normal_power, normal_min and squarings (upsample.h):
 #pragma ssg_consts
 #include "joint_weights.glsl" // joint_weight(): a tap's weight, as the CPU's add_tap
 
@@ -25,6 +26,41 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_out2;
 #define LOAD ssg_load1
 #define STORE SSG_STORE1
 #endif
+
+// upsample_cpu.c's plane_slope: the one-sided depth difference of smaller magnitude (ties:
+// hi - d), 0 when neither neighbour (depth lo, hi; 0 = background or outside) is a surface
+// or it is steeper than max_slope d (it crosses an edge).
+float plane_slope(float d, float lo, float hi)
+{
+    float inf = uintBitsToFloat(0x7f800000u);
+    precise float f = hi > 0.0 ? hi - d : inf;
+    precise float b = lo > 0.0 ? d - lo : inf;
+    float s = abs(f) <= abs(b) ? f : b;
+    precise float limit = max_slope * d;
+    return abs(s) <= limit ? s : 0.0;
+}
+
+// Full-res depth at p, 0 outside the image.
+float depth_at(ivec2 p)
+{
+    ivec2 size = textureSize(depth, 0).xy;
+    bool inside = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, size));
+    return inside ? ssg_load1(depth, p) : 0.0;
+}
+
+// upsample_cpu.c's sample_offset: where low-res pixel q (depth dq) was taken in its block,
+// the first full-res pixel in row-major order of depth dq exactly, else the centre.
+vec2 sample_offset(ivec2 q, float dq)
+{
+    ivec2 size = textureSize(depth, 0).xy, b0 = q * factor;
+    ivec2 b1 = min(b0 + factor, size);
+    if (dq > 0.0)
+        for (int y = b0.y; y < b1.y; y++)
+            for (int x = b0.x; x < b1.x; x++)
+                if (ssg_load1(depth, ivec2(x, y)) == dq)
+                    return vec2(ivec2(x, y) - b0);
+    return vec2(0.5 * float(factor - 1));
+}
 
 // No tap had weight: the tap of closest depth (first in tap order on ties), or the centre.
 ivec2 fallback(ivec2 l, float dp)
@@ -64,20 +100,23 @@ void main()
         precise VALUE2 acc2 = VALUE2(0.0);
 #endif
         precise float wsum = 0.0;
-        precise float v = (float(p.y) + 0.5) / float(factor) - 0.5;
-        precise float u = (float(p.x - l.x * factor) + 0.5) / float(factor) - 0.5;
+        ivec2 ex = ivec2(1, 0), ey = ivec2(0, 1);
+        vec2 slope = vec2(plane_slope(dp, depth_at(p - ex), depth_at(p + ex)),
+                          plane_slope(dp, depth_at(p - ey), depth_at(p + ey)));
         for (int dy = -radius; dy <= radius; dy++) {
             int qy = l.y + dy;
             if (qy < 0 || qy > last.y)
                 continue;
-            precise float ey = spatial_k * (v - float(qy)) * (v - float(qy));
             for (int dx = -radius; dx <= radius; dx++) {
                 ivec2 q = ivec2(l.x + dx, qy);
                 if (q.x < 0 || q.x > last.x)
                     continue; // the CPU's padding: weight 0, adds nothing
-                precise float ex = u - float(dx);
-                precise float es = spatial_k * ex * ex + ey;
-                float w = joint_weight(low_depth, low_normal, q, es, dp, kd, nc);
+                // the offset from the sample to the pixel, in full-res px (the CPU's rx, ry)
+                vec2 at = sample_offset(q, ssg_load1(low_depth, q));
+                precise vec2 r = vec2(p - q * factor) - at;
+                precise float es = spatial_k * (r.x * r.x + r.y * r.y);
+                precise float plane = dp - (slope.x * r.x + slope.y * r.y);
+                float w = joint_weight(low_depth, low_normal, q, es, plane, kd, nc);
                 wsum += w;
                 acc += w * (LOAD(src, q) - ref);
 #if IN2_CH

@@ -3,8 +3,10 @@
  * As in bilateral_cpu.c the loops run over output pixels innermost: a full-res row is cut
  * into chunks, whose pixels are sorted by phase (x mod k, see struct chunk); for each
  * low-res tap row the part the chunk reaches is copied once into small arrays padded
- * with background, then for each tap column and phase one straight loop over contiguous
- * data adds the weighted values into per-pixel sums. The spatial and depth weights multiply
+ * with background (with where in its block each sample was taken, found once a run for
+ * every low-res pixel: offset_band), then for each tap column and phase one straight loop
+ * over contiguous data adds the weighted values into per-pixel sums; each pixel's depth
+ * slopes are found when its chunk is set up. The spatial and depth weights multiply
  * by adding their logarithms and taking one polynomial exp() (bilateral_math.h), the normal
  * weight c^p by squarings when p is a power of two (the default 16: 4 squarings instead of
  * a log and a multiply in the exponent; as bilateral does); each pixel's sums are
@@ -40,6 +42,8 @@ struct job {
     int w, h;                /* full-res size */
     int lw, lh;              /* low-res size */
     int k;                   /* factor */
+    float *ox, *oy;          /* low res: where in its block each sample was taken
+                                (sample_offset), in the node's scratch */
 };
 
 /* Low-res columns one chunk can reach: its own (at most CHUNK) plus radius each side. */
@@ -54,15 +58,80 @@ struct chunk {
     int per_phase;                         /* slots per phase: chunk width / k */
     int count[SSG_UPSAMPLE_MAX_FACTOR];    /* pixels of each phase in this chunk */
     float dp[CHUNK], kd[CHUNK];            /* depth, depth_scale / depth */
+    float gx[CHUNK], gy[CHUNK];            /* depth slope per full-res px (plane_slope) */
+    float sx[CHUNK], sy[CHUNK];            /* the same in pixel order (row_slopes) */
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal */
     float ref[MAX_CH][CHUNK];              /* centre tap's value: sums are relative to it */
     float acc[MAX_CH][CHUNK], wsum[CHUNK];
     /* the tap row, low-res columns x0 / k - radius on, background outside the image */
     float rd[ROW_MAX], rv[MAX_CH][ROW_MAX], rn[3][ROW_MAX];
+    float rox[ROW_MAX], roy[ROW_MAX]; /* where in its block each was taken (sample_offset) */
 };
 
-static void setup_pixel(const struct job *j, struct chunk *k, int i, size_t o, size_t lo)
+/* The depth slope along one axis at a pixel of depth d whose neighbours there have depths
+   lo and hi (0: background or outside): the one-sided difference of smaller magnitude
+   (ties: hi - d), so that a pixel beside a depth edge takes its own surface's slope; 0
+   when neither neighbour is a surface or the slope is steeper than max_slope d (then it
+   crosses an edge: SSG_UPSAMPLE_MAX_SLOPE). The GL twin is upsample.glsl's plane_slope. */
+static float plane_slope(float d, float lo, float hi, float max_slope)
 {
+    float f = hi > 0.0f ? hi - d : INFINITY, b = lo > 0.0f ? d - lo : INFINITY;
+    float s = fabsf(f) <= fabsf(b) ? f : b;
+    return fabsf(s) <= max_slope * d ? s : 0.0f;
+}
+
+/* Where low-res pixel (qx, qy), of depth dq, was taken in its k x k block: the first
+   full-res pixel in row-major order whose depth is dq exactly (`downsample` copies one
+   pixel a block), else the block's centre (k - 1) / 2 (a low-res image made otherwise,
+   or background). The GL twin is upsample.glsl's sample_offset. */
+static void sample_offset(const struct job *j, int qx, int qy, float dq, float *ox, float *oy)
+{
+    *ox = *oy = 0.5f * (float)(j->k - 1);
+    if (!(dq > 0.0f))
+        return;
+    int x0 = qx * j->k, y0 = qy * j->k;
+    int x1 = x0 + j->k < j->w ? x0 + j->k : j->w, y1 = y0 + j->k < j->h ? y0 + j->k : j->h;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            if (j->depth[(size_t)y * (size_t)j->w + (size_t)x] == dq) {
+                *ox = (float)(x - x0);
+                *oy = (float)(y - y0);
+                return;
+            }
+}
+
+/* plane_slope along x at pixel x of a row, 0 for a neighbour outside the image. */
+static float slope_x(const struct job *j, const float *row, int x)
+{
+    return plane_slope(row[x], x > 0 ? row[x - 1] : 0.0f, x + 1 < j->w ? row[x + 1] : 0.0f,
+                       j->c->max_slope);
+}
+
+/* The slopes of full-res pixels x0 .. x0 + len - 1 of row y, in pixel order into sx, sy:
+   straight loops over the row (along x over its interior, both neighbours inside the
+   image; the image's first and last pixel apart), where one call a pixel would not
+   vectorise. */
+static void row_slopes(const struct job *j, int y, int x0, int len, float *sx, float *sy)
+{
+    const float *row = j->depth + (size_t)y * (size_t)j->w, ms = j->c->max_slope;
+    const int has_up = y > 0, has_down = y + 1 < j->h;
+    const float *up = has_up ? row - j->w : row, *down = has_down ? row + j->w : row;
+    for (int t = 0; t < len; t++) {
+        int x = x0 + t;
+        sy[t] = plane_slope(row[x], has_up ? up[x] : 0.0f, has_down ? down[x] : 0.0f, ms);
+    }
+    int a = x0 == 0 ? 1 : 0, b = x0 + len == j->w ? len - 1 : len;
+    for (int t = a; t < b; t++)
+        sx[t] = plane_slope(row[x0 + t], row[x0 + t - 1], row[x0 + t + 1], ms);
+    if (a == 1)
+        sx[0] = slope_x(j, row, x0);
+    if (b == len - 1 && len - 1 >= a)
+        sx[len - 1] = slope_x(j, row, x0 + len - 1);
+}
+
+static void setup_pixel(const struct job *j, struct chunk *k, int i, int x, int y, size_t lo)
+{
+    size_t o = (size_t)y * (size_t)j->w + (size_t)x;
     float d = j->depth[o];
     k->dp[i] = d;
     k->kd[i] = d > 0.0f ? j->c->depth_scale / d : 0.0f;
@@ -81,13 +150,17 @@ static void setup_pixel(const struct job *j, struct chunk *k, int i, size_t o, s
 
 static void setup_chunk(const struct job *j, struct chunk *k, int y, int x0, int len, int cw)
 {
-    size_t row = (size_t)y * (size_t)j->w, lrow = (size_t)(y / j->k) * (size_t)j->lw;
+    size_t lrow = (size_t)(y / j->k) * (size_t)j->lw;
     k->per_phase = cw / j->k;
+    row_slopes(j, y, x0, len, k->sx, k->sy);
     for (int m = 0; m < j->k; m++) {
         k->count[m] = m < len ? (len - m + j->k - 1) / j->k : 0;
-        for (int t = 0; t < k->count[m]; t++)
-            setup_pixel(j, k, m * k->per_phase + t, row + (size_t)(x0 + m + j->k * t),
-                        lrow + (size_t)(x0 / j->k + t));
+        for (int t = 0; t < k->count[m]; t++) {
+            int i = m * k->per_phase + t, c = m + j->k * t;
+            setup_pixel(j, k, i, x0 + c, y, lrow + (size_t)(x0 / j->k + t));
+            k->gx[i] = k->sx[c];
+            k->gy[i] = k->sy[c];
+        }
     }
 }
 
@@ -106,22 +179,31 @@ static void fill_row(const struct job *j, struct chunk *k, int qy, int x0, int n
             k->rv[ch][t] = inside ? j->in[ch][q] : 0.0f;
         for (int ch = 0; j->lnrm[0] && ch < 3; ch++)
             k->rn[ch][t] = inside ? j->lnrm[ch][q] : 0.0f;
+        float centre = 0.5f * (float)(j->k - 1);
+        k->rox[t] = inside ? j->ox[q] : centre;
+        k->roy[t] = inside ? j->oy[q] : centre;
     }
 }
 
 /* Adds one tap to the n pixels of one phase (slots i0 ..): row column q0 + t for slot
-   i0 + t, spatial log-weight es. `channels` and `mode` are constants at each call site,
-   so each variant is its own straight loop. */
+   i0 + t. bx = x - k qx and by = y - k qy, the pixels' offset from the tap's block corner
+   (the same for the whole phase), less where the sample sits in its block, give the
+   full-res offset (rx, ry) from the sample to the pixel: the spatial weight's distance,
+   and the depth the pixel's own plane has at the sample, d - (gx rx + gy ry), which the
+   depth term compares with the tap's. `channels` and `mode` are constants at each call
+   site, so each variant is its own straight loop. */
 static inline __attribute__((always_inline)) void
-add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, float es,
-        int channels, int mode)
+add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, float bx,
+        float by, int channels, int mode)
 {
-    const float p = j->c->normal_power, cmin = j->c->normal_min;
+    const float p = j->c->normal_power, cmin = j->c->normal_min, ks = j->c->spatial_k;
     const float *restrict rd = k->rd + q0;
     for (int t = 0; t < n; t++) {
         int i = i0 + t;
-        float delta = (rd[t] - k->dp[i]) * k->kd[i];
-        float e = es - 0.5f * delta * delta;
+        float rx = bx - k->rox[q0 + t], ry = by - k->roy[q0 + t];
+        float plane = k->dp[i] - (k->gx[i] * rx + k->gy[i] * ry);
+        float delta = (rd[t] - plane) * k->kd[i];
+        float e = ks * (rx * rx + ry * ry) - 0.5f * delta * delta;
         float c0 = 1.0f, wn = 1.0f;
         if (mode != SSG_NORMAL_OFF) {
             c0 = k->nx[i] * k->rn[0][q0 + t] + k->ny[i] * k->rn[1][q0 + t] +
@@ -141,10 +223,10 @@ add_tap(const struct job *j, struct chunk *restrict k, int i0, int n, int q0, fl
 
 /* add_tap for one channel count (in's plus in2's), one straight loop a normal mode. */
 static inline __attribute__((always_inline)) void
-taps_of(const struct job *j, struct chunk *k, int i0, int n, int q0, float es, int channels,
-        int mode)
+taps_of(const struct job *j, struct chunk *k, int i0, int n, int q0, float bx, float by,
+        int channels, int mode)
 {
-#define TAP(m) add_tap(j, k, i0, n, q0, es, channels, m)
+#define TAP(m) add_tap(j, k, i0, n, q0, bx, by, channels, m)
     SSG_NORMAL_MODE_SWITCH(mode, TAP)
 #undef TAP
 }
@@ -155,25 +237,23 @@ static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x
     const int r = j->c->radius, ly = y / j->k;
     const int mode = ssg_normal_mode(j->lnrm[0] != NULL && j->c->normal_power > 0.0f,
                                      j->c->squarings);
-    const float ks = j->c->spatial_k, v = ((float)y + 0.5f) / (float)j->k - 0.5f;
     for (int dy = -r; dy <= r; dy++) {
         int qy = ly + dy;
         if (qy < 0 || qy >= j->lh)
             continue;
         fill_row(j, k, qy, x0, k->count[0] + 2 * r);
-        float ey = ks * (v - (float)qy) * (v - (float)qy);
+        float by = (float)(y - j->k * qy);
         for (int dx = -r; dx <= r; dx++)
             for (int m = 0; m < j->k; m++) {
-                /* low-res x of phase m's pixels minus their column, minus dx */
-                float ex = ((float)m + 0.5f) / (float)j->k - 0.5f - (float)dx;
-                float es = ks * ex * ex + ey;
+                /* phase m's pixels lie m - k dx full-res px right of their tap's block */
+                float bx = (float)(m - j->k * dx);
                 int i0 = m * k->per_phase, n = k->count[m], q0 = r + dx;
                 switch (j->channels) {
-                case 1: taps_of(j, k, i0, n, q0, es, 1, mode); break;
-                case 2: taps_of(j, k, i0, n, q0, es, 2, mode); break;
-                case 3: taps_of(j, k, i0, n, q0, es, 3, mode); break;
-                case 4: taps_of(j, k, i0, n, q0, es, 4, mode); break;
-                default: taps_of(j, k, i0, n, q0, es, 6, mode); break;
+                case 1: taps_of(j, k, i0, n, q0, bx, by, 1, mode); break;
+                case 2: taps_of(j, k, i0, n, q0, bx, by, 2, mode); break;
+                case 3: taps_of(j, k, i0, n, q0, bx, by, 3, mode); break;
+                case 4: taps_of(j, k, i0, n, q0, bx, by, 4, mode); break;
+                default: taps_of(j, k, i0, n, q0, bx, by, 6, mode); break;
                 }
             }
     }
@@ -217,6 +297,18 @@ static void finish_chunk(const struct job *j, const struct chunk *k, int y, int 
             }
             for (int ch = 0; ch < j->channels; ch++)
                 j->out[ch][o] = val[ch];
+        }
+}
+
+/* sample_offset of every low-res pixel of rows y0 .. y1 - 1, found once for all the
+   full-res pixels whose taps they are. */
+static void offset_band(void *user, int y0, int y1)
+{
+    const struct job *j = user;
+    for (int qy = y0; qy < y1; qy++)
+        for (int qx = 0; qx < j->lw; qx++) {
+            size_t q = (size_t)qy * (size_t)j->lw + (size_t)qx;
+            sample_offset(j, qx, qy, j->ldepth[q], &j->ox[q], &j->oy[q]);
         }
 }
 
@@ -264,6 +356,12 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
         j.nrm[ch] = ssg_image_plane(nrm, ch);
         j.lnrm[ch] = ssg_image_plane(lnrm, ch);
     }
+    size_t low = (size_t)j.lw * (size_t)j.lh;
+    j.ox = ssg_node_scratch(ctx, 2 * low * sizeof(float));
+    if (!j.ox)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the sample offsets");
+    j.oy = j.ox + low;
+    ssg_parallel_rows(j.lh, ROWS_PER_BAND, offset_band, &j);
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
     return SSG_OK;
 }
