@@ -42,7 +42,7 @@ bool visible(int i, vec3 x, vec3 nx)
             float dist = distance_field[(v.z * n.y + v.y) * n.x + v.x];
             if (dist == 0.0)
                 return false;
-            step = dist - 1.0 > 0.5 ? dist - 1.0 : 0.5;
+            step = dist - 1.0 > 1.0 ? dist - 1.0 : 1.0;
         }
         t = t + step;
     }

@@ -176,7 +176,7 @@ static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)
 /* 1 when the segment from the receiver x (unit normal nx) to the VPL at y (unit normal ny)
    crosses no occupied voxel of the distance field `field` (README.md, "Visibility"): a
    sphere trace in voxel units from vis_start off x to vis_start off y, each step the
-   voxel's distance less one voxel (its centre's, not the point's), half a voxel at least;
+   voxel's distance less one voxel (its centre's, not the point's), one voxel at least;
    outside the grid, one voxel. rsm.glsl's visible() makes the same operations. */
 static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *field,
                                   const float x[3], const float nx[3], const float y[3],
