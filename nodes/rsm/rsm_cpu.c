@@ -154,9 +154,9 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
 
 /* The ratio estimator: each pixel's unshadowed sum times the visible share of the light
    of its tested draws (every vis_stride-th), their light weighted by w Phi_sum; 1 where
-   the tested draws bring none. */
-/* Out of line: a profile then shows its cost apart from the unshadowed gather. */
-__attribute__((noinline)) static void shadow_ratio(const struct job *j, const int *pick, int len, struct chunk *k)
+   the tested draws bring none. Out of line, so a profile shows its cost apart. */
+__attribute__((noinline)) static void shadow_ratio(const struct job *j, const int *pick,
+                                                   int len, struct chunk *k)
 {
     const struct ssg_rsm_consts *c = j->c;
     float total = j->list[(size_t)(j->count - 1) * SSG_RSM_SLOT + 11];
