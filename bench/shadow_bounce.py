@@ -13,7 +13,9 @@ position within 0.01 of the wall's plane, its normal within 25 degrees of the wa
 the truth's direct light is below 1 % of that wall's brightest direct light. Per shadow it
 prints mean(image) / mean(truth) over R + G + B, and the same for the far bounce's share of
 the image (albedo x far_bounce, the rsm term) against the truth's bounce (in a shadow the
-truth is all bounce). 1.00 is right; issue 44's acceptance is within 0.75-1.25.
+truth is all bounce). 1.00 is right; issue 44's acceptance is within 0.75-1.25. Last, the
+image over the truth on the short box's front face (lit: where the near and far bounce
+meet, graphs/gi.graph's min_distance).
 
 EXRs are read as bench/sequence.py reads them (python3-openimageio when importable, else
 oiiotool's --dumpdata). --crops DIR writes PNG crops of both shadows, the graph's image
@@ -122,6 +124,20 @@ def shadows(t):
     return out
 
 
+def short_front(t):
+    """The short box's front face (its +z face turned -17 degrees about y, 0.3 before the
+    centre (0.34, 0.3, 0.33)): where a near-field gap too wide or too narrow shows
+    (graphs/gi.graph's min_distance comment)."""
+    eye, rot = camera()
+    pos, nrm = eye + t["position"] @ rot, t["normal"] @ rot
+    a = np.radians(-17.0)
+    n = np.array([np.sin(a), 0.0, np.cos(a)])
+    c = np.array([0.34, 0.3, 0.33]) + 0.3 * n
+    rel = pos - c
+    return ((np.abs(rel @ n) < 0.01) & (nrm @ n > 0.95) &
+            (np.linalg.norm(rel - np.outer(rel @ n, n).reshape(rel.shape), axis=-1) < 0.3))
+
+
 def png(path, rgb8):
     h, w, _ = rgb8.shape
     raw = b"".join(b"\0" + rgb8[y].tobytes() for y in range(h))
@@ -155,6 +171,7 @@ def crops(a, img, t, masks):
         pair = np.concatenate([img[y0:y1, x0:x1] * 4, np.ones((y1 - y0, 2, 3)),
                                t[""][y0:y1, x0:x1] * 4], axis=1)
         tag = name.split()[0]
+        pair = pair.repeat(2, axis=0).repeat(2, axis=1)  # 2x, nearest: pixels visible
         png(os.path.join(a.crops, "%s%s.png" % (a.tag, tag)), aces_srgb(pair))
 
 
@@ -181,6 +198,10 @@ def main():
         img = p[""][m].sum(-1).mean() / t[""][m].sum(-1).mean()
         far = rsm[m].sum(-1).mean() / t["bounce"][m].sum(-1).mean()
         print("%-20s %7d %8.2fx %8.2fx" % (name, m.sum(), img, far))
+    m = short_front(t)
+    if m.any():
+        print("%-20s %7d %8.2fx %9s" % ("short box front", m.sum(), p[""][m].sum(-1).mean() /
+                                         t[""][m].sum(-1).mean(), "(lit)"))
     if a.crops:
         crops(a, p[""], t, masks)
 

@@ -34,15 +34,19 @@ bool visible(int i, vec3 x, vec3 nx)
         return true;
     precise vec3 u = vec3(d.x / len, d.y / len, d.z / len);
     ivec3 n = ivec3(grid_nx, grid_ny, grid_nz);
+    bool left = false; // once in an empty voxel: the occupied ones before are x's own
     for (precise float t = a; t < end;) {
         precise vec3 q = vec3(p.x + u.x * t, p.y + u.y * t, p.z + u.z * t);
         ivec3 v = ivec3(floor(q));
         precise float step = 1.0;
         if (all(greaterThanEqual(v, ivec3(0))) && all(lessThan(v, n))) {
             float dist = distance_field[(v.z * n.y + v.y) * n.x + v.x];
-            if (dist == 0.0)
+            if (dist == 0.0 && left)
                 return false;
+            left = left || dist != 0.0;
             step = dist - 1.0 > 1.0 ? dist - 1.0 : 1.0;
+        } else {
+            left = true;
         }
         t = t + step;
     }

@@ -177,7 +177,9 @@ static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)
    crosses no occupied voxel of the distance field `field` (README.md, "Visibility"): a
    sphere trace in voxel units from vis_start off x to vis_start off y, each step the
    voxel's distance less one voxel (its centre's, not the point's), one voxel at least;
-   outside the grid, one voxel. rsm.glsl's visible() makes the same operations. */
+   outside the grid, one voxel. Occupied voxels block only after the trace was in an
+   empty one (before, they are the receiver's own surfaces). rsm.glsl's visible() makes
+   the same operations. */
 static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *field,
                                   const float x[3], const float nx[3], const float y[3],
                                   const float ny[3])
@@ -193,6 +195,8 @@ static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *f
     if (!(end > a))
         return 1; /* too near to tell from the surfaces' own voxels */
     float u[3] = {d[0] / len, d[1] / len, d[2] / len};
+    int out = 0; /* 1 once the trace was in an empty voxel: the occupied voxels before are
+                    the receiver's own surfaces' (a step, a corner), not an occluder */
     for (float t = a; t < end;) {
         int i[3], in = 1;
         for (int k = 0; k < 3; k++) {
@@ -202,9 +206,12 @@ static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *f
         float step = 1.0f;
         if (in) {
             float dist = field[((size_t)i[2] * c->grid_n[1] + i[1]) * c->grid_n[0] + i[0]];
-            if (dist == 0.0f)
+            if (dist == 0.0f && out)
                 return 0;
+            out |= dist != 0.0f;
             step = dist - 1.0f > 1.0f ? dist - 1.0f : 1.0f;
+        } else {
+            out = 1;
         }
         t += step;
     }
