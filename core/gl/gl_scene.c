@@ -12,6 +12,7 @@
 #include "gl/gl_runtime.h"
 #include "gl/gl_scene.h"
 #include "graph/gl_backend.h"
+#include "scene/distance.h"
 #include "scene/scene.h"
 
 enum { VDATA, INDEX, TEXEL, MESHES, MATERIALS };
@@ -26,6 +27,8 @@ struct ssg_gl_scene {
     struct ssg_gl_mesh *mesh;   /* the offsets, also needed for drawing */
     struct ssg_gl_material *material; /* the records as uploaded */
     size_t bytes[SSG_GL_SCENE_BUFFERS]; /* each buffer's size */
+    GLuint distance;            /* the distance field's voxels (scene/distance.h), 4 bytes
+                                   of 0 without one */
 };
 
 static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
@@ -140,6 +143,18 @@ static void copy_data(struct ssg_gl_scene *s)
                              s->material);
 }
 
+/* The distance field goes up with the triangles it was made of: 1 MB at 64 voxels a side,
+   once a run, where rsm's visibility would otherwise copy it every frame. */
+static void copy_distance(struct ssg_gl_scene *s)
+{
+    const struct ssg_distance *f = s->scene->distance;
+    static const float none = 0.0f;
+    size_t bytes = f ? sizeof(float) * (size_t)f->n[0] * f->n[1] * f->n[2] : sizeof none;
+    glCreateBuffers(1, &s->distance);
+    glNamedBufferData(s->distance, (GLsizeiptr)bytes, f ? (const void *)f->d : &none,
+                      GL_STATIC_DRAW);
+}
+
 static void make_vao(struct ssg_gl_scene *s)
 {
     glCreateVertexArrays(1, &s->vao);
@@ -168,6 +183,8 @@ static void scene_free(struct ssg_gl_scene **scene)
         glDeleteBuffers(SSG_GL_SCENE_BUFFERS, s->buffer);
     if (s->vao && ssg_gl_alive())
         glDeleteVertexArrays(1, &s->vao);
+    if (s->distance && ssg_gl_alive())
+        glDeleteBuffers(1, &s->distance);
     free(s->mesh);
     free(s->material);
     free(s);
@@ -195,6 +212,7 @@ static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scen
         e = check_limits(ctx, s);
     if (!e) {
         copy_data(s);
+        copy_distance(s);
         make_vao(s);
         e = ssg_gl_node_status(ctx, "uploading the scene");
     }
@@ -247,6 +265,13 @@ void ssg_gl_scene_bind(struct ssg_gl_pass *pass)
     for (int b = 0; s && b < SSG_GL_SCENE_BUFFERS; b++)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)(SSG_GL_SCENE_BINDING + b),
                          s->buffer[b]);
+}
+
+void ssg_gl_scene_bind_distance(struct ssg_gl_pass *pass, int binding)
+{
+    const struct ssg_gl_scene *s = ssg_gl_scene_of(pass);
+    if (s)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)binding, s->distance);
 }
 
 void ssg_gl_scene_draw_meshes(const struct ssg_gl_scene *s, unsigned prog)

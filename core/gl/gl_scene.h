@@ -68,6 +68,14 @@ struct ssg_gl_camera {
  * when no node of the run has). */
 void ssg_gl_scene_bind(struct ssg_gl_pass *pass);
 
+/* Binds the scene's distance field (scene/distance.h; uploaded with the scene, once a run)
+ * for the pass's compute shader as
+ *   layout(std430, binding = B) readonly buffer Distance { float distance_field[]; };
+ * its voxels in the field's order (x fastest); a scene without triangles binds one 0. The
+ * grid's shape (n, lo, voxel) is the CPU's struct, which the node passes as constants.
+ * `binding` is one of the node's own (SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS on). */
+void ssg_gl_scene_bind_distance(struct ssg_gl_pass *pass, int binding);
+
 /* Clears `target` (a frame-sized image, one colour attachment per layer, at most 8) to 0
  * and draws every mesh with the raster program of `shader` (its SSG_VERTEX and
  * SSG_FRAGMENT halves, gl_fn.h) and a depth test, nearest surface wins, no culling: the

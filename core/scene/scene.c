@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "scene/distance.h"
 #include "scene/env.h"
 #include "scene/rt.h"
 #include "scene/scene_build.h"
@@ -473,6 +474,7 @@ void ssg_scene_destroy(struct ssg_scene **scene)
         return;
     struct ssg_scene *s = *scene;
     ssg_rt_destroy(&s->rt);
+    ssg_distance_destroy(&s->distance);
     ssg_env_destroy(&s->env);
     for (int i = 0; i < s->mesh_count; i++)
         ssg_mesh_free(&s->meshes[i]);

@@ -125,6 +125,8 @@ struct ssg_scene {
     struct ssg_rt *rt;   /* built by ssg_scene_load when load_assets is 1 */
     struct ssg_env *env; /* built by ssg_scene_load when load_assets is 1 (never NULL
                             then: a scene without environment gets a black one) */
+    struct ssg_distance *distance; /* the triangles' coarse distance field (distance.h),
+                                      built with rt; NULL without triangles */
 };
 
 /* Loads a scene file. With load_assets = 0 it only parses and validates the file (used by

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene/distance.h"
 #include "scene/env.h"
 #include <errno.h>
 #include <unistd.h>
@@ -474,6 +475,10 @@ void ssg_scene_build(struct scene_loader *l)
         default_camera(s);
     s->has_camera = camera_set;
     enum ssg_err e = ssg_rt_build(s, &s->rt, l->diags);
+    if (!e)
+        e = ssg_distance_build(s->meshes, s->mesh_count, SSG_DISTANCE_RES, &s->distance);
+    if (e == SSG_E_NOMEM)
+        ssg_diag_file(l->diags, e, s->path, "out of memory for the scene's distance field");
     if (e)
         ssg_scene_fail(l, e);
 }

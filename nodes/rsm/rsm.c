@@ -5,6 +5,7 @@
 #include "rsm.h"
 #include "common/random.h"
 #include "common/trace.h"
+#include "scene/distance.h"
 #include "scene/scene.h"
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
@@ -82,6 +83,23 @@ static void pack_face(const struct ssg_lightmap_face *f, int res, float *out)
     out[15] = 0.0f;
 }
 
+/* Which draws test visibility (rsm.h's vis_stride, vis_tested) and the distance field's
+   grid, from the scene. A scene without triangles has nothing to occlude: vis stays 0. */
+static void prepare_visibility(const struct ssg_scene *scene, const struct ssg_rsm_params *p,
+                               struct ssg_rsm_consts *c)
+{
+    const struct ssg_distance *f = scene->distance;
+    c->vis = p->visibility && f;
+    int S = p->samples, T = p->vis_draws;
+    c->vis_stride = T == 0 || T >= S ? 1 : S / T;
+    c->vis_tested = S / c->vis_stride;
+    for (int k = 0; f && k < 3; k++) {
+        c->grid_n[k] = f->n[k];
+        c->grid_lo[k] = f->lo[k];
+    }
+    c->grid_inv = f ? 1.0f / f->voxel : 0.0f;
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_rsm_params *p = params;
@@ -121,6 +139,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         pack_face(&c->face_s[f], c->res, &c->face[16 * f]);
     make_offsets(ctx->frame ? ctx->frame->seed : 1, c->offset);
     c->inv_samples = p->samples > 0 ? 1.0f / (float)p->samples : 0.0f;
+    prepare_visibility(ctx->scene, p, c);
     return SSG_OK;
 }
 
@@ -130,13 +149,17 @@ SSG_PORT_TABLE(inputs, SSG_RSM_IN);
 SSG_PORT_TABLE(outputs, SSG_RSM_OUT);
 
 /* Flops per pixel (node.h), by reading rsm_cpu.c: about 40 for the pixel's world frame and
-   output, per draw about 30 for the VPL's term (the searches are per run, not per pixel).
-   samples = 0 counts every slot: an upper bound. */
+   output, per draw about 30 for the VPL's term (the searches are per run, not per pixel);
+   with visibility, per tested draw the term again, about 30 to set up the trace and about
+   15 a step, some 20 steps in a room (measured on the Cornell box's field). samples = 0
+   counts every slot: an upper bound. */
 static double rsm_flops(const void *consts, const struct ssg_shape *in)
 {
     const struct ssg_rsm_consts *c = consts;
     (void)in;
-    return 40.0 + 30.0 * (c->p.samples > 0 ? c->p.samples : c->slots);
+    int draws = c->p.samples > 0 ? c->p.samples : c->slots;
+    int tested = c->vis_stride == 1 ? draws : c->vis_tested;
+    return 40.0 + 30.0 * draws + (c->vis ? 360.0 * tested : 0.0);
 }
 
 const struct ssg_node_desc ssg_node_rsm = {
@@ -145,7 +168,9 @@ const struct ssg_node_desc ssg_node_rsm = {
     .method = "Dachsbacher and Stamminger, Reflective Shadow Maps, I3D 2005, sec. 3 eq. 1 "
               "(the map's texels as pixel lights, no occlusion between sender and receiver); "
               "texels merged into VPLs and drawn by flux (stratified, 1 / pdf) instead of "
-              "the paper's screen-space pattern around the receiver's projection",
+              "the paper's screen-space pattern around the receiver's projection; "
+              "visibility=true adds the occlusion the paper leaves out, sphere traced in a "
+              "distance field of the scene (Hart 1996)",
     SSG_NODE_PORTS(inputs, outputs),
     SSG_NODE_PARAMS(params, struct ssg_rsm_params),
     .consts_size = sizeof(struct ssg_rsm_consts),

@@ -14,6 +14,8 @@
 #ifndef SSG_RSM_H
 #define SSG_RSM_H
 
+#include <math.h>
+
 #include "graph/node.h"
 #include "common/lightmap.h"
 
@@ -82,7 +84,19 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
     P(INT, environment,                                                                    \
       "the maps hold this many environment lights (lightmaps' environment, the same "      \
       "value)",                                                                            \
-      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1) \
+    P(BOOL, visibility,                                                                    \
+      "test the segment from the receiver to each tested VPL in the scene's distance "     \
+      "field (scene/distance.h), so the bounce no longer reaches through boxes and walls", \
+      .def = 0, .host_only = 1)                                                            \
+    P(INT, vis_draws,                                                                      \
+      "draws a pixel tests for visibility (every samples / vis_draws-th): the pixel's "    \
+      "bounce is scaled by the visible share of their light; 0 = every draw, exactly",     \
+      .def = 16, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .host_only = 1)                     \
+    P(FLOAT, vis_start,                                                                    \
+      "the trace starts this far off the receiver (along its normal and the segment) and " \
+      "ends this far off the VPL, so their own surfaces do not occlude them",              \
+      .def = 1.5, .min = 0, .max = 8, .unit = "voxels", .gl_in = "rsm.glsl")
 SSG_PARAMS_STRUCT(ssg_rsm_params, SSG_RSM_PARAMS);
 
 struct ssg_rsm_consts {
@@ -101,6 +115,13 @@ struct ssg_rsm_consts {
     /* the per-pixel offset of the stratified draws, tile^2 values in [0, 1) */
     float offset[SSG_RSM_TILE * SSG_RSM_TILE];
     float inv_samples;      /* 1 / samples (0 when samples = 0) */
+    int vis;                /* 1 = visibility on and the scene has triangles to test */
+    int vis_stride;         /* draw k is tested when k % vis_stride = 0 and k / vis_stride
+                               < vis_tested; 1 = every draw (so is an exact sum) */
+    int vis_tested;         /* draws tested a pixel */
+    int grid_n[3];          /* the distance field's voxels a side (scene/distance.h) */
+    float grid_lo[3];       /* its world corner */
+    float grid_inv;         /* 1 / its voxel side: world units to voxels */
 };
 
 /* The constants the GL passes read (#pragma ssg_consts), rows over the consts' own fields
@@ -113,7 +134,15 @@ struct ssg_rsm_consts {
     U(INT, rows, gl_list_rows, "slot grid rows a dispatch of the list walk takes",          \
       .gl_in = "rsm_list.glsl")                                                            \
     U(FLOAT, inv_samples, inv_samples, "1 / samples (0: exact)",                           \
-      .gl_in = "rsm_picks.glsl rsm.glsl")
+      .gl_in = "rsm_picks.glsl rsm.glsl")                                                  \
+    U(INT, vis, vis, "1 = visibility tested", .gl_in = "rsm.glsl")                          \
+    U(INT, vis_stride, vis_stride, "every vis_stride-th draw tested", .gl_in = "rsm.glsl") \
+    U(INT, vis_tested, vis_tested, "draws tested a pixel", .gl_in = "rsm.glsl")            \
+    U(INT, grid_nx, grid_n[0], "the distance field's voxels on x", .gl_in = "rsm.glsl")    \
+    U(INT, grid_ny, grid_n[1], "... on y", .gl_in = "rsm.glsl")                            \
+    U(INT, grid_nz, grid_n[2], "... on z", .gl_in = "rsm.glsl")                            \
+    U(VEC3, grid_lo, grid_lo, "its world corner", .gl_in = "rsm.glsl")                     \
+    U(FLOAT, grid_inv, grid_inv, "1 / its voxel side", .gl_in = "rsm.glsl")
 
 /* Builds the slots of rows y in [y0, y1) of the (6 C) x (F C) slot grid (every bin of the
    row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, in slot
@@ -142,6 +171,51 @@ static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)
             lo = mid + 1;
     }
     return lo;
+}
+
+/* 1 when the segment from the receiver x (unit normal nx) to the VPL at y (unit normal ny)
+   crosses no occupied voxel of the distance field `field` (README.md, "Visibility"): a
+   sphere trace in voxel units from vis_start off x to vis_start off y, each step the
+   voxel's distance less one voxel (its centre's, not the point's), one voxel at least;
+   outside the grid, one voxel. Occupied voxels block only after the trace was in an
+   empty one (before, they are the receiver's own surfaces). rsm.glsl's visible() makes
+   the same operations. */
+static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *field,
+                                  const float x[3], const float nx[3], const float y[3],
+                                  const float ny[3])
+{
+    const float a = c->p.vis_start, inv = c->grid_inv;
+    float p[3], d[3];
+    for (int k = 0; k < 3; k++) {
+        p[k] = (x[k] - c->grid_lo[k]) * inv + nx[k] * a;
+        d[k] = ((y[k] - c->grid_lo[k]) * inv + ny[k] * a) - p[k];
+    }
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    float end = len - a;
+    if (!(end > a))
+        return 1; /* too near to tell from the surfaces' own voxels */
+    float u[3] = {d[0] / len, d[1] / len, d[2] / len};
+    int out = 0; /* 1 once the trace was in an empty voxel: the occupied voxels before are
+                    the receiver's own surfaces' (a step, a corner), not an occluder */
+    for (float t = a; t < end;) {
+        int i[3], in = 1;
+        for (int k = 0; k < 3; k++) {
+            i[k] = (int)floorf(p[k] + u[k] * t);
+            in &= i[k] >= 0 && i[k] < c->grid_n[k];
+        }
+        float step = 1.0f;
+        if (in) {
+            float dist = field[((size_t)i[2] * c->grid_n[1] + i[1]) * c->grid_n[0] + i[0]];
+            if (dist == 0.0f && out)
+                return 0;
+            out |= dist != 0.0f;
+            step = dist - 1.0f > 1.0f ? dist - 1.0f : 1.0f;
+        } else {
+            out = 1;
+        }
+        t += step;
+    }
+    return 1;
 }
 
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

@@ -6,6 +6,8 @@
 #include <stdint.h>
 
 #include "rsm.h"
+#include "scene/distance.h"
+#include "scene/scene.h"
 
 struct cells_job {
     const struct ssg_rsm_consts *c;
@@ -29,6 +31,7 @@ struct job {
     const float *list;
     const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
     int count, w, h;
+    const float *field; /* the scene's distance field's voxels (visibility on) */
 };
 
 enum { CHUNK = 64 };
@@ -39,6 +42,14 @@ struct chunk {
     float sum[3][CHUNK];
     int bg[CHUNK];
 };
+
+/* 1 when receiver i of the chunk sees VPL v (ssg_rsm_visible). */
+static int visible_from(const struct job *j, const struct chunk *k, int i, const float *v)
+{
+    const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
+    const float n[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
+    return ssg_rsm_visible(j->c, j->field, x, n, v, v + 3);
+}
 
 /* The receivers in world space: x = eye + rot^T p, n = rot^T n_view. */
 static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
@@ -61,53 +72,110 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
     }
 }
 
-/* VPL v's irradiance x pi at every receiver of the chunk, times `scale`, into the sums:
-   Phi cos_v cos_x / (d^2 max(d^2, r2)) x fade(d) (README.md), nothing behind either surface.
-   Branch-free over the pixels (a select, never a NaN added), so it vectorises; each
-   pixel's sum still runs in draw order, as on GL. */
+/* VPL v's irradiance x pi at receiver i over its flux, times `scale`: Phi cos_v cos_x /
+   (d^2 max(d^2, r2)) x fade(d) / Phi (README.md), 0 behind either surface. Branch-free (a
+   select, never a NaN added), so the loops over the pixels that call it vectorise. */
+static inline __attribute__((always_inline)) float
+vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
+           const struct chunk *restrict k, int i)
+{
+    float dx = v[0] - k->x[0][i], dy = v[1] - k->x[1][i], dz = v[2] - k->x[2][i];
+    float d2 = dx * dx + dy * dy + dz * dz;
+    float cs = -(v[3] * dx + v[4] * dy + v[5] * dz);
+    float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
+    float g = cs * cr / (d2 * (d2 > v[9] ? d2 : v[9]));
+    const float m = c->p.min_distance;
+    if (m > 0.0f) {
+        float t = (sqrtf(d2) - m) / m;
+        t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+        g = g * (t * t * (3.0f - 2.0f * t));
+    }
+    int ok = (d2 > 0.0f) & (cs > 0.0f) & (cr > 0.0f);
+    return ok ? scale * g : 0.0f;
+}
+
+/* VPL v's term at every receiver of the chunk into the sums; each pixel's sum runs in draw
+   order, as on GL. */
 static inline __attribute__((always_inline)) void
 add_vpl(const struct ssg_rsm_consts *c, const float *restrict v, float scale, int len,
         struct chunk *restrict k)
 {
-    const float vx = v[0], vy = v[1], vz = v[2], nx = v[3], ny = v[4], nz = v[5];
-    const float r2 = v[9], m = c->p.min_distance;
-    const float f0 = v[6], f1 = v[7], f2 = v[8];
     for (int i = 0; i < len; i++) {
-        float dx = vx - k->x[0][i], dy = vy - k->x[1][i], dz = vz - k->x[2][i];
-        float d2 = dx * dx + dy * dy + dz * dz;
-        float cs = -(nx * dx + ny * dy + nz * dz);
-        float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
-        float g = cs * cr / (d2 * (d2 > r2 ? d2 : r2));
-        if (m > 0.0f) {
-            float t = (sqrtf(d2) - m) / m;
-            t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
-            g = g * (t * t * (3.0f - 2.0f * t));
-        }
-        int ok = (d2 > 0.0f) & (cs > 0.0f) & (cr > 0.0f);
-        float w = ok ? scale * g : 0.0f;
-        k->sum[0][i] += w * f0;
-        k->sum[1][i] += w * f1;
-        k->sum[2][i] += w * f2;
+        float w = vpl_weight(c, v, scale, k, i);
+        k->sum[0][i] += w * v[6];
+        k->sum[1][i] += w * v[7];
+        k->sum[2][i] += w * v[8];
+    }
+}
+
+/* The same with each term's visibility (visibility on, every draw tested): one trace per
+   pixel where the term is not 0, so not a vector loop. */
+static void add_vpl_visible(const struct job *j, const float *v, float scale, int len,
+                            struct chunk *k)
+{
+    for (int i = 0; i < len; i++) {
+        float w = vpl_weight(j->c, v, scale, k, i);
+        if (w > 0.0f && !visible_from(j, k, i, v))
+            w = 0.0f;
+        k->sum[0][i] += w * v[6];
+        k->sum[1][i] += w * v[7];
+        k->sum[2][i] += w * v[8];
     }
 }
 
 /* Every VPL (samples 0 or at least the count), or the tile cell's draws, each weighted
-   1 / (S pdf) = total / (S w). */
+   1 / (S pdf) = total / (S w). With visibility on every draw tested, each term is
+   shadowed; with vis_stride > 1 the sum stays unshadowed here (shadow_ratio scales it). */
 SSG_VECTOR_CLONES
 static void gather(const struct job *j, const int *pick, int len, struct chunk *restrict k)
 {
     const struct ssg_rsm_consts *c = j->c;
     const int S = c->p.samples, n = j->count;
+    const int each = c->vis && (S == 0 || S >= n || c->vis_stride == 1);
     if (S == 0 || S >= n) {
-        for (int i = 0; i < n; i++)
-            add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+        for (int i = 0; i < n; i++) {
+            if (each)
+                add_vpl_visible(j, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+            else
+                add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+        }
         return;
     }
     float total = j->list[(size_t)(n - 1) * SSG_RSM_SLOT + 11];
     float step = c->inv_samples * total;
     for (int s = 0; s < S; s++) {
         const float *v = j->list + (size_t)pick[s] * SSG_RSM_SLOT;
-        add_vpl(c, v, step / v[10], len, k);
+        if (each)
+            add_vpl_visible(j, v, step / v[10], len, k);
+        else
+            add_vpl(c, v, step / v[10], len, k);
+    }
+}
+
+/* The ratio estimator: each pixel's unshadowed sum times the visible share of the light
+   of its tested draws (every vis_stride-th), their light weighted by w Phi_sum; 1 where
+   the tested draws bring none. Out of line, so a profile shows its cost apart. */
+__attribute__((noinline)) static void shadow_ratio(const struct job *j, const int *pick,
+                                                   int len, struct chunk *k)
+{
+    const struct ssg_rsm_consts *c = j->c;
+    float total = j->list[(size_t)(j->count - 1) * SSG_RSM_SLOT + 11];
+    float step = c->inv_samples * total;
+    for (int i = 0; i < len; i++) {
+        float all = 0.0f, seen = 0.0f;
+        for (int t = 0; t < c->vis_tested; t++) {
+            const float *v = j->list + (size_t)pick[t * c->vis_stride] * SSG_RSM_SLOT;
+            float w = vpl_weight(c, v, step / v[10], k, i);
+            if (!(w > 0.0f))
+                continue;
+            float light = w * v[10];
+            all += light;
+            if (visible_from(j, k, i, v))
+                seen += light;
+        }
+        float r = all > 0.0f ? seen / all : 1.0f;
+        for (int ch = 0; ch < 3; ch++)
+            k->sum[ch][i] = k->sum[ch][i] * r;
     }
 }
 
@@ -127,6 +195,13 @@ static void store_chunk(const struct job *j, int y, int x0, int len,
     }
 }
 
+/* Visibility by the ratio estimator: on, sampled and not every draw tested. */
+static int ratio(const struct job *j)
+{
+    const int S = j->c->p.samples;
+    return j->c->vis && S > 0 && S < j->count && j->c->vis_stride > 1;
+}
+
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
@@ -142,6 +217,8 @@ static void rows(void *user, int y0, int y1)
                 load_chunk(j, y, x0, len, &k);
                 if (j->count > 0)
                     gather(j, pick, len, &k);
+                if (j->count > 0 && ratio(j))
+                    shadow_ratio(j, pick, len, &k);
                 store_chunk(j, y, x0, len, &k);
             }
         }
@@ -165,7 +242,7 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
     struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
-                    pos->height};
+                    pos->height, c->vis ? ctx->scene->distance->d : NULL};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;
 }

@@ -2,7 +2,8 @@
  * passes: the slots of every cell (rsm_cells.glsl, one invocation a cell), the list with
  * its CDF and count (rsm_list.glsl, one invocation: a running sum), the draws of each
  * cell of the offset tile (rsm_picks.glsl, one invocation a draw) and the gather
- * (rsm.glsl). The list walk and an exact gather are split into dispatches of at most
+ * (rsm.glsl), which with visibility on also reads the scene's distance field, bound from
+ * the run's copy of the scene (gl_scene.h). The list walk and an exact gather are split into dispatches of at most
  * SSG_RSM_GL_ITERATIONS loop iterations, their state in scratch images between them:
  * llvmpipe silently ends a loop after 65535 iterations. The faces and the offset tile are
  * the CPU's floats from prepare(), in storage buffers, and so is the slot grid's shape.
@@ -12,6 +13,7 @@
  * thread's work (about 0.5 s on llvmpipe for a point light's cube at 512 with cell 4;
  * a two-level prefix sum, row by row, would make it parallel). */
 #include "gl/gl.h"
+#include "gl/gl_scene.h"
 #include "rsm.h"
 
 static void cells_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
@@ -64,6 +66,8 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     ssg_gl_input(p, "count", count);
     ssg_gl_input(p, "pick", pick);
     ssg_gl_output(p, "acc", acc);
+    if (c->vis) /* the field went up with the scene, once a run (gl_scene.h) */
+        ssg_gl_scene_bind_distance(p, SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS);
     /* An exact sum walks the VPLs in dispatches of SSG_RSM_GL_ITERATIONS (rsm.h), the
        running sums kept in acc between them; the count is on the GPU, so every dispatch
        the slots could need is made (those past the count add nothing). A sampled run is

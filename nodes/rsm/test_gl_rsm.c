@@ -2,7 +2,8 @@
  * (rsm_maps.h): a directional light's disc with varied normals and flux, and a point
  * light's cube with scattered texels on every face; the exact VPL sum and stratified
  * draws, with and without albedo, with min_distance, several cell sizes, and maps with
- * more VPLs than one llvmpipe shader loop may walk.
+ * more VPLs than one llvmpipe shader loop may walk; with visibility on among boxes (every
+ * term tested, and the ratio estimator).
  *
  * Where differences come from: every pass does rsm_vpl.c's and rsm_cpu.c's operations in
  * their order without fused multiply-adds (`precise`), and the faces and offsets are the
@@ -147,9 +148,48 @@ static void test_cube(void)
     ssg_scene_destroy(&s);
 }
 
+/* Visibility on: the point light's cube among two boxes and a wall, whose distance field
+   (scene/distance.h) the trace reads on both backends; every term tested (exact, and
+   vis_draws=0) and the ratio estimator. The boxes do shadow: the CPU's output moves. */
+static void test_occluded(void)
+{
+    char text[768];
+    snprintf(text, sizeof text, "%spoint_light(position=[0.2, 1.2, -0.1])\n"
+             "box(center=[0.5, 0.5, 0.3], size=[0.5, 1, 0.4], rotate=[0, 20, 0])\n"
+             "box(center=[-0.7, 1.2, -0.4], size=[0.4, 0.4, 0.4])\n"
+             "plane(center=[0, 1, -1.2], normal=[0, 0, 1], size=[3, 0, 2])\n", CAMERA);
+    struct ssg_scene *s = scene_from_text("gl_rsm_occluded", text);
+    if (!s)
+        return;
+    struct maps m = maps_make(s, 20);
+    cube(&m);
+    struct gbuf g = gbuf_make(s, 24, 16);
+    receivers(&g);
+    const struct parity_tol tol = parity_tol_of("rsm");
+    const char *exact[] = {"samples=0", "cell=3", "visibility=true"};
+    run_case(s, &m, &g, "occluded exact", 1, exact, 3, tol);
+    const char *each[] = {"samples=24", "cell=3", "visibility=true", "vis_draws=0"};
+    run_case(s, &m, &g, "occluded 24 draws each tested", 0, each, 4, tol);
+    const char *ratio[] = {"samples=64", "cell=1", "min_distance=0.3", "visibility=true",
+                           "vis_draws=8", "vis_start=2.5"};
+    run_case(s, &m, &g, "occluded 64 draws 8 tested", 1, ratio, 6, tol);
+    struct ssg_image *on = rsm_run(s, &m, &g, 0, 7, exact, 3, SSG_BACKEND_CPU);
+    struct ssg_image *off = rsm_run(s, &m, &g, 0, 7, exact, 2, SSG_BACKEND_CPU);
+    int moved = 0;
+    for (size_t i = 0; i < 3 * (size_t)g.w * g.h; i++)
+        moved += on->data[i] < off->data[i];
+    CHECK(moved > g.w * g.h / 4); /* a quarter of the receivers lose light at least */
+    ssg_image_destroy(&on);
+    ssg_image_destroy(&off);
+    gbuf_free(&g);
+    maps_free(&m);
+    ssg_scene_destroy(&s);
+}
+
 int main(void)
 {
     test_disc();
     test_cube();
+    test_occluded();
     return check_report();
 }

@@ -1,0 +1,47 @@
+/* distance.h - a coarse distance field of the scene's triangles, for visibility tests that
+ * must be cheap and need not be exact (rsm's sender-receiver visibility: a sphere trace
+ * through the grid, nodes/rsm/README.md).
+ *
+ * A grid of cubic voxels over the scene's bounds (SSG_DISTANCE_RES voxels on the longest
+ * axis, SSG_DISTANCE_MARGIN empty voxels beyond the bounds on every side). A voxel is
+ * occupied when a triangle touches it (conservative voxelisation: the triangle-box overlap
+ * test of Akenine-Moller, "Fast 3D Triangle-Box Overlap Testing", JGT 6(1), 2001); every
+ * voxel holds the Euclidean distance from its centre to the nearest occupied voxel's
+ * centre, in voxels (0 = occupied), by the exact distance transform of Felzenszwalb and
+ * Huttenlocher ("Distance Transforms of Sampled Functions", Theory of Computing 8, 2012),
+ * one axis after the other.
+ *
+ * ssg_scene_load builds it (scene->distance) with the Embree scene, once a scene, so every
+ * node and frame of a run shares it; the GL backend uploads it once a run with the scene
+ * (core/gl/gl_scene.h). Pure data afterwards: any number of threads may read it. */
+#ifndef SSG_DISTANCE_H
+#define SSG_DISTANCE_H
+
+#include "ssgraph.h"
+
+struct ssg_mesh;
+
+enum { SSG_DISTANCE_RES = 64 };   /* voxels on the scene's longest axis */
+enum { SSG_DISTANCE_MARGIN = 2 }; /* empty voxels around the bounds */
+
+struct ssg_distance {
+    int n[3];      /* voxels on x, y, z (margins included) */
+    float lo[3];   /* world corner of voxel (0, 0, 0), its smallest coordinates */
+    float voxel;   /* side of a voxel, world units */
+    float *d;      /* n[0] n[1] n[2] distances in voxels, x fastest, then y, then z */
+};
+
+/* The field of `count` meshes' triangles with `res` voxels on the longest axis of their
+ * bounds (>= 1). *out = NULL and SSG_OK when there is no triangle (nothing occludes);
+ * SSG_E_NOMEM when out of memory. */
+enum ssg_err ssg_distance_build(const struct ssg_mesh *meshes, int count, int res,
+                                struct ssg_distance **out);
+void ssg_distance_destroy(struct ssg_distance **field);
+
+/* The distance stored at voxel (x, y, z), which must lie in the grid. */
+static inline float ssg_distance_at(const struct ssg_distance *f, int x, int y, int z)
+{
+    return f->d[((size_t)z * f->n[1] + y) * f->n[0] + x];
+}
+
+#endif
