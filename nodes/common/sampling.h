@@ -181,12 +181,14 @@ static inline float ssg_sampling_inv_len(float sx, float sy, float sz)
     return l > 0.0f ? 1.0f / l : 0.0f;
 }
 
-/* lens[i] = |s_i| of the K samples of a planar kernel (x plane, y, z), for the length
- * shift's look-ups. */
+/* lens[i] = |s_(i mod K)| for i < 2 K, of the K samples of a planar kernel (x plane, y,
+ * z), for the length shift's look-ups: twice over, so that lens[s + k] needs no wrap. */
 static inline void ssg_sampling_lengths(const float *kernel, int count, float *lens)
 {
-    for (int i = 0; i < count; i++)
+    for (int i = 0; i < count; i++) {
         lens[i] = ssg_sampling_len(kernel[i], kernel[count + i], kernel[2 * count + i]);
+        lens[count + i] = lens[i];
+    }
 }
 
 /* Duff et al.'s branch-free orthonormal basis about unit N ("Building an Orthonormal
@@ -245,36 +247,53 @@ ssg_sampling_place(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
         ssg_sampling_place_lane(cz, cu, cv, i, sx, sy, sz, bias, w, fw, fh, idx, zbs);
 }
 
-/* The factor g that gives kernel sample s (of K, length lens[s]) of a pixel with length
- * shift (dl, k) its shifted length with its direction: s g has length lens[(s + k) mod K]
- * + dl. Written 1 + (lens[j] - lens[s] + dl) / lens[s], so that k = 0 and dl = 0 give
- * exactly 1 (0 for s = 0, which has no direction to keep). */
+/* The factor g that gives kernel sample s (length ls = lens[s], il = 1 / ls or 0 for
+ * ls = 0) of a pixel with length shift (dl, k) its shifted length with its direction: s g
+ * has length lens[s + k] + dl (lens twice over: ssg_sampling_lengths). Written
+ * 1 + (lens[s + k] - ls + dl) il, so that k = 0 and dl = 0 give exactly 1. */
 static inline __attribute__((always_inline)) float
-ssg_sampling_shift_factor(const float *restrict lens, int count, int s, float dl, float k)
+ssg_sampling_shift_factor(const float *restrict lens, int32_t j, float ls, float il, float dl)
 {
-    int32_t j = s + (int32_t)k;
-    j = j >= count ? j - count : j;
-    float ls = lens[s];
-    float il = ls > 0.0f ? 1.0f / ls : 0.0f;
     return 1.0f + (lens[j] - ls + dl) * il;
 }
 
+/* 1 / lens[s], or 0 for a sample of length 0 (which has no direction to keep). */
+static inline float ssg_sampling_inv(float ls)
+{
+    return ls > 0.0f ? 1.0f / ls : 0.0f;
+}
+
+/* gs[i] = the factor g of kernel sample s for each of len lanes (dl, k their shifts), in
+ * a loop of its own: its look-up at a computed index does not vectorise, and kept out of
+ * the placement's loop it leaves that one vectorised. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_shift_factors(int len, int s, const float *restrict lens,
+                           const float *restrict dl, const float *restrict k,
+                           float *restrict gs)
+{
+    const float ls = lens[s], il = ssg_sampling_inv(ls);
+    for (int i = 0; i < len; i++)
+        gs[i] = ssg_sampling_shift_factor(lens, s + (int32_t)k[i], ls, il, dl[i]);
+}
+
 /* The same for kernel sample number s with each pixel's length shift (dl[i], k[i],
- * ssg_sampling_offsets; lens the kernel's K lengths): the sample s g
- * (ssg_sampling_shift_factor) keeps its direction and takes its shifted length. No shift
- * gives the bits of ssg_sampling_place (g = 1), at the cost of a look-up and a few flops
- * a lane, so callers without a shift call that. */
+ * ssg_sampling_offsets; lens the kernel's lengths twice over, gs scratch for the lanes'
+ * factors): the sample s g (ssg_sampling_shift_factor) keeps its direction and takes its
+ * shifted length. No shift gives the bits of ssg_sampling_place (g = 1), at the
+ * cost of a look-up and a few flops a lane, so callers without a shift call that. */
 static inline __attribute__((always_inline)) void
 ssg_sampling_place_shifted(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
                            const float (*restrict cu)[SSG_SAMPLING_CHUNK],
                            const float (*restrict cv)[SSG_SAMPLING_CHUNK], int len, float sx,
-                           float sy, float sz, int s, const float *restrict lens, int count,
-                           const float *restrict dl, const float *restrict k, float bias,
-                           int w, int h, int32_t *restrict idx, float *restrict zbs)
+                           float sy, float sz, int s, const float *restrict lens,
+                           const float *restrict dl, const float *restrict k,
+                           float *restrict gs, float bias, int w, int h,
+                           int32_t *restrict idx, float *restrict zbs)
 {
     const float fw = (float)w, fh = (float)h;
+    ssg_sampling_shift_factors(len, s, lens, dl, k, gs);
     for (int i = 0; i < len; i++) {
-        float g = ssg_sampling_shift_factor(lens, count, s, dl[i], k[i]);
+        float g = gs[i];
         ssg_sampling_place_lane(cz, cu, cv, i, sx * g, sy * g, sz * g, bias, w, fw, fh, idx,
                                 zbs);
     }

@@ -58,6 +58,7 @@ struct chunk {
     float co[CHUNK], si[CHUNK];            /* rotation of the tile (scratch) */
     float dl[CHUNK];                       /* the tile's length offset, 0 without */
     float dk[CHUNK];                       /* the tile's sample index shift, 0 without */
+    float gs[CHUNK];                       /* per sample: its length shift's factor */
     float px[CHUNK], py[CHUNK], pz[CHUNK]; /* P (scratch) */
     float cu[4][CHUNK];                    /* u * Z = cu0 + cu1 s.x + cu2 s.y + cu3 s.z */
     float cv[4][CHUNK];                    /* v * Z, likewise */
@@ -163,8 +164,8 @@ place_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, fl
             float sz, int s)
 {
     if (j->off)
-        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, j->count,
-                                   k->dl, k->dk, j->c->p.bias, j->w, j->h, k->idx, k->zb);
+        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, k->dl,
+                                   k->dk, k->gs, j->c->p.bias, j->w, j->h, k->idx, k->zb);
     else
         ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->c->p.bias, j->w, j->h,
                            k->idx, k->zb);
@@ -281,8 +282,9 @@ place_disc(const struct job *j, struct chunk *restrict k, int len, float y, floa
     const float bias = j->c->p.bias;
     const float fw = (float)j->w, fh = (float)j->h;
     const int w = j->w;
+    ssg_sampling_shift_factors(len, s, j->lens, k->dl, k->dk, k->gs);
     for (int i = 0; i < len; i++) {
-        float g = ssg_sampling_shift_factor(j->lens, j->count, s, k->dl[i], k->dk[i]);
+        float g = k->gs[i];
         float gx = sx * g, gy = sy * g;
         float ou = nearbyintf(k->rp[i] * (k->co[i] * gx - k->si[i] * gy));
         float ov = nearbyintf(k->rp[i] * (k->si[i] * gx + k->co[i] * gy));
@@ -424,7 +426,7 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.f = c->u.proj.f;
     j.cx = c->u.proj.cx;
     j.cy = c->u.proj.cy;
-    float *lens = malloc(sizeof(float) * (size_t)j.count);
+    float *lens = malloc(sizeof(float) * 2 * (size_t)j.count);
     if (!lens)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the kernel's lengths");
     ssg_sampling_lengths(j.kernel, j.count, lens);

@@ -53,7 +53,7 @@ enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     ssg_ssdo_job_init(&j.s, io, &c->g, &c->proj, 1);
     for (int ch = 0; ch < 3; ch++)
         j.out[ch] = ssg_image_plane(io->out[0], ch);
-    float *lens = malloc(sizeof(float) * (size_t)j.s.count);
+    float *lens = malloc(sizeof(float) * 2 * (size_t)j.s.count);
     if (!lens)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the kernel's lengths");
     ssg_sampling_lengths(j.s.kernel, j.s.count, lens);

@@ -438,7 +438,7 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
-    float *per_sample = malloc(sizeof(float) * (4 * (size_t)j.s.count + 1));
+    float *per_sample = malloc(sizeof(float) * (5 * (size_t)j.s.count + 1));
     if (!per_sample)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     j.nw = per_sample;

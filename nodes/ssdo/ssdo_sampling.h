@@ -116,7 +116,7 @@ struct ssg_ssdo_job {
     int count;                      /* K */
     const float *rot;               /* planar n x n x 2 (cos, sin), NULL = none */
     const float *off;               /* the tile's length shift (planes 3, 4), NULL = none */
-    const float *lens;              /* |s| per kernel sample (the caller's; with off) */
+    const float *lens;              /* |s| per kernel sample, twice over (the caller's) */
     int n;
     int w, h;                       /* px */
     float f, cx, cy;                /* projection of this resolution */
@@ -133,6 +133,7 @@ struct ssg_ssdo_chunk {
     float co[SSG_SSDO_CHUNK], si[SSG_SSDO_CHUNK]; /* rotation of the tile (scratch) */
     float dl[SSG_SSDO_CHUNK];                   /* the tile's length offset (with off) */
     float dk[SSG_SSDO_CHUNK];                   /* the tile's index shift (with off) */
+    float gs[SSG_SSDO_CHUNK];                   /* per sample: its length shift's factor */
     float px[SSG_SSDO_CHUNK], py[SSG_SSDO_CHUNK], pz[SSG_SSDO_CHUNK]; /* P */
     float dp[SSG_SSDO_CHUNK];                   /* depth of P */
     float rr[SSG_SSDO_CHUNK];                   /* r, scene units */
@@ -259,8 +260,8 @@ ssg_ssdo_place(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, 
                float sx, float sy, float sz, int s)
 {
     if (j->off)
-        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, j->count,
-                                   k->dl, k->dk, j->g.bias, j->w, j->h, k->idx, k->zb);
+        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, k->dl,
+                                   k->dk, k->gs, j->g.bias, j->w, j->h, k->idx, k->zb);
     else
         ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->g.bias, j->w, j->h,
                            k->idx, k->zb);
