@@ -45,6 +45,9 @@ static void halton_cases(void)
     parity_node("blue noise 64", "halton", NULL, 0, blue, 2, &f, exact);
     const char *latin[] = {"rotations=interleaved", "pattern=5"};
     parity_node("interleaved 5", "halton", NULL, 0, latin, 2, &f, exact);
+    const char *shifted[] = {"lengths=shifted", "falloff=1", "pattern=8", "period=12",
+                             "count=48"};
+    parity_node("shifted lengths", "halton", NULL, 0, shifted, 5, &f, exact);
 }
 
 /* ---- complexity ---- */

@@ -333,7 +333,9 @@ unsigned ssg_type_of_image(unsigned accepted, const struct ssg_image *image)
         return SSG_T_COLOR;
     if (image->channels == 3 && image->height == 1 && (accepted & SSG_T_KERNEL))
         return SSG_T_KERNEL;
-    if (image->channels == 2 && (accepted & SSG_T_PATTERN))
+    /* A pattern's optional channels 3 and 4: the length shift (halton lengths=shifted). */
+    if ((image->channels == 2 || (image->channels == 4 && image->width == image->height)) &&
+        (accepted & SSG_T_PATTERN))
         return SSG_T_PATTERN;
     if (image->channels == 3 && image->height == 2 && (accepted & SSG_T_LIGHTS))
         return SSG_T_LIGHTS;

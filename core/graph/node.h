@@ -54,7 +54,9 @@ enum ssg_type {
     SSG_T_COLOR = 1u << 2,   /* 3 channels, frame sized: linear RGB */
     SSG_T_KERNEL = 1u << 3,  /* count x 1, 3 channels: sample offsets in the unit hemisphere
                                 around +z (tangent space), |s| <= 1 */
-    SSG_T_PATTERN = 1u << 4, /* n x n tile, 2 channels: per-pixel rotation (cos, sin) */
+    SSG_T_PATTERN = 1u << 4, /* n x n tile, 2 channels: per-pixel rotation (cos, sin); or
+                                4: and a per-pixel shift of the sample lengths (offset,
+                                index shift; nodes/halton/README.md, "Lengths") */
     SSG_T_LIGHTS = 1u << 5,  /* count x 2, 3 channels: directional lights; row 0 the unit
                                 world direction towards light i, row 1 its RGB irradiance on
                                 a surface facing it (nodes/common/shadowmap.h) */

@@ -61,7 +61,8 @@ static const struct {
     {"kernel", "count x 1, 3 channels: sample offsets in the unit hemisphere around +z "
                "(tangent space), of length at most 1 (halton, and what ssao, ssdo and hbao sample with)"},
     {"pattern", "n x n tile, 2 channels: a per-pixel rotation (cos, sin) of the kernel, "
-                "tiled over the frame"},
+                "tiled over the frame; or 4 channels: and a per-pixel shift of the sample "
+                "lengths, offset and index shift (ssao, ssdo and bounce read them)"},
     {"lights", "count x 2, 3 channels: directional lights; row 0 the unit world direction "
                "towards light i, row 1 its RGB irradiance on a surface facing it"},
     {"shadowmaps", "R x R, one channel per light of a lights list: the depth of the nearest "

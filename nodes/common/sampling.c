@@ -16,9 +16,9 @@ enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
                  kernel->width, kernel->height, kernel->channels);
         return SSG_E_CHANNELS;
     }
-    if (rotation->channels != 0 &&
-        (rotation->channels != 2 || rotation->width != rotation->height)) {
-        snprintf(why, why_len, "rotation must be an n x n pattern with 2 channels, got "
+    if (rotation->channels != 0 && ((rotation->channels != 2 && rotation->channels != 4) ||
+                                    rotation->width != rotation->height)) {
+        snprintf(why, why_len, "rotation must be an n x n pattern with 2 or 4 channels, got "
                  "%dx%dx%d", rotation->width, rotation->height, rotation->channels);
         return SSG_E_CHANNELS;
     }

@@ -7,7 +7,7 @@
 
 uniform sampler2DArray position; // view-space position (z alone where depth is unbound)
 uniform sampler2DArray depth;    // linear depth, when depth_bound
-uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin), when rotation_bound
+uniform sampler2DArray rotation; // n x n, 2 layers (cos, sin) or 4 (and the length shift)
 uniform bool depth_bound;
 uniform bool rotation_bound;
 #ifndef SSG_SAMPLING_NO_KERNEL
@@ -38,6 +38,16 @@ vec2 ssg_tile_rotation(ivec2 p)
     return ssg_load2(rotation, p % tile);
 }
 
+// The length shift (dl, k) of pixel p: the tile's layers 3 and 4 (halton
+// lengths=shifted; sampling.h ssg_sampling_offsets); (0, 0) without them: no change.
+vec2 ssg_tile_shift(ivec2 p)
+{
+    if (!rotation_bound || textureSize(rotation, 0).z < 4)
+        return vec2(0.0);
+    ivec2 q = p % textureSize(rotation, 0).x;
+    return vec2(texelFetch(rotation, ivec3(q, 2), 0).r, texelFetch(rotation, ivec3(q, 3), 0).r);
+}
+
 // A pixel of depth dp and normal N is a surface when dp is a plausible depth and N is not
 // zero: false for the background (depth 0, no normal) or garbage. A surface's normal that
 // is not unit is normalised (the CPU does so for its whole chunk).
@@ -59,6 +69,30 @@ vec3 ssg_kernel_sample(int s)
     return vec3(texelFetch(kernel, ivec3(s, 0, 0), 0).r,
                 texelFetch(kernel, ivec3(s, 0, 1), 0).r,
                 texelFetch(kernel, ivec3(s, 0, 2), 0).r);
+}
+
+// |s| (sampling.h ssg_sampling_len: the same operations).
+float ssg_sample_len(vec3 s)
+{
+    precise float l = sqrt(s.x * s.x + s.y * s.y + s.z * s.z);
+    return l;
+}
+
+// Kernel sample number i, s, of a pixel with length shift (dl, k) = shift: s g, its
+// direction with the length of sample (i + k) mod K plus dl (sampling.h
+// ssg_sampling_shift_factor, the same operations); no shift returns s's bits.
+vec3 ssg_shifted_sample(int i, vec3 s, vec2 shift)
+{
+    if (shift.x == 0.0 && shift.y == 0.0)
+        return s;
+    int count = textureSize(kernel, 0).x;
+    int j = i + int(shift.y);
+    j = j >= count ? j - count : j;
+    precise float ls = ssg_sample_len(s);
+    precise float il = ls > 0.0 ? 1.0 / ls : 0.0;
+    precise float g = 1.0 + (ssg_sample_len(ssg_kernel_sample(j)) - ls + shift.x) * il;
+    precise vec3 r = vec3(s.x * g, s.y * g, s.z * g);
+    return r;
 }
 #endif
 

@@ -18,7 +18,7 @@ enum { SSG_SAMPLING_CHUNK = 128 };
 
 /* check() of a sampling node: its inputs besides position and normal, against position:
  * the kernel (count x 1, 3 channels; NULL: the node has no kernel input), the optional
- * rotation tile (n x n, 2 channels), the optional depth and per-pixel count (1 channel,
+ * rotation tile (n x n, 2 channels, or 4 with the length shift), the optional depth and per-pixel count (1 channel,
  * the size of position; count NULL: no such input); channels 0 = unconnected. Returns
  * SSG_OK, or the error code with the reason in why. */
 enum ssg_err ssg_sampling_check_inputs(const struct ssg_shape *position,
@@ -118,23 +118,76 @@ ssg_sampling_load(const float *const pos[3], const float *const nrm[3], const fl
         ssg_sampling_normalize(len, nx, ny, nz);
 }
 
+/* Two consecutive planes of an n x n tile (planar, `tile` the first) for pixels
+ * [x0, x0 + len) of row y, into a and b; without a tile (NULL) the constants a0 and b0. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_tile_pair(const float *tile, int n, int y, int x0, int len, float a0, float b0,
+                       float *restrict a, float *restrict b)
+{
+    if (tile) {
+        const float *ra = tile + (size_t)(y % n) * (size_t)n, *rb = ra + (size_t)n * n;
+        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
+            a[i] = ra[xm];
+            b[i] = rb[xm];
+        }
+    } else {
+        for (int i = 0; i < len; i++) {
+            a[i] = a0;
+            b[i] = b0;
+        }
+    }
+}
+
 /* The rotation (cos, sin) of the n x n tile `rot` (planar, cos plane then sin plane) for
  * pixels [x0, x0 + len) of row y; without a tile (rot NULL) no rotation. */
 static inline __attribute__((always_inline)) void
 ssg_sampling_rotation(const float *rot, int n, int y, int x0, int len, float *restrict co,
                       float *restrict si)
 {
-    if (rot) {
-        const float *rc = rot + (size_t)(y % n) * (size_t)n, *rs = rc + (size_t)n * n;
-        for (int i = 0, xm = x0 % n; i < len; i++, xm = xm + 1 == n ? 0 : xm + 1) {
-            co[i] = rc[xm];
-            si[i] = rs[xm];
-        }
-    } else {
-        for (int i = 0; i < len; i++) {
-            co[i] = 1.0f;
-            si[i] = 0.0f;
-        }
+    ssg_sampling_tile_pair(rot, n, y, x0, len, 1.0f, 0.0f, co, si);
+}
+
+/* The length shift of the tile (halton lengths=shifted, nodes/halton/README.md,
+ * "Lengths"): planes 3 and 4 of an n x n rotation tile, `off` the third, for pixels
+ * [x0, x0 + len) of row y: dl, the offset of every sample length of the pixel (units of
+ * the radius), and k, its sample index shift (a whole number as a float): sample i of the
+ * pixel gets the length of kernel sample (i + k) mod K, plus dl. Without them (off NULL)
+ * 0 and 0: no change. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_offsets(const float *off, int n, int y, int x0, int len, float *restrict dl,
+                     float *restrict k)
+{
+    ssg_sampling_tile_pair(off, n, y, x0, len, 0.0f, 0.0f, dl, k);
+}
+
+/* The third plane of a rotation tile (the length offsets, the index shifts after them),
+ * or NULL when it has two. */
+static inline const float *ssg_sampling_offset_plane(const struct ssg_image *rot)
+{
+    return rot && rot->channels == 4 ? ssg_image_plane(rot, 2) : NULL;
+}
+
+/* |s| of a kernel sample: sqrt of the squares summed in x, y, z order (sampling.glsl's
+ * ssg_shifted_sample does the same operations). */
+static inline float ssg_sampling_len(float sx, float sy, float sz)
+{
+    return sqrtf(sx * sx + sy * sy + sz * sz);
+}
+
+/* 1 / |s| of a kernel sample, 0 for s = 0 (ssdo's per-sample constants). */
+static inline float ssg_sampling_inv_len(float sx, float sy, float sz)
+{
+    float l = ssg_sampling_len(sx, sy, sz);
+    return l > 0.0f ? 1.0f / l : 0.0f;
+}
+
+/* lens[i] = |s_(i mod K)| for i < 2 K, of the K samples of a planar kernel (x plane, y,
+ * z), for the length shift's look-ups: twice over, so that lens[s + k] needs no wrap. */
+static inline void ssg_sampling_lengths(const float *kernel, int count, float *lens)
+{
+    for (int i = 0; i < count; i++) {
+        lens[i] = ssg_sampling_len(kernel[i], kernel[count + i], kernel[2 * count + i]);
+        lens[count + i] = lens[i];
     }
 }
 
@@ -163,6 +216,26 @@ static inline __attribute__((always_inline)) void ssg_sampling_basis(float nx, f
  * camera or off screen (no depth > 0 undercuts it: unoccluded, visible). Comparisons are
  * false for NaN, so a degenerate Z lands there too. */
 static inline __attribute__((always_inline)) void
+ssg_sampling_place_lane(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
+                        const float (*restrict cu)[SSG_SAMPLING_CHUNK],
+                        const float (*restrict cv)[SSG_SAMPLING_CHUNK], int i, float sx,
+                        float sy, float sz, float bias, int w, float fw, float fh,
+                        int32_t *restrict idx, float *restrict zbs)
+{
+    float zb = cz[0][i] + cz[1][i] * sx + cz[2][i] * sy + cz[3][i] * sz;
+    float z = zb + bias;
+    float nu = cu[0][i] + cu[1][i] * sx + cu[2][i] * sy + cu[3][i] * sz;
+    float nv = cv[0][i] + cv[1][i] * sx + cv[2][i] * sy + cv[3][i] * sz;
+    float inv = 1.0f / z;
+    float u = nu * inv, v = nv * inv;
+    int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
+    /* Select in float, then convert: converting an out-of-range float is undefined. */
+    float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
+    idx[i] = (int)vs * w + (int)us;
+    zbs[i] = ok ? zb : -1.0f;
+}
+
+static inline __attribute__((always_inline)) void
 ssg_sampling_place(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
                    const float (*restrict cu)[SSG_SAMPLING_CHUNK],
                    const float (*restrict cv)[SSG_SAMPLING_CHUNK], int len, float sx, float sy,
@@ -170,18 +243,59 @@ ssg_sampling_place(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
                    float *restrict zbs)
 {
     const float fw = (float)w, fh = (float)h;
+    for (int i = 0; i < len; i++)
+        ssg_sampling_place_lane(cz, cu, cv, i, sx, sy, sz, bias, w, fw, fh, idx, zbs);
+}
+
+/* The factor g that gives kernel sample s (length ls = lens[s], il = 1 / ls or 0 for
+ * ls = 0) of a pixel with length shift (dl, k) its shifted length with its direction: s g
+ * has length lens[s + k] + dl (lens twice over: ssg_sampling_lengths). Written
+ * 1 + (lens[s + k] - ls + dl) il, so that k = 0 and dl = 0 give exactly 1. */
+static inline __attribute__((always_inline)) float
+ssg_sampling_shift_factor(const float *restrict lens, int32_t j, float ls, float il, float dl)
+{
+    return 1.0f + (lens[j] - ls + dl) * il;
+}
+
+/* 1 / lens[s], or 0 for a sample of length 0 (which has no direction to keep). */
+static inline float ssg_sampling_inv(float ls)
+{
+    return ls > 0.0f ? 1.0f / ls : 0.0f;
+}
+
+/* gs[i] = the factor g of kernel sample s for each of len lanes (dl, k their shifts), in
+ * a loop of its own: its look-up at a computed index does not vectorise, and kept out of
+ * the placement's loop it leaves that one vectorised. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_shift_factors(int len, int s, const float *restrict lens,
+                           const float *restrict dl, const float *restrict k,
+                           float *restrict gs)
+{
+    const float ls = lens[s], il = ssg_sampling_inv(ls);
+    for (int i = 0; i < len; i++)
+        gs[i] = ssg_sampling_shift_factor(lens, s + (int32_t)k[i], ls, il, dl[i]);
+}
+
+/* The same for kernel sample number s with each pixel's length shift (dl[i], k[i],
+ * ssg_sampling_offsets; lens the kernel's lengths twice over, gs scratch for the lanes'
+ * factors): the sample s g (ssg_sampling_shift_factor) keeps its direction and takes its
+ * shifted length. No shift gives the bits of ssg_sampling_place (g = 1), at the
+ * cost of a look-up and a few flops a lane, so callers without a shift call that. */
+static inline __attribute__((always_inline)) void
+ssg_sampling_place_shifted(const float (*restrict cz)[SSG_SAMPLING_CHUNK],
+                           const float (*restrict cu)[SSG_SAMPLING_CHUNK],
+                           const float (*restrict cv)[SSG_SAMPLING_CHUNK], int len, float sx,
+                           float sy, float sz, int s, const float *restrict lens,
+                           const float *restrict dl, const float *restrict k,
+                           float *restrict gs, float bias, int w, int h,
+                           int32_t *restrict idx, float *restrict zbs)
+{
+    const float fw = (float)w, fh = (float)h;
+    ssg_sampling_shift_factors(len, s, lens, dl, k, gs);
     for (int i = 0; i < len; i++) {
-        float zb = cz[0][i] + cz[1][i] * sx + cz[2][i] * sy + cz[3][i] * sz;
-        float z = zb + bias;
-        float nu = cu[0][i] + cu[1][i] * sx + cu[2][i] * sy + cu[3][i] * sz;
-        float nv = cv[0][i] + cv[1][i] * sx + cv[2][i] * sy + cv[3][i] * sz;
-        float inv = 1.0f / z;
-        float u = nu * inv, v = nv * inv;
-        int ok = (z > 0.0f) & (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
-        /* Select in float, then convert: converting an out-of-range float is undefined. */
-        float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
-        idx[i] = (int)vs * w + (int)us;
-        zbs[i] = ok ? zb : -1.0f;
+        float g = gs[i];
+        ssg_sampling_place_lane(cz, cu, cv, i, sx * g, sy * g, sz * g, bias, w, fw, fh, idx,
+                                zbs);
     }
 }
 

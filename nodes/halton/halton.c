@@ -115,6 +115,23 @@ static enum ssg_err check_period(const struct ssg_halton_params *p, char *why, s
     return SSG_OK;
 }
 
+/* lengths=shifted moves every length of a pixel by one offset, which keeps each sample in
+   its stratum only where the length is linear in a stratified t (README.md, "Lengths"). */
+static enum ssg_err check_lengths(const struct ssg_halton_params *p, char *why,
+                                  size_t why_len)
+{
+    if (p->lengths != SSG_HALTON_SHIFTED)
+        return SSG_OK;
+    if (p->falloff != 1.0f || p->bases.count != 2) {
+        snprintf(why, why_len, "lengths=shifted needs falloff=1 and two bases (a length "
+                 "linear in a stratified coordinate, so one offset per pixel keeps every "
+                 "sample in its stratum); got falloff %g and %d bases", (double)p->falloff,
+                 p->bases.count);
+        return SSG_E_VALUE;
+    }
+    return SSG_OK;
+}
+
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
@@ -123,10 +140,13 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     enum ssg_err e = check_bases(p, why, why_len);
     if (e == SSG_OK)
         e = check_period(p, why, why_len);
+    if (e == SSG_OK)
+        e = check_lengths(p, why, why_len);
     if (e != SSG_OK)
         return e;
+    int planes = p->lengths == SSG_HALTON_SHIFTED ? 4 : 2;
     out[0] = (struct ssg_shape){p->count, 1, 3, SSG_T_KERNEL};
-    out[1] = (struct ssg_shape){p->pattern, p->pattern, 2, SSG_T_PATTERN};
+    out[1] = (struct ssg_shape){p->pattern, p->pattern, planes, SSG_T_PATTERN};
     return SSG_OK;
 }
 
@@ -142,14 +162,35 @@ static void make_kernel(const struct ssg_halton_params *p, int frame, float *ker
     }
 }
 
+double ssg_halton_length_offset(const struct ssg_halton_params *p, int frame, double place)
+{
+    double turn = ssg_sampling_frame_turn(frame);
+    double to = place + turn, mid = 0.5 + turn; /* mid: ssg_halton_point_at's place */
+    to -= floor(to);
+    mid -= floor(mid);
+    return (1.0 - (double)p->min_scale) * (to - mid) / (double)p->count;
+}
+
+/* The third plane of lengths=shifted in frame `frame`: every cell's length offset (the
+   fourth, the index shift, is the same in every frame). */
+static void make_offsets(const struct ssg_halton_consts *c, int frame, float *offset)
+{
+    for (int i = 0; i < c->n * c->n; i++)
+        offset[i] = (float)ssg_halton_length_offset(&c->p, frame, c->place[i]);
+}
+
 void ssg_halton_frame(const struct ssg_halton_consts *c, int frame, float *kernel,
                       float *pattern)
 {
     size_t cells = (size_t)c->n * (size_t)c->n;
     if (frame == 0) { /* the single-frame bytes, -0 included */
         memcpy(kernel, c->kernel, sizeof(float) * 3 * (size_t)c->count);
-        memcpy(pattern, c->pattern, sizeof(float) * 2 * cells);
+        memcpy(pattern, c->pattern, sizeof(float) * (size_t)c->planes * cells);
         return;
+    }
+    if (c->planes == 4) {
+        make_offsets(c, frame, pattern + 2 * cells);
+        memcpy(pattern + 3 * cells, c->pattern + 3 * cells, sizeof(float) * cells);
     }
     make_kernel(&c->p, frame, kernel);
     /* Every pixel's angle advances by the same golden-ratio turn: each pixel's angles
@@ -169,16 +210,23 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     c->count = p->count;
     c->n = p->pattern;
+    c->planes = p->lengths == SSG_HALTON_SHIFTED ? 4 : 2;
     make_kernel(p, 0, c->kernel);
-    if (!ssg_halton_make_pattern(p->rotations, p->pattern, ctx->frame ? ctx->frame->seed : 1,
-                                 c->pattern))
+    uint64_t seed = ctx->frame ? ctx->frame->seed : 1;
+    if (!ssg_halton_make_pattern(p->rotations, p->pattern, seed, c->pattern))
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the blue-noise tile");
+    if (c->planes == 4) {
+        size_t cells = (size_t)c->n * (size_t)c->n;
+        ssg_halton_make_places(p->pattern, p->count, seed, c->place, c->pattern + 3 * cells);
+        make_offsets(c, 0, c->pattern + 2 * cells);
+    }
     return SSG_OK;
 }
 
 static const char *const ssg_halton_mapping_choices[] = {"cosine", "uniform", NULL};
 static const char *const ssg_halton_rotations_choices[] = {"tile", "interleaved", "blue_noise",
                                                            NULL};
+static const char *const ssg_halton_lengths_choices[] = {"shared", "shifted", NULL};
 SSG_PARAMS_TABLE(params, ssg_halton_params, SSG_HALTON_PARAMS);
 
 SSG_PORT_TABLE(outputs, SSG_HALTON_OUT);

@@ -18,7 +18,8 @@
     X(SSG_HALTON_OUT_SAMPLES, "samples", SSG_T_KERNEL,                                     \
       "count x 1 tangent-space offsets in the unit hemisphere around +z")                  \
     X(SSG_HALTON_OUT_ROTATION, "rotation", SSG_T_PATTERN,                                  \
-      "n x n tile of (cos, sin) of a rotation about the normal")
+      "n x n tile of (cos, sin) of a rotation about the normal; lengths=shifted adds the "  \
+      "pixel's length offset (fraction of the radius) and its sample index shift")
 SSG_PORT_ENUM(ssg_halton_output, SSG_HALTON_OUT, SSG_HALTON_OUTPUTS);
 
 #define SSG_HALTON_MAX_COUNT 1024  /* most kernel samples */
@@ -27,6 +28,12 @@ SSG_PORT_ENUM(ssg_halton_output, SSG_HALTON_OUT, SSG_HALTON_OUTPUTS);
 enum ssg_halton_mapping {
     SSG_HALTON_COSINE,  /* cosine-weighted hemisphere (Malley's method) */
     SSG_HALTON_UNIFORM, /* uniform over the hemisphere's solid angle */
+};
+
+/* Whether every pixel uses the kernel's lengths or its own (README.md, "Lengths"). */
+enum ssg_halton_lengths {
+    SSG_HALTON_SHARED,  /* every pixel the kernel's lengths (the papers' kernel) */
+    SSG_HALTON_SHIFTED, /* per pixel a Cranley-Patterson shift of the lengths (planes 3, 4) */
 };
 
 /* How the rotation tile is laid out (halton_pattern.c). */
@@ -61,7 +68,11 @@ enum ssg_halton_rotations {
     P(ENUM, rotations,                                                                     \
       "tile layout: tile = n*n angles, white; interleaved = n angles, every row and "      \
       "column holds each once; blue_noise = n*n angles, void-and-cluster (n = 64)",        \
-      .def = SSG_HALTON_TILE, .choices = ssg_halton_rotations_choices)
+      .def = SSG_HALTON_TILE, .choices = ssg_halton_rotations_choices)                   \
+    P(ENUM, lengths,                                                                       \
+      "shared = every pixel the kernel's sample lengths; shifted = per pixel a "           \
+      "Cranley-Patterson shift of the length coordinate (needs falloff=1, 2 bases)",       \
+      .def = SSG_HALTON_SHARED, .choices = ssg_halton_lengths_choices)
 SSG_PARAMS_STRUCT(ssg_halton_params, SSG_HALTON_PARAMS);
 
 /* What prepare() computes and both backends read: images in the planar layout of
@@ -71,8 +82,12 @@ struct ssg_halton_consts {
     struct ssg_halton_params p; /* the parameters as given */
     int count;  /* kernel samples (kernel image width) */
     int n;      /* rotation tile side (pattern image width and height) */
+    int planes; /* pattern planes: 2 (cos, sin), 4 with lengths=shifted (offset, shift) */
     float kernel[3 * SSG_HALTON_MAX_COUNT];                       /* x plane, y, z */
-    float pattern[2 * SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN]; /* cos plane, sin */
+    float pattern[4 * SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN]; /* cos, sin, dl, k */
+    /* lengths=shifted: each cell's place in its samples' strata in frame 0, (j + 1/2) / n
+       for the cell's Latin-square level j; in [0, 1) */
+    double place[SSG_HALTON_MAX_PATTERN * SSG_HALTON_MAX_PATTERN];
 };
 
 /* The unit-cube point behind kernel sample `sample` (0-based): u[0], u[1] drive the
@@ -86,12 +101,29 @@ void ssg_halton_point(const struct ssg_halton_params *p, int sample, double u[3]
 void ssg_halton_point_at(const struct ssg_halton_params *p, int frame, int sample,
                          double u[3]);
 
-/* Kernel (3 * count floats, planar) and rotation tile (2 * n * n floats) of frame
+/* Kernel (3 * count floats, planar) and rotation tile (planes * n * n floats) of frame
  * `frame` from prepare()'s constants: the kernel of ssg_halton_point_at, the tile turned
- * about the normal by 2 pi ssg_sampling_frame_turn(frame). Frame 0 copies the constants'
- * bytes. Both backends run this, so they copy the same floats. */
+ * about the normal by 2 pi ssg_sampling_frame_turn(frame), the length offsets of
+ * ssg_halton_length_offset. Frame 0 copies the constants' bytes. Both backends run this,
+ * so they copy the same floats. */
 void ssg_halton_frame(const struct ssg_halton_consts *c, int frame, float *kernel,
                       float *pattern);
+
+/* lengths=shifted: the offset (fraction of the radius) that moves every sample length
+ * of a pixel whose cell has place `place` (consts.place) in frame `frame`: from its
+ * place in its stratum of the length coordinate t (the stratified value of
+ * ssg_halton_point_at: the stratum's middle in frame 0, then the golden-ratio sequence)
+ * to frac(place + ssg_sampling_frame_turn(frame)); the length is linear in t (falloff 1),
+ * so the offset is (1 - min_scale) (that - mid) / count, the same for every sample. */
+double ssg_halton_length_offset(const struct ssg_halton_params *p, int frame, double place);
+
+/* The cells of lengths=shifted (halton_pattern.c; a stream of its own: the rotation
+ * tiles keep theirs), from three Latin squares Q, A, B = (s(x) + t(y)) mod n, each with
+ * its own seeded permutations s and t, so that every row and every column holds each of
+ * their n values once: place[y * n + x] = (Q + 1/2) / n, and the index shift k of
+ * README.md, "Lengths", shift[i] = floor(count (n A + B) / n^2): every row and every
+ * column holds each of the n blocks floor(k n / count) of sample indices once. */
+void ssg_halton_make_places(int n, int count, uint64_t seed, double *place, float *shift);
 
 /* Largest k with base^k dividing period (0 when period <= 0): the number of leading
  * digits that eq. 8 guarantees samples sample and sample + m*period share. */

@@ -11,8 +11,9 @@ enum ssg_err ssg_halton_run_gl(const struct ssg_node_ctx *ctx, const void *const
                                const struct ssg_io *io)
 {
     const struct ssg_halton_consts *c = consts;
-    /* The largest kernel and tile: 44 KiB, too much for a stack frame we do not own. */
-    float *kernel = malloc(sizeof(float) * (3 * (size_t)c->count + 2 * (size_t)c->n * c->n));
+    /* The largest kernel and tile: 76 KiB, too much for a stack frame we do not own. */
+    size_t cells = (size_t)c->n * (size_t)c->n;
+    float *kernel = malloc(sizeof(float) * (3 * (size_t)c->count + (size_t)c->planes * cells));
     if (!kernel)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame's kernel");
     float *pattern = kernel + 3 * (size_t)c->count;

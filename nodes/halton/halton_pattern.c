@@ -195,6 +195,26 @@ static int blue_noise_pattern(int n, uint64_t seed, uint64_t *state, float *patt
     return 1;
 }
 
+void ssg_halton_make_places(int n, int count, uint64_t seed, double *place, float *shift)
+{
+    /* A stream of its own (the next SHA-512 initial word), so the rotation tiles of a
+       seed stay as they were; permutations of their own decorrelate the places, the
+       shifts and the rotation. */
+    uint64_t state = seed ^ 0x3C6EF372FE94F82Bull;
+    int s[3][SSG_HALTON_MAX_PATTERN], t[3][SSG_HALTON_MAX_PATTERN];
+    for (int m = 0; m < 3; m++) {
+        ssg_random_permutation(&state, s[m], n);
+        ssg_random_permutation(&state, t[m], n);
+    }
+    for (int y = 0; y < n; y++)
+        for (int x = 0; x < n; x++) {
+            int q = (s[0][x] + t[0][y]) % n, a = (s[1][x] + t[1][y]) % n;
+            int b = (s[2][x] + t[2][y]) % n;
+            place[y * n + x] = ((double)q + 0.5) / (double)n;
+            shift[y * n + x] = (float)(((int64_t)count * (a * n + b)) / ((int64_t)n * n));
+        }
+}
+
 int ssg_halton_make_pattern(int kind, int n, uint64_t seed, float *pattern)
 {
     /* The tile's stream starts as it always has, so seeds keep their tiles. */

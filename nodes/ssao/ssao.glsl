@@ -93,13 +93,14 @@ float sample_disc(ivec2 p, vec2 rot, vec3 s, float sgn, float rp, float dp, floa
 float occluded_sum(ivec2 p, vec3 N, float dp, int n)
 {
     vec2 rot = ssg_tile_rotation(p);
+    vec2 shift = ssg_tile_shift(p); // the sample lengths' shift at p (0: none)
     precise float rcap = cap * dp;
     float r = capped != 0 && rcap < p_radius ? rcap : p_radius;
     precise float occ = 0.0;
     if (p_mode == MODE_DISC) {
         precise float rp = proj.x * r / dp;
         for (int s = 0; s < n; s++) {
-            vec3 ks = ssg_kernel_sample(s);
+            vec3 ks = ssg_shifted_sample(s, ssg_kernel_sample(s), shift);
             occ += sample_disc(p, rot, ks, 1.0, rp, dp, r);
             occ += sample_disc(p, rot, ks, -1.0, rp, dp, r);
         }
@@ -107,7 +108,7 @@ float occluded_sum(ivec2 p, vec3 N, float dp, int n)
     }
     frame_coeffs k = setup_frame(ssg_load3(position, p), N, rot, r);
     for (int s = 0; s < n; s++) {
-        vec3 ks = ssg_kernel_sample(s);
+        vec3 ks = ssg_shifted_sample(s, ssg_kernel_sample(s), shift);
         occ += sample_point(k, ks, dp, r);
         if (p_mode == MODE_SPHERE)
             occ += sample_point(k, -ks, dp, r);

@@ -25,7 +25,8 @@ enum ssg_ssao_mode {
       "unit view-space normal (mode hemisphere only; required there)", .optional = 1)      \
     X(SSG_SSAO_IN_KERNEL, "kernel", SSG_T_KERNEL, "hemisphere samples (halton.samples)")    \
     X(SSG_SSAO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
-      "per-pixel rotation tile (halton.rotation); none = no rotation", .optional = 1)      \
+      "per-pixel rotation tile (halton.rotation; a third plane moves the sample "          \
+      "lengths); none = no rotation", .optional = 1)                                       \
     X(SSG_SSAO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
       "linear depth for the occluder lookup; none = -position.z", .optional = 1)           \
     X(SSG_SSAO_IN_COUNT, "count", SSG_T_SCALAR,                                            \

@@ -23,6 +23,7 @@
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "common/sampling.h"
@@ -38,6 +39,8 @@ struct job {
     const float *kernel;          /* planar count x 1 x 3 */
     int count;
     const float *rot;             /* planar n x n x 2 (cos, sin), NULL = none */
+    const float *off;             /* the tile's length shift (planes 3, 4), NULL = none */
+    const float *lens;            /* |s| of each kernel sample */
     int n;
     const float *cnt;             /* per-pixel sample counts, NULL = the whole kernel */
     float *out;
@@ -53,6 +56,9 @@ struct job {
 struct chunk {
     float nx[CHUNK], ny[CHUNK], nz[CHUNK]; /* unit normal (scratch of the setup) */
     float co[CHUNK], si[CHUNK];            /* rotation of the tile (scratch) */
+    float dl[CHUNK];                       /* the tile's length offset, 0 without */
+    float dk[CHUNK];                       /* the tile's sample index shift, 0 without */
+    float gs[CHUNK];                       /* per sample: its length shift's factor */
     float px[CHUNK], py[CHUNK], pz[CHUNK]; /* P (scratch) */
     float cu[4][CHUNK];                    /* u * Z = cu0 + cu1 s.x + cu2 s.y + cu3 s.z */
     float cv[4][CHUNK];                    /* v * Z, likewise */
@@ -78,6 +84,7 @@ static void load_chunk(const struct job *j, struct chunk *restrict k, int y, int
     ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
                       k->nz, k->px, k->py, k->pz, k->dp);
     ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
+    ssg_sampling_offsets(j->off, j->n, y, x0, len, k->dl, k->dk);
 }
 
 /* The loads of the normal-free modes: every pixel with a depth is a surface, and the
@@ -105,6 +112,7 @@ static void load_chunk_free(const struct job *j, struct chunk *restrict k, int y
         k->xf[i] = (float)(x0 + i);
     }
     ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
+    ssg_sampling_offsets(j->off, j->n, y, x0, len, k->dl, k->dk);
 }
 
 /* Vectorised part of the setup: tangent frame (Duff et al., "Building an Orthonormal
@@ -153,10 +161,14 @@ static void setup_chunk(const struct job *j, struct chunk *restrict k, int len)
    straight code; selects of computed values, no conditional arithmetic. */
 static inline __attribute__((always_inline)) void
 place_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
-            float sz)
+            float sz, int s)
 {
-    ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->c->p.bias, j->w, j->h,
-                       k->idx, k->zb);
+    if (j->off)
+        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, k->dl,
+                                   k->dk, k->gs, j->c->p.bias, j->w, j->h, k->idx, k->zb);
+    else
+        ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->c->p.bias, j->w, j->h,
+                           k->idx, k->zb);
 }
 
 /* Looks up the scene depth at each sample placed in k->idx (threshold k->zb) and adds
@@ -204,7 +216,7 @@ static inline __attribute__((always_inline)) void
 sample_chunk(const struct job *j, struct chunk *restrict k, int len, float sx, float sy,
              float sz, int range, int counted, int s)
 {
-    place_chunk(j, k, len, sx, sy, sz);
+    place_chunk(j, k, len, sx, sy, sz, s);
     lookup_chunk(j, k, len, range, counted, s);
 }
 
@@ -259,19 +271,23 @@ static void setup_disc(const struct job *j, struct chunk *restrict k, int len)
     }
 }
 
-/* Disc mode: places the depth sample at screen offset +-rp R (sx, sy) (R the tile's
-   rotation, +y up the screen), rounded to whole pixels (ties to even, so the two signs
-   stay exact opposites); it occludes when its depth is below depth(P) - bias. */
+/* Disc mode: places the depth sample at screen offset +-rp R (sx, sy) g (R the tile's
+   rotation, +y up the screen, g the pixel's length shift of sample s, exactly 1 without
+   one: ssg_sampling_shift_factor), rounded to whole pixels (ties to even, so the two signs stay exact
+   opposites); it occludes when its depth is below depth(P) - bias. */
 static inline __attribute__((always_inline)) void
 place_disc(const struct job *j, struct chunk *restrict k, int len, float y, float sx,
-           float sy, float sign)
+           float sy, int s, float sign)
 {
     const float bias = j->c->p.bias;
     const float fw = (float)j->w, fh = (float)j->h;
     const int w = j->w;
+    ssg_sampling_shift_factors(len, s, j->lens, k->dl, k->dk, k->gs);
     for (int i = 0; i < len; i++) {
-        float ou = nearbyintf(k->rp[i] * (k->co[i] * sx - k->si[i] * sy));
-        float ov = nearbyintf(k->rp[i] * (k->si[i] * sx + k->co[i] * sy));
+        float g = k->gs[i];
+        float gx = sx * g, gy = sy * g;
+        float ou = nearbyintf(k->rp[i] * (k->co[i] * gx - k->si[i] * gy));
+        float ov = nearbyintf(k->rp[i] * (k->si[i] * gx + k->co[i] * gy));
         float u = k->xf[i] + sign * ou, v = y - sign * ov;
         int ok = (u >= 0.0f) & (u < fw) & (v >= 0.0f) & (v < fh);
         float us = ok ? u : 0.0f, vs = ok ? v : 0.0f;
@@ -288,7 +304,7 @@ disc_loop(const struct job *j, struct chunk *k, int len, int y, int used, int co
     const float *kx = j->kernel, *ky = kx + count;
     for (int s = 0; s < used; s++)
         for (int m = 0; m < 2; m++) {
-            place_disc(j, k, len, (float)y, kx[s], ky[s], m ? -1.0f : 1.0f);
+            place_disc(j, k, len, (float)y, kx[s], ky[s], s, m ? -1.0f : 1.0f);
             switch (j->c->p.range_check) {
             case SSG_SSAO_RANGE_NONE:
                 lookup_chunk(j, k, len, SSG_SSAO_RANGE_NONE, counted, s);
@@ -404,11 +420,18 @@ enum ssg_err ssg_ssao_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     j.depth = dep ? dep->data : j.pos[2];
     j.depth_sign = dep ? 1.0f : -1.0f;
     j.rot = rot ? rot->data : NULL;
+    j.off = ssg_sampling_offset_plane(rot);
     j.n = rot ? rot->width : 1;
     j.cnt = io->in[SSG_SSAO_IN_COUNT] ? io->in[SSG_SSAO_IN_COUNT]->data : NULL;
     j.f = c->u.proj.f;
     j.cx = c->u.proj.cx;
     j.cy = c->u.proj.cy;
+    float *lens = malloc(sizeof(float) * 2 * (size_t)j.count);
+    if (!lens)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the kernel's lengths");
+    ssg_sampling_lengths(j.kernel, j.count, lens);
+    j.lens = lens;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, band, &j);
+    free(lens);
     return SSG_OK;
 }

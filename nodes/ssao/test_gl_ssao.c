@@ -1,7 +1,8 @@
 /* test_gl_ssao.c - CPU/GL parity of `ssao` (gl_parity.h) on G-buffers ray-cast from planes
  * (planes.h): every mode and range check, with and without the rotation tile, the depth
  * input, the count input (with values below 1, above the kernel, fractions and NaN),
- * max_screen_radius, power, non-unit normals, background pixels and a subsampled frame.
+ * max_screen_radius, power, non-unit normals, background pixels and a subsampled frame;
+ * and every mode with a tile of length offsets (halton lengths=shifted).
  *
  * Where differences come from: the shader does the CPU's operations in its order without
  * fused multiply-adds (`precise`), and takes the per-run factors (1 / K, the cap over f)
@@ -43,15 +44,38 @@ static void run_case(const struct parity_inputs *in, const char *label, const ch
     parity_check_darkens("ssao", &in->g, b, n, sets, set_count, f);
 }
 
-static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+/* The inputs on scene_fn's planes, halton's kernel and tile made with hsets. */
+static void load_inputs_with(struct parity_inputs *in, void (*scene_fn)(struct scene *),
+                             const char *const *hsets, int hcount)
 {
     *in = (struct parity_inputs){0};
     struct ssg_frame f = frame();
-    const char *sets[] = {"count=16"};
     parity_cast(scene_fn, &in->g);
-    parity_halton(&f, sets, 1, &in->kernel, &in->rot);
+    parity_halton(&f, hsets, hcount, &in->kernel, &in->rot);
     in->count = parity_count_image(W, H, 16);
     in->nrm2 = parity_scaled(in->g.nrm, 2.0f);
+}
+
+static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+{
+    const char *sets[] = {"count=16"};
+    load_inputs_with(in, scene_fn, sets, 1);
+}
+
+/* Every mode with each pixel's sample lengths moved by the tile's third plane. */
+static void shifted_cases(struct parity_tol tol)
+{
+    const char *hsets[] = {"count=16", "falloff=1", "lengths=shifted"};
+    struct parity_inputs in;
+    load_inputs_with(&in, corner_scene, hsets, 3);
+    CHECK_EQ(in.rot->channels, 4);
+    const char *def[] = {"radius=1.5"};
+    run_case(&in, "hemi shifted", "rd", def, 1, NULL, tol);
+    const char *sph[] = {"mode=sphere", "radius=1.5", "range_check=hard"};
+    run_case(&in, "sphere shifted", "nrc", sph, 3, NULL, tol);
+    const char *disc[] = {"mode=disc", "radius=1.5", "power=3"};
+    run_case(&in, "disc shifted", "nr", disc, 3, NULL, tol);
+    parity_inputs_free(&in);
 }
 
 static void hemisphere_cases(const struct parity_inputs *in, struct parity_tol tol)
@@ -103,5 +127,6 @@ int main(void)
     const char *def[] = {"radius=1.5"};
     run_case(&in, "hemi subsampled", "rd", def, 1, &big, tol);
     parity_inputs_free(&in);
+    shifted_cases(tol);
     return check_report();
 }

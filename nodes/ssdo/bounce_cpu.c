@@ -5,6 +5,8 @@
  * columns outside and a band's rows inside (see ssao_cpu.c); bands of rows go to
  * ssg_parallel_rows, so the result does not depend on the thread count. */
 #include "common/vector_loops.h" /* first: see there */
+#include <stdlib.h>
+
 #include "bounce.h"
 
 struct job {
@@ -51,6 +53,12 @@ enum ssg_err ssg_bounce_run_cpu(const struct ssg_node_ctx *ctx, const void *cons
     ssg_ssdo_job_init(&j.s, io, &c->g, &c->proj, 1);
     for (int ch = 0; ch < 3; ch++)
         j.out[ch] = ssg_image_plane(io->out[0], ch);
+    float *lens = malloc(sizeof(float) * 2 * (size_t)j.s.count);
+    if (!lens)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the kernel's lengths");
+    ssg_sampling_lengths(j.s.kernel, j.s.count, lens);
+    j.s.lens = lens;
     ssg_parallel_rows(j.s.h, SSG_SSDO_ROWS_PER_BAND, band, &j);
+    free(lens);
     return SSG_OK;
 }

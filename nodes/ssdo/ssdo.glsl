@@ -43,6 +43,7 @@ layout(std430, binding = 2) readonly buffer Lights { ssdo_light lights[]; };
 // Per-pixel constants (ssg_ssdo_setup).
 struct pixel_frame {
     vec3 P, N, T, B; // P, unit N, T and B turned by the tile (unit, not scaled by r)
+    vec2 shift;      // the tile's length shift (dl, k) at P (0: none)
     float r2;        // r^2 (range check)
     float ff;        // A_s / pi = strength r^2 / n
     float md2;       // min_distance^2
@@ -72,6 +73,7 @@ pixel_frame setup_frame(vec3 P, vec3 N, vec2 rot, float dp, int n)
     precise float rtz = r * T.z, rbz = r * B.z, rnz = r * N.z;
     pixel_frame k;
     k.P = P, k.N = N, k.T = T, k.B = B;
+    k.shift = vec2(0.0); // main() sets the tile's
     k.cz = vec4(qz - p_bias, -rtz, -rbz, -rnz);
     precise float cu0 = f * P.x + cx * qz, cu1 = f * (r * T.x) - cx * rtz;
     precise float cu2 = f * (r * B.x) - cx * rbz, cu3 = f * (r * N.x) - cx * rnz;
@@ -107,13 +109,15 @@ void add_bounce(inout bounce_sum acc, pixel_frame k, ivec2 q, vec3 v, float dd)
     acc.fl += fl;
 }
 
-// Kernel sample s's visibility V (1 or 0) around the pixel (ssg_ssdo_place,
-// ssg_ssdo_depth_test, ssg_ssdo_range_bounce), gathering its bounce when occluded.
-float sample_visibility(pixel_frame k, vec3 s, inout bounce_sum acc)
+// Kernel sample number i's (s) visibility V (1 or 0) around the pixel (ssg_ssdo_place,
+// ssg_ssdo_depth_test, ssg_ssdo_range_bounce), gathering its bounce when occluded; its
+// length shifted by the tile's (its direction, which the weights see, kept).
+float sample_visibility(pixel_frame k, int i, vec3 s, inout bounce_sum acc)
 {
     ivec2 q;
     float zb;
-    if (!ssg_project_sample(k.cz, k.cu, k.cv, s, p_bias, q, zb))
+    vec3 placed = ssg_shifted_sample(i, s, k.shift);
+    if (!ssg_project_sample(k.cz, k.cu, k.cv, placed, p_bias, q, zb))
         return 1.0;
     float d = ssg_scene_depth(q);
     if (!(d > 0.0 && d < zb))
@@ -166,7 +170,7 @@ void gather(ivec2 p, pixel_frame k, int n)
 {
     bounce_sum acc = bounce_sum(0.0, vec3(0.0));
     for (int s = 0; s < n; s++)
-        sample_visibility(k, ssg_kernel_sample(s), acc);
+        sample_visibility(k, s, ssg_kernel_sample(s), acc);
     SSG_STORE3(dst_out, p, finish_bounce(p, acc));
 }
 
@@ -359,7 +363,7 @@ void gather(ivec2 p, pixel_frame k, int n)
         precise float nw = ks.z * il;
         nw = nw > 0.0 ? nw : 0.0;
         acc.cosw += nw;
-        float vis = sample_visibility(k, ks, b);
+        float vis = sample_visibility(k, s, ks, b);
         add_environment(acc, k, ks, nw, vis);
         add_lights(acc, lt, ks, il, nw, vis);
     }
@@ -385,5 +389,7 @@ void main()
         return;
     }
     int n = pixel_samples(p);
-    gather(p, setup_frame(P, N, ssg_tile_rotation(p), dp, n), n);
+    pixel_frame k = setup_frame(P, N, ssg_tile_rotation(p), dp, n);
+    k.shift = ssg_tile_shift(p);
+    gather(p, k, n);
 }

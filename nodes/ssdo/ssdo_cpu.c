@@ -416,8 +416,7 @@ static void kernel_constants(struct job *j)
     j->full_w = 0.0f;
     j->dw_of[0] = 0.0f;
     for (int s = 0; s < count; s++) {
-        float l = sqrtf(kx[s] * kx[s] + ky[s] * ky[s] + kz[s] * kz[s]);
-        j->inv_len[s] = l > 0.0f ? 1.0f / l : 0.0f;
+        j->inv_len[s] = ssg_sampling_inv_len(kx[s], ky[s], kz[s]);
         float nw = kz[s] * j->inv_len[s];
         j->nw[s] = nw > 0.0f ? nw : 0.0f;
         j->full_w += j->nw[s];
@@ -439,12 +438,15 @@ enum ssg_err ssg_ssdo_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
         j.out[ch] = ch < out_channels ? ssg_image_plane(io->out[0], ch) : NULL;
         j.bounce[ch] = ssg_image_plane(io->out[1], ch);
     }
-    float *per_sample = malloc(sizeof(float) * (3 * (size_t)j.s.count + 1));
+    float *per_sample = malloc(sizeof(float) * (5 * (size_t)j.s.count + 1));
     if (!per_sample)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     j.nw = per_sample;
     j.inv_len = per_sample + j.s.count;
     j.dw_of = per_sample + 2 * j.s.count;
+    float *lens = per_sample + 3 * j.s.count + 1;
+    ssg_sampling_lengths(j.s.kernel, j.s.count, lens);
+    j.s.lens = lens;
     kernel_constants(&j);
     if (!c->p.bounce)
         memset(io->out[1]->data, 0, sizeof(float) * 3 * (size_t)pos->width * pos->height);

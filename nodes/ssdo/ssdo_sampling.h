@@ -34,7 +34,8 @@
     X(SSG_SSDO_IN_KERNEL, "kernel", SSG_T_KERNEL,                                          \
       "hemisphere samples, uniform in solid angle (halton mapping=uniform)")               \
     X(SSG_SSDO_IN_ROTATION, "rotation", SSG_T_PATTERN,                                     \
-      "per-pixel rotation tile (halton.rotation); none = no rotation", .optional = 1)      \
+      "per-pixel rotation tile (halton.rotation; a third plane moves the sample "          \
+      "lengths); none = no rotation", .optional = 1)                                       \
     X(SSG_SSDO_IN_DEPTH, "depth", SSG_T_SCALAR,                                            \
       "linear depth for the occluder lookup; none = -position.z", .optional = 1)
 #define SSG_SSDO_IN(X)                                                                     \
@@ -114,6 +115,8 @@ struct ssg_ssdo_job {
     const float *kernel;            /* planar count x 1 x 3 */
     int count;                      /* K */
     const float *rot;               /* planar n x n x 2 (cos, sin), NULL = none */
+    const float *off;               /* the tile's length shift (planes 3, 4), NULL = none */
+    const float *lens;              /* |s| per kernel sample, twice over (the caller's) */
     int n;
     int w, h;                       /* px */
     float f, cx, cy;                /* projection of this resolution */
@@ -128,6 +131,9 @@ struct ssg_ssdo_chunk {
     float tx[SSG_SSDO_CHUNK], ty[SSG_SSDO_CHUNK], tz[SSG_SSDO_CHUNK]; /* unit T, turned */
     float bx[SSG_SSDO_CHUNK], by[SSG_SSDO_CHUNK], bz[SSG_SSDO_CHUNK]; /* unit B, turned */
     float co[SSG_SSDO_CHUNK], si[SSG_SSDO_CHUNK]; /* rotation of the tile (scratch) */
+    float dl[SSG_SSDO_CHUNK];                   /* the tile's length offset (with off) */
+    float dk[SSG_SSDO_CHUNK];                   /* the tile's index shift (with off) */
+    float gs[SSG_SSDO_CHUNK];                   /* per sample: its length shift's factor */
     float px[SSG_SSDO_CHUNK], py[SSG_SSDO_CHUNK], pz[SSG_SSDO_CHUNK]; /* P */
     float dp[SSG_SSDO_CHUNK];                   /* depth of P */
     float rr[SSG_SSDO_CHUNK];                   /* r, scene units */
@@ -177,13 +183,14 @@ static inline void ssg_ssdo_job_init(struct ssg_ssdo_job *j, const struct ssg_io
     j->depth = dep ? dep->data : j->pos[2];
     j->depth_sign = dep ? 1.0f : -1.0f;
     j->rot = rot ? rot->data : NULL;
+    j->off = ssg_sampling_offset_plane(rot);
     j->n = rot ? rot->width : 1;
     j->f = proj->f;
     j->cx = proj->cx;
     j->cy = proj->cy;
 }
 
-/* Loads P, N, depth and the tile's rotation (nodes/common/sampling.h). */
+/* Loads P, N, depth, the tile's rotation and its length offsets (nodes/common/sampling.h). */
 static inline __attribute__((always_inline)) void
 ssg_ssdo_load(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int y, int x0,
               int len)
@@ -192,6 +199,8 @@ ssg_ssdo_load(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, i
     ssg_sampling_load(j->pos, j->nrm, j->depth, j->depth_sign, o, len, k->fg, k->nx, k->ny,
                       k->nz, k->px, k->py, k->pz, k->dp);
     ssg_sampling_rotation(j->rot, j->n, y, x0, len, k->co, k->si);
+    if (j->off)
+        ssg_sampling_offsets(j->off, j->n, y, x0, len, k->dl, k->dk);
 }
 
 /* Tangent frame (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017,
@@ -243,13 +252,19 @@ ssg_ssdo_setup(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, 
 
 /* Places sample (sx, sy, sz) around every pixel of the chunk and projects it: the pixel
    index it lands on, and depth(S) - bias there (-1 when off screen or behind the camera,
-   which no depth > 0 undercuts: visible). */
+   which no depth > 0 undercuts: visible). With the tile's length shift, sample number s
+   of each pixel keeps its direction and takes its shifted length; the light and
+   environment weights see the direction alone, so only this placement changes. */
 static inline __attribute__((always_inline)) void
 ssg_ssdo_place(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *restrict k, int len,
-               float sx, float sy, float sz)
+               float sx, float sy, float sz, int s)
 {
-    ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->g.bias, j->w, j->h, k->idx,
-                       k->zb);
+    if (j->off)
+        ssg_sampling_place_shifted(k->cz, k->cu, k->cv, len, sx, sy, sz, s, j->lens, k->dl,
+                                   k->dk, k->gs, j->g.bias, j->w, j->h, k->idx, k->zb);
+    else
+        ssg_sampling_place(k->cz, k->cu, k->cv, len, sx, sy, sz, j->g.bias, j->w, j->h,
+                           k->idx, k->zb);
 }
 
 /* The depth test of each sample: a candidate when 0 < z_i < depth(S) - bias, z_i read at
@@ -355,7 +370,7 @@ ssg_ssdo_sample_counted(const struct ssg_ssdo_job *j, struct ssg_ssdo_chunk *res
 {
     const int count = j->count;
     const float *kx = j->kernel, *ky = kx + count, *kz = ky + count;
-    ssg_ssdo_place(j, k, len, kx[s], ky[s], kz[s]);
+    ssg_ssdo_place(j, k, len, kx[s], ky[s], kz[s], s);
     int n = ssg_ssdo_depth_test(j, k, len, own_depth, counted, s);
     if (n)
         ssg_ssdo_range_bounce(j, k, n, bounce);

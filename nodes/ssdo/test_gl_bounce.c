@@ -1,7 +1,7 @@
 /* test_gl_bounce.c - CPU/GL parity of `bounce` (gl_parity.h) on G-buffers ray-cast from
  * planes (planes.h): with and without the rotation tile and the depth input,
- * max_screen_radius, min_distance (automatic and given), strength, background pixels and a
- * subsampled frame; and, as on the CPU, bounce's GL output is exactly ssdo's GL bounce
+ * max_screen_radius, min_distance (automatic and given), strength, background pixels, a
+ * subsampled frame and a tile of length offsets (halton lengths=shifted); and, as on the CPU, bounce's GL output is exactly ssdo's GL bounce
  * output for the same inputs (both run ssdo.glsl's sampling).
  *
  * Where differences come from: the shader does ssdo_sampling.h's operations in its order
@@ -65,15 +65,23 @@ static void run_case(const struct parity_inputs *in, const char *label, const ch
     ssg_outputs_release(&ssdo);
 }
 
-static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+/* The inputs on scene_fn's planes; with `shifted` halton's tile carries length offsets
+   (lengths=shifted, which needs falloff=1). */
+static void load_inputs_as(struct parity_inputs *in, void (*scene_fn)(struct scene *),
+                           int shifted)
 {
     *in = (struct parity_inputs){0};
     struct ssg_frame f = frame();
-    const char *sets[] = {"count=16", "mapping=uniform"};
+    const char *sets[] = {"count=16", "mapping=uniform", "falloff=1", "lengths=shifted"};
     parity_cast(scene_fn, &in->g);
-    parity_halton(&f, sets, 2, &in->kernel, &in->rot);
+    parity_halton(&f, sets, shifted ? 4 : 2, &in->kernel, &in->rot);
     in->albedo = parity_colour_field(W, H, 0.2f, 0.6f);
     in->light = parity_colour_field(W, H, 0.5f, 2.0f);
+}
+
+static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+{
+    load_inputs_as(in, scene_fn, 0);
 }
 
 static void cases(const struct parity_inputs *in, struct parity_tol tol)
@@ -101,6 +109,10 @@ int main(void)
     struct ssg_frame big = parity_subsampled_frame();
     const char *def[] = {"radius=1.5", "strength=2"};
     run_case(&in, "subsampled", "rd", def, 2, &big, tol);
+    parity_inputs_free(&in);
+    load_inputs_as(&in, corner_scene, 1); /* sample lengths moved per pixel */
+    CHECK_EQ(in.rot->channels, 4);
+    cases(&in, tol);
     parity_inputs_free(&in);
     return check_report();
 }

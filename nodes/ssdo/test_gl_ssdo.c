@@ -1,8 +1,8 @@
 /* test_gl_ssdo.c - CPU/GL parity of `ssdo` (gl_parity.h) on G-buffers ray-cast from planes
  * (planes.h): modulation with 1 and 3 channels, radiance, bounce=true, the rotation tile,
  * the depth input, the count input (values below 1, above the kernel, fractions, NaN),
- * max_screen_radius, min_distance, lobes, non-unit normals, background pixels and a
- * subsampled frame. Without a scene the node sees a constant white environment; the
+ * max_screen_radius, min_distance, lobes, non-unit normals, background pixels, a
+ * subsampled frame and a tile of length offsets (halton lengths=shifted). Without a scene the node sees a constant white environment; the
  * lights and the environment come from a scene (prepare() reads ctx->scene), so those
  * cases load a small scene whose camera is the planes' one (at the origin looking down
  * -z: view space is world space) and run the node's descriptor on both backends with it:
@@ -81,17 +81,25 @@ static void run_case(const struct parity_inputs *in, const char *label, const ch
     ssg_outputs_release(&cpu);
 }
 
-static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+/* The inputs on scene_fn's planes; with `shifted` halton's tile carries length offsets
+   (lengths=shifted, which needs falloff=1). */
+static void load_inputs_as(struct parity_inputs *in, void (*scene_fn)(struct scene *),
+                           int shifted)
 {
     *in = (struct parity_inputs){0};
     struct ssg_frame f = frame();
-    const char *sets[] = {"count=16", "mapping=uniform"};
+    const char *sets[] = {"count=16", "mapping=uniform", "falloff=1", "lengths=shifted"};
     parity_cast(scene_fn, &in->g);
-    parity_halton(&f, sets, 2, &in->kernel, &in->rot);
+    parity_halton(&f, sets, shifted ? 4 : 2, &in->kernel, &in->rot);
     in->count = parity_count_image(W, H, 16);
     in->nrm2 = parity_scaled(in->g.nrm, 2.0f);
     in->albedo = parity_colour_field(W, H, 0.2f, 0.6f);
     in->light = parity_colour_field(W, H, 0.5f, 2.0f);
+}
+
+static void load_inputs(struct parity_inputs *in, void (*scene_fn)(struct scene *))
+{
+    load_inputs_as(in, scene_fn, 0);
 }
 
 /* The cases without a scene (constant white environment, no lights). */
@@ -257,6 +265,12 @@ int main(void)
     struct ssg_frame big = parity_subsampled_frame();
     const char *def[] = {"radius=1.5", "bounce=true"};
     run_case(&in, "mod1 subsampled", "rdal", def, 2, &big, tol);
+    parity_inputs_free(&in);
+
+    /* Each pixel's sample lengths moved by the tile's third plane. */
+    load_inputs_as(&in, corner_scene, 1);
+    CHECK_EQ(in.rot->channels, 4);
+    plain_cases(&in, tol);
     parity_inputs_free(&in);
     return check_report();
 }
