@@ -180,42 +180,74 @@ static inline int ssg_rsm_search(const float *list, int lo, int hi, float u)
    outside the grid, one voxel. Occupied voxels block only after the trace was in an
    empty one (before, they are the receiver's own surfaces). rsm.glsl's visible() makes
    the same operations. */
+/* One trace's state (ssg_rsm_trace_begin, ssg_rsm_trace_step): split so the CPU can run
+   several independent traces in lockstep (their voxel loads overlap instead of waiting on
+   one another) with each trace's float operations the same as one alone. */
+struct ssg_rsm_trace {
+    float p[3], u[3], t, end;
+    int out;    /* 1 once the trace was in an empty voxel: the occupied voxels before are
+                   the receiver's own surfaces' (a step, a corner), not an occluder */
+};
+
+/* Starts a trace; returns 1 when the segment is too short to test (visible), 0 otherwise. */
+static inline int ssg_rsm_trace_begin(const struct ssg_rsm_consts *c, const float x[3],
+                                      const float nx[3], const float y[3], const float ny[3],
+                                      struct ssg_rsm_trace *r)
+{
+    const float a = c->p.vis_start, inv = c->grid_inv;
+    float d[3];
+    for (int k = 0; k < 3; k++) {
+        r->p[k] = (x[k] - c->grid_lo[k]) * inv + nx[k] * a;
+        d[k] = ((y[k] - c->grid_lo[k]) * inv + ny[k] * a) - r->p[k];
+    }
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    r->end = len - a;
+    if (!(r->end > a))
+        return 1; /* too near to tell from the surfaces' own voxels */
+    for (int k = 0; k < 3; k++)
+        r->u[k] = d[k] / len;
+    r->t = a;
+    r->out = 0;
+    return 0;
+}
+
+/* One step of a begun trace: -1 while it goes on, 1 when it reached the end (visible), 0
+   when it landed in an occluder. */
+static inline int ssg_rsm_trace_step(const struct ssg_rsm_consts *c, const float *field,
+                                     struct ssg_rsm_trace *r)
+{
+    if (!(r->t < r->end))
+        return 1;
+    int i[3], in = 1;
+    for (int k = 0; k < 3; k++) {
+        i[k] = (int)floorf(r->p[k] + r->u[k] * r->t);
+        in &= i[k] >= 0 && i[k] < c->grid_n[k];
+    }
+    float step = 1.0f;
+    if (in) {
+        float dist = field[((size_t)i[2] * c->grid_n[1] + i[1]) * c->grid_n[0] + i[0]];
+        if (dist == 0.0f && r->out)
+            return 0;
+        r->out |= dist != 0.0f;
+        step = dist - 1.0f > 1.0f ? dist - 1.0f : 1.0f;
+    } else {
+        r->out = 1;
+    }
+    r->t += step;
+    return -1;
+}
+
 static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *field,
                                   const float x[3], const float nx[3], const float y[3],
                                   const float ny[3])
 {
-    const float a = c->p.vis_start, inv = c->grid_inv;
-    float p[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = (x[k] - c->grid_lo[k]) * inv + nx[k] * a;
-        d[k] = ((y[k] - c->grid_lo[k]) * inv + ny[k] * a) - p[k];
-    }
-    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    float end = len - a;
-    if (!(end > a))
-        return 1; /* too near to tell from the surfaces' own voxels */
-    float u[3] = {d[0] / len, d[1] / len, d[2] / len};
-    int out = 0; /* 1 once the trace was in an empty voxel: the occupied voxels before are
-                    the receiver's own surfaces' (a step, a corner), not an occluder */
-    for (float t = a; t < end;) {
-        int i[3], in = 1;
-        for (int k = 0; k < 3; k++) {
-            i[k] = (int)floorf(p[k] + u[k] * t);
-            in &= i[k] >= 0 && i[k] < c->grid_n[k];
-        }
-        float step = 1.0f;
-        if (in) {
-            float dist = field[((size_t)i[2] * c->grid_n[1] + i[1]) * c->grid_n[0] + i[0]];
-            if (dist == 0.0f && out)
-                return 0;
-            out |= dist != 0.0f;
-            step = dist - 1.0f > 1.0f ? dist - 1.0f : 1.0f;
-        } else {
-            out = 1;
-        }
-        t += step;
-    }
-    return 1;
+    struct ssg_rsm_trace r;
+    if (ssg_rsm_trace_begin(c, x, nx, y, ny, &r))
+        return 1;
+    int seen;
+    while ((seen = ssg_rsm_trace_step(c, field, &r)) < 0)
+        ;
+    return seen;
 }
 
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

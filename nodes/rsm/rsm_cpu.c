@@ -152,6 +152,36 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
     }
 }
 
+enum { TRACE_LANES = 16 }; /* traces run in lockstep a batch */
+
+/* Whether receiver i of the chunk sees each of the n (<= TRACE_LANES) VPLs: the traces of
+   ssg_rsm_visible, stepped in lockstep so that their voxel loads overlap (one trace alone
+   waits on each load; the results are the same bits). */
+static void visible_lanes(const struct job *j, const struct chunk *k, int i,
+                          const float *const *v, int n, int *seen)
+{
+    const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
+    const float nx[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
+    struct ssg_rsm_trace tr[TRACE_LANES];
+    int live[TRACE_LANES], count = 0;
+    for (int l = 0; l < n; l++) {
+        seen[l] = 1;
+        if (!ssg_rsm_trace_begin(j->c, x, nx, v[l], v[l] + 3, &tr[l]))
+            live[count++] = l;
+    }
+    while (count > 0) {
+        int kept = 0;
+        for (int q = 0; q < count; q++) {
+            int l = live[q], r = ssg_rsm_trace_step(j->c, j->field, &tr[l]);
+            if (r < 0)
+                live[kept++] = l;
+            else
+                seen[l] = r;
+        }
+        count = kept;
+    }
+}
+
 /* The ratio estimator: each pixel's unshadowed sum times the visible share of the light
    of its tested draws (every vis_stride-th), their light weighted by w Phi_sum; 1 where
    the tested draws bring none. Out of line, so a profile shows its cost apart. */
@@ -163,15 +193,23 @@ __attribute__((noinline)) static void shadow_ratio(const struct job *j, const in
     float step = c->inv_samples * total;
     for (int i = 0; i < len; i++) {
         float all = 0.0f, seen = 0.0f;
-        for (int t = 0; t < c->vis_tested; t++) {
-            const float *v = j->list + (size_t)pick[t * c->vis_stride] * SSG_RSM_SLOT;
-            float w = vpl_weight(c, v, step / v[10], k, i);
-            if (!(w > 0.0f))
-                continue;
-            float light = w * v[10];
-            all += light;
-            if (visible_from(j, k, i, v))
-                seen += light;
+        for (int t0 = 0; t0 < c->vis_tested; t0 += TRACE_LANES) {
+            const float *v[TRACE_LANES];
+            float light[TRACE_LANES];
+            int n = 0, vis[TRACE_LANES];
+            for (int t = t0; t < c->vis_tested && t < t0 + TRACE_LANES; t++) {
+                const float *vpl = j->list + (size_t)pick[t * c->vis_stride] * SSG_RSM_SLOT;
+                float w = vpl_weight(c, vpl, step / vpl[10], k, i);
+                if (!(w > 0.0f))
+                    continue;
+                light[n] = w * vpl[10];
+                all += light[n];
+                v[n++] = vpl;
+            }
+            visible_lanes(j, k, i, v, n, vis);
+            for (int l = 0; l < n; l++) /* in draw order: the sum's bits as before */
+                if (vis[l])
+                    seen += light[l];
         }
         float r = all > 0.0f ? seen / all : 1.0f;
         for (int ch = 0; ch < 3; ch++)
