@@ -21,10 +21,11 @@ import sys
 # The AO table's rows: | scene | method | rmse | flip | bias | ssim | ms |
 AO_ROW = re.compile(r"^\| ([a-z_]+) \| ((?:ssao|hbao|gtao)(?: \+ bilateral)?) \| ([0-9.]+) \| "
                     r"([0-9.]+) \| [+-][0-9.]+ \| -?[0-9.]+ \| (?:[0-9.]+|-) \|$")
-# The GI per-scene rows: | light | scene | method | rmse | flip | bias | ssim | bounce |
+# The GI per-scene rows:
+# | light | scene | method | rmse | flip | structure_pp | bias | ssim | bounce |
 GI_ROW = re.compile(r"^\| (own|sun|sky|courtyard) \| ([a-z_]+) \| "
                     r"(none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| ([0-9.]+) \| ([0-9.]+) \| "
-                    r"[+-][0-9.]+ \| -?[0-9.]+ \| (?:[0-9.]+|-) \|$")
+                    r"(?:[0-9.]+|-) \| [+-][0-9.]+ \| -?[0-9.]+ \| (?:[0-9.]+|-) \|$")
 METRICS = ("rmse", "flip")
 BOUNDS = ("row", "group_rms", "group_mean", "mean")
 

@@ -14,9 +14,9 @@ python3 bench/bench.py --accuracy --part gi --bin "$(accuracy_bin)" --runs 1 --s
     2> "$TMP/err" || fail "bench.py --accuracy --part gi failed: $(tail -3 "$TMP/err")"
 scenes=$(grep -L -E '^[[:space:]]*(camera_key|orbit)\(' examples/*.scene | wc -l) # still cameras
 grep -q '^# AO accuracy' "$TMP/acc.md" && fail "--part gi printed the AO table"
-gi=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| [0-9.]+ \| [0-9.]+ \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+gi=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (none|ssao|ssdo|hybrid|hybrid_ssdo|gi) \| [0-9.]+ \| [0-9.]+ \| ([0-9.]+|-) \| [+-][0-9.]+ \| -?[0-9.]+ \| ([0-9.]+|-) \|$' "$TMP/acc.md")
 [ "$gi" -eq $((22 * scenes)) ] || fail "expected $((22 * scenes)) GI rows, got $gi"
-summary=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \| ([0-9.]+|-) \|$' "$TMP/acc.md")
+summary=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \(.*\) \| [0-9.]+ \| [0-9.]+ \| ([0-9.]+|-) \| [0-9.]+ \| [0-9.]+ \| [0-9]+ of '"$scenes"' \| ([0-9.]+|-) \|$' "$TMP/acc.md")
 [ "$summary" -eq 22 ] || fail "expected 22 GI summary rows, got $summary"
 bounce=$(grep -cE '^\| (own|sun|sky|courtyard) \| [a-z_]+ \| (ssdo|hybrid_ssdo|gi) \| .* \| [0-9.]+ \|$' "$TMP/acc.md")
 [ "$bounce" -gt 0 ] || fail "no GI row has a bounce energy"
