@@ -23,7 +23,8 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gallery import ROOT, aces_srgb, lights_file, read, reference, save_jpeg  # noqa: E402
+from gallery import (ROOT, aces_srgb, label, lights_file, read, reference,  # noqa: E402
+                     save_jpeg)
 
 # name, scene, lighting (gallery.LIGHTS), pipeline graph, window (x0, y0, x1, y1) as
 # fractions of the frame, what a viewer sees there.
@@ -70,15 +71,6 @@ def enlarge(pixels, win, scale):
     y, x, h, w = win
     crop = pixels[y:y + h, x:x + w]
     return np.repeat(np.repeat(crop, scale, axis=0), scale, axis=1)
-
-
-def label(tile, text):
-    from PIL import Image, ImageDraw
-    im = Image.fromarray(np.ascontiguousarray(tile))
-    draw = ImageDraw.Draw(im)
-    draw.rectangle([0, 0, 7 * len(text) + 6, 13], fill=(0, 0, 0))
-    draw.text((3, 1), text, fill=(255, 255, 255))
-    return np.asarray(im)
 
 
 def window_scores(img, truth, surface, win):
