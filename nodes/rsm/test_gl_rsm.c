@@ -90,62 +90,84 @@ static void run_case(const struct ssg_scene *s, const struct maps *m, const stru
     ssg_image_destroy(&gl);
 }
 
+/* A case's scene (CAMERA's floor plus `extra`), its maps and its receivers. */
+struct setup {
+    struct ssg_scene *s;
+    struct maps m;
+    struct gbuf g;
+    int made; /* maps and receivers made */
+};
+
+/* The scene; 0 when it does not load (scene_from_text has said why). */
+static int setup_scene(struct setup *u, const char *name, const char *extra)
+{
+    char text[1024];
+    snprintf(text, sizeof text, "%s%s", CAMERA, extra);
+    *u = (struct setup){.s = scene_from_text(name, text)};
+    return u->s != NULL;
+}
+
+/* Maps of side res filled by fill, and a w x h G-buffer of receivers(), replacing any made
+   before. */
+static void setup_maps(struct setup *u, int res, void (*fill)(struct maps *), int w, int h)
+{
+    if (u->made) {
+        gbuf_free(&u->g);
+        maps_free(&u->m);
+    }
+    u->m = maps_make(u->s, res);
+    fill(&u->m);
+    u->g = gbuf_make(u->s, w, h);
+    receivers(&u->g);
+    u->made = 1;
+}
+
+static void setup_free(struct setup *u)
+{
+    if (u->made) {
+        gbuf_free(&u->g);
+        maps_free(&u->m);
+    }
+    ssg_scene_destroy(&u->s);
+}
+
 static void test_disc(void)
 {
-    char text[512];
-    snprintf(text, sizeof text, "%sdirectional_light(direction=[0.3, -1, 0.2])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("gl_rsm_sun", text);
-    if (!s)
+    struct setup u;
+    if (!setup_scene(&u, "gl_rsm_sun", "directional_light(direction=[0.3, -1, 0.2])\n"))
         return;
-    struct maps m = maps_make(s, 64);
-    disc(&m);
-    struct gbuf g = gbuf_make(s, 24, 16);
-    receivers(&g);
+    setup_maps(&u, 64, disc, 24, 16);
     const struct parity_tol tol = parity_tol_of("rsm");
     const char *exact[] = {"samples=0", "cell=1", "min_distance=0.3"};
-    run_case(s, &m, &g, "disc exact", 1, exact, 3, tol);
+    run_case(u.s, &u.m, &u.g, "disc exact", 1, exact, 3, tol);
     const char *drawn[] = {"samples=16", "cell=2"};
-    run_case(s, &m, &g, "disc 16 draws", 0, drawn, 2, tol);
+    run_case(u.s, &u.m, &u.g, "disc 16 draws", 0, drawn, 2, tol);
     const char *coarse[] = {"samples=5", "cell=8", "min_distance=0.2"};
-    run_case(s, &m, &g, "disc 5 draws cell 8", 1, coarse, 3, tol);
-    gbuf_free(&g);
-    maps_free(&m);
-    ssg_scene_destroy(&s);
+    run_case(u.s, &u.m, &u.g, "disc 5 draws cell 8", 1, coarse, 3, tol);
+    setup_free(&u);
 }
 
 static void test_cube(void)
 {
-    char text[512];
-    snprintf(text, sizeof text, "%spoint_light(position=[0.2, 1.2, -0.1])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("gl_rsm_point", text);
-    if (!s)
+    struct setup u;
+    if (!setup_scene(&u, "gl_rsm_point", "point_light(position=[0.2, 1.2, -0.1])\n"))
         return;
-    struct maps m = maps_make(s, 20);
-    cube(&m);
-    struct gbuf g = gbuf_make(s, 24, 16);
-    receivers(&g);
+    setup_maps(&u, 20, cube, 24, 16);
     const struct parity_tol tol = parity_tol_of("rsm");
     const char *exact[] = {"samples=0", "cell=3"};
-    run_case(s, &m, &g, "cube exact", 1, exact, 2, tol);
+    run_case(u.s, &u.m, &u.g, "cube exact", 1, exact, 2, tol);
     const char *drawn[] = {"samples=24", "cell=3"};
-    run_case(s, &m, &g, "cube 24 draws", 1, drawn, 2, tol);
+    run_case(u.s, &u.m, &u.g, "cube 24 draws", 1, drawn, 2, tol);
     const char *fine[] = {"samples=64", "cell=1", "min_distance=0.5"};
-    run_case(s, &m, &g, "cube 64 draws cell 1", 0, fine, 3, tol);
-    gbuf_free(&g);
-    maps_free(&m);
+    run_case(u.s, &u.m, &u.g, "cube 64 draws cell 1", 0, fine, 3, tol);
     /* More slots and VPLs than llvmpipe lets one shader loop walk (65535 iterations):
        the list and the exact sum run in several dispatches (rsm_gl.c) */
-    m = maps_make(s, 192);
-    cube(&m);
-    g = gbuf_make(s, 12, 8);
-    receivers(&g);
+    setup_maps(&u, 192, cube, 12, 8);
     const char *big[] = {"samples=0", "cell=2"};
-    run_case(s, &m, &g, "cube 192 exact cell 2", 1, big, 2, tol);
+    run_case(u.s, &u.m, &u.g, "cube 192 exact cell 2", 1, big, 2, tol);
     const char *big_drawn[] = {"samples=32", "cell=2"};
-    run_case(s, &m, &g, "cube 192 32 draws cell 2", 1, big_drawn, 2, tol);
-    gbuf_free(&g);
-    maps_free(&m);
-    ssg_scene_destroy(&s);
+    run_case(u.s, &u.m, &u.g, "cube 192 32 draws cell 2", 1, big_drawn, 2, tol);
+    setup_free(&u);
 }
 
 /* Visibility on: the point light's cube among two boxes and a wall, whose distance field
@@ -153,37 +175,31 @@ static void test_cube(void)
    vis_draws=0) and the ratio estimator. The boxes do shadow: the CPU's output moves. */
 static void test_occluded(void)
 {
-    char text[768];
-    snprintf(text, sizeof text, "%spoint_light(position=[0.2, 1.2, -0.1])\n"
-             "box(center=[0.5, 0.5, 0.3], size=[0.5, 1, 0.4], rotate=[0, 20, 0])\n"
-             "box(center=[-0.7, 1.2, -0.4], size=[0.4, 0.4, 0.4])\n"
-             "plane(center=[0, 1, -1.2], normal=[0, 0, 1], size=[3, 0, 2])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("gl_rsm_occluded", text);
-    if (!s)
+    struct setup u;
+    if (!setup_scene(&u, "gl_rsm_occluded",
+                     "point_light(position=[0.2, 1.2, -0.1])\n"
+                     "box(center=[0.5, 0.5, 0.3], size=[0.5, 1, 0.4], rotate=[0, 20, 0])\n"
+                     "box(center=[-0.7, 1.2, -0.4], size=[0.4, 0.4, 0.4])\n"
+                     "plane(center=[0, 1, -1.2], normal=[0, 0, 1], size=[3, 0, 2])\n"))
         return;
-    struct maps m = maps_make(s, 20);
-    cube(&m);
-    struct gbuf g = gbuf_make(s, 24, 16);
-    receivers(&g);
+    setup_maps(&u, 20, cube, 24, 16);
     const struct parity_tol tol = parity_tol_of("rsm");
     const char *exact[] = {"samples=0", "cell=3", "visibility=true"};
-    run_case(s, &m, &g, "occluded exact", 1, exact, 3, tol);
+    run_case(u.s, &u.m, &u.g, "occluded exact", 1, exact, 3, tol);
     const char *each[] = {"samples=24", "cell=3", "visibility=true", "vis_draws=0"};
-    run_case(s, &m, &g, "occluded 24 draws each tested", 0, each, 4, tol);
+    run_case(u.s, &u.m, &u.g, "occluded 24 draws each tested", 0, each, 4, tol);
     const char *ratio[] = {"samples=64", "cell=1", "min_distance=0.3", "visibility=true",
                            "vis_draws=8", "vis_start=2.5"};
-    run_case(s, &m, &g, "occluded 64 draws 8 tested", 1, ratio, 6, tol);
-    struct ssg_image *on = rsm_run(s, &m, &g, 0, 7, exact, 3, SSG_BACKEND_CPU);
-    struct ssg_image *off = rsm_run(s, &m, &g, 0, 7, exact, 2, SSG_BACKEND_CPU);
+    run_case(u.s, &u.m, &u.g, "occluded 64 draws 8 tested", 1, ratio, 6, tol);
+    struct ssg_image *on = rsm_run(u.s, &u.m, &u.g, 0, 7, exact, 3, SSG_BACKEND_CPU);
+    struct ssg_image *off = rsm_run(u.s, &u.m, &u.g, 0, 7, exact, 2, SSG_BACKEND_CPU);
     int moved = 0;
-    for (size_t i = 0; i < 3 * (size_t)g.w * g.h; i++)
+    for (size_t i = 0; i < 3 * (size_t)u.g.w * u.g.h; i++)
         moved += on->data[i] < off->data[i];
-    CHECK(moved > g.w * g.h / 4); /* a quarter of the receivers lose light at least */
+    CHECK(moved > u.g.w * u.g.h / 4); /* a quarter of the receivers lose light at least */
     ssg_image_destroy(&on);
     ssg_image_destroy(&off);
-    gbuf_free(&g);
-    maps_free(&m);
-    ssg_scene_destroy(&s);
+    setup_free(&u);
 }
 
 int main(void)
