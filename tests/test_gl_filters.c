@@ -107,6 +107,8 @@ static void bilateral_cases(void)
     parity_node("no normal broad depth", "bilateral", b, 2, broad, 1, NULL, tol);
     const char *one[] = {"size=1"};
     parity_node("size 1", "bilateral", b, 3, one, 1, NULL, tol);
+    const char *tent[] = {"window=tent", "size=15", "separable=true"};
+    parity_node("tent separable", "bilateral", b, 3, tent, 3, NULL, tol);
     const char *sep[] = {"separable=true", "size=15"};
     parity_node("separable", "bilateral", b, 3, sep, 2, NULL, tol);
     const char *sep_ln[] = {"separable=true", "normal_power=3"};

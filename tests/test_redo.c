@@ -129,7 +129,8 @@ static void changes_in_turn(void)
     CHECK_EQ(ssg_graph_set_view(g, &view, &d), SSG_OK);
     static const struct expect camera[] = {
         {"g", "camera moved"}, {"dl", "camera moved"}, {"h", "camera moved"},
-        {"hp", "camera moved"}, {"glob", "camera moved"}, {"glit", "camera moved"},
+        {"hp", "camera moved"}, {"hpf", "camera moved"}, {"glob", "camera moved"},
+        {"glit", "camera moved"},
         {"gdo", "camera moved"}, {"gf", "camera moved"}, {"gd", "camera moved"},
         {"grsm", "camera moved"}, {"grf", "camera moved"}, {"gru", "camera moved"},
         {"gi", "camera moved"}};
@@ -145,7 +146,8 @@ static void changes_in_turn(void)
     static const struct expect lights[] = {
         {"g", "lights changed"}, {"lm", "shape changed"}, {"dl", "shape changed"},
         {"lp", "lights changed"}, {"sm", "lights changed"}, {"h", "input g ran"},
-        {"hp", "lights changed"}, {"glob", "input hp ran"}, {"glit", "input dl ran"},
+        {"hp", "lights changed"}, {"hpf", "input hp ran"}, {"glob", "input hpf ran"},
+        {"glit", "input dl ran"},
         {"gdo", "lights changed"}, {"gf", "input gdo ran"}, {"gd", "input g ran"},
         {"lb", "shape changed"}, {"grsm", "shape changed"}, {"grf", "input grsm ran"},
         {"gru", "input grf ran"}, {"gi", "input dl ran"}};

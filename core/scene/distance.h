@@ -21,7 +21,10 @@
 
 struct ssg_mesh;
 
-enum { SSG_DISTANCE_RES = 64 };   /* voxels on the scene's longest axis */
+/* voxels on the scene's longest axis: at 64 the Cornell box's tall box, a voxel thicker on
+   each side, cast a bounce shadow 0.67x the truth's brightness; at 128 about 0.9-1.1x, for
+   8 MB and about 130 ms at load (nodes/rsm/README.md) */
+enum { SSG_DISTANCE_RES = 128 };
 enum { SSG_DISTANCE_MARGIN = 2 }; /* empty voxels around the bounds */
 
 struct ssg_distance {

@@ -2,6 +2,7 @@
  * bilateral filter (depth and normal weights). Method: README.md in this folder. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "bilateral.h"
 #include "common/joint_weights.h"
@@ -45,6 +46,15 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return ssg_bilateral_check_shapes(in, out, why, why_len);
 }
 
+/* ln of the tent's weight d px off the centre: 1 - |d| / (r + 1), never 0 inside the
+   window. The tent of size 2 P - 1 is a box of P convolved with itself, so its response
+   is 0 at every multiple of the frequency 1 / P: a pattern repeating every P px (the
+   interleaved tile of rsm or ssdo) leaves no trace on a flat surface. */
+static float tent_log_weight(int d, int r)
+{
+    return logf(1.0f - (float)abs(d) / (float)(r + 1));
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_bilateral_params *p = params;
@@ -59,11 +69,13 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->u.normal_min = w.normal_min;
     c->u.squarings = w.squarings;
     c->separable = p->separable;
-    const float k = w.spatial_k;
-    for (int dy = -c->u.radius; dy <= c->u.radius; dy++)
-        for (int dx = -c->u.radius; dx <= c->u.radius; dx++)
-            c->spatial[(dy + c->u.radius) * c->u.size + dx + c->u.radius] =
-                k * (float)(dx * dx + dy * dy);
+    const int r = c->u.radius;
+    for (int dy = -r; dy <= r; dy++)
+        for (int dx = -r; dx <= r; dx++)
+            c->spatial[(dy + r) * c->u.size + dx + r] =
+                p->window == SSG_BILATERAL_TENT
+                    ? tent_log_weight(dx, r) + tent_log_weight(dy, r)
+                    : w.spatial_k * (float)(dx * dx + dy * dy);
     return SSG_OK;
 }
 
@@ -84,6 +96,7 @@ int ssg_bilateral_passes(const struct ssg_bilateral_consts *c,
     return 1;
 }
 
+static const char *const ssg_bilateral_window_choices[] = {"gaussian", "tent", NULL};
 SSG_PARAMS_TABLE(params, ssg_bilateral_params, SSG_BILATERAL_PARAMS);
 SSG_UNIFORMS_TABLE(uniforms, ssg_bilateral_uniforms, SSG_BILATERAL_UNIFORMS);
 

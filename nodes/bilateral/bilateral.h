@@ -35,6 +35,12 @@ SSG_PORT_ENUM(ssg_bilateral_output, SSG_BILATERAL_OUT, SSG_BILATERAL_OUTPUTS);
     P(INT, normal_power, "normal weight max(0, n.n')^p; 0 = off", .def = 16, .min = 0,     \
       .max = 127)
 
+/* The spatial weight's shape (README.md, "Window"). */
+enum ssg_bilateral_window {
+    SSG_BILATERAL_GAUSSIAN, /* exp(-0.5 d^2 / sigma_spatial^2) */
+    SSG_BILATERAL_TENT,     /* (1 - |dx| / (radius + 1)) (1 - |dy| / (radius + 1)) */
+};
+
 /* The parameters, one row each (lang/params.h): kind, field, doc, then default, range and
    unit. */
 #define SSG_BILATERAL_PARAMS(P)                                                            \
@@ -42,6 +48,10 @@ SSG_PORT_ENUM(ssg_bilateral_output, SSG_BILATERAL_OUT, SSG_BILATERAL_OUTPUTS);
       .max = SSG_BILATERAL_MAX_SIZE, .unit = "px")                                         \
     P(FLOAT, sigma_spatial, "spatial Gaussian sigma; 0 = size / 3", .def = 0, .min = 0,    \
       .max = 1000, .unit = "px")                                                           \
+    P(ENUM, window,                                                                        \
+      "spatial weight: gaussian (sigma_spatial) or tent (1 - |d| / (radius + 1) a side; "  \
+      "size 2 P - 1 removes any pattern of period P, such as an interleaved tile's)",      \
+      .def = SSG_BILATERAL_GAUSSIAN, .choices = ssg_bilateral_window_choices)              \
     SSG_BILATERAL_EDGE_PARAMS(P)                                                           \
     P(BOOL, separable,                                                                     \
       "horizontal then vertical pass: O(size) per pixel, an approximation", .def = 0)
@@ -65,9 +75,11 @@ struct ssg_bilateral_consts {
     int separable;       /* as in the parameters */
     int atrous;          /* > 0: that many 5 x 5 passes, 1, 2, 4, ... px apart (the
                             `atrous` node's consts); 0 = bilateral */
-    /* ln of the spatial Gaussian weight, -0.5 (dx^2 + dy^2) / sigma_spatial^2, for
-       dy, dx in [-radius, radius]: row (dy + radius) * size + dx + radius. Logarithms, so
-       that the three weights multiply by adding exponents and one exp() does it all. */
+    /* ln of the spatial weight (the Gaussian's -0.5 (dx^2 + dy^2) / sigma_spatial^2, or
+       the tent's), for dy, dx in [-radius, radius]: row (dy + radius) * size + dx +
+       radius; a sum of an x and a y part, so a separable run's passes take its row and
+       column. Logarithms, so that the three weights multiply by adding exponents and one
+       exp() does it all. */
     float spatial[SSG_BILATERAL_MAX_SIZE * SSG_BILATERAL_MAX_SIZE];
 };
 

@@ -4,7 +4,7 @@
  * weights predict, and the result does not depend on the thread count. The separable
  * form (separable=true) matches the documented two 1D passes, equals the full filter where
  * the weights factor, stays within the bound its weights give on a tilted noisy plane,
- * keeps depth steps and is deterministic. */
+ * keeps depth steps and is deterministic. A tent window removes a pattern of its period. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -485,6 +485,45 @@ static void test_separable_threads(void)
     release(&im);
 }
 
+/* window=tent of size 2 P - 1 on a flat plane: a pattern of period P in x and y (rsm's
+   interleaved tile, P = 8) leaves a constant, its mean, wherever the window lies inside
+   the image: the tent is a box of P convolved with itself, so it averages whole periods.
+   The default Gaussian of the same size keeps a part of it (a check that the pattern is
+   one a filter could keep). Full and separable windows alike. */
+static void test_tent_period(void)
+{
+    enum { W = 48, H = 40, P = 8 };
+    struct images im = make(W, H, 1);
+    double mean = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            size_t o = (size_t)y * W + (size_t)x;
+            float v = (float)((x % P) * 7 % P + 3 * ((y * 5) % P)) / 32.0f;
+            im.in->data[o] = v;
+            im.depth->data[o] = 3.0f;
+            set_normal(im.normal, o, 0, 0, 1);
+            mean += x < P && y < P ? v / (P * P) : 0.0;
+        }
+    const char *tent[2][3] = {{"size=15", "window=tent", "separable=false"},
+                              {"size=15", "window=tent", "separable=true"}};
+    const char *gauss[] = {"size=15"};
+    for (int k = 0; k < 2; k++) {
+        struct ssg_image *out = filter(&im, 1, tent[k], 3);
+        struct ssg_image *g = filter(&im, 1, gauss, 1);
+        double worst = 0, gworst = 0;
+        for (int y = P - 1; out && g && y < H - P + 1; y++)
+            for (int x = P - 1; x < W - P + 1; x++) {
+                worst = fmax(worst, fabs(out->data[y * W + x] - mean));
+                gworst = fmax(gworst, fabs(g->data[y * W + x] - mean));
+            }
+        CHECK(worst < 1e-5);  /* the tent: the period's mean, to rounding */
+        CHECK(gworst > 1e-3); /* the Gaussian: a trace of the pattern */
+        ssg_image_destroy(&out);
+        ssg_image_destroy(&g);
+    }
+    release(&im);
+}
+
 static void test_rejects(void)
 {
     struct images im = make(8, 8, 1);
@@ -513,6 +552,7 @@ int main(void)
     test_separable_tilt();
     test_separable_step();
     test_separable_threads();
+    test_tent_period();
     test_rejects();
     return check_report();
 }

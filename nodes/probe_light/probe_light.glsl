@@ -124,7 +124,9 @@ void main()
     precise vec2 j = p_noise_radius * vec2(noise[cell], noise[tile * tile + cell]);
     precise vec3 sum = vec3(0.0);
     precise float lum_lit = 0.0, lum_all = 0.0;
-    for (int i = 0; i < count; i++) {
+    // the lights of the pixel's interleave cell, each standing for n^2 (probe_light_cpu.c)
+    int n = p_interleave;
+    for (int i = (p.y % n) * n + p.x % n; i < count; i += n * n) {
         precise float cosine = N.x * frame(i, 12) + N.y * frame(i, 13) + N.z * frame(i, 14);
         if (!(cosine > 0.0))
             continue; // adds exact zeros (as the CPU's skipped lights)
@@ -144,7 +146,8 @@ void main()
     }
     bool bg = N.x == 0.0 && N.y == 0.0 && N.z == 0.0;
     vec3 a = albedo_bound ? ssg_load3(albedo, p) : vec3(1.0); // none: a white receiver
-    precise vec3 out_rgb = a * 0.318309886183790671 * sum;
+    precise float weight = float(n * n);
+    precise vec3 out_rgb = a * 0.318309886183790671 * (sum * weight);
     SSG_STORE3(dst_out, p, bg ? vec3(0.0) : out_rgb);
     SSG_STORE1(dst_visibility, p, bg || !(lum_all > 0.0) ? 1.0 : lum_lit / lum_all);
 }

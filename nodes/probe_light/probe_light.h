@@ -9,6 +9,7 @@
 #include "common/shadowmap.h"
 
 enum { SSG_PROBE_LIGHT_MAX_TILE = 16, SSG_PROBE_LIGHT_MAX_TAPS = 16 };
+enum { SSG_PROBE_LIGHT_MAX_INTERLEAVE = 4 };
 /* The largest tan(angle of N to l) the slope offset grows to (84 degrees). */
 #define SSG_PROBE_LIGHT_MAX_SLOPE 10.0f
 
@@ -72,7 +73,12 @@ SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPU
       "first at the pixel)", .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS,          \
       .unit = "taps")                                                                      \
     P(FLOAT, search_radius, "soft lookups: the blocker search's radius, the widest "       \
-      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels")
+      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels")                        \
+    P(INT, interleave,                                                                     \
+      "n: each pixel of an n x n tile takes every n^2-th light (those i with i mod n^2 = "  \
+      "its cell), weighted n^2: the lights of n^2 pixels for the lookups of one; a "       \
+      "filter of the tile's period (bilateral window=tent size=2n-1) joins them",          \
+      .def = 1, .min = 1, .max = SSG_PROBE_LIGHT_MAX_INTERLEAVE, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
 
 /* What prepare() makes of the inputs' shapes that probe_light.glsl reads by name (#pragma

@@ -27,6 +27,7 @@ struct job {
                               reruns without prepare() (check_params, probe_light.c) */
     int taps, search_taps; /* soft lookups (cone_tan > 0): taps of filter and search */
     float search;          /* the blocker search's radius, texels */
+    int n;                 /* interleave: a chunk's pixels are n apart, its lights n^2 */
 };
 
 struct chunk {
@@ -50,13 +51,14 @@ load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k
     const struct ssg_image *pos = j->io->in[SSG_PROBE_LIGHT_IN_POSITION];
     const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_IN_NORMAL];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
-    int tile = j->c->p.noise_tile, row = (y % tile) * tile, cells = tile * tile;
+    int tile = j->c->p.noise_tile, row = (y % tile) * tile, cells = tile * tile, n = j->n;
     for (int i = 0; i < len; i++) {
-        k->px[i] = pos->data[at + i], k->py[i] = pos->data[plane + at + i];
-        k->pz[i] = pos->data[2 * plane + at + i];
-        k->nx[i] = nrm->data[at + i], k->ny[i] = nrm->data[plane + at + i];
-        k->nz[i] = nrm->data[2 * plane + at + i];
-        int cell = row + (x0 + i) % tile;
+        size_t q = at + (size_t)n * i; /* pixel x0 + n i */
+        k->px[i] = pos->data[q], k->py[i] = pos->data[plane + q];
+        k->pz[i] = pos->data[2 * plane + q];
+        k->nx[i] = nrm->data[q], k->ny[i] = nrm->data[plane + q];
+        k->nz[i] = nrm->data[2 * plane + q];
+        int cell = row + (x0 + n * i) % tile;
         k->jx[i] = j->noise_radius * j->c->noise[cell];
         k->jy[i] = j->noise_radius * j->c->noise[cells + cell];
         k->sum[0][i] = k->sum[1][i] = k->sum[2][i] = 0.0f;
@@ -255,14 +257,16 @@ store_chunk(const struct job *j, int y, int x0, int len, const struct chunk *res
     const struct ssg_image *alb = j->io->in[SSG_PROBE_LIGHT_IN_ALBEDO];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
     float *out = j->io->out[0]->data, *vis = j->io->out[1]->data;
+    const float weight = (float)(j->n * j->n); /* each light stands for n^2 (interleave) */
     for (int i = 0; i < len; i++) {
+        size_t q = at + (size_t)j->n * i;
         int bg = k->nx[i] == 0.0f && k->ny[i] == 0.0f && k->nz[i] == 0.0f;
         for (int c = 0; c < 3; c++) /* no albedo: a white receiver's */
-            out[c * plane + at + i] =
+            out[c * plane + q] =
                 bg ? 0.0f
-                   : (alb ? alb->data[c * plane + at + i] : 1.0f) * (float)(1.0 / M_PI) *
-                         k->sum[c][i];
-        vis[at + i] = bg || !(k->lum_all[i] > 0.0f) ? 1.0f : k->lum_lit[i] / k->lum_all[i];
+                   : (alb ? alb->data[c * plane + q] : 1.0f) * (float)(1.0 / M_PI) *
+                         (k->sum[c][i] * weight);
+        vis[q] = bg || !(k->lum_all[i] > 0.0f) ? 1.0f : k->lum_lit[i] / k->lum_all[i];
     }
 }
 
@@ -270,20 +274,27 @@ SSG_VECTOR_CLONES
 static void chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
 {
     load_chunk(j, y, x0, len, k);
-    for (int li = 0; li < j->count; li++)
+    /* the lights of the pixels' interleave cell: i mod n^2 = (y mod n) n + x0 mod n */
+    const int n = j->n;
+    for (int li = (y % n) * n + x0 % n; li < j->count; li += n * n)
         add_light(j, li, len, k);
     store_chunk(j, y, x0, len, k);
 }
 
+/* Chunks of CHUNK pixels n apart (interleave n: pixels of one tile column, which take the
+   same lights), their columns outside, the band's rows inside. */
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
     struct chunk k;
-    for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
-        int len = j->w - x0 < CHUNK ? j->w - x0 : CHUNK;
-        for (int y = y0; y < y1; y++)
-            chunk(j, y, x0, len, &k);
-    }
+    const int n = j->n;
+    for (int b0 = 0; b0 < j->w; b0 += CHUNK * n)
+        for (int x0 = b0; x0 < b0 + n && x0 < j->w; x0++) {
+            int len = (j->w - x0 + n - 1) / n; /* pixels x0 + n i left in the row */
+            len = len < CHUNK ? len : CHUNK;
+            for (int y = y0; y < y1; y++)
+                chunk(j, y, x0, len, &k);
+        }
 }
 
 enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -303,7 +314,7 @@ enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void 
     const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
                     c->u.offset_world, c->u.slope_world, c->u.normal_world, p->noise_radius,
-                    c->p.taps, c->p.search_taps, c->p.search_radius};
+                    c->p.taps, c->p.search_taps, c->p.search_radius, p->interleave};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
     return SSG_OK;

@@ -112,32 +112,46 @@ static int world_of(const struct gbuf *g, int x, int y, float w[3])
 
 static const char *const CAMERA = "camera(position=[0, 2, 3], target=[0, 0, 0])\n";
 
-static void test_unshadowed_sum(void)
+static void parity_case(const struct ssg_scene *s, const struct gbuf *g,
+                        const struct ssg_image *l, const struct ssg_image *m,
+                        const char *const *sets, int set_count, const char *name);
+
+/* max(0, N.l) of pixel (x, y) for light i of the list l (world directions, planes). */
+static float cosine_of(const struct gbuf *g, const struct ssg_image *l, int i, int x, int y)
+{
+    int n = l->width;
+    float lw[3] = {l->data[i], l->data[2 * n + i], l->data[4 * n + i]}, c = 0;
+    for (int k = 0; k < 3; k++)
+        c += at(g->out[SSG_GBUFFER_OUT_NORMAL], k, x, y) *
+             (g->rot[3 * k] * lw[0] + g->rot[3 * k + 1] * lw[1] + g->rot[3 * k + 2] * lw[2]);
+    return c > 0 ? c : 0;
+}
+
+/* A box on a floor, and four lights of which one lies below the floor. */
+static const float FOUR[4][3] = {{0, 1, 0}, {1, 1, 0}, {-1, 0.3f, 1}, {0, -1, 0.2f}};
+
+static struct ssg_scene *box_on_floor(const char *name)
 {
     char text[512];
     snprintf(text, sizeof text, "%splane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
              "box(center=[0, 0.25, 0], size=[0.5, 0.5, 0.5])\n", CAMERA);
-    struct ssg_scene *s = scene_from_text("sum", text);
+    return scene_from_text(name, text);
+}
+
+static void test_unshadowed_sum(void)
+{
+    struct ssg_scene *s = box_on_floor("sum");
     if (!s)
         return;
     struct gbuf g = gbuffer(s);
-    const float dirs[4][3] = {{0, 1, 0}, {1, 1, 0}, {-1, 0.3f, 1}, {0, -1, 0.2f}};
-    struct ssg_image *l = light_list(dirs, 4), *r[2];
+    struct ssg_image *l = light_list(FOUR, 4), *r[2];
     light(s, &g, l, NULL, NULL, 0, SSG_BACKEND_CPU, r);
     double worst = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            float n[3], lv[3], sum = 0;
-            for (int c = 0; c < 3; c++)
-                n[c] = at(g.out[SSG_GBUFFER_OUT_NORMAL], c, x, y);
-            for (int i = 0; i < 4; i++) {
-                float lw[3] = {l->data[i], l->data[8 + i], l->data[16 + i]};
-                for (int k = 0; k < 3; k++)
-                    lv[k] = g.rot[3 * k] * lw[0] + g.rot[3 * k + 1] * lw[1] +
-                            g.rot[3 * k + 2] * lw[2];
-                float cosine = n[0] * lv[0] + n[1] * lv[1] + n[2] * lv[2];
-                sum += cosine > 0 ? cosine : 0;
-            }
+            float sum = 0;
+            for (int i = 0; i < 4; i++)
+                sum += cosine_of(&g, l, i, x, y);
             for (int c = 0; c < 3; c++) {
                 double want = at(g.out[SSG_GBUFFER_OUT_ALBEDO], c, x, y) / M_PI * sum * (c + 1);
                 double e = fabs(at(r[0], c, x, y) - want) / (want > 1e-3 ? want : 1e-3);
@@ -165,6 +179,38 @@ static void test_unshadowed_sum(void)
     CHECK(memcmp(w[1]->data, r[1]->data, sizeof(float) * W * H) == 0);
     for (int i = 0; i < 2; i++)
         ssg_image_destroy(&r[i]), ssg_image_destroy(&w[i]);
+    ssg_image_destroy(&l);
+    gbuf_free(&g);
+    ssg_scene_destroy(&s);
+}
+
+/* interleave=2 without maps: pixel (x, y) takes light (y mod 2) 2 + x mod 2 of the four
+   alone, weighted 4: albedo / pi x 4 max(0, N.l) E; and with maps, CPU and GL alike. */
+static void test_interleave(void)
+{
+    struct ssg_scene *s = box_on_floor("interleave");
+    if (!s)
+        return;
+    struct gbuf g = gbuffer(s);
+    struct ssg_image *l = light_list(FOUR, 4), *r[2];
+    const char *sets[] = {"interleave=2"};
+    light(s, &g, l, NULL, sets, 1, SSG_BACKEND_CPU, r);
+    double worst = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            for (int c = 0; c < 3; c++) {
+                double want = at(g.out[SSG_GBUFFER_OUT_ALBEDO], c, x, y) / M_PI * 4 *
+                              cosine_of(&g, l, (y % 2) * 2 + x % 2, x, y) * (c + 1);
+                double e = fabs(at(r[0], c, x, y) - want) / (want > 1e-3 ? want : 1e-3);
+                worst = e > worst ? e : worst;
+            }
+    fprintf(stderr, "interleave 2: largest relative error %.3g\n", worst);
+    CHECK(worst < 1e-5);
+    struct ssg_image *m = maps_of(s, l, 128);
+    parity_case(s, &g, l, m, sets, 1, "interleave 2");
+    for (int i = 0; i < 2; i++)
+        ssg_image_destroy(&r[i]);
+    ssg_image_destroy(&m);
     ssg_image_destroy(&l);
     gbuf_free(&g);
     ssg_scene_destroy(&s);
@@ -520,6 +566,7 @@ static void test_parity(void)
 int main(void)
 {
     test_unshadowed_sum();
+    test_interleave();
     test_open_floor();
     test_box_shadow();
     test_bleeding();

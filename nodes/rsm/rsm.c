@@ -98,6 +98,8 @@ static void prepare_visibility(const struct ssg_scene *scene, const struct ssg_r
         c->grid_lo[k] = f->lo[k];
     }
     c->grid_inv = f ? 1.0f / f->voxel : 0.0f;
+    for (int t = 0; t < SSG_RSM_TILE * SSG_RSM_TILE; t++)
+        c->vis_phase[t] = (int)(c->offset[t] * (SSG_RSM_TILE * SSG_RSM_TILE)) % c->vis_stride;
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)

@@ -1,13 +1,15 @@
 // rsm.glsl - `rsm` on GL, last pass (rsm_gl.c): per pixel, rsm_cpu.c's gather: every VPL of
 // the list, or the `samples` draws of the pixel's tile cell (rsm_picks.glsl), each term
 // Phi cos cos / (d^2 max(d^2, r2)) x fade(d) in the CPU's order (`precise`), with
-// visibility (vis) each term shadowed or the sum scaled by the tested draws' visible share.
+// visibility (vis) each term shadowed or the tested draws' occluded light subtracted.
 uniform sampler2DArray position, normal, albedo, list, count, pick;
 uniform bool albedo_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
 layout(r32f) uniform image2DArray acc;  // the sums between the dispatches of an exact run
 // the scene's distance field (scene/distance.h, gl_scene.h), read when vis != 0
 layout(std430, binding = 5) readonly buffer Distance { float distance_field[]; };
+// per tile cell, which draw of each vis_stride is tested (rsm.h's vis_phase), when vis != 0
+layout(std430, binding = 1) readonly buffer Phases { int vis_phase[]; };
 #pragma ssg_params
 #pragma ssg_consts
 // rot[9], eye: view -> world, world = eye + rot^T view; inv_samples = 1 / samples
@@ -83,23 +85,25 @@ void add_vpl(int i, vec3 x, vec3 nx, float scale, bool each, inout vec3 sum)
     sum = vec3(sum.x + add.x, sum.y + add.y, sum.z + add.z);
 }
 
-// rsm_cpu.c's shadow_ratio: the visible share of the tested draws' light
-float shadow_ratio(int t0, vec3 x, vec3 nx, float step)
+// rsm_cpu.c's shadow_subtract: the sum less the occluded light of the tested draws, each
+// scaled by vis_stride, clamped at 0
+vec3 shadow_subtract(int t0, vec3 x, vec3 nx, float step, vec3 sum0)
 {
-    precise float all_light = 0.0, seen = 0.0;
+    precise vec3 sum = sum0;
+    precise float stride = float(vis_stride);
+    int phase = vis_phase[t0];
     for (int t = 0; t < vis_tested; t++) {
-        int i = int(texelFetch(pick, ivec3(t * vis_stride, t0, 0), 0).r);
+        int i = int(texelFetch(pick, ivec3(t * vis_stride + phase, t0, 0), 0).r);
         precise float scale = step / vpl(i, 10);
         precise float w = vpl_weight(i, x, nx, scale);
-        if (!(w > 0.0))
+        if (!(w > 0.0) || visible(i, x, nx))
             continue;
-        precise float light = w * vpl(i, 10);
-        all_light = all_light + light;
-        if (visible(i, x, nx))
-            seen = seen + light;
+        for (int ch = 0; ch < 3; ch++) {
+            precise float light = w * vpl(i, 6 + ch);
+            sum[ch] = sum[ch] - stride * light;
+        }
     }
-    precise float r = all_light > 0.0 ? seen / all_light : 1.0;
-    return r;
+    return vec3(sum.x > 0.0 ? sum.x : 0.0, sum.y > 0.0 ? sum.y : 0.0, sum.z > 0.0 ? sum.z : 0.0);
 }
 
 vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
@@ -120,10 +124,8 @@ vec3 gather(ivec2 p, vec3 x, vec3 nx, int n, vec3 sum0)
         precise float scale = step / vpl(i, 10);
         add_vpl(i, x, nx, scale, each, sum);
     }
-    if (vis != 0 && vis_stride > 1) {
-        precise float r = shadow_ratio(t, x, nx, step);
-        sum = vec3(sum.x * r, sum.y * r, sum.z * r);
-    }
+    if (vis != 0 && vis_stride > 1)
+        sum = shadow_subtract(t, x, nx, step, sum);
     return sum;
 }
 

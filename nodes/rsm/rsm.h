@@ -90,8 +90,9 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
       "field (scene/distance.h), so the bounce no longer reaches through boxes and walls", \
       .def = 0, .host_only = 1)                                                            \
     P(INT, vis_draws,                                                                      \
-      "draws a pixel tests for visibility (every samples / vis_draws-th): the pixel's "    \
-      "bounce is scaled by the visible share of their light; 0 = every draw, exactly",     \
+      "draws a pixel tests for visibility (one of every samples / vis_draws, which one "   \
+      "turning over the pixel's tile): its bounce is scaled by the visible share of their " \
+      "light; 0 = every draw, exactly",                                                    \
       .def = 16, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .host_only = 1)                     \
     P(FLOAT, vis_start,                                                                    \
       "the trace starts this far off the receiver (along its normal and the segment) and " \
@@ -116,9 +117,12 @@ struct ssg_rsm_consts {
     float offset[SSG_RSM_TILE * SSG_RSM_TILE];
     float inv_samples;      /* 1 / samples (0 when samples = 0) */
     int vis;                /* 1 = visibility on and the scene has triangles to test */
-    int vis_stride;         /* draw k is tested when k % vis_stride = 0 and k / vis_stride
-                               < vis_tested; 1 = every draw (so is an exact sum) */
+    int vis_stride;         /* draw k is tested when k % vis_stride = the tile cell's
+                               vis_phase and k / vis_stride < vis_tested; 1 = every draw
+                               (so is an exact sum) */
     int vis_tested;         /* draws tested a pixel */
+    int vis_phase[SSG_RSM_TILE * SSG_RSM_TILE]; /* per tile cell: draw t vis_stride + phase
+                               is its t-th tested one (ssg_rsm_vis_phase) */
     int grid_n[3];          /* the distance field's voxels a side (scene/distance.h) */
     float grid_lo[3];       /* its world corner */
     float grid_inv;         /* 1 / its voxel side: world units to voxels */

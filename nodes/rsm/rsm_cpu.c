@@ -125,7 +125,7 @@ static void add_vpl_visible(const struct job *j, const float *v, float scale, in
 
 /* Every VPL (samples 0 or at least the count), or the tile cell's draws, each weighted
    1 / (S pdf) = total / (S w). With visibility on every draw tested, each term is
-   shadowed; with vis_stride > 1 the sum stays unshadowed here (shadow_ratio scales it). */
+   shadowed; with vis_stride > 1 the sum stays unshadowed here (shadow_subtract corrects it). */
 SSG_VECTOR_CLONES
 static void gather(const struct job *j, const int *pick, int len, struct chunk *restrict k)
 {
@@ -182,38 +182,36 @@ static void visible_lanes(const struct job *j, const struct chunk *k, int i,
     }
 }
 
-/* The ratio estimator: each pixel's unshadowed sum times the visible share of the light
-   of its tested draws (every vis_stride-th), their light weighted by w Phi_sum; 1 where
-   the tested draws bring none. Out of line, so a profile shows its cost apart. */
-__attribute__((noinline)) static void shadow_ratio(const struct job *j, const int *pick,
-                                                   int len, struct chunk *k)
+/* Visibility by a control variate: each pixel's unshadowed sum less the occluded light of
+   its tested draws (one of every vis_stride, at the tile cell's phase), each scaled by
+   vis_stride (README.md, "Visibility"); unbiased over the tile, clamped at 0 where the
+   few tested draws overshoot. Out of line, so a profile shows its cost apart. */
+__attribute__((noinline)) static void shadow_subtract(const struct job *j, const int *pick,
+                                                      int phase, int len, struct chunk *k)
 {
     const struct ssg_rsm_consts *c = j->c;
     float total = j->list[(size_t)(j->count - 1) * SSG_RSM_SLOT + 11];
     float step = c->inv_samples * total;
+    const float stride = (float)c->vis_stride;
     for (int i = 0; i < len; i++) {
-        float all = 0.0f, seen = 0.0f;
         for (int t0 = 0; t0 < c->vis_tested; t0 += TRACE_LANES) {
             const float *v[TRACE_LANES];
-            float light[TRACE_LANES];
+            float w[TRACE_LANES];
             int n = 0, vis[TRACE_LANES];
             for (int t = t0; t < c->vis_tested && t < t0 + TRACE_LANES; t++) {
-                const float *vpl = j->list + (size_t)pick[t * c->vis_stride] * SSG_RSM_SLOT;
-                float w = vpl_weight(c, vpl, step / vpl[10], k, i);
-                if (!(w > 0.0f))
-                    continue;
-                light[n] = w * vpl[10];
-                all += light[n];
-                v[n++] = vpl;
+                const float *vpl = j->list + (size_t)pick[t * c->vis_stride + phase] *
+                                                 SSG_RSM_SLOT;
+                w[n] = vpl_weight(c, vpl, step / vpl[10], k, i);
+                if (w[n] > 0.0f)
+                    v[n++] = vpl;
             }
             visible_lanes(j, k, i, v, n, vis);
-            for (int l = 0; l < n; l++) /* in draw order: the sum's bits as before */
-                if (vis[l])
-                    seen += light[l];
+            for (int l = 0; l < n; l++) /* in draw order, as rsm.glsl */
+                for (int ch = 0; !vis[l] && ch < 3; ch++)
+                    k->sum[ch][i] = k->sum[ch][i] - stride * (w[l] * v[l][6 + ch]);
         }
-        float r = all > 0.0f ? seen / all : 1.0f;
         for (int ch = 0; ch < 3; ch++)
-            k->sum[ch][i] = k->sum[ch][i] * r;
+            k->sum[ch][i] = k->sum[ch][i] > 0.0f ? k->sum[ch][i] : 0.0f;
     }
 }
 
@@ -233,8 +231,8 @@ static void store_chunk(const struct job *j, int y, int x0, int len,
     }
 }
 
-/* Visibility by the ratio estimator: on, sampled and not every draw tested. */
-static int ratio(const struct job *j)
+/* Visibility by the control variate: on, sampled and not every draw tested. */
+static int subtracted(const struct job *j)
 {
     const int S = j->c->p.samples;
     return j->c->vis && S > 0 && S < j->count && j->c->vis_stride > 1;
@@ -255,8 +253,8 @@ static void rows(void *user, int y0, int y1)
                 load_chunk(j, y, x0, len, &k);
                 if (j->count > 0)
                     gather(j, pick, len, &k);
-                if (j->count > 0 && ratio(j))
-                    shadow_ratio(j, pick, len, &k);
+                if (j->count > 0 && subtracted(j))
+                    shadow_subtract(j, pick, j->c->vis_phase[t], len, &k);
                 store_chunk(j, y, x0, len, &k);
             }
         }

@@ -66,8 +66,10 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     ssg_gl_input(p, "count", count);
     ssg_gl_input(p, "pick", pick);
     ssg_gl_output(p, "acc", acc);
-    if (c->vis) /* the field went up with the scene, once a run (gl_scene.h) */
+    if (c->vis) { /* the field went up with the scene, once a run (gl_scene.h) */
         ssg_gl_scene_bind_distance(p, SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS);
+        ssg_gl_buffer(p, 1, c->vis_phase, sizeof c->vis_phase);
+    }
     /* An exact sum walks the VPLs in dispatches of SSG_RSM_GL_ITERATIONS (rsm.h), the
        running sums kept in acc between them; the count is on the GPU, so every dispatch
        the slots could need is made (those past the count add nothing). A sampled run is
