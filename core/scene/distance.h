@@ -22,9 +22,9 @@
 struct ssg_mesh;
 
 /* voxels on the scene's longest axis: at 64 the Cornell box's tall box, a voxel thicker on
-   each side, cast a bounce shadow 0.67x the truth's brightness; at 128 about 0.9-1.1x, for
-   8 MB and about 130 ms at load (nodes/rsm/README.md) */
-enum { SSG_DISTANCE_RES = 128 };
+   each side, cast a bounce shadow 0.67x the truth's brightness; at 96 0.9-1.1x (3.4 MB);
+   128 gave the same means for 11 ms more of rsm a 1280x720 frame (nodes/rsm/README.md) */
+enum { SSG_DISTANCE_RES = 96 };
 enum { SSG_DISTANCE_MARGIN = 2 }; /* empty voxels around the bounds */
 
 struct ssg_distance {
