@@ -91,8 +91,8 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
       .def = 0, .host_only = 1)                                                            \
     P(INT, vis_draws,                                                                      \
       "draws a pixel tests for visibility (one of every samples / vis_draws, which one "   \
-      "turning over the pixel's tile): its bounce is scaled by the visible share of their " \
-      "light; 0 = every draw, exactly",                                                    \
+      "turning over the pixel's tile): the blocked ones' light, counted samples / "        \
+      "vis_draws times, is taken off its bounce; 0 = every draw, exactly",                 \
       .def = 16, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .host_only = 1)                     \
     P(FLOAT, vis_start,                                                                    \
       "the trace starts this far off the receiver (along its normal and the segment) and " \
@@ -122,7 +122,8 @@ struct ssg_rsm_consts {
                                (so is an exact sum) */
     int vis_tested;         /* draws tested a pixel */
     int vis_phase[SSG_RSM_TILE * SSG_RSM_TILE]; /* per tile cell: draw t vis_stride + phase
-                               is its t-th tested one (ssg_rsm_vis_phase) */
+                               is its t-th tested one; floor(64 offset) mod vis_stride
+                               (rsm.c's prepare_visibility, after the offsets) */
     int grid_n[3];          /* the distance field's voxels a side (scene/distance.h) */
     float grid_lo[3];       /* its world corner */
     float grid_inv;         /* 1 / its voxel side: world units to voxels */

@@ -3,7 +3,7 @@
  * light's cube with scattered texels on every face; the exact VPL sum and stratified
  * draws, with and without albedo, with min_distance, several cell sizes, and maps with
  * more VPLs than one llvmpipe shader loop may walk; with visibility on among boxes (every
- * term tested, and the ratio estimator).
+ * term tested, and the control variate over every 8th draw).
  *
  * Where differences come from: every pass does rsm_vpl.c's and rsm_cpu.c's operations in
  * their order without fused multiply-adds (`precise`), and the faces and offsets are the
@@ -172,7 +172,7 @@ static void test_cube(void)
 
 /* Visibility on: the point light's cube among two boxes and a wall, whose distance field
    (scene/distance.h) the trace reads on both backends; every term tested (exact, and
-   vis_draws=0) and the ratio estimator. The boxes do shadow: the CPU's output moves. */
+   vis_draws=0) and the control variate. The boxes do shadow: the CPU's output moves. */
 static void test_occluded(void)
 {
     struct setup u;
@@ -188,9 +188,9 @@ static void test_occluded(void)
     run_case(u.s, &u.m, &u.g, "occluded exact", 1, exact, 3, tol);
     const char *each[] = {"samples=24", "cell=3", "visibility=true", "vis_draws=0"};
     run_case(u.s, &u.m, &u.g, "occluded 24 draws each tested", 0, each, 4, tol);
-    const char *ratio[] = {"samples=64", "cell=1", "min_distance=0.3", "visibility=true",
-                           "vis_draws=8", "vis_start=2.5"};
-    run_case(u.s, &u.m, &u.g, "occluded 64 draws 8 tested", 1, ratio, 6, tol);
+    const char *tested[] = {"samples=64", "cell=1", "min_distance=0.3", "visibility=true",
+                            "vis_draws=8", "vis_start=2.5"};
+    run_case(u.s, &u.m, &u.g, "occluded 64 draws 8 tested", 1, tested, 6, tol);
     struct ssg_image *on = rsm_run(u.s, &u.m, &u.g, 0, 7, exact, 3, SSG_BACKEND_CPU);
     struct ssg_image *off = rsm_run(u.s, &u.m, &u.g, 0, 7, exact, 2, SSG_BACKEND_CPU);
     int moved = 0;
