@@ -18,7 +18,6 @@
 #include <string.h>
 
 #include "common/env_lights.h"
-#include "common/radical_inverse.h"
 
 enum {
     CELLS_W = 64, CELLS_H = 32,  /* the candidate grid (5.6 degree cells) */
@@ -26,13 +25,28 @@ enum {
     BAND_ROWS = 4                 /* probe rows per parallel band (fixed: deterministic) */
 };
 
-void ssg_env_lights_importance(const struct ssg_env *env, int count, float *dirs)
+/* The Fibonacci lattice of ssg_env_lights_fibonacci (elevation share (i + 0.5) / M, azimuth
+ * share i / golden ratio mod 1) warped through the probe's CDF: where the probe is flat
+ * the lights spread as evenly as the uniform set, which Hammersley points (rows of lights
+ * at one elevation each) did not. The last round(uniform_share N) lights are the uniform
+ * set of that many, so the probe's dim parts keep lights of their own. */
+void ssg_env_lights_importance(const struct ssg_env *env, int count, float uniform_share,
+                               float *dirs)
 {
-    for (int i = 0; i < count; i++) {
+    if (!env->has_image) { /* a constant's luminance CDF is the uniform one */
+        ssg_env_lights_fibonacci(count, dirs);
+        return;
+    }
+    int uniform = (int)lroundf(uniform_share * (float)count), warped = count - uniform;
+    ssg_env_lights_fibonacci(uniform, dirs + 3 * warped);
+    const double azimuth_step = 0.5 * (3.0 - sqrt(5.0)); /* golden angle / 2 pi */
+    for (int i = 0; i < warped; i++) {
         float rgb[3];
-        float u1 = (float)(((double)i + 0.5) / count);
-        float u2 = (float)ssg_halton_radical_inverse((uint64_t)i, 2);
-        ssg_env_sample(env, u1, u2, dirs + 3 * i, rgb);
+        double azimuth = (double)i * azimuth_step;
+        float u_row = (float)(((double)i + 0.5) / warped);
+        float u_col = (float)(azimuth - floor(azimuth));
+        /* ssg_env_sample: u2 picks the row (elevation), u1 the column (azimuth) */
+        ssg_env_sample(env, u_col, u_row, dirs + 3 * i, rgb);
     }
 }
 

@@ -13,9 +13,11 @@
  * independent of the environment. */
 void ssg_env_lights_fibonacci(int count, float *dirs);
 
-/* The same drawn through env's luminance CDF (Hammersley points: u1 stratified, u2 the
- * base-2 radical inverse), so bright regions get more, smaller lights. */
-void ssg_env_lights_importance(const struct ssg_env *env, int count, float *dirs);
+/* The same lattice warped through env's luminance CDF, so bright regions get more, smaller
+ * lights; the last round(uniform_share N) of them are the uniform set of that many (the
+ * dim parts keep lights). A constant environment gets the uniform set itself. */
+void ssg_env_lights_importance(const struct ssg_env *env, int count, float uniform_share,
+                               float *dirs);
 
 /* E_i of every light: the probe's radiance times solid angle summed over the texels whose
  * nearest light is i (its Voronoi region on the sphere at texel resolution), so the E_i

@@ -13,8 +13,11 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     const struct ssg_lightprobe_params *p = params;
     (void)frame;
     (void)in;
-    (void)why;
-    (void)why_len;
+    if (p->uniform_share > 0 && p->sampling != SSG_LIGHTPROBE_IMPORTANCE) {
+        snprintf(why, why_len, "uniform_share %g needs sampling=importance (the uniform set "
+                 "is uniform already)", (double)p->uniform_share);
+        return SSG_E_VALUE;
+    }
     out[0] = (struct ssg_shape){p->count, 2, 3, SSG_T_LIGHTS};
     return SSG_OK;
 }
@@ -69,7 +72,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     enum ssg_err e = dirs && irradiance ? SSG_OK : SSG_E_NOMEM;
     if (!e) {
         if (p->sampling == SSG_LIGHTPROBE_IMPORTANCE)
-            ssg_env_lights_importance(ctx->scene->env, p->count, dirs);
+            ssg_env_lights_importance(ctx->scene->env, p->count, p->uniform_share, dirs);
         else
             ssg_env_lights_fibonacci(p->count, dirs);
         e = ssg_env_lights_regions(ctx->scene->env, dirs, p->count, irradiance);

@@ -18,7 +18,7 @@ SSG_PORT_ENUM(ssg_lightprobe_output, SSG_LIGHTPROBE_OUT, SSG_LIGHTPROBE_OUTPUTS)
 
 enum ssg_lightprobe_sampling {
     SSG_LIGHTPROBE_UNIFORM,    /* a spherical Fibonacci set: near-equal areas 4 pi / N */
-    SSG_LIGHTPROBE_IMPORTANCE, /* Hammersley points through the probe's luminance CDF */
+    SSG_LIGHTPROBE_IMPORTANCE, /* the Fibonacci lattice through the probe's luminance CDF */
 };
 
 enum ssg_lightprobe_missing {
@@ -37,6 +37,10 @@ enum ssg_lightprobe_missing {
       "probe is bright",                                                                   \
       .def = SSG_LIGHTPROBE_UNIFORM, .choices = ssg_lightprobe_sampling_choices,           \
       .host_only = 1)                                                                      \
+    P(FLOAT, uniform_share,                                                                \
+      "importance: this share of the N lights is the uniform set, so the probe's dim "    \
+      "parts keep lights of their own (0 = every light drawn through the probe)",          \
+      .def = 0, .min = 0, .max = 1, .unit = "x N", .host_only = 1)                          \
     P(ENUM, missing,                                                                       \
       "a scene without environment light: error, or dark (N lights of irradiance 0, "     \
       "so one graph serves scenes with and without a probe)",                              \

@@ -7,7 +7,8 @@
  *   (the sum over its texels of L dOmega) and the irradiance of an unoccluded upward plane,
  *   sum_i max(0, l_i.y) E_i, is within a stated tolerance of the exact integral of
  *   L max(0, y) over the probe's texels;
- * - importance sampling puts more lights where the probe is bright;
+ * - importance sampling puts more lights where the probe is bright; it is the uniform set
+ *   for a constant sky, and uniform_share keeps that share of the uniform set;
  * - errors (no environment, count out of range) and CPU/GL parity (the same bytes);
  * - the lights' irradiances, as doubles, the same bits for 1, 2 and 3 threads on a probe of
  *   many bands. */
@@ -39,14 +40,15 @@ static double irr(const struct lights *l, int i, int c)
     return l->im->data[(c * 2 + 1) * l->n + i];
 }
 
-static struct lights run_probe(const struct ssg_scene *s, int n, const char *sampling,
-                               enum ssg_backend backend)
+/* extra: one more parameter (NULL: none) */
+static struct lights run_probe_with(const struct ssg_scene *s, int n, const char *sampling,
+                                    const char *extra, enum ssg_backend backend)
 {
     char count[32], mode[48];
     snprintf(count, sizeof count, "count=%d", n);
     snprintf(mode, sizeof mode, "sampling=%s", sampling);
-    const char *sets[] = {count, mode};
-    void *params = node_params(&ssg_node_lightprobe, sets, 2);
+    const char *sets[] = {count, mode, extra};
+    void *params = node_params(&ssg_node_lightprobe, sets, extra ? 3 : 2);
     struct lights l = {n, ssg_image_create(n, 2, 3)};
     struct ssg_image *out[1] = {l.im};
     const struct ssg_image *in[1] = {NULL};
@@ -55,15 +57,27 @@ static struct lights run_probe(const struct ssg_scene *s, int n, const char *sam
     return l;
 }
 
+static struct lights run_probe(const struct ssg_scene *s, int n, const char *sampling,
+                               enum ssg_backend backend)
+{
+    return run_probe_with(s, n, sampling, NULL, backend);
+}
+
 static const char *const GEOMETRY =
     "camera(position=[0, 1, 3], target=[0, 0, 0])\n"
     "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n";
 
-static void test_constant_sky(void)
+/* GEOMETRY under a constant sky of radiance (0.5, 1, 2). */
+static struct ssg_scene *constant_sky(void)
 {
     char text[512];
     snprintf(text, sizeof text, "%senvironment(color=[0.5, 1, 2])\n", GEOMETRY);
-    struct ssg_scene *s = scene_from_text("sky", text);
+    return scene_from_text("sky", text);
+}
+
+static void test_constant_sky(void)
+{
+    struct ssg_scene *s = constant_sky();
     if (!s)
         return;
     const float L[3] = {0.5f, 1, 2};
@@ -184,12 +198,30 @@ static double check_probe_lights(const struct ssg_scene *s, const char *sampling
     return (double)above / l.n;
 }
 
-static void test_courtyard_probe(void)
+static struct ssg_scene *courtyard(void)
 {
     struct ssg_diags d = {0};
     struct ssg_scene *s = NULL;
     CHECK_EQ(ssg_scene_load("examples/courtyard.scene", 1, &s, &d), SSG_OK);
     ssg_diags_print(&d, stderr);
+    return s;
+}
+
+/* Two runs of N lights on scene s hold the very same floats. */
+static void check_same_lights(const struct ssg_scene *s, int n, const char *sampling_a,
+                              enum ssg_backend backend_a, const char *sampling_b,
+                              enum ssg_backend backend_b)
+{
+    struct lights a = run_probe(s, n, sampling_a, backend_a);
+    struct lights b = run_probe(s, n, sampling_b, backend_b);
+    CHECK(memcmp(a.im->data, b.im->data, sizeof(float) * 6 * (size_t)n) == 0);
+    ssg_image_destroy(&a.im);
+    ssg_image_destroy(&b.im);
+}
+
+static void test_courtyard_probe(void)
+{
+    struct ssg_scene *s = courtyard();
     if (!s)
         return;
     /* N = 128: the upward plane's irradiance within 5 % for uniform lights (measured 3.6 %
@@ -204,11 +236,55 @@ static void test_courtyard_probe(void)
     CHECK_NEAR(up_uniform, 0.5, 0.01);
     CHECK(up_importance > up_uniform + 0.1); /* the sky outshines the ground */
     /* Both backends hold the very same floats. */
-    struct lights cpu = run_probe(s, 64, "importance", SSG_BACKEND_CPU);
-    struct lights gl = run_probe(s, 64, "importance", SSG_BACKEND_GL);
-    CHECK(memcmp(cpu.im->data, gl.im->data, sizeof(float) * 6 * 64) == 0);
-    ssg_image_destroy(&cpu.im);
-    ssg_image_destroy(&gl.im);
+    check_same_lights(s, 64, "importance", SSG_BACKEND_CPU, "importance", SSG_BACKEND_GL);
+    ssg_scene_destroy(&s);
+}
+
+/* importance warps the uniform set's Fibonacci lattice: a constant sky's luminance CDF is
+   the uniform one, so it gets the uniform set bit for bit; with uniform_share = 0.25 the
+   last quarter of the lights is the uniform set of N / 4 exactly (the probe's dim parts
+   keep lights), and the irradiances still add up to the probe's integral. uniform_share
+   without sampling=importance is refused at check. */
+static void test_importance_lattice(void)
+{
+    struct ssg_scene *sky = constant_sky();
+    if (!sky)
+        return;
+    check_same_lights(sky, 96, "uniform", SSG_BACKEND_CPU, "importance", SSG_BACKEND_CPU);
+    ssg_scene_destroy(&sky);
+
+    struct ssg_scene *s = courtyard();
+    if (!s)
+        return;
+    struct lights mixed = run_probe_with(s, 128, "importance", "uniform_share=0.25",
+                                         SSG_BACKEND_CPU);
+    float fib[3 * 32];
+    ssg_env_lights_fibonacci(32, fib);
+    double total[3], up[3], lt[3] = {0, 0, 0};
+    probe_integrals(s->env, total, up);
+    int above = 0;
+    for (int i = 0; i < 128; i++) {
+        float dir[3];
+        dir_of(&mixed, i, dir);
+        for (int c = 0; c < 3; c++) {
+            lt[c] += irr(&mixed, i, c);
+            if (i >= 96)
+                CHECK(dir[c] == fib[3 * (i - 96) + c]);
+        }
+        above += i < 96 && dir[1] > 0;
+    }
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(lt[c] / total[c], 1.0, 1e-5);
+    CHECK(above > 0.6 * 96); /* the warped ones still follow the bright sky */
+    ssg_image_destroy(&mixed.im);
+
+    const char *bad[] = {"uniform_share=0.5"};
+    void *params = node_params(&ssg_node_lightprobe, bad, 1);
+    struct ssg_shape in[1] = {{0}}, out[1];
+    char why[256] = "";
+    CHECK(ssg_node_lightprobe.check(params, &FRAME, in, out, why, sizeof why) != SSG_OK);
+    CHECK(strstr(why, "sampling=importance") != NULL);
+    free(params);
     ssg_scene_destroy(&s);
 }
 
@@ -282,6 +358,7 @@ int main(void)
     test_constant_sky();
     test_one_bright_texel();
     test_courtyard_probe();
+    test_importance_lattice();
     test_errors();
     test_threads();
     return check_report();
