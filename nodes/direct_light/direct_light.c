@@ -4,6 +4,7 @@
 
 #include "direct_light.h"
 #include "scene/scene.h"
+#include "common/sampling.h"
 #include "common/trace.h"
 
 static const double GOLDEN_ANGLE = 2.39996322972865332; /* pi (3 - sqrt 5) */
@@ -89,6 +90,8 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);
     ssg_camera_frame(&ctx->scene->camera, c->u.rot, c->u.eye);
+    if (ssg_sampling_projection(ctx, &ctx->in_shape[SSG_DIRECT_LIGHT_IN_POSITION], &c->u.proj))
+        return SSG_E_VALUE;
     for (int k = 0; k < p->samples; k++) {
         double r = sqrt((k + 0.5) / p->samples), a = GOLDEN_ANGLE * k;
         c->taps[2 * k] = (float)(r * cos(a));

@@ -16,6 +16,8 @@ layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
 #pragma ssg_consts
 const float MAX_RADIUS = 24.0, MAX_SLOPE = 10.0, EMPTY = 1.0e30, TINY = 1e-30;
 const int EARLY = 4; // direct_light_cpu.c's
+const int CONTACT_STEPS = 8; // SSG_DIRECT_LIGHT_CONTACT_STEPS
+const float CONTACT_GRAZING = 0.2; // SSG_DIRECT_LIGHT_CONTACT_GRAZING
 
 vec3 fu(int f) { return vec3(face[f].u[0], face[f].u[1], face[f].u[2]); }
 vec3 fv(int f) { return vec3(face[f].v[0], face[f].v[1], face[f].v[2]); }
@@ -170,6 +172,92 @@ float visibility(int li, ivec2 pix, vec3 p, vec3 n, vec3 l)
     return sum / float(p_samples);
 }
 
+// direct_light_cpu.c's pixel_plane: pixel (u, w) as a plane, its geometric normal from
+// its neighbours' points; false off the image, on the background, edge-on or alone.
+bool is_surface(ivec2 b)
+{
+    vec3 m = ssg_load3(normal, b);
+    return m.x != 0.0 || m.y != 0.0 || m.z != 0.0;
+}
+
+bool pixel_plane(float u, float w, out vec3 pt, out vec3 n)
+{
+    pt = vec3(0.0), n = vec3(0.0);
+    if (!(u >= 0.0 && w >= 0.0 && u < float(ssg_grid.x) && w < float(ssg_grid.y)))
+        return false;
+    ivec2 b = ivec2(int(u), int(w));
+    pt = ssg_load3(position, b);
+    if (!is_surface(b))
+        return false;
+    vec3 e[2];
+    for (int axis = 0; axis < 2; axis++) {
+        int best = 0;
+        float best_dz = 3.0e38;
+        for (int side = -1; side <= 1; side += 2) {
+            ivec2 o = axis != 0 ? ivec2(b.x, b.y + side) : ivec2(b.x + side, b.y);
+            if (o.x < 0 || o.y < 0 || o.x >= ssg_grid.x || o.y >= ssg_grid.y || !is_surface(o))
+                continue;
+            vec3 q = ssg_load3(position, o);
+            float dz = abs(q.z - pt.z);
+            if (dz < best_dz) {
+                best_dz = dz, best = side;
+                e[axis] = (q - pt) * float(side);
+            }
+        }
+        if (best == 0)
+            return false;
+    }
+    precise vec3 c = vec3(e[0].y * e[1].z - e[0].z * e[1].y, e[0].z * e[1].x - e[0].x * e[1].z,
+                          e[0].x * e[1].y - e[0].y * e[1].x);
+    precise float len = sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+    precise float facing = -(c.x * pt.x + c.y * pt.y + c.z * pt.z);
+    precise float dist = sqrt(pt.x * pt.x + pt.y * pt.y + pt.z * pt.z);
+    if (!(abs(facing) > CONTACT_GRAZING * len * dist))
+        return false; // seen edge-on (a silhouette): a pixel there is no plane
+    float s = facing < 0.0 ? -1.0 / len : 1.0 / len;
+    n = c * s;
+    return true;
+}
+
+float behind(vec3 q, vec3 pt, vec3 n)
+{
+    precise float d = n.x * (q.x - pt.x) + n.y * (q.y - pt.y) + n.z * (q.z - pt.z);
+    return -d;
+}
+
+// direct_light_cpu.c's contact_visibility: the march towards world direction l.
+float contact_visibility(ivec2 pix, vec3 l, float reach)
+{
+    vec3 p = ssg_load3(position, pix);
+    precise vec3 v = vec3(rot[0] * l.x + rot[1] * l.y + rot[2] * l.z,
+                          rot[3] * l.x + rot[4] * l.y + rot[5] * l.z,
+                          rot[6] * l.x + rot[7] * l.y + rot[8] * l.z);
+    float f = proj.x, cx = proj.y, cy = proj.z;
+    float step = reach / float(CONTACT_STEPS), soft = 0.125 * reach, shadow = 0.0;
+    for (int s = 1; s <= CONTACT_STEPS; s++) {
+        precise float t = step * float(s);
+        precise vec3 q = p + t * v;
+        if (!(q.z < 0.0))
+            break;
+        vec3 pt, n, pt2, n2;
+        if (!pixel_plane(cx + f * q.x / -q.z, cy - f * q.y / -q.z, pt, n))
+            continue;
+        float d = behind(q, pt, n);
+        if (!(d > 0.0 && d < reach))
+            continue;
+        precise vec3 q0 = q - step * v;
+        float before = behind(q0, pt, n);
+        float a = before < 0.0 ? before / (before - d) : 0.0;
+        precise vec3 xp = q0 + a * step * v;
+        if (!(xp.z < 0.0) || !pixel_plane(cx + f * xp.x / -xp.z, cy - f * xp.y / -xp.z, pt2, n2))
+            continue;
+        if (!(abs(behind(xp, pt2, n2)) < step))
+            continue; // the crossing is not on a surface the camera sees
+        shadow = max(shadow, min(d / soft, 1.0));
+    }
+    return 1.0 - shadow;
+}
+
 // nodes/common/direct.h: the G-buffer's irradiance, E without the colour, and L.
 float irradiance(int li, vec3 p, vec3 n, out vec3 l)
 {
@@ -206,7 +294,16 @@ void main()
         float e = irradiance(li, p, n, l);
         if (!(e > 0.0))
             continue;
-        float lit = visibility(li, pix, p, n, l) * e;
+        float vis = visibility(li, pix, p, n, l);
+        if (p_contact > 0.0 && vis > 0.0) {
+            float dist = 1.0;
+            if (light[li].point != 0) {
+                precise vec3 e = p - vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]);
+                dist = sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
+            }
+            vis *= contact_visibility(pix, l, p_contact * light[li].texel * dist);
+        }
+        float lit = vis * e;
         vec3 c = vec3(light[li].color[0], light[li].color[1], light[li].color[2]);
         sum += lit * c;
         lum_lit += lit * luminance(c);

@@ -8,6 +8,10 @@
 #include "common/lightmap.h"
 
 enum { SSG_DIRECT_LIGHT_MAX_SAMPLES = 64, SSG_DIRECT_LIGHT_MAX_LIGHTS = SSG_LIGHTMAP_FACES_MAX };
+/* Steps of the contact march (`contact`), and the cosine between a G-buffer pixel's
+   surface and the view ray below which the march takes no plane from it. */
+enum { SSG_DIRECT_LIGHT_CONTACT_STEPS = 8 };
+#define SSG_DIRECT_LIGHT_CONTACT_GRAZING 0.2f
 /* The widest PCF disc a pixel may get (soft shadows), texels. */
 #define SSG_DIRECT_LIGHT_MAX_RADIUS 24.0f
 /* The steepest receiver plane a tap follows, depth texels per texel (84 degrees). */
@@ -67,6 +71,12 @@ SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OU
       "shadows; 0 = hard",                                                                 \
       .def = 0, .min = 0, .max = 45, .unit = "degrees",                                    \
       .host_only = 1) /* prepare(): the lights' spread */                                  \
+    P(FLOAT, contact,                                                                      \
+      "screen-space contact shadows: each pixel also marches this many of its map's "      \
+      "texels towards the light over the G-buffer, and a visible surface whose plane the " \
+      "march passes behind shadows it (the occluders nearer than the map test's offsets: " \
+      "a wall just under a ceiling, a box's foot); 0 = off",                               \
+      .def = 0, .min = 0, .max = 64, .unit = "texels")                                     \
     P(ENUM, fit,                                                                           \
       "where the maps' directional lights lie: the fit of the lightmaps node that made "  \
       "them (scene or view; the two must agree)",                                          \
@@ -91,7 +101,8 @@ struct ssg_direct_light_light {
     U(MAT3, rot, "view -> world: world = eye + rot^T view")                               \
     U(VEC3, eye, "the camera's position, world")                                          \
     U(INT, res, "the maps' side R")                                                        \
-    U(INT, lights, "point and directional lights of the scene")
+    U(INT, lights, "point and directional lights of the scene")                           \
+    U(PROJECTION, proj, "the frame's camera as seen by the G-buffer's resolution")
 SSG_UNIFORMS_STRUCT(ssg_direct_light_uniforms, SSG_DIRECT_LIGHT_UNIFORMS);
 
 struct ssg_direct_light_consts {

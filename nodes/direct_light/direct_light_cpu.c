@@ -198,6 +198,120 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
     }
 }
 
+/* Pixel (u, w) of the G-buffer as a plane: its view-space point and the geometric normal
+   of its surface, from its neighbours' points (along each axis the one-sided difference
+   whose depth changes least, which stays on the pixel's own surface beside an edge),
+   turned towards the camera. Not the shading normal: a mesh's interpolated normals tilt
+   away from its flat triangles, and a march just above a triangle would pass "behind" the
+   plane they make. 0 when off the image, background, or without a neighbour on either
+   axis. */
+static int pixel_plane(const struct job *j, float u, float w, float pt[3], float n[3])
+{
+    if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
+        return 0;
+    const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
+    const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
+    const size_t plane = (size_t)j->w * j->h;
+    const int x = (int)u, y = (int)w;
+    size_t b = (size_t)y * j->w + (size_t)x;
+    for (int i = 0; i < 3; i++)
+        pt[i] = pos[i * plane + b];
+    if (nrm[b] == 0.0f && nrm[plane + b] == 0.0f && nrm[2 * plane + b] == 0.0f)
+        return 0;
+    float e[2][3];
+    for (int axis = 0; axis < 2; axis++) {
+        int best = 0;
+        float best_dz = INFINITY;
+        for (int side = -1; side <= 1; side += 2) {
+            int nx = axis ? x : x + side, ny = axis ? y + side : y;
+            if (nx < 0 || ny < 0 || nx >= j->w || ny >= j->h)
+                continue;
+            size_t o = (size_t)ny * j->w + (size_t)nx;
+            if (nrm[o] == 0.0f && nrm[plane + o] == 0.0f && nrm[2 * plane + o] == 0.0f)
+                continue;
+            float dz = fabsf(pos[2 * plane + o] - pt[2]);
+            if (dz < best_dz) {
+                best_dz = dz, best = side;
+                for (int i = 0; i < 3; i++)
+                    e[axis][i] = (pos[i * plane + o] - pt[i]) * (float)side;
+            }
+        }
+        if (!best)
+            return 0;
+    }
+    n[0] = e[0][1] * e[1][2] - e[0][2] * e[1][1];
+    n[1] = e[0][2] * e[1][0] - e[0][0] * e[1][2];
+    n[2] = e[0][0] * e[1][1] - e[0][1] * e[1][0];
+    float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    float facing = -(n[0] * pt[0] + n[1] * pt[1] + n[2] * pt[2]);
+    float dist = sqrtf(pt[0] * pt[0] + pt[1] * pt[1] + pt[2] * pt[2]);
+    if (!(fabsf(facing) > SSG_DIRECT_LIGHT_CONTACT_GRAZING * len * dist))
+        return 0; /* seen edge-on (a silhouette): a pixel there is no plane */
+    float s = facing < 0.0f ? -1.0f / len : 1.0f / len;
+    for (int i = 0; i < 3; i++)
+        n[i] *= s;
+    return 1;
+}
+
+/* How far view-space point q lies behind the plane (pt, n), away from the camera. */
+static float behind(const float q[3], const float pt[3], const float n[3])
+{
+    return -(n[0] * (q[0] - pt[0]) + n[1] * (q[1] - pt[1]) + n[2] * (q[2] - pt[2]));
+}
+
+/* The contact shadow of pixel (x, y) towards unit world direction l (README.md, "Contact
+   shadows"): march from the pixel's view-space point over `reach` scene units in
+   SSG_DIRECT_LIGHT_CONTACT_STEPS steps. A step whose point lies behind the plane of the
+   surface it projects to has crossed that plane since the last step; the crossing is an
+   occluder only where the G-buffer shows a surface there (the crossing lies within a step
+   of the plane of the pixel it projects to): past a step's edge the march runs behind the
+   tread's extension in open air, and is not shadowed. An occluder crossed d behind shadows by
+   min(1, d / soft); none, once d exceeds the reach (a thin object in front). Returns the
+   light that passes, 1 - the largest shadow. */
+static float contact_visibility(const struct job *j, int x, int y, const float l[3],
+                                float reach)
+{
+    const struct ssg_direct_light_consts *c = j->c;
+    const float *r = c->u.rot;
+    const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
+    const size_t plane = (size_t)j->w * j->h, at = (size_t)y * j->w + (size_t)x;
+    float p[3], v[3];
+    for (int i = 0; i < 3; i++) {
+        p[i] = pos[i * plane + at];
+        v[i] = r[3 * i] * l[0] + r[3 * i + 1] * l[1] + r[3 * i + 2] * l[2];
+    }
+    const float f = c->u.proj.f, cx = c->u.proj.cx, cy = c->u.proj.cy;
+    const float step = reach / (float)SSG_DIRECT_LIGHT_CONTACT_STEPS, soft = 0.125f * reach;
+    float shadow = 0.0f;
+    for (int s = 1; s <= SSG_DIRECT_LIGHT_CONTACT_STEPS; s++) {
+        float t = step * (float)s, q[3], pt[3], n[3], xp[3], pt2[3], n2[3];
+        for (int i = 0; i < 3; i++)
+            q[i] = p[i] + t * v[i];
+        if (!(q[2] < 0.0f))
+            break; /* behind the camera */
+        if (!pixel_plane(j, cx + f * q[0] / -q[2], cy - f * q[1] / -q[2], pt, n))
+            continue;
+        float d = behind(q, pt, n);
+        if (!(d > 0.0f && d < reach))
+            continue;
+        /* the crossing: where the last step's segment meets the plane */
+        float before = behind((float[3]){q[0] - step * v[0], q[1] - step * v[1],
+                                         q[2] - step * v[2]}, pt, n);
+        float a = before < 0.0f ? before / (before - d) : 0.0f;
+        for (int i = 0; i < 3; i++)
+            xp[i] = q[i] - step * v[i] + a * step * v[i];
+        if (!(xp[2] < 0.0f) ||
+            !pixel_plane(j, cx + f * xp[0] / -xp[2], cy - f * xp[1] / -xp[2], pt2, n2))
+            continue;
+        if (!(fabsf(behind(xp, pt2, n2)) < step))
+            continue; /* the crossing is not on a surface the camera sees */
+        float o = d / soft;
+        o = o < 1.0f ? o : 1.0f;
+        shadow = o > shadow ? o : shadow;
+    }
+    return 1.0f - shadow;
+}
+
 /* Light `light`'s visibility at pixel (x, y): PCF over the turned Vogel disc. */
 static float visibility(const struct job *j, const struct ssg_direct_light_light *light,
                         int index, int x, int y, const float p[3], const float n[3],
@@ -279,6 +393,14 @@ static void add_light(const struct job *j, int li, int y, int x0, int len,
         float p[3] = {k->px[i], k->py[i], k->pz[i]}, n[3] = {k->nx[i], k->ny[i], k->nz[i]};
         float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
         k->v[i] = k->e[i] > 0.0f ? visibility(j, l, li, x0 + i, y, p, n, d) : 0.0f;
+        if (j->c->p.contact > 0.0f && k->v[i] > 0.0f) {
+            float dist = 1.0f;
+            if (l->point) {
+                float e[3] = {p[0] - l->pos[0], p[1] - l->pos[1], p[2] - l->pos[2]};
+                dist = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+            }
+            k->v[i] *= contact_visibility(j, x0 + i, y, d, j->c->p.contact * l->texel * dist);
+        }
     }
     const float el = ssg_luminance(l->color[0], l->color[1], l->color[2]);
     for (int i = 0; i < len; i++) {
