@@ -209,14 +209,27 @@ bool pixel_plane(float u, float w, out vec3 pt, out vec3 n)
     }
     precise vec3 c = vec3(e[0].y * e[1].z - e[0].z * e[1].y, e[0].z * e[1].x - e[0].x * e[1].z,
                           e[0].x * e[1].y - e[0].y * e[1].x);
-    precise float len = sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+    precise float len2 = c.x * c.x + c.y * c.y + c.z * c.z;
     precise float facing = -(c.x * pt.x + c.y * pt.y + c.z * pt.z);
-    precise float dist = sqrt(pt.x * pt.x + pt.y * pt.y + pt.z * pt.z);
-    if (!(abs(facing) > CONTACT_GRAZING * len * dist))
+    precise float dist2 = pt.x * pt.x + pt.y * pt.y + pt.z * pt.z;
+    precise float g2 = CONTACT_GRAZING * CONTACT_GRAZING;
+    if (!(facing * facing > g2 * len2 * dist2))
         return false; // seen edge-on (a silhouette): a pixel there is no plane
-    float s = facing < 0.0 ? -1.0 / len : 1.0 / len;
+    float s = (facing < 0.0 ? -1.0 : 1.0) / sqrt(len2);
     n = c * s;
     return true;
+}
+
+// direct_light_cpu.c's behind_shading: q behind the plane of pixel (u, w)'s point and its
+// shading normal (the cheap half of the test).
+bool behind_shading(float u, float w, vec3 q)
+{
+    if (!(u >= 0.0 && w >= 0.0 && u < float(ssg_grid.x) && w < float(ssg_grid.y)))
+        return false;
+    ivec2 b = ivec2(int(u), int(w));
+    vec3 pt = ssg_load3(position, b), m = ssg_load3(normal, b);
+    precise float d = m.x * (q.x - pt.x) + m.y * (q.y - pt.y) + m.z * (q.z - pt.z);
+    return d < 0.0;
 }
 
 float behind(vec3 q, vec3 pt, vec3 n)
@@ -240,7 +253,8 @@ float contact_visibility(ivec2 pix, vec3 l, float reach)
         if (!(q.z < 0.0))
             break;
         vec3 pt, n, pt2, n2;
-        if (!pixel_plane(cx + f * q.x / -q.z, cy - f * q.y / -q.z, pt, n))
+        float u = cx + f * q.x / -q.z, w = cy - f * q.y / -q.z;
+        if (!behind_shading(u, w, q) || !pixel_plane(u, w, pt, n))
             continue;
         float d = behind(q, pt, n);
         if (!(d > 0.0 && d < reach))
@@ -254,6 +268,8 @@ float contact_visibility(ivec2 pix, vec3 l, float reach)
         if (!(abs(behind(xp, pt2, n2)) < step))
             continue; // the crossing is not on a surface the camera sees
         shadow = max(shadow, min(d / soft, 1.0));
+        if (shadow == 1.0)
+            break; // no later step can shadow more
     }
     return 1.0 - shadow;
 }

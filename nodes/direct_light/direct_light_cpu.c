@@ -199,12 +199,14 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
 }
 
 /* Pixel (u, w) of the G-buffer as a plane: its view-space point and the geometric normal
-   of its surface, from its neighbours' points (along each axis the one-sided difference
-   whose depth changes least, which stays on the pixel's own surface beside an edge),
-   turned towards the camera. Not the shading normal: a mesh's interpolated normals tilt
-   away from its flat triangles, and a march just above a triangle would pass "behind" the
-   plane they make. 0 when off the image, background, or without a neighbour on either
-   axis. */
+   of its surface, unit, turned towards the camera, from its neighbours' points (along each
+   axis the one-sided difference whose depth changes least, the lower side on a tie, which
+   stays on the pixel's own surface beside an edge). Not the shading normal: a mesh's
+   interpolated normals tilt away from its flat triangles, and a march just above a
+   triangle would pass "behind" the plane they make. 0 when off the image, background,
+   without a surface neighbour on either axis, or seen nearly edge-on (cosine to the view
+   ray under SSG_DIRECT_LIGHT_CONTACT_GRAZING, a silhouette: no plane there).
+   direct_light.glsl's pixel_plane makes the same operations. */
 static int pixel_plane(const struct job *j, float u, float w, float pt[3], float n[3])
 {
     if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
@@ -213,7 +215,7 @@ static int pixel_plane(const struct job *j, float u, float w, float pt[3], float
     const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
     const size_t plane = (size_t)j->w * j->h;
     const int x = (int)u, y = (int)w;
-    size_t b = (size_t)y * j->w + (size_t)x;
+    const size_t b = (size_t)y * j->w + (size_t)x;
     for (int i = 0; i < 3; i++)
         pt[i] = pos[i * plane + b];
     if (nrm[b] == 0.0f && nrm[plane + b] == 0.0f && nrm[2 * plane + b] == 0.0f)
@@ -239,18 +241,34 @@ static int pixel_plane(const struct job *j, float u, float w, float pt[3], float
         if (!best)
             return 0;
     }
-    n[0] = e[0][1] * e[1][2] - e[0][2] * e[1][1];
-    n[1] = e[0][2] * e[1][0] - e[0][0] * e[1][2];
-    n[2] = e[0][0] * e[1][1] - e[0][1] * e[1][0];
-    float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    float facing = -(n[0] * pt[0] + n[1] * pt[1] + n[2] * pt[2]);
-    float dist = sqrtf(pt[0] * pt[0] + pt[1] * pt[1] + pt[2] * pt[2]);
-    if (!(fabsf(facing) > SSG_DIRECT_LIGHT_CONTACT_GRAZING * len * dist))
-        return 0; /* seen edge-on (a silhouette): a pixel there is no plane */
-    float s = facing < 0.0f ? -1.0f / len : 1.0f / len;
+    float c[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                  e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    float len2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    float facing = -(c[0] * pt[0] + c[1] * pt[1] + c[2] * pt[2]);
+    float dist2 = pt[0] * pt[0] + pt[1] * pt[1] + pt[2] * pt[2];
+    const float g2 = SSG_DIRECT_LIGHT_CONTACT_GRAZING * SSG_DIRECT_LIGHT_CONTACT_GRAZING;
+    if (!(facing * facing > g2 * len2 * dist2))
+        return 0;
+    float s = (facing < 0.0f ? -1.0f : 1.0f) / sqrtf(len2);
     for (int i = 0; i < 3; i++)
-        n[i] *= s;
+        n[i] = c[i] * s;
     return 1;
+}
+
+/* Whether view-space point q lies behind the plane of the pixel (u, w)'s point and its
+   shading normal: the cheap half of the test (the pixel's own six values), which most of a
+   march in free space fails, so that pixel_plane's geometric normal (five pixels' reads)
+   is made only where it can count. */
+static int behind_shading(const struct job *j, float u, float w, const float q[3])
+{
+    if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
+        return 0;
+    const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
+    const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
+    const size_t plane = (size_t)j->w * j->h, b = (size_t)(int)w * j->w + (size_t)(int)u;
+    float d = nrm[b] * (q[0] - pos[b]) + nrm[plane + b] * (q[1] - pos[plane + b]) +
+              nrm[2 * plane + b] * (q[2] - pos[2 * plane + b]);
+    return d < 0.0f;
 }
 
 /* How far view-space point q lies behind the plane (pt, n), away from the camera. */
@@ -289,7 +307,8 @@ static float contact_visibility(const struct job *j, int x, int y, const float l
             q[i] = p[i] + t * v[i];
         if (!(q[2] < 0.0f))
             break; /* behind the camera */
-        if (!pixel_plane(j, cx + f * q[0] / -q[2], cy - f * q[1] / -q[2], pt, n))
+        float u = cx + f * q[0] / -q[2], w = cy - f * q[1] / -q[2];
+        if (!behind_shading(j, u, w, q) || !pixel_plane(j, u, w, pt, n))
             continue;
         float d = behind(q, pt, n);
         if (!(d > 0.0f && d < reach))
@@ -308,6 +327,8 @@ static float contact_visibility(const struct job *j, int x, int y, const float l
         float o = d / soft;
         o = o < 1.0f ? o : 1.0f;
         shadow = o > shadow ? o : shadow;
+        if (shadow == 1.0f)
+            break; /* no later step can shadow more */
     }
     return 1.0f - shadow;
 }
@@ -393,14 +414,17 @@ static void add_light(const struct job *j, int li, int y, int x0, int len,
         float p[3] = {k->px[i], k->py[i], k->pz[i]}, n[3] = {k->nx[i], k->ny[i], k->nz[i]};
         float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
         k->v[i] = k->e[i] > 0.0f ? visibility(j, l, li, x0 + i, y, p, n, d) : 0.0f;
-        if (j->c->p.contact > 0.0f && k->v[i] > 0.0f) {
-            float dist = 1.0f;
-            if (l->point) {
-                float e[3] = {p[0] - l->pos[0], p[1] - l->pos[1], p[2] - l->pos[2]};
-                dist = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-            }
-            k->v[i] *= contact_visibility(j, x0 + i, y, d, j->c->p.contact * l->texel * dist);
+    }
+    for (int i = 0; i < len && j->c->p.contact > 0.0f; i++) {
+        if (!(k->v[i] > 0.0f))
+            continue; /* the maps shadow it already */
+        float dist = 1.0f;
+        if (l->point) {
+            float e[3] = {k->px[i] - l->pos[0], k->py[i] - l->pos[1], k->pz[i] - l->pos[2]};
+            dist = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
         }
+        float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
+        k->v[i] *= contact_visibility(j, x0 + i, y, d, j->c->p.contact * l->texel * dist);
     }
     const float el = ssg_luminance(l->color[0], l->color[1], l->color[2]);
     for (int i = 0; i < len; i++) {
