@@ -121,16 +121,23 @@ float pcf_radius(Lookup k, float cs, float sn)
     return min(p_filter + 0.5 * penumbra / k.texel, MAX_RADIUS);
 }
 
+// direct_light_cpu.c's receiver_texel: a texel of light li's maps at the receiver p.
+float receiver_texel(int li, vec3 p)
+{
+    if (light[li].point == 0)
+        return light[li].texel;
+    vec3 lp = vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]);
+    return light[li].texel * length(p - lp);
+}
+
 Lookup locate(int li, vec3 p, vec3 n, vec3 l)
 {
     Lookup k;
     k.l = li;
-    float cosine = dot(n, l), sine = sqrt(max(1.0 - cosine * cosine, 0.0)), dist = 1.0;
+    float cosine = dot(n, l), sine = sqrt(max(1.0 - cosine * cosine, 0.0));
     vec3 lp = vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]);
     bool point = light[li].point != 0;
-    if (point)
-        dist = length(p - lp);
-    k.texel = light[li].texel * dist;
+    k.texel = receiver_texel(li, p);
     vec3 q = p + p_normal_offset * k.texel * sine * n;
     k.f = point ? cube_face(q - lp) : 0;
     k.r = length(q - lp);
@@ -220,6 +227,12 @@ bool pixel_plane(float u, float w, out vec3 pt, out vec3 n)
     return true;
 }
 
+float behind(vec3 q, vec3 pt, vec3 n)
+{
+    precise float d = n.x * (q.x - pt.x) + n.y * (q.y - pt.y) + n.z * (q.z - pt.z);
+    return -d;
+}
+
 // direct_light_cpu.c's behind_shading: q behind the plane of pixel (u, w)'s point and its
 // shading normal (the cheap half of the test).
 bool behind_shading(float u, float w, vec3 q)
@@ -227,15 +240,7 @@ bool behind_shading(float u, float w, vec3 q)
     if (!(u >= 0.0 && w >= 0.0 && u < float(ssg_grid.x) && w < float(ssg_grid.y)))
         return false;
     ivec2 b = ivec2(int(u), int(w));
-    vec3 pt = ssg_load3(position, b), m = ssg_load3(normal, b);
-    precise float d = m.x * (q.x - pt.x) + m.y * (q.y - pt.y) + m.z * (q.z - pt.z);
-    return d < 0.0;
-}
-
-float behind(vec3 q, vec3 pt, vec3 n)
-{
-    precise float d = n.x * (q.x - pt.x) + n.y * (q.y - pt.y) + n.z * (q.z - pt.z);
-    return -d;
+    return behind(q, ssg_load3(position, b), ssg_load3(normal, b)) > 0.0;
 }
 
 // direct_light_cpu.c's contact_visibility: the march towards world direction l.
@@ -311,14 +316,8 @@ void main()
         if (!(e > 0.0))
             continue;
         float vis = visibility(li, pix, p, n, l);
-        if (p_contact > 0.0 && vis > 0.0) {
-            float dist = 1.0;
-            if (light[li].point != 0) {
-                precise vec3 e = p - vec3(light[li].pos[0], light[li].pos[1], light[li].pos[2]);
-                dist = sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
-            }
-            vis *= contact_visibility(pix, l, p_contact * light[li].texel * dist);
-        }
+        if (p_contact > 0.0 && vis > 0.0)
+            vis *= contact_visibility(pix, l, p_contact * receiver_texel(li, p));
         float lit = vis * e;
         vec3 c = vec3(light[li].color[0], light[li].color[1], light[li].color[2]);
         sum += lit * c;

@@ -159,6 +159,17 @@ static float filter_radius(const struct job *j, const struct lookup *k, float cs
     return r < SSG_DIRECT_LIGHT_MAX_RADIUS ? r : SSG_DIRECT_LIGHT_MAX_RADIUS;
 }
 
+/* A texel of light l's maps at the receiver p, scene units: the map's own (directional) or
+   2 d / R at distance d (a cube face). The offsets and the contact march's reach scale
+   with it. */
+static float receiver_texel(const struct ssg_direct_light_light *light, const float p[3])
+{
+    if (!light->point)
+        return light->texel;
+    float d[3] = {p[0] - light->pos[0], p[1] - light->pos[1], p[2] - light->pos[2]};
+    return light->texel * sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
 /* The receiver p (normal n, unit direction l to the light) on light l's maps, moved along
    its normal first (the normal offset). */
 static void locate(const struct job *j, const struct ssg_direct_light_light *light,
@@ -166,13 +177,9 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
 {
     const struct ssg_direct_light_consts *c = j->c;
     float cosine = n[0] * l[0] + n[1] * l[1] + n[2] * l[2], c2 = 1.0f - cosine * cosine;
-    float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f), dist = 1.0f;
-    if (light->point) {
-        float d[3] = {p[0] - light->pos[0], p[1] - light->pos[1], p[2] - light->pos[2]};
-        dist = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    }
+    float sine = sqrtf(c2 > 0.0f ? c2 : 0.0f);
     k->l = light;
-    k->texel = light->texel * dist;
+    k->texel = receiver_texel(light, p);
     float lift = c->p.normal_offset * k->texel * sine, q[3], z;
     for (int i = 0; i < 3; i++)
         q[i] = p[i] + lift * n[i];
@@ -198,6 +205,21 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
     }
 }
 
+/* The G-buffer pixel that image point (u, w) falls in, into *b; 0 when off the image. */
+static int pixel_at(const struct job *j, float u, float w, size_t *b)
+{
+    if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
+        return 0;
+    *b = (size_t)(int)w * j->w + (size_t)(int)u;
+    return 1;
+}
+
+/* Whether pixel b of normal planes nrm (plane floats apart) is a surface (normal not 0). */
+static int is_surface(const float *nrm, size_t plane, size_t b)
+{
+    return nrm[b] != 0.0f || nrm[plane + b] != 0.0f || nrm[2 * plane + b] != 0.0f;
+}
+
 /* Pixel (u, w) of the G-buffer as a plane: its view-space point and the geometric normal
    of its surface, unit, turned towards the camera, from its neighbours' points (along each
    axis the one-sided difference whose depth changes least, the lower side on a tie, which
@@ -209,16 +231,16 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
    direct_light.glsl's pixel_plane makes the same operations. */
 static int pixel_plane(const struct job *j, float u, float w, float pt[3], float n[3])
 {
-    if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
+    size_t b;
+    if (!pixel_at(j, u, w, &b))
         return 0;
     const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
     const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
     const size_t plane = (size_t)j->w * j->h;
-    const int x = (int)u, y = (int)w;
-    const size_t b = (size_t)y * j->w + (size_t)x;
+    const int x = (int)(b % (size_t)j->w), y = (int)(b / (size_t)j->w);
     for (int i = 0; i < 3; i++)
         pt[i] = pos[i * plane + b];
-    if (nrm[b] == 0.0f && nrm[plane + b] == 0.0f && nrm[2 * plane + b] == 0.0f)
+    if (!is_surface(nrm, plane, b))
         return 0;
     float e[2][3];
     for (int axis = 0; axis < 2; axis++) {
@@ -229,7 +251,7 @@ static int pixel_plane(const struct job *j, float u, float w, float pt[3], float
             if (nx < 0 || ny < 0 || nx >= j->w || ny >= j->h)
                 continue;
             size_t o = (size_t)ny * j->w + (size_t)nx;
-            if (nrm[o] == 0.0f && nrm[plane + o] == 0.0f && nrm[2 * plane + o] == 0.0f)
+            if (!is_surface(nrm, plane, o))
                 continue;
             float dz = fabsf(pos[2 * plane + o] - pt[2]);
             if (dz < best_dz) {
@@ -255,26 +277,27 @@ static int pixel_plane(const struct job *j, float u, float w, float pt[3], float
     return 1;
 }
 
+/* How far view-space point q lies behind the plane (pt, n), away from the camera. */
+static float behind(const float q[3], const float pt[3], const float n[3])
+{
+    return -(n[0] * (q[0] - pt[0]) + n[1] * (q[1] - pt[1]) + n[2] * (q[2] - pt[2]));
+}
+
 /* Whether view-space point q lies behind the plane of the pixel (u, w)'s point and its
    shading normal: the cheap half of the test (the pixel's own six values), which most of a
    march in free space fails, so that pixel_plane's geometric normal (five pixels' reads)
    is made only where it can count. */
 static int behind_shading(const struct job *j, float u, float w, const float q[3])
 {
-    if (!(u >= 0.0f && w >= 0.0f && u < (float)j->w && w < (float)j->h))
+    size_t b;
+    if (!pixel_at(j, u, w, &b))
         return 0;
     const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
     const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
-    const size_t plane = (size_t)j->w * j->h, b = (size_t)(int)w * j->w + (size_t)(int)u;
-    float d = nrm[b] * (q[0] - pos[b]) + nrm[plane + b] * (q[1] - pos[plane + b]) +
-              nrm[2 * plane + b] * (q[2] - pos[2 * plane + b]);
-    return d < 0.0f;
-}
-
-/* How far view-space point q lies behind the plane (pt, n), away from the camera. */
-static float behind(const float q[3], const float pt[3], const float n[3])
-{
-    return -(n[0] * (q[0] - pt[0]) + n[1] * (q[1] - pt[1]) + n[2] * (q[2] - pt[2]));
+    const size_t plane = (size_t)j->w * j->h;
+    const float pt[3] = {pos[b], pos[plane + b], pos[2 * plane + b]};
+    const float n[3] = {nrm[b], nrm[plane + b], nrm[2 * plane + b]};
+    return behind(q, pt, n) > 0.0f;
 }
 
 /* The contact shadow of pixel (x, y) towards unit world direction l (README.md, "Contact
@@ -418,13 +441,9 @@ static void add_light(const struct job *j, int li, int y, int x0, int len,
     for (int i = 0; i < len && j->c->p.contact > 0.0f; i++) {
         if (!(k->v[i] > 0.0f))
             continue; /* the maps shadow it already */
-        float dist = 1.0f;
-        if (l->point) {
-            float e[3] = {k->px[i] - l->pos[0], k->py[i] - l->pos[1], k->pz[i] - l->pos[2]};
-            dist = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-        }
-        float d[3] = {k->lx[i], k->ly[i], k->lz[i]};
-        k->v[i] *= contact_visibility(j, x0 + i, y, d, j->c->p.contact * l->texel * dist);
+        float p[3] = {k->px[i], k->py[i], k->pz[i]}, d[3] = {k->lx[i], k->ly[i], k->lz[i]};
+        float reach = j->c->p.contact * receiver_texel(l, p);
+        k->v[i] *= contact_visibility(j, x0 + i, y, d, reach);
     }
     const float el = ssg_luminance(l->color[0], l->color[1], l->color[2]);
     for (int i = 0; i < len; i++) {
@@ -444,8 +463,7 @@ static void store(const struct job *j, int y, int x0, int len, const struct chun
     float *vis = j->io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]->data;
     const float inv_pi = (float)(1.0 / M_PI);
     for (int i = 0; i < len; i++) {
-        int bg = nrm->data[at + i] == 0.0f && nrm->data[plane + at + i] == 0.0f &&
-                 nrm->data[2 * plane + at + i] == 0.0f;
+        int bg = !is_surface(nrm->data, plane, at + i);
         for (int c = 0; c < 3; c++)
             out[c * plane + at + i] =
                 bg ? 0.0f : alb->data[c * plane + at + i] * inv_pi * k->sum[c][i];
