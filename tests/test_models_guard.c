@@ -418,11 +418,14 @@ static enum ssg_err import_model(const char *path, struct ssg_gltf **out,
     memcpy(g->meshes[1].positions, p, 48), memcpy(g->meshes[1].indices, idx, 24);
     g->materials = calloc(1, sizeof *g->materials);
     g->material_count = 1;
-    g->materials[0] = (struct ssg_gltf_material){"red", {1, 0, 0, 1}, 0, 0, "red.png"};
+    g->materials[0] = (struct ssg_gltf_material){"red", {1, 0, 0, 1}, 0, 0, "red.png",
+                                                 SSG_ALPHA_MASK, 0.25f};
     g->textures = calloc(2, sizeof *g->textures);
     g->texture_count = 1;
-    g->textures[0] = (struct ssg_texture){2, 1, calloc(6, sizeof(float))};
+    g->textures[0] = (struct ssg_texture){2, 1, calloc(6, sizeof(float)),
+                                          calloc(2, sizeof(float))};
     g->textures[0].rgb[5] = 0.5f;
+    g->textures[0].alpha[1] = 0.75f; /* the coverage plane crosses the pipe too */
     g->has_camera = 1;
     g->camera.fov_y = 33;
     *out = g;
@@ -479,6 +482,10 @@ static void test_sandbox_model(void)
         CHECK_EQ(g->meshes[1].material, -1);
         CHECK(!strcmp(g->materials[0].texture_file, "red.png"));
         CHECK_NEAR(g->textures[0].rgb[5], 0.5, 0);
+        CHECK(g->textures[0].alpha != NULL);
+        CHECK_NEAR(g->textures[0].alpha ? g->textures[0].alpha[1] : 0, 0.75, 0);
+        CHECK_EQ(g->materials[0].alpha_mode, SSG_ALPHA_MASK);
+        CHECK_NEAR(g->materials[0].alpha_cutoff, 0.25, 0);
         CHECK(g->has_camera && g->camera.fov_y == 33);
     }
     ssg_gltf_destroy(&g);

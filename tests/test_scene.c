@@ -418,6 +418,70 @@ static void test_textures(void)
     ssg_scene_destroy(&s);
 }
 
+/* A scene material's alpha: mask keeps its texture's alpha channel as the coverage plane
+ * (alpha_half.png: 255 then 0) with the cutoff and opacity written; opaque decodes none;
+ * blend warns at the argument and reads as mask at 0.5. */
+static void test_alpha_materials(void)
+{
+    const char *path = write_file(
+        "alpha.scene",
+        "leaf = material(texture=\"" SSG_SOURCE_DIR "/tests/fixtures/alpha_half.png\", "
+        "alpha_mode=mask, alpha_cutoff=0.25, opacity=0.75)\n"
+        "wall = material(texture=\"" SSG_SOURCE_DIR "/tests/fixtures/alpha_half.png\")\n"
+        "glass = material(alpha_mode=blend, alpha_cutoff=0.9)\n"
+        "box(material=leaf)\nbox(material=wall)\nbox(material=glass)\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    CHECK_EQ(d.warning_count, 1);
+    CHECK(d.warning_count == 1 && strstr(d.warnings[0].message, "material 'glass': alpha_mode=blend") &&
+          d.warnings[0].line == 3);
+    if (!s)
+        return;
+    const struct ssg_material *leaf = &s->materials[0], *wall = &s->materials[1];
+    const struct ssg_material *glass = &s->materials[2];
+    CHECK_EQ(leaf->alpha_mode, SSG_ALPHA_MASK);
+    CHECK_NEAR(leaf->alpha_cutoff, 0.25, 0);
+    CHECK_NEAR(leaf->opacity, 0.75, 0);
+    const struct ssg_texture *t = &s->textures[leaf->texture];
+    CHECK(t->alpha != NULL);
+    if (t->alpha) {
+        CHECK_NEAR(t->alpha[0], 1.0, 0);
+        CHECK_NEAR(t->alpha[1], 0.0, 0);
+    }
+    CHECK_EQ(wall->alpha_mode, SSG_ALPHA_OPAQUE);
+    CHECK(s->textures[wall->texture].alpha == NULL);
+    CHECK_EQ(glass->alpha_mode, SSG_ALPHA_BLEND);
+    CHECK_NEAR(glass->alpha_cutoff, 0.5, 0);
+    ssg_scene_destroy(&s);
+}
+
+/* An OBJ whose MTL's map_d names its map_Kd file (the usual way to cut out leaves in OBJ)
+ * becomes a masked material reading that texture's alpha, through Assimp and its child
+ * process. */
+static void test_obj_map_d(void)
+{
+    write_file("leaf.mtl", "newmtl leaf\nKd 1 1 1\nmap_Kd " SSG_SOURCE_DIR
+               "/tests/fixtures/alpha_half.png\nmap_d " SSG_SOURCE_DIR
+               "/tests/fixtures/alpha_half.png\n");
+    write_file("leaf.obj", "mtllib leaf.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
+               "vt 1 1\nvn 0 0 1\nusemtl leaf\nf 1/1/1 2/2/1 3/3/1\n");
+    const char *path = write_file("leaf.scene", "mesh(\"leaf.obj\")\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    if (!s)
+        return;
+    CHECK_EQ(s->material_count, 1);
+    const struct ssg_material *m = &s->materials[0];
+    CHECK_EQ(m->alpha_mode, SSG_ALPHA_MASK);
+    CHECK_NEAR(m->alpha_cutoff, 0.5, 0);
+    CHECK(m->texture >= 0 && s->textures[m->texture].alpha != NULL);
+    ssg_scene_destroy(&s);
+}
+
 static void test_view_matrix(void)
 {
     struct ssg_camera c = {{1, 2, 3}, {1, 2, -1}, {0, 1, 0}, 45, 0.1f, 100};
@@ -449,6 +513,8 @@ int main(void)
     test_mesh_and_gltf_camera();
     test_check_mode_and_broken_gltf();
     test_textures();
+    test_alpha_materials();
+    test_obj_map_d();
     test_view_matrix();
     return check_report();
 }

@@ -94,6 +94,7 @@ extern struct ssg_gl_fns ssg_gl_fn;
 #define glVertexArrayAttribIFormat ssg_gl_fn.VertexArrayAttribIFormat
 #define glVertexArrayAttribBinding ssg_gl_fn.VertexArrayAttribBinding
 #define glEnableVertexArrayAttrib ssg_gl_fn.EnableVertexArrayAttrib
+#define glDisableVertexArrayAttrib ssg_gl_fn.DisableVertexArrayAttrib
 #define glDeleteVertexArrays ssg_gl_fn.DeleteVertexArrays
 #define glDrawElements ssg_gl_fn.DrawElements
 #define glDrawArrays ssg_gl_fn.DrawArrays

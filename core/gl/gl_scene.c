@@ -12,6 +12,7 @@
 #include "gl/gl_runtime.h"
 #include "gl/gl_scene.h"
 #include "graph/gl_backend.h"
+#include "scene/coverage.h"
 #include "scene/distance.h"
 #include "scene/scene.h"
 
@@ -78,11 +79,16 @@ static enum ssg_err lay_out_materials(const struct ssg_node_ctx *ctx, struct ssg
         for (int j = 0; t && j < i && g->texels < 0; j++) /* a texture shared: upload once */
             if (sc->materials[j].texture == mt->texture)
                 g->texels = s->material[j].texels;
-        if (t && g->texels < 0) {
+        size_t px = t ? (size_t)t->width * (size_t)t->height : 0;
+        if (t && g->texels < 0) { /* its RGB, then its alpha plane when it has one */
             g->texels = (int32_t)texels;
-            texels += 3 * (size_t)t->width * (size_t)t->height;
+            texels += (t->alpha ? 4 : 3) * px;
         }
         g->width = t ? t->width : 0, g->height = t ? t->height : 0;
+        g->opacity = mt->opacity;
+        g->alpha_cutoff = mt->alpha_cutoff;
+        g->masked = ssg_material_masked(mt);
+        g->alpha_texels = t && t->alpha ? g->texels + 3 * (int32_t)px : -1;
         if (texels > INT32_MAX)
             return fail(ctx, SSG_E_NOMEM, "the scene's textures are too large for GL");
     }
@@ -131,10 +137,13 @@ static void copy_data(struct ssg_gl_scene *s)
         int first = g->texels >= 0; /* only the first material of a shared texture copies */
         for (int j = 0; first && j < i; j++)
             first = s->material[j].texels != g->texels;
-        if (first)
-            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->texels,
-                                 (GLsizeiptr)(12 * (size_t)g->width * (size_t)g->height),
-                                 sc->textures[sc->materials[i].texture].rgb);
+        const struct ssg_texture *t = first ? &sc->textures[sc->materials[i].texture] : NULL;
+        GLsizeiptr plane = (GLsizeiptr)(4 * (size_t)g->width * (size_t)g->height);
+        if (t)
+            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->texels, 3 * plane, t->rgb);
+        if (t && t->alpha)
+            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->alpha_texels, plane,
+                                 t->alpha);
     }
     if (s->bytes[MESHES])
         glNamedBufferSubData(s->buffer[MESHES], 0, (GLsizeiptr)s->bytes[MESHES], s->mesh);
@@ -161,6 +170,8 @@ static void make_vao(struct ssg_gl_scene *s)
     glVertexArrayAttribFormat(s->vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(s->vao, 0, 0);
     glEnableVertexArrayAttrib(s->vao, 0);
+    glVertexArrayAttribFormat(s->vao, 1, 2, GL_FLOAT, GL_FALSE, 0); /* uv, where a mesh has */
+    glVertexArrayAttribBinding(s->vao, 1, 1);
     glVertexArrayElementBuffer(s->vao, s->buffer[INDEX]);
 }
 
@@ -278,6 +289,9 @@ void ssg_gl_scene_draw_meshes(const struct ssg_gl_scene *s, unsigned prog)
 {
     GLint mesh_at = glGetUniformLocation(prog, "ssg_mesh");
     glBindVertexArray(s->vao);
+    for (int b = 0; b < SSG_GL_SCENE_BUFFERS; b++) /* a mask reads the mesh's material */
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)(SSG_GL_SCENE_BINDING + b),
+                         s->buffer[b]);
     for (int i = 0; i < s->scene->mesh_count; i++) {
         const struct ssg_gl_mesh *g = &s->mesh[i];
         int triangles = s->scene->meshes[i].triangle_count;
@@ -285,6 +299,14 @@ void ssg_gl_scene_draw_meshes(const struct ssg_gl_scene *s, unsigned prog)
             continue;
         glVertexArrayVertexBuffer(s->vao, 0, s->buffer[VDATA], 4 * (GLintptr)g->positions,
                                   3 * sizeof(float));
+        if (g->uvs >= 0) {
+            glVertexArrayVertexBuffer(s->vao, 1, s->buffer[VDATA], 4 * (GLintptr)g->uvs,
+                                      2 * sizeof(float));
+            glEnableVertexArrayAttrib(s->vao, 1);
+        } else {
+            glDisableVertexArrayAttrib(s->vao, 1); /* reads (0, 0): a mesh without a texture
+                                                      has no alpha plane to look up */
+        }
         if (mesh_at >= 0)
             glProgramUniform1i(prog, mesh_at, i);
         glDrawElements(GL_TRIANGLES, 3 * triangles, GL_UNSIGNED_INT,

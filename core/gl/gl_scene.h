@@ -15,7 +15,8 @@
  *   +0 float vdata[]: every mesh's positions (xyz), normals (xyz) and uvs (uv, only where
  *      its material has a texture) as in the scene, at the offsets its Mesh record gives
  *   +1 uint index[]: every mesh's indices (3 per triangle, the mesh's own vertex numbers)
- *   +2 float texel[]: the textures materials use, linear RGB interleaved, row 0 at the top
+ *   +2 float texel[]: the textures materials use, linear RGB interleaved, row 0 at the top,
+ *      each followed by its alpha plane when it has one (scene/coverage.h)
  *   +3 Mesh mesh[]: struct ssg_gl_mesh below, one per scene mesh, in scene order
  *   +4 Material material[]: struct ssg_gl_material below, in scene order
  * A shader declares them with the same fields, e.g.
@@ -47,12 +48,15 @@ struct ssg_gl_mesh {
 };
 
 /* One material on GL (scene.h's fields); texels is the float offset of its texture in
- * texel[], -1 = none, width and height its size in texels. */
+ * texel[], -1 = none, width and height its size in texels; alpha_texels the offset of that
+ * texture's alpha plane, -1 = none; masked 1 for alpha_mode mask or blend (coverage.h). */
 struct ssg_gl_material {
     float albedo[3];
     float specular[3];
     float shininess;
     int32_t texels, width, height;
+    float opacity, alpha_cutoff;
+    int32_t alpha_texels, masked;
 };
 
 /* The camera the scene is drawn from: the pose of ssg_camera_frame (view = rot * (world -
@@ -82,9 +86,13 @@ void ssg_gl_scene_bind_distance(struct ssg_gl_pass *pass, int binding);
  * rasteriser samples at pixel centres (x + 0.5, y + 0.5) and the projection is flipped so
  * row 0 is the top, as everywhere in ssgraph. The program gets
  *   layout(location = 0) in vec3 ssg_position;   world position
+ *   layout(location = 1) in vec2 ssg_uv;         texture coordinates (0 without)
  *   uniform mat4 ssg_world_to_clip;              the camera's projection
  *   uniform int ssg_mesh;                        index of the mesh being drawn
- * and writes `layout(location = i) out float` for layer i. */
+ * and the scene's buffers above bound, and writes `layout(location = i) out float` for
+ * layer i. Every raster program discards the fragments an alpha-masked mesh does not
+ * cover (nodes/common/surface.glsl's mesh_covers at the interpolated ssg_uv), so a mask
+ * is the same to every map and layer. */
 enum ssg_err ssg_gl_scene_draw(const struct ssg_node_ctx *ctx, const char *shader,
                                const struct ssg_gl_camera *camera, struct ssg_image *target);
 

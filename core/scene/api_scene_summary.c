@@ -130,6 +130,17 @@ static void print_model_line(FILE *out, const struct ssg_scene *s,
         print_up(out, "      ", &up, lo, hi, 1);
 }
 
+/* What a model file uses and no path reads (struct ssg_gltf's ignored), a line each. */
+static void print_ignored(FILE *out, const char *indent, const char *ignored)
+{
+    for (const char *line = ignored; *line;) {
+        const char *end = strchr(line, '\n');
+        int len = (int)(end ? end - line : (long)strlen(line));
+        fprintf(out, "%snot read: %.*s\n", indent, len, line);
+        line = end ? end + 1 : line + len;
+    }
+}
+
 static void print_triangles(FILE *out, const struct ssg_scene *s)
 {
     long long total = 0, in_models = 0;
@@ -142,6 +153,7 @@ static void print_triangles(FILE *out, const struct ssg_scene *s)
                 m->line, m->column, m->file, m->triangles, m->mesh_count,
                 m->mesh_count == 1 ? "" : "es");
         print_model_line(out, s, m);
+        print_ignored(out, "      ", m->ignored);
         in_models += m->triangles;
     }
     if (total > in_models)
@@ -392,6 +404,7 @@ enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *di
     print_vec(out, " max ", hi);
     fputc('\n', out);
     const char *rotate = print_up(out, "  ", &up, lo, hi, 0);
+    print_ignored(out, "  ", g->ignored);
     float scale = model_scale_hint(g, &diagonal);
     if (scale > 0.0f)
         fprintf(out, "  scale: the bounding-box diagonal is %g, %g times the AO radius %g of "

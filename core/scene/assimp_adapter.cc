@@ -111,11 +111,34 @@ class Flattener {
     std::vector<ssg_gltf_material> materials;
     std::vector<int> slot; /* Assimp material -> materials index, -1 = its default */
     size_t visits = 0;
+    model_adapter::Ignored ignored; /* what the file uses and no path reads */
 
     void convert_materials();
+    void note_ignored(const aiMaterial &src, const ssg_gltf_material &mat);
     void visit(const aiNode *node, const aiMatrix4x4 &parent, int depth);
     void add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world);
 };
+
+/* The parts of a material no path reads yet (docs/scenes.md's feature table). */
+void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat)
+{
+    std::string who = std::string("'") + model_adapter::printable(mat.name) + "'";
+    aiString path;
+    aiColor3D emissive(0, 0, 0);
+    float opacity = 1.0f;
+    if (src.GetTextureCount(aiTextureType_NORMALS) > 0 ||
+        src.GetTextureCount(aiTextureType_HEIGHT) > 0)
+        ignored.add("normal and bump maps (map_bump, norm)", who);
+    if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0 ||
+        (src.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS &&
+         (emissive.r > 0 || emissive.g > 0 || emissive.b > 0)))
+        ignored.add("emission (Ke, map_Ke)", who);
+    if (src.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
+        mat.alpha_mode == SSG_ALPHA_OPAQUE)
+        ignored.add("opacity textures other than the diffuse texture (map_d)", who);
+    if (src.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
+        ignored.add("opacity below 1 (d, Tr: drawn opaque)", who);
+}
 
 void Flattener::convert_materials()
 {
@@ -149,6 +172,14 @@ void Flattener::convert_materials()
                      std::to_string(sizeof mat.texture_file - 1) + ")");
             std::snprintf(mat.texture_file, sizeof mat.texture_file, "%s", tex.C_Str());
         }
+        /* an OBJ's map_d (opacity texture) naming the diffuse texture itself: its alpha
+           channel masks the surface, as glTF's MASK (a separate map_d is not read yet) */
+        aiString opacity;
+        mat.alpha_cutoff = 0.5f;
+        if (src->GetTexture(aiTextureType_OPACITY, 0, &opacity) == AI_SUCCESS &&
+            mat.texture_file[0] && std::strcmp(opacity.C_Str(), mat.texture_file) == 0)
+            mat.alpha_mode = SSG_ALPHA_MASK;
+        note_ignored(*src, mat);
         slot.push_back((int)materials.size());
         materials.push_back(mat);
     }
@@ -194,6 +225,8 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
     }
     if (out.indices.empty())
         return;
+    if (mesh.HasVertexColors(0))
+        ignored.add("vertex colours", "");
     double c[9], det;
     cofactor(world, c, &det);
     const double sign = det < 0 ? -1.0 : 1.0;
@@ -226,7 +259,7 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
 
 ssg_gltf *Flattener::to_c() const
 {
-    return model_adapter::to_c(prims, materials, {}, nullptr);
+    return model_adapter::to_c(prims, materials, {}, nullptr, ignored);
 }
 
 /* A face with no index (a PLY list of length 0) is typed a polygon by Assimp's scene

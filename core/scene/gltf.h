@@ -28,6 +28,9 @@ struct ssg_gltf_material {
     int texcoord;        /* TEXCOORD_n set the texture reads; default 0 */
     char texture_file[256]; /* an undecoded diffuse texture (Assimp formats), relative to
                                the model file; "" = none; "*N" = embedded in the file */
+    int alpha_mode;      /* enum ssg_alpha_mode: glTF alphaMode; an OBJ's map_d naming the
+                            diffuse texture: mask */
+    float alpha_cutoff;  /* glTF alphaCutoff, default 0.5; base_color[3] is the opacity */
 };
 
 struct ssg_gltf {
@@ -38,11 +41,17 @@ struct ssg_gltf {
     struct ssg_mesh *meshes;
     int material_count;
     struct ssg_gltf_material *materials;
-    /* Base-colour textures, decoded and converted from sRGB to linear RGB. */
+    /* Base-colour textures, decoded and converted from sRGB to linear RGB; a masked
+       material's texture keeps its alpha channel as its coverage plane. */
     int texture_count;
     struct ssg_texture *textures;
     int has_camera; /* 1 = a node of the default scene carries a perspective camera */
     struct ssg_camera camera;  /* that node's camera in world space (yfov in degrees) */
+    /* What the file uses that no path of ssgraph reads (docs/scenes.md's feature table),
+       one line a feature with the materials using it ("normal maps (normalTexture): 3
+       materials: 'bark', 'leaf', 'stone'"); "" = nothing. The scene loader warns with it
+       and `ssgraph check` lists it. */
+    char ignored[SSG_MODEL_IGNORED_MAX];
 };
 
 /* Loads path. On failure returns SSG_E_IO (cannot read the file), SSG_E_GLTF (malformed or

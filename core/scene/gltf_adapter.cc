@@ -159,6 +159,7 @@ class Flattener {
     std::vector<ssg_gltf_material> materials;
     std::vector<Tex> textures;
     std::vector<int> texture_slot; /* glTF texture index -> textures index, -1 = not yet */
+    model_adapter::Ignored ignored; /* what the file uses and no path reads */
     bool has_camera = false;
     ssg_camera camera{};
     size_t visits = 0; /* node instances seen, against shared subtrees blowing up */
@@ -167,13 +168,23 @@ class Flattener {
     void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
     void add_camera(int index, const Mat4 &world);
     void convert_materials();
-    int texture(int gltf_index);
+    void note_ignored(const tinygltf::Material &src, const std::string &who);
+    int texture(int gltf_index, bool keep_alpha);
+    void add_alpha(Tex &tex, const tinygltf::Image &img) const;
 };
 
 void Flattener::run()
 {
     texture_slot.assign(m.textures.size(), -1);
     convert_materials();
+    for (const std::string &x : m.extensionsUsed) {
+        /* the material extensions' rows name the materials; quantized attributes are read
+           as any accessor (gltf_accessor_adapter.cc) */
+        if (x == "KHR_texture_transform" || x == "KHR_mesh_quantization")
+            continue;
+        ignored.add(x == "KHR_lights_punctual" ? "lights (KHR_lights_punctual)"
+                                               : "extension " + printable(x), "");
+    }
     std::vector<int> roots;
     if (!m.scenes.empty()) {
         size_t s = m.defaultScene >= 0 ? (size_t)m.defaultScene : 0;
@@ -267,6 +278,8 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
                  std::to_string(nv) + " vertices)");
     if (out.indices.empty())
         return;
+    if (attribute(p, "COLOR_0") >= 0)
+        ignored.add("vertex colours (COLOR_0)", where);
     int nrm = attribute(p, "NORMAL");
     out.normals = nrm >= 0 ? read_floats(m, nrm, 3) : compute_normals(out.positions, out.indices);
     if (out.normals.size() != out.positions.size())
@@ -336,33 +349,89 @@ void Flattener::add_camera(int index, const Mat4 &w)
     has_camera = true;
 }
 
+/* The parts of a material no path reads yet (docs/scenes.md's feature table). */
+void Flattener::note_ignored(const tinygltf::Material &src, const std::string &who)
+{
+    const std::vector<double> &e = src.emissiveFactor;
+    bool emits = e.size() == 3 && (e[0] > 0 || e[1] > 0 || e[2] > 0);
+    if (src.normalTexture.index >= 0)
+        ignored.add("normal maps (normalTexture)", who);
+    if (emits || src.emissiveTexture.index >= 0)
+        ignored.add("emission (emissiveFactor, emissiveTexture)", who);
+    if (src.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform"))
+        ignored.add("texture transforms (KHR_texture_transform)", who);
+}
+
 void Flattener::convert_materials()
 {
-    for (const tinygltf::Material &src : m.materials) {
+    for (size_t k = 0; k < m.materials.size(); k++) {
+        const tinygltf::Material &src = m.materials[k];
+        note_ignored(src, src.name.empty() ? "material " + std::to_string(k)
+                                           : "'" + printable(src.name) + "'");
         ssg_gltf_material mat{};
         std::snprintf(mat.name, sizeof mat.name, "%s", src.name.c_str());
         const std::vector<double> &f = src.pbrMetallicRoughness.baseColorFactor;
         for (int i = 0; i < 4; i++) mat.base_color[i] = f.size() == 4 ? (float)f[(size_t)i] : 1.0f;
-        mat.texture = texture(src.pbrMetallicRoughness.baseColorTexture.index);
+        /* glTF 2.0, 3.9.4: alpha is ignored unless MASK (cutoff, default 0.5) or BLEND */
+        mat.alpha_mode = src.alphaMode == "MASK"    ? SSG_ALPHA_MASK
+                         : src.alphaMode == "BLEND" ? SSG_ALPHA_BLEND
+                                                    : SSG_ALPHA_OPAQUE;
+        mat.alpha_cutoff = mat.alpha_mode == SSG_ALPHA_MASK ? (float)src.alphaCutoff : 0.5f;
+        if (!(mat.alpha_cutoff >= 0.0f && mat.alpha_cutoff <= 1.0f))
+            fail("material '" + printable(src.name) + "': alphaCutoff " +
+                 shown(src.alphaCutoff) + " is outside 0 to 1");
+        mat.texture = texture(src.pbrMetallicRoughness.baseColorTexture.index,
+                              mat.alpha_mode != SSG_ALPHA_OPAQUE);
         mat.texcoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
         materials.push_back(mat);
     }
 }
 
+/* The alpha channel of a decoded image with one (gray + alpha, RGBA; linear: glTF's alpha
+   is not sRGB-encoded) as the texture's coverage plane; an image without one stays
+   opaque. */
+void Flattener::add_alpha(Tex &tex, const tinygltf::Image &img) const
+{
+    if (!tex.alpha.empty() || (img.component != 2 && img.component != 4))
+        return;
+    size_t px = (size_t)img.width * (size_t)img.height, bytes = img.bits == 16 ? 2 : 1;
+    tex.alpha.resize(px);
+    for (size_t i = 0; i < px; i++) {
+        size_t at = i * (size_t)img.component + (size_t)img.component - 1;
+        uint16_t u = img.image[at];
+        if (bytes == 2)
+            std::memcpy(&u, &img.image[at * 2], 2);
+        tex.alpha[i] = (float)u / (bytes == 2 ? 65535.0f : 255.0f);
+    }
+}
+
+/* The image of glTF texture `gltf_index`, checked. */
+static const tinygltf::Image &texture_image(const tinygltf::Model &m, int gltf_index)
+{
+    int source = m.textures[(size_t)gltf_index].source;
+    if (source < 0 || (size_t)source >= m.images.size())
+        fail("texture " + std::to_string(gltf_index) + " has no valid image");
+    return m.images[(size_t)source];
+}
+
 /* Decodes glTF texture `gltf_index` once; baseColor textures are sRGB-encoded (glTF 2.0
- * spec, 3.9.2), so 8- and 16-bit values are converted to linear here. */
-int Flattener::texture(int gltf_index)
+ * spec, 3.9.2), so 8- and 16-bit values are converted to linear here. keep_alpha: a masked
+ * material reads it, so its alpha channel comes along (also when an opaque material
+ * decoded it first). */
+int Flattener::texture(int gltf_index, bool keep_alpha)
 {
     if (gltf_index < 0)
         return -1;
     if ((size_t)gltf_index >= m.textures.size())
         fail("texture " + std::to_string(gltf_index) + " does not exist");
-    if (texture_slot[(size_t)gltf_index] >= 0)
-        return texture_slot[(size_t)gltf_index];
+    if (texture_slot[(size_t)gltf_index] >= 0) {
+        int slot = texture_slot[(size_t)gltf_index];
+        if (keep_alpha)
+            add_alpha(textures[(size_t)slot], texture_image(m, gltf_index));
+        return slot;
+    }
+    const tinygltf::Image &img = texture_image(m, gltf_index);
     int source = m.textures[(size_t)gltf_index].source;
-    if (source < 0 || (size_t)source >= m.images.size())
-        fail("texture " + std::to_string(gltf_index) + " has no valid image");
-    const tinygltf::Image &img = m.images[(size_t)source];
     size_t bytes = img.bits == 16 ? 2 : 1;
     size_t px = (size_t)img.width * (size_t)img.height;
     if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 ||
@@ -370,7 +439,7 @@ int Flattener::texture(int gltf_index)
         fail("image " + std::to_string(source) + " ('" + img.uri + "') was not decoded");
     float lut[256];
     for (int i = 0; i < 256; i++) lut[i] = srgb_to_linear((float)i / 255.0f);
-    Tex tex{img.width, img.height, std::vector<float>(px * 3)};
+    Tex tex{img.width, img.height, std::vector<float>(px * 3), {}};
     for (size_t i = 0; i < px; i++)
         for (int c = 0; c < 3; c++) {
             size_t at = i * (size_t)img.component + (size_t)(img.component < 3 ? 0 : c);
@@ -384,6 +453,8 @@ int Flattener::texture(int gltf_index)
             }
             tex.rgb[i * 3 + (size_t)c] = v;
         }
+    if (keep_alpha)
+        add_alpha(tex, img);
     textures.push_back(std::move(tex));
     texture_slot[(size_t)gltf_index] = (int)textures.size() - 1;
     return texture_slot[(size_t)gltf_index];
@@ -391,7 +462,8 @@ int Flattener::texture(int gltf_index)
 
 ssg_gltf *Flattener::to_c() const
 {
-    return model_adapter::to_c(prims, materials, textures, has_camera ? &camera : nullptr);
+    return model_adapter::to_c(prims, materials, textures, has_camera ? &camera : nullptr,
+                               ignored);
 }
 
 /* tinygltf reads the buffers and images a glTF names through this: the same rules as

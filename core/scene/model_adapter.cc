@@ -31,8 +31,42 @@ void report(char *why, size_t why_len, const char *path, const std::string &mess
 
 } // namespace
 
+void Ignored::add(const std::string &feature, const std::string &where)
+{
+    for (auto &f : features)
+        if (f.first == feature) {
+            for (const std::string &w : f.second)
+                if (w == where)
+                    return;
+            f.second.push_back(where);
+            return;
+        }
+    features.push_back({feature, {where}});
+}
+
+std::string Ignored::text() const
+{
+    std::string all;
+    for (const auto &f : features) {
+        std::string line = f.first;
+        if (!f.second.empty() && !f.second[0].empty()) {
+            line += ": " + std::to_string(f.second.size()) + " use" +
+                    (f.second.size() == 1 ? "" : "s") + ": ";
+            for (size_t i = 0; i < f.second.size() && i < 4; i++)
+                line += (i ? ", " : "") + f.second[i];
+            if (f.second.size() > 4)
+                line += " and " + std::to_string(f.second.size() - 4) + " more";
+        }
+        if (all.size() + line.size() + 1 >= SSG_MODEL_IGNORED_MAX)
+            break;
+        all += line + "\n";
+    }
+    return all;
+}
+
 ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_material> &materials,
-               const std::vector<Tex> &textures, const ssg_camera *camera)
+               const std::vector<Tex> &textures, const ssg_camera *camera,
+               const Ignored &ignored)
 {
     ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
     if (!g)
@@ -60,11 +94,13 @@ ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_materi
             o.width = t.width;
             o.height = t.height;
             o.rgb = c_array(t.rgb);
+            o.alpha = c_array(t.alpha);
         }
     } catch (...) {
         free_model(g);
         throw;
     }
+    std::snprintf(g->ignored, sizeof g->ignored, "%s", ignored.text().c_str());
     g->has_camera = camera != nullptr;
     if (camera)
         g->camera = *camera;
@@ -79,7 +115,10 @@ void free_model(ssg_gltf *g)
         std::free(g->meshes[i].uvs);
         std::free(g->meshes[i].indices);
     }
-    for (int i = 0; g->textures && i < g->texture_count; i++) std::free(g->textures[i].rgb);
+    for (int i = 0; g->textures && i < g->texture_count; i++) {
+        std::free(g->textures[i].rgb);
+        std::free(g->textures[i].alpha);
+    }
     std::free(g->meshes);
     std::free(g->materials);
     std::free(g->textures);

@@ -33,16 +33,29 @@ struct Prim {
     int material;                               /* index into the materials, -1 = none */
 };
 
-/* A decoded texture: linear RGB, row 0 at the top. */
+/* A decoded texture: linear RGB, row 0 at the top, and its alpha (empty = opaque). */
 struct Tex {
     int width, height;
-    std::vector<float> rgb;
+    std::vector<float> rgb, alpha;
+};
+
+/* What a file uses that ssgraph does not read, gathered while reading it: per feature
+   ("normal maps (normalTexture)"), the materials (or meshes, extensions) that use it. */
+class Ignored {
+  public:
+    void add(const std::string &feature, const std::string &where);
+    /* One line a feature, in the order first seen, cut to fit struct ssg_gltf's ignored. */
+    std::string text() const;
+
+  private:
+    std::vector<std::pair<std::string, std::vector<std::string>>> features;
 };
 
 /* The gathered model as malloc'd C arrays (camera NULL = none); throws std::bad_alloc
    having freed what it made. */
 ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_material> &materials,
-               const std::vector<Tex> &textures, const ssg_camera *camera);
+               const std::vector<Tex> &textures, const ssg_camera *camera,
+               const Ignored &ignored);
 
 /* Frees a struct ssg_gltf and every array it holds (ssg_gltf_destroy's body). */
 void free_model(ssg_gltf *g);

@@ -82,9 +82,13 @@ static void put_model(struct sink *k, const struct ssg_gltf *g)
         put_int(k, t->width);
         put_int(k, t->height);
         put(k, t->rgb, 3 * (size_t)t->width * (size_t)t->height * sizeof(float));
+        put_int(k, t->alpha != NULL);
+        if (t->alpha)
+            put(k, t->alpha, (size_t)t->width * (size_t)t->height * sizeof(float));
     }
     put_int(k, g->has_camera);
     put(k, &g->camera, sizeof g->camera);
+    put(k, g->ignored, sizeof g->ignored);
 }
 
 static void put_result(struct sink *k, enum ssg_err code, const char *why,
@@ -210,7 +214,7 @@ static int get_mesh(struct ssg_wire *w, struct ssg_mesh *m)
 
 static int get_textures(struct ssg_wire *w, struct ssg_gltf *g)
 {
-    long long n, width, height;
+    long long n, width, height, alpha;
     if (!get_int(w, 0, INT_MAX - 1, &n))
         return 0;
     if (!(g->textures = calloc((size_t)n + 1, sizeof *g->textures)))
@@ -220,7 +224,10 @@ static int get_textures(struct ssg_wire *w, struct ssg_gltf *g)
         if (!get_int(w, 0, INT_MAX, &width) || !get_int(w, 0, INT_MAX, &height))
             return 0;
         t->width = (int)width, t->height = (int)height;
-        if (!get_array(w, 3 * (size_t)width * (size_t)height, sizeof(float), (void **)&t->rgb))
+        if (!get_array(w, 3 * (size_t)width * (size_t)height, sizeof(float), (void **)&t->rgb) ||
+            !get_int(w, 0, 1, &alpha) ||
+            (alpha && !get_array(w, (size_t)width * (size_t)height, sizeof(float),
+                                 (void **)&t->alpha)))
             return 0;
     }
     return 1;
@@ -233,7 +240,9 @@ static int references_hold(struct ssg_wire *w, struct ssg_gltf *g)
         struct ssg_gltf_material *m = &g->materials[i];
         m->name[sizeof m->name - 1] = 0;
         m->texture_file[sizeof m->texture_file - 1] = 0;
-        if (m->texture < -1 || m->texture >= g->texture_count)
+        if (m->texture < -1 || m->texture >= g->texture_count || m->alpha_mode < 0 ||
+            m->alpha_mode > SSG_ALPHA_BLEND || !(m->alpha_cutoff >= 0.0f) ||
+            !(m->alpha_cutoff <= 1.0f))
             return fail(w, SSG_WIRE_CORRUPT);
     }
     for (int i = 0; i < g->mesh_count; i++)
@@ -257,8 +266,9 @@ static int get_model(struct ssg_wire *w, struct ssg_gltf *g)
         return 0;
     g->material_count = (int)materials;
     if (!get_textures(w, g) || !get_int(w, 0, 1, &camera) ||
-        !get(w, &g->camera, sizeof g->camera))
+        !get(w, &g->camera, sizeof g->camera) || !get(w, g->ignored, sizeof g->ignored))
         return 0;
+    g->ignored[sizeof g->ignored - 1] = 0;
     g->has_camera = (int)camera;
     return references_hold(w, g);
 }

@@ -11,7 +11,11 @@
  * The scene is built with RTC_SCENE_FLAG_ROBUST so rays through a shared edge (the
  * diagonal of a two-triangle plane at a pixel centre) never slip through; its cost was
  * within the noise of the measurement above. Occlusion batches (ambient occlusion) go as
- * packets of 8 with the incoherent flag; ssg_rt_occluded_rays has the measurement. */
+ * packets of 8 with the incoherent flag; ssg_rt_occluded_rays has the measurement.
+ * A mesh whose material is alpha-masked (scene/coverage.h) gets Embree filter functions
+ * for both kinds of query: a hit where the mask has no surface is rejected and the ray
+ * goes on, so every CPU ray (the G-buffer's, the references', the AO's) sees through it
+ * alike. Only masked meshes carry a filter: an opaque scene traces as fast as before. */
 #include "scene/rt.h"
 
 #include <embree3/rtcore.h>
@@ -19,14 +23,22 @@
 #include <string.h>
 
 #include "lang/parse.h"
+#include "scene/coverage.h"
 #include "scene/scene.h"
 
 /* Rays per rtcIntersect1M call; on the stack, 80 bytes each. */
 enum { STREAM = 256 };
 
+/* What a masked mesh's filter function reads: the scene's mesh (its uvs and material). */
+struct masked_mesh {
+    const struct ssg_scene *scene;
+    int mesh;
+};
+
 struct ssg_rt {
     RTCDevice device;
     RTCScene scene;
+    struct masked_mesh *masked; /* per mesh, the filters' user data */
     struct ssg_diags *diags; /* where Embree errors go while building; NULL afterwards */
     int failed;              /* an Embree error was reported */
 };
@@ -40,11 +52,34 @@ static void on_error(void *user, enum RTCError code, const char *str)
                     (int)code, str ? str : "(no message)");
 }
 
+/* Rejects the candidate hits of a masked mesh where its mask leaves no surface (valid -1
+   = a ray still asking, 0 = rejected; coverage.h). The hits are N-wide structure of arrays
+   (Ng x, y, z, u, v, primID, ...): rtcore_ray.h's RTCHitN_u and friends, which are C++
+   only, read them at these offsets. */
+static void mask_filter(const struct RTCFilterFunctionNArguments *args)
+{
+    const struct masked_mesh *mm = args->geometryUserPtr;
+    const unsigned n = args->N;
+    const float *hit = (const float *)args->hit;
+    const unsigned *prim = (const unsigned *)args->hit;
+    for (unsigned i = 0; i < n; i++) {
+        if (args->valid[i] != -1)
+            continue;
+        float u = hit[3 * n + i], v = hit[4 * n + i];
+        int tri = (int)prim[5 * n + i];
+        if (!ssg_mesh_covers(mm->scene, mm->mesh, tri, u, v))
+            args->valid[i] = 0;
+    }
+}
+
 /* Copies one mesh into a new Embree triangle geometry attached under the mesh's index.
  * Embree's own buffers are used because it reads vertices with 16-byte loads and wants
- * padding after the last one, which the scene's arrays do not promise. */
-static void attach_mesh(struct ssg_rt *rt, const struct ssg_mesh *mesh, unsigned id)
+ * padding after the last one, which the scene's arrays do not promise. A masked mesh's
+ * filter reads the scene's uvs and textures, which live as long as the scene that owns
+ * this struct. */
+static void attach_mesh(struct ssg_rt *rt, const struct ssg_scene *scene, unsigned id)
 {
+    const struct ssg_mesh *mesh = &scene->meshes[id];
     RTCGeometry geom = rtcNewGeometry(rt->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     if (!geom)
         return;
@@ -55,6 +90,12 @@ static void attach_mesh(struct ssg_rt *rt, const struct ssg_mesh *mesh, unsigned
     if (v && t) {
         memcpy(v, mesh->positions, 3 * sizeof(float) * (size_t)mesh->vertex_count);
         memcpy(t, mesh->indices, 3 * sizeof(unsigned) * (size_t)mesh->triangle_count);
+        if (ssg_mesh_masked(scene, (int)id)) {
+            rt->masked[id] = (struct masked_mesh){scene, (int)id};
+            rtcSetGeometryUserData(geom, &rt->masked[id]);
+            rtcSetGeometryIntersectFilterFunction(geom, mask_filter);
+            rtcSetGeometryOccludedFilterFunction(geom, mask_filter);
+        }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(rt->scene, geom, id);
     }
@@ -66,13 +107,18 @@ enum ssg_err ssg_rt_build(const struct ssg_scene *scene, struct ssg_rt **out,
 {
     *out = NULL;
     struct ssg_rt *rt = calloc(1, sizeof *rt);
-    if (!rt)
+    if (rt)
+        rt->masked = calloc((size_t)scene->mesh_count + 1, sizeof *rt->masked);
+    if (!rt || !rt->masked) {
+        free(rt);
         return SSG_E_NOMEM;
+    }
     rt->diags = diags;
     rt->device = rtcNewDevice("verbose=0");
     if (!rt->device) {
         ssg_diag_at(diags, SSG_E_BACKEND, (struct ssg_loc){0}, "cannot create the Embree "
                     "device (error %d)", (int)rtcGetDeviceError(NULL));
+        free(rt->masked);
         free(rt);
         return SSG_E_BACKEND;
     }
@@ -83,7 +129,7 @@ enum ssg_err ssg_rt_build(const struct ssg_scene *scene, struct ssg_rt **out,
         rtcSetSceneBuildQuality(rt->scene, RTC_BUILD_QUALITY_HIGH);
         for (int i = 0; i < scene->mesh_count; i++)
             if (scene->meshes[i].triangle_count > 0)
-                attach_mesh(rt, &scene->meshes[i], (unsigned)i);
+                attach_mesh(rt, scene, (unsigned)i);
         rtcCommitScene(rt->scene);
     }
     rt->diags = NULL;
@@ -102,6 +148,7 @@ void ssg_rt_destroy(struct ssg_rt **rt)
     if ((*rt)->scene)
         rtcReleaseScene((*rt)->scene);
     rtcReleaseDevice((*rt)->device);
+    free((*rt)->masked);
     free(*rt);
     *rt = NULL;
 }

@@ -2,7 +2,8 @@
  * scene holding a triangle geometry per scene mesh (Embree geometry id == mesh index).
  *
  * ssg_scene_load builds it (scene->rt) when it loads assets; it copies the vertex and index
- * data, so the meshes may change or go afterwards. Queries are thread-safe: any number of
+ * data, but an alpha-masked mesh's filter (scene/coverage.h) reads the scene's uvs,
+ * materials and textures while tracing, so the scene must outlive it (it owns it). Queries are thread-safe: any number of
  * threads may intersect the same built struct ssg_rt at once. */
 #ifndef SSG_RT_H
 #define SSG_RT_H

@@ -284,6 +284,11 @@ static void check_entity(struct scene_loader *l, struct scene_entity *e)
     case SK_CAMERA: check_camera(l, e); break;
     case SK_MATERIAL:
         check_file(l, e, "texture", ((const struct material_args *)e->args)->texture);
+        if (((const struct material_args *)e->args)->alpha_mode == SSG_ALPHA_BLEND)
+            ssg_diag_warn(l->diags, SSG_E_VALUE, arg_loc(e, "alpha_mode"), "material '%.*s': "
+                          "alpha_mode=blend is drawn as mask at cutoff 0.5 (no pass of ssgraph "
+                          "blends; docs/scenes.md)", (int)(e->stmt->name ? e->stmt->name_len : 0),
+                          e->stmt->name ? e->stmt->name : "");
         break;
     case SK_POINT_LIGHT:
     case SK_CAMERA_KEY:
@@ -478,8 +483,10 @@ void ssg_scene_destroy(struct ssg_scene **scene)
     ssg_env_destroy(&s->env);
     for (int i = 0; i < s->mesh_count; i++)
         ssg_mesh_free(&s->meshes[i]);
-    for (int i = 0; i < s->texture_count; i++)
+    for (int i = 0; i < s->texture_count; i++) {
         free(s->textures[i].rgb);
+        free(s->textures[i].alpha);
+    }
     free(s->meshes);
     free(s->textures);
     free(s->materials);

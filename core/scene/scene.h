@@ -64,10 +64,19 @@ struct ssg_light {
         intensity; /* point: radiant intensity (falls off with 1/d^2); directional: irradiance */
 };
 
-/* A decoded texture: linear RGB floats, interleaved, row 0 at the top. */
+/* A decoded texture: linear RGB floats, interleaved, row 0 at the top, and its coverage
+ * (alpha) plane when a masked material reads it. */
 struct ssg_texture {
     int width, height;
     float *rgb;
+    float *alpha; /* width x height coverages in [0, 1], or NULL: opaque everywhere */
+};
+
+/* How a material's alpha is honoured (glTF 2.0's alphaMode; docs/scenes.md). */
+enum ssg_alpha_mode {
+    SSG_ALPHA_OPAQUE, /* alpha ignored: a surface everywhere */
+    SSG_ALPHA_MASK,   /* a surface where alpha >= alpha_cutoff, nothing elsewhere */
+    SSG_ALPHA_BLEND,  /* read as MASK at cutoff 0.5 (no pass of ssgraph blends), warned */
 };
 
 struct ssg_material {
@@ -75,7 +84,11 @@ struct ssg_material {
     float albedo[3];    /* diffuse reflectance, linear; multiplies the texture */
     float specular[3];  /* Blinn-Phong specular colour, default 0 */
     float shininess;    /* Blinn-Phong exponent, default 32 */
-    int texture;        /* index into scene->textures, -1 = none */
+    int texture;        /* index into scene->textures, -1 = none; its alpha plane (if any)
+                           is the coverage a masked material reads */
+    enum ssg_alpha_mode alpha_mode; /* default opaque */
+    float alpha_cutoff; /* a masked surface exists where opacity x alpha >= this */
+    float opacity;      /* alpha factor (glTF baseColorFactor's alpha, OBJ d), default 1 */
 };
 
 /* A triangle mesh in world space. Every primitive and glTF primitive becomes one. */
@@ -94,12 +107,17 @@ struct ssg_environment {
     int image;        /* lat-long HDR in scene->textures, -1 = none */
 };
 
+/* Room for what a model file uses that ssgraph does not read (one line a feature). */
+#define SSG_MODEL_IGNORED_MAX 2048
+
 /* One mesh(...) line of the scene file as loaded (what `ssgraph check` reports). */
 struct ssg_scene_model {
     char file[512];             /* the path as the scene file writes it */
     int line, column;           /* of the file argument on the mesh line */
     int first_mesh, mesh_count; /* its meshes: scene->meshes[first_mesh ...] */
     long long triangles;        /* in all of them */
+    char ignored[SSG_MODEL_IGNORED_MAX]; /* what the file uses that ssgraph does not read, one line a
+                                   feature (struct ssg_gltf's); "" = nothing */
 };
 
 struct ssg_rt;  /* Embree device + scene, see rt.h */

@@ -16,6 +16,7 @@
 
 #include "scene/model.h"
 #include "scene/rt.h"
+#include "scene/coverage.h"
 #include "scene/scene_build.h"
 #include "scene/scene_shapes.h"
 
@@ -50,6 +51,9 @@ static struct ssg_material *new_material(struct scene_loader *l, const char *nam
     snprintf(m->name, sizeof m->name, "%s", name);
     m->shininess = 32.0f;
     m->texture = -1;
+    m->alpha_mode = SSG_ALPHA_OPAQUE;
+    m->alpha_cutoff = 0.5f; /* glTF's default */
+    m->opacity = 1.0f;
     return m;
 }
 
@@ -66,18 +70,20 @@ static int default_material(struct scene_loader *l)
     return l->default_material;
 }
 
-/* Adds a texture; takes ownership of rgb. Returns its index or -1. */
-static int add_texture(struct scene_loader *l, int width, int height, float *rgb)
+/* Adds a texture; takes ownership of rgb and alpha (NULL = opaque). Returns its index or
+   -1. */
+static int add_texture(struct scene_loader *l, int width, int height, float *rgb, float *alpha)
 {
     struct ssg_scene *s = l->scene;
     struct ssg_texture *grown = reserve(l, s->textures, s->texture_count, &l->texture_cap,
                                         sizeof *s->textures);
     if (!grown) {
         free(rgb);
+        free(alpha);
         return -1;
     }
     s->textures = grown;
-    s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb};
+    s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb, alpha};
     return s->texture_count++;
 }
 
@@ -101,10 +107,27 @@ static int texture_finite(struct scene_loader *l, const char *path, const struct
     return 1;
 }
 
+/* The alpha plane of an image with one (gray + alpha, RGBA: its last channel), clamped to
+   [0, 1]; NULL without one, or out of memory (*nomem set). */
+static float *alpha_plane(const struct ssg_image *im, int *nomem)
+{
+    if (im->channels != 2 && im->channels != 4)
+        return NULL;
+    size_t px = (size_t)im->width * (size_t)im->height;
+    float *alpha = malloc(px * sizeof(float));
+    *nomem = !alpha;
+    const float *plane = ssg_image_plane(im, im->channels - 1);
+    for (size_t i = 0; alpha && i < px; i++)
+        alpha[i] = plane[i] > 0.0f ? (plane[i] < 1.0f ? plane[i] : 1.0f) : 0.0f;
+    return alpha;
+}
+
 /* Reads an image file into an interleaved RGB texture; gray images fill all three. A
    material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
-   which names its own rules. */
-static int load_texture_file(struct scene_loader *l, const char *path, int finite_only)
+   which names its own rules. keep_alpha: a masked material's texture keeps its alpha
+   channel as the coverage plane. */
+static int load_texture_file(struct scene_loader *l, const char *path, int finite_only,
+                             int keep_alpha)
 {
     struct ssg_image *im = NULL;
     enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
@@ -118,7 +141,10 @@ static int load_texture_file(struct scene_loader *l, const char *path, int finit
     }
     size_t px = (size_t)im->width * (size_t)im->height;
     float *rgb = malloc(px * 3 * sizeof(float));
-    if (!rgb) {
+    int nomem = 0;
+    float *alpha = keep_alpha ? alpha_plane(im, &nomem) : NULL;
+    if (!rgb || nomem) {
+        free(rgb);
         ssg_image_destroy(&im);
         ssg_scene_fail(l, SSG_E_NOMEM);
         return -1;
@@ -130,16 +156,16 @@ static int load_texture_file(struct scene_loader *l, const char *path, int finit
     }
     int width = im->width, height = im->height;
     ssg_image_destroy(&im);
-    return add_texture(l, width, height, rgb);
+    return add_texture(l, width, height, rgb, alpha);
 }
 
 /* The same for a path written in an entity, relative to its file. */
 static int load_texture(struct scene_loader *l, const struct scene_entity *from,
-                        const char *rel, int finite_only)
+                        const char *rel, int finite_only, int keep_alpha)
 {
     char path[1024];
     ssg_scene_path(from, rel, path, sizeof path);
-    return load_texture_file(l, path, finite_only);
+    return load_texture_file(l, path, finite_only, keep_alpha);
 }
 
 static void build_material(struct scene_loader *l, int ent)
@@ -155,9 +181,12 @@ static void build_material(struct scene_loader *l, int ent)
     memcpy(m->albedo, a->albedo, sizeof m->albedo);
     memcpy(m->specular, a->specular, sizeof m->specular);
     m->shininess = a->shininess;
+    m->alpha_mode = (enum ssg_alpha_mode)a->alpha_mode;
+    m->alpha_cutoff = m->alpha_mode == SSG_ALPHA_BLEND ? 0.5f : a->alpha_cutoff;
+    m->opacity = a->opacity;
     l->material_of[ent] = l->scene->material_count - 1;
     if (a->texture[0])
-        m->texture = load_texture(l, e, a->texture, 1);
+        m->texture = load_texture(l, e, a->texture, 1, ssg_material_masked(m));
 }
 
 static void build_light(struct scene_loader *l, const struct scene_entity *e)
@@ -206,6 +235,27 @@ static struct ssg_scene_model *add_model(struct scene_loader *l, const struct sc
     m->first_mesh = s->mesh_count;
     m->triangles = triangles;
     return m;
+}
+
+/* One warning a model that uses what ssgraph does not read (the features, without the
+   materials: `ssgraph check` lists those), so a run says its picture leaves them out. */
+static void warn_ignored(struct scene_loader *l, const struct scene_entity *e,
+                         const char *file, const char *ignored)
+{
+    char features[400] = "";
+    size_t n = 0;
+    for (const char *line = ignored; *line && n + 4 < sizeof features;) {
+        const char *end = strchr(line, '\n'), *colon = strstr(line, ": ");
+        size_t len = (size_t)((colon && (!end || colon < end) ? colon : end ? end : line +
+                               strlen(line)) - line);
+        n += (size_t)snprintf(features + n, sizeof features - n, "%s%.*s", n ? "; " : "",
+                              (int)len, line);
+        line = end ? end + 1 : line + strlen(line);
+    }
+    if (features[0])
+        ssg_diag_warn(l->diags, SSG_E_VALUE, e->at[0], "%s uses what ssgraph does not read "
+                      "yet, and the picture leaves it out: %s (`ssgraph check` lists where; "
+                      "docs/scenes.md, \"Model file features\")", file, features);
 }
 
 static int material_for(struct scene_loader *l, const struct scene_entity *e)
@@ -273,7 +323,7 @@ static int model_texture(struct scene_loader *l, const struct scene_entity *e,
         ssg_scene_fail(l, SSG_E_IO);
         return -1;
     }
-    return load_texture_file(l, path, 1);
+    return load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
 }
 
 /* Brings the model's materials and textures into the scene; returns the scene index of its
@@ -284,8 +334,9 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
     const char *file = ((const struct mesh_args *)e->args)->file;
     int first_texture = l->scene->texture_count, first = l->scene->material_count;
     for (int i = 0; i < g->texture_count; i++) {
-        add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb);
-        g->textures[i].rgb = NULL; /* now the scene's */
+        add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb,
+                    g->textures[i].alpha);
+        g->textures[i].rgb = g->textures[i].alpha = NULL; /* now the scene's */
     }
     for (int i = 0; i < g->material_count; i++) {
         const struct ssg_gltf_material *gm = &g->materials[i];
@@ -295,6 +346,13 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
         if (!m)
             return first;
         memcpy(m->albedo, gm->base_color, sizeof m->albedo);
+        m->opacity = gm->base_color[3];
+        m->alpha_mode = (enum ssg_alpha_mode)gm->alpha_mode;
+        m->alpha_cutoff = gm->alpha_cutoff;
+        if (m->alpha_mode == SSG_ALPHA_BLEND)
+            ssg_diag_warn(l->diags, SSG_E_VALUE, e->at[0], "%s: material '%s' has alphaMode "
+                          "BLEND, drawn as MASK at cutoff 0.5 (no pass of ssgraph blends; "
+                          "docs/scenes.md)", model, name);
         m->texture = gm->texture >= 0 ? first_texture + gm->texture : -1;
         if (gm->texture < 0 && gm->texture_file[0])
             m->texture = model_texture(l, e, model, gm);
@@ -361,6 +419,9 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
     }
     int first = e->material < 0 ? import_gltf_materials(l, e, g, path) : 0;
     struct ssg_scene_model *model = add_model(l, e, tris);
+    if (model)
+        snprintf(model->ignored, sizeof model->ignored, "%s", g->ignored);
+    warn_ignored(l, e, a->file, g->ignored);
     for (int i = 0; i < g->mesh_count && !l->first; i++) {
         struct ssg_mesh mesh = g->meshes[i];
         memset(&g->meshes[i], 0, sizeof g->meshes[i]); /* the arrays are now ours */
@@ -440,7 +501,7 @@ static void build_environment(struct scene_loader *l)
     for (int i = 0; i < l->count; i++) {
         const struct environment_args *a = l->ents[i].args;
         if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
-            l->scene->environment.image = load_texture(l, &l->ents[i], a->image, 0);
+            l->scene->environment.image = load_texture(l, &l->ents[i], a->image, 0, 0);
             ssg_scene_path(&l->ents[i], a->image, path, sizeof path);
         }
     }

@@ -53,6 +53,8 @@ struct material_args {
     float albedo[3], specular[3]; /* linear reflectances */
     float shininess;              /* Blinn-Phong exponent */
     char texture[SSG_STR_MAX];    /* albedo texture path, "" = none */
+    int alpha_mode;               /* enum ssg_alpha_mode */
+    float alpha_cutoff, opacity;  /* coverage.h */
 };
 struct light_args {
     float position[3];  /* point light, world */

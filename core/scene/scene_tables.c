@@ -68,6 +68,7 @@ static const struct ssg_param_desc frame_rate_params[] = {
     FLOAT("fps", frame_rate_args, fps, 30, 1e-3, 1e4, "frames/s",
           "frames per second: frame f of a run is at time f / fps"),
 };
+static const char *const alpha_mode_choices[] = {"opaque", "mask", "blend", NULL};
 static const struct ssg_param_desc material_params[] = {
     VEC3("albedo", material_args, albedo, 0.8f, 0.8f, 0.8f, 0, 1, NULL,
          "diffuse reflectance, linear RGB (multiplies the texture)"),
@@ -76,7 +77,18 @@ static const struct ssg_param_desc material_params[] = {
     FLOAT("shininess", material_args, shininess, 32, 0, 1e4, NULL, "Blinn-Phong exponent"),
     TEXT(
         "texture", STRING, material_args, texture, 0,
-        "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene"),
+        "albedo texture (PNG, JPEG, EXR...; sRGB files are linearised), relative to the scene; "
+        "its alpha channel, if any, is the coverage of alpha_mode=mask"),
+    {.name = "alpha_mode", SSG_FIELD_ENUM(struct material_args, alpha_mode), .def = 0,
+     .choices = alpha_mode_choices,
+     .help = "opaque: a surface everywhere; mask: a surface only where opacity x the "
+             "texture's alpha >= alpha_cutoff (leaves, fences), to the camera, the lights "
+             "and the references alike; blend: read as mask at cutoff 0.5, with a warning "
+             "(no pass of ssgraph blends)"},
+    FLOAT("alpha_cutoff", material_args, alpha_cutoff, 0.5f, 0, 1, NULL,
+          "alpha_mode=mask: the coverage at and above which there is a surface"),
+    FLOAT("opacity", material_args, opacity, 1, 0, 1, NULL,
+          "multiplies the texture's alpha (glTF's baseColorFactor alpha, OBJ's d)"),
 };
 static const struct ssg_param_desc point_light_params[] = {
     REQ_VEC3("position", light_args, position, "scene units", "light position"),
@@ -160,7 +172,11 @@ const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
     [SK_MATERIAL] = KIND("material", material_params, material_args,
                          "A named surface (`clay = material(...)`): Lambert albedo, optionally "
                          "textured, plus a Blinn-Phong highlight in the direct light. Shapes "
-                         "and meshes name it with `material=clay`, from anywhere in the file."),
+                         "and meshes name it with `material=clay`, from anywhere in the file. "
+                         "With `alpha_mode=mask` it is a surface only where `opacity` x the "
+                         "texture's alpha reaches `alpha_cutoff` (a leaf, a fence): the "
+                         "camera, every light's map and the reference nodes' rays all see "
+                         "through the rest (tests/fixtures/alpha_mask.scene)."),
     [SK_POINT_LIGHT] = KIND("point_light", point_light_params, light_args,
                             "An isotropic point light. Any number of lights of either kind."),
     [SK_DIRECTIONAL_LIGHT] = KIND("directional_light", directional_light_params, light_args,
@@ -191,6 +207,48 @@ const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
                      "the RAM; not under AddressSanitizer), is an error at the mesh line."),
 };
 
+/* What a model file's materials and extras become (docs/scenes.md's feature table): one
+   row a feature, as honoured now; issue 45 fills in the rows still marked "not read". */
+static const struct {
+    const char *feature, *gltf, *assimp, *paths, *test;
+} model_features[] = {
+    {"base colour", "baseColorFactor x baseColorTexture (sRGB, the TEXCOORD_n it names)",
+     "diffuse colour x diffuse texture (map_Kd)", "every path", "test_gltf, test_scene"},
+    {"alpha mask", "alphaMode MASK: a surface where baseColorFactor alpha x the texture's "
+     "alpha >= alphaCutoff", "map_d naming the map_Kd file itself (its alpha channel), "
+     "cutoff 0.5", "the G-buffer (CPU rays, GL raster), shadowmaps and lightmaps (CPU and GL), "
+     "every Embree ray (reference_ao, reference_gi); not rsm's coarse distance field",
+     "test_alpha_mask, test_shadowmaps, test_gltf, test_scene"},
+    {"alpha blend", "alphaMode BLEND: drawn as MASK at cutoff 0.5, with a warning", "-",
+     "as alpha mask", "test_gltf, test_scene"},
+    {"double-sided", "not read: every surface has two faces on every path", "the same", "-",
+     "-"},
+    {"a separate opacity texture or scalar opacity", "-",
+     "not read (map_d naming another file, d, Tr)", "-", "-"},
+    {"normal maps", "not read", "not read (map_bump, norm)", "-", "-"},
+    {"emission", "not read (emissiveFactor, emissiveTexture, KHR_materials_emissive_strength)",
+     "not read (Ke, map_Ke)", "-", "-"},
+    {"vertex colours", "not read (COLOR_0)", "not read", "-", "-"},
+    {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
+    {"lights", "not read (KHR_lights_punctual)", "not read", "-", "-"},
+    {"camera", "the default scene's first perspective camera", "not read", "the scene's "
+     "camera when it has no camera line", "test_gltf"},
+};
+
+static void model_features_markdown(FILE *stream)
+{
+    fprintf(stream, "## Model file features\n\nWhat a `mesh` file's materials and extras "
+                    "become: glTF 2.0 through tinygltf, the other formats through Assimp. "
+                    "A material's alpha (`alpha_mode`, `alpha_cutoff`, `opacity` above) "
+                    "means the same from a scene file and from a model.\n\n"
+                    "| feature | glTF 2.0 | Assimp (OBJ/MTL, FBX, ...) | honoured by | "
+                    "tests |\n|---|---|---|---|---|\n");
+    for (size_t i = 0; i < sizeof model_features / sizeof model_features[0]; i++)
+        fprintf(stream, "| %s | %s | %s | %s | %s |\n", model_features[i].feature,
+                model_features[i].gltf, model_features[i].assimp, model_features[i].paths,
+                model_features[i].test);
+}
+
 void ssg_scenes_markdown(FILE *stream)
 {
     if (!stream)
@@ -214,4 +272,5 @@ void ssg_scenes_markdown(FILE *stream)
             ssg_param_markdown(&d->table.params[p], stream);
         fprintf(stream, "\n");
     }
+    model_features_markdown(stream);
 }

@@ -3,24 +3,9 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "scene/coverage.h"
 #include "scene/scene.h"
 #include "common/surface.h"
-
-static void sample_texture(const struct ssg_texture *t, float u, float v, float out[3])
-{
-    float fx = u * (float)t->width - 0.5f, fy = v * (float)t->height - 0.5f;
-    float x0f = floorf(fx), y0f = floorf(fy), ax = fx - x0f, ay = fy - y0f;
-    int x0 = (int)fmodf(x0f, (float)t->width), y0 = (int)fmodf(y0f, (float)t->height);
-    x0 += x0 < 0 ? t->width : 0;
-    y0 += y0 < 0 ? t->height : 0;
-    int x1 = x0 + 1 < t->width ? x0 + 1 : 0, y1 = y0 + 1 < t->height ? y0 + 1 : 0;
-    const float *a = &t->rgb[3 * ((size_t)y0 * (size_t)t->width + (size_t)x0)];
-    const float *b = &t->rgb[3 * ((size_t)y0 * (size_t)t->width + (size_t)x1)];
-    const float *cc = &t->rgb[3 * ((size_t)y1 * (size_t)t->width + (size_t)x0)];
-    const float *d = &t->rgb[3 * ((size_t)y1 * (size_t)t->width + (size_t)x1)];
-    for (int i = 0; i < 3; i++)
-        out[i] = (1 - ay) * ((1 - ax) * a[i] + ax * b[i]) + ay * ((1 - ax) * cc[i] + ax * d[i]);
-}
 
 void ssg_hit_albedo(const struct ssg_scene *s, const struct ssg_hit *h, float out[3])
 {
@@ -34,7 +19,8 @@ void ssg_hit_albedo(const struct ssg_scene *s, const struct ssg_hit *h, float ou
     for (int i = 0; i < 2; i++)
         uv[i] = w0 * m->uvs[2 * tri[0] + i] + h->u * m->uvs[2 * tri[1] + i] +
                 h->v * m->uvs[2 * tri[2] + i];
-    sample_texture(&s->textures[mat->texture], uv[0], uv[1], out);
+    const struct ssg_texture *t = &s->textures[mat->texture];
+    ssg_texture_bilinear(t->rgb, 3, t->width, t->height, uv[0], uv[1], out);
     for (int i = 0; i < 3; i++)
         out[i] *= mat->albedo[i];
 }

@@ -17,9 +17,12 @@ vec3 face3(int k) { int o = FACE * ssg_layer + k; return vec3(face[o], face[o + 
 
 #ifdef SSG_VERTEX
 layout(location = 0) in vec3 ssg_position;
+layout(location = 1) in vec2 ssg_uv;
+out vec2 surface_uv;
 
 void main()
 {
+    surface_uv = ssg_uv;
     vec3 d = ssg_position - face3(0);
     float du = dot(d, face3(3)), dv = dot(d, face3(6)), z = dot(d, face3(9));
     float half_side = face[FACE * ssg_layer + 12];
@@ -42,9 +45,12 @@ layout(location = 3) out float out_nz;
 layout(location = 4) out float out_r;
 layout(location = 5) out float out_g;
 layout(location = 6) out float out_b;
+in vec2 surface_uv;
 
 void main()
 {
+    if (!mesh_covers(ssg_mesh, surface_uv)) // a masked mesh's hole: no sender, no shadow
+        discard;
     int x = int(gl_FragCoord.x), y = int(gl_FragCoord.y), f = FACE * ssg_layer;
     float a = 2.0 * (float(x) + 0.5) / float(p_resolution) - 1.0;
     float b = 2.0 * (float(y) + 0.5) / float(p_resolution) - 1.0;

@@ -18,7 +18,9 @@
  * double, kept within the vertices' depths. A cube face projects a vertex at a = du / z:
  * a triangle with a vertex behind the near plane or beyond |a|, |b| <= GUARD is clipped
  * in face space against those planes first (the rare slow path), so the fixed-point
- * coordinates stay within a few map widths. */
+ * coordinates stay within a few map widths. An alpha-masked mesh's texels ask its mask
+ * (scene/coverage.h) where their ray meets the triangle before they keep it: a leaf is a
+ * leaf to a light as it is to the camera. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -26,6 +28,7 @@
 
 #include "common/raster.h"
 #include "common/surface.h"
+#include "scene/coverage.h"
 #include "scene/scene.h"
 #include "lightmaps.h"
 
@@ -129,10 +132,38 @@ struct strip {
     int res, y0, y1;
 };
 
+/* The world ray of texel (x, y) of face f at resolution res: origin o, direction d. */
+static void texel_ray(const struct ssg_lightmap_face *f, int res, int64_t x, int64_t y,
+                      double o[3], double d[3])
+{
+    double a = 2.0 * ((double)x + 0.5) / res - 1.0, b = 2.0 * ((double)y + 0.5) / res - 1.0;
+    for (int k = 0; k < 3; k++) {
+        d[k] = f->ortho ? f->axis[k] : f->axis[k] + a * f->u[k] + b * f->v[k];
+        o[k] = f->ortho ? f->origin[k] + f->half * (a * f->u[k] + b * f->v[k]) : f->origin[k];
+    }
+}
+
+/* A masked mesh's triangle being drawn into a face: its texels ask the mask. */
+struct mask {
+    const struct ssg_scene *scene;
+    const struct ssg_lightmap_face *face;
+    int mesh, tri;
+};
+
+static int texel_covered(const struct mask *k, int res, int64_t x, int64_t y)
+{
+    double o[3], d[3];
+    float u, v;
+    texel_ray(k->face, res, x, y, o, d);
+    ssg_ray_barycentrics(&k->scene->meshes[k->mesh], k->tri, o, d, &u, &v);
+    return ssg_mesh_covers(k->scene, k->mesh, k->tri, u, v);
+}
+
 /* Every centre of the strip inside the snapped triangle (x[k], y[k]) keeps the nearer of
-   its depth and the plane's, and the triangle's number id when nearer. */
+   its depth and the plane's, and the triangle's number id when nearer; with a mask, only
+   where the triangle covers it. */
 static void fill(const struct strip *s, const int64_t x[3], const int64_t y[3],
-                 const struct plane *pl, int32_t id)
+                 const struct plane *pl, int32_t id, const struct mask *mask)
 {
     struct ssg_raster_tri t;
     if (!ssg_raster_setup(x, y, s->res, s->y0, s->y1, &t))
@@ -151,7 +182,7 @@ static void fill(const struct strip *s, const int64_t x[3], const int64_t y[3],
             double zd = (num - pl->ka * a) / (den + pl->qa * a);
             zd = zd > pl->lo ? (zd < pl->hi ? zd : pl->hi) : pl->lo; /* NaN: lo */
             float z = (float)zd;
-            if (z < row[X])
+            if (z < row[X] && (!mask || texel_covered(mask, s->res, X, Y)))
                 row[X] = z, ids[X] = id;
         }
     }
@@ -182,7 +213,7 @@ static int clip_plane(const double (*q)[3], int n, const double k[4], double (*o
 /* The slow path: a cube face's triangle clipped to z >= near and |a|, |b| <= GUARD in face
    space, then drawn as a fan with the whole triangle's depth plane. */
 static void fill_clipped(const struct strip *s, const double q[3][3], double near_z,
-                         const struct plane *pl, int32_t id)
+                         const struct plane *pl, int32_t id, const struct mask *mask)
 {
     const double g = GUARD, planes[5][4] = {{0, 0, 1, -near_z}, {-1, 0, g, 0}, {1, 0, g, 0},
                                             {0, -1, g, 0}, {0, 1, g, 0}};
@@ -205,7 +236,7 @@ static void fill_clipped(const struct strip *s, const double q[3][3], double nea
     }
     for (int i = 1; i + 1 < n; i++) {
         int64_t tx[3] = {x[0], x[i], x[i + 1]}, ty[3] = {y[0], y[i], y[i + 1]};
-        fill(s, tx, ty, pl, id);
+        fill(s, tx, ty, pl, id, mask);
     }
 }
 
@@ -246,12 +277,14 @@ static void draw_triangle(const struct job *j, const struct strip *s, int fi, in
     if (!depth_plane(f, (const double(*)[3])q, j->c->u.near_z, &pl))
         return;
     int32_t id = (int32_t)(j->first_tri[mi] + t);
+    struct mask mask = {j->scene, f, mi, t};
+    const struct mask *masked = ssg_mesh_masked(j->scene, mi) ? &mask : NULL;
     if ((ok[tri[0]] | ok[tri[1]] | ok[tri[2]]) == 0) {
         int64_t tx[3] = {x[tri[0]], x[tri[1]], x[tri[2]]};
         int64_t ty[3] = {y[tri[0]], y[tri[1]], y[tri[2]]};
-        fill(s, tx, ty, &pl, id);
+        fill(s, tx, ty, &pl, id, masked);
     } else if (!f->ortho && fmax(q[0][2], fmax(q[1][2], q[2][2])) >= j->c->u.near_z) {
-        fill_clipped(s, (const double(*)[3])q, j->c->u.near_z, &pl, id);
+        fill_clipped(s, (const double(*)[3])q, j->c->u.near_z, &pl, id, masked);
     }
 }
 
@@ -287,45 +320,17 @@ static int mesh_of(const struct job *j, int32_t id)
     return lo;
 }
 
-/* The texel's ray meets triangle (mesh, t): barycentrics u, v (Moeller and Trumbore, in
-   double, clamped into the triangle: the centre may lie a rounding outside it). */
-static void barycentrics(const struct ssg_mesh *m, int t, const double o[3], const double d[3],
-                         float *u, float *v)
-{
-    const uint32_t *tri = &m->indices[3 * (size_t)t];
-    const float *p0 = &m->positions[3 * (size_t)tri[0]];
-    const float *p1 = &m->positions[3 * (size_t)tri[1]];
-    const float *p2 = &m->positions[3 * (size_t)tri[2]];
-    double e1[3], e2[3], s[3], p[3], q[3];
-    for (int k = 0; k < 3; k++)
-        e1[k] = (double)p1[k] - p0[k], e2[k] = (double)p2[k] - p0[k], s[k] = o[k] - p0[k];
-    p[0] = d[1] * e2[2] - d[2] * e2[1], p[1] = d[2] * e2[0] - d[0] * e2[2];
-    p[2] = d[0] * e2[1] - d[1] * e2[0];
-    q[0] = s[1] * e1[2] - s[2] * e1[1], q[1] = s[2] * e1[0] - s[0] * e1[2];
-    q[2] = s[0] * e1[1] - s[1] * e1[0];
-    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-    double inv = det != 0.0 ? 1.0 / det : 0.0;
-    double bu = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
-    double bv = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) * inv;
-    bu = bu > 0.0 ? (bu < 1.0 ? bu : 1.0) : 0.0;
-    bv = bv > 0.0 ? (bv < 1.0 - bu ? bv : 1.0 - bu) : 0.0;
-    *u = (float)bu, *v = (float)bv;
-}
-
 /* The normal and flux of texel (x, y) of face fi, whose nearest triangle is id. */
 static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id, float n[3],
                           float flux[3])
 {
     const struct ssg_lightmap_face *f = &j->c->faces[fi];
+    double o[3], d[3];
     const int res = j->c->res;
-    double a = 2.0 * (x + 0.5) / res - 1.0, b = 2.0 * (y + 0.5) / res - 1.0, o[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        d[k] = f->ortho ? f->axis[k] : f->axis[k] + a * f->u[k] + b * f->v[k];
-        o[k] = f->ortho ? f->origin[k] + f->half * (a * f->u[k] + b * f->v[k]) : f->origin[k];
-    }
+    texel_ray(f, res, x, y, o, d);
     struct ssg_hit h = {.mesh = mesh_of(j, id)};
     h.triangle = (int)(id - j->first_tri[h.mesh]);
-    barycentrics(&j->scene->meshes[h.mesh], h.triangle, o, d, &h.u, &h.v);
+    ssg_ray_barycentrics(&j->scene->meshes[h.mesh], h.triangle, o, d, &h.u, &h.v);
     ssg_hit_normal(j->scene, &h, 0, n);
     float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 0.0f)) { /* degenerate vertex normals: the triangle's own */

@@ -17,13 +17,16 @@
  * unsnapped vertices, in double, kept within their depths (snapping moves a vertex up to
  * 1/512 texel, which under a grazing light would move depths by 20 times that). Each map
  * is one band's alone and a texel keeps the minimum, so the maps do not depend on the
- * thread count or the triangle order. */
+ * thread count or the triangle order. An alpha-masked mesh's texels ask its mask
+ * (scene/coverage.h) where the texel's ray meets the triangle: a leaf's shadow has holes
+ * where the leaf has. */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
 #include "common/raster.h"
+#include "scene/coverage.h"
 #include "scene/scene.h"
 #include "shadowmaps.h"
 
@@ -98,10 +101,31 @@ static int depth_plane(const struct vertex *a, const struct vertex *b, const str
     return 1;
 }
 
+/* A masked mesh being drawn on one light's map: whose texels ask its coverage. */
+struct mask {
+    const struct ssg_scene *scene;
+    const struct ssg_shadow_frame *frame;
+    int mesh;
+};
+
+/* 1 when triangle tri of the masked mesh is a surface where texel (X, Y)'s ray (from the
+   map's plane along -l) meets it. */
+static int texel_covered(const struct mask *k, int res, int tri, int64_t X, int64_t Y)
+{
+    float o[3];
+    ssg_shadow_texel_origin(k->frame, res, (int)X, (int)Y, o);
+    double od[3] = {o[0], o[1], o[2]};
+    double d[3] = {-k->frame->l[0], -k->frame->l[1], -k->frame->l[2]};
+    float u, v;
+    ssg_ray_barycentrics(&k->scene->meshes[k->mesh], tri, od, d, &u, &v);
+    return ssg_mesh_covers(k->scene, k->mesh, tri, u, v);
+}
+
 /* Every texel centre of the map inside triangle (a, b, c) keeps the smaller of its depth
-   and the triangle's depth there. */
+   and the triangle's depth there; with a mask, only where triangle tri covers it. */
 static inline __attribute__((always_inline)) void
-triangle(float *map, int res, struct vertex a, struct vertex b, struct vertex c)
+triangle(float *map, int res, struct vertex a, struct vertex b, struct vertex c,
+         const struct mask *mask, int tri)
 {
     int64_t x[3] = {a.x, b.x, c.x}, y[3] = {a.y, b.y, c.y};
     struct ssg_raster_tri t;
@@ -121,6 +145,8 @@ triangle(float *map, int res, struct vertex a, struct vertex b, struct vertex c)
             double zd = zy + (double)X * pl.dx;
             zd = zd > pl.lo ? (zd < pl.hi ? zd : pl.hi) : pl.lo;
             float z = (float)zd;
+            if (mask && z < row[X] && !texel_covered(mask, res, tri, X, Y))
+                continue;
             row[X] = z < row[X] ? z : row[X];
         }
     }
@@ -154,7 +180,8 @@ with_centres(const uint32_t *restrict idx, int t0, int count, const struct verts
 }
 
 SSG_VECTOR_CLONES
-static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struct verts *v)
+static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struct verts *v,
+                      const struct mask *mask)
 {
     const uint32_t *idx = m->indices;
     int32_t list[BLOCK];
@@ -164,7 +191,7 @@ static void draw_mesh(float *map, int res, const struct ssg_mesh *m, const struc
         for (int s = 0; s < n; s++) {
             int t = t0 + list[s];
             triangle(map, res, vertex_at(v, idx[3 * t]), vertex_at(v, idx[3 * t + 1]),
-                     vertex_at(v, idx[3 * t + 2]));
+                     vertex_at(v, idx[3 * t + 2]), mask, t);
         }
     }
 }
@@ -189,8 +216,9 @@ static void draw_map(const struct job *j, int light, const struct verts *v)
         return;
     for (int mi = 0; mi < j->scene->mesh_count; mi++) {
         const struct ssg_mesh *m = &j->scene->meshes[mi];
+        struct mask mask = {j->scene, &j->frames[light], mi};
         to_map(&j->frames[light], res, m, v);
-        draw_mesh(map, res, m, v);
+        draw_mesh(map, res, m, v, ssg_mesh_masked(j->scene, mi) ? &mask : NULL);
     }
 }
 

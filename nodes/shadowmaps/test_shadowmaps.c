@@ -5,6 +5,9 @@
  *   many texels as its top's area says;
  * - a tilted light: texels whose ray meets the open floor hold o.y / l.y;
  * - a map set larger than the memory limit is refused with the sizes in the message;
+ * - an alpha-masked quad (tests/fixtures/alpha_mask.scene: covered at x <= 0) casts its
+ *   covered half only: under it texels hold the quad's depth, under its hole the floor's,
+ *   on both backends;
  * - CPU and GL maps of the courtyard agree (both rasterise at the texel centres): texels
  *   whose nearest surface differs (silhouette ties) are rare, and elsewhere depths agree
  *   to float rounding. */
@@ -100,6 +103,40 @@ static void test_tilted(const struct ssg_scene *s)
     ssg_image_destroy(&l);
 }
 
+static void test_masked(enum ssg_backend backend)
+{
+    struct ssg_scene *s = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_scene_load("tests/fixtures/alpha_mask.scene", 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    if (!s)
+        return;
+    const float down[1][3] = {{0, 1, 0}};
+    struct ssg_image *l = light_list(down, 1);
+    const int res = 256;
+    struct ssg_image *m = run_maps(s, l, res, backend);
+    struct ssg_bounding_sphere b = ssg_scene_bounding_sphere(s);
+    struct ssg_shadow_frame f = ssg_shadow_frame_make(&b, down[0]);
+    int quad = 0, hole = 0, bad = 0;
+    for (int y = 0; y < res; y++)
+        for (int x = 0; x < res; x++) {
+            float p[3], t = m->data[y * res + x];
+            ssg_shadow_texel_origin(&f, res, x, y, p);
+            if (fabsf(p[0]) > 0.45f || fabsf(p[2]) > 0.45f || fabsf(p[0]) < 0.05f)
+                continue;
+            int covered = p[0] < 0.0f;
+            quad += covered, hole += !covered;
+            bad += fabsf(t - (covered ? p[1] - 0.5f : p[1])) > 1e-4f;
+        }
+    fprintf(stderr, "masked quad (%s): %d texels under its cover, %d under its hole, %d "
+            "wrong\n", backend == SSG_BACKEND_GL ? "gl" : "cpu", quad, hole, bad);
+    CHECK(quad > 100 && hole > 100);
+    CHECK_EQ(bad, 0);
+    ssg_image_destroy(&m);
+    ssg_image_destroy(&l);
+    ssg_scene_destroy(&s);
+}
+
 static void test_memory_limit(void)
 {
     const struct ssg_node_desc *d = &ssg_node_shadowmaps;
@@ -162,6 +199,8 @@ int main(void)
         test_tilted(s);
         ssg_scene_destroy(&s);
     }
+    test_masked(SSG_BACKEND_CPU);
+    test_masked(SSG_BACKEND_GL);
     test_memory_limit();
     test_parity();
     return check_report();
