@@ -101,6 +101,15 @@ static int depth_plane(const struct vertex *a, const struct vertex *b, const str
     return 1;
 }
 
+/* The plane's depth at centre X of a row whose depth at X = 0 is zy, kept within the
+   triangle's vertex depths. */
+static inline __attribute__((always_inline)) float plane_depth(const struct plane *pl,
+                                                              double zy, int64_t X)
+{
+    double zd = zy + (double)X * pl->dx;
+    return (float)(zd > pl->lo ? (zd < pl->hi ? zd : pl->hi) : pl->lo);
+}
+
 /* A masked mesh being drawn on one light's map: whose texels ask its coverage. */
 struct mask {
     const struct ssg_scene *scene;
@@ -141,12 +150,16 @@ triangle(float *map, int res, struct vertex a, struct vertex b, struct vertex c,
             continue;
         double zy = pl.z + (double)Y * pl.dy;
         float *row = map + Y * res;
-        for (int64_t X = x0; X <= x1; X++) {
-            double zd = zy + (double)X * pl.dx;
-            zd = zd > pl.lo ? (zd < pl.hi ? zd : pl.hi) : pl.lo;
-            float z = (float)zd;
-            if (mask && z < row[X] && !texel_covered(mask, res, tri, X, Y))
-                continue;
+        if (mask) { /* the rare masked mesh: a texel asks before it keeps the depth */
+            for (int64_t X = x0; X <= x1; X++) {
+                float z = plane_depth(&pl, zy, X);
+                if (z < row[X] && texel_covered(mask, res, tri, X, Y))
+                    row[X] = z;
+            }
+            continue;
+        }
+        for (int64_t X = x0; X <= x1; X++) { /* branch-free: the compiler vectorises it */
+            float z = plane_depth(&pl, zy, X);
             row[X] = z < row[X] ? z : row[X];
         }
     }
