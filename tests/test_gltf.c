@@ -213,15 +213,15 @@ static void test_alpha(void)
         expect_failure(bad, SSG_E_GLTF, "'tinted': alphaCutoff 1.5 is outside 0 to 1");
 }
 
-/* What a file uses and no path reads is named, not dropped in silence: a normal map and
- * emission on material 'tinted', a light extension and an unknown one, each a line of
+/* What a file uses and no path reads is named, not dropped in silence: a normal map on a
+ * second uv set on material 'tinted', a light extension and an unknown one, each a line of
  * g->ignored; a scene naming the file warns once at its mesh line with the features, and
  * check's summary lists them with the material. */
 static void test_ignored(void)
 {
     const char *path = triangle_with("\"name\": \"tinted\",",
-                                     "\"name\": \"tinted\", \"normalTexture\": {\"index\": 0}, "
-                                     "\"emissiveFactor\": [1, 0.5, 0],",
+                                     "\"name\": \"tinted\", \"normalTexture\": {\"index\": 0, "
+                                     "\"texCoord\": 1}, \"emissiveFactor\": [1, 0.5, 0],",
                                      "\"asset\": {", "\"extensionsUsed\": [\"KHR_lights_punctual\", "
                                      "\"KHR_materials_clearcoat\"], \"asset\": {");
     struct ssg_gltf *g = NULL;
@@ -232,9 +232,11 @@ static void test_ignored(void)
         return;
     }
     fprintf(stderr, "ignored:\n%s", g->ignored);
-    CHECK(strstr(g->ignored, "normal maps (normalTexture): 1 use: 'tinted'\n") != NULL);
-    CHECK(strstr(g->ignored, "emission (emissiveFactor, emissiveTexture): 1 use: 'tinted'\n"));
+    CHECK(strstr(g->ignored, "normal maps on another texture coordinate set than the base "
+                 "colour's: 1 use: 'tinted'\n") != NULL);
     CHECK(strstr(g->ignored, "lights (KHR_lights_punctual)\n") != NULL);
+    CHECK(strstr(g->ignored, "emission") == NULL); /* read now */
+    CHECK_NEAR(g->materials[0].emission[1], 0.5, 0);
     CHECK(strstr(g->ignored, "extension KHR_materials_clearcoat\n") != NULL);
     ssg_gltf_destroy(&g);
     const char *scene = write_file("ignored.scene", "mesh(\"camera.gltf\")\n");
@@ -245,8 +247,8 @@ static void test_ignored(void)
     CHECK_EQ(d.warning_count, 1);
     CHECK(d.warning_count == 1 && d.warnings[0].line == 1 &&
           strstr(d.warnings[0].message, "camera.gltf uses what ssgraph does not read yet, and "
-                 "the picture leaves it out: normal maps (normalTexture); emission "
-                 "(emissiveFactor, emissiveTexture); lights (KHR_lights_punctual); extension "
+                 "the picture leaves it out: normal maps on another texture coordinate set "
+                 "than the base colour's; lights (KHR_lights_punctual); extension "
                  "KHR_materials_clearcoat"));
     if (s) {
         CHECK_EQ(s->model_count, 1);

@@ -411,15 +411,15 @@ static enum ssg_err import_model(const char *path, struct ssg_gltf **out,
     struct ssg_gltf *g = calloc(1, sizeof *g);
     g->meshes = calloc(3, sizeof *g->meshes);
     g->mesh_count = 2;
-    g->meshes[0] = (struct ssg_mesh){3, 1, malloc(36), malloc(36), malloc(24), malloc(12), 0};
-    g->meshes[1] = (struct ssg_mesh){4, 2, malloc(48), NULL, NULL, malloc(24), -1};
+    g->meshes[0] = (struct ssg_mesh){3, 1, malloc(36), malloc(36), malloc(24), malloc(12), 0, NULL};
+    g->meshes[1] = (struct ssg_mesh){4, 2, malloc(48), NULL, NULL, malloc(24), -1, NULL};
     memcpy(g->meshes[0].positions, p, 36), memcpy(g->meshes[0].normals, p, 36);
     memcpy(g->meshes[0].uvs, p, 24), memcpy(g->meshes[0].indices, idx, 12);
     memcpy(g->meshes[1].positions, p, 48), memcpy(g->meshes[1].indices, idx, 24);
     g->materials = calloc(1, sizeof *g->materials);
     g->material_count = 1;
     g->materials[0] = (struct ssg_gltf_material){"red", {1, 0, 0, 1}, 0, 0, "red.png",
-                                                 SSG_ALPHA_MASK, 0.25f};
+                                                 SSG_ALPHA_MASK, 0.25f, -1, 1.0f, {0, 0, 0}, -1};
     g->textures = calloc(2, sizeof *g->textures);
     g->texture_count = 1;
     g->textures[0] = (struct ssg_texture){2, 1, calloc(6, sizeof(float)),

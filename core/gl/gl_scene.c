@@ -27,6 +27,7 @@ struct ssg_gl_scene {
     const struct ssg_scene *scene; /* what was uploaded: its meshes' triangle counts */
     struct ssg_gl_mesh *mesh;   /* the offsets, also needed for drawing */
     struct ssg_gl_material *material; /* the records as uploaded */
+    int32_t *texel_at;          /* per scene texture: its float offset in texel[], -1 = unused */
     size_t bytes[SSG_GL_SCENE_BUFFERS]; /* each buffer's size */
     GLuint distance;            /* the distance field's voxels (scene/distance.h), 4 bytes
                                    of 0 without one */
@@ -45,14 +46,18 @@ static enum ssg_err lay_out_meshes(const struct ssg_node_ctx *ctx, struct ssg_gl
     for (int i = 0; i < sc->mesh_count; i++) {
         const struct ssg_mesh *m = &sc->meshes[i];
         size_t v = (size_t)m->vertex_count;
-        int uvs = m->uvs && sc->materials[m->material].texture >= 0; /* else unread */
+        const struct ssg_material *mt = &sc->materials[m->material];
+        int uvs = m->uvs && (mt->texture >= 0 || mt->normal_texture >= 0 ||
+                             mt->emission_texture >= 0); /* else unread */
+        int tangents = uvs && m->tangents && mt->normal_texture >= 0;
         if (m->triangle_count >= MAX_MESH_TRIANGLES)
             return fail(ctx, SSG_E_VALUE, "a mesh has 2^24 triangles or more (the GL "
                         "visibility buffer numbers them in floats)");
         s->mesh[i] = (struct ssg_gl_mesh){(int32_t)floats, (int32_t)(floats + 3 * v),
                                           uvs ? (int32_t)(floats + 6 * v) : -1,
-                                          (int32_t)indices, m->material};
-        floats += (uvs ? 8 : 6) * v;
+                                          (int32_t)indices, m->material,
+                                          tangents ? (int32_t)(floats + 8 * v) : -1};
+        floats += (6 + (uvs ? 2 : 0) + (tangents ? 4 : 0)) * v;
         indices += 3 * (size_t)m->triangle_count;
         if (floats > INT32_MAX || indices > INT32_MAX)
             return fail(ctx, SSG_E_NOMEM, "the scene's meshes are too large for GL");
@@ -63,38 +68,60 @@ static enum ssg_err lay_out_meshes(const struct ssg_node_ctx *ctx, struct ssg_gl
     return SSG_OK;
 }
 
-/* The material records, with the float offset of each used texture in texel[]. */
-static enum ssg_err lay_out_materials(const struct ssg_node_ctx *ctx, struct ssg_gl_scene *s)
+/* The float offset in texel[] of every texture a material uses (albedo or normal map),
+   each once: its RGB, then its alpha plane when it has one. */
+static enum ssg_err lay_out_textures(const struct ssg_node_ctx *ctx, struct ssg_gl_scene *s)
 {
     const struct ssg_scene *sc = s->scene;
     size_t texels = 0;
+    for (int i = 0; i < sc->texture_count; i++)
+        s->texel_at[i] = -1;
+    for (int i = 0; i < sc->material_count; i++) {
+        const int used[3] = {sc->materials[i].texture, sc->materials[i].normal_texture,
+                             sc->materials[i].emission_texture};
+        for (int k = 0; k < 3; k++) {
+            if (used[k] < 0 || s->texel_at[used[k]] >= 0)
+                continue;
+            const struct ssg_texture *t = &sc->textures[used[k]];
+            s->texel_at[used[k]] = (int32_t)texels;
+            texels += (t->alpha ? 4 : 3) * (size_t)t->width * (size_t)t->height;
+            if (texels > INT32_MAX)
+                return fail(ctx, SSG_E_NOMEM, "the scene's textures are too large for GL");
+        }
+    }
+    s->bytes[TEXEL] = texels * sizeof(float);
+    return SSG_OK;
+}
+
+/* The material records, with their textures' offsets in texel[]. */
+static void lay_out_materials(struct ssg_gl_scene *s)
+{
+    const struct ssg_scene *sc = s->scene;
     for (int i = 0; i < sc->material_count; i++) {
         const struct ssg_material *mt = &sc->materials[i];
         const struct ssg_texture *t = mt->texture >= 0 ? &sc->textures[mt->texture] : NULL;
+        const struct ssg_texture *nt =
+            mt->normal_texture >= 0 ? &sc->textures[mt->normal_texture] : NULL;
         struct ssg_gl_material *g = &s->material[i];
         memcpy(g->albedo, mt->albedo, sizeof g->albedo);
         memcpy(g->specular, mt->specular, sizeof g->specular);
         g->shininess = mt->shininess;
-        g->texels = -1;
-        for (int j = 0; t && j < i && g->texels < 0; j++) /* a texture shared: upload once */
-            if (sc->materials[j].texture == mt->texture)
-                g->texels = s->material[j].texels;
-        size_t px = t ? (size_t)t->width * (size_t)t->height : 0;
-        if (t && g->texels < 0) { /* its RGB, then its alpha plane when it has one */
-            g->texels = (int32_t)texels;
-            texels += (t->alpha ? 4 : 3) * px;
-        }
+        g->texels = t ? s->texel_at[mt->texture] : -1;
         g->width = t ? t->width : 0, g->height = t ? t->height : 0;
         g->opacity = mt->opacity;
         g->alpha_cutoff = mt->alpha_cutoff;
         g->masked = ssg_material_masked(mt);
-        g->alpha_texels = t && t->alpha ? g->texels + 3 * (int32_t)px : -1;
-        if (texels > INT32_MAX)
-            return fail(ctx, SSG_E_NOMEM, "the scene's textures are too large for GL");
+        g->alpha_texels = t && t->alpha ? g->texels + 3 * t->width * t->height : -1;
+        g->normal_texels = nt ? s->texel_at[mt->normal_texture] : -1;
+        g->normal_width = nt ? nt->width : 0, g->normal_height = nt ? nt->height : 0;
+        g->normal_scale = mt->normal_scale;
+        const struct ssg_texture *et =
+            mt->emission_texture >= 0 ? &sc->textures[mt->emission_texture] : NULL;
+        memcpy(g->emission, mt->emission, sizeof g->emission);
+        g->emission_texels = et ? s->texel_at[mt->emission_texture] : -1;
+        g->emission_width = et ? et->width : 0, g->emission_height = et ? et->height : 0;
     }
-    s->bytes[TEXEL] = texels * sizeof(float);
     s->bytes[MATERIALS] = (size_t)sc->material_count * sizeof(struct ssg_gl_material);
-    return SSG_OK;
 }
 
 static enum ssg_err check_limits(const struct ssg_node_ctx *ctx, const struct ssg_gl_scene *s)
@@ -129,21 +156,21 @@ static void copy_data(struct ssg_gl_scene *s)
         glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->normals, v3, m->normals);
         if (g->uvs >= 0)
             glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->uvs, v3 / 3 * 2, m->uvs);
+        if (g->tangents >= 0)
+            glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->tangents, v3 / 3 * 4,
+                                 m->tangents);
         glNamedBufferSubData(s->buffer[INDEX], 4 * (GLintptr)g->indices,
                              (GLsizeiptr)(12 * (size_t)m->triangle_count), m->indices);
     }
-    for (int i = 0; i < sc->material_count; i++) {
-        const struct ssg_gl_material *g = &s->material[i];
-        int first = g->texels >= 0; /* only the first material of a shared texture copies */
-        for (int j = 0; first && j < i; j++)
-            first = s->material[j].texels != g->texels;
-        const struct ssg_texture *t = first ? &sc->textures[sc->materials[i].texture] : NULL;
-        GLsizeiptr plane = (GLsizeiptr)(4 * (size_t)g->width * (size_t)g->height);
-        if (t)
-            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->texels, 3 * plane, t->rgb);
-        if (t && t->alpha)
-            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)g->alpha_texels, plane,
-                                 t->alpha);
+    for (int i = 0; i < sc->texture_count; i++) {
+        const struct ssg_texture *t = &sc->textures[i];
+        GLsizeiptr plane = (GLsizeiptr)(4 * (size_t)t->width * (size_t)t->height);
+        if (s->texel_at[i] < 0)
+            continue;
+        glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)s->texel_at[i], 3 * plane, t->rgb);
+        if (t->alpha)
+            glNamedBufferSubData(s->buffer[TEXEL], 4 * (GLintptr)s->texel_at[i] + 3 * plane,
+                                 plane, t->alpha);
     }
     if (s->bytes[MESHES])
         glNamedBufferSubData(s->buffer[MESHES], 0, (GLsizeiptr)s->bytes[MESHES], s->mesh);
@@ -198,6 +225,7 @@ static void scene_free(struct ssg_gl_scene **scene)
         glDeleteBuffers(1, &s->distance);
     free(s->mesh);
     free(s->material);
+    free(s->texel_at);
     free(s);
     *scene = NULL;
 }
@@ -211,14 +239,17 @@ static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scen
         s->scene = scene;
         s->mesh = calloc((size_t)scene->mesh_count + 1, sizeof *s->mesh);
         s->material = calloc((size_t)scene->material_count + 1, sizeof *s->material);
+        s->texel_at = calloc((size_t)scene->texture_count + 1, sizeof *s->texel_at);
     }
-    if (!s || !s->mesh || !s->material) {
+    if (!s || !s->mesh || !s->material || !s->texel_at) {
         scene_free(&s);
         return fail(ctx, SSG_E_NOMEM, "out of memory for the scene's GL tables");
     }
     enum ssg_err e = lay_out_meshes(ctx, s);
     if (!e)
-        e = lay_out_materials(ctx, s);
+        e = lay_out_textures(ctx, s);
+    if (!e)
+        lay_out_materials(s);
     if (!e)
         e = check_limits(ctx, s);
     if (!e) {

@@ -12,15 +12,17 @@
  * ray caster uses.
  *
  * Storage buffers (std430), bound by ssg_gl_scene_bind at SSG_GL_SCENE_BINDING + i:
- *   +0 float vdata[]: every mesh's positions (xyz), normals (xyz) and uvs (uv, only where
- *      its material has a texture) as in the scene, at the offsets its Mesh record gives
+ *   +0 float vdata[]: every mesh's positions (xyz), normals (xyz), uvs (uv, only where
+ *      its material has a texture or a normal map) and tangents (xyzw, only with a normal
+ *      map) as in the scene, at the offsets its Mesh record gives
  *   +1 uint index[]: every mesh's indices (3 per triangle, the mesh's own vertex numbers)
  *   +2 float texel[]: the textures materials use, linear RGB interleaved, row 0 at the top,
  *      each followed by its alpha plane when it has one (scene/coverage.h)
  *   +3 Mesh mesh[]: struct ssg_gl_mesh below, one per scene mesh, in scene order
  *   +4 Material material[]: struct ssg_gl_material below, in scene order
  * A shader declares them with the same fields, e.g.
- *   struct Mesh { int positions; int normals; int uvs; int indices; int material; };
+ *   struct Mesh { int positions; int normals; int uvs; int indices; int material;
+ *                 int tangents; };
  *   layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
  * core/gl/gl.h's ssg_gl_buffer bindings from SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS on
  * stay free for the node's own data.
@@ -42,9 +44,10 @@
 enum { SSG_GL_SCENE_BINDING = 0, SSG_GL_SCENE_BUFFERS = 5 };
 
 /* One mesh on GL: float offsets into vdata (uvs -1 = none, or no texture to look up), the
- * offset of its first index in index[], and its material. */
+ * offset of its first index in index[], its material, and the offset of its tangents (xyzw,
+ * -1 = none, or no normal map to bend by). */
 struct ssg_gl_mesh {
-    int32_t positions, normals, uvs, indices, material;
+    int32_t positions, normals, uvs, indices, material, tangents;
 };
 
 /* One material on GL (scene.h's fields); texels is the float offset of its texture in
@@ -57,6 +60,10 @@ struct ssg_gl_material {
     int32_t texels, width, height;
     float opacity, alpha_cutoff;
     int32_t alpha_texels, masked;
+    int32_t normal_texels, normal_width, normal_height; /* the normal map, -1 = none */
+    float normal_scale;
+    float emission[3];
+    int32_t emission_texels, emission_width, emission_height; /* its texture, -1 = none */
 };
 
 /* The camera the scene is drawn from: the pose of ssg_camera_frame (view = rot * (world -

@@ -90,12 +90,17 @@ static enum ssg_err keep_sets(struct ssg_graph *g, const struct ssg_overrides *o
     return SSG_OK;
 }
 
-/* 1 when the scene gives no light at all: no light line and a black environment. */
+/* 1 when the scene gives no light at all: no light line, a black environment and no
+   material that emits. */
 static int scene_is_dark(const struct ssg_scene *s)
 {
     const struct ssg_environment *env = &s->environment; /* an image is times color */
     int env_lit = env->intensity > 0 &&
                   (env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0);
+    for (int i = 0; i < s->material_count; i++) {
+        const float *e = s->materials[i].emission;
+        env_lit |= e[0] > 0 || e[1] > 0 || e[2] > 0;
+    }
     return s->light_lines == 0 && !env_lit;
 }
 

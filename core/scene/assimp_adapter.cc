@@ -124,15 +124,12 @@ void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat
 {
     std::string who = std::string("'") + model_adapter::printable(mat.name) + "'";
     aiString path;
-    aiColor3D emissive(0, 0, 0);
     float opacity = 1.0f;
     if (src.GetTextureCount(aiTextureType_NORMALS) > 0 ||
         src.GetTextureCount(aiTextureType_HEIGHT) > 0)
         ignored.add("normal and bump maps (map_bump, norm)", who);
-    if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0 ||
-        (src.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS &&
-         (emissive.r > 0 || emissive.g > 0 || emissive.b > 0)))
-        ignored.add("emission (Ke, map_Ke)", who);
+    if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0)
+        ignored.add("emission maps (map_Ke; Ke is read)", who);
     if (src.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
         mat.alpha_mode == SSG_ALPHA_OPAQUE)
         ignored.add("opacity textures other than the diffuse texture (map_d)", who);
@@ -165,6 +162,15 @@ void Flattener::convert_materials()
             mat.base_color[k] = std::isfinite(rgba[k]) ? std::fmin(std::fmax(rgba[k], 0.0f), 1.0f)
                                                        : 1.0f;
         mat.texture = -1;
+        mat.normal_texture = -1; /* Assimp's normal and bump maps are not read yet */
+        mat.normal_scale = 1.0f;
+        mat.emission_texture = -1; /* nor its emission maps (map_Ke) */
+        aiColor3D ke(0, 0, 0);
+        if (src->Get(AI_MATKEY_COLOR_EMISSIVE, ke) == AI_SUCCESS) {
+            const float e[3] = {ke.r, ke.g, ke.b};
+            for (int k = 0; k < 3; k++)
+                mat.emission[k] = std::isfinite(e[k]) && e[k] > 0.0f ? e[k] : 0.0f;
+        }
         if (src->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS && tex.length) {
             if (tex.length >= sizeof mat.texture_file)
                 fail(std::string("material '") + name.C_Str() + "' names a texture path of " +

@@ -31,6 +31,10 @@ struct ssg_gltf_material {
     int alpha_mode;      /* enum ssg_alpha_mode: glTF alphaMode; an OBJ's map_d naming the
                             diffuse texture: mask */
     float alpha_cutoff;  /* glTF alphaCutoff, default 0.5; base_color[3] is the opacity */
+    int normal_texture;  /* normalTexture: index into textures (stored values, not sRGB), -1 */
+    float normal_scale;  /* normalTexture.scale, default 1 */
+    float emission[3];   /* emissiveFactor x KHR_materials_emissive_strength (Assimp: Ke) */
+    int emission_texture; /* emissiveTexture: index into textures (sRGB decoded), -1 */
 };
 
 struct ssg_gltf {

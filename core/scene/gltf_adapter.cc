@@ -33,6 +33,7 @@ using gltf_adapter::Failure;
 using gltf_adapter::fail;
 using gltf_adapter::read_floats;
 using gltf_adapter::read_indices;
+using gltf_adapter::shown;
 
 using Mat4 = std::array<double, 16>; /* column-major, as glTF stores it */
 
@@ -138,28 +139,20 @@ std::vector<float> compute_normals(const std::vector<float> &p, const std::vecto
     return n;
 }
 
-float srgb_to_linear(float c)
-{
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 using model_adapter::Prim;
 using model_adapter::printable;
 using model_adapter::Tex;
 
 class Flattener {
   public:
-    explicit Flattener(const tinygltf::Model &model) : m(model) {}
+    explicit Flattener(const tinygltf::Model &model) : m(model), mats(model) {}
     void run();
     ssg_gltf *to_c() const;
 
   private:
     const tinygltf::Model &m;
     std::vector<Prim> prims;
-    std::vector<ssg_gltf_material> materials;
-    std::vector<Tex> textures;
-    std::vector<int> texture_slot; /* glTF texture index -> textures index, -1 = not yet */
-    model_adapter::Ignored ignored; /* what the file uses and no path reads */
+    gltf_adapter::Materials mats; /* its materials, textures and what is not read */
     bool has_camera = false;
     ssg_camera camera{};
     size_t visits = 0; /* node instances seen, against shared subtrees blowing up */
@@ -167,22 +160,20 @@ class Flattener {
     void visit(int node, const Mat4 &parent, int depth);
     void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
     void add_camera(int index, const Mat4 &world);
-    void convert_materials();
-    void note_ignored(const tinygltf::Material &src, const std::string &who);
-    int texture(int gltf_index, bool keep_alpha);
-    void add_alpha(Tex &tex, const tinygltf::Image &img) const;
+    void read_tangents(const tinygltf::Primitive &p, Prim &out, const Mat4 &world,
+                       bool mirrored, const std::string &where);
 };
 
 void Flattener::run()
 {
-    texture_slot.assign(m.textures.size(), -1);
-    convert_materials();
+    mats.convert();
     for (const std::string &x : m.extensionsUsed) {
         /* the material extensions' rows name the materials; quantized attributes are read
            as any accessor (gltf_accessor_adapter.cc) */
-        if (x == "KHR_texture_transform" || x == "KHR_mesh_quantization")
+        if (x == "KHR_texture_transform" || x == "KHR_mesh_quantization" ||
+            x == "KHR_materials_emissive_strength")
             continue;
-        ignored.add(x == "KHR_lights_punctual" ? "lights (KHR_lights_punctual)"
+        mats.ignored.add(x == "KHR_lights_punctual" ? "lights (KHR_lights_punctual)"
                                                : "extension " + printable(x), "");
     }
     std::vector<int> roots;
@@ -279,13 +270,13 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
     if (out.indices.empty())
         return;
     if (attribute(p, "COLOR_0") >= 0)
-        ignored.add("vertex colours (COLOR_0)", where);
+        mats.ignored.add("vertex colours (COLOR_0)", where);
     int nrm = attribute(p, "NORMAL");
     out.normals = nrm >= 0 ? read_floats(m, nrm, 3) : compute_normals(out.positions, out.indices);
     if (out.normals.size() != out.positions.size())
         fail(where + ": NORMAL count differs from POSITION count");
-    out.material = p.material >= 0 && (size_t)p.material < materials.size() ? p.material : -1;
-    int set = out.material >= 0 ? materials[(size_t)out.material].texcoord : 0;
+    out.material = p.material >= 0 && (size_t)p.material < mats.materials.size() ? p.material : -1;
+    int set = out.material >= 0 ? mats.materials[(size_t)out.material].texcoord : 0;
     int uv = attribute(p, "TEXCOORD_" + std::to_string(set));
     if (uv >= 0) {
         out.uvs = read_floats(m, uv, 2);
@@ -296,6 +287,7 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
     transform_normals(out.normals, world);
     double det;
     normal_matrix(world, &det);
+    read_tangents(p, out, world, det < 0, where);
     if (det < 0) /* a mirroring transform flips the winding; flip it back */
         for (size_t t = 0; t < out.indices.size(); t += 3)
             std::swap(out.indices[t + 1], out.indices[t + 2]);
@@ -306,13 +298,6 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
    (yfov and znear > 0, zfar > znear) or its node gives it no direction: a camera that
    silently vanished left the user framing the bounds without knowing why. A field of
    view past 1 to 179 degrees is refused too (the scene format's range). */
-/* x as a message writes it: "0.8", not std::to_string's "0.800000". */
-std::string shown(double x)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return text;
-}
 
 void Flattener::add_camera(int index, const Mat4 &w)
 {
@@ -349,121 +334,33 @@ void Flattener::add_camera(int index, const Mat4 &w)
     has_camera = true;
 }
 
-/* The parts of a material no path reads yet (docs/scenes.md's feature table). */
-void Flattener::note_ignored(const tinygltf::Material &src, const std::string &who)
+/* A normal-mapped primitive's TANGENT (xyzw, glTF 2.0 3.7.2.1) into world space: xyz as a
+   direction of the node's transform, normalised; w flips with a mirroring transform, as the
+   bitangent does. A mesh without them gets them made from its uvs (scene_shapes.h). */
+void Flattener::read_tangents(const tinygltf::Primitive &p, Prim &out, const Mat4 &world,
+                              bool mirrored, const std::string &where)
 {
-    const std::vector<double> &e = src.emissiveFactor;
-    bool emits = e.size() == 3 && (e[0] > 0 || e[1] > 0 || e[2] > 0);
-    if (src.normalTexture.index >= 0)
-        ignored.add("normal maps (normalTexture)", who);
-    if (emits || src.emissiveTexture.index >= 0)
-        ignored.add("emission (emissiveFactor, emissiveTexture)", who);
-    if (src.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform"))
-        ignored.add("texture transforms (KHR_texture_transform)", who);
-}
-
-void Flattener::convert_materials()
-{
-    for (size_t k = 0; k < m.materials.size(); k++) {
-        const tinygltf::Material &src = m.materials[k];
-        note_ignored(src, src.name.empty() ? "material " + std::to_string(k)
-                                           : "'" + printable(src.name) + "'");
-        ssg_gltf_material mat{};
-        std::snprintf(mat.name, sizeof mat.name, "%s", src.name.c_str());
-        const std::vector<double> &f = src.pbrMetallicRoughness.baseColorFactor;
-        for (int i = 0; i < 4; i++) mat.base_color[i] = f.size() == 4 ? (float)f[(size_t)i] : 1.0f;
-        /* glTF 2.0, 3.9.4: alpha is ignored unless MASK (cutoff, default 0.5) or BLEND */
-        mat.alpha_mode = src.alphaMode == "MASK"    ? SSG_ALPHA_MASK
-                         : src.alphaMode == "BLEND" ? SSG_ALPHA_BLEND
-                                                    : SSG_ALPHA_OPAQUE;
-        mat.alpha_cutoff = mat.alpha_mode == SSG_ALPHA_MASK ? (float)src.alphaCutoff : 0.5f;
-        if (!(mat.alpha_cutoff >= 0.0f && mat.alpha_cutoff <= 1.0f))
-            fail("material '" + printable(src.name) + "': alphaCutoff " +
-                 shown(src.alphaCutoff) + " is outside 0 to 1");
-        mat.texture = texture(src.pbrMetallicRoughness.baseColorTexture.index,
-                              mat.alpha_mode != SSG_ALPHA_OPAQUE);
-        mat.texcoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
-        materials.push_back(mat);
-    }
-}
-
-/* The alpha channel of a decoded image with one (gray + alpha, RGBA; linear: glTF's alpha
-   is not sRGB-encoded) as the texture's coverage plane; an image without one stays
-   opaque. */
-void Flattener::add_alpha(Tex &tex, const tinygltf::Image &img) const
-{
-    if (!tex.alpha.empty() || (img.component != 2 && img.component != 4))
+    int tan = attribute(p, "TANGENT");
+    if (tan < 0 || out.material < 0 || mats.materials[(size_t)out.material].normal_texture < 0)
         return;
-    size_t px = (size_t)img.width * (size_t)img.height, bytes = img.bits == 16 ? 2 : 1;
-    tex.alpha.resize(px);
-    for (size_t i = 0; i < px; i++) {
-        size_t at = i * (size_t)img.component + (size_t)img.component - 1;
-        uint16_t u = img.image[at];
-        if (bytes == 2)
-            std::memcpy(&u, &img.image[at * 2], 2);
-        tex.alpha[i] = (float)u / (bytes == 2 ? 65535.0f : 255.0f);
+    out.tangents = read_floats(m, tan, 4);
+    if (out.tangents.size() != out.positions.size() / 3 * 4)
+        fail(where + ": TANGENT count differs from POSITION count");
+    for (size_t i = 0; i + 3 < out.tangents.size(); i += 4) {
+        double x = out.tangents[i], y = out.tangents[i + 1], z = out.tangents[i + 2], d[3];
+        for (int r = 0; r < 3; r++)
+            d[r] = world[r] * x + world[4 + r] * y + world[8 + r] * z;
+        double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int r = 0; r < 3; r++)
+            out.tangents[i + (size_t)r] = (float)(len > 0 ? d[r] / len : 0.0);
+        out.tangents[i + 3] = (out.tangents[i + 3] < 0) != mirrored ? -1.0f : 1.0f;
     }
-}
-
-/* The image of glTF texture `gltf_index`, checked. */
-static const tinygltf::Image &texture_image(const tinygltf::Model &m, int gltf_index)
-{
-    int source = m.textures[(size_t)gltf_index].source;
-    if (source < 0 || (size_t)source >= m.images.size())
-        fail("texture " + std::to_string(gltf_index) + " has no valid image");
-    return m.images[(size_t)source];
-}
-
-/* Decodes glTF texture `gltf_index` once; baseColor textures are sRGB-encoded (glTF 2.0
- * spec, 3.9.2), so 8- and 16-bit values are converted to linear here. keep_alpha: a masked
- * material reads it, so its alpha channel comes along (also when an opaque material
- * decoded it first). */
-int Flattener::texture(int gltf_index, bool keep_alpha)
-{
-    if (gltf_index < 0)
-        return -1;
-    if ((size_t)gltf_index >= m.textures.size())
-        fail("texture " + std::to_string(gltf_index) + " does not exist");
-    if (texture_slot[(size_t)gltf_index] >= 0) {
-        int slot = texture_slot[(size_t)gltf_index];
-        if (keep_alpha)
-            add_alpha(textures[(size_t)slot], texture_image(m, gltf_index));
-        return slot;
-    }
-    const tinygltf::Image &img = texture_image(m, gltf_index);
-    int source = m.textures[(size_t)gltf_index].source;
-    size_t bytes = img.bits == 16 ? 2 : 1;
-    size_t px = (size_t)img.width * (size_t)img.height;
-    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 ||
-        (img.bits != 8 && img.bits != 16) || img.image.size() < px * (size_t)img.component * bytes)
-        fail("image " + std::to_string(source) + " ('" + img.uri + "') was not decoded");
-    float lut[256];
-    for (int i = 0; i < 256; i++) lut[i] = srgb_to_linear((float)i / 255.0f);
-    Tex tex{img.width, img.height, std::vector<float>(px * 3), {}};
-    for (size_t i = 0; i < px; i++)
-        for (int c = 0; c < 3; c++) {
-            size_t at = i * (size_t)img.component + (size_t)(img.component < 3 ? 0 : c);
-            float v;
-            if (bytes == 1) {
-                v = lut[img.image[at]];
-            } else {
-                uint16_t u;
-                std::memcpy(&u, &img.image[at * 2], 2);
-                v = srgb_to_linear((float)u / 65535.0f);
-            }
-            tex.rgb[i * 3 + (size_t)c] = v;
-        }
-    if (keep_alpha)
-        add_alpha(tex, img);
-    textures.push_back(std::move(tex));
-    texture_slot[(size_t)gltf_index] = (int)textures.size() - 1;
-    return texture_slot[(size_t)gltf_index];
 }
 
 ssg_gltf *Flattener::to_c() const
 {
-    return model_adapter::to_c(prims, materials, textures, has_camera ? &camera : nullptr,
-                               ignored);
+    return model_adapter::to_c(prims, mats.materials, mats.textures,
+                               has_camera ? &camera : nullptr, mats.ignored);
 }
 
 /* tinygltf reads the buffers and images a glTF names through this: the same rules as
@@ -549,6 +446,17 @@ ssg_gltf *load(const char *path)
 }
 
 } // namespace
+
+namespace gltf_adapter {
+
+std::string shown(double x)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
+
+} // namespace gltf_adapter
 
 extern "C" enum ssg_err ssg_gltf_load(const char *path, struct ssg_gltf **out, char *why,
                                       size_t why_len)

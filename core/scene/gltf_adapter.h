@@ -27,6 +27,31 @@ std::vector<float> read_floats(const tinygltf::Model &model, int index, int comp
 /* Accessor `index` as unsigned indices (any of the three index component types). */
 std::vector<uint32_t> read_indices(const tinygltf::Model &model, int index);
 
+/* A glTF file's materials and the textures they read, converted once (gltf_material_adapter.cc):
+   base colour (sRGB, with its alpha for a masked material), alphaMode, the normal map (as
+   data), emission; and what of them no path reads, into `ignored`. */
+class Materials {
+  public:
+    explicit Materials(const tinygltf::Model &model) : m(model) {}
+    void convert();
+    std::vector<ssg_gltf_material> materials;
+    std::vector<model_adapter::Tex> textures;
+    model_adapter::Ignored ignored; /* what the file uses and no path reads */
+
+  private:
+    const tinygltf::Model &m;
+    std::vector<int> texture_slot; /* glTF texture index -> textures index, -1 = not yet */
+    std::vector<int> data_slot;    /* the same for textures read as data (normal maps) */
+
+    void note_ignored(const tinygltf::Material &src, const std::string &who);
+    void read_emission(const tinygltf::Material &src, ssg_gltf_material &mat);
+    int texture(int gltf_index, bool keep_alpha, bool srgb = true);
+    void add_alpha(model_adapter::Tex &tex, const tinygltf::Image &img) const;
+};
+
+/* A number as a message writes it: "0.8", not std::to_string's "0.800000". */
+std::string shown(double x);
+
 } // namespace gltf_adapter
 
 #endif

@@ -29,6 +29,7 @@ struct Failure {
 /* A triangle mesh gathered in C++ containers until the whole file has loaded. */
 struct Prim {
     std::vector<float> positions, normals, uvs; /* world xyz, unit xyz, uv (or empty) */
+    std::vector<float> tangents;                /* world xyzw (glTF TANGENT), or empty */
     std::vector<uint32_t> indices;              /* 3 per triangle */
     int material;                               /* index into the materials, -1 = none */
 };

@@ -241,6 +241,11 @@ static int references_hold(struct ssg_wire *w, struct ssg_gltf *g)
         m->name[sizeof m->name - 1] = 0;
         m->texture_file[sizeof m->texture_file - 1] = 0;
         if (m->texture < -1 || m->texture >= g->texture_count || m->alpha_mode < 0 ||
+            m->normal_texture < -1 || m->normal_texture >= g->texture_count ||
+            m->emission_texture < -1 || m->emission_texture >= g->texture_count ||
+            !(m->emission[0] >= 0.0f && m->emission[1] >= 0.0f && m->emission[2] >= 0.0f &&
+              isfinite(m->emission[0] + m->emission[1] + m->emission[2])) ||
+            !isfinite(m->normal_scale) ||
             m->alpha_mode > SSG_ALPHA_BLEND || !(m->alpha_cutoff >= 0.0f) ||
             !(m->alpha_cutoff <= 1.0f))
             return fail(w, SSG_WIRE_CORRUPT);

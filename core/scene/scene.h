@@ -89,6 +89,12 @@ struct ssg_material {
     enum ssg_alpha_mode alpha_mode; /* default opaque */
     float alpha_cutoff; /* a masked surface exists where opacity x alpha >= this */
     float opacity;      /* alpha factor (glTF baseColorFactor's alpha, OBJ d), default 1 */
+    int normal_texture; /* tangent-space normal map in scene->textures (its rgb holds the
+                           stored values in [0, 1], not linearised), -1 = none */
+    float normal_scale; /* glTF normalTexture.scale: multiplies the map's x and y */
+    float emission[3];  /* emitted radiance, linear RGB, from both faces; 0 = none */
+    int emission_texture; /* sRGB texture (linear once loaded) multiplying emission, on the
+                             mesh's uvs; -1 = none */
 };
 
 /* A triangle mesh in world space. Every primitive and glTF primitive becomes one. */
@@ -99,6 +105,9 @@ struct ssg_mesh {
     float *uvs;        /* uv per vertex, or NULL */
     uint32_t *indices; /* 3 per triangle */
     int material;      /* index into scene->materials */
+    float *tangents;   /* xyzw per vertex, world: the unit tangent along +u and the sign w
+                          of the bitangent (cross(n, t) w points along +v), made by
+                          ssg_mesh_tangents for a normal-mapped material; or NULL */
 };
 
 struct ssg_environment {

@@ -54,6 +54,9 @@ static struct ssg_material *new_material(struct scene_loader *l, const char *nam
     m->alpha_mode = SSG_ALPHA_OPAQUE;
     m->alpha_cutoff = 0.5f; /* glTF's default */
     m->opacity = 1.0f;
+    m->normal_texture = -1;
+    m->normal_scale = 1.0f;
+    m->emission_texture = -1;
     return m;
 }
 
@@ -184,6 +187,7 @@ static void build_material(struct scene_loader *l, int ent)
     m->alpha_mode = (enum ssg_alpha_mode)a->alpha_mode;
     m->alpha_cutoff = m->alpha_mode == SSG_ALPHA_BLEND ? 0.5f : a->alpha_cutoff;
     m->opacity = a->opacity;
+    memcpy(m->emission, a->emission, sizeof m->emission);
     l->material_of[ent] = l->scene->material_count - 1;
     if (a->texture[0])
         m->texture = load_texture(l, e, a->texture, 1, ssg_material_masked(m));
@@ -354,6 +358,11 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
                           "BLEND, drawn as MASK at cutoff 0.5 (no pass of ssgraph blends; "
                           "docs/scenes.md)", model, name);
         m->texture = gm->texture >= 0 ? first_texture + gm->texture : -1;
+        m->normal_texture = gm->normal_texture >= 0 ? first_texture + gm->normal_texture : -1;
+        m->normal_scale = gm->normal_scale;
+        memcpy(m->emission, gm->emission, sizeof m->emission);
+        m->emission_texture =
+            gm->emission_texture >= 0 ? first_texture + gm->emission_texture : -1;
         if (gm->texture < 0 && gm->texture_file[0])
             m->texture = model_texture(l, e, model, gm);
     }
@@ -535,7 +544,16 @@ void ssg_scene_build(struct scene_loader *l)
     if (!camera_set)
         default_camera(s);
     s->has_camera = camera_set;
-    enum ssg_err e = ssg_rt_build(s, &s->rt, l->diags);
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < s->mesh_count && !e; i++) /* in world space, once placed */
+        if (s->materials[s->meshes[i].material].normal_texture >= 0)
+            e = ssg_mesh_tangents(&s->meshes[i]);
+    if (e) {
+        ssg_diag_file(l->diags, e, s->path, "out of memory for the meshes' tangents");
+        ssg_scene_fail(l, e);
+        return;
+    }
+    e = ssg_rt_build(s, &s->rt, l->diags);
     if (!e)
         e = ssg_distance_build(s->meshes, s->mesh_count, SSG_DISTANCE_RES, &s->distance);
     if (e == SSG_E_NOMEM)

@@ -55,6 +55,7 @@ struct material_args {
     char texture[SSG_STR_MAX];    /* albedo texture path, "" = none */
     int alpha_mode;               /* enum ssg_alpha_mode */
     float alpha_cutoff, opacity;  /* coverage.h */
+    float emission[3];            /* emitted radiance, linear RGB */
 };
 struct light_args {
     float position[3];  /* point light, world */

@@ -17,6 +17,7 @@ void ssg_mesh_free(struct ssg_mesh *mesh)
     free(mesh->normals);
     free(mesh->uvs);
     free(mesh->indices);
+    free(mesh->tangents);
     memset(mesh, 0, sizeof *mesh);
 }
 
@@ -218,6 +219,13 @@ void ssg_mesh_place(struct ssg_mesh *mesh, const float translate[3], const float
         for (int i = 0; i < 3; i++)
             p[i] += translate[i];
     }
+    for (int v = 0; mesh->tangents && v < mesh->vertex_count; v++) { /* a direction */
+        float *t = &mesh->tangents[4 * v];
+        float st[3] = {t[0] * scale[0], t[1] * scale[1], t[2] * scale[2]};
+        mat_vec(r, st, t);
+        normalize3(t);
+        t[3] = scale[0] * scale[1] * scale[2] < 0.0f ? -t[3] : t[3]; /* a mirror flips b */
+    }
     if (scale[0] * scale[1] * scale[2] < 0.0f)
         for (int t = 0; t < mesh->triangle_count; t++) {
             uint32_t *i = &mesh->indices[3 * t], tmp = i[1];
@@ -234,4 +242,64 @@ void ssg_mesh_bounds(const struct ssg_mesh *mesh, float lo[3], float hi[3])
             lo[i] = p < lo[i] ? p : lo[i];
             hi[i] = p > hi[i] ? p : hi[i];
         }
+}
+
+/* Any unit vector orthogonal to unit n (Duff et al. 2017, as trace.h's frames). */
+static void any_tangent(const float n[3], float t[3])
+{
+    float sign = n[2] >= 0.0f ? 1.0f : -1.0f, a = -1.0f / (sign + n[2]), b = n[0] * n[1] * a;
+    put3(t, 1.0f + sign * n[0] * n[0] * a, sign * b, -sign * n[0]);
+}
+
+enum ssg_err ssg_mesh_tangents(struct ssg_mesh *m)
+{
+    if (!m->uvs || m->tangents || m->vertex_count < 1)
+        return SSG_OK;
+    size_t n = (size_t)m->vertex_count;
+    double *sum = calloc(6 * n, sizeof *sum); /* per vertex: +u direction, then +v */
+    m->tangents = malloc(4 * n * sizeof(float));
+    if (!sum || !m->tangents) {
+        free(sum);
+        free(m->tangents);
+        m->tangents = NULL;
+        return SSG_E_NOMEM;
+    }
+    for (int t = 0; t < m->triangle_count; t++) {
+        const uint32_t *k = &m->indices[3 * t];
+        const float *p0 = &m->positions[3 * k[0]], *p1 = &m->positions[3 * k[1]];
+        const float *p2 = &m->positions[3 * k[2]];
+        double e1[3], e2[3], du1 = (double)m->uvs[2 * k[1]] - m->uvs[2 * k[0]];
+        double dv1 = (double)m->uvs[2 * k[1] + 1] - m->uvs[2 * k[0] + 1];
+        double du2 = (double)m->uvs[2 * k[2]] - m->uvs[2 * k[0]];
+        double dv2 = (double)m->uvs[2 * k[2] + 1] - m->uvs[2 * k[0] + 1];
+        double det = du1 * dv2 - du2 * dv1;
+        if (det == 0.0)
+            continue; /* no uv area: no direction of +u */
+        for (int i = 0; i < 3; i++)
+            e1[i] = (double)p1[i] - p0[i], e2[i] = (double)p2[i] - p0[i];
+        for (int c = 0; c < 3; c++)
+            for (int i = 0; i < 3; i++) {
+                sum[6 * k[c] + i] += (dv2 * e1[i] - dv1 * e2[i]) / det;
+                sum[6 * k[c] + 3 + i] += (du1 * e2[i] - du2 * e1[i]) / det;
+            }
+    }
+    for (size_t v = 0; v < n; v++) {
+        const float *nv = &m->normals[3 * v];
+        const double *su = &sum[6 * v], *sv = &sum[6 * v + 3];
+        double d = su[0] * nv[0] + su[1] * nv[1] + su[2] * nv[2], t[3];
+        for (int i = 0; i < 3; i++)
+            t[i] = su[i] - nv[i] * d;
+        double len = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        float *out = &m->tangents[4 * v];
+        if (len > 0.0) {
+            put3(out, (float)(t[0] / len), (float)(t[1] / len), (float)(t[2] / len));
+        } else {
+            any_tangent(nv, out);
+        }
+        double c[3] = {nv[1] * out[2] - nv[2] * out[1], nv[2] * out[0] - nv[0] * out[2],
+                       nv[0] * out[1] - nv[1] * out[0]};
+        out[3] = c[0] * sv[0] + c[1] * sv[1] + c[2] * sv[2] < 0.0 ? -1.0f : 1.0f;
+    }
+    free(sum);
+    return SSG_OK;
 }

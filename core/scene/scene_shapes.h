@@ -37,4 +37,13 @@ void ssg_mesh_bounds(const struct ssg_mesh *mesh, float lo[3], float hi[3]);
 
 void ssg_mesh_free(struct ssg_mesh *mesh);
 
+/* Gives a mesh with uvs its per-vertex tangents (mesh->tangents, xyzw, world) in the way of
+   Lengyel, "Computing Tangent Space Basis Vectors for an Arbitrary Mesh" (2001): each
+   triangle's direction of +u and +v from its edges and uv differences, summed at its
+   vertices (weighted by its area, as the unnormalised sums are), the tangent made
+   orthogonal to the vertex normal (Gram-Schmidt) and w the sign that turns cross(n, t) into
+   +v. A vertex whose sum vanishes (degenerate uvs) gets any unit vector orthogonal to n.
+   Without uvs, or when it has tangents already, nothing changes. SSG_E_NOMEM or SSG_OK. */
+enum ssg_err ssg_mesh_tangents(struct ssg_mesh *mesh);
+
 #endif

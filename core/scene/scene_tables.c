@@ -89,6 +89,10 @@ static const struct ssg_param_desc material_params[] = {
           "alpha_mode=mask: the coverage at and above which there is a surface"),
     FLOAT("opacity", material_args, opacity, 1, 0, 1, NULL,
           "multiplies the texture's alpha (glTF's baseColorFactor alpha, OBJ's d)"),
+    VEC3("emission", material_args, emission, 0, 0, 0, 0, BIG, "W/(m^2 sr)",
+         "emitted radiance, linear RGB, from both faces: seen directly (gbuffer.emission, "
+         "which combine adds), the source of a bounce in reference_gi and of the "
+         "screen-space near field where a pipeline feeds it in (docs/scenes.md)"),
 };
 static const struct ssg_param_desc point_light_params[] = {
     REQ_VEC3("position", light_args, position, "scene units", "light position"),
@@ -225,9 +229,17 @@ static const struct {
      "-"},
     {"a separate opacity texture or scalar opacity", "-",
      "not read (map_d naming another file, d, Tr)", "-", "-"},
-    {"normal maps", "not read", "not read (map_bump, norm)", "-", "-"},
-    {"emission", "not read (emissiveFactor, emissiveTexture, KHR_materials_emissive_strength)",
-     "not read (Ke, map_Ke)", "-", "-"},
+    {"normal maps", "normalTexture (tangent space) and its scale, on the base colour's "
+     "texture coordinates; the file's TANGENT, else tangents made per vertex from the uvs "
+     "(Lengyel 2001)", "not read (map_bump, norm)", "every shading normal: the G-buffer (CPU, "
+     "GL), lightmaps' normals (CPU, GL), reference_gi's bounce hits; a scene file's material "
+     "has none yet", "test_normal_map"},
+    {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "
+     "on the material's texture coordinates)", "Ke (map_Ke not read)", "gbuffer.emission "
+     "(CPU, GL), which combine adds to the frame; reference_gi (seen directly, and as the "
+     "source of its one bounce); gi.graph's SSDO near field bounces it; no light map or "
+     "shadow map holds it (an emitter lights nothing beyond the screen in real time)",
+     "test_emission"},
     {"vertex colours", "not read (COLOR_0)", "not read", "-", "-"},
     {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
     {"lights", "not read (KHR_lights_punctual)", "not read", "-", "-"},

@@ -1,6 +1,6 @@
 // combine.glsl - the `combine` node's GL side (method in README.md, C side combine_gl.c):
 //   out = (darken_direct ? M : 1) direct + M ao (environment + k albedo) + (darken_indirect ? M : 1) indirect
-//         + M ao albedo irradiance
+//         + M ao albedo irradiance + emission
 // (with far_visibility: the far-field form of README.md)
 // per channel, with the CPU kernel's stand-ins for unconnected inputs (ao, M = 1;
 // environment, indirect = 0) and its order of operations. `precise` keeps the compiler
@@ -8,9 +8,9 @@
 // the CPU's bits.
 #pragma ssg_params
 uniform sampler2DArray direct, albedo, ambient_occlusion, indirect, modulation, environment,
-    far_visibility, irradiance;
+    far_visibility, irradiance, emission;
 uniform bool ambient_occlusion_bound, indirect_bound, modulation_bound, environment_bound,
-    far_visibility_bound, irradiance_bound;
+    far_visibility_bound, irradiance_bound, emission_bound;
 layout(r32f) uniform writeonly image2DArray dst_out;
 // prepare()'s modulation_last (its last layer: 0 or 2) and k (ambient * colour):
 #pragma ssg_consts
@@ -52,6 +52,8 @@ void main()
             o = (darken_direct ? m : 1.0) * d + m * occ * ambient + (darken_indirect ? m : 1.0) * bounce
                 + m * occ * far_light;
         }
+        if (emission_bound) // added last, as it is (never darkened)
+            o += texelFetch(emission, ivec3(p, c), 0).r;
         imageStore(dst_out, ivec3(p, c), vec4(o));
     }
 }

@@ -27,7 +27,10 @@
       "unconnected = no far field", .optional = 1)                                         \
     X(SSG_COMBINE_IN_IRRADIANCE, "irradiance", SSG_T_COLOR,                                \
       "indirect light as E / pi (a white diffuse surface's radiance, e.g. rsm.out "        \
-      "upsampled): adds M ao albedo irradiance; unconnected = 0", .optional = 1)
+      "upsampled): adds M ao albedo irradiance; unconnected = 0", .optional = 1)          \
+    X(SSG_COMBINE_IN_EMISSION, "emission", SSG_T_COLOR,                                    \
+      "light the surface emits (gbuffer.emission), added as it is: no factor darkens "    \
+      "it; unconnected = 0", .optional = 1)
 #define SSG_COMBINE_OUT(X)                                                                 \
     X(SSG_COMBINE_OUT_OUT, "out", SSG_T_COLOR,                                             \
       "shaded frame, linear RGB (unbounded; write tone-maps its PNG)", .same_as = "direct")

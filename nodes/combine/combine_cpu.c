@@ -14,6 +14,7 @@ struct combine_job {
     const float *modulation[3];         /* NULL = 1; a 1-channel factor repeats plane 0 */
     const float *ao;                    /* NULL = unoccluded */
     const float *far;                   /* far_visibility, NULL = none */
+    const float *emission[3];           /* NULL = none */
     int darken_indirect, far_bounce, darken_direct, environment_albedo;
     float *out[3];
     float k[3];                         /* ambient * ambient_color (prepare) */
@@ -70,9 +71,13 @@ static void combine_rows(void *user, int y0, int y1)
 {
     const struct combine_job *j = user;
     size_t w = (size_t)j->width;
-    for (int c = 0; c < 3; c++)
+    for (int c = 0; c < 3; c++) {
         (j->far ? combine_channel_far : combine_channel)(j, c, (size_t)y0 * w,
                                                          (size_t)y1 * w);
+        const float *em = j->emission[c]; /* added last, as it is (never darkened) */
+        for (size_t i = (size_t)y0 * w; em && i < (size_t)y1 * w; i++)
+            j->out[c][i] += em[i];
+    }
 }
 
 enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -99,6 +104,9 @@ enum ssg_err ssg_combine_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         job.indirect[c] = indirect ? ssg_image_plane(indirect, c) : NULL;
         job.irradiance[c] = irradiance ? ssg_image_plane(irradiance, c) : NULL;
         job.environment[c] = environment ? ssg_image_plane(environment, c) : NULL;
+        job.emission[c] = io->in[SSG_COMBINE_IN_EMISSION]
+                              ? ssg_image_plane(io->in[SSG_COMBINE_IN_EMISSION], c)
+                              : NULL;
         int plane = c < k->u.modulation_last ? c : k->u.modulation_last;
         job.modulation[c] = modulation ? ssg_image_plane(modulation, plane) : NULL;
         job.out[c] = ssg_image_plane(out, c);

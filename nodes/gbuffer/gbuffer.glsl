@@ -125,16 +125,18 @@ Surface surface_at(int id, int tri, vec2 ray, vec3 w)
     vec3 p2 = fetch3(me.positions, v.z);
     vec3 tuv = intersect(w, p0, p1, p2);
     float w0 = 1.0 - tuv.y - tuv.z;
+    Material m = scene_material[me.material];
     vec3 n = p_normals == NORMALS_FACE ? cross(p1 - p0, p2 - p0)
-                       : w0 * fetch3(me.normals, v.x) + tuv.y * fetch3(me.normals, v.y) +
-                             tuv.z * fetch3(me.normals, v.z);
+                       : shading_normal(me, m, v, tuv.y, tuv.z,
+                                        w0 * fetch3(me.normals, v.x) +
+                                            tuv.y * fetch3(me.normals, v.y) +
+                                            tuv.z * fetch3(me.normals, v.z));
     n *= 1.0 / sqrt(dot(n, n) + TINY);
     vec3 nv = vec3(rot[0] * n.x + rot[1] * n.y + rot[2] * n.z,
                    rot[3] * n.x + rot[4] * n.y + rot[5] * n.z,
                    rot[6] * n.x + rot[7] * n.y + rot[8] * n.z);
     // seen from behind (n . view direction > 0): shade the side facing the camera
     float flip = nv.x * ray.x + nv.y * ray.y - nv.z > 0.0 ? -1.0 : 1.0;
-    Material m = scene_material[me.material];
     return Surface(tuv.x, flip * n, flip * nv, surface_albedo(me, m, v, tuv.y, tuv.z));
 }
 

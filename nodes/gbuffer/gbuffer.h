@@ -13,6 +13,7 @@
 #define SSG_GBUFFER_GL_PIXELS "gbuffer.glsl gbuffer_back.glsl gbuffer_motion.glsl"
 #define SSG_GBUFFER_GL_MOTION "gbuffer_motion.glsl"
 #define SSG_GBUFFER_GL_PEEL "gbuffer_peel.glsl"
+#define SSG_GBUFFER_GL_EMISSION "gbuffer_emission.glsl"
 
 /* Ports, one row each (node.h): enumerator, name, types, doc, further fields; on GL each
    output is written by one pass (.gl_in), as dst_<name>. */
@@ -40,7 +41,11 @@
       "screen motion to the previous frame (ctx->prev_camera): x, y = the surface "       \
       "point's previous pixel position minus this one, in pixels (+x right, +y down); "   \
       "z = its view depth in the previous camera; 0 = background",                        \
-      .on_demand = 1, .gl_in = SSG_GBUFFER_GL_MOTION)
+      .on_demand = 1, .gl_in = SSG_GBUFFER_GL_MOTION)                                     \
+    X(SSG_GBUFFER_OUT_EMISSION, "emission", SSG_T_COLOR,                                   \
+      "radiance the visible surface emits (its material's emission x emission texture), " \
+      "linear RGB: what the camera sees of it directly; combine adds it",                  \
+      .on_demand = 1, .gl_in = SSG_GBUFFER_GL_EMISSION)
 SSG_PORT_ENUM(ssg_gbuffer_output, SSG_GBUFFER_OUT, SSG_GBUFFER_OUTPUTS);
 
 /* The second layer (`back`) is the nearest surface whose depth exceeds depth + depth *

@@ -33,6 +33,7 @@ struct job {
     float *pos[3], *nrm[3], *depth, *alb[3], *dir[3], *env[3]; /* output planes */
     float *back;                  /* the second layer's plane; NULL = nobody reads it */
     float *motion[3];             /* the motion planes; NULL = nobody reads them */
+    float *emit[3];               /* the emission planes; NULL = nobody reads them */
     int w, h;
 };
 
@@ -56,6 +57,7 @@ struct chunk {
     float e[CHUNK], ndh[CHUNK], spec[CHUNK];  /* its irradiance, N.H and (N.H)^s */
     float lr[CHUNK], lg[CHUNK], lb[CHUNK];    /* direct light */
     float tn[CHUNK], back[CHUNK];             /* second layer: where its ray starts, depth */
+    float er[CHUNK], eg[CHUNK], eb[CHUNK];    /* emission (when read) */
 };
 
 /* The rays of pixels [x0, x0 + count) of row y. */
@@ -121,6 +123,12 @@ static void gather(const struct job *j, struct chunk *k)
         k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
         k->sr[i] = spec[0], k->sg[i] = spec[1], k->sb[i] = spec[2];
         k->shin[i] = shin;
+    }
+    for (int i = 0; j->emit[0] && i < k->count; i++) { /* on demand (gbuffer.h) */
+        float e[3] = {0, 0, 0};
+        if (k->hits[i].mesh >= 0)
+            ssg_hit_emission(s, &k->hits[i], e);
+        k->er[i] = e[0], k->eg[i] = e[1], k->eb[i] = e[2];
     }
 }
 
@@ -350,6 +358,10 @@ static void rows(void *user, int y0, int y1)
                 store_plane(j->back + (size_t)y * (size_t)j->w + (size_t)x0, k.back, k.count);
             if (j->motion[0])
                 store_motion(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
+            const float *emitted[3] = {k.er, k.eg, k.eb};
+            for (int a = 0; j->emit[0] && a < 3; a++)
+                store_plane(j->emit[a] + (size_t)y * (size_t)j->w + (size_t)x0, emitted[a],
+                            k.count);
         }
 #if defined(__SSE__)
     _mm_sfence(); /* the streaming stores are visible before the band counts as done */
@@ -372,9 +384,13 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
     }
     j.depth = ssg_image_plane(out[SSG_GBUFFER_OUT_DEPTH], 0);
     j.back = out[SSG_GBUFFER_OUT_BACK] ? out[SSG_GBUFFER_OUT_BACK]->data : NULL;
-    for (int a = 0; a < 3; a++) /* on demand: only when something reads it */
+    for (int a = 0; a < 3; a++) { /* on demand: only when something reads it */
         j.motion[a] = out[SSG_GBUFFER_OUT_MOTION] ? ssg_image_plane(out[SSG_GBUFFER_OUT_MOTION], a)
                                                   : NULL;
+        j.emit[a] = out[SSG_GBUFFER_OUT_EMISSION]
+                        ? ssg_image_plane(out[SSG_GBUFFER_OUT_EMISSION], a)
+                        : NULL;
+    }
     ssg_parallel_rows(j.h, ROWS_PER_BAND, rows, &j);
     return SSG_OK;
 }

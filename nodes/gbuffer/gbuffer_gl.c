@@ -93,6 +93,19 @@ static enum ssg_err motion(const struct ssg_node_ctx *ctx, const struct ssg_io *
     return ssg_gl_pass_end(&p);
 }
 
+/* Emission (gbuffer.h, `emission`, on demand) at the triangle the visibility pass found. */
+static enum ssg_err emission(const struct ssg_node_ctx *ctx, const struct ssg_image *ids,
+                             const struct ssg_io *io)
+{
+    struct ssg_gl_pass p;
+    ssg_gl_pass_begin(&p, ctx, SSG_GBUFFER_GL_EMISSION, NULL);
+    ssg_gl_scene_bind(&p);
+    ssg_gl_input(&p, "ids", ids);
+    ssg_gl_ports(&p, io);
+    ssg_gl_dispatch(&p, ids->width, ids->height);
+    return ssg_gl_pass_end(&p);
+}
+
 enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                 const struct ssg_io *io)
 {
@@ -105,6 +118,8 @@ enum ssg_err ssg_gbuffer_run_gl(const struct ssg_node_ctx *ctx, const void *cons
     enum ssg_err e = ssg_gl_scene_draw(ctx, "gbuffer_raster.glsl", &cam, ids);
     if (!e)
         e = shade(ctx, c, ids, io);
+    if (!e && io->out[SSG_GBUFFER_OUT_EMISSION]) /* on demand, before the peel reuses ids */
+        e = emission(ctx, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_BACK]) /* on demand: only when something reads it */
         e = peel(ctx, &cam, ids, io);
     if (!e && io->out[SSG_GBUFFER_OUT_MOTION]) /* likewise */

@@ -71,11 +71,13 @@ void main()
     float bu = clamp(dot(s, pv) * inv, 0.0, 1.0);
     float bv = clamp(dot(d, qv) * inv, 0.0, 1.0 - bu);
     float w0 = 1.0 - bu - bv;
-    vec3 n = w0 * fetch3(m.normals, i0) + bu * fetch3(m.normals, i1) + bv * fetch3(m.normals, i2);
+    Material mat = scene_material[m.material];
+    vec3 n = shading_normal(m, mat, uvec3(i0, i1, i2), bu, bv,
+                            w0 * fetch3(m.normals, i0) + bu * fetch3(m.normals, i1) +
+                                bv * fetch3(m.normals, i2));
     if (!(length(n) > 0.0))
         n = cross(e1, e2);
     n = normalize(n) * (dot(n, d) > 0.0 ? -1.0 : 1.0);
-    Material mat = scene_material[m.material];
     vec3 albedo = vec3(mat.albedo[0], mat.albedo[1], mat.albedo[2]);
     if (m.uvs >= 0 && mat.texels >= 0) {
         vec2 uv = w0 * fetch2(m.uvs, i0) + bu * fetch2(m.uvs, i1) + bv * fetch2(m.uvs, i2);

@@ -38,7 +38,8 @@ struct job {
     const float *pos[3], *nrm[3], *alb[3]; /* input planes */
     float *direct[3], *bounce[3], *out[3]; /* output planes */
     int w, h;
-    int lit;              /* any light or environment to bounce: 0 = no bounce rays */
+    int lit;              /* any light, environment or emitter to bounce: 0 = no rays */
+    int emitters;         /* a material emits: the paths and the camera see emission */
 };
 
 /* What the rays of one pixel share. */
@@ -65,6 +66,7 @@ struct paths {
     float qx[BATCH], qy[BATCH], qz[BATCH];     /* shadow-ray origin, y raised */
     float ar[BATCH], ag[BATCH], ab[BATCH];     /* albedo at y */
     float er[BATCH], eg[BATCH], eb[BATCH];     /* irradiance at y so far */
+    float lr[BATCH], lg[BATCH], lb[BATCH];     /* radiance y emits (its material's) */
 };
 
 /* Shadow rays, structure of arrays, with what each adds where it is unoccluded. */
@@ -226,6 +228,10 @@ static void gather_hits(const struct job *j, const struct pixel *px, struct path
         k->qz[m] = y[2] + e * (k->nz[m] - w[2]);
         k->ar[m] = a[0], k->ag[m] = a[1], k->ab[m] = a[2];
         k->er[m] = k->eg[m] = k->eb[m] = 0.0f;
+        float le[3] = {0, 0, 0}; /* an emitter sends its own light down the path too */
+        if (j->emitters && ssg_hit_emits(sc, h))
+            ssg_hit_emission(sc, h, le);
+        k->lr[m] = le[0], k->lg[m] = le[1], k->lb[m] = le[2];
     }
 }
 
@@ -298,11 +304,23 @@ static void bounce_paths(const struct job *j, const struct pixel *px, struct pat
         if (j->c->use_env)
             ends_env(j, px, k, s);
         for (int m = 0; m < k->live; m++) {
-            sum[0] += (double)(k->ar[m] * inv_pi * k->er[m]);
-            sum[1] += (double)(k->ag[m] * inv_pi * k->eg[m]);
-            sum[2] += (double)(k->ab[m] * inv_pi * k->eb[m]);
+            sum[0] += (double)(k->ar[m] * inv_pi * k->er[m] + k->lr[m]);
+            sum[1] += (double)(k->ag[m] * inv_pi * k->eg[m] + k->lg[m]);
+            sum[2] += (double)(k->ab[m] * inv_pi * k->eb[m] + k->lb[m]);
         }
     }
+}
+
+/* The radiance the surface at x emits towards the camera: its hit found again along the
+   eye's ray to p (scene units: t = 1 at p; the nearest hit within a hair past it). */
+static void emitted(const struct job *j, const struct pixel *px, float le[3])
+{
+    const float *eye = j->c->eye;
+    float d[3] = {px->p[0] - eye[0], px->p[1] - eye[1], px->p[2] - eye[2]};
+    struct ssg_hit h;
+    ssg_rt_intersect(j->scene->rt, eye, d, 0.0f, 1.001f, &h);
+    if (h.mesh >= 0 && ssg_hit_emits(j->scene, &h))
+        ssg_hit_emission(j->scene, &h, le);
 }
 
 /* All outputs of one pixel. */
@@ -310,8 +328,10 @@ static void shade_pixel(const struct job *j, int x, int y, struct paths *k, stru
 {
     size_t o = (size_t)y * (size_t)j->w + (size_t)x;
     struct pixel px;
-    float dir[3] = {0, 0, 0}, bnc[3] = {0, 0, 0};
+    float dir[3] = {0, 0, 0}, bnc[3] = {0, 0, 0}, le[3] = {0, 0, 0};
     if (setup_pixel(j, x, y, &px)) {
+        if (j->emitters)
+            emitted(j, &px, le);
         double e[3] = {0, 0, 0}, sum[3] = {0, 0, 0};
         lights_direct(j, &px, e);
         if (j->c->use_env)
@@ -327,7 +347,7 @@ static void shade_pixel(const struct job *j, int x, int y, struct paths *k, stru
     for (int i = 0; i < 3; i++) {
         j->direct[i][o] = dir[i];
         j->bounce[i][o] = bnc[i];
-        j->out[i][o] = dir[i] + bnc[i];
+        j->out[i][o] = j->emitters ? dir[i] + bnc[i] + le[i] : dir[i] + bnc[i];
     }
 }
 
@@ -350,7 +370,11 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
     const int w = pos->width, h = pos->height;
     struct job j = {.c = consts, .scene = ctx->scene, .w = w, .h = h};
     const struct ssg_reference_gi_consts *c = consts;
-    j.lit = ctx->scene->light_count > 0 || c->use_env;
+    for (int i = 0; i < ctx->scene->material_count; i++) {
+        const float *e = ctx->scene->materials[i].emission;
+        j.emitters |= e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f;
+    }
+    j.lit = ctx->scene->light_count > 0 || c->use_env || j.emitters;
     for (int i = 0; i < 3; i++) {
         j.pos[i] = ssg_image_plane(pos, i);
         j.nrm[i] = ssg_image_plane(nrm, i);
