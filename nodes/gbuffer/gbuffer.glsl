@@ -151,10 +151,8 @@ void main()
         return;
     }
     // the ray with view z = -1 (gbuffer_cpu.c's make_rays): its parameter is the depth
-    vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
-    vec3 w = vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6],  // world = rot^T view
-                  rot[1] * ray.x + rot[4] * ray.y - rot[7],
-                  rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+    vec2 ray;
+    vec3 w = pixel_ray(p, ray);
     Surface s = surface_at(id, int(texelFetch(ids, ivec3(p, 1), 0).r), ray, w);
     Material m = scene_material[scene_mesh[id].material];
     vec3 e_env = env_mode == 2 ? env_irradiance(s.n) : env_mode == 1 ? env_constant : vec3(0.0);

@@ -25,10 +25,8 @@ void main()
         SSG_STORE1(dst_back, p, 1.0 / 0.0);
         return;
     }
-    vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
-    vec3 w = vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6],  // world = rot^T view
-                  rot[1] * ray.x + rot[4] * ray.y - rot[7],
-                  rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+    vec2 ray;
+    vec3 w = pixel_ray(p, ray);
     Mesh me = scene_mesh[id];
     int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
     vec3 p0 = fetch3(me.positions, vindex[i3]), p1 = fetch3(me.positions, vindex[i3 + 1]);

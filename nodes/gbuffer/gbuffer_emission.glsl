@@ -25,11 +25,8 @@ void main()
     Material m = scene_material[me.material];
     vec3 e = vec3(m.emission[0], m.emission[1], m.emission[2]);
     if (m.emission_texels >= 0 && me.uvs >= 0 && any(greaterThan(e, vec3(0.0)))) {
-        vec2 ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f,
-                        -(float(p.y) + 0.5 - proj.z) * inv_f);
-        vec3 w = vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6], // world = rot^T view
-                      rot[1] * ray.x + rot[4] * ray.y - rot[7],
-                      rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+        vec2 ray;
+        vec3 w = pixel_ray(p, ray);
         int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
         uvec3 v = uvec3(vindex[i3], vindex[i3 + 1], vindex[i3 + 2]);
         vec3 tuv = intersect(w, fetch3(me.positions, v.x), fetch3(me.positions, v.y),

@@ -1,7 +1,17 @@
 // gbuffer_ray.glsl - what the G-buffer's compute passes on GL share (#include'd by
-// gbuffer.glsl and gbuffer_back.glsl after scene.glsl and #pragma ssg_consts, whose `eye`
-// is the camera's world position): the intersection of a pixel's ray with the triangle the
-// rasteriser found there, so that both layers' depths come from the same float operations.
+// gbuffer.glsl, gbuffer_back.glsl and gbuffer_emission.glsl after scene.glsl and #pragma
+// ssg_consts, whose proj, inv_f, rot and eye are the camera's): a pixel's ray and its
+// intersection with the triangle the rasteriser found there, so that every pass's depths
+// and barycentrics come from the same float operations.
+
+// Pixel p's ray (gbuffer_cpu.c's make_rays): its view direction with z = -1 in ray (x, y),
+// and the same in world space (rot^T view) as the result.
+vec3 pixel_ray(ivec2 p, out vec2 ray)
+{
+    ray = vec2((float(p.x) + 0.5 - proj.y) * inv_f, -(float(p.y) + 0.5 - proj.z) * inv_f);
+    return vec3(rot[0] * ray.x + rot[3] * ray.y - rot[6], rot[1] * ray.x + rot[4] * ray.y - rot[7],
+                rot[2] * ray.x + rot[5] * ray.y - rot[8]);
+}
 
 // (t, u, v) of the ray eye + t w in the plane of the triangle (Moller and Trumbore 1997).
 // No inside test: the rasteriser put the pixel centre on this triangle, and where it
