@@ -101,7 +101,7 @@ static int scene_is_dark(const struct ssg_scene *s)
         const float *e = s->materials[i].emission;
         env_lit |= e[0] > 0 || e[1] > 0 || e[2] > 0;
     }
-    return s->light_lines == 0 && !env_lit;
+    return s->light_lines == 0 && s->light_count == 0 && !env_lit;
 }
 
 /* The first live input reading a `lit` port (gbuffer's direct or environment light):

@@ -49,6 +49,11 @@ struct ssg_gltf {
        material's texture keeps its alpha channel as its coverage plane. */
     int texture_count;
     struct ssg_texture *textures;
+    /* KHR_lights_punctual's point and directional lights on the default scene's nodes,
+       in world space, in the order the nodes are visited (glTF's candela and lux taken as
+       ssgraph's W/sr and W/m^2, one to one). */
+    int light_count;
+    struct ssg_light *lights;
     int has_camera; /* 1 = a node of the default scene carries a perspective camera */
     struct ssg_camera camera;  /* that node's camera in world space (yfov in degrees) */
     /* What the file uses that no path of ssgraph reads (docs/scenes.md's feature table),

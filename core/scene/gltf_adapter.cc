@@ -153,6 +153,7 @@ class Flattener {
     const tinygltf::Model &m;
     std::vector<Prim> prims;
     gltf_adapter::Materials mats; /* its materials, textures and what is not read */
+    std::vector<ssg_light> lights; /* KHR_lights_punctual's, world space */
     bool has_camera = false;
     ssg_camera camera{};
     size_t visits = 0; /* node instances seen, against shared subtrees blowing up */
@@ -160,6 +161,7 @@ class Flattener {
     void visit(int node, const Mat4 &parent, int depth);
     void add_primitive(const tinygltf::Primitive &p, const Mat4 &world, const std::string &where);
     void add_camera(int index, const Mat4 &world);
+    void add_light(const tinygltf::Node &node, const Mat4 &world);
     void read_tangents(const tinygltf::Primitive &p, Prim &out, const Mat4 &world,
                        bool mirrored, const std::string &where);
 };
@@ -173,8 +175,8 @@ void Flattener::run()
         if (x == "KHR_texture_transform" || x == "KHR_mesh_quantization" ||
             x == "KHR_materials_emissive_strength")
             continue;
-        mats.ignored.add(x == "KHR_lights_punctual" ? "lights (KHR_lights_punctual)"
-                                               : "extension " + printable(x), "");
+        if (x != "KHR_lights_punctual") /* read; its spot lights are listed one by one */
+            mats.ignored.add("extension " + printable(x), "");
     }
     std::vector<int> roots;
     if (!m.scenes.empty()) {
@@ -210,6 +212,7 @@ void Flattener::visit(int index, const Mat4 &parent, int depth)
             add_primitive(mesh.primitives[p], world,
                           "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p));
     }
+    add_light(node, world);
     if (node.camera >= 0 && (size_t)node.camera < m.cameras.size() && !has_camera &&
         m.cameras[(size_t)node.camera].type == "perspective")
         add_camera(node.camera, world);
@@ -299,6 +302,51 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
    silently vanished left the user framing the bounds without knowing why. A field of
    view past 1 to 179 degrees is refused too (the scene format's range). */
 
+/* A node's KHR_lights_punctual light (its extension's "light" index): a point light at
+   the node's origin, a directional one along its -Z axis; colour (default white) and
+   intensity as given, glTF's candela or lux read as ssgraph's W/sr or W/m^2. A spot light
+   and a light's range are not read yet: they are listed as ignored. */
+void Flattener::add_light(const tinygltf::Node &node, const Mat4 &w)
+{
+    auto ext = node.extensions.find("KHR_lights_punctual");
+    if (ext == node.extensions.end() || !ext->second.Has("light"))
+        return;
+    int index = ext->second.Get("light").GetNumberAsInt();
+    if (index < 0 || (size_t)index >= m.lights.size())
+        fail("a node names KHR_lights_punctual light " + std::to_string(index) +
+             ", which does not exist");
+    const tinygltf::Light &src = m.lights[(size_t)index];
+    std::string who = src.name.empty() ? "light " + std::to_string(index)
+                                       : "'" + model_adapter::printable(src.name) + "'";
+    if (src.type == "spot") {
+        mats.ignored.add("spot lights (KHR_lights_punctual spot)", who);
+        return;
+    }
+    if (src.type != "point" && src.type != "directional")
+        fail("KHR_lights_punctual light " + who + " has type '" +
+             model_adapter::printable(src.type) + "' (expected point, spot or directional)");
+    if (src.range > 0)
+        mats.ignored.add("light ranges (KHR_lights_punctual range: a light falls off as "
+                         "1/d^2 without a cut-off)", who);
+    ssg_light l{};
+    l.kind = src.type == "point" ? SSG_LIGHT_POINT : SSG_LIGHT_DIRECTIONAL;
+    double axis[3] = {-w[8], -w[9], -w[10]};
+    double len = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    if (l.kind == SSG_LIGHT_DIRECTIONAL && !(len > 0 && std::isfinite(len)))
+        fail("directional light " + who + ": its node's transform leaves it no direction");
+    for (int i = 0; i < 3; i++) {
+        l.position[i] = (float)w[12 + i];
+        l.direction[i] = l.kind == SSG_LIGHT_DIRECTIONAL ? (float)(axis[i] / len) : 0.0f;
+        l.color[i] = src.color.size() == 3 ? (float)src.color[(size_t)i] : 1.0f;
+    }
+    l.intensity = (float)src.intensity;
+    if (!(l.intensity >= 0) || !std::isfinite(l.intensity) ||
+        !(l.color[0] >= 0 && l.color[1] >= 0 && l.color[2] >= 0) ||
+        !std::isfinite(l.color[0] + l.color[1] + l.color[2]))
+        fail("light " + who + ": colour and intensity must be finite and >= 0");
+    lights.push_back(l);
+}
+
 void Flattener::add_camera(int index, const Mat4 &w)
 {
     const tinygltf::Camera &cam = m.cameras[(size_t)index];
@@ -360,7 +408,7 @@ void Flattener::read_tangents(const tinygltf::Primitive &p, Prim &out, const Mat
 ssg_gltf *Flattener::to_c() const
 {
     return model_adapter::to_c(prims, mats.materials, mats.textures,
-                               has_camera ? &camera : nullptr, mats.ignored);
+                               has_camera ? &camera : nullptr, mats.ignored, lights);
 }
 
 /* tinygltf reads the buffers and images a glTF names through this: the same rules as

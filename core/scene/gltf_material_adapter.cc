@@ -158,7 +158,8 @@ int Materials::texture(int gltf_index, bool keep_alpha, bool srgb)
     size_t px = (size_t)img.width * (size_t)img.height;
     if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 ||
         (img.bits != 8 && img.bits != 16) || img.image.size() < px * (size_t)img.component * bytes)
-        fail("image " + std::to_string(source) + " ('" + img.uri + "') was not decoded");
+        fail("image " + std::to_string(source) + " ('" + img.uri + "') was not decoded: "
+             "the file is missing or not an image tinygltf reads (PNG, JPEG, ...)");
     float lut[256];
     for (int i = 0; i < 256; i++)
         lut[i] = srgb ? srgb_to_linear((float)i / 255.0f) : (float)i / 255.0f;

@@ -66,7 +66,7 @@ std::string Ignored::text() const
 
 ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_material> &materials,
                const std::vector<Tex> &textures, const ssg_camera *camera,
-               const Ignored &ignored)
+               const Ignored &ignored, const std::vector<ssg_light> &lights)
 {
     ssg_gltf *g = static_cast<ssg_gltf *>(std::calloc(1, sizeof *g));
     if (!g)
@@ -74,6 +74,10 @@ ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_materi
     try {
         g->meshes = static_cast<ssg_mesh *>(std::calloc(prims.size() + 1, sizeof(ssg_mesh)));
         g->materials = c_array(materials);
+        g->lights = c_array(lights);
+        g->light_count = (int)lights.size();
+        if (!lights.empty() && !g->lights)
+            throw std::bad_alloc();
         g->textures =
             static_cast<ssg_texture *>(std::calloc(textures.size() + 1, sizeof(ssg_texture)));
         if (!g->meshes || !g->textures || (!materials.empty() && !g->materials))
@@ -123,6 +127,7 @@ void free_model(ssg_gltf *g)
     }
     std::free(g->meshes);
     std::free(g->materials);
+    std::free(g->lights);
     std::free(g->textures);
     std::free(g);
 }

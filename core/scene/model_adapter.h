@@ -56,7 +56,7 @@ class Ignored {
    having freed what it made. */
 ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_material> &materials,
                const std::vector<Tex> &textures, const ssg_camera *camera,
-               const Ignored &ignored);
+               const Ignored &ignored, const std::vector<ssg_light> &lights = {});
 
 /* Frees a struct ssg_gltf and every array it holds (ssg_gltf_destroy's body). */
 void free_model(ssg_gltf *g);

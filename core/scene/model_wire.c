@@ -86,6 +86,8 @@ static void put_model(struct sink *k, const struct ssg_gltf *g)
         if (t->alpha)
             put(k, t->alpha, (size_t)t->width * (size_t)t->height * sizeof(float));
     }
+    put_int(k, g->light_count);
+    put(k, g->lights, (size_t)g->light_count * sizeof *g->lights);
     put_int(k, g->has_camera);
     put(k, &g->camera, sizeof g->camera);
     put(k, g->ignored, sizeof g->ignored);
@@ -258,7 +260,7 @@ static int references_hold(struct ssg_wire *w, struct ssg_gltf *g)
 
 static int get_model(struct ssg_wire *w, struct ssg_gltf *g)
 {
-    long long meshes, materials, camera;
+    long long meshes, materials, camera, lights;
     if (!get_int(w, 0, INT_MAX - 1, &meshes))
         return 0;
     if (!(g->meshes = calloc((size_t)meshes + 1, sizeof *g->meshes)))
@@ -270,7 +272,14 @@ static int get_model(struct ssg_wire *w, struct ssg_gltf *g)
         !get_array(w, (size_t)materials, sizeof *g->materials, (void **)&g->materials))
         return 0;
     g->material_count = (int)materials;
-    if (!get_textures(w, g) || !get_int(w, 0, 1, &camera) ||
+    if (!get_textures(w, g) || !get_int(w, 0, INT_MAX - 1, &lights) ||
+        !get_array(w, (size_t)lights, sizeof *g->lights, (void **)&g->lights))
+        return 0;
+    g->light_count = (int)lights;
+    for (int i = 0; i < g->light_count; i++)
+        if (g->lights[i].kind != SSG_LIGHT_POINT && g->lights[i].kind != SSG_LIGHT_DIRECTIONAL)
+            return fail(w, SSG_WIRE_CORRUPT);
+    if (!get_int(w, 0, 1, &camera) ||
         !get(w, &g->camera, sizeof g->camera) || !get(w, g->ignored, sizeof g->ignored))
         return 0;
     g->ignored[sizeof g->ignored - 1] = 0;

@@ -208,6 +208,41 @@ static void build_light(struct scene_loader *l, const struct scene_entity *e)
         li->direction[i] = a->direction[i] / len;
 }
 
+/* The model's own lights (glTF KHR_lights_punctual), placed by the mesh line's transform
+   as its triangles are (a position scaled, turned and moved; a direction scaled and turned),
+   after the scene's light lines. Dropped with `lights=false`, and when a lights file
+   relights the scene. */
+static void import_lights(struct scene_loader *l, const struct scene_entity *e,
+                          const struct ssg_gltf *g)
+{
+    const struct mesh_args *a = e->args;
+    struct ssg_scene *s = l->scene;
+    if (!a->lights || s->lights_path[0])
+        return;
+    float r[9];
+    ssg_euler_matrix(a->rotate, r);
+    for (int k = 0; k < g->light_count; k++) {
+        struct ssg_light *grown = reserve(l, s->lights, s->light_count, &l->light_cap,
+                                          sizeof *s->lights);
+        if (!grown)
+            return;
+        s->lights = grown;
+        struct ssg_light *li = &s->lights[s->light_count++];
+        *li = g->lights[k];
+        float p[3], d[3], len = 0.0f;
+        for (int i = 0; i < 3; i++)
+            p[i] = li->position[i] * a->scale[i], d[i] = li->direction[i] * a->scale[i];
+        for (int i = 0; i < 3; i++) {
+            li->position[i] = r[3 * i] * p[0] + r[3 * i + 1] * p[1] + r[3 * i + 2] * p[2] +
+                              a->translate[i];
+            li->direction[i] = r[3 * i] * d[0] + r[3 * i + 1] * d[1] + r[3 * i + 2] * d[2];
+            len += li->direction[i] * li->direction[i];
+        }
+        for (int i = 0; i < 3 && len > 0.0f; i++)
+            li->direction[i] /= sqrtf(len);
+    }
+}
+
 /* Appends a mesh (taking over its arrays); frees them when the scene cannot grow. */
 static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
 {
@@ -430,6 +465,7 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
     struct ssg_scene_model *model = add_model(l, e, tris);
     if (model)
         snprintf(model->ignored, sizeof model->ignored, "%s", g->ignored);
+    import_lights(l, e, g);
     warn_ignored(l, e, a->file, g->ignored);
     for (int i = 0; i < g->mesh_count && !l->first; i++) {
         struct ssg_mesh mesh = g->meshes[i];
@@ -526,6 +562,7 @@ void ssg_scene_build(struct scene_loader *l)
     struct ssg_scene *s = l->scene;
     l->material_of = ssg_arena_alloc(&l->arena, sizeof(int) * (size_t)(l->count + 1));
     s->lights = calloc((size_t)l->count + 1, sizeof *s->lights);
+    l->light_cap = l->count + 1;
     if (!l->material_of || !s->lights) {
         ssg_scene_fail(l, SSG_E_NOMEM);
         return;

@@ -78,6 +78,7 @@ struct mesh_args {
     char file[SSG_STR_MAX];
     char material[SSG_NAME_MAX]; /* "" = the model file's own materials */
     float translate[3], rotate[3], scale[3];
+    int lights;                  /* 1 = the file's own lights join the scene's */
 };
 
 #define SCENE_MAX_ARGS 8
@@ -109,7 +110,7 @@ struct scene_loader {
     struct scene_entity *ents;
     int count;
     struct ssg_scene *scene;        /* being filled by scene_build.c */
-    int mesh_cap, material_cap, texture_cap, model_cap;
+    int mesh_cap, material_cap, texture_cap, model_cap, light_cap;
     int default_material;           /* index in scene->materials, -1 until first needed */
     int *material_of;               /* entity index -> scene material index */
     long long triangles;            /* in the scene so far, against SSG_SCENE_MAX_TRIANGLES */

@@ -148,6 +148,11 @@ static const struct ssg_param_desc mesh_params[] = {
          "about x, then y, then z (world axes), before translate"),
     VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first "
          "(0.001 for a model in millimetres; `ssgraph check` suggests one)"),
+    {.name = "lights", SSG_FIELD_BOOL(struct mesh_args, lights), .def = 1,
+     .help = "true: the file's own lights (glTF KHR_lights_punctual point and directional "
+             "lights, placed by the mesh line's transform) join the scene's light lines; "
+             "false: they are dropped (write your own lines to override them). A lights "
+             "file (--lights) replaces them too"},
 };
 
 #define KIND(nm, params, args, text) {nm, SSG_TABLE(params), sizeof(struct args), text}
@@ -242,7 +247,10 @@ static const struct {
      "test_emission"},
     {"vertex colours", "not read (COLOR_0)", "not read", "-", "-"},
     {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
-    {"lights", "not read (KHR_lights_punctual)", "not read", "-", "-"},
+    {"lights", "KHR_lights_punctual point and directional lights (candela and lux read as "
+     "W/sr and W/m^2); spot lights and `range` not read yet", "not read", "every path, as "
+     "the scene's own lights; the mesh line's lights=false drops them, a lights file "
+     "replaces them", "test_gltf_lights"},
     {"camera", "the default scene's first perspective camera", "not read", "the scene's "
      "camera when it has no camera line", "test_gltf"},
 };

@@ -1,0 +1,99 @@
+/* test_gltf_lights.c - a glTF file's own lights (KHR_lights_punctual, issue 45):
+ * - tests/fixtures/gltf_lights.scene (the file's point and directional lights, and a spot
+ *   light that is not read yet) renders as gltf_lights_lines.scene, which drops the file's
+ *   lights (lights=false) and writes the same two as scene lines: the G-buffer's direct
+ *   light and direct_light's shadowed one agree to float rounding;
+ * - the file's lights are read in world space (the point's node translation, the
+ *   directional node's -Z turned straight down), a spot light is listed as not read, with a
+ *   warning at the mesh line;
+ * - a lights file (--lights) replaces them as it replaces the scene's own lines. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "check.h"
+#include "scene/scene.h"
+#include "ssgraph.h"
+
+static char tmp[512];
+
+static struct ssg_image *render(const char *scene, const char *label, const char *layer)
+{
+    char dir[600], path[700];
+    snprintf(dir, sizeof dir, "%s/%s", tmp, label);
+    struct ssg_overrides ov = {.scene = scene, .seed = -1};
+    struct ssg_run_options opt = {.out_dir = dir};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load("tests/fixtures/gltf_lights.graph", &ov, &g, &d);
+    if (!e)
+        e = ssg_graph_run(g, &opt, &d);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+    CHECK_EQ(e, SSG_OK);
+    snprintf(path, sizeof path, "%s/lights.exr", dir);
+    struct ssg_image *im = NULL;
+    CHECK_EQ(ssg_image_read(path, layer, &im, &d), SSG_OK);
+    return im;
+}
+
+static void check_same_image(const char *layer)
+{
+    struct ssg_image *a = render("tests/fixtures/gltf_lights.scene", "file", layer);
+    struct ssg_image *b = render("tests/fixtures/gltf_lights_lines.scene", "lines", layer);
+    double worst = 0, brightest = 0;
+    for (size_t i = 0; a && b && i < 3 * (size_t)a->width * a->height; i++) {
+        worst = fmax(worst, fabs((double)a->data[i] - b->data[i]));
+        brightest = fmax(brightest, a->data[i]);
+    }
+    fprintf(stderr, "%s: the file's lights against the same lines: largest difference %.3g "
+            "(brightest %.3g)\n", layer ? layer : "direct_light", worst, brightest);
+    CHECK(a && b && brightest > 0.1);
+    CHECK(worst <= 1e-6 * brightest);
+    ssg_image_destroy(&a);
+    ssg_image_destroy(&b);
+}
+
+static void check_lights_read(void)
+{
+    struct ssg_scene *s = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_scene_load("tests/fixtures/gltf_lights.scene", 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    CHECK(d.warning_count == 1 &&
+          strstr(d.warnings[0].message, "spot lights (KHR_lights_punctual spot)"));
+    if (s) {
+        CHECK_EQ(s->light_count, 2);
+        CHECK(s->light_count == 2 && s->lights[0].kind == SSG_LIGHT_POINT &&
+              s->lights[1].kind == SSG_LIGHT_DIRECTIONAL);
+        if (s->light_count == 2) {
+            CHECK_NEAR(s->lights[0].position[1], 1.2, 1e-6);
+            CHECK_NEAR(s->lights[0].color[2], 0.25, 0);
+            CHECK_NEAR(s->lights[0].intensity, 2, 0);
+            CHECK_NEAR(s->lights[1].direction[1], -1, 1e-6);
+            CHECK_NEAR(s->lights[1].intensity, 0.5, 0);
+        }
+        CHECK(strstr(s->models[0].ignored, "spot lights (KHR_lights_punctual spot): 1 use: "
+                     "'spot'") != NULL);
+    }
+    ssg_scene_destroy(&s);
+    /* a lights file relights the scene: the file's lights go with its own lines */
+    d = (struct ssg_diags){0};
+    CHECK_EQ(ssg_scene_load_lit("tests/fixtures/gltf_lights.scene", "examples/lights/sun.scene",
+                                1, &s, &d), SSG_OK);
+    if (s)
+        CHECK_EQ(s->light_count, 1);
+    ssg_scene_destroy(&s);
+}
+
+int main(void)
+{
+    const char *dir = getenv("SSG_TMP");
+    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_gltf_lights");
+    mkdir(tmp, 0755);
+    check_lights_read();
+    check_same_image(NULL);
+    check_same_image("gbuffer_direct");
+    return check_report();
+}
