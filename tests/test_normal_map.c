@@ -5,7 +5,8 @@
  *   quad is albedo / pi x the cosine of the tilted normal (0.9896, where the quad's own
  *   normal gives 0.7071), and its normal is the tilted one, on the CPU and on GL alike;
  *   with the file's own tangents (normal_map_tangents.scene: TANGENT (0, 0, 1, 1)) the same
- *   map tilts it towards +z instead;
+ *   map tilts it towards +z instead; a scene file's material with the same map as a PNG
+ *   (normal_map_lines.scene, read as data, not sRGB) tilts it as the glTF does;
  * - ssg_mesh_tangents: the quad gets the tangent +x and bitangent sign -1 (cross(n, t) =
  *   -z, and v grows along +z); a plane shape facing +z and a UV sphere get unit tangents
  *   orthogonal to their normals, along the direction their u grows. */
@@ -15,6 +16,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "io/imageio.h"
 #include "scene/scene.h"
 #include "scene/scene_shapes.h"
 #include "ssgraph.h"
@@ -143,6 +145,16 @@ static void check_tangents(void)
     ssg_mesh_free(&sphere);
 }
 
+/* A normal map must be data a reader gives as stored: anything else is refused, naming it. */
+static void check_not_data(void)
+{
+    const char *bad = "tests/fixtures/garbage.png";
+    struct ssg_image *im = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_image_read_data(bad, &im, &d), SSG_E_IMAGE);
+    CHECK(im == NULL && d.count > 0 && strstr(d.items[0].file, "garbage.png") != NULL);
+}
+
 int main(void)
 {
     const char *dir = getenv("SSG_TMP");
@@ -156,6 +168,11 @@ int main(void)
     check_frame("made", made, "gl", x, z);
     check_frame("given", given, "cpu", z, x);
     check_frame("given", given, "gl", z, x);
+    /* a scene file's material with the same map as a PNG: the plane's uvs give t = +x */
+    const char *lines = "tests/fixtures/normal_map_lines.scene";
+    check_frame("lines", lines, "cpu", x, z);
+    check_frame("lines", lines, "gl", x, z);
+    check_not_data();
     check_tangents();
     return check_report();
 }

@@ -18,7 +18,8 @@ enum ssg_image_format ssg_image_format_of(int fd);
    (after the checks of exr_guard.h, which such a file has passed then). */
 enum ssg_err ssg_exr_read_fd(const char *path, int fd, const char *layer,
                              struct ssg_image **out, int *elsewhere, struct ssg_diags *diags);
-enum ssg_err ssg_png_read_fd(const char *path, int fd, struct ssg_image **out,
+/* data 1: the stored values scaled to [0, 1], never sRGB-decoded (a normal map). */
+enum ssg_err ssg_png_read_fd(const char *path, int fd, int data, struct ssg_image **out,
                              struct ssg_diags *diags);
 
 /* 1 when a file of file_bytes can hold w x h pixels of nch floats; else 0, reported

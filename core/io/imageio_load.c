@@ -227,7 +227,7 @@ static enum ssg_err read_png(const char *path, int fd, const char *layer,
                       "(unnamed))", layer);
         return SSG_E_CHANNELS;
     }
-    return ssg_png_read_fd(path, fd, out, diags);
+    return ssg_png_read_fd(path, fd, 0, out, diags);
 }
 
 enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
@@ -255,6 +255,30 @@ enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_imag
         return e;
     const struct ssg_oiio_api *api = oiio(diags, path);
     return api ? api->image_read(path, layer, out, diags) : SSG_E_BACKEND;
+}
+
+enum ssg_err ssg_image_read_data(const char *path, struct ssg_image **out,
+                                 struct ssg_diags *diags)
+{
+    *out = NULL;
+    int fd = -1, elsewhere = 0;
+    enum ssg_image_format format = SSG_FORMAT_OTHER;
+    enum ssg_err e = open_image(path, &fd, &format, diags);
+    if (e)
+        return e;
+    if (format == SSG_FORMAT_EXR)
+        e = ssg_exr_read_fd(path, fd, NULL, out, &elsewhere, diags);
+    else if (format == SSG_FORMAT_PNG)
+        e = ssg_png_read_fd(path, fd, 1, out, diags);
+    close(fd);
+    if (format == SSG_FORMAT_OTHER || elsewhere) {
+        ssg_diag_file(diags, SSG_E_IMAGE, path, "a data texture (a normal map) must be a PNG "
+                      "or an EXR whose values ssgraph reads as stored (this file is neither, "
+                      "or an EXR compression only OpenImageIO decodes)");
+        ssg_image_destroy(out);
+        return SSG_E_IMAGE;
+    }
+    return e;
 }
 
 enum ssg_err ssg_exr_meta_read(const char *path, struct ssg_exr_meta *meta, int *found,

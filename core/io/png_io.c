@@ -33,6 +33,7 @@ enum { PNG_LEVEL = 1 };
 /* libpng's errors come here: the message is kept, then libpng's jump back. */
 struct png_state {
     char why[256];
+    int data;  /* reading: 1 = the stored values (a normal map), never sRGB-decoded */
     FILE *f; /* writing: where the bytes go */
 };
 
@@ -191,6 +192,8 @@ static void read_header(png_structp png, png_infop info, struct png_shape *p)
     png_read_info(png, info);
     /* As OpenImageIO: sRGB unless a gAMA chunk without an sRGB chunk says otherwise. */
     p->srgb = png_get_sRGB(png, info, &srgb_intent) || !png_get_gAMA(png, info, &gamma);
+    const struct png_state *s = png_get_error_ptr(png);
+    p->srgb = s && s->data ? 0 : p->srgb; /* data: values as stored, scaled to [0, 1] */
     png_set_expand(png);
     if (png_get_bit_depth(png, info) == 16)
         png_set_swap(png); /* PNG is big-endian */
@@ -274,7 +277,7 @@ static int decode_png(const char *path, FILE *f, long long file_bytes, struct ss
     return ok;
 }
 
-enum ssg_err ssg_png_read_fd(const char *path, int fd, struct ssg_image **out,
+enum ssg_err ssg_png_read_fd(const char *path, int fd, int data, struct ssg_image **out,
                              struct ssg_diags *diags)
 {
     int own = dup(fd); /* fclose closes its own descriptor; the caller closes fd */
@@ -285,7 +288,7 @@ enum ssg_err ssg_png_read_fd(const char *path, int fd, struct ssg_image **out,
             close(own);
         return SSG_E_IO;
     }
-    struct png_state s = {.why = ""};
+    struct png_state s = {.why = "", .data = data};
     struct stat st;
     enum ssg_err code = SSG_OK;
     long long bytes = fstat(fd, &st) == 0 ? (long long)st.st_size : 0;

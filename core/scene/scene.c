@@ -284,6 +284,7 @@ static void check_entity(struct scene_loader *l, struct scene_entity *e)
     case SK_CAMERA: check_camera(l, e); break;
     case SK_MATERIAL:
         check_file(l, e, "texture", ((const struct material_args *)e->args)->texture);
+        check_file(l, e, "normal_map", ((const struct material_args *)e->args)->normal_map);
         if (((const struct material_args *)e->args)->alpha_mode == SSG_ALPHA_BLEND)
             ssg_diag_warn(l->diags, SSG_E_VALUE, arg_loc(e, "alpha_mode"), "material '%.*s': "
                           "alpha_mode=blend is drawn as mask at cutoff 0.5 (no pass of ssgraph "

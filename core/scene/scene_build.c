@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/imageio.h"
 #include "scene/distance.h"
 #include "scene/env.h"
 #include <errno.h>
@@ -22,7 +23,7 @@
 
 /* The array, grown when needed to hold count + 1 items of `size` bytes; NULL (the
  * array left as it was) when out of memory. */
-static void *reserve(struct scene_loader *l, void *array, int count, int *cap, size_t size)
+void *ssg_scene_reserve(struct scene_loader *l, void *array, int count, int *cap, size_t size)
 {
     if (count < *cap)
         return array;
@@ -41,7 +42,7 @@ static void *reserve(struct scene_loader *l, void *array, int count, int *cap, s
 static struct ssg_material *new_material(struct scene_loader *l, const char *name)
 {
     struct ssg_scene *s = l->scene;
-    struct ssg_material *grown = reserve(l, s->materials, s->material_count, &l->material_cap,
+    struct ssg_material *grown = ssg_scene_reserve(l, s->materials, s->material_count, &l->material_cap,
                                          sizeof *s->materials);
     if (!grown)
         return NULL;
@@ -73,104 +74,6 @@ static int default_material(struct scene_loader *l)
     return l->default_material;
 }
 
-/* Adds a texture; takes ownership of rgb and alpha (NULL = opaque). Returns its index or
-   -1. */
-static int add_texture(struct scene_loader *l, int width, int height, float *rgb, float *alpha)
-{
-    struct ssg_scene *s = l->scene;
-    struct ssg_texture *grown = reserve(l, s->textures, s->texture_count, &l->texture_cap,
-                                        sizeof *s->textures);
-    if (!grown) {
-        free(rgb);
-        free(alpha);
-        return -1;
-    }
-    s->textures = grown;
-    s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb, alpha};
-    return s->texture_count++;
-}
-
-/* A texture with a NaN or infinite pixel would put NaN into every image it shades: it is
-   refused with the file and the first such pixel. */
-static int texture_finite(struct scene_loader *l, const char *path, const struct ssg_image *im)
-{
-    size_t px = (size_t)im->width * (size_t)im->height;
-    for (int c = 0; c < im->channels; c++) {
-        const float *plane = ssg_image_plane(im, c);
-        for (size_t i = 0; i < px; i++) {
-            if (isfinite(plane[i]))
-                continue;
-            ssg_diag_file(l->diags, SSG_E_IMAGE, path, "pixel (%zu, %zu) channel %d is %s "
-                          "(expected finite colours)", i % (size_t)im->width,
-                          i / (size_t)im->width, c, isnan(plane[i]) ? "NaN" : "infinite");
-            ssg_scene_fail(l, SSG_E_IMAGE);
-            return 0;
-        }
-    }
-    return 1;
-}
-
-/* The alpha plane of an image with one (gray + alpha, RGBA: its last channel), clamped to
-   [0, 1]; NULL without one, or out of memory (*nomem set). */
-static float *alpha_plane(const struct ssg_image *im, int *nomem)
-{
-    if (im->channels != 2 && im->channels != 4)
-        return NULL;
-    size_t px = (size_t)im->width * (size_t)im->height;
-    float *alpha = malloc(px * sizeof(float));
-    *nomem = !alpha;
-    const float *plane = ssg_image_plane(im, im->channels - 1);
-    for (size_t i = 0; alpha && i < px; i++)
-        alpha[i] = plane[i] > 0.0f ? (plane[i] < 1.0f ? plane[i] : 1.0f) : 0.0f;
-    return alpha;
-}
-
-/* Reads an image file into an interleaved RGB texture; gray images fill all three. A
-   material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
-   which names its own rules. keep_alpha: a masked material's texture keeps its alpha
-   channel as the coverage plane. */
-static int load_texture_file(struct scene_loader *l, const char *path, int finite_only,
-                             int keep_alpha)
-{
-    struct ssg_image *im = NULL;
-    enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
-    if (e) {
-        ssg_scene_fail(l, e);
-        return -1;
-    }
-    if (finite_only && !texture_finite(l, path, im)) {
-        ssg_image_destroy(&im);
-        return -1;
-    }
-    size_t px = (size_t)im->width * (size_t)im->height;
-    float *rgb = malloc(px * 3 * sizeof(float));
-    int nomem = 0;
-    float *alpha = keep_alpha ? alpha_plane(im, &nomem) : NULL;
-    if (!rgb || nomem) {
-        free(rgb);
-        ssg_image_destroy(&im);
-        ssg_scene_fail(l, SSG_E_NOMEM);
-        return -1;
-    }
-    for (int c = 0; c < 3; c++) {
-        const float *plane = ssg_image_plane(im, im->channels >= 3 ? c : 0);
-        for (size_t i = 0; i < px; i++)
-            rgb[3 * i + (size_t)c] = plane[i];
-    }
-    int width = im->width, height = im->height;
-    ssg_image_destroy(&im);
-    return add_texture(l, width, height, rgb, alpha);
-}
-
-/* The same for a path written in an entity, relative to its file. */
-static int load_texture(struct scene_loader *l, const struct scene_entity *from,
-                        const char *rel, int finite_only, int keep_alpha)
-{
-    char path[1024];
-    ssg_scene_path(from, rel, path, sizeof path);
-    return load_texture_file(l, path, finite_only, keep_alpha);
-}
-
 static void build_material(struct scene_loader *l, int ent)
 {
     const struct scene_entity *e = &l->ents[ent];
@@ -188,9 +91,12 @@ static void build_material(struct scene_loader *l, int ent)
     m->alpha_cutoff = m->alpha_mode == SSG_ALPHA_BLEND ? 0.5f : a->alpha_cutoff;
     m->opacity = a->opacity;
     memcpy(m->emission, a->emission, sizeof m->emission);
+    m->normal_scale = a->normal_scale;
     l->material_of[ent] = l->scene->material_count - 1;
     if (a->texture[0])
-        m->texture = load_texture(l, e, a->texture, 1, ssg_material_masked(m));
+        m->texture = ssg_scene_load_texture(l, e, a->texture, 1, ssg_material_masked(m));
+    if (a->normal_map[0])
+        m->normal_texture = ssg_scene_load_normal_map(l, e, a->normal_map);
 }
 
 static void build_light(struct scene_loader *l, const struct scene_entity *e)
@@ -222,7 +128,7 @@ static void import_lights(struct scene_loader *l, const struct scene_entity *e,
     float r[9];
     ssg_euler_matrix(a->rotate, r);
     for (int k = 0; k < g->light_count; k++) {
-        struct ssg_light *grown = reserve(l, s->lights, s->light_count, &l->light_cap,
+        struct ssg_light *grown = ssg_scene_reserve(l, s->lights, s->light_count, &l->light_cap,
                                           sizeof *s->lights);
         if (!grown)
             return;
@@ -248,7 +154,7 @@ static void add_mesh(struct scene_loader *l, struct ssg_mesh *mesh)
 {
     struct ssg_scene *s = l->scene;
     struct ssg_mesh *grown =
-        reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
+        ssg_scene_reserve(l, s->meshes, s->mesh_count, &l->mesh_cap, sizeof *s->meshes);
     if (!grown) {
         ssg_mesh_free(mesh);
         return;
@@ -262,7 +168,7 @@ static struct ssg_scene_model *add_model(struct scene_loader *l, const struct sc
                                          long long triangles)
 {
     struct ssg_scene *s = l->scene;
-    struct ssg_scene_model *grown = reserve(l, s->models, s->model_count, &l->model_cap,
+    struct ssg_scene_model *grown = ssg_scene_reserve(l, s->models, s->model_count, &l->model_cap,
                                             sizeof *s->models);
     if (!grown)
         return NULL;
@@ -341,30 +247,6 @@ static void build_shape(struct scene_loader *l, const struct scene_entity *e)
     add_mesh(l, &mesh);
 }
 
-/* A texture an Assimp material names (relative to the model file), loaded like a scene
-   material's; -1 with a message at the mesh line naming the model, the material and the
-   texture when it is embedded or cannot be read. */
-static int model_texture(struct scene_loader *l, const struct scene_entity *e,
-                         const char *model, const struct ssg_gltf_material *gm)
-{
-    char path[1024];
-    const char *problem = NULL;
-    if (gm->texture_file[0] == '*') {
-        problem = "is embedded in the model file (not supported: give the mesh a material=)";
-    } else {
-        ssg_path_resolve(model, gm->texture_file, path, sizeof path);
-        if (access(path, R_OK) != 0)
-            problem = strerror(errno);
-    }
-    if (problem) {
-        ssg_diag_at(l->diags, SSG_E_IO, e->at[0], "%s: material '%s' names texture '%s', "
-                    "which cannot be read (%s)", model, gm->name, gm->texture_file, problem);
-        ssg_scene_fail(l, SSG_E_IO);
-        return -1;
-    }
-    return load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
-}
-
 /* Brings the model's materials and textures into the scene; returns the scene index of its
  * material 0 (materials keep their order). */
 static int import_gltf_materials(struct scene_loader *l, const struct scene_entity *e,
@@ -373,7 +255,7 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
     const char *file = ((const struct mesh_args *)e->args)->file;
     int first_texture = l->scene->texture_count, first = l->scene->material_count;
     for (int i = 0; i < g->texture_count; i++) {
-        add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb,
+        ssg_scene_add_texture(l, g->textures[i].width, g->textures[i].height, g->textures[i].rgb,
                     g->textures[i].alpha);
         g->textures[i].rgb = g->textures[i].alpha = NULL; /* now the scene's */
     }
@@ -399,7 +281,7 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
         m->emission_texture =
             gm->emission_texture >= 0 ? first_texture + gm->emission_texture : -1;
         if (gm->texture < 0 && gm->texture_file[0])
-            m->texture = model_texture(l, e, model, gm);
+            m->texture = ssg_scene_model_texture(l, e, model, gm);
     }
     return first;
 }
@@ -546,7 +428,7 @@ static void build_environment(struct scene_loader *l)
     for (int i = 0; i < l->count; i++) {
         const struct environment_args *a = l->ents[i].args;
         if (l->ents[i].kind == SK_ENVIRONMENT && a->image[0]) {
-            l->scene->environment.image = load_texture(l, &l->ents[i], a->image, 0, 0);
+            l->scene->environment.image = ssg_scene_load_texture(l, &l->ents[i], a->image, 0, 0);
             ssg_scene_path(&l->ents[i], a->image, path, sizeof path);
         }
     }

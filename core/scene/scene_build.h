@@ -56,6 +56,8 @@ struct material_args {
     int alpha_mode;               /* enum ssg_alpha_mode */
     float alpha_cutoff, opacity;  /* coverage.h */
     float emission[3];            /* emitted radiance, linear RGB */
+    char normal_map[SSG_STR_MAX]; /* tangent-space normal map path, "" = none */
+    float normal_scale;           /* multiplies the map's x and y */
 };
 struct light_args {
     float position[3];  /* point light, world */
@@ -128,6 +130,31 @@ void ssg_scene_path(const struct scene_entity *e, const char *rel, char *out, si
 /* Loads textures, tessellates shapes, reads glTF files, picks the camera and builds the
  * Embree scene, for entities scene.c has validated. Problems go to l->diags. */
 void ssg_scene_build(struct scene_loader *l);
+
+/* Grows array (count used, *cap allocated) by doubling when full; NULL with the scene
+   failed when out of memory (scene_build.c). */
+void *ssg_scene_reserve(struct scene_loader *l, void *array, int count, int *cap, size_t size);
+
+struct ssg_gltf_material;
+
+/* The scene's textures (scene_textures.c); each returns the texture's index in
+   scene->textures, or -1 with a message naming the file and the scene failed. */
+/* Adds a texture, taking over rgb and alpha (NULL = opaque). */
+int ssg_scene_add_texture(struct scene_loader *l, int width, int height, float *rgb,
+                          float *alpha);
+/* An image file as interleaved linear RGB (gray fills all three); finite_only: a NaN or
+   infinite pixel is refused; keep_alpha: its alpha channel becomes the coverage plane. */
+int ssg_scene_load_texture_file(struct scene_loader *l, const char *path, int finite_only,
+                                int keep_alpha);
+/* The same for a path written in entity `from`, relative to its file. */
+int ssg_scene_load_texture(struct scene_loader *l, const struct scene_entity *from,
+                           const char *rel, int finite_only, int keep_alpha);
+/* A normal map written in a material line: the values as stored, not sRGB-decoded. */
+int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity *from,
+                              const char *rel);
+/* The diffuse texture an Assimp material names, relative to the model file. */
+int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
+                            const char *model, const struct ssg_gltf_material *gm);
 
 /* The camera path (scene_path.c): checks the camera_key, orbit and frame_rate lines
  * together (two keys at one time, a lone key, keys beside an orbit...), reporting at the

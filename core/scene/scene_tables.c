@@ -89,6 +89,12 @@ static const struct ssg_param_desc material_params[] = {
           "alpha_mode=mask: the coverage at and above which there is a surface"),
     FLOAT("opacity", material_args, opacity, 1, 0, 1, NULL,
           "multiplies the texture's alpha (glTF's baseColorFactor alpha, OBJ's d)"),
+    TEXT("normal_map", STRING, material_args, normal_map, 0,
+         "tangent-space normal map (PNG or EXR, read as data, not sRGB: rgb = (n + 1) / 2 "
+         "with x along the texture's u, y along v, z the surface normal, as glTF's), on the "
+         "shape's or mesh's uvs; relative to the scene"),
+    FLOAT("normal_scale", material_args, normal_scale, 1, 0, 100, NULL,
+          "multiplies the normal map's x and y (glTF's normalTexture.scale)"),
     VEC3("emission", material_args, emission, 0, 0, 0, 0, BIG, "W/(m^2 sr)",
          "emitted radiance, linear RGB, from both faces: seen directly (gbuffer.emission, "
          "which combine adds), the source of a bounce in reference_gi and of the "
@@ -238,7 +244,7 @@ static const struct {
      "texture coordinates; the file's TANGENT, else tangents made per vertex from the uvs "
      "(Lengyel 2001)", "not read (map_bump, norm)", "every shading normal: the G-buffer (CPU, "
      "GL), lightmaps' normals (CPU, GL), reference_gi's bounce hits; a scene file's material "
-     "has none yet", "test_normal_map"},
+     "takes one as normal_map (PNG or EXR)", "test_normal_map"},
     {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "
      "on the material's texture coordinates)", "Ke (map_Ke not read)", "gbuffer.emission "
      "(CPU, GL), which combine adds to the frame; reference_gi (seen directly, and as the "

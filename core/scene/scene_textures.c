@@ -1,0 +1,169 @@
+/* scene_textures.c - the scene's textures as scene_build.c loads them (scene_build.h):
+ * image files read into interleaved linear RGB (with the alpha plane a masked material cuts
+ * by), normal maps read as data, the textures an Assimp material names. Every problem is a
+ * message naming the file, and the scene fails. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "io/imageio.h"
+#include "lang/files.h"
+#include "scene/gltf.h"
+#include "scene/scene_build.h"
+
+/* Adds a texture; takes ownership of rgb and alpha (NULL = opaque). Returns its index or
+   -1. */
+int ssg_scene_add_texture(struct scene_loader *l, int width, int height, float *rgb, float *alpha)
+{
+    struct ssg_scene *s = l->scene;
+    struct ssg_texture *grown = ssg_scene_reserve(l, s->textures, s->texture_count, &l->texture_cap,
+                                        sizeof *s->textures);
+    if (!grown) {
+        free(rgb);
+        free(alpha);
+        return -1;
+    }
+    s->textures = grown;
+    s->textures[s->texture_count] = (struct ssg_texture){width, height, rgb, alpha};
+    return s->texture_count++;
+}
+
+/* A texture with a NaN or infinite pixel would put NaN into every image it shades: it is
+   refused with the file and the first such pixel. */
+static int texture_finite(struct scene_loader *l, const char *path, const struct ssg_image *im)
+{
+    size_t px = (size_t)im->width * (size_t)im->height;
+    for (int c = 0; c < im->channels; c++) {
+        const float *plane = ssg_image_plane(im, c);
+        for (size_t i = 0; i < px; i++) {
+            if (isfinite(plane[i]))
+                continue;
+            ssg_diag_file(l->diags, SSG_E_IMAGE, path, "pixel (%zu, %zu) channel %d is %s "
+                          "(expected finite colours)", i % (size_t)im->width,
+                          i / (size_t)im->width, c, isnan(plane[i]) ? "NaN" : "infinite");
+            ssg_scene_fail(l, SSG_E_IMAGE);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* The alpha plane of an image with one (gray + alpha, RGBA: its last channel), clamped to
+   [0, 1]; NULL without one, or out of memory (*nomem set). */
+static float *alpha_plane(const struct ssg_image *im, int *nomem)
+{
+    if (im->channels != 2 && im->channels != 4)
+        return NULL;
+    size_t px = (size_t)im->width * (size_t)im->height;
+    float *alpha = malloc(px * sizeof(float));
+    *nomem = !alpha;
+    const float *plane = ssg_image_plane(im, im->channels - 1);
+    for (size_t i = 0; alpha && i < px; i++)
+        alpha[i] = plane[i] > 0.0f ? (plane[i] < 1.0f ? plane[i] : 1.0f) : 0.0f;
+    return alpha;
+}
+
+/* Reads an image file into an interleaved RGB texture; gray images fill all three. A
+   material texture must be finite here; a probe is checked by core/scene/env.c (finite_only 0),
+   which names its own rules. keep_alpha: a masked material's texture keeps its alpha
+   channel as the coverage plane. */
+int ssg_scene_load_texture_file(struct scene_loader *l, const char *path, int finite_only,
+                             int keep_alpha)
+{
+    struct ssg_image *im = NULL;
+    enum ssg_err e = ssg_image_read(path, NULL, &im, l->diags);
+    if (e) {
+        ssg_scene_fail(l, e);
+        return -1;
+    }
+    if (finite_only && !texture_finite(l, path, im)) {
+        ssg_image_destroy(&im);
+        return -1;
+    }
+    size_t px = (size_t)im->width * (size_t)im->height;
+    float *rgb = malloc(px * 3 * sizeof(float));
+    int nomem = 0;
+    float *alpha = keep_alpha ? alpha_plane(im, &nomem) : NULL;
+    if (!rgb || nomem) {
+        free(rgb);
+        ssg_image_destroy(&im);
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return -1;
+    }
+    for (int c = 0; c < 3; c++) {
+        const float *plane = ssg_image_plane(im, im->channels >= 3 ? c : 0);
+        for (size_t i = 0; i < px; i++)
+            rgb[3 * i + (size_t)c] = plane[i];
+    }
+    int width = im->width, height = im->height;
+    ssg_image_destroy(&im);
+    return ssg_scene_add_texture(l, width, height, rgb, alpha);
+}
+
+/* A normal map written in a material line (relative to its file): the file's values as
+   stored, not sRGB-decoded (imageio.h's ssg_image_read_data), its first three channels. */
+int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity *from,
+                           const char *rel)
+{
+    char path[1024];
+    ssg_scene_path(from, rel, path, sizeof path);
+    struct ssg_image *im = NULL;
+    enum ssg_err e = ssg_image_read_data(path, &im, l->diags);
+    if (!e && !texture_finite(l, path, im))
+        e = SSG_E_IMAGE;
+    if (!e && im->channels < 3) {
+        ssg_diag_file(l->diags, SSG_E_CHANNELS, path, "a normal map needs three channels "
+                      "(x, y, z), this image has %d", im->channels);
+        e = SSG_E_CHANNELS;
+    }
+    size_t px = im ? (size_t)im->width * (size_t)im->height : 0;
+    float *rgb = e ? NULL : malloc(px * 3 * sizeof(float));
+    if (!e && !rgb)
+        e = SSG_E_NOMEM;
+    for (size_t i = 0; rgb && i < px; i++)
+        for (int c = 0; c < 3; c++)
+            rgb[3 * i + (size_t)c] = ssg_image_plane(im, c)[i];
+    int width = im ? im->width : 0, height = im ? im->height : 0;
+    ssg_image_destroy(&im);
+    if (e) {
+        ssg_scene_fail(l, e);
+        return -1;
+    }
+    return ssg_scene_add_texture(l, width, height, rgb, NULL);
+}
+
+/* The same for a path written in an entity, relative to its file. */
+int ssg_scene_load_texture(struct scene_loader *l, const struct scene_entity *from,
+                        const char *rel, int finite_only, int keep_alpha)
+{
+    char path[1024];
+    ssg_scene_path(from, rel, path, sizeof path);
+    return ssg_scene_load_texture_file(l, path, finite_only, keep_alpha);
+}
+
+/* A texture an Assimp material names (relative to the model file), loaded like a scene
+   material's; -1 with a message at the mesh line naming the model, the material and the
+   texture when it is embedded or cannot be read. */
+int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
+                         const char *model, const struct ssg_gltf_material *gm)
+{
+    char path[1024];
+    const char *problem = NULL;
+    if (gm->texture_file[0] == '*') {
+        problem = "is embedded in the model file (not supported: give the mesh a material=)";
+    } else {
+        ssg_path_resolve(model, gm->texture_file, path, sizeof path);
+        if (access(path, R_OK) != 0)
+            problem = strerror(errno);
+    }
+    if (problem) {
+        ssg_diag_at(l->diags, SSG_E_IO, e->at[0], "%s: material '%s' names texture '%s', "
+                    "which cannot be read (%s)", model, gm->name, gm->texture_file, problem);
+        ssg_scene_fail(l, SSG_E_IO);
+        return -1;
+    }
+    return ssg_scene_load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
+}
+
