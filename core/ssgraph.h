@@ -102,6 +102,12 @@ static inline float *ssg_image_plane(const struct ssg_image *im, int channel)
 SSG_API enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_image **out,
                                     struct ssg_diags *diags);
 
+/* Reads an image whose values are data, not colour (a normal map): a PNG's stored values
+ * scaled to [0, 1], never sRGB-decoded (ssg_image_read decodes sRGB PNGs to linear); an EXR
+ * as stored. Any other format is refused (SSG_E_IMAGE, naming the file). */
+SSG_API enum ssg_err ssg_image_read_data(const char *path, struct ssg_image **out,
+                                         struct ssg_diags *diags);
+
 /* Writes an image as a 32-bit float EXR (1 channel: Y; 2: R,G; 3: R,G,B; 4: R,G,B,A),
  * through a temporary file renamed into place, so a failure leaves no partial file. */
 SSG_API enum ssg_err ssg_image_write(const char *path, const struct ssg_image *image,

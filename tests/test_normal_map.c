@@ -16,7 +16,6 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "io/imageio.h"
 #include "scene/scene.h"
 #include "scene/scene_shapes.h"
 #include "ssgraph.h"

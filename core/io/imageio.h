@@ -162,12 +162,6 @@ enum ssg_err ssg_png_stage(const char *path, const struct ssg_image *image,
                            enum ssg_tonemap tonemap, float exposure, struct ssg_tmp *t,
                            struct ssg_diags *diags);
 
-/* An image whose values are data, not colour (a normal map): a PNG's stored values scaled to
- * [0, 1], never sRGB-decoded; an EXR as stored. Any other format is refused
- * (SSG_E_IMAGE, naming the file). Errors as ssg_image_read's. */
-enum ssg_err ssg_image_read_data(const char *path, struct ssg_image **out,
-                                 struct ssg_diags *diags);
-
 #ifdef __cplusplus
 }
 #endif

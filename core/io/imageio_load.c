@@ -260,7 +260,10 @@ enum ssg_err ssg_image_read(const char *path, const char *layer, struct ssg_imag
 enum ssg_err ssg_image_read_data(const char *path, struct ssg_image **out,
                                  struct ssg_diags *diags)
 {
-    *out = NULL;
+    if (out)
+        *out = NULL;
+    if (ssg_api_null(diags, "ssg_image_read_data", "path, out", 2, path, out))
+        return SSG_E_USAGE;
     int fd = -1, elsewhere = 0;
     enum ssg_image_format format = SSG_FORMAT_OTHER;
     enum ssg_err e = open_image(path, &fd, &format, diags);

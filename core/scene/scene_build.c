@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/imageio.h"
 #include "scene/distance.h"
 #include "scene/env.h"
 #include <errno.h>

@@ -8,7 +8,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "io/imageio.h"
 #include "lang/files.h"
 #include "scene/gltf.h"
 #include "scene/scene_build.h"
