@@ -482,6 +482,35 @@ static void test_obj_map_d(void)
     ssg_scene_destroy(&s);
 }
 
+/* An OBJ's norm (a tangent-space normal map) becomes the material's normal map, read as data
+ * (normal_tilt.png's 204, 128, 230 exactly, not sRGB-decoded), and the mesh gets tangents;
+ * a map_bump (heights) is listed as not read. */
+static void test_obj_norm(void)
+{
+    write_file("tilt.mtl", "newmtl tilt\nKd 1 1 1\nnorm " SSG_SOURCE_DIR
+               "/tests/fixtures/normal_tilt.png\nmap_bump bump.png\n");
+    write_file("tilt.obj", "mtllib tilt.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
+               "vt 1 1\nvn 0 0 1\nusemtl tilt\nf 1/1/1 2/2/1 3/3/1\n");
+    const char *path = write_file("tilt.scene", "mesh(\"tilt.obj\")\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    CHECK(d.warning_count == 1 && strstr(d.warnings[0].message, "bump maps (map_bump"));
+    if (!s)
+        return;
+    const struct ssg_material *m = &s->materials[0];
+    CHECK(m->normal_texture >= 0);
+    if (m->normal_texture >= 0) {
+        const float *rgb = s->textures[m->normal_texture].rgb;
+        CHECK_NEAR(rgb[0], 204 / 255.0, 1e-6);
+        CHECK_NEAR(rgb[1], 128 / 255.0, 1e-6);
+        CHECK_NEAR(rgb[2], 230 / 255.0, 1e-6);
+    }
+    CHECK(s->meshes[0].tangents != NULL);
+    ssg_scene_destroy(&s);
+}
+
 static void test_view_matrix(void)
 {
     struct ssg_camera c = {{1, 2, 3}, {1, 2, -1}, {0, 1, 0}, 45, 0.1f, 100};
@@ -515,6 +544,7 @@ int main(void)
     test_textures();
     test_alpha_materials();
     test_obj_map_d();
+    test_obj_norm();
     test_view_matrix();
     return check_report();
 }

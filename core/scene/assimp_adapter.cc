@@ -125,9 +125,9 @@ void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat
     std::string who = std::string("'") + model_adapter::printable(mat.name) + "'";
     aiString path;
     float opacity = 1.0f;
-    if (src.GetTextureCount(aiTextureType_NORMALS) > 0 ||
-        src.GetTextureCount(aiTextureType_HEIGHT) > 0)
-        ignored.add("normal and bump maps (map_bump, norm)", who);
+    if (src.GetTextureCount(aiTextureType_HEIGHT) > 0)
+        ignored.add("bump maps (map_bump, heights; a tangent-space normal map is read "
+                    "from norm)", who);
     if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0)
         ignored.add("emission maps (map_Ke; Ke is read)", who);
     if (src.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
@@ -162,7 +162,7 @@ void Flattener::convert_materials()
             mat.base_color[k] = std::isfinite(rgba[k]) ? std::fmin(std::fmax(rgba[k], 0.0f), 1.0f)
                                                        : 1.0f;
         mat.texture = -1;
-        mat.normal_texture = -1; /* Assimp's normal and bump maps are not read yet */
+        mat.normal_texture = -1; /* a normal map comes as normal_file, decoded by the caller */
         mat.normal_scale = 1.0f;
         mat.emission_texture = -1; /* nor its emission maps (map_Ke) */
         aiColor3D ke(0, 0, 0);
@@ -177,6 +177,15 @@ void Flattener::convert_materials()
                      std::to_string(tex.length) + " characters (at most " +
                      std::to_string(sizeof mat.texture_file - 1) + ")");
             std::snprintf(mat.texture_file, sizeof mat.texture_file, "%s", tex.C_Str());
+        }
+        aiString normals;
+        if (src->GetTexture(aiTextureType_NORMALS, 0, &normals) == AI_SUCCESS &&
+            normals.length) {
+            if (normals.length >= sizeof mat.normal_file)
+                fail(std::string("material '") + name.C_Str() + "' names a normal map path "
+                     "of " + std::to_string(normals.length) + " characters (at most " +
+                     std::to_string(sizeof mat.normal_file - 1) + ")");
+            std::snprintf(mat.normal_file, sizeof mat.normal_file, "%s", normals.C_Str());
         }
         /* an OBJ's map_d (opacity texture) naming the diffuse texture itself: its alpha
            channel masks the surface, as glTF's MASK (a separate map_d is not read yet) */

@@ -35,6 +35,8 @@ struct ssg_gltf_material {
     float normal_scale;  /* normalTexture.scale, default 1 */
     float emission[3];   /* emissiveFactor x KHR_materials_emissive_strength (Assimp: Ke) */
     int emission_texture; /* emissiveTexture: index into textures (sRGB decoded), -1 */
+    char normal_file[256]; /* an undecoded tangent-space normal map (Assimp formats: an
+                              OBJ's norm), relative to the model file; "" = none */
 };
 
 struct ssg_gltf {

@@ -242,6 +242,7 @@ static int references_hold(struct ssg_wire *w, struct ssg_gltf *g)
         struct ssg_gltf_material *m = &g->materials[i];
         m->name[sizeof m->name - 1] = 0;
         m->texture_file[sizeof m->texture_file - 1] = 0;
+        m->normal_file[sizeof m->normal_file - 1] = 0;
         if (m->texture < -1 || m->texture >= g->texture_count || m->alpha_mode < 0 ||
             m->normal_texture < -1 || m->normal_texture >= g->texture_count ||
             m->emission_texture < -1 || m->emission_texture >= g->texture_count ||

@@ -155,6 +155,10 @@ int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity 
 /* The diffuse texture an Assimp material names, relative to the model file. */
 int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
                             const char *model, const struct ssg_gltf_material *gm);
+/* The normal map (OBJ norm) an Assimp material names, relative to the model file, as
+   data. */
+int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity *e,
+                               const char *model, const struct ssg_gltf_material *gm);
 
 /* The camera path (scene_path.c): checks the camera_key, orbit and frame_rate lines
  * together (two keys at one time, a lone key, keys beside an orbit...), reporting at the

@@ -242,7 +242,7 @@ static const struct {
      "not read (map_d naming another file, d, Tr)", "-", "-"},
     {"normal maps", "normalTexture (tangent space) and its scale, on the base colour's "
      "texture coordinates; the file's TANGENT, else tangents made per vertex from the uvs "
-     "(Lengyel 2001)", "not read (map_bump, norm)", "every shading normal: the G-buffer (CPU, "
+     "(Lengyel 2001)", "norm (map_bump, a height map, is not read)", "every shading normal: the G-buffer (CPU, "
      "GL), lightmaps' normals (CPU, GL), reference_gi's bounce hits; a scene file's material "
      "takes one as normal_map (PNG or EXR)", "test_normal_map"},
     {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "

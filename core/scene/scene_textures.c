@@ -101,13 +101,10 @@ int ssg_scene_load_texture_file(struct scene_loader *l, const char *path, int fi
     return ssg_scene_add_texture(l, width, height, rgb, alpha);
 }
 
-/* A normal map written in a material line (relative to its file): the file's values as
-   stored, not sRGB-decoded (imageio.h's ssg_image_read_data), its first three channels. */
-int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity *from,
-                           const char *rel)
+/* A normal map file: its values as stored, not sRGB-decoded (ssg_image_read_data), its
+   first three channels. */
+static int load_normal_map_file(struct scene_loader *l, const char *path)
 {
-    char path[1024];
-    ssg_scene_path(from, rel, path, sizeof path);
     struct ssg_image *im = NULL;
     enum ssg_err e = ssg_image_read_data(path, &im, l->diags);
     if (!e && !texture_finite(l, path, im))
@@ -133,6 +130,14 @@ int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity 
     return ssg_scene_add_texture(l, width, height, rgb, NULL);
 }
 
+int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity *from,
+                              const char *rel)
+{
+    char path[1024];
+    ssg_scene_path(from, rel, path, sizeof path);
+    return load_normal_map_file(l, path);
+}
+
 /* The same for a path written in an entity, relative to its file. */
 int ssg_scene_load_texture(struct scene_loader *l, const struct scene_entity *from,
                         const char *rel, int finite_only, int keep_alpha)
@@ -142,27 +147,45 @@ int ssg_scene_load_texture(struct scene_loader *l, const struct scene_entity *fr
     return ssg_scene_load_texture_file(l, path, finite_only, keep_alpha);
 }
 
-/* A texture an Assimp material names (relative to the model file), loaded like a scene
-   material's; -1 with a message at the mesh line naming the model, the material and the
-   texture when it is embedded or cannot be read. */
-int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
-                         const char *model, const struct ssg_gltf_material *gm)
+/* The file `file` (a texture or normal map, `what`) an Assimp material names, resolved
+   against the model into path; 0 with a message at the mesh line naming the model, the
+   material and the file when it is embedded or cannot be read. */
+static int model_file(struct scene_loader *l, const struct scene_entity *e, const char *model,
+                      const struct ssg_gltf_material *gm, const char *file, const char *what,
+                      char *path, size_t len)
 {
-    char path[1024];
     const char *problem = NULL;
-    if (gm->texture_file[0] == '*') {
+    if (file[0] == '*') {
         problem = "is embedded in the model file (not supported: give the mesh a material=)";
     } else {
-        ssg_path_resolve(model, gm->texture_file, path, sizeof path);
+        ssg_path_resolve(model, file, path, len);
         if (access(path, R_OK) != 0)
             problem = strerror(errno);
     }
     if (problem) {
-        ssg_diag_at(l->diags, SSG_E_IO, e->at[0], "%s: material '%s' names texture '%s', "
-                    "which cannot be read (%s)", model, gm->name, gm->texture_file, problem);
+        ssg_diag_at(l->diags, SSG_E_IO, e->at[0], "%s: material '%s' names %s '%s', which "
+                    "cannot be read (%s)", model, gm->name, what, file, problem);
         ssg_scene_fail(l, SSG_E_IO);
-        return -1;
+        return 0;
     }
+    return 1;
+}
+
+int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
+                            const char *model, const struct ssg_gltf_material *gm)
+{
+    char path[1024];
+    if (!model_file(l, e, model, gm, gm->texture_file, "texture", path, sizeof path))
+        return -1;
     return ssg_scene_load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
+}
+
+int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity *e,
+                               const char *model, const struct ssg_gltf_material *gm)
+{
+    char path[1024];
+    if (!model_file(l, e, model, gm, gm->normal_file, "normal map", path, sizeof path))
+        return -1;
+    return load_normal_map_file(l, path);
 }
 
