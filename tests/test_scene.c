@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "scene/scene_build.h"
 #include "scratch.h"
 #include "io/imageio.h"
 #include "graph/node.h"
@@ -511,6 +512,13 @@ static void test_obj_norm(void)
     ssg_scene_destroy(&s);
 }
 
+/* Every entity kind's parameters fit the places an entity keeps for their locations. */
+static void test_kinds_fit(void)
+{
+    for (int k = 0; k < SK_COUNT; k++)
+        CHECK(ssg_scene_kinds[k].table.count <= SCENE_MAX_ARGS);
+}
+
 static void test_view_matrix(void)
 {
     struct ssg_camera c = {{1, 2, 3}, {1, 2, -1}, {0, 1, 0}, 45, 0.1f, 100};
@@ -545,6 +553,7 @@ int main(void)
     test_alpha_materials();
     test_obj_map_d();
     test_obj_norm();
+    test_kinds_fit();
     test_view_matrix();
     return check_report();
 }

@@ -83,7 +83,7 @@ struct mesh_args {
     int lights;                  /* 1 = the file's own lights join the scene's */
 };
 
-#define SCENE_MAX_ARGS 8
+#define SCENE_MAX_ARGS 16 /* the most parameters a kind has (test_scene checks every table) */
 
 /* An entity kind: its name in scene files, its parameter table, the size of its *_args
    struct, and what it is (docs/scenes.md). */
