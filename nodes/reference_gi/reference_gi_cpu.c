@@ -312,13 +312,14 @@ static void bounce_paths(const struct job *j, const struct pixel *px, struct pat
 }
 
 /* The radiance the surface at x emits towards the camera: its hit found again along the
-   eye's ray to p (scene units: t = 1 at p; the nearest hit within a hair past it). */
+   eye's ray to p (t = 1 at p), within a hair of p on either side, so that nothing nearer
+   than the G-buffer's near plane can stand in for it. */
 static void emitted(const struct job *j, const struct pixel *px, float le[3])
 {
     const float *eye = j->c->eye;
     float d[3] = {px->p[0] - eye[0], px->p[1] - eye[1], px->p[2] - eye[2]};
     struct ssg_hit h;
-    ssg_rt_intersect(j->scene->rt, eye, d, 0.0f, 1.001f, &h);
+    ssg_rt_intersect(j->scene->rt, eye, d, 0.999f, 1.001f, &h);
     if (h.mesh >= 0 && ssg_hit_emits(j->scene, &h))
         ssg_hit_emission(j->scene, &h, le);
 }
