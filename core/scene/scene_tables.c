@@ -248,8 +248,9 @@ static const struct {
     {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "
      "on the material's texture coordinates)", "Ke (map_Ke not read)", "gbuffer.emission "
      "(CPU, GL), which combine adds to the frame; reference_gi (seen directly, and as the "
-     "source of its one bounce); gi.graph's SSDO near field bounces it; no light map or "
-     "shadow map holds it (an emitter lights nothing beyond the screen in real time)",
+     "source of its one bounce); gi.graph's SSDO near field bounces it within its radius; "
+     "no light map or shadow map holds it (in real time an emitter lights only its near "
+     "field)",
      "test_emission"},
     {"vertex colours", "not read (COLOR_0)", "not read", "-", "-"},
     {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
