@@ -42,6 +42,21 @@ static inline struct ssg_image *light_list(const float (*dirs)[3], int n)
     return l;
 }
 
+/* Loads and runs a graph file with the overrides ov into out_dir, printing its messages. */
+static inline enum ssg_err graph_run_with(const char *graph, const struct ssg_overrides *ov,
+                                          const char *out_dir)
+{
+    struct ssg_run_options opt = {.out_dir = out_dir};
+    struct ssg_diags d = {0};
+    struct ssg_graph *g = NULL;
+    enum ssg_err e = ssg_graph_load(graph, ov, &g, &d);
+    if (!e)
+        e = ssg_graph_run(g, &opt, &d);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+    return e;
+}
+
 /* Loads and runs a graph file at w x h (scene: NULL = the graph's own) into out_dir. */
 static inline enum ssg_err graph_run_sets(const char *graph, const char *scene, int w, int h,
                                           const char *out_dir, const char *const *sets,
@@ -49,15 +64,15 @@ static inline enum ssg_err graph_run_sets(const char *graph, const char *scene, 
 {
     struct ssg_overrides ov = {.scene = scene, .width = w, .height = h, .seed = -1,
                                .sets = sets, .set_count = set_count};
-    struct ssg_run_options opt = {.out_dir = out_dir};
-    struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(graph, &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    return e;
+    return graph_run_with(graph, &ov, out_dir);
+}
+
+/* A graph file at its own size on `backend` ("cpu" or "gl"; scene NULL = its own). */
+static inline enum ssg_err graph_run_on(const char *graph, const char *scene,
+                                        const char *backend, const char *out_dir)
+{
+    struct ssg_overrides ov = {.scene = scene, .seed = -1, .backend = backend};
+    return graph_run_with(graph, &ov, out_dir);
 }
 
 static inline enum ssg_err graph_run(const char *graph, const char *scene, int w, int h,

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "scene_node.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
@@ -28,20 +29,6 @@ struct frame {
     float world[W * H][3]; /* the G-buffer's point, world space; background: NaN */
     float albedo_g[W * H], direct[W * H], ao[W * H];
 };
-
-static enum ssg_err run(const char *scene, const char *backend, const char *out)
-{
-    struct ssg_overrides ov = {.scene = scene, .seed = -1, .backend = backend};
-    struct ssg_run_options opt = {.out_dir = out};
-    struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load("tests/fixtures/alpha_mask.graph", &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    return e;
-}
 
 static struct ssg_image *layer(const char *dir, const char *name)
 {
@@ -62,7 +49,7 @@ static int load_frame(const char *label, const char *scene, const char *backend,
 {
     char dir[600];
     snprintf(dir, sizeof dir, "%s/%s", tmp, label);
-    CHECK_EQ(run(scene, backend, dir), SSG_OK);
+    CHECK_EQ(graph_run_on("tests/fixtures/alpha_mask.graph", scene, backend, dir), SSG_OK);
     struct ssg_image *pos = layer(dir, "position"), *alb = layer(dir, "albedo");
     struct ssg_image *dl = layer(dir, "direct"), *ao = layer(dir, "ao");
     struct ssg_scene *s = NULL;

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "scene_node.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
@@ -36,16 +37,8 @@ static int run(const char *backend, struct frame *f)
 {
     char dir[600], path[700];
     snprintf(dir, sizeof dir, "%s/%s", tmp, backend);
-    struct ssg_overrides ov = {.seed = -1, .backend = backend};
-    struct ssg_run_options opt = {.out_dir = dir};
     struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load("tests/fixtures/emitter.graph", &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    CHECK_EQ(e, SSG_OK);
+    CHECK_EQ(graph_run_on("tests/fixtures/emitter.graph", NULL, backend, dir), SSG_OK);
     snprintf(path, sizeof path, "%s/emitter.exr", dir);
     f->out = layer(path, NULL);
     f->bounce = layer(path, "bounce");

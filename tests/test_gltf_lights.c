@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "scene_node.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
@@ -22,16 +23,8 @@ static struct ssg_image *render(const char *scene, const char *label, const char
 {
     char dir[600], path[700];
     snprintf(dir, sizeof dir, "%s/%s", tmp, label);
-    struct ssg_overrides ov = {.scene = scene, .seed = -1};
-    struct ssg_run_options opt = {.out_dir = dir};
     struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load("tests/fixtures/gltf_lights.graph", &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    CHECK_EQ(e, SSG_OK);
+    CHECK_EQ(graph_run_on("tests/fixtures/gltf_lights.graph", scene, "cpu", dir), SSG_OK);
     snprintf(path, sizeof path, "%s/lights.exr", dir);
     struct ssg_image *im = NULL;
     CHECK_EQ(ssg_image_read(path, layer, &im, &d), SSG_OK);

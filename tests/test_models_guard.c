@@ -411,8 +411,8 @@ static enum ssg_err import_model(const char *path, struct ssg_gltf **out,
     struct ssg_gltf *g = calloc(1, sizeof *g);
     g->meshes = calloc(3, sizeof *g->meshes);
     g->mesh_count = 2;
-    g->meshes[0] = (struct ssg_mesh){3, 1, malloc(36), malloc(36), malloc(24), malloc(12), 0, NULL};
-    g->meshes[1] = (struct ssg_mesh){4, 2, malloc(48), NULL, NULL, malloc(24), -1, NULL};
+    g->meshes[0] = (struct ssg_mesh){3, 1, malloc(36), malloc(36), malloc(24), malloc(12), 0, NULL, NULL};
+    g->meshes[1] = (struct ssg_mesh){4, 2, malloc(48), NULL, NULL, malloc(24), -1, NULL, NULL};
     memcpy(g->meshes[0].positions, p, 36), memcpy(g->meshes[0].normals, p, 36);
     memcpy(g->meshes[0].uvs, p, 24), memcpy(g->meshes[0].indices, idx, 12);
     memcpy(g->meshes[1].positions, p, 48), memcpy(g->meshes[1].indices, idx, 24);

@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "scene_node.h"
 #include "scene/scene.h"
 #include "scene/scene_shapes.h"
 #include "ssgraph.h"
@@ -44,16 +45,8 @@ static void check_frame(const char *label, const char *scene, const char *backen
 {
     char dir[600], path[700];
     snprintf(dir, sizeof dir, "%s/%s_%s", tmp, label, backend);
-    struct ssg_overrides ov = {.scene = scene, .seed = -1, .backend = backend};
-    struct ssg_run_options opt = {.out_dir = dir};
     struct ssg_diags d = {0};
-    struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load("tests/fixtures/normal_map.graph", &ov, &g, &d);
-    if (!e)
-        e = ssg_graph_run(g, &opt, &d);
-    ssg_diags_print(&d, stderr);
-    ssg_graph_destroy(&g);
-    CHECK_EQ(e, SSG_OK);
+    CHECK_EQ(graph_run_on("tests/fixtures/normal_map.graph", scene, backend, dir), SSG_OK);
     snprintf(path, sizeof path, "%s/normal_map.exr", dir);
     struct ssg_image *direct = NULL, *normal = NULL;
     CHECK_EQ(ssg_image_read(path, NULL, &direct, &d), SSG_OK);

@@ -53,11 +53,14 @@ static enum ssg_err lay_out_meshes(const struct ssg_node_ctx *ctx, struct ssg_gl
         if (m->triangle_count >= MAX_MESH_TRIANGLES)
             return fail(ctx, SSG_E_VALUE, "a mesh has 2^24 triangles or more (the GL "
                         "visibility buffer numbers them in floats)");
+        size_t at_tangents = floats + (uvs ? 8 : 6) * v;
+        size_t at_colors = at_tangents + (tangents ? 4 : 0) * v;
         s->mesh[i] = (struct ssg_gl_mesh){(int32_t)floats, (int32_t)(floats + 3 * v),
                                           uvs ? (int32_t)(floats + 6 * v) : -1,
                                           (int32_t)indices, m->material,
-                                          tangents ? (int32_t)(floats + 8 * v) : -1};
-        floats += (6 + (uvs ? 2 : 0) + (tangents ? 4 : 0)) * v;
+                                          tangents ? (int32_t)at_tangents : -1,
+                                          m->colors ? (int32_t)at_colors : -1};
+        floats = at_colors + (m->colors ? 3 : 0) * v;
         indices += 3 * (size_t)m->triangle_count;
         if (floats > INT32_MAX || indices > INT32_MAX)
             return fail(ctx, SSG_E_NOMEM, "the scene's meshes are too large for GL");
@@ -159,6 +162,8 @@ static void copy_data(struct ssg_gl_scene *s)
         if (g->tangents >= 0)
             glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->tangents, v3 / 3 * 4,
                                  m->tangents);
+        if (g->colors >= 0)
+            glNamedBufferSubData(s->buffer[VDATA], 4 * (GLintptr)g->colors, v3, m->colors);
         glNamedBufferSubData(s->buffer[INDEX], 4 * (GLintptr)g->indices,
                              (GLsizeiptr)(12 * (size_t)m->triangle_count), m->indices);
     }

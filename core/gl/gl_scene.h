@@ -14,7 +14,8 @@
  * Storage buffers (std430), bound by ssg_gl_scene_bind at SSG_GL_SCENE_BINDING + i:
  *   +0 float vdata[]: every mesh's positions (xyz), normals (xyz), uvs (uv, only where
  *      its material has a texture or a normal map) and tangents (xyzw, only with a normal
- *      map) as in the scene, at the offsets its Mesh record gives
+ *      map) and colours (rgb, only where the mesh has them) as in the scene, at the offsets
+ *      its Mesh record gives
  *   +1 uint index[]: every mesh's indices (3 per triangle, the mesh's own vertex numbers)
  *   +2 float texel[]: the textures materials use, linear RGB interleaved, row 0 at the top,
  *      each followed by its alpha plane when it has one (scene/coverage.h)
@@ -22,7 +23,7 @@
  *   +4 Material material[]: struct ssg_gl_material below, in scene order
  * A shader declares them with the same fields, e.g.
  *   struct Mesh { int positions; int normals; int uvs; int indices; int material;
- *                 int tangents; };
+ *                 int tangents; int colors; };
  *   layout(std430, binding = 3) readonly buffer Meshes { Mesh scene_mesh[]; };
  * core/gl/gl.h's ssg_gl_buffer bindings from SSG_GL_SCENE_BINDING + SSG_GL_SCENE_BUFFERS on
  * stay free for the node's own data.
@@ -47,7 +48,8 @@ enum { SSG_GL_SCENE_BINDING = 0, SSG_GL_SCENE_BUFFERS = 5 };
  * offset of its first index in index[], its material, and the offset of its tangents (xyzw,
  * -1 = none, or no normal map to bend by). */
 struct ssg_gl_mesh {
-    int32_t positions, normals, uvs, indices, material, tangents;
+    int32_t positions, normals, uvs, indices, material, tangents, colors; /* colors: rgb
+                                                                   per vertex, -1 = none */
 };
 
 /* One material on GL (scene.h's fields); texels is the float offset of its texture in

@@ -241,7 +241,7 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
     if (out.indices.empty())
         return;
     if (mesh.HasVertexColors(0))
-        ignored.add("vertex colours", "");
+        ignored.add("vertex colours (read from glTF only)", "");
     double c[9], det;
     cofactor(world, c, &det);
     const double sign = det < 0 ? -1.0 : 1.0;

@@ -272,8 +272,16 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
                  std::to_string(nv) + " vertices)");
     if (out.indices.empty())
         return;
-    if (attribute(p, "COLOR_0") >= 0)
-        mats.ignored.add("vertex colours (COLOR_0)", where);
+    int col = attribute(p, "COLOR_0");
+    if (col >= 0) { /* VEC3 or VEC4 (its alpha not read), float or normalised integers */
+        int n = m.accessors[(size_t)col].type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+        std::vector<float> c = read_floats(m, col, n);
+        for (size_t i = 0; i + (size_t)n <= c.size(); i += (size_t)n)
+            for (int k = 0; k < 3; k++)
+                out.colors.push_back(c[i + (size_t)k]);
+    }
+    if (!out.colors.empty() && out.colors.size() / 3 != nv)
+        fail(where + ": COLOR_0 count differs from POSITION count");
     int nrm = attribute(p, "NORMAL");
     out.normals = nrm >= 0 ? read_floats(m, nrm, 3) : compute_normals(out.positions, out.indices);
     if (out.normals.size() != out.positions.size())

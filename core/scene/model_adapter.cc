@@ -92,6 +92,7 @@ ssg_gltf *to_c(const std::vector<Prim> &prims, const std::vector<ssg_gltf_materi
             o.normals = c_array(p.normals);
             o.uvs = c_array(p.uvs);
             o.tangents = c_array(p.tangents);
+            o.colors = c_array(p.colors);
             o.indices = c_array(p.indices);
         }
         for (const Tex &t : textures) {
@@ -119,6 +120,7 @@ void free_model(ssg_gltf *g)
         std::free(g->meshes[i].normals);
         std::free(g->meshes[i].uvs);
         std::free(g->meshes[i].tangents);
+        std::free(g->meshes[i].colors);
         std::free(g->meshes[i].indices);
     }
     for (int i = 0; g->textures && i < g->texture_count; i++) {

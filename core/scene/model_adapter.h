@@ -30,6 +30,7 @@ struct Failure {
 struct Prim {
     std::vector<float> positions, normals, uvs; /* world xyz, unit xyz, uv (or empty) */
     std::vector<float> tangents;                /* world xyzw (glTF TANGENT), or empty */
+    std::vector<float> colors;                  /* rgb per vertex (glTF COLOR_0), or empty */
     std::vector<uint32_t> indices;              /* 3 per triangle */
     int material;                               /* index into the materials, -1 = none */
 };

@@ -105,6 +105,7 @@ struct ssg_mesh {
     float *uvs;        /* uv per vertex, or NULL */
     uint32_t *indices; /* 3 per triangle */
     int material;      /* index into scene->materials */
+    float *colors;     /* rgb per vertex multiplying the albedo (glTF COLOR_0), or NULL */
     float *tangents;   /* xyzw per vertex, world: the unit tangent along +u and the sign w
                           of the bitangent (cross(n, t) w points along +v), made by
                           ssg_mesh_tangents for a normal-mapped material; or NULL */

@@ -18,6 +18,7 @@ void ssg_mesh_free(struct ssg_mesh *mesh)
     free(mesh->uvs);
     free(mesh->indices);
     free(mesh->tangents);
+    free(mesh->colors);
     memset(mesh, 0, sizeof *mesh);
 }
 

@@ -252,7 +252,9 @@ static const struct {
      "no light map or shadow map holds it (in real time an emitter lights only its near "
      "field)",
      "test_emission"},
-    {"vertex colours", "not read (COLOR_0)", "not read", "-", "-"},
+    {"vertex colours", "COLOR_0 (VEC3 or VEC4, its alpha not read) multiplies the base "
+     "colour", "not read", "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), "
+     "reference_gi's bounce hits", "test_vertex_colors"},
     {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
     {"lights", "KHR_lights_punctual point and directional lights (candela and lux read as "
      "W/sr and W/m^2); spot lights and `range` not read yet", "not read", "every path, as "

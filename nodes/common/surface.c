@@ -42,18 +42,22 @@ void ssg_hit_albedo(const struct ssg_scene *s, const struct ssg_hit *h, float ou
 {
     const struct ssg_mesh *m = &s->meshes[h->mesh];
     const struct ssg_material *mat = &s->materials[m->material];
-    const uint32_t *tri = &m->indices[3 * (size_t)h->triangle];
     memcpy(out, mat->albedo, 3 * sizeof(float));
-    if (mat->texture < 0 || !m->uvs)
-        return;
-    float w0 = 1.0f - h->u - h->v, uv[2];
-    for (int i = 0; i < 2; i++)
-        uv[i] = w0 * m->uvs[2 * tri[0] + i] + h->u * m->uvs[2 * tri[1] + i] +
-                h->v * m->uvs[2 * tri[2] + i];
-    const struct ssg_texture *t = &s->textures[mat->texture];
-    ssg_texture_bilinear(t->rgb, 3, t->width, t->height, uv[0], uv[1], out);
-    for (int i = 0; i < 3; i++)
-        out[i] *= mat->albedo[i];
+    if (mat->texture >= 0 && m->uvs) {
+        float uv[2];
+        hit_uv(m, h, uv);
+        const struct ssg_texture *t = &s->textures[mat->texture];
+        ssg_texture_bilinear(t->rgb, 3, t->width, t->height, uv[0], uv[1], out);
+        for (int i = 0; i < 3; i++)
+            out[i] *= mat->albedo[i];
+    }
+    if (m->colors) { /* glTF COLOR_0 multiplies the base colour */
+        const uint32_t *k = &m->indices[3 * (size_t)h->triangle];
+        float w0 = 1.0f - h->u - h->v;
+        for (int i = 0; i < 3; i++)
+            out[i] *= w0 * m->colors[3 * k[0] + i] + h->u * m->colors[3 * k[1] + i] +
+                      h->v * m->colors[3 * k[2] + i];
+    }
 }
 
 /* The material's tangent-space normal map bends the interpolated normal n (in place, not

@@ -124,3 +124,13 @@ vec3 shading_normal(Mesh me, Material m, uvec3 tri, float u, float v, vec3 n)
     float x = (2.0 * rgb.x - 1.0) * m.normal_scale, y = (2.0 * rgb.y - 1.0) * m.normal_scale;
     return x * tt + y * b + (2.0 * rgb.z - 1.0) * un;
 }
+
+// surface.c's ssg_hit_albedo's last step: glTF COLOR_0 multiplies the albedo a.
+vec3 vertex_colour(Mesh me, uvec3 tri, float u, float v, vec3 a)
+{
+    if (me.colors < 0)
+        return a;
+    float w0 = 1.0 - u - v;
+    return a * (w0 * fetch3(me.colors, tri.x) + u * fetch3(me.colors, tri.y) +
+                v * fetch3(me.colors, tri.z));
+}

@@ -96,11 +96,13 @@ vec3 direct_light(vec3 n, vec3 pw, vec3 w, vec3 alb, Material m)
 vec3 surface_albedo(Mesh me, Material m, uvec3 tri, float u, float v)
 {
     vec3 a = vec3(m.albedo[0], m.albedo[1], m.albedo[2]);
-    if (m.texels < 0 || me.uvs < 0)
-        return a;
     float w0 = 1.0 - u - v;
-    vec2 uv = w0 * fetch2(me.uvs, tri.x) + u * fetch2(me.uvs, tri.y) + v * fetch2(me.uvs, tri.z);
-    return sample_texture(m, uv) * a;
+    if (m.texels >= 0 && me.uvs >= 0) {
+        vec2 uv = w0 * fetch2(me.uvs, tri.x) + u * fetch2(me.uvs, tri.y) +
+                  v * fetch2(me.uvs, tri.z);
+        a = sample_texture(m, uv) * a;
+    }
+    return vertex_colour(me, tri, u, v, a);
 }
 
 void store_background(ivec2 p)

@@ -83,6 +83,7 @@ void main()
         vec2 uv = w0 * fetch2(m.uvs, i0) + bu * fetch2(m.uvs, i1) + bv * fetch2(m.uvs, i2);
         albedo *= sample_texture(mat, uv);
     }
+    albedo = vertex_colour(m, uvec3(i0, i1, i2), bu, bv, albedo);
     float q = 1.0 + a * a + b * b, side = 2.0 / float(p_resolution);
     float omega = ortho ? 1.0 : side * side / (q * sqrt(q));
     vec3 flux = albedo * face3(14) * omega;
