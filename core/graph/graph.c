@@ -97,11 +97,8 @@ static int scene_is_dark(const struct ssg_scene *s)
     const struct ssg_environment *env = &s->environment; /* an image is times color */
     int env_lit = env->intensity > 0 &&
                   (env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0);
-    for (int i = 0; i < s->material_count; i++) {
-        const float *e = s->materials[i].emission;
-        env_lit |= e[0] > 0 || e[1] > 0 || e[2] > 0;
-    }
-    return s->light_lines == 0 && s->light_count == 0 && !env_lit;
+    return s->light_lines == 0 && s->light_count == 0 && !env_lit &&
+           !ssg_scene_has_emission(s);
 }
 
 /* The first live input reading a `lit` port (gbuffer's direct or environment light):

@@ -474,6 +474,19 @@ void ssg_scene_swap_lights(struct ssg_scene *a, struct ssg_scene *b)
     SWAP(struct ssg_env *, a->env, b->env);
 }
 
+int ssg_material_emits(const struct ssg_material *m)
+{
+    return m->emission[0] > 0.0f || m->emission[1] > 0.0f || m->emission[2] > 0.0f;
+}
+
+int ssg_scene_has_emission(const struct ssg_scene *s)
+{
+    for (int i = 0; i < s->material_count; i++)
+        if (ssg_material_emits(&s->materials[i]))
+            return 1;
+    return 0;
+}
+
 void ssg_scene_destroy(struct ssg_scene **scene)
 {
     if (!scene || !*scene)

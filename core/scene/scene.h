@@ -174,6 +174,11 @@ enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_a
                                 struct ssg_scene **out, struct ssg_diags *diags);
 void ssg_scene_destroy(struct ssg_scene **scene);
 
+/* 1 when the material emits light (its emission is not black). */
+int ssg_material_emits(const struct ssg_material *m);
+/* 1 when any material of the scene emits: emissive surfaces light it. */
+int ssg_scene_has_emission(const struct ssg_scene *scene);
+
 /* The axis-aligned box of every mesh vertex; lo > hi (+inf, -inf) when there is none. */
 void ssg_scene_bounds(const struct ssg_scene *scene, float lo[3], float hi[3]);
 /* When the bounding-box diagonal of the scene's models (its mesh lines; shapes do not

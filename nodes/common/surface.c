@@ -19,8 +19,7 @@ static void hit_uv(const struct ssg_mesh *m, const struct ssg_hit *h, float uv[2
 
 int ssg_hit_emits(const struct ssg_scene *s, const struct ssg_hit *h)
 {
-    const float *e = s->materials[s->meshes[h->mesh].material].emission;
-    return e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f;
+    return ssg_material_emits(&s->materials[s->meshes[h->mesh].material]);
 }
 
 void ssg_hit_emission(const struct ssg_scene *s, const struct ssg_hit *h, float out[3])

@@ -371,10 +371,7 @@ enum ssg_err ssg_reference_gi_run_cpu(const struct ssg_node_ctx *ctx, const void
     const int w = pos->width, h = pos->height;
     struct job j = {.c = consts, .scene = ctx->scene, .w = w, .h = h};
     const struct ssg_reference_gi_consts *c = consts;
-    for (int i = 0; i < ctx->scene->material_count; i++) {
-        const float *e = ctx->scene->materials[i].emission;
-        j.emitters |= e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f;
-    }
+    j.emitters = ssg_scene_has_emission(ctx->scene);
     j.lit = ctx->scene->light_count > 0 || c->use_env || j.emitters;
     for (int i = 0; i < 3; i++) {
         j.pos[i] = ssg_image_plane(pos, i);
