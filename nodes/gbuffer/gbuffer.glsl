@@ -121,8 +121,7 @@ struct Surface { float t; vec3 n; vec3 nv; vec3 alb; };
 Surface surface_at(int id, int tri, vec2 ray, vec3 w)
 {
     Mesh me = scene_mesh[id];
-    int i3 = me.indices + 3 * tri;
-    uvec3 v = uvec3(vindex[i3], vindex[i3 + 1], vindex[i3 + 2]);
+    uvec3 v = triangle_vertices(me, tri);
     vec3 p0 = fetch3(me.positions, v.x), p1 = fetch3(me.positions, v.y);
     vec3 p2 = fetch3(me.positions, v.z);
     vec3 tuv = intersect(w, p0, p1, p2);

@@ -28,8 +28,8 @@ void main()
     vec2 ray;
     vec3 w = pixel_ray(p, ray);
     Mesh me = scene_mesh[id];
-    int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
-    vec3 p0 = fetch3(me.positions, vindex[i3]), p1 = fetch3(me.positions, vindex[i3 + 1]);
-    vec3 p2 = fetch3(me.positions, vindex[i3 + 2]);
+    uvec3 v = triangle_vertices(me, int(texelFetch(ids, ivec3(p, 1), 0).r));
+    vec3 p0 = fetch3(me.positions, v.x), p1 = fetch3(me.positions, v.y);
+    vec3 p2 = fetch3(me.positions, v.z);
     SSG_STORE1(dst_back, p, intersect(w, p0, p1, p2).x);
 }

@@ -27,8 +27,7 @@ void main()
     if (m.emission_texels >= 0 && me.uvs >= 0 && any(greaterThan(e, vec3(0.0)))) {
         vec2 ray;
         vec3 w = pixel_ray(p, ray);
-        int i3 = me.indices + 3 * int(texelFetch(ids, ivec3(p, 1), 0).r);
-        uvec3 v = uvec3(vindex[i3], vindex[i3 + 1], vindex[i3 + 2]);
+        uvec3 v = triangle_vertices(me, int(texelFetch(ids, ivec3(p, 1), 0).r));
         vec3 tuv = intersect(w, fetch3(me.positions, v.x), fetch3(me.positions, v.y),
                              fetch3(me.positions, v.z));
         float w0 = 1.0 - tuv.y - tuv.z;

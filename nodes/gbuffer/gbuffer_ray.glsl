@@ -13,6 +13,13 @@ vec3 pixel_ray(ivec2 p, out vec2 ray)
                 rot[2] * ray.x + rot[5] * ray.y - rot[8]);
 }
 
+// The vertex numbers of triangle `tri` of mesh me.
+uvec3 triangle_vertices(Mesh me, int tri)
+{
+    int i3 = me.indices + 3 * tri;
+    return uvec3(vindex[i3], vindex[i3 + 1], vindex[i3 + 2]);
+}
+
 // (t, u, v) of the ray eye + t w in the plane of the triangle (Moller and Trumbore 1997).
 // No inside test: the rasteriser put the pixel centre on this triangle, and where it
 // misses by a rounding error the plane and the barycentrics extend continuously.
