@@ -93,6 +93,38 @@ static inline struct ssg_image *exr_layer(const char *dir, const char *file, con
     return im;
 }
 
+/* The world point of view-space point v under the camera's view matrix m
+   (ssg_camera_view_matrix: view = R world + t, column-major): world = R^T (v - t). */
+static inline void view_to_world(const float m[16], const float v[3], float w[3])
+{
+    float d[3] = {v[0] - m[12], v[1] - m[13], v[2] - m[14]};
+    for (int r = 0; r < 3; r++)
+        w[r] = m[4 * r] * d[0] + m[4 * r + 1] * d[1] + m[4 * r + 2] * d[2];
+}
+
+/* The world point of pixel i of a G-buffer's view-space `position` image (camera view
+   matrix m) into w; 0 on the background (no surface: view z 0). */
+static inline int pixel_world(const struct ssg_image *position, const float m[16], size_t i,
+                              float w[3])
+{
+    size_t plane = (size_t)position->width * position->height;
+    float v[3] = {position->data[i], position->data[plane + i], position->data[2 * plane + i]};
+    view_to_world(m, v, w);
+    return v[2] != 0.0f;
+}
+
+/* The view matrix of scene file `path`'s camera into m (its meshes are not loaded). */
+static inline void scene_view_matrix(const char *path, float m[16])
+{
+    struct ssg_scene *s = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_scene_load(path, 0, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    if (s)
+        ssg_camera_view_matrix(&s->camera, m);
+    ssg_scene_destroy(&s);
+}
+
 /* The node's defaults with `sets` applied; free() it. */
 static inline void *node_params(const struct ssg_node_desc *desc, const char *const *sets,
                                 int set_count)

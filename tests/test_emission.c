@@ -24,33 +24,18 @@ struct frame {
     float m[16]; /* the camera's view matrix */
 };
 
-static struct ssg_image *layer(const char *path, const char *name)
-{
-    struct ssg_diags d = {0};
-    struct ssg_image *im = NULL;
-    CHECK_EQ(ssg_image_read(path, name, &im, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    return im;
-}
-
 static int run(const char *backend, struct frame *f)
 {
-    char dir[600], path[700];
+    char dir[600];
     snprintf(dir, sizeof dir, "%s/%s", tmp, backend);
-    struct ssg_diags d = {0};
     CHECK_EQ(graph_run_on("tests/fixtures/emitter.graph", NULL, backend, dir), SSG_OK);
-    snprintf(path, sizeof path, "%s/emitter.exr", dir);
-    f->out = layer(path, NULL);
-    f->bounce = layer(path, "bounce");
-    f->direct = layer(path, "direct");
-    f->position = layer(path, "position");
-    f->emission = layer(path, "emission");
-    f->combined = layer(path, "frame");
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load("tests/fixtures/emitter.scene", 0, &s, &d), SSG_OK);
-    if (s)
-        ssg_camera_view_matrix(&s->camera, f->m);
-    ssg_scene_destroy(&s);
+    f->out = exr_layer(dir, "emitter.exr", NULL);
+    f->bounce = exr_layer(dir, "emitter.exr", "bounce");
+    f->direct = exr_layer(dir, "emitter.exr", "direct");
+    f->position = exr_layer(dir, "emitter.exr", "position");
+    f->emission = exr_layer(dir, "emitter.exr", "emission");
+    f->combined = exr_layer(dir, "emitter.exr", "frame");
+    scene_view_matrix("tests/fixtures/emitter.scene", f->m);
     return f->out && f->bounce && f->direct && f->position && f->emission && f->combined;
 }
 
@@ -64,16 +49,6 @@ static void release(struct frame *f)
 static float px(const struct ssg_image *im, int c, size_t i)
 {
     return ssg_image_plane(im, c)[i];
-}
-
-/* World point of pixel i (world = R^T (view - t)); 0 when background. */
-static int world(const struct frame *f, size_t i, float w[3])
-{
-    float v[3] = {px(f->position, 0, i) - f->m[12], px(f->position, 1, i) - f->m[13],
-                  px(f->position, 2, i) - f->m[14]};
-    for (int r = 0; r < 3; r++)
-        w[r] = f->m[4 * r] * v[0] + f->m[4 * r + 1] * v[1] + f->m[4 * r + 2] * v[2];
-    return px(f->position, 2, i) != 0.0f;
 }
 
 /* The form factor from a point to a parallel rectangle a x b at distance h, one corner
@@ -103,7 +78,7 @@ static void check_truth(const struct frame *f)
     for (size_t i = 0; i < (size_t)W * H; i++) {
         float w[3];
         direct = fmax(direct, fabs(px(f->direct, 0, i)));
-        if (!world(f, i, w))
+        if (!pixel_world(f->position, f->m, i, w))
             continue;
         if (fabsf(w[1] - 0.5f) < 1e-3f) { /* the square's underside: its own radiance */
             lamp++;
@@ -134,7 +109,7 @@ static void check_gbuffer(const char *backend, const struct frame *f)
     int bad = 0, lamp = 0;
     for (size_t i = 0; i < (size_t)W * H; i++) {
         float w[3];
-        int on = world(f, i, w) && fabsf(w[1] - 0.5f) < 1e-3f;
+        int on = pixel_world(f->position, f->m, i, w) && fabsf(w[1] - 0.5f) < 1e-3f;
         lamp += on;
         for (int c = 0; c < 3; c++) {
             bad += px(f->emission, c, i) != (on ? 1.0f : 0.0f);

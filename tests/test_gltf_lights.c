@@ -1,11 +1,11 @@
 /* test_gltf_lights.c - a glTF file's own lights (KHR_lights_punctual, issue 45):
- * - tests/fixtures/gltf_lights.scene (the file's point and directional lights, and a spot
- *   light that is not read yet) renders as gltf_lights_lines.scene, which drops the file's
- *   lights (lights=false) and writes the same two as scene lines: the G-buffer's direct
- *   light and direct_light's shadowed one agree to float rounding;
+ * - tests/fixtures/gltf_lights.scene (the file's point, directional and spot lights)
+ *   renders as gltf_lights_lines.scene, which drops the file's lights (lights=false) and
+ *   writes the same three as scene lines: the G-buffer's direct light and direct_light's
+ *   shadowed one agree to float rounding;
  * - the file's lights are read in world space (the point's node translation, the
- *   directional node's -Z turned straight down), a spot light is listed as not read, with a
- *   warning at the mesh line;
+ *   directional node's -Z turned straight down, the spot's -Z turned 70 degrees down and
+ *   its cone from radians), with no warning;
  * - a lights file (--lights) replaces them as it replaces the scene's own lines. */
 #include <math.h>
 #include <stdlib.h>
@@ -54,21 +54,24 @@ static void check_lights_read(void)
     struct ssg_diags d = {0};
     CHECK_EQ(ssg_scene_load("tests/fixtures/gltf_lights.scene", 1, &s, &d), SSG_OK);
     ssg_diags_print(&d, stderr);
-    CHECK(d.warning_count == 1 &&
-          strstr(d.warnings[0].message, "spot lights (KHR_lights_punctual spot)"));
+    CHECK_EQ(d.warning_count, 0);
     if (s) {
-        CHECK_EQ(s->light_count, 2);
-        CHECK(s->light_count == 2 && s->lights[0].kind == SSG_LIGHT_POINT &&
-              s->lights[1].kind == SSG_LIGHT_DIRECTIONAL);
-        if (s->light_count == 2) {
+        CHECK_EQ(s->light_count, 3);
+        CHECK(s->light_count == 3 && s->lights[0].kind == SSG_LIGHT_POINT &&
+              s->lights[1].kind == SSG_LIGHT_DIRECTIONAL && s->lights[2].kind == SSG_LIGHT_SPOT);
+        if (s->light_count == 3) {
             CHECK_NEAR(s->lights[0].position[1], 1.2, 1e-6);
             CHECK_NEAR(s->lights[0].color[2], 0.25, 0);
             CHECK_NEAR(s->lights[0].intensity, 2, 0);
             CHECK_NEAR(s->lights[1].direction[1], -1, 1e-6);
             CHECK_NEAR(s->lights[1].intensity, 0.5, 0);
+            CHECK_NEAR(s->lights[2].position[1], 2, 1e-6);
+            CHECK_NEAR(s->lights[2].direction[1], -sin(70 * M_PI / 180), 1e-6);
+            CHECK_NEAR(s->lights[2].direction[2], -cos(70 * M_PI / 180), 1e-6);
+            CHECK_NEAR(s->lights[2].cos_inner, cos(0.3), 1e-6);
+            CHECK_NEAR(s->lights[2].cos_outer, cos(0.6), 1e-6);
         }
-        CHECK(strstr(s->models[0].ignored, "spot lights (KHR_lights_punctual spot): 1 use: "
-                     "'spot'") != NULL);
+        CHECK(s->models[0].ignored[0] == 0);
     }
     ssg_scene_destroy(&s);
     /* a lights file relights the scene: the file's lights go with its own lines */

@@ -176,7 +176,7 @@ static void test_lights_file_errors(void)
     CHECK_EQ(d.items[0].line, 2);
     CHECK_EQ(d.items[0].column, 3);
     CHECK(strcmp(d.items[0].file, path) == 0);
-    CHECK(strstr(d.items[0].message, "point_light, directional_light and environment") != NULL);
+    CHECK(strstr(d.items[0].message, "point_light, directional_light, spot_light and environment") != NULL);
     d = (struct ssg_diags){0};
     path = write_file("two_skies.lights", "environment(color=[1, 1, 1])\n"
                                           "environment(color=[0, 0, 1])\n");

@@ -10,6 +10,14 @@ uniform ivec2 ssg_grid; // the dispatch's width and height (set by ssg_gl_dispat
 
 const float SSG_PI = 3.14159265358979323846;
 
+// ssg_cone_falloff (core/scene/scene.h): a spot light's share along a direction whose
+// cosine to its axis is c; scale 0 and offset 1 (a point light) give 1.
+float ssg_cone_falloff(float c, float scale, float offset)
+{
+    float t = clamp(c * scale + offset, 0.0, 1.0);
+    return t * t;
+}
+
 #ifdef SSG_COMPUTE
 ivec2 ssg_pixel() { return ivec2(gl_GlobalInvocationID.xy); }
 #endif

@@ -67,9 +67,10 @@ static const struct {
                "towards light i, row 1 its RGB irradiance on a surface facing it"},
     {"shadowmaps", "R x R, one channel per light of a lights list: the depth of the nearest "
                    "surface below each texel of light i's orthographic map"},
-    {"lightmaps", "R x R, a stack of faces of the maps of the scene's own point and "
-                  "directional lights (a cube of 6 faces a point light, 1 a directional "
-                  "light): depth, normal or reflected flux of the nearest surface per texel"},
+    {"lightmaps", "R x R, a stack of faces of the maps of the scene's own point, spot and "
+                  "directional lights (a cube of 6 faces a point light or a spot wider "
+                  "than 60 degrees, 1 a directional light or a narrower spot): depth, "
+                  "normal or reflected flux of the nearest surface per texel"},
 };
 
 const char *ssg_type_name(int bit)

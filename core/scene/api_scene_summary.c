@@ -162,14 +162,22 @@ static void print_triangles(FILE *out, const struct ssg_scene *s)
 
 static void print_lights(FILE *out, const struct ssg_scene *s)
 {
+    const double DEGREES = 57.29577951308232; /* per radian */
     const struct ssg_environment *env = &s->environment;
     int has_env = env->image >= 0 || env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0;
     fprintf(out, "  lights: %d%s\n", s->light_count, has_env ? " and an environment" : "");
     for (int i = 0; i < s->light_count; i++) {
         const struct ssg_light *li = &s->lights[i];
-        int point = li->kind == SSG_LIGHT_POINT;
-        fprintf(out, "    %s ", point ? "point_light" : "directional_light");
-        print_vec(out, point ? "position " : "direction ", point ? li->position : li->direction);
+        static const char *const kind[] = {"point_light", "directional_light", "spot_light"};
+        fprintf(out, "    %s ", kind[li->kind]);
+        if (li->kind != SSG_LIGHT_DIRECTIONAL)
+            print_vec(out, "position ", li->position);
+        if (li->kind != SSG_LIGHT_POINT)
+            print_vec(out, li->kind == SSG_LIGHT_SPOT ? " direction " : "direction ",
+                      li->direction);
+        if (li->kind == SSG_LIGHT_SPOT)
+            fprintf(out, " cone %g..%g degrees", acos(li->cos_inner) * DEGREES,
+                    acos(li->cos_outer) * DEGREES);
         print_vec(out, " color ", li->color);
         fprintf(out, " intensity %g\n", (double)li->intensity);
     }

@@ -51,7 +51,7 @@ struct ssg_gltf {
        material's texture keeps its alpha channel as its coverage plane. */
     int texture_count;
     struct ssg_texture *textures;
-    /* KHR_lights_punctual's point and directional lights on the default scene's nodes,
+    /* KHR_lights_punctual's point, spot and directional lights on the default scene's nodes,
        in world space, in the order the nodes are visited (glTF's candela and lux taken as
        ssgraph's W/sr and W/m^2, one to one). */
     int light_count;

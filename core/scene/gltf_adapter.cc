@@ -12,6 +12,7 @@ extern "C" {
 #include "lang/files.h"
 }
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <sys/stat.h>
@@ -310,10 +311,28 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
    silently vanished left the user framing the bounds without knowing why. A field of
    view past 1 to 179 degrees is refused too (the scene format's range). */
 
-/* A node's KHR_lights_punctual light (its extension's "light" index): a point light at
-   the node's origin, a directional one along its -Z axis; colour (default white) and
-   intensity as given, glTF's candela or lux read as ssgraph's W/sr or W/m^2. A spot light
-   and a light's range are not read yet: they are listed as ignored. */
+/* A spot light's cone (radians in glTF: 0 <= inner < outer <= pi / 2) into l, in the
+   scene format's range (outer at most 89 degrees, inner at most outer); a point or
+   directional light gets no cone. */
+static void set_cone(const tinygltf::Light &src, const std::string &who, ssg_light *l)
+{
+    double inner = src.spot.innerConeAngle * 180.0 / M_PI;
+    double outer = src.spot.outerConeAngle * 180.0 / M_PI;
+    if (l->kind == SSG_LIGHT_SPOT && !(inner >= 0 && outer > 0 && inner <= outer &&
+                                       outer <= 90.0 + 1e-6))
+        fail("spot light " + who + ": innerConeAngle " +
+                            std::to_string(src.spot.innerConeAngle) + " and outerConeAngle " +
+                            std::to_string(src.spot.outerConeAngle) +
+                            " (expected 0 <= inner <= outer <= pi/2, radians)");
+    outer = std::min(outer, 89.0);
+    ssg_light_set_cone(l, (float)std::min(inner, outer), (float)outer);
+}
+
+/* A node's KHR_lights_punctual light (its extension's "light" index): a point or spot
+   light at the node's origin, a directional or spot one along its -Z axis; colour
+   (default white) and intensity as given, glTF's candela or lux read as ssgraph's W/sr or
+   W/m^2, a spot's cone as spot_light's. A light's range is not read: it is listed as
+   ignored. */
 void Flattener::add_light(const tinygltf::Node &node, const Mat4 &w)
 {
     auto ext = node.extensions.find("KHR_lights_punctual");
@@ -326,25 +345,23 @@ void Flattener::add_light(const tinygltf::Node &node, const Mat4 &w)
     const tinygltf::Light &src = m.lights[(size_t)index];
     std::string who = src.name.empty() ? "light " + std::to_string(index)
                                        : "'" + model_adapter::printable(src.name) + "'";
-    if (src.type == "spot") {
-        mats.ignored.add("spot lights (KHR_lights_punctual spot)", who);
-        return;
-    }
-    if (src.type != "point" && src.type != "directional")
+    if (src.type != "point" && src.type != "directional" && src.type != "spot")
         fail("KHR_lights_punctual light " + who + " has type '" +
              model_adapter::printable(src.type) + "' (expected point, spot or directional)");
     if (src.range > 0)
         mats.ignored.add("light ranges (KHR_lights_punctual range: a light falls off as "
                          "1/d^2 without a cut-off)", who);
     ssg_light l{};
-    l.kind = src.type == "point" ? SSG_LIGHT_POINT : SSG_LIGHT_DIRECTIONAL;
-    double axis[3] = {-w[8], -w[9], -w[10]};
+    l.kind = src.type == "point" ? SSG_LIGHT_POINT
+             : src.type == "spot" ? SSG_LIGHT_SPOT : SSG_LIGHT_DIRECTIONAL;
+    double axis[3] = {-w[8], -w[9], -w[10]}; /* the node's -z: where glTF lights point */
     double len = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    if (l.kind == SSG_LIGHT_DIRECTIONAL && !(len > 0 && std::isfinite(len)))
-        fail("directional light " + who + ": its node's transform leaves it no direction");
+    if (l.kind != SSG_LIGHT_POINT && !(len > 0 && std::isfinite(len)))
+        fail(src.type + " light " + who + ": its node's transform leaves it no direction");
+    set_cone(src, who, &l);
     for (int i = 0; i < 3; i++) {
         l.position[i] = (float)w[12 + i];
-        l.direction[i] = l.kind == SSG_LIGHT_DIRECTIONAL ? (float)(axis[i] / len) : 0.0f;
+        l.direction[i] = l.kind != SSG_LIGHT_POINT ? (float)(axis[i] / len) : 0.0f;
         l.color[i] = src.color.size() == 3 ? (float)src.color[(size_t)i] : 1.0f;
     }
     l.intensity = (float)src.intensity;

@@ -278,7 +278,8 @@ static int get_model(struct ssg_wire *w, struct ssg_gltf *g)
         return 0;
     g->light_count = (int)lights;
     for (int i = 0; i < g->light_count; i++)
-        if (g->lights[i].kind != SSG_LIGHT_POINT && g->lights[i].kind != SSG_LIGHT_DIRECTIONAL)
+        if (g->lights[i].kind != SSG_LIGHT_POINT && g->lights[i].kind != SSG_LIGHT_DIRECTIONAL &&
+            g->lights[i].kind != SSG_LIGHT_SPOT)
             return fail(w, SSG_WIRE_CORRUPT);
     if (!get_int(w, 0, 1, &camera) ||
         !get(w, &g->camera, sizeof g->camera) || !get(w, g->ignored, sizeof g->ignored))

@@ -207,6 +207,18 @@ static void check_required(struct scene_loader *l, const struct scene_entity *e)
         }
 }
 
+/* A spot light's inner cone may not be wider than its outer one. */
+static void check_cone(struct scene_loader *l, const struct scene_entity *e)
+{
+    const struct light_args *a = e->args;
+    if (a->inner_angle <= a->outer_angle)
+        return;
+    char what[160];
+    snprintf(what, sizeof what, "inner_angle %g is wider than outer_angle %g (the "
+             "full-intensity cone lies inside the lit one)", a->inner_angle, a->outer_angle);
+    problem(l, e, "inner_angle", SSG_E_VALUE, what);
+}
+
 static int is_zero3(const float v[3])
 {
     return v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f;
@@ -296,9 +308,12 @@ static void check_entity(struct scene_loader *l, struct scene_entity *e)
     case SK_ORBIT:
     case SK_FRAME_RATE: break;
     case SK_DIRECTIONAL_LIGHT:
+    case SK_SPOT_LIGHT:
         if (e->at[param_index(e, "direction")].src &&
             is_zero3(((const struct light_args *)e->args)->direction))
             problem(l, e, "direction", SSG_E_VALUE, "the direction is zero");
+        if (e->kind == SK_SPOT_LIGHT)
+            check_cone(l, e);
         break;
     case SK_ENVIRONMENT:
         check_file(l, e, "image", ((const struct environment_args *)e->args)->image);
@@ -341,7 +356,7 @@ static void check_unique(struct scene_loader *l, enum scene_kind kind)
 
 static int is_light_kind(enum scene_kind k)
 {
-    return k == SK_POINT_LIGHT || k == SK_DIRECTIONAL_LIGHT || k == SK_ENVIRONMENT;
+    return scene_kind_is_own_light(k) || k == SK_ENVIRONMENT;
 }
 
 /* Parses one file and appends its entities. With lights_only, a statement that is not a
@@ -369,7 +384,7 @@ static void read_file_entities(struct scene_loader *l, const char *path, int lig
         if (is_light_kind(l->ents[i].kind))
             continue;
         ssg_diag_at(l->diags, SSG_E_SYNTAX, l->ents[i].stmt->callee_loc, "a lights file holds "
-                    "only point_light, directional_light and environment (got '%s'; it "
+                    "only point_light, directional_light, spot_light and environment (got '%s'; it "
                     "replaces the lights of the scene, whose geometry stays)",
                     entity_name(&l->ents[i]));
         ssg_scene_fail(l, SSG_E_SYNTAX);
@@ -413,7 +428,7 @@ static void scene_defaults(struct ssg_scene *s, struct scene_loader *l)
     s->environment.image = -1;
     for (int i = 0; i < l->count; i++) {
         const struct scene_entity *e = &l->ents[i];
-        if (e->kind == SK_POINT_LIGHT || e->kind == SK_DIRECTIONAL_LIGHT)
+        if (scene_kind_is_own_light(e->kind))
             s->light_lines++;
         if (e->kind == SK_CAMERA) {
             c = *(const struct camera_args *)e->args;
@@ -472,6 +487,20 @@ void ssg_scene_swap_lights(struct ssg_scene *a, struct ssg_scene *b)
     SWAP(int, a->light_lines, b->light_lines);
     SWAP(struct ssg_environment, a->environment, b->environment);
     SWAP(struct ssg_env *, a->env, b->env);
+}
+
+void ssg_light_set_cone(struct ssg_light *l, float inner_deg, float outer_deg)
+{
+    l->cone_scale = 0.0f, l->cone_offset = 1.0f;
+    l->cos_inner = l->cos_outer = -1.0f;
+    if (l->kind != SSG_LIGHT_SPOT)
+        return;
+    const double rad = 0.017453292519943295; /* pi / 180 */
+    l->cos_inner = (float)cos(inner_deg * rad), l->cos_outer = (float)cos(outer_deg * rad);
+    /* glTF's lightAngleScale and lightAngleOffset; a hard edge when inner = outer */
+    float span = l->cos_inner - l->cos_outer;
+    l->cone_scale = 1.0f / (span > 1e-3f ? span : 1e-3f);
+    l->cone_offset = -l->cos_outer * l->cone_scale;
 }
 
 int ssg_material_emits(const struct ssg_material *m)

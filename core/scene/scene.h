@@ -20,6 +20,10 @@
 
 #include "ssgraph.h"
 
+#ifdef __cplusplus
+extern "C" { /* the C++ model adapters read lights */
+#endif
+
 struct ssg_camera {
     float position[3]; /* world, scene units */
     float target[3];   /* world point looked at */
@@ -53,16 +57,41 @@ struct ssg_camera_path {
     float near_z, far_z;         /* of the camera line, or its defaults */
 };
 
-enum ssg_light_kind { SSG_LIGHT_POINT, SSG_LIGHT_DIRECTIONAL };
+enum ssg_light_kind { SSG_LIGHT_POINT, SSG_LIGHT_DIRECTIONAL, SSG_LIGHT_SPOT };
 
 struct ssg_light {
     enum ssg_light_kind kind;
-    float position[3];  /* point: world position */
-    float direction[3]; /* directional: unit direction the light travels (world) */
+    float position[3];  /* point and spot: world position */
+    float direction[3]; /* directional: unit direction the light travels; spot: the unit
+                           axis of its cone (where it points); point: unused */
     float color[3];     /* linear RGB */
-    float
-        intensity; /* point: radiant intensity (falls off with 1/d^2); directional: irradiance */
+    float intensity;    /* point and spot: radiant intensity on the axis (falls off with
+                           1/d^2); directional: irradiance */
+    float cos_inner, cos_outer; /* spot: cosines of the cone's half-angles, inner >= outer */
+    /* The cone as ssg_light_cone reads it, set by ssg_light_set_cone: a point light is a
+       spot whose cone passes everything (scale 0, offset 1). */
+    float cone_scale, cone_offset;
 };
+
+/* Sets a spot light's cone from its half-angles in degrees (0 < inner <= outer < 90, as
+   the scene's checks and the glTF reader leave them), or a point light's (no cone). */
+void ssg_light_set_cone(struct ssg_light *l, float inner_deg, float outer_deg);
+
+/* The fraction of a point or spot light's axial intensity it sends along unit direction w
+   (away from the light): 1 for a point light; for a spot light, with c = direction . w,
+   t = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1) and the fraction t^2 (the
+   falloff KHR_lights_punctual recommends): 1 inside the inner cone, 0 outside the outer. */
+static inline float ssg_cone_falloff(float cosine, float cone_scale, float cone_offset)
+{
+    float t = cosine * cone_scale + cone_offset;
+    t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+    return t * t;
+}
+static inline float ssg_light_cone(const struct ssg_light *l, const float w[3])
+{
+    float c = l->direction[0] * w[0] + l->direction[1] * w[1] + l->direction[2] * w[2];
+    return ssg_cone_falloff(c, l->cone_scale, l->cone_offset);
+}
 
 /* A decoded texture: linear RGB floats, interleaved, row 0 at the top, and its coverage
  * (alpha) plane when a masked material reads it. */
@@ -142,7 +171,7 @@ struct ssg_scene {
     struct ssg_camera_path camera_path; /* key_count 0 and has_orbit 0 = a static camera */
     struct ssg_environment environment;
     int light_count, material_count, mesh_count, texture_count;
-    int light_lines; /* point_light and directional_light lines (after a lights file), known
+    int light_lines; /* point_light, directional_light and spot_light lines (after a lights file), known
                         without loading: light_count is 0 until the scene is built */
     struct ssg_light *lights;
     struct ssg_material *materials;
@@ -167,7 +196,7 @@ enum ssg_err ssg_scene_load(const char *path, int load_assets, struct ssg_scene 
 void ssg_scene_swap_lights(struct ssg_scene *a, struct ssg_scene *b);
 
 /* Same, with the scene's lights and environment replaced by those of the scene file
- * `lights` (which may hold only point_light, directional_light and environment; its image
+ * `lights` (which may hold only own light lines and environment; its image
  * paths are relative to itself): one geometry under a sun, a sky or a probe. lights NULL
  * = the scene's own. */
 enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_assets,
@@ -212,5 +241,9 @@ enum ssg_camera_part {
 const char *ssg_camera_fault(const struct ssg_camera *camera, enum ssg_camera_part *part);
 /* The scene file argument a part is written as: "position", "target", "up", "fov", "far". */
 const char *ssg_camera_part_arg(enum ssg_camera_part part);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

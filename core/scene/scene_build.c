@@ -103,7 +103,9 @@ static void build_light(struct scene_loader *l, const struct scene_entity *e)
     const struct light_args *a = e->args;
     struct ssg_light *li = &l->scene->lights[l->scene->light_count++];
     memset(li, 0, sizeof *li);
-    li->kind = e->kind == SK_POINT_LIGHT ? SSG_LIGHT_POINT : SSG_LIGHT_DIRECTIONAL;
+    li->kind = e->kind == SK_POINT_LIGHT ? SSG_LIGHT_POINT
+               : e->kind == SK_SPOT_LIGHT ? SSG_LIGHT_SPOT : SSG_LIGHT_DIRECTIONAL;
+    ssg_light_set_cone(li, a->inner_angle, a->outer_angle);
     memcpy(li->position, a->position, sizeof li->position);
     memcpy(li->color, a->color, sizeof li->color);
     li->intensity = a->intensity;
@@ -453,7 +455,7 @@ void ssg_scene_build(struct scene_loader *l)
     for (int i = 0; i < l->count; i++) {
         if (l->ents[i].kind == SK_MATERIAL)
             build_material(l, i);
-        else if (l->ents[i].kind == SK_POINT_LIGHT || l->ents[i].kind == SK_DIRECTIONAL_LIGHT)
+        else if (scene_kind_is_own_light(l->ents[i].kind))
             build_light(l, &l->ents[i]);
     }
     build_environment(l);

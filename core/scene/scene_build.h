@@ -20,6 +20,7 @@ enum scene_kind {
     SK_MATERIAL,
     SK_POINT_LIGHT,
     SK_DIRECTIONAL_LIGHT,
+    SK_SPOT_LIGHT,
     SK_ENVIRONMENT,
     SK_PLANE,
     SK_BOX,
@@ -60,11 +61,18 @@ struct material_args {
     float normal_scale;           /* multiplies the map's x and y */
 };
 struct light_args {
-    float position[3];  /* point light, world */
-    float direction[3]; /* directional light: the way the light travels */
+    float position[3];  /* point and spot light, world */
+    float direction[3]; /* directional light: the way the light travels; spot: its axis */
     float color[3];
     float intensity;
+    float inner_angle, outer_angle; /* spot: the cone's half-angles, degrees */
 };
+
+/* The kinds that are one of the scene's own lights (a light line). */
+static inline int scene_kind_is_own_light(enum scene_kind k)
+{
+    return k == SK_POINT_LIGHT || k == SK_DIRECTIONAL_LIGHT || k == SK_SPOT_LIGHT;
+}
 struct environment_args {
     float color[3];
     float intensity;

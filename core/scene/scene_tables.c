@@ -112,6 +112,19 @@ static const struct ssg_param_desc directional_light_params[] = {
     FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/m^2",
           "irradiance on a surface facing the light"),
 };
+static const struct ssg_param_desc spot_light_params[] = {
+    REQ_VEC3("position", light_args, position, "scene units", "light position"),
+    REQ_VEC3("direction", light_args, direction, NULL, "the cone's axis: where the light "
+             "points"),
+    FLOAT("inner_angle", light_args, inner_angle, 20, 0, 89, "degrees",
+          "half-angle of the cone of full intensity"),
+    FLOAT("outer_angle", light_args, outer_angle, 30, 0.01, 89, "degrees",
+          "half-angle beyond which nothing is lit; between the two the intensity falls as "
+          "t^2, t = (cos a - cos outer) / (cos inner - cos outer) (glTF's spot)"),
+    VEC3("color", light_args, color, 1, 1, 1, 0, BIG, NULL, "linear RGB"),
+    FLOAT("intensity", light_args, intensity, 1, 0, BIG, "W/sr",
+          "radiant intensity on the axis; irradiance falls off as 1/d^2"),
+};
 static const struct ssg_param_desc environment_params[] = {
     VEC3("color", environment_args, color, 1, 1, 1, 0, BIG, NULL,
          "constant radiance, linear RGB"),
@@ -155,8 +168,8 @@ static const struct ssg_param_desc mesh_params[] = {
     VEC3("scale", mesh_args, scale, 1, 1, 1, 1e-6, BIG, NULL, "scale factors, applied first "
          "(0.001 for a model in millimetres; `ssgraph check` suggests one)"),
     {.name = "lights", SSG_FIELD_BOOL(struct mesh_args, lights), .def = 1,
-     .help = "true: the file's own lights (glTF KHR_lights_punctual point and directional "
-             "lights, placed by the mesh line's transform) join the scene's light lines; "
+     .help = "true: the file's own lights (glTF KHR_lights_punctual point, spot and "
+             "directional lights, placed by the mesh line's transform) join the scene's light lines; "
              "false: they are dropped (write your own lines to override them). A lights "
              "file (--lights) replaces them too"},
 };
@@ -196,6 +209,11 @@ const struct scene_kind_desc ssg_scene_kinds[SK_COUNT] = {
                             "An isotropic point light. Any number of lights of either kind."),
     [SK_DIRECTIONAL_LIGHT] = KIND("directional_light", directional_light_params, light_args,
                                   "A light at infinity (the sun): parallel rays, no falloff."),
+    [SK_SPOT_LIGHT] = KIND("spot_light", spot_light_params, light_args,
+                           "A point light lit only within a cone around `direction`: full "
+                           "intensity inside `inner_angle`, none beyond `outer_angle`. Its "
+                           "map is one perspective face along the axis when outer_angle <= "
+                           "60 degrees, else a point light's six cube faces."),
     [SK_ENVIRONMENT] = KIND("environment", environment_params, environment_args,
                             "Light from every direction: a constant sky colour, or a 2:1 "
                             "lat-long HDR probe (centre looking down -z, top row straight "
@@ -256,8 +274,9 @@ static const struct {
      "colour", "not read", "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), "
      "reference_gi's bounce hits", "test_vertex_colors"},
     {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
-    {"lights", "KHR_lights_punctual point and directional lights (candela and lux read as "
-     "W/sr and W/m^2); spot lights and `range` not read yet", "not read", "every path, as "
+    {"lights", "KHR_lights_punctual point, spot and directional lights (candela and lux "
+     "read as W/sr and W/m^2, a spot's cone as spot_light's); `range` not read", "not read",
+     "every path, as "
      "the scene's own lights; the mesh line's lights=false drops them, a lights file "
      "replaces them", "test_gltf_lights"},
     {"camera", "the default scene's first perspective camera", "not read", "the scene's "

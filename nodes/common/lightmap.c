@@ -1,4 +1,5 @@
 /* lightmap.c - the faces of lightmap.h, built from the scene's lights alone. */
+#include <math.h>
 #include <stdio.h>
 
 #include "scene/scene.h"
@@ -12,12 +13,21 @@ static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
     {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
 };
 
+int ssg_lightmap_light_faces(const struct ssg_light *light)
+{
+    static const float SPOT_FACE_COS = 0.5f; /* cos SSG_LIGHTMAP_SPOT_FACE_DEG */
+    if (light->kind == SSG_LIGHT_DIRECTIONAL ||
+        (light->kind == SSG_LIGHT_SPOT && light->cos_outer >= SPOT_FACE_COS))
+        return 1;
+    return SSG_LIGHTMAP_CUBE_FACES;
+}
+
 /* Faces of the scene's own lights alone: at least 1. */
 static int own_face_count(const struct ssg_scene *scene)
 {
     int n = 0;
     for (int i = 0; scene && i < scene->light_count; i++)
-        n += scene->lights[i].kind == SSG_LIGHT_POINT ? SSG_LIGHTMAP_CUBE_FACES : 1;
+        n += ssg_lightmap_light_faces(&scene->lights[i]);
     return n > 0 ? n : 1;
 }
 
@@ -68,6 +78,35 @@ static void cube_face(const struct ssg_light *light, int side, struct ssg_lightm
     }
 }
 
+/* A spot light's one face: along its axis, u and v any frame with u x v = axis, as wide
+   as its outer cone. */
+static void spot_face(const struct ssg_light *light, struct ssg_lightmap_face *f)
+{
+    const float *a = light->direction;
+    /* the world axis least along a, made perpendicular to it */
+    int k0 = fabsf(a[0]) <= fabsf(a[1]) && fabsf(a[0]) <= fabsf(a[2]) ? 0
+             : fabsf(a[1]) <= fabsf(a[2]) ? 1 : 2;
+    float u[3] = {0, 0, 0}, len = 0.0f;
+    u[k0] = 1.0f;
+    for (int k = 0; k < 3; k++)
+        u[k] -= a[k0] * a[k];
+    for (int k = 0; k < 3; k++)
+        len += u[k] * u[k];
+    len = 1.0f / sqrtf(len);
+    float s = sqrtf(fmaxf(0.0f, 1.0f - light->cos_outer * light->cos_outer));
+    f->ortho = 0;
+    f->half = s / light->cos_outer;
+    for (int k = 0; k < 3; k++) {
+        f->origin[k] = light->position[k];
+        f->axis[k] = a[k];
+        f->u[k] = u[k] * len;
+    }
+    /* v = axis x u, so that u x v = axis */
+    f->v[0] = a[1] * f->u[2] - a[2] * f->u[1];
+    f->v[1] = a[2] * f->u[0] - a[0] * f->u[2];
+    f->v[2] = a[0] * f->u[1] - a[1] * f->u[0];
+}
+
 const char *const ssg_lightmap_fit_choices[] = {"scene", "view", NULL};
 
 /* The own lights' faces into faces[0 ..]; returns how many. */
@@ -87,6 +126,11 @@ static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sp
             float l[3] = {-light->direction[0], -light->direction[1], -light->direction[2]};
             faces[n] = (struct ssg_lightmap_face){.light = i};
             directional_face(sphere, l, &faces[n++]);
+            continue;
+        }
+        if (ssg_lightmap_light_faces(light) == 1) {
+            faces[n] = (struct ssg_lightmap_face){.light = i};
+            spot_face(light, &faces[n++]);
             continue;
         }
         for (int side = 0; side < SSG_LIGHTMAP_CUBE_FACES; side++) {

@@ -1,4 +1,4 @@
-/* lightmap.h - the maps of a scene's own lights (point_light, directional_light), shared by
+/* lightmap.h - the maps of a scene's own lights (point, spot, directional), shared by
  * the node that renders them (`lightmaps`) and the nodes that read them (shadowed direct
  * light, the reflective-shadow-map gather): every node builds the same faces from the scene
  * alone, so no matrix travels along an edge (as nodes/common/shadowmap.h does for the
@@ -6,18 +6,22 @@
  *
  * Faces. Light i of the scene (scene order) owns consecutive faces: one for a directional
  * light, an orthographic map over the scene's bounding sphere in the frame of
- * ssg_shadow_frame_make (l = -direction, towards the light), and six for a point light, a
+ * ssg_shadow_frame_make (l = -direction, towards the light), six for a point light, a
  * cube map around its position, face k a 90 degree perspective view along CUBE axis k
- * (+x, -x, +y, -y, +z, -z). A scene without such lights has one empty face (light -1), so
- * that an image always has channels.
+ * (+x, -x, +y, -y, +z, -z), and for a spot light one perspective face along its axis
+ * whose half-width is tan(outer angle) when the outer angle is at most
+ * SSG_LIGHTMAP_SPOT_FACE_DEG, else a point light's six. A scene without such lights has
+ * one empty face (light -1), so that an image always has channels.
  *
  * Texel (x, y) of a face (row 0 at -v) has a = 2 (x + 0.5) / R - 1, b = 2 (y + 0.5) / R - 1
  * in [-1, 1]; its ray runs
  *   orthographic: from origin + half (a u + b v) along axis (= -l),
- *   cube:         from the light's position (origin) along axis + a u + b v,
+ *   perspective:  from the light's position (origin) along axis + half (a u + b v)
+ *                 (a cube face has half 1),
  * and a world point p lies at depth z = dot(p - origin, axis) on every face kind:
- * orthographic a = dot(p - origin, u) / half, cube a = dot(p - origin, u) / z (same for b
- * with v). That depth z is what the maps store and what a shadow test compares.
+ * orthographic a = dot(p - origin, u) / half, perspective a = dot(p - origin, u) / (z half)
+ * (same for b with v). That depth z is what the maps store and what a shadow test
+ * compares.
  *
  * Images (SSG_T_LIGHTMAPS, R x R, planar channels, F faces):
  *   depth   F channels: z of the nearest surface on texel (x, y) of face f (both faces of
@@ -28,8 +32,10 @@
  *   flux    3F channels: the RGB radiant flux that surface patch reflects (diffuse albedo
  *           times the flux arriving through the texel, W): orthographic
  *           albedo x E x (2 half / R)^2 with E the light's colour x intensity (irradiance on
- *           a surface facing it), cube albedo x I x ssg_lightmap_texel_solid_angle with I the
- *           colour x intensity (radiant intensity); 0 where empty. A patch of reflected flux
+ *           a surface facing it), perspective albedo x I x cone x
+ *           ssg_lightmap_texel_solid_angle with I the colour x intensity (radiant intensity)
+ *           and cone the spot's falloff along the texel's ray (1 for a point light); 0
+ *           where empty. A patch of reflected flux
  *           Phi at y with normal n_y gives a point x with normal n_x the irradiance
  *           Phi / pi x max(0, n_y . w) max(0, -n_x . w) / d^2, w = (y - x) / d reversed
  *           (Dachsbacher and Stamminger, "Reflective Shadow Maps", I3D 2005, eq. 1, with the
@@ -44,6 +50,7 @@
 #include "common/shadowmap.h"
 
 struct ssg_scene;
+struct ssg_light;
 struct ssg_camera;
 struct ssg_frame;
 
@@ -55,15 +62,23 @@ enum { SSG_LIGHTMAP_FACES_MAX = 682 };
 struct ssg_lightmap_face {
     int light;        /* index into scene->lights; -1 for the empty face of a scene without;
                          SSG_LIGHTMAP_ENV_LIGHT(k) for environment light k */
-    int ortho;        /* 1: a directional light's orthographic map; 0: a cube face */
-    float origin[3];  /* orthographic: the centre of the map's plane; cube: the light */
+    int ortho;        /* 1: a directional light's orthographic map; 0: perspective (a
+                         cube face or a spot light's face) */
+    float origin[3];  /* orthographic: the centre of the map's plane; perspective: the
+                         light */
     float u[3], v[3]; /* the face's image axes (a along u, b along v) */
-    float axis[3];    /* the direction depth is measured along (cube: u x v = axis;
+    float axis[3];    /* the direction depth is measured along (perspective: u x v = axis;
                          orthographic: u, v of ssg_shadow_frame_make, u x v = -axis) */
-    float half;       /* orthographic: half the map's side, world units; cube: 1 */
+    float half;       /* orthographic: half the map's side, world units; perspective: the
+                         tangent of half its field of view (a cube face: 1) */
 };
 
-/* Which lights a set of maps holds: the scene's own (point and directional) lights, and
+/* The widest spot light (outer half-angle, degrees) mapped by one perspective face; a
+   wider one takes six cube faces, as a point light: a face much wider than 120 degrees
+   spends its texels at the rim. */
+#define SSG_LIGHTMAP_SPOT_FACE_DEG 60.0f
+
+/* Which lights a set of maps holds: the scene's own (point, spot, directional) lights, and
    the environment as this many directional lights (0: none). At least one of the two. */
 struct ssg_lightmap_sources {
     int own;
@@ -80,7 +95,12 @@ static inline int ssg_lightmap_face_env(const struct ssg_lightmap_face *f)
     return f->light <= -2 ? -2 - f->light : -1;
 }
 
-/* Faces the sources need: 1 a directional light, 6 a point light, 1 an environment light;
+/* Faces one own light takes: 1 (directional, a spot up to SSG_LIGHTMAP_SPOT_FACE_DEG)
+   or SSG_LIGHTMAP_CUBE_FACES (point, a wider spot): then the face a direction from the
+   light falls on is ssg_lightmap_cube_face's. */
+int ssg_lightmap_light_faces(const struct ssg_light *light);
+
+/* Faces the sources need: ssg_lightmap_light_faces per own light, 1 an environment light;
    with own lights, at least 1 (the empty face of a scene without). */
 int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_sources src);
 
@@ -147,7 +167,7 @@ static inline int ssg_lightmap_project(const struct ssg_lightmap_face *f, int re
     *z = depth;
     if (!f->ortho && depth <= 0.0f)
         return 0;
-    float scale = f->ortho ? 1.0f / f->half : 1.0f / depth;
+    float scale = 1.0f / (f->ortho ? f->half : depth * f->half);
     *x = (du * scale + 1.0f) * 0.5f * (float)res;
     *y = (dv * scale + 1.0f) * 0.5f * (float)res;
     return 1;
@@ -175,17 +195,19 @@ static inline void ssg_lightmap_texel_point(const struct ssg_lightmap_face *f, i
         if (f->ortho)
             p[k] = f->origin[k] + f->half * (a * f->u[k] + b * f->v[k]) + z * f->axis[k];
         else
-            p[k] = f->origin[k] + z * (f->axis[k] + a * f->u[k] + b * f->v[k]);
+            p[k] = f->origin[k] + z * (f->axis[k] + f->half * a * f->u[k] +
+                                       f->half * b * f->v[k]);
     }
 }
 
-/* The solid angle of texel (x, y) of a cube face of resolution res, seen from the light:
-   (2 / R)^2 / (1 + a^2 + b^2)^(3/2) at its centre. */
-static inline float ssg_lightmap_texel_solid_angle(int res, int x, int y)
+/* The solid angle of texel (x, y) of a perspective face of half-width `half` (a cube
+   face: 1) and resolution res, seen from the light: (2 half / R)^2 / (1 + half^2 (a^2 +
+   b^2))^(3/2) at its centre. */
+static inline float ssg_lightmap_texel_solid_angle(float half, int res, int x, int y)
 {
     float a = 2.0f * ((float)x + 0.5f) / (float)res - 1.0f;
     float b = 2.0f * ((float)y + 0.5f) / (float)res - 1.0f;
-    float q = 1.0f + a * a + b * b, s = 2.0f / (float)res;
+    float q = 1.0f + half * half * (a * a + b * b), s = 2.0f * half / (float)res;
     return s * s / (q * sqrtf(q));
 }
 

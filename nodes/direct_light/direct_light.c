@@ -38,7 +38,8 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
     int have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
     if (have != need) {
         snprintf(why, why_len, "maps has %d faces but the scene's lights need %d (6 a point "
-                 "light, 1 a directional light): connect the depth output of a lightmaps "
+                 "light or a spot wider than 60 degrees, 1 a directional light or a narrower "
+                 "spot): connect the depth output of a lightmaps "
                  "node of the same scene with own=true and environment=0 (direct_light "
                  "reads the own lights' maps only)", have, need);
         return SSG_E_CHANNELS;
@@ -56,14 +57,17 @@ static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_const
             continue;
         const struct ssg_light *l = &s->lights[face->light];
         struct ssg_direct_light_light *d = &c->light[c->u.lights++];
-        *d = (struct ssg_direct_light_light){.point = !face->ortho, .face = f};
+        *d = (struct ssg_direct_light_light){.point = !face->ortho, .face = f,
+                                             .cube = ssg_lightmap_light_faces(l) > 1,
+                                             .cone_scale = l->cone_scale,
+                                             .cone_offset = l->cone_offset};
         for (int k = 0; k < 3; k++) {
             d->pos[k] = l->position[k];
             d->dir[k] = l->direction[k];
             d->color[k] = l->color[k];
         }
         d->intensity = l->intensity;
-        d->texel = face->ortho ? 2.0f * face->half / (float)c->u.res : 2.0f / (float)c->u.res;
+        d->texel = 2.0f * face->half / (float)c->u.res;
         d->spread = face->ortho ? tanf(c->p.sun_angle * (float)(M_PI / 180.0))
                                 : c->p.light_size;
     }

@@ -8,7 +8,8 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 struct Face { int light; int ortho; float origin[3]; float u[3]; float v[3]; float axis[3];
               float half_side; };
 struct Light { float pos[3]; float dir[3]; float color[3]; float intensity; int point;
-               int face; float texel; float spread; };
+               int face; float texel; float spread; int cube; float cone_scale;
+               float cone_offset; };
 layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
 layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
 layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
@@ -52,7 +53,7 @@ struct Lookup { int l; int f; float x, y, r, z, texel, bias, gx, gy, nq; vec3 n;
 
 float occluder(Lookup k, int x, int y)
 {
-    if (light[k.l].point != 0)
+    if (light[k.l].cube != 0)
         return cube_depth(light[k.l].face, k.f, x, y);
     if (x < 0 || y < 0 || x >= res || y >= res)
         return EMPTY;
@@ -68,7 +69,7 @@ float tap_limit(Lookup k, float x, float y)
     } else {
         int f = light[k.l].face + k.f;
         float a = 2.0 * x / float(res) - 1.0, b = 2.0 * y / float(res) - 1.0;
-        vec3 d = fa(f) + a * fu(f) + b * fv(f);
+        vec3 d = fa(f) + (face[f].half_side * a) * fu(f) + (face[f].half_side * b) * fv(f);
         float len = length(d), nd = dot(k.n, d) / len;
         t = nd < 0.0 ? k.nq / nd : k.r + m;
         t = clamp(t, k.r - m, k.r + m);
@@ -139,11 +140,12 @@ Lookup locate(int li, vec3 p, vec3 n, vec3 l)
     bool point = light[li].point != 0;
     k.texel = receiver_texel(li, p);
     vec3 q = p + p_normal_offset * k.texel * sine * n;
-    k.f = point ? cube_face(q - lp) : 0;
+    k.f = light[li].cube != 0 ? cube_face(q - lp) : 0;
     k.r = length(q - lp);
     int f = light[li].face + k.f;
     vec3 d = q - fo(f);
-    float z = dot(d, fa(f)), scale = face[f].ortho != 0 ? 1.0 / face[f].half_side : 1.0 / z;
+    float z = dot(d, fa(f));
+    float scale = face[f].ortho != 0 ? 1.0 / face[f].half_side : 1.0 / (z * face[f].half_side);
     k.x = (dot(d, fu(f)) * scale + 1.0) * 0.5 * float(res);
     k.y = (dot(d, fv(f)) * scale + 1.0) * 0.5 * float(res);
     if (!point)
@@ -291,7 +293,9 @@ float irradiance(int li, vec3 p, vec3 n, out vec3 l)
     precise float inv = 1.0 / sqrt(d.x * d.x + d.y * d.y + d.z * d.z + TINY);
     l = d * inv;
     precise float ndl = n.x * l.x + n.y * l.y + n.z * l.z;
-    return light[li].intensity * max(ndl, 0.0) * inv * inv;
+    vec3 axis = vec3(light[li].dir[0], light[li].dir[1], light[li].dir[2]);
+    float cone = ssg_cone_falloff(-dot(axis, l), light[li].cone_scale, light[li].cone_offset);
+    return light[li].intensity * cone * max(ndl, 0.0) * inv * inv;
 }
 
 #include "luminance.glsl"

@@ -85,15 +85,18 @@ SSG_PARAMS_STRUCT(ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
 
 /* One light as both backends read it. */
 struct ssg_direct_light_light {
-    float pos[3];   /* point: position; directional: unused */
-    float dir[3];   /* directional: direction the light travels; point: unused */
+    float pos[3];   /* point and spot: position; directional: unused */
+    float dir[3];   /* directional: direction the light travels; spot: its axis */
     float color[3]; /* linear RGB */
-    float intensity; /* point: radiant intensity; directional: irradiance */
-    int point;      /* 1 = point light (a cube of six faces), 0 = directional (one) */
+    float intensity; /* point and spot: radiant intensity; directional: irradiance */
+    int point;      /* 1 = point or spot light (perspective faces), 0 = directional (one
+                       orthographic face) */
     int face;       /* its first face in the maps */
-    float texel;    /* directional: the map's texel, scene units; point: 2 / R (a texel
-                       at distance d is d x this) */
+    float texel;    /* directional: the map's texel, scene units; point: 2 half / R (a
+                       texel at distance d is d x this) */
     float spread;   /* soft shadows: point light_size; directional tan(sun_angle) */
+    int cube;       /* 1 = six cube faces (a point light, a wide spot), 0 = one face */
+    float cone_scale, cone_offset; /* the spot's cone (ssg_cone_falloff; point: 0, 1) */
 };
 
 /* What the shader reads by name (#pragma ssg_consts). */
@@ -101,7 +104,7 @@ struct ssg_direct_light_light {
     U(MAT3, rot, "view -> world: world = eye + rot^T view")                               \
     U(VEC3, eye, "the camera's position, world")                                          \
     U(INT, res, "the maps' side R")                                                        \
-    U(INT, lights, "point and directional lights of the scene")                           \
+    U(INT, lights, "point, spot and directional lights of the scene")                           \
     U(PROJECTION, proj, "the frame's camera as seen by the G-buffer's resolution")
 SSG_UNIFORMS_STRUCT(ssg_direct_light_uniforms, SSG_DIRECT_LIGHT_UNIFORMS);
 

@@ -73,13 +73,13 @@ struct lookup {
 };
 
 /* The occluder's depth along the lookup face's axis at its texel (x, y), SSG_SHADOW_EMPTY
-   where the map has none or (directional) the texel is off the map. */
+   where the map has none or (directional, a spot's one face) the texel is off the map. */
 static float occluder(const struct job *j, const struct lookup *k, int x, int y)
 {
     const int res = j->c->u.res;
-    if (k->l->point)
+    if (k->l->cube)
         return cube_depth(j, k->l->face, k->f, x, y);
-    if (x < 0 || y < 0 || x >= res || y >= res)
+    if (x < 0 || y < 0 || x >= res || y >= res) /* beyond a spot's face: outside its cone */
         return SSG_SHADOW_EMPTY;
     return j->maps[((size_t)k->l->face * res + y) * res + x];
 }
@@ -100,9 +100,9 @@ static float tap_limit(const struct job *j, const struct lookup *k, float x, flo
     } else {
         const struct ssg_lightmap_face *f = &j->c->faces[k->l->face + k->f];
         float a = 2.0f * x / (float)j->c->u.res - 1.0f, b = 2.0f * y / (float)j->c->u.res - 1.0f;
-        float d[3], len2 = 0.0f, nd = 0.0f;
+        float d[3], len2 = 0.0f, nd = 0.0f, ha = f->half * a, hb = f->half * b;
         for (int i = 0; i < 3; i++) {
-            d[i] = f->axis[i] + a * f->u[i] + b * f->v[i];
+            d[i] = f->axis[i] + ha * f->u[i] + hb * f->v[i];
             len2 += d[i] * d[i], nd += k->n[i] * d[i];
         }
         float len = sqrtf(len2);
@@ -186,7 +186,7 @@ static void locate(const struct job *j, const struct ssg_direct_light_light *lig
     k->f = 0, k->x = k->y = 0.0f;
     if (light->point) {
         float d[3] = {q[0] - light->pos[0], q[1] - light->pos[1], q[2] - light->pos[2]};
-        k->f = ssg_lightmap_cube_face(d);
+        k->f = light->cube ? ssg_lightmap_cube_face(d) : 0;
         k->r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
     const struct ssg_lightmap_face *f = &c->faces[light->face + k->f];
@@ -415,10 +415,12 @@ SSG_VECTOR_CLONES
 static int irradiance(const struct ssg_direct_light_light *l, int len, struct chunk *restrict k)
 {
     int any = 0;
+    const struct ssg_direct_cone cone = {{l->dir[0], l->dir[1], l->dir[2]}, l->cone_scale,
+                                         l->cone_offset};
     for (int i = 0; i < len; i++) {
         float d[3];
-        k->e[i] = l->point ? ssg_point_irradiance(l->pos, l->intensity, k->px[i], k->py[i], k->pz[i],
-                                                  k->nx[i], k->ny[i], k->nz[i], d)
+        k->e[i] = l->point ? ssg_point_irradiance(l->pos, &cone, l->intensity, k->px[i], k->py[i],
+                                                  k->pz[i], k->nx[i], k->ny[i], k->nz[i], d)
                            : ssg_directional_irradiance(l->dir, l->intensity, k->nx[i], k->ny[i],
                                                         k->nz[i], d);
         k->lx[i] = d[0], k->ly[i] = d[1], k->lz[i] = d[2];

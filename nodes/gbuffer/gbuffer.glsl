@@ -12,8 +12,9 @@
 // table's values at the poles): gbuffer.h's rows
 #pragma ssg_consts
 #include "gbuffer_ray.glsl" // intersect
-// Per light (gbuffer_gl.c): position xyz, direction xyz, colour rgb, intensity, kind
-// (0 point, 1 directional), unused.
+// Per light (gbuffer_gl.c), 16 floats: position xyz, direction xyz, colour rgb, intensity,
+// kind (0 point or spot, 1 directional), the cone's scale and offset (ssg_cone_falloff),
+// unused.
 layout(std430, binding = 5) readonly buffer Lights { float light[]; };
 // env.h's irradiance table, 32 rows x 64 columns x rgb (environment mode 2).
 layout(std430, binding = 6) readonly buffer Irradiance { float irradiance[]; };
@@ -77,15 +78,17 @@ vec3 direct_light(vec3 n, vec3 pw, vec3 w, vec3 alb, Material m)
     vec3 to_eye = -w * (1.0 / sqrt(dot(w, w)));
     vec3 sum = vec3(0.0);
     for (int i = 0; i < light_count; i++) {
-        int o = 12 * i;
-        vec3 l = -vec3(light[o + 3], light[o + 4], light[o + 5]);
-        float inv = 1.0;
-        if (light[o + 10] == 0.0) { // point light: 1 / d^2
+        int o = 16 * i;
+        vec3 axis = vec3(light[o + 3], light[o + 4], light[o + 5]);
+        vec3 l = -axis;
+        float inv = 1.0, cone = 1.0;
+        if (light[o + 10] == 0.0) { // point or spot light: 1 / d^2 and the cone
             l = vec3(light[o], light[o + 1], light[o + 2]) - pw;
             inv = 1.0 / sqrt(dot(l, l) + TINY);
             l *= inv;
+            cone = ssg_cone_falloff(-dot(axis, l), light[o + 11], light[o + 12]);
         }
-        float e = light[o + 9] * max(dot(n, l), 0.0) * inv * inv;
+        float e = light[o + 9] * cone * max(dot(n, l), 0.0) * inv * inv;
         float s = shiny ? blinn_phong(n, l, to_eye, e, m.shininess) : 0.0;
         vec3 color = vec3(light[o + 6], light[o + 7], light[o + 8]);
         sum += (alb * INV_PI + spec * s) * color * e;

@@ -163,13 +163,14 @@ static void view_vectors(struct chunk *k)
     }
 }
 
-/* Irradiance E of a point light and unit L (nodes/common/direct.h, shared with
+/* Irradiance E of a point or spot light and unit L (nodes/common/direct.h, shared with
    direct_light). */
 static void point_light(struct chunk *k, const struct ssg_light *l)
 {
+    const struct ssg_direct_cone cone = ssg_direct_cone_of(l);
     for (int s = 0; s < k->count; s++) {
         float d[3];
-        k->e[s] = ssg_point_irradiance(l->position, l->intensity, k->px[s], k->py[s],
+        k->e[s] = ssg_point_irradiance(l->position, &cone, l->intensity, k->px[s], k->py[s],
                                        k->pz[s], k->nx[s], k->ny[s], k->nz[s], d);
         k->lx[s] = d[0], k->ly[s] = d[1], k->lz[s] = d[2];
     }
@@ -212,7 +213,7 @@ static void lighting(const struct job *j, struct chunk *k)
         view_vectors(k);
     for (int li = 0; li < sc->light_count; li++) {
         const struct ssg_light *l = &sc->lights[li];
-        if (l->kind == SSG_LIGHT_POINT)
+        if (l->kind != SSG_LIGHT_DIRECTIONAL)
             point_light(k, l);
         else
             directional_light(k, l);

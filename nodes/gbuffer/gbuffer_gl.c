@@ -19,9 +19,9 @@
 #include "gl/gl_scene.h"
 #include "scene/scene.h"
 
-enum { LIGHT_FLOATS = 12, LIGHT_BINDING = 5, ENV_BINDING = 6 };
+enum { LIGHT_FLOATS = 16, LIGHT_BINDING = 5, ENV_BINDING = 6 };
 
-/* The lights as gbuffer.glsl reads them (12 floats each); NULL when out of memory. */
+/* The lights as gbuffer.glsl reads them (16 floats each); NULL when out of memory. */
 static float *pack_lights(const struct ssg_scene *s)
 {
     float *f = calloc((size_t)s->light_count * LIGHT_FLOATS + 1, sizeof *f);
@@ -31,7 +31,8 @@ static float *pack_lights(const struct ssg_scene *s)
         for (int k = 0; k < 3; k++)
             o[k] = l->position[k], o[3 + k] = l->direction[k], o[6 + k] = l->color[k];
         o[9] = l->intensity;
-        o[10] = l->kind == SSG_LIGHT_POINT ? 0.0f : 1.0f;
+        o[10] = l->kind == SSG_LIGHT_DIRECTIONAL ? 1.0f : 0.0f;
+        o[11] = l->cone_scale, o[12] = l->cone_offset;
     }
     return f;
 }

@@ -107,7 +107,8 @@ static int has_flux(const float flux[3])
 }
 
 /* The faces as lightmaps.glsl reads them (lightmaps.h); radius: the scene's. */
-static void pack_faces(struct ssg_lightmaps_consts *c, float radius)
+static void pack_faces(const struct ssg_scene *s, struct ssg_lightmaps_consts *c,
+                       float radius)
 {
     for (int i = 0; i < c->count; i++) {
         const struct ssg_lightmap_face *face = &c->faces[i];
@@ -121,7 +122,12 @@ static void pack_faces(struct ssg_lightmaps_consts *c, float radius)
         int drawn = face->light >= 0 ||
                     (ssg_lightmap_face_env(face) >= 0 && has_flux(c->flux[i]));
         o[12] = face->half, o[13] = (float)face->ortho, o[17] = (float)drawn;
-        o[18] = radius, o[19] = 0.0f;
+        o[18] = radius;
+        /* the spot's cone (ssg_cone_falloff; a point light's passes everything) */
+        const struct ssg_light *l = face->light >= 0 ? &s->lights[face->light] : NULL;
+        o[19] = l ? l->cone_scale : 0.0f, o[20] = l ? l->cone_offset : 1.0f;
+        for (int k = 0; k < 3; k++)
+            o[21 + k] = l ? l->direction[k] : 0.0f;
     }
 }
 
@@ -154,7 +160,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
         c->u.far_z = far * 1.01f > c->u.far_z ? far * 1.01f : c->u.far_z;
     }
     free(env_e);
-    pack_faces(c, sphere.radius);
+    pack_faces(ctx->scene, c, sphere.radius);
     return SSG_OK;
 }
 
@@ -177,7 +183,7 @@ SSG_PORT_TABLE(outputs, SSG_LIGHTMAPS_OUT);
 
 const struct ssg_node_desc ssg_node_lightmaps = {
     .name = "lightmaps",
-    .summary = "shadow and reflective shadow maps of the scene's point and directional lights",
+    .summary = "shadow and reflective shadow maps of the scene's point, spot and directional lights",
     .method = "Williams 1978 (shadow maps); a cube of six faces a point light (Gerasimov, GPU "
               "Gems ch. 12); Dachsbacher and Stamminger, Reflective Shadow Maps, I3D 2005, "
               "sec. 3 (depth, normal, flux per texel); faces of nodes/common/lightmap.h",

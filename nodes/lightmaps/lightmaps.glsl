@@ -6,9 +6,10 @@
 #include "scene.glsl"   // Mesh, vdata, vindex, scene_mesh, fetch3
 #include "surface.glsl" // Material, texel, scene_material, fetch2, wrap, sample_texture
 // Per face (prepare()'s face_floats): origin, u, v, axis, half, ortho, flux rgb, has a light,
-// the depth range's half (orthographic: the scene's radius, whatever the map's side), 1 unused.
+// the depth range's half (orthographic: the scene's radius, whatever the map's side), the
+// light's cone scale and offset (ssg_cone_falloff) and its axis.
 layout(std430, binding = 5) readonly buffer Faces { float face[]; };
-const int FACE = 20;
+const int FACE = 24;
 #pragma ssg_params
 uniform int ssg_layer, ssg_mesh;
 #pragma ssg_consts
@@ -31,9 +32,9 @@ void main()
     else if (face[FACE * ssg_layer + 13] != 0.0) // depth 0 .. 2 radius: the whole scene
         gl_Position = vec4(du / half_side, dv / half_side, z / face[FACE * ssg_layer + 18] - 1.0,
                            1.0);
-    else
-        gl_Position = vec4(du, dv, (z * (far_z + near_z) - 2.0 * far_z * near_z) /
-                                       (far_z - near_z), z);
+    else // a perspective face half_side wide (a cube face: 1)
+        gl_Position = vec4(du / half_side, dv / half_side,
+                           (z * (far_z + near_z) - 2.0 * far_z * near_z) / (far_z - near_z), z);
 }
 #endif
 
@@ -59,7 +60,7 @@ void main()
     if (ortho)
         o += face[f + 12] * (a * u + b * v);
     else
-        d += a * u + b * v;
+        d += (face[f + 12] * a) * u + (face[f + 12] * b) * v;
     Mesh m = scene_mesh[ssg_mesh];
     uint i0 = vindex[m.indices + 3 * gl_PrimitiveID], i1 = vindex[m.indices + 3 * gl_PrimitiveID + 1];
     uint i2 = vindex[m.indices + 3 * gl_PrimitiveID + 2];
@@ -84,8 +85,10 @@ void main()
         albedo *= sample_texture(mat, uv);
     }
     albedo = vertex_colour(m, uvec3(i0, i1, i2), bu, bv, albedo);
-    float q = 1.0 + a * a + b * b, side = 2.0 / float(p_resolution);
-    float omega = ortho ? 1.0 : side * side / (q * sqrt(q));
+    // ssg_lightmap_texel_solid_angle x the spot's falloff (lightmaps_cpu.c's texel_weight)
+    float h = face[f + 12], q = 1.0 + h * h * (a * a + b * b), side = 2.0 * h / float(p_resolution);
+    float cone = ssg_cone_falloff(dot(face3(21), normalize(d)), face[f + 19], face[f + 20]);
+    float omega = ortho ? 1.0 : side * side / (q * sqrt(q)) * cone;
     vec3 flux = albedo * face3(14) * omega;
     out_depth = t;
     out_nx = n.x, out_ny = n.y, out_nz = n.z;

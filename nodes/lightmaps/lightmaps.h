@@ -31,7 +31,7 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "faces x resolution^2 floats",                                                       \
       .def = 512, .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX,              \
       .unit = "texels")                                                                    \
-    P(BOOL, own, "the scene's own point and directional lights (their faces first)",        \
+    P(BOOL, own, "the scene's own point, spot and directional lights (their faces first)",        \
       .def = 1, .host_only = 1)                                                            \
     P(INT, environment,                                                                    \
       "the scene's environment as this many directional lights too (lightprobe's "        \
@@ -47,7 +47,7 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
 SSG_PARAMS_STRUCT(ssg_lightmaps_params, SSG_LIGHTMAPS_PARAMS);
 
 /* Floats a face takes in the GL shader's storage buffer (lightmaps.glsl's FACE). */
-enum { SSG_LIGHTMAPS_FACE_FLOATS = 20 };
+enum { SSG_LIGHTMAPS_FACE_FLOATS = 24 };
 
 /* A cube face's near plane, as a fraction of the scene's bounding radius: nearer surfaces
    are cut (GL's clip and the CPU's polygon clip at the same plane). */
@@ -64,12 +64,14 @@ struct ssg_lightmaps_consts {
     int res, count;                    /* R and the face count F */
     struct ssg_lightmaps_uniforms u;   /* the depth range */
     float flux[SSG_LIGHTMAP_FACES_MAX][3]; /* per face: E x texel area (orthographic) or I
-                                              (cube, times the texel's solid angle) */
+                                              (perspective, times the texel's solid angle
+                                              and the spot's falloff) */
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];
     /* the same faces as lightmaps.glsl reads them, SSG_LIGHTMAPS_FACE_FLOATS each: origin,
        u, v, axis, half, ortho, flux rgb, has a light (1 or 0), the depth range's half
        (the scene's radius: an orthographic face spans depths 0 .. 2 radius, also when
-       fitted to the view, whose plane is the scene fit's), 1 unused */
+       fitted to the view, whose plane is the scene fit's), the light's cone scale and
+       offset (ssg_cone_falloff; 0 and 1 but for a spot light) and its axis */
     float face_floats[SSG_LIGHTMAPS_FACE_FLOATS * SSG_LIGHTMAP_FACES_MAX];
 };
 

@@ -53,8 +53,11 @@ static void to_face(const struct ssg_lightmap_face *f, const float *p, double q[
 {
     double d[3] = {(double)p[0] - f->origin[0], (double)p[1] - f->origin[1],
                    (double)p[2] - f->origin[2]};
-    q[0] = d[0] * f->u[0] + d[1] * f->u[1] + d[2] * f->u[2];
-    q[1] = d[0] * f->v[0] + d[1] * f->v[1] + d[2] * f->v[2];
+    /* a perspective face's u and v in units of its half-width: from here on every
+       perspective face is drawn as a cube face (a = q0 / q2) */
+    double w = f->ortho ? 1.0 : 1.0 / f->half;
+    q[0] = (d[0] * f->u[0] + d[1] * f->u[1] + d[2] * f->u[2]) * w;
+    q[1] = (d[0] * f->v[0] + d[1] * f->v[1] + d[2] * f->v[2]) * w;
     q[2] = d[0] * f->axis[0] + d[1] * f->axis[1] + d[2] * f->axis[2];
 }
 
@@ -64,7 +67,7 @@ static void project_face(const struct job *j, int fi)
 {
     const struct ssg_lightmap_face *f = &j->c->faces[fi];
     const float res = (float)j->c->res, near_z = j->c->u.near_z;
-    const float inv_half = 1.0f / f->half;
+    const float inv_half = 1.0f / f->half, w = f->ortho ? 1.0f : inv_half; /* to_face's */
     for (int mi = 0; mi < j->scene->mesh_count; mi++) {
         const struct ssg_mesh *m = &j->scene->meshes[mi];
         size_t at = (size_t)fi * (size_t)j->verts + (size_t)j->first_vert[mi];
@@ -74,8 +77,8 @@ static void project_face(const struct job *j, int fi)
         for (int v = 0; v < m->vertex_count; v++) {
             float dx = p[3 * v] - f->origin[0], dy = p[3 * v + 1] - f->origin[1];
             float dz = p[3 * v + 2] - f->origin[2];
-            float du = dx * f->u[0] + dy * f->u[1] + dz * f->u[2];
-            float dv = dx * f->v[0] + dy * f->v[1] + dz * f->v[2];
+            float du = (dx * f->u[0] + dy * f->u[1] + dz * f->u[2]) * w;
+            float dv = (dx * f->v[0] + dy * f->v[1] + dz * f->v[2]) * w;
             float z = dx * f->axis[0] + dy * f->axis[1] + dz * f->axis[2];
             float s = f->ortho ? inv_half : 1.0f / (z > near_z ? z : near_z);
             float a = du * s, b = dv * s, gz = GUARD * z;
@@ -138,7 +141,7 @@ static void texel_ray(const struct ssg_lightmap_face *f, int res, int64_t x, int
 {
     double a = 2.0 * ((double)x + 0.5) / res - 1.0, b = 2.0 * ((double)y + 0.5) / res - 1.0;
     for (int k = 0; k < 3; k++) {
-        d[k] = f->ortho ? f->axis[k] : f->axis[k] + a * f->u[k] + b * f->v[k];
+        d[k] = f->ortho ? f->axis[k] : f->axis[k] + f->half * a * f->u[k] + f->half * b * f->v[k];
         o[k] = f->ortho ? f->origin[k] + f->half * (a * f->u[k] + b * f->v[k]) : f->origin[k];
     }
 }
@@ -320,6 +323,27 @@ static int mesh_of(const struct job *j, int32_t id)
     return lo;
 }
 
+/* What the light's flux through texel (x, y) of face fi is per unit of its colour x
+   intensity: 1 on an orthographic face, the texel's solid angle x the spot's falloff
+   along its ray on a perspective one (the falloff is 1 for a point light). */
+static float texel_weight(const struct job *j, int fi, int x, int y)
+{
+    const struct ssg_lightmap_face *f = &j->c->faces[fi];
+    if (f->ortho)
+        return 1.0f;
+    const struct ssg_light *light = &j->scene->lights[f->light];
+    float omega = ssg_lightmap_texel_solid_angle(f->half, j->c->res, x, y);
+    if (light->kind == SSG_LIGHT_POINT)
+        return omega;
+    float p[3], w[3], len = 0.0f;
+    ssg_lightmap_texel_point(f, j->c->res, x, y, 1.0f, p);
+    for (int k = 0; k < 3; k++)
+        w[k] = p[k] - f->origin[k], len += w[k] * w[k];
+    for (int k = 0; k < 3; k++)
+        w[k] /= sqrtf(len);
+    return omega * ssg_light_cone(light, w);
+}
+
 /* The normal and flux of texel (x, y) of face fi, whose nearest triangle is id. */
 static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id, float n[3],
                           float flux[3])
@@ -339,7 +363,7 @@ static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id,
     }
     float towards = n[0] * (float)d[0] + n[1] * (float)d[1] + n[2] * (float)d[2];
     float s = (towards > 0.0f ? -1.0f : 1.0f) / (len > 0.0f ? len : 1.0f);
-    float albedo[3], omega = f->ortho ? 1.0f : ssg_lightmap_texel_solid_angle(res, x, y);
+    float albedo[3], omega = texel_weight(j, fi, x, y);
     ssg_hit_albedo(j->scene, &h, albedo);
     for (int k = 0; k < 3; k++) {
         n[k] *= s;
@@ -368,7 +392,6 @@ static int uniform_triangle(const struct job *j, int32_t id)
 static void resolve_strip(const struct job *j, int fi, const struct strip *s)
 {
     const int res = s->res;
-    const struct ssg_lightmap_face *face = &j->c->faces[fi];
     float *nrm[3], *flx[3];
     for (int k = 0; k < 3; k++) {
         nrm[k] = ssg_image_plane(j->io->out[SSG_LIGHTMAPS_OUT_NORMAL], 3 * fi + k);
@@ -382,13 +405,13 @@ static void resolve_strip(const struct job *j, int fi, const struct strip *s)
             size_t at = (size_t)y * res + x;
             int32_t id = s->ids[(size_t)(y - s->y0) * res + x];
             float n[3] = {0, 0, 0}, flux[3] = {0, 0, 0};
-            float omega = face->ortho ? 1.0f : ssg_lightmap_texel_solid_angle(res, x, y);
+            float omega = texel_weight(j, fi, x, y);
             if (id >= 0 && id == last && reuse) {
                 for (int k = 0; k < 3; k++)
                     n[k] = n0[k], flux[k] = unit[k] * omega;
             } else if (id >= 0) {
                 resolve_texel(j, fi, x, y, id, n, flux);
-                reuse = uniform_triangle(j, id);
+                reuse = omega > 0.0f && uniform_triangle(j, id); /* 0 beyond a spot's cone */
                 for (int k = 0; k < 3; k++)
                     n0[k] = n[k], unit[k] = flux[k] / omega;
             }

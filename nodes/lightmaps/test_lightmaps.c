@@ -33,7 +33,7 @@ static void test_solid_angles(void)
         double sum = 0;
         for (int y = 0; y < res[k]; y++)
             for (int x = 0; x < res[k]; x++)
-                sum += 6.0 * ssg_lightmap_texel_solid_angle(res[k], x, y);
+                sum += 6.0 * ssg_lightmap_texel_solid_angle(1.0f, res[k], x, y);
         fprintf(stderr, "cube %d: texel solid angles sum to 4 pi x %.6f\n", res[k],
                 sum / (4 * M_PI));
         CHECK_NEAR(sum / (4 * M_PI), 1.0, k == 0 ? 2e-3 : 1e-4);

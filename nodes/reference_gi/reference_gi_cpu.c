@@ -120,12 +120,13 @@ static int setup_pixel(const struct job *j, int x, int y, struct pixel *px)
 static float light_at(const struct ssg_light *l, const float y[3], const float n[3],
                       const float q[3], float dir[3])
 {
-    if (l->kind == SSG_LIGHT_POINT) {
+    if (l->kind != SSG_LIGHT_DIRECTIONAL) {
         float d[3] = {l->position[0] - y[0], l->position[1] - y[1], l->position[2] - y[2]};
         float inv = 1.0f / sqrtf(dot3(d, d) + TINY), ndl = dot3(n, d) * inv;
+        float w[3] = {-d[0] * inv, -d[1] * inv, -d[2] * inv}; /* from the light */
         for (int i = 0; i < 3; i++)
             dir[i] = l->position[i] - q[i];
-        return ndl > 0.0f ? l->intensity * ndl * inv * inv : 0.0f;
+        return ndl > 0.0f ? l->intensity * ssg_light_cone(l, w) * ndl * inv * inv : 0.0f;
     }
     for (int i = 0; i < 3; i++)
         dir[i] = -l->direction[i];
@@ -136,7 +137,7 @@ static float light_at(const struct ssg_light *l, const float y[3], const float n
 /* Where a light's shadow ray ends: at the point light (t = 1), or nowhere. */
 static float light_tfar(const struct ssg_light *l)
 {
-    return l->kind == SSG_LIGHT_POINT ? 1.0f : INFINITY;
+    return l->kind != SSG_LIGHT_DIRECTIONAL ? 1.0f : INFINITY;
 }
 
 static void add_shadow(struct shadows *s, int slot, const float o[3], const float d[3],
@@ -155,7 +156,7 @@ static void trace_shadows(const struct job *j, struct shadows *s, float tfar)
     ssg_rt_occluded_rays(j->scene->rt, &rays, s->occluded);
 }
 
-/* Irradiance at x from the point and directional lights, with shadows. */
+/* Irradiance at x from the point, spot and directional lights, with shadows. */
 static void lights_direct(const struct job *j, const struct pixel *px, double e[3])
 {
     const struct ssg_scene *sc = j->scene;

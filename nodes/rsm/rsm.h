@@ -109,7 +109,8 @@ struct ssg_rsm_consts {
     int grid_w, grid_h;     /* the slot grid: 6 C x F C */
     int gl_list_rows;       /* rows of the slot grid one GL dispatch of the list walk takes
                                (SSG_RSM_GL_ITERATIONS / grid_w) */
-    /* per face, 16 floats: origin[3], u[3], v[3], axis[3], half, ortho, texel area across
+    /* per face, 16 floats: origin[3], u[3], v[3], axis[3], half (perspective: tan of half
+       the field of view), ortho, texel area across
        the ray (orthographic; cube: 0, per texel), unused */
     float face[16 * SSG_LIGHTMAP_FACES_MAX];
     struct ssg_lightmap_face face_s[SSG_LIGHTMAP_FACES_MAX]; /* the same faces, for C */

@@ -26,7 +26,8 @@ vec3 texel_point(int f, int x, int y, float z)
             p[k] = fv(f, k) + fv(f, 12) * (a * fv(f, 3 + k) + b * fv(f, 6 + k)) +
                    z * fv(f, 9 + k);
         else
-            p[k] = fv(f, k) + z * (fv(f, 9 + k) + a * fv(f, 3 + k) + b * fv(f, 6 + k));
+            p[k] = fv(f, k) + z * (fv(f, 9 + k) + fv(f, 12) * a * fv(f, 3 + k) +
+                                   fv(f, 12) * b * fv(f, 6 + k));
     }
     return p;
 }
@@ -55,7 +56,8 @@ float texel_area(int f, int x, int y, vec3 p, vec3 n)
     // ssg_lightmap_texel_solid_angle
     precise float a = 2.0 * (float(x) + 0.5) / float(res) - 1.0;
     precise float b = 2.0 * (float(y) + 0.5) / float(res) - 1.0;
-    precise float q = 1.0 + a * a + b * b, s = 2.0 / float(res);
+    precise float h = fv(f, 12), q = 1.0 + h * h * (a * a + b * b);
+    precise float s = 2.0 * h / float(res);
     precise float omega = s * s / (q * sqrt(q));
     precise float r = omega * r2 / (c > MIN_COSINE ? c : MIN_COSINE);
     return r;

@@ -84,17 +84,18 @@ static void texel_row(const struct ssg_rsm_consts *c, const float *depth, const 
         }
         return;
     }
-    const float s = 2.0f / (float)res;
+    const float s = 2.0f * half / (float)res, h2 = half * half;
     for (int x = 0; x < res; x++) {
-        float a = ta[x], zx = z[x];
-        p0[x] = o0 + zx * (a0 + a * u0 + b * v0);
-        p1[x] = o1 + zx * (a1 + a * u1 + b * v1);
-        p2[x] = o2 + zx * (a2 + a * u2 + b * v2);
+        /* half a and half b: exact for a cube face (half 1) */
+        float a = ta[x], ha = half * a, hb = half * b, zx = z[x];
+        p0[x] = o0 + zx * (a0 + ha * u0 + hb * v0);
+        p1[x] = o1 + zx * (a1 + ha * u1 + hb * v1);
+        p2[x] = o2 + zx * (a2 + ha * u2 + hb * v2);
         float d0 = p0[x] - o0, d1 = p1[x] - o1, d2 = p2[x] - o2;
         float r2 = d0 * d0 + d1 * d1 + d2 * d2;
         float cosine = fabsf(n0[x] * d0 + n1[x] * d1 + n2[x] * d2) / sqrtf(r2);
         /* ssg_lightmap_texel_solid_angle */
-        float q = 1.0f + a * a + b * b, omega = s * s / (q * sqrtf(q));
+        float q = 1.0f + h2 * (a * a + b * b), omega = s * s / (q * sqrtf(q));
         area[x] = omega * r2 / (cosine > SSG_RSM_MIN_COSINE ? cosine : SSG_RSM_MIN_COSINE);
     }
 }

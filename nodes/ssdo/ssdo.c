@@ -54,13 +54,17 @@ static enum ssg_err prepare_lights(const struct ssg_node_ctx *ctx, const float r
         struct ssg_ssdo_light *vl = &c->lights[l];
         float d[3];
         vl->directional = sl->kind == SSG_LIGHT_DIRECTIONAL;
+        vl->cone_scale = sl->cone_scale, vl->cone_offset = sl->cone_offset;
         for (int i = 0; i < 3; i++) {
             d[i] = vl->directional ? -sl->direction[i]
                                    : sl->position[i] - s->camera.position[i];
             vl->rgb[i] = sl->color[i] * sl->intensity;
         }
-        for (int r = 0; r < 3; r++)
+        for (int r = 0; r < 3; r++) {
             vl->v[r] = rot[3 * r] * d[0] + rot[3 * r + 1] * d[1] + rot[3 * r + 2] * d[2];
+            vl->axis[r] = rot[3 * r] * sl->direction[0] + rot[3 * r + 1] * sl->direction[1] +
+                          rot[3 * r + 2] * sl->direction[2];
+        }
         float len = sqrtf(vl->v[0] * vl->v[0] + vl->v[1] * vl->v[1] + vl->v[2] * vl->v[2]);
         for (int i = 0; vl->directional && len > 0.0f && i < 3; i++)
             vl->v[i] /= len;

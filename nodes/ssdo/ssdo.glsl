@@ -33,9 +33,11 @@ const int ENV_CUBE = 1;     // enum ssg_ssdo_env
 const int CUBE_SIZE = 16;   // SSG_ENV_CUBE_SIZE
 // The lights, prepare()'s struct ssg_ssdo_light as it is (std430 lays it out as C does).
 struct ssdo_light {
-    int directional;  // 0 = point light at v, 1 = directional light from unit v
+    int directional;  // 0 = point or spot light at v, 1 = directional light from unit v
     float v[3];       // point: view-space position; directional: unit direction to it
     float rgb[3];     // colour * intensity
+    float axis[3];    // spot: the cone's view-space unit axis
+    float cone_scale, cone_offset; // ssg_cone_falloff's (point: 0, 1)
 };
 layout(std430, binding = 2) readonly buffer Lights { ssdo_light lights[]; };
 #endif
@@ -203,7 +205,10 @@ void setup_lights(pixel_frame k, out vec3 lt[MAX_LIGHTS], out float e[MAX_LIGHTS
         precise vec3 L = vec3(lx * inv, ly * inv, lz * inv);
         precise float ndl = k.N.x * L.x + k.N.y * L.y + k.N.z * L.z;
         precise float fall = lights[l].directional != 0 ? 1.0 : inv * inv;
-        precise float el = (ndl > 0.0 ? ndl : 0.0) * fall;
+        vec3 axis = vec3(lights[l].axis[0], lights[l].axis[1], lights[l].axis[2]);
+        float cone = ssg_cone_falloff(-dot(axis, L), lights[l].cone_scale,
+                                      lights[l].cone_offset);
+        precise float el = (ndl > 0.0 ? ndl : 0.0) * fall * cone;
         e[l] = el;
         precise float tl = k.T.x * L.x + k.T.y * L.y + k.T.z * L.z;
         precise float bl = k.B.x * L.x + k.B.y * L.y + k.B.z * L.z;

@@ -51,15 +51,17 @@ enum ssg_ssdo_mode {
 SSG_PARAMS_STRUCT(ssg_ssdo_params, SSG_SSDO_PARAMS);
 
 /* A scene light in view space. On GL the array is a storage buffer of these structs as
-   they are (ssdo.glsl's struct ssdo_light: std430 lays out an int and two float[3] as C
-   does, 28 bytes). */
+   they are (ssdo.glsl's struct ssdo_light: std430 lays out an int, three float[3] and two
+   floats as C does, 48 bytes). */
 struct ssg_ssdo_light {
-    int directional;  /* 0 = point light at `v`, 1 = directional light from unit `v` */
+    int directional;  /* 0 = point or spot light at `v`, 1 = directional light from unit `v` */
     float v[3];       /* point: view-space position; directional: unit direction to it */
     float rgb[3];     /* colour * intensity */
+    float axis[3];    /* spot: the cone's view-space unit axis */
+    float cone_scale, cone_offset; /* the cone (ssg_cone_falloff; point: 0, 1) */
 };
-_Static_assert(sizeof(struct ssg_ssdo_light) == 7 * sizeof(float),
-               "ssdo.glsl reads the lights as std430 structs of 7 scalars");
+_Static_assert(sizeof(struct ssg_ssdo_light) == 12 * sizeof(float),
+               "ssdo.glsl reads the lights as std430 structs of 12 scalars");
 
 enum ssg_ssdo_env { SSG_SSDO_ENV_CONSTANT, SSG_SSDO_ENV_CUBE };
 

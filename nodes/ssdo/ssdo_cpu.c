@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "ssdo.h"
+#include "scene/scene.h" /* ssg_cone_falloff */
 
 enum { CHUNK = SSG_SSDO_CHUNK, MAXL = SSG_SSDO_MAX_LIGHTS };
 
@@ -72,6 +73,7 @@ setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
         const struct ssg_ssdo_light *li = &j->c->lights[l];
         const float vx = li->v[0], vy = li->v[1], vz = li->v[2];
         const float point = li->directional ? 0.0f : 1.0f;
+        const float ax = li->axis[0], ay = li->axis[1], az = li->axis[2];
         for (int i = 0; i < len; i++) {
             /* point: v - P; directional: v (P weighted by 0) */
             float lx = vx - point * k->px[i], ly = vy - point * k->py[i];
@@ -81,7 +83,9 @@ setup_lights(const struct job *j, const struct ssg_ssdo_chunk *restrict k,
             lx *= inv, ly *= inv, lz *= inv;
             float ndl = k->nx[i] * lx + k->ny[i] * ly + k->nz[i] * lz;
             float fall = li->directional ? 1.0f : inv * inv;
-            lc->e[l][i] = (ndl > 0.0f ? ndl : 0.0f) * fall;
+            float cone = ssg_cone_falloff(-(ax * lx + ay * ly + az * lz), li->cone_scale,
+                                          li->cone_offset); /* 1 but for a spot */
+            lc->e[l][i] = (ndl > 0.0f ? ndl : 0.0f) * fall * cone;
             lc->lt[l][0][i] = k->tx[i] * lx + k->ty[i] * ly + k->tz[i] * lz;
             lc->lt[l][1][i] = k->bx[i] * lx + k->by[i] * ly + k->bz[i] * lz;
             lc->lt[l][2][i] = ndl;
