@@ -142,6 +142,18 @@ static const char *triangle_with(const char *from, const char *to, const char *f
     return write_file("camera.gltf", text);
 }
 
+/* The file triangle_with wrote, loaded; NULL (a failed check, the reason printed) when it
+   was not written or does not load. */
+static struct ssg_gltf *load_written(const char *path)
+{
+    struct ssg_gltf *g = NULL;
+    char why[512] = "";
+    CHECK_EQ(path ? ssg_gltf_load(path, &g, why, sizeof why) : SSG_E_IO, SSG_OK);
+    if (!g)
+        fprintf(stderr, "%s\n", why);
+    return g;
+}
+
 /* A camera glTF forbids is refused, naming the file and the camera, never dropped: yfov
    at or below 0 or 179 degrees and more (1e999, no JSON number, is the parser's to refuse),
    znear at or below 0, zfar before znear. */
@@ -188,13 +200,9 @@ static void test_alpha(void)
         char to[160];
         snprintf(to, sizeof to, "\"name\": \"tinted\", %s", cases[k].mode);
         const char *path = triangle_with("\"name\": \"tinted\",", to, old_png, rgba_png);
-        struct ssg_gltf *g = NULL;
-        char why[512] = "";
-        CHECK_EQ(path ? ssg_gltf_load(path, &g, why, sizeof why) : SSG_E_IO, SSG_OK);
-        if (!g) {
-            fprintf(stderr, "%s\n", why);
+        struct ssg_gltf *g = load_written(path);
+        if (!g)
             continue;
-        }
         CHECK_EQ(g->materials[0].alpha_mode, cases[k].want);
         CHECK_NEAR(g->materials[0].alpha_cutoff, cases[k].cutoff, 1e-6);
         CHECK_NEAR(g->materials[0].base_color[3], 1.0, 0);
@@ -211,6 +219,36 @@ static void test_alpha(void)
                                     "\"alphaCutoff\": 1.5,", NULL, NULL);
     if (bad)
         expect_failure(bad, SSG_E_GLTF, "'tinted': alphaCutoff 1.5 is outside 0 to 1");
+}
+
+/* KHR_texture_transform on the base colour is baked into the mesh's uvs: offset (0.25,
+ * 0.5), rotation pi/2 and scale (2, 3) give uv' = (3 v + 0.25, -2 u + 0.5), so the
+ * triangle's uvs (0, 0), (1, 0), (0, 1) become (0.25, 0.5), (0.25, -1.5), (3.25, 0.5);
+ * a normal map with another transform on the same material keeps the base colour's and
+ * is named as not read. */
+static void test_texture_transform(void)
+{
+    static const char from[] = "\"baseColorTexture\": {\n     \"index\": 0\n    }";
+    static const char to[] = "\"baseColorTexture\": {\"index\": 0, \"extensions\": "
+                             "{\"KHR_texture_transform\": {\"offset\": [0.25, 0.5], "
+                             "\"rotation\": 1.5707963267948966, \"scale\": [2, 3]}}}";
+    static const char normal[] = "\"name\": \"tinted\", \"normalTexture\": {\"index\": 0, "
+                                 "\"extensions\": {\"KHR_texture_transform\": {\"scale\": [4, 4]}}},";
+    static const float want[6] = {0.25f, 0.5f, 0.25f, -1.5f, 3.25f, 0.5f};
+    for (int differ = 0; differ < 2; differ++) {
+        const char *path = triangle_with(from, to, differ ? "\"name\": \"tinted\"," : NULL,
+                                         differ ? normal : NULL);
+        struct ssg_gltf *g = load_written(path);
+        if (!g)
+            continue;
+        const float *uv = g->meshes[0].uvs;
+        CHECK(uv != NULL);
+        for (int k = 0; uv && k < 6; k++)
+            CHECK_NEAR(uv[k], want[k], 1e-6);
+        CHECK_EQ(strstr(g->ignored, "texture transforms (KHR_texture_transform) that differ") !=
+                     NULL, differ);
+        ssg_gltf_destroy(&g);
+    }
 }
 
 /* What a file uses and no path reads is named, not dropped in silence: a normal map on a
@@ -265,6 +303,7 @@ int main(void)
     setup_tmp("gltf");
     test_ignored();
     test_alpha();
+    test_texture_transform();
     test_bunny();
     test_triangle();
     test_bad_cameras();

@@ -235,6 +235,18 @@ void transform_points(std::vector<float> &v, const Mat4 &m)
     }
 }
 
+/* A material's KHR_texture_transform baked into its mesh's uvs. */
+void transform_uvs(std::vector<float> &uv, const gltf_adapter::UvTransform &t)
+{
+    if (t == gltf_adapter::UV_IDENTITY)
+        return;
+    for (size_t i = 0; i + 1 < uv.size(); i += 2) {
+        double u = uv[i], v = uv[i + 1];
+        uv[i] = (float)(t[0] * u + t[1] * v + t[2]);
+        uv[i + 1] = (float)(t[3] * u + t[4] * v + t[5]);
+    }
+}
+
 void transform_normals(std::vector<float> &v, const Mat4 &m)
 {
     double det;
@@ -294,6 +306,8 @@ void Flattener::add_primitive(const tinygltf::Primitive &p, const Mat4 &world,
         out.uvs = read_floats(m, uv, 2);
         if (out.uvs.size() / 2 != nv)
             fail(where + ": TEXCOORD count differs from POSITION count");
+        if (out.material >= 0)
+            transform_uvs(out.uvs, mats.uv_transforms[(size_t)out.material]);
     }
     transform_points(out.positions, world);
     transform_normals(out.normals, world);

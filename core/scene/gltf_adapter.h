@@ -5,6 +5,7 @@
 #ifndef SSG_GLTF_ADAPTER_H
 #define SSG_GLTF_ADAPTER_H
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -30,11 +31,19 @@ std::vector<uint32_t> read_indices(const tinygltf::Model &model, int index);
 /* A glTF file's materials and the textures they read, converted once (gltf_material_adapter.cc):
    base colour (sRGB, with its alpha for a masked material), alphaMode, the normal map (as
    data), emission; and what of them no path reads, into `ignored`. */
+/* A texture reference's KHR_texture_transform as the 2 x 3 matrix uv' = M (u, v, 1), row
+   by row: translation x rotation x scale, the extension's order (identity without). */
+using UvTransform = std::array<double, 6>;
+constexpr UvTransform UV_IDENTITY = {1, 0, 0, 0, 1, 0};
+
 class Materials {
   public:
     explicit Materials(const tinygltf::Model &model) : m(model) {}
     void convert();
     std::vector<ssg_gltf_material> materials;
+    /* per material: the transform its textures' uvs take (baked into the mesh's uvs: one
+       set a mesh, so a material whose textures disagree keeps the base colour's) */
+    std::vector<UvTransform> uv_transforms;
     std::vector<model_adapter::Tex> textures;
     model_adapter::Ignored ignored; /* what the file uses and no path reads */
 
@@ -45,6 +54,7 @@ class Materials {
 
     void note_ignored(const tinygltf::Material &src, const std::string &who);
     void read_emission(const tinygltf::Material &src, ssg_gltf_material &mat);
+    UvTransform read_uv_transform(const tinygltf::Material &src, const std::string &who);
     int texture(int gltf_index, bool keep_alpha, bool srgb = true);
     void add_alpha(model_adapter::Tex &tex, const tinygltf::Image &img) const;
 };

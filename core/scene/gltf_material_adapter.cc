@@ -23,6 +23,41 @@ float srgb_to_linear(float c)
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+/* A number of a KHR_texture_transform field, or `def` without it. */
+double number_of(const tinygltf::Value &v, const char *key, int index, double def)
+{
+    if (!v.Has(key))
+        return def;
+    const tinygltf::Value &f = v.Get(key);
+    const tinygltf::Value &x = index >= 0 ? f.Get(index) : f;
+    return x.IsNumber() ? x.GetNumberAsDouble() : def;
+}
+
+/* The KHR_texture_transform of one texture reference (identity without); its texCoord,
+   when it gives one, replaces the reference's in *texcoord. */
+UvTransform texture_transform(const tinygltf::ExtensionMap &ext, int *texcoord)
+{
+    auto it = ext.find("KHR_texture_transform");
+    if (it == ext.end())
+        return UV_IDENTITY;
+    const tinygltf::Value &v = it->second;
+    double ox = number_of(v, "offset", 0, 0), oy = number_of(v, "offset", 1, 0);
+    double sx = number_of(v, "scale", 0, 1), sy = number_of(v, "scale", 1, 1);
+    double r = number_of(v, "rotation", -1, 0), c = std::cos(r), s = std::sin(r);
+    if (v.Has("texCoord") && v.Get("texCoord").IsInt())
+        *texcoord = v.Get("texCoord").GetNumberAsInt();
+    /* T R S with R = [cos r, sin r; -sin r, cos r] (the extension's matrix) */
+    return {c * sx, s * sy, ox, -s * sx, c * sy, oy};
+}
+
+/* The uv set a texture reference reads: its texCoord, or its transform's. */
+template <class Ref> int uv_set(const Ref &ref)
+{
+    int set = ref.texCoord;
+    texture_transform(ref.extensions, &set);
+    return set;
+}
+
 
 } // namespace
 
@@ -30,17 +65,42 @@ float srgb_to_linear(float c)
 void Materials::note_ignored(const tinygltf::Material &src, const std::string &who)
 {
     int colour_set = src.pbrMetallicRoughness.baseColorTexture.index >= 0
-                         ? src.pbrMetallicRoughness.baseColorTexture.texCoord
-                         : src.normalTexture.texCoord;
-    if (src.normalTexture.index >= 0 && src.normalTexture.texCoord != colour_set)
+                         ? uv_set(src.pbrMetallicRoughness.baseColorTexture)
+                         : uv_set(src.normalTexture);
+    if (src.normalTexture.index >= 0 && uv_set(src.normalTexture) != colour_set)
         ignored.add("normal maps on another texture coordinate set than the base colour's",
                     who);
-    int uv_set = src.normalTexture.index >= 0 ? src.normalTexture.texCoord : colour_set;
-    if (src.emissiveTexture.index >= 0 && src.emissiveTexture.texCoord != uv_set)
+    int mesh_set = src.normalTexture.index >= 0 ? uv_set(src.normalTexture) : colour_set;
+    if (src.emissiveTexture.index >= 0 && uv_set(src.emissiveTexture) != mesh_set)
         ignored.add("emission textures on another texture coordinate set than the base "
                     "colour's", who);
-    if (src.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform"))
-        ignored.add("texture transforms (KHR_texture_transform)", who);
+}
+
+/* The transform of the textures the material reads (base colour, normal map, emission
+   texture, as its uv set: their texCoord as KHR_texture_transform may replace it): the
+   mesh's uvs carry one, so textures that disagree keep the first's, listed as ignored. */
+UvTransform Materials::read_uv_transform(const tinygltf::Material &src, const std::string &who)
+{
+    const tinygltf::TextureInfo &base = src.pbrMetallicRoughness.baseColorTexture;
+    const tinygltf::ExtensionMap *refs[3] = {base.index >= 0 ? &base.extensions : nullptr,
+                                             src.normalTexture.index >= 0
+                                                 ? &src.normalTexture.extensions : nullptr,
+                                             src.emissiveTexture.index >= 0
+                                                 ? &src.emissiveTexture.extensions : nullptr};
+    bool have = false;
+    UvTransform first = UV_IDENTITY;
+    for (const tinygltf::ExtensionMap *ext : refs) {
+        if (!ext)
+            continue;
+        int unused = 0;
+        UvTransform t = texture_transform(*ext, &unused);
+        if (have && t != first)
+            ignored.add("texture transforms (KHR_texture_transform) that differ between a "
+                        "material's textures (the base colour's is used)", who);
+        if (!have)
+            first = t, have = true;
+    }
+    return first;
 }
 
 /* emissiveFactor (default black) x KHR_materials_emissive_strength's emissiveStrength
@@ -65,9 +125,9 @@ void Materials::read_emission(const tinygltf::Material &src, ssg_gltf_material &
     mat.emission_texture = -1;
     const tinygltf::TextureInfo &et = src.emissiveTexture;
     bool has_set = mat.texture >= 0 || mat.normal_texture >= 0;
-    if (et.index >= 0 && (!has_set || et.texCoord == mat.texcoord)) {
+    if (et.index >= 0 && (!has_set || uv_set(et) == mat.texcoord)) {
         mat.emission_texture = texture(et.index, false);
-        mat.texcoord = et.texCoord;
+        mat.texcoord = uv_set(et);
     }
 }
 
@@ -77,8 +137,9 @@ void Materials::convert()
     data_slot.assign(m.textures.size(), -1);
     for (size_t k = 0; k < m.materials.size(); k++) {
         const tinygltf::Material &src = m.materials[k];
-        note_ignored(src, src.name.empty() ? "material " + std::to_string(k)
-                                           : "'" + printable(src.name) + "'");
+        std::string who = src.name.empty() ? "material " + std::to_string(k)
+                                           : "'" + printable(src.name) + "'";
+        note_ignored(src, who);
         ssg_gltf_material mat{};
         std::snprintf(mat.name, sizeof mat.name, "%s", src.name.c_str());
         const std::vector<double> &f = src.pbrMetallicRoughness.baseColorFactor;
@@ -93,18 +154,19 @@ void Materials::convert()
                  shown(src.alphaCutoff) + " is outside 0 to 1");
         mat.texture = texture(src.pbrMetallicRoughness.baseColorTexture.index,
                               mat.alpha_mode != SSG_ALPHA_OPAQUE);
-        mat.texcoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
+        mat.texcoord = uv_set(src.pbrMetallicRoughness.baseColorTexture);
         /* a normal map on the base colour's texture coordinates (or alone on its own):
            the mesh keeps one uv set */
         const tinygltf::NormalTextureInfo &nt = src.normalTexture;
         mat.normal_texture = -1;
         mat.normal_scale = (float)nt.scale;
-        if (nt.index >= 0 && (mat.texture < 0 || nt.texCoord == mat.texcoord)) {
+        if (nt.index >= 0 && (mat.texture < 0 || uv_set(nt) == mat.texcoord)) {
             mat.normal_texture = texture(nt.index, false, false);
-            mat.texcoord = nt.texCoord;
+            mat.texcoord = uv_set(nt);
         }
         read_emission(src, mat);
         materials.push_back(mat);
+        uv_transforms.push_back(read_uv_transform(src, who));
     }
 }
 

@@ -273,7 +273,9 @@ static const struct {
     {"vertex colours", "COLOR_0 (VEC3 or VEC4, its alpha not read) multiplies the base "
      "colour", "not read", "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), "
      "reference_gi's bounce hits", "test_vertex_colors"},
-    {"texture transform", "not read (KHR_texture_transform)", "-", "-", "-"},
+    {"texture transform", "KHR_texture_transform (offset, rotation, scale, texCoord) baked "
+     "into the mesh's uvs; a material whose textures' transforms differ keeps the base "
+     "colour's (listed as not read)", "-", "every texture lookup, CPU and GL", "test_gltf"},
     {"lights", "KHR_lights_punctual point, spot and directional lights (candela and lux "
      "read as W/sr and W/m^2, a spot's cone as spot_light's); `range` not read", "not read",
      "every path, as "
