@@ -512,6 +512,35 @@ static void test_obj_norm(void)
     ssg_scene_destroy(&s);
 }
 
+/* A PLY's vertex colours (through Assimp, in its child process and back over the wire)
+ * multiply the albedo as sRGB display colours: byte 188 is linear 0.5029, 255 is 1. */
+static void test_ply_colors(void)
+{
+    const char *ply = write_file("colours.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                 "property float x\nproperty float y\nproperty float z\n"
+                                 "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                                 "element face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 0 188 0 255\n1 0 0 188 0 255\n"
+                                 "0 1 0 188 0 255\n3 0 1 2\n");
+    (void)ply;
+    const char *path = write_file("colours.scene", "mesh(\"colours.ply\")\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    CHECK_EQ(d.warning_count, 0);
+    if (!s)
+        return;
+    const float *c = s->meshes[0].colors;
+    CHECK(c != NULL);
+    if (c) {
+        CHECK_NEAR(c[0], 0.50289, 1e-4);
+        CHECK_NEAR(c[1], 0, 0);
+        CHECK_NEAR(c[8], 1, 1e-6);
+    }
+    ssg_scene_destroy(&s);
+}
+
 /* Every entity kind's parameters fit the places an entity keeps for their locations. */
 static void test_kinds_fit(void)
 {
@@ -553,6 +582,7 @@ int main(void)
     test_alpha_materials();
     test_obj_map_d();
     test_obj_norm();
+    test_ply_colors();
     test_kinds_fit();
     test_view_matrix();
     return check_report();

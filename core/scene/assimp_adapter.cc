@@ -28,6 +28,7 @@ extern "C" {
 #include "lang/files.h"
 }
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -225,6 +226,16 @@ void Flattener::visit(const aiNode *node, const aiMatrix4x4 &parent, int depth)
         visit(node->mChildren[i], world, depth + 1);
 }
 
+/* A vertex colour of an Assimp format as linear RGB: PLY's and OBJ's colours are display
+   colours (sRGB), unlike glTF's COLOR_0 (linear by the specification); alpha not read. */
+static void add_colour(const aiColor4D &c, std::vector<float> &out)
+{
+    for (float x : {c.r, c.g, c.b}) {
+        x = std::isfinite(x) ? std::min(std::max(x, 0.0f), 1.0f) : 0.0f;
+        out.push_back(model_adapter::srgb_to_linear(x));
+    }
+}
+
 void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
 {
     Prim out;
@@ -240,8 +251,6 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
     }
     if (out.indices.empty())
         return;
-    if (mesh.HasVertexColors(0))
-        ignored.add("vertex colours (read from glTF only)", "");
     double c[9], det;
     cofactor(world, c, &det);
     const double sign = det < 0 ? -1.0 : 1.0;
@@ -264,6 +273,8 @@ void Flattener::add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world)
             out.uvs.push_back(std::isfinite(t.x) ? t.x : 0.0f);
             out.uvs.push_back(std::isfinite(t.y) ? t.y : 0.0f);
         }
+        if (mesh.HasVertexColors(0))
+            add_colour(mesh.mColors[0][v], out.colors);
     }
     if (det < 0) /* a mirroring transform flips the winding; flip it back */
         for (size_t t = 0; t < out.indices.size(); t += 3)

@@ -14,14 +14,10 @@
 namespace gltf_adapter {
 
 using model_adapter::printable;
+using model_adapter::srgb_to_linear;
 using model_adapter::Tex;
 
 namespace {
-
-float srgb_to_linear(float c)
-{
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 /* A number of a KHR_texture_transform field, or `def` without it. */
 double number_of(const tinygltf::Value &v, const char *key, int index, double def)

@@ -6,6 +6,7 @@
 #ifndef SSG_MODEL_ADAPTER_H
 #define SSG_MODEL_ADAPTER_H
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,6 +25,12 @@ struct Failure {
 [[noreturn]] inline void fail(const std::string &message)
 {
     throw Failure{SSG_E_GLTF, message};
+}
+
+/* An sRGB-encoded value in [0, 1] as linear light (IEC 61966-2-1). */
+inline float srgb_to_linear(float c)
+{
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
 /* A triangle mesh gathered in C++ containers until the whole file has loaded. */

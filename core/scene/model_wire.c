@@ -61,11 +61,14 @@ static void put_mesh(struct sink *k, const struct ssg_mesh *m)
     put_int(k, m->material);
     put_int(k, m->normals != NULL);
     put_int(k, m->uvs != NULL);
+    put_int(k, m->colors != NULL);
     put(k, m->positions, 3 * v * sizeof(float));
     if (m->normals)
         put(k, m->normals, 3 * v * sizeof(float));
     if (m->uvs)
         put(k, m->uvs, 2 * v * sizeof(float));
+    if (m->colors)
+        put(k, m->colors, 3 * v * sizeof(float));
     put(k, m->indices, 3 * t * sizeof(uint32_t));
 }
 
@@ -195,10 +198,10 @@ static int get_array(struct ssg_wire *w, size_t n, size_t size, void **out)
 
 static int get_mesh(struct ssg_wire *w, struct ssg_mesh *m)
 {
-    long long v, t, material, normals, uvs;
+    long long v, t, material, normals, uvs, colors;
     if (!get_int(w, 0, INT_MAX / 3, &v) || !get_int(w, 0, INT_MAX / 3, &t) ||
         !get_int(w, -1, INT_MAX, &material) || !get_int(w, 0, 1, &normals) ||
-        !get_int(w, 0, 1, &uvs))
+        !get_int(w, 0, 1, &uvs) || !get_int(w, 0, 1, &colors))
         return 0;
     m->vertex_count = (int)v;
     m->triangle_count = (int)t;
@@ -206,6 +209,7 @@ static int get_mesh(struct ssg_wire *w, struct ssg_mesh *m)
     if (!get_array(w, 3 * (size_t)v, sizeof(float), (void **)&m->positions) ||
         (normals && !get_array(w, 3 * (size_t)v, sizeof(float), (void **)&m->normals)) ||
         (uvs && !get_array(w, 2 * (size_t)v, sizeof(float), (void **)&m->uvs)) ||
+        (colors && !get_array(w, 3 * (size_t)v, sizeof(float), (void **)&m->colors)) ||
         !get_array(w, 3 * (size_t)t, sizeof(uint32_t), (void **)&m->indices))
         return 0;
     for (size_t i = 0; i < 3 * (size_t)t; i++)

@@ -270,9 +270,10 @@ static const struct {
      "no light map or shadow map holds it (in real time an emitter lights only its near "
      "field)",
      "test_emission"},
-    {"vertex colours", "COLOR_0 (VEC3 or VEC4, its alpha not read) multiplies the base "
-     "colour", "not read", "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), "
-     "reference_gi's bounce hits", "test_vertex_colors"},
+    {"vertex colours", "COLOR_0 (VEC3 or VEC4, its alpha not read, linear) multiplies the "
+     "base colour", "the first colour set (PLY, OBJ, FBX...), read as sRGB, alpha not read",
+     "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), reference_gi's bounce hits",
+     "test_vertex_colors, test_scene"},
     {"texture transform", "KHR_texture_transform (offset, rotation, scale, texCoord) baked "
      "into the mesh's uvs; a material whose textures' transforms differ keeps the base "
      "colour's (listed as not read)", "-", "every texture lookup, CPU and GL", "test_gltf"},
