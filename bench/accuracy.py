@@ -15,21 +15,23 @@ ACCURACY_METHODS = [("ssao", "c_ssao", None), ("ssao + bilateral", "c_ssao_filte
 
 
 
-def still_scenes():
+def still_scenes(only=None):
     """The example scenes with a still camera: the single-frame tables score frame 0 of one
-    view; a scene whose camera moves (camera_key, orbit: docs/time.md) is a sequence's."""
+    view; a scene whose camera moves (camera_key, orbit: docs/time.md) is a sequence's.
+    only: scene names (without .scene) to keep, None = all."""
     folder = os.path.join(ROOT, "examples")
     moving = re.compile(r"^\s*(camera_key|orbit)\(", re.M)
     return sorted(f for f in os.listdir(folder) if f.endswith(".scene") and
-                  not moving.search(open(os.path.join(folder, f)).read()))
+                  not moving.search(open(os.path.join(folder, f)).read()) and
+                  (only is None or f[:-len(".scene")] in only))
 
-def accuracy_table(binary, size, threads, runs, rays=4096):
+def accuracy_table(binary, size, threads, runs, rays=4096, only=None):
     """Every AO method of graphs/ao_error.graph against reference_ao on every example scene:
     RMSE, FLIP (compare's LDR-FLIP of the grey AO, mean over the surface pixels), bias (mean
     of method - reference: > 0 = too bright, missed occlusion) and SSIM, and the frame time
     (median, write excluded) of the shipped graph that runs the method."""
     ao_error = os.path.join(ROOT, "graphs", "ao_error.graph")
-    scenes = still_scenes()
+    scenes = still_scenes(only)
     print(f"# AO accuracy of the shipped graphs, {size}\n")
     print("Each AO method of `graphs/ao_error.graph` against `reference_ao` "
           f"({rays} cosine-weighted rays within the same 0.5 radius: converged, its own noise "
@@ -75,7 +77,7 @@ def bounce_ratio(metrics, node):
     return m["mean"] / m["reference_mean"]
 
 
-def gi_accuracy_table(binary, size, threads, runs, paths=4096):
+def gi_accuracy_table(binary, size, threads, runs, paths=4096, only=None):
     """Every GI pipeline of graphs/gi_error.graph (and, where it runs, of
     graphs/hybrid_ssdo_error.graph) against reference_gi (direct light with true shadows
     plus one diffuse bounce) on every example scene under its own lights and each light of
@@ -84,7 +86,7 @@ def gi_accuracy_table(binary, size, threads, runs, paths=4096):
     the mean RMSE and FLIP, the mean and worst ratio to the SSAO baseline and how many
     scenes are worse than it; and the frame time of ssdo.graph and gi.graph (Cornell box)
     and hybrid_ssdo.graph (courtyard)."""
-    scenes = still_scenes()
+    scenes = still_scenes(only)
     print(f"\n# GI accuracy of the shipped graphs, {size}\n")
     print("Every example scene under its own lights (own: the point and directional lights "
           "and environment its file names) and relit by each file of `examples/lights/` "

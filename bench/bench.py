@@ -429,8 +429,8 @@ def main():
                     help="with --gallery and --accuracy: reference_gi paths a pixel")
     ap.add_argument("--rays", type=int, default=4096,
                     help="with --gallery and --accuracy: reference_ao rays a pixel")
-    ap.add_argument("--scenes", help="with --gallery: comma-separated scene names "
-                                     "(default: every still example scene)")
+    ap.add_argument("--scenes", help="with --gallery and --accuracy: comma-separated scene "
+                                     "names (default: every still example scene)")
     ap.add_argument("--lights", default="own,sky,courtyard",
                     help="with --gallery: lightings, of own, sky, courtyard, sun")
     ap.add_argument("--gallery-out", default=os.path.join(ROOT, "docs", "gallery.md"),
@@ -460,10 +460,11 @@ def main():
     if args.accuracy:
         from accuracy import accuracy_table, gi_accuracy_table  # the tables' own module
         size = (args.size or ["640x480"])[0]
+        only = args.scenes.split(",") if args.scenes else None
         if args.part != "gi":
-            accuracy_table(binary, size, args.threads, args.runs, args.rays)
+            accuracy_table(binary, size, args.threads, args.runs, args.rays, only)
         if args.part != "ao":
-            gi_accuracy_table(binary, size, args.threads, args.runs, args.paths)
+            gi_accuracy_table(binary, size, args.threads, args.runs, args.paths, only)
         return
     if args.frame_budget:
         frame_budget_table(binary, args.threads, args.runs)

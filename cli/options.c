@@ -194,8 +194,8 @@ static const struct option options[] = {
      .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
      .take = take_text, .field = OF(ov.lights),
      .help = "replace the scene's lights and environment with those of FILE, a\n"
-             "scene file of point_light, directional_light and environment only\n"
-             "(examples/lights/: sun, sky, courtyard); default: the graph's\n"
+             "scene file of light lines and environment only\n"
+             "(examples/lights/: sun, sky, courtyard, spot); default: the graph's\n"
              "`lights` line, else the scene's own"},
     {.name = "--guard", .arg = "G",
      .commands = SSG_CLI_RUN | SSG_CLI_CHECK | SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW,
