@@ -458,89 +458,6 @@ static void test_alpha_materials(void)
     ssg_scene_destroy(&s);
 }
 
-/* An OBJ whose MTL's map_d names its map_Kd file (the usual way to cut out leaves in OBJ)
- * becomes a masked material reading that texture's alpha, through Assimp and its child
- * process. */
-static void test_obj_map_d(void)
-{
-    write_file("leaf.mtl", "newmtl leaf\nKd 1 1 1\nmap_Kd " SSG_SOURCE_DIR
-               "/tests/fixtures/alpha_half.png\nmap_d " SSG_SOURCE_DIR
-               "/tests/fixtures/alpha_half.png\n");
-    write_file("leaf.obj", "mtllib leaf.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
-               "vt 1 1\nvn 0 0 1\nusemtl leaf\nf 1/1/1 2/2/1 3/3/1\n");
-    const char *path = write_file("leaf.scene", "mesh(\"leaf.obj\")\n");
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    if (!s)
-        return;
-    CHECK_EQ(s->material_count, 1);
-    const struct ssg_material *m = &s->materials[0];
-    CHECK_EQ(m->alpha_mode, SSG_ALPHA_MASK);
-    CHECK_NEAR(m->alpha_cutoff, 0.5, 0);
-    CHECK(m->texture >= 0 && s->textures[m->texture].alpha != NULL);
-    ssg_scene_destroy(&s);
-}
-
-/* An OBJ's norm (a tangent-space normal map) becomes the material's normal map, read as data
- * (normal_tilt.png's 204, 128, 230 exactly, not sRGB-decoded), and the mesh gets tangents;
- * a map_bump (heights) is listed as not read. */
-static void test_obj_norm(void)
-{
-    write_file("tilt.mtl", "newmtl tilt\nKd 1 1 1\nnorm " SSG_SOURCE_DIR
-               "/tests/fixtures/normal_tilt.png\nmap_bump bump.png\n");
-    write_file("tilt.obj", "mtllib tilt.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\n"
-               "vt 1 1\nvn 0 0 1\nusemtl tilt\nf 1/1/1 2/2/1 3/3/1\n");
-    const char *path = write_file("tilt.scene", "mesh(\"tilt.obj\")\n");
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    CHECK(d.warning_count == 1 && strstr(d.warnings[0].message, "bump maps (map_bump"));
-    if (!s)
-        return;
-    const struct ssg_material *m = &s->materials[0];
-    CHECK(m->normal_texture >= 0);
-    if (m->normal_texture >= 0) {
-        const float *rgb = s->textures[m->normal_texture].rgb;
-        CHECK_NEAR(rgb[0], 204 / 255.0, 1e-6);
-        CHECK_NEAR(rgb[1], 128 / 255.0, 1e-6);
-        CHECK_NEAR(rgb[2], 230 / 255.0, 1e-6);
-    }
-    CHECK(s->meshes[0].tangents != NULL);
-    ssg_scene_destroy(&s);
-}
-
-/* A PLY's vertex colours (through Assimp, in its child process and back over the wire)
- * multiply the albedo as sRGB display colours: byte 188 is linear 0.5029, 255 is 1. */
-static void test_ply_colors(void)
-{
-    const char *ply = write_file("colours.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
-                                 "property float x\nproperty float y\nproperty float z\n"
-                                 "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-                                 "element face 1\nproperty list uchar int vertex_indices\n"
-                                 "end_header\n0 0 0 188 0 255\n1 0 0 188 0 255\n"
-                                 "0 1 0 188 0 255\n3 0 1 2\n");
-    (void)ply;
-    const char *path = write_file("colours.scene", "mesh(\"colours.ply\")\n");
-    struct ssg_diags d = {0};
-    struct ssg_scene *s = NULL;
-    CHECK_EQ(ssg_scene_load(path, 1, &s, &d), SSG_OK);
-    ssg_diags_print(&d, stderr);
-    CHECK_EQ(d.warning_count, 0);
-    if (!s)
-        return;
-    const float *c = s->meshes[0].colors;
-    CHECK(c != NULL);
-    if (c) {
-        CHECK_NEAR(c[0], 0.50289, 1e-4);
-        CHECK_NEAR(c[1], 0, 0);
-        CHECK_NEAR(c[8], 1, 1e-6);
-    }
-    ssg_scene_destroy(&s);
-}
-
 /* Every entity kind's parameters fit the places an entity keeps for their locations. */
 static void test_kinds_fit(void)
 {
@@ -580,9 +497,6 @@ int main(void)
     test_check_mode_and_broken_gltf();
     test_textures();
     test_alpha_materials();
-    test_obj_map_d();
-    test_obj_norm();
-    test_ply_colors();
     test_kinds_fit();
     test_view_matrix();
     return check_report();

@@ -124,16 +124,12 @@ class Flattener {
 void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat)
 {
     std::string who = std::string("'") + model_adapter::printable(mat.name) + "'";
-    aiString path;
     float opacity = 1.0f;
     if (src.GetTextureCount(aiTextureType_HEIGHT) > 0)
         ignored.add("bump maps (map_bump, heights; a tangent-space normal map is read "
                     "from norm)", who);
     if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0)
         ignored.add("emission maps (map_Ke; Ke is read)", who);
-    if (src.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
-        mat.alpha_mode == SSG_ALPHA_OPAQUE)
-        ignored.add("opacity textures other than the diffuse texture (map_d)", who);
     if (src.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
         ignored.add("opacity below 1 (d, Tr: drawn opaque)", who);
 }
@@ -188,13 +184,21 @@ void Flattener::convert_materials()
                      std::to_string(sizeof mat.normal_file - 1) + ")");
             std::snprintf(mat.normal_file, sizeof mat.normal_file, "%s", normals.C_Str());
         }
-        /* an OBJ's map_d (opacity texture) naming the diffuse texture itself: its alpha
-           channel masks the surface, as glTF's MASK (a separate map_d is not read yet) */
+        /* an OBJ's map_d (opacity texture) masks the surface as glTF's MASK at 0.5: the
+           diffuse texture's own alpha when it names that file, else its own file's
+           coverage (opacity_file, decoded by the caller) */
         aiString opacity;
         mat.alpha_cutoff = 0.5f;
         if (src->GetTexture(aiTextureType_OPACITY, 0, &opacity) == AI_SUCCESS &&
-            mat.texture_file[0] && std::strcmp(opacity.C_Str(), mat.texture_file) == 0)
+            opacity.length) {
             mat.alpha_mode = SSG_ALPHA_MASK;
+            if (opacity.length >= sizeof mat.opacity_file)
+                fail(std::string("material '") + name.C_Str() + "' names an opacity map "
+                     "path of " + std::to_string(opacity.length) + " characters (at most " +
+                     std::to_string(sizeof mat.opacity_file - 1) + ")");
+            if (std::strcmp(opacity.C_Str(), mat.texture_file) != 0)
+                std::snprintf(mat.opacity_file, sizeof mat.opacity_file, "%s", opacity.C_Str());
+        }
         note_ignored(*src, mat);
         slot.push_back((int)materials.size());
         materials.push_back(mat);

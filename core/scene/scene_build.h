@@ -163,6 +163,12 @@ int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity 
 /* The diffuse texture an Assimp material names, relative to the model file. */
 int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
                             const char *model, const struct ssg_gltf_material *gm);
+/* An Assimp material's separate coverage map (opacity_file) as the alpha plane of its
+   texture `texture` (resampled onto its texels), or of a new white texture of the map's
+   size when texture < 0; returns the texture's index, -1 with a message when it cannot be
+   read. */
+int ssg_scene_model_opacity(struct scene_loader *l, const struct scene_entity *e,
+                            const char *model, const struct ssg_gltf_material *gm, int texture);
 /* The normal map (OBJ norm) an Assimp material names, relative to the model file, as
    data. */
 int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity *e,

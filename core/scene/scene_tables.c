@@ -256,8 +256,10 @@ static const struct {
      "as alpha mask", "test_gltf, test_scene"},
     {"double-sided", "not read: every surface has two faces on every path", "the same", "-",
      "-"},
-    {"a separate opacity texture or scalar opacity", "-",
-     "not read (map_d naming another file, d, Tr)", "-", "-"},
+    {"a separate opacity texture", "-", "map_d naming another file: its alpha channel, "
+     "else its first, is the mask (cutoff 0.5), resampled onto the diffuse texture (or a "
+     "white one)", "as alpha mask", "test_scene"},
+    {"scalar opacity", "-", "not read (d, Tr below 1: drawn opaque)", "-", "-"},
     {"normal maps", "normalTexture (tangent space) and its scale, on the base colour's "
      "texture coordinates; the file's TANGENT, else tangents made per vertex from the uvs "
      "(Lengyel 2001)", "norm (map_bump, a height map, is not read)", "every shading normal: the G-buffer (CPU, "

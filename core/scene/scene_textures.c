@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "lang/files.h"
+#include "scene/coverage.h"
 #include "scene/gltf.h"
 #include "scene/scene_build.h"
 
@@ -189,3 +190,66 @@ int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity
     return load_normal_map_file(l, path);
 }
 
+
+/* The coverage of pixel i of a mask image: its alpha channel when it has one (gray +
+   alpha, RGBA), else its first; clamped to [0, 1]. */
+static float mask_coverage(const struct ssg_image *im, size_t i)
+{
+    int c = im->channels == 2 || im->channels == 4 ? im->channels - 1 : 0;
+    float v = ssg_image_plane(im, c)[i];
+    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
+
+/* The mask's coverage at the texel centres of a width x height texture: bilinear over the
+   mask as the surface lookups read a texture (ssg_texture_bilinear), the same grid when the
+   sizes agree. NULL when out of memory. */
+static float *coverage_on(const struct ssg_image *mask, int width, int height)
+{
+    size_t mpx = (size_t)mask->width * mask->height, px = (size_t)width * height;
+    float *plane = malloc(mpx * sizeof(float)), *alpha = malloc(px * sizeof(float));
+    for (size_t i = 0; plane && i < mpx; i++)
+        plane[i] = mask_coverage(mask, i);
+    for (size_t i = 0; plane && alpha && i < px; i++) {
+        float u = ((float)(i % (size_t)width) + 0.5f) / (float)width;
+        float v = ((float)(i / (size_t)width) + 0.5f) / (float)height;
+        ssg_texture_bilinear(plane, 1, mask->width, mask->height, u, v, &alpha[i]);
+    }
+    free(plane);
+    if (!plane) {
+        free(alpha);
+        return NULL;
+    }
+    return alpha;
+}
+
+int ssg_scene_model_opacity(struct scene_loader *l, const struct scene_entity *e,
+                            const char *model, const struct ssg_gltf_material *gm, int texture)
+{
+    char path[1024];
+    struct ssg_image *mask = NULL;
+    if (!model_file(l, e, model, gm, gm->opacity_file, "opacity map", path, sizeof path))
+        return -1;
+    enum ssg_err err = ssg_image_read_data(path, &mask, l->diags);
+    if (!err && !texture_finite(l, path, mask))
+        err = SSG_E_IMAGE;
+    if (!err && texture < 0) { /* no diffuse texture: white, the albedo is the colour's */
+        size_t px = (size_t)mask->width * mask->height;
+        float *white = malloc(px * 3 * sizeof(float));
+        for (size_t i = 0; white && i < 3 * px; i++)
+            white[i] = 1.0f;
+        texture = white ? ssg_scene_add_texture(l, mask->width, mask->height, white, NULL) : -1;
+        err = texture < 0 ? SSG_E_NOMEM : SSG_OK;
+    }
+    struct ssg_texture *t = err ? NULL : &l->scene->textures[texture];
+    float *alpha = t ? coverage_on(mask, t->width, t->height) : NULL;
+    if (t && !alpha)
+        err = SSG_E_NOMEM;
+    ssg_image_destroy(&mask);
+    if (err) {
+        ssg_scene_fail(l, err);
+        return -1;
+    }
+    free(t->alpha);
+    t->alpha = alpha;
+    return texture;
+}
