@@ -419,7 +419,7 @@ static enum ssg_err import_model(const char *path, struct ssg_gltf **out,
     g->materials = calloc(1, sizeof *g->materials);
     g->material_count = 1;
     g->materials[0] = (struct ssg_gltf_material){"red", {1, 0, 0, 1}, 0, 0, "red.png",
-                                                 SSG_ALPHA_MASK, 0.25f, -1, 1.0f, {0, 0, 0}, -1, "", ""};
+                                                 SSG_ALPHA_MASK, 0.25f, -1, 1.0f, {0, 0, 0}, -1, "", "", ""};
     g->textures = calloc(2, sizeof *g->textures);
     g->texture_count = 1;
     g->textures[0] = (struct ssg_texture){2, 1, calloc(6, sizeof(float)),

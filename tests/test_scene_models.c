@@ -1,7 +1,7 @@
 /* test_scene_models.c - what a model file read through Assimp (in its child process, back
  * over the model wire) brings into a scene's materials and meshes: an OBJ's map_d cutting
  * by the diffuse texture's alpha or by a file of its own, an OBJ's norm read as data (and
- * map_bump named as not read), a PLY's vertex colours as sRGB. */
+ * map_bump named as not read), an OBJ's map_Ke times Ke, a PLY's vertex colours as sRGB. */
 #include <string.h>
 
 #include "check.h"
@@ -132,6 +132,30 @@ static void test_ply_colors(void)
     ssg_scene_destroy(&s);
 }
 
+/* An OBJ's map_Ke is the material's emission texture (sRGB-decoded: 204 -> 0.6038) times
+ * Ke; a map_Ke without Ke glows at 1 x the map. */
+static void test_obj_map_ke(void)
+{
+    write_file("lamp.mtl", "newmtl lamp\nKd 0 0 0\nKe 2 2 2\nmap_Ke " SSG_SOURCE_DIR
+               "/tests/fixtures/normal_tilt.png\nnewmtl sign\nKd 0 0 0\nmap_Ke " SSG_SOURCE_DIR
+               "/tests/fixtures/normal_tilt.png\n");
+    write_file("lamp.obj", "mtllib lamp.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n"
+               "vt 1 0\nvt 1 1\nvn 0 0 1\nusemtl lamp\nf 1/1/1 2/2/1 3/3/1\nusemtl sign\n"
+               "f 1/1/1 3/3/1 4/2/1\n");
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = load_model("lamp.obj", &d);
+    CHECK_EQ(d.warning_count, 0);
+    for (int i = 0; s && i < s->material_count; i++) {
+        const struct ssg_material *m = &s->materials[i];
+        CHECK_NEAR(m->emission[0], strcmp(m->name, "lamp") == 0 ? 2.0 : 1.0, 0);
+        CHECK(m->emission_texture >= 0);
+        if (m->emission_texture >= 0)
+            CHECK_NEAR(s->textures[m->emission_texture].rgb[0], 0.6038, 1e-3);
+    }
+    CHECK(s && s->material_count == 2);
+    ssg_scene_destroy(&s);
+}
+
 int main(void)
 {
     setup_tmp("test_scene_models");
@@ -139,5 +163,6 @@ int main(void)
     test_obj_norm();
     test_ply_colors();
     test_obj_separate_map_d();
+    test_obj_map_ke();
     return check_report();
 }

@@ -120,6 +120,22 @@ class Flattener {
     void add_mesh(const aiMesh &mesh, const aiMatrix4x4 &world);
 };
 
+/* An emission map (map_Ke) multiplies Ke; with Ke black or absent it is the emission
+   itself (Ke taken as 1: a file that names an emission map means it to glow). */
+static void read_emission_map(const aiMaterial &src, ssg_gltf_material &mat)
+{
+    aiString map;
+    if (src.GetTexture(aiTextureType_EMISSIVE, 0, &map) != AI_SUCCESS || !map.length)
+        return;
+    if (map.length >= sizeof mat.emission_file)
+        fail(std::string("material '") + mat.name + "' names an emission map path of " +
+             std::to_string(map.length) + " characters (at most " +
+             std::to_string(sizeof mat.emission_file - 1) + ")");
+    std::snprintf(mat.emission_file, sizeof mat.emission_file, "%s", map.C_Str());
+    if (mat.emission[0] <= 0.0f && mat.emission[1] <= 0.0f && mat.emission[2] <= 0.0f)
+        mat.emission[0] = mat.emission[1] = mat.emission[2] = 1.0f;
+}
+
 /* The parts of a material no path reads yet (docs/scenes.md's feature table). */
 void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat)
 {
@@ -128,8 +144,6 @@ void Flattener::note_ignored(const aiMaterial &src, const ssg_gltf_material &mat
     if (src.GetTextureCount(aiTextureType_HEIGHT) > 0)
         ignored.add("bump maps (map_bump, heights; a tangent-space normal map is read "
                     "from norm)", who);
-    if (src.GetTextureCount(aiTextureType_EMISSIVE) > 0)
-        ignored.add("emission maps (map_Ke; Ke is read)", who);
     if (src.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
         ignored.add("opacity below 1 (d, Tr: drawn opaque)", who);
 }
@@ -161,13 +175,14 @@ void Flattener::convert_materials()
         mat.texture = -1;
         mat.normal_texture = -1; /* a normal map comes as normal_file, decoded by the caller */
         mat.normal_scale = 1.0f;
-        mat.emission_texture = -1; /* nor its emission maps (map_Ke) */
+        mat.emission_texture = -1; /* an emission map comes as emission_file */
         aiColor3D ke(0, 0, 0);
         if (src->Get(AI_MATKEY_COLOR_EMISSIVE, ke) == AI_SUCCESS) {
             const float e[3] = {ke.r, ke.g, ke.b};
             for (int k = 0; k < 3; k++)
                 mat.emission[k] = std::isfinite(e[k]) && e[k] > 0.0f ? e[k] : 0.0f;
         }
+        read_emission_map(*src, mat);
         if (src->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS && tex.length) {
             if (tex.length >= sizeof mat.texture_file)
                 fail(std::string("material '") + name.C_Str() + "' names a texture path of " +

@@ -37,6 +37,8 @@ struct ssg_gltf_material {
     int emission_texture; /* emissiveTexture: index into textures (sRGB decoded), -1 */
     char normal_file[256]; /* an undecoded tangent-space normal map (Assimp formats: an
                               OBJ's norm), relative to the model file; "" = none */
+    char emission_file[256]; /* an undecoded emission texture (Assimp formats: an OBJ's
+                                map_Ke, sRGB), relative to the model file; "" = none */
     char opacity_file[256]; /* an undecoded coverage map other than the diffuse texture
                                (Assimp formats: an OBJ's map_d naming another file: its
                                alpha channel, else its first), relative to the model; "" */

@@ -283,6 +283,8 @@ static int import_gltf_materials(struct scene_loader *l, const struct scene_enti
             gm->emission_texture >= 0 ? first_texture + gm->emission_texture : -1;
         if (gm->texture < 0 && gm->texture_file[0])
             m->texture = ssg_scene_model_texture(l, e, model, gm);
+        if (gm->emission_texture < 0 && gm->emission_file[0])
+            m->emission_texture = ssg_scene_model_emission(l, e, model, gm);
         if (gm->opacity_file[0])
             m->texture = ssg_scene_model_opacity(l, e, model, gm, m->texture);
         if (gm->normal_texture < 0 && gm->normal_file[0])

@@ -163,6 +163,10 @@ int ssg_scene_load_normal_map(struct scene_loader *l, const struct scene_entity 
 /* The diffuse texture an Assimp material names, relative to the model file. */
 int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e,
                             const char *model, const struct ssg_gltf_material *gm);
+/* The emission map (OBJ map_Ke) an Assimp material names, relative to the model file,
+   sRGB-decoded as a colour texture. */
+int ssg_scene_model_emission(struct scene_loader *l, const struct scene_entity *e,
+                             const char *model, const struct ssg_gltf_material *gm);
 /* An Assimp material's separate coverage map (opacity_file) as the alpha plane of its
    texture `texture` (resampled onto its texels), or of a new white texture of the map's
    size when texture < 0; returns the texture's index, -1 with a message when it cannot be

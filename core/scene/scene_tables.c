@@ -266,7 +266,8 @@ static const struct {
      "GL), lightmaps' normals (CPU, GL), reference_gi's bounce hits; a scene file's material "
      "takes one as normal_map (PNG or EXR)", "test_normal_map"},
     {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "
-     "on the material's texture coordinates)", "Ke (map_Ke not read)", "gbuffer.emission "
+     "on the material's texture coordinates)", "Ke x map_Ke (sRGB; Ke black or absent: "
+     "1)", "gbuffer.emission "
      "(CPU, GL), which combine adds to the frame; reference_gi (seen directly, and as the "
      "source of its one bounce); gi.graph's SSDO near field bounces it within its radius; "
      "no light map or shadow map holds it (in real time an emitter lights only its near "

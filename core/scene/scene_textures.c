@@ -181,6 +181,15 @@ int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e
     return ssg_scene_load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
 }
 
+int ssg_scene_model_emission(struct scene_loader *l, const struct scene_entity *e,
+                             const char *model, const struct ssg_gltf_material *gm)
+{
+    char path[1024];
+    if (!model_file(l, e, model, gm, gm->emission_file, "emission map", path, sizeof path))
+        return -1;
+    return ssg_scene_load_texture_file(l, path, 1, 0);
+}
+
 int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity *e,
                                const char *model, const struct ssg_gltf_material *gm)
 {
