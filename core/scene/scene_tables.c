@@ -251,20 +251,20 @@ static const struct {
      "alpha >= alphaCutoff", "map_d naming the map_Kd file itself (its alpha channel), "
      "cutoff 0.5", "the G-buffer (CPU rays, GL raster), shadowmaps and lightmaps (CPU and GL), "
      "every Embree ray (reference_ao, reference_gi); not rsm's coarse distance field",
-     "test_alpha_mask, test_shadowmaps, test_gltf, test_scene"},
+     "test_alpha_mask, test_shadowmaps, test_gltf, test_scene, test_scene_models"},
     {"alpha blend", "alphaMode BLEND: drawn as MASK at cutoff 0.5, with a warning", "-",
      "as alpha mask", "test_gltf, test_scene"},
     {"double-sided", "not read: every surface has two faces on every path", "the same", "-",
      "-"},
     {"a separate opacity texture", "-", "map_d naming another file: its alpha channel, "
      "else its first, is the mask (cutoff 0.5), resampled onto the diffuse texture (or a "
-     "white one)", "as alpha mask", "test_scene"},
+     "white one)", "as alpha mask", "test_scene_models"},
     {"scalar opacity", "-", "not read (d, Tr below 1: drawn opaque)", "-", "-"},
     {"normal maps", "normalTexture (tangent space) and its scale, on the base colour's "
      "texture coordinates; the file's TANGENT, else tangents made per vertex from the uvs "
      "(Lengyel 2001)", "norm (map_bump, a height map, is not read)", "every shading normal: the G-buffer (CPU, "
      "GL), lightmaps' normals (CPU, GL), reference_gi's bounce hits; a scene file's material "
-     "takes one as normal_map (PNG or EXR)", "test_normal_map"},
+     "takes one as normal_map (PNG or EXR)", "test_normal_map, test_scene_models"},
     {"emission", "emissiveFactor x KHR_materials_emissive_strength, x emissiveTexture (sRGB, "
      "on the material's texture coordinates)", "Ke x map_Ke (sRGB; Ke black or absent: "
      "1)", "gbuffer.emission "
@@ -272,11 +272,11 @@ static const struct {
      "source of its one bounce); gi.graph's SSDO near field bounces it within its radius; "
      "no light map or shadow map holds it (in real time an emitter lights only its near "
      "field)",
-     "test_emission"},
+     "test_emission, test_scene_models"},
     {"vertex colours", "COLOR_0 (VEC3 or VEC4, its alpha not read, linear) multiplies the "
      "base colour", "the first colour set (PLY, OBJ, FBX...), read as sRGB, alpha not read",
      "every albedo: the G-buffer (CPU, GL), lightmaps (CPU, GL), reference_gi's bounce hits",
-     "test_vertex_colors, test_scene"},
+     "test_vertex_colors, test_scene_models"},
     {"texture transform", "KHR_texture_transform (offset, rotation, scale, texCoord) baked "
      "into the mesh's uvs; a material whose textures' transforms differ keeps the base "
      "colour's (listed as not read)", "-", "every texture lookup, CPU and GL", "test_gltf"},
