@@ -50,18 +50,32 @@ static int texture_finite(struct scene_loader *l, const char *path, const struct
     return 1;
 }
 
-/* The alpha plane of an image with one (gray + alpha, RGBA: its last channel), clamped to
-   [0, 1]; NULL without one, or out of memory (*nomem set). */
-static float *alpha_plane(const struct ssg_image *im, int *nomem)
+/* 1 when the image has an alpha channel (gray + alpha, RGBA: its last). */
+static int has_alpha(const struct ssg_image *im)
 {
-    if (im->channels != 2 && im->channels != 4)
-        return NULL;
+    return im->channels == 2 || im->channels == 4;
+}
+
+/* Channel c of an image as coverages, clamped to [0, 1] (malloc'd); NULL when out of
+   memory. */
+static float *coverage_plane(const struct ssg_image *im, int c)
+{
     size_t px = (size_t)im->width * (size_t)im->height;
     float *alpha = malloc(px * sizeof(float));
-    *nomem = !alpha;
-    const float *plane = ssg_image_plane(im, im->channels - 1);
+    const float *plane = ssg_image_plane(im, c);
     for (size_t i = 0; alpha && i < px; i++)
         alpha[i] = plane[i] > 0.0f ? (plane[i] < 1.0f ? plane[i] : 1.0f) : 0.0f;
+    return alpha;
+}
+
+/* The alpha plane of an image with one, clamped to [0, 1]; NULL without one, or out of
+   memory (*nomem set). */
+static float *alpha_plane(const struct ssg_image *im, int *nomem)
+{
+    if (!has_alpha(im))
+        return NULL;
+    float *alpha = coverage_plane(im, im->channels - 1);
+    *nomem = !alpha;
     return alpha;
 }
 
@@ -178,7 +192,9 @@ int ssg_scene_model_texture(struct scene_loader *l, const struct scene_entity *e
     char path[1024];
     if (!model_file(l, e, model, gm, gm->texture_file, "texture", path, sizeof path))
         return -1;
-    return ssg_scene_load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE);
+    /* a separate coverage map (opacity_file) replaces the texture's own alpha */
+    return ssg_scene_load_texture_file(l, path, 1, gm->alpha_mode != SSG_ALPHA_OPAQUE &&
+                                                       !gm->opacity_file[0]);
 }
 
 int ssg_scene_model_emission(struct scene_loader *l, const struct scene_entity *e,
@@ -199,25 +215,15 @@ int ssg_scene_model_normal_map(struct scene_loader *l, const struct scene_entity
     return load_normal_map_file(l, path);
 }
 
-
-/* The coverage of pixel i of a mask image: its alpha channel when it has one (gray +
-   alpha, RGBA), else its first; clamped to [0, 1]. */
-static float mask_coverage(const struct ssg_image *im, size_t i)
-{
-    int c = im->channels == 2 || im->channels == 4 ? im->channels - 1 : 0;
-    float v = ssg_image_plane(im, c)[i];
-    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-}
-
-/* The mask's coverage at the texel centres of a width x height texture: bilinear over the
-   mask as the surface lookups read a texture (ssg_texture_bilinear), the same grid when the
-   sizes agree. NULL when out of memory. */
+/* The mask's coverage (its alpha channel when it has one, else its first) at the texel
+   centres of a width x height texture: bilinear over the mask as the surface lookups read
+   a texture (ssg_texture_bilinear), the same grid when the sizes agree. NULL when out of
+   memory. */
 static float *coverage_on(const struct ssg_image *mask, int width, int height)
 {
-    size_t mpx = (size_t)mask->width * mask->height, px = (size_t)width * height;
-    float *plane = malloc(mpx * sizeof(float)), *alpha = malloc(px * sizeof(float));
-    for (size_t i = 0; plane && i < mpx; i++)
-        plane[i] = mask_coverage(mask, i);
+    size_t px = (size_t)width * height;
+    float *plane = coverage_plane(mask, has_alpha(mask) ? mask->channels - 1 : 0);
+    float *alpha = malloc(px * sizeof(float));
     for (size_t i = 0; plane && alpha && i < px; i++) {
         float u = ((float)(i % (size_t)width) + 0.5f) / (float)width;
         float v = ((float)(i / (size_t)width) + 0.5f) / (float)height;

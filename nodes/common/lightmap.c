@@ -4,6 +4,7 @@
 
 #include "scene/scene.h"
 #include "common/lightmap.h"
+#include "common/sampling.h"
 #include "common/env_lights.h"
 
 /* The cube's faces: look axis, then u and v, with u x v = axis. */
@@ -15,9 +16,8 @@ static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
 
 int ssg_lightmap_light_faces(const struct ssg_light *light)
 {
-    static const float SPOT_FACE_COS = 0.5f; /* cos SSG_LIGHTMAP_SPOT_FACE_DEG */
     if (light->kind == SSG_LIGHT_DIRECTIONAL ||
-        (light->kind == SSG_LIGHT_SPOT && light->cos_outer >= SPOT_FACE_COS))
+        (light->kind == SSG_LIGHT_SPOT && light->cos_outer >= SSG_LIGHTMAP_SPOT_FACE_COS))
         return 1;
     return SSG_LIGHTMAP_CUBE_FACES;
 }
@@ -78,33 +78,19 @@ static void cube_face(const struct ssg_light *light, int side, struct ssg_lightm
     }
 }
 
-/* A spot light's one face: along its axis, u and v any frame with u x v = axis, as wide
-   as its outer cone. */
+/* A spot light's one face: along its axis, u and v the orthonormal frame about it with
+   u x v = axis (ssg_sampling_basis), as wide as its outer cone. */
 static void spot_face(const struct ssg_light *light, struct ssg_lightmap_face *f)
 {
     const float *a = light->direction;
-    /* the world axis least along a, made perpendicular to it */
-    int k0 = fabsf(a[0]) <= fabsf(a[1]) && fabsf(a[0]) <= fabsf(a[2]) ? 0
-             : fabsf(a[1]) <= fabsf(a[2]) ? 1 : 2;
-    float u[3] = {0, 0, 0}, len = 0.0f;
-    u[k0] = 1.0f;
-    for (int k = 0; k < 3; k++)
-        u[k] -= a[k0] * a[k];
-    for (int k = 0; k < 3; k++)
-        len += u[k] * u[k];
-    len = 1.0f / sqrtf(len);
     float s = sqrtf(fmaxf(0.0f, 1.0f - light->cos_outer * light->cos_outer));
     f->ortho = 0;
     f->half = s / light->cos_outer;
+    ssg_sampling_basis(a[0], a[1], a[2], f->u, f->v);
     for (int k = 0; k < 3; k++) {
         f->origin[k] = light->position[k];
         f->axis[k] = a[k];
-        f->u[k] = u[k] * len;
     }
-    /* v = axis x u, so that u x v = axis */
-    f->v[0] = a[1] * f->u[2] - a[2] * f->u[1];
-    f->v[1] = a[2] * f->u[0] - a[0] * f->u[2];
-    f->v[2] = a[0] * f->u[1] - a[1] * f->u[0];
 }
 
 const char *const ssg_lightmap_fit_choices[] = {"scene", "view", NULL};

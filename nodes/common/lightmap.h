@@ -10,7 +10,7 @@
  * cube map around its position, face k a 90 degree perspective view along CUBE axis k
  * (+x, -x, +y, -y, +z, -z), and for a spot light one perspective face along its axis
  * whose half-width is tan(outer angle) when the outer angle is at most
- * SSG_LIGHTMAP_SPOT_FACE_DEG, else a point light's six. A scene without such lights has
+ * 60 degrees (SSG_LIGHTMAP_SPOT_FACE_COS), else a point light's six. A scene without such lights has
  * one empty face (light -1), so that an image always has channels.
  *
  * Texel (x, y) of a face (row 0 at -v) has a = 2 (x + 0.5) / R - 1, b = 2 (y + 0.5) / R - 1
@@ -73,10 +73,10 @@ struct ssg_lightmap_face {
                          tangent of half its field of view (a cube face: 1) */
 };
 
-/* The widest spot light (outer half-angle, degrees) mapped by one perspective face; a
-   wider one takes six cube faces, as a point light: a face much wider than 120 degrees
-   spends its texels at the rim. */
-#define SSG_LIGHTMAP_SPOT_FACE_DEG 60.0f
+/* The cosine of the widest spot light's outer half-angle (60 degrees) that one
+   perspective face maps; a wider one takes six cube faces, as a point light: a face much
+   wider than 120 degrees spends its texels at the rim. */
+#define SSG_LIGHTMAP_SPOT_FACE_COS 0.5f
 
 /* Which lights a set of maps holds: the scene's own (point, spot, directional) lights, and
    the environment as this many directional lights (0: none). At least one of the two. */
@@ -95,7 +95,7 @@ static inline int ssg_lightmap_face_env(const struct ssg_lightmap_face *f)
     return f->light <= -2 ? -2 - f->light : -1;
 }
 
-/* Faces one own light takes: 1 (directional, a spot up to SSG_LIGHTMAP_SPOT_FACE_DEG)
+/* Faces one own light takes: 1 (directional, a spot up to 60 degrees)
    or SSG_LIGHTMAP_CUBE_FACES (point, a wider spot): then the face a direction from the
    light falls on is ssg_lightmap_cube_face's. */
 int ssg_lightmap_light_faces(const struct ssg_light *light);

@@ -4,6 +4,7 @@
 #include "scene/scene.h"
 #include "scene/scene_shapes.h"
 #include "common/shadowmap.h"
+#include "common/sampling.h"
 
 struct ssg_bounding_sphere ssg_scene_bounding_sphere(const struct ssg_scene *scene)
 {
@@ -33,14 +34,8 @@ struct ssg_shadow_frame ssg_shadow_frame_make(const struct ssg_bounding_sphere *
                                               const float l[3])
 {
     struct ssg_shadow_frame f;
-    float sign = copysignf(1.0f, l[2]);
-    float a = -1.0f / (sign + l[2]);
-    float b = l[0] * l[1] * a;
-    float u[3] = {1.0f + sign * l[0] * l[0] * a, sign * b, -sign * l[0]};
-    float v[3] = {b, sign + l[1] * l[1] * a, -l[1]};
+    ssg_sampling_basis(l[0], l[1], l[2], f.u, f.v); /* u x v = l */
     for (int k = 0; k < 3; k++) {
-        f.u[k] = u[k];
-        f.v[k] = v[k];
         f.l[k] = l[k];
         f.origin[k] = sphere->centre[k] + sphere->radius * l[k];
     }
