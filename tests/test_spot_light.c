@@ -10,7 +10,9 @@
  * - the light map's flux sums to what the spot sends, albedo 0.5 x 2 pi I ((1 - cos 20) +
  *   (cos 20 - cos 30) / 3): the texels' solid angles on a face wider than a cube face's,
  *   each weighted by the cone;
- * - a spot within 60 degrees takes one map face, a wider one a point light's six. */
+ * - a spot within 60 degrees takes one map face, a wider one a point light's six;
+ * - a cone whose inner angle is wider than its outer one is refused at the argument's
+ *   line and column, in a scene line and in a glTF file (naming the light). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +22,7 @@
 #include "light_maps.h"
 #include "scene_node.h"
 #include "common/lightmap.h"
+#include "scene/gltf.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
@@ -164,12 +167,53 @@ static void check_faces(void)
     CHECK_NEAR(ssg_light_cone(&point, w), 1, 0);
 }
 
+/* Bad cones: a scene line's at inner_angle's file:line:column, a glTF spot's naming it. */
+static void check_bad_cones(void)
+{
+    const char *path = scene_node_path("bad_cone.scene");
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs("camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+              "spot_light(position=[0, 2, 0], direction=[0, -1, 0],\n"
+              "           inner_angle=40, outer_angle=30)\n", f);
+        fclose(f);
+    }
+    struct ssg_diags d = {0};
+    struct ssg_scene *s = NULL;
+    CHECK_EQ(ssg_scene_load(path, 0, &s, &d), SSG_E_VALUE);
+    CHECK(s == NULL && d.count >= 1);
+    if (d.count >= 1) {
+        fprintf(stderr, "(expected) %s:%d:%d: %s\n", d.items[0].file, d.items[0].line,
+                d.items[0].column, d.items[0].message);
+        CHECK_EQ(d.items[0].line, 3);
+        CHECK_EQ(d.items[0].column, 24);
+        CHECK(strstr(d.items[0].message, "inner_angle 40 is wider than outer_angle 30"));
+    }
+    const char *gltf = scene_node_path("bad_cone.gltf");
+    f = fopen(gltf, "w");
+    if (f) {
+        fputs("{\"asset\": {\"version\": \"2.0\"}, \"scene\": 0, \"scenes\": [{\"nodes\": [0]}],"
+              " \"nodes\": [{\"extensions\": {\"KHR_lights_punctual\": {\"light\": 0}}}],"
+              " \"extensionsUsed\": [\"KHR_lights_punctual\"], \"extensions\": "
+              "{\"KHR_lights_punctual\": {\"lights\": [{\"name\": \"lamp\", \"type\": \"spot\","
+              " \"spot\": {\"innerConeAngle\": 0.6, \"outerConeAngle\": 0.3}}]}}}\n", f);
+        fclose(f);
+    }
+    struct ssg_gltf *g = NULL;
+    char why[512] = "";
+    CHECK_EQ(ssg_gltf_load(gltf, &g, why, sizeof why), SSG_E_GLTF);
+    fprintf(stderr, "(expected) %s\n", why);
+    CHECK(strstr(why, "spot light 'lamp'") && strstr(why, "innerConeAngle"));
+    ssg_gltf_destroy(&g);
+}
+
 int main(void)
 {
     const char *dir = getenv("SSG_TMP");
     snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_spot_light");
     mkdir(tmp, 0755);
     check_faces();
+    check_bad_cones();
     struct frame cpu = {0}, gl = {0};
     if (run("cpu", &cpu)) {
         check_frame("cpu", &cpu, cpu.shadowed, "direct_light");
