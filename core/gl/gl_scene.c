@@ -31,6 +31,9 @@ struct ssg_gl_scene {
     size_t bytes[SSG_GL_SCENE_BUFFERS]; /* each buffer's size */
     GLuint distance;            /* the distance field's voxels (scene/distance.h), 4 bytes
                                    of 0 without one */
+    int borrowed;               /* a proxy view (scene/proxy.h): its textures, materials and
+                                   distance field are the scene's buffers, not its own */
+    struct ssg_scene view;      /* a view's copy: the node's view lives on its stack */
 };
 
 static enum ssg_err fail(const struct ssg_node_ctx *ctx, enum ssg_err code, const char *what)
@@ -147,10 +150,13 @@ static enum ssg_err check_limits(const struct ssg_node_ctx *ctx, const struct ss
 static void copy_data(struct ssg_gl_scene *s)
 {
     const struct ssg_scene *sc = s->scene;
-    glCreateBuffers(SSG_GL_SCENE_BUFFERS, s->buffer);
-    for (int b = 0; b < SSG_GL_SCENE_BUFFERS; b++) /* 4 bytes at least: never size 0 */
+    for (int b = 0; b < SSG_GL_SCENE_BUFFERS; b++) { /* 4 bytes at least: never size 0 */
+        if (s->borrowed && (b == TEXEL || b == MATERIALS))
+            continue;
+        glCreateBuffers(1, &s->buffer[b]);
         glNamedBufferData(s->buffer[b], (GLsizeiptr)(s->bytes[b] ? s->bytes[b] : 4), NULL,
                           GL_STATIC_DRAW);
+    }
     for (int i = 0; i < sc->mesh_count; i++) {
         const struct ssg_mesh *m = &sc->meshes[i];
         const struct ssg_gl_mesh *g = &s->mesh[i];
@@ -167,7 +173,7 @@ static void copy_data(struct ssg_gl_scene *s)
         glNamedBufferSubData(s->buffer[INDEX], 4 * (GLintptr)g->indices,
                              (GLsizeiptr)(12 * (size_t)m->triangle_count), m->indices);
     }
-    for (int i = 0; i < sc->texture_count; i++) {
+    for (int i = 0; i < sc->texture_count && !s->borrowed; i++) {
         const struct ssg_texture *t = &sc->textures[i];
         GLsizeiptr plane = (GLsizeiptr)(4 * (size_t)t->width * (size_t)t->height);
         if (s->texel_at[i] < 0)
@@ -179,7 +185,7 @@ static void copy_data(struct ssg_gl_scene *s)
     }
     if (s->bytes[MESHES])
         glNamedBufferSubData(s->buffer[MESHES], 0, (GLsizeiptr)s->bytes[MESHES], s->mesh);
-    if (s->bytes[MATERIALS])
+    if (s->bytes[MATERIALS] && !s->borrowed)
         glNamedBufferSubData(s->buffer[MATERIALS], 0, (GLsizeiptr)s->bytes[MATERIALS],
                              s->material);
 }
@@ -222,11 +228,12 @@ static void scene_free(struct ssg_gl_scene **scene)
     struct ssg_gl_scene *s = *scene;
     if (!s)
         return;
-    if (s->buffer[0] && ssg_gl_alive()) /* GL defers the deletion until queued passes end */
-        glDeleteBuffers(SSG_GL_SCENE_BUFFERS, s->buffer);
+    for (int b = 0; b < SSG_GL_SCENE_BUFFERS && ssg_gl_alive(); b++)
+        if (s->buffer[b] && !(s->borrowed && (b == TEXEL || b == MATERIALS)))
+            glDeleteBuffers(1, &s->buffer[b]); /* GL defers it until queued passes end */
     if (s->vao && ssg_gl_alive())
         glDeleteVertexArrays(1, &s->vao);
-    if (s->distance && ssg_gl_alive())
+    if (s->distance && !s->borrowed && ssg_gl_alive())
         glDeleteBuffers(1, &s->distance);
     free(s->mesh);
     free(s->material);
@@ -235,13 +242,21 @@ static void scene_free(struct ssg_gl_scene **scene)
     *scene = NULL;
 }
 
+/* Uploads scene, or with `base` the proxy view scene of base's scene: then only its
+   meshes, the rest borrowed from base. */
 static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scene *scene,
-                           struct ssg_gl_scene **out)
+                           const struct ssg_gl_scene *base, struct ssg_gl_scene **out)
 {
     *out = NULL;
     struct ssg_gl_scene *s = calloc(1, sizeof *s);
     if (s) {
         s->scene = scene;
+        if (base) {
+            s->view = *scene, s->scene = &s->view, s->borrowed = 1;
+            s->buffer[TEXEL] = base->buffer[TEXEL];
+            s->buffer[MATERIALS] = base->buffer[MATERIALS];
+            s->distance = base->distance;
+        }
         s->mesh = calloc((size_t)scene->mesh_count + 1, sizeof *s->mesh);
         s->material = calloc((size_t)scene->material_count + 1, sizeof *s->material);
         s->texel_at = calloc((size_t)scene->texture_count + 1, sizeof *s->texel_at);
@@ -251,15 +266,16 @@ static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scen
         return fail(ctx, SSG_E_NOMEM, "out of memory for the scene's GL tables");
     }
     enum ssg_err e = lay_out_meshes(ctx, s);
-    if (!e)
+    if (!e && !base)
         e = lay_out_textures(ctx, s);
-    if (!e)
+    if (!e && !base)
         lay_out_materials(s);
     if (!e)
         e = check_limits(ctx, s);
     if (!e) {
         copy_data(s);
-        copy_distance(s);
+        if (!base)
+            copy_distance(s);
         make_vao(s);
         e = ssg_gl_node_status(ctx, "uploading the scene");
     }
@@ -271,8 +287,28 @@ static enum ssg_err upload(const struct ssg_node_ctx *ctx, const struct ssg_scen
 
 void ssg_gl_shared_clear(struct ssg_gl_shared *shared)
 {
+    for (int i = 0; i < SSG_GL_VIEWS; i++) /* before the scene whose buffers they borrow */
+        scene_free(&shared->view[i]);
     scene_free(&shared->scene);
     shared->scene_of = NULL;
+}
+
+/* The proxy view's upload (scene/proxy.h), found by its meshes (a level's array is the
+   scene's for its life) or made; the oldest of SSG_GL_VIEWS makes room. */
+static enum ssg_err view_of(const struct ssg_node_ctx *ctx, struct ssg_gl_shared *sh,
+                            const struct ssg_gl_scene **out)
+{
+    for (int i = 0; i < SSG_GL_VIEWS; i++)
+        if (sh->view[i] && sh->view[i]->view.meshes == ctx->scene->meshes) {
+            *out = sh->view[i];
+            return SSG_OK;
+        }
+    scene_free(&sh->view[SSG_GL_VIEWS - 1]);
+    memmove(&sh->view[1], &sh->view[0], (SSG_GL_VIEWS - 1) * sizeof sh->view[0]);
+    sh->view[0] = NULL;
+    enum ssg_err e = upload(ctx, ctx->scene, sh->scene, &sh->view[0]);
+    *out = sh->view[0];
+    return e;
 }
 
 /* The executor gives every node a holder (exec.c lends one to a node run alone), so a
@@ -286,15 +322,18 @@ static enum ssg_err scene_of(const struct ssg_node_ctx *ctx, const struct ssg_gl
                     "the executor)");
     if (!ctx->scene)
         return fail(ctx, SSG_E_SCENE, "the GL raster needs a scene");
-    if (sh->scene && sh->scene_of != ctx->scene)
+    const struct ssg_scene *scene = ctx->scene->proxy_of ? ctx->scene->proxy_of : ctx->scene;
+    if (sh->scene && sh->scene_of != scene)
         ssg_gl_shared_clear(sh);
     enum ssg_err e = SSG_OK;
     if (!sh->scene) {
-        e = upload(ctx, ctx->scene, &sh->scene);
-        sh->scene_of = sh->scene ? ctx->scene : NULL;
+        e = upload(ctx, scene, NULL, &sh->scene);
+        sh->scene_of = sh->scene ? scene : NULL;
         sh->uploads += sh->scene != NULL;
     }
     *out = sh->scene;
+    if (!e && ctx->scene->proxy_of)
+        e = view_of(ctx, sh, out);
     return e;
 }
 

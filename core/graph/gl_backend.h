@@ -54,11 +54,14 @@ double ssg_gl_timer_end(void);
  * uploaded yet. ctx->gl_shared (node.h) points at it while a node runs. */
 struct ssg_gl_scene;
 struct ssg_scene;
+enum { SSG_GL_VIEWS = 4 /* proxy levels kept on GL at once: a run uses one or two */ };
 struct ssg_gl_shared {
     struct ssg_gl_scene *scene;       /* the scene on GL; NULL until a node asks */
     const struct ssg_scene *scene_of; /* the scene it was uploaded from (another one asked
                                          for replaces it) */
     int uploads;                      /* scenes uploaded into it so far (tests) */
+    struct ssg_gl_scene *view[SSG_GL_VIEWS]; /* the scene's proxy views the map nodes drew
+                                         (scene/proxy.h), newest first; NULL = free */
 };
 /* Deletes what the run's nodes shared and zeroes it but for the count: at the end of the
  * run, or when its scene changes. With GL open (ssg_gl_open) where anything was uploaded;

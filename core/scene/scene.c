@@ -16,6 +16,7 @@
 
 #include "scene/distance.h"
 #include "scene/env.h"
+#include "scene/proxy.h"
 #include "scene/rt.h"
 #include "scene/scene_build.h"
 #include "scene/scene_shapes.h"
@@ -455,8 +456,12 @@ enum ssg_err ssg_scene_load_lit(const char *path, const char *lights, int load_a
     *out = NULL;
     struct scene_loader l = {.diags = diags, .default_material = -1};
     struct ssg_scene *s = calloc(1, sizeof *s);
-    if (!s)
+    if (s)
+        s->proxies = ssg_scene_proxies_new();
+    if (!s || !s->proxies) {
+        free(s);
         return SSG_E_NOMEM;
+    }
     snprintf(s->path, sizeof s->path, "%s", path);
     snprintf(s->lights_path, sizeof s->lights_path, "%s", lights ? lights : "");
     l.scene = s;
@@ -521,6 +526,7 @@ void ssg_scene_destroy(struct ssg_scene **scene)
     if (!scene || !*scene)
         return;
     struct ssg_scene *s = *scene;
+    ssg_scene_proxies_release(s);
     ssg_rt_destroy(&s->rt);
     ssg_distance_destroy(&s->distance);
     ssg_env_destroy(&s->env);

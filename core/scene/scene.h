@@ -160,6 +160,7 @@ struct ssg_scene_model {
 };
 
 struct ssg_rt;  /* Embree device + scene, see rt.h */
+struct ssg_scene_proxies; /* proxy.h */
 struct ssg_env; /* the environment's lookup and sampling tables, see env.h */
 
 struct ssg_scene {
@@ -184,6 +185,10 @@ struct ssg_scene {
                             then: a scene without environment gets a black one) */
     struct ssg_distance *distance; /* the triangles' coarse distance field (distance.h),
                                       built with rt; NULL without triangles */
+    struct ssg_scene_proxies *proxies; /* simplified meshes for the map rasterisers
+                                          (proxy.h), made on demand; NULL in a view */
+    const struct ssg_scene *proxy_of;  /* a view's scene (proxy.h); NULL in a scene */
+    float proxy_error;                 /* a view's distance bound from proxy_of's meshes */
 };
 
 /* Loads a scene file. With load_assets = 0 it only parses and validates the file (used by

@@ -1,5 +1,24 @@
-/* raster.c - coverage of snapped triangles (raster.h). */
+/* raster.c - coverage of snapped triangles, and the scene a map draws (raster.h). */
 #include "raster.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "graph/node.h"
+#include "scene/proxy.h"
+
+const struct ssg_scene *ssg_raster_scene(const struct ssg_node_ctx *ctx, float texel,
+                                         struct ssg_scene *view)
+{
+    if (!(texel < INFINITY))
+        return ctx->scene; /* no face drawn, or proxies off */
+    enum ssg_err e = ssg_scene_proxy(ctx->scene, 0.5f * texel, ssg_parallel_rows, view);
+    if (e) {
+        ssg_node_fail(ctx, e, "out of memory for the simplified meshes");
+        return NULL;
+    }
+    return view->proxy_of ? view : ctx->scene; /* the scene's own address: GL keeps it */
+}
 
 enum { SUB = SSG_RASTER_SUB };
 
@@ -54,9 +73,32 @@ int ssg_raster_setup(const int64_t x[3], const int64_t y[3], int res, int y0, in
     return 1;
 }
 
+/* ssg_raster_span for a box at most NARROW centres wide: the edge functions at each
+   centre instead of three divisions a row (most of a map's triangles are a few texels
+   wide and many rows tall: a column's flutes, a leaf card on edge). The same inclusive
+   test at the same centres, so the same span; a triangle's centres in a row are
+   contiguous (it is convex). */
+enum { NARROW = 8 };
+static int narrow_span(const struct ssg_raster_tri *t, int64_t py, int64_t *x0, int64_t *x1)
+{
+    int64_t first = t->x1 + 1, last = t->x0 - 1;
+    for (int64_t X = t->x0; X <= t->x1; X++) {
+        int64_t px = X * SUB + SUB / 2;
+        int in = 1;
+        for (int k = 0; k < 3; k++)
+            in &= t->A[k] * px + t->B[k] * py + t->C[k] >= 0;
+        first = in && X < first ? X : first;
+        last = in ? X : last;
+    }
+    *x0 = first, *x1 = last;
+    return first <= last;
+}
+
 int ssg_raster_span(const struct ssg_raster_tri *t, int64_t Y, int64_t *x0, int64_t *x1)
 {
     int64_t py = Y * SUB + SUB / 2;
+    if (t->x1 - t->x0 < NARROW)
+        return narrow_span(t, py, x0, x1);
     int inside = 1;
     *x0 = t->x0, *x1 = t->x1;
     for (int k = 0; k < 3 && inside; k++)

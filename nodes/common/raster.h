@@ -13,7 +13,21 @@
 
 #include <stdint.h>
 
+#include "ssgraph.h"
+
+struct ssg_node_ctx;
+struct ssg_scene;
+
 enum { SSG_RASTER_SUB = 256 /* fixed-point steps a texel */ };
+
+/* The scene a map whose finest texels are `texel` scene units wide draws: ctx->scene with
+   its dense meshes simplified to the proxy level whose bound is at most half such a texel
+   (scene/proxy.h; its surfaces lie within about a quarter texel of the originals), filled
+   into *view, or ctx->scene itself where nothing simplifies that far (texel INFINITY:
+   never). Both backends of a map node draw it, so they draw the same triangles. NULL with
+   the node's SSG_E_NOMEM reported. */
+const struct ssg_scene *ssg_raster_scene(const struct ssg_node_ctx *ctx, float texel,
+                                         struct ssg_scene *view);
 
 /* A snapped triangle set up for drawing into rows [y0, y1) of a map res texels wide. */
 struct ssg_raster_tri {

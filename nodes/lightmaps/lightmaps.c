@@ -1,9 +1,11 @@
 /* lightmaps.c - the `lightmaps` node's descriptor, checks and prepare: shadow and reflective
  * shadow maps of the scene's own lights. Method and conventions: README.md. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "graph/image.h"
+#include "scene/proxy.h"
 #include "scene/scene.h"
 #include "lightmaps.h"
 #include "common/env_lights.h"
@@ -131,6 +133,57 @@ static void pack_faces(const struct ssg_scene *s, struct ssg_lightmaps_consts *c
     }
 }
 
+/* The box around mesh m's vertices. */
+static void mesh_box(const struct ssg_mesh *m, float lo[3], float hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (int v = 0; v < m->vertex_count; v++)
+        for (int k = 0; k < 3; k++) {
+            float x = m->positions[3 * v + k];
+            lo[k] = fminf(lo[k], x), hi[k] = fmaxf(hi[k], x);
+        }
+}
+
+static float box_distance(const float lo[3], const float hi[3], const float o[3])
+{
+    float d2 = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        float out = fmaxf(fmaxf(lo[k] - o[k], o[k] - hi[k]), 0.0f);
+        d2 += out * out;
+    }
+    return sqrtf(d2);
+}
+
+static int face_drawn(const struct ssg_lightmaps_consts *c, int f)
+{
+    return c->face_floats[(size_t)f * SSG_LIGHTMAPS_FACE_FLOATS + 17] != 0.0f;
+}
+
+/* The finest texel of the drawn faces where they meet a dense mesh (one a proxy may
+   simplify, scene/proxy.h): an orthographic face's texels are 2 half / R wide everywhere,
+   a perspective face's 2 half d / R at distance d from its light, d from the nearest dense
+   mesh's box (0 for a light inside one: the scene is then drawn as it is). */
+static float finest_texel(const struct ssg_scene *s, const struct ssg_lightmaps_consts *c)
+{
+    float nearest = INFINITY, texel = INFINITY, lo[3], hi[3];
+    for (int i = 0; i < s->mesh_count; i++) {
+        if (!ssg_proxy_mesh_dense(s, i))
+            continue;
+        mesh_box(&s->meshes[i], lo, hi);
+        for (int f = 0; f < c->count; f++)
+            if (!c->faces[f].ortho && face_drawn(c, f))
+                nearest = fminf(nearest, box_distance(lo, hi, c->faces[f].origin));
+    }
+    for (int f = 0; f < c->count; f++) {
+        const struct ssg_lightmap_face *face = &c->faces[f];
+        float width = 2.0f * face->half / (float)c->res;
+        if (face_drawn(c, f))
+            texel = fminf(texel, face->ortho ? width : width * nearest);
+    }
+    return texel;
+}
+
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     const struct ssg_lightmaps_params *p = params;
@@ -161,6 +214,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     }
     free(env_e);
     pack_faces(ctx->scene, c, sphere.radius);
+    c->texel = p->proxy ? finest_texel(ctx->scene, c) : INFINITY;
     return SSG_OK;
 }
 

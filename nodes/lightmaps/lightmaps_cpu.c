@@ -20,7 +20,8 @@
  * in face space against those planes first (the rare slow path), so the fixed-point
  * coordinates stay within a few map widths. An alpha-masked mesh's texels ask its mask
  * (scene/coverage.h) where their ray meets the triangle before they keep it: a leaf is a
- * leaf to a light as it is to the camera. */
+ * leaf to a light as it is to the camera. Dense meshes are drawn as their proxies, within about
+ * a quarter of the finest texel that meets them (common/raster.h, scene/proxy.h). */
 #include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
@@ -457,10 +458,13 @@ enum ssg_err ssg_lightmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *c
                                    const struct ssg_io *io)
 {
     const struct ssg_lightmaps_consts *c = consts;
-    struct job j = {.c = c, .scene = ctx->scene, .io = io};
+    struct ssg_scene view; /* dense meshes as proxies (common/raster.h) */
+    struct job j = {.c = c, .scene = ssg_raster_scene(ctx, c->texel, &view), .io = io};
+    if (!j.scene)
+        return SSG_E_NOMEM;
     const int res = c->res, faces = c->count;
     int64_t tris = 0;
-    size_t meshes = (size_t)ctx->scene->mesh_count + 1;
+    size_t meshes = (size_t)j.scene->mesh_count + 1;
     j.first_tri = malloc(2 * meshes * sizeof(int64_t));
     if (!j.first_tri)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");

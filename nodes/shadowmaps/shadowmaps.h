@@ -21,7 +21,12 @@ SSG_PORT_ENUM(ssg_shadowmaps_output, SSG_SHADOWMAPS_OUT, SSG_SHADOWMAPS_OUTPUTS)
     P(INT, resolution,                                                                     \
       "side of every map (the paper's second knob: fewer texels, more bleeding)",          \
       .def = 256, .min = SSG_SHADOW_RES_MIN, .max = SSG_SHADOW_RES_MAX, .unit = "texels",  \
-      .host_only = 1)
+      .host_only = 1)                                                                      \
+    P(BOOL, proxy,                                                                         \
+      "draw each dense mesh (4096 triangles or more, not alpha-masked) as its simplified "  \
+      "proxy, within about a quarter texel of it (core/scene/proxy.h): the maps then cost " \
+      "what a texel can show, not the triangle count; false draws every triangle",        \
+      .def = 1, .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_shadowmaps_params, SSG_SHADOWMAPS_PARAMS);
 
 enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
