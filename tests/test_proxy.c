@@ -10,8 +10,9 @@
  *   (the map plane's height above the centre) - sqrt(r^2 - rho^2), its error times the
  *   cosine (the surface's distance) within a quarter texel over the cap (rho < 0.8 r), on
  *   the CPU and on GL, and the two maps agree;
- * - the sun's light map (an orthographic face) puts each texel of the sphere's lit cap on
- *   the sphere within a quarter texel along its ray, on both backends;
+ * - the sun's light map (an orthographic face) of a 65 k-triangle sphere puts each texel
+ *   of its lit cap on the sphere within an eighth of a texel along its ray, on both
+ *   backends; in both map nodes the proxy is drawn (depths differ from proxy=false's);
  * - the courtyard's bunny in 32 environment lights' maps: the CPU's and GL's depths,
  *   normals and fluxes agree but at silhouette ties (both draw the same proxy). */
 #include <math.h>
@@ -117,15 +118,15 @@ static void test_levels(void)
     ssg_scene_destroy(&m);
 }
 
-static struct ssg_image *straight_down_map(const struct ssg_scene *s, int res,
+static struct ssg_image *straight_down_map(const struct ssg_scene *s, int res, int proxy,
                                            enum ssg_backend backend)
 {
     const float down[1][3] = {{0, 1, 0}};
     struct ssg_image *l = light_list(down, 1);
     char set[32];
     snprintf(set, sizeof set, "resolution=%d", res);
-    const char *sets[] = {set};
-    void *params = node_params(&ssg_node_shadowmaps, sets, 1);
+    const char *sets[] = {set, proxy ? "proxy=true" : "proxy=false"};
+    void *params = node_params(&ssg_node_shadowmaps, sets, 2);
     struct ssg_image *out[1] = {ssg_image_create(res, res, 1)};
     const struct ssg_image *in[1] = {l};
     CHECK_EQ(node_run_scene(&ssg_node_shadowmaps, s, &FRAME, params, in, out, backend), SSG_OK);
@@ -169,58 +170,89 @@ static void test_shadow_map(void)
     if (!s)
         return;
     const int res = 256;
-    struct ssg_image *cpu = straight_down_map(s, res, SSG_BACKEND_CPU);
-    struct ssg_image *gl = straight_down_map(s, res, SSG_BACKEND_GL);
+    struct ssg_image *cpu = straight_down_map(s, res, 1, SSG_BACKEND_CPU);
+    struct ssg_image *gl = straight_down_map(s, res, 1, SSG_BACKEND_GL);
+    struct ssg_image *full = straight_down_map(s, res, 0, SSG_BACKEND_CPU);
     check_cap(s, cpu, res, "shadow map, cpu");
     check_cap(s, gl, res, "shadow map, gl");
-    size_t differ = 0;
-    for (size_t i = 0; i < (size_t)res * res; i++)
+    size_t differ = 0, moved = 0;
+    for (size_t i = 0; i < (size_t)res * res; i++) {
         differ += fabsf(cpu->data[i] - gl->data[i]) > 1e-4f;
-    fprintf(stderr, "shadow map: %zu texels differ between cpu and gl\n", differ);
+        moved += fabsf(cpu->data[i] - full->data[i]) > 1e-4f;
+    }
+    fprintf(stderr, "shadow map: %zu texels differ between cpu and gl, %zu from proxy=false's "
+            "(the proxy is drawn)\n", differ, moved);
     CHECK(differ <= (size_t)res * res / 1000);
+    CHECK(moved > 100);
     ssg_image_destroy(&cpu);
     ssg_image_destroy(&gl);
+    ssg_image_destroy(&full);
     ssg_scene_destroy(&s);
 }
 
-/* The sun's light map straight down: each texel's depth puts its point on the sphere
-   within a quarter texel (along the ray: the surface's distance / cos), where the sphere
-   faces the light (cos > 0.6), on both backends. */
+/* The sun's light map (own light, fitted to the scene) with or without proxies. */
+static void sun_maps(const struct ssg_scene *s, int res, int proxy, enum ssg_backend backend,
+                     struct ssg_image *out[3])
+{
+    char set[32];
+    snprintf(set, sizeof set, "resolution=%d", res);
+    const char *sets[] = {set, proxy ? "proxy=true" : "proxy=false"};
+    void *params = node_params(&ssg_node_lightmaps, sets, 2);
+    out[0] = ssg_image_create(res, res, 1);
+    out[1] = ssg_image_create(res, res, 3);
+    out[2] = ssg_image_create(res, res, 3);
+    CHECK_EQ(node_run_scene(&ssg_node_lightmaps, s, &FRAME, params, NULL, out, backend),
+             SSG_OK);
+    free(params);
+}
+
+/* A denser sphere (65,024 triangles) in the sun's 128^2 light map straight down: each
+   texel's depth puts its point on the sphere within an eighth of a texel (the bound of a
+   light map's proxy, along the ray: the surface's distance / cos) where the sphere faces
+   the light (cos > 0.6), on both backends, and the proxy is drawn (depths differ from
+   proxy=false's). */
 static void test_light_map(enum ssg_backend backend)
 {
-    static const char *const SUN = SPHERE_SCENE(
-        "directional_light(direction=[0, -1, 0], color=[1, 1, 1], intensity=1)\n", "");
+    static const char *const SUN =
+        "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+        "directional_light(direction=[0, -1, 0], color=[1, 1, 1], intensity=1)\n"
+        "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[4, 0, 4])\n"
+        "sphere(center=[0, 0.5, 0], radius=0.5, subdivisions=128)\n";
     struct ssg_scene *s = scene_from_text("proxy_sun", SUN);
     if (!s)
         return;
-    const int res = 256;
-    struct ssg_image *maps[3] = {NULL, NULL, NULL};
-    CHECK_EQ(maps_of(s, &FRAME, res, backend, maps), SSG_OK);
+    const int res = 128;
+    struct ssg_image *maps[3] = {NULL, NULL, NULL}, *full[3] = {NULL, NULL, NULL};
+    sun_maps(s, res, 1, backend, maps);
+    sun_maps(s, res, 0, backend, full);
     struct ssg_lightmap_face face;
     struct ssg_lightmap_view view = {&FRAME, &s->camera, res};
     CHECK_EQ(ssg_lightmap_faces_fit(s, SSG_LIGHTMAP_OWN_ONLY, SSG_LIGHTMAP_FIT_SCENE, &view,
                                     &face, 1), 1);
     const double texel = 2.0 * face.half / res;
-    int cap = 0, bad = 0;
+    int cap = 0, bad = 0, moved = 0;
     double worst = 0;
-    for (int y = 0; maps[0] && y < res; y++)
+    for (int y = 0; maps[0] && full[0] && y < res; y++)
         for (int x = 0; x < res; x++) {
             float p[3];
             ssg_lightmap_texel_point(&face, res, x, y, px_at(maps[0], 0, x, y), p);
             double d[3] = {p[0] - CENTRE[0], p[1] - CENTRE[1], p[2] - CENTRE[2]};
             double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             if (d[1] < 0.6 * RADIUS || fabs(r - RADIUS) > 0.2 * RADIUS)
-                continue; /* not the sphere's lit cap (the floor, the box) */
+                continue; /* not the sphere's lit cap (the floor) */
             double e = fabs(r - RADIUS) / (d[1] / r);
             worst = e > worst ? e : worst;
-            cap++, bad += e > 0.25 * texel;
+            cap++, bad += e > 0.125 * texel;
+            moved += fabsf(px_at(maps[0], 0, x, y) - px_at(full[0], 0, x, y)) > 1e-5f;
         }
-    fprintf(stderr, "light map (%s): %d cap texels, worst depth error %.3g (a quarter texel: "
-            "%.3g), %d over\n", backend == SSG_BACKEND_GL ? "gl" : "cpu", cap, worst,
-            0.25 * texel, bad);
-    CHECK(cap > 500);
+    fprintf(stderr, "light map (%s): %d cap texels, worst distance from the sphere %.3g (an "
+            "eighth of a texel: %.3g), %d over; %d moved from proxy=false's\n",
+            backend == SSG_BACKEND_GL ? "gl" : "cpu", cap, worst, 0.125 * texel, bad, moved);
+    CHECK(cap > 200);
     CHECK_EQ(bad, 0);
+    CHECK(moved > 20);
     images_free(maps, 3);
+    images_free(full, 3);
     ssg_scene_destroy(&s);
 }
 

@@ -86,6 +86,40 @@ static float *gather(const float *src, int floats, const unsigned *remap, int ve
     return out;
 }
 
+/* The proxy's own vertex normals: the area-weighted normals of its triangles at each
+   vertex, turned to the side of the vertex's original normal. A proxy's triangle spans
+   what many did (a column's flutes), and the original normals at its corners then point
+   along its surface, not off it: a light map would send the far bounce's light sideways. A
+   vertex whose triangles cancel keeps its original normal. */
+static void proxy_normals(struct ssg_mesh *m)
+{
+    size_t n = 3 * (size_t)m->vertex_count;
+    double *sum = calloc(n ? n : 1, sizeof *sum);
+    if (!sum)
+        return; /* the original normals, a little less apt */
+    for (int t = 0; t < m->triangle_count; t++) {
+        const uint32_t *tri = &m->indices[3 * (size_t)t];
+        const float *a = &m->positions[3 * tri[0]], *b = &m->positions[3 * tri[1]];
+        const float *c = &m->positions[3 * tri[2]];
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double f[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++)
+                sum[3 * tri[k] + j] += f[j];
+    }
+    for (size_t v = 0; v < n; v += 3) {
+        double len = sqrt(sum[v] * sum[v] + sum[v + 1] * sum[v + 1] + sum[v + 2] * sum[v + 2]);
+        float *o = &m->normals[v];
+        double side = sum[v] * o[0] + sum[v + 1] * o[1] + sum[v + 2] * o[2];
+        if (len > 0.0)
+            for (int j = 0; j < 3; j++)
+                o[j] = (float)((side < 0.0 ? -sum[v + j] : sum[v + j]) / len);
+    }
+    free(sum);
+}
+
 /* The mesh of src's vertices that the `count` indices use, renumbered in first-use order. */
 static enum ssg_err compact(const struct ssg_mesh *src, const uint32_t *indices, size_t count,
                             struct ssg_mesh *out)
@@ -111,6 +145,8 @@ static enum ssg_err compact(const struct ssg_mesh *src, const uint32_t *indices,
     free(remap);
     if (failed)
         ssg_mesh_free(out);
+    else if (out->normals)
+        proxy_normals(out);
     return failed ? SSG_E_NOMEM : SSG_OK;
 }
 

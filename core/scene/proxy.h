@@ -27,9 +27,11 @@
  * triangle: the first step from a million triangles is most of the cost (0.5 s on 2
  * threads), and a finer one saved less than it cost.
  *
- * A proxy keeps the original's vertices it uses (positions, normals, uvs, tangents,
- * colours, renumbered in first-use order) and its material, so every function that reads
- * a struct ssg_mesh or a scene reads a proxy alike; its triangle numbers are its own.
+ * A proxy keeps the original's vertices it uses (positions, uvs, tangents, colours,
+ * renumbered in first-use order) and its material, so every function that reads a struct
+ * ssg_mesh or a scene reads a proxy alike; its triangle numbers are its own. Its vertex
+ * normals are its own (area-weighted over its triangles, on the original's side): the
+ * original normals at a coarse triangle's corners can point along it, not off it.
  *
  * Thread safety: ssg_scene_proxy may be called from any thread (a lock guards the cache);
  * the views it fills are read-only and stay valid until the scene is destroyed. */

@@ -288,8 +288,9 @@ static const struct {
     {"camera", "the default scene's first perspective camera", "not read", "the scene's "
      "camera when it has no camera line", "test_gltf"},
     {"dense meshes", "a mesh of 4096 triangles or more, not alpha-masked, is drawn into the "
-     "shadow and light maps as its meshoptimizer proxy, within about a quarter texel "
-     "(core/scene/proxy.h; the nodes' proxy=false draws every triangle)", "the same",
+     "shadow and light maps as its meshoptimizer proxy, within about a quarter of a shadow "
+     "map's texel and a sixteenth of a light map's (core/scene/proxy.h; the nodes' "
+     "proxy=false draws every triangle)", "the same",
      "shadowmaps and lightmaps (CPU, GL); every other path reads every triangle",
      "test_proxy"},
 };

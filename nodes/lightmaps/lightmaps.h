@@ -46,7 +46,7 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1) \
     P(BOOL, proxy,                                                                         \
       "draw each dense mesh (4096 triangles or more, not alpha-masked) as its simplified "  \
-      "proxy, within about a quarter of the finest texel that meets it (core/scene/"       \
+      "proxy, within about a sixteenth of the finest texel that meets it (core/scene/"     \
       "proxy.h): the maps then cost what a texel can show, not the triangle count; false " \
       "draws every triangle",                                                              \
       .def = 1, .host_only = 1)
@@ -73,8 +73,9 @@ struct ssg_lightmaps_consts {
                                               (perspective, times the texel's solid angle
                                               and the spot's falloff) */
     struct ssg_lightmap_face faces[SSG_LIGHTMAP_FACES_MAX];
-    float texel; /* the finest texel of a drawn face at the scene's dense meshes: both
-                    backends draw ssg_raster_scene's view for it (common/raster.h) */
+    float texel; /* a quarter of the finest texel of a drawn face at the scene's dense
+                    meshes: both backends draw ssg_raster_scene's view for it
+                    (common/raster.h); INFINITY with proxy=false */
     /* the same faces as lightmaps.glsl reads them, SSG_LIGHTMAPS_FACE_FLOATS each: origin,
        u, v, axis, half, ortho, flux rgb, has a light (1 or 0), the depth range's half
        (the scene's radius: an orthographic face spans depths 0 .. 2 radius, also when
