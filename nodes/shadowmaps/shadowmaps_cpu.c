@@ -258,9 +258,14 @@ enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *
         return e;
     const struct ssg_image *lights = io->in[0];
     struct ssg_bounding_sphere sphere = ssg_scene_bounding_sphere(ctx->scene);
+    int carries = 0; /* a list of dark lights (a scene without environment) draws nothing:
+                        no proxy is worth making for it */
+    for (int i = 0; i < lights->width && !carries; i++)
+        carries = light_carries(lights, i);
     struct ssg_scene view;
     const struct ssg_scene *drawn = ssg_raster_scene(
-        ctx, p->proxy ? 2.0f * sphere.radius / (float)p->resolution : INFINITY, &view);
+        ctx, p->proxy && carries ? 2.0f * sphere.radius / (float)p->resolution : INFINITY,
+        &view);
     if (!drawn)
         return SSG_E_NOMEM;
     int n = lights->width, most = 0;
