@@ -345,9 +345,10 @@ static float texel_weight(const struct job *j, int fi, int x, int y)
     return omega * ssg_light_cone(light, w);
 }
 
-/* The normal and flux of texel (x, y) of face fi, whose nearest triangle is id. */
-static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id, float n[3],
-                          float flux[3])
+/* The normal and flux of texel (x, y) of face fi, whose nearest triangle is id and whose
+   weight is omega (texel_weight). */
+static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id, float omega,
+                          float n[3], float flux[3])
 {
     const struct ssg_lightmap_face *f = &j->c->faces[fi];
     double o[3], d[3];
@@ -364,7 +365,7 @@ static void resolve_texel(const struct job *j, int fi, int x, int y, int32_t id,
     }
     float towards = n[0] * (float)d[0] + n[1] * (float)d[1] + n[2] * (float)d[2];
     float s = (towards > 0.0f ? -1.0f : 1.0f) / (len > 0.0f ? len : 1.0f);
-    float albedo[3], omega = texel_weight(j, fi, x, y);
+    float albedo[3];
     ssg_hit_albedo(j->scene, &h, albedo);
     for (int k = 0; k < 3; k++) {
         n[k] *= s;
@@ -406,12 +407,12 @@ static void resolve_strip(const struct job *j, int fi, const struct strip *s)
             size_t at = (size_t)y * res + x;
             int32_t id = s->ids[(size_t)(y - s->y0) * res + x];
             float n[3] = {0, 0, 0}, flux[3] = {0, 0, 0};
-            float omega = texel_weight(j, fi, x, y);
+            float omega = id >= 0 ? texel_weight(j, fi, x, y) : 0.0f; /* once a texel */
             if (id >= 0 && id == last && reuse) {
                 for (int k = 0; k < 3; k++)
                     n[k] = n0[k], flux[k] = unit[k] * omega;
             } else if (id >= 0) {
-                resolve_texel(j, fi, x, y, id, n, flux);
+                resolve_texel(j, fi, x, y, id, omega, n, flux);
                 reuse = omega > 0.0f && uniform_triangle(j, id); /* 0 beyond a spot's cone */
                 for (int k = 0; k < 3; k++)
                     n0[k] = n[k], unit[k] = flux[k] / omega;
