@@ -52,37 +52,26 @@ static void level_free(struct level *lv, int mesh_count)
 /* Half the diagonal of the box around every vertex of the scene. */
 static float scene_radius(const struct ssg_scene *s)
 {
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < s->mesh_count; i++) {
-        const struct ssg_mesh *m = &s->meshes[i];
-        for (int v = 0; v < m->vertex_count; v++)
-            for (int c = 0; c < 3; c++) {
-                float x = m->positions[3 * v + c];
-                lo[c] = x < lo[c] ? x : lo[c], hi[c] = x > hi[c] ? x : hi[c];
-            }
-    }
+    float lo[3], hi[3];
+    ssg_scene_bounds(s, lo, hi);
     double d2 = 0.0;
     for (int c = 0; c < 3; c++)
         d2 += hi[c] > lo[c] ? (double)(hi[c] - lo[c]) * (hi[c] - lo[c]) : 0.0;
     return (float)(0.5 * sqrt(d2));
 }
 
-/* Gathers `floats` floats a vertex of src's kept vertices into a new array (NULL for
-   NULL): remap[v] is v's new number, ~0u where dropped. */
+/* src's kept vertices, `floats` floats each, into a new array (NULL for NULL): remap[v] is
+   v's new number, ~0u where dropped (meshoptimizer's remap). */
 static float *gather(const float *src, int floats, const unsigned *remap, int vertices,
                      int kept, int *failed)
 {
     if (!src)
         return NULL;
     float *out = malloc(sizeof(float) * (size_t)floats * (size_t)(kept ? kept : 1));
-    if (!out) {
-        *failed = 1;
-        return NULL;
-    }
-    for (int v = 0; v < vertices; v++)
-        if (remap[v] != ~0u)
-            memcpy(out + (size_t)floats * remap[v], src + (size_t)floats * v,
-                   sizeof(float) * (size_t)floats);
+    if (out)
+        meshopt_remapVertexBuffer(out, src, (size_t)vertices, sizeof(float) * (size_t)floats,
+                                  remap);
+    *failed |= !out;
     return out;
 }
 
@@ -167,15 +156,15 @@ static size_t simplify_piece(const struct ssg_mesh *m, size_t t0, size_t count, 
     unsigned *remap = malloc(sizeof(unsigned) * (vertices ? vertices : 1));
     unsigned *local = malloc(sizeof(unsigned) * 2 * (n ? n : 1));
     size_t kept = remap && local ? meshopt_optimizeVertexFetchRemap(remap, src, n, vertices) : 0;
-    float *pos = malloc(sizeof(float) * 3 * (kept ? kept : 1));
+    int failed = !remap || !local;
+    float *pos = failed ? NULL : gather(m->positions, 3, remap, m->vertex_count, (int)kept,
+                                        &failed);
     unsigned *back = malloc(sizeof(unsigned) * (kept ? kept : 1));
-    if (remap && local && pos && back) {
+    if (!failed && back) {
         meshopt_remapIndexBuffer(local, src, n, remap);
-        for (size_t v = 0; v < vertices; v++)
-            if (remap[v] != ~0u) {
-                memcpy(pos + 3 * remap[v], m->positions + 3 * v, 3 * sizeof(float));
+        for (size_t v = 0; v < vertices; v++) /* a piece's vertex back to the mesh's */
+            if (remap[v] != ~0u)
                 back[remap[v]] = (unsigned)v;
-            }
         float scale = meshopt_simplifyScale(pos, kept, 3 * sizeof(float));
         unsigned *out = local + n;
         got = scale > 0.0f ? meshopt_simplify(out, local, n, pos, kept, 3 * sizeof(float), 0,

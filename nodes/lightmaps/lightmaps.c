@@ -7,6 +7,7 @@
 #include "graph/image.h"
 #include "scene/proxy.h"
 #include "scene/scene.h"
+#include "scene/scene_shapes.h"
 #include "lightmaps.h"
 #include "common/env_lights.h"
 
@@ -133,18 +134,6 @@ static void pack_faces(const struct ssg_scene *s, struct ssg_lightmaps_consts *c
     }
 }
 
-/* The box around mesh m's vertices. */
-static void mesh_box(const struct ssg_mesh *m, float lo[3], float hi[3])
-{
-    for (int k = 0; k < 3; k++)
-        lo[k] = INFINITY, hi[k] = -INFINITY;
-    for (int v = 0; v < m->vertex_count; v++)
-        for (int k = 0; k < 3; k++) {
-            float x = m->positions[3 * v + k];
-            lo[k] = fminf(lo[k], x), hi[k] = fmaxf(hi[k], x);
-        }
-}
-
 static float box_distance(const float lo[3], const float hi[3], const float o[3])
 {
     float d2 = 0.0f;
@@ -166,11 +155,15 @@ static int face_drawn(const struct ssg_lightmaps_consts *c, int f)
    mesh's box (0 for a light inside one: the scene is then drawn as it is). */
 static float finest_texel(const struct ssg_scene *s, const struct ssg_lightmaps_consts *c)
 {
-    float nearest = INFINITY, texel = INFINITY, lo[3], hi[3];
-    for (int i = 0; i < s->mesh_count; i++) {
+    float nearest = INFINITY, texel = INFINITY;
+    int perspective = 0; /* only a drawn perspective face needs the meshes' boxes */
+    for (int f = 0; f < c->count; f++)
+        perspective |= !c->faces[f].ortho && face_drawn(c, f);
+    for (int i = 0; perspective && i < s->mesh_count; i++) {
         if (!ssg_proxy_mesh_dense(s, i))
             continue;
-        mesh_box(&s->meshes[i], lo, hi);
+        float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        ssg_mesh_bounds(&s->meshes[i], lo, hi);
         for (int f = 0; f < c->count; f++)
             if (!c->faces[f].ortho && face_drawn(c, f))
                 nearest = fminf(nearest, box_distance(lo, hi, c->faces[f].origin));
