@@ -9,15 +9,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "check.h"
 #include "scene_node.h"
+#include "scratch.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
 enum { W = 64, H = 48 };
-static char tmp[512];
 
 struct frame {
     struct ssg_image *out, *bounce, *direct, *position, *emission, *combined;
@@ -27,7 +26,7 @@ struct frame {
 static int run(const char *backend, struct frame *f)
 {
     char dir[600];
-    snprintf(dir, sizeof dir, "%s/%s", tmp, backend);
+    snprintf(dir, sizeof dir, "%s", tmp_path(backend));
     CHECK_EQ(graph_run_on("tests/fixtures/emitter.graph", NULL, backend, dir), SSG_OK);
     f->out = exr_layer(dir, "emitter.exr", NULL);
     f->bounce = exr_layer(dir, "emitter.exr", "bounce");
@@ -123,9 +122,7 @@ static void check_gbuffer(const char *backend, const struct frame *f)
 
 int main(void)
 {
-    const char *dir = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_emission");
-    mkdir(tmp, 0755);
+    setup_tmp("emission");
     struct frame cpu = {0}, gl = {0};
     if (run("cpu", &cpu)) {
         check_truth(&cpu);

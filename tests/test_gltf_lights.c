@@ -10,19 +10,18 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "check.h"
 #include "scene_node.h"
+#include "scratch.h"
 #include "scene/scene.h"
 #include "ssgraph.h"
 
-static char tmp[512];
 
 static struct ssg_image *render(const char *scene, const char *label, const char *layer)
 {
     char dir[600], path[700];
-    snprintf(dir, sizeof dir, "%s/%s", tmp, label);
+    snprintf(dir, sizeof dir, "%s", tmp_path(label));
     struct ssg_diags d = {0};
     CHECK_EQ(graph_run_on("tests/fixtures/gltf_lights.graph", scene, "cpu", dir), SSG_OK);
     snprintf(path, sizeof path, "%s/lights.exr", dir);
@@ -85,9 +84,7 @@ static void check_lights_read(void)
 
 int main(void)
 {
-    const char *dir = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_gltf_lights");
-    mkdir(tmp, 0755);
+    setup_tmp("gltf_lights");
     check_lights_read();
     check_same_image(NULL);
     check_same_image("gbuffer_direct");

@@ -16,11 +16,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "check.h"
 #include "light_maps.h"
 #include "scene_node.h"
+#include "scratch.h"
 #include "common/lightmap.h"
 #include "scene/gltf.h"
 #include "scene/scene.h"
@@ -28,7 +28,6 @@
 
 enum { W = 64, H = 48, MAP = 256 };
 static const double PI = 3.14159265358979323846;
-static char tmp[512];
 
 struct frame {
     struct ssg_image *shadowed, *direct, *reference, *position;
@@ -38,7 +37,7 @@ struct frame {
 static int run(const char *backend, struct frame *f)
 {
     char dir[600];
-    snprintf(dir, sizeof dir, "%s/%s", tmp, backend);
+    snprintf(dir, sizeof dir, "%s", tmp_path(backend));
     CHECK_EQ(graph_run_on("tests/fixtures/spot.graph", NULL, backend, dir), SSG_OK);
     f->shadowed = exr_layer(dir, "spot.exr", NULL);
     f->direct = exr_layer(dir, "spot.exr", "gbuffer_direct");
@@ -209,9 +208,7 @@ static void check_bad_cones(void)
 
 int main(void)
 {
-    const char *dir = getenv("SSG_TMP");
-    snprintf(tmp, sizeof tmp, "%s", dir && dir[0] ? dir : CHECK_TMP_ROOT "/test_spot_light");
-    mkdir(tmp, 0755);
+    setup_tmp("spot_light");
     check_faces();
     check_bad_cones();
     struct frame cpu = {0}, gl = {0};
