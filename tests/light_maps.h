@@ -34,18 +34,20 @@ static inline void gbuffer_of(const struct ssg_scene *s, const struct ssg_frame 
 }
 
 /* The lightmaps node's depth, normal and flux of scene s at resolution res, for the lights
-   src names, a directional light's map fitted by `fit` ("scene" or "view"). */
+   src names (a directional light's map in src.tiles tiles a side), a directional light's
+   map fitted by `fit` ("scene" or "view"). */
 static inline enum ssg_err maps_fit(const struct ssg_scene *s, const struct ssg_frame *frame,
                                     int res, struct ssg_lightmap_sources src, const char *fit,
                                     enum ssg_backend backend, struct ssg_image *out[3])
 {
-    char set[4][40];
+    char set[5][40];
     snprintf(set[0], sizeof set[0], "resolution=%d", res);
     snprintf(set[1], sizeof set[1], "own=%s", src.own ? "true" : "false");
     snprintf(set[2], sizeof set[2], "environment=%d", src.environment);
     snprintf(set[3], sizeof set[3], "fit=%s", fit);
-    const char *sets[] = {set[0], set[1], set[2], set[3]};
-    void *params = node_params(&ssg_node_lightmaps, sets, 4);
+    snprintf(set[4], sizeof set[4], "tiles=%d", src.tiles > 1 ? src.tiles : 1);
+    const char *sets[] = {set[0], set[1], set[2], set[3], set[4]};
+    void *params = node_params(&ssg_node_lightmaps, sets, 5);
     int f = ssg_lightmap_face_count(s, src);
     out[0] = ssg_image_create(res, res, f);
     out[1] = ssg_image_create(res, res, 3 * f);

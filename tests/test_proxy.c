@@ -266,7 +266,7 @@ static void test_parity(void)
     if (!s)
         return;
     struct ssg_image *cpu[3] = {NULL, NULL, NULL}, *gl[3] = {NULL, NULL, NULL};
-    const struct ssg_lightmap_sources env = {0, 32};
+    const struct ssg_lightmap_sources env = {0, 32, 1};
     CHECK_EQ(maps_with(s, &FRAME, 128, env, SSG_BACKEND_CPU, cpu), SSG_OK);
     CHECK_EQ(maps_with(s, &FRAME, 128, env, SSG_BACKEND_GL, gl), SSG_OK);
     for (int i = 0; i < 3 && cpu[i] && gl[i]; i++) {

@@ -159,9 +159,9 @@ static void check_faces(void)
     ssg_light_set_cone(&narrow, 10, 60);
     ssg_light_set_cone(&wide, 10, 61);
     ssg_light_set_cone(&point, 0, 0);
-    CHECK_EQ(ssg_lightmap_light_faces(&narrow), 1);
-    CHECK_EQ(ssg_lightmap_light_faces(&wide), 6);
-    CHECK_EQ(ssg_lightmap_light_faces(&point), 6);
+    CHECK_EQ(ssg_lightmap_light_faces(&narrow, 1), 1);
+    CHECK_EQ(ssg_lightmap_light_faces(&wide, 1), 6);
+    CHECK_EQ(ssg_lightmap_light_faces(&point, 1), 6);
     float w[3] = {0, 0, 1};
     CHECK_NEAR(ssg_light_cone(&point, w), 1, 0);
 }

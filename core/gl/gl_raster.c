@@ -141,10 +141,12 @@ static int attach_stacks(GLuint fbo, const struct ssg_gl_stack *stacks, int coun
     int n = 0;
     for (int k = 0; k < count; k++)
         for (int l = 0; l < stacks[k].layers && n < MAX_LAYERS; l++, n++) {
-            glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0 + (GLenum)n,
-                                           ssg_gl_texture_of(stacks[k].image), 0,
-                                           i * stacks[k].layers + l);
-            draw[n] = GL_COLOR_ATTACHMENT0 + (GLenum)n;
+            /* an unread on_demand output (NULL): its fragment outputs go nowhere */
+            draw[n] = stacks[k].image ? GL_COLOR_ATTACHMENT0 + (GLenum)n : GL_NONE;
+            if (stacks[k].image)
+                glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0 + (GLenum)n,
+                                               ssg_gl_texture_of(stacks[k].image), 0,
+                                               i * stacks[k].layers + l);
         }
     glNamedFramebufferDrawBuffers(fbo, n, draw);
     return n;
@@ -179,7 +181,8 @@ enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass,
                                       "stacked draw is incomplete");
         for (int k = 0, o = 0; k < count; k++)
             for (int l = 0; l < stacks[k].layers; l++, o++)
-                glClearNamedFramebufferfv(fbo, GL_COLOR, o, &stacks[k].clear);
+                if (stacks[k].image)
+                    glClearNamedFramebufferfv(fbo, GL_COLOR, o, &stacks[k].clear);
         glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
         if (layer_at >= 0)
             glProgramUniform1i(prog, layer_at, i);

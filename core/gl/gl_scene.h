@@ -131,7 +131,9 @@ struct ssg_gl_stack {
  * of each face): `draws` draws, draw i with `uniform int ssg_layer` = i writing layers
  * [i layers_k, (i + 1) layers_k) of stacks[k] to the fragment outputs in order (the first
  * stack's at location 0, ...), at most 8 outputs; every image has the first one's width
- * and height. Depth test LESS, no culling, as ssg_gl_scene_draw_layers. */
+ * and height. A stack whose image is NULL (an unread on_demand output; not the first)
+ * keeps its outputs' locations, which go nowhere. Depth test LESS, no culling, as
+ * ssg_gl_scene_draw_layers. */
 enum ssg_err ssg_gl_scene_draw_stacks(struct ssg_gl_pass *pass,
                                       const struct ssg_gl_stack *stacks, int count, int draws);
 

@@ -14,20 +14,26 @@ static const float CUBE[SSG_LIGHTMAP_CUBE_FACES][3][3] = {
     {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
 };
 
-int ssg_lightmap_light_faces(const struct ssg_light *light)
+static int tiles_of(int tiles)
 {
-    if (light->kind == SSG_LIGHT_DIRECTIONAL ||
-        (light->kind == SSG_LIGHT_SPOT && light->cos_outer >= SSG_LIGHTMAP_SPOT_FACE_COS))
+    return tiles > 1 ? tiles : 1;
+}
+
+int ssg_lightmap_light_faces(const struct ssg_light *light, int tiles)
+{
+    if (light->kind == SSG_LIGHT_DIRECTIONAL)
+        return tiles_of(tiles) * tiles_of(tiles);
+    if (light->kind == SSG_LIGHT_SPOT && light->cos_outer >= SSG_LIGHTMAP_SPOT_FACE_COS)
         return 1;
     return SSG_LIGHTMAP_CUBE_FACES;
 }
 
 /* Faces of the scene's own lights alone: at least 1. */
-static int own_face_count(const struct ssg_scene *scene)
+static int own_face_count(const struct ssg_scene *scene, int tiles)
 {
     int n = 0;
     for (int i = 0; scene && i < scene->light_count; i++)
-        n += ssg_lightmap_light_faces(&scene->lights[i]);
+        n += ssg_lightmap_light_faces(&scene->lights[i], tiles);
     return n > 0 ? n : 1;
 }
 
@@ -43,7 +49,7 @@ enum ssg_err ssg_lightmap_sources_check(struct ssg_lightmap_sources src, char *w
 
 int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_sources src)
 {
-    return (src.own ? own_face_count(scene) : 0) + src.environment;
+    return (src.own ? own_face_count(scene, src.tiles) : 0) + src.environment;
 }
 
 void ssg_lightmap_env_directions(int count, float *dirs)
@@ -114,7 +120,7 @@ static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sp
             directional_face(sphere, l, &faces[n++]);
             continue;
         }
-        if (ssg_lightmap_light_faces(light) == 1) {
+        if (ssg_lightmap_light_faces(light, 1) == 1) {
             faces[n] = (struct ssg_lightmap_face){.light = i};
             spot_face(light, &faces[n++]);
             continue;
@@ -127,15 +133,45 @@ static int own_faces(const struct ssg_scene *scene, const struct ssg_bounding_sp
     return n;
 }
 
-/* The own directional lights' faces (after own_faces) fitted to the view. */
+/* The own directional lights' faces (after own_faces) fitted to the view; their maps'
+   side is tiles x the resolution (the padding is in their texels). */
 static void fit_to_view(const struct ssg_scene *scene, const struct ssg_lightmap_view *view,
-                        struct ssg_lightmap_face *faces, int n)
+                        int tiles, struct ssg_lightmap_face *faces, int n)
 {
     float lo[3], hi[3];
     ssg_scene_bounds(scene, lo, hi);
+    struct ssg_lightmap_view whole = *view;
+    whole.res = view->res * tiles;
     for (int i = 0; i < n; i++)
         if (faces[i].light >= 0 && faces[i].ortho)
-            ssg_lightmap_fit_view(view, lo, hi, &faces[i]);
+            ssg_lightmap_fit_view(&whole, lo, hi, &faces[i]);
+}
+
+/* Cuts the own directional lights' faces (faces[0 .. n - 1]) into tiles x tiles faces
+   each, in place; returns the new count. Tile (tx, ty) covers [-1 + 2 tx / T, -1 + 2 (tx
+   + 1) / T] of its map's a (same for b), so its origin moves within the plane and its
+   half shrinks by T: the depth along the axis stays the map's. */
+static int cut_tiles(struct ssg_lightmap_face *faces, int n, int tiles)
+{
+    int t2 = tiles * tiles, extra = 0;
+    for (int i = 0; i < n; i++)
+        extra += faces[i].light >= 0 && faces[i].ortho ? t2 - 1 : 0;
+    for (int i = n - 1, o = n + extra - 1; i >= 0; i--) {
+        struct ssg_lightmap_face f = faces[i];
+        if (!(f.light >= 0 && f.ortho)) {
+            faces[o--] = f;
+            continue;
+        }
+        for (int t = t2 - 1; t >= 0; t--, o--) {
+            float a = (2.0f * (float)(t % tiles) + 1.0f) / (float)tiles - 1.0f;
+            float b = (2.0f * (float)(t / tiles) + 1.0f) / (float)tiles - 1.0f;
+            faces[o] = f;
+            faces[o].half = f.half / (float)tiles;
+            for (int k = 0; k < 3; k++)
+                faces[o].origin[k] += f.half * (a * f.u[k] + b * f.v[k]);
+        }
+    }
+    return n + extra;
 }
 
 int ssg_lightmap_faces(const struct ssg_scene *scene, struct ssg_lightmap_sources src,
@@ -154,9 +190,11 @@ int ssg_lightmap_faces_fit(const struct ssg_scene *scene, struct ssg_lightmap_so
     struct ssg_bounding_sphere sphere = {{0, 0, 0}, 1.0f};
     if (scene)
         sphere = ssg_scene_bounding_sphere(scene);
-    int n = src.own ? own_faces(scene, &sphere, faces) : 0;
+    int n = src.own ? own_faces(scene, &sphere, faces) : 0, tiles = tiles_of(src.tiles);
     if (fit == SSG_LIGHTMAP_FIT_VIEW && scene && view)
-        fit_to_view(scene, view, faces, n);
+        fit_to_view(scene, view, tiles, faces, n);
+    if (tiles > 1)
+        n = cut_tiles(faces, n, tiles);
     float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
     ssg_lightmap_env_directions(src.environment, dirs);
     for (int k = 0; k < src.environment; k++) {

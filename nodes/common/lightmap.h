@@ -6,7 +6,9 @@
  *
  * Faces. Light i of the scene (scene order) owns consecutive faces: one for a directional
  * light, an orthographic map over the scene's bounding sphere in the frame of
- * ssg_shadow_frame_make (l = -direction, towards the light), six for a point light, a
+ * ssg_shadow_frame_make (l = -direction, towards the light), or T x T of them, its tiles
+ * (`tiles` T > 1: the map cut into a T x T grid, tile (tx, ty) at face first + ty T + tx,
+ * each a face of its own with R x R texels; see ssg_lightmap_tile_texel), six for a point light, a
  * cube map around its position, face k a 90 degree perspective view along CUBE axis k
  * (+x, -x, +y, -y, +z, -z), and for a spot light one perspective face along its axis
  * whose half-width is tan(outer angle) when the outer angle is at most
@@ -83,8 +85,11 @@ struct ssg_lightmap_face {
 struct ssg_lightmap_sources {
     int own;
     int environment;
+    int tiles; /* an own directional light's map as tiles x tiles faces (0 or 1: one) */
 };
-#define SSG_LIGHTMAP_OWN_ONLY ((struct ssg_lightmap_sources){1, 0})
+#define SSG_LIGHTMAP_OWN_ONLY ((struct ssg_lightmap_sources){1, 0, 1})
+/* Most tiles a side a directional light's map may be cut into (64 faces). */
+enum { SSG_LIGHTMAP_TILES_MAX = 8 };
 /* Most environment lights a set of maps may hold. */
 enum { SSG_LIGHTMAP_ENV_MAX = 512 };
 
@@ -95,10 +100,22 @@ static inline int ssg_lightmap_face_env(const struct ssg_lightmap_face *f)
     return f->light <= -2 ? -2 - f->light : -1;
 }
 
-/* Faces one own light takes: 1 (directional, a spot up to 60 degrees)
-   or SSG_LIGHTMAP_CUBE_FACES (point, a wider spot): then the face a direction from the
-   light falls on is ssg_lightmap_cube_face's. */
-int ssg_lightmap_light_faces(const struct ssg_light *light);
+/* Faces one own light takes: tiles^2 (directional; tiles 0 counts as 1), 1 (a spot up to
+   60 degrees) or SSG_LIGHTMAP_CUBE_FACES (point, a wider spot): then the face a direction
+   from the light falls on is ssg_lightmap_cube_face's. */
+int ssg_lightmap_light_faces(const struct ssg_light *light, int tiles);
+
+/* A tiled directional map read as one map of side T R: texel (x, y) of that map, 0 <= x,
+   y < T R, lies in tile (x / R, y / R) at (x % R, y % R). Projecting a point on the first
+   tile's face (ssg_lightmap_project with resolution R) gives its coordinates on that whole
+   map, since the tiles share the plane, the axis and the depth. Returns the face offset
+   from the light's first face; *tx, *ty become the texel within it. */
+static inline int ssg_lightmap_tile_texel(int tiles, int res, int *x, int *y)
+{
+    int cx = *x / res, cy = *y / res;
+    *x -= cx * res, *y -= cy * res;
+    return cy * tiles + cx;
+}
 
 /* Faces the sources need: ssg_lightmap_light_faces per own light, 1 an environment light;
    with own lights, at least 1 (the empty face of a scene without). */

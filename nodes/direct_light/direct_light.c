@@ -29,19 +29,26 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 }
 
 /* The maps must be this scene's (check_scene of node.h). */
+/* The maps direct_light reads: the own lights', directional ones in `tiles`. */
+static struct ssg_lightmap_sources sources(const struct ssg_direct_light_params *p)
+{
+    return (struct ssg_lightmap_sources){1, 0, p->tiles};
+}
+
 static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
                                 const struct ssg_shape *in, struct ssg_shape *out, char *why,
                                 size_t why_len)
 {
-    (void)params, (void)out;
-    int need = ssg_lightmap_face_count(scene, SSG_LIGHTMAP_OWN_ONLY);
+    const struct ssg_direct_light_params *p = params;
+    (void)out;
+    int need = ssg_lightmap_face_count(scene, sources(p));
     int have = in[SSG_DIRECT_LIGHT_IN_MAPS].channels;
     if (have != need) {
         snprintf(why, why_len, "maps has %d faces but the scene's lights need %d (6 a point "
-                 "light or a spot wider than 60 degrees, 1 a directional light or a narrower "
-                 "spot): connect the depth output of a lightmaps "
-                 "node of the same scene with own=true and environment=0 (direct_light "
-                 "reads the own lights' maps only)", have, need);
+                 "light or a spot wider than 60 degrees, tiles^2 = %d a directional light, "
+                 "1 a narrower spot): connect the depth output of a lightmaps node of the "
+                 "same scene with own=true, environment=0 and the same tiles (direct_light "
+                 "reads the own lights' maps only)", have, need, p->tiles * p->tiles);
         return SSG_E_CHANNELS;
     }
     return SSG_OK;
@@ -51,14 +58,16 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
 static void make_lights(const struct ssg_scene *s, struct ssg_direct_light_consts *c)
 {
     c->u.lights = 0;
-    for (int f = 0; f < ssg_lightmap_face_count(s, SSG_LIGHTMAP_OWN_ONLY); f++) {
+    for (int f = 0; f < c->face_count; f++) {
         const struct ssg_lightmap_face *face = &c->faces[f];
         if (face->light < 0 || (f > 0 && c->faces[f - 1].light == face->light))
             continue;
         const struct ssg_light *l = &s->lights[face->light];
         struct ssg_direct_light_light *d = &c->light[c->u.lights++];
         *d = (struct ssg_direct_light_light){.point = !face->ortho, .face = f,
-                                             .cube = ssg_lightmap_light_faces(l) > 1,
+                                             .cube = !face->ortho &&
+                                                     ssg_lightmap_light_faces(l, 1) > 1,
+                                             .tiles = face->ortho ? c->p.tiles : 1,
                                              .cone_scale = l->cone_scale,
                                              .cone_offset = l->cone_offset};
         for (int k = 0; k < 3; k++) {
@@ -80,7 +89,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     if (!ctx->scene)
         return ssg_node_fail(ctx, SSG_E_SCENE, "needs a scene");
     const struct ssg_shape *maps = &ctx->in_shape[SSG_DIRECT_LIGHT_IN_MAPS];
-    int need = ssg_lightmap_face_count(ctx->scene, SSG_LIGHTMAP_OWN_ONLY);
+    int need = ssg_lightmap_face_count(ctx->scene, sources(p));
     if (maps->channels != need) /* a graph refuses it first (check_scene) */
         return ssg_node_fail(ctx, SSG_E_SCENE, "maps has %d faces but the scene's lights "
                              "need %d: connect the depth output of a lightmaps node of the "
@@ -89,7 +98,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->u.res = maps->width;
     c->face_count = need;
     struct ssg_lightmap_view view = {ctx->frame, &ctx->scene->camera, maps->width};
-    if (ssg_lightmap_faces_fit(ctx->scene, SSG_LIGHTMAP_OWN_ONLY, p->fit, &view, c->faces,
+    if (ssg_lightmap_faces_fit(ctx->scene, sources(p), p->fit, &view, c->faces,
                                SSG_LIGHTMAP_FACES_MAX) < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the scene's lights need more than %d map "
                              "faces", SSG_LIGHTMAP_FACES_MAX);

@@ -8,8 +8,8 @@ layout(r32f) uniform writeonly image2DArray dst_out, dst_visibility;
 struct Face { int light; int ortho; float origin[3]; float u[3]; float v[3]; float axis[3];
               float half_side; };
 struct Light { float pos[3]; float dir[3]; float color[3]; float intensity; int point;
-               int face; float texel; float spread; int cube; float cone_scale;
-               float cone_offset; };
+               int face; float texel; float spread; int cube; int tiles;
+               float cone_scale; float cone_offset; };
 layout(std430, binding = 0) readonly buffer Faces { Face face[]; };
 layout(std430, binding = 1) readonly buffer Lights { Light light[]; };
 layout(std430, binding = 2) readonly buffer Taps { float taps[]; };
@@ -55,9 +55,12 @@ float occluder(Lookup k, int x, int y)
 {
     if (light[k.l].cube != 0)
         return cube_depth(light[k.l].face, k.f, x, y);
-    if (x < 0 || y < 0 || x >= res || y >= res)
+    int tiles = light[k.l].tiles, side = res * tiles;
+    if (x < 0 || y < 0 || x >= side || y >= side) // off the map; a spot: outside its cone
         return EMPTY;
-    return texelFetch(maps, ivec3(x, y, light[k.l].face), 0).r;
+    ivec2 tile = ivec2(x, y) / res; // ssg_lightmap_tile_texel
+    return texelFetch(maps, ivec3(x - tile.x * res, y - tile.y * res,
+                                  light[k.l].face + tile.y * tiles + tile.x), 0).r;
 }
 
 float tap_limit(Lookup k, float x, float y)

@@ -80,7 +80,12 @@ SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OU
     P(ENUM, fit,                                                                           \
       "where the maps' directional lights lie: the fit of the lightmaps node that made "  \
       "them (scene or view; the two must agree)",                                          \
-      .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1)
+      .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1) \
+    P(INT, tiles,                                                                          \
+      "the tiles of the lightmaps node that made the maps (a directional light's map as " \
+      "tiles x tiles faces; the two must agree)",                                          \
+      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",          \
+      .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
 
 /* One light as both backends read it. */
@@ -96,6 +101,8 @@ struct ssg_direct_light_light {
                        texel at distance d is d x this) */
     float spread;   /* soft shadows: point light_size; directional tan(sun_angle) */
     int cube;       /* 1 = six cube faces (a point light, a wide spot), 0 = one face */
+    int tiles;      /* directional: its map's tiles a side (ssg_lightmap_tile_texel); 1
+                       otherwise */
     float cone_scale, cone_offset; /* the spot's cone (ssg_cone_falloff; point: 0, 1) */
 };
 

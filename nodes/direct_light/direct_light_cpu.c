@@ -79,9 +79,11 @@ static float occluder(const struct job *j, const struct lookup *k, int x, int y)
     const int res = j->c->u.res;
     if (k->l->cube)
         return cube_depth(j, k->l->face, k->f, x, y);
-    if (x < 0 || y < 0 || x >= res || y >= res) /* beyond a spot's face: outside its cone */
+    const int tiles = k->l->tiles, side = res * tiles;
+    if (x < 0 || y < 0 || x >= side || y >= side) /* off the map; a spot: outside its cone */
         return SSG_SHADOW_EMPTY;
-    return j->maps[((size_t)k->l->face * res + y) * res + x];
+    int f = k->l->face + (tiles > 1 ? ssg_lightmap_tile_texel(tiles, res, &x, &y) : 0);
+    return j->maps[((size_t)f * res + y) * res + x];
 }
 
 /* The receiver's distance along the ray of texel coordinates (x, y) of the lookup's

@@ -5,7 +5,7 @@
 #include "direct_light.h"
 
 _Static_assert(sizeof(struct ssg_lightmap_face) == 60, "direct_light.glsl's Face");
-_Static_assert(sizeof(struct ssg_direct_light_light) == 68, "direct_light.glsl's Light");
+_Static_assert(sizeof(struct ssg_direct_light_light) == 72, "direct_light.glsl's Light");
 
 enum ssg_err ssg_direct_light_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
                                      const struct ssg_io *io)

@@ -435,13 +435,15 @@ static void test_wrong_maps(void)
     gbuffer_of(s, &FRAME, g);
     CHECK_EQ(direct_of(s, &FRAME, g, maps, NULL, 0, SSG_BACKEND_CPU, r), SSG_E_SCENE);
     struct ssg_shape in[4] = {{0}}, out[2];
-    char why[300];
+    char why[400];
+    void *params = node_params(&ssg_node_direct_light, NULL, 0);
     in[SSG_DIRECT_LIGHT_IN_MAPS] = (struct ssg_shape){16, 16, 1, SSG_T_LIGHTMAPS};
-    CHECK_EQ(ssg_node_direct_light.check_scene(NULL, s, in, out, why, sizeof why),
+    CHECK_EQ(ssg_node_direct_light.check_scene(params, s, in, out, why, sizeof why),
              SSG_E_CHANNELS);
     fprintf(stderr, "maps of 1 face for a point light: %s\n", why);
     in[SSG_DIRECT_LIGHT_IN_MAPS].channels = 6;
-    CHECK_EQ(ssg_node_direct_light.check_scene(NULL, s, in, out, why, sizeof why), SSG_OK);
+    CHECK_EQ(ssg_node_direct_light.check_scene(params, s, in, out, why, sizeof why), SSG_OK);
+    free(params);
     images_free(g, SSG_GBUFFER_OUTPUTS);
     images_free(r, 2);
     ssg_image_destroy(&maps);

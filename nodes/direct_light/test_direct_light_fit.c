@@ -1,10 +1,12 @@
 /* test_direct_light_fit.c - a direct_light builds its maps' faces itself (lightmap.h), so
- * its `fit` must be the fit of the lightmaps node that made the maps: no node sees its
- * producer's parameters, so nothing refuses a mismatch when a graph loads, and a mismatch
- * shows a wrong shadow without an error. This checks every shipped graph (graphs/, each
- * .graph file): each direct_light whose maps come from a lightmaps node has its fit, and
- * gi.graph's do fit the view. A hand-written graph with the two fits apart is counted as
- * one mismatch, so the check itself can fail. */
+ * its `fit` and `tiles` must be those of the lightmaps node that made the maps: no node
+ * sees its producer's parameters, so nothing refuses a fit mismatch when a graph loads, and
+ * it shows a wrong shadow without an error (tiles apart change the face count, which a
+ * scene with a directional light refuses, test_lightmap_tiles.c; one without does not).
+ * This checks every shipped graph (graphs/, each .graph file): each direct_light whose maps
+ * come from a lightmaps node has its fit and tiles, and gi.graph's do fit the view. A
+ * hand-written graph with the two fits apart is counted as one mismatch, so the check
+ * itself can fail. */
 #include <dirent.h>
 #include <stdio.h>
 #include <string.h>
@@ -29,9 +31,10 @@ static int mismatches(const struct ssg_graph *g, int *checked, int *view)
         const struct ssg_lightmaps_params *m = g->nodes[c->node].params;
         (*checked)++;
         *view += d->fit == SSG_LIGHTMAP_FIT_VIEW;
-        if (d->fit != m->fit) {
-            fprintf(stderr, "direct_light '%s' has fit %d, its maps' node '%s' fit %d\n",
-                    n->name, d->fit, g->nodes[c->node].name, m->fit);
+        if (d->fit != m->fit || d->tiles != m->tiles) {
+            fprintf(stderr, "direct_light '%s' has fit %d and tiles %d, its maps' node '%s' "
+                    "fit %d and tiles %d\n", n->name, d->fit, d->tiles,
+                    g->nodes[c->node].name, m->fit, m->tiles);
             bad++;
         }
     }

@@ -14,7 +14,7 @@
 /* The lights the parameters ask for. */
 static struct ssg_lightmap_sources sources(const struct ssg_lightmaps_params *p)
 {
-    return (struct ssg_lightmap_sources){p->own, p->environment};
+    return (struct ssg_lightmap_sources){p->own, p->environment, p->tiles};
 }
 
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
@@ -42,8 +42,8 @@ static enum ssg_err check_scene(const void *params, const struct ssg_scene *scen
     (void)in;
     long long f = ssg_lightmap_face_count(scene, sources(p)), r = p->resolution;
     if (f > SSG_LIGHTMAP_FACES_MAX) {
-        snprintf(why, why_len, "the lights need %lld map faces (own lights: 6 a point light, 1 "
-                 "a directional light; plus %d environment lights), at most %d fit the normal "
+        snprintf(why, why_len, "the lights need %lld map faces (own lights: 6 a point light, "
+                 "tiles^2 a directional light; plus %d environment lights), at most %d fit the normal "
                  "and flux images' %d channels: lower environment or the light count", f,
                  p->environment, SSG_LIGHTMAP_FACES_MAX, SSG_IMAGE_MAX_CHANNELS);
         return SSG_E_SIZE;

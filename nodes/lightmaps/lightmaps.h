@@ -13,10 +13,12 @@
       "R x R, channel f the depth of the nearest surface on face f (lightmap.h), "         \
       "SSG_SHADOW_EMPTY where none")                                                       \
     X(SSG_LIGHTMAPS_OUT_NORMAL, "normal", SSG_T_LIGHTMAPS,                                 \
-      "R x R, channels 3f..3f+2 that surface's unit world normal, facing the light")       \
+      "R x R, channels 3f..3f+2 that surface's unit world normal, facing the light",      \
+      .on_demand = 1)                                                                      \
     X(SSG_LIGHTMAPS_OUT_FLUX, "flux", SSG_T_LIGHTMAPS,                                     \
       "R x R, channels 3f..3f+2 the RGB flux that surface reflects (albedo x flux "        \
-      "through the texel, W)")
+      "through the texel, W)",                                                             \
+      .on_demand = 1)
 SSG_PORT_ENUM(ssg_lightmaps_output, SSG_LIGHTMAPS_OUT, SSG_LIGHTMAPS_OUTPUTS);
 
 /* Bounds of the resolution parameter (texels a side). */
@@ -44,6 +46,12 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "direct_light reading it needs the same fit; an rsm needs scene, its senders off "  \
       "screen)",                                                                           \
       .def = SSG_LIGHTMAP_FIT_SCENE, .choices = ssg_lightmap_fit_choices, .host_only = 1) \
+    P(INT, tiles,                                                                          \
+      "a directional light's map as tiles x tiles faces of resolution each, one map of "  \
+      "side tiles x resolution (finer sun shadows without finer point-light cubes; a "    \
+      "direct_light reading it needs the same tiles, an rsm 1)",                          \
+      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",          \
+      .host_only = 1)                                                                      \
     P(BOOL, proxy,                                                                         \
       "draw each dense mesh (4096 triangles or more, not alpha-masked) as its simplified "  \
       "proxy, within about a sixteenth of the finest texel that meets it (core/scene/"     \

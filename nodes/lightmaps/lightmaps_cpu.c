@@ -394,11 +394,16 @@ static int uniform_triangle(const struct job *j, int32_t id)
 static void resolve_strip(const struct job *j, int fi, const struct strip *s)
 {
     const int res = s->res;
-    float *nrm[3], *flx[3];
-    for (int k = 0; k < 3; k++) {
-        nrm[k] = ssg_image_plane(j->io->out[SSG_LIGHTMAPS_OUT_NORMAL], 3 * fi + k);
-        flx[k] = ssg_image_plane(j->io->out[SSG_LIGHTMAPS_OUT_FLUX], 3 * fi + k);
+    struct ssg_image *nrm_img = j->io->out[SSG_LIGHTMAPS_OUT_NORMAL];
+    struct ssg_image *flx_img = j->io->out[SSG_LIGHTMAPS_OUT_FLUX];
+    if (!nrm_img && !flx_img)
+        return; /* depth alone is read (direct_light): no surface lookups at all */
+    float *nrm[3], *flx[3], spare[3];
+    for (int k = 0; k < 3; k++) { /* an unread one: written into a spare float, per texel */
+        nrm[k] = nrm_img ? ssg_image_plane(nrm_img, 3 * fi + k) : &spare[k];
+        flx[k] = flx_img ? ssg_image_plane(flx_img, 3 * fi + k) : &spare[k];
     }
+    const size_t nrm_step = nrm_img ? 1 : 0, flx_step = flx_img ? 1 : 0;
     int32_t last = -1;
     int reuse = 0;
     float n0[3] = {0, 0, 0}, unit[3] = {0, 0, 0}; /* the last texel's normal, flux / omega */
@@ -419,7 +424,7 @@ static void resolve_strip(const struct job *j, int fi, const struct strip *s)
             }
             last = id;
             for (int k = 0; k < 3; k++)
-                nrm[k][at] = n[k], flx[k][at] = flux[k];
+                nrm[k][at * nrm_step] = n[k], flx[k][at * flx_step] = flux[k];
         }
 }
 

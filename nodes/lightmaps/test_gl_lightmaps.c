@@ -81,7 +81,7 @@ int main(void)
            256, 0, bunny);
     /* the courtyard probe as 16 environment lights (own=false): the faces of the lights
        that carry light */
-    const struct ssg_lightmap_sources env = {0, 16};
+    const struct ssg_lightmap_sources env = {0, 16, 1};
     parity("examples/bunny.scene", "examples/lights/courtyard.scene", env, "scene", 128, 0,
            bunny);
     return check_report();

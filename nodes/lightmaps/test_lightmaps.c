@@ -171,7 +171,7 @@ static void test_environment(void)
     if (!s || !dark)
         return;
     enum { N = 64, RES = 128 };
-    const struct ssg_lightmap_sources env = {0, N}, both = {1, N};
+    const struct ssg_lightmap_sources env = {0, N, 1}, both = {1, N, 1};
     struct ssg_lightmap_face faces[N + 1];
     CHECK_EQ(ssg_lightmap_face_count(s, both), N + 1);
     CHECK_EQ(ssg_lightmap_faces(s, both, faces, N + 1), N + 1);

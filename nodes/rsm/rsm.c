@@ -14,7 +14,7 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 {
     const struct ssg_rsm_params *p = params;
     (void)frame;
-    struct ssg_lightmap_sources src = {p->own, p->environment};
+    struct ssg_lightmap_sources src = {p->own, p->environment, 1};
     enum ssg_err e = ssg_lightmap_sources_check(src, why, why_len);
     if (e)
         return e;
@@ -111,7 +111,7 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->p = *p;
     ssg_camera_frame(&ctx->scene->camera, c->rot, c->eye);
     const struct ssg_shape *maps = &ctx->in_shape[SSG_RSM_IN_MAP_DEPTH];
-    struct ssg_lightmap_sources src = {p->own, p->environment};
+    struct ssg_lightmap_sources src = {p->own, p->environment, 1};
     int want = ssg_lightmap_faces(ctx->scene, src, c->face_s, SSG_LIGHTMAP_FACES_MAX);
     if (want < 0)
         return ssg_node_fail(ctx, SSG_E_SCENE, "the own lights and %d environment lights need "
