@@ -8,6 +8,8 @@
  *   centre lies on a triangle's edge may go either way: a bound on those);
  * - direct_light reading the tiled maps with the same tiles gives what it gives on the
  *   whole map of T R (the lookup reads across the tiles' borders as within one map);
+ * - lightmaps with normal and flux unbound (on demand: a direct_light's maps) draws the
+ *   same depths;
  * - the two nodes' tiles apart is refused when the graph loads, with both counts named. */
 #include <math.h>
 #include <stdio.h>
@@ -121,6 +123,27 @@ static void direct_light_matches(const struct ssg_scene *s, enum ssg_backend bac
     images_free(b, 2);
 }
 
+/* normal and flux unbound (on demand: what the executor does when only a direct_light
+   reads the maps): the depth is the same bytes as with every output drawn. */
+static void depth_alone(const struct ssg_scene *s, enum ssg_backend backend)
+{
+    struct ssg_image *all[3];
+    const struct ssg_lightmap_sources cut = {1, 0, T};
+    CHECK_EQ(maps_fit(s, &FRAME, R, cut, "view", backend, all), SSG_OK);
+    const char *sets[] = {"resolution=32", "fit=view", "tiles=4"};
+    void *params = node_params(&ssg_node_lightmaps, sets, 3);
+    struct ssg_image *depth = ssg_image_create(R, R, T * T), *out[3] = {depth, NULL, NULL};
+    CHECK_EQ(node_run_scene(&ssg_node_lightmaps, s, &FRAME, params, NULL, out, backend),
+             SSG_OK);
+    size_t n = (size_t)R * R * T * T;
+    CHECK(memcmp(depth->data, all[0]->data, n * sizeof(float)) == 0);
+    fprintf(stderr, "depth alone (%s): the same %zu depths\n",
+            backend == SSG_BACKEND_GL ? "gl" : "cpu", n);
+    free(params);
+    ssg_image_destroy(&depth);
+    images_free(all, 3);
+}
+
 /* A graph whose direct_light has other tiles than its maps' node: refused at load. */
 static void tiles_apart_refused(void)
 {
@@ -160,6 +183,8 @@ int main(void)
     maps_match(s, "view", SSG_BACKEND_GL);
     direct_light_matches(s, SSG_BACKEND_CPU);
     direct_light_matches(s, SSG_BACKEND_GL);
+    depth_alone(s, SSG_BACKEND_CPU);
+    depth_alone(s, SSG_BACKEND_GL);
     ssg_scene_destroy(&s);
     tiles_apart_refused();
     return check_report();
