@@ -3,6 +3,7 @@
 #include <stdio.h>
 
 #include "graph/image.h"
+#include "scene/env.h"
 #include "scene/scene.h"
 #include "shadowmaps.h"
 
@@ -21,6 +22,19 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         return SSG_E_SIZE;
     }
     out[0] = (struct ssg_shape){p->resolution, p->resolution, in[0].width, SSG_T_SHADOWMAPS};
+    return SSG_OK;
+}
+
+/* A scene without environment light gets maps of one texel: its light list (lightprobe
+   missing=dark) carries nothing, probe_light skips every light, and 384 maps of 512 would
+   be 384 MB filled with "empty" for no reader (README.md, "Dark lights"). */
+static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
+                                const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                                size_t why_len)
+{
+    (void)params, (void)in, (void)why, (void)why_len;
+    if (scene && !(scene->env && scene->env->has_light))
+        out[0].width = out[0].height = 1;
     return SSG_OK;
 }
 
@@ -49,6 +63,7 @@ const struct ssg_node_desc ssg_node_shadowmaps = {
     /* world-space maps around the scene's bounding sphere */
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS,
     .check = check,
+    .check_scene = check_scene,
     .run_cpu = ssg_shadowmaps_run_cpu,
     .run_gl = ssg_shadowmaps_run_gl,
 };

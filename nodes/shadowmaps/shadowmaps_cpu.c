@@ -264,7 +264,7 @@ enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *
         carries = light_carries(lights, i);
     struct ssg_scene view;
     const struct ssg_scene *drawn = ssg_raster_scene(
-        ctx, p->proxy && carries ? 2.0f * sphere.radius / (float)p->resolution : INFINITY,
+        ctx, p->proxy && carries ? 2.0f * sphere.radius / (float)io->out[0]->width : INFINITY,
         &view);
     if (!drawn)
         return SSG_E_NOMEM;
@@ -274,7 +274,7 @@ enum ssg_err ssg_shadowmaps_run_cpu(const struct ssg_node_ctx *ctx, const void *
         most = c > most ? c : most;
     }
     int per_band = (n + MAX_BANDS - 1) / MAX_BANDS, bands = (n + per_band - 1) / per_band;
-    struct job j = {drawn, NULL, lights, io->out[0], p->resolution, per_band, most, NULL};
+    struct job j = {drawn, NULL, lights, io->out[0], io->out[0]->width, per_band, most, NULL};
     j.scratch = ssg_node_scratch(ctx, (size_t)bands * (size_t)(most ? most : 1) * VERTEX_BYTES);
     struct ssg_shadow_frame *frames = malloc(sizeof *frames * (size_t)n);
     if (!frames || !j.scratch) {

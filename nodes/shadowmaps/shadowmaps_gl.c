@@ -22,7 +22,7 @@ enum ssg_err ssg_shadowmaps_run_gl(const struct ssg_node_ctx *ctx, const void *c
     struct ssg_scene view;
     struct ssg_node_ctx drawn = *ctx; /* the GL scene of the view (common/raster.h) */
     drawn.scene = ssg_raster_scene(
-        ctx, p->proxy ? 2.0f * sphere.radius / (float)p->resolution : INFINITY, &view);
+        ctx, p->proxy ? 2.0f * sphere.radius / (float)io->out[0]->width : INFINITY, &view);
     if (!drawn.scene)
         return SSG_E_NOMEM;
     struct ssg_gl_pass pass;

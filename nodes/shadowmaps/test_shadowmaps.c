@@ -5,6 +5,8 @@
  *   many texels as its top's area says;
  * - a tilted light: texels whose ray meets the open floor hold o.y / l.y;
  * - a map set larger than the memory limit is refused with the sizes in the message;
+ * - a scene without environment light gets maps of one texel (its lights carry nothing),
+ *   one with an environment the resolution;
  * - an alpha-masked quad (tests/fixtures/alpha_mask.scene: covered at x <= 0) casts its
  *   covered half only: under it texels hold the quad's depth, under its hole the floor's,
  *   on both backends;
@@ -149,6 +151,34 @@ static void test_memory_limit(void)
     free(params);
 }
 
+/* The maps' side a graph gives them (check, then check_scene): one texel for a scene
+   without environment light (its lights are lightprobe's dark ones), else the
+   resolution. */
+static int checked_side(const struct ssg_scene *s)
+{
+    const struct ssg_node_desc *d = &ssg_node_shadowmaps;
+    void *params = node_params(d, (const char *const[]){"resolution=256"}, 1);
+    struct ssg_shape in[1] = {{384, 2, 3, SSG_T_LIGHTS}}, out[1];
+    char why[256] = "";
+    CHECK_EQ(d->check(params, &FRAME, in, out, why, sizeof why), SSG_OK);
+    CHECK_EQ(d->check_scene(params, s, in, out, why, sizeof why), SSG_OK);
+    CHECK_EQ(out[0].width, out[0].height);
+    CHECK_EQ(out[0].channels, 384);
+    free(params);
+    return out[0].width;
+}
+
+static void test_dark_scene(const struct ssg_scene *dark)
+{
+    CHECK_EQ(checked_side(dark), 1);
+    struct ssg_scene *lit = scene_from_text("floor_box_sky", "environment(color=[1, 1, 1])\n"
+                                                              "plane(center=[0, 0, 0], "
+                                                              "normal=[0, 1, 0], size=[2, 0, 2])\n");
+    if (lit)
+        CHECK_EQ(checked_side(lit), 256);
+    ssg_scene_destroy(&lit);
+}
+
 /* CPU and GL maps of the courtyard for a few lights. */
 static void test_parity(void)
 {
@@ -197,6 +227,7 @@ int main(void)
     if (s) {
         test_straight_down(s);
         test_tilted(s);
+        test_dark_scene(s);
         ssg_scene_destroy(&s);
     }
     test_masked(SSG_BACKEND_CPU);
