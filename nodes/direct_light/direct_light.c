@@ -28,13 +28,13 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     return SSG_OK;
 }
 
-/* The maps must be this scene's (check_scene of node.h). */
 /* The maps direct_light reads: the own lights', directional ones in `tiles`. */
 static struct ssg_lightmap_sources sources(const struct ssg_direct_light_params *p)
 {
     return (struct ssg_lightmap_sources){1, 0, p->tiles};
 }
 
+/* The maps must be this scene's (check_scene of node.h). */
 static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
                                 const struct ssg_shape *in, struct ssg_shape *out, char *why,
                                 size_t why_len)

@@ -130,7 +130,10 @@ static void depth_alone(const struct ssg_scene *s, enum ssg_backend backend)
     struct ssg_image *all[3];
     const struct ssg_lightmap_sources cut = {1, 0, T};
     CHECK_EQ(maps_fit(s, &FRAME, R, cut, "view", backend, all), SSG_OK);
-    const char *sets[] = {"resolution=32", "fit=view", "tiles=4"};
+    char res_set[32], tiles_set[32];
+    snprintf(res_set, sizeof res_set, "resolution=%d", R);
+    snprintf(tiles_set, sizeof tiles_set, "tiles=%d", T);
+    const char *sets[] = {res_set, "fit=view", tiles_set};
     void *params = node_params(&ssg_node_lightmaps, sets, 3);
     struct ssg_image *depth = ssg_image_create(R, R, T * T), *out[3] = {depth, NULL, NULL};
     CHECK_EQ(node_run_scene(&ssg_node_lightmaps, s, &FRAME, params, NULL, out, backend),
