@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""paired_nodes.py - one graph's single-run cost, node by node, against another build:
+runs OLD (a build of another commit, with the graphs of its own checkout) and NEW (this
+checkout's) alternately, PAIRS times in one sitting, and prints each node's median time
+(ms, write excluded), the sum of those medians and its ratio, then the medians of the runs'
+totals and their ratio. Only pairs mean anything on a machine whose speed drifts between
+sittings; a single node's spike moves a total's median, not a node's.
+
+    python3 bench/paired_nodes.py --old OLD_BUILD/ssgraph --old-graphs OLD_CHECKOUT/graphs
+        [--bin build-test/ssgraph] [--graph gi.graph] [--size 1280x720] [--threads 2]
+        [--pairs 9] [--set NODE.P=VALUE ...]   (--set: the new run only)
+
+bench/results/issue44/t44d/README.md ("The frame time") was made with it against b22328e.
+"""
+import argparse
+import collections
+import os
+import re
+import statistics
+import subprocess
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROW = re.compile(r"^(\S+)\s+(\S+)\s+(cpu|gl)\s+([\d.]+)")
+
+
+def node_times(binary, graph, size, threads, out, sets):
+    """{node: ms} of one run's node table, write excluded."""
+    cmd = [binary, "run", graph, "--size", size, "--threads", str(threads), "--out", out]
+    for s in sets:
+        cmd += ["--set", s]
+    text = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          check=True).stdout
+    times = {}
+    for line in text.splitlines():
+        m = ROW.match(line)
+        if m and m.group(2) != "write":
+            times[m.group(1)] = float(m.group(4))
+    return times
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--old", required=True, help="the other build's ssgraph")
+    ap.add_argument("--old-graphs", required=True, help="the graphs/ folder of its checkout")
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build-test", "ssgraph"))
+    ap.add_argument("--graph", default="gi.graph")
+    ap.add_argument("--size", default="1280x720")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--pairs", type=int, default=9)
+    ap.add_argument("--set", action="append", default=[])
+    a = ap.parse_args()
+    old_runs, new_runs = collections.defaultdict(list), collections.defaultdict(list)
+    old_totals, new_totals = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        for _ in range(a.pairs):
+            for binary, graph, sets, runs, totals in (
+                    (a.old, os.path.join(a.old_graphs, a.graph), [], old_runs, old_totals),
+                    (a.bin, os.path.join(ROOT, "graphs", a.graph), a.set, new_runs,
+                     new_totals)):
+                t = node_times(binary, graph, a.size, a.threads, tmp, sets)
+                for node, ms in t.items():
+                    runs[node].append(ms)
+                totals.append(sum(t.values()))
+    med = lambda v: statistics.median(v) if v else 0.0
+    print(f"{a.graph} at {a.size}, {a.threads} threads, {a.pairs} pairs; ms, medians\n")
+    print("| node | old | new |")
+    print("|---|--:|--:|")
+    sum_old = sum_new = 0.0
+    for node in dict.fromkeys(list(old_runs) + list(new_runs)):
+        o, n = med(old_runs[node]), med(new_runs[node])
+        sum_old, sum_new = sum_old + o, sum_new + n
+        print(f"| {node} | {o:.1f} | {n:.1f} |")
+    print(f"| **sum of medians** | **{sum_old:.1f}** | **{sum_new:.1f} "
+          f"({sum_new / sum_old:.2f}x)** |")
+    print(f"\nmedians of the totals: old {med(old_totals):.1f}, new {med(new_totals):.1f} "
+          f"({med(new_totals) / med(old_totals):.2f}x)")
+
+
+if __name__ == "__main__":
+    main()
