@@ -8,7 +8,8 @@ sittings; a single node's spike moves a total's median, not a node's.
 
     python3 bench/paired_nodes.py --old OLD_BUILD/ssgraph --old-graphs OLD_CHECKOUT/graphs
         [--bin build-test/ssgraph] [--graph gi.graph] [--size 1280x720] [--threads 2]
-        [--pairs 9] [--set NODE.P=VALUE ...]   (--set: the new run only)
+        [--pairs 9] [--scene S.scene] [--lights L.scene] [--set NODE.P=VALUE ...]
+        (--set: the new run only; --scene, --lights: both runs)
 
 bench/results/issue44/t44d/README.md ("The frame time") was made with it against b22328e.
 """
@@ -24,9 +25,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROW = re.compile(r"^(\S+)\s+(\S+)\s+(cpu|gl)\s+([\d.]+)")
 
 
-def node_times(binary, graph, size, threads, out, sets):
+def node_times(binary, graph, size, threads, out, sets, scene_args=()):
     """{node: ms} of one run's node table, write excluded."""
     cmd = [binary, "run", graph, "--size", size, "--threads", str(threads), "--out", out]
+    cmd += list(scene_args)
     for s in sets:
         cmd += ["--set", s]
     text = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
@@ -48,8 +50,12 @@ def main():
     ap.add_argument("--size", default="1280x720")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--pairs", type=int, default=9)
+    ap.add_argument("--scene", help="a scene file for both runs (default: the graph's)")
+    ap.add_argument("--lights", help="a lights file for both runs (examples/lights/)")
     ap.add_argument("--set", action="append", default=[])
     a = ap.parse_args()
+    scene_args = (["--scene", os.path.abspath(a.scene)] if a.scene else []) + \
+        (["--lights", os.path.abspath(a.lights)] if a.lights else [])
     old_runs, new_runs = collections.defaultdict(list), collections.defaultdict(list)
     old_totals, new_totals = [], []
     with tempfile.TemporaryDirectory() as tmp:
@@ -58,12 +64,15 @@ def main():
                     (a.old, os.path.join(a.old_graphs, a.graph), [], old_runs, old_totals),
                     (a.bin, os.path.join(ROOT, "graphs", a.graph), a.set, new_runs,
                      new_totals)):
-                t = node_times(binary, graph, a.size, a.threads, tmp, sets)
+                t = node_times(binary, graph, a.size, a.threads, tmp, sets, scene_args)
                 for node, ms in t.items():
                     runs[node].append(ms)
                 totals.append(sum(t.values()))
     med = lambda v: statistics.median(v) if v else 0.0
-    print(f"{a.graph} at {a.size}, {a.threads} threads, {a.pairs} pairs; ms, medians\n")
+    where = "".join(f" {k} {os.path.relpath(v, ROOT)}" for k, v in
+                    (("on", a.scene), ("under", a.lights)) if v)
+    print(f"{a.graph}{where} at {a.size}, {a.threads} threads, {a.pairs} pairs; ms, "
+          "medians\n")
     print("| node | old | new |")
     print("|---|--:|--:|")
     sum_old = sum_new = 0.0

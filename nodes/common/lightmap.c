@@ -52,9 +52,13 @@ int ssg_lightmap_face_count(const struct ssg_scene *scene, struct ssg_lightmap_s
     return (src.own ? own_face_count(scene, src.tiles) : 0) + src.environment;
 }
 
-void ssg_lightmap_env_directions(int count, float *dirs)
+void ssg_lightmap_env_directions(const struct ssg_scene *scene, int count, float *dirs)
 {
-    ssg_env_lights_fibonacci(count, dirs);
+    const struct ssg_env *env = scene ? scene->env : NULL;
+    if (env && env->has_light)
+        ssg_env_lights_importance(env, count, SSG_LIGHTMAP_ENV_UNIFORM_SHARE, dirs);
+    else
+        ssg_env_lights_fibonacci(count, dirs);
 }
 
 /* An orthographic face over the bounding sphere, looking along -l (l towards the light). */
@@ -196,7 +200,7 @@ int ssg_lightmap_faces_fit(const struct ssg_scene *scene, struct ssg_lightmap_so
     if (tiles > 1)
         n = cut_tiles(faces, n, tiles);
     float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
-    ssg_lightmap_env_directions(src.environment, dirs);
+    ssg_lightmap_env_directions(scene, src.environment, dirs);
     for (int k = 0; k < src.environment; k++) {
         faces[n] = (struct ssg_lightmap_face){.light = SSG_LIGHTMAP_ENV_LIGHT(k)};
         directional_face(&sphere, dirs + 3 * k, &faces[n++]);

@@ -167,9 +167,16 @@ int ssg_lightmap_fit_view(const struct ssg_lightmap_view *view, const float lo[3
 enum ssg_err ssg_lightmap_sources_check(struct ssg_lightmap_sources src, char *why,
                                         size_t why_len);
 
-/* The unit directions towards the N environment lights (3 N floats): the spherical
-   Fibonacci set of lightprobe's uniform sampling. */
-void ssg_lightmap_env_directions(int count, float *dirs);
+/* The unit directions towards the scene's N environment lights (3 N floats): under a probe
+   (an image), drawn through its brightness with the last quarter the uniform set
+   (ssg_env_lights_importance, as lightprobe sampling=importance uniform_share=0.25);
+   under a constant sky or none, the spherical Fibonacci set. Why drawn: 48 uniform
+   lights split the courtyard probe's low bright patch among a few hard-edged ones, and
+   the bounce came out 10-25 % bright along the bunny's wall corner (lightmaps README).
+   Fixed, not a parameter: rsm builds the same faces from the scene alone, and a mismatch
+   could not be told from the maps. */
+#define SSG_LIGHTMAP_ENV_UNIFORM_SHARE 0.25f
+void ssg_lightmap_env_directions(const struct ssg_scene *scene, int count, float *dirs);
 
 /* Where world point p falls on face f of resolution res: texel coordinates (x, y), not
    floored, inside the map for 0 <= x, y < res, and its depth z. Returns 0 when p is not

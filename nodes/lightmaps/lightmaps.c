@@ -85,7 +85,7 @@ static void face_flux(const struct ssg_scene *s, const struct ssg_lightmaps_cons
     }
 }
 
-/* The environment lights' irradiances (env_lights.h's regions of the uniform directions),
+/* The environment lights' irradiances (env_lights.h's regions of their directions),
    3 a light, into *e (malloc'd); *e stays NULL when there are none or the scene has no
    environment light (its faces then stay empty). */
 static enum ssg_err env_irradiance(const struct ssg_scene *s, int count, double **e)
@@ -94,7 +94,7 @@ static enum ssg_err env_irradiance(const struct ssg_scene *s, int count, double 
     if (count == 0 || !s->env || !s->env->has_light)
         return SSG_OK;
     float dirs[3 * SSG_LIGHTMAP_ENV_MAX];
-    ssg_lightmap_env_directions(count, dirs);
+    ssg_lightmap_env_directions(s, count, dirs);
     *e = malloc(sizeof(double) * 3 * (size_t)count);
     enum ssg_err err = *e ? ssg_env_lights_regions(s->env, dirs, count, *e) : SSG_E_NOMEM;
     if (err) {

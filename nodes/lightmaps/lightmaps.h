@@ -36,9 +36,11 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
     P(BOOL, own, "the scene's own point, spot and directional lights (their faces first)",        \
       .def = 1, .host_only = 1)                                                            \
     P(INT, environment,                                                                    \
-      "the scene's environment as this many directional lights too (lightprobe's "        \
-      "uniform directions, each its share of the probe; 0 = none), so that rsm bounces "   \
-      "the sky or probe; an rsm reading these maps needs the same own and environment",   \
+      "the scene's environment as this many directional lights too (a probe's drawn "     \
+      "through its brightness, a quarter uniform, as lightprobe sampling=importance "      \
+      "uniform_share=0.25; a constant sky's uniform; each its share of the probe; 0 = "    \
+      "none), so that rsm bounces the sky or probe; an rsm reading these maps needs the "  \
+      "same own and environment",                                                          \
       .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)  \
     P(ENUM, fit,                                                                           \
       "a directional light's map over the scene's bounding sphere, or over what the "     \

@@ -15,6 +15,9 @@
  *   area; the faces follow the own lights' and carry lightprobe's uniform directions; a
  *   scene without environment light leaves them empty; own=false with no environment
  *   lights is refused;
+ * - under a probe (an image) the environment lights are drawn through its brightness, a
+ *   quarter of them the uniform set: a small bright patch gets most of them, the dim rest
+ *   still its own, and their irradiances still add up to the probe's integral;
  * - the maps do not depend on the thread count. */
 #include <math.h>
 #include <omp.h>
@@ -23,6 +26,9 @@
 #include "check.h"
 #include "light_maps.h"
 #include "common/env_lights.h"
+#include "io/imageio.h"
+#include "scene/env.h"
+#include "scene_node.h"
 
 static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0};
 
@@ -176,7 +182,7 @@ static void test_environment(void)
     CHECK_EQ(ssg_lightmap_face_count(s, both), N + 1);
     CHECK_EQ(ssg_lightmap_faces(s, both, faces, N + 1), N + 1);
     float dirs[3 * N];
-    ssg_lightmap_env_directions(N, dirs);
+    ssg_lightmap_env_directions(s, N, dirs);
     CHECK_EQ(faces[0].light, 0);
     int bad = 0;
     for (int k = 0; k < N; k++) { /* face k + 1 looks along -d_k, light k */
@@ -222,6 +228,74 @@ static void test_environment(void)
     free(params);
     ssg_scene_destroy(&s);
     ssg_scene_destroy(&dark);
+}
+
+/* A 64 x 32 probe of radiance 0.1 with a patch of 100 over texels [px, px + 8) x [py, py
+   + 4) (about 1.3 % of the sphere, 93 % of its light). */
+enum { PROBE_W = 64, PROBE_H = 32, PATCH_X = 16, PATCH_Y = 13 };
+
+static int in_patch(const float d[3])
+{
+    float u, v;
+    ssg_env_latlong(d, &u, &v);
+    int x = (int)(u * PROBE_W), y = (int)(v * PROBE_H);
+    return x >= PATCH_X && x < PATCH_X + 8 && y >= PATCH_Y && y < PATCH_Y + 4;
+}
+
+static void test_environment_probe(void)
+{
+    struct ssg_image *p = ssg_image_create(PROBE_W, PROBE_H, 3);
+    for (int c = 0; c < 3; c++)
+        for (int y = 0; y < PROBE_H; y++)
+            for (int x = 0; x < PROBE_W; x++)
+                p->data[(c * PROBE_H + y) * PROBE_W + x] =
+                    x >= PATCH_X && x < PATCH_X + 8 && y >= PATCH_Y && y < PATCH_Y + 4 ? 100.0f
+                                                                                      : 0.1f;
+    struct ssg_exr_layer layer = {.image = p, .kind = SSG_LAYER_COLOR};
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_exr_write(scene_node_path("lightmaps_patch.exr"), &layer, 1, &d), SSG_OK);
+    ssg_image_destroy(&p);
+    struct ssg_scene *s = scene_from_text(
+        "lightmaps_probe", "camera(position=[0, 2, 3], target=[0, 0, 0])\n"
+                           "plane(center=[0, 0, 0], normal=[0, 1, 0], size=[2, 0, 2])\n"
+                           "environment(image=\"lightmaps_patch.exr\")\n");
+    if (!s)
+        return;
+    enum { N = 48 };
+    const struct ssg_lightmap_sources env = {0, N, 1};
+    struct ssg_lightmap_face faces[N];
+    CHECK_EQ(ssg_lightmap_faces(s, env, faces, N), N);
+    float dirs[3 * N], fib[3 * N];
+    ssg_lightmap_env_directions(s, N, dirs);
+    ssg_env_lights_fibonacci(N, fib);
+    int bad = 0, patch = 0, uniform_patch = 0;
+    for (int k = 0; k < N; k++) {
+        for (int c = 0; c < 3; c++) /* the faces look along the same directions */
+            bad += fabsf(faces[k].axis[c] + dirs[3 * k + c]) > 1e-6f;
+        patch += in_patch(dirs + 3 * k);
+        uniform_patch += in_patch(fib + 3 * k);
+    }
+    CHECK_EQ(bad, 0);
+    /* the last 12 (a quarter) are the uniform set of 12: the dim sky keeps lights */
+    float twelve[3 * 12];
+    ssg_env_lights_fibonacci(12, twelve);
+    for (int k = 0; k < 12 * 3; k++)
+        bad += fabsf(dirs[3 * (N - 12) + k] - twelve[k]) > 1e-6f;
+    CHECK_EQ(bad, 0);
+    double e[3 * N], total = 0, integral = 0;
+    CHECK_EQ(ssg_env_lights_regions(s->env, dirs, N, e), SSG_OK);
+    for (int k = 0; k < N; k++)
+        total += e[3 * k];
+    for (int y = 0; y < PROBE_H; y++) /* the probe's integral: radiance x texel solid angle */
+        integral += (2 * M_PI / PROBE_W) * (cos(M_PI * y / PROBE_H) - cos(M_PI * (y + 1) / PROBE_H)) *
+                    (PROBE_W * 0.1 + (y >= PATCH_Y && y < PATCH_Y + 4 ? 8 * (100 - 0.1) : 0));
+    fprintf(stderr, "a bright patch under 48 environment lights: %d in it (uniform: %d); "
+            "the E_i sum to %.4f of the probe's integral\n", patch, uniform_patch,
+            total / integral);
+    CHECK(patch >= 24); /* 36 drawn through the probe, 93 % of whose light is the patch's */
+    CHECK(uniform_patch <= 2);
+    CHECK_NEAR(total / integral, 1.0, 1e-3);
+    ssg_scene_destroy(&s);
 }
 
 static void test_bounds(void)
@@ -291,6 +365,7 @@ int main(void)
     test_closed_box();
     test_no_lights_and_dark_light();
     test_environment();
+    test_environment_probe();
     test_bounds();
     test_threads();
     return check_report();
