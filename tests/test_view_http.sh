@@ -91,6 +91,16 @@ grep -q '"last_run":"preview"' "$TMP/body" || fail "a drag did not run the previ
 [ "$(client size img.out)" = "96 54 3" ] || fail "full image after a drag: $(client size img.out)"
 expect_code 200 -H "$H" -d "$cam&preview=0" "$B/api/camera"
 [ "$(client size img.out)" = "96 54 3" ] || fail "full image is $(client size img.out)"
+# a drag's last preview fetch, late behind the full-size run of the same camera, gets the
+# full image and runs nothing: running the preview again made every drag end on it (issue 46)
+gen=$(client state generation)
+expect_code 200 -H "$H" -d "$cam&preview=1" "$B/api/camera"
+expect_code 200 -H "$H" -d "$cam&preview=0" "$B/api/camera"
+gen=$(client state generation)
+[ "$(client size img.out 1)" = "96 54 3" ] ||
+    fail "a preview asked for after the full run is $(client size img.out 1), not the full image"
+[ "$(client state generation)" = "$gen" ] && [ "$(client state last_run)" = full ] ||
+    fail "a late preview fetch ran the graph again: run $(client state generation) ($(client state last_run))"
 expect_code 400 -H "$H" -d "position=0,1,0&target=0,1,0&up=0,1,0&fov=40" "$B/api/camera"
 expect_code 400 -H "$H" -d "position=0,1&fov=40" "$B/api/camera"
 expect_code 200 -H "$H" "$B/api/metrics?ref=u.out&a=u.out&b=g.depth"

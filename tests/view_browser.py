@@ -349,6 +349,34 @@ def step_slider(drv):
         fail(f"the diagram's labels {labels} disagree with the nodes that ran {sorted(ran)}")
 
 
+def step_slider_drag(drv):
+    """A 2 s slider drag sends while the hand moves (issue 46: the 60 ms timer was re-armed
+    on every input event, so nothing went out until the hand paused). The drag is the input
+    events a real one fires, one every 20 ms for 2 s, dispatched in the page (WebDriver's
+    own pointer moves are 100-300 ms apart, slow enough for a debounce to fire between
+    them); runs must arrive before it ends."""
+    wait_for(drv, "no set on its way", lambda d: not d.find_element(By.ID, "busy").is_displayed())
+    drv.set_script_timeout(WAIT)
+    during = drv.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        const s = document.getElementById('param-do-radius-slider');
+        const gen = () => +document.getElementById('generation').textContent;
+        const g0 = gen(), v0 = +s.value;
+        let i = 0;
+        const t = setInterval(() => {
+          i++;
+          s.value = String(v0 - 20 + Math.abs((i % 40) - 20)); // back and forth, 20 steps
+          s.dispatchEvent(new Event('input', { bubbles: true }));
+          if (i === 100) { clearInterval(t); done(gen() - g0); }
+        }, 20);""")
+    if during < 2:
+        fail(f"a 2 s slider drag ran the graph {during} times before it ended: the slider "
+             "must send while it moves")
+    wait_for(drv, "the drag's last set to finish",
+             lambda d: not d.find_element(By.ID, "busy").is_displayed())
+    print(f"slider drag: {during} runs during 2 s of input events", flush=True)
+
+
 def step_checkbox(drv):
     """A bool parameter's checkbox sends its value (do.bounce off, then on again)."""
     box = drv.find_element(By.ID, "param-do-bounce")
@@ -378,6 +406,30 @@ def step_camera(drv):
              not d.find_element(By.ID, "busy").is_displayed())
     wait_for(drv, "the canvas to change after the orbit",
              lambda d: d.execute_script(CANVAS_HASH) != before)
+    # a drag ends on the full image: a late preview fetch must not run the preview again and
+    # win (issue 46). A hand lets go right after its last move, while that move's preview is
+    # on its way: mouse events through the DevTools protocol, milliseconds apart (WebDriver's
+    # own are 100-300 ms apart, time enough for every preview to land before the release).
+    r = canvas.rect
+    x, y = int(r["x"] + r["width"] / 2), int(r["y"] + r["height"] / 2)
+    mouse = lambda kind, dx, **kw: drv.execute_cdp_cmd("Input.dispatchMouseEvent", dict(
+        type=kind, x=x + dx, y=y, button="left", clickCount=1, **kw))
+    mouse("mousePressed", 0)
+    for i in range(1, 13):
+        mouse("mouseMoved", 3 * i, buttons=1)
+        time.sleep(0.016)
+    mouse("mouseReleased", 36)
+    wait_for(drv, "the full-size run after the quick drag",
+             lambda d: text(d, "last-run") == "full" and
+             not d.find_element(By.ID, "busy").is_displayed())
+    # the page polls every 0.5 s, so 2 s shows any run after the full one
+    gen = generation(drv)
+    time.sleep(2)
+    shown = canvas.get_attribute("data-shown") or ""
+    if text(drv, "last-run") != "full" or generation(drv) != gen or \
+            not shown.startswith(SIZE + " ") or "preview" in shown:
+        fail(f"after the drag the page settled on run {generation(drv)} "
+             f"({text(drv, 'last-run')}), showing '{shown}': expected the full {SIZE} image")
     if "g" not in ran_nodes(drv):
         fail(f"a camera move did not re-run the G-buffer: {sorted(ran_nodes(drv))}")
     before = drv.execute_script(CANVAS_HASH)
@@ -524,7 +576,8 @@ def main():
             chromium.kill()
         return 1
     try:
-        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider, step_checkbox, step_camera,
+        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider,
+                     step_slider_drag, step_checkbox, step_camera,
                      step_display, step_ab, step_errors, step_save):
             t0 = time.time()
             step(drv)

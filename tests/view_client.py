@@ -1,7 +1,7 @@
 """view_client.py - the HTTP side of `ssgraph view` from outside, for tests/test_view_http.sh:
 small commands over urllib (no third-party module), each printing what the shell test checks.
 
-  view_client.py BASE TOKEN state                  -> the state JSON, pretty
+  view_client.py BASE TOKEN state [KEY]            -> the state JSON, pretty (KEY: that field)
   view_client.py BASE TOKEN ran                    -> the names of the nodes that ran, sorted
   view_client.py BASE TOKEN param NODE PARAM       -> its current value
   view_client.py BASE TOKEN dump PORT OUT.pfm [preview] -> writes the port's image as a PFM
@@ -50,7 +50,9 @@ def write_pfm(path, w, h, c, pixels):
 
 def main(argv):
     base, token, cmd = argv[1], argv[2], argv[3]
-    if cmd == "state":
+    if cmd == "state" and len(argv) > 4:
+        print(state(base, token)[argv[4]])
+    elif cmd == "state":
         print(json.dumps(state(base, token), indent=1))
     elif cmd == "ran":
         print(" ".join(sorted(n["name"] for n in state(base, token)["nodes"] if n["ran"])))

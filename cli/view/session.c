@@ -228,6 +228,12 @@ enum ssg_err view_session_frame(struct view_session *s, int frame, struct ssg_di
 enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,
                                 struct ssg_image **out, struct ssg_diags *d)
 {
+    /* A preview asked for once the full graph has run for the same camera (a drag's last
+       fetch, late behind the full-size run) gets the full image: running the preview again
+       would replace the finer, newer picture with a coarse one, and every drag ended on the
+       preview (issue 46). */
+    if (preview && s->preview_stale && !s->full_stale)
+        preview = 0;
     struct ssg_graph *g = preview && s->preview ? s->preview : s->g;
     struct ssg_image *img = NULL, *copy = NULL;
     *out = NULL;

@@ -52,11 +52,19 @@ async function onRunAnswer(body, resp) {
 }
 const setSender = new LatestSender('/api/set', onRunAnswer);
 
-let debounce = null;
+// A throttle, not a debounce: a slider's first move is sent at once and then the latest value
+// at most every `delay` ms while it moves (a debounce re-armed on every input event sent
+// nothing until the hand paused: 4 requests in a 2.75 s drag, issue 46). The sender keeps
+// one request in flight and sends only the latest value when it returns.
+let throttle = null, lastSent = -Infinity, latest = null;
 function sendParam(node, param, value, delay) {
-  clearTimeout(debounce);
-  const go = () => setSender.send(`${node}.${param}`, `${node}.${param}=${value}`);
-  if (delay) debounce = setTimeout(go, delay); else go();
+  latest = () => { lastSent = performance.now(); latest = null;
+    setSender.send(`${node}.${param}`, `${node}.${param}=${value}`); };
+  if (!delay) { clearTimeout(throttle); throttle = null; latest(); return; }
+  if (throttle) return; // the armed timer sends the latest value
+  const wait = lastSent + delay - performance.now();
+  if (wait <= 0) latest();
+  else throttle = setTimeout(() => { throttle = null; if (latest) latest(); }, wait);
 }
 
 // ---- node and port choice ---------------------------------------------------------------

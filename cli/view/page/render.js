@@ -29,6 +29,9 @@ function drawCanvas(f) {
   const cv = $('view');
   if (cv.width !== f.W || cv.height !== f.H) { cv.width = f.W; cv.height = f.H; drawn = null; }
   if (sameFrame(f, drawn)) return;
+  // what A is, for a reader of the page (and its tests): the run and the image's size, which
+  // is half the frame's for a drag's preview
+  cv.dataset.shown = f.a ? `${f.a.w}x${f.a.h} run ${f.a.gen}${f.a.preview ? ' preview' : ''}` : '';
   if (!view) view = new ImageView(cv, () => { drawn = null; scheduleRender(); });
   view.draw(f);
   drawn = f;

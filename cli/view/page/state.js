@@ -38,9 +38,15 @@ export function receive(st) {
   return newRun;
 }
 
-// The fetched images of a run, by port (the others stay until replaced).
+// The fetched images of a run, by port (the others stay until replaced). An image of an
+// older run than the one a port shows is dropped: a fetch that left before the last run
+// answers after it (a drag's last preview behind the full-size run, issue 46).
 export function storeImages(byPort) {
-  for (const [port, img] of byPort) s.images.set(port, img);
+  for (const [port, img] of byPort) {
+    const shown = s.images.get(port);
+    if (shown && shown.gen > img.gen) continue;
+    s.images.set(port, img);
+  }
   changed('images');
 }
 
