@@ -99,6 +99,9 @@ struct ssg_port_info {
     int channels;       /* an output's channels (0 when not known yet) */
     int width, height;  /* an output's size on a loaded graph (0 before) */
     char from[128];     /* input: the producer's "node.port" as written; "" = unconnected */
+    int has_image;      /* output: a kept graph (ssg_graph_keep) holds its latest image, so
+                           ssg_graph_output hands it out; 0 before a run, for a node that is
+                           not live, and for an on-demand output nothing read */
 };
 /* How many ports node `index` has (0 out of range or for an unknown type). */
 SSG_API int ssg_graph_port_count(const struct ssg_graph *graph, int index);

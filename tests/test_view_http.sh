@@ -82,6 +82,12 @@ grep -q 'ssdo_realtime.graph:[0-9]*:[0-9]*: error: do.radius=-3: .*radius.*expec
 expect_code 400 -H "$H" -d "nosuch.radius=1" "$B/api/set"
 expect_code 400 -H "$H" -d "no equals sign" "$B/api/set"
 
+# which outputs the last run made: an on-demand output nothing reads has no image (the page
+# marks it and opens on an output that has one, issue 46)
+client images > "$TMP/images"
+grep -qx "g.position true" "$TMP/images" && grep -qx "g.motion false" "$TMP/images" ||
+    fail "the state's output images: $(tr '\n' ' ' < "$TMP/images")"
+
 # --- camera, metrics, diagram
 cam="position=0,1,3.5&target=0,1,0&up=0,1,0&fov=40"
 expect_code 200 -H "$H" -d "$cam&preview=1" "$B/api/camera"

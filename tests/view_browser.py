@@ -153,6 +153,13 @@ def step_load(drv):
         fail(f"header graph is '{text(drv, 'hdr-graph')}'")
     if text(drv, "hdr-size") != SIZE:
         fail(f"header size is '{text(drv, 'hdr-size')}'")
+    # the page opens on an output the run made, and marks those it did not (issue 46: the
+    # tutorial's graph opened on c.flip, which nothing reads: a black canvas and an error)
+    sel = Select(drv.find_element(By.ID, "port-a"))
+    labels = [o.text for o in sel.options]
+    if "(not computed)" in sel.first_selected_option.text or \
+            "g.motion (not computed)" not in labels:
+        fail(f"port A opened on '{sel.first_selected_option.text}' of {labels}")
     shot(drv, "overview")
 
 

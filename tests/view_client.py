@@ -3,6 +3,8 @@ small commands over urllib (no third-party module), each printing what the shell
 
   view_client.py BASE TOKEN state [KEY]            -> the state JSON, pretty (KEY: that field)
   view_client.py BASE TOKEN ran                    -> the names of the nodes that ran, sorted
+  view_client.py BASE TOKEN images                 -> "NODE.PORT true|false" a line: whether
+                                                      the last run made the output's image
   view_client.py BASE TOKEN param NODE PARAM       -> its current value
   view_client.py BASE TOKEN dump PORT OUT.pfm [preview] -> writes the port's image as a PFM
                                                          (oiiotool reads it)
@@ -54,6 +56,10 @@ def main(argv):
         print(state(base, token)[argv[4]])
     elif cmd == "state":
         print(json.dumps(state(base, token), indent=1))
+    elif cmd == "images":
+        for n in state(base, token)["nodes"]:
+            for o in n["outputs"]:
+                print("%s.%s %s" % (n["name"], o["port"], "true" if o["image"] else "false"))
     elif cmd == "ran":
         print(" ".join(sorted(n["name"] for n in state(base, token)["nodes"] if n["ran"])))
     elif cmd == "param":

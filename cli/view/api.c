@@ -93,8 +93,9 @@ static void json_ports(FILE *f, const struct ssg_graph *g, int node, int outputs
         ssg_json_string(f, p.name);
         fputs(",\"type\":", f);
         ssg_json_string(f, p.type);
-        if (outputs) {
-            fprintf(f, ",\"channels\":%d}", p.channels);
+        if (outputs) { /* image: the last run has it (an unread on-demand output has not) */
+            fprintf(f, ",\"channels\":%d,\"image\":%s}", p.channels,
+                    p.has_image ? "true" : "false");
             continue;
         }
         fprintf(f, ",\"optional\":%s,\"from\":", p.optional ? "true" : "false");

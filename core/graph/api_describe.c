@@ -86,5 +86,6 @@ enum ssg_err ssg_graph_port_inspect(const struct ssg_graph *g, int index, int k,
     info->channels = s->channels ? s->channels : ssg_type_channels(type);
     info->width = s->width;
     info->height = s->height;
+    info->has_image = ssg_graph_output_kept(g, index, k);
     return SSG_OK;
 }

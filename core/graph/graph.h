@@ -232,6 +232,9 @@ enum ssg_err ssg_graph_apply_set(struct ssg_graph *g, const char *text,
                                  struct ssg_diags *diags);
 /* Index of the node with that name, or -1. */
 int ssg_graph_find(const struct ssg_graph *g, const char *name, size_t len);
+/* Whether output k of node `node` has a current image a kept graph hands out
+   (ssg_graph_output): the node live and run, its image kept. */
+int ssg_graph_output_kept(const struct ssg_graph *g, int node, int k);
 /* Adds node `index` (named) to the name table, growing it to keep it at most half full;
  * 0 when out of memory. */
 int ssg_graph_name_add(struct ssg_graph *g, int index);

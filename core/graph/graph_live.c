@@ -28,6 +28,14 @@ int ssg_live_init(struct ssg_live *l, int count)
     return l->pool && l->consts && l->scratch && l->prepared && l->kept && l->why;
 }
 
+int ssg_graph_output_kept(const struct ssg_graph *g, int node, int k)
+{
+    int p = 0;
+    while (p < g->order_count && g->order[p] != node)
+        p++;
+    return g->live && p < g->order_count && g->live->kept[p] && g->nodes[node].out_img[k];
+}
+
 enum ssg_err ssg_graph_keep(struct ssg_graph *g, size_t max_bytes, struct ssg_diags *diags)
 {
     if (ssg_api_null(diags, "ssg_graph_keep", "graph", 1, g))
@@ -293,16 +301,13 @@ enum ssg_err ssg_graph_output(struct ssg_graph *g, const char *port, struct ssg_
                       "(expected node.port of a node's output)", port);
         return SSG_E_UNKNOWN_NAME;
     }
-    int p = 0;
-    while (p < g->order_count && g->order[p] != i)
-        p++;
-    const struct ssg_image *im = n->out_img[k];
-    if (!g->live || p == g->order_count || !g->live->kept[p] || !im) {
+    if (!ssg_graph_output_kept(g, i, k)) {
         ssg_diag_file(diags, SSG_E_USAGE, g->path, "'%s' has no current image: keep the "
                       "run state (ssg_graph_keep) and run the graph first (the node must "
                       "be live, and its output read or kept)", port);
         return SSG_E_USAGE;
     }
+    const struct ssg_image *im = n->out_img[k];
     double ms = 0;
     enum ssg_err e = SSG_OK;
     if (im->gpu && !(e = ssg_gl_open(diags))) {

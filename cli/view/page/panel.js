@@ -28,18 +28,26 @@ export function showHeader(st) {
   se.hidden = !st.error;
 }
 
-function fillSelect(sel, values) {
-  if ([...sel.options].map((o) => o.value).join() !== values.join()) {
-    sel.replaceChildren(...values.map((v) => new Option(v, v)));
+// options: [{value, label}]
+function fillSelect(sel, options) {
+  const key = (o) => `${o.value}\t${o.label}`;
+  if ([...sel.options].map((o) => `${o.value}\t${o.text}`).join() !== options.map(key).join()) {
+    sel.replaceChildren(...options.map((o) => new Option(o.label, o.value)));
   }
 }
 
-// Every output of the graph in the port lists; returns {a, b, ref}: the ports shown so far
-// where they still exist, else the last output.
+// Every output of the graph in the port lists, those the last run did not make marked (an
+// on-demand output nothing reads, such as compare's flip map with nothing downstream);
+// returns {a, b, ref}: the ports shown so far where they still exist, else the last output
+// that has an image (the tutorial's sweep.graph opened on c.flip, a black canvas and an
+// error, issue 46).
 export function portChoices(st) {
-  const ports = st.nodes.flatMap((n) => n.outputs.map((o) => `${n.name}.${o.port}`));
-  const last = ports[ports.length - 1] || '';
-  for (const id of ['port-a', 'port-b', 'port-ref']) fillSelect($(id), ports);
+  const outs = st.nodes.flatMap((n) => n.outputs.map((o) => ({ value: `${n.name}.${o.port}`,
+    label: `${n.name}.${o.port}${o.image === false ? ' (not computed)' : ''}`,
+    image: o.image !== false })));
+  const ports = outs.map((o) => o.value), made = outs.filter((o) => o.image);
+  const last = made.length ? made[made.length - 1].value : ports[ports.length - 1] || '';
+  for (const id of ['port-a', 'port-b', 'port-ref']) fillSelect($(id), outs);
   const keep = (p) => (ports.includes(p) ? p : last);
   const p = state.ports;
   return { a: keep(p.a), b: keep(p.b), ref: keep(p.ref) };
