@@ -153,6 +153,8 @@ def step_load(drv):
         fail(f"header graph is '{text(drv, 'hdr-graph')}'")
     if text(drv, "hdr-size") != SIZE:
         fail(f"header size is '{text(drv, 'hdr-size')}'")
+    if text(drv, "hdr-backend") not in ("cpu", "gl", "cpu + gl"):
+        fail(f"header backend is '{text(drv, 'hdr-backend')}': expected what the nodes ran on")
     # the page opens on an output the run made, and marks those it did not (issue 46: the
     # tutorial's graph opened on c.flip, which nothing reads: a black canvas and an error)
     sel = Select(drv.find_element(By.ID, "port-a"))
@@ -484,6 +486,33 @@ def metric(drv, which, port):
     return (float(m.group(1)), float(m.group(2))) if m else None
 
 
+def canvas_colours(drv):
+    px = base64.b64decode(drv.execute_script(CANVAS_BYTES)[2])
+    return {px[i:i + 3] for i in range(0, len(px), 4)}
+
+
+def step_range(drv):
+    """A one-channel port of values far from [0, 1] (g.depth, 3-5 units) in false colour:
+    with range auto it spreads over the scale and the toolbar names its ends; over [0, 1]
+    it is one solid colour (issue 46)."""
+    Select(drv.find_element(By.ID, "port-a")).select_by_value("g.depth")
+    set_display(drv, 0, "clamp", "viridis")
+    fire = "const el = document.getElementById('range'); el.value = arguments[0]; " \
+           "el.dispatchEvent(new Event('change'));"
+    drv.execute_script(fire, "auto")
+    ends = wait_for(drv, "the false colour's range in the toolbar", lambda d: re.fullmatch(
+        r"([-0-9.e+]+) \.\. ([-0-9.e+]+)", text(d, "range-val")))
+    if ends and not 0 < float(ends.group(1)) < float(ends.group(2)):
+        fail(f"g.depth's auto range is '{text(drv, 'range-val')}'")
+    wait_for(drv, "g.depth spread over viridis", lambda d: len(canvas_colours(d)) >= 16)
+    drv.execute_script(fire, "unit")
+    wait_for(drv, "g.depth over [0, 1]: one colour on the surfaces",
+             lambda d: len(canvas_colours(d)) <= 3 and text(d, "range-val") == "0 .. 1")
+    shot(drv, "range")
+    drv.execute_script(fire, "auto")
+    Select(drv.find_element(By.ID, "port-a")).select_by_value("img.out")
+
+
 def step_ab(drv):
     """A = img.out, B = g.direct against the reference g.direct: B is exact, A's error
     changes when the radius changes."""
@@ -585,7 +614,7 @@ def main():
     try:
         for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider,
                      step_slider_drag, step_checkbox, step_camera,
-                     step_display, step_ab, step_errors, step_save):
+                     step_display, step_range, step_ab, step_errors, step_save):
             t0 = time.time()
             step(drv)
             print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)

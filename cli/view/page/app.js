@@ -148,6 +148,7 @@ function wireDisplay() {
   $('channel').onchange = () => setDisplay({ channel: $('channel').value });
   $('colormap').onchange = () => setDisplay({ colormap: $('colormap').value });
   $('tonemap').onchange = () => setDisplay({ curve: $('tonemap').value });
+  $('range').onchange = () => setDisplay({ range: $('range').value });
 }
 
 // The port lists and the A/B view: each sets its field of state.ports.

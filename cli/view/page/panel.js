@@ -18,7 +18,11 @@ export function showHeader(st) {
   $('hdr-scene').textContent = st.scene ? base(st.scene) : '(none)';
   $('hdr-scene').title = st.scene;
   $('hdr-size').textContent = `${st.size[0]}x${st.size[1]}`;
-  $('hdr-backend').textContent = st.backend;
+  // the backends the nodes ran on ("cpu", "cpu + gl"), not the run's choice ("graph" meant
+  // each node as the graph file says, and read as a backend named graph, issue 46)
+  const backends = [...new Set(st.nodes.map((n) => n.backend).filter(Boolean))].sort();
+  $('hdr-backend').textContent = backends.length ? backends.join(' + ') : st.backend;
+  $('hdr-backend').title = `--backend ${st.backend}`;
   $('frame-ms').textContent = fmt(st.frame_ms);
   $('total-ms').textContent = fmt(st.total_ms);
   $('last-run').textContent = st.last_run;

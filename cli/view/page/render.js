@@ -4,7 +4,7 @@
 // a mutation of the state asks for a render, and the renders asked for within one animation
 // frame are one render.
 import { state } from './state.js';
-import { ImageView } from './tonemap.js';
+import { channelRange, ImageView, shownChannel } from './tonemap.js';
 import { $, showRequestError } from './ui.js';
 
 let view = null, queued = false, drawn = null;
@@ -18,9 +18,27 @@ export function scheduleRender() {
 // What the canvas shows, from the state; the canvas is drawn again only when this changes.
 function frameOf(st) {
   const p = state.ports, [W, H] = st.size;
+  const a = state.images.get(p.a) || null;
   const b = p.ab ? state.images.get(p.b) || null : null;
-  return { W, H, a: state.images.get(p.a) || null, b, ab: p.ab ? p.mode : 'none',
-    splitX: Math.round(state.divider * W), display: state.display };
+  const [lo, hi] = falseColourRange(a, p.ab && p.mode === 'split' ? b : null, state.display);
+  return { W, H, a, b, ab: p.ab ? p.mode : 'none', splitX: Math.round(state.divider * W),
+    display: state.display, rangeLo: lo, rangeScale: hi > lo ? 1 / (hi - lo) : 1 };
+}
+
+// The values false colour spreads over its scale: [0, 1], or with range auto the shown
+// channel's minimum to maximum over A (and B beside it in a split, so both sides share one
+// scale), 0s left out (channelRange). A depth of 3-5 units over [0, 1] was one solid colour
+// (issue 46).
+function falseColourRange(a, b, d) {
+  if (d.range !== 'auto' || d.colormap !== 'viridis') return [0, 1];
+  let lo = Infinity, hi = -Infinity;
+  for (const img of [a, b]) {
+    const ch = img ? shownChannel(img, d) : -1;
+    if (ch < 0) continue;
+    const [l, h] = channelRange(img, ch);
+    lo = Math.min(lo, l); hi = Math.max(hi, h);
+  }
+  return lo <= hi ? [lo, hi] : [0, 1];
 }
 
 const sameFrame = (f, g) => g && Object.keys(f).every((k) => f[k] === g[k]);
@@ -66,6 +84,12 @@ function showControls() {
   $('ab-enable').checked = p.ab;
   if (+$('exposure').value !== d.stops) $('exposure').value = String(d.stops);
   $('exposure-val').textContent = d.stops.toFixed(1);
+  if ($('range').value !== d.range) $('range').value = d.range;
+  // the false colour's scale: the values at its two ends (exposure scales it)
+  const f = drawn, g = 2 ** d.stops;
+  const shows = f && f.a && d.colormap === 'viridis' && shownChannel(f.a, d) >= 0;
+  $('range-val').textContent = shows
+    ? `${fmtValue(f.rangeLo)} .. ${fmtValue(f.rangeLo + 1 / (f.rangeScale * g))}` : '';
   $('ab-labels').hidden = !p.ab;
   $('ab-label-a').textContent = p.mode === 'diff' ? `|A - B|  A ${p.a}` : `A ${p.a}`;
   $('ab-label-b').textContent = `B ${p.b}`;
@@ -101,3 +125,7 @@ function showPixel() {
   const vals = [...img.data.subarray(base, base + img.c)].map((v) => v.toPrecision(5));
   $('pixel').textContent = `${port}  x,y ${x},${y}${img.preview ? ' (preview)' : ''}: ${vals.join(', ')}`;
 }
+
+// A value of the false colour's scale, short.
+const fmtValue = (v) => (v === 0 ? '0' : Math.abs(v) >= 1e4 || Math.abs(v) < 1e-3
+  ? v.toExponential(2) : String(parseFloat(v.toPrecision(4))));

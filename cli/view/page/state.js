@@ -9,7 +9,8 @@ const s = {
   selected: null,     // the selected node's name
   images: new Map(),  // port -> {w, h, c, gen, preview, data: Float32Array} (image.js)
   ports: Object.freeze({ a: '', b: '', ref: '', ab: false, mode: 'split' }),
-  display: Object.freeze({ stops: 0, curve: 'clamp', channel: 'rgb', colormap: 'viridis' }),
+  display: Object.freeze({ stops: 0, curve: 'clamp', channel: 'rgb', colormap: 'viridis',
+    range: 'auto' }),
   divider: 0.5,       // the A/B divider as a fraction of the width
   cam: null,          // the camera the page is driving (a copy of server.camera)
   steering: false,    // a drag or a wheel burst moves cam: the server's camera waits
@@ -50,7 +51,7 @@ export function storeImages(byPort) {
   changed('images');
 }
 
-// How the floats are shown: any of {stops, curve, channel, colormap}.
+// How the floats are shown: any of {stops, curve, channel, colormap, range: 'auto'|'unit'}.
 export function setDisplay(patch) {
   s.display = Object.freeze({ ...s.display, ...patch });
   changed('display');

@@ -27,6 +27,7 @@ uniform highp sampler2D viridis;        // 256x1, entry floor(255 v) for v in [0
 uniform ivec2 frame;                    // the canvas in pixels (the full frame size)
 uniform int splitX;                     // AB_SPLIT: B from this column on
 uniform float gain;                     // 2^stops
+uniform vec2 range;                     // false colour shows (v - range.x) range.y
 out vec4 colour;
 
 // ssg_tonemap_scaled: capped at 1e4 so the rational curves never see inf/inf.
@@ -49,9 +50,10 @@ float code(float v) {
   return clamp(floor(s * 255.0 + 0.5), 0.0, 255.0) / 255.0;
 }
 
-// The exposure-scaled value in [0, 1] through the viridis table.
+// The value mapped by the range (auto: the shown channel's minimum to maximum, else [0, 1])
+// and scaled by the exposure, in [0, 1] through the viridis table.
 vec3 falseColour(float v) {
-  v *= gain;
+  v = (v - range.x) * range.y * gain;
   int k = !(v > 0.0) ? 0 : v >= 1.0 ? 255 : int(v * 255.0);
   return texelFetch(viridis, ivec2(k, 0), 0).rgb;
 }
@@ -93,7 +95,7 @@ function fragment(v) {
   if (v.ab !== AB.none) uniforms.push('imageB');
   if (v.ab === AB.split) uniforms.push('splitX');
   if (v.a.show === SHOW.falseColour || (v.ab === AB.split && v.b.show === SHOW.falseColour)) {
-    uniforms.push('viridis');
+    uniforms.push('viridis', 'range');
   }
   return { text, uniforms };
 }
@@ -106,6 +108,7 @@ const SETTERS = {
   frame: (gl, loc, f) => gl.uniform2i(loc, f.W, f.H),
   gain: (gl, loc, f) => gl.uniform1f(loc, 2 ** f.display.stops),
   splitX: (gl, loc, f) => gl.uniform1i(loc, f.splitX),
+  range: (gl, loc, f) => gl.uniform2f(loc, f.rangeLo, f.rangeScale),
 };
 
 // The page's names (state.js display) as the shader's numbers.
@@ -113,6 +116,36 @@ const CURVES = { clamp: 0, reinhard: 1, aces: 2 };
 const PICKS = { rgb: -1, r: 0, g: 1, b: 2, a: 3 };
 // Texture formats by channel count (an image of more channels shows its first four).
 const FORMATS = [null, ['R32F', 'RED'], ['RG32F', 'RG'], ['RGB32F', 'RGB'], ['RGBA32F', 'RGBA']];
+
+// The channel a side shows of an image: -1 its colour (the first three channels).
+export function shownChannel(img, d) {
+  const pick = PICKS[d.channel] ?? -1;
+  if (!img || (img.c > 1 && pick < 0)) return -1;
+  return img.c === 1 ? 0 : pick;
+}
+
+// [min, max] of channel ch over an image's finite values other than 0 ([0, 0] when it has
+// none): 0 is the background of every G-buffer port, and a depth's 0 beside surfaces at 3-5
+// units would squeeze them into half the scale. Counted once per image and channel: a new
+// image is the only time this loop runs.
+const ranges = new WeakMap();
+export function channelRange(img, ch) {
+  if (!ranges.has(img)) ranges.set(img, new Map());
+  const known = ranges.get(img);
+  if (!known.has(ch)) {
+    let lo = Infinity, hi = -Infinity;
+    if (ch < img.c) {
+      for (let i = ch; i < img.data.length; i += img.c) {
+        const v = img.data[i];
+        if (v === 0) continue;
+        if (v < lo) lo = v;
+        if (v > hi) hi = v; // NaN fails both tests
+      }
+    }
+    known.set(ch, lo <= hi && Number.isFinite(lo) && Number.isFinite(hi) ? [lo, hi] : [0, 0]);
+  }
+  return known.get(ch);
+}
 
 // What a side shows for an image (null: none yet, drawn black from the 1x1 zero texture).
 function sideOf(img, d) {
