@@ -145,6 +145,17 @@ def ran_nodes(drv):
     return set(text(drv, "ran-list").split())
 
 
+def server_state(drv):
+    """The server's /api/state as the page's cookie fetches it."""
+    drv.set_script_timeout(WAIT)
+    return drv.execute_async_script("""const done = arguments[arguments.length - 1];
+        fetch('/api/state', {credentials: 'same-origin'}).then((r) => r.json()).then(done,
+            (e) => done(null));""")
+
+
+HOME = {}  # the camera the graph opened with (step_load)
+
+
 def step_load(drv):
     drv.get(URL)
     wait_for(drv, "the diagram", lambda d: d.find_elements(By.CSS_SELECTOR, "#diagram g.node"))
@@ -162,6 +173,11 @@ def step_load(drv):
     if "(not computed)" in sel.first_selected_option.text or \
             "g.motion (not computed)" not in labels:
         fail(f"port A opened on '{sel.first_selected_option.text}' of {labels}")
+    st = server_state(drv)
+    if not st or not st.get("camera"):
+        fail(f"the state has no camera: {st}")
+    else:
+        HOME.update(st["camera"])
     shot(drv, "overview")
 
 
@@ -455,6 +471,20 @@ def step_camera(drv):
              lambda d: text(d, "last-run") == "full" and
              not d.find_element(By.ID, "busy").is_displayed())
     shot(drv, "camera")
+    # home (and key H) go back to the camera the graph opened with (issue 46: an orbit past
+    # the box's one-sided walls had no way back but a restart)
+    for press in (lambda: drv.find_element(By.ID, "cam-home").click(),
+                  lambda: ActionChains(drv).move_to_element(canvas).click()
+                  .send_keys("h").perform()):
+        ActionChains(drv).move_to_element(canvas).click_and_hold().move_by_offset(25, 0) \
+            .release().perform()
+        wait_for(drv, "the full-size run after a turn", lambda d: text(d, "last-run") == "full"
+                 and not d.find_element(By.ID, "busy").is_displayed())
+        press()
+        wait_for(drv, "the camera back home", lambda d: all(
+            abs(a - b) < 1e-5 for k in ("position", "target")
+            for a, b in zip((server_state(d) or {}).get("camera", {}).get(k, [9e9] * 3),
+                            HOME[k])))
 
 
 def step_display(drv):

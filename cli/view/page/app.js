@@ -4,7 +4,7 @@
 // controls: they change the state (state.js), and every change of the state draws the image
 // view through the one render path (render.js).
 import { fetchImage } from './image.js';
-import { countUpdate, dragging, wireMouse } from './mouse.js';
+import { countUpdate, dragging, goHome, wireMouse } from './mouse.js';
 import { api, errorText, LatestSender } from './net.js';
 import { enlargeDiagram, fillTimes, markDiagram, panelActions, portChoices,
   refreshParamValues, showDiagram, showHeader, showNode } from './panel.js';
@@ -173,7 +173,12 @@ function wire() {
   $('save-btn').onclick = saveVariant;
   $('diagram-expand').onclick = () => enlargeDiagram(true);
   $('diagram-close').onclick = () => enlargeDiagram(false);
-  document.addEventListener('keydown', (ev) => { if (ev.key === 'Escape') enlargeDiagram(false); });
+  $('cam-home').onclick = goHome;
+  document.addEventListener('keydown', (ev) => {
+    if (ev.key === 'Escape') enlargeDiagram(false);
+    const typing = ev.target.closest && ev.target.closest('input, select, textarea');
+    if ((ev.key === 'h' || ev.key === 'H') && !typing && !ev.ctrlKey && !ev.metaKey) goHome();
+  });
   $('save-name').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') saveVariant(); });
 }
 

@@ -90,6 +90,17 @@ function onWheel(ev) {
   wheelTimer = setTimeout(() => { steer(state.cam, false); sendCamera(false); }, 250);
 }
 
+// Back to the camera the graph opened with (the home button, key H): an orbit past the
+// one-sided walls of a box left no way back but a restart (issue 46).
+export function goHome() {
+  if (!state.home) {
+    $('cam-ups').textContent = 'camera: this graph has no camera';
+    return;
+  }
+  steer(structuredClone(state.home), false);
+  sendCamera(false);
+}
+
 // onRunAnswer(body, resp): what app.js does with the answer to a camera request.
 export function wireMouse(onRunAnswer) {
   camSender = new LatestSender('/api/camera', onRunAnswer);

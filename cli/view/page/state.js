@@ -13,6 +13,7 @@ const s = {
     range: 'auto' }),
   divider: 0.5,       // the A/B divider as a fraction of the width
   cam: null,          // the camera the page is driving (a copy of server.camera)
+  home: null,         // the camera the graph opened with (the home button goes back to it)
   steering: false,    // a drag or a wheel burst moves cam: the server's camera waits
   pointer: null,      // the last {clientX, clientY} over the canvas (pixel readout)
 };
@@ -32,6 +33,11 @@ function changed(what) { for (const fn of listeners) fn(what); }
 // steering, so a slow answer never makes a drag jump back. Returns whether it is a new run.
 export function receive(st) {
   const newRun = st.generation !== s.gen;
+  // home: the first camera of this graph and scene (a reload of another scene starts over)
+  if (st.camera && (!s.home || !s.server || s.server.scene !== st.scene ||
+                    s.server.graph !== st.graph)) {
+    s.home = structuredClone(st.camera);
+  }
   s.server = st;
   s.gen = st.generation;
   if (!s.steering && st.camera) s.cam = structuredClone(st.camera);
