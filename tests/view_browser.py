@@ -570,12 +570,16 @@ def step_ab(drv):
     wait_for(drv, "|img.out - img.out| black", lambda d: not any(
         v for i, v in enumerate(base64.b64decode(d.execute_script(CANVAS_BYTES)[2])) if i % 4 != 3))
     Select(drv.find_element(By.ID, "ab-mode")).select_by_value("split")
+    # the numbers go with the A/B view (issue 46: an old metric stayed on screen)
+    drv.find_element(By.ID, "ab-enable").click()
+    wait_for(drv, "the metrics cleared with A/B off", lambda d: text(d, "metrics") == "metrics: -")
 
 
 def step_errors(drv):
     """A bad value shows the server's file:line:col message; the file watcher's reload
     error shows and clears when the file is good again."""
     box = drv.find_element(By.ID, "param-do-radius")
+    kept = box.get_attribute("value")
     box.clear()
     box.send_keys("-1", Keys.ENTER)
     err = wait_for(drv, "the error of a bad value",
@@ -583,6 +587,16 @@ def step_errors(drv):
                    and text(d, "request-error"))
     if err and not re.search(r":\d+:\d+: error", err):
         fail(f"the bad value's error is not file:line:col: {err}")
+    # the refused value stays for correcting, marked, and leaves with the focus: the box then
+    # shows what the graph kept (issue 46: the refused value stayed on screen)
+    wait_for(drv, "the refused box marked", lambda d: "refused" in (
+        d.find_element(By.ID, "param-do-radius").get_attribute("class") or ""))
+    drv.find_element(By.ID, "node-name").click()
+    wait_for(drv, f"the radius box back at the kept {kept}",
+             lambda d: d.find_element(By.ID, "param-do-radius").get_attribute("value") == kept
+             and "refused" not in (d.find_element(By.ID, "param-do-radius")
+                                   .get_attribute("class") or ""))
+    box = drv.find_element(By.ID, "param-do-radius")
     box.clear()
     box.send_keys("0.3", Keys.ENTER)
     wait_for(drv, "the error to clear after a good value",

@@ -19,6 +19,7 @@ import { $, showRequestError } from './ui.js';
 // diagram marks, and the images and metrics when it is a new run.
 function applyState(st) {
   const newRun = receive(st);
+  if (newRun && state.ports.ab) showMetrics(null, true);
   // the image first (its transfer overlaps the page's own updates below), unless the port
   // lists are still empty (the first state)
   const imageNow = newRun && state.ports.a;
@@ -50,7 +51,32 @@ async function onRunAnswer(body, resp) {
   if (resp.ok) { showRequestError(''); applyState(await resp.json()); }
   else showRequestError(await errorText(resp));
 }
-const setSender = new LatestSender('/api/set', onRunAnswer);
+
+// A set's answer. A refused value stays in its box while the user is there to correct it,
+// marked refused (the error bar quotes it), and goes back to the value the graph kept when
+// the box loses focus: a panel showing -1 while the graph ran with 0.3 misleads (issue 46).
+async function onSetAnswer(body, resp) {
+  const [node, param] = body.slice(0, body.indexOf('=')).split('.');
+  const el = document.getElementById(`param-${node}-${param}`);
+  if (resp.ok) {
+    if (el) { el.classList.remove('refused'); el.title = ''; }
+    return onRunAnswer(body, resp);
+  }
+  await onRunAnswer(body, resp);
+  if (!el) return;
+  el.classList.add('refused');
+  const kept = findNode(node)?.params.find((p) => p.name === param)?.value;
+  el.title = `refused: the graph keeps ${kept}`;
+  const restore = () => {
+    if (!el.classList.contains('refused')) return;
+    el.classList.remove('refused');
+    el.title = '';
+    refreshParamValues(true);
+  };
+  if (document.activeElement === el) el.addEventListener('blur', restore, { once: true });
+  else restore();
+}
+const setSender = new LatestSender('/api/set', onSetAnswer);
 
 // A throttle, not a debounce: a slider's first move is sent at once and then the latest value
 // at most every `delay` ms while it moves (a debounce re-armed on every input event sent
@@ -106,6 +132,15 @@ async function refreshImages(preview) {
   }
 }
 
+// The A/B metrics line; stale: of an earlier run than the one shown (greyed until the new
+// numbers come, so old numbers never pass for the current image's).
+function showMetrics(text, stale) {
+  const el = $('metrics');
+  if (text !== null) el.textContent = text;
+  el.classList.toggle('stale', stale);
+  el.title = stale ? 'of an earlier run: the shown run\'s numbers are on their way' : '';
+}
+
 let metricsBusy = false, metricsAgain = false;
 // The A/B metrics for the chosen ports; a call while one is on its way asks once more after.
 async function refreshMetrics() {
@@ -114,15 +149,15 @@ async function refreshMetrics() {
   // the text names the ports asked for, which may have changed by the time it answers
   const { a: A, b: B, ref } = state.ports;
   const q = encodeURIComponent;
-  const el = $('metrics');
   try {
     const resp = await api(`/api/metrics?ref=${q(ref)}&a=${q(A)}&b=${q(B)}`);
-    if (!resp.ok) { el.textContent = `metrics: ${await errorText(resp)}`; return; }
+    if (!resp.ok) { showMetrics(`metrics: ${await errorText(resp)}`, false); return; }
     const m = await resp.json();
     const one = (k, port, r) => `${k} ${port}: ` +
       (r ? `RMSE ${r.rmse.toPrecision(4)} SSIM ${r.ssim.toFixed(4)}` : '-');
-    el.textContent = `${one('A', A, m.a)}  |  ${one('B', B, m.b)}  against ${ref} (run ${state.gen})`;
-  } catch (e) { el.textContent = `metrics: ${e}`; }
+    showMetrics(`${one('A', A, m.a)}  |  ${one('B', B, m.b)}  against ${ref} (run ${state.gen})`,
+      false);
+  } catch (e) { showMetrics(`metrics: ${e}`, false); }
   finally {
     metricsBusy = false;
     if (metricsAgain) { metricsAgain = false; refreshMetrics(); }
@@ -156,7 +191,12 @@ function wirePorts() {
   const reload = () => refreshImages(state.server && state.server.last_run === 'preview');
   $('port-a').onchange = () => { setPorts({ a: $('port-a').value }); reload(); };
   $('port-b').onchange = () => { setPorts({ b: $('port-b').value }); reload(); };
-  $('ab-enable').onchange = () => { setPorts({ ab: $('ab-enable').checked }); reload(); };
+  $('ab-enable').onchange = () => {
+    setPorts({ ab: $('ab-enable').checked });
+    // the numbers of an A/B view that is gone must not stay on screen (issue 46)
+    if (!state.ports.ab) showMetrics('metrics: -', false);
+    reload();
+  };
   $('ab-mode').onchange = () => setPorts({ mode: $('ab-mode').value });
   $('port-ref').onchange = () => { setPorts({ ref: $('port-ref').value }); refreshMetrics(); };
 }

@@ -169,7 +169,9 @@ function portList(n) {
 }
 
 // Values changed elsewhere (a reload, a rejected set) reach controls the user is not using.
-export function refreshParamValues() {
+// force: also the control that has the focus, and while a change is on its way (a refused
+// value's box going back to the graph's value, app.js onSetAnswer).
+export function refreshParamValues(force = false) {
   const n = findNode(state.selected);
   if (!n) return;
   if (n.params.map((p) => p.name).join() !==
@@ -180,8 +182,9 @@ export function refreshParamValues() {
   for (const p of n.params) {
     const id = `param-${n.name}-${p.name}`;
     const el = $(id), slider = $(`${id}-slider`);
-    if (!el || el === document.activeElement || slider === document.activeElement) continue;
-    if (!on.idle()) continue;
+    if (!el) continue;
+    if (!force && (el === document.activeElement || slider === document.activeElement ||
+                   !on.idle())) continue;
     if (el.type === 'checkbox') el.checked = p.value === 'true';
     else if (el.value !== p.value && parseFloat(el.value) !== parseFloat(p.value)) {
       el.value = p.value;

@@ -58,8 +58,16 @@ function numberControls(row, n, p, id, send) {
   box.value = p.value;
   box.step = p.type === 'int' ? '1' : 'any';
   const scale = sliderScale(p);
+  let slider = null;
+  box.addEventListener('change', () => {
+    if (box.value.trim() === '') return; // an emptied box is an edit under way, not a value
+    if (slider) slider.value = String(scale.from(parseFloat(box.value)));
+    send(n.name, p.name, box.value, 0);
+  });
+  // an unbounded number has the box alone (it sent nothing before: its listener came with
+  // the slider)
   if (!scale) { row.classList.add('wide'); row.append(box); return; }
-  const slider = document.createElement('input');
+  slider = document.createElement('input');
   slider.type = 'range';
   slider.id = `${id}-slider`;
   slider.min = '0'; slider.max = '1000'; slider.step = '1';
@@ -68,10 +76,6 @@ function numberControls(row, n, p, id, send) {
   slider.addEventListener('input', () => {
     box.value = numText(p, scale.to(+slider.value));
     send(n.name, p.name, box.value, 60);
-  });
-  box.addEventListener('change', () => {
-    slider.value = String(scale.from(parseFloat(box.value)));
-    send(n.name, p.name, box.value, 0);
   });
   row.append(slider, box);
 }
