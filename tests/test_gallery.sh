@@ -9,7 +9,7 @@ source "$(dirname "$0")/lib.sh" "ssg_test_gallery"
 export SSGRAPH_CACHE=$TMP/cache
 for m in numpy PIL OpenImageIO matplotlib; do
     /usr/bin/python3 -c "import $m" 2> /dev/null ||
-        fail "Python module $m is missing: install the packages in tools/debian-packages.txt"
+        fail "Python module $m is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
 done
 [ "$fails" -eq 0 ] || finish test_gallery
 

@@ -12,7 +12,7 @@ source "$(dirname "$0")/lib.sh" "ssg_test_python"
 build=$(cd "$(dirname "$BIN")" && pwd)
 for m in numpy cffi setuptools wheel pytest; do
     /usr/bin/python3 -c "import $m" 2> /dev/null ||
-        fail "python3-$m is missing: install the packages in tools/debian-packages.txt"
+        fail "python3-$m is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
 done
 [ -e "$build/libssgraph.so" ] || fail "no libssgraph.so in $build (SSGRAPH_BUILD_SHARED=OFF?)"
 [ "$fails" -eq 0 ] || finish test_python
@@ -31,6 +31,14 @@ rm -rf "$TMP/src/build" "$TMP/src"/*.egg-info
 SSGRAPH_BUILD_DIR=$build "$TMP/venv/bin/pip" install --no-build-isolation --no-index \
     "$TMP/src" > "$TMP/pip.log" 2>&1 || { cat "$TMP/pip.log"; fail "pip install failed"; }
 [ "$fails" -eq 0 ] || finish test_python
+
+# A Python without wheel and cffi (here Debian's with its site-packages off, as a pyenv
+# or conda build would be) stops the build with what is missing and the way out, not with
+# "invalid command 'bdist_wheel'" (issue 46)
+out=$(cd "$TMP/src" && /usr/bin/python3 -S setup.py --version 2>&1)
+echo "$out" | grep -q "needs wheel and cffi, which /usr/bin/python3" &&
+    echo "$out" | grep -q "tools/install-deps.sh --test" ||
+    fail "setup.py without wheel and cffi said: $out"
 
 # The README's check, as written there, from the repository root
 out=$("$TMP/venv/bin/python3" -c "import ssgraph; g = ssgraph.load('graphs/ssao.graph'); \

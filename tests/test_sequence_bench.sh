@@ -13,7 +13,7 @@
 set -u
 . "$(dirname "$0")/lib.sh" test_sequence_bench
 export SSGRAPH_CACHE="$TMP/cache"
-PY=/usr/bin/python3 # Debian's, with python3-numpy (tools/debian-packages.txt)
+PY=/usr/bin/python3 # Debian's, with python3-numpy (tools/debian-packages-test.txt)
 seq_run() {
     "$PY" bench/sequence.py --ssgraph "$BIN" --scene examples/cornell_path.scene \
         --size 32x24 --frames 4 --rays 32 "$@"
