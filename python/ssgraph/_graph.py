@@ -159,13 +159,13 @@ class Run:
     @property
     def ran(self) -> List[str]:
         """The nodes that ran (a live graph skips those whose inputs did not change)."""
-        return [n["name"] for n in self.stats["nodes"] if n["calls"] > 0]
+        return [name for name, n in self.stats["nodes"].items() if n["calls"] > 0]
 
     @property
     def why(self) -> Dict[str, str]:
         """Why each node ran or was kept, by node name: "first run", "parameter changed",
         "camera moved", "lights changed", "input g ran", "kept" (docs/development.md)."""
-        return {n["name"]: n["why"] for n in self.stats["nodes"]}
+        return {name: n["why"] for name, n in self.stats["nodes"].items()}
 
     def __repr__(self) -> str:
         return "<ssgraph.Run %d frame(s), %.2f ms a frame, %d node(s) ran>" % (
@@ -173,6 +173,8 @@ class Run:
 
 
 def _stats_dict(s) -> dict:
+    # "nodes" is keyed by node name, in the graph's order (run.stats["nodes"]["ao"]["ms"]);
+    # a list made every reader search it (issue 46). Each entry keeps its "name".
     nodes = [{"name": _text(n.name), "type": _text(n.type), "backend": _text(n.backend),
               "calls": n.calls, "ms": n.ms, "avg_ms": n.avg_ms, "min_ms": n.min_ms,
               "max_ms": n.max_ms, "median_ms": n.median_ms, "share": n.share,
@@ -183,7 +185,8 @@ def _stats_dict(s) -> dict:
             "frame_min_ms": s.frame_min_ms, "frame_max_ms": s.frame_max_ms,
             "frame_median_ms": s.frame_median_ms, "total_ms": s.total_ms,
             "width": s.width, "height": s.height, "threads": s.threads,
-            "peak_pool_bytes": int(s.peak_pool_bytes), "gl": _text(s.gl), "nodes": nodes}
+            "peak_pool_bytes": int(s.peak_pool_bytes), "gl": _text(s.gl),
+            "nodes": {n["name"]: n for n in nodes}}
 
 
 def _metrics_dict(s) -> Dict[str, float]:

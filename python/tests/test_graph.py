@@ -96,8 +96,9 @@ def test_stats_and_metrics(repo):
                       sets={"ref.rays": 16}) as g:
         run = g.run(threads=1)
     assert run.stats["width"] == 32 and run.stats["frames"] == 1
-    assert {n["name"] for n in run.stats["nodes"]} >= {"g", "ref"}
-    assert all(n["ms"] >= 0 for n in run.stats["nodes"])
+    assert set(run.stats["nodes"]) >= {"g", "ref"}  # keyed by node name, in graph order
+    assert all(n["ms"] >= 0 for n in run.stats["nodes"].values())
+    assert run.stats["nodes"]["g"]["name"] == "g" and run.stats["nodes"]["g"]["calls"] >= 1
     rmse = [k for k in run.metrics if k.endswith(".rmse")]
     assert rmse and all(0 <= run.metrics[k] < 1 for k in rmse)
 
