@@ -84,6 +84,14 @@ struct ssg_bench_ms {
 
 /* The time shown for a cell: the --time node's, else the frame's. */
 struct ssg_bench_ms ssg_bench_shown_ms(const struct bench *b, const struct cell *c);
+/* A cell whose median frame took more than this times its fastest ran on a busy machine
+   (or its frames differ in work, as on a camera path): its median may mislead by as much;
+   two identical cells were seen 10-15x apart on a busy machine (issue 46). The median
+   against the fastest, not the slowest: a first frame's one-off costs (fresh memory) make
+   the slowest slow on any machine. bench.md lists such cells, and the run warns. */
+#define SSG_BENCH_SPREAD 2.0
+/* Whether cell c (run, ok) is such a cell. */
+int ssg_bench_noisy(const struct bench *b, const struct cell *c);
 
 /* After each cell: bench.csv, bench.json and bench.md rewritten whole, each through a
  * temporary and a rename (files.h), so an interrupted bench keeps every finished cell and

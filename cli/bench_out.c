@@ -238,6 +238,40 @@ static void md_cell(const struct bench *b, const struct cell *c, const char *err
     fputs(" |", f);
 }
 
+int ssg_bench_noisy(const struct bench *b, const struct cell *c)
+{
+    if (!c->ran || !c->ok)
+        return 0;
+    struct ssg_bench_ms ms = ssg_bench_shown_ms(b, c);
+    return ms.min > 0 && ms.median > SSG_BENCH_SPREAD * ms.min;
+}
+
+/* After the tables: the cells whose median is over SSG_BENCH_SPREAD times their fastest. */
+static void md_noisy(const struct bench *b, FILE *f)
+{
+    int noisy = 0;
+    for (int ci = 0; ci < b->cell_count; ci++)
+        noisy += ssg_bench_noisy(b, &b->cells[ci]);
+    if (!noisy)
+        return;
+    fprintf(f, "\n**%d cell%s ran with the median frame over %.0fx the fastest**: the machine "
+            "was busy, or the frames differ in work (a camera path), so %s median may "
+            "mislead by as much; rerun on a quiet machine before comparing:", noisy,
+            noisy > 1 ? "s" : "", SSG_BENCH_SPREAD, noisy > 1 ? "their" : "its");
+    for (int ci = 0; ci < b->cell_count; ci++) {
+        const struct cell *c = &b->cells[ci];
+        if (!ssg_bench_noisy(b, c))
+            continue;
+        struct ssg_bench_ms ms = ssg_bench_shown_ms(b, c);
+        fputs("\n-", f);
+        for (int k = 0; k < b->n; k++)
+            fprintf(f, " %s=%s", b->sweeps[k].key, ssg_bench_value(b, c, k));
+        fprintf(f, "%s: %.2f [%.2f-%.2f] ms (median %.1fx the fastest)",
+                b->n ? "" : " the graph", ms.median, ms.min, ms.max, ms.median / ms.min);
+    }
+    fputc('\n', f);
+}
+
 /* The values of sweeps 2.. that table t (of their combinations, last sweep fastest) shows. */
 static void md_title(const struct bench *b, int t, FILE *f)
 {
@@ -287,6 +321,7 @@ static void write_md(FILE *f, const void *user)
         }
         fputc('\n', f);
     }
+    md_noisy(b, f);
 }
 
 static void write_csv(FILE *f, const void *user)
