@@ -335,8 +335,9 @@ SSG_API enum ssg_err ssg_graph_param(const struct ssg_graph *graph, const char *
  * (not only those a sink reads), at most max_bytes of images (0 = no limit; past it the
  * largest node outputs are given back after the run, and those nodes run again next time).
  * A kept graph's one-frame run then skips a node whose outputs are kept and none of whose
- * producers ran; sinks (write, compare) always run. The run's stats show what ran: a
- * skipped node has calls 0. A run of several frames runs everything.
+ * producers ran; write always runs, and a compare (a sink that only reports metrics) is
+ * kept like any node, its metrics reported again in the run's. The run's stats show what
+ * ran: a skipped node has calls 0. A run of several frames runs everything.
  *
  * ssg_graph_set changes one parameter, key "node.param", value as written in a graph file
  * ("0.25", "smooth", "true"), with the parsing and checks of --set; it reports errors (an

@@ -152,6 +152,10 @@ struct ssg_live {
     unsigned char *prepared;
     unsigned char *kept;
     unsigned char *why;        /* enum ssg_why of the first event since the node last ran */
+    struct ssg_metric **reported; /* a kept sink's metrics from its last run (count beside):
+                                     a compare whose inputs did not change is not run again,
+                                     and a run reports them again as this run's */
+    int *reported_count;
     int count;                 /* run positions */
     int used_gl;               /* a run used GL: images may hold textures */
     struct ssg_gl_shared gl;   /* the scene on GL, uploaded by the first run's first node

@@ -24,8 +24,10 @@ int ssg_live_init(struct ssg_live *l, int count)
                            .consts = calloc(n, sizeof *l->consts),
                            .scratch = calloc(n, sizeof *l->scratch),
                            .prepared = calloc(n, 1), .kept = calloc(n, 1),
-                           .why = calloc(n, 1)};
-    return l->pool && l->consts && l->scratch && l->prepared && l->kept && l->why;
+                           .why = calloc(n, 1), .reported = calloc(n, sizeof *l->reported),
+                           .reported_count = calloc(n, sizeof *l->reported_count)};
+    return l->pool && l->consts && l->scratch && l->prepared && l->kept && l->why &&
+           l->reported && l->reported_count;
 }
 
 int ssg_graph_output_kept(const struct ssg_graph *g, int node, int k)
@@ -114,6 +116,10 @@ void ssg_live_release(struct ssg_graph *g, struct ssg_live *l)
     free(l->prepared);
     free(l->kept);
     free(l->why);
+    for (int p = 0; l->reported && p < l->count; p++)
+        free(l->reported[p]);
+    free(l->reported);
+    free(l->reported_count);
     *l = (struct ssg_live){0};
 }
 

@@ -76,8 +76,11 @@ enum ssg_why ssg_redo_decide(const struct ssg_graph *g, const struct ssg_live *l
 {
     const struct gnode *n = &g->nodes[g->order[p]];
     *producer = -1;
-    if (n->desc->is_sink)
-        return SSG_WHY_SINK; /* their files and metrics are this run's */
+    /* A sink's files are this run's: write always runs. A sink that only reports metrics
+       (compare) and was kept (a live graph's one-frame run, ssg_redo_after) runs again
+       only when an input ran or it was changed; its metrics are reported again. */
+    if (n->desc->is_sink && (n->desc->output_files || !l->kept[p]))
+        return SSG_WHY_SINK;
     enum ssg_why why = l->kept[p] ? SSG_WHY_KEPT : l->why[p] ? l->why[p] : SSG_WHY_FIRST;
     if (why != SSG_WHY_KEPT && why != SSG_WHY_SEQUENCE)
         return why; /* its own event comes before its producers' */

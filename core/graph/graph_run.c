@@ -290,6 +290,32 @@ static void begin_frame(struct run *r, int frame, int frames)
     memset(r->ran, 0, (size_t)g->count);
 }
 
+/* A kept sink's metrics: those run position p added to the run's from index `from` on;
+   0 on out of memory (the sink then runs every time, as before). */
+static int remember_metrics(struct run *r, int p, int from)
+{
+    struct ssg_live *l = r->state;
+    int n = r->metrics.count - from;
+    struct ssg_metric *copy = n > 0 ? malloc(sizeof *copy * (size_t)n) : NULL;
+    if (n > 0 && !copy)
+        return 0;
+    if (n > 0)
+        memcpy(copy, r->metrics.items + from, sizeof *copy * (size_t)n);
+    free(l->reported[p]);
+    l->reported[p] = copy;
+    l->reported_count[p] = n > 0 ? n : 0;
+    return 1;
+}
+
+/* A kept sink's metrics as this run's, in the place its run would have put them. */
+static void report_again(struct run *r, int p)
+{
+    const struct ssg_live *l = r->state;
+    for (int i = 0; i < l->reported_count[p]; i++)
+        ssg_metrics_add(&r->metrics, l->reported[p][i].node, l->reported[p][i].name,
+                        l->reported[p][i].value);
+}
+
 /* One frame: every node in order, images given back after their last reader. Sinks
    (write, compare) run in the last frame only: a real-time frame shows its image rather
    than writing files, and the frame time is that of the passes. */
@@ -307,9 +333,17 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
         }
         enum ssg_why why = ssg_redo_decide(r->g, r->state, p, r->ran, &producer);
         if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {
+            int reported = r->metrics.count;
             e = run_node(r, p, frame);
-            ssg_redo_after(r->state, p, !sink && (r->live || r->hold[r->g->order[p]]), e);
+            /* a metrics-only sink of a live graph's one-frame run is kept like any node
+               (graph_redo.c), with what it reported */
+            int keep_sink = sink && !n->desc->output_files && r->live && frames == 1 &&
+                            !e && remember_metrics(r, p, reported);
+            ssg_redo_after(r->state, p,
+                           keep_sink || (!sink && (r->live || r->hold[r->g->order[p]])), e);
             r->ran[r->g->order[p]] = 1;
+        } else if (why == SSG_WHY_KEPT && sink) {
+            report_again(r, p);
         }
         if (why == SSG_WHY_KEPT || runs_in(n, frame, frames))
             r->why[p][why]++;

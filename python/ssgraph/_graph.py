@@ -409,7 +409,8 @@ class Graph:
         """Runs the graph: the nodes whose parameters, inputs or camera changed since the
         last run, and what reads them. `write`: the graph's write nodes write their files
         into out_dir (default "out"), as `ssgraph run` does; by default they do not, and
-        you read ports with output(). compare nodes always run (Run.metrics). The GIL is
+        you read ports with output(). A compare node runs when an input ran or it was
+        changed, else it is kept and its metrics reported again (Run.metrics). The GIL is
         released while it runs."""
         frames = _args.integer(frames, "frames", 1, _args.FRAMES_MAX)
         threads = _args.integer(threads, "threads", 0, _args.THREADS_MAX)

@@ -214,3 +214,25 @@ def test_a_bool_survives_set_and_get(repo):
             assert g.get("b.separable") is bool(value)
             assert g.node("b").params["separable"].value is bool(value)
         assert ssgraph.node_params("bilateral")["separable"].value is None  # no graph
+
+
+def test_compare_kept_when_its_inputs_did_not_change(repo):
+    """A live graph's compare runs again only when an input ran or it was changed, and its
+    metrics are still this run's (issue 46: every sweep step re-ran HDR-FLIP, 5.8 s of a
+    step whose changed nodes took 0.12 s)."""
+    with ssgraph.load(repo / "docs/tutorial/sweep.graph", size=SIZE,
+                      sets={"ref.rays": 16}) as g:
+        first = g.run()
+        assert first.stats["nodes"]["c"]["calls"] == 1 and first.metrics["c.rmse"] > 0
+        g.set("img.ambient", 0.3)  # after ao, not upstream of c
+        kept = g.run()
+        assert kept.stats["nodes"]["c"]["calls"] == 0 and kept.why["c"] == "kept"
+        assert kept.stats["nodes"]["img"]["calls"] == 1
+        assert kept.metrics == first.metrics  # reported again, the same values
+        g.set("ao.radius", 0.3)  # upstream of c: it runs, with new numbers
+        moved = g.run()
+        assert moved.stats["nodes"]["c"]["calls"] == 1 and moved.why["c"] == "input ao ran"
+        assert moved.metrics["c.rmse"] != first.metrics["c.rmse"]
+        g.set("c.flip", "off")  # its own parameter
+        own = g.run()
+        assert own.stats["nodes"]["c"]["calls"] == 1 and "c.flip" not in own.metrics
