@@ -94,10 +94,7 @@ static enum ssg_err keep_sets(struct ssg_graph *g, const struct ssg_overrides *o
    material that emits. */
 static int scene_is_dark(const struct ssg_scene *s)
 {
-    const struct ssg_environment *env = &s->environment; /* an image is times color */
-    int env_lit = env->intensity > 0 &&
-                  (env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0);
-    return s->light_lines == 0 && s->light_count == 0 && !env_lit &&
+    return s->light_lines == 0 && s->light_count == 0 && !ssg_scene_environment_lit(s) &&
            !ssg_scene_has_emission(s);
 }
 

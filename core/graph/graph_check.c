@@ -333,9 +333,14 @@ static void infer_node(struct checker *c, struct gnode *n)
     char why[400];
     enum ssg_err e = ssg_shapes_infer(d, n->params, &c->g->frame, n->in_shape, n->out_shape,
                                       why, sizeof why);
-    if (!e && d->check_scene && c->g->scene)
+    if (!e && d->check_scene && c->g->scene) {
+        why[0] = '\0';
         e = d->check_scene(n->params, c->g->scene, n->in_shape, n->out_shape, why,
                            sizeof why);
+        if (!e && why[0] && !pending) /* a warning (node.h) */
+            ssg_diag_warn(c->diags, SSG_E_SCENE, n->loc, "node '%s' (%s): %s", n->name,
+                          d->name, why);
+    }
     if (e && pending) /* the quiet first pass: a check that needs the prev() input's shape
                          (history = prev(out) of out's size) cannot pass yet; the default
                          shapes (same_as, frame size) stand in until the second pass */

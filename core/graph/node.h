@@ -317,7 +317,8 @@ struct ssg_node_desc {
        channels of `out`, refuses what the scene makes too large and inputs that do not
        fit the scene (direct_light: maps of another scene's lights). Runs without a graph
        (tests) bind images of the right shape themselves. Return SSG_OK or an error code
-       with why. */
+       with why; SSG_OK with a why is a warning, shown at the node's definition (combine:
+       an ambient_occlusion that darkens nothing). */
     enum ssg_err (*check_scene)(const void *params, const struct ssg_scene *scene,
                                 const struct ssg_shape *in, struct ssg_shape *out,
                                 char *why, size_t why_len);

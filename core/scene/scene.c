@@ -521,6 +521,12 @@ int ssg_scene_has_emission(const struct ssg_scene *s)
     return 0;
 }
 
+int ssg_scene_environment_lit(const struct ssg_scene *s)
+{
+    const struct ssg_environment *env = &s->environment;
+    return env->intensity > 0 && (env->color[0] > 0 || env->color[1] > 0 || env->color[2] > 0);
+}
+
 void ssg_scene_destroy(struct ssg_scene **scene)
 {
     if (!scene || !*scene)

@@ -212,6 +212,9 @@ void ssg_scene_destroy(struct ssg_scene **scene);
 int ssg_material_emits(const struct ssg_material *m);
 /* 1 when any material of the scene emits: emissive surfaces light it. */
 int ssg_scene_has_emission(const struct ssg_scene *scene);
+/* 1 when the scene's environment gives light: its intensity and colour not 0 (an image is
+   times the colour). Read from the scene file alone: also without the assets loaded. */
+int ssg_scene_environment_lit(const struct ssg_scene *scene);
 
 /* The axis-aligned box of every mesh vertex; lo > hi (+inf, -inf) when there is none. */
 void ssg_scene_bounds(const struct ssg_scene *scene, float lo[3], float hi[3]);

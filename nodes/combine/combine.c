@@ -5,12 +5,17 @@
 #include <stdio.h>
 
 #include "combine.h"
+#include "scene/scene.h"
 
 /* Every connected input must have the output's size (the frame's): combine reads them
    pixel by pixel. Channels follow from the ports' types. */
 static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len);
+
+static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
+                                const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                                size_t why_len);
 
 SSG_PORT_TABLE(inputs, SSG_COMBINE_IN);
 SSG_PORT_TABLE(outputs, SSG_COMBINE_OUT);
@@ -54,6 +59,7 @@ const struct ssg_node_desc ssg_node_combine = {
     SSG_NODE_UNIFORMS(uniforms, struct ssg_combine_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
     .check = check,
+    .check_scene = check_scene,
     .prepare = prepare,
     .flops_per_pixel = combine_flops,
     .run_cpu = ssg_combine_run_cpu,
@@ -73,5 +79,26 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
             return SSG_E_SIZE;
         }
     }
+    return SSG_OK;
+}
+
+/* A warning (why with SSG_OK, node.h): an ambient_occlusion input that darkens nothing.
+   AO darkens the environment, ambient and irradiance terms; with none of them lit the
+   image is the same without it, and a table of methods shows SSAO equal to no occlusion
+   (gi_error.graph on the Cornell box under its own light, issue 46). */
+static enum ssg_err check_scene(const void *params, const struct ssg_scene *scene,
+                                const struct ssg_shape *in, struct ssg_shape *out, char *why,
+                                size_t why_len)
+{
+    const struct ssg_combine_params *p = params;
+    (void)out;
+    int env_lit = in[SSG_COMBINE_IN_ENVIRONMENT].channels > 0 &&
+                  ssg_scene_environment_lit(scene);
+    if (in[SSG_COMBINE_IN_AMBIENT_OCCLUSION].channels > 0 && !env_lit && p->ambient == 0 &&
+        in[SSG_COMBINE_IN_IRRADIANCE].channels == 0)
+        snprintf(why, why_len, "its ambient_occlusion darkens nothing, and its image is the "
+                 "same without it: AO darkens environment and ambient light, and the scene "
+                 "has no environment light while ambient=0 (light it with one: --lights "
+                 "examples/lights/sky.scene, or give ambient a value)");
     return SSG_OK;
 }
