@@ -324,6 +324,20 @@ def step_range(drv):
     if ends and not 0 < float(ends.group(1)) < float(ends.group(2)):
         fail(f"g.depth's auto range is '{text(drv, 'range-val')}'")
     wait_for(drv, "g.depth spread over viridis", lambda d: len(canvas_colours(d)) >= 16)
+    # its statistics and histogram (issue 46): min <= mean <= max, the auto range's ends
+    # among them, and a histogram with a spread of bins lit
+    st = wait_for(drv, "g.depth's statistics", lambda d: re.fullmatch(
+        r"A g\.depth\s+Y ([-0-9.e+]+) / ([-0-9.e+]+) / ([-0-9.e+]+)\s+\(min / mean / max\)",
+        text(d, "stats")))
+    if st and not float(st.group(1)) <= float(st.group(2)) <= float(st.group(3)):
+        fail(f"g.depth's statistics are out of order: {text(drv, 'stats')}")
+    lit = drv.execute_script("""const c = document.getElementById('hist');
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let cols = new Set();
+        for (let i = 0; i < d.length; i += 4) if (d[i] > 100) cols.add((i / 4) % c.width);
+        return cols.size;""")
+    if lit < 10:
+        fail(f"g.depth's histogram lights {lit} of 128 columns")
     drv.execute_script(fire, "unit")
     wait_for(drv, "g.depth over [0, 1]: one colour on the surfaces",
              lambda d: len(canvas_colours(d)) <= 3 and text(d, "range-val") == "0 .. 1")

@@ -4,6 +4,7 @@
 // a mutation of the state asks for a render, and the renders asked for within one animation
 // frame are one render.
 import { state } from './state.js';
+import { drawHistogram, imageStats } from './stats.js';
 import { channelRange, ImageView, shownChannel } from './tonemap.js';
 import { $, showRequestError } from './ui.js';
 
@@ -62,6 +63,7 @@ export function render() {
   try { drawCanvas(frameOf(st)); } catch (e) { showRequestError(String(e.message || e)); }
   fitCanvas();
   showControls();
+  showStats();
   placeDivider();
   showPixel();
 }
@@ -93,6 +95,31 @@ function showControls() {
   $('ab-labels').hidden = !p.ab;
   $('ab-label-a').textContent = p.mode === 'diff' ? `|A - B|  A ${p.a}` : `A ${p.a}`;
   $('ab-label-b').textContent = `B ${p.b}`;
+}
+
+// A's per-channel minimum, mean and maximum, and the histogram of what is on show: the
+// shown channel over the false colour's range, or the colour channels over their joint
+// minimum to maximum (issue 46: no statistics of the view, no histogram).
+let statsShown = null;
+function showStats() {
+  const f = drawn, img = f && f.a;
+  const key = img && `${state.ports.a} ${img.gen} ${img.w} ${f.rangeLo} ${f.rangeScale} ` +
+    `${state.display.channel} ${state.display.colormap} ${state.display.stops}`;
+  if (key === statsShown) return;
+  statsShown = key;
+  if (!img) { $('stats').textContent = ''; return; }
+  const st = imageStats(img), names = img.c === 1 ? ['Y'] : ['R', 'G', 'B', 'A'];
+  $('stats').textContent = `A ${state.ports.a}  ` + st.map((s, i) => (s
+    ? `${names[i]} ${fmtValue(s.min)} / ${fmtValue(s.mean)} / ${fmtValue(s.max)}`
+    : `${names[i]} -`)).join('   ') + '  (min / mean / max)';
+  const ch = shownChannel(img, state.display);
+  const chs = ch >= 0 ? [ch] : [0, 1, 2].filter((c) => c < img.c && st[c]);
+  // over what the display shows: the false colour's range, else [0, 1] over the exposure
+  // (a colour image's few bright pixels, a lamp at 38, would squeeze the rest into a bin)
+  const gain = 2 ** state.display.stops;
+  const [lo, hi] = ch >= 0 && state.display.colormap === 'viridis'
+    ? [f.rangeLo, f.rangeLo + 1 / (f.rangeScale * gain)] : [0, 1 / gain];
+  drawHistogram($('hist'), img, chs, lo, hi, true);
 }
 
 // The A/B divider: a one-pixel line over the canvas at screen resolution.
