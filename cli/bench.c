@@ -526,9 +526,7 @@ int ssg_bench_main(const struct ssg_bench_request *req)
             printf("bench: %d cells, %d failed\n", b.cell_count, failed);
         ssg_bench_print_tables(req->out_dir);
         fflush(stdout);
-        int noisy = 0;
-        for (int ci = 0; ci < b.cell_count; ci++)
-            noisy += ssg_bench_noisy(&b, &b.cells[ci]);
+        int noisy = ssg_bench_noisy_count(&b);
         if (noisy)
             fprintf(stderr, "ssgraph: warning: %d of the %d cells ran with the median frame "
                     "over %.0fx the fastest (a busy machine, or frames that differ in work): "

@@ -90,8 +90,9 @@ struct ssg_bench_ms ssg_bench_shown_ms(const struct bench *b, const struct cell 
    against the fastest, not the slowest: a first frame's one-off costs (fresh memory) make
    the slowest slow on any machine. bench.md lists such cells, and the run warns. */
 #define SSG_BENCH_SPREAD 2.0
-/* Whether cell c (run, ok) is such a cell. */
+/* Whether cell c (run, ok) is such a cell; how many of the bench's cells are. */
 int ssg_bench_noisy(const struct bench *b, const struct cell *c);
+int ssg_bench_noisy_count(const struct bench *b);
 
 /* After each cell: bench.csv, bench.json and bench.md rewritten whole, each through a
  * temporary and a rename (files.h), so an interrupted bench keeps every finished cell and

@@ -246,12 +246,18 @@ int ssg_bench_noisy(const struct bench *b, const struct cell *c)
     return ms.min > 0 && ms.median > SSG_BENCH_SPREAD * ms.min;
 }
 
-/* After the tables: the cells whose median is over SSG_BENCH_SPREAD times their fastest. */
-static void md_noisy(const struct bench *b, FILE *f)
+int ssg_bench_noisy_count(const struct bench *b)
 {
     int noisy = 0;
     for (int ci = 0; ci < b->cell_count; ci++)
         noisy += ssg_bench_noisy(b, &b->cells[ci]);
+    return noisy;
+}
+
+/* After the tables: the cells whose median is over SSG_BENCH_SPREAD times their fastest. */
+static void md_noisy(const struct bench *b, FILE *f)
+{
+    int noisy = ssg_bench_noisy_count(b);
     if (!noisy)
         return;
     fprintf(f, "\n**%d cell%s ran with the median frame over %.0fx the fastest**: the machine "

@@ -295,15 +295,16 @@ static void begin_frame(struct run *r, int frame, int frames)
 static int remember_metrics(struct run *r, int p, int from)
 {
     struct ssg_live *l = r->state;
-    int n = r->metrics.count - from;
-    struct ssg_metric *copy = n > 0 ? malloc(sizeof *copy * (size_t)n) : NULL;
-    if (n > 0 && !copy)
-        return 0;
-    if (n > 0)
+    int n = r->metrics.count - from; /* never below 0: a node only adds */
+    struct ssg_metric *copy = NULL;
+    if (n > 0) {
+        if (!(copy = malloc(sizeof *copy * (size_t)n)))
+            return 0;
         memcpy(copy, r->metrics.items + from, sizeof *copy * (size_t)n);
+    }
     free(l->reported[p]);
     l->reported[p] = copy;
-    l->reported_count[p] = n > 0 ? n : 0;
+    l->reported_count[p] = n;
     return 1;
 }
 
