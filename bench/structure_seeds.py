@@ -34,10 +34,20 @@ CASES = {"cornell_sky": ("cornell", "sky", "[110, 40, 208, 140]"),
          "bunny_courtyard": ("bunny", "courtyard", "[95, 5, 315, 90]")}
 
 
-def structure(binary, graph, scene, lights, region, seed, sets, tmp):
-    """structure_pp of the graph's frame (its write node's image) against the truth."""
+def truth_of(binary, case):
+    """The case's cached 4096-path truth (rendered on first use)."""
+    scene, lights, _ = CASES[case]
+    return gallery.reference(binary, "gi", os.path.join(ROOT, "examples", scene + ".scene"),
+                             lights, SIZE, PATHS, 1)
+
+
+def run_and_compare(binary, graph, case, seed, sets, tmp, compare_bin=None):
+    """Runs the graph on the case at SIZE with the seed, compares its frame (its write
+    node's image) with the truth over the case's wall; returns the frame's path, the
+    compare's output folder (structure.exr: the measure's d) and its printed metrics."""
+    scene, lights, region = CASES[case]
     scene_path = os.path.join(ROOT, "examples", scene + ".scene")
-    truth = gallery.reference(binary, "gi", scene_path, lights, SIZE, PATHS, 1)
+    truth = truth_of(compare_bin or binary, case)
     out = os.path.join(tmp, "frame.exr")
     cmd = [binary, "run", graph, "--scene", scene_path, "--size", SIZE, "--seed", str(seed),
            "--threads", "2", "--quiet", "-o", out]
@@ -46,12 +56,18 @@ def structure(binary, graph, scene, lights, region, seed, sets, tmp):
     for s in sets:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True)
+    cmp = os.path.join(tmp, "cmp")
     text = subprocess.run(
-        [binary, "node", "compare", "--in", "a=" + out, "--in", "b=" + truth,
+        [compare_bin or binary, "node", "compare", "--in", "a=" + out, "--in", "b=" + truth,
          "--in", "mask=%s:depth" % truth, "--in", "depth=%s:depth" % truth,
          "--set", "structure=true", "--set", "region=" + region, "--set", "flip=off",
-         "--out", os.path.join(tmp, "cmp")],
-        check=True, stdout=subprocess.PIPE, text=True).stdout
+         "--out", cmp], check=True, stdout=subprocess.PIPE, text=True).stdout
+    return out, cmp, text
+
+
+def structure(binary, graph, case, seed, sets, tmp):
+    """structure_pp of the graph's frame against the truth over the case's wall."""
+    text = run_and_compare(binary, graph, case, seed, sets, tmp)[2]
     for line in text.splitlines():
         if line.startswith("structure_pp"):
             return float(line.split()[1])
@@ -78,9 +94,8 @@ def main():
           + " | mean | worst |")
     print("|---|" + "--:|" * (a.seeds + 2))
     for case in a.case or sorted(CASES):
-        scene, lights, region = CASES[case]
         with tempfile.TemporaryDirectory() as tmp:
-            values = [structure(a.bin, a.graph, scene, lights, region, seed, a.set, tmp)
+            values = [structure(a.bin, a.graph, case, seed, a.set, tmp)
                       for seed in range(1, a.seeds + 1)]
         print("| %s | %s | %.3f | %.3f |" % (case, " | ".join("%.3f" % v for v in values),
                                              statistics.mean(values), max(values)))

@@ -8,7 +8,6 @@ red = too bright, blue = too dark, full red at +-0.05; 3x, nearest.
     /usr/bin/python3 bench/results/issue44/t44f/make_crops.py BEFORE_BUILD/ssgraph BEFORE_CHECKOUT
 """
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -18,7 +17,6 @@ import OpenImageIO as oiio
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
-import gallery  # noqa: E402
 import structure_seeds  # noqa: E402
 
 NOW = os.path.join(ROOT, "build-test", "ssgraph")
@@ -40,35 +38,22 @@ def diverging(d, scale=0.05):
     return img
 
 
-def frame_and_d(binary, graph, case, truth, tmp):
-    scene, lights, region = structure_seeds.CASES[case]
-    out = os.path.join(tmp, "f.exr")
-    cmd = [binary, "run", graph, "--scene", os.path.join(ROOT, "examples", scene + ".scene"),
-           "--size", structure_seeds.SIZE, "--seed", "1", "--threads", "2", "--quiet",
-           "-o", out]
-    if gallery.lights_file(lights):
-        cmd += ["--lights", gallery.lights_file(lights)]
-    subprocess.run(cmd, check=True)
-    subprocess.run([NOW, "node", "compare", "--in", "a=" + out, "--in", "b=" + truth,
-                    "--in", "mask=%s:depth" % truth, "--in", "depth=%s:depth" % truth,
-                    "--set", "structure=true", "--set", "region=" + region,
-                    "--set", "flip=off", "--out", os.path.join(tmp, "c")],
-                   check=True, stdout=subprocess.DEVNULL)
-    return read(out), read(os.path.join(tmp, "c", "structure.exr"))[..., 0]
+def frame_and_d(binary, graph, case, tmp):
+    """The frame at seed 1 and the structure measure's d (this build's compare)."""
+    frame, cmp, _ = structure_seeds.run_and_compare(binary, graph, case, 1, [], tmp,
+                                                    compare_bin=NOW)
+    return read(frame), read(os.path.join(cmp, "structure.exr"))[..., 0]
 
 
 def main():
     before_bin, before_root = sys.argv[1], sys.argv[2]
     for case, (x0, y0, x1, y1), exposure in (("bunny_courtyard", (80, 0, 320, 100), 2.5),
                                              ("cornell_sky", (100, 30, 220, 150), 1.5)):
-        scene, lights, _ = structure_seeds.CASES[case]
-        truth = gallery.reference(NOW, "gi", os.path.join(ROOT, "examples", scene + ".scene"),
-                                  lights, structure_seeds.SIZE, structure_seeds.PATHS, 1)
+        truth = structure_seeds.truth_of(NOW, case)
         with tempfile.TemporaryDirectory() as tmp:
             fb, db = frame_and_d(before_bin, os.path.join(before_root, "graphs", "gi.graph"),
-                                 case, truth, tmp)
-            fn, dn = frame_and_d(NOW, os.path.join(ROOT, "graphs", "gi.graph"), case, truth,
-                                 tmp)
+                                 case, tmp)
+            fn, dn = frame_and_d(NOW, os.path.join(ROOT, "graphs", "gi.graph"), case, tmp)
         t = read(truth)
         crop = np.s_[y0:y1, x0:x1]
         top = np.concatenate([tone(t[crop], exposure), tone(fb[crop], exposure),
