@@ -29,6 +29,8 @@ export function countUpdate() {
   $('cam-ups').textContent = `camera: ${ups.length} updates/s`;
 }
 
+const noCamera = () => { $('cam-ups').textContent = 'camera: this graph has no camera'; };
+
 // Whether a mouse event is within 6 screen pixels of the A/B divider.
 function nearDivider(ev) {
   const cv = $('view'), [fx] = framePos(ev);
@@ -40,7 +42,7 @@ function nearDivider(ev) {
 function onPointerDown(ev) {
   const mode = nearDivider(ev) ? 'divider' : ev.button === 2 || ev.shiftKey ? 'pan' : 'orbit';
   if (mode !== 'divider' && !state.cam) {
-    $('cam-ups').textContent = 'camera: this graph has no camera';
+    noCamera();
     return;
   }
   ev.preventDefault();
@@ -94,7 +96,7 @@ function onWheel(ev) {
 // one-sided walls of a box left no way back but a restart (issue 46).
 export function goHome() {
   if (!state.home) {
-    $('cam-ups').textContent = 'camera: this graph has no camera';
+    noCamera();
     return;
   }
   steer(structuredClone(state.home), false);

@@ -4,8 +4,8 @@
 // a mutation of the state asks for a render, and the renders asked for within one animation
 // frame are one render.
 import { state } from './state.js';
-import { drawHistogram, imageStats } from './stats.js';
-import { channelRange, ImageView, shownChannel } from './tonemap.js';
+import { channelRange, drawHistogram, imageStats } from './stats.js';
+import { ImageView, shownChannel } from './tonemap.js';
 import { $, showRequestError } from './ui.js';
 
 let view = null, queued = false, drawn = null;

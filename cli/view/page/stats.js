@@ -1,9 +1,33 @@
 // The statistics of a shown image (tev's per-channel readout): each channel's minimum,
-// maximum and mean over its finite values, and a histogram of the channel on show, both
-// counted once per image (a new image is the only time these loops run).
+// maximum and mean over its finite values, the false colour's auto range, and a histogram
+// of the channel on show, each counted once per image (a new image is the only time these
+// loops run).
 
 const statsOf = new WeakMap();
 const histOf = new WeakMap();
+const rangeOf = new WeakMap();
+
+// [min, max] of channel ch over an image's finite values other than 0 ([0, 0] when it has
+// none): 0 is the background of every G-buffer port, and a depth's 0 beside surfaces at 3-5
+// units would squeeze them into half the scale. Counted once per image and channel: a new
+// image is the only time this loop runs.
+export function channelRange(img, ch) {
+  if (!rangeOf.has(img)) rangeOf.set(img, new Map());
+  const known = rangeOf.get(img);
+  if (!known.has(ch)) {
+    let lo = Infinity, hi = -Infinity;
+    if (ch < img.c) {
+      for (let i = ch; i < img.data.length; i += img.c) {
+        const v = img.data[i];
+        if (v === 0) continue;
+        if (v < lo) lo = v;
+        if (v > hi) hi = v; // NaN fails both tests
+      }
+    }
+    known.set(ch, lo <= hi && Number.isFinite(lo) && Number.isFinite(hi) ? [lo, hi] : [0, 0]);
+  }
+  return known.get(ch);
+}
 
 // [{min, max, mean}] per channel (up to 4) over the finite values; null where none is.
 export function imageStats(img) {

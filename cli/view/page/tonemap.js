@@ -124,29 +124,6 @@ export function shownChannel(img, d) {
   return img.c === 1 ? 0 : pick;
 }
 
-// [min, max] of channel ch over an image's finite values other than 0 ([0, 0] when it has
-// none): 0 is the background of every G-buffer port, and a depth's 0 beside surfaces at 3-5
-// units would squeeze them into half the scale. Counted once per image and channel: a new
-// image is the only time this loop runs.
-const ranges = new WeakMap();
-export function channelRange(img, ch) {
-  if (!ranges.has(img)) ranges.set(img, new Map());
-  const known = ranges.get(img);
-  if (!known.has(ch)) {
-    let lo = Infinity, hi = -Infinity;
-    if (ch < img.c) {
-      for (let i = ch; i < img.data.length; i += img.c) {
-        const v = img.data[i];
-        if (v === 0) continue;
-        if (v < lo) lo = v;
-        if (v > hi) hi = v; // NaN fails both tests
-      }
-    }
-    known.set(ch, lo <= hi && Number.isFinite(lo) && Number.isFinite(hi) ? [lo, hi] : [0, 0]);
-  }
-  return known.get(ch);
-}
-
 // What a side shows for an image (null: none yet, drawn black from the 1x1 zero texture).
 function sideOf(img, d) {
   const pick = PICKS[d.channel] ?? -1;
