@@ -5,6 +5,7 @@
  * the advice built on them (the up-axis hint, the scale hint, a scene to paste) too.
  * Writes to the stream the caller gives; reads the files only. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "lang/diag.h"
@@ -93,6 +94,12 @@ static const char *print_up(FILE *out, const char *indent, const struct ssg_mode
         if (turn)
             fprintf(out, "rotate=%s on the mesh line stands it up (the renderer's up is +Y)",
                     turn);
+        else if (up->alt_sign)
+            fprintf(out, "upright as loaded if the file was made that way, but the file does "
+                    "not record which way it was made: one made with another up comes out %c%c "
+                    "up, lying on its side, and rotate=%s stands it up (render the scene below "
+                    "and look)", up->alt_sign < 0 ? '-' : '+', axes[up->alt_axis],
+                    rotate_to_y(up->alt_axis, up->alt_sign));
         else
             fprintf(out, "upright as loaded, no rotate needed (a Z-up rotate would lay it on "
                     "its back)");
@@ -290,45 +297,106 @@ static void place_box(const float lo[3], const float hi[3], const float rot[3], 
     }
 }
 
-/* A scene to paste around the model: its mesh line with the suggested rotate and scale, a
-   floor under it (occlusion needs something to land on) three times its width, a sun and
-   a sky; no camera line, so the bounds are framed. */
-static void print_snippet(FILE *out, const char *path, const char *rotate, float scale,
-                          const float lo[3], const float hi[3])
+/* x as %g writes it, read back: what a scene file pasted from the printed line holds. */
+static float as_printed(float x)
 {
-    const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
-    const char *dot = strrchr(name, '.');
-    float rot[3] = {0, 0, 0}, plo[3], phi[3];
+    char text[32];
+    snprintf(text, sizeof text, "%g", (double)x);
+    return strtof(text, NULL);
+}
+
+/* The camera line of the suggested scene: the placed model framed from the front, to the
+   right and above (the default camera frames the floor, three times wider, and shows the
+   model small), far enough to see the whole floor. A camera the scene reader would refuse
+   as printed (a speck far from the origin: position and target round to one point) is
+   left out, and the default camera frames the scene. */
+static void print_camera(FILE *out, const float plo[3], const float phi[3], float width)
+{
+    const float front_right[3] = {0.42679f, 0.29875f, 0.85358f}; /* (0.5, 0.35, 1) normalised */
+    struct ssg_camera c;
+    enum ssg_camera_part part;
+    if (!ssg_camera_frame_box(plo, phi, front_right, &c))
+        return;
+    c.far_z += width;
+    for (int i = 0; i < 3; i++)
+        c.position[i] = as_printed(c.position[i]), c.target[i] = as_printed(c.target[i]);
+    c.near_z = as_printed(c.near_z), c.far_z = as_printed(c.far_z);
+    if (ssg_camera_fault(&c, &part))
+        return;
+    fprintf(out, "    camera(position=[%g, %g, %g], target=[%g, %g, %g], near=%g, far=%g)\n",
+            (double)c.position[0], (double)c.position[1], (double)c.position[2],
+            (double)c.target[0], (double)c.target[1], (double)c.target[2], (double)c.near_z,
+            (double)c.far_z);
+}
+
+/* The model's box once placed by its mesh line's rotate (NULL: none) and scale (0: none),
+   and the width of a floor under it: three times the box's; for a point or an upright line
+   (no area) three times its height, at least 1 and a thousandth of its distance (a floor
+   float can place; a plane of size 0 is refused). 0 when the placed box overflows float. */
+static float placed_floor(const float lo[3], const float hi[3], const char *rotate,
+                          float scale, float plo[3], float phi[3])
+{
+    float rot[3] = {0, 0, 0};
     if (rotate)
         sscanf(rotate, "[%f, %f, %f]", &rot[0], &rot[1], &rot[2]);
     place_box(lo, hi, rot, scale > 0.0f ? scale : 1.0f, plo, phi);
     float width = 3.0f * fmaxf(phi[0] - plo[0], phi[2] - plo[2]);
-    if (width == 0.0f) { /* a point or an upright line (no area): three times its height, at
-                            least 1 and a thousandth of its distance (a floor float can place;
-                            a plane of size 0 is refused) */
+    if (width == 0.0f) {
         float far = fmaxf(fmaxf(fabsf(plo[0]), fabsf(phi[0])),
                           fmaxf(fabsf(plo[2]), fabsf(phi[2])));
         width = fmaxf(3.0f * (phi[1] - plo[1]), fmaxf(1.0f, 1e-3f * far));
     }
-    if (!isfinite(width) || !isfinite(plo[0] + phi[0]) || !isfinite(plo[2] + phi[2])) {
-        fprintf(out, "  no scene to suggest: the model's box (%g wide) overflows float once "
-                "placed (scale it down on its mesh line)\n", (double)width);
-        return;
-    }
-    fprintf(out, "  a scene around it (docs/scenes.md), to save as %.*s.scene next to %s:\n",
-            (int)(dot ? dot - name : (long)strlen(name)), name, name);
-    fprintf(out, "    mesh(\"%s\"", name);
+    return isfinite(width) && isfinite(plo[0] + phi[0]) && isfinite(plo[2] + phi[2]) ? width
+                                                                                      : 0.0f;
+}
+
+/* The mesh line and the floor under it, each line after `lead` ("    ", or "    # " for
+   lines to use instead). */
+static void print_model_and_floor(FILE *out, const char *lead, const char *name,
+                                  const char *rotate, float scale, const float plo[3],
+                                  const float phi[3], float width)
+{
+    fprintf(out, "%smesh(\"%s\"", lead, name);
     if (rotate)
         fprintf(out, ", rotate=%s", rotate);
     if (scale > 0.0f)
         fprintf(out, ", scale=%g", (double)scale);
-    fprintf(out, ")\n    plane(center=[%g, %g, %g], size=[%g, 0, %g])\n",
+    fprintf(out, ")\n%splane(center=[%g, %g, %g], size=[%g, 0, %g])\n", lead,
             (double)(plo[0] + phi[0]) / 2, (double)plo[1], (double)(plo[2] + phi[2]) / 2,
             (double)width, (double)width);
+}
+
+/* A scene to paste around the model: its mesh line with the suggested rotate and scale, a
+   floor under it (occlusion needs something to land on) three times its width, a sun, a
+   sky, and a camera framing the model; with alt_rotate (the other way a file of its format
+   may come out), the two lines that stand it up that way instead, as comments. */
+static void print_snippet(FILE *out, const char *path, const char *rotate,
+                          const char *alt_rotate, float scale, const float lo[3],
+                          const float hi[3])
+{
+    const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
+    const char *dot = strrchr(name, '.');
+    int stem = (int)(dot ? dot - name : (long)strlen(name));
+    float plo[3], phi[3], alo[3], ahi[3];
+    float width = placed_floor(lo, hi, rotate, scale, plo, phi);
+    if (width == 0.0f) {
+        fprintf(out, "  no scene to suggest: the model's box overflows float once placed "
+                "(scale it down on its mesh line)\n");
+        return;
+    }
+    fprintf(out, "  a scene around it (docs/scenes.md), to save as %.*s.scene next to %s:\n",
+            stem, name, name);
+    print_model_and_floor(out, "    ", name, rotate, scale, plo, phi, width);
+    float alt_width = alt_rotate ? placed_floor(lo, hi, alt_rotate, scale, alo, ahi) : 0.0f;
+    if (alt_width > 0.0f) {
+        fprintf(out, "    # lying on its side? these two lines stand it up instead:\n");
+        print_model_and_floor(out, "    # ", name, alt_rotate, scale, alo, ahi, alt_width);
+    }
     fprintf(out, "    directional_light(direction=[-0.4, -1, -0.6], intensity=2)\n"
-                 "    environment(color=[0.6, 0.7, 0.9], intensity=0.5)\n"
-                 "  and render it: ssgraph run graphs/ssdo.graph --scene %.*s.scene\n",
-            (int)(dot ? dot - name : (long)strlen(name)), name);
+                 "    environment(color=[0.6, 0.7, 0.9], intensity=0.5)\n");
+    print_camera(out, plo, phi, width);
+    fprintf(out, "  and render it: ssgraph run graphs/ssdo.graph --scene %.*s.scene\n", stem,
+            name);
 }
 
 /* 1 when a triangle of the model has area (its edges' cross product, in double, is not 0). */
@@ -422,7 +490,9 @@ enum ssg_err ssg_model_summary(const char *path, FILE *out, struct ssg_diags *di
     if (!model_has_area(g))
         fprintf(out, "  no area: every triangle's corners lie on one line or at one point, so "
                 "the model renders as nothing\n");
-    print_snippet(out, path, rotate, scale, lo, hi);
+    const char *alt_rotate =
+        up.axis >= 0 && up.alt_sign ? rotate_to_y(up.alt_axis, up.alt_sign) : NULL;
+    print_snippet(out, path, rotate, alt_rotate, scale, lo, hi);
     ssg_gltf_destroy(&g);
     return SSG_OK;
 }

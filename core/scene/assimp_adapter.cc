@@ -406,19 +406,22 @@ void find_up(const aiScene &scene, const std::string &format, ssg_model_up *up)
     const aiMetadata *meta = scene.mMetaData;
     if (meta && meta->Get("UpAxis", axis) && axis >= 0 && axis <= 2) {
         meta->Get("UpAxisSign", sign);
-        *up = ssg_model_up{(int)axis, sign < 0 ? -1 : 1, ""};
+        *up = ssg_model_up{(int)axis, sign < 0 ? -1 : 1, "", 0, 0};
         std::snprintf(up->basis, sizeof up->basis, "the file's UpAxis metadata (%c%c), kept "
                       "as written by Assimp's %s reader", sign < 0 ? '-' : '+', "XYZ"[axis],
                       format.c_str());
     } else if (format == "3DS") {
-        *up = ssg_model_up{1, 1, "Assimp's 3DS reader, which turns 3ds Max's Z-up into +Y"};
+        /* the reader turns every file as if made Z-up; one made Y-up elsewhere (Debian's
+           glmark2 cat.3ds) comes out lying on its side, -Z up, and the file cannot say */
+        *up = ssg_model_up{1, 1, "Assimp's 3DS reader, which turns 3ds Max's Z-up into +Y",
+                           2, -1};
     } else if (format == "DAE") {
         *up = ssg_model_up{1, 1, "Assimp's Collada reader, which turns the file's <up_axis> "
-                                 "into +Y"};
+                                 "into +Y", 0, 0};
     } else if (format == "glTF 1.0") {
-        *up = ssg_model_up{1, 1, "the glTF 1.0 specification (+Y up)"};
+        *up = ssg_model_up{1, 1, "the glTF 1.0 specification (+Y up)", 0, 0};
     } else {
-        *up = ssg_model_up{-1, 1, ""};
+        *up = ssg_model_up{-1, 1, "", 0, 0};
         std::snprintf(up->basis, sizeof up->basis, "nothing: %s files do not say which way "
                       "is up", format.c_str());
     }

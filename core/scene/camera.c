@@ -5,6 +5,29 @@
 #include "lang/params.h"
 #include "scene/scene.h"
 
+int ssg_camera_frame_box(const float lo[3], const float hi[3], const float dir[3],
+                         struct ssg_camera *camera)
+{
+    if (!(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]))
+        return 0;
+    float c[3], r = 0.0f;
+    for (int i = 0; i < 3; i++) {
+        c[i] = 0.5f * (lo[i] + hi[i]);
+        r += 0.25f * (hi[i] - lo[i]) * (hi[i] - lo[i]);
+    }
+    r = fmaxf(sqrtf(r), 1e-3f);
+    float dist = 1.1f * r / sinf(0.5f * SSG_DEFAULT_FOV_Y * 3.14159265f / 180.0f);
+    for (int i = 0; i < 3; i++) {
+        camera->position[i] = c[i] + dist * dir[i];
+        camera->target[i] = c[i];
+        camera->up[i] = i == 1 ? 1.0f : 0.0f;
+    }
+    camera->fov_y = SSG_DEFAULT_FOV_Y;
+    camera->near_z = fmaxf(0.01f * dist, dist - 1.5f * r);
+    camera->far_z = dist + 2.0f * r;
+    return 1;
+}
+
 void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16])
 {
     const float *eye = camera->position;

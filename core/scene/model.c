@@ -113,7 +113,8 @@ static enum ssg_err prepare(const char *path, struct ssg_gltf **out, struct ssg_
         return e;
     extension_of(path, ext, sizeof ext);
     if (is_gltf(ext) && gltf_major(path) != 1) {
-        *up = (struct ssg_model_up){1, 1, "the glTF 2.0 specification (+Y up)"};
+        *up = (struct ssg_model_up){.axis = 1, .sign = 1,
+                                    .basis = "the glTF 2.0 specification (+Y up)"};
         return out ? ssg_gltf_load(path, out, why, why_len) : SSG_OK;
     }
     *done = 0;

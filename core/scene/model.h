@@ -40,6 +40,10 @@ struct ssg_model_up {
     int axis;        /* 0, 1, 2: x, y, z of the loaded model; -1: the file does not say */
     int sign;        /* +1 or -1 (the up direction along axis) */
     char basis[200]; /* what the axis rests on, "the glTF 2.0 specification (+Y up)" */
+    int alt_axis;    /* with alt_sign: where up comes out for a file that did not follow
+                        the format's custom the axis rests on (a 3DS made Y-up: -Z), which
+                        the file does not record */
+    int alt_sign;    /* +1 or -1; 0: no other way (zero-initialised: none) */
 };
 
 /* ssg_model_supported: in ssgraph.h (public). */

@@ -95,7 +95,7 @@ static _Noreturn void run_child(int fd, const char *path, ssg_model_import_fn im
     if (limits->seconds > 0) /* the parent kills it first; this is for a parent gone */
         alarm((unsigned)fmin(ceil(limits->seconds) + 5.0, 1e9));
     struct ssg_gltf *g = NULL;
-    struct ssg_model_up up = {-1, 1, ""};
+    struct ssg_model_up up = {.axis = -1, .sign = 1};
     char why[1024] = "";
     enum ssg_err e = import(path, want_model ? &g : NULL, &up, why, sizeof why);
     ssg_wire_send(fd, e, why, &up, e ? NULL : g);

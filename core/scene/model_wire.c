@@ -308,7 +308,9 @@ static int get_head(struct ssg_wire *w, long long *code, char *msg, size_t msg_l
         return 0;
     msg[n] = 0;
     up->basis[sizeof up->basis - 1] = 0;
-    return up->axis >= -1 && up->axis <= 2 ? 1 : fail(w, SSG_WIRE_CORRUPT);
+    return up->axis >= -1 && up->axis <= 2 && up->alt_axis >= 0 && up->alt_axis <= 2 &&
+                   up->alt_sign >= -1 && up->alt_sign <= 1
+               ? 1 : fail(w, SSG_WIRE_CORRUPT);
 }
 
 enum ssg_err ssg_wire_receive(struct ssg_wire *w, struct ssg_gltf **out,

@@ -228,6 +228,14 @@ float ssg_scene_scale_hint(const struct ssg_scene *scene, float radius, float *d
  * node.h. */
 void ssg_camera_view_matrix(const struct ssg_camera *camera, float m[16]);
 
+/* A camera looking at the middle of the box lo..hi from `dir` (the unit vector from the
+ * middle towards the eye), far enough for the box's bounding sphere to fit a vertical view of
+ * SSG_DEFAULT_FOV_Y with a 10 % margin, up +Y, near and far hugging the sphere. Returns 0
+ * and leaves *camera alone when the box is empty. (The scene's camera when none is given,
+ * and the one `check MODEL` suggests.) */
+int ssg_camera_frame_box(const float lo[3], const float hi[3], const float dir[3],
+                         struct ssg_camera *camera);
+
 /* The part of a camera at fault, so a scene file's message points at its argument. */
 enum ssg_camera_part {
     SSG_CAMERA_FINE,

@@ -391,31 +391,15 @@ static void build_mesh(struct scene_loader *l, const struct scene_entity *e, int
 }
 
 /* No camera anywhere: look at the middle of the scene's bounds from the front (+z),
- * slightly above, far enough for the bounding sphere to fit the 45-degree view. */
+ * slightly above. */
 static void default_camera(struct ssg_scene *s)
 {
     float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF},
           hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
     for (int i = 0; i < s->mesh_count; i++)
         ssg_mesh_bounds(&s->meshes[i], lo, hi);
-    if (!(lo[0] <= hi[0]))
-        return; /* nothing to look at: keep the camera table's defaults */
-    float c[3], r = 0.0f;
-    for (int i = 0; i < 3; i++) {
-        c[i] = 0.5f * (lo[i] + hi[i]);
-        r += 0.25f * (hi[i] - lo[i]) * (hi[i] - lo[i]);
-    }
-    r = fmaxf(sqrtf(r), 1e-3f);
-    float dist = 1.1f * r / sinf(0.5f * SSG_DEFAULT_FOV_Y * 3.14159265f / 180.0f);
-    const float dir[3] = {0.0f, 0.24253563f, 0.97014250f}; /* (0, 1, 4) normalised */
-    for (int i = 0; i < 3; i++) {
-        s->camera.position[i] = c[i] + dist * dir[i];
-        s->camera.target[i] = c[i];
-        s->camera.up[i] = i == 1 ? 1.0f : 0.0f;
-    }
-    s->camera.fov_y = SSG_DEFAULT_FOV_Y;
-    s->camera.near_z = fmaxf(0.01f * dist, dist - 1.5f * r);
-    s->camera.far_z = dist + 2.0f * r;
+    const float front[3] = {0.0f, 0.24253563f, 0.97014250f}; /* (0, 1, 4) normalised */
+    ssg_camera_frame_box(lo, hi, front, &s->camera); /* nothing to look at: the defaults */
 }
 
 static void build_geometry(struct scene_loader *l, int *camera_set)
