@@ -82,6 +82,9 @@ struct ssg_param_info {
     int bounded;                /* 1 = min and max hold (number, vec3 or int-list values) */
     double min, max;            /* inclusive */
     const char *const *choices; /* an enum's names, NULL-terminated; NULL otherwise */
+    double soft_min, soft_max;  /* a number's useful range, what a slider spans (inside min
+                                   .. max, around the default); min, max where the row
+                                   gives none; both 0 for an unbounded one without */
 };
 /* SSG_E_UNKNOWN_NODE without such a node type, SSG_E_USAGE with k out of range. */
 SSG_API enum ssg_err ssg_node_param_info(const char *node, int k, struct ssg_param_info *info);

@@ -181,7 +181,8 @@ const char *ssg_graph_node_param(const struct ssg_graph *graph, int index, int k
                                  char *value, size_t len);
 struct ssg_param_info {
     const char *name; const char *type; const char *unit; const char *doc; int bounded;
-    double min; double max; const char *const *choices; ...;
+    double min; double max; const char *const *choices; double soft_min; double soft_max;
+    ...;
 };
 enum ssg_err ssg_node_param_info(const char *node, int k, struct ssg_param_info *info);
 struct ssg_port_info {

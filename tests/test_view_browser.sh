@@ -11,23 +11,16 @@
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_browser"
 
-for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
-    [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
-done
-/usr/bin/python3 -c 'import selenium' 2> /dev/null ||
-    fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
-[ "$fails" -eq 0 ] || finish test_view_browser
+source "$(dirname "$0")/view_lib.sh"
+view_need_browser
 
 # The copy names its scene by absolute path, so it loads from the scratch folder.
-mkdir -p "$TMP/graph" "$TMP/home"
+mkdir -p "$TMP/graph"
 sed "s|^scene \"\.\./|scene \"$PWD/|" graphs/ssdo_realtime.graph > "$TMP/graph/ssdo_realtime.graph"
 # a compare last, as the tutorial's sweep.graph has: its outputs are on-demand and nothing
 # reads them, so the last output has no image (the page must open on one that has)
 printf '\n# the viewer test: a sink whose outputs nothing reads\nc = compare(img.out, img.out)\n' \
     >> "$TMP/graph/ssdo_realtime.graph"
-# Chromium keeps its profile and caches under HOME: keep them in the scratch folder.
-export HOME=$TMP/home XDG_CONFIG_HOME=$TMP/home XDG_CACHE_HOME=$TMP/home
-
 # What the page's shader must show at +1 stop: the CLI's PNGs of a colour and a one-channel
 # port under each tone curve.
 for curve in clamp reinhard aces; do

@@ -13,7 +13,6 @@ import re
 import sys
 import time
 
-from selenium.common.exceptions import WebDriverException
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
@@ -21,10 +20,9 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 import view_page
-from view_page import (CANVAS_BYTES, CANVAS_HASH, WAIT, browser, canvas_colours,  # noqa: F401
-                       canvas_vs_png, fail, failures, generation, js_errors, localhost_note,
-                       metric, outside_viridis, ran_nodes, server_state, set_display, shot,
-                       start_chromium, text, wait_for)
+from view_page import (CANVAS_BYTES, CANVAS_HASH, WAIT, canvas_colours,  # noqa: F401
+                       canvas_vs_png, fail, generation, metric, outside_viridis,
+                       ran_nodes, server_state, set_display, shot, text, wait_for)
 
 URL, OUT, GRAPH = sys.argv[1], sys.argv[2], sys.argv[3]
 SIZE = sys.argv[4] if len(sys.argv) > 4 else "160x90"  # the server's --size
@@ -113,24 +111,21 @@ def step_tonemap(drv):
 
 
 def step_click_node(drv):
-    nodes = drv.find_elements(By.CSS_SELECTOR, "#diagram g.node")
-    target = [g for g in nodes
-              if g.find_element(By.TAG_NAME, "title").get_attribute("textContent") == "do"]
+    target = view_page.diagram_node(drv, "do")
     if not target:
-        fail("no node 'do' in the diagram")
         return
     before = drv.execute_script(CANVAS_HASH)
     # the diagram enlarged, and the node's label clicked, as a user would
     drv.find_element(By.ID, "diagram-expand").click()
     shot(drv, "diagram")
-    target[0].find_element(By.TAG_NAME, "text").click()
+    target.find_element(By.TAG_NAME, "text").click()
     wait_for(drv, "the panel of node do", lambda d: text(d, "node-name") == "do")
     if not drv.find_elements(By.ID, "param-do-radius-slider"):
         fail("node do has no radius slider in its panel")
     # the page shows a change at its next animation frame (render.js)
     wait_for(drv, "clicking do to show do.out", lambda d: Select(
         d.find_element(By.ID, "port-a")).first_selected_option.text == "do.out")
-    if "selected" not in (target[0].get_attribute("class") or ""):
+    if "selected" not in (target.get_attribute("class") or ""):
         fail("the clicked node is not marked selected")
     wait_for(drv, "do.out drawn", lambda d: d.execute_script(CANVAS_HASH) != before)
 
@@ -437,32 +432,9 @@ def step_save(drv):
 
 
 def main():
-    chromium = None
-    try:
-        chromium, port = start_chromium()
-        drv = browser(port)
-    except WebDriverException as e:
-        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
-              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
-        if chromium:
-            chromium.kill()
-        return 1
-    try:
-        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider,
-                     step_slider_drag, step_checkbox, step_camera,
-                     step_display, step_range, step_ab, step_errors, step_save):
-            t0 = time.time()
-            step(drv)
-            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
-            if failures:
-                shot(drv, "failure")
-                break
-        js_errors(drv)
-    finally:
-        drv.quit()
-        chromium.kill()
-        chromium.wait()
-    return 1 if failures else 0
+    return view_page.run_steps((step_load, step_modules, step_tonemap, step_click_node,
+                                step_slider, step_slider_drag, step_checkbox, step_camera,
+                                step_display, step_range, step_ab, step_errors, step_save))
 
 
 if __name__ == "__main__":

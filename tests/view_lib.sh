@@ -61,3 +61,18 @@ view_stop_within() {
     [ "$took" -le "$limit" ] || fail "SIG$sig took $took ms to end the server (at most $limit)"
     stop_ms=$took
 }
+
+# view_need_browser: the page's tests drive Debian's chromium with chromedriver and
+# python3-selenium; ends the test when one is missing. Chromium keeps its profile and
+# caches under HOME, which this points into the scratch folder.
+view_need_browser() {
+    local tool
+    for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
+        [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+    done
+    /usr/bin/python3 -c 'import selenium' 2> /dev/null ||
+        fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+    [ "$fails" -eq 0 ] || finish "$(basename "$0" .sh)"
+    mkdir -p "$TMP/home"
+    export HOME=$TMP/home XDG_CONFIG_HOME=$TMP/home XDG_CACHE_HOME=$TMP/home
+}

@@ -240,3 +240,42 @@ def js_errors(drv):
     for e in logs:
         if e["level"] == "SEVERE" and "Failed to load resource" not in e["message"]:
             fail(f"browser console: {e['message']}")
+
+
+def diagram_node(drv, name):
+    """The diagram's SVG group of node `name` (its <title> is the name), or None with a
+    failure."""
+    for g in drv.find_elements(By.CSS_SELECTOR, "#diagram g.node"):
+        if g.find_element(By.TAG_NAME, "title").get_attribute("textContent") == name:
+            return g
+    fail(f"no node '{name}' in the diagram")
+    return None
+
+def run_steps(steps, shot_name="failure"):
+    """Starts headless Chromium, runs each step(drv) in turn (timed), stops at the first
+    step with failures (screenshot viewer-SHOT_NAME.png), checks the console, and returns
+    the exit status: 1 on any failure."""
+    chromium = None
+    try:
+        chromium, port = start_chromium()
+        drv = browser(port)
+    except WebDriverException as e:
+        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
+              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
+        if chromium:
+            chromium.kill()
+        return 1
+    try:
+        for step in steps:
+            t0 = time.time()
+            step(drv)
+            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
+            if failures:
+                shot(drv, shot_name)
+                break
+        js_errors(drv)
+    finally:
+        drv.quit()
+        chromium.kill()
+        chromium.wait()
+    return 1 if failures else 0

@@ -59,6 +59,16 @@ static void json_param(FILE *f, const struct ssg_graph *g, int node, const char 
     json_bound(f, &p, p.min);
     fputs(",\"max\":", f);
     json_bound(f, &p, p.max);
+    /* the useful range, the slider's (min, max where the row has none); null, null for a
+       number with neither */
+    if (p.soft_max > p.soft_min) {
+        fputs(",\"soft_min\":", f);
+        ssg_json_number(f, p.soft_min);
+        fputs(",\"soft_max\":", f);
+        ssg_json_number(f, p.soft_max);
+    } else {
+        fputs(",\"soft_min\":null,\"soft_max\":null", f);
+    }
     fputs(",\"unit\":", f);
     if (p.unit)
         ssg_json_string(f, p.unit);

@@ -17,10 +17,12 @@ enum ssg_err ssg_node_param_info(const char *node, int k, struct ssg_param_info 
     if (k < 0 || k >= desc->params.count)
         return SSG_E_USAGE;
     const struct ssg_param_desc *p = &desc->params.params[k];
+    int soft = ssg_param_has_soft(p);
     *info = (struct ssg_param_info){
         .name = p->name, .type = ssg_param_type_name(p), .unit = p->unit, .doc = p->help,
         .bounded = !(p->min == 0 && p->max == 0), .min = p->min, .max = p->max,
-        .choices = p->type == SSG_P_ENUM ? p->choices : NULL};
+        .choices = p->type == SSG_P_ENUM ? p->choices : NULL,
+        .soft_min = soft ? p->soft_min : p->min, .soft_max = soft ? p->soft_max : p->max};
     return SSG_OK;
 }
 

@@ -387,20 +387,35 @@ static void default_text(const struct ssg_param_desc *p, char *buf, size_t len)
     ssg_param_format(&at_zero, &scratch, buf, len);
 }
 
+/* What `describe` and the docs say a value may be: the valid range, then the useful one
+   the viewer's slider spans ("a number in [1e-06, 1e+06] scene units, slider [0.05, 5]"). */
+static void range_text(const struct ssg_param_desc *p, char *buf, size_t len)
+{
+    expected_text(p, buf, len);
+    size_t n = strlen(buf);
+    if (ssg_param_has_soft(p) && n < len)
+        snprintf(buf + n, len - n, ", slider [%g, %g]", p->soft_min, p->soft_max);
+}
+
+int ssg_param_has_soft(const struct ssg_param_desc *p)
+{
+    return (p->type == SSG_P_FLOAT || p->type == SSG_P_INT) && p->soft_max > p->soft_min;
+}
+
 void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream)
 {
-    char def[128], expected[256];
+    char def[128], expected[300];
     default_text(p, def, sizeof def);
-    expected_text(p, expected, sizeof expected);
+    range_text(p, expected, sizeof expected);
     fprintf(stream, "  %-18s %-8s default %-14s %s\n  %18s %s\n", p->name, ssg_param_type_name(p), def,
             expected, "", p->help ? p->help : "");
 }
 
 void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream)
 {
-    char def[128], expected[256];
+    char def[128], expected[300];
     default_text(p, def, sizeof def);
-    expected_text(p, expected, sizeof expected);
+    range_text(p, expected, sizeof expected);
     fprintf(stream, "| `%s` | %s | `%s` | %s | %s |\n", p->name, ssg_param_type_name(p), def, expected,
             p->help ? p->help : "");
 }

@@ -1,6 +1,7 @@
 /* params.h - parameter tables: declared once per node (or scene entity) in C, with offsetof
  * into the owner's params struct. The same table parses the graph and scene files, checks
- * ranges, fills defaults, prints `ssgraph describe` and writes the Markdown docs.
+ * ranges, fills defaults, prints `ssgraph describe`, writes the Markdown docs and gives the
+ * viewer's sliders their span.
  *
  * Storage of each type inside the params struct:
  *   SSG_P_FLOAT  float          SSG_P_INT   int        SSG_P_BOOL  int (0/1)
@@ -51,6 +52,11 @@ struct ssg_param_desc {
     double def;                 /* default for FLOAT/INT/BOOL/ENUM (ENUM: choice index) */
     double min, max;            /* inclusive range for FLOAT/INT/VEC3 components/INTS values;
                                    min == max == 0 means unbounded */
+    double soft_min, soft_max;  /* FLOAT/INT: the useful range (Blender's soft limits): what
+                                   a slider spans and a user normally wants, inside min..max
+                                   and around the default; a typed value may lie anywhere in
+                                   min..max. Every node's number row sets one
+                                   (test_param_soft); 0, 0 = none (scene entities) */
     const char *unit;           /* "px", "scene units", "degrees", ... or NULL */
     const char *help;           /* one line */
     const char *const *choices; /* ENUM: NULL-terminated names */
@@ -107,15 +113,19 @@ struct ssg_param_desc {
 /* One-line parameter rows (the idea of libplacebo's OPT_* rows). A node writes each
  * parameter once, as one row of a list macro: its kind (the SSG_P_* suffix), its field,
  * its one-line doc, then the rest of its entry as designated initialisers (default, range,
- * unit, choices, host_only):
+ * useful range, unit, choices, host_only):
  *   #define SSG_SSAO_PARAMS(P)                                                        \
  *       P(FLOAT, radius, "hemisphere radius around the pixel", .def = 0.5,            \
- *         .min = 1e-6, .max = 1e6, .unit = "scene units")                             \
+ *         .min = 1e-6, .max = 1e6, .soft_min = 0.05, .soft_max = 5,                   \
+ *         .unit = "scene units")                                                      \
  *       P(ENUM, mode, "sampling region", .def = 0, .choices = ssg_ssao_mode_choices)
  *   SSG_PARAMS_STRUCT(ssg_ssao_params, SSG_SSAO_PARAMS);          (in the node's header)
  *   SSG_PARAMS_TABLE(params, ssg_ssao_params, SSG_SSAO_PARAMS);   (in its descriptor file)
  * The struct gets one field a row, of the C type its kind stores (table above), and the
- * table one entry a row, type-checked as SSG_FIELD_* checks it. A row needs at least one
+ * table one entry a row, type-checked as SSG_FIELD_* checks it. A number row (FLOAT, INT)
+ * gives both ranges: min..max is what is valid (parsing refuses the rest), soft_min..soft_max
+ * what is useful, for the viewer's slider and the docs (where min..max is itself useful,
+ * such as 0..1, the soft range repeats it). A row needs at least one
  * initialiser after the doc (ISO C wants an argument for `...`). One generated table a
  * translation unit (the table names its struct through one file-scope typedef). A GL
  * shader reads every row not marked host_only as `p_<field>` (gl.h, #pragma ssg_params). */
@@ -196,7 +206,11 @@ enum ssg_err ssg_param_set_text(struct ssg_param_table table, void *params, cons
 /* Comma-separated list of parameter names ("radius, bias, samples") for messages. */
 void ssg_param_names(struct ssg_param_table table, char *buf, size_t len);
 
-/* Prints one parameter line for `describe`: name, type, default, range, unit, help. */
+/* 1 when p is a number with a useful range (soft_min < soft_max), else 0. */
+int ssg_param_has_soft(const struct ssg_param_desc *p);
+
+/* Prints one parameter line for `describe`: name, type, default, range, unit, useful range
+ * (the slider's), help. */
 void ssg_param_describe(const struct ssg_param_desc *p, FILE *stream);
 /* Same as a Markdown table row. */
 void ssg_param_markdown(const struct ssg_param_desc *p, FILE *stream);

@@ -14,7 +14,8 @@ enum { SSG_ATROUS_MAX_ITERATIONS = SSG_BILATERAL_MAX_PASSES };
 #define SSG_ATROUS_PARAMS(P)                                                               \
     P(INT, iterations,                                                                     \
       "passes; pass i spaces its 5 x 5 taps 2^i px apart (3: 14 px each side)", .def = 3,  \
-      .min = 1, .max = SSG_ATROUS_MAX_ITERATIONS, .unit = "passes")                        \
+      .min = 1, .max = SSG_ATROUS_MAX_ITERATIONS, .soft_min = 1,                           \
+      .soft_max = SSG_ATROUS_MAX_ITERATIONS, .unit = "passes")                             \
     SSG_BILATERAL_EDGE_PARAMS(P)
 SSG_PARAMS_STRUCT(ssg_atrous_params, SSG_ATROUS_PARAMS);
 

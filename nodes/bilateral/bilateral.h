@@ -31,9 +31,9 @@ SSG_PORT_ENUM(ssg_bilateral_output, SSG_BILATERAL_OUT, SSG_BILATERAL_OUTPUTS);
    binds prepare()'s constants. */
 #define SSG_BILATERAL_EDGE_PARAMS(P)                                                       \
     P(FLOAT, sigma_depth, "depth sigma as a fraction of the centre pixel's depth",         \
-      .def = 0.05, .min = 1e-6, .max = 1000)                                               \
+      .def = 0.05, .min = 1e-6, .max = 1000, .soft_min = 0.005, .soft_max = 0.5)           \
     P(INT, normal_power, "normal weight max(0, n.n')^p; 0 = off", .def = 16, .min = 0,     \
-      .max = 127)
+      .max = 127, .soft_min = 0, .soft_max = 64)
 
 /* The spatial weight's shape (README.md, "Window"). */
 enum ssg_bilateral_window {
@@ -45,9 +45,9 @@ enum ssg_bilateral_window {
    unit. */
 #define SSG_BILATERAL_PARAMS(P)                                                            \
     P(INT, size, "window diameter, odd", .def = 9, .min = 1,                               \
-      .max = SSG_BILATERAL_MAX_SIZE, .unit = "px")                                         \
+      .max = SSG_BILATERAL_MAX_SIZE, .soft_min = 1, .soft_max = 31, .unit = "px")          \
     P(FLOAT, sigma_spatial, "spatial Gaussian sigma; 0 = size / 3", .def = 0, .min = 0,    \
-      .max = 1000, .unit = "px")                                                           \
+      .max = 1000, .soft_min = 0, .soft_max = 16, .unit = "px")                            \
     P(ENUM, window,                                                                        \
       "spatial weight: gaussian (sigma_spatial) or tent (1 - |d| / (radius + 1) a side; "  \
       "size 2 P - 1 removes any pattern of period P, such as an interleaved tile's)",      \

@@ -42,7 +42,8 @@ SSG_PORT_ENUM(ssg_combine_output, SSG_COMBINE_OUT, SSG_COMBINE_OUTPUTS);
 #define SSG_COMBINE_PARAMS(P)                                                              \
     P(FLOAT, ambient,                                                                      \
       "strength of the uniform ambient light that AO darkens (linear, like direct)",       \
-      .def = 0.3, .min = 0, .max = 10, .host_only = 1) /* prepare(): k */                  \
+      .def = 0.3, .min = 0, .max = 10, .soft_min = 0, .soft_max = 2,                       \
+      .host_only = 1) /* prepare(): k */                                                   \
     P(VEC3, ambient_color, "tint of the ambient light", .min = 0, .max = 100,              \
       .def3 = {1, 1, 1}, .unit = "linear RGB", .host_only = 1) /* prepare(): k */          \
     P(BOOL, darken_indirect,                                                               \

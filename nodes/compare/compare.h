@@ -47,14 +47,14 @@ extern const char *const ssg_compare_flip_choices[];
    compare.c are made from these rows. region is [x0, y0, x1, y1] in frame pixels. */
 #define SSG_COMPARE_PARAMS(P)                                                              \
     P(FLOAT, scale, "diff image: |a - b| at which the colour is pure red or blue",         \
-      .def = 0.25, .min = 1e-6, .max = 1e6)                                                \
+      .def = 0.25, .min = 1e-6, .max = 1e6, .soft_min = 0.01, .soft_max = 1)               \
     P(FLOAT, peak,                                                                         \
       "signal peak: PSNR's maximum and SSIM's dynamic range L (1 for AO, [0,1] data)",     \
-      .def = 1, .min = 1e-6, .max = 1e6)                                                   \
+      .def = 1, .min = 1e-6, .max = 1e6, .soft_min = 0.1, .soft_max = 10)                  \
     P(INT, edge,                                                                           \
       "> 0: compare only the pixels within this distance of the frame's border (where "    \
       "screen-space methods lack occluders); 0 = the whole frame",                         \
-      .def = 0, .min = 0, .max = 16384, .unit = "px")                                      \
+      .def = 0, .min = 0, .max = 16384, .soft_min = 0, .soft_max = 128, .unit = "px")      \
     P(INTS, region,                                                                        \
       "[x0, y0, x1, y1]: compare only frame pixels x0 <= x < x1, y0 <= y < y1 (e.g. one "  \
       "wall; cut to the frame); [0, 0, 0, 0] = the whole frame",                           \
@@ -63,7 +63,7 @@ extern const char *const ssg_compare_flip_choices[];
     P(INT, banding,                                                                        \
       "> 0: also report banding, banding_rows, banding_cols: RMS of the row and column "   \
       "means of a - b minus their moving average over lines i +- banding; 0 = off",        \
-      .def = 0, .min = 0, .max = 4096, .unit = "px")                                      \
+      .def = 0, .min = 0, .max = 4096, .soft_min = 0, .soft_max = 64, .unit = "px")        \
     P(ENUM, flip,                                                                          \
       "FLIP metric (Andersson et al. 2020/2021): auto = LDR-FLIP for 1 channel (the "      \
       "value as grey), HDR-FLIP for 3 (linear radiance); ldr; hdr; off = not reported",    \
@@ -71,18 +71,19 @@ extern const char *const ssg_compare_flip_choices[];
     P(FLOAT, ppd,                                                                          \
       "FLIP's observer: pixels per degree of visual angle (default: a 0.7 m wide "         \
       "3840-pixel monitor at 0.7 m)",                                                      \
-      .def = SSG_FLIP_DEFAULT_PPD, .min = 1, .max = SSG_FLIP_MAX_PPD, .unit = "px/deg")    \
+      .def = SSG_FLIP_DEFAULT_PPD, .min = 1, .max = SSG_FLIP_MAX_PPD, .soft_min = 10,      \
+      .soft_max = 200, .unit = "px/deg")                                                   \
     P(BOOL, structure,                                                                     \
       "also report structure_pp, structure_rms, structure_pixels: the low-frequency "     \
       "relative error G(a - b) / G(b) where b is smooth (README.md)",                     \
       .def = 0)                                                                            \
     P(FLOAT, structure_sigma,                                                              \
       "the structure measure's Gaussian deviation, as a fraction of the frame's width",   \
-      .def = 0.01, .min = 1e-4, .max = 1)                                                  \
+      .def = 0.01, .min = 1e-4, .max = 1, .soft_min = 0.001, .soft_max = 0.1)              \
     P(FLOAT, structure_smooth,                                                             \
       "the structure measure's smoothness test: b counts as smooth where its blurs of "   \
       "deviation sigma and 2 sigma differ by at most this fraction",                      \
-      .def = 0.05, .min = 1e-6, .max = 1e6)
+      .def = 0.05, .min = 1e-6, .max = 1e6, .soft_min = 0.005, .soft_max = 0.5)
 SSG_PARAMS_STRUCT(ssg_compare_params, SSG_COMPARE_PARAMS);
 
 struct ssg_compare_consts {

@@ -38,24 +38,30 @@ SSG_PORT_ENUM(ssg_complexity_output, SSG_COMPLEXITY_OUT, SSG_COMPLEXITY_OUTPUTS)
       .max_count = SSG_INTS_MAX, .min = 1, .max = 1024, .unit = "samples",                 \
       .gl_in = SSG_COMPLEXITY_GL_COUNT)                                                    \
     P(INT, period, "Halton period N_g of the kernel (eq. 8): counts are whole periods",    \
-      .def = 10, .min = 1, .max = 1024, .unit = "samples", .host_only = 1) /* check() */   \
+      .def = 10, .min = 1, .max = 1024, .soft_min = 1, .soft_max = 64, .unit = "samples",  \
+      .host_only = 1) /* check() */                                                        \
     P(INT, scale, "cell side of the grid the gradients are taken on: 1, 2, 4 or 8",        \
-      .def = 4, .min = 1, .max = SSG_COMPLEXITY_MAX_SCALE, .unit = "px",                   \
+      .def = 4, .min = 1, .max = SSG_COMPLEXITY_MAX_SCALE, .soft_min = 1,                  \
+      .soft_max = SSG_COMPLEXITY_MAX_SCALE, .unit = "px",                                  \
       .gl_in = SSG_COMPLEXITY_GL_COUNT)                                                    \
     P(INT, resolutions, "grids combined by max: cells of scale, 2 scale, ... px",          \
-      .def = 1, .min = 1, .max = SSG_COMPLEXITY_MAX_RESOLUTIONS,                           \
+      .def = 1, .min = 1, .max = SSG_COMPLEXITY_MAX_RESOLUTIONS, .soft_min = 1,            \
+      .soft_max = SSG_COMPLEXITY_MAX_RESOLUTIONS,                                          \
       .gl_in = SSG_COMPLEXITY_GL_COUNT)                                                    \
     P(FLOAT, normal_threshold,                                                             \
       "sum over neighbour cells of |n - n_nb| below which a cell is flat", .def = 0.1,     \
-      .min = 0, .max = 8, .gl_in = SSG_COMPLEXITY_GL_WEIGHT)                               \
+      .min = 0, .max = 8, .soft_min = 0, .soft_max = 1, .gl_in = SSG_COMPLEXITY_GL_WEIGHT) \
     P(FLOAT, normal_gain, "weight = (gradient - threshold) gain, clamped to [0, 1]",       \
-      .def = 2, .min = 0, .max = 1e6, .gl_in = SSG_COMPLEXITY_GL_WEIGHT)                   \
+      .def = 2, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 20,                       \
+      .gl_in = SSG_COMPLEXITY_GL_WEIGHT)                                                   \
     P(FLOAT, depth_threshold,                                                              \
       "sum of |n . (P_nb - P)| / depth (depth change off the tangent plane, relative) "    \
       "below which a cell is flat",                                                        \
-      .def = 0.02, .min = 0, .max = 1e6, .gl_in = SSG_COMPLEXITY_GL_WEIGHT)                \
+      .def = 0.02, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 0.2,                   \
+      .gl_in = SSG_COMPLEXITY_GL_WEIGHT)                                                   \
     P(FLOAT, depth_gain, "weight = (gradient - threshold) gain, clamped to [0, 1]",        \
-      .def = 10, .min = 0, .max = 1e6, .gl_in = SSG_COMPLEXITY_GL_WEIGHT)
+      .def = 10, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 100,                     \
+      .gl_in = SSG_COMPLEXITY_GL_WEIGHT)
 SSG_PARAMS_STRUCT(ssg_complexity_params, SSG_COMPLEXITY_PARAMS);
 
 /* One grid of cells, as prepare() lays it out for the inputs' size. */

@@ -45,38 +45,41 @@ SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OU
     P(INT, samples,                                                                        \
       "percentage-closer taps a light (a Vogel disc turned per pixel), each a bilinear "   \
       "blend of four tests",                                                               \
-      .def = 12, .min = 1, .max = SSG_DIRECT_LIGHT_MAX_SAMPLES, .unit = "taps")            \
+      .def = 12, .min = 1, .max = SSG_DIRECT_LIGHT_MAX_SAMPLES, .soft_min = 1,             \
+      .soft_max = SSG_DIRECT_LIGHT_MAX_SAMPLES, .unit = "taps")                            \
     P(FLOAT, filter,                                                                       \
       "radius of the PCF disc: wider softens the map's stair steps; 0 = one bilinear test", \
-      .def = 1.5, .min = 0, .max = SSG_DIRECT_LIGHT_MAX_RADIUS, .unit = "texels")          \
+      .def = 1.5, .min = 0, .max = SSG_DIRECT_LIGHT_MAX_RADIUS, .soft_min = 0,             \
+      .soft_max = 8, .unit = "texels")                                                     \
     P(FLOAT, offset,                                                                       \
       "constant depth offset of the test (map rounding); larger leaks light under thin "   \
       "occluders",                                                                         \
-      .def = 0.5, .min = 0, .max = 1000, .unit = "texels")                                 \
+      .def = 0.5, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 8, .unit = "texels")   \
     P(FLOAT, tap_slope,                                                                    \
       "more depth offset for a PCF tap, per texel of its distance from the disc's centre: " \
       "no false shadow in concave corners (a stair's step); larger leaks at a wall's foot " \
       "(0.5: none; 1: 1.7 texels)",                                                        \
-      .def = 0.5, .min = 0, .max = 100, .unit = "texels per texel")                        \
+      .def = 0.5, .min = 0, .max = 100, .soft_min = 0, .soft_max = 2,                      \
+      .unit = "texels per texel")                                                          \
     P(FLOAT, normal_offset,                                                                \
       "the lookup point moves along the normal by normal_offset x sin(N, L) texels: no "   \
       "self-shadowing where the light grazes, no leak at a wall's foot",                   \
-      .def = 2, .min = 0, .max = 1000, .unit = "texels")                                   \
+      .def = 2, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 8, .unit = "texels")     \
     P(FLOAT, light_size,                                                                   \
       "point lights' diameter: > 0 gives contact-hardening soft shadows (PCSS); 0 = hard", \
-      .def = 0, .min = 0, .max = 1e6, .unit = "scene units",                               \
+      .def = 0, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 1, .unit = "scene units", \
       .host_only = 1) /* prepare(): the lights' spread */                                  \
     P(FLOAT, sun_angle,                                                                    \
       "directional lights' angular diameter (the sun: 0.53): > 0 gives PCSS soft "         \
       "shadows; 0 = hard",                                                                 \
-      .def = 0, .min = 0, .max = 45, .unit = "degrees",                                    \
+      .def = 0, .min = 0, .max = 45, .soft_min = 0, .soft_max = 5, .unit = "degrees",      \
       .host_only = 1) /* prepare(): the lights' spread */                                  \
     P(FLOAT, contact,                                                                      \
       "screen-space contact shadows: each pixel also marches this many of its map's "      \
       "texels towards the light over the G-buffer, and a visible surface whose plane the " \
       "march passes behind shadows it (the occluders nearer than the map test's offsets: " \
       "a wall just under a ceiling, a box's foot); 0 = off",                               \
-      .def = 0, .min = 0, .max = 64, .unit = "texels")                                     \
+      .def = 0, .min = 0, .max = 64, .soft_min = 0, .soft_max = 32, .unit = "texels")      \
     P(ENUM, fit,                                                                           \
       "where the maps' directional lights lie: the fit of the lightmaps node that made "  \
       "them (scene or view; the two must agree)",                                          \
@@ -84,7 +87,8 @@ SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OU
     P(INT, tiles,                                                                          \
       "the tiles of the lightmaps node that made the maps (a directional light's map as " \
       "tiles x tiles faces; the two must agree)",                                          \
-      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",          \
+      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .soft_min = 1,                    \
+      .soft_max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",                          \
       .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_direct_light_params, SSG_DIRECT_LIGHT_PARAMS);
 

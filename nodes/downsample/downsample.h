@@ -41,7 +41,8 @@ _Static_assert((int)SSG_DOWNSAMPLE_INPUTS == (int)SSG_DOWNSAMPLE_OUTPUTS,
 /* The parameter, one row (lang/params.h); the shader reads it as p_factor. */
 #define SSG_DOWNSAMPLE_PARAMS(P)                                                           \
     P(INT, factor, "block side: 2 (half resolution) or 4", .def = 2, .min = 2,             \
-      .max = SSG_DOWNSAMPLE_MAX_FACTOR, .unit = "px")
+      .max = SSG_DOWNSAMPLE_MAX_FACTOR, .soft_min = 2,                                     \
+      .soft_max = SSG_DOWNSAMPLE_MAX_FACTOR, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_downsample_params, SSG_DOWNSAMPLE_PARAMS);
 
 enum ssg_err ssg_downsample_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

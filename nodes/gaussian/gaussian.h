@@ -24,9 +24,11 @@ SSG_PORT_ENUM(ssg_gaussian_output, SSG_GAUSSIAN_OUT, SSG_GAUSSIAN_OUTPUTS);
    the shader reads the constants, no parameter. */
 #define SSG_GAUSSIAN_PARAMS(P)                                                             \
     P(FLOAT, sigma, "standard deviation", .def = 2, .min = 0.01,                           \
-      .max = SSG_GAUSSIAN_MAX_SIGMA, .unit = "px", .host_only = 1)                         \
+      .max = SSG_GAUSSIAN_MAX_SIGMA, .soft_min = 0.25, .soft_max = 32, .unit = "px",       \
+      .host_only = 1)                                                                      \
     P(INT, size, "window diameter, odd; 0 = 2 ceil(3 sigma) + 1", .def = 0, .min = 0,      \
-      .max = SSG_GAUSSIAN_MAX_SIZE, .unit = "px", .host_only = 1)
+      .max = SSG_GAUSSIAN_MAX_SIZE, .soft_min = 0, .soft_max = 63, .unit = "px",           \
+      .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_gaussian_params, SSG_GAUSSIAN_PARAMS);
 
 /* What the shader reads by name (#pragma ssg_consts). */

@@ -40,23 +40,26 @@ SSG_PORT_ENUM(ssg_gtao_output, SSG_GTAO_OUT, SSG_GTAO_OUTPUTS);
     P(INT, slices,                                                                         \
       "slice directions per pixel over the half circle about the view vector, each "       \
       "marched both ways (turned by the rotation pattern)",                                \
-      .def = 8, .min = 1, .max = SSG_GTAO_MAX_SLICES)                                      \
+      .def = 8, .min = 1, .max = SSG_GTAO_MAX_SLICES, .soft_min = 1,                       \
+      .soft_max = SSG_GTAO_MAX_SLICES)                                                     \
     P(INT, steps, "depth samples on each side of a slice", .def = 12, .min = 1,            \
-      .max = SSG_GTAO_MAX_STEPS)                                                           \
+      .max = SSG_GTAO_MAX_STEPS, .soft_min = 1, .soft_max = 32)                            \
     P(FLOAT, radius, "R: samples farther than this from the pixel are ignored",            \
-      .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units")                          \
+      .def = 0.5, .min = 1e-6, .max = 1e6, .soft_min = 0.05, .soft_max = 5,                \
+      .unit = "scene units")                                                               \
     P(FLOAT, falloff,                                                                      \
       "fraction of R over which a sample's weight fades to 0 at R; 0 = hard cutoff "       \
       "(reference_ao's distance limit)",                                                   \
-      .def = 0, .min = 0, .max = 1)                                                        \
+      .def = 0, .min = 0, .max = 1, .soft_min = 0, .soft_max = 1)                          \
     P(FLOAT, thickness,                                                                    \
       "thin-occluder heuristic: how far a sample below the horizon pulls it down; 0 = "    \
       "depth samples are an infinitely thick height field",                                \
-      .def = 0, .min = 0, .max = 0.99)                                                     \
-    P(FLOAT, power, "out = visibility^power", .def = 1, .min = 0.1, .max = 8)              \
+      .def = 0, .min = 0, .max = 0.99, .soft_min = 0, .soft_max = 0.99)                    \
+    P(FLOAT, power, "out = visibility^power", .def = 1, .min = 0.1, .max = 8,              \
+      .soft_min = 0.1, .soft_max = 8)                                                      \
     P(FLOAT, max_screen_radius,                                                            \
       "caps the projected radius f R / (depth - R) of the march; 0 = no cap", .def = 0,    \
-      .min = 0, .max = 16384, .unit = "px")
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 512, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_gtao_params, SSG_GTAO_PARAMS);
 
 /* What prepare() makes once for both backends; sized to the G-buffer's width

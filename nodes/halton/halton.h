@@ -47,24 +47,26 @@ enum ssg_halton_rotations {
    unit and choices. No shader reads them: prepare() makes the kernel and the tile. */
 #define SSG_HALTON_PARAMS(P)                                                               \
     P(INT, count, "kernel samples", .def = 16, .min = 1, .max = SSG_HALTON_MAX_COUNT,      \
+      .soft_min = 1, .soft_max = 256,                                                      \
       .unit = "samples")                                                                   \
     P(INTS, bases, "distinct primes: elevation, azimuth, optional length (eq. 7)",         \
       .def_ints = {2, 3}, .def_ints_count = 2, .min_count = 2, .max_count = 3, .min = 2,   \
       .max = 997)                                                                          \
     P(INT, offset, "first sequence index (0 is the point 0,0,0)", .def = 1, .min = 0,      \
-      .max = 1000000000)                                                                   \
+      .max = 1000000000, .soft_min = 0, .soft_max = 1024)                                  \
     P(INT, period,                                                                         \
       "eq. 8 period N_g: blocks of N_g samples alike, prefixes quasi-uniform; 0 = off",    \
-      .def = 0, .min = 0, .max = SSG_HALTON_MAX_COUNT, .unit = "samples")                  \
+      .def = 0, .min = 0, .max = SSG_HALTON_MAX_COUNT, .soft_min = 0, .soft_max = 64,      \
+      .unit = "samples")                                                                   \
     P(ENUM, mapping, "direction density over the hemisphere", .def = SSG_HALTON_COSINE,    \
       .choices = ssg_halton_mapping_choices)                                               \
     P(FLOAT, falloff,                                                                      \
       "length = lerp(min_scale, 1, t^falloff): > 1 packs samples near the centre",         \
-      .def = 2, .min = 0.01, .max = 16)                                                    \
+      .def = 2, .min = 0.01, .max = 16, .soft_min = 0.25, .soft_max = 4)                   \
     P(FLOAT, min_scale, "shortest sample length as a fraction of the radius", .def = 0.1,  \
-      .min = 0, .max = 1)                                                                  \
+      .min = 0, .max = 1, .soft_min = 0, .soft_max = 1)                                    \
     P(INT, pattern, "side of the tiled rotation pattern", .def = 4, .min = 1,              \
-      .max = SSG_HALTON_MAX_PATTERN, .unit = "px")                                         \
+      .max = SSG_HALTON_MAX_PATTERN, .soft_min = 1, .soft_max = 16, .unit = "px")          \
     P(ENUM, rotations,                                                                     \
       "tile layout: tile = n*n angles, white; interleaved = n angles, every row and "      \
       "column holds each once; blue_noise = n*n angles, void-and-cluster (n = 64)",        \

@@ -34,25 +34,27 @@ SSG_PORT_ENUM(ssg_hbao_output, SSG_HBAO_OUT, SSG_HBAO_OUTPUTS);
 #define SSG_HBAO_PARAMS(P)                                                                 \
     P(INT, directions,                                                                     \
       "azimuths per pixel (uniform about the view vector, turned by the rotation pattern)", \
-      .def = 8, .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS)                                  \
+      .def = 8, .min = 1, .max = SSG_HBAO_MAX_DIRECTIONS, .soft_min = 1, .soft_max = 32)   \
     P(INT, steps, "depth samples marched along each direction", .def = 6, .min = 1,        \
-      .max = SSG_HBAO_MAX_STEPS)                                                           \
+      .max = SSG_HBAO_MAX_STEPS, .soft_min = 1, .soft_max = 32)                            \
     P(FLOAT, radius, "R: occluders farther than this from the pixel are ignored",          \
-      .def = 0.5, .min = 1e-6, .max = 1e6, .unit = "scene units")                          \
+      .def = 0.5, .min = 1e-6, .max = 1e6, .soft_min = 0.05, .soft_max = 5,                \
+      .unit = "scene units")                                                               \
     P(FLOAT, bias,                                                                         \
       "tangent-angle bias against self occlusion (0.25 rad ~ 14 degrees; Bavoil's 0.1 "    \
       "lets tessellation and pixel steps read as occlusion)",                              \
-      .def = 0.25, .min = 0, .max = 1.5, .unit = "radians", .host_only = 1)                \
+      .def = 0.25, .min = 0, .max = 1.5, .soft_min = 0, .soft_max = 1, .unit = "radians",  \
+      .host_only = 1)                                                                      \
     P(FLOAT, strength,                                                                     \
       "out = 1 - strength * occlusion, clamped to [0, 1] (default 1.25 with bias 0.25: "   \
       "the lowest mean error against reference_ao)",                                       \
-      .def = 1.25, .min = 0, .max = 16)                                                    \
+      .def = 1.25, .min = 0, .max = 16, .soft_min = 0, .soft_max = 4)                      \
     P(ENUM, falloff,                                                                       \
       "attenuation W at the horizon: linear = max(0, 1 - r/R) (eq. 3.2), none = 1",        \
       .def = SSG_HBAO_FALLOFF_NONE, .choices = ssg_hbao_falloff_choices)                   \
     P(FLOAT, max_screen_radius,                                                            \
       "caps the projected radius f R / (depth - R) of the march; 0 = no cap", .def = 0,    \
-      .min = 0, .max = 16384, .unit = "px")
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 512, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_hbao_params, SSG_HBAO_PARAMS);
 
 /* What prepare() makes once for both backends; sized to the G-buffer's width

@@ -18,9 +18,11 @@ SSG_PORT_ENUM(ssg_input_output, SSG_INPUT_OUT, SSG_INPUT_OUTPUTS);
     P(ENUM, type, "what the image holds: scalar (1 channel), vector or color (3)",        \
       .def = SSG_INPUT_SCALAR, .choices = ssg_input_type_choices, .host_only = 1)          \
     P(INT, width, "width in pixels; 0 = the frame's (with its guard band)", .def = 0,     \
-      .min = 0, .max = 16384, .unit = "px", .host_only = 1)                               \
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 4096, .unit = "px",               \
+      .host_only = 1)                                                                      \
     P(INT, height, "height in pixels; 0 = the frame's (with its guard band)", .def = 0,   \
-      .min = 0, .max = 16384, .unit = "px", .host_only = 1)
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 4096, .unit = "px",               \
+      .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_input_params, SSG_INPUT_PARAMS);
 
 extern const struct ssg_node_desc ssg_node_input;

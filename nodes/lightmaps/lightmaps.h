@@ -32,6 +32,7 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "side of every face (a point light has six, a directional light one); memory 7 x "   \
       "faces x resolution^2 floats",                                                       \
       .def = 512, .min = SSG_LIGHTMAPS_RES_MIN, .max = SSG_LIGHTMAPS_RES_MAX,              \
+      .soft_min = 16, .soft_max = 2048,                                                    \
       .unit = "texels")                                                                    \
     P(BOOL, own, "the scene's own point, spot and directional lights (their faces first)",        \
       .def = 1, .host_only = 1)                                                            \
@@ -41,7 +42,8 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "uniform_share=0.25; a constant sky's uniform; each its share of the probe; 0 = "    \
       "none), so that rsm bounces the sky or probe; an rsm reading these maps needs the "  \
       "same own and environment",                                                          \
-      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1)  \
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .soft_min = 0, .soft_max = 128,     \
+      .unit = "lights", .host_only = 1)                                                    \
     P(ENUM, fit,                                                                           \
       "a directional light's map over the scene's bounding sphere, or over what the "     \
       "camera sees (view: finer shadows, made again when the camera moves; a "            \
@@ -52,7 +54,8 @@ enum { SSG_LIGHTMAPS_RES_MIN = 16, SSG_LIGHTMAPS_RES_MAX = 8192 };
       "a directional light's map as tiles x tiles faces of resolution each, one map of "  \
       "side tiles x resolution (finer sun shadows without finer point-light cubes; a "    \
       "direct_light reading it needs the same tiles, an rsm 1)",                          \
-      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",          \
+      .def = 1, .min = 1, .max = SSG_LIGHTMAP_TILES_MAX, .soft_min = 1,                    \
+      .soft_max = SSG_LIGHTMAP_TILES_MAX, .unit = "tiles a side",                          \
       .host_only = 1)                                                                      \
     P(BOOL, proxy,                                                                         \
       "draw each dense mesh (4096 triangles or more, not alpha-masked) as its simplified "  \

@@ -30,7 +30,8 @@ enum ssg_lightprobe_missing {
    copied out on both backends, so every row is host_only. */
 #define SSG_LIGHTPROBE_PARAMS(P)                                                           \
     P(INT, count, "directional lights N (the paper: 128 and 512, 2048 for its reference)",  \
-      .def = 128, .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX, .unit = "lights",           \
+      .def = 128, .min = SSG_LIGHTS_MIN, .max = SSG_LIGHTS_MAX,                            \
+      .soft_min = SSG_LIGHTS_MIN, .soft_max = SSG_LIGHTS_MAX, .unit = "lights",            \
       .host_only = 1)                                                                      \
     P(ENUM, sampling,                                                                      \
       "uniform: equal-area Fibonacci set (the paper); importance: denser where the "      \
@@ -40,7 +41,8 @@ enum ssg_lightprobe_missing {
     P(FLOAT, uniform_share,                                                                \
       "importance: this share of the N lights is the uniform set, so the probe's dim "    \
       "parts keep lights of their own (0 = every light drawn through the probe)",          \
-      .def = 0, .min = 0, .max = 1, .unit = "x N", .host_only = 1)                          \
+      .def = 0, .min = 0, .max = 1, .soft_min = 0, .soft_max = 1, .unit = "x N",           \
+      .host_only = 1)                                                                      \
     P(ENUM, missing,                                                                       \
       "a scene without environment light: error, or dark (N lights of irradiance 0, "     \
       "so one graph serves scenes with and without a probe)",                              \

@@ -44,41 +44,50 @@ SSG_PORT_ENUM(ssg_probe_light_output, SSG_PROBE_LIGHT_OUT, SSG_PROBE_LIGHT_OUTPU
     P(FLOAT, offset,                                                                       \
       "a point is lit when its depth <= the map's + offset (fig. 1): larger hides "        \
       "self-shadowing, lets light through thin occluders",                                 \
-      .def = 0.5, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                 \
+      .def = 0.5, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 8, .unit = "texels",   \
+      .host_only = 1)                                                                      \
     P(FLOAT, slope_offset,                                                                 \
       "more depth offset where the light grazes the surface: + slope_offset x "            \
       "tan(N, l) texels (tan up to 10); leaks through thin walls, normal_offset is "       \
       "the default remedy",                                                                \
-      .def = 0, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                   \
+      .def = 0, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 8, .unit = "texels",     \
+      .host_only = 1)                                                                      \
     P(FLOAT, normal_offset,                                                                \
       "the lookup point moves along the normal by normal_offset x sin(N, l) texels: "      \
       "no self-shadowing where the light grazes, no leak at a wall's foot (>= 0.7 + "      \
       "noise_radius)",                                                                     \
-      .def = 2, .min = 0, .max = 1000, .unit = "texels", .host_only = 1)                   \
+      .def = 2, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 8, .unit = "texels",     \
+      .host_only = 1)                                                                      \
     P(FLOAT, noise_radius,                                                                 \
       "hard lookups (softness=0): jitter of the map lookup (fig. 8), needs a larger "      \
       "offset; 0 = none",                                                                  \
-      .def = 1, .min = 0, .max = 64, .unit = "texels")                                     \
+      .def = 1, .min = 0, .max = 64, .soft_min = 0, .soft_max = 8, .unit = "texels")       \
     P(INT, noise_tile, "side of the tiled jitter pattern", .def = 4, .min = 1,             \
-      .max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px")                                       \
+      .max = SSG_PROBE_LIGHT_MAX_TILE, .soft_min = 1,                                      \
+      .soft_max = SSG_PROBE_LIGHT_MAX_TILE, .unit = "px")                                  \
     P(FLOAT, softness,                                                                     \
       "soft lookups (README.md): each light a cone of softness x its share of the "        \
       "sphere's angular radius acos(1 - 2/N) (at most 45 degrees), its shadow a "          \
       "penumbra as wide as that cone from the blocker (PCSS); 0 = one hard lookup, "       \
       "jittered by noise_radius",                                                          \
-      .def = 1, .min = 0, .max = 4, .unit = "x", .host_only = 1)                           \
+      .def = 1, .min = 0, .max = 4, .soft_min = 0, .soft_max = 4, .unit = "x",             \
+      .host_only = 1)                                                                      \
     P(INT, taps, "soft lookups: map reads of the filter over the penumbra, per light",    \
-      .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS, .unit = "taps")                 \
+      .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS, .soft_min = 1,                  \
+      .soft_max = SSG_PROBE_LIGHT_MAX_TAPS, .unit = "taps")                                \
     P(INT, search_taps, "soft lookups: map reads of the blocker search, per light (the "   \
       "first at the pixel)", .def = 4, .min = 1, .max = SSG_PROBE_LIGHT_MAX_TAPS,          \
+      .soft_min = 1, .soft_max = SSG_PROBE_LIGHT_MAX_TAPS,                                 \
       .unit = "taps")                                                                      \
     P(FLOAT, search_radius, "soft lookups: the blocker search's radius, the widest "       \
-      "penumbra", .def = 8, .min = 1, .max = 256, .unit = "texels")                        \
+      "penumbra", .def = 8, .min = 1, .max = 256, .soft_min = 1, .soft_max = 64,           \
+      .unit = "texels")                                                                    \
     P(INT, interleave,                                                                     \
       "n: each pixel of an n x n tile takes every n^2-th light (those i with i mod n^2 = "  \
       "its cell), weighted n^2: the lights of n^2 pixels for the lookups of one; a "       \
       "filter of the tile's period (bilateral window=tent size=2n-1) joins them",          \
-      .def = 1, .min = 1, .max = SSG_PROBE_LIGHT_MAX_INTERLEAVE, .unit = "px")
+      .def = 1, .min = 1, .max = SSG_PROBE_LIGHT_MAX_INTERLEAVE, .soft_min = 1,            \
+      .soft_max = SSG_PROBE_LIGHT_MAX_INTERLEAVE, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_probe_light_params, SSG_PROBE_LIGHT_PARAMS);
 
 /* What prepare() makes of the inputs' shapes that probe_light.glsl reads by name (#pragma

@@ -30,14 +30,17 @@ SSG_PORT_ENUM(ssg_reference_ao_output, SSG_REFERENCE_AO_OUT, SSG_REFERENCE_AO_OU
     P(INT, rays,                                                                           \
       "cosine-weighted rays per pixel; the standard error is sqrt(V (1 - V) / rays) or "   \
       "less (stratified)",                                                                 \
-      .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS)                              \
+      .def = 256, .min = 1, .max = SSG_REFERENCE_AO_MAX_RAYS, .soft_min = 1,               \
+      .soft_max = 4096)                                                                    \
     P(FLOAT, max_distance,                                                                 \
       "occluders farther along a ray do not count (the meaning of ssao's radius)",         \
-      .def = 0.5, .min = 1e-6, .max = 1e30, .unit = "scene units")                         \
+      .def = 0.5, .min = 1e-6, .max = 1e30, .soft_min = 0.05, .soft_max = 10,              \
+      .unit = "scene units")                                                               \
     P(FLOAT, offset,                                                                       \
       "ray origins move this far along the normal and this far towards the camera, "       \
       "against self-intersection (at least 1024 float ulps of the point's coordinates)",   \
-      .def = 1e-3, .min = 0, .max = 1e6, .unit = "scene units")
+      .def = 1e-3, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 0.01,                  \
+      .unit = "scene units")
 SSG_PARAMS_STRUCT(ssg_reference_ao_params, SSG_REFERENCE_AO_PARAMS);
 
 struct ssg_reference_ao_consts {

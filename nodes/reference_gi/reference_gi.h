@@ -33,7 +33,8 @@ SSG_PORT_ENUM(ssg_reference_gi_output, SSG_REFERENCE_GI_OUT, SSG_REFERENCE_GI_OU
     P(INT, samples,                                                                        \
       "environment samples (direct term) and bounce paths per pixel; the noise falls "     \
       "as 1 / sqrt(samples) or faster (stratified)",                                       \
-      .def = 64, .min = 1, .max = SSG_REFERENCE_GI_MAX_SAMPLES, .host_only = 1)            \
+      .def = 64, .min = 1, .max = SSG_REFERENCE_GI_MAX_SAMPLES, .soft_min = 1,             \
+      .soft_max = 4096, .host_only = 1)                                                    \
     P(BOOL, bounce,                                                                        \
       "trace one diffuse bounce; false: the bounce output is 0 and no bounce rays "        \
       "are cast",                                                                          \
@@ -42,7 +43,8 @@ SSG_PORT_ENUM(ssg_reference_gi_output, SSG_REFERENCE_GI_OUT, SSG_REFERENCE_GI_OU
       "ray origins move this far along the normal and this far back along the "            \
       "arriving ray, against self-intersection (at least 1024 float ulps of the "          \
       "point's coordinates)",                                                              \
-      .def = 1e-3, .min = 0, .max = 1e6, .unit = "scene units", .host_only = 1)            \
+      .def = 1e-3, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 0.01,                  \
+      .unit = "scene units", .host_only = 1)                                               \
     P(BOOL, environment,                                                                   \
       "include the scene's environment light (directly and at the bounce's end)",          \
       .def = 1, .host_only = 1)

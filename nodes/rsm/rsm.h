@@ -70,21 +70,25 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
     P(INT, samples,                                                                        \
       "VPLs drawn per pixel in proportion to their flux (stratified, weighted by 1 / pdf); " \
       "0, or at least the VPL count, sums every VPL exactly",                              \
-      .def = 64, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .gl_in = "rsm.glsl")                \
+      .def = 64, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .soft_min = 1, .soft_max = 1024,    \
+      .gl_in = "rsm.glsl")                                                                 \
     P(INT, cell,                                                                           \
       "side of the map cells merged into VPLs (per dominant normal axis): larger is "      \
       "fewer, coarser VPLs; 1 = one VPL a texel",                                          \
-      .def = 4, .min = 1, .max = 128, .unit = "texels", .gl_in = "rsm_cells.glsl")         \
+      .def = 4, .min = 1, .max = 128, .soft_min = 1, .soft_max = 32, .unit = "texels",     \
+      .gl_in = "rsm_cells.glsl")                                                           \
     P(FLOAT, min_distance,                                                                 \
       "senders nearer than this give nothing, fading in smoothly up to twice it, so a "    \
       "screen-space pass can own the near field (weight 1 - fade); 0 = none excluded",     \
-      .def = 0, .min = 0, .max = 1e6, .unit = "world units", .gl_in = "rsm.glsl")          \
+      .def = 0, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 1, .unit = "world units", \
+      .gl_in = "rsm.glsl")                                                                 \
     P(BOOL, own, "the maps hold the scene's own lights (lightmaps' own, the same value)",  \
       .def = 1, .host_only = 1)                                                            \
     P(INT, environment,                                                                    \
       "the maps hold this many environment lights (lightmaps' environment, the same "      \
       "value)",                                                                            \
-      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .unit = "lights", .host_only = 1) \
+      .def = 0, .min = 0, .max = SSG_LIGHTMAP_ENV_MAX, .soft_min = 0, .soft_max = 128,     \
+      .unit = "lights", .host_only = 1)                                                    \
     P(BOOL, visibility,                                                                    \
       "test the segment from the receiver to each tested VPL in the scene's distance "     \
       "field (scene/distance.h), so the bounce no longer reaches through boxes and walls", \
@@ -93,11 +97,13 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
       "draws a pixel tests for visibility (one of every samples / vis_draws, which one "   \
       "turning over the pixel's tile): the blocked ones' light, counted samples / "        \
       "vis_draws times, is taken off its bounce; 0 = every draw, exactly",                 \
-      .def = 16, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .host_only = 1)                     \
+      .def = 16, .min = 0, .max = SSG_RSM_SAMPLES_MAX, .soft_min = 0, .soft_max = 64,      \
+      .host_only = 1)                                                                      \
     P(FLOAT, vis_start,                                                                    \
       "the trace starts this far off the receiver (along its normal and the segment) and " \
       "ends this far off the VPL, so their own surfaces do not occlude them",              \
-      .def = 1.5, .min = 0, .max = 8, .unit = "voxels", .gl_in = "rsm.glsl")
+      .def = 1.5, .min = 0, .max = 8, .soft_min = 0, .soft_max = 8, .unit = "voxels",      \
+      .gl_in = "rsm.glsl")
 SSG_PARAMS_STRUCT(ssg_rsm_params, SSG_RSM_PARAMS);
 
 struct ssg_rsm_consts {

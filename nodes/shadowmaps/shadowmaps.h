@@ -20,7 +20,8 @@ SSG_PORT_ENUM(ssg_shadowmaps_output, SSG_SHADOWMAPS_OUT, SSG_SHADOWMAPS_OUTPUTS)
 #define SSG_SHADOWMAPS_PARAMS(P)                                                           \
     P(INT, resolution,                                                                     \
       "side of every map (the paper's second knob: fewer texels, more bleeding)",          \
-      .def = 256, .min = SSG_SHADOW_RES_MIN, .max = SSG_SHADOW_RES_MAX, .unit = "texels",  \
+      .def = 256, .min = SSG_SHADOW_RES_MIN, .max = SSG_SHADOW_RES_MAX, .soft_min = 16,    \
+      .soft_max = 2048, .unit = "texels",                                                  \
       .host_only = 1)                                                                      \
     P(BOOL, proxy,                                                                         \
       "draw each dense mesh (4096 triangles or more, not alpha-masked) as its simplified "  \

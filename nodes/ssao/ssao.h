@@ -41,19 +41,21 @@ SSG_PORT_ENUM(ssg_ssao_output, SSG_SSAO_OUT, SSG_SSAO_OUTPUTS);
    the GL shader reads them as p_<field> (#pragma ssg_params). */
 #define SSG_SSAO_PARAMS(P)                                                                 \
     P(FLOAT, radius, "hemisphere radius around the pixel", .def = 0.5, .min = 1e-6,        \
-      .max = 1e6, .unit = "scene units")                                                   \
+      .max = 1e6, .soft_min = 0.05, .soft_max = 5, .unit = "scene units")                  \
     P(FLOAT, bias,                                                                         \
       "a sample is occluded only when the surface is this much in front of it (default "   \
       "0: chosen by ssgraph tune over the example scenes, docs/accuracy.md)",              \
-      .def = 0, .min = 0, .max = 1e6, .unit = "scene units")                               \
+      .def = 0, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 0.2,                      \
+      .unit = "scene units")                                                               \
     P(FLOAT, power,                                                                        \
       "intensity: out = visibility^power (default 2: with 16 samples the lowest mean "     \
       "error against reference_ao, docs/accuracy.md)",                                     \
-      .def = 2, .min = 0, .max = 64)                                                       \
+      .def = 2, .min = 0, .max = 64, .soft_min = 0, .soft_max = 8)                         \
     P(ENUM, range_check, "how occluders far in depth from the pixel are discounted",       \
       .def = SSG_SSAO_RANGE_HARD, .choices = ssg_ssao_range_choices)                       \
     P(FLOAT, max_screen_radius, "caps the projected radius; 0 = no cap", .def = 0,         \
-      .min = 0, .max = 16384, .unit = "px", .host_only = 1) /* prepare(): cap, capped */   \
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 512, .unit = "px",                \
+      .host_only = 1) /* prepare(): cap, capped */                                         \
     P(ENUM, mode,                                                                          \
       "hemisphere about the normal; sphere (normal-free, Knuth and Kohlhammer); disc "     \
       "(screen-space depth samples, Crytek 2007)",                                         \

@@ -37,17 +37,17 @@ enum ssg_ssdo_mode {
       "directional light (eq. 2)",                                                         \
       .def = SSG_SSDO_MODE_MODULATION, .choices = ssg_ssdo_mode_choices)                   \
     P(INT, channels, "modulation: 1 = one factor of the luminances, 3 = one per colour "   \
-      "channel", .def = 1, .min = 1, .max = 3,                                             \
+      "channel", .def = 1, .min = 1, .max = 3, .soft_min = 1, .soft_max = 3,               \
       .host_only = 1) /* check(), prepare(): out_channels */                               \
     P(BOOL, bounce, "compute the indirect bounce output (needs albedo and light)",         \
       .def = 0)                                                                            \
     P(INT, lobe,                                                                           \
       "cosine power of the cone over which a point or directional light is sampled",       \
-      .def = 4, .min = 1, .max = 64)                                                       \
+      .def = 4, .min = 1, .max = 64, .soft_min = 1, .soft_max = 64)                        \
     P(FLOAT, power,                                                                        \
       "modulation: out = M^power, the darkening ssao's power gives its AO (ssdo.graph "    \
       "uses 2, measured: docs/accuracy.md)",                                               \
-      .def = 1, .min = 0, .max = 8)
+      .def = 1, .min = 0, .max = 8, .soft_min = 0, .soft_max = 8)
 SSG_PARAMS_STRUCT(ssg_ssdo_params, SSG_SSDO_PARAMS);
 
 /* A scene light in view space. On GL the array is a storage buffer of these structs as

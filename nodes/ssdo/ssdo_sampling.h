@@ -56,17 +56,19 @@ enum { SSG_SSDO_CHUNK = SSG_SAMPLING_CHUNK, SSG_SSDO_ROWS_PER_BAND = 16 };
    rows of both nodes' tables. max_screen_radius is read through prepare()'s cap. */
 #define SSG_SSDO_GEOM_PARAMS(P)                                                            \
     P(FLOAT, radius, "r_max: hemisphere radius around the pixel", .def = 0.5, .min = 1e-6, \
-      .max = 1e6, .unit = "scene units")                                                   \
+      .max = 1e6, .soft_min = 0.05, .soft_max = 5, .unit = "scene units")                  \
     P(FLOAT, bias, "a sample is occluded only when the surface is this much in front of it", \
-      .def = 0.02, .min = 0, .max = 1e6, .unit = "scene units")                            \
+      .def = 0.02, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 0.2,                   \
+      .unit = "scene units")                                                               \
     P(FLOAT, strength, "multiplies the sender patch area A_s = pi radius^2 / K", .def = 1,  \
-      .min = 0, .max = 64)                                                                 \
+      .min = 0, .max = 64, .soft_min = 0, .soft_max = 8)                                   \
     P(FLOAT, min_distance,                                                                 \
       "sender distance clamp against 1/d^2; 0 = sqrt(A_s/pi), where one patch's form "     \
       "factor reaches 1",                                                                  \
-      .def = 0, .min = 0, .max = 1e6, .unit = "scene units")                               \
+      .def = 0, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 1, .unit = "scene units") \
     P(FLOAT, max_screen_radius, "caps the projected radius; 0 = no cap", .def = 0,         \
-      .min = 0, .max = 16384, .unit = "px", .host_only = 1) /* prepare(): cap, capped */
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 512, .unit = "px",                \
+      .host_only = 1) /* prepare(): cap, capped */
 
 /* The sampling's constants, made once in prepare() from those rows (ssg_ssdo_geom_make)
    and read by both backends. */

@@ -45,27 +45,30 @@ SSG_PORT_ENUM(ssg_ssilvb_output, SSG_SSILVB_OUT, SSG_SSILVB_OUTPUTS);
     P(INT, slices,                                                                         \
       "slice directions per pixel over the half circle about the view vector, each "       \
       "marched both ways (turned per pixel by the noise)",                                 \
-      .def = 4, .min = 1, .max = SSG_SSILVB_MAX_SLICES)                                    \
+      .def = 4, .min = 1, .max = SSG_SSILVB_MAX_SLICES, .soft_min = 1,                     \
+      .soft_max = SSG_SSILVB_MAX_SLICES)                                                   \
     P(INT, steps, "depth samples on each side of a slice", .def = 12, .min = 1,            \
-      .max = SSG_SSILVB_MAX_STEPS)                                                         \
+      .max = SSG_SSILVB_MAX_STEPS, .soft_min = 1, .soft_max = 32)                          \
     P(FLOAT, radius,                                                                       \
       "R: samples farther than this from the pixel neither occlude nor send light",        \
-      .def = 2, .min = 1e-6, .max = 1e6, .unit = "scene units")                            \
+      .def = 2, .min = 1e-6, .max = 1e6, .soft_min = 0.1, .soft_max = 10,                  \
+      .unit = "scene units")                                                               \
     P(FLOAT, thickness,                                                                    \
       "depth of every occluder behind its front surface, where `back` is unconnected or "  \
       "not behind it",                                                                     \
-      .def = 0.5, .min = 0, .max = 1e6, .unit = "scene units")                             \
+      .def = 0.5, .min = 0, .max = 1e6, .soft_min = 0, .soft_max = 2,                      \
+      .unit = "scene units")                                                               \
     P(FLOAT, power,                                                                        \
       "ao = visibility^power (screen space misses what lies beyond the radius or off "     \
       "screen; 2.5 measured against reference_gi)",                                        \
-      .def = 2.5, .min = 0.1, .max = 8)                                                    \
+      .def = 2.5, .min = 0.1, .max = 8, .soft_min = 0.1, .soft_max = 8)                    \
     P(FLOAT, strength,                                                                     \
       "scale of the bounce (1.2 measured against reference_gi: senders off screen or "     \
       "beyond the radius are missing)",                                                    \
-      .def = 1.2, .min = 0, .max = 16)                                                     \
+      .def = 1.2, .min = 0, .max = 16, .soft_min = 0, .soft_max = 4)                       \
     P(FLOAT, max_screen_radius,                                                            \
       "caps the projected radius f R / (depth - R) of the march; 0 = no cap", .def = 0,    \
-      .min = 0, .max = 16384, .unit = "px")
+      .min = 0, .max = 16384, .soft_min = 0, .soft_max = 512, .unit = "px")
 SSG_PARAMS_STRUCT(ssg_ssilvb_params, SSG_SSILVB_PARAMS);
 
 struct ssg_ssilvb_consts {

@@ -52,14 +52,18 @@ SSG_PORT_ENUM(ssg_temporal_output, SSG_TEMPORAL_OUT, SSG_TEMPORAL_OUTPUTS);
    prepare()'s inv_max_length. */
 #define SSG_TEMPORAL_PARAMS(P)                                                             \
     P(INT, max_length, "most frames averaged: past it, an exponential blend of weight "   \
-      "1 / max_length", .def = 32, .min = 1, .max = 4096, .unit = "frames",               \
+      "1 / max_length", .def = 32, .min = 1, .max = 4096, .soft_min = 1, .soft_max = 256,  \
+      .unit = "frames",                                                                    \
       .host_only = 1)                                                                      \
     P(FLOAT, gamma, "history clamped to mean +/- gamma stddev of in's 3 x 3 "              \
-      "neighbourhood; 0 = no clamp", .def = 1, .min = 0, .max = 1000)                      \
+      "neighbourhood; 0 = no clamp", .def = 1, .min = 0, .max = 1000, .soft_min = 0,       \
+      .soft_max = 4)                                                                       \
     P(FLOAT, depth_tolerance, "a history tap is rejected when |motion.z - prev_depth| / "  \
-      "motion.z exceeds this", .def = 0.05, .min = 0, .max = 1000)                         \
+      "motion.z exceeds this", .def = 0.05, .min = 0, .max = 1000, .soft_min = 0,          \
+      .soft_max = 0.5)                                                                     \
     P(FLOAT, normal_tolerance, "a history tap is rejected when dot(normal, prev_normal) "  \
-      "is below this", .def = 0.9, .min = -1, .max = 1, .gl_if = "NORMALS")
+      "is below this", .def = 0.9, .min = -1, .max = 1, .soft_min = -1, .soft_max = 1,     \
+      .gl_if = "NORMALS")
 SSG_PARAMS_STRUCT(ssg_temporal_params, SSG_TEMPORAL_PARAMS);
 
 /* What prepare() makes once for both backends (the shader reads it by name,

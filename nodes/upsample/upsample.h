@@ -46,13 +46,14 @@ SSG_PORT_ENUM(ssg_upsample_output, SSG_UPSAMPLE_OUT, SSG_UPSAMPLE_OUTPUTS);
    unit. No shader reads a parameter: the GL side binds prepare()'s constants. */
 #define SSG_UPSAMPLE_PARAMS(P)                                                             \
     P(INT, size, "taps per side around the low-res pixel, odd", .def = 3, .min = 1,        \
-      .max = SSG_UPSAMPLE_MAX_SIZE, .unit = "low-res px")                                  \
+      .max = SSG_UPSAMPLE_MAX_SIZE, .soft_min = 1, .soft_max = SSG_UPSAMPLE_MAX_SIZE,      \
+      .unit = "low-res px")                                                                \
     P(FLOAT, sigma_spatial, "spatial Gaussian sigma; 0 = size / 3", .def = 0, .min = 0,    \
-      .max = 1000, .unit = "low-res px")                                                   \
+      .max = 1000, .soft_min = 0, .soft_max = 4, .unit = "low-res px")                     \
     P(FLOAT, sigma_depth, "depth sigma as a fraction of the full-res pixel's depth",       \
-      .def = 0.05, .min = 1e-6, .max = 1000)                                               \
+      .def = 0.05, .min = 1e-6, .max = 1000, .soft_min = 0.005, .soft_max = 0.5)           \
     P(INT, normal_power, "normal weight max(0, n.N)^p; 0 = off", .def = 16, .min = 0,      \
-      .max = 127)
+      .max = 127, .soft_min = 0, .soft_max = 64)
 SSG_PARAMS_STRUCT(ssg_upsample_params, SSG_UPSAMPLE_PARAMS);
 
 /* The constants prepare() makes, every one read by the shader by name (#pragma

@@ -21,7 +21,7 @@ SSG_PORT_ENUM(ssg_write_input, SSG_WRITE_IN, SSG_WRITE_INPUTS);
     P(STRING, name, "file stem: writes <out>/<name>.exr and <out>/<name>.png",             \
       .required = 1)                                                                       \
     P(FLOAT, exposure, "PNG only: values are scaled by 2^exposure before tone mapping",    \
-      .def = 0, .min = -20, .max = 20, .unit = "stops")                                    \
+      .def = 0, .min = -20, .max = 20, .soft_min = -8, .soft_max = 8, .unit = "stops")     \
     P(ENUM, tonemap,                                                                       \
       "PNG only: clamp = min(x,1), reinhard = x/(1+x), aces = Narkowicz 2015 fit",         \
       .def = SSG_TONEMAP_ACES, .choices = ssg_write_tonemap_choices)                       \

@@ -90,8 +90,8 @@ def parse_value(text: str, kind: str) -> Value:
 
 @dataclass(frozen=True)
 class Param:
-    """A node's parameter: its current value and its descriptor (type, unit, range,
-    choices, one line of doc), from the table that parses it."""
+    """A node's parameter: its current value and its descriptor (type, unit, range, useful
+    range, choices, one line of doc), from the table that parses it."""
     name: str
     type: str
     value: Value
@@ -100,6 +100,8 @@ class Param:
     min: Optional[float] = None
     max: Optional[float] = None
     choices: Optional[Tuple[str, ...]] = None
+    soft_min: Optional[float] = None  # a number's useful range, what the viewer's slider
+    soft_max: Optional[float] = None  # spans (inside min .. max); None when it has none
 
 
 @dataclass(frozen=True)
@@ -461,9 +463,11 @@ def _param(kind: str, k: int, value: str, exact=None) -> Param:
         choices = tuple(choices)
     ptype = _text(info.type)
     parsed = exact() if exact is not None and ptype == "float" else parse_value(value, ptype)
+    soft = info.soft_max > info.soft_min
     return Param(_text(info.name), ptype, parsed, _text(info.doc),
                  _text(info.unit) or None, info.min if info.bounded else None,
-                 info.max if info.bounded else None, choices)
+                 info.max if info.bounded else None, choices,
+                 info.soft_min if soft else None, info.soft_max if soft else None)
 
 
 def _real(value, name: str) -> float:

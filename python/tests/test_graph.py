@@ -32,6 +32,7 @@ def test_nodes_params_ports(ssao):
     radius = ao.params["radius"]
     assert radius.type == "float" and radius.value == 0.5 and radius.unit
     assert radius.min is not None and radius.max is not None and radius.doc
+    assert (radius.soft_min, radius.soft_max) == (0.05, 5)  # the useful range, the slider's
     assert [p.name for p in ao.inputs][:2] == ["position", "normal"]
     assert ao.inputs[0].source == "g.position"
     out = ao.outputs[0]

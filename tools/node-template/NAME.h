@@ -22,7 +22,7 @@ SSG_PORT_ENUM(ssg_@name@_output, SSG_@NAME@_OUT, SSG_@NAME@_OUTPUTS);
    every row not marked .host_only = 1 as p_<field> (#pragma ssg_params in @name@.glsl). */
 #define SSG_@NAME@_PARAMS(P) \
     P(FLOAT, gain, "factor every channel of every pixel is multiplied by", .def = 1, \
-      .min = -1e6, .max = 1e6)
+      .min = -1e6, .max = 1e6, .soft_min = 0, .soft_max = 4)
 SSG_PARAMS_STRUCT(ssg_@name@_params, SSG_@NAME@_PARAMS);
 
 /* The descriptor (@name@.c); nodes/nodes.def lists it as X(@name@). */

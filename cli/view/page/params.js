@@ -1,24 +1,34 @@
 // The parameter controls of `ssgraph view`'s page (panel.js), generated from a node's
-// parameter descriptors in /api/state (type, value, min, max, unit, choices, doc). A change
-// calls send(node, param, text, debounce_ms), which the caller gives.
+// parameter descriptors in /api/state (type, value, min, max, soft_min, soft_max, unit,
+// choices, doc). A change calls send(node, param, text, debounce_ms), which the caller
+// gives.
 
-// How a number parameter's slider maps [0, 1000] to values: linear when the range spans at
-// most 3 decades; otherwise logarithmic over 4 decades around the value the panel opened with
-// (a 12-decade slider would jump too far per pixel; the number box takes any value), or, for
-// a value of 0, over the 9 decades under the maximum with 0 itself at the far left.
-// null = unbounded (number box only).
+// How a number parameter's slider maps [0, 1000] to values: over its useful range
+// (soft_min .. soft_max in /api/state: what the parameter row calls useful, inside the valid
+// min .. max), linearly, or logarithmically where that range lies above 0 and spans two
+// decades or more (a radius of 0.05 .. 5 scene units: each decade as long). A valid value
+// outside it (typed into the box, or the graph's own) widens the span to include it, so the
+// value is kept, never clamped, and the slider still moves from there: from(x) widens
+// before it places the thumb (a log span that must reach 0 or below turns linear). An
+// invalid value widens nothing (the server refuses it). null = no range (number box only).
 function sliderScale(p) {
-  if (p.min === null || p.max === null || !(p.max > p.min)) return null;
-  const cur = parseFloat(p.value), lo0 = p.min > 0 ? p.min : p.max * 1e-9;
-  if (!(p.min >= 0 && p.max > 0 && p.max / lo0 > 1000)) {
-    return { to: (v) => p.min + (p.max - p.min) * v / 1000,
-      from: (x) => 1000 * (x - p.min) / (p.max - p.min) };
-  }
-  const zero = !(cur > 0);
-  const lo = zero ? lo0 : Math.max(lo0, cur / 100), hi = zero ? p.max : Math.min(p.max, cur * 100);
-  const a = Math.log(lo), b = Math.log(hi);
-  return { to: (v) => (zero && v <= 0 ? p.min : Math.exp(a + (b - a) * v / 1000)),
-    from: (x) => (x <= lo ? 0 : Math.min(1000, 1000 * (Math.log(x) - a) / (b - a))) };
+  let lo = p.soft_min ?? p.min, hi = p.soft_max ?? p.max;
+  if (lo === null || hi === null || !(hi > lo)) return null;
+  let log = lo > 0 && hi / lo >= 100;
+  const valid = (x) => Number.isFinite(x) && !(p.min !== null && x < p.min) &&
+    !(p.max !== null && x > p.max);
+  return {
+    to: (v) => (log ? Math.exp(Math.log(lo) + Math.log(hi / lo) * v / 1000)
+      : lo + (hi - lo) * v / 1000),
+    from(x) {
+      if (valid(x) && (x < lo || x > hi)) {
+        if (x <= 0) log = false;
+        lo = Math.min(lo, x); hi = Math.max(hi, x);
+      }
+      const t = log ? Math.log(x / lo) / Math.log(hi / lo) : (x - lo) / (hi - lo);
+      return Number.isFinite(t) ? Math.round(1000 * Math.min(1, Math.max(0, t))) : 0;
+    },
+  };
 }
 
 // A value as the graph file writes it: ints whole, floats with 6 significant digits.
@@ -33,7 +43,9 @@ export function paramRow(n, p, send) {
   row.className = 'param';
   row.dataset.param = p.name;
   row.title = [p.doc, p.unit ? `unit: ${p.unit}` : '',
-    p.min !== null && p.min !== undefined ? `range ${p.min} .. ${p.max}` : ''].filter(Boolean).join('\n');
+    p.min !== null && p.min !== undefined ? `range ${p.min} .. ${p.max}` : '',
+    p.soft_min !== null && p.soft_min !== undefined ? `slider ${p.soft_min} .. ${p.soft_max}`
+      : ''].filter(Boolean).join('\n');
   const label = document.createElement('label');
   label.textContent = p.name;
   row.append(label);
