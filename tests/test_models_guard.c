@@ -403,7 +403,7 @@ static enum ssg_err import_fail(const char *path, struct ssg_gltf **out,
 static enum ssg_err import_model(const char *path, struct ssg_gltf **out,
                                  struct ssg_model_up *up, char *why, size_t why_len)
 {
-    *up = (struct ssg_model_up){2, -1, "a test"};
+    *up = (struct ssg_model_up){.axis = 2, .sign = -1, .basis = "a test"};
     if (!out)
         return SSG_OK;
     static const float p[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 7};

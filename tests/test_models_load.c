@@ -269,7 +269,7 @@ static void expect_up(const char *path, int axis, int sign, const char *basis, f
                       float hi[3])
 {
     struct ssg_gltf *g = NULL;
-    struct ssg_model_up up = {9, 9, ""}, alone = {9, 9, ""};
+    struct ssg_model_up up = {.axis = 9, .sign = 9}, alone = {.axis = 9, .sign = 9};
     char why[1024] = "";
     long long tris;
     CHECK_EQ(ssg_model_load_up(path, &g, &up, why, sizeof why), SSG_OK);
