@@ -321,6 +321,10 @@ static const struct option options[] = {
     {.name = "--port", .arg = "N", .commands = SSG_CLI_VIEW, .take = take_int,
      .field = OF(port), .lo = 0, .hi = 65535,
      .help = "the port to listen on, on 127.0.0.1 only (default 0: a free one)"},
+    {.name = "--reference", .arg = "FILE", .commands = SSG_CLI_VIEW, .take = take_text,
+     .field = OF(reference),
+     .help = "an EXR at the graph's frame size, offered as B and as the metrics'\n"
+             "reference beside the graph's ports (the page can open others)"},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
 
@@ -443,9 +447,10 @@ const char *ssg_cli_keep(struct ssg_cli_args *a, const char *text)
 }
 
 /* The option an argument names: "--name", "--name=value", "-o", "-oVALUE"; *value is the
-   value given in the same argument, else NULL. */
-static const struct option *find_option(const char *arg, const char **value, char *name,
-                                        size_t len)
+   value given in the same argument, else NULL. Of two rows of one name (--reference: a
+   port for bench and tune, a file for view) the one of the command. */
+static const struct option *find_option(enum ssg_cli_command command, const char *arg,
+                                        const char **value, char *name, size_t len)
 {
     *value = NULL;
     if (arg[1] == '-') {
@@ -453,10 +458,15 @@ static const struct option *find_option(const char *arg, const char **value, cha
         size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
         snprintf(name, len, "%.*s", (int)n, arg);
         *value = eq ? eq + 1 : NULL;
-        for (int i = 0; i < OPTION_COUNT; i++)
-            if (!strcmp(options[i].name, name))
+        const struct option *named = NULL;
+        for (int i = 0; i < OPTION_COUNT; i++) {
+            if (strcmp(options[i].name, name))
+                continue;
+            if (options[i].commands & command)
                 return &options[i];
-        return NULL;
+            named = named ? named : &options[i];
+        }
+        return named;
     }
     snprintf(name, len, "-%c", arg[1]);
     for (int i = 0; i < OPTION_COUNT; i++)
@@ -474,7 +484,7 @@ static int take_option(enum ssg_cli_command command, int argc, char **argv, int 
 {
     char name[64];
     const char *value, *arg = argv[*i];
-    const struct option *opt = find_option(arg, &value, name, sizeof name);
+    const struct option *opt = find_option(command, arg, &value, name, sizeof name);
     for (;;) {
         if (!opt)
             return ssg_cli_usage_error("unknown option '%s'", name);
@@ -490,7 +500,7 @@ static int take_option(enum ssg_cli_command command, int argc, char **argv, int 
         if (rc)
             return rc;
         arg = value - 1; /* find_option reads the option's letter at arg[1] */
-        opt = find_option(arg, &value, name, sizeof name);
+        opt = find_option(command, arg, &value, name, sizeof name);
     }
     if (!opt->arg && value)
         return usage_errorf("option '%s' takes no value, got '%s'", opt->name, argv[*i]);

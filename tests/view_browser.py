@@ -13,7 +13,6 @@ import re
 import sys
 import time
 
-from selenium.common.exceptions import WebDriverException
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
@@ -21,10 +20,9 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 import view_page
-from view_page import (CANVAS_BYTES, CANVAS_HASH, WAIT, browser, canvas_colours,  # noqa: F401
-                       canvas_vs_png, fail, failures, generation, js_errors, localhost_note,
-                       metric, outside_viridis, ran_nodes, server_state, set_display, shot,
-                       start_chromium, text, wait_for)
+from view_page import (CANVAS_BYTES, CANVAS_HASH, WAIT, canvas_colours,  # noqa: F401
+                       canvas_vs_png, fail, generation, metric, outside_viridis,
+                       ran_nodes, run_steps, server_state, set_display, shot, text, wait_for)
 
 URL, OUT, GRAPH = sys.argv[1], sys.argv[2], sys.argv[3]
 SIZE = sys.argv[4] if len(sys.argv) > 4 else "160x90"  # the server's --size
@@ -265,12 +263,15 @@ def step_camera(drv):
              lambda d: d.execute_script(CANVAS_HASH) != before)
     wait_for(drv, "the full-size run after the pan", lambda d: text(d, "last-run") == "full")
     before = drv.execute_script(CANVAS_HASH)
+    # the plain wheel zooms the image (tests/view_zoom.py); "wheel: camera" dollies the camera
+    Select(drv.find_element(By.ID, "wheel-mode")).select_by_value("camera")
     ActionChains(drv).scroll_from_origin(ScrollOrigin.from_element(canvas), 0, 300).perform()
     wait_for(drv, "the canvas to change after the wheel zoom",
              lambda d: d.execute_script(CANVAS_HASH) != before)
     wait_for(drv, "the full-size run after the wheel",
              lambda d: text(d, "last-run") == "full" and
              not d.find_element(By.ID, "busy").is_displayed())
+    Select(drv.find_element(By.ID, "wheel-mode")).select_by_value("image")
     shot(drv, "camera")
     # home (and key H) go back to the camera the graph opened with (issue 46: an orbit past
     # the box's one-sided walls had no way back but a restart)
@@ -437,32 +438,9 @@ def step_save(drv):
 
 
 def main():
-    chromium = None
-    try:
-        chromium, port = start_chromium()
-        drv = browser(port)
-    except WebDriverException as e:
-        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
-              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
-        if chromium:
-            chromium.kill()
-        return 1
-    try:
-        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider,
-                     step_slider_drag, step_checkbox, step_camera,
-                     step_display, step_range, step_ab, step_errors, step_save):
-            t0 = time.time()
-            step(drv)
-            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
-            if failures:
-                shot(drv, "failure")
-                break
-        js_errors(drv)
-    finally:
-        drv.quit()
-        chromium.kill()
-        chromium.wait()
-    return 1 if failures else 0
+    return run_steps((step_load, step_modules, step_tonemap, step_click_node, step_slider,
+                      step_slider_drag, step_checkbox, step_camera,
+                      step_display, step_range, step_ab, step_errors, step_save))
 
 
 if __name__ == "__main__":

@@ -61,3 +61,15 @@ view_stop_within() {
     [ "$took" -le "$limit" ] || fail "SIG$sig took $took ms to end the server (at most $limit)"
     stop_ms=$took
 }
+
+# view_need_browser NAME: Debian's chromium, chromedriver and python3-selenium, which the
+# browser tests (tests/view_page.py) drive; ends test NAME with a failure when one is missing.
+view_need_browser() {
+    local tool
+    for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
+        [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+    done
+    /usr/bin/python3 -c 'import selenium' 2> /dev/null ||
+        fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+    [ "$fails" -eq 0 ] || finish "$1"
+}

@@ -105,6 +105,35 @@ def browser(port):
     return webdriver.Chrome(service=LoopbackService("/usr/bin/chromedriver"), options=opts)
 
 
+def run_steps(steps):
+    """Starts headless Chromium, runs each step(drv) in turn until one fails (screenshot
+    viewer-failure.png), checks the console, and returns the exit status (0: all passed)."""
+    chromium = None
+    try:
+        chromium, port = start_chromium()
+        drv = browser(port)
+    except WebDriverException as e:
+        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
+              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
+        if chromium:
+            chromium.kill()
+        return 1
+    try:
+        for step in steps:
+            t0 = time.time()
+            step(drv)
+            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
+            if failures:
+                shot(drv, "failure")
+                break
+        js_errors(drv)
+    finally:
+        drv.quit()
+        chromium.kill()
+        chromium.wait()
+    return 1 if failures else 0
+
+
 def wait_for(drv, what, cond):
     """Waits until cond(drv) is truthy; a timeout is a failure named `what`."""
     try:  # after a failure, the rest of the step need not wait long to fail too
