@@ -290,10 +290,13 @@ static const struct option options[] = {
     {.name = "--merge", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(merge),
      .help = "the arguments are shard folders of one sweep: check they cover\n"
              "every cell once and write the tables (and --plot) into --out"},
-    {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
-     .take = take_text, .field = OF(reference),
-     .help = "the truth each cell's (tune: evaluation's) --image is compared\n"
-             "with; tune computes it once per scene"},
+    {.name = "--reference", .arg = "NODE.PORT|FILE",
+     .commands = SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW, .take = take_text,
+     .field = OF(reference),
+     .help = "bench, tune: the truth NODE.PORT each cell's (tune: evaluation's)\n"
+             "--image is compared with; tune computes it once per scene;\n"
+             "view: an EXR FILE at the frame size, offered as B and as the\n"
+             "metrics' reference beside the graph's ports"},
     {.name = "--image", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_text, .field = OF(image),
      .help = "the image compared with --reference"},
@@ -321,10 +324,6 @@ static const struct option options[] = {
     {.name = "--port", .arg = "N", .commands = SSG_CLI_VIEW, .take = take_int,
      .field = OF(port), .lo = 0, .hi = 65535,
      .help = "the port to listen on, on 127.0.0.1 only (default 0: a free one)"},
-    {.name = "--reference", .arg = "FILE", .commands = SSG_CLI_VIEW, .take = take_text,
-     .field = OF(reference),
-     .help = "an EXR at the graph's frame size, offered as B and as the metrics'\n"
-             "reference beside the graph's ports (the page can open others)"},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
 
@@ -447,10 +446,9 @@ const char *ssg_cli_keep(struct ssg_cli_args *a, const char *text)
 }
 
 /* The option an argument names: "--name", "--name=value", "-o", "-oVALUE"; *value is the
-   value given in the same argument, else NULL. Of two rows of one name (--reference: a
-   port for bench and tune, a file for view) the one of the command. */
-static const struct option *find_option(enum ssg_cli_command command, const char *arg,
-                                        const char **value, char *name, size_t len)
+   value given in the same argument, else NULL. */
+static const struct option *find_option(const char *arg, const char **value, char *name,
+                                        size_t len)
 {
     *value = NULL;
     if (arg[1] == '-') {
@@ -458,15 +456,10 @@ static const struct option *find_option(enum ssg_cli_command command, const char
         size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
         snprintf(name, len, "%.*s", (int)n, arg);
         *value = eq ? eq + 1 : NULL;
-        const struct option *named = NULL;
-        for (int i = 0; i < OPTION_COUNT; i++) {
-            if (strcmp(options[i].name, name))
-                continue;
-            if (options[i].commands & command)
+        for (int i = 0; i < OPTION_COUNT; i++)
+            if (!strcmp(options[i].name, name))
                 return &options[i];
-            named = named ? named : &options[i];
-        }
-        return named;
+        return NULL;
     }
     snprintf(name, len, "-%c", arg[1]);
     for (int i = 0; i < OPTION_COUNT; i++)
@@ -484,7 +477,7 @@ static int take_option(enum ssg_cli_command command, int argc, char **argv, int 
 {
     char name[64];
     const char *value, *arg = argv[*i];
-    const struct option *opt = find_option(command, arg, &value, name, sizeof name);
+    const struct option *opt = find_option(arg, &value, name, sizeof name);
     for (;;) {
         if (!opt)
             return ssg_cli_usage_error("unknown option '%s'", name);
@@ -500,7 +493,7 @@ static int take_option(enum ssg_cli_command command, int argc, char **argv, int 
         if (rc)
             return rc;
         arg = value - 1; /* find_option reads the option's letter at arg[1] */
-        opt = find_option(command, arg, &value, name, sizeof name);
+        opt = find_option(arg, &value, name, sizeof name);
     }
     if (!opt->arg && value)
         return usage_errorf("option '%s' takes no value, got '%s'", opt->name, argv[*i]);

@@ -132,7 +132,9 @@ function showStats() {
   // over what the display shows: the false colour's range, else [0, 1] over the exposure
   // (a colour image's few bright pixels, a lamp at 38, would squeeze the rest into a bin)
   const gain = 2 ** state.display.stops;
-  const [lo, hi] = ch >= 0 && state.display.colormap === 'viridis'
+  // (a difference's range is the difference's, not A's: A's histogram is then over [0, 1])
+  const ownRange = !isDiff(f.ab) || f.ab === 'flip';
+  const [lo, hi] = ch >= 0 && ownRange && state.display.colormap === 'viridis'
     ? [f.rangeLo, f.rangeLo + 1 / (f.rangeScale * gain)] : [0, 1 / gain];
   drawHistogram($('hist'), img, chs, lo, hi, true, rect);
 }
