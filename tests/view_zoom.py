@@ -44,7 +44,9 @@ def canvas(drv):
 
 
 def view_of(drv):
-    z, u, v = (float(x) for x in drv.find_element(By.ID, "view").get_attribute("data-view").split())
+    """The canvas's zoom and pan (z, u, v) as render.js writes them; NaNs without them."""
+    shown = drv.find_element(By.ID, "view").get_attribute("data-view") or "nan nan nan"
+    z, u, v = (float(x) for x in shown.split())
     return z, u, v
 
 
@@ -180,12 +182,23 @@ def set_ab(drv, a, b, mode):
 SAMPLES = [(10, 10), (80, 45), (120, 60), (40, 70), (150, 20), (95, 30)]
 
 
+def samples(expect):
+    """SAMPLES and the pixels of the lowest, the highest and a middle expected entry (where a
+    wrong sign or scale shows; most pixels of a small difference are near one entry)."""
+    every = [(expect(x, y), (x, y)) for y in range(90) for x in range(160)]
+    lo, hi = min(every), max(every)
+    mid = min(every, key=lambda e: abs(e[0] - (lo[0] + hi[0]) / 2))
+    return SAMPLES + [lo[1], hi[1], mid[1]]
+
+
 def check_mode(drv, mode, expect, table, what):
     """Waits until every sample pixel's colour is table's entry expect(x, y), within one."""
+    points = samples(expect)
+
     def ok(d):
         W, H, px = canvas(d)
         bad = []
-        for x, y in SAMPLES:
+        for x, y in points:
             rgb = tuple(px[(y * W + x) * 4:(y * W + x) * 4 + 3])
             got, want = nearest_entry(table, rgb), expect(x, y)
             if abs(got - want) > 1 or sum(abs(a - b) for a, b in zip(table(got), rgb)) > 6:
