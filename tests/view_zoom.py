@@ -13,6 +13,7 @@ import re
 import sys
 import time
 
+from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
@@ -92,6 +93,26 @@ def wheel_at(drv, fx, fy, dy, modifiers=0):
                                                          deltaY=dy, modifiers=modifiers))
 
 
+def pan_drag(drv, button, buttons):
+    """A 30 screen pixel drag to the right from the canvas's centre (DevTools events)."""
+    r = drv.execute_script("const r = document.getElementById('view').getBoundingClientRect();"
+                           "return [r.left + r.width / 2, r.top + r.height / 2];")
+    ev = lambda kind, dx, **kw: drv.execute_cdp_cmd("Input.dispatchMouseEvent", dict(
+        type=kind, x=r[0] + dx, y=r[1], button=button, clickCount=1, **kw))
+    ev("mousePressed", 0, buttons=buttons)
+    for dx in (10, 20, 30):
+        ev("mouseMoved", dx, buttons=buttons)
+    ev("mouseReleased", 30)
+
+
+def panned(drv, z, u, v, W):
+    """Whether the view moved right by 30 screen pixels at zoom z: u less by 30 canvas
+    pixels' worth, v and z the same."""
+    width = drv.execute_script("return document.getElementById('view').getBoundingClientRect().width;")
+    z2, u2, v2 = view_of(drv)
+    return z2 == z and v2 == v and abs(u - u2 - 30 * W / width / (z * W)) < 1e-6
+
+
 def step_load(drv):
     drv.get(URL)
     wait_for(drv, "the first image", lambda d: d.execute_script(CANVAS_HASH)[0] > 16)
@@ -144,6 +165,16 @@ def step_zoom(drv):
     # the statistics follow the view
     wait_for(drv, "the statistics of the view", lambda d: "in view" in text(d, "stats"))
     shot(drv, "zoom")
+    # a middle drag, and a left drag with space held, pan the image (the camera stays)
+    pan_drag(drv, "middle", 4)
+    wait_for(drv, "a middle drag to pan the image", lambda d: panned(d, z, u, v, W))
+    z, u, v = view_of(drv)
+    body = drv.find_element(By.TAG_NAME, "body")
+    ActionChains(drv).key_down(Keys.SPACE, body).perform()
+    pan_drag(drv, "left", 1)
+    ActionChains(drv).key_up(Keys.SPACE, body).perform()
+    wait_for(drv, "a space drag to pan the image", lambda d: panned(d, z, u, v, W))
+    z, u, v = view_of(drv)
     # Ctrl + wheel dollies the camera and leaves the image's zoom alone
     cam = server_state(drv)["camera"]
     wheel_at(drv, 80, 45, 200, modifiers=2)
@@ -268,6 +299,14 @@ def step_swap(drv):
     drv.find_element(By.ID, "ab-swap").click()
     wait_for(drv, "the button to swap them back", lambda d: Select(d.find_element(By.ID, "port-a"))
              .first_selected_option.get_attribute("value") == "img.out")
+    # zoomed in, the divider still splits the view: A's pixels left of it, B's right
+    wheel_at(drv, 80, 45, -600)
+    wait_for(drv, "the image zoomed in", lambda d: view_of(d)[0] > 4)
+    for fx, port in ((60, "img.out"), (100, "g.direct")):
+        mouse_at(drv, fx, 45)
+        wait_for(drv, f"{port}'s readout at canvas column {fx} of the zoomed split",
+                 lambda d: text(d, "pixel").startswith(f"{port} "))
+    drv.find_element(By.TAG_NAME, "body").send_keys("f")
 
 
 def step_reference(drv):
