@@ -290,10 +290,13 @@ static const struct option options[] = {
     {.name = "--merge", .commands = SSG_CLI_BENCH, .take = take_flag, .field = OF(merge),
      .help = "the arguments are shard folders of one sweep: check they cover\n"
              "every cell once and write the tables (and --plot) into --out"},
-    {.name = "--reference", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
-     .take = take_text, .field = OF(reference),
-     .help = "the truth each cell's (tune: evaluation's) --image is compared\n"
-             "with; tune computes it once per scene"},
+    {.name = "--reference", .arg = "NODE.PORT|FILE",
+     .commands = SSG_CLI_BENCH | SSG_CLI_TUNE | SSG_CLI_VIEW, .take = take_text,
+     .field = OF(reference),
+     .help = "bench, tune: the truth NODE.PORT each cell's (tune: evaluation's)\n"
+             "--image is compared with; tune computes it once per scene;\n"
+             "view: an EXR FILE at the frame size, offered as B and as the\n"
+             "metrics' reference beside the graph's ports"},
     {.name = "--image", .arg = "NODE.PORT", .commands = SSG_CLI_BENCH | SSG_CLI_TUNE,
      .take = take_text, .field = OF(image),
      .help = "the image compared with --reference"},

@@ -70,7 +70,8 @@ struct ssg_cli_args {
     int plot;                        /* bench: --plot */
     const char *shard;               /* bench: --shard I/N, as written */
     int merge;                       /* bench: --merge */
-    const char *reference, *image;   /* bench, tune: --reference, --image (NODE.PORT) */
+    const char *reference, *image;   /* bench, tune: --reference, --image (NODE.PORT);
+                                        view: --reference FILE.exr */
     const char *params[SSG_TUNE_MAX_PARAMS]; /* tune: --param node.p=lo:hi[:log] */
     int param_count;
     int evals;                       /* tune: --evals; 0 = its default */

@@ -260,12 +260,15 @@ def step_camera(drv):
              lambda d: d.execute_script(CANVAS_HASH) != before)
     wait_for(drv, "the full-size run after the pan", lambda d: text(d, "last-run") == "full")
     before = drv.execute_script(CANVAS_HASH)
+    # the plain wheel zooms the image (tests/view_zoom.py); "wheel: camera" dollies the camera
+    Select(drv.find_element(By.ID, "wheel-mode")).select_by_value("camera")
     ActionChains(drv).scroll_from_origin(ScrollOrigin.from_element(canvas), 0, 300).perform()
     wait_for(drv, "the canvas to change after the wheel zoom",
              lambda d: d.execute_script(CANVAS_HASH) != before)
     wait_for(drv, "the full-size run after the wheel",
              lambda d: text(d, "last-run") == "full" and
              not d.find_element(By.ID, "busy").is_displayed())
+    Select(drv.find_element(By.ID, "wheel-mode")).select_by_value("image")
     shot(drv, "camera")
     # home (and key H) go back to the camera the graph opened with (issue 46: an orbit past
     # the box's one-sided walls had no way back but a restart)

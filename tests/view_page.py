@@ -251,6 +251,7 @@ def diagram_node(drv, name):
     fail(f"no node '{name}' in the diagram")
     return None
 
+
 def run_steps(steps, shot_name="failure"):
     """Starts headless Chromium, runs each step(drv) in turn (timed), stops at the first
     step with failures (screenshot viewer-SHOT_NAME.png), checks the console, and returns

@@ -188,6 +188,11 @@ char *view_state_json(const struct view_session *s, size_t *len)
         ssg_json_string(f, s->error);
     else
         fputs("null", f);
+    fputs(",\"reference_file\":", f); /* reference.h: "file:PATH" */
+    if (s->ref_port)
+        ssg_json_string(f, s->ref_port);
+    else
+        fputs("null", f);
     fputs(",\"camera\":", f);
     json_camera(f, s);
     fputs(",\"frame_ms\":", f);
@@ -215,17 +220,14 @@ static void put_u32(unsigned char *p, uint32_t v)
         p[i] = (unsigned char)(v >> (8 * i));
 }
 
-char *view_image_bytes(struct view_session *s, const char *port, int preview, size_t *len,
-                       struct ssg_diags *d)
+/* An image as GET /api/image's bytes (api.h), of run `generation`; NULL when out of memory. */
+static char *image_bytes(const struct ssg_image *img, unsigned generation, size_t *len,
+                         struct ssg_diags *d)
 {
-    struct ssg_image *img;
-    if (view_session_image(s, port, preview, &img, d))
-        return NULL;
     size_t w = (size_t)img->width, h = (size_t)img->height, c = (size_t)img->channels;
     size_t plane = w * h;
     unsigned char *out = malloc(20 + plane * c * sizeof(float));
     if (!out) {
-        ssg_image_destroy(&img);
         view_fail(d, SSG_E_NOMEM, "out of memory for %zux%zu pixels", w, h);
         return NULL;
     }
@@ -233,30 +235,69 @@ char *view_image_bytes(struct view_session *s, const char *port, int preview, si
     put_u32(out + 4, (uint32_t)w);
     put_u32(out + 8, (uint32_t)h);
     put_u32(out + 12, (uint32_t)c);
-    put_u32(out + 16, s->generation);
+    put_u32(out + 16, generation);
     float *px = (float *)(void *)(out + 20); /* 20 is a multiple of 4 */
     /* The library's images are planar; the page reads interleaved pixels. The host is
        little-endian (x86-64, arm64), as the format says. */
     for (size_t i = 0; i < plane; i++)
         for (size_t k = 0; k < c; k++)
             px[i * c + k] = img->data[k * plane + i];
-    ssg_image_destroy(&img);
     *len = 20 + plane * c * sizeof(float);
     return (char *)out;
+}
+
+char *view_image_bytes(struct view_session *s, const char *port, int preview, size_t *len,
+                       struct ssg_diags *d)
+{
+    struct ssg_image *img;
+    if (view_session_image(s, port, preview, &img, d))
+        return NULL;
+    char *out = image_bytes(img, s->generation, len, d);
+    ssg_image_destroy(&img);
+    return out;
+}
+
+/* The compare node on port a against port ref (full size): its outputs, the caller
+   releases them. */
+static enum ssg_err compare_ports(struct view_session *s, const char *a,
+                                  const struct ssg_image *ref, struct ssg_outputs *out,
+                                  struct ssg_diags *d)
+{
+    struct ssg_image *img;
+    enum ssg_err e = view_session_image(s, a, 0, &img, d);
+    if (e)
+        return e;
+    struct ssg_binding in[2] = {{"a", img}, {"b", ref}};
+    e = ssg_node_run("compare", in, 2, NULL, 0, NULL, out, d);
+    ssg_image_destroy(&img);
+    return e;
+}
+
+char *view_flip_bytes(struct view_session *s, const char *a, const char *b, size_t *len,
+                      struct ssg_diags *d)
+{
+    struct ssg_image *ref;
+    if (view_session_image(s, b, 0, &ref, d))
+        return NULL;
+    struct ssg_outputs out = {0};
+    enum ssg_err e = compare_ports(s, a, ref, &out, d);
+    ssg_image_destroy(&ref);
+    char *bytes = NULL;
+    for (int i = 0; !e && i < out.count; i++)
+        if (!strcmp(out.names[i], "flip"))
+            bytes = image_bytes(out.images[i], s->generation, len, d);
+    if (!e && !bytes && !d->count)
+        view_fail(d, SSG_E_RUN, "the compare node made no flip map");
+    ssg_outputs_release(&out);
+    return bytes;
 }
 
 /* RMSE and SSIM of port `port` against the image ref, as JSON, through the compare node. */
 static enum ssg_err json_score(FILE *f, struct view_session *s, const struct ssg_image *ref,
                                const char *port, struct ssg_diags *d)
 {
-    struct ssg_image *img;
-    enum ssg_err e = view_session_image(s, port, 0, &img, d);
-    if (e)
-        return e;
-    struct ssg_binding in[2] = {{"a", img}, {"b", ref}};
     struct ssg_outputs out = {0};
-    e = ssg_node_run("compare", in, 2, NULL, 0, NULL, &out, d);
-    ssg_image_destroy(&img);
+    enum ssg_err e = compare_ports(s, port, ref, &out, d);
     if (e)
         return e;
     double rmse = NAN, ssim = NAN;

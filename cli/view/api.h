@@ -24,6 +24,11 @@ char *view_image_bytes(struct view_session *s, const char *port, int preview, si
 char *view_metrics_json(struct view_session *s, const char *ref, const char *a, const char *b,
                         size_t *len, struct ssg_diags *diags);
 
+/* GET /api/flip: the FLIP map (nodes/compare/README.md) of port a against port b, the
+ * reference, both at full size, as GET /api/image's bytes of one channel in [0, 1]. */
+char *view_flip_bytes(struct view_session *s, const char *a, const char *b, size_t *len,
+                      struct ssg_diags *diags);
+
 /* GET /api/graph.svg: `dot -Tsvg` of the graph's DOT (ssg_graph_dot). */
 char *view_graph_svg(const struct view_session *s, size_t *len, struct ssg_diags *diags);
 

@@ -8,6 +8,7 @@
 
 #include "../text_out.h"
 #include "api.h"
+#include "reference.h"
 #include "view.h"
 
 static const char *JSON = "application/json";
@@ -133,6 +134,22 @@ static void metrics(struct view_session *s, const struct view_request *req,
         diags_error(a, MHD_HTTP_BAD_REQUEST, &d, ssg_diags_first(&d));
 }
 
+static void flip(struct view_session *s, const struct view_request *req, struct view_answer *a)
+{
+    const char *pa = arg(req, "a"), *pb = arg(req, "b");
+    if (!pa || !pb) {
+        view_answer_error(a, MHD_HTTP_BAD_REQUEST, "expected ?a=NODE.PORT&b=NODE.PORT");
+        return;
+    }
+    struct ssg_diags d = {0};
+    size_t len = 0;
+    char *body = view_flip_bytes(s, pa, pb, &len, &d);
+    if (body)
+        answer(a, "application/octet-stream", body, len);
+    else
+        diags_error(a, MHD_HTTP_BAD_REQUEST, &d, ssg_diags_first(&d));
+}
+
 static void graph_svg(struct view_session *s, const struct view_request *req,
                       struct view_answer *a)
 {
@@ -214,6 +231,23 @@ static void save(struct view_session *s, const struct view_request *req,
     json_field(a, MHD_HTTP_OK, "path", path);
 }
 
+/* The body is "path=" and the path, raw to its end (a path may hold '&' and '='): 404 when
+   the file cannot be read, 400 when it is not an EXR of the frame's size. */
+static void reference(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a)
+{
+    if (strncmp(req->body, "path=", 5)) {
+        view_answer_error(a, MHD_HTTP_BAD_REQUEST, "expected path=FILE.exr");
+        return;
+    }
+    struct ssg_diags d = {0};
+    enum ssg_err e = view_reference_open(s, req->body + 5, &d);
+    if (e)
+        diags_error(a, e == SSG_E_IO ? MHD_HTTP_NOT_FOUND : MHD_HTTP_BAD_REQUEST, &d, e);
+    else
+        state_answer(s, a);
+}
+
 static void set(struct view_session *s, const struct view_request *req, struct view_answer *a)
 {
     struct ssg_diags d = {0};
@@ -244,6 +278,7 @@ static const struct route {
     {"/api/state", 0, state},     {"/api/image", 0, image},     {"/api/metrics", 0, metrics},
     {"/api/graph.svg", 0, graph_svg}, {"/api/set", 1, set},
     {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
+    {"/api/flip", 0, flip},       {"/api/reference", 1, reference},
 };
 
 void view_route(struct view_session *s, const struct view_request *req, struct view_answer *a)

@@ -3,6 +3,7 @@
 #include "session.h"
 
 #include "../watch.h"
+#include "reference.h"
 
 #include <stdarg.h>
 #include <stdlib.h>
@@ -131,6 +132,8 @@ enum ssg_err view_session_open(struct view_session *s, const struct ssg_cli_args
         adopt(s, g);
         e = run_graph(s, s->g, 0, &d);
     }
+    if (!e && args->reference)
+        e = view_reference_open(s, args->reference, &d);
     if (e) {
         ssg_diags_print(&d, stderr);
         view_session_close(s);
@@ -144,6 +147,7 @@ void view_session_close(struct view_session *s)
     ssg_graph_destroy(&s->preview);
     ssg_run_stats_free(&s->stats);
     ssg_cli_watch_free(&s->watch);
+    view_reference_close(s);
     free(s->error);
     s->error = NULL;
 }
@@ -234,12 +238,15 @@ enum ssg_err view_session_image(struct view_session *s, const char *port, int pr
        preview (issue 46). */
     if (preview && s->preview_stale && !s->full_stale)
         preview = 0;
-    struct ssg_graph *g = preview && s->preview ? s->preview : s->g;
     struct ssg_image *img = NULL, *copy = NULL;
+    enum ssg_err e;
+    if (view_reference_image(s, port, out, &e, d))
+        return e;
     *out = NULL;
+    struct ssg_graph *g = preview && s->preview ? s->preview : s->g;
     /* After a drag only the preview ran: the full graph runs when first asked for. */
     int stale = g == s->g ? s->full_stale : s->preview_stale;
-    enum ssg_err e = stale ? run_graph(s, g, g != s->g, d) : SSG_OK;
+    e = stale ? run_graph(s, g, g != s->g, d) : SSG_OK;
     if (!e)
         e = ssg_graph_output(g, port, &img, d);
     if (e)

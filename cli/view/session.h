@@ -41,6 +41,8 @@ struct view_session {
     int frame;                       /* the frame of the sequence shown (view_session_frame) */
     char *error;                     /* the last failure's diagnostics as printed; NULL */
     struct ssg_cli_watch *watch;     /* the graph's files (watch.h); NULL = none */
+    struct ssg_image *ref_file;      /* the open reference file (reference.h); NULL = none */
+    char *ref_port;                  /* its name in the port lists, "file:PATH"; NULL */
 };
 
 /* Loads the graph of args as a live graph and runs it once; on failure the diagnostics are
@@ -61,7 +63,8 @@ enum ssg_err view_session_camera(struct view_session *s, const struct ssg_view *
  * page's own camera gives way to the path's. */
 enum ssg_err view_session_frame(struct view_session *s, int frame, struct ssg_diags *diags);
 /* The latest image of "node.port" (of the preview graph with preview = 1) without its
- * guard band, as a new image the caller destroys. */
+ * guard band, or the open reference file's ("file:PATH", reference.h), as a new image the
+ * caller destroys. */
 enum ssg_err view_session_image(struct view_session *s, const char *port, int preview,
                                 struct ssg_image **out, struct ssg_diags *diags);
 /* 1 when the watched files changed since the last load; reloads (the session's sets and

@@ -3,7 +3,8 @@
 // with RMSE/SSIM, and the run's per-node times. This module starts the page and wires its
 // controls: they change the state (state.js), and every change of the state draws the image
 // view through the one render path (render.js).
-import { fetchImage } from './image.js';
+import { flipKey } from './diff.js';
+import { fetchFlip, fetchImage } from './image.js';
 import { countUpdate, dragging, goHome, wireMouse } from './mouse.js';
 import { api, errorText, LatestSender } from './net.js';
 import { enlargeDiagram, fillTimes, markDiagram, panelActions, portChoices,
@@ -13,6 +14,7 @@ import { findNode, receive, select, setDisplay, setPorts, state, storeImages, su
   from './state.js';
 import { wireTime } from './time.js';
 import { $, showRequestError } from './ui.js';
+import { fit, oneToOne } from './viewport.js';
 
 // ---- the server's state -----------------------------------------------------------------
 // A new state (from a poll, a set or a camera move): header, times, errors, port lists,
@@ -121,6 +123,10 @@ async function refreshImages(preview) {
     for (const port of new Set(p.ab ? [p.a, p.b] : [p.a])) {
       if (port) got.set(port, await fetchImage(port, preview));
     }
+    // the FLIP map of the full-size images (a drag's previews keep the last one)
+    if (p.ab && p.mode === 'flip' && p.a && p.b && !preview) {
+      got.set(flipKey(p.a, p.b), await fetchFlip(p.a, p.b));
+    }
     storeImages(got);
     if (preview && dragging()) countUpdate();
     if (!preview && p.ab) refreshMetrics();
@@ -197,9 +203,38 @@ function wirePorts() {
     if (!state.ports.ab) showMetrics('metrics: -', false);
     reload();
   };
-  $('ab-mode').onchange = () => setPorts({ mode: $('ab-mode').value });
+  $('ab-mode').onchange = () => { setPorts({ mode: $('ab-mode').value }); reload(); };
   $('port-ref').onchange = () => { setPorts({ ref: $('port-ref').value }); refreshMetrics(); };
+  $('ab-swap').onclick = swapAB;
+  $('ref-open').onclick = openReference;
+  $('ref-path').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') openReference(); });
 }
+
+// A and B trade places (the button, key X): the images are both at hand; the metrics and a
+// FLIP map (B is its reference) are asked for again.
+function swapAB() {
+  const p = state.ports;
+  setPorts({ a: p.b, b: p.a });
+  refreshImages(state.server && state.server.last_run === 'preview');
+}
+
+// An EXR file as B and as the metrics' reference (POST /api/reference): the server reads it
+// and lists it among the ports as file:PATH; a missing or bad file is the error bar's.
+async function openReference() {
+  const path = $('ref-path').value.trim();
+  try {
+    const resp = await api('/api/reference', `path=${path}`);
+    if (!resp.ok) { showRequestError(`reference ${path}: ${await errorText(resp)}`); return; }
+    showRequestError('');
+    applyState(await resp.json());
+    const file = state.server.reference_file;
+    setPorts({ ab: true, b: file, ref: file });
+    refreshImages(false);
+  } catch (e) { showRequestError(`reference ${path}: ${e}`); }
+}
+
+// The image view's keys: F fit, 1 one to one, X swap A and B, H home.
+const KEYS = { f: fit, F: fit, 1: oneToOne, x: swapAB, X: swapAB, h: goHome, H: goHome };
 
 function wire() {
   subscribe(scheduleRender);
@@ -214,10 +249,12 @@ function wire() {
   $('diagram-expand').onclick = () => enlargeDiagram(true);
   $('diagram-close').onclick = () => enlargeDiagram(false);
   $('cam-home').onclick = goHome;
+  $('zoom-fit').onclick = fit;
+  $('zoom-one').onclick = oneToOne;
   document.addEventListener('keydown', (ev) => {
     if (ev.key === 'Escape') enlargeDiagram(false);
     const typing = ev.target.closest && ev.target.closest('input, select, textarea');
-    if ((ev.key === 'h' || ev.key === 'H') && !typing && !ev.ctrlKey && !ev.metaKey) goHome();
+    if (KEYS[ev.key] && !typing && !ev.ctrlKey && !ev.metaKey && !ev.altKey) KEYS[ev.key]();
   });
   $('save-name').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') saveVariant(); });
 }

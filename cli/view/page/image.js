@@ -21,6 +21,14 @@ export async function fetchImage(port, preview) {
   return decodeImage(await resp.arrayBuffer(), port, preview);
 }
 
+// The FLIP map of port a against port b, the reference (GET /api/flip: one channel).
+export async function fetchFlip(a, b) {
+  const q = encodeURIComponent;
+  const resp = await api(`/api/flip?a=${q(a)}&b=${q(b)}`);
+  if (!resp.ok) throw new Error(`FLIP of ${a} against ${b}: ${await errorText(resp)}`);
+  return decodeImage(await resp.arrayBuffer(), 'FLIP', false);
+}
+
 // Perceptual false colour: viridis at 11 stops (matplotlib's table), linearly interpolated
 // into 256 RGBA entries; entry floor(255 v) shows the value v in [0, 1].
 const VIRIDIS = [[68, 1, 84], [72, 36, 117], [65, 68, 135], [53, 95, 141], [42, 120, 142],
@@ -30,6 +38,19 @@ export const VIRIDIS_RGBA = (() => {
   for (let i = 0; i < 256; i++) {
     const t = i / 255 * 10, k = Math.min(9, Math.floor(t)), f = t - k;
     for (let j = 0; j < 3; j++) lut[i * 4 + j] = VIRIDIS[k][j] * (1 - f) + VIRIDIS[k + 1][j] * f;
+    lut[i * 4 + 3] = 255;
+  }
+  return lut;
+})();
+
+// A diverging map for signed values (Moreland's cool to warm endpoints, through a neutral
+// grey): entry 128 + 127 v shows v in [-1, 1], entry 128 exactly the grey of 0.
+const COOL = [59, 76, 192], NEUTRAL = [221, 221, 221], WARM = [180, 4, 38];
+export const DIVERGING_RGBA = (() => {
+  const lut = new Uint8ClampedArray(256 * 4);
+  for (let i = 0; i < 256; i++) {
+    const t = Math.max(-1, Math.min(1, (i - 128) / 127)), end = t < 0 ? COOL : WARM;
+    for (let j = 0; j < 3; j++) lut[i * 4 + j] = NEUTRAL[j] + (end[j] - NEUTRAL[j]) * Math.abs(t);
     lut[i * 4 + 3] = 255;
   }
   return lut;

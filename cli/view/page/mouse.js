@@ -1,4 +1,6 @@
-// The mouse on the canvas: drag to orbit, right or shift drag to pan, wheel to zoom, drag the
+// The mouse on the canvas: drag to orbit the camera, right or shift drag to pan it, Ctrl or
+// Alt + wheel to dolly it (or the plain wheel with the toolbar's "wheel: camera"); the wheel
+// zooms the image about the mouse and a middle or space drag pans it (viewport.js); drag the
 // A/B divider, hover for the pixel readout. The page moves its own copy of the camera
 // (state.cam) and sends each pose; while the user steers, the server's answers never
 // overwrite it (state.js receive), so a slow answer does not make the camera jump back.
@@ -7,8 +9,10 @@ import { LatestSender } from './net.js';
 import { framePos } from './render.js';
 import { setDivider, setPointer, state, steer } from './state.js';
 import { $ } from './ui.js';
+import { panBy, zoomAt } from './viewport.js';
 
 let drag = null;       // the current canvas drag: {mode, x, y, moved}
+let spaceDown = false; // space held: a left drag pans the image
 let wheelTimer = null; // the full-size run after a wheel burst
 let camSender = null;
 const ups = [];        // times of the preview images drawn during a drag
@@ -39,9 +43,15 @@ function nearDivider(ev) {
     Math.abs(fx - state.divider * cv.width) < 6 * cv.width / cv.getBoundingClientRect().width;
 }
 
+function dragMode(ev) {
+  if (nearDivider(ev)) return 'divider';
+  if (ev.button === 1 || spaceDown) return 'image';
+  return ev.button === 2 || ev.shiftKey ? 'pan' : 'orbit';
+}
+
 function onPointerDown(ev) {
-  const mode = nearDivider(ev) ? 'divider' : ev.button === 2 || ev.shiftKey ? 'pan' : 'orbit';
-  if (mode !== 'divider' && !state.cam) {
+  const mode = dragMode(ev);
+  if (mode !== 'divider' && mode !== 'image' && !state.cam) {
     noCamera();
     return;
   }
@@ -64,6 +74,7 @@ function onPointerMove(ev) {
   const r = cv.getBoundingClientRect();
   if (drag.mode === 'divider') { setDivider((ev.clientX - r.left) / r.width); return; }
   if (!dx && !dy) return;
+  if (drag.mode === 'image') { panBy(dx * cv.width / r.width, dy * cv.height / r.height); return; }
   const cam = structuredClone(state.cam);
   if (drag.mode === 'orbit') orbit(cam, dx, dy); else pan(cam, dx, dy, r.height);
   drag.moved = true;
@@ -76,12 +87,20 @@ function onPointerUp() {
   const d = drag;
   drag = null;
   $('view').classList.remove('dragging');
-  if (d.mode === 'divider' || !d.moved) return;
+  if (d.mode === 'divider' || d.mode === 'image' || !d.moved) return;
   steer(state.cam, false);
   sendCamera(false);
 }
 
+// The wheel zooms the image about the mouse; with Ctrl or Alt (or "wheel: camera") it
+// dollies the camera.
 function onWheel(ev) {
+  if (!(ev.ctrlKey || ev.altKey || $('wheel-mode').value === 'camera')) {
+    ev.preventDefault();
+    const [px, py] = framePos(ev);
+    zoomAt(2 ** (-ev.deltaY / (ev.deltaMode ? 3 : 200)), px, py);
+    return;
+  }
   if (!state.cam) return;
   ev.preventDefault();
   const cam = structuredClone(state.cam);
@@ -113,7 +132,17 @@ export function wireMouse(onRunAnswer) {
   cv.addEventListener('pointercancel', onPointerUp);
   cv.addEventListener('wheel', onWheel, { passive: false });
   cv.addEventListener('contextmenu', (ev) => ev.preventDefault());
+  cv.addEventListener('mousedown', (ev) => { if (ev.button === 1) ev.preventDefault(); }); // no autoscroll
+  // space held over the page (not in a text box) turns a left drag into an image pan
+  const typing = (ev) => ev.target.closest && ev.target.closest('input, select, textarea');
+  document.addEventListener('keydown', (ev) => {
+    if (ev.key !== ' ' || typing(ev)) return;
+    spaceDown = true;
+    ev.preventDefault();
+  });
+  document.addEventListener('keyup', (ev) => { if (ev.key === ' ') spaceDown = false; });
+  window.addEventListener('blur', () => { spaceDown = false; });
 }
 
 // Whether a drag (not a divider move) is on: preview images count as camera updates.
-export const dragging = () => drag !== null && drag.mode !== 'divider';
+export const dragging = () => drag !== null && drag.mode !== 'divider' && drag.mode !== 'image';

@@ -49,8 +49,11 @@ export function portChoices(st) {
   const outs = st.nodes.flatMap((n) => n.outputs.map((o) => ({ value: `${n.name}.${o.port}`,
     label: `${n.name}.${o.port}${o.image === false ? ' (not computed)' : ''}`,
     image: o.image !== false })));
-  const ports = outs.map((o) => o.value), made = outs.filter((o) => o.image);
-  const last = made.length ? made[made.length - 1].value : ports[ports.length - 1] || '';
+  const made = outs.filter((o) => o.image);
+  const last = made.length ? made[made.length - 1].value : outs.length ? outs[outs.length - 1].value : '';
+  // an open reference file (POST /api/reference) joins the lists, after the graph's ports
+  if (st.reference_file) outs.push({ value: st.reference_file, label: st.reference_file, image: true });
+  const ports = outs.map((o) => o.value);
   for (const id of ['port-a', 'port-b', 'port-ref']) fillSelect($(id), outs);
   const keep = (p) => (ports.includes(p) ? p : last);
   const p = state.ports;

@@ -4,9 +4,11 @@
 // a mutation of the state asks for a render, and the renders asked for within one animation
 // frame are one render.
 import { state } from './state.js';
-import { channelRange, drawHistogram, imageStats } from './stats.js';
+import { diffImage, diffRange, drawScale, flipKey, isDiff } from './diff.js';
+import { channelRange, drawHistogram, fmtValue, imageStats } from './stats.js';
 import { ImageView, shownChannel } from './tonemap.js';
 import { $, showRequestError } from './ui.js';
+import { canvasToFrame, visibleRect, zoomPercent } from './viewport.js';
 
 let view = null, queued = false, drawn = null;
 
@@ -18,12 +20,15 @@ export function scheduleRender() {
 
 // What the canvas shows, from the state; the canvas is drawn again only when this changes.
 function frameOf(st) {
-  const p = state.ports, [W, H] = st.size;
-  const a = state.images.get(p.a) || null;
-  const b = p.ab ? state.images.get(p.b) || null : null;
-  const [lo, hi] = falseColourRange(a, p.ab && p.mode === 'split' ? b : null, state.display);
-  return { W, H, a, b, ab: p.ab ? p.mode : 'none', splitX: Math.round(state.divider * W),
-    display: state.display, rangeLo: lo, rangeScale: hi > lo ? 1 / (hi - lo) : 1 };
+  const p = state.ports, [W, H] = st.size, z = state.zoom;
+  const ab = p.ab ? p.mode : 'none';
+  // the FLIP mode shows the server's map of A against B as its image A
+  const a = (ab === 'flip' ? state.images.get(flipKey(p.a, p.b)) : state.images.get(p.a)) || null;
+  const b = p.ab && ab !== 'flip' ? state.images.get(p.b) || null : null;
+  const [lo, hi] = isDiff(ab) ? diffRange(ab, a, b, state.display)
+    : falseColourRange(a, ab === 'split' ? b : null, state.display);
+  return { W, H, a, b, ab, splitX: Math.round(state.divider * W), display: state.display,
+    rangeLo: lo, rangeScale: hi > lo ? 1 / (hi - lo) : 1, zoom: z.z, u: z.u, v: z.v };
 }
 
 // The values false colour spreads over its scale: [0, 1], or with range auto the shown
@@ -51,6 +56,8 @@ function drawCanvas(f) {
   // what A is, for a reader of the page (and its tests): the run and the image's size, which
   // is half the frame's for a drag's preview
   cv.dataset.shown = f.a ? `${f.a.w}x${f.a.h} run ${f.a.gen}${f.a.preview ? ' preview' : ''}` : '';
+  // the zoom and pan (viewport.js): canvas pixels per frame pixel, the centre's u and v
+  cv.dataset.view = `${f.zoom} ${f.u} ${f.v}`;
   if (!view) view = new ImageView(cv, () => { drawn = null; scheduleRender(); });
   view.draw(f);
   drawn = f;
@@ -87,39 +94,49 @@ function showControls() {
   if (+$('exposure').value !== d.stops) $('exposure').value = String(d.stops);
   $('exposure-val').textContent = d.stops.toFixed(1);
   if ($('range').value !== d.range) $('range').value = d.range;
-  // the false colour's scale: the values at its two ends (exposure scales it)
-  const f = drawn, g = 2 ** d.stops;
-  const shows = f && f.a && d.colormap === 'viridis' && shownChannel(f.a, d) >= 0;
-  $('range-val').textContent = shows
-    ? `${fmtValue(f.rangeLo)} .. ${fmtValue(f.rangeLo + 1 / (f.rangeScale * g))}` : '';
   $('ab-labels').hidden = !p.ab;
-  $('ab-label-a').textContent = p.mode === 'diff' ? `|A - B|  A ${p.a}` : `A ${p.a}`;
+  const what = { diff: '|A - B|', signed: 'A - B', relative: '|A - B| / (|B| + 0.01)',
+    flip: 'FLIP of A against B' }[p.mode];
+  $('ab-label-a').textContent = what ? `${what}  A ${p.a}` : `A ${p.a}`;
   $('ab-label-b').textContent = `B ${p.b}`;
+  $('zoom-val').textContent = `${zoomPercent()}%`;
+  // the colour map's scale: the values at its two ends (exposure scales it), and its bar
+  const ends = drawScale(drawn, d);
+  $('range-val').textContent = ends ? `${fmtValue(ends[0])} .. ${fmtValue(ends[2])}` : '';
 }
 
 // A's per-channel minimum, mean and maximum, and the histogram of what is on show: the
 // shown channel over the false colour's range, or the colour channels over their joint
-// minimum to maximum (issue 46: no statistics of the view, no histogram).
+// minimum to maximum (issue 46: no statistics of the view, no histogram); of the pixels in
+// view once zoomed in (tev's statistics of the view).
 let statsShown = null;
 function showStats() {
   const f = drawn, img = f && f.a;
+  const z = state.zoom, whole = z.z <= 1 && z.u === 0.5 && z.v === 0.5;
+  const rect = img && !whole ? visibleRect(img.w, img.h) : null;
   const key = img && `${state.ports.a} ${img.gen} ${img.w} ${f.rangeLo} ${f.rangeScale} ` +
-    `${state.display.channel} ${state.display.colormap} ${state.display.stops}`;
+    `${state.display.channel} ${state.display.colormap} ${state.display.stops} ${rect} ${f.ab}`;
   if (key === statsShown) return;
   statsShown = key;
-  if (!img) { $('stats').textContent = ''; return; }
-  const st = imageStats(img), names = img.c === 1 ? ['Y'] : ['R', 'G', 'B', 'A'];
-  $('stats').textContent = `A ${state.ports.a}  ` + st.map((s, i) => (s
+  if (!img || (rect && (rect[2] <= rect[0] || rect[3] <= rect[1]))) {
+    $('stats').textContent = ''; return;
+  }
+  const st = imageStats(img, rect), names = img.c === 1 ? ['Y'] : ['R', 'G', 'B', 'A'];
+  const label = f.ab === 'flip' ? 'FLIP' : `A ${state.ports.a}`;
+  const where = rect ? `  in view x ${rect[0]}-${rect[2] - 1}, y ${rect[1]}-${rect[3] - 1}` : '';
+  $('stats').textContent = `${label}  ` + st.map((s, i) => (s
     ? `${names[i]} ${fmtValue(s.min)} / ${fmtValue(s.mean)} / ${fmtValue(s.max)}`
-    : `${names[i]} -`)).join('   ') + '  (min / mean / max)';
+    : `${names[i]} -`)).join('   ') + `  (min / mean / max)${where}`;
   const ch = shownChannel(img, state.display);
   const chs = ch >= 0 ? [ch] : [0, 1, 2].filter((c) => c < img.c && st[c]);
   // over what the display shows: the false colour's range, else [0, 1] over the exposure
   // (a colour image's few bright pixels, a lamp at 38, would squeeze the rest into a bin)
   const gain = 2 ** state.display.stops;
-  const [lo, hi] = ch >= 0 && state.display.colormap === 'viridis'
+  // (a difference's range is the difference's, not A's: A's histogram is then over [0, 1])
+  const ownRange = !isDiff(f.ab) || f.ab === 'flip';
+  const [lo, hi] = ch >= 0 && ownRange && state.display.colormap === 'viridis'
     ? [f.rangeLo, f.rangeLo + 1 / (f.rangeScale * gain)] : [0, 1 / gain];
-  drawHistogram($('hist'), img, chs, lo, hi, true);
+  drawHistogram($('hist'), img, chs, lo, hi, true, rect);
 }
 
 // The A/B divider: a one-pixel line over the canvas at screen resolution.
@@ -137,22 +154,31 @@ export function framePos(ev) {
   return [(ev.clientX - r.left) * cv.width / r.width, (ev.clientY - r.top) * cv.height / r.height];
 }
 
-// The raw floats under the mouse, read from the image's array (before exposure).
+// The floats of img at frame point [qx, qy] (before exposure), or null outside it.
+function valuesAt(img, qx, qy) {
+  const cv = $('view');
+  const x = Math.floor(qx * img.w / cv.width), y = Math.floor(qy * img.h / cv.height);
+  if (x < 0 || y < 0 || x >= img.w || y >= img.h) return null;
+  const base = (y * img.w + x) * img.c;
+  return { x, y, vals: [...img.data.subarray(base, base + img.c)] };
+}
+const fmtVals = (vals) => vals.map((v) => v.toPrecision(5)).join(', ');
+
+// The raw floats under the mouse, read from the image's array through the zoom (the side of
+// the divider it is on; a difference: A's, B's and the difference's).
 function showPixel() {
   if (!state.pointer) return;
-  const [fx, fy] = framePos(state.pointer);
-  const p = state.ports, cv = $('view');
-  const right = p.ab && p.mode === 'split' && fx >= state.divider * cv.width;
-  const port = right ? p.b : p.a;
+  const [fx, fy] = framePos(state.pointer), [qx, qy] = canvasToFrame(fx, fy);
+  const p = state.ports, cv = $('view'), mode = p.ab ? p.mode : 'none';
+  const right = mode === 'split' && fx >= state.divider * cv.width;
+  const port = mode === 'flip' ? flipKey(p.a, p.b) : right ? p.b : p.a;
   const img = state.images.get(port);
-  if (!img) return;
-  const x = Math.floor(fx * img.w / cv.width), y = Math.floor(fy * img.h / cv.height);
-  if (x < 0 || y < 0 || x >= img.w || y >= img.h) return;
-  const base = (y * img.w + x) * img.c;
-  const vals = [...img.data.subarray(base, base + img.c)].map((v) => v.toPrecision(5));
-  $('pixel').textContent = `${port}  x,y ${x},${y}${img.preview ? ' (preview)' : ''}: ${vals.join(', ')}`;
+  const at = img && valuesAt(img, qx, qy);
+  if (!at) { $('pixel').textContent = 'x,y: -'; return; }
+  let line = `${mode === 'flip' ? 'FLIP' : port}  x,y ${at.x},${at.y}` +
+    `${img.preview ? ' (preview)' : ''}: ${fmtVals(at.vals)}`;
+  const other = isDiff(mode) && mode !== 'flip' && state.images.get(p.b);
+  const bt = other && valuesAt(other, qx, qy);
+  if (bt) line += `  B ${fmtVals(bt.vals)}  ${mode} ${fmtVals(diffImage(mode, at.vals, bt.vals))}`;
+  $('pixel').textContent = line;
 }
-
-// A value of the false colour's scale, short.
-const fmtValue = (v) => (v === 0 ? '0' : Math.abs(v) >= 1e4 || Math.abs(v) < 1e-3
-  ? v.toExponential(2) : String(parseFloat(v.toPrecision(4))));

@@ -9,6 +9,9 @@ const s = {
   selected: null,     // the selected node's name
   images: new Map(),  // port -> {w, h, c, gen, preview, data: Float32Array} (image.js)
   ports: Object.freeze({ a: '', b: '', ref: '', ab: false, mode: 'split' }),
+  // the image's zoom and pan (viewport.js): canvas pixels per frame pixel, and the frame
+  // point at the canvas's centre as fractions of the frame (fit: 1, 0.5, 0.5)
+  zoom: Object.freeze({ z: 1, u: 0.5, v: 0.5 }),
   display: Object.freeze({ stops: 0, curve: 'clamp', channel: 'rgb', colormap: 'viridis',
     range: 'auto' }),
   divider: 0.5,       // the A/B divider as a fraction of the width
@@ -63,10 +66,17 @@ export function setDisplay(patch) {
   changed('display');
 }
 
-// Which ports are shown: any of {a, b, ref, ab: the A/B view on, mode: 'split'|'diff'}.
+// Which ports are shown: any of {a, b, ref, ab: the A/B view on, mode: 'split', or a
+// difference: 'diff' |A - B|, 'signed' A - B, 'relative' |A - B| / (|B| + 0.01), 'flip'}.
 export function setPorts(patch) {
   s.ports = Object.freeze({ ...s.ports, ...patch });
   changed('ports');
+}
+
+// The image's zoom and pan: any of {z, u, v} (viewport.js keeps them in bounds).
+export function setZoom(patch) {
+  s.zoom = Object.freeze({ ...s.zoom, ...patch });
+  changed('zoom');
 }
 
 export function setDivider(fraction) {

@@ -29,55 +29,70 @@ export function channelRange(img, ch) {
   return known.get(ch);
 }
 
-// [{min, max, mean}] per channel (up to 4) over the finite values; null where none is.
-export function imageStats(img) {
-  if (!statsOf.has(img)) {
+// Each value of channel ch of the pixels in rect [x0, y0, x1, y1] (null: all) to fn.
+function eachValue(img, ch, rect, fn) {
+  const [x0, y0, x1, y1] = rect || [0, 0, img.w, img.h];
+  for (let y = y0; y < y1; y++) {
+    for (let i = (y * img.w + x0) * img.c + ch, end = (y * img.w + x1) * img.c; i < end;
+      i += img.c) fn(img.data[i]);
+  }
+}
+
+// A per-image cache of counts by key: the whole image's, and the last zoomed view's (a
+// wheel burst asks for many rectangles, of which only the last is wanted again).
+function cached(store, img, key, count) {
+  if (!store.has(img)) store.set(img, new Map());
+  const known = store.get(img);
+  if (!known.has(key)) {
+    if (!key.startsWith('all ')) for (const k of known.keys()) if (!k.startsWith('all ')) known.delete(k);
+    known.set(key, count());
+  }
+  return known.get(key);
+}
+
+// [{min, max, mean}] per channel (up to 4) over the finite values of the pixels in rect
+// ([x0, y0, x1, y1]: the zoomed view's; null: all); null where none is.
+export function imageStats(img, rect = null) {
+  return cached(statsOf, img, `${rect ? rect.join() : 'all'} `, () => {
     const n = Math.min(img.c, 4), out = [];
     for (let ch = 0; ch < n; ch++) {
       let lo = Infinity, hi = -Infinity, sum = 0, count = 0;
-      for (let i = ch; i < img.data.length; i += img.c) {
-        const v = img.data[i];
-        if (!Number.isFinite(v)) continue;
+      eachValue(img, ch, rect, (v) => {
+        if (!Number.isFinite(v)) return;
         if (v < lo) lo = v;
         if (v > hi) hi = v;
         sum += v; count++;
-      }
+      });
       out.push(count ? { min: lo, max: hi, mean: sum / count } : null);
     }
-    statsOf.set(img, out);
-  }
-  return statsOf.get(img);
+    return out;
+  });
 }
 
-// Counts of channel ch's finite values in `bins` equal bins over [lo, hi]; values outside
-// count in the end bins (what the display clips shows there).
-export function histogram(img, ch, lo, hi, bins) {
-  const key = `${ch} ${lo} ${hi} ${bins}`;
-  if (!histOf.has(img)) histOf.set(img, new Map());
-  const known = histOf.get(img);
-  if (!known.has(key)) {
+// Counts of channel ch's finite values (of the pixels in rect, null: all) in `bins` equal
+// bins over [lo, hi]; values outside count in the end bins (what the display clips shows
+// there).
+export function histogram(img, ch, lo, hi, bins, rect = null) {
+  return cached(histOf, img, `${rect ? rect.join() : 'all'} ${ch} ${lo} ${hi} ${bins}`, () => {
     const counts = new Uint32Array(bins), k = hi > lo ? bins / (hi - lo) : 0;
-    for (let i = ch; i < img.data.length; i += img.c) {
-      const v = img.data[i];
-      if (!Number.isFinite(v)) continue;
-      counts[Math.max(0, Math.min(bins - 1, Math.floor((v - lo) * k)))]++;
-    }
-    known.set(key, counts);
-  }
-  return known.get(key);
+    eachValue(img, ch, rect, (v) => {
+      if (Number.isFinite(v)) counts[Math.max(0, Math.min(bins - 1, Math.floor((v - lo) * k)))]++;
+    });
+    return counts;
+  });
 }
 
 // Draws the histograms of channels `chs` (their colours) over [lo, hi] into the canvas,
 // each scaled to its tallest bin; 0s are left out when told (the background of G-buffer
 // ports would flatten the rest).
-export function drawHistogram(canvas, img, chs, lo, hi, skipZero) {
+export function drawHistogram(canvas, img, chs, lo, hi, skipZero, rect = null) {
   const g = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
   g.fillStyle = '#1b1b1b';
   g.fillRect(0, 0, W, H);
   const colours = chs.length > 1 ? ['#e05050', '#50c050', '#5080f0', '#c0c0c0'] : ['#d0d0d0'];
   g.globalCompositeOperation = 'lighter';
   chs.forEach((ch, j) => {
-    const counts = histogram(img, ch, lo, hi, W).slice(); // the cached counts stay whole
+    const counts = histogram(img, ch, lo, hi, W, rect).slice(); // the cached counts stay whole
     if (skipZero && lo <= 0 && hi >= 0) {
       counts[Math.min(W - 1, Math.floor(-lo * W / (hi - lo || 1)))] = 0;
     }
@@ -90,3 +105,7 @@ export function drawHistogram(canvas, img, chs, lo, hi, skipZero) {
   });
   g.globalCompositeOperation = 'source-over';
 }
+
+// A value of a scale or a statistic, short.
+export const fmtValue = (v) => (v === 0 ? '0' : Math.abs(v) >= 1e4 || Math.abs(v) < 1e-3
+  ? v.toExponential(2) : String(parseFloat(v.toPrecision(4))));

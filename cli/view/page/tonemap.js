@@ -2,11 +2,14 @@
 // once as a float texture, and a fragment shader applies exposure, the CLI's tone curves and
 // sRGB encoding (core/io/tonemap.h: the same formulas, constants and rounding, so the canvas
 // shows the bytes `ssgraph run --show ... --tonemap C --exposure E` writes to its PNGs), or
-// viridis false colour, and the A/B split or difference. A change of exposure or of the
-// divider is one draw of one triangle (of the curve, channel or colour map, the first time
+// viridis false colour, the A/B split or a difference (|A - B|, A - B in a diverging map,
+// the relative error, the server's FLIP map), through the image's zoom and pan
+// (viewport.js). A change of exposure, of the divider or of the zoom is one draw of one
+// triangle (of the curve, channel or colour map, the first time
 // also a program compiled); no pixel loop runs in JavaScript. A browser without WebGL2 gets
 // a named error, not a second, slower path.
-import { VIRIDIS_RGBA } from './image.js';
+import { DIVERGING_RGBA, VIRIDIS_RGBA } from './image.js';
+import { GRID_ZOOM } from './viewport.js';
 
 const VERTEX = `#version 300 es
 void main() { // one triangle that covers the canvas
@@ -24,7 +27,9 @@ precision highp float;
 precision highp int;
 uniform highp sampler2D imageA, imageB; // the float images, channels in .rgba
 uniform highp sampler2D viridis;        // 256x1, entry floor(255 v) for v in [0, 1]
+uniform highp sampler2D diverging;      // 256x1, entry 128 + 127 v for v in [-1, 1]
 uniform ivec2 frame;                    // the canvas in pixels (the full frame size)
+uniform vec3 view;                      // the frame point at the canvas's centre, zoom
 uniform int splitX;                     // AB_SPLIT: B from this column on
 uniform float gain;                     // 2^stops
 uniform vec2 range;                     // false colour shows (v - range.x) range.y
@@ -58,11 +63,28 @@ vec3 falseColour(float v) {
   return texelFetch(viridis, ivec2(k, 0), 0).rgb;
 }
 
-// The texel under frame pixel p of an image of any size (a preview fills the frame).
-vec4 texel(highp sampler2D t, ivec2 p) {
+// A signed value through the diverging map, range [-m, m] (range.y = 1 / 2m) at the
+// exposure: -m blue, 0 grey, +m red.
+vec3 diverge(float v) {
+  v = 2.0 * v * range.y * gain;
+  int k = v != v ? 128 : int(clamp(floor(128.0 + v * 127.0 + 0.5), 0.0, 255.0));
+  return texelFetch(diverging, ivec2(k, 0), 0).rgb;
+}
+
+// The texel at frame point q (frame pixels) of an image of any size (a preview fills the
+// frame): the nearest, so a zoomed pixel is a square.
+vec4 texel(highp sampler2D t, vec2 q) {
   ivec2 size = textureSize(t, 0);
-  ivec2 q = ivec2((vec2(p) + 0.5) * vec2(size) / vec2(frame));
-  return texelFetch(t, min(q, size - 1), 0);
+  ivec2 i = ivec2(q * vec2(size) / vec2(frame));
+  return texelFetch(t, min(i, size - 1), 0);
+}
+
+// The pixel grid once a frame pixel is GRID_ZOOM canvas pixels wide: each pixel's top and
+// left canvas row and column, darkened.
+vec3 grid(vec3 c, vec2 q) {
+  if (view.z < float(GRID_ZOOM)) return c;
+  vec2 f = fract(q);
+  return f.x * view.z < 1.0 || f.y * view.z < 1.0 ? mix(c, vec3(0.3), 0.5) : c;
 }
 `;
 
@@ -76,25 +98,42 @@ const SHADE = [
 ];
 const shadeFunction = (name, side) =>
   `vec3 ${name}(vec4 px) { return ${SHADE[side.show](side.channel)}; }\n`;
+// The one value of a side that a signed difference shows: its channel, or the mean of the
+// colour channels.
+const pickFunction = (side) => `float pickA(vec4 px) { return ${side.show === SHOW.colour
+  ? '(px.r + px.g + px.b) / 3.0' : `px.${'rgba'[side.channel]}`}; }\n`;
 
-// The frame from the image(s), by A/B view: A alone, split at splitX, |A - B|.
-const AB = { none: 0, split: 1, diff: 2 };
+// The frame from the image(s), by A/B view: A alone, split at splitX (a canvas column),
+// |A - B|, A - B, |A - B| / (|B| + 0.01), or the FLIP map (the server's, as image A).
+export const RELATIVE_EPS = 0.01;
+const AB = { none: 0, split: 1, diff: 2, signed: 3, relative: 4, flip: 5 };
+const A = 'texel(imageA, q)', B = 'texel(imageB, q)';
 const MAIN = [
-  'shadeA(texel(imageA, p))',
-  'p.x < splitX ? shadeA(texel(imageA, p)) : shadeB(texel(imageB, p))',
-  'shadeA(abs(texel(imageA, p) - texel(imageB, p)))',
+  `shadeA(${A})`,
+  `p.x < splitX ? shadeA(${A}) : shadeB(${B})`,
+  `shadeA(abs(${A} - ${B}))`,
+  `diverge(pickA(${A} - ${B}))`,
+  `shadeA(abs(${A} - ${B}) / (abs(${B}) + ${RELATIVE_EPS.toFixed(2)}))`,
+  `falseColour(${A}.r)`,
 ];
+// Where the frame is not (zoomed out or panned past its edge): the page's grey.
+const BACKGROUND = 'vec3(0.13)';
 
 // The shader of one combination {curve, ab, a, b: {show, channel}}, and the uniforms it uses.
 function fragment(v) {
-  const text = HEAD.replace('\n', `\n#define CURVE ${v.curve}\n`) +
-    shadeFunction('shadeA', v.a) + shadeFunction('shadeB', v.b) +
+  const text = HEAD.replace('\n', `\n#define CURVE ${v.curve}\n#define GRID_ZOOM ${GRID_ZOOM}\n`) +
+    shadeFunction('shadeA', v.a) + shadeFunction('shadeB', v.b) + pickFunction(v.a) +
     'void main() {\n  ivec2 p = ivec2(int(gl_FragCoord.x), frame.y - 1 - int(gl_FragCoord.y));\n' +
-    `  colour = vec4(${MAIN[v.ab]}, 1.0);\n}\n`;
-  const uniforms = ['imageA', 'frame', 'gain'];
-  if (v.ab !== AB.none) uniforms.push('imageB');
+    '  vec2 q = view.xy + (vec2(p) + 0.5 - 0.5 * vec2(frame)) / view.z;\n' +
+    '  if (q.x < 0.0 || q.y < 0.0 || q.x >= float(frame.x) || q.y >= float(frame.y)) {\n' +
+    `    colour = vec4(${BACKGROUND}, 1.0);\n    return;\n  }\n` +
+    `  colour = vec4(grid(${MAIN[v.ab]}, q), 1.0);\n}\n`;
+  const uniforms = ['imageA', 'frame', 'gain', 'view'];
+  if (v.ab !== AB.none && v.ab !== AB.flip) uniforms.push('imageB');
   if (v.ab === AB.split) uniforms.push('splitX');
-  if (v.a.show === SHOW.falseColour || (v.ab === AB.split && v.b.show === SHOW.falseColour)) {
+  if (v.ab === AB.signed) uniforms.push('diverging', 'range');
+  else if (v.ab === AB.flip || v.a.show === SHOW.falseColour ||
+           (v.ab === AB.split && v.b.show === SHOW.falseColour)) {
     uniforms.push('viridis', 'range');
   }
   return { text, uniforms };
@@ -105,6 +144,8 @@ const SETTERS = {
   imageA: (gl, loc) => gl.uniform1i(loc, 0),
   imageB: (gl, loc) => gl.uniform1i(loc, 1),
   viridis: (gl, loc) => gl.uniform1i(loc, 2),
+  diverging: (gl, loc) => gl.uniform1i(loc, 3),
+  view: (gl, loc, f) => gl.uniform3f(loc, f.u * f.W, f.v * f.H, f.zoom),
   frame: (gl, loc, f) => gl.uniform2i(loc, f.W, f.H),
   gain: (gl, loc, f) => gl.uniform1f(loc, 2 ** f.display.stops),
   splitX: (gl, loc, f) => gl.uniform1i(loc, f.splitX),
@@ -190,10 +231,11 @@ export class ImageView {
     this.programs = new Map(); // fragment(v) key -> {prog, loc}
     this.maxSize = gl.getParameter(gl.MAX_TEXTURE_SIZE);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-    this.textures = [0, 1, 2].map(() => gl.createTexture());
+    this.textures = [0, 1, 2, 3].map(() => gl.createTexture());
     this.zero = { w: 1, h: 1, c: 1, data: new Float32Array(1) };
     this.shown = [null, null]; // the image each of units 0 and 1 holds
     this.bind(2, gl.RGBA8, 256, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(VIRIDIS_RGBA));
+    this.bind(3, gl.RGBA8, 256, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(DIVERGING_RGBA));
   }
 
   // The program of a combination (fragment()), linked when first asked for.
@@ -231,7 +273,8 @@ export class ImageView {
     this.shown[u] = img;
   }
 
-  // One frame: {W, H, a, b: images or null, ab: 'none'|'split'|'diff', splitX, display}.
+  // One frame: {W, H, a, b: images or null, ab: 'none', 'split' or a difference (AB),
+  // splitX, display, rangeLo, rangeScale, zoom, u, v}.
   draw(f) {
     const gl = this.gl, d = f.display;
     this.upload(0, f.a || this.zero);
@@ -240,7 +283,7 @@ export class ImageView {
       a: sideOf(f.a, d), b: sideOf(f.b, d) });
     gl.viewport(0, 0, f.W, f.H);
     gl.useProgram(prog);
-    for (let u = 0; u < 3; u++) {
+    for (let u = 0; u < 4; u++) {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, this.textures[u]);
     }
