@@ -214,6 +214,24 @@ static void save(struct view_session *s, const struct view_request *req,
     json_field(a, MHD_HTTP_OK, "path", path);
 }
 
+/* POST /api/save_path: name=NAME&keys=... (campath.c). The keys are the body's last field
+   (their text may be long: up to the 64 KiB body). */
+static void save_path(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a)
+{
+    char name[128] = "", path[1024];
+    const char *keys = strstr(req->body, "&keys=");
+    struct ssg_diags d = {0};
+    form_value(req->body, "name", name, sizeof name);
+    enum ssg_err e = keys ? view_session_save_path(s, name, keys + 6, path, sizeof path, &d)
+                          : view_fail(&d, SSG_E_USAGE, "expected name=NAME&keys=...");
+    if (e) {
+        diags_error(a, e == SSG_E_IO ? MHD_HTTP_CONFLICT : MHD_HTTP_BAD_REQUEST, &d, e);
+        return;
+    }
+    json_field(a, MHD_HTTP_OK, "path", path);
+}
+
 static void set(struct view_session *s, const struct view_request *req, struct view_answer *a)
 {
     struct ssg_diags d = {0};
@@ -244,6 +262,7 @@ static const struct route {
     {"/api/state", 0, state},     {"/api/image", 0, image},     {"/api/metrics", 0, metrics},
     {"/api/graph.svg", 0, graph_svg}, {"/api/set", 1, set},
     {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
+    {"/api/save_path", 1, save_path},
 };
 
 void view_route(struct view_session *s, const struct view_request *req, struct view_answer *a)
