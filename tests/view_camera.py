@@ -6,7 +6,8 @@ panel (the server's camera follows) and a bad one (refused in the page, the serv
 unchanged), holds W (the eye and the target move along the view direction), changes do.radius
 twice (a typed value, then a slider drag: one step each) and checks the server's values after
 undo, undo and redo, and records 3 keys and saves them as OUTDIR/../graph/flight.scene (the
-shell test runs it); saving again under that name is refused in the page. Prints
+shell test runs it); saving again under that name is refused in the page; flying with
+*record while flying* ticked adds keys a period apart. Prints
 `saved: PATH` and exits 1 with FAIL lines on failures."""
 import math
 import sys
@@ -192,6 +193,23 @@ def step_path(drv):
              (d.find_element(By.ID, "path-result").get_attribute("class") or ""))
 
 
+def step_auto(drv):
+    """Record while flying: holding W with a 0.1 s period adds keys 0.1 s apart."""
+    idle(drv)
+    drv.find_element(By.ID, "path-clear").click()
+    type_into(drv, "path-period", "0.1")
+    drv.find_element(By.ID, "path-auto").click()
+    blur(drv)
+    ActionChains(drv).key_down("w").pause(0.8).key_up("w").perform()
+    drv.find_element(By.ID, "path-auto").click()
+    times = [float(t.get_attribute("value")) for t in
+             drv.find_elements(By.CSS_SELECTOR, "#path-keys input.key-time")]
+    print(f"record while flying: keys at {times}", flush=True)
+    if len(times) < 2 or any(abs(b - a - 0.1) > 1e-6 for a, b in zip(times, times[1:])) \
+            or times[0] != 0:
+        fail(f"0.8 s of flying with a key every 0.1 s recorded keys at {times}")
+
+
 def main():
     """Chromium and its driver, then each step until the first that fails (a screenshot of
     the page then), then the console's errors; 0, or 1 with FAIL lines."""
@@ -199,7 +217,8 @@ def main():
     try:
         chromium, port = start_chromium()
         drv = browser(port)
-        steps = [step_load, step_numeric, step_refused, step_fly, step_undo, step_path]
+        steps = [step_load, step_numeric, step_refused, step_fly, step_undo, step_path,
+                 step_auto]
         while steps and not failures:
             began, step = time.time(), steps.pop(0)
             step(drv)

@@ -14,7 +14,7 @@ const LIMIT = 200;
 const steps = []; // {node, param, from, to}
 let at = 0;       // steps[0 .. at) are done; steps[at ..) undone
 const starts = new Map(); // "node.param" -> the server's value when the control was reached for
-let pending = null;       // {node, param, value}: an undo or redo on its way
+let pending = null;       // {node, param, value, dir}: an undo (dir -1) or redo (+1) on its way
 // send(node, param, value): a parameter change; pick(node): show the node's panel;
 // refresh(): the panel's controls from the server's values, the focused one too
 const on = {};
@@ -59,8 +59,15 @@ function commit(ev) {
   showButtons();
 }
 
-// A set the server refused is no step: the newest step of that value goes (app.js).
+// A set the server refused (app.js): an undo or redo of it did not happen (the history
+// stays where it was, the step kept); a change is no step (the newest of that value goes).
 export function refusedSet(node, param, value) {
+  if (pending && pending.node === node && pending.param === param && same(pending.value, value)) {
+    at -= pending.dir;
+    pending = null;
+    showButtons();
+    return;
+  }
   for (let i = at - 1; i >= 0; i--) {
     const s = steps[i];
     if (s.node === node && s.param === param && same(s.to, value)) {
@@ -72,19 +79,19 @@ export function refusedSet(node, param, value) {
   showButtons();
 }
 
-function go(step, value) {
+function go(step, value, dir) {
   on.pick(step.node);
-  pending = { node: step.node, param: step.param, value };
+  pending = { node: step.node, param: step.param, value, dir };
   on.send(step.node, step.param, value);
   showButtons();
 }
 
 export function undo() {
-  if (at > 0) { at--; go(steps[at], steps[at].from); }
+  if (at > 0) { at--; go(steps[at], steps[at].from, -1); }
 }
 
 export function redo() {
-  if (at < steps.length) { at++; go(steps[at - 1], steps[at - 1].to); }
+  if (at < steps.length) { at++; go(steps[at - 1], steps[at - 1].to, 1); }
 }
 
 function label(s, v0, v1) { return `${s.node}.${s.param}: ${v0} \u2192 ${v1}`; }
