@@ -8,7 +8,8 @@
 #   is the pixels of the scene rewritten by hand with the first key as its camera line;
 # - POST /api/save_path refuses a bad name (400), bad keys (400), a name that exists in any
 #   form (409: a file, a FIFO, never opened);
-# - a scene's include: a cycle and a bad include are errors at file:line:col.
+# - a scene's include: a cycle and a bad include are errors at file:line:col; an included
+#   mesh loads from its own folder and `check` names its own file's line.
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_camera"
 source "$(dirname "$0")/view_lib.sh"
@@ -91,4 +92,10 @@ printf 'include 3\n' > "$TMP/graph/bad.scene"
 "$BIN" check "$TMP/graph/bad.scene" > "$TMP/bad.log" 2>&1 && fail "include 3 loaded"
 grep -q 'bad.scene:1:1: error.*include takes one file name' "$TMP/bad.log" ||
     fail "include 3's error: $(cat "$TMP/bad.log")"
+# an included scene's mesh: found in its own folder, reported at its own file's line
+printf 'include "%s/examples/bunny.scene"\n' "$ROOT" > "$TMP/graph/bunny_again.scene"
+"$BIN" check "$TMP/graph/bunny_again.scene" > "$TMP/bunny.log" 2>&1 || fail "bunny_again.scene: $(cat "$TMP/bunny.log")"
+grep -q "^    $ROOT/examples/bunny.scene:[0-9]*:[0-9]*: mesh \"bunny.gltf\"" "$TMP/bunny.log" &&
+    grep -q '^      up: +Y' "$TMP/bunny.log" ||
+    fail "the included mesh's line or up axis: $(cat "$TMP/bunny.log")"
 finish test_view_camera

@@ -120,13 +120,12 @@ static const char *print_up(FILE *out, const char *indent, const struct ssg_mode
 static void print_model_line(FILE *out, const struct ssg_scene *s,
                              const struct ssg_scene_model *m)
 {
-    char path[1024], why[1024];
+    char why[1024];
     float lo[3], hi[3];
     struct ssg_model_up up;
     print_meshes(out, "      ", &s->meshes[m->first_mesh], m->mesh_count, NULL);
     meshes_bounds(&s->meshes[m->first_mesh], m->mesh_count, lo, hi);
-    ssg_path_resolve(s->path, m->file, path, sizeof path);
-    if (ssg_model_load_up(path, NULL, &up, why, sizeof why) == SSG_OK && lo[0] <= hi[0])
+    if (ssg_model_load_up(m->path, NULL, &up, why, sizeof why) == SSG_OK && lo[0] <= hi[0])
         print_up(out, "      ", &up, lo, hi, 1);
 }
 
@@ -149,7 +148,7 @@ static void print_triangles(FILE *out, const struct ssg_scene *s)
     fprintf(out, "  triangles: %lld\n", total);
     for (int i = 0; i < s->model_count; i++) {
         const struct ssg_scene_model *m = &s->models[i];
-        fprintf(out, "    %s:%d:%d: mesh \"%s\": %lld triangles in %d mesh%s\n", s->path,
+        fprintf(out, "    %s:%d:%d: mesh \"%s\": %lld triangles in %d mesh%s\n", m->scene_file,
                 m->line, m->column, m->file, m->triangles, m->mesh_count,
                 m->mesh_count == 1 ? "" : "es");
         print_model_line(out, s, m);
