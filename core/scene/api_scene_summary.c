@@ -206,7 +206,8 @@ static void print_scale_hint(FILE *out, const struct ssg_scene *s)
             (double)diagonal, (double)(diagonal / DEFAULT_AO_RADIUS),
             (double)DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
     for (int i = 0; i < s->model_count; i++)
-        fprintf(out, "%s%s:%d", i ? ", " : " (", s->path, s->models[i].line);
+        fprintf(out, "%s%s:%d", i ? ", " : " (", s->models[i].scene_file,
+                s->models[i].line);
     fprintf(out, "), or set the AO radius to match\n");
 }
 
