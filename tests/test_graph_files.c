@@ -3,7 +3,8 @@
  * the scene and lights files, the models, textures and environment image they name
  * (positional or named, resolved against the file naming them), each once; a graph parsed
  * with errors lists what was read so far, a missing include among it; a loaded graph with
- * its --scene override lists that scene's model. */
+ * its --scene override lists that scene's model; a scene's include lists the included
+ * scene and what it names. */
 #include <stdio.h>
 #include <string.h>
 
@@ -104,6 +105,16 @@ static void scenes(void)
     CHECK_EQ(ssg_scene_files(NULL, "", files, MAX), 0);
     CHECK_EQ(ssg_scene_files(tmp_path("no.scene"), NULL, files, MAX), 1);
     CHECK_EQ(ssg_graph_files(NULL, files, MAX), 0);
+    /* a scene that includes another (the viewer's saved camera path): that file and what
+       it names, resolved in its folder; a cycle ends */
+    write_file("path.scene", "include \"sub/s.scene\"\ninclude \"path.scene\"\n"
+                             "camera_key(time=0, position=[0, 0, 1], target=[0, 0, 0])\n");
+    CHECK_EQ(ssg_scene_files(tmp_path("path.scene"), NULL, files, MAX), 6);
+    CHECK(is(0, "path.scene", SSG_GRAPH_FILE_SCENE));
+    CHECK(is(1, "sub/s.scene", SSG_GRAPH_FILE_SCENE));
+    CHECK(is(2, "sub/tex/t.png", SSG_GRAPH_FILE_TEXTURE));
+    CHECK(is(4, "sub/probe.hdr", SSG_GRAPH_FILE_ENVIRONMENT));
+    CHECK(is(5, "sub/tex/u.png", SSG_GRAPH_FILE_TEXTURE));
 }
 
 /* A loaded graph with the scene overridden: the override and its model. */

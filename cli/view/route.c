@@ -248,6 +248,24 @@ static void reference(struct view_session *s, const struct view_request *req,
         state_answer(s, a);
 }
 
+/* POST /api/save_path: name=NAME&keys=... (campath.c). The keys are the body's last field
+   (their text may be long: up to the 64 KiB body). */
+static void save_path(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a)
+{
+    char name[128] = "", path[1024];
+    const char *keys = strstr(req->body, "&keys=");
+    struct ssg_diags d = {0};
+    form_value(req->body, "name", name, sizeof name);
+    enum ssg_err e = keys ? view_session_save_path(s, name, keys + 6, path, sizeof path, &d)
+                          : view_fail(&d, SSG_E_USAGE, "expected name=NAME&keys=...");
+    if (e) {
+        diags_error(a, e == SSG_E_IO ? MHD_HTTP_CONFLICT : MHD_HTTP_BAD_REQUEST, &d, e);
+        return;
+    }
+    json_field(a, MHD_HTTP_OK, "path", path);
+}
+
 static void set(struct view_session *s, const struct view_request *req, struct view_answer *a)
 {
     struct ssg_diags d = {0};
@@ -279,6 +297,7 @@ static const struct route {
     {"/api/graph.svg", 0, graph_svg}, {"/api/set", 1, set},
     {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
     {"/api/flip", 0, flip},       {"/api/reference", 1, reference},
+    {"/api/save_path", 1, save_path},
 };
 
 void view_route(struct view_session *s, const struct view_request *req, struct view_answer *a)

@@ -80,6 +80,33 @@ int view_session_poll(struct view_session *s);
 enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
                                size_t len, struct ssg_diags *diags);
 
+/* Writes NAME.scene beside the graph file (campath.c): `include "<the graph's scene>"` and
+ * one camera_key line per key of `keys` ("t,px,py,pz,tx,ty,tz,ux,uy,uz,fov" per key, keys
+ * apart by ';', 2 to VIEW_MAX_KEYS of them), whose path replaces the included scene's. The
+ * same safety as view_session_save; SSG_E_USAGE for a bad name or key, or no scene. */
+enum { VIEW_MAX_KEYS = 1024 };
+enum ssg_err view_session_save_path(const struct view_session *s, const char *name,
+                                    const char *keys, char *path, size_t len,
+                                    struct ssg_diags *diags);
+
+/* What variant.c shares with campath.c. 1 when name is 1 to 64 of [A-Za-z0-9_-]. */
+int view_valid_name(const char *name);
+/* NAME + ext beside the graph file into path, when the name is good and nothing is there
+ * in any form (lstat); else SSG_E_USAGE (the name) or SSG_E_IO (it exists). */
+enum ssg_err view_new_path(const struct view_session *s, const char *name, const char *ext,
+                          char *path, size_t len, struct ssg_diags *d);
+/* 1 when view_quote can write s: its only control characters are a newline and a tab. */
+int view_quotable(const char *s);
+/* s as a string literal of the graph and scene lexer, with its escapes. */
+void view_quote(FILE *f, const char *s);
+/* A path the server was given, made absolute against its working folder (malloc'd; NULL
+ * when the folder cannot be read). */
+char *view_absolute(const char *path);
+/* text as a new file at path: a temporary file of our own (O_EXCL), linked to the name,
+ * never replacing nor opening what is there (SSG_E_IO, "exists already"). */
+enum ssg_err view_write_new(const char *path, const char *text, size_t len,
+                            struct ssg_diags *d);
+
 /* Adds an error without a file position (file "<view>") to d; returns code. */
 enum ssg_err view_fail(struct ssg_diags *d, enum ssg_err code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

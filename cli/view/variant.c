@@ -29,7 +29,7 @@
 enum { NAME_MAX_CHARS = 64, TMP_TRIES = 100 };
 
 /* 1 when name is 1 to 64 of [A-Za-z0-9_-], every character looked at. */
-static int valid_name(const char *name)
+int view_valid_name(const char *name)
 {
     size_t len = strlen(name);
     if (len == 0 || len > NAME_MAX_CHARS)
@@ -53,7 +53,7 @@ static const char *first_control(const char *s)
 }
 
 /* 1 when quote() can write s: its only control characters are a newline and a tab. */
-static int quotable(const char *s)
+int view_quotable(const char *s)
 {
     for (; *s; s++)
         if (control(*s) && *s != '\n' && *s != '\t')
@@ -62,7 +62,7 @@ static int quotable(const char *s)
 }
 
 /* s as a graph string literal, with the lexer's escapes. */
-static void quote(FILE *f, const char *s)
+void view_quote(FILE *f, const char *s)
 {
     fputc('"', f);
     for (; *s; s++) {
@@ -80,7 +80,7 @@ static void quote(FILE *f, const char *s)
 
 /* A file the server was given (relative to its working folder) as a path the variant can
  * name wherever it lies: absolute. NULL when the working folder cannot be read. */
-static char *absolute(const char *path)
+char *view_absolute(const char *path)
 {
     if (path[0] == '/')
         return strdup(path);
@@ -94,13 +94,13 @@ static char *absolute(const char *path)
 /* A statement `word "path"` for a file given on the command line. */
 static enum ssg_err path_line(FILE *f, const char *word, const char *path, struct ssg_diags *d)
 {
-    char *abs = absolute(path);
+    char *abs = view_absolute(path);
     if (!abs)
         return view_fail(d, SSG_E_IO, "cannot read the working folder to name %s", path);
     enum ssg_err e = SSG_OK;
-    if (quotable(abs)) {
+    if (view_quotable(abs)) {
         fprintf(f, "%s ", word);
-        quote(f, abs);
+        view_quote(f, abs);
         fputc('\n', f);
     } else {
         e = view_fail(d, SSG_E_USAGE, "the %s file's name holds a control character a graph "
@@ -176,7 +176,7 @@ static void camera_comment(FILE *f, const struct view_session *s)
 static enum ssg_err compose(const struct view_session *s, const char *include, char **text,
                             size_t *len, struct ssg_diags *d)
 {
-    if (!quotable(include))
+    if (!view_quotable(include))
         return view_fail(d, SSG_E_USAGE, "the graph's file name holds a control character a "
                          "graph file cannot quote: no variant can include it");
     FILE *f = open_memstream(text, len);
@@ -185,7 +185,7 @@ static enum ssg_err compose(const struct view_session *s, const char *include, c
     fputs("# A variant saved by `ssgraph view`: the graph, the server's --scene, --size and\n"
           "# --seed, then the parameters changed on the command line and in the page.\n"
           "include ", f);
-    quote(f, include);
+    view_quote(f, include);
     fputc('\n', f);
     enum ssg_err e = command_line(f, &s->args->ov, d);
     if (!e)
@@ -242,8 +242,8 @@ static int name_new(const char *tmp, const char *path)
 }
 
 /* Writes text as a new file path, never replacing nor opening what is there. */
-static enum ssg_err write_new(const char *path, const char *text, size_t len,
-                              struct ssg_diags *d)
+enum ssg_err view_write_new(const char *path, const char *text, size_t len,
+                            struct ssg_diags *d)
 {
     char tmp[1100];
     int fd = create_temporary(path, tmp, sizeof tmp);
@@ -264,26 +264,36 @@ static enum ssg_err write_new(const char *path, const char *text, size_t len,
     return view_fail(d, SSG_E_IO, "cannot write %s: %s", path, strerror(err));
 }
 
-enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
-                               size_t len, struct ssg_diags *d)
+enum ssg_err view_new_path(const struct view_session *s, const char *name, const char *ext,
+                          char *path, size_t len, struct ssg_diags *d)
 {
-    if (!valid_name(name))
-        return view_fail(d, SSG_E_USAGE, "a variant's name is 1 to 64 letters, digits, '_' "
+    if (!view_valid_name(name))
+        return view_fail(d, SSG_E_USAGE, "a name to save as is 1 to 64 letters, digits, '_' "
                          "or '-', got '%.80s'", name);
     const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
     int dir = slash ? (int)(slash - graph + 1) : 0;
-    if ((size_t)snprintf(path, len, "%.*s%s.graph", dir, graph, name) >= len)
-        return view_fail(d, SSG_E_USAGE, "the variant's path is too long");
+    if ((size_t)snprintf(path, len, "%.*s%s%s", dir, graph, name, ext) >= len)
+        return view_fail(d, SSG_E_USAGE, "the path to save as is too long");
     struct stat st;
     if (!lstat(path, &st)) /* a FIFO, a link, a directory, an unreadable file: all exist */
         return view_fail(d, SSG_E_IO, "%s exists already: choose another name", path);
     if (errno != ENOENT)
         return view_fail(d, SSG_E_IO, "cannot save as %s: %s", path, strerror(errno));
+    return SSG_OK;
+}
+
+enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
+                               size_t len, struct ssg_diags *d)
+{
+    enum ssg_err e = view_new_path(s, name, ".graph", path, len, d);
+    if (e)
+        return e;
+    const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
     char *text = NULL;
     size_t text_len = 0;
-    enum ssg_err e = compose(s, graph + dir, &text, &text_len, d);
+    e = compose(s, slash ? slash + 1 : graph, &text, &text_len, d);
     if (!e)
-        e = write_new(path, text, text_len, d);
+        e = view_write_new(path, text, text_len, d);
     free(text);
     return e;
 }

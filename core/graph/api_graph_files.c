@@ -109,9 +109,23 @@ static void call_files(struct lister *l, const struct ssg_stmt *st, int skip_lig
     }
 }
 
+static void scene_assets(struct lister *l, const char *path, int skip_lights, int depth);
+
+/* A scene file another includes (scene_include.c), and what it names in turn. */
+static void included_scene(struct lister *l, const struct ssg_value *v, int skip_lights,
+                           int depth)
+{
+    if (v->kind != SSG_V_STRING)
+        return;
+    char path[SSG_GRAPH_FILE_PATH_MAX + 1];
+    ssg_path_resolve(v->loc.src ? v->loc.src->path : NULL, v->text, path, sizeof path);
+    add(l, path, SSG_GRAPH_FILE_SCENE);
+    scene_assets(l, path, skip_lights, depth);
+}
+
 /* The files a scene (or lights) file names, from the statements that parse; `set
    name.file = "..."` lines count as well (a superset of what loads is harmless here). */
-static void scene_assets(struct lister *l, const char *path, int skip_lights)
+static void scene_assets(struct lister *l, const char *path, int skip_lights, int depth)
 {
     struct ssg_arena arena = {0};
     struct ssg_diags *diags = calloc(1, sizeof *diags); /* its errors are the load's to tell */
@@ -124,6 +138,9 @@ static void scene_assets(struct lister *l, const char *path, int skip_lights)
             call_files(l, st, skip_lights);
         else if (st->kind == SSG_S_SET && st->arg_count == 1)
             add_value(l, file_kind(st->callee, st->callee_len), &st->args[0].value);
+        else if (st->kind == SSG_S_DIRECTIVE && ssg_tok_eq(st->name, st->name_len, "include") &&
+                 st->arg_count == 1 && depth < SSG_SCENE_MAX_INCLUDE)
+            included_scene(l, &st->args[0].value, skip_lights, depth + 1);
     }
     free(diags);
     ssg_arena_free(&arena);
@@ -136,9 +153,9 @@ static void scene_files(struct lister *l, const char *scene, const char *lights)
     if (has_lights)
         add(l, lights, SSG_GRAPH_FILE_LIGHTS);
     if (scene && scene[0])
-        scene_assets(l, scene, has_lights);
+        scene_assets(l, scene, has_lights, 0);
     if (has_lights)
-        scene_assets(l, lights, 0);
+        scene_assets(l, lights, 0, 0);
 }
 
 /* Copies at most max into files and frees the list; the count found. */

@@ -127,13 +127,12 @@ static const char *print_up(FILE *out, const char *indent, const struct ssg_mode
 static void print_model_line(FILE *out, const struct ssg_scene *s,
                              const struct ssg_scene_model *m)
 {
-    char path[1024], why[1024];
+    char why[1024];
     float lo[3], hi[3];
     struct ssg_model_up up;
     print_meshes(out, "      ", &s->meshes[m->first_mesh], m->mesh_count, NULL);
     meshes_bounds(&s->meshes[m->first_mesh], m->mesh_count, lo, hi);
-    ssg_path_resolve(s->path, m->file, path, sizeof path);
-    if (ssg_model_load_up(path, NULL, &up, why, sizeof why) == SSG_OK && lo[0] <= hi[0])
+    if (ssg_model_load_up(m->path, NULL, &up, why, sizeof why) == SSG_OK && lo[0] <= hi[0])
         print_up(out, "      ", &up, lo, hi, 1);
 }
 
@@ -156,7 +155,7 @@ static void print_triangles(FILE *out, const struct ssg_scene *s)
     fprintf(out, "  triangles: %lld\n", total);
     for (int i = 0; i < s->model_count; i++) {
         const struct ssg_scene_model *m = &s->models[i];
-        fprintf(out, "    %s:%d:%d: mesh \"%s\": %lld triangles in %d mesh%s\n", s->path,
+        fprintf(out, "    %s:%d:%d: mesh \"%s\": %lld triangles in %d mesh%s\n", m->scene_file,
                 m->line, m->column, m->file, m->triangles, m->mesh_count,
                 m->mesh_count == 1 ? "" : "es");
         print_model_line(out, s, m);
@@ -214,7 +213,8 @@ static void print_scale_hint(FILE *out, const struct ssg_scene *s)
             (double)diagonal, (double)(diagonal / DEFAULT_AO_RADIUS),
             (double)DEFAULT_AO_RADIUS, unit_guess(scale), (double)scale);
     for (int i = 0; i < s->model_count; i++)
-        fprintf(out, "%s%s:%d", i ? ", " : " (", s->path, s->models[i].line);
+        fprintf(out, "%s%s:%d", i ? ", " : " (", s->models[i].scene_file,
+                s->models[i].line);
     fprintf(out, "), or set the AO radius to match\n");
 }
 

@@ -108,6 +108,22 @@ static int find_entity(const struct scene_loader *l, const char *name, size_t le
     return -1;
 }
 
+/* Room for twice as many entities (the arena keeps the old array: a scene has few). */
+static int grow_entities(struct scene_loader *l)
+{
+    int cap = l->ent_cap ? 2 * l->ent_cap : 64;
+    struct scene_entity *grown = ssg_arena_alloc(&l->arena, sizeof *grown * (size_t)cap);
+    if (!grown) {
+        ssg_scene_fail(l, SSG_E_NOMEM);
+        return 0;
+    }
+    if (l->count)
+        memcpy(grown, l->ents, sizeof *grown * (size_t)l->count);
+    l->ents = grown;
+    l->ent_cap = cap;
+    return 1;
+}
+
 static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
 {
     int kind = 0;
@@ -127,7 +143,10 @@ static void add_entity(struct scene_loader *l, const struct ssg_stmt *st)
         ssg_scene_fail(l, SSG_E_DUPLICATE);
         return;
     }
+    if (l->count == l->ent_cap && !grow_entities(l))
+        return;
     struct scene_entity *e = &l->ents[l->count];
+    e->depth = l->depth;
     e->args = ssg_arena_alloc(&l->arena, ssg_scene_kinds[kind].size);
     if (!e->args) {
         ssg_scene_fail(l, SSG_E_NOMEM);
@@ -154,6 +173,19 @@ static void apply_set(struct scene_loader *l, const struct ssg_stmt *st)
     bind_named(l, &l->ents[i], &st->args[0]);
 }
 
+static void read_file_entities(struct scene_loader *l, const char *path, int lights_only);
+
+/* `include "other.scene"`: its entities join the scene as if written here. */
+static void include_file(struct scene_loader *l, const struct ssg_stmt *st)
+{
+    char path[1024];
+    if (!ssg_scene_include_path(l, st, path, sizeof path))
+        return;
+    l->depth++;
+    read_file_entities(l, path, 0);
+    l->depth--;
+}
+
 static void read_statements(struct scene_loader *l, const struct ssg_file *file)
 {
     for (int i = 0; i < file->count; i++) {
@@ -162,11 +194,13 @@ static void read_statements(struct scene_loader *l, const struct ssg_file *file)
             add_entity(l, st);
         } else if (st->kind == SSG_S_SET && !st->adds) {
             apply_set(l, st);
+        } else if (st->kind == SSG_S_DIRECTIVE && ssg_tok_eq(st->name, st->name_len, "include")) {
+            include_file(l, st);
         } else {
             char names[256];
             kind_names(names, sizeof names);
             ssg_diag_at(l->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' in a "
-                        "scene (expected an entity call: %s; or set name.arg = value)",
+                        "scene (expected an entity call: %s; set name.arg = value; or include \"file\")",
                         (int)st->name_len, st->name, names);
             ssg_scene_fail(l, SSG_E_SYNTAX);
         }
@@ -370,17 +404,9 @@ static void read_file_entities(struct scene_loader *l, const char *path, int lig
         ssg_scene_fail(l, e);
     if (!file.src)
         return;
-    struct scene_entity *ents =
-        ssg_arena_alloc(&l->arena, sizeof *ents * (size_t)(l->count + file.count + 1));
-    if (!ents) {
-        ssg_scene_fail(l, SSG_E_NOMEM);
-        return;
-    }
-    if (l->count)
-        memcpy(ents, l->ents, sizeof *ents * (size_t)l->count);
-    l->ents = ents;
     int first = l->count;
     read_statements(l, &file);
+    ssg_scene_replace_included(l, first);
     for (int i = first; lights_only && i < l->count; i++) {
         if (is_light_kind(l->ents[i].kind))
             continue;

@@ -152,7 +152,10 @@ struct ssg_environment {
 /* One mesh(...) line of the scene file as loaded (what `ssgraph check` reports). */
 struct ssg_scene_model {
     char file[512];             /* the path as the scene file writes it */
+    char path[1024];            /* resolved against the folder of the file that has the line
+                                   (a scene's, or one it includes) */
     int line, column;           /* of the file argument on the mesh line */
+    char scene_file[1024];      /* the scene file that has the line (one an include names) */
     int first_mesh, mesh_count; /* its meshes: scene->meshes[first_mesh ...] */
     long long triangles;        /* in all of them */
     char ignored[SSG_MODEL_IGNORED_MAX]; /* what the file uses that ssgraph does not read, one line a

@@ -177,7 +177,9 @@ static struct ssg_scene_model *add_model(struct scene_loader *l, const struct sc
     struct ssg_scene_model *m = &s->models[s->model_count++];
     memset(m, 0, sizeof *m);
     snprintf(m->file, sizeof m->file, "%s", ((const struct mesh_args *)e->args)->file);
+    ssg_scene_path(e, m->file, m->path, sizeof m->path);
     ssg_loc_linecol(e->at[0], &m->line, &m->column);
+    snprintf(m->scene_file, sizeof m->scene_file, "%s", e->stmt->callee_loc.src->path);
     m->first_mesh = s->mesh_count;
     m->triangles = triangles;
     return m;

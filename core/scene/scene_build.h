@@ -111,20 +111,34 @@ struct scene_entity {
     struct ssg_loc at[SCENE_MAX_ARGS]; /* where argument i was written; src NULL = default */
     int material;                     /* shapes, meshes: entity index of the named material,
                                          -1 = none named */
+    int depth;                        /* 0: the scene file's own; n: from an include n deep */
 };
 
 struct scene_loader {
     struct ssg_arena arena;
     struct ssg_diags *diags;
     enum ssg_err first;             /* first error reported, SSG_OK while none */
-    struct scene_entity *ents;
-    int count;
+    struct scene_entity *ents;      /* in the loader's arena; grown by doubling */
+    int count, ent_cap;
     struct ssg_scene *scene;        /* being filled by scene_build.c */
     int mesh_cap, material_cap, texture_cap, model_cap, light_cap;
     int default_material;           /* index in scene->materials, -1 until first needed */
     int *material_of;               /* entity index -> scene material index */
     long long triangles;            /* in the scene so far, against SSG_SCENE_MAX_TRIANGLES */
+    int depth;                      /* the include depth of the file being read */
 };
+
+/* At most this many scene files nested by `include` (a deeper chain is surely a cycle). */
+#define SSG_SCENE_MAX_INCLUDE 16
+
+/* `include "file"` (scene_include.c): the file's path, resolved against the including
+   file's folder, into path; 0 with the error reported (not one quoted name, too deep). */
+int ssg_scene_include_path(struct scene_loader *l, const struct ssg_stmt *st, char *path,
+                           size_t len);
+/* After a file's statements, its entities from `first` on (those at depth l->depth its
+   own): drops what its includes gave of each kind the file has itself (a camera, a camera
+   path, an environment, a frame rate). */
+void ssg_scene_replace_included(struct scene_loader *l, int first);
 
 /* At most this many triangles in one scene (about 150 bytes each with the ray-tracing
  * structure: 2.4 GB), checked before a shape is tessellated and as each glTF is added. */

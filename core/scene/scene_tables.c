@@ -320,6 +320,14 @@ void ssg_scenes_markdown(FILE *stream)
                     "`name = kind(...)`, `set name.arg = value`, comments with `#`); "
                     "relative paths resolve against the scene file; `ssgraph check "
                     "FILE.scene` validates a scene and loads its meshes.\n\n"
+                    "`include \"other.scene\"` (relative to the including file) adds "
+                    "another scene's entities as if written there, its paths still "
+                    "resolved against its own folder; the including file's own `camera`, "
+                    "camera path (`camera_key` lines or an `orbit`), `environment` and "
+                    "`frame_rate` replace the included ones, so a file of an include and "
+                    "camera_key lines is that scene flown along a new path (what the "
+                    "viewer's *save path* writes, docs/viewer.md). Includes nest up to 16 "
+                    "deep.\n\n"
                     "Entities: ");
     for (int k = 0; k < SK_COUNT; k++)
         fprintf(stream, "%s[`%s`](#%s)", k ? ", " : "", ssg_scene_kinds[k].name,

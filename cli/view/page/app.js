@@ -3,7 +3,11 @@
 // with RMSE/SSIM, and the run's per-node times. This module starts the page and wires its
 // controls: they change the state (state.js), and every change of the state draws the image
 // view through the one render path (render.js).
+import { wireCamPanel } from './campanel.js';
+import { wireCamPath } from './campath.js';
 import { flipKey } from './diff.js';
+import { flying, wireFly } from './fly.js';
+import { refusedSet, wireHistory } from './history.js';
 import { fetchFlip, fetchImage } from './image.js';
 import { countUpdate, dragging, goHome, wireMouse } from './mouse.js';
 import { api, errorText, LatestSender } from './net.js';
@@ -65,6 +69,7 @@ async function onSetAnswer(body, resp) {
     return onRunAnswer(body, resp);
   }
   await onRunAnswer(body, resp);
+  refusedSet(node, param, body.slice(body.indexOf('=') + 1));
   if (!el) return;
   el.classList.add('refused');
   const kept = findNode(node)?.params.find((p) => p.name === param)?.value;
@@ -128,7 +133,7 @@ async function refreshImages(preview) {
       got.set(flipKey(p.a, p.b), await fetchFlip(p.a, p.b));
     }
     storeImages(got);
-    if (preview && dragging()) countUpdate();
+    if (preview && (dragging() || flying())) countUpdate();
     if (!preview && p.ab) refreshMetrics();
   } catch (e) { showRequestError(String(e.message || e)); }
   imageBusy = false;
@@ -251,6 +256,11 @@ function wire() {
   $('cam-home').onclick = goHome;
   $('zoom-fit').onclick = fit;
   $('zoom-one').onclick = oneToOne;
+  wireCamPanel();
+  wireCamPath();
+  wireFly();
+  wireHistory({ send: (n, p, v) => sendParam(n, p, v, 0), pick: (n) => pickNode(n, false),
+    refresh: () => refreshParamValues(true) });
   document.addEventListener('keydown', (ev) => {
     if (ev.key === 'Escape') enlargeDiagram(false);
     const typing = ev.target.closest && ev.target.closest('input, select, textarea');

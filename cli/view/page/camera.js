@@ -43,3 +43,45 @@ export function zoom(cam, wheel) {
   const off = V.mul(V.sub(cam.position, cam.target), Math.exp(wheel * 0.001));
   cam.position = V.add(cam.target, off);
 }
+
+// Keyboard fly (fly.js): moves camera and target together by `step` scene units along the
+// view direction (forward), its right (right) and the up axis (up), each -1, 0 or 1.
+export function fly(cam, forward, right, up, step) {
+  const dir = V.norm(V.sub(cam.target, cam.position));
+  const r = V.norm(V.cross(dir, cam.up)), u = V.norm(cam.up);
+  const move = V.mul(V.add(V.add(V.mul(dir, forward), V.mul(r, right)), V.mul(u, up)), step);
+  cam.position = V.add(cam.position, move);
+  cam.target = V.add(cam.target, move);
+}
+
+// Turns the view around the eye (the target moves): yaw about the up axis, pitch about the
+// right axis, in radians, never over the pole.
+export function look(cam, yaw, pitch) {
+  const up = V.norm(cam.up);
+  let off = rotate(V.sub(cam.target, cam.position), up, -yaw);
+  const right = V.norm(V.cross(off, up));
+  const tilted = rotate(off, right, pitch);
+  if (Math.abs(V.dot(V.norm(tilted), up)) < 0.995) off = tilted;
+  cam.target = V.add(cam.position, off);
+}
+
+// The distance from the eye to the target: the scale a fly moves by.
+export const targetDistance = (cam) => V.len(V.sub(cam.target, cam.position));
+
+// Why {position, target, up, fov_y} is no camera, as {part, why} naming the field at
+// fault, or null when it is one (the server's checks: an eye apart from the target, an up
+// not along the view, a fov in (0, 180)).
+export function cameraFault(cam) {
+  const dir = V.sub(cam.target, cam.position);
+  // a camera from the server is float32: a box typed from it differs in the 8th digit
+  if (!(V.len(dir) > 1e-6 * Math.max(1, V.len(cam.position)))) {
+    return { part: 'target', why: 'the position and the target are the same point' };
+  }
+  if (!(V.len(cam.up) > 0) || V.len(V.cross(V.norm(dir), V.norm(cam.up))) < 1e-6) {
+    return { part: 'up', why: 'up is zero or along the view direction' };
+  }
+  if (!(cam.fov_y > 0 && cam.fov_y < 180)) {
+    return { part: 'fov', why: 'the field of view is in (0, 180) degrees' };
+  }
+  return null;
+}

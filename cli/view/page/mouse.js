@@ -18,7 +18,7 @@ let camSender = null;
 const ups = [];        // times of the preview images drawn during a drag
 
 const num = (x) => String(parseFloat(x.toPrecision(8)));
-function sendCamera(preview) {
+export function sendCamera(preview) {
   const c = state.cam;
   const body = `position=${c.position.map(num)}&target=${c.target.map(num)}` +
     `&up=${c.up.map(num)}&fov=${num(c.fov_y)}&preview=${preview ? 1 : 0}`;
