@@ -111,7 +111,7 @@ static enum ssg_err path_line(FILE *f, const char *word, const char *path, struc
 }
 
 /* The statements that stand for the server's --scene, --lights, --size, --guard, --seed. */
-static enum ssg_err command_line(FILE *f, const struct ssg_overrides *ov, struct ssg_diags *d)
+enum ssg_err view_command_line(FILE *f, const struct ssg_overrides *ov, struct ssg_diags *d)
 {
     enum ssg_err e = SSG_OK;
     if (ov->scene)
@@ -160,7 +160,7 @@ static enum ssg_err sets(FILE *f, const struct view_session *s, struct ssg_diags
     return e;
 }
 
-static void camera_comment(FILE *f, const struct view_session *s)
+void view_camera_comment(FILE *f, const struct view_session *s)
 {
     if (!s->camera_changed)
         return;
@@ -187,10 +187,10 @@ static enum ssg_err compose(const struct view_session *s, const char *include, c
           "include ", f);
     quote(f, include);
     fputc('\n', f);
-    enum ssg_err e = command_line(f, &s->args->ov, d);
+    enum ssg_err e = view_command_line(f, &s->args->ov, d);
     if (!e)
         e = sets(f, s, d);
-    camera_comment(f, s);
+    view_camera_comment(f, s);
     if (fclose(f) && !e)
         e = view_fail(d, SSG_E_NOMEM, "out of memory for the variant");
     if (e) {
@@ -242,7 +242,7 @@ static int name_new(const char *tmp, const char *path)
 }
 
 /* Writes text as a new file path, never replacing nor opening what is there. */
-static enum ssg_err write_new(const char *path, const char *text, size_t len,
+enum ssg_err view_write_new(const char *path, const char *text, size_t len,
                               struct ssg_diags *d)
 {
     char tmp[1100];
@@ -264,26 +264,36 @@ static enum ssg_err write_new(const char *path, const char *text, size_t len,
     return view_fail(d, SSG_E_IO, "cannot write %s: %s", path, strerror(err));
 }
 
-enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
-                               size_t len, struct ssg_diags *d)
+enum ssg_err view_save_path(const struct view_session *s, const char *name, char *path,
+                            size_t len, struct ssg_diags *d)
 {
     if (!valid_name(name))
-        return view_fail(d, SSG_E_USAGE, "a variant's name is 1 to 64 letters, digits, '_' "
-                         "or '-', got '%.80s'", name);
+        return view_fail(d, SSG_E_USAGE, "a saved graph's name is 1 to 64 letters, digits, "
+                         "'_' or '-', got '%.80s'", name);
     const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
     int dir = slash ? (int)(slash - graph + 1) : 0;
     if ((size_t)snprintf(path, len, "%.*s%s.graph", dir, graph, name) >= len)
-        return view_fail(d, SSG_E_USAGE, "the variant's path is too long");
+        return view_fail(d, SSG_E_USAGE, "the saved graph's path is too long");
     struct stat st;
     if (!lstat(path, &st)) /* a FIFO, a link, a directory, an unreadable file: all exist */
         return view_fail(d, SSG_E_IO, "%s exists already: choose another name", path);
     if (errno != ENOENT)
         return view_fail(d, SSG_E_IO, "cannot save as %s: %s", path, strerror(errno));
+    return SSG_OK;
+}
+
+enum ssg_err view_session_save(struct view_session *s, const char *name, char *path,
+                               size_t len, struct ssg_diags *d)
+{
+    enum ssg_err e = view_save_path(s, name, path, len, d);
+    if (e)
+        return e;
+    const char *graph = s->args->files[0], *slash = strrchr(graph, '/');
     char *text = NULL;
     size_t text_len = 0;
-    enum ssg_err e = compose(s, graph + dir, &text, &text_len, d);
+    e = compose(s, slash ? slash + 1 : graph, &text, &text_len, d);
     if (!e)
-        e = write_new(path, text, text_len, d);
+        e = view_write_new(path, text, text_len, d);
     free(text);
     return e;
 }

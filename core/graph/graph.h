@@ -71,6 +71,8 @@ struct gnode {
 struct ssg_graph {
     struct ssg_arena arena;
     const char *path;          /* the top graph file */
+    const char *text;          /* its text when it comes from memory (ssg_graph_load_text),
+                                  the caller's, during the build only; NULL = read path */
     char scene_path[512];      /* resolved scene file, "" = none */
     struct ssg_loc scene_loc;  /* where it was named */
     char lights_path[512];     /* resolved lights file replacing the scene's lights, "" =

@@ -3,6 +3,7 @@
 // with RMSE/SSIM, and the run's per-node times. This module starts the page and wires its
 // controls: they change the state (state.js), and every change of the state draws the image
 // view through the one render path (render.js).
+import { wireEdit } from './edit.js';
 import { fetchImage } from './image.js';
 import { countUpdate, dragging, goHome, wireMouse } from './mouse.js';
 import { api, errorText, LatestSender } from './net.js';
@@ -208,6 +209,7 @@ function wire() {
   new ResizeObserver(scheduleRender).observe($('stage'));
   wireMouse(onRunAnswer);
   wireTime(onRunAnswer);
+  wireEdit(onRunAnswer);
   wireDisplay();
   wirePorts();
   $('save-btn').onclick = saveVariant;
