@@ -240,3 +240,33 @@ def js_errors(drv):
     for e in logs:
         if e["level"] == "SEVERE" and "Failed to load resource" not in e["message"]:
             fail(f"browser console: {e['message']}")
+
+
+def run_steps(steps, failure_shot="failure"):
+    """Starts chromium and its driver, runs each step(drv) in order (its time printed) up to
+    the first failure (screenshot viewer-FAILURE_SHOT.png), then the console check; the exit
+    status: 1 on any failure."""
+    chromium = None
+    try:
+        chromium, port = start_chromium()
+        drv = browser(port)
+    except WebDriverException as e:
+        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
+              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
+        if chromium:
+            chromium.kill()
+        return 1
+    try:
+        for step in steps:
+            t0 = time.time()
+            step(drv)
+            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
+            if failures:
+                shot(drv, failure_shot)
+                break
+        js_errors(drv)
+    finally:
+        drv.quit()
+        chromium.kill()
+        chromium.wait()
+    return 1 if failures else 0

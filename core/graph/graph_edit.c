@@ -7,7 +7,8 @@
  *                            to the call; a node of an included file gets a set line
  *   add NAME.LAYER = N.PORT  appended (a new layer of a write)
  *   remove NAME              its call and its set lines deleted, whole lines with their
- *                            trailing comments; refused where another statement reads it
+ *                            comments (on the line, and the comment lines right above);
+ *                            refused where another statement reads it
  * Only the edited spans change: every other byte of the text stays as it was. Nothing here
  * checks the graph: the caller loads the result (ssg_graph_load_text), so every check and
  * message is the graph file's own, at the line of the edited text. */
@@ -208,8 +209,25 @@ static int readers(const struct edit_text *t, const char *name, size_t len,
     return found;
 }
 
-/* The span of statement st widened to whole lines: the blanks before it when nothing else
-   is on its line, and after it the blanks, a comment and the newline. */
+/* The start of the comment lines right above line start `a` (no blank line between: they
+   speak of that statement), or a itself. */
+static const char *comment_above(const char *src, const char *a)
+{
+    while (a > src) {
+        const char *line = a - 1; /* the '\n' that ends the line above */
+        while (line > src && line[-1] != '\n')
+            line--;
+        const char *p = line + strspn(line, " \t");
+        if (*p != '#')
+            break;
+        a = line;
+    }
+    return a;
+}
+
+/* The span of statement st widened to whole lines when nothing else is on its line: the
+   comment lines right above it and its indentation, and after it the blanks, a comment
+   and the newline. */
 static void line_span(const struct edit_text *t, const struct ssg_stmt *st, size_t *from,
                       size_t *to)
 {
@@ -223,7 +241,7 @@ static void line_span(const struct edit_text *t, const struct ssg_stmt *st, size
         b += strcspn(b, "\n");
     if (alone && *b == '\n')
         b++;
-    *from = off(t, alone ? a : st->loc.at);
+    *from = off(t, alone ? comment_above(src, a) : st->loc.at);
     *to = off(t, alone ? b : st->end);
 }
 

@@ -6,7 +6,7 @@
 // outputs whose type the input takes; the server's check is the authority all the same.
 import { api, errorText } from './net.js';
 import { findNode, state, subscribe } from './state.js';
-import { $ } from './ui.js';
+import { $, setBusy } from './ui.js';
 
 let types = null;      // /api/types: name -> {name, doc, inputs, outputs}
 let answer = null;     // app.js's handler of a changing request's answer
@@ -41,6 +41,7 @@ function showResult(text, ok) {
 
 // Sends edits (graph statements); the answer is the new state, or the refusal's messages.
 async function send(edits, done) {
+  setBusy(true);
   try {
     const resp = await api('/api/edit', edits);
     if (resp.ok) {
@@ -49,8 +50,11 @@ async function send(edits, done) {
       await answer(edits, resp);
     } else {
       showResult(`refused: ${await errorText(resp)}`, false);
+      shownSig = ''; // a refused rewire's select goes back to what the graph reads
+      showSelected();
     }
   } catch (e) { showResult(`error: ${e}`, false); }
+  setBusy(false);
 }
 
 // ---- add --------------------------------------------------------------------------------
