@@ -11,11 +11,8 @@
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_browser"
 
-for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
-    [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
-done
-/usr/bin/python3 -c 'import selenium' 2> /dev/null ||
-    fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+source "$(dirname "$0")/view_lib.sh"
+browser_tools_check
 [ "$fails" -eq 0 ] || finish test_view_browser
 
 # The copy names its scene by absolute path, so it loads from the scratch folder.

@@ -9,11 +9,8 @@
 set -u
 source "$(dirname "$0")/lib.sh" "ssg_test_view_edit"
 
-for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
-    [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
-done
-/usr/bin/python3 -c 'import selenium' 2> /dev/null ||
-    fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+source "$(dirname "$0")/view_lib.sh"
+browser_tools_check
 [ "$fails" -eq 0 ] || finish test_view_edit
 
 mkdir -p "$TMP/graph" "$TMP/home"
@@ -22,7 +19,6 @@ sed "s|^scene \"\.\./|scene \"$PWD/|" graphs/ssdo_realtime.graph > "$G"
 printf '\n# the editor test: a sink nothing reads, to remove\nc = compare(img.out, img.out)\n' >> "$G"
 export HOME=$TMP/home XDG_CONFIG_HOME=$TMP/home XDG_CACHE_HOME=$TMP/home
 
-source "$(dirname "$0")/view_lib.sh"
 view_start "$TMP/server.log" "$G" --size 160x90 --port 0 ||
     { fail "ssgraph view printed no URL"; finish test_view_edit; }
 url="$B/?token=$token"

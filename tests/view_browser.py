@@ -13,7 +13,6 @@ import re
 import sys
 import time
 
-from selenium.common.exceptions import WebDriverException
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 from selenium.webdriver.common.by import By
@@ -437,32 +436,9 @@ def step_save(drv):
 
 
 def main():
-    chromium = None
-    try:
-        chromium, port = start_chromium()
-        drv = browser(port)
-    except WebDriverException as e:
-        print(f"FAIL: chromedriver (/usr/bin/chromedriver, at 127.0.0.1) could not drive "
-              f"headless chromium (/usr/bin/chromium): {e.msg}{localhost_note()}")
-        if chromium:
-            chromium.kill()
-        return 1
-    try:
-        for step in (step_load, step_modules, step_tonemap, step_click_node, step_slider,
-                     step_slider_drag, step_checkbox, step_camera,
-                     step_display, step_range, step_ab, step_errors, step_save):
-            t0 = time.time()
-            step(drv)
-            print(f"{step.__name__}: {time.time() - t0:.1f} s", flush=True)
-            if failures:
-                shot(drv, "failure")
-                break
-        js_errors(drv)
-    finally:
-        drv.quit()
-        chromium.kill()
-        chromium.wait()
-    return 1 if failures else 0
+    return view_page.run_steps((step_load, step_modules, step_tonemap, step_click_node,
+                                step_slider, step_slider_drag, step_checkbox, step_camera,
+                                step_display, step_range, step_ab, step_errors, step_save))
 
 
 if __name__ == "__main__":

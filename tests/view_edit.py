@@ -37,9 +37,17 @@ def state_where(drv, what, cond):
         server_state(d)))
 
 
+def diagram_nodes(drv):
+    """The node names of the diagram, read in one go (it is replaced as it loads)."""
+    return drv.execute_script("""return [...document.querySelectorAll('#diagram g.node')]
+        .map((g) => (g.querySelector('title') || {}).textContent);""")
+
+
 def pick(drv, name):
     """Selects node `name` (its row of the last run's table)."""
-    drv.find_element(By.CSS_SELECTOR, f"#node-table tr[data-node='{name}']").click()
+    # clicked in the page: the table is drawn anew with each state, a found row may be gone
+    drv.execute_script("document.querySelector(`#node-table tr[data-node='${arguments[0]}']`)"
+                       ".click();", name)
     wait_for(drv, f"node {name} selected", lambda d: text(d, "node-name") == name)
 
 
@@ -66,9 +74,7 @@ def step_add(drv):
     drv.find_element(By.ID, "edit-name").send_keys("b2")
     drv.find_element(By.ID, "edit-add").click()
     state_where(drv, "b2 in the state", lambda st: input_from(st, "b2", "in") == "u.out")
-    wait_for(drv, "b2 in the diagram", lambda d: "b2" in [  # a <title> shows no .text
-        t.get_attribute("textContent") for t in
-        d.find_elements(By.CSS_SELECTOR, "#diagram g.node title")])
+    wait_for(drv, "b2 in the diagram", lambda d: "b2" in diagram_nodes(d))
     if not text(drv, "edit-result").startswith("added b2"):
         fail(f"the add said '{text(drv, 'edit-result')}'")
 

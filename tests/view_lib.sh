@@ -61,3 +61,13 @@ view_stop_within() {
     [ "$took" -le "$limit" ] || fail "SIG$sig took $took ms to end the server (at most $limit)"
     stop_ms=$took
 }
+
+# browser_tools_check: fails (once per missing tool) unless Debian's chromium, chromedriver,
+# python3 and python3-selenium are there, as the browser tests need them.
+browser_tools_check() {
+    for tool in /usr/bin/chromium /usr/bin/chromedriver /usr/bin/python3; do
+        [ -x "$tool" ] || fail "$tool is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+    done
+    /usr/bin/python3 -c 'import selenium' 2> /dev/null ||
+        fail "python3-selenium is missing: install the packages in tools/debian-packages-test.txt (tools/install-deps.sh --test)"
+}
