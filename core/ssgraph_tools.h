@@ -120,7 +120,7 @@ struct ssg_type_port {
 };
 /* How many ports node type `node` has (0 for an unknown type). */
 SSG_API int ssg_node_port_count(const char *node);
-/* SSG_E_UNKNOWN_NODE without such a type, SSG_E_USAGE with k out of range. */
+/* SSG_E_UNKNOWN_NODE without such a type, SSG_E_USAGE with k out of range or info NULL. */
 SSG_API enum ssg_err ssg_node_port_info(const char *node, int k, struct ssg_type_port *info);
 
 /* ---- Editing a graph file's text (`ssgraph view`'s editor, graph_edit.c) */

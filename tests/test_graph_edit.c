@@ -1,8 +1,9 @@
 /* test_graph_edit.c - ssg_graph_text_edit and ssg_graph_load_text (ssgraph_tools.h): the
  * edits change only their spans, the way a person edits a graph file:
- * - a keyed argument and a positional one are replaced where they stand; an argument the
- *   call lacks is added to it, on a line of its own past column 96; a set line of the key
- *   is changed instead of the call; a node of an included file gets a set line;
+ * - a keyed argument and a positional one are replaced where they stand (a prev(node.port)
+ *   whole, both ways); an argument the call lacks is added to it, on a line of its own past
+ *   column 96; a set line of the key is changed instead of the call; a node of an included
+ *   file gets a set line;
  * - a new node is appended; remove deletes the call's whole lines with the comment above
  *   and on its line, and the node's set lines; several edits apply in order;
  * - refused: a node others read (each reader at its file:line:column), a node the text
@@ -81,6 +82,12 @@ static void test_changes(void)
     /* past column 96: on a line of its own, under the first argument */
     CHECK(base_with(edit(BASE, "set ao.max_screen_radius = 0.25", NULL), "radius=0.5)",
                     "radius=0.5,\n           max_screen_radius=0.25)"));
+    /* prev(node.port) is one value, written whole both ways */
+    const char *prev = edit(BASE, "set b.depth = prev(g.depth)", NULL);
+    CHECK(base_with(prev, "depth=g.depth, size", "depth=prev(g.depth), size"));
+    char back[4096];
+    snprintf(back, sizeof back, "%s", prev);
+    CHECK(!strcmp(edit(back, "set b.depth = g.depth", NULL), BASE));
     const char *empty = "scene \"a.scene\"\ng = gbuffer()\n";
     CHECK(!strcmp(edit(empty, "set g.backend = cpu", NULL),
                   "scene \"a.scene\"\ng = gbuffer(backend=cpu)\n"));

@@ -98,6 +98,8 @@ int ssg_node_port_count(const char *node)
 
 enum ssg_err ssg_node_port_info(const char *node, int k, struct ssg_type_port *info)
 {
+    if (!info)
+        return SSG_E_USAGE;
     *info = (struct ssg_type_port){0};
     const struct ssg_node_desc *d = node ? ssg_node_find(node, strlen(node)) : NULL;
     if (!d)

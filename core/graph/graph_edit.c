@@ -117,7 +117,7 @@ static enum ssg_err add_arg(struct edit_text *t, const struct ssg_stmt *st, cons
     const char *src = t->file.src->text;
     const char *at = st->arg_count ? st->args[st->arg_count - 1].value.end : st->end - 1;
     const char *first = st->arg_count ? (st->args[0].key ? st->args[0].key
-                                                         : st->args[0].value.loc.at) : at;
+                                                         : st->args[0].value.start) : at;
     size_t lead = column(src, first), len = key_len + value_len + 1;
     const char *eol = strchr(at, '\n');
     size_t line_end = column(src, at) + (eol ? (size_t)(eol - at) : strlen(at));
@@ -145,23 +145,23 @@ static enum ssg_err add_arg(struct edit_text *t, const struct ssg_stmt *st, cons
 static enum ssg_err edit_set(struct edit_text *t, const struct ssg_stmt *ed)
 {
     const struct ssg_value *v = &ed->args[0].value;
-    size_t value_len = (size_t)(v->end - v->loc.at);
+    size_t value_len = (size_t)(v->end - v->start);
     const struct ssg_file *f = &t->file;
     for (int i = f->count - 1; i >= 0; i--) {
         const struct ssg_stmt *st = &f->stmts[i];
         if (st->kind == SSG_S_SET && st->name_len == ed->name_len &&
             !memcmp(st->name, ed->name, ed->name_len) && st->callee_len == ed->callee_len &&
             !memcmp(st->callee, ed->callee, ed->callee_len))
-            return splice(t, off(t, st->args[0].value.loc.at), off(t, st->args[0].value.end),
-                          v->loc.at, value_len);
+            return splice(t, off(t, st->args[0].value.start), off(t, st->args[0].value.end),
+                          v->start, value_len);
     }
     const struct ssg_stmt *call = find_call(f, ed->name, ed->name_len);
     if (!call) /* a node of an included file, or none: the load says which */
         return append_line(t, ed->loc.at, (size_t)(ed->end - ed->loc.at));
     const struct ssg_arg *a = find_arg(call, ed->callee, ed->callee_len);
     if (a)
-        return splice(t, off(t, a->value.loc.at), off(t, a->value.end), v->loc.at, value_len);
-    return add_arg(t, call, ed->callee, ed->callee_len, v->loc.at, value_len);
+        return splice(t, off(t, a->value.start), off(t, a->value.end), v->start, value_len);
+    return add_arg(t, call, ed->callee, ed->callee_len, v->start, value_len);
 }
 
 /* 1 when value v (a list's items too) reads node `name`. */

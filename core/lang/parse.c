@@ -213,7 +213,9 @@ static int parse_value_kind(struct parser *ps, struct ssg_value *v);
 
 static int parse_value(struct parser *ps, struct ssg_value *v)
 {
+    const char *start = peek(ps, 0)->at;
     int ok = parse_value_kind(ps, v);
+    v->start = start;
     v->end = read_end(ps);
     return ok;
 }

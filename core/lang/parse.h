@@ -45,8 +45,9 @@ struct ssg_value {
                                   the previous frame (loc: the node name inside) */
     struct ssg_value *items;   /* LIST */
     int count;                 /* LIST */
-    const char *end;           /* one past its last character (its ']' or ')'): the span
-                                  a text edit replaces (graph_edit.c) */
+    const char *start, *end;   /* its first character as written (prev( included: loc
+                                  points inside) and one past its last (its ']' or ')'):
+                                  the span a text edit replaces (graph_edit.c) */
 };
 
 struct ssg_arg {
