@@ -10,6 +10,7 @@ connections (view_edit_check.py). Screenshots: OUTDIR/viewer-edit-*.png."""
 import os
 import re
 import sys
+import time
 
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
@@ -105,6 +106,12 @@ def step_remove(drv):
     drv.find_element(By.ID, "edit-remove").click()
     state_where(drv, "c removed", lambda st: not node(st, "c"))
     wait_for(drv, "the edit count", lambda d: "unsaved" in text(d, "edit-state"))
+    # the port shown was c's: the page moves to another and asks for none of c's
+    wait_for(drv, "port A off c", lambda d: not Select(
+        d.find_element(By.ID, "port-a")).first_selected_option.text.startswith("c."))
+    time.sleep(1)  # a late fetch of c's port would show its error by now
+    if text(drv, "request-error"):
+        fail(f"after removing c the page says '{text(drv, 'request-error')}'")
 
 
 def step_save(drv):

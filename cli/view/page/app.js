@@ -23,7 +23,9 @@ function applyState(st) {
   if (newRun && state.ports.ab) showMetrics(null, true);
   // the image first (its transfer overlaps the page's own updates below), unless the port
   // lists are still empty (the first state)
-  const imageNow = newRun && state.ports.a;
+  // (and not when the port shown is gone: a node removed in the editor, edit.js)
+  const imageNow = newRun && state.ports.a && st.nodes.some((n) =>
+    n.outputs.some((o) => `${n.name}.${o.port}` === state.ports.a));
   if (imageNow) refreshImages(st.last_run === 'preview');
   showHeader(st);
   setPorts(portChoices(st));
