@@ -178,6 +178,14 @@ enum ssg_err ssg_graph_set_lights(struct ssg_graph *g, const char *lights,
     return e;
 }
 
+enum ssg_err ssg_graph_read(struct ssg_graph *g, const char *path, struct ssg_loc from, int top,
+                            struct ssg_file *file, struct ssg_diags *diags)
+{
+    if (top && g->text) /* ssg_graph_load_text: the caller's text stands for the file */
+        return ssg_parse_text(&g->arena, path, g->text, file, diags);
+    return ssg_parse_file(&g->arena, path, from, file, diags);
+}
+
 static enum ssg_err load(const char *path, const char *text, const struct ssg_overrides *ov,
                          int load_assets, struct ssg_graph **out, struct ssg_diags *diags)
 {

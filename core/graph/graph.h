@@ -227,6 +227,10 @@ void ssg_live_free(struct ssg_graph *g);
  * Reports every problem; returns the first error code. */
 enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
                              const struct ssg_overrides *ov, struct ssg_diags *diags);
+/* Parses one file the build reads (graph.c): the top one (top = 1) from g->text when the
+ * graph is loaded from text, else from disk (a failure to read it reported at `from`). */
+enum ssg_err ssg_graph_read(struct ssg_graph *g, const char *path, struct ssg_loc from, int top,
+                            struct ssg_file *file, struct ssg_diags *diags);
 /* Checks connections, types, required inputs, cycles and shapes; fills the run order and
  * each output's last reader. Needs g->frame. */
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags);
