@@ -112,6 +112,42 @@ SSG_API int ssg_graph_port_count(const struct ssg_graph *graph, int index);
 SSG_API enum ssg_err ssg_graph_port_inspect(const struct ssg_graph *graph, int index, int k,
                                             struct ssg_port_info *info);
 
+/* Port k of node type `node` (no graph needed: a menu of types to add): its inputs, then
+ * its outputs. Strings are static. */
+struct ssg_type_port {
+    const char *name; /* "position" */
+    const char *doc;  /* one line */
+    int output;       /* 1 = an output */
+    int optional;     /* input: may stay unconnected */
+    char types[96];   /* the port types it takes (an input) or makes, "color|scalar" */
+};
+/* How many ports node type `node` has (0 for an unknown type). */
+SSG_API int ssg_node_port_count(const char *node);
+/* SSG_E_UNKNOWN_NODE without such a type, SSG_E_USAGE with k out of range or info NULL. */
+SSG_API enum ssg_err ssg_node_port_info(const char *node, int k, struct ssg_type_port *info);
+
+/* ---- Editing a graph file's text (`ssgraph view`'s editor, graph_edit.c) */
+
+/* ssg_graph_load with the top file's text given: `text` stands for the file at `path`
+ * (messages name path and the line of text; includes and the scene resolve against
+ * path's folder, and included files are read from disk). */
+SSG_API enum ssg_err ssg_graph_load_text(const char *path, const char *text,
+                                         const struct ssg_overrides *overrides,
+                                         struct ssg_graph **out, struct ssg_diags *diags);
+/* Applies `edits`, graph statements one a line, to the graph file text `text` (of the file
+ * `path`, for messages) the way a person would edit it, into *out (malloc'd; NULL on an
+ * error): `NAME = TYPE(args)` appends a node; `set NAME.KEY = VALUE` changes the argument
+ * where it is written (the file's last set line of it, else the call's argument, keyed or
+ * positional, else adds KEY=VALUE to the call; a node the file does not define gets the
+ * set line); `add NAME.LAYER = NODE.PORT` appends that line; `remove NAME` deletes the
+ * node's call and set lines (whole lines, with their comments), refused with each reader's
+ * file:line:column when another statement reads it. Every other byte stays as it was. The
+ * result is not checked: load it (ssg_graph_load_text) for that. Errors: a syntax error in
+ * the edits (file "<edit>") or in the text, an unknown edit, a node to remove that the
+ * text does not define, readers. */
+SSG_API enum ssg_err ssg_graph_text_edit(const char *path, const char *text, const char *edits,
+                                         char **out, struct ssg_diags *diags);
+
 /* ---- Files: read within limits, written whole or not at all (the rules: lang/files.h) */
 
 /* Reads a whole regular file of at most max_bytes into malloc'd memory with a NUL after

@@ -46,6 +46,18 @@ static void graphs(void)
     expect_usage(ssg_graph_set_frame(NULL, 0, &d), &d, "ssg_graph_set_frame", "graph");
     d = (struct ssg_diags){0};
     expect_usage(ssg_scene_check(NULL, &d), &d, "ssg_scene_check", "path");
+    d = (struct ssg_diags){0};
+    g = (struct ssg_graph *)&d;
+    expect_usage(ssg_graph_load_text("x.graph", NULL, NULL, &g, &d), &d,
+                 "ssg_graph_load_text", "text");
+    CHECK(g == NULL);
+    char *text = (char *)&d; /* must be set to NULL, never read */
+    d = (struct ssg_diags){0};
+    expect_usage(ssg_graph_text_edit("x.graph", "g = gbuffer()", NULL, &text, &d), &d,
+                 "ssg_graph_text_edit", "edits");
+    CHECK(text == NULL);
+    CHECK_EQ(ssg_node_port_count(NULL), 0);
+    CHECK_EQ(ssg_node_port_info(NULL, 0, NULL), SSG_E_USAGE);
     ssg_graph_destroy(NULL);
     g = NULL;
     ssg_graph_destroy(&g);

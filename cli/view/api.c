@@ -195,6 +195,7 @@ char *view_state_json(const struct view_session *s, size_t *len)
         fputs("null", f);
     fputs(",\"camera\":", f);
     json_camera(f, s);
+    fprintf(f, ",\"edited\":%s,\"unsaved_edits\":%d", s->text ? "true" : "false", s->edits);
     fputs(",\"frame_ms\":", f);
     ssg_json_number(f, s->stats.frame_avg_ms);
     fputs(",\"total_ms\":", f);

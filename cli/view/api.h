@@ -32,4 +32,8 @@ char *view_flip_bytes(struct view_session *s, const char *a, const char *b, size
 /* GET /api/graph.svg: `dot -Tsvg` of the graph's DOT (ssg_graph_dot). */
 char *view_graph_svg(const struct view_session *s, size_t *len, struct ssg_diags *diags);
 
+/* GET /api/types: every node type a page may add, with its input ports (the types each
+ * takes, optional or not) and output ports (edit.c). */
+char *view_types_json(size_t *len);
+
 #endif

@@ -217,18 +217,27 @@ static void camera(struct view_session *s, const struct view_request *req,
     changed(s, e, &d, a);
 }
 
-static void save(struct view_session *s, const struct view_request *req,
-                 struct view_answer *a)
+/* A save (as variant, or the edited graph): {"path": ...}, or why not (409 when the name
+   exists). */
+static void save_with(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a,
+                      enum ssg_err (*save_as)(struct view_session *s, const char *name,
+                                              char *path, size_t len, struct ssg_diags *d))
 {
     char name[128] = "", path[1024];
     struct ssg_diags d = {0};
     form_value(req->body, "name", name, sizeof name);
-    enum ssg_err e = view_session_save(s, name, path, sizeof path, &d);
-    if (e) {
+    enum ssg_err e = save_as(s, name, path, sizeof path, &d);
+    if (e)
         diags_error(a, e == SSG_E_IO ? MHD_HTTP_CONFLICT : MHD_HTTP_BAD_REQUEST, &d, e);
-        return;
-    }
-    json_field(a, MHD_HTTP_OK, "path", path);
+    else
+        json_field(a, MHD_HTTP_OK, "path", path);
+}
+
+static void save(struct view_session *s, const struct view_request *req,
+                 struct view_answer *a)
+{
+    save_with(s, req, a, view_session_save);
 }
 
 /* The body is "path=" and the path, raw to its end (a path may hold '&' and '='): 404 when
@@ -286,6 +295,36 @@ static void frame(struct view_session *s, const struct view_request *req,
     changed(s, view_session_frame(s, n, &d), &d, a);
 }
 
+/* The graph editor (docs/viewer-api.md, "Editing the graph"). */
+static void edit(struct view_session *s, const struct view_request *req, struct view_answer *a)
+{
+    struct ssg_diags d = {0};
+    changed(s, view_session_edit(s, req->body, &d), &d, a);
+}
+
+static void edit_discard(struct view_session *s, const struct view_request *req,
+                         struct view_answer *a)
+{
+    (void)req;
+    struct ssg_diags d = {0};
+    changed(s, view_session_discard(s, &d), &d, a);
+}
+
+static void edit_save(struct view_session *s, const struct view_request *req,
+                      struct view_answer *a)
+{
+    save_with(s, req, a, view_session_save_edited);
+}
+
+static void types(struct view_session *s, const struct view_request *req,
+                  struct view_answer *a)
+{
+    (void)s, (void)req;
+    size_t len = 0;
+    char *body = view_types_json(&len);
+    answer(a, JSON, body, len);
+}
+
 /* Every path of the interface and the one method it takes. */
 static const struct route {
     const char *path;
@@ -298,6 +337,8 @@ static const struct route {
     {"/api/camera", 1, camera},   {"/api/save", 1, save},       {"/api/frame", 1, frame},
     {"/api/flip", 0, flip},       {"/api/reference", 1, reference},
     {"/api/save_path", 1, save_path},
+    {"/api/types", 0, types},     {"/api/edit", 1, edit},       {"/api/edit/save", 1, edit_save},
+    {"/api/edit/discard", 1, edit_discard},
 };
 
 void view_route(struct view_session *s, const struct view_request *req, struct view_answer *a)

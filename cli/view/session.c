@@ -1,5 +1,5 @@
 /* session.c - the state of `ssgraph view` between requests (session.h). */
-#define _DEFAULT_SOURCE /* open_memstream */
+#define _GNU_SOURCE /* open_memstream, asprintf */
 #include "session.h"
 
 #include "../watch.h"
@@ -73,6 +73,14 @@ static void frame_size(const struct ssg_graph *g, int *w, int *h)
     *h = frame.height;
 }
 
+/* 1 when the node of "node.param" is in g. */
+static int set_node_exists(const struct ssg_graph *g, const char *key)
+{
+    char node[VIEW_KEY_MAX];
+    snprintf(node, sizeof node, "%.*s", (int)strcspn(key, "."), key);
+    return ssg_graph_node_index(g, node) >= 0;
+}
+
 /* Loads the graph at width x height (0: its own) with the session's changes and camera,
  * kept between runs. */
 static enum ssg_err load(struct view_session *s, int width, int height, struct ssg_graph **out,
@@ -84,11 +92,14 @@ static enum ssg_err load(struct view_session *s, int width, int height, struct s
         ov.height = height;
     }
     struct ssg_graph *g = NULL;
-    enum ssg_err e = ssg_graph_load(s->args->files[0], &ov, &g, d);
+    const char *path = s->args->files[0];
+    enum ssg_err e = s->text ? ssg_graph_load_text(path, s->text, &ov, &g, d)
+                             : ssg_graph_load(path, &ov, &g, d);
     if (!e)
         e = ssg_graph_keep(g, KEEP_BYTES, d);
     for (int i = 0; !e && i < s->set_count; i++)
-        e = ssg_graph_set(g, s->sets[i].key, s->sets[i].value, d);
+        if (set_node_exists(g, s->sets[i].key)) /* an edit may have removed it */
+            e = ssg_graph_set(g, s->sets[i].key, s->sets[i].value, d);
     if (!e && s->frame)
         e = ssg_graph_set_frame(g, s->frame, d);
     if (!e && s->camera_changed)
@@ -150,6 +161,8 @@ void view_session_close(struct view_session *s)
     view_reference_close(s);
     free(s->error);
     s->error = NULL;
+    free(s->text);
+    s->text = NULL;
 }
 
 /* The slot of key among this session's changes: its own, or the next free one
@@ -278,6 +291,17 @@ int view_session_poll(struct view_session *s)
     const char *file = s->watch ? ssg_cli_watch_changed(s->watch) : NULL;
     if (!file)
         return 0;
+    if (s->text) { /* the page's edits are of the text it had: neither may silently win */
+        printf("view: %s changed: not loaded while the page has edits of the graph\n", file);
+        fflush(stdout);
+        free(s->error);
+        if (asprintf(&s->error, "%s changed on disk while the page holds edits of the "
+                     "graph: the change is not loaded (save the edits as a new graph, or "
+                     "discard them to load the file)\n", file) < 0)
+            s->error = NULL;
+        s->generation++;
+        return 1;
+    }
     printf("view: %s changed: reloading\n", file);
     fflush(stdout);
     struct ssg_diags d = {0};
@@ -294,4 +318,69 @@ int view_session_poll(struct view_session *s)
     if (e)
         ssg_diags_print(&d, stderr);
     return 1;
+}
+
+/* The parameter changes of nodes g lacks dropped (a removed node's). */
+static void prune_sets(struct view_session *s, const struct ssg_graph *g)
+{
+    int kept = 0;
+    for (int i = 0; i < s->set_count; i++)
+        if (set_node_exists(g, s->sets[i].key))
+            s->sets[kept++] = s->sets[i];
+    s->set_count = kept;
+}
+
+/* Loads the session's graph with text as the graph file's (NULL: the file) and adopts it;
+   on failure the session keeps its text and graph. */
+static enum ssg_err reload_with(struct view_session *s, char *text, struct ssg_diags *d)
+{
+    char *old = s->text;
+    struct ssg_graph *g;
+    s->text = text;
+    enum ssg_err e = load(s, 0, 0, &g, d);
+    if (e) {
+        s->text = old;
+        free(text);
+        return e;
+    }
+    free(old);
+    prune_sets(s, g);
+    adopt(s, g);
+    return SSG_OK;
+}
+
+enum ssg_err view_session_edit(struct view_session *s, const char *edits, struct ssg_diags *d)
+{
+    const char *path = s->args->files[0];
+    char *base = s->text, *text = NULL, why[256];
+    size_t len;
+    enum ssg_err e = SSG_OK;
+    if (!base && (e = ssg_input_read(path, 16 << 20, &base, &len, why, sizeof why)))
+        return view_fail(d, e, "cannot read %s: %s", path, why);
+    e = ssg_graph_text_edit(path, base, edits, &text, d);
+    if (base != s->text)
+        free(base);
+    if (!e)
+        e = reload_with(s, text, d);
+    if (e)
+        return e;
+    s->edits++;
+    return run_graph(s, s->g, 0, d);
+}
+
+enum ssg_err view_session_discard(struct view_session *s, struct ssg_diags *d)
+{
+    if (!s->text)
+        return view_fail(d, SSG_E_USAGE, "the graph has no edits to discard");
+    char *text = s->text;
+    s->text = NULL;
+    enum ssg_err e = reload_with(s, NULL, d);
+    if (e) {
+        s->text = text;
+        return e;
+    }
+    free(text);
+    s->edits = 0;
+    watch_files(s, s->g); /* the file as it is now is the one shown */
+    return run_graph(s, s->g, 0, d);
 }

@@ -43,6 +43,10 @@ struct view_session {
     struct ssg_cli_watch *watch;     /* the graph's files (watch.h); NULL = none */
     struct ssg_image *ref_file;      /* the open reference file (reference.h); NULL = none */
     char *ref_port;                  /* its name in the port lists, "file:PATH"; NULL */
+    char *text;                      /* the graph file's text as edited in the page
+                                        (view_session_edit), loaded in its place; NULL =
+                                        no edits: the file on disk */
+    int edits;                       /* edits made since the text was last saved */
 };
 
 /* Loads the graph of args as a live graph and runs it once; on failure the diagnostics are
@@ -77,7 +81,7 @@ int view_session_poll(struct view_session *s);
  * never replaces: SSG_E_IO when the name exists in any form (a FIFO, a dangling link, a
  * directory, a file nobody may read) or cannot be written; SSG_E_USAGE for a bad name or
  * a name or value a graph file cannot hold (diags say which). */
-enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
+enum ssg_err view_session_save(struct view_session *s, const char *name, char *path,
                                size_t len, struct ssg_diags *diags);
 
 /* Writes NAME.scene beside the graph file (campath.c): `include "<the graph's scene>"` and
@@ -106,6 +110,29 @@ char *view_absolute(const char *path);
  * never replacing nor opening what is there (SSG_E_IO, "exists already"). */
 enum ssg_err view_write_new(const char *path, const char *text, size_t len,
                             struct ssg_diags *d);
+
+/* Applies `edits` (graph statements one a line: ssg_graph_text_edit) to the graph file's
+ * text, the session's edited text if it has one, and loads the result in the file's place
+ * with the session's changes and camera, then runs it. Refused, with the graph file's own
+ * messages at the line of the edited text and the session as it was, when the edit or the
+ * load fails. A node removed takes the session's parameter changes of it along. While the
+ * session has edits, a change of the file on disk is not loaded (s->error says so). */
+enum ssg_err view_session_edit(struct view_session *s, const char *edits,
+                               struct ssg_diags *diags);
+/* Drops the edits and loads the graph file from disk again. */
+enum ssg_err view_session_discard(struct view_session *s, struct ssg_diags *diags);
+/* Writes the edited text as NAME.graph beside the graph file (edit.c), with the command
+ * line's and this session's parameter changes written into it as a person would
+ * (ssg_graph_text_edit), and the server's --scene, --lights, --size, --guard and --seed as
+ * statements at its end; the same rules as view_session_save. SSG_E_USAGE without edits. */
+enum ssg_err view_session_save_edited(struct view_session *s, const char *name, char *path,
+                                      size_t len, struct ssg_diags *diags);
+
+/* The statements standing for the server's command line, and the page's camera as a
+ * comment, which both saves of a graph write (variant.c, edit.c). */
+enum ssg_err view_command_line(FILE *f, const struct ssg_overrides *ov,
+                               struct ssg_diags *diags);
+void view_camera_comment(FILE *f, const struct view_session *s);
 
 /* Adds an error without a file position (file "<view>") to d; returns code. */
 enum ssg_err view_fail(struct ssg_diags *d, enum ssg_err code, const char *fmt, ...)

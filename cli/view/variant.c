@@ -111,7 +111,7 @@ static enum ssg_err path_line(FILE *f, const char *word, const char *path, struc
 }
 
 /* The statements that stand for the server's --scene, --lights, --size, --guard, --seed. */
-static enum ssg_err command_line(FILE *f, const struct ssg_overrides *ov, struct ssg_diags *d)
+enum ssg_err view_command_line(FILE *f, const struct ssg_overrides *ov, struct ssg_diags *d)
 {
     enum ssg_err e = SSG_OK;
     if (ov->scene)
@@ -160,7 +160,7 @@ static enum ssg_err sets(FILE *f, const struct view_session *s, struct ssg_diags
     return e;
 }
 
-static void camera_comment(FILE *f, const struct view_session *s)
+void view_camera_comment(FILE *f, const struct view_session *s)
 {
     if (!s->camera_changed)
         return;
@@ -187,10 +187,10 @@ static enum ssg_err compose(const struct view_session *s, const char *include, c
           "include ", f);
     view_quote(f, include);
     fputc('\n', f);
-    enum ssg_err e = command_line(f, &s->args->ov, d);
+    enum ssg_err e = view_command_line(f, &s->args->ov, d);
     if (!e)
         e = sets(f, s, d);
-    camera_comment(f, s);
+    view_camera_comment(f, s);
     if (fclose(f) && !e)
         e = view_fail(d, SSG_E_NOMEM, "out of memory for the variant");
     if (e) {
@@ -282,7 +282,7 @@ enum ssg_err view_new_path(const struct view_session *s, const char *name, const
     return SSG_OK;
 }
 
-enum ssg_err view_session_save(const struct view_session *s, const char *name, char *path,
+enum ssg_err view_session_save(struct view_session *s, const char *name, char *path,
                                size_t len, struct ssg_diags *d)
 {
     enum ssg_err e = view_new_path(s, name, ".graph", path, len, d);

@@ -91,3 +91,34 @@ enum ssg_err ssg_graph_port_inspect(const struct ssg_graph *g, int index, int k,
     info->has_image = ssg_graph_output_kept(g, index, k);
     return SSG_OK;
 }
+
+int ssg_node_port_count(const char *node)
+{
+    const struct ssg_node_desc *d = node ? ssg_node_find(node, strlen(node)) : NULL;
+    return d ? d->input_count + d->output_count : 0;
+}
+
+enum ssg_err ssg_node_port_info(const char *node, int k, struct ssg_type_port *info)
+{
+    if (!info)
+        return SSG_E_USAGE;
+    *info = (struct ssg_type_port){0};
+    const struct ssg_node_desc *d = node ? ssg_node_find(node, strlen(node)) : NULL;
+    if (!d)
+        return SSG_E_UNKNOWN_NODE;
+    if (k < 0 || k >= d->input_count + d->output_count)
+        return SSG_E_USAGE;
+    int output = k >= d->input_count;
+    const struct ssg_port_desc *p = output ? &d->outputs[k - d->input_count] : &d->inputs[k];
+    info->name = p->name;
+    info->doc = p->doc;
+    info->output = output;
+    info->optional = !output && p->optional;
+    unsigned types = p->types;
+    int from = output && p->same_as ? ssg_port_find(d->inputs, d->input_count, p->same_as,
+                                                    strlen(p->same_as)) : -1;
+    if (from >= 0) /* shaped like that input: it makes what it is given */
+        types = d->inputs[from].types;
+    ssg_type_names(types, info->types, sizeof info->types);
+    return SSG_OK;
+}

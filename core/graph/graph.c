@@ -178,14 +178,24 @@ enum ssg_err ssg_graph_set_lights(struct ssg_graph *g, const char *lights,
     return e;
 }
 
-static enum ssg_err load(const char *path, const struct ssg_overrides *ov, int load_assets,
-                         struct ssg_graph **out, struct ssg_diags *diags)
+enum ssg_err ssg_graph_read(struct ssg_graph *g, const char *path, struct ssg_loc from, int top,
+                            struct ssg_file *file, struct ssg_diags *diags)
+{
+    if (top && g->text) /* ssg_graph_load_text: the caller's text stands for the file */
+        return ssg_parse_text(&g->arena, path, g->text, file, diags);
+    return ssg_parse_file(&g->arena, path, from, file, diags);
+}
+
+static enum ssg_err load(const char *path, const char *text, const struct ssg_overrides *ov,
+                         int load_assets, struct ssg_graph **out, struct ssg_diags *diags)
 {
     struct ssg_graph *g = calloc(1, sizeof *g);
     *out = NULL;
     if (!g)
         return SSG_E_NOMEM;
+    g->text = text;
     enum ssg_err e = ssg_graph_build(g, path, ov, diags);
+    g->text = NULL; /* the caller's */
     /* The scene is checked even when the graph has errors, so one run reports both. */
     enum ssg_err scene = setup_frame(g, load_assets, ov ? ov->eye_offset : 0.0f, diags);
     if (!e)
@@ -211,7 +221,18 @@ enum ssg_err ssg_graph_load(const char *path, const struct ssg_overrides *ov,
         *out = NULL;
     if (ssg_api_null(diags, "ssg_graph_load", "path, out", 2, path, out))
         return SSG_E_USAGE;
-    return load(path, ov, 1, out, diags);
+    return load(path, NULL, ov, 1, out, diags);
+}
+
+enum ssg_err ssg_graph_load_text(const char *path, const char *text,
+                                 const struct ssg_overrides *ov, struct ssg_graph **out,
+                                 struct ssg_diags *diags)
+{
+    if (out)
+        *out = NULL;
+    if (ssg_api_null(diags, "ssg_graph_load_text", "path, text, out", 3, path, text, out))
+        return SSG_E_USAGE;
+    return load(path, text, ov, 1, out, diags);
 }
 
 enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
@@ -220,7 +241,7 @@ enum ssg_err ssg_graph_check(const char *path, const struct ssg_overrides *ov,
     if (ssg_api_null(diags, "ssg_graph_check", "path", 1, path))
         return SSG_E_USAGE;
     struct ssg_graph *g = NULL;
-    enum ssg_err e = load(path, ov, 0, &g, diags);
+    enum ssg_err e = load(path, NULL, ov, 0, &g, diags);
     ssg_graph_destroy(&g);
     return e;
 }

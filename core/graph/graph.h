@@ -71,6 +71,8 @@ struct gnode {
 struct ssg_graph {
     struct ssg_arena arena;
     const char *path;          /* the top graph file */
+    const char *text;          /* its text when it comes from memory (ssg_graph_load_text),
+                                  the caller's, during the build only; NULL = read path */
     char scene_path[512];      /* resolved scene file, "" = none */
     struct ssg_loc scene_loc;  /* where it was named */
     char lights_path[512];     /* resolved lights file replacing the scene's lights, "" =
@@ -225,6 +227,10 @@ void ssg_live_free(struct ssg_graph *g);
  * Reports every problem; returns the first error code. */
 enum ssg_err ssg_graph_build(struct ssg_graph *g, const char *path,
                              const struct ssg_overrides *ov, struct ssg_diags *diags);
+/* Parses one file the build reads (graph.c): the top one (top = 1) from g->text when the
+ * graph is loaded from text, else from disk (a failure to read it reported at `from`). */
+enum ssg_err ssg_graph_read(struct ssg_graph *g, const char *path, struct ssg_loc from, int top,
+                            struct ssg_file *file, struct ssg_diags *diags);
 /* Checks connections, types, required inputs, cycles and shapes; fills the run order and
  * each output's last reader. Needs g->frame. */
 enum ssg_err ssg_graph_validate(struct ssg_graph *g, struct ssg_diags *diags);

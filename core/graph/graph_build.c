@@ -416,7 +416,7 @@ static void read_file(struct builder *b, const char *path, struct ssg_loc from)
         return;
     fail(b, ssg_graph_file_note(b->g, path)); /* for file watchers (api_graph_files.c) */
     struct ssg_file file;
-    enum ssg_err e = ssg_parse_file(&b->g->arena, path, from, &file, b->diags);
+    enum ssg_err e = ssg_graph_read(b->g, path, from, !b->depth, &file, b->diags);
     if (e)
         fail(b, e);
     if (!file.src)

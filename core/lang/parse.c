@@ -60,6 +60,13 @@ static const struct token *peek(const struct parser *ps, int ahead)
     return &ps->lex.toks[i < ps->lex.count ? i : ps->lex.count - 1];
 }
 
+/* One past the last token read: where a value or statement just parsed ends. */
+static const char *read_end(const struct parser *ps)
+{
+    const struct token *t = &ps->lex.toks[ps->pos ? ps->pos - 1 : 0];
+    return t->at + t->len;
+}
+
 static const struct token *next(struct parser *ps)
 {
     const struct token *t = peek(ps, 0);
@@ -202,7 +209,18 @@ static int parse_number(struct parser *ps, const struct token *t, struct ssg_val
     return !out_of_range;
 }
 
+static int parse_value_kind(struct parser *ps, struct ssg_value *v);
+
 static int parse_value(struct parser *ps, struct ssg_value *v)
+{
+    const char *start = peek(ps, 0)->at;
+    int ok = parse_value_kind(ps, v);
+    v->start = start;
+    v->end = read_end(ps);
+    return ok;
+}
+
+static int parse_value_kind(struct parser *ps, struct ssg_value *v)
 {
     const struct token *t = peek(ps, 0);
     memset(v, 0, sizeof *v);
@@ -405,6 +423,7 @@ static int parse_statement(struct parser *ps, struct ssg_stmt *st)
                  ssg_tok_text(peek(ps, 0)->kind));
         ok = 0;
     }
+    st->end = read_end(ps);
     return ok;
 }
 

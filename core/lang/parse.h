@@ -45,6 +45,9 @@ struct ssg_value {
                                   the previous frame (loc: the node name inside) */
     struct ssg_value *items;   /* LIST */
     int count;                 /* LIST */
+    const char *start, *end;   /* its first character as written (prev( included: loc
+                                  points inside) and one past its last (its ']' or ')'):
+                                  the span a text edit replaces (graph_edit.c) */
 };
 
 struct ssg_arg {
@@ -78,6 +81,8 @@ struct ssg_stmt {
     int arg_count;
     int adds;                  /* SET: 1 = written `add node.name = value`: a new named
                                   input (a write layer), where `set` only changes */
+    const char *end;           /* one past its last token (a call's ')'), before any
+                                  comment: the span a text edit removes */
 };
 
 struct ssg_file {

@@ -6,6 +6,7 @@
 import { wireCamPanel } from './campanel.js';
 import { wireCamPath } from './campath.js';
 import { flipKey } from './diff.js';
+import { wireEdit } from './edit.js';
 import { flying, wireFly } from './fly.js';
 import { refusedSet, wireHistory } from './history.js';
 import { fetchFlip, fetchImage } from './image.js';
@@ -28,7 +29,9 @@ function applyState(st) {
   if (newRun && state.ports.ab) showMetrics(null, true);
   // the image first (its transfer overlaps the page's own updates below), unless the port
   // lists are still empty (the first state)
-  const imageNow = newRun && state.ports.a;
+  // (and not when the port shown is gone: a node removed in the editor, edit.js)
+  const imageNow = newRun && state.ports.a && st.nodes.some((n) =>
+    n.outputs.some((o) => `${n.name}.${o.port}` === state.ports.a));
   if (imageNow) refreshImages(st.last_run === 'preview');
   showHeader(st);
   setPorts(portChoices(st));
@@ -248,6 +251,7 @@ function wire() {
   new ResizeObserver(scheduleRender).observe($('stage'));
   wireMouse(onRunAnswer);
   wireTime(onRunAnswer);
+  wireEdit(onRunAnswer);
   wireDisplay();
   wirePorts();
   $('save-btn').onclick = saveVariant;

@@ -81,7 +81,8 @@ let svgSig = ''; // the node list the diagram was fetched for
 
 // The diagram for this state: fetched again when the node list changed, else re-marked.
 export function showDiagram(st) {
-  const sig = st.nodes.map((n) => n.name).join(',');
+  // the edges too: a rewired input (edit.js) changes the drawing, not the node list
+  const sig = st.nodes.map((n) => `${n.name}<${n.inputs.map((i) => i.from).join('+')}`).join(',');
   if (sig !== svgSig) loadDiagram(sig); else markDiagram();
 }
 
