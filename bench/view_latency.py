@@ -12,7 +12,12 @@ Prints the median, minimum and maximum of each, in ms. Measures; asserts nothing
 
   bench/view_latency.py [--bin build/ssgraph] [--graph graphs/ssdo_realtime.graph]
                         [--size 640x360] [--param do.radius] [--values 0.3,0.4,...]
-                        [--port img.out] [--runs 21]
+                        [--port img.out] [--runs 21] [--every-node]
+
+--every-node times, instead, a change of one number parameter of every node that has one
+(its first float, else its first int: the value moved a tenth of its slider's range up and
+back), --runs changes each, and prints each node's median round trip over the time of the
+nodes that ran, and the median over the nodes.
 """
 import argparse
 import json
@@ -22,6 +27,7 @@ import statistics
 import subprocess
 import sys
 import time
+import urllib.error
 import urllib.request
 
 
@@ -65,6 +71,53 @@ def orbit(camera, angle):
                                                   camera["fov_y"])
 
 
+def nudged(p):
+    """Two values of number parameter p a tenth of its slider's range apart, or None."""
+    lo, hi = p.get("soft_min"), p.get("soft_max")
+    if lo is None or hi is None or not hi > lo:
+        return None
+    v = float(p["value"])
+    step = (hi - lo) / 10
+    w = v + step if v + step <= hi else v - step
+    if p["type"] == "int":
+        v, w = int(round(v)), int(round(w))
+        if v == w:
+            w = v + 1 if v + 1 <= hi else v - 1
+        return [str(v), str(w)]
+    return ["%.6g" % v, "%.6g" % w]
+
+
+def every_node(base, token, args):
+    """Per node: the median round trip over the ran nodes' time for its first number
+    parameter; returns the medians."""
+    state = json.loads(request(base, token, "/api/state"))
+    medians = []
+    for node in state["nodes"]:
+        nums = [p for kind in ("float", "int") for p in node["params"] if p["type"] == kind]
+        values = next((v for v in map(nudged, nums) if v), None)
+        if not values:
+            continue
+        param = next(p for p in nums if nudged(p) == values)["name"]
+        ratios, own = [], []
+        for i in range(args.runs + 1):
+            body = "%s.%s=%s" % (node["name"], param, values[(i + 1) % 2])
+            try:
+                ms, answer = timed(lambda: request(base, token, "/api/set", body))
+            except urllib.error.HTTPError as e:  # a value the node's checks refuse here
+                print("%-28s refused: %s" % (body, json.loads(e.read())["error"][:120]))
+                break
+            ms2, _ = timed(lambda: request(base, token, "/api/image?port=" + args.port))
+            took = sum(n["ms"] for n in json.loads(answer)["nodes"] if n["ran"])
+            if i and took > 0:
+                ratios.append((ms + ms2) / took)
+                own.append(took)
+        if ratios:
+            medians.append(statistics.median(ratios))
+            print("%-28s nodes that ran %7.1f ms   round trip / that %.2fx" %
+                  ("%s.%s" % (node["name"], param), statistics.median(own), medians[-1]))
+    print("median over %d nodes: %.2fx" % (len(medians), statistics.median(medians)))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bin", default="build/ssgraph")
@@ -75,8 +128,19 @@ def main():
     ap.add_argument("--values", default="0.3,0.4,0.5,0.6")
     ap.add_argument("--port", default="img.out")
     ap.add_argument("--runs", type=int, default=21)
+    ap.add_argument("--every-node", action="store_true",
+                    help="one number parameter of every node (see above)")
     args = ap.parse_args()
     proc, base, token = start(args)
+    if args.every_node:
+        try:
+            print("%s at %s, %d threads, %s shown" % (args.graph, args.size, args.threads,
+                                                      args.port))
+            every_node(base, token, args)
+        finally:
+            proc.terminate()
+            proc.wait()
+        return
     try:
         values = args.values.split(",")
         sets, drags, releases, ran, ratios, own = [], [], [], set(), [], []
