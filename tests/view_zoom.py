@@ -309,6 +309,28 @@ def step_swap(drv):
     drv.find_element(By.TAG_NAME, "body").send_keys("f")
 
 
+def step_keys_after_controls(drv):
+    """Keys reach the page after a list was used with the mouse, and after a press on the
+    image took the keyboard from a text box (issue 46's newcomer pass: H after choosing a
+    port went to the list's type-ahead and picked port h.depth)."""
+    def one_to_one(what):
+        ActionChains(drv).send_keys("1").perform()  # to whatever has the keyboard
+        wait_for(drv, f"key 1 to zoom 1:1 {what}", lambda d: text(d, "zoom-val") == "100%")
+        ActionChains(drv).send_keys("f").perform()
+        wait_for(drv, f"key F to fit {what}", lambda d: view_of(d) == (1.0, 0.5, 0.5))
+    select(drv, "port-a", "g.direct")
+    # as a mouse chooses: a press on the list (it opens), then the choice
+    ActionChains(drv).click(drv.find_element(By.ID, "port-a")).perform()
+    select(drv, "port-a", "img.out")
+    one_to_one("after choosing port A in its list")
+    box = drv.find_element(By.ID, "ref-path")
+    box.click()
+    ActionChains(drv).move_to_element(drv.find_element(By.ID, "view")).click().perform()
+    one_to_one("after a press on the image took the keyboard from the path box")
+    if box.get_attribute("value"):
+        fail(f"keys meant for the page went into the path box: {box.get_attribute('value')!r}")
+
+
 def step_reference(drv):
     """An EXR of img.out opens as B and the reference: its metrics are 0 and 1, A - B is 0;
     a missing file and a file that is no EXR show their errors."""
@@ -342,7 +364,8 @@ def step_reference(drv):
 def main():
     with open(OUT + "/notes.txt", "w") as f:
         f.write("not an image\n")
-    return run_steps((step_load, step_zoom, step_diff, step_swap, step_reference))
+    return run_steps((step_load, step_zoom, step_diff, step_swap, step_keys_after_controls,
+                      step_reference))
 
 
 if __name__ == "__main__":

@@ -95,11 +95,11 @@ static const char *print_up(FILE *out, const char *indent, const struct ssg_mode
             fprintf(out, "rotate=%s on the mesh line stands it up (the renderer's up is +Y)",
                     turn);
         else if (up->alt_sign)
-            fprintf(out, "upright as loaded if the file was made that way, but the file does "
-                    "not record which way it was made: one made with another up comes out %c%c "
-                    "up, lying on its side, and rotate=%s stands it up (render the scene below "
-                    "and look)", up->alt_sign < 0 ? '-' : '+', axes[up->alt_axis],
-                    rotate_to_y(up->alt_axis, up->alt_sign));
+            fprintf(out, "upright as loaded if the file was made that way;\n%s    but the file "
+                    "does not record which way it was made: one made with another up comes out "
+                    "%c%c up, lying on its side,\n%s    and rotate=%s stands it up (render it "
+                    "and look)", indent, up->alt_sign < 0 ? '-' : '+',
+                    axes[up->alt_axis], indent, rotate_to_y(up->alt_axis, up->alt_sign));
         else
             fprintf(out, "upright as loaded, no rotate needed (a Z-up rotate would lay it on "
                     "its back)");

@@ -271,6 +271,22 @@ function wire() {
     if (KEYS[ev.key] && !typing && !ev.ctrlKey && !ev.metaKey && !ev.altKey) KEYS[ev.key]();
   });
   $('save-name').addEventListener('keydown', (ev) => { if (ev.key === 'Enter') saveVariant(); });
+  releaseFocus();
+}
+
+// A list, checkbox, slider or button used with the mouse gives the keyboard back to the
+// page: a list kept it for its type-ahead (H chose port h.depth instead of going home), and
+// a focused checkbox took the space of a space + drag (A/B turned on, the camera orbited).
+// Keyboard use (Tab, arrows, Enter) keeps the focus where it is.
+function releaseFocus() {
+  let pointed = null; // what the last mouse press was on
+  document.addEventListener('pointerdown', (ev) => { pointed = ev.target; }, true);
+  const used = (ev, kinds) => ev.target.matches && ev.target.matches(kinds) &&
+    pointed && (pointed === ev.target || ev.target.contains(pointed));
+  document.addEventListener('change', (ev) => {
+    if (used(ev, 'select, input[type=checkbox], input[type=range]')) ev.target.blur();
+  });
+  document.addEventListener('click', (ev) => { if (used(ev, 'button')) ev.target.blur(); });
 }
 
 async function start() {

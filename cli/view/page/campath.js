@@ -40,6 +40,7 @@ function showKeys() {
       const t = Number(time.value);
       if (time.value.trim() !== '' && Number.isFinite(t) && t >= 0) k.time = t;
       else time.value = num(k.time);
+      showCount();
     });
     const p = k.cam.position.map((x) => x.toFixed(2)).join(', ');
     const drop = document.createElement('button');
@@ -52,7 +53,18 @@ function showKeys() {
     return tr;
   });
   $('path-keys').tBodies[0].replaceChildren(...rows);
-  $('path-count').textContent = `${keys.length} key${keys.length === 1 ? '' : 's'}`;
+  showCount();
+}
+
+// How many keys, and how many frames `run --frames N` needs to fly the whole path: keys 1 s
+// apart are 30 frames apart, and three keys run with --frames 3 gave three near-identical
+// images (issue 46's newcomer pass).
+function showCount() {
+  const end = keys.length ? Math.max(...keys.map((k) => k.time)) : 0;
+  $('path-count').textContent = `${keys.length} key${keys.length === 1 ? '' : 's'}` +
+    (keys.length > 1 ? `, to ${num(end)} s: --frames ${Math.round(end * 30) + 1} at 30 fps` : '');
+  $('path-count').title = 'frame f of `ssgraph run --frames N` is at f / fps seconds: 30 fps, ' +
+    'or the scene\'s frame_rate';
 }
 
 // The keys as the endpoint takes them: 11 numbers a key, keys apart by ';', by time;

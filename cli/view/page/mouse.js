@@ -50,6 +50,10 @@ function dragMode(ev) {
 }
 
 function onPointerDown(ev) {
+  // the image takes the keyboard: a port list or a number box kept it after use, and H, F,
+  // 1, X or WASD went to the list's type-ahead (H picked port h.depth) or into the box
+  // (issue 46's newcomer pass); docs/viewer.md, "Keys"
+  $('view').focus({ preventScroll: true });
   const mode = dragMode(ev);
   if (mode !== 'divider' && mode !== 'image' && !state.cam) {
     noCamera();

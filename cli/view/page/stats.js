@@ -71,12 +71,16 @@ export function imageStats(img, rect = null) {
 
 // Counts of channel ch's finite values (of the pixels in rect, null: all) in `bins` equal
 // bins over [lo, hi]; values outside count in the end bins (what the display clips shows
-// there).
-export function histogram(img, ch, lo, hi, bins, rect = null) {
-  return cached(histOf, img, `${rect ? rect.join() : 'all'} ${ch} ${lo} ${hi} ${bins}`, () => {
+// there). skipZero: exact 0s are not counted at all, inside the range or out: a depth's
+// background 0s, below an auto range of 2.4 .. 5.4, piled into the first bin, which then set
+// the scale, and the surfaces' depths showed as a few dots (issue 46).
+export function histogram(img, ch, lo, hi, bins, rect = null, skipZero = false) {
+  const key = `${rect ? rect.join() : 'all'} ${ch} ${lo} ${hi} ${bins} ${skipZero}`;
+  return cached(histOf, img, key, () => {
     const counts = new Uint32Array(bins), k = hi > lo ? bins / (hi - lo) : 0;
     eachValue(img, ch, rect, (v) => {
-      if (Number.isFinite(v)) counts[Math.max(0, Math.min(bins - 1, Math.floor((v - lo) * k)))]++;
+      if (!Number.isFinite(v) || (skipZero && v === 0)) return;
+      counts[Math.max(0, Math.min(bins - 1, Math.floor((v - lo) * k)))]++;
     });
     return counts;
   });
@@ -92,10 +96,7 @@ export function drawHistogram(canvas, img, chs, lo, hi, skipZero, rect = null) {
   const colours = chs.length > 1 ? ['#e05050', '#50c050', '#5080f0', '#c0c0c0'] : ['#d0d0d0'];
   g.globalCompositeOperation = 'lighter';
   chs.forEach((ch, j) => {
-    const counts = histogram(img, ch, lo, hi, W, rect).slice(); // the cached counts stay whole
-    if (skipZero && lo <= 0 && hi >= 0) {
-      counts[Math.min(W - 1, Math.floor(-lo * W / (hi - lo || 1)))] = 0;
-    }
+    const counts = histogram(img, ch, lo, hi, W, rect, skipZero);
     const top = Math.max(1, ...counts);
     g.fillStyle = colours[j % colours.length];
     for (let x = 0; x < W; x++) {
