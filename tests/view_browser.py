@@ -51,6 +51,11 @@ def step_load(drv):
     if "(not computed)" in sel.first_selected_option.text or \
             "g.motion (not computed)" not in labels:
         fail(f"port A opened on '{sel.first_selected_option.text}' of {labels}")
+    # the left column fits its width: the edit row's add button pushed it to scroll sideways
+    wide = drv.execute_script("const l = document.getElementById('left');"
+                              "return [l.scrollWidth, l.clientWidth];")
+    if wide[0] > wide[1]:
+        fail(f"the left column scrolls sideways: {wide[0]} px of content in {wide[1]}")
     st = server_state(drv)
     if not st or not st.get("camera"):
         fail(f"the state has no camera: {st}")
