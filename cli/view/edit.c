@@ -16,26 +16,22 @@
 
 #include "../text_out.h"
 
-/* The parameter changes of the command line and of this session as set lines. */
-static char *set_lines(const struct view_session *s)
+/* The parameter changes of the command line and of this session as set lines (variant.c's,
+   with its refusal of control characters), malloc'd into *text. */
+static enum ssg_err set_lines(const struct view_session *s, char **text, struct ssg_diags *d)
 {
-    char *text = NULL;
     size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
+    FILE *f = open_memstream(text, &len);
     if (!f)
-        return NULL;
-    for (int i = 0; i < s->args->ov.set_count; i++) {
-        const char *a = s->args->ov.sets[i], *eq = strchr(a, '=');
-        if (eq)
-            fprintf(f, "set %.*s = %s\n", (int)(eq - a), a, eq + 1);
+        return view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
+    enum ssg_err e = view_set_lines(f, s, d);
+    if (fclose(f) && !e)
+        e = view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
+    if (e) {
+        free(*text);
+        *text = NULL;
     }
-    for (int i = 0; i < s->set_count; i++)
-        fprintf(f, "set %s = %s\n", s->sets[i].key, s->sets[i].value);
-    if (fclose(f)) {
-        free(text);
-        return NULL;
-    }
-    return text;
+    return e;
 }
 
 /* The server's command line as statements, after a comment; "" when it gave none. */
@@ -58,11 +54,10 @@ static enum ssg_err command_tail(const struct view_session *s, FILE *out, struct
 static enum ssg_err compose(const struct view_session *s, char **text, size_t *len,
                             struct ssg_diags *d)
 {
-    char *sets = set_lines(s), *folded = NULL;
-    if (!sets)
-        return view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
-    enum ssg_err e = *sets ? ssg_graph_text_edit(s->args->files[0], s->text, sets, &folded, d)
-                           : SSG_OK;
+    char *sets = NULL, *folded = NULL;
+    enum ssg_err e = set_lines(s, &sets, d);
+    if (!e && sets && *sets)
+        e = ssg_graph_text_edit(s->args->files[0], s->text, sets, &folded, d);
     free(sets);
     if (e)
         return e;

@@ -133,6 +133,10 @@ enum ssg_err view_session_save_edited(struct view_session *s, const char *name, 
 enum ssg_err view_command_line(FILE *f, const struct ssg_overrides *ov,
                                struct ssg_diags *diags);
 void view_camera_comment(FILE *f, const struct view_session *s);
+/* The parameter changes of the command line and of this session as `set KEY = VALUE`
+ * lines; SSG_E_USAGE when a key or value holds a control character (the core refuses such
+ * values; this keeps any that got by from becoming a line of its own). */
+enum ssg_err view_set_lines(FILE *f, const struct view_session *s, struct ssg_diags *diags);
 
 /* Adds an error without a file position (file "<view>") to d; returns code. */
 enum ssg_err view_fail(struct ssg_diags *d, enum ssg_err code, const char *fmt, ...)

@@ -147,7 +147,7 @@ static enum ssg_err set_line(FILE *f, const char *key, int key_len, const char *
     return SSG_OK;
 }
 
-static enum ssg_err sets(FILE *f, const struct view_session *s, struct ssg_diags *d)
+enum ssg_err view_set_lines(FILE *f, const struct view_session *s, struct ssg_diags *d)
 {
     enum ssg_err e = SSG_OK;
     for (int i = 0; !e && i < s->args->ov.set_count; i++) {
@@ -189,7 +189,7 @@ static enum ssg_err compose(const struct view_session *s, const char *include, c
     fputc('\n', f);
     enum ssg_err e = view_command_line(f, &s->args->ov, d);
     if (!e)
-        e = sets(f, s, d);
+        e = view_set_lines(f, s, d);
     view_camera_comment(f, s);
     if (fclose(f) && !e)
         e = view_fail(d, SSG_E_NOMEM, "out of memory for the variant");
