@@ -98,14 +98,8 @@ static enum ssg_err compose(const char *scene, const char *keys, char **text, si
     fputc('\n', f);
     if (!key_lines(f, keys, d))
         e = SSG_E_USAGE;
-    if (fclose(f) && !e)
-        e = view_fail(d, SSG_E_NOMEM, "out of memory for the path");
     free(abs);
-    if (e) {
-        free(*text);
-        *text = NULL;
-    }
-    return e;
+    return view_text_close(f, text, e, "the path", d);
 }
 
 enum ssg_err view_session_save_path(const struct view_session *s, const char *name,

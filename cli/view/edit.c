@@ -25,13 +25,7 @@ static enum ssg_err set_lines(const struct view_session *s, char **text, struct 
     if (!f)
         return view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
     enum ssg_err e = view_set_lines(f, s, d);
-    if (fclose(f) && !e)
-        e = view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
-    if (e) {
-        free(*text);
-        *text = NULL;
-    }
-    return e;
+    return view_text_close(f, text, e, "the saved graph", d);
 }
 
 /* The server's command line as statements, after a comment; "" when it gave none. */
@@ -73,13 +67,7 @@ static enum ssg_err compose(const struct view_session *s, char **text, size_t *l
     free(folded);
     e = command_tail(s, f, d);
     view_camera_comment(f, s);
-    if (fclose(f) && !e)
-        e = view_fail(d, SSG_E_NOMEM, "out of memory for the saved graph");
-    if (e) {
-        free(*text);
-        *text = NULL;
-    }
-    return e;
+    return view_text_close(f, text, e, "the saved graph", d);
 }
 
 enum ssg_err view_session_save_edited(struct view_session *s, const char *name, char *path,

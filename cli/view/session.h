@@ -133,6 +133,10 @@ enum ssg_err view_session_save_edited(struct view_session *s, const char *name, 
 enum ssg_err view_command_line(FILE *f, const struct ssg_overrides *ov,
                                struct ssg_diags *diags);
 void view_camera_comment(FILE *f, const struct view_session *s);
+/* Closes f, an open_memstream over *text: SSG_E_NOMEM (out of memory for `what`) when the
+ * stream failed; on any error e, *text freed and NULL. Returns the error. */
+enum ssg_err view_text_close(FILE *f, char **text, enum ssg_err e, const char *what,
+                             struct ssg_diags *diags);
 /* The parameter changes of the command line and of this session as `set KEY = VALUE`
  * lines; SSG_E_USAGE when a key or value holds a control character (the core refuses such
  * values; this keeps any that got by from becoming a line of its own). */

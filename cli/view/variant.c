@@ -160,6 +160,18 @@ enum ssg_err view_set_lines(FILE *f, const struct view_session *s, struct ssg_di
     return e;
 }
 
+enum ssg_err view_text_close(FILE *f, char **text, enum ssg_err e, const char *what,
+                             struct ssg_diags *d)
+{
+    if (fclose(f) && !e)
+        e = view_fail(d, SSG_E_NOMEM, "out of memory for %s", what);
+    if (e) {
+        free(*text);
+        *text = NULL;
+    }
+    return e;
+}
+
 void view_camera_comment(FILE *f, const struct view_session *s)
 {
     if (!s->camera_changed)
@@ -191,13 +203,7 @@ static enum ssg_err compose(const struct view_session *s, const char *include, c
     if (!e)
         e = view_set_lines(f, s, d);
     view_camera_comment(f, s);
-    if (fclose(f) && !e)
-        e = view_fail(d, SSG_E_NOMEM, "out of memory for the variant");
-    if (e) {
-        free(*text);
-        *text = NULL;
-    }
-    return e;
+    return view_text_close(f, text, e, "the variant", d);
 }
 
 /* A new regular file beside path, named path.tmp-PID-N, opened for writing; -1 with errno. */
