@@ -128,6 +128,9 @@ SSG_API enum ssg_err ssg_node_port_info(const char *node, int k, struct ssg_type
 
 /* ---- Editing a graph file's text (`ssgraph view`'s editor, graph_edit.c) */
 
+/* The largest graph file the parser reads, in bytes (a text to edit is read with it). */
+#define SSG_GRAPH_FILE_MAX_BYTES (16 * 1024 * 1024)
+
 /* ssg_graph_load with the top file's text given: `text` stands for the file at `path`
  * (messages name path and the line of text; includes and the scene resolve against
  * path's folder, and included files are read from disk). */

@@ -355,7 +355,8 @@ enum ssg_err view_session_edit(struct view_session *s, const char *edits, struct
     char *base = s->text, *text = NULL, why[256];
     size_t len;
     enum ssg_err e = SSG_OK;
-    if (!base && (e = ssg_input_read(path, 16 << 20, &base, &len, why, sizeof why)))
+    if (!base && (e = ssg_input_read(path, SSG_GRAPH_FILE_MAX_BYTES, &base, &len, why,
+                                     sizeof why)))
         return view_fail(d, e, "cannot read %s: %s", path, why);
     e = ssg_graph_text_edit(path, base, edits, &text, d);
     if (base != s->text)
@@ -372,14 +373,9 @@ enum ssg_err view_session_discard(struct view_session *s, struct ssg_diags *d)
 {
     if (!s->text)
         return view_fail(d, SSG_E_USAGE, "the graph has no edits to discard");
-    char *text = s->text;
-    s->text = NULL;
-    enum ssg_err e = reload_with(s, NULL, d);
-    if (e) {
-        s->text = text;
+    enum ssg_err e = reload_with(s, NULL, d); /* frees the edited text once the file loads */
+    if (e)
         return e;
-    }
-    free(text);
     s->edits = 0;
     watch_files(s, s->g); /* the file as it is now is the one shown */
     return run_graph(s, s->g, 0, d);

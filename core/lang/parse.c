@@ -14,7 +14,7 @@
    are parsed recursively with a 64-value frame on the stack, so nesting is bounded; no real
    file comes near either limit. */
 enum {
-    MAX_FILE_BYTES = 16 * 1024 * 1024,
+    MAX_FILE_BYTES = SSG_GRAPH_FILE_MAX_BYTES,
     MAX_LIST_NESTING = 16,   /* [[...]] levels in one value */
 };
 
