@@ -7,10 +7,9 @@
 // --frames N` flies the path. The keys live in this page only (a reload forgets them).
 import { api, errorText } from './net.js';
 import { state, subscribe } from './state.js';
-import { $ } from './ui.js';
+import { $, wireNumber as num } from './ui.js';
 
 const keys = []; // {time, cam}
-const num = (x) => String(parseFloat(x.toPrecision(8)));
 let autoTimer = 0;
 
 function say(text, bad) {

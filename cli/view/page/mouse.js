@@ -8,7 +8,7 @@ import { orbit, pan, zoom } from './camera.js';
 import { LatestSender } from './net.js';
 import { framePos } from './render.js';
 import { setDivider, setPointer, state, steer } from './state.js';
-import { $ } from './ui.js';
+import { $, wireNumber as num } from './ui.js';
 import { panBy, zoomAt } from './viewport.js';
 
 let drag = null;       // the current canvas drag: {mode, x, y, moved}
@@ -17,7 +17,6 @@ let wheelTimer = null; // the full-size run after a wheel burst
 let camSender = null;
 const ups = [];        // times of the preview images drawn during a drag
 
-const num = (x) => String(parseFloat(x.toPrecision(8)));
 export function sendCamera(preview) {
   const c = state.cam;
   const body = `position=${c.position.map(num)}&target=${c.target.map(num)}` +

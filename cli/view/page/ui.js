@@ -2,6 +2,9 @@
 // module may write to (the busy mark and the request error).
 
 export const $ = (id) => document.getElementById(id);
+// A number as the page sends it to the server (a camera, a key of a path): 8 significant
+// digits, no trailing zeros.
+export const wireNumber = (x) => String(parseFloat(x.toPrecision(8)));
 export const fmt = (v, d = 1) => (typeof v === 'number' ? v.toFixed(d) : '-');
 
 let busyCount = 0;
