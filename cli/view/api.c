@@ -258,18 +258,19 @@ char *view_image_bytes(struct view_session *s, const char *port, int preview, si
     return out;
 }
 
-/* The compare node on port a against port ref (full size): its outputs, the caller
-   releases them. */
+/* The compare node on port a against port ref (full size), with the parameter `set`
+   ("flip=off": no FLIP, which costs 0.3 s at 640x360 and which the RMSE and SSIM do not
+   need); its outputs, the caller releases them. */
 static enum ssg_err compare_ports(struct view_session *s, const char *a,
-                                  const struct ssg_image *ref, struct ssg_outputs *out,
-                                  struct ssg_diags *d)
+                                  const struct ssg_image *ref, const char *set,
+                                  struct ssg_outputs *out, struct ssg_diags *d)
 {
     struct ssg_image *img;
     enum ssg_err e = view_session_image(s, a, 0, &img, d);
     if (e)
         return e;
     struct ssg_binding in[2] = {{"a", img}, {"b", ref}};
-    e = ssg_node_run("compare", in, 2, NULL, 0, NULL, out, d);
+    e = ssg_node_run("compare", in, 2, &set, 1, NULL, out, d);
     ssg_image_destroy(&img);
     return e;
 }
@@ -281,7 +282,7 @@ char *view_flip_bytes(struct view_session *s, const char *a, const char *b, size
     if (view_session_image(s, b, 0, &ref, d))
         return NULL;
     struct ssg_outputs out = {0};
-    enum ssg_err e = compare_ports(s, a, ref, &out, d);
+    enum ssg_err e = compare_ports(s, a, ref, "flip=auto", &out, d);
     ssg_image_destroy(&ref);
     char *bytes = NULL;
     for (int i = 0; !e && i < out.count; i++)
@@ -298,7 +299,7 @@ static enum ssg_err json_score(FILE *f, struct view_session *s, const struct ssg
                                const char *port, struct ssg_diags *d)
 {
     struct ssg_outputs out = {0};
-    enum ssg_err e = compare_ports(s, port, ref, &out, d);
+    enum ssg_err e = compare_ports(s, port, ref, "flip=off", &out, d);
     if (e)
         return e;
     double rmse = NAN, ssim = NAN;
