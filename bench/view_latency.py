@@ -8,6 +8,8 @@ acceptance: a parameter change shows its image within 150 ms, a camera drag keep
   drag     POST /api/camera with preview=1 (an orbit step), then the preview image: the
            updates a second a drag keeps
   release  POST /api/camera with preview=0, then the full image
+  metrics  GET /api/metrics of the shown port against itself, as A and B (the A/B view's
+           numbers after each run)
 Prints the median, minimum and maximum of each, in ms. Measures; asserts nothing.
 
   bench/view_latency.py [--bin build/ssgraph] [--graph graphs/ssdo_realtime.graph]
@@ -165,6 +167,8 @@ def main():
             ms, _ = timed(lambda: request(base, token, "/api/camera", body))
             ms2, _ = timed(lambda: request(base, token, "/api/image?port=" + args.port))
             releases.append(ms + ms2)
+        q = "/api/metrics?ref=%s&a=%s&b=%s" % (args.port, args.port, args.port)
+        metrics = [timed(lambda: request(base, token, q))[0] for _ in range(max(3, args.runs // 4))]
     finally:
         proc.terminate()
         proc.wait()
@@ -178,6 +182,7 @@ def main():
     report("drag", drags)
     print("         %.1f updates a second (median)" % (1000.0 / statistics.median(drags)))
     report("release", releases)
+    report("metrics", metrics)
 
 
 if __name__ == "__main__":
