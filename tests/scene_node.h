@@ -142,20 +142,22 @@ static inline void *node_params(const struct ssg_node_desc *desc, const char *co
 /* Runs the node on `backend` with the scene; `in` in port order (NULL = unconnected),
    `out` allocated by the caller to the node's output shapes. On GL the outputs come back
    to the CPU and every GL copy is freed. Returns the node's error (printed). prev is the
-   previous frame's camera (ctx->prev_camera; NULL = the scene's, a first frame). */
-static inline enum ssg_err node_run_scene_prev(const struct ssg_node_desc *desc,
-                                               const struct ssg_scene *scene,
-                                               const struct ssg_camera *prev,
-                                               const struct ssg_frame *frame,
-                                               const void *params,
-                                               const struct ssg_image *const *in,
-                                               struct ssg_image *const *out,
-                                               enum ssg_backend backend)
+   previous frame's camera (ctx->prev_camera; NULL = the scene's, a first frame), frame_index
+   ctx->frame_index. */
+static inline enum ssg_err node_run_scene_at(const struct ssg_node_desc *desc,
+                                             const struct ssg_scene *scene,
+                                             const struct ssg_camera *prev,
+                                             const struct ssg_frame *frame, int frame_index,
+                                             const void *params,
+                                             const struct ssg_image *const *in,
+                                             struct ssg_image *const *out,
+                                             enum ssg_backend backend)
 {
     struct ssg_diags d = {0};
     struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = frame,
                                .scene = scene, .out_dir = ".", .diags = &d,
-                               .prev_camera = prev ? prev : scene ? &scene->camera : NULL};
+                               .prev_camera = prev ? prev : scene ? &scene->camera : NULL,
+                               .frame_index = frame_index};
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(desc, &io, &shapes);
@@ -181,6 +183,20 @@ static inline enum ssg_err node_run_scene_prev(const struct ssg_node_desc *desc,
     ssg_diags_print(&d, stderr);
     return e;
 }
+
+static inline enum ssg_err node_run_scene_prev(const struct ssg_node_desc *desc,
+                                               const struct ssg_scene *scene,
+                                               const struct ssg_camera *prev,
+                                               const struct ssg_frame *frame,
+                                               const void *params,
+                                               const struct ssg_image *const *in,
+                                               struct ssg_image *const *out,
+                                               enum ssg_backend backend)
+{
+    return node_run_scene_at(desc, scene, prev, frame, 0, params, in, out, backend);
+}
+
+/* node_run_scene_at in frame 0 with the scene's camera as the previous one. */
 
 static inline enum ssg_err node_run_scene(const struct ssg_node_desc *desc,
                                           const struct ssg_scene *scene,

@@ -221,13 +221,14 @@ static void upsample_cases(void)
 }
 
 /* downsample: depths from a few levels (ties of median distance), background pixels and a
-   background block; every port connected or only depth and normal. */
+   background block; every port connected (motion's rescaling included) or only depth and
+   normal. */
 static void downsample_case(const char *label, int w, int h, int factor, int ports)
 {
-    static const char *const names[6] = {"depth", "position", "normal", "albedo", "direct",
-                                         "environment"};
+    static const char *const names[7] = {"depth", "position", "normal", "albedo", "direct",
+                                         "environment", "motion"};
     const struct parity_tol exact = parity_tol_of("downsample");
-    struct ssg_image *im[6];
+    struct ssg_image *im[7];
     im[0] = ssg_image_create(w, h, 1);
     for (size_t o = 0; o < (size_t)w * h; o++) {
         unsigned q = (unsigned)(hash01((unsigned)o) * 5.0f);
@@ -236,8 +237,8 @@ static void downsample_case(const char *label, int w, int h, int factor, int por
     for (int y = 0; y < 4; y++)
         for (int x = 8; x < 12; x++)
             im[0]->data[(size_t)y * w + x] = 0.0f;
-    struct ssg_binding b[6] = {{names[0], im[0]}};
-    for (int k = 1; k < 6; k++) {
+    struct ssg_binding b[7] = {{names[0], im[0]}};
+    for (int k = 1; k < 7; k++) {
         im[k] = noise_image(w, h, 3, 10u + (unsigned)k);
         b[k] = (struct ssg_binding){names[k], im[k]};
     }
@@ -247,7 +248,7 @@ static void downsample_case(const char *label, int w, int h, int factor, int por
     if (ports == 2)
         b[1] = b[2]; /* depth and normal only */
     parity_node(label, "downsample", b, ports, sets, 1, NULL, exact);
-    for (int k = 0; k < 6; k++)
+    for (int k = 0; k < 7; k++)
         ssg_image_destroy(&im[k]);
 }
 
@@ -256,9 +257,9 @@ int main(void)
     bilateral_cases();
     atrous_cases();
     upsample_cases();
-    downsample_case("k2 all ports", 64, 48, 2, 6);
-    downsample_case("k2 odd", 61, 37, 2, 6);
+    downsample_case("k2 all ports", 64, 48, 2, 7);
+    downsample_case("k2 odd", 61, 37, 2, 7);
     downsample_case("k4 odd depth+normal", 63, 45, 4, 2);
-    downsample_case("k4 all ports", 64, 48, 4, 6);
+    downsample_case("k4 all ports", 64, 48, 4, 7);
     return check_report();
 }

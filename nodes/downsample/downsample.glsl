@@ -6,11 +6,12 @@
 // Inputs by their port names, outputs as dst_<port> (ssg_gl_ports); p_factor, the block
 // side (2 or 4), from the parameter table.
 uniform sampler2DArray depth;
-uniform sampler2DArray position, normal, albedo, direct, environment;
-uniform bool position_bound, normal_bound, albedo_bound, direct_bound, environment_bound;
+uniform sampler2DArray position, normal, albedo, direct, environment, motion;
+uniform bool position_bound, normal_bound, albedo_bound, direct_bound, environment_bound,
+    motion_bound;
 layout(r32f) uniform writeonly image2DArray dst_depth;
 layout(r32f) uniform writeonly image2DArray dst_position, dst_normal, dst_albedo, dst_direct,
-    dst_environment;
+    dst_environment, dst_motion;
 #pragma ssg_params
 
 const int MAX_BLOCK = 16;
@@ -62,4 +63,11 @@ void main()
     COPY3(albedo, q, p);
     COPY3(direct, q, p);
     COPY3(environment, q, p);
+    // motion in output pixels from p's centre, as downsample_cpu.c's rescale_motion (1 / f
+    // is exact for f = 2 or 4, so the products are too)
+    vec3 m = motion_bound ? ssg_load3(motion, q) : vec3(0.0);
+    float inv_f = 1.0 / float(p_factor);
+    if (motion_bound)
+        m.xy = m.xy * inv_f + ((vec2(q) + 0.5) * inv_f - (vec2(p) + 0.5));
+    SSG_STORE3(dst_motion, p, m);
 }

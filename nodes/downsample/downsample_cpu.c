@@ -65,6 +65,24 @@ static size_t representative(const struct job *j, int bx, int by)
     return best;
 }
 
+/* The copied motion's x and y in output pixels, measured from the output pixel's centre:
+   the chosen pixel q moved by m (input pixels) lies at (q + 0.5 + m) / f in the previous
+   frame's output grid, so from the centre b + 0.5 that is m / f + ((q + 0.5) / f - (b +
+   0.5)). f is 2 or 4, so / f is an exact product by 1 / f, the same on GL
+   (downsample.glsl). */
+static void rescale_motion(const struct job *j, const size_t *pick, int bx0, int by, int len,
+                           size_t dst)
+{
+    size_t out_plane = (size_t)j->ow * (size_t)j->oh;
+    float *mx = j->out[SSG_DOWNSAMPLE_OUT_MOTION]->data + dst, *my = mx + out_plane;
+    float inv_f = 1.0f / (float)j->factor;
+    for (int i = 0; i < len; i++) {
+        float qx = (float)(pick[i] % (size_t)j->w), qy = (float)(pick[i] / (size_t)j->w);
+        mx[i] = mx[i] * inv_f + ((qx + 0.5f) * inv_f - ((float)(bx0 + i) + 0.5f));
+        my[i] = my[i] * inv_f + ((qy + 0.5f) * inv_f - ((float)by + 0.5f));
+    }
+}
+
 /* Representatives are picked for a run of CHUNK blocks, then each plane copies that run:
    one read and one write stream at a time, where copying all planes pixel by pixel would
    keep 32 streams open. */
@@ -90,6 +108,8 @@ static void band(void *user, int y0, int y1)
                     for (int i = 0; i < len; i++)
                         out[i] = in[pick[i]];
                 }
+            if (j->in[SSG_DOWNSAMPLE_IN_MOTION])
+                rescale_motion(j, pick, bx0, by, len, dst);
         }
 }
 

@@ -95,7 +95,7 @@ static void test_blocks2(void)
     struct gb g = make_gb(4, 4, depth);
     struct ssg_outputs out;
     if (run(&g, 2, 6, &out)) {
-        CHECK_EQ(out.count, 6);
+        CHECK_EQ(out.count, 7);
         for (int k = 0; k < 6; k++) {
             CHECK_EQ(out.images[k]->width, 2);
             CHECK_EQ(out.images[k]->height, 2);
@@ -107,6 +107,35 @@ static void test_blocks2(void)
         check_copy(&g, &out, 1, 1, 2, 2);
         ssg_outputs_release(&out);
     }
+    free_gb(&g);
+}
+
+/* Motion: test_blocks2's frame with the same motion (3, -2, 7) at every pixel. Block (0,0)
+   chose pixel (1,0): its centre (1.5, 0.5) moved to (4.5, -1.5), in the half-size grid
+   (2.25, -0.75), which from the block's centre (0.5, 0.5) is (1.75, -1.25). Block (1,0)
+   chose (2,1): (2.5, 1.5) -> (5.5, -0.5) -> (2.75, -0.25), from (1.5, 0.5): (1.25, -0.75).
+   z, the previous depth, is copied. */
+static void test_motion(void)
+{
+    static const float depth[16] = {5, 1, 2, 2.5f, 1, 1, 2.25f, 9, 0, 0, 0, 0, 0, 3, 0, 0};
+    struct gb g = make_gb(4, 4, depth);
+    struct ssg_image *motion = ssg_image_create(4, 4, 3);
+    static const float m[3] = {3, -2, 7};
+    for (int c = 0; c < 3; c++)
+        for (int o = 0; o < 16; o++)
+            motion->data[c * 16 + o] = m[c];
+    struct ssg_binding b[2] = {{"depth", g.im[0]}, {"motion", motion}};
+    const char *sets[] = {"factor=2"};
+    struct ssg_diags diags = {0};
+    struct ssg_outputs out;
+    CHECK_EQ(ssg_node_run("downsample", b, 2, sets, 1, NULL, &out, &diags), SSG_OK);
+    if (out.count == 7) {
+        const float *mo = out.images[6]->data; /* 2 x 2, planes of 4 */
+        CHECK(mo[0] == 1.75f && mo[4] == -1.25f && mo[8] == 7.0f);
+        CHECK(mo[1] == 1.25f && mo[5] == -0.75f && mo[9] == 7.0f);
+        ssg_outputs_release(&out);
+    }
+    ssg_image_destroy(&motion);
     free_gb(&g);
 }
 
@@ -170,7 +199,7 @@ static void test_unconnected(void)
     struct gb g = make_gb(3, 2, depth);
     struct ssg_outputs out;
     if (run(&g, 2, 1, &out)) {
-        CHECK_EQ(out.count, 6);
+        CHECK_EQ(out.count, 7);
         for (int k = 1; k < 6; k++) {
             CHECK_EQ(out.images[k]->width, 2);
             CHECK_EQ(out.images[k]->height, 1);
@@ -265,6 +294,7 @@ int main(void)
 {
     test_blocks2();
     test_block4();
+    test_motion();
     test_odd_sizes();
     test_unconnected();
     test_reprojection(96, 64);

@@ -1,6 +1,7 @@
 /* rsm.c - the `rsm` node's descriptor, check and prepare: one diffuse bounce of the scene's
  * lights from their reflective shadow maps. Method and conventions: README.md. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "rsm.h"
 #include "common/random.h"
@@ -83,6 +84,13 @@ static void pack_face(const struct ssg_lightmap_face *f, int res, float *out)
     out[15] = 0.0f;
 }
 
+/* Which draw of each vis_stride a tile cell tests, from its offset (rsm.h's vis_phase). */
+static void set_phases(struct ssg_rsm_consts *c)
+{
+    for (int t = 0; t < SSG_RSM_TILE * SSG_RSM_TILE; t++)
+        c->vis_phase[t] = (int)(c->offset[t] * (SSG_RSM_TILE * SSG_RSM_TILE)) % c->vis_stride;
+}
+
 /* Which draws test visibility (rsm.h's vis_stride, vis_tested) and the distance field's
    grid, from the scene. A scene without triangles has nothing to occlude: vis stays 0. */
 static void prepare_visibility(const struct ssg_scene *scene, const struct ssg_rsm_params *p,
@@ -98,8 +106,34 @@ static void prepare_visibility(const struct ssg_scene *scene, const struct ssg_r
         c->grid_lo[k] = f->lo[k];
     }
     c->grid_inv = f ? 1.0f / f->voxel : 0.0f;
-    for (int t = 0; t < SSG_RSM_TILE * SSG_RSM_TILE; t++)
-        c->vis_phase[t] = (int)(c->offset[t] * (SSG_RSM_TILE * SSG_RSM_TILE)) % c->vis_stride;
+    set_phases(c);
+}
+
+/* The seed of a frame's offset tile: the graph's, or with turn=true that mixed with the
+   frame index (a Weyl step, then make_offsets' own mixing), a new tile every frame. */
+static uint64_t tile_seed(const struct ssg_node_ctx *ctx, const struct ssg_rsm_params *p)
+{
+    uint64_t seed = ctx->frame ? ctx->frame->seed : 1;
+    if (p->turn)
+        seed ^= (uint64_t)(ctx->frame_index + 1) * 0x9E3779B97F4A7C15ull;
+    return seed;
+}
+
+enum ssg_err ssg_rsm_run_frame(const struct ssg_node_ctx *ctx, const void *consts,
+                               const struct ssg_io *io, ssg_rsm_backend_run run)
+{
+    const struct ssg_rsm_consts *c = consts;
+    if (!c->p.turn)
+        return run(ctx, c, io);
+    struct ssg_rsm_consts *turned = malloc(sizeof *turned);
+    if (!turned)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    *turned = *c;
+    make_offsets(tile_seed(ctx, &c->p), turned->offset);
+    set_phases(turned);
+    enum ssg_err e = run(ctx, turned, io);
+    free(turned);
+    return e;
 }
 
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
@@ -139,10 +173,19 @@ static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, 
     c->gl_list_rows = SSG_RSM_GL_ITERATIONS / c->grid_w;
     for (int f = 0; f < c->faces; f++)
         pack_face(&c->face_s[f], c->res, &c->face[16 * f]);
-    make_offsets(ctx->frame ? ctx->frame->seed : 1, c->offset);
+    make_offsets(tile_seed(ctx, p), c->offset);
     c->inv_samples = p->samples > 0 ? 1.0f / (float)p->samples : 0.0f;
     prepare_visibility(ctx->scene, p, c);
     return SSG_OK;
+}
+
+/* The frame index only with turn=true. */
+static unsigned reads_of(const void *params, const struct ssg_scene *scene)
+{
+    const struct ssg_rsm_params *p = params;
+    (void)scene;
+    return SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA |
+           (p->turn ? SSG_READS_FRAME : 0u);
 }
 
 SSG_PARAMS_TABLE(params, ssg_rsm_params, SSG_RSM_PARAMS);
@@ -177,7 +220,9 @@ const struct ssg_node_desc ssg_node_rsm = {
     SSG_NODE_PARAMS(params, struct ssg_rsm_params),
     .consts_size = sizeof(struct ssg_rsm_consts),
     .uniforms = SSG_TABLE(uniforms), /* uniforms_offset 0: rows of the consts' own fields */
-    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
+    .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA |
+             SSG_READS_FRAME,
+    .reads_of = reads_of,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = rsm_flops,

@@ -103,7 +103,12 @@ enum { SSG_RSM_GL_ITERATIONS = 32768 };
       "the trace starts this far off the receiver (along its normal and the segment) and " \
       "ends this far off the VPL, so their own surfaces do not occlude them",              \
       .def = 1.5, .min = 0, .max = 8, .soft_min = 0, .soft_max = 8, .unit = "voxels",      \
-      .gl_in = "rsm.glsl")
+      .gl_in = "rsm.glsl")                                                                 \
+    P(BOOL, turn,                                                                          \
+      "a new offset tile every frame (the seed mixed with the frame index), so a temporal " \
+      "node after the filter gathers other draws each frame; off, every frame makes the "  \
+      "same draws (a still camera keeps the result)",                                     \
+      .def = 0, .host_only = 1)
 SSG_PARAMS_STRUCT(ssg_rsm_params, SSG_RSM_PARAMS);
 
 struct ssg_rsm_consts {
@@ -261,6 +266,14 @@ static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *f
         ;
     return seen;
 }
+
+/* A backend's run with this frame's constants: `consts` itself, or with turn=true a copy
+   whose offset tile and vis_phase are the frame's. */
+typedef enum ssg_err (*ssg_rsm_backend_run)(const struct ssg_node_ctx *ctx,
+                                            const struct ssg_rsm_consts *c,
+                                            const struct ssg_io *io);
+enum ssg_err ssg_rsm_run_frame(const struct ssg_node_ctx *ctx, const void *consts,
+                               const struct ssg_io *io, ssg_rsm_backend_run run);
 
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);

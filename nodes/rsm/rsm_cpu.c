@@ -4,6 +4,7 @@
  * and the list alone, so the output is the same for every thread count. */
 #include "common/vector_loops.h" /* first: see there */
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "rsm.h"
 #include "scene/distance.h"
@@ -260,10 +261,10 @@ static void rows(void *user, int y0, int y1)
         }
 }
 
-enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
-                             const struct ssg_io *io)
+/* One run with the frame's constants (ssg_rsm_run_frame). */
+static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                        const struct ssg_io *io)
 {
-    const struct ssg_rsm_consts *c = consts;
     size_t slot_floats = (size_t)c->slots * SSG_RSM_SLOT;
     size_t bytes = 2 * slot_floats * sizeof(float) +
                    sizeof(int) * SSG_RSM_TILE * SSG_RSM_TILE * (size_t)c->p.samples;
@@ -281,4 +282,10 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                     pos->height, c->vis ? ctx->scene->distance->d : NULL};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;
+}
+
+enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
+                             const struct ssg_io *io)
+{
+    return ssg_rsm_run_frame(ctx, consts, io, run);
 }

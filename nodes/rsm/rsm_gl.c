@@ -14,6 +14,8 @@
  * a two-level prefix sum, row by row, would make it parallel). */
 #include "gl/gl.h"
 #include "gl/gl_scene.h"
+#include <stdlib.h>
+
 #include "rsm.h"
 
 static void cells_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
@@ -84,10 +86,10 @@ static void gather_pass(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     }
 }
 
-enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
-                            const struct ssg_io *io)
+/* The passes of one run with the frame's constants (ssg_rsm_run_frame). */
+static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                        const struct ssg_io *io)
 {
-    const struct ssg_rsm_consts *c = consts;
     int gw = c->grid_w, gh = c->grid_h;
     struct ssg_image *cells = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_CELL_FLOATS);
     struct ssg_image *list = ssg_gl_scratch(ctx, gw, gh, SSG_RSM_SLOT);
@@ -121,4 +123,10 @@ enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_scratch_release(&pick);
     ssg_gl_scratch_release(&acc);
     return e;
+}
+
+enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
+                            const struct ssg_io *io)
+{
+    return ssg_rsm_run_frame(ctx, consts, io, run);
 }

@@ -94,20 +94,31 @@ static inline void gbuf_set(struct gbuf *g, int i, const float x[3], const float
     }
 }
 
-/* Runs rsm on the maps and receivers; returns out (w x h x 3). */
-static inline struct ssg_image *rsm_run(const struct ssg_scene *s, const struct maps *m,
-                                        const struct gbuf *g, int albedo, uint64_t seed,
-                                        const char *const *sets, int set_count,
-                                        enum ssg_backend backend)
+/* Runs rsm on the maps and receivers in frame `frame_index`; returns out (w x h x 3). */
+static inline struct ssg_image *rsm_run_at(const struct ssg_scene *s, const struct maps *m,
+                                           const struct gbuf *g, int albedo, uint64_t seed,
+                                           int frame_index, const char *const *sets,
+                                           int set_count, enum ssg_backend backend)
 {
     struct ssg_frame frame = {g->w, g->h, 45, 0.05f, 100, seed, 0};
     struct ssg_image *out[1] = {ssg_image_create(g->w, g->h, 3)};
     const struct ssg_image *in[SSG_RSM_INPUTS] = {g->position, g->normal, m->depth, m->normal,
                                                   m->flux, albedo ? g->albedo : NULL};
     void *params = node_params(&ssg_node_rsm, sets, set_count);
-    CHECK_EQ(node_run_scene(&ssg_node_rsm, s, &frame, params, in, out, backend), SSG_OK);
+    CHECK_EQ(node_run_scene_at(&ssg_node_rsm, s, NULL, &frame, frame_index, params, in, out,
+                               backend),
+             SSG_OK);
     free(params);
     return out[0];
+}
+
+/* rsm_run_at in frame 0. */
+static inline struct ssg_image *rsm_run(const struct ssg_scene *s, const struct maps *m,
+                                        const struct gbuf *g, int albedo, uint64_t seed,
+                                        const char *const *sets, int set_count,
+                                        enum ssg_backend backend)
+{
+    return rsm_run_at(s, m, g, albedo, seed, 0, sets, set_count, backend);
 }
 
 static inline float px(const struct ssg_image *im, int c, int i)

@@ -75,12 +75,14 @@ static void cube(struct maps *m)
             }
 }
 
-static void run_case(const struct ssg_scene *s, const struct maps *m, const struct gbuf *g,
-                     const char *label, int albedo, const char *const *sets, int set_count,
-                     struct parity_tol tol)
+static void run_case_at(const struct ssg_scene *s, const struct maps *m, const struct gbuf *g,
+                        const char *label, int albedo, int frame, const char *const *sets,
+                        int set_count, struct parity_tol tol)
 {
-    struct ssg_image *cpu = rsm_run(s, m, g, albedo, 7, sets, set_count, SSG_BACKEND_CPU);
-    struct ssg_image *gl = rsm_run(s, m, g, albedo, 7, sets, set_count, SSG_BACKEND_GL);
+    struct ssg_image *cpu = rsm_run_at(s, m, g, albedo, 7, frame, sets, set_count,
+                                       SSG_BACKEND_CPU);
+    struct ssg_image *gl = rsm_run_at(s, m, g, albedo, 7, frame, sets, set_count,
+                                      SSG_BACKEND_GL);
     double peak = 0;
     for (size_t i = 0; i < 3 * (size_t)g->w * g->h; i++)
         peak = cpu->data[i] > peak ? cpu->data[i] : peak;
@@ -88,6 +90,13 @@ static void run_case(const struct ssg_scene *s, const struct maps *m, const stru
     parity_check_output("rsm", label, "out", cpu, gl, tol);
     ssg_image_destroy(&cpu);
     ssg_image_destroy(&gl);
+}
+
+static void run_case(const struct ssg_scene *s, const struct maps *m, const struct gbuf *g,
+                     const char *label, int albedo, const char *const *sets, int set_count,
+                     struct parity_tol tol)
+{
+    run_case_at(s, m, g, label, albedo, 0, sets, set_count, tol);
 }
 
 /* A case's scene (CAMERA's floor plus `extra`), its maps and its receivers. */
@@ -144,6 +153,8 @@ static void test_disc(void)
     run_case(u.s, &u.m, &u.g, "disc 16 draws", 0, drawn, 2, tol);
     const char *coarse[] = {"samples=5", "cell=8", "min_distance=0.2"};
     run_case(u.s, &u.m, &u.g, "disc 5 draws cell 8", 1, coarse, 3, tol);
+    const char *turned[] = {"samples=16", "cell=2", "turn=true"}; /* frame 7's own tile */
+    run_case_at(u.s, &u.m, &u.g, "disc 16 draws turned, frame 7", 0, 7, turned, 3, tol);
     setup_free(&u);
 }
 

@@ -230,27 +230,49 @@ static void receiver(const struct gbuf *g, int i, float x[3], float n[3])
     }
 }
 
+/* The sun scene with a disc of 64 x 64 maps and 8 x 2 receivers spread over it: the
+   sampling tests' case. 0 when the scene does not load. */
+struct disc_case {
+    struct ssg_scene *s;
+    struct maps m;
+    struct gbuf g;
+};
+
+static int disc_case_make(struct disc_case *c)
+{
+    if (!(c->s = sun_scene()))
+        return 0;
+    c->m = maps_make(c->s, 64);
+    disc_maps(&c->m, 1.0f, 1);
+    c->g = gbuf_make(c->s, 8, 2);
+    spread_receivers(&c->g);
+    return 1;
+}
+
+static void disc_case_free(struct disc_case *c)
+{
+    gbuf_free(&c->g);
+    maps_free(&c->m);
+    ssg_scene_destroy(&c->s);
+}
+
 static void test_texel_sum_and_min_distance(void)
 {
-    struct ssg_scene *s = sun_scene();
-    if (!s)
+    struct disc_case dc;
+    if (!disc_case_make(&dc))
         return;
-    struct maps m = maps_make(s, 64);
-    disc_maps(&m, 1.0f, 1);
-    struct gbuf g = gbuf_make(s, 8, 2);
-    spread_receivers(&g);
     const double dists[3] = {0, 0.3, 0.6};
     for (int v = 0; v < 3; v++) {
         char md[64];
         snprintf(md, sizeof md, "min_distance=%g", dists[v]);
         const char *sets[] = {"samples=0", "cell=1", md};
-        struct ssg_image *out = rsm_run(s, &m, &g, 1, 1, sets, 3, SSG_BACKEND_CPU);
+        struct ssg_image *out = rsm_run(dc.s, &dc.m, &dc.g, 1, 1, sets, 3, SSG_BACKEND_CPU);
         double worst = 0;
-        for (int i = 0; i < g.w * g.h; i++) {
+        for (int i = 0; i < dc.g.w * dc.g.h; i++) {
             float x[3], n[3];
-            receiver(&g, i, x, n);
+            receiver(&dc.g, i, x, n);
             for (int c = 0; c < 3; c++) {
-                double want = px(g.albedo, c, i) * texel_sum(&m, x, n, c, dists[v]);
+                double want = px(dc.g.albedo, c, i) * texel_sum(&dc.m, x, n, c, dists[v]);
                 double e = fabs(px(out, c, i) - want) / (want > 1e-6 ? want : 1e-6);
                 worst = e > worst ? e : worst;
             }
@@ -261,16 +283,14 @@ static void test_texel_sum_and_min_distance(void)
         ssg_image_destroy(&out);
     }
     /* a receiver nearer every sender than min_distance gets exactly 0 */
-    struct gbuf near = gbuf_make(s, 1, 1);
+    struct gbuf near = gbuf_make(dc.s, 1, 1);
     gbuf_set(&near, 0, (const float[3]){0, 0.1f, 0}, (const float[3]){0, -1, 0});
     const char *far[] = {"samples=0", "min_distance=1.5"};
-    struct ssg_image *out = rsm_run(s, &m, &near, 0, 1, far, 2, SSG_BACKEND_CPU);
+    struct ssg_image *out = rsm_run(dc.s, &dc.m, &near, 0, 1, far, 2, SSG_BACKEND_CPU);
     CHECK(px(out, 0, 0) == 0.0f && px(out, 1, 0) == 0.0f && px(out, 2, 0) == 0.0f);
     ssg_image_destroy(&out);
     gbuf_free(&near);
-    gbuf_free(&g);
-    maps_free(&m);
-    ssg_scene_destroy(&s);
+    disc_case_free(&dc);
 }
 
 /* Cells of 2 x 2 texels holding flux: the VPL count at cell=2 (one bin each: the normals
@@ -291,33 +311,29 @@ static int vpl_count(const struct maps *m)
 
 static void test_sampling(void)
 {
-    struct ssg_scene *s = sun_scene();
-    if (!s)
+    struct disc_case dc;
+    if (!disc_case_make(&dc))
         return;
-    struct maps m = maps_make(s, 64);
-    disc_maps(&m, 1.0f, 1);
-    struct gbuf g = gbuf_make(s, 8, 2);
-    spread_receivers(&g);
-    int count = vpl_count(&m), np = g.w * g.h;
+    int count = vpl_count(&dc.m), np = dc.g.w * dc.g.h;
     fprintf(stderr, "sampling: %d VPLs\n", count);
     char all[32];
     snprintf(all, sizeof all, "samples=%d", count);
     const char *exact_sets[] = {"samples=0", "cell=2"}, *all_sets[] = {all, "cell=2"};
-    struct ssg_image *exact = rsm_run(s, &m, &g, 1, 1, exact_sets, 2, SSG_BACKEND_CPU);
-    struct ssg_image *every = rsm_run(s, &m, &g, 1, 1, all_sets, 2, SSG_BACKEND_CPU);
+    struct ssg_image *exact = rsm_run(dc.s, &dc.m, &dc.g, 1, 1, exact_sets, 2, SSG_BACKEND_CPU);
+    struct ssg_image *every = rsm_run(dc.s, &dc.m, &dc.g, 1, 1, all_sets, 2, SSG_BACKEND_CPU);
     CHECK(memcmp(exact->data, every->data, sizeof(float) * 3 * (size_t)np) == 0);
     enum { SEEDS = 40 };
     const char *few[] = {"samples=16", "cell=2"};
     double sum[3 * 16] = {0}, sq[3 * 16] = {0};
     for (int seed = 1; seed <= SEEDS; seed++) {
-        struct ssg_image *o = rsm_run(s, &m, &g, 1, (uint64_t)seed, few, 2, SSG_BACKEND_CPU);
+        struct ssg_image *o = rsm_run(dc.s, &dc.m, &dc.g, 1, (uint64_t)seed, few, 2, SSG_BACKEND_CPU);
         for (int k = 0; k < 3 * np; k++) {
             sum[k] += o->data[k];
             sq[k] += (double)o->data[k] * o->data[k];
         }
         if (seed == 1) { /* the same bits on 1 and 2 threads */
             omp_set_num_threads(1);
-            struct ssg_image *one = rsm_run(s, &m, &g, 1, 1, few, 2, SSG_BACKEND_CPU);
+            struct ssg_image *one = rsm_run(dc.s, &dc.m, &dc.g, 1, 1, few, 2, SSG_BACKEND_CPU);
             omp_set_num_threads(2);
             CHECK(memcmp(one->data, o->data, sizeof(float) * 3 * (size_t)np) == 0);
             ssg_image_destroy(&one);
@@ -339,9 +355,54 @@ static void test_sampling(void)
     CHECK(spread / (3 * np) > 1e-4); /* the draws do differ between seeds */
     ssg_image_destroy(&exact);
     ssg_image_destroy(&every);
-    gbuf_free(&g);
-    maps_free(&m);
-    ssg_scene_destroy(&s);
+    disc_case_free(&dc);
+}
+
+/* turn=true: each frame draws with its own tile, so frames differ and their mean over
+   frames, with one seed, is the exact VPL sum within a few standard errors (the seeds'
+   check above, over frames); turn=false gives every frame the same bytes. (test_gl_rsm.c
+   checks that GL turns the same tile.) */
+static void test_turn(void)
+{
+    struct disc_case dc;
+    if (!disc_case_make(&dc))
+        return;
+    int np = dc.g.w * dc.g.h;
+    size_t bytes = sizeof(float) * 3 * (size_t)np;
+    const char *exact_sets[] = {"samples=0", "cell=2"};
+    const char *still[] = {"samples=16", "cell=2"};
+    const char *turned[] = {"samples=16", "cell=2", "turn=true"};
+    struct ssg_image *exact = rsm_run(dc.s, &dc.m, &dc.g, 1, 1, exact_sets, 2, SSG_BACKEND_CPU);
+    struct ssg_image *a = rsm_run_at(dc.s, &dc.m, &dc.g, 1, 1, 0, still, 2, SSG_BACKEND_CPU);
+    struct ssg_image *b = rsm_run_at(dc.s, &dc.m, &dc.g, 1, 1, 5, still, 2, SSG_BACKEND_CPU);
+    CHECK(memcmp(a->data, b->data, bytes) == 0);
+    enum { FRAMES = 40 };
+    double sum[3 * 16] = {0}, sq[3 * 16] = {0};
+    int differ = 0;
+    for (int f = 0; f < FRAMES; f++) {
+        struct ssg_image *o = rsm_run_at(dc.s, &dc.m, &dc.g, 1, 1, f, turned, 3, SSG_BACKEND_CPU);
+        differ += memcmp(o->data, a->data, bytes) != 0;
+        for (int k = 0; k < 3 * np; k++) {
+            sum[k] += o->data[k];
+            sq[k] += (double)o->data[k] * o->data[k];
+        }
+        ssg_image_destroy(&o);
+    }
+    double worst = 0;
+    for (int k = 0; k < 3 * np; k++) {
+        double mean = sum[k] / FRAMES, var = (sq[k] / FRAMES - mean * mean) * FRAMES / (FRAMES - 1);
+        double se = sqrt(var > 0 ? var / FRAMES : 0);
+        double z = fabs(mean - exact->data[k]) / (se + 1e-6 * exact->data[k] + 1e-12);
+        worst = z > worst ? z : worst;
+    }
+    fprintf(stderr, "turn: %d of %d frames differ from the still tile; largest |mean over "
+            "frames - exact| %.2f standard errors\n", differ, FRAMES, worst);
+    CHECK(differ >= FRAMES - 2);
+    CHECK(worst < 4.0);
+    ssg_image_destroy(&a);
+    ssg_image_destroy(&b);
+    ssg_image_destroy(&exact);
+    disc_case_free(&dc);
 }
 
 static void test_refusals(void)
@@ -400,6 +461,7 @@ int main(void)
     test_disc();
     test_texel_sum_and_min_distance();
     test_sampling();
+    test_turn();
     test_refusals();
     return check_report();
 }

@@ -21,6 +21,12 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
     const struct ssg_shape *im = &in[SSG_TEMPORAL_IN_IN], *im2 = &in[SSG_TEMPORAL_IN_IN2];
     const struct ssg_shape *hist = &in[SSG_TEMPORAL_IN_HISTORY];
     const struct ssg_shape *hist2 = &in[SSG_TEMPORAL_IN_HISTORY2];
+    /* The shapes first: the graph's quiet first pass (graph_check.c) keeps them when the
+       history is not known yet, and prev(length) must then have in's size too. */
+    out[SSG_TEMPORAL_OUT_OUT] = *im;
+    out[SSG_TEMPORAL_OUT_OUT2] = im2->channels != 0 ? *im2 : *im;
+    out[SSG_TEMPORAL_OUT_LENGTH].width = im->width; /* in's size: a low-res accumulation */
+    out[SSG_TEMPORAL_OUT_LENGTH].height = im->height;
     const char *e = NULL;
     if (hist->channels != im->channels || !ssg_shape_same_size(hist, im))
         e = "history must have in's size and channels (prev of this node's out)";
@@ -44,8 +50,6 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         snprintf(why, why_len, "%s", e);
         return SSG_E_SIZE;
     }
-    out[SSG_TEMPORAL_OUT_OUT] = *im;
-    out[SSG_TEMPORAL_OUT_OUT2] = im2->channels != 0 ? *im2 : *im;
     return SSG_OK;
 }
 
