@@ -194,7 +194,9 @@ static void orbit_sequence(void)
     struct ssg_run_stats s = {0};
     if (g && run(g, 4, &s)) {
         static const struct expect want[] = {
-            {"lm", "first run, kept x3"}, {"sm", "first run, kept x3"},
+            /* the box has no environment: the probe's lights carry nothing, so nothing
+               uses their shadow maps, decided again each frame (tests/test_skip.c) */
+            {"lm", "first run, kept x3"}, {"sm", "skipped: zero or unused x4"},
             {"lb", "first run, kept x3"}, {"lp", "first run, kept x3"},
             {"g", "first run, camera moved x3"}, {"gk", "first run, new frame x3"},
             {"out", "sink"}};

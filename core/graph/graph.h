@@ -199,6 +199,7 @@ enum ssg_why {
     SSG_WHY_INPUT,    /* a producer ran in this frame */
     SSG_WHY_SINK,     /* a sink: its files and metrics are this run's */
     SSG_WHY_NO_FILES, /* a sink that writes files, not run: the run writes none (Python) */
+    SSG_WHY_SKIPPED,  /* not run: its outputs are all 0 or unused (graph_skip.h) */
     SSG_WHY_COUNT
 };
 /* Node p (run position) must redo `level` (enum ssg_recompute: run, prepare, history) of

@@ -42,6 +42,7 @@ static const char *const why_text[SSG_WHY_COUNT] = {
     [SSG_WHY_INPUT] = "input ran",
     [SSG_WHY_SINK] = "sink",
     [SSG_WHY_NO_FILES] = "not run: no files",
+    [SSG_WHY_SKIPPED] = "skipped: zero or unused",
 };
 
 const char *ssg_why_text(enum ssg_why why)

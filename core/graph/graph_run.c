@@ -13,6 +13,7 @@
 #include "graph/gl_backend.h"
 #include "graph/graph.h"
 #include "graph/graph_history.h"
+#include "graph/graph_skip.h"
 #include "graph/image.h"
 #include "graph/metrics.h"
 #include "graph/profile.h"
@@ -38,6 +39,8 @@ struct run {
     unsigned char *ran;        /* per node index: ran in this frame */
     int first_frame;           /* the frame index of the run's frame 0 (graph_time.c) */
     struct ssg_time_step step; /* the frame being run: time, prev_camera, history_reset */
+    struct ssg_skip *skip;     /* what a frame may skip (graph_skip.h); NULL in a live
+                                  graph, whose every output may be looked at after a run */
 };
 
 static void release_output(struct run *r, struct gnode *n, int port)
@@ -48,7 +51,9 @@ static void release_output(struct run *r, struct gnode *n, int port)
     }
 }
 
-static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
+/* Takes output images for the outputs in `want` (bit k = output k) from the pool, giving
+   back the frame before's. */
+static enum ssg_err allocate_outputs(struct run *r, struct gnode *n, unsigned want)
 {
     for (int k = 0; k < n->desc->output_count; k++) {
         const struct ssg_shape *s = &n->out_shape[k];
@@ -56,7 +61,7 @@ static enum ssg_err allocate_outputs(struct run *r, struct gnode *n)
            last frame's can be handed out: the frame before's goes back to the pool here */
         if (!ssg_history_keep(r->g, r->pool, n, k)) /* read through prev(): kept */
             release_output(r, n, k);
-        if (n->desc->outputs[k].on_demand && n->last_reader[k] < 0)
+        if ((n->desc->outputs[k].on_demand && n->last_reader[k] < 0) || !(want >> k & 1u))
             continue; /* nothing reads it: the node skips its work (node.h) */
         n->out_img[k] = ssg_pool_acquire(r->pool, s->width, s->height, s->channels);
         if (!n->out_img[k]) {
@@ -153,7 +158,7 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     int history_reset; /* prev() inputs: the frame before's images (graph_history.h) */
     enum ssg_err e = ssg_history_bind(g, r->pool, n, in, extra, &history_reset);
     if (!e)
-        e = allocate_outputs(r, n);
+        e = allocate_outputs(r, n, ~0u);
     if (e)
         return e;
     struct ssg_io io = {.in = in, .out = n->out_img, .extra_count = n->extra_count,
@@ -194,6 +199,27 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     if (e && r->diags->count == 0)
         ssg_diag_at(r->diags, e, n->loc, "node '%s' (%s) failed: %s", n->name, n->desc->name,
                     ssg_err_text(e));
+    return e;
+}
+
+/* A node whose outputs are all 0 or unused (graph_skip.h): the outputs in `fill` (read
+   by what runs) are taken from the pool and set to +0, as its run would have made them;
+   the others get no image. */
+static enum ssg_err skip_node(struct run *r, int p, unsigned fill)
+{
+    struct gnode *n = &r->g->nodes[r->g->order[p]];
+    double t0 = ssg_now_ms();
+    enum ssg_err e = allocate_outputs(r, n, fill);
+    for (int k = 0; !e && k < n->desc->output_count; k++) {
+        struct ssg_image *im = n->out_img[k];
+        if (!im)
+            continue;
+        memset(im->data, 0, sizeof(float) * (size_t)im->width * (size_t)im->height *
+                                (size_t)im->channels);
+        if (im->gpu)
+            ssg_gl_mark_written(im, 0);
+    }
+    r->t[p] = (struct ssg_node_timing){.ms = ssg_now_ms() - t0};
     return e;
 }
 
@@ -238,6 +264,8 @@ static int run_init(struct run *r, int frames)
     if ((!r->live && !ssg_live_init(&r->own, g->order_count)) || !r->t || !r->ran ||
         !r->hold || !r->why || !r->producer || !ssg_profile_init(&r->prof, g->order_count))
         return 0;
+    if (!r->live && !(r->skip = ssg_skip_create(g)))
+        return 0;
     r->pool = r->state->pool;
     mark_held(r, frames);
     for (int p = 0; p < g->order_count; p++) {
@@ -253,6 +281,7 @@ static int run_init(struct run *r, int frames)
 
 static void run_free(struct run *r)
 {
+    ssg_skip_free(&r->skip);
     free(r->t);
     free(r->ran);
     free(r->hold);
@@ -333,7 +362,14 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
             continue;
         }
         enum ssg_why why = ssg_redo_decide(r->g, r->state, p, r->ran, &producer);
-        if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {
+        unsigned fill;
+        if (why != SSG_WHY_KEPT && runs_in(n, frame, frames) && r->skip &&
+            ssg_skip_decide(r->skip, r->g, p, &fill)) {
+            e = skip_node(r, p, fill);
+            ssg_redo_after(r->state, p, 0, e); /* decided again in the next frame */
+            r->ran[r->g->order[p]] = 1;
+            why = SSG_WHY_SKIPPED;
+        } else if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {
             int reported = r->metrics.count;
             e = run_node(r, p, frame);
             /* a metrics-only sink of a live graph's one-frame run is kept like any node

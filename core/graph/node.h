@@ -299,6 +299,20 @@ struct ssg_node_desc {
     /* The names of every metric the node may report (ssg_metric_report), NULL-terminated;
        NULL = none. What `bench --error NODE.METRIC` is checked against before any run. */
     const char *const *metrics;
+    /* Optional, skipping work nothing uses (core/graph/graph_skip.c): per output, the input
+       it is zero with: the output is all +0 wherever that input is all +0 or unconnected
+       (a filter's out from in, out2 from in2), whatever the other inputs; that input feeds
+       no other output. A negative entry (or NULL) = no such input. The array has
+       output_count entries. */
+    const signed char *zero_with;
+    /* Optional: the outputs (bit k = output k) that are all +0 for these inputs, asked
+       before a run; in[i] is NULL where input i is unconnected or not computed yet, so
+       the answer may use only what is there (probe_light: every light carries nothing). */
+    unsigned (*zero_outputs)(const void *params, const struct ssg_image *const *in);
+    /* Optional: the inputs (bit i = input i) whose pixels cannot change any output byte
+       while the inputs in `zero_in` are all +0 (combine: far_visibility, while the
+       environment is 0 and nothing else reads V). */
+    unsigned (*ignored_inputs)(const void *params, unsigned zero_in);
     int is_sink;         /* 1 = always runs (writes files or reports metrics); the
                             runtime keeps what it reads and prunes what no sink reads */
     int supplied;        /* 1 = a source whose image the caller supplies

@@ -120,6 +120,11 @@ double ssg_bilateral_flops(const void *consts, const struct ssg_shape *in)
     return passes * (10.0 + ch) + taps * (weight + 2.0 * ch);
 }
 
+/* A weighted mean of +0 is +0 (a pixel without weight passes its +0 through); out2 is 0
+   without in2 (README.md). */
+static const signed char zero_with[SSG_BILATERAL_OUTPUTS] = {
+    [SSG_BILATERAL_OUT_OUT] = SSG_BILATERAL_IN_IN, [SSG_BILATERAL_OUT_OUT2] = SSG_BILATERAL_IN_IN2};
+
 const struct ssg_node_desc ssg_node_bilateral = {
     .name = "bilateral",
     .summary = "geometry-aware bilateral filter (depth and normal weights, full 2D window "
@@ -131,6 +136,7 @@ const struct ssg_node_desc ssg_node_bilateral = {
     SSG_BILATERAL_FAMILY,
     SSG_NODE_PARAMS(params, struct ssg_bilateral_params),
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
+    .zero_with = zero_with,
     .check = check,
     .prepare = prepare,
     .parity = {.max = 3e-6, .mean = 3.7e-7}, /* test_gl_filters.c: 7.8e-7, 9.3e-8: 4x */

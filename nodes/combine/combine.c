@@ -41,6 +41,17 @@ static double combine_flops(const void *consts, const struct ssg_shape *in)
     return 18.0;
 }
 
+/* far_visibility V only scales the environment and ambient light (q = min(1, M / V)) and,
+   with far_bounce, sends max(0, M - V) of them back: with the environment all +0, no
+   ambient and no far bounce each of those terms is a zero (combine_cpu.c), whatever V. */
+static unsigned ignored_inputs(const void *params, unsigned zero_in)
+{
+    const struct ssg_combine_params *p = params;
+    int dark = (zero_in >> SSG_COMBINE_IN_ENVIRONMENT & 1u) && p->ambient == 0.0f &&
+               !p->far_bounce;
+    return dark ? 1u << SSG_COMBINE_IN_FAR_VISIBILITY : 0u;
+}
+
 const struct ssg_node_desc ssg_node_combine = {
     .name = "combine",
     .summary = "final shading: light darkened by AO or the SSDO modulation, plus indirect",
@@ -58,6 +69,7 @@ const struct ssg_node_desc ssg_node_combine = {
     .consts_size = sizeof(struct ssg_combine_consts),
     SSG_NODE_UNIFORMS(uniforms, struct ssg_combine_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
+    .ignored_inputs = ignored_inputs,
     .check = check,
     .check_scene = check_scene,
     .prepare = prepare,

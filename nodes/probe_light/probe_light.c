@@ -181,6 +181,23 @@ static double probe_light_flops(const void *consts, const struct ssg_shape *in)
     return 20.0 + c->u.count * (15.0 + (c->u.res > 0 ? shadow : 0.0));
 }
 
+/* `out` is all +0 when every light carries nothing (lightprobe missing=dark on a scene
+   without an environment): probe_light_cpu.c then adds no light to any pixel, and so does
+   the shader. The list (shadowmap.h): row 1 of each channel the lights' irradiance. */
+static unsigned zero_outputs(const void *node_params, const struct ssg_image *const *in)
+{
+    (void)node_params;
+    const struct ssg_image *l = in[SSG_PROBE_LIGHT_IN_LIGHTS];
+    if (!l)
+        return 0;
+    int n = l->width;
+    for (int c = 0; c < l->channels; c++)
+        for (int i = 0; i < n; i++)
+            if (l->data[(size_t)c * 2 * (size_t)n + (size_t)n + (size_t)i] != 0.0f)
+                return 0;
+    return 1u << SSG_PROBE_LIGHT_OUT_OUT;
+}
+
 const struct ssg_node_desc ssg_node_probe_light = {
     .name = "probe_light",
     .summary = "hybrid AO global part: a light list through its shadow maps (Knuth/Kohlhammer)",
@@ -195,6 +212,7 @@ const struct ssg_node_desc ssg_node_probe_light = {
     .consts_size_of = consts_size_of,
     SSG_NODE_UNIFORMS(uniforms, struct ssg_probe_light_consts, u),
     .reads = SSG_READS_INPUTS | SSG_READS_SCENE | SSG_READS_LIGHTS | SSG_READS_CAMERA,
+    .zero_outputs = zero_outputs,
     .check = check,
     .prepare = prepare,
     .check_params = check_params,

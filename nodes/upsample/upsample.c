@@ -100,6 +100,11 @@ static double upsample_flops(const void *consts, const struct ssg_shape *in)
     return 20.0 + 2.0 * ch + size * size * (weight + 8.0 + 3.0 * ch);
 }
 
+/* The weighted mean of +0 differences from a +0 reference is +0, and so is the fallback's
+   pick and the background; out2 is 0 without in2 (README.md). */
+static const signed char zero_with[SSG_UPSAMPLE_OUTPUTS] = {
+    [SSG_UPSAMPLE_OUT_OUT] = SSG_UPSAMPLE_IN_IN, [SSG_UPSAMPLE_OUT_OUT2] = SSG_UPSAMPLE_IN_IN2};
+
 const struct ssg_node_desc ssg_node_upsample = {
     .name = "upsample",
     .summary = "joint bilateral upsampling guided by full-resolution depth and normals",
@@ -112,6 +117,7 @@ const struct ssg_node_desc ssg_node_upsample = {
     .consts_size = sizeof(struct ssg_upsample_consts),
     .uniforms = SSG_TABLE(uniforms), /* the whole consts: uniforms_offset 0 */
     .reads = SSG_READS_INPUTS | SSG_READS_CAMERA,
+    .zero_with = zero_with,
     .check = check,
     .prepare = prepare,
     .flops_per_pixel = upsample_flops,
