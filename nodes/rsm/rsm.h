@@ -262,6 +262,14 @@ static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *f
     return seen;
 }
 
+/* Runs the n begun traces tr (ssg_rsm_trace_begin returned 0 for each) to their ends,
+   SSG_RSM_LANES at a time (rsm_trace.c); seen[i] = trace i's outcome, 1 visible or 0
+   blocked, the bits ssg_rsm_trace_step gives it alone. Traces of nearby segments next to
+   each other in tr share their voxels' cache lines. */
+enum { SSG_RSM_LANES = 32 };
+void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const float *field,
+                       const struct ssg_rsm_trace *tr, int n, unsigned char *seen);
+
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);
 enum ssg_err ssg_rsm_run_gl(const struct ssg_node_ctx *ctx, const void *consts,

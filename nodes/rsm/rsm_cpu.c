@@ -152,67 +152,82 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
     }
 }
 
-enum { TRACE_LANES = 16 }; /* traces run in lockstep a batch */
+enum { VIS_BATCH = 8 }; /* tested draws whose traces at a chunk's pixels run together */
 
-/* Whether receiver i of the chunk sees each of the n (<= TRACE_LANES) VPLs: the traces of
-   ssg_rsm_visible, stepped in lockstep so that their voxel loads overlap (one trace alone
-   waits on each load; the results are the same bits). */
-static void visible_lanes(const struct job *j, const struct chunk *k, int i,
-                          const float *const *v, int n, int *seen)
+/* A batch of tested draws at every pixel of a chunk: their terms, the begun traces (draw by
+   draw, pixel by pixel: the lanes running together trace from neighbouring pixels to one
+   VPL, through the same voxels), each one's term index b CHUNK + i and the outcomes. */
+struct tested {
+    float w[VIS_BATCH][CHUNK];
+    struct ssg_rsm_trace tr[VIS_BATCH * CHUNK];
+    int term[VIS_BATCH * CHUNK];
+    unsigned char outcome[VIS_BATCH * CHUNK]; /* by trace */
+    unsigned char seen[VIS_BATCH * CHUNK];    /* by term: 1 visible or not traced */
+};
+
+/* The batch's terms at every pixel, as gather weighs them: a vector loop. */
+SSG_VECTOR_CLONES
+static void tested_weights(const struct ssg_rsm_consts *c, const float *const *v,
+                           const float *scale, int nb, int len, const struct chunk *restrict k,
+                           float (*restrict w)[CHUNK])
 {
-    const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
-    const float nx[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
-    struct ssg_rsm_trace tr[TRACE_LANES];
-    int live[TRACE_LANES], count = 0;
-    for (int l = 0; l < n; l++) {
-        seen[l] = 1;
-        if (!ssg_rsm_trace_begin(j->c, x, nx, v[l], v[l] + 3, &tr[l]))
-            live[count++] = l;
-    }
-    while (count > 0) {
-        int kept = 0;
-        for (int q = 0; q < count; q++) {
-            int l = live[q], r = ssg_rsm_trace_step(j->c, j->field, &tr[l]);
-            if (r < 0)
-                live[kept++] = l;
-            else
-                seen[l] = r;
+    for (int b = 0; b < nb; b++)
+        for (int i = 0; i < len; i++)
+            w[b][i] = vpl_weight(c, v[b], scale[b], k, i);
+}
+
+/* Begins the trace of every term of the batch that is not 0; returns their count. */
+static int begin_traces(const struct job *j, const struct chunk *k, const float *const *v,
+                        int nb, int len, struct tested *s)
+{
+    int n = 0;
+    for (int b = 0; b < nb; b++)
+        for (int i = 0; i < len; i++) {
+            s->seen[b * CHUNK + i] = 1;
+            if (!(s->w[b][i] > 0.0f))
+                continue;
+            const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
+            const float nx[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
+            if (!ssg_rsm_trace_begin(j->c, x, nx, v[b], v[b] + 3, &s->tr[n]))
+                s->term[n++] = b * CHUNK + i;
         }
-        count = kept;
-    }
+    return n;
 }
 
 /* Visibility by a control variate: each pixel's unshadowed sum less the occluded light of
    its tested draws (one of every vis_stride, at the tile cell's phase), each scaled by
    vis_stride (README.md, "Visibility"); unbiased over the tile, clamped at 0 where the
-   few tested draws overshoot. Out of line, so a profile shows its cost apart. */
+   few tested draws overshoot. Every pixel of the chunk tests the same draws. Out of line,
+   so a profile shows its cost apart. */
 __attribute__((noinline)) static void shadow_subtract(const struct job *j, const int *pick,
-                                                      int phase, int len, struct chunk *k)
+                                                      int phase, int len, struct chunk *k,
+                                                      struct tested *s)
 {
     const struct ssg_rsm_consts *c = j->c;
     float total = j->list[(size_t)(j->count - 1) * SSG_RSM_SLOT + 11];
     float step = c->inv_samples * total;
     const float stride = (float)c->vis_stride;
-    for (int i = 0; i < len; i++) {
-        for (int t0 = 0; t0 < c->vis_tested; t0 += TRACE_LANES) {
-            const float *v[TRACE_LANES];
-            float w[TRACE_LANES];
-            int n = 0, vis[TRACE_LANES];
-            for (int t = t0; t < c->vis_tested && t < t0 + TRACE_LANES; t++) {
-                const float *vpl = j->list + (size_t)pick[t * c->vis_stride + phase] *
-                                                 SSG_RSM_SLOT;
-                w[n] = vpl_weight(c, vpl, step / vpl[10], k, i);
-                if (w[n] > 0.0f)
-                    v[n++] = vpl;
-            }
-            visible_lanes(j, k, i, v, n, vis);
-            for (int l = 0; l < n; l++) /* in draw order, as rsm.glsl */
-                for (int ch = 0; !vis[l] && ch < 3; ch++)
-                    k->sum[ch][i] = k->sum[ch][i] - stride * (w[l] * v[l][6 + ch]);
+    for (int t0 = 0; t0 < c->vis_tested; t0 += VIS_BATCH) {
+        int nb = c->vis_tested - t0 < VIS_BATCH ? c->vis_tested - t0 : VIS_BATCH;
+        const float *v[VIS_BATCH];
+        float scale[VIS_BATCH];
+        for (int b = 0; b < nb; b++) {
+            v[b] = j->list + (size_t)pick[(t0 + b) * c->vis_stride + phase] * SSG_RSM_SLOT;
+            scale[b] = step / v[b][10];
         }
+        tested_weights(c, v, scale, nb, len, k, s->w);
+        int n = begin_traces(j, k, v, nb, len, s);
+        ssg_rsm_trace_all(c, j->field, s->tr, n, s->outcome);
+        for (int q = 0; q < n; q++)
+            s->seen[s->term[q]] = s->outcome[q];
+        for (int i = 0; i < len; i++) /* each pixel's terms in draw order, as rsm.glsl */
+            for (int b = 0; b < nb; b++)
+                for (int ch = 0; !s->seen[b * CHUNK + i] && ch < 3; ch++)
+                    k->sum[ch][i] = k->sum[ch][i] - stride * (s->w[b][i] * v[b][6 + ch]);
+    }
+    for (int i = 0; i < len; i++)
         for (int ch = 0; ch < 3; ch++)
             k->sum[ch][i] = k->sum[ch][i] > 0.0f ? k->sum[ch][i] : 0.0f;
-    }
 }
 
 static void store_chunk(const struct job *j, int y, int x0, int len,
@@ -242,6 +257,7 @@ static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
     struct chunk k;
+    struct tested s;
     for (int y = y0; y < y1; y++)
         for (int tx = 0; tx < SSG_RSM_TILE && tx < j->w; tx++) {
             int t = (y % SSG_RSM_TILE) * SSG_RSM_TILE + tx;
@@ -254,7 +270,7 @@ static void rows(void *user, int y0, int y1)
                 if (j->count > 0)
                     gather(j, pick, len, &k);
                 if (j->count > 0 && subtracted(j))
-                    shadow_subtract(j, pick, j->c->vis_phase[t], len, &k);
+                    shadow_subtract(j, pick, j->c->vis_phase[t], len, &k, &s);
                 store_chunk(j, y, x0, len, &k);
             }
         }
