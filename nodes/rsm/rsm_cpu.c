@@ -32,6 +32,8 @@ struct job {
     const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
     int count, w, h;
     const float *field; /* the scene's distance field's voxels (visibility on) */
+    float far2;         /* the least d^2 with sqrtf(d^2) >= 2 min_distance: from there on
+                           the fade is exactly 1 (far_squared) */
 };
 
 enum { CHUNK = 64 };
@@ -73,10 +75,12 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
 }
 
 /* VPL v's irradiance x pi at receiver i over its flux, times `scale`: Phi cos_v cos_x /
-   (d^2 max(d^2, r2)) x fade(d) / Phi (README.md), 0 behind either surface. Branch-free (a
-   select, never a NaN added), so the loops over the pixels that call it vectorise. */
+   (d^2 max(d^2, r2)) x fade(d) / Phi (README.md), 0 behind either surface; the fade over
+   m = min_distance when `fade` (a constant where a loop must vectorise: GCC leaves a
+   condition it cannot fold a branch in the loop). Branch-free (a select, never a NaN added), so the
+   loops over the pixels that call it vectorise. */
 static inline __attribute__((always_inline)) float
-vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
+vpl_weight(const float *restrict v, float scale, int fade, float m,
            const struct chunk *restrict k, int i)
 {
     float dx = v[0] - k->x[0][i], dy = v[1] - k->x[1][i], dz = v[2] - k->x[2][i];
@@ -84,8 +88,7 @@ vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
     float cs = -(v[3] * dx + v[4] * dy + v[5] * dz);
     float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
     float g = cs * cr / (d2 * (d2 > v[9] ? d2 : v[9]));
-    const float m = c->p.min_distance;
-    if (m > 0.0f) {
+    if (fade) {
         float t = (sqrtf(d2) - m) / m;
         t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
         g = g * (t * t * (3.0f - 2.0f * t));
@@ -97,15 +100,41 @@ vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
 /* VPL v's term at every receiver of the chunk into the sums; each pixel's sum runs in draw
    order, as on GL. */
 static inline __attribute__((always_inline)) void
-add_vpl(const struct ssg_rsm_consts *c, const float *restrict v, float scale, int len,
-        struct chunk *restrict k)
+add_terms(const float *restrict v, float scale, int fade, float m, int len,
+          struct chunk *restrict k)
 {
     for (int i = 0; i < len; i++) {
-        float w = vpl_weight(c, v, scale, k, i);
+        float w = vpl_weight(v, scale, fade, m, k, i);
         k->sum[0][i] += w * v[6];
         k->sum[1][i] += w * v[7];
         k->sum[2][i] += w * v[8];
     }
+}
+
+/* 1 when a receiver of the chunk lies nearer VPL v than sqrtf(d^2) = 2 min_distance. Out
+   of line: inlined, its result kept GCC from vectorising the faded loop it chooses. */
+SSG_VECTOR_CLONES __attribute__((noinline)) static int
+any_near(const float *restrict v, float far2, int len, const struct chunk *restrict k)
+{
+    int near = 0;
+    for (int i = 0; i < len; i++) {
+        float dx = v[0] - k->x[0][i], dy = v[1] - k->x[1][i], dz = v[2] - k->x[2][i];
+        near |= dx * dx + dy * dy + dz * dz < far2; /* vpl_weight's d2 */
+    }
+    return near;
+}
+
+/* add_terms; where every receiver is far enough for the fade to be exactly 1 (most VPLs of
+   most chunks), without it: its square root and division are half the loop's time. */
+static inline __attribute__((always_inline)) void
+add_vpl(const struct job *j, const float *restrict v, float scale, int len,
+        struct chunk *restrict k)
+{
+    const float m = j->c->p.min_distance;
+    if (m > 0.0f && any_near(v, j->far2, len, k))
+        add_terms(v, scale, 1, m, len, k);
+    else
+        add_terms(v, scale, 0, 0.0f, len, k);
 }
 
 /* The same with each term's visibility (visibility on, every draw tested): one trace per
@@ -114,7 +143,8 @@ static void add_vpl_visible(const struct job *j, const float *v, float scale, in
                             struct chunk *k)
 {
     for (int i = 0; i < len; i++) {
-        float w = vpl_weight(j->c, v, scale, k, i);
+        const float m = j->c->p.min_distance;
+        float w = vpl_weight(v, scale, m > 0.0f, m, k, i);
         if (w > 0.0f && !visible_from(j, k, i, v))
             w = 0.0f;
         k->sum[0][i] += w * v[6];
@@ -137,7 +167,7 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
             if (each)
                 add_vpl_visible(j, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
             else
-                add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+                add_vpl(j, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
         }
         return;
     }
@@ -148,7 +178,7 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
         if (each)
             add_vpl_visible(j, v, step / v[10], len, k);
         else
-            add_vpl(c, v, step / v[10], len, k);
+            add_vpl(j, v, step / v[10], len, k);
     }
 }
 
@@ -171,9 +201,14 @@ static void tested_weights(const struct ssg_rsm_consts *c, const float *const *v
                            const float *scale, int nb, int len, const struct chunk *restrict k,
                            float (*restrict w)[CHUNK])
 {
+    const float m = c->p.min_distance;
     for (int b = 0; b < nb; b++)
-        for (int i = 0; i < len; i++)
-            w[b][i] = vpl_weight(c, v[b], scale[b], k, i);
+        if (m > 0.0f)
+            for (int i = 0; i < len; i++)
+                w[b][i] = vpl_weight(v[b], scale[b], 1, m, k, i);
+        else
+            for (int i = 0; i < len; i++)
+                w[b][i] = vpl_weight(v[b], scale[b], 0, 0.0f, k, i);
 }
 
 /* Begins the trace of every term of the batch that is not 0; returns their count. */
@@ -253,6 +288,19 @@ static int subtracted(const struct job *j)
     return j->c->vis && S > 0 && S < j->count && j->c->vis_stride > 1;
 }
 
+/* The least float x with sqrtf(x) >= 2 m (m > 0): at d^2 >= x, (sqrtf(d^2) - m) / m >= 1
+   in floats too (each rounding is monotonic), so the fade's smoothstep is exactly 1. */
+static float far_squared(float m)
+{
+    const float two_m = 2.0f * m;
+    float x = two_m * two_m;
+    while (sqrtf(x) < two_m)
+        x = nextafterf(x, INFINITY);
+    while (x > 0.0f && sqrtf(nextafterf(x, 0.0f)) >= two_m)
+        x = nextafterf(x, 0.0f);
+    return x;
+}
+
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
@@ -294,7 +342,8 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
     struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
-                    pos->height, c->vis ? ctx->scene->distance->d : NULL};
+                    pos->height, c->vis ? ctx->scene->distance->d : NULL,
+                    c->p.min_distance > 0.0f ? far_squared(c->p.min_distance) : 0.0f};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;
 }
