@@ -262,12 +262,14 @@ static inline int ssg_rsm_visible(const struct ssg_rsm_consts *c, const float *f
     return seen;
 }
 
-/* Runs the n begun traces tr (ssg_rsm_trace_begin returned 0 for each) to their ends,
+/* Runs the n begun traces tr (ssg_rsm_trace_begin returned 0 for each) to their ends in
+   the scene's distance field (its bricked squares where it has them),
    SSG_RSM_LANES at a time (rsm_trace.c); seen[i] = trace i's outcome, 1 visible or 0
    blocked, the bits ssg_rsm_trace_step gives it alone. Traces of nearby segments next to
    each other in tr share their voxels' cache lines. */
 enum { SSG_RSM_LANES = 32 };
-void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const float *field,
+struct ssg_distance;
+void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const struct ssg_distance *field,
                        const struct ssg_rsm_trace *tr, int n, unsigned char *seen);
 
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,

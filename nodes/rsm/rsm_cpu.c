@@ -31,7 +31,8 @@ struct job {
     const float *list;
     const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
     int count, w, h;
-    const float *field; /* the scene's distance field's voxels (visibility on) */
+    const struct ssg_distance *distance; /* the scene's distance field (visibility on) */
+    const float *field; /* its voxels */
     float far2;         /* the least d^2 with sqrtf(d^2) >= 2 min_distance: from there on
                            the fade is exactly 1 (far_squared) */
 };
@@ -252,7 +253,7 @@ __attribute__((noinline)) static void shadow_subtract(const struct job *j, const
         }
         tested_weights(c, v, scale, nb, len, k, s->w);
         int n = begin_traces(j, k, v, nb, len, s);
-        ssg_rsm_trace_all(c, j->field, s->tr, n, s->outcome);
+        ssg_rsm_trace_all(c, j->distance, s->tr, n, s->outcome);
         for (int q = 0; q < n; q++)
             s->seen[s->term[q]] = s->outcome[q];
         for (int i = 0; i < len; i++) /* each pixel's terms in draw order, as rsm.glsl */
@@ -342,7 +343,8 @@ enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
     struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
-                    pos->height, c->vis ? ctx->scene->distance->d : NULL,
+                    pos->height, c->vis ? ctx->scene->distance : NULL,
+                    c->vis ? ctx->scene->distance->d : NULL,
                     c->p.min_distance > 0.0f ? far_squared(c->p.min_distance) : 0.0f};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;

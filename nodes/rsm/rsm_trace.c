@@ -8,6 +8,7 @@
 #include "common/vector_loops.h" /* first: see there */
 
 #include "rsm.h"
+#include "scene/distance.h"
 
 /* GCC's vector extensions: each operation is the scalar one lane by lane (IEEE, no
    contraction in C11 mode), on AVX2 one instruction, on SSE4 two. */
@@ -45,12 +46,37 @@ static inline __attribute__((always_inline)) vfloat pick(vint mask, vfloat a, vf
     return (vfloat)(((vint)a & mask) | ((vint)b & ~mask));
 }
 
+/* Each lane's voxel distance: the float field's, or (bricked) the root of the bricked
+   square, the same float (distance.h); voxel 0 where not in. */
+static inline __attribute__((always_inline)) vfloat
+distances(const struct ssg_distance *f, int bricked, vint x, vint y, vint z, vint in)
+{
+    vfloat dist;
+    if (bricked) {
+        const vuint b0 = (vuint){0} + (unsigned)f->bricks[0];
+        const vuint b1 = (vuint){0} + (unsigned)f->bricks[1];
+        vuint ux = (vuint)x, uy = (vuint)y, uz = (vuint)z;
+        vuint brick = ((uz >> 1) * b1 + (uy >> 2)) * b0 + (ux >> 2);
+        vuint at = brick * SSG_DISTANCE_BRICK + ((uz & 1) * 16 + (uy & 3) * 4 + (ux & 3));
+        at &= (vuint)in; /* unsigned: no overflow where not in */
+        for (int k = 0; k < WIDTH; k++)
+            dist[k] = f->root[f->square[at[k]]];
+    } else {
+        const vuint n0 = (vuint){0} + (unsigned)f->n[0], n1 = (vuint){0} + (unsigned)f->n[1];
+        vuint at = ((vuint)z * n1 + (vuint)y) * n0 + (vuint)x;
+        at &= (vuint)in;
+        for (int k = 0; k < WIDTH; k++)
+            dist[k] = f->d[at[k]];
+    }
+    return dist;
+}
+
 /* One ssg_rsm_trace_step of every lane; returns 1 when a lane ended (idle lanes
    included). Outside the grid a lane reads voxel 0 and takes the distance 1: not occupied
    (the trace is out) and a step of one voxel, as the scalar step's branch makes them. */
-SSG_VECTOR_CLONES
-static int step_lanes(const struct ssg_rsm_consts *c, const float *restrict field,
-                      struct lanes *restrict l)
+static inline __attribute__((always_inline)) int
+step_lanes(const struct ssg_rsm_consts *c, const struct ssg_distance *f, int bricked,
+           struct lanes *restrict l)
 {
     const vint n0 = (vint){0} + c->grid_n[0], n1 = (vint){0} + c->grid_n[1];
     const vint n2 = (vint){0} + c->grid_n[2];
@@ -62,12 +88,7 @@ static int step_lanes(const struct ssg_rsm_consts *c, const float *restrict fiel
         vint y = floor_int(l->p[1][v] + l->u[1][v] * t);
         vint z = floor_int(l->p[2][v] + l->u[2][v] * t);
         vint in = (x >= 0) & (x < n0) & (y >= 0) & (y < n1) & (z >= 0) & (z < n2);
-        vuint at = ((vuint)z * (vuint)n1 + (vuint)y) * (vuint)n0 + (vuint)x;
-        at &= (vuint)in; /* unsigned: no overflow where not in */
-        vfloat dist;
-        for (int k = 0; k < WIDTH; k++)
-            dist[k] = field[at[k]];
-        dist = pick(in, dist, one);
+        vfloat dist = pick(in, distances(f, bricked, x, y, z, in), one);
         vint blocked = (dist == zero) & l->out[v];
         vint going = l->t[v] < l->end[v];
         vint state = (going & ~blocked) | (~going & 1); /* -1, 0 or 1 */
@@ -98,7 +119,24 @@ static void fill(struct lanes *l, int k, const struct ssg_rsm_trace *tr, int i, 
     l->who[k] = i < n ? i : -1;
 }
 
-void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const float *field,
+/* Steps the lanes until one ends, from the bricked squares or the float field. */
+SSG_VECTOR_CLONES
+static void step_bricked(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
+                         struct lanes *restrict l)
+{
+    while (!step_lanes(c, f, 1, l))
+        ;
+}
+
+SSG_VECTOR_CLONES
+static void step_flat(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
+                      struct lanes *restrict l)
+{
+    while (!step_lanes(c, f, 0, l))
+        ;
+}
+
+void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
                        const struct ssg_rsm_trace *tr, int n, unsigned char *seen)
 {
     struct lanes l;
@@ -108,8 +146,10 @@ void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const float *field,
         live += next < n;
     }
     while (live > 0) {
-        if (!step_lanes(c, field, &l))
-            continue;
+        if (f->square)
+            step_bricked(c, f, &l);
+        else
+            step_flat(c, f, &l);
         for (int k = 0; k < SSG_RSM_LANES; k++) {
             int state = l.state[k / WIDTH][k % WIDTH];
             if (state < 0 || l.who[k] < 0)

@@ -2,7 +2,8 @@
  * every trace the outcome ssg_rsm_visible gives it alone, bit for bit, in the Cornell box's
  * distance field: for pseudo-random segments between points of the room (both outcomes
  * must occur, so the check cannot pass on an empty room) and for lists shorter than the
- * lanes, as long as them and longer, so that idle lanes and refills both run. */
+ * lanes, as long as them and longer, so that idle lanes and refills both run; from the
+ * field's bricked squares and from its floats alone. */
 #include <stdio.h>
 
 #include "check.h"
@@ -43,7 +44,7 @@ static struct ssg_rsm_consts consts_of(const struct ssg_distance *f)
 }
 
 /* The first n traces of the list at once against each alone; returns how many are blocked. */
-static int check_list(const struct ssg_rsm_consts *c, const float *field,
+static int check_list(const struct ssg_rsm_consts *c, const struct ssg_distance *field,
                       const struct ssg_rsm_trace *tr, const int *alone, int n)
 {
     static unsigned char seen[SEGMENTS];
@@ -69,6 +70,9 @@ int main(void)
         return check_report();
     const struct ssg_rsm_consts c = consts_of(s->distance);
     const float *field = s->distance->d;
+    struct ssg_distance flat = *s->distance;
+    flat.square = NULL; /* the float field alone */
+    CHECK(s->distance->square != NULL);
     static struct ssg_rsm_trace tr[SEGMENTS];
     static int alone[SEGMENTS];
     unsigned seed = 12345u;
@@ -83,8 +87,10 @@ int main(void)
     }
     const int lengths[] = {0, 1, SSG_RSM_LANES - 1, SSG_RSM_LANES, SSG_RSM_LANES + 1, SEGMENTS};
     int blocked = 0;
-    for (size_t k = 0; k < sizeof lengths / sizeof lengths[0]; k++)
-        blocked = check_list(&c, field, tr, alone, lengths[k]);
+    for (size_t k = 0; k < sizeof lengths / sizeof lengths[0]; k++) {
+        blocked = check_list(&c, s->distance, tr, alone, lengths[k]);
+        CHECK_EQ(check_list(&c, &flat, tr, alone, lengths[k]), blocked);
+    }
     fprintf(stderr, "%d segments, %d blocked\n", SEGMENTS, blocked);
     CHECK(blocked > SEGMENTS / 20 && blocked < SEGMENTS - SEGMENTS / 20);
     ssg_scene_destroy(&s);
