@@ -21,7 +21,8 @@ enum { WIDTH = 8, VECTORS = SSG_RSM_LANES / WIDTH };
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
-_Static_assert(SSG_RSM_LANES % WIDTH == 0, "lanes: whole vectors");
+_Static_assert(SSG_RSM_LANES % WIDTH == 0 && SSG_RSM_LANES <= 32,
+               "lanes: whole vectors, one bit each in an unsigned");
 
 /* The lanes' traces, one vector a field of struct ssg_rsm_trace per WIDTH lanes. */
 struct lanes {
@@ -71,17 +72,18 @@ distances(const struct ssg_distance *f, int bricked, vint x, vint y, vint z, vin
     return dist;
 }
 
-/* One ssg_rsm_trace_step of every lane; returns 1 when a lane ended (idle lanes
-   included). Outside the grid a lane reads voxel 0 and takes the distance 1: not occupied
+/* One ssg_rsm_trace_step of every lane; returns the lanes that ended (idle lanes
+   included), lane k as bit k. Outside the grid a lane reads voxel 0 and takes the distance 1: not occupied
    (the trace is out) and a step of one voxel, as the scalar step's branch makes them. */
-static inline __attribute__((always_inline)) int
+static inline __attribute__((always_inline)) unsigned
 step_lanes(const struct ssg_rsm_consts *c, const struct ssg_distance *f, int bricked,
            struct lanes *restrict l)
 {
     const vint n0 = (vint){0} + c->grid_n[0], n1 = (vint){0} + c->grid_n[1];
     const vint n2 = (vint){0} + c->grid_n[2];
     const vfloat one = (vfloat){0} + 1.0f, zero = (vfloat){0};
-    vint ended = (vint){0};
+    const vuint bit = {1, 2, 4, 8, 16, 32, 64, 128};
+    vuint ended = (vuint){0};
     for (int v = 0; v < VECTORS; v++) {
         vfloat t = l->t[v];
         vint x = floor_int(l->p[0][v] + l->u[0][v] * t);
@@ -96,12 +98,12 @@ step_lanes(const struct ssg_rsm_consts *c, const struct ssg_distance *f, int bri
         l->out[v] |= dist != zero;
         vfloat step = dist - one;
         l->t[v] = t + pick(step > one, step, one);
-        ended |= state >= 0;
+        ended |= (vuint)(state >= 0) & (bit << (unsigned)(WIDTH * v));
     }
-    int any = 0;
-    for (int k = 0; k < WIDTH; k++)
-        any |= ended[k];
-    return any;
+    ended |= __builtin_shufflevector(ended, ended, 4, 5, 6, 7, 0, 1, 2, 3);
+    ended |= __builtin_shufflevector(ended, ended, 2, 3, 0, 1, 2, 3, 0, 1);
+    ended |= __builtin_shufflevector(ended, ended, 1, 0, 1, 0, 1, 0, 1, 0);
+    return ended[0];
 }
 
 /* Lane k takes trace i of the list, or idles (ends at once, every step) past its end. */
@@ -119,44 +121,46 @@ static void fill(struct lanes *l, int k, const struct ssg_rsm_trace *tr, int i, 
     l->who[k] = i < n ? i : -1;
 }
 
-/* Steps the lanes until one ends, from the bricked squares or the float field. */
+/* Steps the lanes until one not idle ends, from the bricked squares or the float field;
+   returns the lanes that ended, less the idle ones. */
 SSG_VECTOR_CLONES
-static void step_bricked(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
-                         struct lanes *restrict l)
+static unsigned step_bricked(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
+                             struct lanes *restrict l, unsigned idle)
 {
-    while (!step_lanes(c, f, 1, l))
+    unsigned ended;
+    while (!(ended = step_lanes(c, f, 1, l) & ~idle))
         ;
+    return ended;
 }
 
 SSG_VECTOR_CLONES
-static void step_flat(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
-                      struct lanes *restrict l)
+static unsigned step_flat(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
+                          struct lanes *restrict l, unsigned idle)
 {
-    while (!step_lanes(c, f, 0, l))
+    unsigned ended;
+    while (!(ended = step_lanes(c, f, 0, l) & ~idle))
         ;
+    return ended;
 }
 
 void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const struct ssg_distance *f,
                        const struct ssg_rsm_trace *tr, int n, unsigned char *seen)
 {
     struct lanes l;
-    int next = 0, live = 0;
+    int next = 0;
+    unsigned idle = 0; /* lanes past the list's end, bit k lane k */
     for (int k = 0; k < SSG_RSM_LANES; k++, next++) {
         fill(&l, k, tr, next, n);
-        live += next < n;
+        idle |= (unsigned)(next >= n) << k;
     }
-    while (live > 0) {
-        if (f->square)
-            step_bricked(c, f, &l);
-        else
-            step_flat(c, f, &l);
-        for (int k = 0; k < SSG_RSM_LANES; k++) {
-            int state = l.state[k / WIDTH][k % WIDTH];
-            if (state < 0 || l.who[k] < 0)
-                continue;
-            seen[l.who[k]] = (unsigned char)state;
-            live -= next >= n;
+    const unsigned all = SSG_RSM_LANES == 32 ? ~0u : (1u << SSG_RSM_LANES) - 1;
+    while (idle != all) {
+        unsigned ended = f->square ? step_bricked(c, f, &l, idle) : step_flat(c, f, &l, idle);
+        for (; ended; ended &= ended - 1) {
+            int k = __builtin_ctz(ended);
+            seen[l.who[k]] = (unsigned char)l.state[k / WIDTH][k % WIDTH];
             fill(&l, k, tr, next, n);
+            idle |= (unsigned)(next >= n) << k;
             next += next < n;
         }
     }
