@@ -5,7 +5,8 @@
  * and 2 touch it and are occupied, over x and z in [1, 10] (the square's edges on the
  * boundaries 2 and 10 touch voxels 1 and 10); every other voxel holds the distance from
  * its centre to the nearest occupied centre, worked out here by hand. A scene without a
- * triangle has no field. */
+ * triangle has no field. The bricked squares give back every voxel's distance, and the
+ * grid's 12 x 5 x 12 voxels lie in 3 x 2 x 6 bricks. */
 #include <math.h>
 
 #include "check.h"
@@ -38,6 +39,18 @@ static void test_plane(void)
     CHECK(ssg_distance_at(f, 0, 2, 5) == 1.0f);          /* beside the edge x = 1 */
     CHECK(ssg_distance_at(f, 0, 4, 0) == sqrtf(6.0f));   /* (1, 2, 1): 1, 2, 1 away */
     CHECK(ssg_distance_at(f, 11, 3, 11) == sqrtf(3.0f)); /* (10, 2, 10) */
+    CHECK(f->bricks[0] == 3 && f->bricks[1] == 2 && f->bricks[2] == 6);
+    int wrong = -1;
+    if (f->square) {
+        wrong = 0;
+        for (int z = 0; z < 12; z++)
+            for (int y = 0; y < 5; y++)
+                for (int x = 0; x < 12; x++)
+                    wrong += f->root[f->square[ssg_distance_brick_at(f, x, y, z)]] !=
+                             ssg_distance_at(f, x, y, z);
+    }
+    CHECK_EQ(wrong, 0);
+    CHECK(f->square && f->square[ssg_distance_brick_at(f, 0, 4, 0)] == 6); /* sqrt(6) */
     ssg_distance_destroy(&f);
     CHECK(f == NULL);
 }

@@ -161,6 +161,39 @@ static enum ssg_err distances(struct ssg_distance *f)
     return SSG_OK;
 }
 
+/* Fills the bricked squares (distance.h); 0 when a distance is not the root of an integer
+   below 65535 that gives it back. */
+static int fill_squares(struct ssg_distance *f)
+{
+    for (int z = 0; z < f->n[2]; z++)
+        for (int y = 0; y < f->n[1]; y++)
+            for (int x = 0; x < f->n[0]; x++) {
+                float d = ssg_distance_at(f, x, y, z);
+                double q = nearbyint((double)d * d);
+                if (!(q < 65535.0) || (float)sqrt(q) != d)
+                    return 0;
+                f->square[ssg_distance_brick_at(f, x, y, z)] = (uint16_t)q;
+                f->root[(int)q] = d;
+            }
+    return 1;
+}
+
+/* The bricked squares, or none (NULL) where they cannot hold the field or out of memory. */
+static void brick(struct ssg_distance *f)
+{
+    for (int k = 0; k < 3; k++)
+        f->bricks[k] = k == 2 ? (f->n[k] + 1) / 2 : (f->n[k] + 3) / 4;
+    f->square = calloc((size_t)f->bricks[0] * f->bricks[1] * f->bricks[2] * SSG_DISTANCE_BRICK,
+                       sizeof *f->square);
+    f->root = malloc(sizeof *f->root * 65535);
+    if (!f->square || !f->root || !fill_squares(f)) {
+        free(f->square);
+        free(f->root);
+        f->square = NULL;
+        f->root = NULL;
+    }
+}
+
 /* The grid over the meshes' bounds: 0 when they hold no triangle. */
 static int lay_out(struct ssg_distance *f, const struct ssg_mesh *meshes, int count, int res)
 {
@@ -207,6 +240,8 @@ enum ssg_err ssg_distance_build(const struct ssg_mesh *meshes, int count, int re
         voxelise(f, meshes, count);
         e = distances(f);
     }
+    if (!e)
+        brick(f);
     if (e)
         ssg_distance_destroy(&f);
     *out = f;
@@ -218,6 +253,8 @@ void ssg_distance_destroy(struct ssg_distance **field)
     if (!*field)
         return;
     free((*field)->d);
+    free((*field)->square);
+    free((*field)->root);
     free(*field);
     *field = NULL;
 }

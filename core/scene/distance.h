@@ -17,6 +17,9 @@
 #ifndef SSG_DISTANCE_H
 #define SSG_DISTANCE_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include "ssgraph.h"
 
 struct ssg_mesh;
@@ -32,7 +35,25 @@ struct ssg_distance {
     float lo[3];   /* world corner of voxel (0, 0, 0), its smallest coordinates */
     float voxel;   /* side of a voxel, world units */
     float *d;      /* n[0] n[1] n[2] distances in voxels, x fastest, then y, then z */
+    /* The same distances for the CPU's traces, in a quarter of the cache lines a trace
+       step touches: each voxel's squared distance (an integer, the transform's sum of
+       squares) as 16 bits, in bricks of 4 x 4 x 2 voxels, one cache line each
+       (ssg_distance_brick_at). NULL where one is not below 65535 (no occupied voxel) or
+       out of memory: d alone then. */
+    uint16_t *square;
+    float *root;   /* root[q] = the distance d of every voxel whose square is q */
+    int bricks[3]; /* bricks on x, y, z */
 };
+
+enum { SSG_DISTANCE_BRICK = 32 }; /* voxels a brick: 4 on x, 4 on y, 2 on z */
+
+/* The index into `square` of voxel (x, y, z), which must lie in the grid. */
+static inline size_t ssg_distance_brick_at(const struct ssg_distance *f, int x, int y, int z)
+{
+    size_t brick = ((size_t)(z >> 1) * f->bricks[1] + (size_t)(y >> 2)) * f->bricks[0] +
+                   (size_t)(x >> 2);
+    return brick * SSG_DISTANCE_BRICK + (size_t)((z & 1) * 16 + (y & 3) * 4 + (x & 3));
+}
 
 /* The field of `count` meshes' triangles with `res` voxels on the longest axis of their
  * bounds (>= 1). *out = NULL and SSG_OK when there is no triangle (nothing occludes);

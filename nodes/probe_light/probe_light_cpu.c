@@ -28,6 +28,9 @@ struct job {
     int taps, search_taps; /* soft lookups (cone_tan > 0): taps of filter and search */
     float search;          /* the blocker search's radius, texels */
     int n;                 /* interleave: a chunk's pixels are n apart, its lights n^2 */
+    const int *lit;        /* the lights that carry something, interleave cell by cell,
+                              each cell's in light order (lit_lights) */
+    const int *lit_start;  /* cell c's are lit[lit_start[c] .. lit_start[c + 1] - 1] */
 };
 
 struct chunk {
@@ -52,15 +55,18 @@ load_chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k
     const struct ssg_image *nrm = j->io->in[SSG_PROBE_LIGHT_IN_NORMAL];
     size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
     int tile = j->c->p.noise_tile, row = (y % tile) * tile, cells = tile * tile, n = j->n;
+    int column = x0 % tile; /* (x0 + n i) mod tile, stepped: no division a pixel */
     for (int i = 0; i < len; i++) {
         size_t q = at + (size_t)n * i; /* pixel x0 + n i */
         k->px[i] = pos->data[q], k->py[i] = pos->data[plane + q];
         k->pz[i] = pos->data[2 * plane + q];
         k->nx[i] = nrm->data[q], k->ny[i] = nrm->data[plane + q];
         k->nz[i] = nrm->data[2 * plane + q];
-        int cell = row + (x0 + n * i) % tile;
+        int cell = row + column;
         k->jx[i] = j->noise_radius * j->c->noise[cell];
         k->jy[i] = j->noise_radius * j->c->noise[cells + cell];
+        column += n % tile;
+        column -= column >= tile ? tile : 0;
         k->sum[0][i] = k->sum[1][i] = k->sum[2][i] = 0.0f;
         k->lum_lit[i] = k->lum_all[i] = 0.0f;
     }
@@ -274,10 +280,11 @@ SSG_VECTOR_CLONES
 static void chunk(const struct job *j, int y, int x0, int len, struct chunk *restrict k)
 {
     load_chunk(j, y, x0, len, k);
-    /* the lights of the pixels' interleave cell: i mod n^2 = (y mod n) n + x0 mod n */
-    const int n = j->n;
-    for (int li = (y % n) * n + x0 % n; li < j->count; li += n * n)
-        add_light(j, li, len, k);
+    /* the lights of the pixels' interleave cell, i mod n^2 = (y mod n) n + x0 mod n, that
+       carry something (the others add exact zeros) */
+    const int n = j->n, cell = (y % n) * n + x0 % n;
+    for (int q = j->lit_start[cell]; q < j->lit_start[cell + 1]; q++)
+        add_light(j, j->lit[q], len, k);
     store_chunk(j, y, x0, len, k);
 }
 
@@ -297,25 +304,51 @@ static void rows(void *user, int y0, int y1)
         }
 }
 
+/* The lights that carry something (not black: add_light's test), grouped by interleave
+   cell (light i in cell i mod n^2), in light order within each: a dark probe's lights
+   (lightprobe missing=dark) were most of a frame's node time, each chunk testing them
+   all. lit holds count ints, lit_start n^2 + 1. */
+static void lit_lights(const float *lights, int count, int n, int *lit, int *lit_start)
+{
+    int q = 0;
+    for (int cell = 0; cell < n * n; cell++) {
+        lit_start[cell] = q;
+        for (int li = cell; li < count; li += n * n) {
+            float er = lights[count + li], eg = lights[3 * count + li],
+                  eb = lights[5 * count + li];
+            if (!(er == 0.0f && eg == 0.0f && eb == 0.0f))
+                lit[q++] = li;
+        }
+    }
+    lit_start[n * n] = q;
+}
+
 enum ssg_err ssg_probe_light_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                      const struct ssg_io *io)
 {
     const struct ssg_probe_light_consts *c = consts;
     const int count = c->u.count, res = c->u.res;
+    const struct ssg_probe_light_params *p = ctx->params;
+    const int n = p->interleave;
     float *frames = malloc(sizeof(float) * SSG_PROBE_LIGHT_FRAME * (size_t)count);
-    if (!frames)
+    int *lit = malloc(sizeof(int) * ((size_t)count + (size_t)n * n + 1));
+    if (!frames || !lit) {
+        free(frames);
+        free(lit);
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    }
     const float *l = io->in[SSG_PROBE_LIGHT_IN_LIGHTS]->data;
     for (int i = 0; i < count; i++) {
         float dir[3] = {l[i], l[2 * count + i], l[4 * count + i]};
         ssg_probe_light_frame(c, dir, c->frame_res, frames + SSG_PROBE_LIGHT_FRAME * i);
     }
+    lit_lights(l, count, n, lit, lit + count);
     const struct ssg_image *pos = io->in[SSG_PROBE_LIGHT_IN_POSITION];
-    const struct ssg_probe_light_params *p = ctx->params;
     struct job j = {c, io, frames, c->cos_sin, count, res, pos->width, pos->height,
                     c->u.offset_world, c->u.slope_world, c->u.normal_world, p->noise_radius,
-                    c->p.taps, c->p.search_taps, c->p.search_radius, p->interleave};
+                    c->p.taps, c->p.search_taps, c->p.search_radius, n, lit, lit + count};
     ssg_parallel_rows(pos->height, 16, rows, &j);
     free(frames);
+    free(lit);
     return SSG_OK;
 }

@@ -162,14 +162,17 @@ struct ssg_rsm_consts {
     U(FLOAT, grid_inv, grid_inv, "1 / its voxel side", .gl_in = "rsm.glsl")
 
 /* Builds the slots of rows y in [y0, y1) of the (6 C) x (F C) slot grid (every bin of the
-   row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, in slot
-   order, [11] left 0. Returns 0 when out of memory (its working rows), 1 otherwise. */
+   row's cells) from the maps' planes; `slots` holds SSG_RSM_SLOT floats a slot, [11] left
+   0, a grid row's 6 C places packed: the row's slots that are not empty (w > 0) first, in
+   slot order, then one whose w is 0 where they are fewer (the rest not written: most
+   bins are empty, and writing and reading them all was most of the list's time). Returns
+   0 when out of memory (its working rows), 1 otherwise. */
 int ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const float *normal,
                   const float *flux, int y0, int y1, float *slots);
 
-/* Compacts the non-empty slots into list (in slot order, CDF filled), returns their count
-   n. When 0 < samples < n, pick[t S + k] gets draw k of every pixel at cell t of the
-   offset tile (ssg_rsm_pick). */
+/* Compacts the non-empty slots (ssg_rsm_cells' packed rows) into list (in slot order, CDF
+   filled), returns their count n. When 0 < samples < n, pick[t S + k] gets draw k of
+   every pixel at cell t of the offset tile (ssg_rsm_pick). */
 int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *pick);
 
 /* Draw k of tile cell t: the VPL whose CDF interval holds u = (k + offset[t]) / S x total,
@@ -274,6 +277,16 @@ typedef enum ssg_err (*ssg_rsm_backend_run)(const struct ssg_node_ctx *ctx,
                                             const struct ssg_io *io);
 enum ssg_err ssg_rsm_run_frame(const struct ssg_node_ctx *ctx, const void *consts,
                                const struct ssg_io *io, ssg_rsm_backend_run run);
+
+/* Runs the n begun traces tr (ssg_rsm_trace_begin returned 0 for each) to their ends in
+   the scene's distance field (its bricked squares where it has them),
+   SSG_RSM_LANES at a time (rsm_trace.c); seen[i] = trace i's outcome, 1 visible or 0
+   blocked, the bits ssg_rsm_trace_step gives it alone. Traces of nearby segments next to
+   each other in tr share their voxels' cache lines. */
+enum { SSG_RSM_LANES = 32 };
+struct ssg_distance;
+void ssg_rsm_trace_all(const struct ssg_rsm_consts *c, const struct ssg_distance *field,
+                       const struct ssg_rsm_trace *tr, int n, unsigned char *seen);
 
 enum ssg_err ssg_rsm_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                              const struct ssg_io *io);

@@ -32,7 +32,10 @@ struct job {
     const float *list;
     const int *pick;  /* SSG_RSM_TILE^2 x samples draws (ssg_rsm_list) */
     int count, w, h;
-    const float *field; /* the scene's distance field's voxels (visibility on) */
+    const struct ssg_distance *distance; /* the scene's distance field (visibility on) */
+    const float *field; /* its voxels */
+    float far2;         /* the least d^2 with sqrtf(d^2) >= 2 min_distance: from there on
+                           the fade is exactly 1 (far_squared) */
 };
 
 enum { CHUNK = 64 };
@@ -74,10 +77,12 @@ static void load_chunk(const struct job *j, int y, int x0, int len, struct chunk
 }
 
 /* VPL v's irradiance x pi at receiver i over its flux, times `scale`: Phi cos_v cos_x /
-   (d^2 max(d^2, r2)) x fade(d) / Phi (README.md), 0 behind either surface. Branch-free (a
-   select, never a NaN added), so the loops over the pixels that call it vectorise. */
+   (d^2 max(d^2, r2)) x fade(d) / Phi (README.md), 0 behind either surface; the fade over
+   m = min_distance when `fade` (a constant where a loop must vectorise: GCC leaves a
+   condition it cannot fold a branch in the loop). Branch-free (a select, never a NaN added), so the
+   loops over the pixels that call it vectorise. */
 static inline __attribute__((always_inline)) float
-vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
+vpl_weight(const float *restrict v, float scale, int fade, float m,
            const struct chunk *restrict k, int i)
 {
     float dx = v[0] - k->x[0][i], dy = v[1] - k->x[1][i], dz = v[2] - k->x[2][i];
@@ -85,8 +90,7 @@ vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
     float cs = -(v[3] * dx + v[4] * dy + v[5] * dz);
     float cr = k->n[0][i] * dx + k->n[1][i] * dy + k->n[2][i] * dz;
     float g = cs * cr / (d2 * (d2 > v[9] ? d2 : v[9]));
-    const float m = c->p.min_distance;
-    if (m > 0.0f) {
+    if (fade) {
         float t = (sqrtf(d2) - m) / m;
         t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
         g = g * (t * t * (3.0f - 2.0f * t));
@@ -98,15 +102,41 @@ vpl_weight(const struct ssg_rsm_consts *c, const float *restrict v, float scale,
 /* VPL v's term at every receiver of the chunk into the sums; each pixel's sum runs in draw
    order, as on GL. */
 static inline __attribute__((always_inline)) void
-add_vpl(const struct ssg_rsm_consts *c, const float *restrict v, float scale, int len,
-        struct chunk *restrict k)
+add_terms(const float *restrict v, float scale, int fade, float m, int len,
+          struct chunk *restrict k)
 {
     for (int i = 0; i < len; i++) {
-        float w = vpl_weight(c, v, scale, k, i);
+        float w = vpl_weight(v, scale, fade, m, k, i);
         k->sum[0][i] += w * v[6];
         k->sum[1][i] += w * v[7];
         k->sum[2][i] += w * v[8];
     }
+}
+
+/* 1 when a receiver of the chunk lies nearer VPL v than sqrtf(d^2) = 2 min_distance. Out
+   of line: inlined, its result kept GCC from vectorising the faded loop it chooses. */
+SSG_VECTOR_CLONES __attribute__((noinline)) static int
+any_near(const float *restrict v, float far2, int len, const struct chunk *restrict k)
+{
+    int near = 0;
+    for (int i = 0; i < len; i++) {
+        float dx = v[0] - k->x[0][i], dy = v[1] - k->x[1][i], dz = v[2] - k->x[2][i];
+        near |= dx * dx + dy * dy + dz * dz < far2; /* vpl_weight's d2 */
+    }
+    return near;
+}
+
+/* add_terms; where every receiver is far enough for the fade to be exactly 1 (most VPLs of
+   most chunks), without it: its square root and division are half the loop's time. */
+static inline __attribute__((always_inline)) void
+add_vpl(const struct job *j, const float *restrict v, float scale, int len,
+        struct chunk *restrict k)
+{
+    const float m = j->c->p.min_distance;
+    if (m > 0.0f && any_near(v, j->far2, len, k))
+        add_terms(v, scale, 1, m, len, k);
+    else
+        add_terms(v, scale, 0, 0.0f, len, k);
 }
 
 /* The same with each term's visibility (visibility on, every draw tested): one trace per
@@ -115,7 +145,8 @@ static void add_vpl_visible(const struct job *j, const float *v, float scale, in
                             struct chunk *k)
 {
     for (int i = 0; i < len; i++) {
-        float w = vpl_weight(j->c, v, scale, k, i);
+        const float m = j->c->p.min_distance;
+        float w = vpl_weight(v, scale, m > 0.0f, m, k, i);
         if (w > 0.0f && !visible_from(j, k, i, v))
             w = 0.0f;
         k->sum[0][i] += w * v[6];
@@ -138,7 +169,7 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
             if (each)
                 add_vpl_visible(j, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
             else
-                add_vpl(c, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
+                add_vpl(j, j->list + (size_t)i * SSG_RSM_SLOT, 1.0f, len, k);
         }
         return;
     }
@@ -149,71 +180,91 @@ static void gather(const struct job *j, const int *pick, int len, struct chunk *
         if (each)
             add_vpl_visible(j, v, step / v[10], len, k);
         else
-            add_vpl(c, v, step / v[10], len, k);
+            add_vpl(j, v, step / v[10], len, k);
     }
 }
 
-enum { TRACE_LANES = 16 }; /* traces run in lockstep a batch */
+enum { VIS_BATCH = 8 }; /* tested draws whose traces at a chunk's pixels run together */
 
-/* Whether receiver i of the chunk sees each of the n (<= TRACE_LANES) VPLs: the traces of
-   ssg_rsm_visible, stepped in lockstep so that their voxel loads overlap (one trace alone
-   waits on each load; the results are the same bits). */
-static void visible_lanes(const struct job *j, const struct chunk *k, int i,
-                          const float *const *v, int n, int *seen)
+/* A batch of tested draws at every pixel of a chunk: their terms, the begun traces (draw by
+   draw, pixel by pixel: the lanes running together trace from neighbouring pixels to one
+   VPL, through the same voxels), each one's term index b CHUNK + i and the outcomes. */
+struct tested {
+    float w[VIS_BATCH][CHUNK];
+    struct ssg_rsm_trace tr[VIS_BATCH * CHUNK];
+    int term[VIS_BATCH * CHUNK];
+    unsigned char outcome[VIS_BATCH * CHUNK]; /* by trace */
+    unsigned char seen[VIS_BATCH * CHUNK];    /* by term: 1 visible or not traced */
+};
+
+/* The batch's terms at every pixel, as gather weighs them: a vector loop. */
+SSG_VECTOR_CLONES
+static void tested_weights(const struct ssg_rsm_consts *c, const float *const *v,
+                           const float *scale, int nb, int len, const struct chunk *restrict k,
+                           float (*restrict w)[CHUNK])
 {
-    const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
-    const float nx[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
-    struct ssg_rsm_trace tr[TRACE_LANES];
-    int live[TRACE_LANES], count = 0;
-    for (int l = 0; l < n; l++) {
-        seen[l] = 1;
-        if (!ssg_rsm_trace_begin(j->c, x, nx, v[l], v[l] + 3, &tr[l]))
-            live[count++] = l;
-    }
-    while (count > 0) {
-        int kept = 0;
-        for (int q = 0; q < count; q++) {
-            int l = live[q], r = ssg_rsm_trace_step(j->c, j->field, &tr[l]);
-            if (r < 0)
-                live[kept++] = l;
-            else
-                seen[l] = r;
+    const float m = c->p.min_distance;
+    for (int b = 0; b < nb; b++)
+        if (m > 0.0f)
+            for (int i = 0; i < len; i++)
+                w[b][i] = vpl_weight(v[b], scale[b], 1, m, k, i);
+        else
+            for (int i = 0; i < len; i++)
+                w[b][i] = vpl_weight(v[b], scale[b], 0, 0.0f, k, i);
+}
+
+/* Begins the trace of every term of the batch that is not 0; returns their count. */
+static int begin_traces(const struct job *j, const struct chunk *k, const float *const *v,
+                        int nb, int len, struct tested *s)
+{
+    int n = 0;
+    for (int b = 0; b < nb; b++)
+        for (int i = 0; i < len; i++) {
+            s->seen[b * CHUNK + i] = 1;
+            if (!(s->w[b][i] > 0.0f))
+                continue;
+            const float x[3] = {k->x[0][i], k->x[1][i], k->x[2][i]};
+            const float nx[3] = {k->n[0][i], k->n[1][i], k->n[2][i]};
+            if (!ssg_rsm_trace_begin(j->c, x, nx, v[b], v[b] + 3, &s->tr[n]))
+                s->term[n++] = b * CHUNK + i;
         }
-        count = kept;
-    }
+    return n;
 }
 
 /* Visibility by a control variate: each pixel's unshadowed sum less the occluded light of
    its tested draws (one of every vis_stride, at the tile cell's phase), each scaled by
    vis_stride (README.md, "Visibility"); unbiased over the tile, clamped at 0 where the
-   few tested draws overshoot. Out of line, so a profile shows its cost apart. */
+   few tested draws overshoot. Every pixel of the chunk tests the same draws. Out of line,
+   so a profile shows its cost apart. */
 __attribute__((noinline)) static void shadow_subtract(const struct job *j, const int *pick,
-                                                      int phase, int len, struct chunk *k)
+                                                      int phase, int len, struct chunk *k,
+                                                      struct tested *s)
 {
     const struct ssg_rsm_consts *c = j->c;
     float total = j->list[(size_t)(j->count - 1) * SSG_RSM_SLOT + 11];
     float step = c->inv_samples * total;
     const float stride = (float)c->vis_stride;
-    for (int i = 0; i < len; i++) {
-        for (int t0 = 0; t0 < c->vis_tested; t0 += TRACE_LANES) {
-            const float *v[TRACE_LANES];
-            float w[TRACE_LANES];
-            int n = 0, vis[TRACE_LANES];
-            for (int t = t0; t < c->vis_tested && t < t0 + TRACE_LANES; t++) {
-                const float *vpl = j->list + (size_t)pick[t * c->vis_stride + phase] *
-                                                 SSG_RSM_SLOT;
-                w[n] = vpl_weight(c, vpl, step / vpl[10], k, i);
-                if (w[n] > 0.0f)
-                    v[n++] = vpl;
-            }
-            visible_lanes(j, k, i, v, n, vis);
-            for (int l = 0; l < n; l++) /* in draw order, as rsm.glsl */
-                for (int ch = 0; !vis[l] && ch < 3; ch++)
-                    k->sum[ch][i] = k->sum[ch][i] - stride * (w[l] * v[l][6 + ch]);
+    for (int t0 = 0; t0 < c->vis_tested; t0 += VIS_BATCH) {
+        int nb = c->vis_tested - t0 < VIS_BATCH ? c->vis_tested - t0 : VIS_BATCH;
+        const float *v[VIS_BATCH];
+        float scale[VIS_BATCH];
+        for (int b = 0; b < nb; b++) {
+            v[b] = j->list + (size_t)pick[(t0 + b) * c->vis_stride + phase] * SSG_RSM_SLOT;
+            scale[b] = step / v[b][10];
         }
+        tested_weights(c, v, scale, nb, len, k, s->w);
+        int n = begin_traces(j, k, v, nb, len, s);
+        ssg_rsm_trace_all(c, j->distance, s->tr, n, s->outcome);
+        for (int q = 0; q < n; q++)
+            s->seen[s->term[q]] = s->outcome[q];
+        for (int i = 0; i < len; i++) /* each pixel's terms in draw order, as rsm.glsl */
+            for (int b = 0; b < nb; b++)
+                for (int ch = 0; !s->seen[b * CHUNK + i] && ch < 3; ch++)
+                    k->sum[ch][i] = k->sum[ch][i] - stride * (s->w[b][i] * v[b][6 + ch]);
+    }
+    for (int i = 0; i < len; i++)
         for (int ch = 0; ch < 3; ch++)
             k->sum[ch][i] = k->sum[ch][i] > 0.0f ? k->sum[ch][i] : 0.0f;
-    }
 }
 
 static void store_chunk(const struct job *j, int y, int x0, int len,
@@ -239,10 +290,24 @@ static int subtracted(const struct job *j)
     return j->c->vis && S > 0 && S < j->count && j->c->vis_stride > 1;
 }
 
+/* The least float x with sqrtf(x) >= 2 m (m > 0): at d^2 >= x, (sqrtf(d^2) - m) / m >= 1
+   in floats too (each rounding is monotonic), so the fade's smoothstep is exactly 1. */
+static float far_squared(float m)
+{
+    const float two_m = 2.0f * m;
+    float x = two_m * two_m;
+    while (sqrtf(x) < two_m)
+        x = nextafterf(x, INFINITY);
+    while (x > 0.0f && sqrtf(nextafterf(x, 0.0f)) >= two_m)
+        x = nextafterf(x, 0.0f);
+    return x;
+}
+
 static void rows(void *user, int y0, int y1)
 {
     const struct job *j = user;
     struct chunk k;
+    struct tested s;
     for (int y = y0; y < y1; y++)
         for (int tx = 0; tx < SSG_RSM_TILE && tx < j->w; tx++) {
             int t = (y % SSG_RSM_TILE) * SSG_RSM_TILE + tx;
@@ -255,7 +320,7 @@ static void rows(void *user, int y0, int y1)
                 if (j->count > 0)
                     gather(j, pick, len, &k);
                 if (j->count > 0 && subtracted(j))
-                    shadow_subtract(j, pick, j->c->vis_phase[t], len, &k);
+                    shadow_subtract(j, pick, j->c->vis_phase[t], len, &k, &s);
                 store_chunk(j, y, x0, len, &k);
             }
         }
@@ -279,7 +344,9 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
     struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
-                    pos->height, c->vis ? ctx->scene->distance->d : NULL};
+                    pos->height, c->vis ? ctx->scene->distance : NULL,
+                    c->vis ? ctx->scene->distance->d : NULL,
+                    c->p.min_distance > 0.0f ? far_squared(c->p.min_distance) : 0.0f};
     ssg_parallel_rows(pos->height, 4, rows, &j);
     return SSG_OK;
 }

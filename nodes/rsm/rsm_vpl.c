@@ -167,11 +167,19 @@ int ssg_rsm_cells(const struct ssg_rsm_consts *c, const float *depth, const floa
                 add_texels(&t, cx * cell, (cx + 1) * cell < res ? (cx + 1) * cell : res,
                            &sums[cx]);
         }
-        for (int cx = 0; cx < C; cx++) {
-            float *slot = slots + ((size_t)gy * C + cx) * SSG_RSM_BINS * SSG_RSM_SLOT;
-            for (int b = 0; b < SSG_RSM_BINS; b++)
-                finish_slot(&sums[cx], b, slot + (size_t)b * SSG_RSM_SLOT);
-        }
+        /* the row's slots that the list keeps, packed (rsm.h), then an end */
+        float *row = slots + (size_t)gy * C * SSG_RSM_BINS * SSG_RSM_SLOT;
+        int kept = 0;
+        for (int cx = 0; cx < C; cx++)
+            for (int b = 0; b < SSG_RSM_BINS; b++) {
+                float *slot = row + (size_t)kept * SSG_RSM_SLOT;
+                if (sums[cx].w[b] > 0.0f) {
+                    finish_slot(&sums[cx], b, slot);
+                    kept += slot[10] > 0.0f;
+                }
+            }
+        if (kept < C * SSG_RSM_BINS)
+            row[(size_t)kept * SSG_RSM_SLOT + 10] = 0.0f;
     }
     free(mem);
     return 1;
@@ -186,12 +194,14 @@ int ssg_rsm_pick(const struct ssg_rsm_consts *c, const float *list, int count, i
 
 int ssg_rsm_list(const struct ssg_rsm_consts *c, const float *slots, float *list, int *pick)
 {
-    int count = 0;
+    int count = 0, row = c->cells * SSG_RSM_BINS;
     float cdf = 0.0f;
     for (int s = 0; s < c->slots; s++) {
         const float *slot = slots + (size_t)s * SSG_RSM_SLOT;
-        if (!(slot[10] > 0.0f))
+        if (!(slot[10] > 0.0f)) { /* the end of its row's packed slots */
+            s = (s / row + 1) * row - 1;
             continue;
+        }
         float *v = list + (size_t)count * SSG_RSM_SLOT;
         for (int k = 0; k < 11; k++)
             v[k] = slot[k];
