@@ -130,9 +130,9 @@ static float step_shadow(const struct dl_job *j, const struct marches *M, int a,
 
 /* Step s of every march: a march whose step lies behind the camera stops (and its later
    steps with it); cand[a] = 1 where the step lies behind the shading plane of a surface
-   pixel at image point (us[a], ws[a]). */
+   pixel at image point (us[a], ws[a]). Whether any is. */
 SSG_VECTOR_CLONES
-static void march_steps(const struct dl_job *j, struct marches *restrict M, int s,
+static int march_steps(const struct dl_job *j, struct marches *restrict M, int s,
                         int *restrict cand, float *restrict us, float *restrict ws)
 {
     const float f = j->c->u.proj.f, cx = j->c->u.proj.cx, cy = j->c->u.proj.cy;
@@ -143,6 +143,7 @@ static void march_steps(const struct dl_job *j, struct marches *restrict M, int 
     const float *nrm = j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data;
     const float *pos1 = pos + plane, *pos2 = pos1 + plane;
     const float *nrm1 = nrm + plane, *nrm2 = nrm1 + plane;
+    int any = 0;
     for (int a = 0; a < M->n; a++) {
         float t = M->step[a] * (float)s, q[3];
         for (int i = 0; i < 3; i++)
@@ -157,29 +158,35 @@ static void march_steps(const struct dl_job *j, struct marches *restrict M, int 
         M->alive[a] = alive;
         cand[a] = in & (behind(q, pt, n) > 0.0f);
         us[a] = u, ws[a] = w;
+        any |= cand[a];
     }
+    return any;
 }
 
 /* The lit pixels' marches (v > 0) towards the light from their view-space points, over
    reach = contact x the maps' texel at the receiver. */
-static void march_start(const struct dl_job *j, int y, int x0, const struct dl_pixels *px,
-                        struct marches *M)
+SSG_VECTOR_CLONES
+static void march_start(const struct dl_job *j, int y, int x0, const struct dl_pixels *restrict px,
+                        struct marches *restrict M)
 {
-    const float *r = j->c->u.rot;
-    const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data;
-    const size_t plane = (size_t)j->w * j->h, at = (size_t)y * j->w + (size_t)x0;
-    M->n = 0;
-    for (int i = 0; i < px->len; i++) {
-        if (!(px->v[i] > 0.0f))
-            continue; /* the maps shadow it already */
-        int a = M->n++;
+    const float *r = j->c->u.rot, contact = j->c->p.contact;
+    const float rot[9] = {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]};
+    const int plane = j->w * j->h;
+    const float *pos = j->io->in[SSG_DIRECT_LIGHT_IN_POSITION]->data + (size_t)y * j->w + x0;
+    int n = 0;
+    for (int i = 0; i < px->len; i++)
+        if (px->v[i] > 0.0f) /* else the maps shadow it already */
+            M->pixel[n++] = i;
+    M->n = n;
+    for (int a = 0; a < n; a++) {
+        const int i = M->pixel[a];
         const float l[3] = {px->l[0][i], px->l[1][i], px->l[2][i]};
         for (int c = 0; c < 3; c++) {
-            M->p[c][a] = pos[c * plane + at + i];
-            M->v[c][a] = r[3 * c] * l[0] + r[3 * c + 1] * l[1] + r[3 * c + 2] * l[2];
+            M->p[c][a] = pos[c * plane + i];
+            M->v[c][a] = rot[3 * c] * l[0] + rot[3 * c + 1] * l[1] + rot[3 * c + 2] * l[2];
         }
-        float reach = j->c->p.contact * px->texel[i];
-        M->pixel[a] = i, M->reach[a] = reach, M->shadow[a] = 0.0f, M->alive[a] = 1;
+        float reach = contact * px->texel[i];
+        M->reach[a] = reach, M->shadow[a] = 0.0f, M->alive[a] = 1;
         M->step[a] = reach / (float)SSG_DIRECT_LIGHT_CONTACT_STEPS;
         M->soft[a] = 0.125f * reach;
     }
@@ -192,7 +199,8 @@ void dl_contact(const struct dl_job *j, int y, int x0, struct dl_pixels *px)
     for (int s = 1; s <= SSG_DIRECT_LIGHT_CONTACT_STEPS; s++) {
         int cand[DL_CHUNK];
         float us[DL_CHUNK], ws[DL_CHUNK];
-        march_steps(j, &M, s, cand, us, ws);
+        if (!march_steps(j, &M, s, cand, us, ws))
+            continue; /* most steps: in free space */
         for (int a = 0; a < M.n; a++) {
             if (!cand[a] || M.shadow[a] == 1.0f)
                 continue; /* a march already wholly shadowed stays so */

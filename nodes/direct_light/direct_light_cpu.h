@@ -101,11 +101,14 @@ void dl_contact(const struct dl_job *j, int y, int x0, struct dl_pixels *px);
 static inline float dl_point_limit(float x, float y, float kx, float ky, float r,
                                    float texel, float bias, float tap_slope, const float n[3],
                                    float nq, const float axis[3], const float u[3],
-                                   const float v[3], float half, int res)
+                                   const float v[3], float half, int res, int pow2)
 {
     float dx = x - kx, dy = y - ky, m = texel * SSG_DIRECT_LIGHT_MAX_SLOPE *
                                          (fabsf(dx) + fabsf(dy) + 1.0f);
-    float a = 2.0f * x / (float)res - 1.0f, b = 2.0f * y / (float)res - 1.0f;
+    /* pow2 (res a power of two): the division as the product by 1 / res, the same bits
+       (both scale by a power of two exactly) */
+    float a = (pow2 ? 2.0f * x * (1.0f / (float)res) : 2.0f * x / (float)res) - 1.0f;
+    float b = (pow2 ? 2.0f * y * (1.0f / (float)res) : 2.0f * y / (float)res) - 1.0f;
     float d[3], len2 = 0.0f, nd = 0.0f, ha = half * a, hb = half * b;
     for (int i = 0; i < 3; i++) {
         d[i] = axis[i] + ha * u[i] + hb * v[i];

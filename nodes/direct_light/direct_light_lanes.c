@@ -32,15 +32,16 @@ void dl_lane_lookup(const struct dl_lanes *L, const struct ssg_direct_light_ligh
         k->n[c] = L->n[c][a];
 }
 
-/* Tap (tx, ty) of the unit disc for every lane: its bilinear PCF value into val, and
-   where a lane's texels are not all on its face, its texel coordinates into (xs, ys) and
-   slow = 1 (val then meaningless). point, tiled: the light's kind and map, constants
+/* Tap (tx, ty) of the unit disc for every lane: its bilinear PCF value added to the
+   lane's sum, but where a lane's texels are not all on its face, its texel coordinates
+   into (xs, ys) and slow = 1 instead (0 added: the sum stays, never -0). Whether any is. point, tiled: the light's kind and map, constants
    where this is inlined, so each loop is straight. */
-static inline __attribute__((always_inline)) void
-tap_lanes(const struct dl_lanes *restrict L, const struct taps_in *in, float tx, float ty,
-          int point, int reads, float *restrict val, float *restrict xs, float *restrict ys,
+static inline __attribute__((always_inline)) int
+tap_lanes(struct dl_lanes *restrict L, const struct taps_in *in, float tx, float ty,
+          int point, int reads, int pow2, float *restrict xs, float *restrict ys,
           int *restrict slow)
 {
+    int any = 0;
     const int res = in->res, mask = res - 1, last = in->side - 1;
     for (int a = 0; a < L->count; a++) {
         float ox = L->cs[a] * tx - L->sn[a] * ty;
@@ -54,7 +55,7 @@ tap_lanes(const struct dl_lanes *restrict L, const struct taps_in *in, float tx,
             const float u[3] = {L->u[0][a], L->u[1][a], L->u[2][a]};
             const float v[3] = {L->v[0][a], L->v[1][a], L->v[2][a]};
             limit = dl_point_limit(x, y, L->x[a], L->y[a], L->r[a], L->texel[a], L->bias[a],
-                                   in->slope, n, L->nq[a], axis, u, v, L->half[a], res);
+                                   in->slope, n, L->nq[a], axis, u, v, L->half[a], res, pow2);
         } else {
             limit = dl_directional_limit(x, y, L->x[a], L->y[a], L->r[a], L->texel[a],
                                          L->bias[a], in->slope, L->gx[a], L->gy[a]);
@@ -72,27 +73,32 @@ tap_lanes(const struct dl_lanes *restrict L, const struct taps_in *in, float tx,
         float t00 = limit <= m[at] ? 1.0f : 0.0f, t10 = limit <= m[at + 1] ? 1.0f : 0.0f;
         float t01 = limit <= m[at + res] ? 1.0f : 0.0f;
         float t11 = limit <= m[at + res + 1] ? 1.0f : 0.0f;
-        val[a] = dl_blend(wx, wy, t00, t10, t01, t11);
-        xs[a] = x, ys[a] = y, slow[a] = !ok;
+        float val = dl_blend(wx, wy, t00, t10, t01, t11);
+        L->sum[a] += ok ? val : 0.0f;
+        xs[a] = x, ys[a] = y, slow[a] = !ok, any |= !ok;
     }
+    return any;
 }
 
 /* tap_lanes for each kind of light and map, each its own vector loop. */
 SSG_VECTOR_CLONES
-static void tap_values(const struct dl_lanes *restrict L, const struct taps_in *in, float tx,
-                       float ty, int point, int reads, float *restrict val,
-                       float *restrict xs, float *restrict ys, int *restrict slow)
+static int tap_values(struct dl_lanes *restrict L, const struct taps_in *in, float tx,
+                      float ty, int point, int reads, float *restrict xs, float *restrict ys,
+                      int *restrict slow)
 {
-    if (point && reads == READ_FACE)
-        tap_lanes(L, in, tx, ty, 1, READ_FACE, val, xs, ys, slow);
+    const int pow2 = (in->res & (in->res - 1)) == 0;
+    if (point && reads == READ_FACE && pow2)
+        return tap_lanes(L, in, tx, ty, 1, READ_FACE, 1, xs, ys, slow);
+    else if (point && reads == READ_FACE)
+        return tap_lanes(L, in, tx, ty, 1, READ_FACE, 0, xs, ys, slow);
     else if (point)
-        tap_lanes(L, in, tx, ty, 1, READ_NONE, val, xs, ys, slow);
+        return tap_lanes(L, in, tx, ty, 1, READ_NONE, 0, xs, ys, slow);
     else if (reads == READ_FACE)
-        tap_lanes(L, in, tx, ty, 0, READ_FACE, val, xs, ys, slow);
+        return tap_lanes(L, in, tx, ty, 0, READ_FACE, 0, xs, ys, slow);
     else if (reads == READ_TILES)
-        tap_lanes(L, in, tx, ty, 0, READ_TILES, val, xs, ys, slow);
+        return tap_lanes(L, in, tx, ty, 0, READ_TILES, 0, xs, ys, slow);
     else
-        tap_lanes(L, in, tx, ty, 0, READ_NONE, val, xs, ys, slow);
+        return tap_lanes(L, in, tx, ty, 0, READ_NONE, 0, xs, ys, slow);
 }
 
 /* How the lanes read light l's maps (enum reads). */
@@ -116,17 +122,17 @@ static void add_tap(const struct dl_job *j, const struct ssg_direct_light_light 
                     const struct taps_in *in, int reads, struct dl_lanes *L, int i)
 {
     const int s = j->c->p.samples - 1 - i;
-    float val[DL_CHUNK], xs[DL_CHUNK], ys[DL_CHUNK];
+    float xs[DL_CHUNK], ys[DL_CHUNK];
     int slow[DL_CHUNK];
-    tap_values(L, in, j->c->taps[2 * s], j->c->taps[2 * s + 1], l->point, reads, val, xs, ys,
-               slow);
+    if (!tap_values(L, in, j->c->taps[2 * s], j->c->taps[2 * s + 1], l->point, reads, xs, ys,
+                    slow))
+        return;
     for (int a = 0; a < L->count; a++) {
         if (slow[a]) {
             struct dl_lookup k;
             dl_lane_lookup(L, l, a, &k);
-            val[a] = dl_bilinear_test(j, &k, xs[a], ys[a]);
+            L->sum[a] += dl_bilinear_test(j, &k, xs[a], ys[a]);
         }
-        L->sum[a] += val[a];
     }
 }
 

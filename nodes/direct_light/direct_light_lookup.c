@@ -59,7 +59,7 @@ static float tap_limit(const struct dl_job *j, const struct dl_lookup *k, float 
                                     k->gy);
     const struct ssg_lightmap_face *f = &j->c->faces[k->l->face + k->f];
     return dl_point_limit(x, y, k->x, k->y, k->r, k->texel, k->bias, slope, k->n, k->nq,
-                          f->axis, f->u, f->v, f->half, j->c->u.res);
+                          f->axis, f->u, f->v, f->half, j->c->u.res, 0);
 }
 
 float dl_bilinear_test(const struct dl_job *j, const struct dl_lookup *k, float x, float y)
