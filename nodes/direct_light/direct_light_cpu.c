@@ -1,9 +1,11 @@
 /* direct_light_cpu.c - CPU side of the `direct_light` node (method in README.md).
- * Rows in fixed bands; a band's rows in chunks of CHUNK pixels. Per light, the unshadowed
- * irradiance of the whole chunk is one vectorised loop (nodes/common/direct.h, the
- * G-buffer's own code); only the pixels it reaches run the shadow filter (gathers from
- * the maps, per pixel), and the sums are again straight loops. A pixel depends only on
- * its own inputs: the result does not depend on the threads. */
+ * Rows in fixed bands; a band's rows in chunks of DL_CHUNK pixels. Per light, the
+ * unshadowed irradiance of the whole chunk is one vectorised loop (nodes/common/direct.h,
+ * the G-buffer's own code); only the pixels it reaches are located on the light's maps and
+ * filtered, and only those the maps leave lit march for contact shadows, each step as one
+ * loop over those pixels (direct_light_cpu.h, "Why lanes"); the sums are again straight
+ * loops. A pixel depends only on its own inputs: the result does not depend on the
+ * threads. */
 #include "common/vector_loops.h" /* first: see there */
 #include <limits.h>
 #include <math.h>
