@@ -198,15 +198,14 @@ static inline int ssg_lightmap_project(const struct ssg_lightmap_face *f, int re
 }
 
 /* The cube face (0..5, CUBE axis order) a direction d from a point light falls on: its
-   largest component, ties to the lower face index. */
+   largest component, ties to the lower face index. Selects, not branches: direct_light
+   runs it in vector lanes. */
 static inline int ssg_lightmap_cube_face(const float d[3])
 {
     float ax = fabsf(d[0]), ay = fabsf(d[1]), az = fabsf(d[2]);
-    if (ax >= ay && ax >= az)
-        return d[0] >= 0.0f ? 0 : 1;
-    if (ay >= az)
-        return d[1] >= 0.0f ? 2 : 3;
-    return d[2] >= 0.0f ? 4 : 5;
+    int on_x = (ax >= ay) & (ax >= az), on_y = !on_x & (ay >= az);
+    float s = on_x ? d[0] : on_y ? d[1] : d[2];
+    return (on_x ? 0 : on_y ? 2 : 4) + !(s >= 0.0f);
 }
 
 /* The world point at depth z on the ray of texel (x, y) of face f (resolution res). */
