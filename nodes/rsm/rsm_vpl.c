@@ -23,13 +23,10 @@ struct texel_row {
     int *bin;
 };
 
-/* The normal's bin, ssg_lightmap_cube_face as selects (ties to the lower index). */
+/* The normal's bin: the cube face it points at (ties to the lower index). */
 static inline int bin_of(float n0, float n1, float n2)
 {
-    float ax = fabsf(n0), ay = fabsf(n1), az = fabsf(n2);
-    int bx = n0 >= 0.0f ? 0 : 1, by = n1 >= 0.0f ? 2 : 3, bz = n2 >= 0.0f ? 4 : 5;
-    int byz = ay >= az ? by : bz;
-    return (ax >= ay) & (ax >= az) ? bx : byz;
+    return ssg_lightmap_cube_face((const float[3]){n0, n1, n2});
 }
 
 /* The inputs of a row (weights, normals, flux) and the bins: the same for both kinds. */
