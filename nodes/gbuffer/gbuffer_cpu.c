@@ -13,9 +13,6 @@
  * `direct` and `environment`, like `back`, `motion` and `emission`, are made only when
  * read (gbuffer.h): gi.graph reads neither. */
 #include "common/vector_loops.h" /* first: see there */
-#if defined(__SSE__)
-#include <immintrin.h>
-#endif
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -24,6 +21,7 @@
 #include "scene/env.h"
 #include "scene/rt.h"
 #include "common/direct.h"
+#include "common/stream_store.h"
 #include "common/surface.h"
 #include "scene/scene.h"
 
@@ -326,30 +324,14 @@ static void environment_light(const struct job *j, struct chunk *k)
     }
 }
 
-/* n floats of a chunk array into an output plane, with streaming stores from the first
-   16-byte boundary on: a frame's 16 planes (59 MB at 720p) are far larger than the
-   caches, so the usual stores only fetched each line before overwriting it. Measured:
-   the node 10 % faster at 720p. The band ends with a fence (rows). */
-static void store_plane(float *restrict dst, const float *restrict src, int n)
-{
-    int i = 0;
-#if defined(__SSE__)
-    for (; i < n && ((uintptr_t)(dst + i) & 15); i++)
-        dst[i] = src[i];
-    for (; i + 4 <= n; i += 4)
-        _mm_stream_ps(dst + i, _mm_loadu_ps(src + i));
-#endif
-    for (; i < n; i++)
-        dst[i] = src[i];
-}
-
-/* Three chunk arrays into three planes at o. */
+/* Three chunk arrays into three planes at o, streaming (nodes/common/stream_store.h: a
+   frame's planes are far larger than the caches). The band ends with a fence (rows). */
 static void store3(float *const to[3], size_t o, const float *a, const float *b, const float *c,
                    int n)
 {
-    store_plane(to[0] + o, a, n);
-    store_plane(to[1] + o, b, n);
-    store_plane(to[2] + o, c, n);
+    ssg_stream_store(to[0] + o, a, n);
+    ssg_stream_store(to[1] + o, b, n);
+    ssg_stream_store(to[2] + o, c, n);
 }
 
 /* The view position t (vx, vy, -1) into the world-point arrays, no longer needed. */
@@ -370,7 +352,7 @@ static void store(const struct job *j, struct chunk *k, size_t o)
     const int n = k->count;
     view_positions(k);
     store3(j->pos, o, k->px, k->py, k->pz, n);
-    store_plane(j->depth + o, k->t, n);
+    ssg_stream_store(j->depth + o, k->t, n);
     store3(j->nrm, o, k->nvx, k->nvy, k->nvz, n);
     store3(j->alb, o, k->ar, k->ag, k->ab, n);
 }
@@ -428,7 +410,7 @@ static void segment(const struct job *j, struct chunk *k, int x0, int y)
     }
     store(j, k, o);
     if (j->back)
-        store_plane(j->back + o, k->back, k->count);
+        ssg_stream_store(j->back + o, k->back, k->count);
     if (j->motion[0]) {
         motion(j->c, k);
         store3(j->motion, o, k->px, k->py, k->pz, k->count);
@@ -446,9 +428,7 @@ static void rows(void *user, int y0, int y1)
     for (int y = y0; y < y1; y++)
         for (int x0 = 0; x0 < j->w; x0 += CHUNK)
             segment(j, &k, x0, y);
-#if defined(__SSE__)
-    _mm_sfence(); /* the streaming stores are visible before the band counts as done */
-#endif
+    ssg_stream_fence(); /* the streaming stores are visible before the band counts as done */
 }
 
 enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
