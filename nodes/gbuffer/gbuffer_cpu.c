@@ -112,29 +112,32 @@ static void trace_back(const struct job *j, struct chunk *k)
 struct surface {
     int mesh, triangle;                 /* the last hit's; -1 = none yet */
     const struct ssg_mesh *m;
-    const struct ssg_material *mat;
     int plain_normal, plain_albedo, plain_emission;
+    float albedo[3], specular[3], shininess, emission[3]; /* the material's */
     const float *n0, *n1, *n2;          /* the triangle's vertex normals (plain_normal) */
 };
 
-static void surface_of(const struct ssg_scene *s, int mesh, int face, struct surface *f)
+/* The mesh's surface; 1 when its material has a specular colour. */
+static int surface_of(const struct ssg_scene *s, int mesh, int face, struct surface *f)
 {
     const struct ssg_mesh *m = &s->meshes[mesh];
     const struct ssg_material *mat = &s->materials[m->material];
-    f->mesh = mesh, f->triangle = -1, f->m = m, f->mat = mat;
+    f->mesh = mesh, f->triangle = -1, f->m = m;
     f->plain_normal = !face && !(mat->normal_texture >= 0 && m->uvs && m->tangents);
     f->plain_albedo = !(mat->texture >= 0 && m->uvs) && !m->colors;
     f->plain_emission = mat->emission_texture < 0 || !m->uvs;
+    memcpy(f->albedo, mat->albedo, sizeof f->albedo);
+    memcpy(f->specular, mat->specular, sizeof f->specular);
+    memcpy(f->emission, mat->emission, sizeof f->emission);
+    f->shininess = mat->shininess;
+    return f->specular[0] > 0.0f || f->specular[1] > 0.0f || f->specular[2] > 0.0f;
 }
 
-/* The hit's world normal (ssg_hit_normal: interpolated vertex normals, not normalised). */
-static void hit_normal(const struct ssg_scene *s, struct surface *f, const struct ssg_hit *h,
-                       int face, float n[3])
+/* Pixel i's interpolated vertex normal (ssg_hit_normal without a normal map: not
+   normalised). */
+static inline void plain_normal(struct surface *f, const struct ssg_hit *h, struct chunk *k,
+                                int i)
 {
-    if (!f->plain_normal) {
-        ssg_hit_normal(s, h, face, n);
-        return;
-    }
     if (h->triangle != f->triangle) {
         const uint32_t *tri = &f->m->indices[3 * (size_t)h->triangle];
         f->triangle = h->triangle;
@@ -143,43 +146,67 @@ static void hit_normal(const struct ssg_scene *s, struct surface *f, const struc
         f->n2 = &f->m->normals[3 * tri[2]];
     }
     float w0 = 1.0f - h->u - h->v;
-    for (int i = 0; i < 3; i++)
-        n[i] = w0 * f->n0[i] + h->u * f->n1[i] + h->v * f->n2[i];
+    k->nx[i] = w0 * f->n0[0] + h->u * f->n1[0] + h->v * f->n2[0];
+    k->ny[i] = w0 * f->n0[1] + h->u * f->n1[1] + h->v * f->n2[1];
+    k->nz[i] = w0 * f->n0[2] + h->u * f->n1[2] + h->v * f->n2[2];
+}
+
+/* The other cases through surface.c, out of line: their arrays stay off the plain path. */
+static __attribute__((noinline)) void mapped_surface(const struct ssg_scene *s,
+                                                     const struct surface *f,
+                                                     const struct ssg_hit *h, int face,
+                                                     int emit, struct chunk *k, int i)
+{
+    float n[3], albedo[3], e[3];
+    if (!f->plain_normal) {
+        ssg_hit_normal(s, h, face, n);
+        k->nx[i] = n[0], k->ny[i] = n[1], k->nz[i] = n[2];
+    }
+    if (!f->plain_albedo) {
+        ssg_hit_albedo(s, h, albedo);
+        k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
+    }
+    if (emit && !f->plain_emission) {
+        ssg_hit_emission(s, h, e);
+        k->er[i] = e[0], k->eg[i] = e[1], k->eb[i] = e[2];
+    }
+}
+
+/* A background pixel: 0 everywhere (shininess 1). */
+static void background(struct chunk *k, int i)
+{
+    k->t[i] = 0.0f;
+    k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
+    k->ar[i] = k->ag[i] = k->ab[i] = 0.0f;
+    k->sr[i] = k->sg[i] = k->sb[i] = 0.0f;
+    k->shin[i] = 1.0f;
+    k->er[i] = k->eg[i] = k->eb[i] = 0.0f;
 }
 
 /* The scattered reads: per hit, its normal, depth and material (and emission when read). */
 static void gather(const struct job *j, struct chunk *k)
 {
     const struct ssg_scene *s = j->scene;
-    int face = j->c->p.normals == SSG_GBUFFER_NORMALS_FACE;
+    const int face = j->c->p.normals == SSG_GBUFFER_NORMALS_FACE, emit = j->emit[0] != NULL;
     struct surface f = {.mesh = -1};
     k->any_specular = 0;
     for (int i = 0; i < k->count; i++) {
         const struct ssg_hit *h = &k->hits[i];
-        float n[3] = {0, 0, 0}, albedo[3] = {0, 0, 0}, spec[3] = {0, 0, 0}, shin = 1;
-        float e[3] = {0, 0, 0};
-        if (h->mesh >= 0) {
-            if (h->mesh != f.mesh)
-                surface_of(s, h->mesh, face, &f);
-            hit_normal(s, &f, h, face, n);
-            if (f.plain_albedo)
-                memcpy(albedo, f.mat->albedo, sizeof albedo);
-            else
-                ssg_hit_albedo(s, h, albedo);
-            memcpy(spec, f.mat->specular, sizeof spec);
-            shin = f.mat->shininess;
-            k->any_specular |= spec[0] > 0.0f || spec[1] > 0.0f || spec[2] > 0.0f;
-            if (j->emit[0] && f.plain_emission) /* on demand (gbuffer.h) */
-                memcpy(e, f.mat->emission, sizeof e);
-            else if (j->emit[0])
-                ssg_hit_emission(s, h, e);
+        if (h->mesh < 0) {
+            background(k, i);
+            continue;
         }
-        k->t[i] = h->mesh >= 0 ? h->t : 0.0f;
-        k->nx[i] = n[0], k->ny[i] = n[1], k->nz[i] = n[2];
-        k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
-        k->sr[i] = spec[0], k->sg[i] = spec[1], k->sb[i] = spec[2];
-        k->shin[i] = shin;
-        k->er[i] = e[0], k->eg[i] = e[1], k->eb[i] = e[2];
+        if (h->mesh != f.mesh)
+            k->any_specular |= surface_of(s, h->mesh, face, &f);
+        k->t[i] = h->t;
+        if (f.plain_normal)
+            plain_normal(&f, h, k, i);
+        k->ar[i] = f.albedo[0], k->ag[i] = f.albedo[1], k->ab[i] = f.albedo[2];
+        k->sr[i] = f.specular[0], k->sg[i] = f.specular[1], k->sb[i] = f.specular[2];
+        k->shin[i] = f.shininess;
+        k->er[i] = f.emission[0], k->eg[i] = f.emission[1], k->eb[i] = f.emission[2];
+        if (!f.plain_normal || !f.plain_albedo || (emit && !f.plain_emission))
+            mapped_surface(s, &f, h, face, emit, k, i);
     }
 }
 
