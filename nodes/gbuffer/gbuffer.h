@@ -28,10 +28,10 @@
       "material albedo times texture, linear RGB", .gl_in = SSG_GBUFFER_GL_SHADE)          \
     X(SSG_GBUFFER_OUT_DIRECT, "direct", SSG_T_COLOR,                                       \
       "diffuse + Blinn-Phong light of the scene's lights, no shadows, linear RGB",         \
-      .lit = 1, .gl_in = SSG_GBUFFER_GL_SHADE)                                             \
+      .lit = 1, .on_demand = 1, .gl_in = SSG_GBUFFER_GL_SHADE)                             \
     X(SSG_GBUFFER_OUT_ENVIRONMENT, "environment", SSG_T_COLOR,                             \
       "diffuse light of the scene's environment, no occlusion: albedo / pi * "             \
-      "irradiance, linear RGB", .lit = 1, .gl_in = SSG_GBUFFER_GL_SHADE)                   \
+      "irradiance, linear RGB", .lit = 1, .on_demand = 1, .gl_in = SSG_GBUFFER_GL_SHADE)   \
     X(SSG_GBUFFER_OUT_BACK, "back", SSG_T_SCALAR,                                          \
       "linear depth along -z of the next surface behind the first on the pixel's "        \
       "ray (depth * (1 + 1e-4) < back <= far); +inf where there is none, 0 = "             \

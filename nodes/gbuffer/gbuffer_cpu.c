@@ -7,10 +7,12 @@
  * lighting included, is straight-line arithmetic over those arrays that the compiler can
  * vectorise, ending in contiguous stores into the output planes. A background pixel
  * gathers zeros and so comes out 0 everywhere without a branch. A pixel depends only on
- * its own ray, so the result does not depend on the threads. */
-#if defined(__SSE__)
-#include <immintrin.h>
-#endif
+ * its own ray, so the result does not depend on the threads. The arithmetic steps are
+ * compiled per instruction set (SSG_VECTOR_CLONES, vector_loops.h: the same IEEE
+ * operations lane by lane, no fused multiply-adds), so AVX2 does them 8 pixels at a time.
+ * `direct` and `environment`, like `back`, `motion` and `emission`, are made only when
+ * read (gbuffer.h): gi.graph reads neither. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -19,6 +21,7 @@
 #include "scene/env.h"
 #include "scene/rt.h"
 #include "common/direct.h"
+#include "common/stream_store.h"
 #include "common/surface.h"
 #include "scene/scene.h"
 
@@ -30,7 +33,8 @@ enum { ROWS_PER_BAND = 4, CHUNK = 128 };
 struct job {
     const struct ssg_gbuffer_consts *c;
     const struct ssg_scene *scene;
-    float *pos[3], *nrm[3], *depth, *alb[3], *dir[3], *env[3]; /* output planes */
+    float *pos[3], *nrm[3], *depth, *alb[3]; /* output planes */
+    float *dir[3], *env[3];       /* direct and environment light; NULL = nobody reads them */
     float *back;                  /* the second layer's plane; NULL = nobody reads it */
     float *motion[3];             /* the motion planes; NULL = nobody reads them */
     float *emit[3];               /* the emission planes; NULL = nobody reads them */
@@ -61,17 +65,19 @@ struct chunk {
 };
 
 /* The rays of pixels [x0, x0 + count) of row y. */
-static void make_rays(const struct job *j, struct chunk *k, int x0, int y)
+SSG_VECTOR_CLONES static void
+make_rays(const struct ssg_gbuffer_consts *c, struct chunk *restrict k, int x0, int y, int w)
 {
-    const struct ssg_gbuffer_consts *c = j->c;
-    const float *r = c->rot;
-    float inv_f = c->inv_f, vy = -((float)y + 0.5f - c->proj.cy) * inv_f;
-    k->count = x0 + CHUNK < j->w ? CHUNK : j->w - x0;
-    for (int s = 0; s < k->count; s++) {
-        k->vx[s] = ((float)(x0 + s) + 0.5f - c->proj.cx) * inv_f;
+    float r[9]; /* local copies: the compiler cannot tell the stores below from them */
+    memcpy(r, c->rot, sizeof r);
+    const float inv_f = c->inv_f, cx = c->proj.cx, vy = -((float)y + 0.5f - c->proj.cy) * inv_f;
+    const int n = x0 + CHUNK < w ? CHUNK : w - x0;
+    k->count = n;
+    for (int s = 0; s < n; s++) {
+        k->vx[s] = ((float)(x0 + s) + 0.5f - cx) * inv_f;
         k->vy[s] = vy;
     }
-    for (int s = 0; s < k->count; s++) { /* world = rot^T * view, view z = -1 */
+    for (int s = 0; s < n; s++) { /* world = rot^T * view, view z = -1 */
         k->wx[s] = r[0] * k->vx[s] + r[3] * vy - r[6];
         k->wy[s] = r[1] * k->vx[s] + r[4] * vy - r[7];
         k->wz[s] = r[2] * k->vx[s] + r[5] * vy - r[8];
@@ -100,43 +106,118 @@ static void trace_back(const struct job *j, struct chunk *k)
     }
 }
 
-/* The scattered reads: per hit, its normal, depth and material. */
-static void gather(const struct job *j, struct chunk *k)
+/* What gather keeps of the mesh of the last hit: the plain cases (no texture, vertex
+   colour or normal map) are the surface.c formulas written out here, the same operations
+   in the same order, so they give the same bits without a call per pixel. */
+struct surface {
+    int mesh, triangle;                 /* the last hit's; -1 = none yet */
+    const struct ssg_mesh *m;
+    int plain_normal, plain_albedo, plain_emission;
+    float albedo[3], specular[3], shininess, emission[3]; /* the material's */
+    const float *n0, *n1, *n2;          /* the triangle's vertex normals (plain_normal) */
+};
+
+/* The mesh's surface; 1 when its material has a specular colour. */
+static int surface_of(const struct ssg_scene *s, int mesh, int face, struct surface *f)
 {
-    const struct ssg_scene *s = j->scene;
-    int face = j->c->p.normals == SSG_GBUFFER_NORMALS_FACE;
-    k->any_specular = 0;
-    for (int i = 0; i < k->count; i++) {
-        const struct ssg_hit *h = &k->hits[i];
-        float n[3] = {0, 0, 0}, albedo[3] = {0, 0, 0}, spec[3] = {0, 0, 0}, shin = 1;
-        if (h->mesh >= 0) {
-            const struct ssg_mesh *m = &s->meshes[h->mesh];
-            const struct ssg_material *mat = &s->materials[m->material];
-            ssg_hit_normal(s, h, face, n);
-            ssg_hit_albedo(s, h, albedo);
-            memcpy(spec, mat->specular, sizeof spec);
-            shin = mat->shininess;
-            k->any_specular |= spec[0] > 0.0f || spec[1] > 0.0f || spec[2] > 0.0f;
-        }
-        k->t[i] = h->mesh >= 0 ? h->t : 0.0f;
-        k->nx[i] = n[0], k->ny[i] = n[1], k->nz[i] = n[2];
-        k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
-        k->sr[i] = spec[0], k->sg[i] = spec[1], k->sb[i] = spec[2];
-        k->shin[i] = shin;
+    const struct ssg_mesh *m = &s->meshes[mesh];
+    const struct ssg_material *mat = &s->materials[m->material];
+    f->mesh = mesh, f->triangle = -1, f->m = m;
+    f->plain_normal = !face && !(mat->normal_texture >= 0 && m->uvs && m->tangents);
+    f->plain_albedo = !(mat->texture >= 0 && m->uvs) && !m->colors;
+    f->plain_emission = mat->emission_texture < 0 || !m->uvs;
+    memcpy(f->albedo, mat->albedo, sizeof f->albedo);
+    memcpy(f->specular, mat->specular, sizeof f->specular);
+    memcpy(f->emission, mat->emission, sizeof f->emission);
+    f->shininess = mat->shininess;
+    return f->specular[0] > 0.0f || f->specular[1] > 0.0f || f->specular[2] > 0.0f;
+}
+
+/* Pixel i's interpolated vertex normal (ssg_hit_normal without a normal map: not
+   normalised). */
+static inline void plain_normal(struct surface *f, const struct ssg_hit *h, struct chunk *k,
+                                int i)
+{
+    if (h->triangle != f->triangle) {
+        const uint32_t *tri = &f->m->indices[3 * (size_t)h->triangle];
+        f->triangle = h->triangle;
+        f->n0 = &f->m->normals[3 * tri[0]];
+        f->n1 = &f->m->normals[3 * tri[1]];
+        f->n2 = &f->m->normals[3 * tri[2]];
     }
-    for (int i = 0; j->emit[0] && i < k->count; i++) { /* on demand (gbuffer.h) */
-        float e[3] = {0, 0, 0};
-        if (k->hits[i].mesh >= 0)
-            ssg_hit_emission(s, &k->hits[i], e);
+    float w0 = 1.0f - h->u - h->v;
+    k->nx[i] = w0 * f->n0[0] + h->u * f->n1[0] + h->v * f->n2[0];
+    k->ny[i] = w0 * f->n0[1] + h->u * f->n1[1] + h->v * f->n2[1];
+    k->nz[i] = w0 * f->n0[2] + h->u * f->n1[2] + h->v * f->n2[2];
+}
+
+/* The other cases through surface.c, out of line: their arrays stay off the plain path. */
+static __attribute__((noinline)) void mapped_surface(const struct ssg_scene *s,
+                                                     const struct surface *f,
+                                                     const struct ssg_hit *h, int face,
+                                                     int emit, struct chunk *k, int i)
+{
+    float n[3], albedo[3], e[3];
+    if (!f->plain_normal) {
+        ssg_hit_normal(s, h, face, n);
+        k->nx[i] = n[0], k->ny[i] = n[1], k->nz[i] = n[2];
+    }
+    if (!f->plain_albedo) {
+        ssg_hit_albedo(s, h, albedo);
+        k->ar[i] = albedo[0], k->ag[i] = albedo[1], k->ab[i] = albedo[2];
+    }
+    if (emit && !f->plain_emission) {
+        ssg_hit_emission(s, h, e);
         k->er[i] = e[0], k->eg[i] = e[1], k->eb[i] = e[2];
     }
 }
 
-/* Unit normals turned to face the camera, in world and view space, and hit points. */
-static void geometry(const struct job *j, struct chunk *k)
+/* A background pixel: 0 everywhere (shininess 1). */
+static void background(struct chunk *k, int i)
 {
-    const float *r = j->c->rot, *eye = j->c->eye;
-    for (int s = 0; s < k->count; s++) {
+    k->t[i] = 0.0f;
+    k->nx[i] = k->ny[i] = k->nz[i] = 0.0f;
+    k->ar[i] = k->ag[i] = k->ab[i] = 0.0f;
+    k->sr[i] = k->sg[i] = k->sb[i] = 0.0f;
+    k->shin[i] = 1.0f;
+    k->er[i] = k->eg[i] = k->eb[i] = 0.0f;
+}
+
+/* The scattered reads: per hit, its normal, depth and material (and emission when read). */
+static void gather(const struct job *j, struct chunk *k)
+{
+    const struct ssg_scene *s = j->scene;
+    const int face = j->c->p.normals == SSG_GBUFFER_NORMALS_FACE, emit = j->emit[0] != NULL;
+    struct surface f = {.mesh = -1};
+    k->any_specular = 0;
+    for (int i = 0; i < k->count; i++) {
+        const struct ssg_hit *h = &k->hits[i];
+        if (h->mesh < 0) {
+            background(k, i);
+            continue;
+        }
+        if (h->mesh != f.mesh)
+            k->any_specular |= surface_of(s, h->mesh, face, &f);
+        k->t[i] = h->t;
+        if (f.plain_normal)
+            plain_normal(&f, h, k, i);
+        k->ar[i] = f.albedo[0], k->ag[i] = f.albedo[1], k->ab[i] = f.albedo[2];
+        k->sr[i] = f.specular[0], k->sg[i] = f.specular[1], k->sb[i] = f.specular[2];
+        k->shin[i] = f.shininess;
+        k->er[i] = f.emission[0], k->eg[i] = f.emission[1], k->eb[i] = f.emission[2];
+        if (!f.plain_normal || !f.plain_albedo || (emit && !f.plain_emission))
+            mapped_surface(s, &f, h, face, emit, k, i);
+    }
+}
+
+/* Unit normals turned to face the camera, in world and view space, and hit points. */
+SSG_VECTOR_CLONES static void geometry(const struct ssg_gbuffer_consts *c, struct chunk *restrict k)
+{
+    float r[9], eye[3];
+    memcpy(r, c->rot, sizeof r);
+    memcpy(eye, c->eye, sizeof eye);
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float inv = 1.0f / sqrtf(k->nx[s] * k->nx[s] + k->ny[s] * k->ny[s] +
                                  k->nz[s] * k->nz[s] + TINY);
         float nx = k->nx[s] * inv, ny = k->ny[s] * inv, nz = k->nz[s] * inv;
@@ -154,9 +235,10 @@ static void geometry(const struct job *j, struct chunk *k)
 }
 
 /* Unit direction to the camera; only the specular term needs it. */
-static void view_vectors(struct chunk *k)
+SSG_VECTOR_CLONES static void view_vectors(struct chunk *restrict k)
 {
-    for (int s = 0; s < k->count; s++) {
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float inv =
             1.0f / sqrtf(k->wx[s] * k->wx[s] + k->wy[s] * k->wy[s] + k->wz[s] * k->wz[s]);
         k->ux[s] = -k->wx[s] * inv, k->uy[s] = -k->wy[s] * inv, k->uz[s] = -k->wz[s] * inv;
@@ -165,46 +247,65 @@ static void view_vectors(struct chunk *k)
 
 /* Irradiance E of a point or spot light and unit L (nodes/common/direct.h, shared with
    direct_light). */
-static void point_light(struct chunk *k, const struct ssg_light *l)
+SSG_VECTOR_CLONES static void point_light(struct chunk *restrict k, const struct ssg_light *l)
 {
     const struct ssg_direct_cone cone = ssg_direct_cone_of(l);
-    for (int s = 0; s < k->count; s++) {
+    const float lp[3] = {l->position[0], l->position[1], l->position[2]};
+    const float intensity = l->intensity;
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float d[3];
-        k->e[s] = ssg_point_irradiance(l->position, &cone, l->intensity, k->px[s], k->py[s],
+        k->e[s] = ssg_point_irradiance(lp, &cone, intensity, k->px[s], k->py[s],
                                        k->pz[s], k->nx[s], k->ny[s], k->nz[s], d);
         k->lx[s] = d[0], k->ly[s] = d[1], k->lz[s] = d[2];
     }
 }
 
 /* Irradiance E of a directional light and L (nodes/common/direct.h). */
-static void directional_light(struct chunk *k, const struct ssg_light *l)
+SSG_VECTOR_CLONES static void
+directional_light(struct chunk *restrict k, const struct ssg_light *l)
 {
-    for (int s = 0; s < k->count; s++) {
+    const float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
+    const float intensity = l->intensity;
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float d[3];
-        k->e[s] = ssg_directional_irradiance(l->direction, l->intensity, k->nx[s], k->ny[s],
+        k->e[s] = ssg_directional_irradiance(dir, intensity, k->nx[s], k->ny[s],
                                              k->nz[s], d);
         k->lx[s] = d[0], k->ly[s] = d[1], k->lz[s] = d[2];
     }
 }
 
 /* Blinn-Phong (N.H)^shininess with H = normalize(L + V), where the light reaches. */
-static void specular(struct chunk *k)
+SSG_VECTOR_CLONES static void specular(struct chunk *restrict k)
 {
-    for (int s = 0; s < k->count; s++) {
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float hx = k->lx[s] + k->ux[s], hy = k->ly[s] + k->uy[s], hz = k->lz[s] + k->uz[s];
         float hinv = 1.0f / sqrtf(hx * hx + hy * hy + hz * hz + TINY);
         float ndh = (k->nx[s] * hx + k->ny[s] * hy + k->nz[s] * hz) * hinv;
         k->ndh[s] = ndh > 0.0f ? ndh : 0.0f;
     }
-    for (int s = 0; s < k->count; s++) /* powf does not vectorise: a loop of its own */
+    for (int s = 0; s < n; s++) /* powf does not vectorise: a loop of its own */
         k->spec[s] = k->e[s] > 0.0f ? powf(k->ndh[s], k->shin[s]) : 0.0f;
+}
+
+/* One light's Lambert + Blinn-Phong term added to lr, lg, lb. */
+SSG_VECTOR_CLONES static void accumulate(struct chunk *restrict k, const float color[3])
+{
+    const float inv_pi = (float)(1.0 / M_PI), cr = color[0], cg = color[1], cb = color[2];
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
+        k->lr[s] += (k->ar[s] * inv_pi + k->sr[s] * k->spec[s]) * cr * k->e[s];
+        k->lg[s] += (k->ag[s] * inv_pi + k->sg[s] * k->spec[s]) * cg * k->e[s];
+        k->lb[s] += (k->ab[s] * inv_pi + k->sb[s] * k->spec[s]) * cb * k->e[s];
+    }
 }
 
 /* Sums every light's Lambert + Blinn-Phong term into lr, lg, lb (README.md). */
 static void lighting(const struct job *j, struct chunk *k)
 {
     const struct ssg_scene *sc = j->scene;
-    const float inv_pi = (float)(1.0 / M_PI);
     for (int s = 0; s < k->count; s++) {
         k->lr[s] = k->lg[s] = k->lb[s] = 0.0f;
         k->spec[s] = 0.0f;
@@ -219,11 +320,7 @@ static void lighting(const struct job *j, struct chunk *k)
             directional_light(k, l);
         if (k->any_specular) /* matte chunks (most of a typical frame) skip it */
             specular(k);
-        for (int s = 0; s < k->count; s++) {
-            k->lr[s] += (k->ar[s] * inv_pi + k->sr[s] * k->spec[s]) * l->color[0] * k->e[s];
-            k->lg[s] += (k->ag[s] * inv_pi + k->sg[s] * k->spec[s]) * l->color[1] * k->e[s];
-            k->lb[s] += (k->ab[s] * inv_pi + k->sb[s] * k->spec[s]) * l->color[2] * k->e[s];
-        }
+        accumulate(k, l->color);
     }
 }
 
@@ -254,26 +351,18 @@ static void environment_light(const struct job *j, struct chunk *k)
     }
 }
 
-/* n floats of a chunk array into an output plane, with streaming stores from the first
-   16-byte boundary on: a frame's 16 planes (59 MB at 720p) are far larger than the
-   caches, so the usual stores only fetched each line before overwriting it. Measured:
-   the node 10 % faster at 720p. The band ends with a fence (rows). */
-static void store_plane(float *restrict dst, const float *restrict src, int n)
+/* Three chunk arrays into three planes at o, streaming (nodes/common/stream_store.h: a
+   frame's planes are far larger than the caches). The band ends with a fence (rows). */
+static void store3(float *const to[3], size_t o, const float *a, const float *b, const float *c,
+                   int n)
 {
-    int i = 0;
-#if defined(__SSE__)
-    for (; i < n && ((uintptr_t)(dst + i) & 15); i++)
-        dst[i] = src[i];
-    for (; i + 4 <= n; i += 4)
-        _mm_stream_ps(dst + i, _mm_loadu_ps(src + i));
-#endif
-    for (; i < n; i++)
-        dst[i] = src[i];
+    ssg_stream_store(to[0] + o, a, n);
+    ssg_stream_store(to[1] + o, b, n);
+    ssg_stream_store(to[2] + o, c, n);
 }
 
-/* The segment into the output planes: view position and depth, normal, albedo, direct
-   light (the view position into the world-point arrays, no longer needed). */
-static void store(const struct job *j, struct chunk *k, size_t o)
+/* The view position t (vx, vy, -1) into the world-point arrays, no longer needed. */
+SSG_VECTOR_CLONES static void view_positions(struct chunk *restrict k)
 {
     const int n = k->count;
     for (int x = 0; x < n; x++) {
@@ -282,13 +371,17 @@ static void store(const struct job *j, struct chunk *k, size_t o)
         k->py[x] = t * k->vy[x];
         k->pz[x] = 0.0f - t; /* +0, not -0, for background */
     }
-    const float *from[13] = {k->px, k->py, k->pz, k->t, k->nvx, k->nvy, k->nvz,
-                             k->ar, k->ag, k->ab, k->lr, k->lg, k->lb};
-    float *const to[13] = {j->pos[0], j->pos[1], j->pos[2], j->depth, j->nrm[0],
-                           j->nrm[1], j->nrm[2], j->alb[0], j->alb[1], j->alb[2],
-                           j->dir[0], j->dir[1], j->dir[2]};
-    for (int p = 0; p < 13; p++)
-        store_plane(to[p] + o, from[p], n);
+}
+
+/* The segment into the output planes: view position and depth, normal, albedo. */
+static void store(const struct job *j, struct chunk *k, size_t o)
+{
+    const int n = k->count;
+    view_positions(k);
+    store3(j->pos, o, k->px, k->py, k->pz, n);
+    ssg_stream_store(j->depth + o, k->t, n);
+    store3(j->nrm, o, k->nvx, k->nvy, k->nvz, n);
+    store3(j->alb, o, k->ar, k->ag, k->ab, n);
 }
 
 /* Motion to the previous frame (README.md, `motion`) into px, py, pz (after store).
@@ -299,12 +392,14 @@ static void store(const struct job *j, struct chunk *k, size_t o)
    distance from the centre. A point nearer than near in the previous view (behind its
    camera, z <= 0, included) had no pixel there: x = y = 0, z as it is. gbuffer_motion.glsl
    has the same operations. */
-static void motion(const struct job *j, struct chunk *k)
+SSG_VECTOR_CLONES static void motion(const struct ssg_gbuffer_consts *c, struct chunk *restrict k)
 {
-    const struct ssg_gbuffer_consts *c = j->c;
-    const float *m = c->m_rot, *mv = c->m_move;
+    float m[9], mv[3];
+    memcpy(m, c->m_rot, sizeof m);
+    memcpy(mv, c->m_move, sizeof mv);
     const float fp = c->prev_f, df = c->prev_f - c->proj.f, near_z = c->near_z;
-    for (int s = 0; s < k->count; s++) {
+    const int n = k->count;
+    for (int s = 0; s < n; s++) {
         float t = k->t[s], vx = k->vx[s], vy = k->vy[s];
         float inv_t = t > 0.0f ? 1.0f / t : 0.0f;
         float qx = m[0] * vx + m[1] * vy - m[2] + mv[0] * inv_t;
@@ -320,22 +415,35 @@ static void motion(const struct job *j, struct chunk *k)
     }
 }
 
-/* The environment output of the segment (after store: it reuses lr, lg, lb). */
-static void store_environment(const struct job *j, struct chunk *k, size_t o)
+/* One segment, pixels [x0, x0 + CHUNK) of row y: every output that is read. The light
+   outputs go first, while the world points and lr, lg, lb are free; motion reuses px,
+   py, pz after store. */
+static void segment(const struct job *j, struct chunk *k, int x0, int y)
 {
-    environment_light(j, k);
-    store_plane(j->env[0] + o, k->lr, k->count);
-    store_plane(j->env[1] + o, k->lg, k->count);
-    store_plane(j->env[2] + o, k->lb, k->count);
-}
-
-/* The motion output of the segment (after store: it reuses px, py, pz). */
-static void store_motion(const struct job *j, struct chunk *k, size_t o)
-{
-    motion(j, k);
-    store_plane(j->motion[0] + o, k->px, k->count);
-    store_plane(j->motion[1] + o, k->py, k->count);
-    store_plane(j->motion[2] + o, k->pz, k->count);
+    const size_t o = (size_t)y * (size_t)j->w + (size_t)x0;
+    make_rays(j->c, k, x0, y, j->w);
+    trace(j, k);
+    gather(j, k);
+    if (j->back)
+        trace_back(j, k);
+    geometry(j->c, k);
+    if (j->dir[0]) {
+        lighting(j, k);
+        store3(j->dir, o, k->lr, k->lg, k->lb, k->count);
+    }
+    if (j->env[0]) {
+        environment_light(j, k);
+        store3(j->env, o, k->lr, k->lg, k->lb, k->count);
+    }
+    store(j, k, o);
+    if (j->back)
+        ssg_stream_store(j->back + o, k->back, k->count);
+    if (j->motion[0]) {
+        motion(j->c, k);
+        store3(j->motion, o, k->px, k->py, k->pz, k->count);
+    }
+    if (j->emit[0])
+        store3(j->emit, o, k->er, k->eg, k->eb, k->count);
 }
 
 static void rows(void *user, int y0, int y1)
@@ -345,28 +453,9 @@ static void rows(void *user, int y0, int y1)
     for (int s = 0; s < CHUNK; s++)
         k.ox[s] = j->c->eye[0], k.oy[s] = j->c->eye[1], k.oz[s] = j->c->eye[2];
     for (int y = y0; y < y1; y++)
-        for (int x0 = 0; x0 < j->w; x0 += CHUNK) {
-            make_rays(j, &k, x0, y);
-            trace(j, &k);
-            gather(j, &k);
-            if (j->back)
-                trace_back(j, &k);
-            geometry(j, &k);
-            lighting(j, &k);
-            store(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
-            store_environment(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
-            if (j->back)
-                store_plane(j->back + (size_t)y * (size_t)j->w + (size_t)x0, k.back, k.count);
-            if (j->motion[0])
-                store_motion(j, &k, (size_t)y * (size_t)j->w + (size_t)x0);
-            const float *emitted[3] = {k.er, k.eg, k.eb};
-            for (int a = 0; j->emit[0] && a < 3; a++)
-                store_plane(j->emit[a] + (size_t)y * (size_t)j->w + (size_t)x0, emitted[a],
-                            k.count);
-        }
-#if defined(__SSE__)
-    _mm_sfence(); /* the streaming stores are visible before the band counts as done */
-#endif
+        for (int x0 = 0; x0 < j->w; x0 += CHUNK)
+            segment(j, &k, x0, y);
+    ssg_stream_fence(); /* the streaming stores are visible before the band counts as done */
 }
 
 enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
@@ -380,12 +469,15 @@ enum ssg_err ssg_gbuffer_run_cpu(const struct ssg_node_ctx *ctx, const void *con
         j.pos[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_POSITION], a);
         j.nrm[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_NORMAL], a);
         j.alb[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_ALBEDO], a);
-        j.dir[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_DIRECT], a);
-        j.env[a] = ssg_image_plane(out[SSG_GBUFFER_OUT_ENVIRONMENT], a);
     }
     j.depth = ssg_image_plane(out[SSG_GBUFFER_OUT_DEPTH], 0);
     j.back = out[SSG_GBUFFER_OUT_BACK] ? out[SSG_GBUFFER_OUT_BACK]->data : NULL;
     for (int a = 0; a < 3; a++) { /* on demand: only when something reads it */
+        j.dir[a] = out[SSG_GBUFFER_OUT_DIRECT] ? ssg_image_plane(out[SSG_GBUFFER_OUT_DIRECT], a)
+                                                : NULL;
+        j.env[a] = out[SSG_GBUFFER_OUT_ENVIRONMENT]
+                       ? ssg_image_plane(out[SSG_GBUFFER_OUT_ENVIRONMENT], a)
+                       : NULL;
         j.motion[a] = out[SSG_GBUFFER_OUT_MOTION] ? ssg_image_plane(out[SSG_GBUFFER_OUT_MOTION], a)
                                                   : NULL;
         j.emit[a] = out[SSG_GBUFFER_OUT_EMISSION]

@@ -12,6 +12,7 @@
  * with the pass that writes it); by hand are only the images between the passes: the
  * visibility buffer `ids` and the first layer's depth `first`. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "scene/env.h"
 #include "gbuffer.h"
@@ -37,8 +38,38 @@ static float *pack_lights(const struct ssg_scene *s)
     return f;
 }
 
+/* The shading pass writes direct and environment light whether read or not (they are on
+   demand for the CPU kernel, gbuffer.h): an unread one gets a scratch image, so that its
+   stores never land in another output's image unit. */
+static enum ssg_err shade_pass(const struct ssg_node_ctx *ctx,
+                               const struct ssg_gbuffer_consts *c,
+                               const struct ssg_image *ids, const struct ssg_io *io);
+
 static enum ssg_err shade(const struct ssg_node_ctx *ctx, const struct ssg_gbuffer_consts *c,
                           const struct ssg_image *ids, const struct ssg_io *io)
+{
+    static const int lit[2] = {SSG_GBUFFER_OUT_DIRECT, SSG_GBUFFER_OUT_ENVIRONMENT};
+    struct ssg_image *out[SSG_GBUFFER_OUTPUTS], *scratch[2] = {NULL, NULL};
+    memcpy(out, io->out, sizeof out);
+    enum ssg_err e = SSG_OK;
+    for (int i = 0; i < 2 && !e; i++)
+        if (!out[lit[i]]) {
+            scratch[i] = ssg_gl_scratch(ctx, ids->width, ids->height, 3);
+            out[lit[i]] = scratch[i];
+            e = scratch[i] ? SSG_OK : SSG_E_NOMEM;
+        }
+    struct ssg_io with_light = *io;
+    with_light.out = out;
+    if (!e)
+        e = shade_pass(ctx, c, ids, &with_light);
+    for (int i = 0; i < 2; i++)
+        ssg_gl_scratch_release(&scratch[i]);
+    return e;
+}
+
+static enum ssg_err shade_pass(const struct ssg_node_ctx *ctx,
+                               const struct ssg_gbuffer_consts *c,
+                               const struct ssg_image *ids, const struct ssg_io *io)
 {
     const struct ssg_scene *s = ctx->scene;
     float *lights = pack_lights(s);

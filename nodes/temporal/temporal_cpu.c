@@ -6,7 +6,7 @@
  * step is one straight loop over the chunk's pixels with per-pixel lanes (structure of
  * arrays): the 3 x 3 moments of in (neighbours at fixed offsets: contiguous loads,
  * vectorised), the four bilinear history taps with their tests (index and weight per tap;
- * weight 0 for a rejected tap; scalar, see reproject), then the clamp and blend
+ * weight 0 for a rejected tap; gathers on AVX2), then the clamp and blend
  * (vectorised; the history's taps are gathers on AVX2 and up). No fused multiply-adds
  * (SSG_VECTOR_FMA is not defined): every multiply and add rounds as the shader's
  * `precise` ones do. in2 rides along as further
@@ -77,8 +77,7 @@ moments(const struct job *j, struct chunk *restrict k, int y, int x0, int len)
    depth difference within depth_tolerance, normals within normal_tolerance), else 0.
    Pixel (x, y)'s centre is x + 0.5, so the taps' top-left is floor(x + motion.x). The
    depth test is |z - d'| <= tol z (the ratio of DESIGN without a division). The loop over
-   pixels does not vectorise yet (GCC 12 turns the tap loads into masked gathers it cannot
-   emit); the blend's gathers and the moments do. */
+   pixels vectorises (the taps' loads are gathers on AVX2), as do the blend and moments. */
 SSG_VECTOR_CLONES static void
 reproject(const struct job *j, int y, int x0, int len, const float *restrict mx,
           const float *restrict my, const float *restrict mz, const float *restrict depth,
@@ -95,9 +94,9 @@ reproject(const struct job *j, int y, int x0, int len, const float *restrict mx,
     const float tol = j->c->p.depth_tolerance;
     const float ntol = j->nrm[0] ? j->c->p.normal_tolerance : -INFINITY;
     const float xmax = (float)j->w + 1.0f, ymax = (float)j->h + 1.0f;
-    const size_t row = (size_t)y * (size_t)j->w + (size_t)x0;
+    const int row = y * iw + x0; /* int indices: 8 of them a gather on AVX2 */
     for (int i = 0; i < len; i++) {
-        size_t o = row + (size_t)i;
+        int o = row + i;
         /* clamped so that a wild vector cannot overflow the int below */
         float px = (float)(x0 + i) + mx[o], py = (float)y + my[o];
         px = px > -2.0f ? px : -2.0f; /* selects: fminf and fmaxf are libm calls here */
@@ -114,14 +113,16 @@ reproject(const struct job *j, int y, int x0, int len, const float *restrict mx,
         for (int t = 0; t < TAPS; t++) {
             int tx = ix + (t & 1), ty = iy + (t >> 1);
             int inside = (tx >= 0) & (tx < iw) & (ty >= 0) & (ty < ih);
-            size_t q = inside ? (size_t)ty * (size_t)iw + (size_t)tx : o;
+            /* the tap's pixel, or this pixel outside the image; masked, not selected: GCC 12
+               vectorises no gather through a selected index */
+            int q = o + ((ty * iw + tx - o) & -inside);
             float wx = (t & 1) ? fx : 1.0f - fx, wy = (t >> 1) ? fy : 1.0f - fy;
             float pd = prev_depth[q];
             int ok = here & inside & (pd > 0.0f) & (fabsf(z - pd) <= tol * z);
             float c = n0[o] * pn0[q] + n1[o] * pn1[q] + n2[o] * pn2[q];
             ok = ok & (c >= ntol);
             float w = ok ? wx * wy : 0.0f;
-            idx[t][i] = (int)q;
+            idx[t][i] = q;
             wt[t][i] = w;
             wsum += w;
         }
@@ -164,12 +165,21 @@ blend_length(const struct ssg_temporal_consts *c, const struct chunk *restrict k
 }
 
 /* One channel: the history clamped to mean +/- gamma sigma of the window (gamma 0: not
-   clamped), then out = h + alpha (in - h); a restarting pixel gets in. */
+   clamped, and the window's moments are neither made nor read: temporal_chunk), then
+   out = h + alpha (in - h); a restarting pixel gets in. */
 SSG_VECTOR_CLONES static void
 blend_channel(const struct chunk *restrict k, int ch, const float *restrict hist,
               const float *restrict in, const float *restrict alpha, float *restrict out,
               float gamma, int len)
 {
+    if (!(gamma > 0.0f)) {
+        for (int i = 0; i < len; i++) {
+            int valid = k->wsum[i] >= SSG_TEMPORAL_MIN_WEIGHT;
+            float hv = fetch(k, hist, i), v = in[i];
+            out[i] = valid ? hv + alpha[i] * (v - hv) : v;
+        }
+        return;
+    }
     for (int i = 0; i < len; i++) {
         int valid = k->wsum[i] >= SSG_TEMPORAL_MIN_WEIGHT;
         float hv = fetch(k, hist, i);
@@ -178,8 +188,7 @@ blend_channel(const struct chunk *restrict k, int ch, const float *restrict hist
         float sd = sqrtf(var > 0.0f ? var : 0.0f);
         float lo = mean - gamma * sd, hi = mean + gamma * sd;
         float hc = hv < lo ? lo : hv;
-        hc = hc > hi ? hi : hc;
-        hv = gamma > 0.0f ? hc : hv;
+        hv = hc > hi ? hi : hc;
         float v = in[i];
         out[i] = valid ? hv + alpha[i] * (v - hv) : v;
     }
@@ -201,7 +210,8 @@ blend(const struct job *j, const struct chunk *k, int y, int x0, int len)
    another target, so the clones are the steps themselves. */
 static void temporal_chunk(const struct job *j, struct chunk *k, int y, int x0, int len)
 {
-    moments(j, k, y, x0, len);
+    if (j->c->p.gamma > 0.0f) /* gamma 0 clamps nothing: blend_channel reads no moments */
+        moments(j, k, y, x0, len);
     const float *const *n = j->nrm[0] ? j->nrm : j->motion; /* any planes: see reproject */
     const float *const *pn = j->nrm[0] ? j->prev_nrm : j->motion;
     reproject(j, y, x0, len, j->motion[0], j->motion[1], j->motion[2], j->depth, n[0], n[1],
