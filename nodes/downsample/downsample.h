@@ -7,7 +7,8 @@
 #include "graph/node.h"
 
 /* Ports, one row each (node.h): enumerator, name, types, doc, further fields. Output k
-   copies input k (motion's x and y rescaled to the output's pixels); inputs and outputs share their names (the shader's `<port>` and
+   copies input k (motion's x and y rescaled to the output's pixels), made only where read
+   (on_demand: a graph run binds no image to an output nothing reads); inputs and outputs share their names (the shader's `<port>` and
    `dst_<port>`, ssg_gl_ports). */
 #define SSG_DOWNSAMPLE_IN(X)                                                               \
     X(SSG_DOWNSAMPLE_IN_DEPTH, "depth", SSG_T_SCALAR, "linear depth; 0 = background")      \
@@ -25,19 +26,20 @@
 #define SSG_DOWNSAMPLE_OUT(X)                                                              \
     X(SSG_DOWNSAMPLE_OUT_DEPTH, "depth", SSG_T_SCALAR, "depth of each block's chosen pixel") \
     X(SSG_DOWNSAMPLE_OUT_POSITION, "position", SSG_T_VECTOR,                               \
-      "position of the chosen pixel; 0 when unconnected")                                  \
+      "position of the chosen pixel; 0 when unconnected", .on_demand = 1)                                  \
     X(SSG_DOWNSAMPLE_OUT_NORMAL, "normal", SSG_T_VECTOR,                                   \
-      "normal of the chosen pixel; 0 when unconnected")                                    \
+      "normal of the chosen pixel; 0 when unconnected", .on_demand = 1)                                    \
     X(SSG_DOWNSAMPLE_OUT_ALBEDO, "albedo", SSG_T_COLOR,                                    \
-      "albedo of the chosen pixel; 0 when unconnected")                                    \
+      "albedo of the chosen pixel; 0 when unconnected", .on_demand = 1)                                    \
     X(SSG_DOWNSAMPLE_OUT_DIRECT, "direct", SSG_T_COLOR,                                    \
-      "direct light of the chosen pixel; 0 when unconnected")                              \
+      "direct light of the chosen pixel; 0 when unconnected", .on_demand = 1)                              \
     X(SSG_DOWNSAMPLE_OUT_ENVIRONMENT, "environment", SSG_T_COLOR,                          \
-      "environment light of the chosen pixel; 0 when unconnected")                         \
+      "environment light of the chosen pixel; 0 when unconnected", .on_demand = 1)                         \
     X(SSG_DOWNSAMPLE_OUT_MOTION, "motion", SSG_T_VECTOR,                                   \
       "the chosen pixel's motion in output pixels, from the output pixel's centre (x, y), " \
       "its previous view depth (z), for a temporal node at this resolution; 0 when "      \
-      "unconnected")
+      "unconnected",                                                                       \
+      .on_demand = 1)
 SSG_PORT_ENUM(ssg_downsample_input, SSG_DOWNSAMPLE_IN, SSG_DOWNSAMPLE_INPUTS);
 SSG_PORT_ENUM(ssg_downsample_output, SSG_DOWNSAMPLE_OUT, SSG_DOWNSAMPLE_OUTPUTS);
 _Static_assert((int)SSG_DOWNSAMPLE_INPUTS == (int)SSG_DOWNSAMPLE_OUTPUTS,

@@ -2,7 +2,8 @@
  *
  * Each band of output rows first picks the representative pixel of each block of its rows
  * (a tiny sort of at most 16 depths), then copies every connected plane from those pixels
- * (unconnected ones get zeros: pool images arrive with old contents).
+ * (unconnected ones get zeros: pool images arrive with old contents); an output nothing
+ * reads has no image and is not made.
  * A block depends only on its own input pixels, so the result is the same whatever the
  * threads. */
 #include <math.h>
@@ -98,7 +99,7 @@ static void band(void *user, int y0, int y1)
                 pick[i] = representative(j, bx0 + i, by);
             size_t dst = (size_t)by * (size_t)j->ow + (size_t)bx0;
             for (int k = 0; k < SSG_DOWNSAMPLE_INPUTS; k++)
-                for (int ch = 0; ch < j->out[k]->channels; ch++) {
+                for (int ch = 0; j->out[k] && ch < j->out[k]->channels; ch++) {
                     float *out = j->out[k]->data + (size_t)ch * out_plane + dst;
                     if (!j->in[k]) {
                         memset(out, 0, sizeof(float) * (size_t)len);
@@ -108,7 +109,7 @@ static void band(void *user, int y0, int y1)
                     for (int i = 0; i < len; i++)
                         out[i] = in[pick[i]];
                 }
-            if (j->in[SSG_DOWNSAMPLE_IN_MOTION])
+            if (j->in[SSG_DOWNSAMPLE_IN_MOTION] && j->out[SSG_DOWNSAMPLE_OUT_MOTION])
                 rescale_motion(j, pick, bx0, by, len, dst);
         }
 }
