@@ -317,6 +317,12 @@ static void upsample_add_taps(const struct job *j, struct chunk *k, int y, int x
                 CHANNELS_MODES(j->channels, mode, TAP);
             }
     }
+#undef TAP_1
+#undef TAP_2
+#undef TAP_3
+#undef TAP_4
+#undef TAP_6
+#undef TAP
 }
 
 /* The fast path: radius FAST_R, every tap row inside the image. Each phase's pixels take
@@ -382,6 +388,12 @@ static void upsample_fast_taps(const struct job *j, struct chunk *restrict k, in
 #define FAST_6(md) FAST(6, md)
         CHANNELS_MODES(j->channels, mode, FAST);
     }
+#undef FAST_1
+#undef FAST_2
+#undef FAST_3
+#undef FAST_4
+#undef FAST_6
+#undef FAST
 }
 
 /* No tap had weight: the low-res pixel of closest depth among the taps (first in tap
