@@ -203,9 +203,13 @@ static const char *const light_files[] = {"examples/lights/sun.scene",
 /* A fresh load of the case under light file l, kept and run on `backend`, or NULL. */
 static struct ssg_graph *run_lit(const struct light_case *c, const char *backend, int l)
 {
+    /* the lit port asked for beside the sinks: an on-demand output (gbuffer.direct) is
+       made only where something reads it */
+    const char *lit[1] = {c->lit_port};
     struct ssg_overrides ov = {.width = SIZE_W, .height = SIZE_H, .seed = -1,
                                .backend = backend, .sets = c->sets,
-                               .set_count = c->set_count, .lights = light_files[l]};
+                               .set_count = c->set_count, .lights = light_files[l],
+                               .outputs = lit, .output_count = 1, .keep_sinks = 1};
     struct ssg_diags d = {0};
     struct ssg_graph *g = NULL;
     CHECK_EQ(ssg_graph_load(c->graph, &ov, &g, &d), SSG_OK);
