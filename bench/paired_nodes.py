@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """paired_nodes.py - one graph's single-run cost, node by node, against another build:
 runs OLD (a build of another commit, with the graphs of its own checkout) and NEW (this
-checkout's) alternately, PAIRS times in one sitting, and prints each node's median time
+checkout's) alternately, PAIRS times in one sitting (every other pair new first), and prints each node's median time
 (ms, write excluded), the sum of those medians and its ratio, then the medians of the runs'
 totals and their ratio. Only pairs mean anything on a machine whose speed drifts between
 sittings; a single node's spike moves a total's median, not a node's.
@@ -18,6 +18,9 @@ the median frame ssgraph printed (nodes kept from frame 0 cost nothing in the ot
 --new-graph runs another graph for the new side (a successor of --graph).
 
 bench/results/issue44/t44d/README.md ("The frame time") was made with it against b22328e.
+Two copies of one build, one run through a wrapper that sets LD_LIBRARY_PATH, differed by
+5 % (83.6 against 87.6 ms a frame, ssdo.graph, 8 pairs): read differences of that size as
+noise (bench/results/issue47/README.md).
 """
 import argparse
 import collections
@@ -73,11 +76,12 @@ def main():
     old_runs, new_runs = collections.defaultdict(list), collections.defaultdict(list)
     old_totals, new_totals = [], []
     with tempfile.TemporaryDirectory() as tmp:
-        for _ in range(a.pairs):
-            for binary, graph, sets, runs, totals in (
-                    (a.old, os.path.join(a.old_graphs, a.graph), [], old_runs, old_totals),
-                    (a.bin, os.path.join(ROOT, "graphs", a.new_graph or a.graph), a.set,
-                     new_runs, new_totals)):
+        for pair in range(a.pairs):
+            sides = [(a.old, os.path.join(a.old_graphs, a.graph), [], old_runs, old_totals),
+                     (a.bin, os.path.join(ROOT, "graphs", a.new_graph or a.graph), a.set,
+                      new_runs, new_totals)]
+            # every other pair runs the new side first, so that an order effect cancels
+            for binary, graph, sets, runs, totals in sides[::-1] if pair % 2 else sides:
                 t, median = node_times(binary, graph, a.size, a.threads, tmp, sets,
                                        scene_args, a.frames)
                 for node, ms in t.items():
