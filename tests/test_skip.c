@@ -6,7 +6,8 @@
  * light, its filter and its upsampling: their light is all zero, and the visibility they also make only scales that
  * zero in combine. The images are the bytes of a kept graph's run, which skips nothing (a
  * live graph's every output may be looked at). Asking for the visibility the branch makes
- * (glob.out2) makes all five run again, and under a sky nothing is skipped. */
+ * (glob.out2) makes all five run again, and under a sky nothing is skipped. On a still
+ * camera the skipped nodes are kept after frame 0, as runs are. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,6 +100,28 @@ static void check_case(const char *label, const char *lights, const char *const 
     ssg_graph_destroy(&kept);
 }
 
+/* Three frames of a still camera: the branch is skipped once and then kept like any
+   run's outputs, and so is what reads it (glit): a sequence pays nothing for it after
+   frame 0. */
+static void still_sequence(void)
+{
+    struct ssg_graph *g = load(NULL, NULL, 0, 0);
+    struct ssg_run_stats s = {0};
+    struct ssg_diags d = {0};
+    struct ssg_run_options opt = {.out_dir = out_dir, .threads = 2, .stats = &s, .frames = 3};
+    if (g && ssg_graph_run(g, &opt, &d) == SSG_OK) {
+        for (int k = 0; k < (int)(sizeof branch / sizeof branch[0]); k++)
+            CHECK(!strcmp(why_of(&s, branch[k]), "skipped: zero or unused, kept x2"));
+        const char *glit = why_of(&s, "glit");
+        if (strcmp(glit, "first run, kept x2"))
+            fprintf(stderr, "still camera: glit says '%s'\n", glit);
+        CHECK(!strcmp(glit, "first run, kept x2"));
+    }
+    ssg_diags_print(&d, stderr);
+    ssg_run_stats_free(&s);
+    ssg_graph_destroy(&g);
+}
+
 int main(void)
 {
     const char *tmp = getenv("SSG_TMP");
@@ -108,5 +131,6 @@ int main(void)
     static const char *const visibility[] = {"gi.out", "glob.out2"};
     check_case("its visibility asked for", NULL, visibility, 2, "first run");
     check_case("under a sky", "examples/lights/sky.scene", frame, 3, "first run");
+    still_sequence();
     return check_report();
 }

@@ -366,7 +366,10 @@ static enum ssg_err run_frame(struct run *r, int frame, int frames)
         if (why != SSG_WHY_KEPT && runs_in(n, frame, frames) && r->skip &&
             ssg_skip_decide(r->skip, r->g, p, &fill)) {
             e = skip_node(r, p, fill);
-            ssg_redo_after(r->state, p, 0, e); /* decided again in the next frame */
+            /* kept as a run's outputs are: what it skips for (zero lights, an unused
+               output) cannot change while its outputs stand, and a live graph skips
+               nothing */
+            ssg_redo_after(r->state, p, !n->desc->is_sink && r->hold[r->g->order[p]], e);
             r->ran[r->g->order[p]] = 1;
             why = SSG_WHY_SKIPPED;
         } else if (why != SSG_WHY_KEPT && runs_in(n, frame, frames)) {

@@ -12,7 +12,8 @@
  *     zero ones and those that only feed outputs nobody uses or that are zero anyway.
  * Each prediction is an exact claim of the descriptors, or a "not known" that keeps a
  * node running, so a skipped node's used outputs are the +0 its run would have made. The
- * answer is the same for any thread count and the same on both backends. */
+ * answer is the same for any thread count; a zero_outputs answer needs its inputs on the
+ * CPU, so where they were made on GL it is "not known" and nothing is skipped for it. */
 #include <stdlib.h>
 
 #include "graph/gl_backend.h"
@@ -83,16 +84,20 @@ static unsigned predict(const struct ssg_skip *s, const struct ssg_graph *g, int
     }
     if (d->zero_outputs) {
         const struct ssg_image *in[SSG_MAX_PORTS] = {0};
+        unsigned connected = 0;
         for (int k = 0; k < d->input_count; k++) {
             const struct gconn *c = &n->in[k];
+            connected |= (unsigned)(c->node >= 0) << k;
             const struct ssg_image *im = c->node >= 0 && !c->value.prev &&
                                                  s->pos[c->node] < p
                                              ? g->nodes[c->node].out_img[c->port]
                                              : NULL;
-            /* pixels only the GL copy holds are not looked at: not known */
+            /* pixels only the GL copy holds are not looked at: not known (so a graph
+               whose lightprobe runs on GL skips nothing; downloading every input to
+               decide would cost more than it saves) */
             in[k] = im && (!im->gpu || im->gpu->cpu_valid) ? im : NULL;
         }
-        mask |= d->zero_outputs(n->params, in);
+        mask |= d->zero_outputs(n->params, in, connected);
     }
     return mask & all_outputs(n);
 }

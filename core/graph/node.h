@@ -306,9 +306,11 @@ struct ssg_node_desc {
        output_count entries. */
     const signed char *zero_with;
     /* Optional: the outputs (bit k = output k) that are all +0 for these inputs, asked
-       before a run; in[i] is NULL where input i is unconnected or not computed yet, so
-       the answer may use only what is there (probe_light: every light carries nothing). */
-    unsigned (*zero_outputs)(const void *params, const struct ssg_image *const *in);
+       before a run; bit i of `connected` says input i is connected, and in[i] is its
+       image where it is already made on the CPU, else NULL: the answer may use only what
+       is there (probe_light: every light carries nothing). */
+    unsigned (*zero_outputs)(const void *params, const struct ssg_image *const *in,
+                             unsigned connected);
     /* Optional: the inputs (bit i = input i) whose pixels cannot change any output byte
        while the inputs in `zero_in` are all +0 (combine: far_visibility, while the
        environment is 0 and nothing else reads V). */

@@ -43,7 +43,9 @@ static double combine_flops(const void *consts, const struct ssg_shape *in)
 
 /* far_visibility V only scales the environment and ambient light (q = min(1, M / V)) and,
    with far_bounce, sends max(0, M - V) of them back: with the environment all +0, no
-   ambient and no far bounce each of those terms is a zero (combine_cpu.c), whatever V. */
+   ambient and no far bounce each of those terms is a zero (combine_cpu.c), whatever V.
+   Its sign could flip only where the modulation M is negative and the direct light -0,
+   which no node makes (SSDO's M is in [0, 1], light is +0 or more). */
 static unsigned ignored_inputs(const void *params, unsigned zero_in)
 {
     const struct ssg_combine_params *p = params;

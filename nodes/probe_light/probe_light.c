@@ -182,13 +182,16 @@ static double probe_light_flops(const void *consts, const struct ssg_shape *in)
 }
 
 /* `out` is all +0 when every light carries nothing (lightprobe missing=dark on a scene
-   without an environment): probe_light_cpu.c then adds no light to any pixel, and so does
-   the shader. The list (shadowmap.h): row 1 of each channel the lights' irradiance. */
-static unsigned zero_outputs(const void *node_params, const struct ssg_image *const *in)
+   without an environment) and no albedo multiplies the sum: probe_light_cpu.c then adds
+   no light to any pixel, and so does the shader (an albedo of inf or a negative one would
+   make NaN or -0 of that +0). The list (shadowmap.h): row 1 of each channel the lights'
+   irradiance. */
+static unsigned zero_outputs(const void *node_params, const struct ssg_image *const *in,
+                             unsigned connected)
 {
     (void)node_params;
     const struct ssg_image *l = in[SSG_PROBE_LIGHT_IN_LIGHTS];
-    if (!l)
+    if (!l || (connected >> SSG_PROBE_LIGHT_IN_ALBEDO & 1u))
         return 0;
     int n = l->width;
     for (int c = 0; c < l->channels; c++)
