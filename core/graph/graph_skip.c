@@ -85,7 +85,7 @@ static unsigned predict(const struct ssg_skip *s, const struct ssg_graph *g, int
     if (d->zero_outputs) {
         const struct ssg_image *in[SSG_MAX_PORTS] = {0};
         unsigned connected = 0;
-        for (int k = 0; k < d->input_count; k++) {
+        for (int k = 0; k < d->input_count && k < SSG_MAX_PORTS; k++) {
             const struct gconn *c = &n->in[k];
             connected |= (unsigned)(c->node >= 0) << k;
             const struct ssg_image *im = c->node >= 0 && !c->value.prev &&
