@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "graph/behind.h"
 #include "graph/gl_backend.h"
 #include "graph/graph.h"
 #include "graph/graph_history.h"
@@ -18,6 +19,11 @@
 #include "graph/metrics.h"
 #include "graph/profile.h"
 #include "scene/camera_path.h"
+
+/* Frames whose files may wait to be written while the next frame runs: one written, one
+   waiting (two copies of a frame's layers), so a slow disk holds the frames back rather
+   than fill the memory. */
+enum { BEHIND_DEPTH = 2 };
 
 struct run {
     struct ssg_graph *g;
@@ -38,9 +44,15 @@ struct run {
     struct ssg_live *live;     /* the graph's kept state (graph.h), NULL = a fresh run */
     unsigned char *ran;        /* per node index: ran in this frame */
     int first_frame;           /* the frame index of the run's frame 0 (graph_time.c) */
+    int frames;                /* frames in this run */
     struct ssg_time_step step; /* the frame being run: time, prev_camera, history_reset */
     struct ssg_skip *skip;     /* what a frame may skip (graph_skip.h); NULL in a live
                                   graph, whose every output may be looked at after a run */
+    struct ssg_behind *behind; /* a sequence's files, written behind its frames (behind.h);
+                                  NULL = in the frame (one frame, or none could be made) */
+    int behind_tried;
+    struct { int p, frame; } unlogged[BEHIND_DEPTH + 1]; /* jobs handed over, not yet told */
+    long logged;               /* jobs told as written ("wrote PATH") */
 };
 
 static void release_output(struct run *r, struct gnode *n, int port)
@@ -122,6 +134,40 @@ static void log_files(const struct run *r, const struct gnode *n, int frame)
         say(r, "wrote %s/%s", out_dir(r), files[i]);
 }
 
+/* The queue a sink that writes files in every frame of a sequence may hand them to, made
+   when the first such sink runs; NULL for any other node, in a one-frame run, or when
+   the queue cannot be made (the files are then written in the frame, as before). */
+static struct ssg_behind *behind_for(struct run *r, const struct gnode *n)
+{
+    const struct ssg_node_desc *d = n->desc;
+    if (!d->output_files || !d->every_frame || !d->every_frame(n->params) || r->frames < 2)
+        return NULL;
+    if (!r->behind_tried) {
+        r->behind_tried = 1;
+        r->behind = ssg_behind_create(BEHIND_DEPTH, omp_get_max_threads());
+    }
+    return r->behind;
+}
+
+/* Tells the files of the jobs written since the last call, in the order handed over. */
+static void log_written(struct run *r)
+{
+    long done = r->behind ? ssg_behind_done(r->behind) : 0;
+    for (; r->logged < done; r->logged++) {
+        int at = (int)(r->logged % (BEHIND_DEPTH + 1));
+        log_files(r, &r->g->nodes[r->g->order[r->unlogged[at].p]], r->unlogged[at].frame);
+    }
+}
+
+/* A job node p handed over for frame `frame`: told once written. */
+static void remember_job(struct run *r, int p, int frame)
+{
+    long index = ssg_behind_submitted(r->behind) - 1;
+    int at = (int)(index % (BEHIND_DEPTH + 1));
+    r->unlogged[at].p = p, r->unlogged[at].frame = frame;
+    log_written(r);
+}
+
 /* The profile row's bytes and flops of the node at p (exec.h, ssg_node_cost). */
 static void set_cost(struct run *r, int p, const struct ssg_node_ctx *ctx)
 {
@@ -187,13 +233,17 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     }
     if (!e) /* every run: a kept graph's node may run on constants of an earlier one */
         set_cost(r, p, &ctx);
+    ctx.behind = behind_for(r, n);
+    long submitted = r->behind ? ssg_behind_submitted(r->behind) : 0;
     if (!e)
         e = ssg_node_run_prepared(n->desc, &ctx, n->params, r->state->consts[p], &io,
                                   n->runs_on,
                                   &r->t[p]);
     if (!e && !ssg_profile_add(&r->prof, p, &r->t[p]))
         e = SSG_E_NOMEM;
-    if (!e)
+    if (!e && r->behind && ssg_behind_submitted(r->behind) > submitted)
+        remember_job(r, p, r->first_frame + frame);
+    else if (!e)
         log_files(r, n, r->first_frame + frame);
     r->t[p].ms += prepare_ms;
     if (e && r->diags->count == 0)
@@ -281,6 +331,7 @@ static int run_init(struct run *r, int frames)
 
 static void run_free(struct run *r)
 {
+    ssg_behind_destroy(&r->behind); /* after a failure: what is queued is dropped */
     ssg_skip_free(&r->skip);
     free(r->t);
     free(r->ran);
@@ -503,7 +554,7 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         return SSG_E_VALUE;
     }
     struct run r = {.g = g, .opt = options ? options : &defaults, .diags = diags,
-                    .uses_gl = graph_uses_gl(g), .live = g->live};
+                    .uses_gl = graph_uses_gl(g), .live = g->live, .frames = frames};
     if (r.opt->threads > 0)
         omp_set_num_threads(r.opt->threads);
     if (!run_init(&r, frames)) {
@@ -522,6 +573,11 @@ enum ssg_err ssg_graph_run(struct ssg_graph *g, const struct ssg_run_options *op
         e = run_frame(&r, f, frames);
         if (!e)
             ssg_time_end(g, r.first_frame + f);
+    }
+    if (r.behind) { /* the files still being written belong to this run */
+        enum ssg_err written = ssg_behind_finish(r.behind, diags);
+        e = e ? e : written;
+        log_written(&r);
     }
     if (!e)
         e = report(&r, ssg_now_ms() - t0);

@@ -43,6 +43,7 @@
 struct ssg_scene;
 struct ssg_metrics;
 struct ssg_gl_shared;
+struct ssg_behind;
 
 #define SSG_FILE_NAME_MAX 256 /* bytes of an output file name, NUL included */
 
@@ -150,6 +151,10 @@ struct ssg_node_ctx {
                                         once (core/gl/gl_scene.h), owned by the run
                                         (graph/gl_backend.h); NULL = the executor lends
                                         the node one of its own for the call */
+    struct ssg_behind *behind; /* a sequence's queue of files written behind its frames
+                                  (graph/behind.h): a sink that writes files may hand
+                                  them to it with its own copies of what it writes, and
+                                  return; NULL = write them now */
 };
 
 /* Working memory a node keeps from one run to its next: a separable pass's intermediate

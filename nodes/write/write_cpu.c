@@ -1,41 +1,90 @@
 /* write_cpu.c - what the `write` node does when it runs (method and layout in README.md):
- * create the output directory, gather the layers, hand them to core/io/imageio.h. */
+ * gather the layers into a job, then create the output directory and hand the files to
+ * core/io/imageio.h, in the frame or, in a sequence, behind it (graph/behind.h). */
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "graph/behind.h"
 #include "io/imageio.h"
 #include "write.h"
 
 enum { PATH_MAX_LEN = 4096, MAX_LAYERS = 64 };
 
-/* The images as written: each input, or a copy of its frame when it carries a guard band
-   (ssg_image_framed, ssgraph.h: the band never reaches a file). */
-struct framed {
-    const struct ssg_image *image[MAX_LAYERS];
-    struct ssg_image *owned[MAX_LAYERS]; /* the copies, freed by framed_free */
+/* Everything the files need, read from the frame when the node runs: a job written
+   behind the frames reads nothing the next frame changes. Layer names point into the
+   graph, which outlives the run's jobs (the executor finishes them before it returns). */
+struct write_job {
+    char dir[PATH_MAX_LEN];
+    char stem[224];
+    struct ssg_write_params p;
+    int count; /* layers: 0 is the main image */
+    struct ssg_exr_layer layers[MAX_LAYERS];
+    struct ssg_image *owned[MAX_LAYERS]; /* copies the job frees */
+    struct ssg_exr_meta meta;
 };
 
-static void framed_free(struct framed *f, int n)
+static void job_free_images(struct write_job *j)
 {
-    for (int i = 0; i < n; i++)
-        ssg_image_destroy(&f->owned[i]);
+    for (int i = 0; i < j->count; i++)
+        ssg_image_destroy(&j->owned[i]);
 }
 
-/* The main image (0) and every layer, framed; SSG_E_NOMEM when a copy fails. */
-static enum ssg_err frame_all(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                              struct framed *f)
+static void job_free(void *job)
+{
+    job_free_images(job);
+    free(job);
+}
+
+/* The frame of `im` (ssg_image_framed: a copy when it carries a guard band, which never
+   reaches a file); with `own`, always a copy, for a job that outlives the frame. */
+static const struct ssg_image *frame_layer(const struct ssg_frame *frame,
+                                           const struct ssg_image *im, int own,
+                                           struct ssg_image **owned)
+{
+    const struct ssg_image *f = ssg_image_framed(frame, im, owned);
+    if (!f || *owned || !own)
+        return f;
+    if (!(*owned = ssg_image_create(im->width, im->height, im->channels)))
+        return NULL;
+    memcpy((*owned)->data, im->data,
+           sizeof(float) * (size_t)im->width * (size_t)im->height * (size_t)im->channels);
+    return *owned;
+}
+
+static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
+{
+    switch (type) {
+    case SSG_T_SCALAR: *kind = SSG_LAYER_SCALAR; return 1;
+    case SSG_T_VECTOR: *kind = SSG_LAYER_VECTOR; return 1;
+    case SSG_T_COLOR: *kind = SSG_LAYER_COLOR; return 1;
+    default: return 0;
+    }
+}
+
+/* The main image (0) and every extra input as a layer named by its key, framed (copied
+   with `own`). */
+static enum ssg_err gather_layers(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                                  int own, struct write_job *j)
 {
     int n = io->extra_count + 1;
-    memset(f, 0, sizeof *f);
     if (n > MAX_LAYERS)
         return ssg_node_fail(ctx, SSG_E_VALUE, "%d layers, at most %d", n, MAX_LAYERS);
-    for (int i = 0; i < n; i++) {
+    for (j->count = 0; j->count < n; j->count++) {
+        int i = j->count;
+        struct ssg_exr_layer *l = &j->layers[i];
         const struct ssg_image *im = i ? io->extra_in[i - 1] : io->in[SSG_WRITE_IN_IMAGE];
-        if (!(f->image[i] = ssg_image_framed(ctx->frame, im, &f->owned[i]))) {
-            framed_free(f, i);
-            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
+        *l = (struct ssg_exr_layer){.name = i ? io->extra_names[i - 1] : NULL};
+        if (i && !layer_kind(io->extra_types[i - 1], &l->kind)) {
+            char types[64];
+            ssg_type_names(io->extra_types[i - 1], types, sizeof types);
+            return ssg_node_fail(ctx, SSG_E_TYPE, "layer '%s' is a %s, expected scalar, "
+                                 "vector or color", io->extra_names[i - 1], types);
         }
+        j->owned[i] = NULL;
+        if (!(l->image = frame_layer(ctx->frame, im, own, &j->owned[i])))
+            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
     }
     return SSG_OK;
 }
@@ -51,78 +100,71 @@ static enum ssg_err make_path(char *buf, size_t len, const char *dir, const char
     return SSG_OK;
 }
 
-static int layer_kind(unsigned type, enum ssg_layer_kind *kind)
+/* The job's files. Both are staged before either is renamed into place, so a failure (or
+   a kill) while writing leaves the previous EXR and PNG together. The PNG goes first,
+   staged and renamed, the EXR (the real output) last: a kill between the two renames
+   leaves the new PNG beside the previous EXR, never a new EXR beside a stale PNG, and a
+   pair whose EXR is older than its PNG is known to be incomplete (docs/exr.md). */
+static enum ssg_err write_files(void *job, struct ssg_diags *diags)
 {
-    switch (type) {
-    case SSG_T_SCALAR: *kind = SSG_LAYER_SCALAR; return 1;
-    case SSG_T_VECTOR: *kind = SSG_LAYER_VECTOR; return 1;
-    case SSG_T_COLOR: *kind = SSG_LAYER_COLOR; return 1;
-    default: return 0;
+    const struct write_job *j = job;
+    char path[PATH_MAX_LEN];
+    struct ssg_tmp staged[2];
+    int n = 0;
+    enum ssg_err err = ssg_make_dirs(j->dir, diags);
+    if (!err && j->p.png && !(err = make_path(path, sizeof path, j->dir, j->stem, "png", diags)))
+        if (!(err = ssg_png_stage(path, j->layers[0].image, (enum ssg_tonemap)j->p.tonemap,
+                                  j->p.exposure, &staged[n], diags)))
+            n++;
+    if (!err && j->p.exr && !(err = make_path(path, sizeof path, j->dir, j->stem, "exr", diags)))
+        if (!(err = ssg_exr_stage(path, j->layers, j->count,
+                                  (enum ssg_exr_compression)j->p.compression, &j->meta,
+                                  &staged[n], diags)))
+            n++;
+    if (err) {
+        ssg_tmp_discard(staged, n);
+        return err;
     }
+    return ssg_tmp_commit(staged, n, diags);
 }
 
-/* The EXR, staged: the main image, then each extra input as a layer named by its key. */
-static enum ssg_err stage_exr(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                              const struct ssg_write_params *p, const struct framed *f,
-                              const char *path, struct ssg_tmp *t)
+/* The job of this run: paths, parameters, metadata and layers (copied with `own`). */
+static enum ssg_err make_job(const struct ssg_node_ctx *ctx,
+                             const struct ssg_write_params *p, const struct ssg_io *io,
+                             int own, struct write_job *j)
 {
-    struct ssg_exr_layer layers[MAX_LAYERS];
-    layers[0] = (struct ssg_exr_layer){.name = NULL, .image = f->image[0]};
-    for (int i = 0; i < io->extra_count; i++) {
-        layers[i + 1] = (struct ssg_exr_layer){.name = io->extra_names[i],
-                                               .image = f->image[i + 1]};
-        if (!layer_kind(io->extra_types[i], &layers[i + 1].kind)) {
-            char types[64];
-            ssg_type_names(io->extra_types[i], types, sizeof types);
-            return ssg_node_fail(ctx, SSG_E_TYPE, "layer '%s' is a %s, expected scalar, "
-                                 "vector or color", io->extra_names[i], types);
-        }
+    const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
+    if (snprintf(j->dir, sizeof j->dir, "%s", dir) >= (int)sizeof j->dir) {
+        ssg_diag_file(ctx->diags, SSG_E_IO, dir, "output directory path is too long");
+        return SSG_E_IO;
     }
-    struct ssg_exr_meta meta;
-    ssg_write_meta(ctx, &meta);
-    return ssg_exr_stage(path, layers, io->extra_count + 1,
-                         (enum ssg_exr_compression)p->compression, &meta, t, ctx->diags);
+    j->p = *p;
+    ssg_write_stem(p, ctx->frame_index, j->stem, sizeof j->stem);
+    ssg_write_meta(ctx, &j->meta);
+    return gather_layers(ctx, io, own, j);
 }
 
 enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *consts,
                                const struct ssg_io *io)
 {
     const struct ssg_write_params *p = consts;
-    char why[512], path[PATH_MAX_LEN];
-    if (!ssg_write_name_ok(p->name, why, sizeof why)) {
+    char why[512];
+    if (!ssg_write_name_ok(p->name, why, sizeof why))
         return ssg_node_fail(ctx, SSG_E_VALUE, "%s", why);
-    }
-    if (!io->in[SSG_WRITE_IN_IMAGE]) {
+    if (!io->in[SSG_WRITE_IN_IMAGE])
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
-    }
-    const char *dir = ctx->out_dir && ctx->out_dir[0] ? ctx->out_dir : "out";
-    char stem[224];
-    ssg_write_stem(p, ctx->frame_index, stem, sizeof stem);
-    /* Both files are staged before either is renamed into place, so a failure (or a kill)
-       while writing leaves the previous EXR and PNG together. The PNG goes first, staged
-       and renamed, the EXR (the real output) last: a kill between the two renames leaves
-       the new PNG beside the previous EXR, never a new EXR beside a stale PNG, and a pair
-       whose EXR is older than its PNG is known to be incomplete (docs/exr.md). */
-    struct ssg_tmp staged[2];
-    struct framed f;
-    int n = 0;
-    enum ssg_err err = frame_all(ctx, io, &f);
-    if (err)
-        return err;
-    err = ssg_make_dirs(dir, ctx->diags);
-    if (!err && p->png &&
-        !(err = make_path(path, sizeof path, dir, stem, "png", ctx->diags)))
-        if (!(err = ssg_png_stage(path, f.image[0], (enum ssg_tonemap)p->tonemap, p->exposure,
-                                  &staged[n], ctx->diags)))
-            n++;
-    if (!err && p->exr &&
-        !(err = make_path(path, sizeof path, dir, stem, "exr", ctx->diags)))
-        if (!(err = stage_exr(ctx, io, p, &f, path, &staged[n])))
-            n++;
-    framed_free(&f, io->extra_count + 1);
+    int behind = ctx->behind != NULL;
+    struct write_job *j = calloc(1, sizeof *j);
+    if (!j)
+        return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the files' job");
+    enum ssg_err err = make_job(ctx, p, io, behind, j);
     if (err) {
-        ssg_tmp_discard(staged, n);
+        job_free(j);
         return err;
     }
-    return ssg_tmp_commit(staged, n, ctx->diags);
+    if (behind) /* the queue owns the job from here */
+        return ssg_behind_submit(ctx->behind, write_files, job_free, j, ctx->diags);
+    err = write_files(j, ctx->diags);
+    job_free(j);
+    return err;
 }
