@@ -8,7 +8,9 @@
         --scene examples/cornell_orbit.scene --size 640x480 --frames 120
 
 For each graph: `ssgraph run GRAPH --frames N --set out.sequence=true` writes one EXR a frame
-(and, when the graph has a temporal node, its `length` output as the layer `length`). The
+(and, when the graph has a temporal node, its `length` output through a write of its own,
+seq_length_NNNN.exr, at the node's size: a half-resolution history is scored on the frame
+pixel by pixel, each frame pixel taking the history pixel it lies in). The
 same frames of a reference sequence (gbuffer + reference_ao + write sequence=true, cached)
 score each frame. Per frame: the RMSE of the pipeline's AO layer against the reference over
 the pixels with a surface (reference depth > 0), the mean |p_f - p_{f-1}| of the pipeline
@@ -166,9 +168,14 @@ def read_sequence(a, files, channels, tmp):
     return read_sequence_oiiotool(files, channels, tmp)
 
 
-def sequence_files(folder, frames):
-    """NAME_0000.exr ... of the one sequence a run wrote into folder."""
-    firsts = sorted(f for f in os.listdir(folder) if f.endswith("_0000.exr"))
+LENGTH_STEM = "seq_length"  # the history length's own write (pipeline_frames)
+
+
+def sequence_files(folder, frames, stem=None):
+    """NAME_0000.exr ... of the one sequence a run wrote into folder (besides the history
+    length's), or of the sequence `stem`."""
+    firsts = sorted(f for f in os.listdir(folder) if f.endswith("_0000.exr") and
+                    (f.startswith(stem + "_") if stem else not f.startswith(LENGTH_STEM)))
     if len(firsts) != 1:
         sys.exit("sequence.py: expected one sequence in %s, found %s" % (folder, firsts))
     stem = firsts[0][:-len("0000.exr")]
@@ -289,20 +296,32 @@ def pipeline_frames(a, graph, tnode, tmp):
     out = os.path.join(tmp, "run_" + os.path.basename(graph))
     channels = layer_channels(a)
     n = len(channels)
-    if tnode:  # the history length as one more layer of the graph's write
+    if tnode:  # the history length through a write of its own, at the temporal node's size
         wrapper = os.path.join(tmp, "length_" + os.path.basename(graph))
         with open(wrapper, "w") as f:
-            f.write('include "%s"\nadd out.length = %s.length\n' % (os.path.realpath(graph),
-                                                                     tnode))
+            f.write('include "%s"\nseqlength = write(%s.length, "%s", sequence=true, '
+                    'png=false)\n' % (os.path.realpath(graph), tnode, LENGTH_STEM))
         graph = wrapper
-        channels.append("length.Y")
     cmd = [a.ssgraph, "run", graph, "--scene", a.scene, "--size", "%dx%d" % (a.width, a.height),
            "--frames", str(a.frames), "--threads", str(a.threads), "--backend", a.backend,
            "--quiet", "--out", out, "--set", "out.sequence=true"]
     timed(a, os.path.basename(graph), cmd)
     frames = read_sequence(a, sequence_files(out, a.frames), channels, tmp)
-    ao, rest = stack(frames, n)
-    return ao, (rest[0] if tnode else None)
+    ao, _ = stack(frames, n)
+    if not tnode:
+        return ao, None
+    lengths = read_sequence(a, sequence_files(out, a.frames, LENGTH_STEM), ["Y"], tmp)
+    return ao, np.array([to_frame(f[0], ao.shape[1], ao.shape[2]) for f in lengths])
+
+
+def to_frame(img, h, w):
+    """A lower-resolution image (a temporal node run at half size) on the frame's pixels:
+    each frame pixel takes the low-resolution pixel it lies in."""
+    if img.shape == (h, w):
+        return img
+    rows = (np.arange(h) * img.shape[0]) // h
+    cols = (np.arange(w) * img.shape[1]) // w
+    return img[np.ix_(rows, cols)]
 
 
 def layer_channels(a):
