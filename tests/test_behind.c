@@ -1,6 +1,7 @@
 /* test_behind.c - a sequence's files written behind its frames (core/graph/behind.h):
  *   - the queue runs jobs in the order given, never holds more than its depth, and after a
  *     job fails drops the rest unrun and hands the failure back once, with its messages;
+ *     a job that ran is handed back for reuse (one at a time, only to its own kind);
  *   - a 3-frame sequence (written behind) gives the bytes each frame gives when run alone
  *     (a one-frame run writes in the frame), tells every file on the caller's thread in
  *     frame order, and only once the file is there;
@@ -105,8 +106,8 @@ static void test_queue(void)
     for (int i = 0; i < o.count; i++)
         CHECK_EQ(o.ran[i], i);
     CHECK_EQ(o.alive, 0);
-    /* DEPTH queued or running, plus the one the caller made and is handing over */
-    CHECK(o.most_alive <= DEPTH + 1);
+    /* DEPTH queued or running, one kept for reuse, and the one the caller is handing over */
+    CHECK(o.most_alive <= DEPTH + 2);
     CHECK_EQ(d.count, 0);
 
     struct order f = {.lock = PTHREAD_MUTEX_INITIALIZER, .fail_at = 4};
@@ -118,6 +119,35 @@ static void test_queue(void)
     CHECK_EQ(f.alive, 0);         /* every job freed, run or not */
     CHECK_EQ(fd.count, 1);
     CHECK(fd.count == 1 && strstr(fd.items[0].message, "job 4 failed"));
+}
+
+static void other_free(void *data)
+{
+    free(data);
+}
+
+/* The last job that ran comes back once, to a caller that frees jobs as it does. */
+static void test_spare(void)
+{
+    struct order o = {.lock = PTHREAD_MUTEX_INITIALIZER, .fail_at = -1};
+    struct ssg_diags d = {0};
+    struct ssg_behind *b = ssg_behind_create(DEPTH, 1);
+    CHECK(b != NULL);
+    if (!b)
+        return;
+    CHECK(ssg_behind_spare(b, job_free) == NULL); /* nothing ran yet */
+    for (int id = 0; id < 3; id++)
+        CHECK_EQ(ssg_behind_submit(b, job_run, job_free, job_make(&o, id), &d), SSG_OK);
+    CHECK_EQ(ssg_behind_finish(b, &d), SSG_OK);
+    CHECK(ssg_behind_spare(b, other_free) == NULL);
+    struct job *j = ssg_behind_spare(b, job_free);
+    CHECK(j != NULL && j->id >= 0 && j->id < 3);
+    CHECK(ssg_behind_spare(b, job_free) == NULL); /* one is kept */
+    CHECK_EQ(o.alive, 1);
+    if (j)
+        job_free(j);
+    ssg_behind_destroy(&b);
+    CHECK_EQ(o.alive, 0);
 }
 
 /* ---- through the executor ---- */
@@ -261,6 +291,7 @@ int main(void)
     snprintf(graph, sizeof graph, "%s/seq.graph", root);
     write_graph(graph);
     test_queue();
+    test_spare();
     test_sequence(root, graph);
     test_failure(root, graph);
     return check_report();

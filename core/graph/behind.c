@@ -7,6 +7,10 @@
 
 #include "graph/behind.h"
 
+/* Finished jobs kept for reuse: one is enough for a frame a job (the next frame's takes
+   it back), and each holds a frame's copies. */
+enum { SPARES = 1 };
+
 struct job {
     ssg_behind_run_fn run;
     ssg_behind_free_fn free_job;
@@ -18,6 +22,8 @@ struct ssg_behind {
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a job was queued or finished, or the queue is stopping */
     struct job *ring;
+    struct job *spare;      /* jobs run without failure, kept for ssg_behind_spare */
+    int spare_count;
     int threads; /* OpenMP threads of a job's parallel loops */
     int depth, head, count; /* jobs waiting or running: ring[head .. head + count) */
     long submitted, done;
@@ -47,7 +53,10 @@ static enum ssg_err take_failure(struct ssg_behind *b, struct ssg_diags *diags)
     return b->failed;
 }
 
-/* Runs the job at the head outside the lock; its result decides the rest of the queue. */
+/* Runs the job at the head outside the lock; its result decides the rest of the queue. A
+   job that ran well is kept as a spare while there is room, else freed, outside the lock
+   (giving back a frame's pages takes a while) but before its place in the queue is, so
+   the jobs alive never exceed the queue's depth and the spare. */
 static void run_head(struct ssg_behind *b)
 {
     struct job j = b->ring[b->head];
@@ -55,13 +64,20 @@ static void run_head(struct ssg_behind *b)
     pthread_mutex_unlock(&b->lock);
     struct ssg_diags diags = {0};
     enum ssg_err e = dropped ? SSG_OK : j.run(j.data, &diags);
-    j.free_job(j.data);
     pthread_mutex_lock(&b->lock);
+    int keep = !e && !dropped && b->spare_count < SPARES;
+    if (keep)
+        b->spare[b->spare_count++] = j;
     if (e && !b->failed) {
         b->failed = e;
         b->failure = diags;
     } else if (!e && !dropped) {
         b->done++;
+    }
+    if (!keep) {
+        pthread_mutex_unlock(&b->lock);
+        j.free_job(j.data);
+        pthread_mutex_lock(&b->lock);
     }
     b->head = (b->head + 1) % b->depth;
     b->count--;
@@ -93,7 +109,11 @@ struct ssg_behind *ssg_behind_create(int depth, int threads)
         return NULL;
     b->depth = depth > 0 ? depth : 1;
     b->threads = threads > 0 ? threads : 1;
-    if (!(b->ring = calloc((size_t)b->depth, sizeof *b->ring))) {
+    b->ring = calloc((size_t)b->depth, sizeof *b->ring);
+    b->spare = calloc(SPARES, sizeof *b->spare);
+    if (!b->ring || !b->spare) {
+        free(b->ring);
+        free(b->spare);
         free(b);
         return NULL;
     }
@@ -107,6 +127,7 @@ struct ssg_behind *ssg_behind_create(int depth, int threads)
     if (made >= 1)
         pthread_mutex_destroy(&b->lock);
     free(b->ring);
+    free(b->spare);
     free(b);
     return NULL;
 }
@@ -130,6 +151,19 @@ enum ssg_err ssg_behind_submit(struct ssg_behind *b, ssg_behind_run_fn run,
     if (e)
         free_job(job);
     return e;
+}
+
+void *ssg_behind_spare(struct ssg_behind *b, ssg_behind_free_fn free_job)
+{
+    void *job = NULL;
+    pthread_mutex_lock(&b->lock);
+    for (int i = b->spare_count - 1; i >= 0 && !job; i--)
+        if (b->spare[i].free_job == free_job) {
+            job = b->spare[i].data;
+            b->spare[i] = b->spare[--b->spare_count];
+        }
+    pthread_mutex_unlock(&b->lock);
+    return job;
 }
 
 long ssg_behind_submitted(const struct ssg_behind *b)
@@ -165,6 +199,9 @@ void ssg_behind_destroy(struct ssg_behind **bp)
     pthread_cond_broadcast(&b->changed);
     pthread_mutex_unlock(&b->lock);
     pthread_join(b->worker, NULL); /* it runs what is left first */
+    for (int i = 0; i < b->spare_count; i++)
+        b->spare[i].free_job(b->spare[i].data);
+    free(b->spare);
     pthread_cond_destroy(&b->changed);
     pthread_mutex_destroy(&b->lock);
     free(b->ring);

@@ -35,6 +35,12 @@ enum ssg_err ssg_behind_submit(struct ssg_behind *b, ssg_behind_run_fn run,
                                ssg_behind_free_fn free_job, void *job,
                                struct ssg_diags *diags);
 
+/* A job that ran without failure, handed back (the caller owns it again) so that its
+   memory, already touched, serves the next one instead of fresh pages that fault on first
+   write; NULL when none is kept. Only jobs freed by free_job are handed back. One is
+   kept; the rest are freed as they finish. */
+void *ssg_behind_spare(struct ssg_behind *b, ssg_behind_free_fn free_job);
+
 /* Jobs handed over and jobs finished without failure, since the queue was made. */
 long ssg_behind_submitted(const struct ssg_behind *b);
 long ssg_behind_done(struct ssg_behind *b);

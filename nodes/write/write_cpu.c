@@ -27,7 +27,7 @@ struct write_job {
 
 static void job_free_images(struct write_job *j)
 {
-    for (int i = 0; i < j->count; i++)
+    for (int i = 0; i < MAX_LAYERS; i++) /* a reused job may hold more than its count */
         ssg_image_destroy(&j->owned[i]);
 }
 
@@ -38,16 +38,27 @@ static void job_free(void *job)
 }
 
 /* The frame of `im` (ssg_image_framed: a copy when it carries a guard band, which never
-   reaches a file); with `own`, always a copy, for a job that outlives the frame. */
+   reaches a file); with `own`, always a copy, for a job that outlives the frame, made in
+   *owned when that has the shape already (a job handed back by the queue). */
 static const struct ssg_image *frame_layer(const struct ssg_frame *frame,
                                            const struct ssg_image *im, int own,
                                            struct ssg_image **owned)
 {
-    const struct ssg_image *f = ssg_image_framed(frame, im, owned);
-    if (!f || *owned || !own)
+    struct ssg_image *band_cut = NULL;
+    const struct ssg_image *f = ssg_image_framed(frame, im, &band_cut);
+    if (!f || band_cut) {
+        ssg_image_destroy(owned);
+        return *owned = band_cut;
+    }
+    if (!own)
         return f;
-    if (!(*owned = ssg_image_create(im->width, im->height, im->channels)))
-        return NULL;
+    struct ssg_image *o = *owned;
+    if (!o || o->width != im->width || o->height != im->height ||
+        o->channels != im->channels) {
+        ssg_image_destroy(owned);
+        if (!(*owned = ssg_image_create(im->width, im->height, im->channels)))
+            return NULL;
+    }
     memcpy((*owned)->data, im->data,
            sizeof(float) * (size_t)im->width * (size_t)im->height * (size_t)im->channels);
     return *owned;
@@ -82,7 +93,6 @@ static enum ssg_err gather_layers(const struct ssg_node_ctx *ctx, const struct s
             return ssg_node_fail(ctx, SSG_E_TYPE, "layer '%s' is a %s, expected scalar, "
                                  "vector or color", io->extra_names[i - 1], types);
         }
-        j->owned[i] = NULL;
         if (!(l->image = frame_layer(ctx->frame, im, own, &j->owned[i])))
             return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the frame of a layer");
     }
@@ -154,7 +164,9 @@ enum ssg_err ssg_write_run_cpu(const struct ssg_node_ctx *ctx, const void *const
     if (!io->in[SSG_WRITE_IN_IMAGE])
         return ssg_node_fail(ctx, SSG_E_MISSING_INPUT, "input 'image' is not connected");
     int behind = ctx->behind != NULL;
-    struct write_job *j = calloc(1, sizeof *j);
+    struct write_job *j = behind ? ssg_behind_spare(ctx->behind, job_free) : NULL;
+    if (!j)
+        j = calloc(1, sizeof *j);
     if (!j)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory for the files' job");
     enum ssg_err err = make_job(ctx, p, io, behind, j);
