@@ -331,7 +331,7 @@ static int run_init(struct run *r, int frames)
 
 static void run_free(struct run *r)
 {
-    ssg_behind_destroy(&r->behind); /* after a failure: what is queued is dropped */
+    ssg_behind_destroy(&r->behind); /* its jobs were finished by ssg_graph_run */
     ssg_skip_free(&r->skip);
     free(r->t);
     free(r->ran);
