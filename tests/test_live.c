@@ -16,7 +16,9 @@
  *     rsm.graph move the camera too (a fresh load then gets that camera before its run);
  *   - after a new camera the nodes whose reads leave out the camera (node.h) do not run
  *     (lightprobe, shadowmaps, halton, lightmaps: calls 0), those that read it do;
- *   - the memory limit evicts, and evicted nodes run again with the same bytes. */
+ *   - the memory limit evicts, and evicted nodes run again with the same bytes;
+ *   - rsm's VPL list, kept while the light maps stand (node.h's in_made), is made again
+ *     when new lights remake the maps though rsm's own constants stay the same. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -462,6 +464,56 @@ static void memory_limit_evicts(void)
     ssg_graph_destroy(&g);
 }
 
+/* rsm keeps its VPL list while the light maps stand (ctx.in_made): a camera move runs it on
+   the kept list, new lights of the same place and so the same map faces (rsm's constants
+   unchanged: only the maps' serials tell) make it again; both give a fresh load's bytes. */
+static void rsm_list_follows_the_maps(void)
+{
+    char lights[1200];
+    snprintf(lights, sizeof lights, "%s/bluer.lights", out_dir);
+    FILE *f = fopen(lights, "w");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fputs("point_light(position=[0, 1.9, 0], color=[0.6, 0.8, 1], intensity=4)\n", f);
+    fclose(f);
+    struct ssg_graph *g = load_case(&RSM, "cpu", NULL, 0, 0);
+    struct ssg_diags d = {0};
+    struct ssg_run_stats s = {0};
+    struct ssg_view views[VIEW_COUNT];
+    views_of(g, views);
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, NULL, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_set_view(g, &views[1], &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK(calls_of(&s, "lm") == 0 && calls_of(&s, "b") == 1); /* the kept list's run */
+    ssg_run_stats_free(&s);
+    expect_fresh_view_bytes(g, &RSM, "cpu", NULL, 0, &views[1], "camera moved");
+    CHECK_EQ(ssg_graph_set_lights(g, lights, &d), SSG_OK);
+    CHECK_EQ(run_quiet(g, NULL, &s, &d), SSG_OK);
+    CHECK(calls_of(&s, "lm") == 1 && calls_of(&s, "b") == 1);
+    ssg_run_stats_free(&s);
+    struct ssg_graph *fresh = load_case(&RSM, "cpu", NULL, 0, 1);
+    struct ssg_image *want[3] = {0};
+    CHECK_EQ(ssg_graph_set_view(fresh, &views[1], &d), SSG_OK);
+    CHECK_EQ(ssg_graph_set_lights(fresh, lights, &d), SSG_OK);
+    struct ssg_run_options opt = {.out_dir = out_dir, .threads = 2, .outputs = want};
+    CHECK_EQ(ssg_graph_run(fresh, &opt, &d), SSG_OK);
+    for (int k = 0; k < 3; k++) {
+        struct ssg_image *live = NULL;
+        CHECK_EQ(ssg_graph_output(g, RSM.ports[k], &live, &d), SSG_OK);
+        if (!same_image(live, want[k]))
+            fprintf(stderr, "rsm.graph: %s after new lights differs from a fresh load\n",
+                    RSM.ports[k]);
+        CHECK(same_image(live, want[k]));
+        ssg_image_destroy(&live);
+        ssg_image_destroy(&want[k]);
+    }
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&fresh);
+    ssg_graph_destroy(&g);
+}
+
 int main(void)
 {
     const char *tmp = getenv("SSG_TMP");
@@ -477,6 +529,7 @@ int main(void)
     random_walk(&HBAO, "cpu", hbao_choices, 4, 11);
     random_walk(&HYBRID, "cpu", hybrid_choices, SSG_COUNT(hybrid_choices), 13);
     random_walk(&RSM, "cpu", rsm_choices, SSG_COUNT(rsm_choices), 23);
+    rsm_list_follows_the_maps();
     camera_moves_skip("cpu");
     run_only_change_keeps_prepare("cpu");
     only_what_changed_runs("gl");

@@ -158,6 +158,9 @@ struct ssg_live {
                                      a compare whose inputs did not change is not run again,
                                      and a run reports them again as this run's */
     int *reported_count;
+    unsigned long long *made;  /* per position: the serial of its last run (0 = none yet);
+                                  what a reader's ctx->in_made tells (ssg_redo_made) */
+    unsigned long long serial; /* the last serial handed out, one a run */
     int count;                 /* run positions */
     int used_gl;               /* a run used GL: images may hold textures */
     struct ssg_gl_shared gl;   /* the scene on GL, uploaded by the first run's first node
@@ -214,8 +217,14 @@ void ssg_redo_reading(struct ssg_graph *g, struct ssg_live *l, unsigned changed,
    else -1. */
 enum ssg_why ssg_redo_decide(const struct ssg_graph *g, const struct ssg_live *l, int p,
                              const unsigned char *ran, int *producer);
-/* After node p ran with result e: its outputs are kept when `keep` and it succeeded. */
+/* After node p ran with result e: its outputs are kept when `keep` and it succeeded; they
+   get a new serial either way (ssg_redo_made). */
 void ssg_redo_after(struct ssg_live *l, int p, int keep, enum ssg_err e);
+/* The serial of the run that made the image connection c brings (node.h, ctx.in_made):
+   it changes whenever that producer runs again; 0 when c is unconnected, a prev() input
+   or its producer has not run. */
+unsigned long long ssg_redo_made(const struct ssg_graph *g, const struct ssg_live *l,
+                                 const struct gconn *c);
 /* "first run", "camera moved"... */
 const char *ssg_why_text(enum ssg_why why);
 /* One line from the counts of each reason over a run's frames ("first run, kept x3");

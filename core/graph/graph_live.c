@@ -25,9 +25,10 @@ int ssg_live_init(struct ssg_live *l, int count)
                            .scratch = calloc(n, sizeof *l->scratch),
                            .prepared = calloc(n, 1), .kept = calloc(n, 1),
                            .why = calloc(n, 1), .reported = calloc(n, sizeof *l->reported),
-                           .reported_count = calloc(n, sizeof *l->reported_count)};
+                           .reported_count = calloc(n, sizeof *l->reported_count),
+                           .made = calloc(n, sizeof *l->made)};
     return l->pool && l->consts && l->scratch && l->prepared && l->kept && l->why &&
-           l->reported && l->reported_count;
+           l->reported && l->reported_count && l->made;
 }
 
 int ssg_graph_output_kept(const struct ssg_graph *g, int node, int k)
@@ -120,6 +121,7 @@ void ssg_live_release(struct ssg_graph *g, struct ssg_live *l)
         free(l->reported[p]);
     free(l->reported);
     free(l->reported_count);
+    free(l->made);
     *l = (struct ssg_live){0};
 }
 

@@ -99,6 +99,18 @@ void ssg_redo_after(struct ssg_live *l, int p, int keep, enum ssg_err e)
 {
     l->kept[p] = e == SSG_OK && keep;
     l->why[p] = (unsigned char)(e ? SSG_WHY_FAILED : keep ? SSG_WHY_KEPT : SSG_WHY_SEQUENCE);
+    l->made[p] = ++l->serial; /* a failed run may have left its outputs half made too */
+}
+
+unsigned long long ssg_redo_made(const struct ssg_graph *g, const struct ssg_live *l,
+                                 const struct gconn *c)
+{
+    if (c->node < 0 || c->value.prev)
+        return 0; /* prev(): the frame before's image, whatever its producer did since */
+    for (int p = 0; p < g->order_count && p < l->count; p++)
+        if (g->order[p] == c->node)
+            return l->made[p];
+    return 0;
 }
 
 /* Appends "text" or "text xN" to buf, comma-separated. */

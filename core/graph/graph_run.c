@@ -192,9 +192,12 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
     struct ssg_graph *g = r->g;
     struct gnode *n = &g->nodes[g->order[p]];
     const struct ssg_image *in[SSG_MAX_PORTS] = {0}, *extra[SSG_MAX_EXTRA] = {0};
+    unsigned long long made[SSG_MAX_PORTS] = {0};
     for (int k = 0; k < n->desc->input_count; k++)
-        if (n->in[k].node >= 0)
+        if (n->in[k].node >= 0) {
             in[k] = g->nodes[n->in[k].node].out_img[n->in[k].port];
+            made[k] = ssg_redo_made(g, r->state, &n->in[k]);
+        }
     struct ssg_shape extra_shape[SSG_MAX_EXTRA];
     for (int k = 0; k < n->extra_count; k++) {
         const struct gnode *src = &g->nodes[n->extra[k].node];
@@ -221,7 +224,7 @@ static enum ssg_err run_node(struct run *r, int p, int frame)
                                .time_s = r->step.time_s,
                                .prev_camera = g->scene ? &r->step.prev : NULL,
                                .history_reset = r->step.reset,
-                               .gl_shared = &r->state->gl};
+                               .gl_shared = &r->state->gl, .in_made = made};
     if (history_reset >= 0) /* reads prev(): its history may be gone for its own reasons */
         ctx.history_reset = history_reset || r->step.reset;
     double prepare_ms = 0;

@@ -151,6 +151,12 @@ struct ssg_node_ctx {
                                         once (core/gl/gl_scene.h), owned by the run
                                         (graph/gl_backend.h); NULL = the executor lends
                                         the node one of its own for the call */
+    /* Per input port, the serial of the run that made the image bound there: it changes
+       whenever that producer runs again, so a node may keep in its scratch what it
+       derives from an input (rsm's VPL list from the light maps) while the serial
+       stands. 0 = unknown, derive it again: unconnected, a prev() input, a single-node
+       run. NULL = all 0. */
+    const unsigned long long *in_made;
     struct ssg_behind *behind; /* a sequence's queue of files written behind its frames
                                   (graph/behind.h): a sink that writes files may hand
                                   them to it with its own copies of what it writes, and

@@ -1,10 +1,13 @@
 /* rsm_cpu.c - CPU side of the `rsm` node (method in README.md): the VPL slots of the maps in row
  * bands, the list and its CDF on the node's thread (a running sum: one order, whatever the
  * threads), then every pixel's draws in row bands. Each pixel depends on its own inputs
- * and the list alone, so the output is the same for every thread count. */
+ * and the list alone, so the output is the same for every thread count. The list and the
+ * draws are kept in the node's scratch while the maps and the constants they come from
+ * stand (vpl_list): a moving camera does not make them again. */
 #include "common/vector_loops.h" /* first: see there */
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "rsm.h"
 #include "scene/distance.h"
@@ -326,24 +329,82 @@ static void rows(void *user, int y0, int y1)
         }
 }
 
+/* What the VPL list and the draws are made from: the maps (the serials of the runs that
+   made them, node.h's in_made) and the constants ssg_rsm_cells, ssg_rsm_list and
+   ssg_rsm_pick read. While it stands the list is not made again: a moving camera re-runs
+   rsm every frame, but the light maps of a static scene, and so the list, stay. */
+struct list_key {
+    unsigned long long made[3];
+    int faces, res, cells, slots, grid_w, grid_h, cell, samples;
+    float inv_samples, offset[SSG_RSM_TILE * SSG_RSM_TILE];
+    struct ssg_lightmap_face face[SSG_LIGHTMAP_FACES_MAX];
+};
+
+/* The head of the node's scratch: the key of the list that follows it, and its length. */
+struct list_head {
+    struct list_key key;
+    int valid, count;
+};
+
+/* The key of this run's list; 0 when it cannot be kept (a map's serial is unknown). */
+static int make_key(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                    struct list_key *k)
+{
+    memset(k, 0, sizeof *k); /* padding too: keys are compared with memcmp */
+    const int ports[3] = {SSG_RSM_IN_MAP_DEPTH, SSG_RSM_IN_MAP_NORMAL, SSG_RSM_IN_MAP_FLUX};
+    for (int i = 0; i < 3; i++)
+        if (!ctx->in_made || !(k->made[i] = ctx->in_made[ports[i]]))
+            return 0;
+    k->faces = c->faces, k->res = c->res, k->cells = c->cells, k->slots = c->slots;
+    k->grid_w = c->grid_w, k->grid_h = c->grid_h, k->cell = c->p.cell;
+    k->samples = c->p.samples, k->inv_samples = c->inv_samples;
+    memcpy(k->offset, c->offset, sizeof k->offset);
+    memcpy(k->face, c->face_s, sizeof k->face[0] * (size_t)c->faces);
+    return 1;
+}
+
+/* The list and draws into the scratch after head (made again unless head's key is this
+   run's); their count, or -1 when out of memory. */
+static int vpl_list(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
+                    const struct ssg_io *io, struct list_head *head, int fresh,
+                    float *slots, float *list, int *pick)
+{
+    static _Thread_local struct list_key key; /* 40 KB: not on the stack */
+    int keep = make_key(ctx, c, &key);
+    if (keep && !fresh && head->valid && memcmp(&head->key, &key, sizeof key) == 0)
+        return head->count;
+    head->valid = 0;
+    struct cells_job cj = {c, io, slots, 0};
+    ssg_parallel_rows(c->grid_h, 2, cell_rows, &cj);
+    if (cj.failed)
+        return -1;
+    head->count = ssg_rsm_list(c, slots, list, pick);
+    head->key = key;
+    head->valid = keep;
+    return head->count;
+}
+
 /* One run with the frame's constants (ssg_rsm_run_frame). */
 static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_consts *c,
                         const struct ssg_io *io)
 {
     size_t slot_floats = (size_t)c->slots * SSG_RSM_SLOT;
-    size_t bytes = 2 * slot_floats * sizeof(float) +
+    size_t head_bytes = (sizeof(struct list_head) + 63) / 64 * 64;
+    size_t bytes = head_bytes + 2 * slot_floats * sizeof(float) +
                    sizeof(int) * SSG_RSM_TILE * SSG_RSM_TILE * (size_t)c->p.samples;
-    float *slots = ssg_node_scratch(ctx, bytes);
-    if (!slots)
+    /* a scratch made anew holds no list (its bytes are not even set) */
+    const void *had = ctx->scratch ? ctx->scratch->data : NULL;
+    struct list_head *head = ssg_node_scratch(ctx, bytes);
+    if (!head)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
-    float *list = slots + slot_floats;
+    int fresh = !ctx->scratch || (const void *)head != had;
+    float *slots = (float *)((char *)head + head_bytes), *list = slots + slot_floats;
     int *pick = (int *)(list + slot_floats);
-    struct cells_job cj = {c, io, slots, 0};
-    ssg_parallel_rows(c->grid_h, 2, cell_rows, &cj);
-    if (cj.failed)
+    int count = vpl_list(ctx, c, io, head, fresh, slots, list, pick);
+    if (count < 0)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
     const struct ssg_image *pos = io->in[SSG_RSM_IN_POSITION];
-    struct job j = {c, io, list, pick, ssg_rsm_list(c, slots, list, pick), pos->width,
+    struct job j = {c, io, list, pick, count, pos->width,
                     pos->height, c->vis ? ctx->scene->distance : NULL,
                     c->vis ? ctx->scene->distance->d : NULL,
                     c->p.min_distance > 0.0f ? far_squared(c->p.min_distance) : 0.0f};
