@@ -1,12 +1,15 @@
 /* downsample_cpu.c - CPU kernel of the `downsample` node (method in README.md).
  *
  * Each band of output rows first picks the representative pixel of each block of its rows
- * (a tiny sort of at most 16 depths), then copies every connected plane from those pixels
+ * (factor 2: a few minima and maxima a block, pick_row_2; else a tiny sort of at most 16
+ * depths), then copies every connected plane from those pixels
  * (unconnected ones get zeros: pool images arrive with old contents); an output nothing
  * reads has no image and is not made.
  * A block depends only on its own input pixels, so the result is the same whatever the
  * threads. */
+#include "common/vector_loops.h" /* first: see there */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "downsample.h"
@@ -66,6 +69,48 @@ static size_t representative(const struct job *j, int bx, int by)
     return best;
 }
 
+/* representative() of blocks bx0 .. bx0 + len - 1 of block row by, factor 2, every block
+   inside the image, into pick: the same choice without a sort, a straight loop over the
+   blocks (the frame's most common downsample, gi_temporal_half's 16 planes). With the
+   block's surface depths sorted s0 <= s1 <= ..., the median of n is s1 for n = 3 or 4 and
+   s0 for n = 1 or 2 (the lower middle one); the chosen pixel is the first in row-major
+   order with exactly that depth (its |depth - median| is 0, which nothing undercuts). A
+   block whose median is not finite is marked (SIZE_MAX) for representative(). */
+SSG_VECTOR_CLONES
+static void pick_row_2(const struct job *j, int bx0, int by, int len, size_t *restrict pick)
+{
+    const float *restrict r0 = j->in[SSG_DOWNSAMPLE_IN_DEPTH]->data +
+                               (size_t)(2 * by) * (size_t)j->w + (size_t)(2 * bx0);
+    const float *restrict r1 = r0 + j->w;
+    const size_t first = (size_t)(2 * by) * (size_t)j->w + (size_t)(2 * bx0), w = (size_t)j->w;
+    for (int i = 0; i < len; i++) {
+        float a = r0[2 * i], b = r0[2 * i + 1], c = r1[2 * i], d = r1[2 * i + 1];
+        int n = (a > 0.0f) + (b > 0.0f) + (c > 0.0f) + (d > 0.0f);
+        float A = a > 0.0f ? a : INFINITY, B = b > 0.0f ? b : INFINITY;
+        float C = c > 0.0f ? c : INFINITY, D = d > 0.0f ? d : INFINITY;
+        float lo1 = A < B ? A : B, hi1 = A < B ? B : A, lo2 = C < D ? C : D;
+        float hi2 = C < D ? D : C;
+        float s0 = lo1 < lo2 ? lo1 : lo2, up = lo1 < lo2 ? lo2 : lo1;
+        float s1 = up < (hi1 < hi2 ? hi1 : hi2) ? up : (hi1 < hi2 ? hi1 : hi2);
+        float m = n >= 3 ? s1 : s0;
+        size_t at = first + 2 * (size_t)i;
+        size_t q = a == m ? at : b == m ? at + 1 : c == m ? at + w : at + w + 1;
+        pick[i] = n == 0 ? at : m < INFINITY ? q : SIZE_MAX;
+    }
+}
+
+/* Every block's representative in a run of len blocks. */
+static void pick_blocks(const struct job *j, int bx0, int by, int len, size_t *pick)
+{
+    int inside = j->factor == 2 && 2 * (by + 1) <= j->h ? (j->w / 2 - bx0) : 0;
+    inside = inside < len ? (inside > 0 ? inside : 0) : len;
+    if (inside > 0)
+        pick_row_2(j, bx0, by, inside, pick);
+    for (int i = 0; i < len; i++)
+        if (i >= inside || pick[i] == SIZE_MAX)
+            pick[i] = representative(j, bx0 + i, by);
+}
+
 /* The copied motion's x and y in output pixels, measured from the output pixel's centre:
    the chosen pixel q moved by m (input pixels) lies at (q + 0.5 + m) / f in the previous
    frame's output grid, so from the centre b + 0.5 that is m / f + ((q + 0.5) / f - (b +
@@ -95,8 +140,7 @@ static void band(void *user, int y0, int y1)
     for (int by = y0; by < y1; by++)
         for (int bx0 = 0; bx0 < j->ow; bx0 += CHUNK) {
             int len = j->ow - bx0 < CHUNK ? j->ow - bx0 : CHUNK;
-            for (int i = 0; i < len; i++)
-                pick[i] = representative(j, bx0 + i, by);
+            pick_blocks(j, bx0, by, len, pick);
             size_t dst = (size_t)by * (size_t)j->ow + (size_t)bx0;
             for (int k = 0; k < SSG_DOWNSAMPLE_INPUTS; k++)
                 for (int ch = 0; j->out[k] && ch < j->out[k]->channels; ch++) {

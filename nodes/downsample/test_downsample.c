@@ -4,9 +4,12 @@
  * whole block is background), every output copies that same pixel, sizes not divisible by
  * the factor give the partial blocks, and a half-resolution G-buffer ray-cast from planes
  * reprojects into its own low-res pixels with the scaled camera the screen-space nodes use
- * (ssao_cpu.c, hbao_cpu.c, ssdo_sampling.h: f, cx, cy times low size / frame size). */
+ * (ssao_cpu.c, hbao_cpu.c, ssdo_sampling.h: f, cx, cy times low size / frame size); and
+ * random blocks full of ties, background, NaN and partial blocks pick what the rule,
+ * written plainly here, picks. */
 #include <math.h>
 #include <omp.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -74,10 +77,11 @@ static void check_copy(const struct gb *g, const struct ssg_outputs *out, int ox
         for (int c = 0; c < port_channels[k]; c++) {
             float want = g->im[k]->data[(size_t)c * g->w * g->h + src];
             float got = o->data[(size_t)c * o->width * o->height + dst];
-            if (got != want)
+            int same = got == want || (isnan(got) && isnan(want)); /* a NaN depth */
+            if (!same)
                 fprintf(stderr, "  port %s ch %d at (%d,%d): got %g, want pixel (%d,%d) = %g\n",
                         port_names[k], c, ox, oy, got, x, y, want);
-            CHECK(got == want);
+            CHECK(same);
         }
     }
 }
@@ -290,8 +294,69 @@ static void test_rejects(void)
     free_gb(&g);
 }
 
+/* The README's rule for one block, written plainly: the median of the surface depths (the
+   lower middle of an even count), then the first pixel in row-major order nearest it; the
+   block's first pixel when it has no surface. */
+static void rule_pick(const float *depth, int w, int h, int f, int bx, int by, int *px,
+                      int *py)
+{
+    float v[16];
+    int n = 0;
+    *px = bx * f, *py = by * f;
+    for (int y = by * f; y < by * f + f && y < h; y++)
+        for (int x = bx * f; x < bx * f + f && x < w; x++)
+            if (depth[y * w + x] > 0.0f)
+                v[n++] = depth[y * w + x];
+    if (n == 0)
+        return;
+    for (int i = 0; i < n; i++) /* selection sort: not the node's insertion sort */
+        for (int k = i + 1; k < n; k++)
+            if (v[k] < v[i]) {
+                float t = v[i];
+                v[i] = v[k], v[k] = t;
+            }
+    float m = v[(n - 1) / 2], best = INFINITY;
+    for (int y = by * f; y < by * f + f && y < h; y++)
+        for (int x = bx * f; x < bx * f + f && x < w; x++) {
+            float d = depth[y * w + x];
+            if (d > 0.0f && fabsf(d - m) < best)
+                best = fabsf(d - m), *px = x, *py = y;
+        }
+}
+
+/* Many blocks of few distinct depths (ties, every count of background, NaN and negative
+   depths among them), odd sizes for the partial blocks, both factors: every block copies
+   the rule's pixel (factor 2 takes downsample_cpu.c's pick_row_2, which sorts nothing). */
+static void test_random_blocks(int w, int h, int factor)
+{
+    static const float values[8] = {0.0f, 0.0f, 1.0f, 1.0f, 2.0f, 3.5f, -1.0f, NAN};
+    float *depth = malloc(sizeof(float) * (size_t)w * h);
+    unsigned seed = 12345u;
+    for (int i = 0; i < w * h; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        depth[i] = values[(seed >> 16) & 7];
+    }
+    struct gb g = make_gb(w, h, depth);
+    struct ssg_outputs out;
+    if (run(&g, factor, 6, &out)) {
+        int ow = out.images[0]->width, oh = out.images[0]->height;
+        for (int by = 0; by < oh; by++)
+            for (int bx = 0; bx < ow; bx++) {
+                int x, y;
+                rule_pick(depth, w, h, factor, bx, by, &x, &y);
+                check_copy(&g, &out, bx, by, x, y);
+            }
+        ssg_outputs_release(&out);
+    }
+    free_gb(&g);
+    free(depth);
+}
+
 int main(void)
 {
+    test_random_blocks(67, 41, 2);
+    test_random_blocks(64, 40, 2);
+    test_random_blocks(67, 41, 4);
     test_blocks2();
     test_block4();
     test_motion();
