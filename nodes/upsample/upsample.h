@@ -38,7 +38,7 @@
       "full-resolution image (size of depth); background 0", .same_as = "in")              \
     X(SSG_UPSAMPLE_OUT_OUT2, "out2", SSG_T_SCALAR,                                         \
       "in2 upsampled with out's weights (type of in2); all 0, shaped like out, when in2 "  \
-      "is unconnected", .same_as = "in2")
+      "is unconnected", .same_as = "in2", .on_demand = 1)
 SSG_PORT_ENUM(ssg_upsample_input, SSG_UPSAMPLE_IN, SSG_UPSAMPLE_INPUTS);
 SSG_PORT_ENUM(ssg_upsample_output, SSG_UPSAMPLE_OUT, SSG_UPSAMPLE_OUTPUTS);
 

@@ -511,7 +511,8 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
     const struct ssg_image *lnrm = io->in[SSG_UPSAMPLE_IN_LOW_NORMAL];
     const struct ssg_image *in2 = io->in[SSG_UPSAMPLE_IN_IN2];
     const int k = ((const struct ssg_upsample_consts *)consts)->factor;
-    int n2 = in2 ? in2->channels : 0;
+    /* out2 nobody reads (on_demand: no image) is neither upsampled nor cleared */
+    int n2 = in2 && io->out[1] ? in2->channels : 0;
     struct job j = {.c = consts, .channels = in->channels + n2, .depth = dep->data,
                     .ldepth = ldep->data, .w = dep->width, .h = dep->height,
                     .lw = in->width, .lh = in->height, .k = k};
@@ -523,7 +524,7 @@ enum ssg_err ssg_upsample_run_cpu(const struct ssg_node_ctx *ctx, const void *co
         j.in[in->channels + ch] = ssg_image_plane(in2, ch);
         j.out[in->channels + ch] = ssg_image_plane(io->out[1], ch);
     }
-    if (!in2) /* out2 is documented as all 0 when in2 is unconnected */
+    if (!in2 && io->out[1]) /* out2 is documented as all 0 when in2 is unconnected */
         memset(io->out[1]->data, 0, sizeof(float) * (size_t)io->out[1]->width *
                                         (size_t)io->out[1]->height *
                                         (size_t)io->out[1]->channels);

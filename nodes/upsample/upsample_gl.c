@@ -1,6 +1,7 @@
 /* upsample_gl.c - GL side of the `upsample` node (method in README.md, shader
  * upsample.glsl): one pass over the full-res frame, in and the optional in2 upsampled
- * with the same weights, out2 written 0 when in2 is unconnected; every constant is
+ * with the same weights, out2 written 0 when in2 is unconnected (into a scratch image when
+ * nobody reads out2); every constant is
  * prepare()'s, as on the CPU. Ports and constants are bound by the tables (upsample.h
  * marks what only the NORMALS and IN2_CH variants read). */
 #include <stdio.h>
@@ -19,9 +20,21 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
              "#define IN_CH %d\n#define IN2_CH %d\n#define NORMALS %d\n",
              io->in[SSG_UPSAMPLE_IN_IN]->channels, in2 ? in2->channels : 0,
              lnrm && c->normal_power > 0.0f);
+    /* the shader stores out2 always: nobody reads it (on_demand, no image), so a scratch
+       image takes those stores, never another output's image unit */
+    struct ssg_image *out[SSG_UPSAMPLE_OUTPUTS] = {io->out[0], io->out[1]}, *scratch = NULL;
+    if (!out[1]) {
+        const struct ssg_shape *s = &ctx->out_shape[SSG_UPSAMPLE_OUT_OUT2];
+        if (!(out[1] = scratch = ssg_gl_scratch(ctx, s->width, s->height, s->channels)))
+            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
+    }
+    struct ssg_io bound = *io;
+    bound.out = out;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "upsample.glsl", defines);
-    ssg_gl_ports(&p, io);
-    ssg_gl_dispatch(&p, io->out[0]->width, io->out[0]->height);
-    return ssg_gl_pass_end(&p);
+    ssg_gl_ports(&p, &bound);
+    ssg_gl_dispatch(&p, out[0]->width, out[0]->height);
+    enum ssg_err e = ssg_gl_pass_end(&p);
+    ssg_gl_scratch_release(&scratch);
+    return e;
 }
