@@ -324,17 +324,18 @@ static void rule_pick(const float *depth, int w, int h, int f, int bx, int by, i
         }
 }
 
-/* Many blocks of few distinct depths (ties, every count of background, NaN and negative
-   depths among them), odd sizes for the partial blocks, both factors: every block copies
+/* Many blocks of few distinct depths (ties, every count of background, NaN, -0, infinite,
+   subnormal and negative depths among them), odd sizes for the partial blocks, both factors: every block copies
    the rule's pixel (factor 2 takes downsample_cpu.c's pick_row_2, which sorts nothing). */
 static void test_random_blocks(int w, int h, int factor)
 {
-    static const float values[8] = {0.0f, 0.0f, 1.0f, 1.0f, 2.0f, 3.5f, -1.0f, NAN};
+    static const float values[12] = {0.0f, 0.0f, 1.0f, 1.0f, 2.0f, 3.5f, -1.0f, NAN,
+                                     -0.0f, INFINITY, 1e-40f /* subnormal */, 1e-40f};
     float *depth = malloc(sizeof(float) * (size_t)w * h);
     unsigned seed = 12345u;
     for (int i = 0; i < w * h; i++) {
         seed = seed * 1664525u + 1013904223u;
-        depth[i] = values[(seed >> 16) & 7];
+        depth[i] = values[(seed >> 16) % 12];
     }
     struct gb g = make_gb(w, h, depth);
     struct ssg_outputs out;

@@ -325,13 +325,18 @@ static void run_chunk(const struct job *j, int t, int len, struct chunk *k, stru
     store_chunk(j, len, k);
 }
 
-static void rows(void *user, int y0, int y1)
+/* Jobs r0 .. r1 - 1 of ssg_parallel_rows: job r is tile column r mod SSG_RSM_TILE of band
+   r / SSG_RSM_TILE (BAND_ROWS rows), so that there are as many jobs as 4-row bands were
+   (a machine of many cores keeps them busy) while each chunk holds two rows. */
+static void rows(void *user, int r0, int r1)
 {
     const struct job *j = user;
     struct chunk k;
     struct tested s;
-    for (int ty = 0; ty < SSG_RSM_TILE && y0 + ty < y1; ty++)
-        for (int tx = 0; tx < SSG_RSM_TILE && tx < j->w; tx++) {
+    for (int r = r0; r < r1; r++) {
+        const int tx = r % SSG_RSM_TILE, y0 = r / SSG_RSM_TILE * BAND_ROWS;
+        const int y1 = y0 + BAND_ROWS < j->h ? y0 + BAND_ROWS : j->h;
+        for (int ty = 0; ty < SSG_RSM_TILE && y0 + ty < y1 && tx < j->w; ty++) {
             const int t = ((y0 + ty) % SSG_RSM_TILE) * SSG_RSM_TILE + tx;
             int len = 0;
             for (int y = y0 + ty; y < y1; y += SSG_RSM_TILE)
@@ -345,6 +350,7 @@ static void rows(void *user, int y0, int y1)
             if (len > 0)
                 run_chunk(j, t, len, &k, &s);
         }
+    }
 }
 
 /* What the VPL list and the draws are made from: the maps (the serials of the runs that
@@ -410,12 +416,12 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
     size_t head_bytes = (sizeof(struct list_head) + 63) / 64 * 64;
     size_t bytes = head_bytes + 2 * slot_floats * sizeof(float) +
                    sizeof(int) * SSG_RSM_TILE * SSG_RSM_TILE * (size_t)c->p.samples;
-    /* a scratch made anew holds no list (its bytes are not even set) */
-    const void *had = ctx->scratch ? ctx->scratch->data : NULL;
+    /* a scratch made anew (none kept, or too small: ssg_node_scratch replaces it) holds no
+       list; its bytes are not even set */
+    int fresh = !ctx->scratch || !ctx->scratch->data || ctx->scratch->bytes < bytes;
     struct list_head *head = ssg_node_scratch(ctx, bytes);
     if (!head)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
-    int fresh = !ctx->scratch || (const void *)head != had;
     float *slots = (float *)((char *)head + head_bytes), *list = slots + slot_floats;
     int *pick = (int *)(list + slot_floats);
     int count = vpl_list(ctx, c, io, head, fresh, slots, list, pick);
@@ -426,7 +432,8 @@ static enum ssg_err run(const struct ssg_node_ctx *ctx, const struct ssg_rsm_con
                     pos->height, c->vis ? ctx->scene->distance : NULL,
                     c->vis ? ctx->scene->distance->d : NULL,
                     c->p.min_distance > 0.0f ? far_squared(c->p.min_distance) : 0.0f};
-    ssg_parallel_rows(pos->height, BAND_ROWS, rows, &j);
+    const int bands = (pos->height + BAND_ROWS - 1) / BAND_ROWS;
+    ssg_parallel_rows(bands * SSG_RSM_TILE, 1, rows, &j);
     return SSG_OK;
 }
 
