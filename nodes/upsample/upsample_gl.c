@@ -18,10 +18,11 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
     char defines[80];
     snprintf(defines, sizeof defines,
              "#define IN_CH %d\n#define IN2_CH %d\n#define NORMALS %d\n",
-             io->in[SSG_UPSAMPLE_IN_IN]->channels, in2 ? in2->channels : 0,
+             io->in[SSG_UPSAMPLE_IN_IN]->channels, in2 && io->out[1] ? in2->channels : 0,
              lnrm && c->normal_power > 0.0f);
-    /* the shader stores out2 always: nobody reads it (on_demand, no image), so a scratch
-       image takes those stores, never another output's image unit */
+    /* the shader stores out2 always: where nobody reads it (on_demand, no image) in2 is
+       not upsampled (IN2_CH 0, as on the CPU) and a scratch image takes the stores, never
+       another output's image unit */
     struct ssg_image *out[SSG_UPSAMPLE_OUTPUTS] = {io->out[0], io->out[1]}, *scratch = NULL;
     if (!out[1]) {
         const struct ssg_shape *s = &ctx->out_shape[SSG_UPSAMPLE_OUT_OUT2];
