@@ -143,4 +143,19 @@ struct ssg_image *ssg_gl_scratch(const struct ssg_node_ctx *ctx, int width, int 
                                  int channels);
 void ssg_gl_scratch_release(struct ssg_image **image);
 
+/* A shader that stores every output port, of a node with on_demand outputs (node.h):
+ * ssg_gl_unread_outputs gives o->io, io with a scratch image (of the output's checked
+ * shape) in place of each output that nobody reads (NULL), so that no store lands in
+ * another output's image unit; bind o->io with ssg_gl_ports, and free the scratch images
+ * with ssg_gl_unread_release. SSG_E_NOMEM (reported) when out of memory. */
+enum { SSG_GL_UNREAD_MAX = 12 };
+struct ssg_gl_unread {
+    struct ssg_io io;                              /* io, its outputs from out */
+    struct ssg_image *out[SSG_GL_UNREAD_MAX];      /* every output, or its scratch image */
+    struct ssg_image *scratch[SSG_GL_UNREAD_MAX];  /* output k's scratch image, or NULL */
+};
+enum ssg_err ssg_gl_unread_outputs(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
+                                   struct ssg_gl_unread *o);
+void ssg_gl_unread_release(struct ssg_gl_unread *o);
+
 #endif

@@ -34,7 +34,7 @@ enum { SSG_DIRECT_LIGHT_CONTACT_STEPS = 8 };
       .lit = 1)                                                                            \
     X(SSG_DIRECT_LIGHT_OUT_VISIBILITY, "visibility", SSG_T_SCALAR,                         \
       "the luminance-weighted share of the unshadowed direct light that arrives, 1 where " \
-      "none would")
+      "none would", .on_demand = 1)
 SSG_PORT_ENUM(ssg_direct_light_input, SSG_DIRECT_LIGHT_IN, SSG_DIRECT_LIGHT_INPUTS);
 SSG_PORT_ENUM(ssg_direct_light_output, SSG_DIRECT_LIGHT_OUT, SSG_DIRECT_LIGHT_OUTPUTS);
 

@@ -111,7 +111,8 @@ static void add_light(const struct dl_job *j, int li, int y, int x0, struct chun
 }
 
 /* The chunk's sums as the outputs: albedo / pi x the sum, the lit share of the luminance
-   (background: 0 and 1); the planes from the chunk's first pixel, plane floats apart.
+   (background: 0 and 1; vis NULL: not made); the planes from the chunk's first pixel,
+   plane floats apart.
    Every value is made and the pixel's kept: a straight loop. */
 SSG_VECTOR_CLONES
 static void store(const float *restrict alb, const float *restrict nrm, size_t plane, int len,
@@ -126,6 +127,8 @@ static void store(const float *restrict alb, const float *restrict nrm, size_t p
             float lit = alb[c * plane + i] * inv_pi * k->sum[c][i];
             out[c * plane + i] = bg[i] ? 0.0f : lit;
         }
+    if (!vis)
+        return; /* nobody reads it (on_demand) */
     for (int i = 0; i < len; i++) {
         float share = k->lum_lit[i] / k->lum_all[i];
         vis[i] = bg[i] | !(k->lum_all[i] > 0.0f) ? 1.0f : share;
@@ -143,10 +146,13 @@ static void rows(void *user, int y0, int y1)
             for (int li = 0; li < j->c->u.lights; li++)
                 add_light(j, li, y, x0, &k);
             size_t at = (size_t)y * j->w + x0, plane = (size_t)j->w * j->h;
+            float *vis = j->io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]
+                             ? j->io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]->data
+                             : NULL;
             store(j->io->in[SSG_DIRECT_LIGHT_IN_ALBEDO]->data + at,
                   j->io->in[SSG_DIRECT_LIGHT_IN_NORMAL]->data + at, plane, len, &k,
                   j->io->out[SSG_DIRECT_LIGHT_OUT_OUT]->data + at,
-                  j->io->out[SSG_DIRECT_LIGHT_OUT_VISIBILITY]->data + at);
+                  vis ? vis + at : NULL);
         }
 }
 

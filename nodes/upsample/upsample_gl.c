@@ -21,21 +21,17 @@ enum ssg_err ssg_upsample_run_gl(const struct ssg_node_ctx *ctx, const void *con
              io->in[SSG_UPSAMPLE_IN_IN]->channels, in2 && io->out[1] ? in2->channels : 0,
              lnrm && c->normal_power > 0.0f);
     /* the shader stores out2 always: where nobody reads it (on_demand, no image) in2 is
-       not upsampled (IN2_CH 0, as on the CPU) and a scratch image takes the stores, never
-       another output's image unit */
-    struct ssg_image *out[SSG_UPSAMPLE_OUTPUTS] = {io->out[0], io->out[1]}, *scratch = NULL;
-    if (!out[1]) {
-        const struct ssg_shape *s = &ctx->out_shape[SSG_UPSAMPLE_OUT_OUT2];
-        if (!(out[1] = scratch = ssg_gl_scratch(ctx, s->width, s->height, s->channels)))
-            return ssg_node_fail(ctx, SSG_E_NOMEM, "out of memory");
-    }
-    struct ssg_io bound = *io;
-    bound.out = out;
+       not upsampled (IN2_CH 0, as on the CPU) and a scratch image takes the stores
+       (ssg_gl_unread_outputs) */
+    struct ssg_gl_unread o;
+    enum ssg_err e = ssg_gl_unread_outputs(ctx, io, &o);
+    if (e)
+        return e;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "upsample.glsl", defines);
-    ssg_gl_ports(&p, &bound);
-    ssg_gl_dispatch(&p, out[0]->width, out[0]->height);
-    enum ssg_err e = ssg_gl_pass_end(&p);
-    ssg_gl_scratch_release(&scratch);
+    ssg_gl_ports(&p, &o.io);
+    ssg_gl_dispatch(&p, o.out[0]->width, o.out[0]->height);
+    e = ssg_gl_pass_end(&p);
+    ssg_gl_unread_release(&o);
     return e;
 }
