@@ -29,7 +29,9 @@
  * values itself; `#pragma ssg_consts` does the same for the rows of the constants
  * prepare() made (the descriptor's `uniforms`, read under their own names); ssg_gl_ports
  * binds every port by its name (an input whose name is a GLSL keyword by its row's
- * gl_name). A node with one pass then names nothing by hand:
+ * gl_name; an on_demand output nobody reads that the shader still stores, to a scratch
+ * image the pass frees at ssg_gl_pass_end). A node with one pass then names nothing by
+ * hand:
  *
  *   struct ssg_gl_pass p;
  *   ssg_gl_pass_begin(&p, ctx, "ao.glsl", NULL);  // #pragma ssg_params in ao.glsl
@@ -83,6 +85,9 @@ struct ssg_gl_pass {
     int next_unit;                  /* next free texture unit */
     int next_image;                 /* next free image unit */
     enum ssg_err err;               /* first error, SSG_OK while all went well */
+    struct ssg_image *unread[8];    /* scratch images ssg_gl_ports bound for on_demand
+                                       outputs nobody reads (freed by ssg_gl_pass_end) */
+    int unread_count;
 };
 
 /* Compiles (or finds in the cache) the shader file with `defines` (GLSL lines inserted
@@ -142,20 +147,5 @@ enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass);
 struct ssg_image *ssg_gl_scratch(const struct ssg_node_ctx *ctx, int width, int height,
                                  int channels);
 void ssg_gl_scratch_release(struct ssg_image **image);
-
-/* A shader that stores every output port, of a node with on_demand outputs (node.h):
- * ssg_gl_unread_outputs gives o->io, io with a scratch image (of the output's checked
- * shape) in place of each output that nobody reads (NULL), so that no store lands in
- * another output's image unit; bind o->io with ssg_gl_ports, and free the scratch images
- * with ssg_gl_unread_release. SSG_E_NOMEM (reported) when out of memory. */
-enum { SSG_GL_UNREAD_MAX = 12 };
-struct ssg_gl_unread {
-    struct ssg_io io;                              /* io, its outputs from out */
-    struct ssg_image *out[SSG_GL_UNREAD_MAX];      /* every output, or its scratch image */
-    struct ssg_image *scratch[SSG_GL_UNREAD_MAX];  /* output k's scratch image, or NULL */
-};
-enum ssg_err ssg_gl_unread_outputs(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                                   struct ssg_gl_unread *o);
-void ssg_gl_unread_release(struct ssg_gl_unread *o);
 
 #endif

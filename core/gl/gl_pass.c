@@ -202,6 +202,27 @@ static void bind_port(struct ssg_gl_pass *pass, const struct ssg_port_desc *port
         ssg_gl_input(pass, name, in);
 }
 
+/* An on_demand output nobody reads (node.h: no image) whose store the shader still makes:
+   a scratch image of the port's shape takes the stores, which an unbound image uniform
+   would send to unit 0, another output's image. One the shader leaves out (gl_if) needs
+   none. Freed by ssg_gl_pass_end. */
+static void bind_unread(struct ssg_gl_pass *pass, int k, const char *name)
+{
+    const struct ssg_shape *s = &pass->ctx->out_shape[k];
+    if (where_optional(pass, name) < 0 || pass->err)
+        return;
+    struct ssg_image *im = NULL;
+    if (pass->unread_count < SSG_COUNT(pass->unread))
+        im = ssg_gl_scratch(pass->ctx, s->width, s->height, s->channels);
+    if (!im) {
+        pass->err = ssg_node_fail(pass->ctx, SSG_E_NOMEM, "out of memory for output %s",
+                                  name);
+        return;
+    }
+    pass->unread[pass->unread_count++] = im;
+    ssg_gl_output(pass, name, im);
+}
+
 void ssg_gl_ports(struct ssg_gl_pass *pass, const struct ssg_io *io)
 {
     const struct ssg_node_desc *d = pass->ctx->desc;
@@ -212,8 +233,10 @@ void ssg_gl_ports(struct ssg_gl_pass *pass, const struct ssg_io *io)
     }
     for (int i = 0; i < d->output_count; i++) {
         snprintf(name, sizeof name, "dst_%s", d->outputs[i].name);
-        if (io->out[i]) /* an on_demand output nobody reads is not bound (node.h) */
+        if (io->out[i])
             bind_port(pass, &d->outputs[i], name, NULL, io->out[i]);
+        else
+            bind_unread(pass, i, name);
     }
 }
 
@@ -325,6 +348,9 @@ enum ssg_err ssg_gl_fill(const struct ssg_node_ctx *ctx, const float *const *pla
 
 enum ssg_err ssg_gl_pass_end(struct ssg_gl_pass *pass)
 {
+    for (int k = 0; k < pass->unread_count; k++)
+        ssg_gl_scratch_release(&pass->unread[k]);
+    pass->unread_count = 0;
     GLenum e = glGetError();
     if (e != GL_NO_ERROR && pass->err == SSG_OK) {
         pass->err = ssg_node_fail(pass->ctx, e == GL_OUT_OF_MEMORY ? SSG_E_NOMEM : SSG_E_BACKEND,

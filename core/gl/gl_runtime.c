@@ -244,33 +244,6 @@ void ssg_gl_scratch_release(struct ssg_image **image)
     *image = NULL;
 }
 
-enum ssg_err ssg_gl_unread_outputs(const struct ssg_node_ctx *ctx, const struct ssg_io *io,
-                                   struct ssg_gl_unread *o)
-{
-    const int count = ctx->desc->output_count;
-    *o = (struct ssg_gl_unread){.io = *io};
-    o->io.out = o->out;
-    if (count > SSG_GL_UNREAD_MAX)
-        return ssg_node_fail(ctx, SSG_E_USAGE, "more than %d outputs", SSG_GL_UNREAD_MAX);
-    for (int k = 0; k < count; k++) {
-        const struct ssg_shape *s = &ctx->out_shape[k];
-        if ((o->out[k] = io->out[k]))
-            continue;
-        o->out[k] = o->scratch[k] = ssg_gl_scratch(ctx, s->width, s->height, s->channels);
-        if (!o->out[k]) {
-            ssg_gl_unread_release(o);
-            return SSG_E_NOMEM;
-        }
-    }
-    return SSG_OK;
-}
-
-void ssg_gl_unread_release(struct ssg_gl_unread *o)
-{
-    for (int k = 0; k < SSG_GL_UNREAD_MAX; k++)
-        ssg_gl_scratch_release(&o->scratch[k]);
-}
-
 /* ---- timers ---- */
 
 /* Timestamps rather than GL_TIME_ELAPSED: llvmpipe answers elapsed-time queries around

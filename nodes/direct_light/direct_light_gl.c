@@ -12,19 +12,12 @@ enum ssg_err ssg_direct_light_run_gl(const struct ssg_node_ctx *ctx, const void 
 {
     const struct ssg_direct_light_consts *c = consts;
     const struct ssg_image *pos = io->in[SSG_DIRECT_LIGHT_IN_POSITION];
-    /* the shader stores visibility always: unread (on_demand), into a scratch image */
-    struct ssg_gl_unread o;
-    enum ssg_err e = ssg_gl_unread_outputs(ctx, io, &o);
-    if (e)
-        return e;
     struct ssg_gl_pass p;
     ssg_gl_pass_begin(&p, ctx, "direct_light.glsl", NULL);
-    ssg_gl_ports(&p, &o.io);
+    ssg_gl_ports(&p, io);
     ssg_gl_buffer(&p, 0, c->faces, sizeof c->faces[0] * (size_t)c->face_count);
     ssg_gl_buffer(&p, 1, c->light, sizeof c->light[0] * (size_t)(c->u.lights ? c->u.lights : 1));
     ssg_gl_buffer(&p, 2, c->taps, sizeof(float) * 2 * (size_t)c->p.samples);
     ssg_gl_dispatch(&p, pos->width, pos->height);
-    e = ssg_gl_pass_end(&p);
-    ssg_gl_unread_release(&o);
-    return e;
+    return ssg_gl_pass_end(&p);
 }
