@@ -44,7 +44,7 @@ int main(int argc, char **argv)
         return 2;
     if (threads > 0)
         omp_set_num_threads(threads);
-    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_diags diags = {0};
     struct ssg_outputs hal;
     if (ssg_node_run("halton", NULL, 0, NULL, 0, &frame, &hal, &diags) != SSG_OK) {

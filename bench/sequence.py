@@ -62,6 +62,8 @@ RECOVERED = 1.10  # back to steady state: RMSE within 10 % of it
 OPTIONS = [  # name, default, help
     ("scene", "examples/cornell_path.scene", "a scene with a camera path"),
     ("size", "160x120", "WxH"),
+    ("render-size", None, "WxH the pipelines render at, when not --size: a taau graph's "
+     "frame (graphs/gi_taau.graph: --size / 2), its write's image at --size"),
     ("frames", 30, "frames 0 .. N-1 of the path"),
     ("reference", "ao", "ao: reference_ao, the graph's AO layer; gi: reference_gi, its RGB image"),
     ("layer", None, "the pipeline's EXR layer to score (ao: ao, ao_raw before the filter; "
@@ -302,7 +304,7 @@ def pipeline_frames(a, graph, tnode, tmp):
             f.write('include "%s"\nseqlength = write(%s.length, "%s", sequence=true, '
                     'png=false)\n' % (os.path.realpath(graph), tnode, LENGTH_STEM))
         graph = wrapper
-    cmd = [a.ssgraph, "run", graph, "--scene", a.scene, "--size", "%dx%d" % (a.width, a.height),
+    cmd = [a.ssgraph, "run", graph, "--scene", a.scene, "--size", a.render_size or a.size,
            "--frames", str(a.frames), "--threads", str(a.threads), "--backend", a.backend,
            "--quiet", "--out", out, "--set", "out.sequence=true"]
     timed(a, os.path.basename(graph), cmd)

@@ -35,7 +35,7 @@ struct inputs {
    pixel, which does not matter for timing). */
 static void make_inputs(struct inputs *in, int w, int h)
 {
-    struct ssg_frame full = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame full = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_image *pos = ssg_image_create(W, H, 3), *nrm = ssg_image_create(W, H, 3);
     make_gbuffer(&full, pos, nrm);
     in->w = w, in->h = h;
@@ -70,7 +70,7 @@ static void free_inputs(struct inputs *in)
 static int time_one(const struct inputs *in, int k, int bounce, int runs, int argc,
                     char **argv)
 {
-    struct ssg_frame frame = {in->w, in->h, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame frame = {in->w, in->h, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_diags diags = {0};
     char count_set[32];
     snprintf(count_set, sizeof count_set, "count=%d", k);

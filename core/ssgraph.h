@@ -128,9 +128,15 @@ struct ssg_frame {
                            images are (width + 2 guard) x (height + 2 guard), so that
                            screen-space nodes see occluders just outside the frame; write
                            and compare crop it (docs/guard_band.md) */
+    float jitter_x;     /* this frame's sub-pixel jitter in pixels (graph line `jitter N`, */
+    float jitter_y;     /* 0 without one): pixel (x, y) samples the point (x + 0.5 +
+                           jitter_x, y + 0.5 + jitter_y) of the unjittered image, on every
+                           node (ssg_frame_projection); taau gathers the frames' samples
+                           (docs/time.md) */
 };
 
 #define SSG_GUARD_MAX 1024 /* pixels of guard band, at most */
+#define SSG_JITTER_MAX 1024 /* phases of a `jitter` line, at most */
 
 /* The size of the frame's full-resolution images: the frame and its guard band. */
 static inline int ssg_frame_full_width(const struct ssg_frame *f)

@@ -35,7 +35,7 @@ struct gbuf {
 
 static struct ssg_frame frame(void)
 {
-    return (struct ssg_frame){W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    return (struct ssg_frame){W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
 }
 
 static double dot3(const double a[3], const double b[3])

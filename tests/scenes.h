@@ -49,7 +49,7 @@ static inline void check_sizes(const struct ssg_node_desc *desc, struct ssg_shap
 {
     const int w = in[0].width, h = in[0].height;
     struct ssg_shape o[8] = {{0}};
-    struct ssg_frame frame = {w, h, 50, 0.05f, 100, 1, 0};
+    struct ssg_frame frame = {w, h, 50, 0.05f, 100, 1, 0, 0, 0};
     char why[200];
     in[bad].height = h + 1;
     CHECK_EQ(desc->check(NULL, &frame, in, o, why, sizeof why), SSG_E_SIZE);
@@ -103,7 +103,7 @@ static inline enum ssg_err prepare_on(const struct ssg_node_desc *desc,
                                       const struct ssg_scene *s, const struct ssg_shape *in,
                                       const void *params, void *consts)
 {
-    struct ssg_frame frame = {16, 16, 45, 0.05f, 100, 1, 0};
+    struct ssg_frame frame = {16, 16, 45, 0.05f, 100, 1, 0, 0, 0};
     struct ssg_diags d = {0};
     struct ssg_node_ctx ctx = {.desc = desc, .instance = desc->name, .frame = &frame,
                                .scene = s, .out_dir = ".", .diags = &d, .in_shape = in};

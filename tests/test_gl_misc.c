@@ -29,7 +29,7 @@
 static void halton_cases(void)
 {
     const struct parity_tol exact = parity_tol_of("halton");
-    struct ssg_frame f = {64, 48, 45.0f, 0.05f, 100.0f, 7, 0};
+    struct ssg_frame f = {64, 48, 45.0f, 0.05f, 100.0f, 7, 0, 0, 0};
     const char *def[] = {"count=16"};
     parity_node("default seed 7", "halton", NULL, 0, def, 1, &f, exact);
     const char *three[] = {"count=60", "bases=[2, 3, 5]", "period=30", "mapping=uniform",
@@ -154,7 +154,7 @@ static void complexity_cases(void)
     complexity_case("wavy one level", &g, single, 2, &f, 1);
     /* Half the frame's size: the projection is the frame's divided by 2 (node.h). */
     W = 64, H = 48;
-    struct ssg_frame big = {128, 96, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame big = {128, 96, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     wavy(&g);
     complexity_case("wavy subsampled", &g, soft, 4, &big, 7);
     const char *sub[] = {"scale=1", "resolutions=2"};
@@ -202,7 +202,7 @@ static void combine_case(const struct combine_inputs *in, const char *label, con
 {
     const struct parity_tol exact = parity_tol_of("combine");
     struct ssg_binding b[9];
-    struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     parity_node(label, "combine", b, bind_combine(in, opt, b), sets, n, &f, exact);
 }
 

@@ -37,7 +37,7 @@ static enum ssg_err acos_on_gl(const struct ssg_image *x, struct ssg_image *out,
 {
     static struct ssg_gtao_params params; /* the pass needs a node's; the probe reads none */
     ssg_params_defaults(ssg_node_gtao.params, &params);
-    struct ssg_frame f = {x->width, x->height, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {x->width, x->height, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_node_ctx ctx = {.desc = &ssg_node_gtao, .instance = "acos probe", .frame = &f,
                                .diags = d, .params = &params};
     double ms = 0;

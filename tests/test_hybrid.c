@@ -44,7 +44,7 @@ static void carrier(const struct ssg_scene *s, float dir[3], float *e)
     void *params = node_params(&ssg_node_lightprobe, sets, 1);
     struct ssg_image *out[1] = {ssg_image_create(128, 2, 3)};
     const struct ssg_image *in[1] = {NULL};
-    const struct ssg_frame fr = {W, H, 45, 0.05f, 100, 1, 0};
+    const struct ssg_frame fr = {W, H, 45, 0.05f, 100, 1, 0, 0, 0};
     CHECK_EQ(node_run_scene(&ssg_node_lightprobe, s, &fr, params, in, out, SSG_BACKEND_CPU),
              SSG_OK);
     for (int i = 0; i < 128; i++)

@@ -25,7 +25,7 @@
 #include "scene/proxy.h"
 #include "shadowmaps/shadowmaps.h"
 
-static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0, 0, 0};
 
 #define SPHERE_SCENE(material_line, sphere_material)                                      \
     "camera(position=[0, 2, 3], target=[0, 0, 0])\n" material_line                        \

@@ -121,7 +121,7 @@ static void check_frame(const char *backend, const struct frame *f,
 /* The flux the light map holds against what the spot sends onto grey surfaces. */
 static void check_flux(const char *backend, enum ssg_backend b)
 {
-    static const struct ssg_frame FRAME = {W, H, 50, 0.05f, 20, 1, 0};
+    static const struct ssg_frame FRAME = {W, H, 50, 0.05f, 20, 1, 0, 0, 0};
     struct ssg_scene *s = NULL;
     struct ssg_diags d = {0};
     struct ssg_image *m[3] = {0};

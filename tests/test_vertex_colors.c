@@ -29,7 +29,7 @@ static void check_backend(const char *backend)
     CHECK_EQ(ssg_image_read(path, "albedo", &albedo, &d), SSG_OK);
     struct ssg_scene *s = NULL;
     CHECK_EQ(ssg_scene_load("tests/fixtures/vertex_colors.scene", 1, &s, &d), SSG_OK);
-    const struct ssg_frame frame = {32, 24, 40, 0.05f, 20, 1, 0};
+    const struct ssg_frame frame = {32, 24, 40, 0.05f, 20, 1, 0, 0, 0};
     const struct ssg_lightmap_sources own = {1, 0, 1};
     enum ssg_backend b = strcmp(backend, "gl") ? SSG_BACKEND_CPU : SSG_BACKEND_GL;
     if (s)

@@ -81,6 +81,7 @@ struct ssg_graph {
     struct ssg_loc size_loc;
     int guard;                 /* the `guard` line's pixels, 0 = none */
     struct ssg_loc guard_loc;
+    int jitter;                /* the `jitter` line's phases, 0 = none (graph_time.c) */
     int64_t seed;
     struct gnode *nodes;
     int count, cap;

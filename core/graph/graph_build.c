@@ -288,6 +288,20 @@ static void directive_guard(struct builder *b, const struct ssg_stmt *st)
     }
 }
 
+/* jitter N: every frame's pixels sample N sub-pixel offsets in turn (graph_time.c). */
+static void directive_jitter(struct builder *b, const struct ssg_stmt *st)
+{
+    long long n;
+    if (st->arg_count != 1) {
+        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->arg_count ? st->args[1].value.loc :
+                    st->name_loc, "'jitter' expects one number of phases, e.g. jitter 8 "
+                    "(0 = none)");
+        fail(b, SSG_E_SYNTAX);
+    } else if (directive_int(b, st, 0, 0, SSG_JITTER_MAX, &n)) {
+        b->g->jitter = (int)n;
+    }
+}
+
 /* backend cpu|gl: where nodes without their own backend= run. */
 static void directive_backend(struct builder *b, const struct ssg_stmt *st)
 {
@@ -321,6 +335,8 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
         directive_size(b, st);
     } else if (ssg_tok_eq(st->name, st->name_len, "guard")) {
         directive_guard(b, st);
+    } else if (ssg_tok_eq(st->name, st->name_len, "jitter")) {
+        directive_jitter(b, st);
     } else if (ssg_tok_eq(st->name, st->name_len, "seed")) {
         if (st->arg_count == 1 && directive_int(b, st, 0, 0, 2147483647LL, &seed))
             b->g->seed = seed;
@@ -334,7 +350,7 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
     } else {
         ssg_diag_at(b->diags, SSG_E_SYNTAX, st->name_loc, "unknown statement '%.*s' (expected "
                     "name = node(...), set node.param = value, scene, lights, size, guard, "
-                    "seed, backend or include)",
+                    "jitter, seed, backend or include)",
                     (int)st->name_len, st->name);
         fail(b, SSG_E_SYNTAX);
     }

@@ -287,12 +287,13 @@ static int graph_uses_gl(const struct ssg_graph *g)
 /* Which nodes' outputs stand through all of a run's frames (r->hold): in a sequence,
    those that read nothing a frame changes (the frame index; the camera, where a camera
    path moves it), read no prev(), and whose producers stand too. They run in the first
-   frame only and keep their images to the end of the run; a one-frame run holds none. */
+   frame only and keep their images to the end of the run; a one-frame run holds none.
+   A `jitter` line moves every camera reader's pixels each frame, as a path does. */
 static void mark_held(struct run *r, int frames)
 {
     const struct ssg_graph *g = r->g;
     int path = g->scene && ssg_camera_path_active(&g->scene->camera_path);
-    unsigned changing = SSG_READS_FRAME | (path ? SSG_READS_CAMERA : 0);
+    unsigned changing = SSG_READS_FRAME | (path || g->jitter > 1 ? SSG_READS_CAMERA : 0);
     for (int p = 0; p < g->order_count; p++) {
         const struct gnode *n = &g->nodes[g->order[p]];
         int hold = frames > 1 && !n->desc->is_sink && !ssg_history_reads_prev(n) &&

@@ -10,6 +10,7 @@
  * one), a cut of the path lies between them, or ssg_graph_set_view set a new camera. */
 #include <string.h>
 
+#include "common/radical_inverse.h" /* the Halton points the halton node also draws */
 #include "graph/graph.h"
 #include "scene/camera_path.h"
 
@@ -45,15 +46,34 @@ static void use_camera(struct ssg_graph *g, const struct ssg_camera *camera)
     ssg_graph_reinfer(g, &quiet); /* shapes do not depend on the camera; checks may read it */
 }
 
+/* Frame `frame`'s sub-pixel jitter under a `jitter N` line (ssg_frame.jitter_x, _y):
+   the Halton points (2, 3) of index 1 .. N in turn, less 0.5, so that the offsets cover
+   the pixel evenly with their mean near its centre (Karis, High Quality Temporal
+   Supersampling, SIGGRAPH 2014); index 0, the corner, is left out. 1 if it moved. */
+static int frame_jitter(struct ssg_graph *g, int frame)
+{
+    float jx = 0.0f, jy = 0.0f;
+    if (g->jitter > 0) {
+        uint64_t i = (uint64_t)(frame % g->jitter) + 1;
+        jx = (float)(ssg_halton_radical_inverse(i, 2) - 0.5);
+        jy = (float)(ssg_halton_radical_inverse(i, 3) - 0.5);
+    }
+    int moved = jx != g->frame.jitter_x || jy != g->frame.jitter_y;
+    g->frame.jitter_x = jx;
+    g->frame.jitter_y = jy;
+    return moved;
+}
+
 int ssg_time_begin(struct ssg_graph *g, int frame, int first, int frames, int live,
                    struct ssg_time_step *step)
 {
     step->time_s = (float)(frame / frames_per_second(g)); /* as the path's (camera_path.c) */
     step->reset = 1;
+    int jittered = frame_jitter(g, frame); /* the camera's readers see it, as a move */
     if (!g->scene)
-        return 0;
+        return jittered;
     struct ssg_camera camera = g->scene->camera;
-    int cut = 0, moved = 0;
+    int cut = 0, moved = jittered;
     if (!(g->time.view_set && frames == 1))
         frame_camera(g, frame, &camera, &cut);
     if (ssg_camera_differs(&camera, &g->scene->camera)) {

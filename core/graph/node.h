@@ -24,7 +24,8 @@
  *   A pixel with no surface (background) has depth 0, position 0 and normal 0.
  *   Pixel (x, y) has its centre at (x + 0.5, y + 0.5); row 0 is the top.
  *   Projection: px = cx + f * x / -z, py = cy - f * y / -z with cx = width/2 + guard,
- *   cy = height/2 + guard, f = (height / 2) / tan(fov_y / 2) (ssg_frame_projection):
+ *   cy = height/2 + guard (less the frame's jitter, 0 unless the graph has a `jitter`
+ *   line), f = (height / 2) / tan(fov_y / 2) (ssg_frame_projection):
  *   frame-sized images hold the frame and its guard band (ssg_frame.guard pixels on
  *   every side, 0 by default), so the frame's own pixels start at (guard, guard). */
 #ifndef SSG_NODE_H
@@ -453,8 +454,10 @@ static inline struct ssg_projection ssg_frame_projection(const struct ssg_frame 
 {
     struct ssg_projection p;
     p.f = 0.5f * (float)frame->height / tanf(0.5f * frame->fov_y * (float)M_PI / 180.0f);
-    p.cx = 0.5f * (float)frame->width + (float)frame->guard;
-    p.cy = 0.5f * (float)frame->height + (float)frame->guard;
+    /* jitter: the image moves by -jitter, so that pixel x's centre x + 0.5 looks through
+       x + 0.5 + jitter of the unjittered image (0 without a `jitter` line: the same floats) */
+    p.cx = 0.5f * (float)frame->width + (float)frame->guard - frame->jitter_x;
+    p.cy = 0.5f * (float)frame->height + (float)frame->guard - frame->jitter_y;
     return p;
 }
 

@@ -20,7 +20,7 @@ static enum ssg_err run(const struct ssg_image *a, const struct ssg_image *b,
 {
     struct ssg_binding bind[2] = {{"a", a}, {"b", b}};
     struct ssg_diags diags = {0};
-    struct ssg_frame frame = {a->width, a->height, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame frame = {a->width, a->height, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     return ssg_node_run("compare", bind, 2, sets, set_count, &frame, out, &diags);
 }
 

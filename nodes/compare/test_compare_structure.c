@@ -48,7 +48,7 @@ static enum ssg_err run(const struct ssg_image *a, const struct ssg_image *b,
     struct ssg_binding bind[3] = {{"a", a}, {"b", b}, {"depth", z}};
     const char *sets[] = {"structure=true", "structure_sigma=0.015625", "flip=off"};
     struct ssg_diags diags = {0};
-    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     enum ssg_err e = ssg_node_run("compare", bind, z ? 3 : 2, sets, on ? 3 : 0, &frame, out,
                                   &diags);
     ssg_diags_print(&diags, stderr);
@@ -138,7 +138,7 @@ static void test_smooth(void)
             a->data[(size_t)y * W + (size_t)x] = b->data[(size_t)y * W + (size_t)x] = v;
         }
     struct ssg_binding bind[3] = {{"a", a}, {"b", b}, {"depth", z}};
-    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame frame = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     const char *sets[] = {"structure=true", "structure_sigma=0.015625", "flip=off",
                           "structure_smooth=1e6"};
     struct ssg_diags diags = {0};

@@ -25,7 +25,7 @@
 extern const struct ssg_node_desc ssg_node_reference_gi;
 
 enum { W = 96, H = 72 };
-static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0, 0, 0};
 
 /* A scene with its G-buffer, maps and direct light (sets applied). */
 struct lit {
@@ -315,7 +315,7 @@ static void contact_against_truth(const char *scene, int out[4])
     if (!s)
         return;
     const struct ssg_frame frame = {160, 120, s->camera.fov_y, s->camera.near_z,
-                                    s->camera.far_z, 1, 0};
+                                    s->camera.far_z, 1, 0, 0, 0};
     struct ssg_image *g[SSG_GBUFFER_OUTPUTS], *m[3], *r[2], *t[3];
     gbuffer_of(s, &frame, g);
     CHECK_EQ(maps_fit(s, &frame, 256, SSG_LIGHTMAP_OWN_ONLY, "view", SSG_BACKEND_CPU, m),

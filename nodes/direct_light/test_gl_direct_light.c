@@ -14,7 +14,7 @@
 #include "light_maps.h"
 
 enum { W = 96, H = 72 };
-static const struct ssg_frame FRAME = {W, H, 40, 0.05f, 20, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 40, 0.05f, 20, 1, 0, 0, 0};
 
 static void parity(const char *name, const char *lights, const char *const *sets, int n,
                    const char *fit, int res)

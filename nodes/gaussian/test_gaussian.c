@@ -29,7 +29,7 @@ static struct ssg_image *blur(const struct ssg_image *in, const char *const *set
 {
     struct ssg_binding b[1] = {{"in", in}};
     struct ssg_diags diags = {0};
-    struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {W, H, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_outputs out;
     enum ssg_err e = ssg_node_run("gaussian", b, 1, sets, n, &f, &out, &diags);
     CHECK_EQ(e, SSG_OK);
@@ -154,7 +154,7 @@ static void test_rejects(void)
 {
     struct ssg_image *in = ssg_image_create(8, 8, 1);
     struct ssg_binding b[1] = {{"in", in}};
-    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_outputs out;
     struct ssg_diags diags = {0};
     const char *even[] = {"size=4"};

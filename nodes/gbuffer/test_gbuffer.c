@@ -43,7 +43,7 @@ static enum ssg_err render(const struct ssg_scene *s, int normals, struct gbuf *
 {
     static const int channels[6] = {3, 3, 1, 3, 3, 3};
     struct ssg_frame frame = {W, H, s ? s->camera.fov_y : 60, s ? s->camera.near_z : 0.1f,
-                              s ? s->camera.far_z : 100, 1, 0};
+                              s ? s->camera.far_z : 100, 1, 0, 0, 0};
     struct ssg_node_ctx ctx = {.desc = &ssg_node_gbuffer, .instance = "g", .frame = &frame,
                                .scene = s, .out_dir = ".", .diags = d};
     struct ssg_gbuffer_params p;
@@ -197,7 +197,7 @@ static void test_known_scene(const struct ssg_scene *s)
     struct ssg_diags d = {0};
     struct gbuf g;
     CHECK_EQ(render(s, SSG_GBUFFER_NORMALS_SMOOTH, &g, &d), SSG_OK);
-    struct ssg_frame frame = {W, H, 60, 0.1f, 100, 1, 0};
+    struct ssg_frame frame = {W, H, 60, 0.1f, 100, 1, 0, 0, 0};
     struct ssg_projection p = ssg_frame_projection(&frame);
     struct tally t = {0};
     for (int y = 0; y < H; y++)

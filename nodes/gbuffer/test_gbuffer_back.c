@@ -33,7 +33,7 @@
 extern const struct ssg_node_desc ssg_node_gbuffer;
 
 enum { W = 64, H = 48 };
-static const struct ssg_frame FRAME = {W, H, 60, 0.1f, 100, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 60, 0.1f, 100, 1, 0, 0, 0};
 
 static const char *const cam =
     "camera(position=[0, 0, 0], target=[0, 0, -1], up=[0, 1, 0], fov=60, near=0.1, far=100)\n"
@@ -273,7 +273,7 @@ static void parity(const char *scene_path, double max_fraction)
     ssg_diags_print(&d, stderr);
     if (!s)
         return;
-    struct ssg_frame f = {160, 120, s->camera.fov_y, s->camera.near_z, s->camera.far_z, 1, 0};
+    struct ssg_frame f = {160, 120, s->camera.fov_y, s->camera.near_z, s->camera.far_z, 1, 0, 0, 0};
     struct layers c = render(s, &f, SSG_BACKEND_CPU, 1), g = render(s, &f, SSG_BACKEND_GL, 1);
     size_t n = (size_t)f.width * (size_t)f.height, other = 0, inf = 0;
     double worst = 0;

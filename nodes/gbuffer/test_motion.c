@@ -44,7 +44,7 @@
 extern const struct ssg_node_desc ssg_node_gbuffer;
 
 enum { W = 64, H = 48 };
-static const struct ssg_frame FRAME = {W, H, 60, 0.1f, 100, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 60, 0.1f, 100, 1, 0, 0, 0};
 static const double TOL_PX = 1e-3, TOL_Z = 1e-5;
 
 static const char *const scene_text =
@@ -310,7 +310,7 @@ static void parity_cases(const struct ssg_scene *s)
     if (!cornell)
         return;
     struct ssg_frame f = {128, 96, cornell->camera.fov_y, cornell->camera.near_z,
-                          cornell->camera.far_z, 1, 0};
+                          cornell->camera.far_z, 1, 0, 0, 0};
     struct ssg_camera c = cornell->camera;
     c.position[0] -= 0.1f, c.position[1] += 0.05f, c.position[2] += 0.2f;
     c.target[0] += 0.1f;

@@ -13,7 +13,7 @@
 
 static struct ssg_frame frame_seed(uint64_t seed)
 {
-    return (struct ssg_frame){64, 64, 45.0f, 0.05f, 100.0f, seed, 0};
+    return (struct ssg_frame){64, 64, 45.0f, 0.05f, 100.0f, seed, 0, 0, 0};
 }
 
 /* Runs halton with the given settings; returns the error code, outputs in *out. */

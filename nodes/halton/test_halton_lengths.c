@@ -29,7 +29,7 @@
 /* Runs halton with sets; the kernel and the tile (owned by *out), or 0 on error. */
 static int run(const char *const *sets, int count, struct ssg_outputs *out)
 {
-    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 5, 0};
+    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 5, 0, 0, 0};
     struct ssg_diags diags = {0};
     enum ssg_err e = ssg_node_run("halton", NULL, 0, sets, count, &frame, out, &diags);
     CHECK_EQ(e, SSG_OK);
@@ -155,7 +155,7 @@ static void test_frames(void)
 
 static void test_check(void)
 {
-    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 5, 0};
+    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 5, 0, 0, 0};
     struct ssg_outputs out;
     struct ssg_diags diags = {0};
     const char *curved[] = {"lengths=shifted", "falloff=2"};

@@ -21,7 +21,7 @@ static int run_tile(const char *rotations, int n, uint64_t seed, float *pattern)
     snprintf(kind, sizeof kind, "rotations=%s", rotations);
     snprintf(side, sizeof side, "pattern=%d", n);
     const char *sets[] = {kind, side};
-    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, seed, 0};
+    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, seed, 0, 0, 0};
     struct ssg_diags diags = {0};
     struct ssg_outputs out;
     enum ssg_err e = ssg_node_run("halton", NULL, 0, sets, 2, &frame, &out, &diags);
@@ -147,7 +147,7 @@ static void test_determinism(void)
     }
     /* No rotations parameter: the white tile, as before the parameter existed. */
     const char *sets[] = {"pattern=8"};
-    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 11, 0};
+    struct ssg_frame frame = {64, 64, 45.0f, 0.05f, 100.0f, 11, 0, 0, 0};
     struct ssg_diags diags = {0};
     struct ssg_outputs out;
     CHECK_EQ(ssg_node_run("halton", NULL, 0, sets, 1, &frame, &out, &diags), SSG_OK);

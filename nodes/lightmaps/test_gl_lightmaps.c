@@ -11,7 +11,7 @@
 #include "check.h"
 #include "light_maps.h"
 
-static const struct ssg_frame FRAME = {32, 24, 40, 0.05f, 20, 1, 0};
+static const struct ssg_frame FRAME = {32, 24, 40, 0.05f, 20, 1, 0, 0, 0};
 
 /* Texels whose depth differs by more than `tol` (in share of the texels), and the mean
    |difference| of each output over the texels whose depth agrees. */

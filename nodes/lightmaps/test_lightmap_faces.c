@@ -115,7 +115,7 @@ static void fit_case(const char *camera, float cx, float turn, int fitted)
     struct ssg_scene *s = scene_from_text("lm_fit_view", text);
     if (!s)
         return;
-    const struct ssg_frame frame = {64, 64, 90, 1, 20, 1, 0};
+    const struct ssg_frame frame = {64, 64, 90, 1, 20, 1, 0, 0, 0};
     struct ssg_lightmap_view view = {&frame, &s->camera, 64};
     struct ssg_lightmap_face scene_fit[1], f[1];
     CHECK_EQ(ssg_lightmap_faces(s, SSG_LIGHTMAP_OWN_ONLY, scene_fit, 1), 1);

@@ -21,7 +21,7 @@
 #include "scratch.h"
 
 enum { W = 80, H = 60, R = 32, T = 4 };
-static const struct ssg_frame FRAME = {W, H, 40, 0.05f, 20, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 40, 0.05f, 20, 1, 0, 0, 0};
 
 static struct ssg_scene *table(void)
 {

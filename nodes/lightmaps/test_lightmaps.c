@@ -30,7 +30,7 @@
 #include "scene/env.h"
 #include "scene_node.h"
 
-static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {32, 24, 45, 0.05f, 100, 1, 0, 0, 0};
 
 static void test_solid_angles(void)
 {

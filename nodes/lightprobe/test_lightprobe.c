@@ -21,7 +21,7 @@
 #include "lightprobe/lightprobe.h"
 #include "scene_node.h"
 
-static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0, 0, 0};
 
 struct lights {
     int n;

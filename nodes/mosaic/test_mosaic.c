@@ -26,7 +26,7 @@ static float px(const struct ssg_image *im, int c, int x, int y)
 static struct ssg_image *sheet(const struct ssg_binding *b, int n, const char *const *sets,
                                int set_count, int w, int h, enum ssg_err want)
 {
-    struct ssg_frame f = {w, h, 45, 0.05f, 100, 1, 0};
+    struct ssg_frame f = {w, h, 45, 0.05f, 100, 1, 0, 0, 0};
     struct ssg_outputs out = {0};
     struct ssg_diags d = {0};
     CHECK_EQ(ssg_node_run("mosaic", b, n, sets, set_count, &f, &out, &d), want);

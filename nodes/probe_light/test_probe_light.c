@@ -27,7 +27,7 @@
 extern const struct ssg_node_desc ssg_node_gbuffer;
 
 enum { W = 96, H = 72 };
-static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {W, H, 45, 0.05f, 100, 1, 0, 0, 0};
 
 struct gbuf {
     struct ssg_image *out[SSG_GBUFFER_OUTPUTS]; /* gbuffer's outputs in port order (back,

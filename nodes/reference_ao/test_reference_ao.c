@@ -105,7 +105,7 @@ static enum ssg_err run(const struct ssg_scene *s, const struct input *in, int r
                         double max_distance, double offset, uint64_t seed,
                         struct ssg_image **out)
 {
-    struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed, 0};
+    struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed, 0, 0, 0};
     struct ssg_reference_ao_params p;
     ssg_params_defaults(ssg_node_reference_ao.params, &p);
     p.rays = rays;

@@ -75,7 +75,7 @@ struct result {
 
 static struct ssg_frame scene_frame(const struct ssg_scene *s, uint64_t seed)
 {
-    return (struct ssg_frame){W, H, s->camera.fov_y, s->camera.near_z, s->camera.far_z, seed, 0};
+    return (struct ssg_frame){W, H, s->camera.fov_y, s->camera.near_z, s->camera.far_z, seed, 0, 0, 0};
 }
 
 /* Renders the G-buffer and recovers world points and normals (world = eye + R^T view). */
@@ -144,7 +144,7 @@ static void free_result(struct result *r)
 static enum ssg_err run(const struct ssg_scene *s, const struct gbuf *g, int samples,
                         int bounce, int environment, uint64_t seed, struct result *r)
 {
-    struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed, 0};
+    struct ssg_frame frame = {W, H, 50, 0.05f, 100, seed, 0, 0, 0};
     struct ssg_reference_gi_params p;
     ssg_params_defaults(ssg_node_reference_gi.params, &p);
     p.samples = samples;

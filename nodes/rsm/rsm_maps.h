@@ -100,7 +100,7 @@ static inline struct ssg_image *rsm_run_at(const struct ssg_scene *s, const stru
                                            int frame_index, const char *const *sets,
                                            int set_count, enum ssg_backend backend)
 {
-    struct ssg_frame frame = {g->w, g->h, 45, 0.05f, 100, seed, 0};
+    struct ssg_frame frame = {g->w, g->h, 45, 0.05f, 100, seed, 0, 0, 0};
     struct ssg_image *out[1] = {ssg_image_create(g->w, g->h, 3)};
     const struct ssg_image *in[SSG_RSM_INPUTS] = {g->position, g->normal, m->depth, m->normal,
                                                   m->flux, albedo ? g->albedo : NULL};

@@ -414,7 +414,7 @@ static void test_refusals(void)
         return;
     struct maps m = maps_make(sun, 8); /* 1 face; the point light needs 6 */
     struct gbuf g = gbuf_make(point, 2, 2);
-    struct ssg_frame frame = {2, 2, 45, 0.05f, 100, 1, 0};
+    struct ssg_frame frame = {2, 2, 45, 0.05f, 100, 1, 0, 0, 0};
     struct ssg_image *out[1] = {ssg_image_create(2, 2, 3)};
     const struct ssg_image *in[SSG_RSM_INPUTS] = {g.position, g.normal, m.depth, m.normal,
                                                   m.flux, NULL};

@@ -19,7 +19,7 @@
 #include "scene_node.h"
 #include "shadowmaps/shadowmaps.h"
 
-static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0};
+static const struct ssg_frame FRAME = {64, 48, 45, 0.05f, 100, 1, 0, 0, 0};
 
 static const char *const FLOOR_BOX =
     "camera(position=[0, 2, 3], target=[0, 0, 0])\n"

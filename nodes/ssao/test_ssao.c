@@ -321,7 +321,7 @@ static void test_rejects(const struct ssg_image *kernel)
     struct ssg_image *pos = ssg_image_create(8, 8, 3), *nrm = ssg_image_create(8, 4, 3);
     struct ssg_binding b[3] = {{"position", pos}, {"normal", nrm}, {"kernel", kernel}};
     struct ssg_diags diags = {0};
-    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_outputs out;
     CHECK(ssg_node_run("ssao", b, 3, NULL, 0, &f, &out, &diags) != SSG_OK);
     ssg_outputs_release(&out);

@@ -392,7 +392,7 @@ static void light_run(double lz, double m[2])
     CHECK_EQ(ssg_scene_load(path, 1, &sc, &d), SSG_OK);
     if (!sc)
         return;
-    struct ssg_frame fr = {SW, SH, sc->camera.fov_y, sc->camera.near_z, sc->camera.far_z, 1, 0};
+    struct ssg_frame fr = {SW, SH, sc->camera.fov_y, sc->camera.near_z, sc->camera.far_z, 1, 0, 0, 0};
     struct ssg_node_ctx ctx = {.desc = &ssg_node_gbuffer, .instance = "s", .frame = &fr,
                                .scene = sc, .out_dir = ".", .diags = &d};
     static const int gch[6] = {3, 3, 1, 3, 3, 3};
@@ -407,7 +407,7 @@ static void light_run(double lz, double m[2])
     CHECK_EQ(ssg_node_gbuffer.prepare(&ctx, gp, gc), SSG_OK);
     CHECK_EQ(ssg_node_gbuffer.run_cpu(&ctx, gc, &gio), SSG_OK);
     /* kernel: 64 uniform samples, no rotation */
-    struct ssg_frame hf = {SW, SH, 45, 0.05f, 100, 1, 0};
+    struct ssg_frame hf = {SW, SH, 45, 0.05f, 100, 1, 0, 0, 0};
     const char *hsets[] = {"count=64", "mapping=uniform"};
     struct ssg_outputs hal;
     CHECK_EQ(ssg_node_run("halton", NULL, 0, hsets, 2, &hf, &hal, &d), SSG_OK);

@@ -363,7 +363,7 @@ static void test_rejects(void)
     struct ssg_binding b[5] = {{"position", pos}, {"normal", pos}, {"light", pos},
                                {"albedo", pos}, {"back", one}};
     struct ssg_diags diags = {0};
-    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0};
+    struct ssg_frame f = {8, 8, 45.0f, 0.05f, 100.0f, 1, 0, 0, 0};
     struct ssg_outputs out;
     CHECK_EQ(ssg_node_run("ssilvb", b, 5, NULL, 0, &f, &out, &diags), SSG_OK);
     ssg_outputs_release(&out);

@@ -1,0 +1,138 @@
+/* test_jitter.c - a graph's `jitter N` line (graph_time.c, docs/time.md): frame f's
+ * sub-pixel offset is the Halton point (2, 3) of index f mod N + 1 less 0.5, in the
+ * projection every node reads (ssg_frame_projection); none without the line. On a kept
+ * graph with a still camera the G-buffer changes from frame to frame and repeats after N
+ * frames, byte for byte; what reads no camera (rsm's light maps) still runs once in a
+ * sequence; and the same frame run on its own gives the same bytes as in a sequence.
+ * (The line's errors: test_graph.c.) */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "common/radical_inverse.h"
+#include "graph/graph.h"
+
+static struct ssg_graph *load(const char *jitter_line)
+{
+    char text[512];
+    snprintf(text, sizeof text, "include \"rsm.graph\"\n%s\nsize 40 30\n", jitter_line);
+    struct ssg_overrides ov = {.seed = -1};
+    struct ssg_graph *g = NULL;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_load_text("graphs/jitter_test.graph", text, &ov, &g, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    return g;
+}
+
+/* The offsets of frames 0 .. 9 under jitter 4, and the projection's principal point. */
+static void test_sequence(void)
+{
+    struct ssg_graph *g = load("jitter 4");
+    if (!g)
+        return;
+    struct ssg_time_step step;
+    for (int f = 0; f < 10; f++) {
+        ssg_time_begin(g, f, f == 0, 10, 0, &step);
+        uint64_t i = (uint64_t)(f % 4) + 1;
+        float jx = (float)(ssg_halton_radical_inverse(i, 2) - 0.5);
+        float jy = (float)(ssg_halton_radical_inverse(i, 3) - 0.5);
+        CHECK(g->frame.jitter_x == jx && g->frame.jitter_y == jy);
+        struct ssg_projection p = ssg_frame_projection(&g->frame);
+        CHECK(p.cx == 20.0f - jx && p.cy == 15.0f - jy);
+        ssg_time_end(g, f);
+    }
+    /* the first four: (0, -1/6), (-1/4, 1/6), (1/4, -7/18), (-3/8, -1/18) */
+    ssg_time_begin(g, 1, 1, 1, 0, &step);
+    CHECK_NEAR(g->frame.jitter_x, -0.25, 1e-7);
+    CHECK_NEAR(g->frame.jitter_y, 1.0 / 6.0, 1e-7);
+    ssg_graph_destroy(&g);
+    g = load("");
+    if (!g)
+        return;
+    for (int f = 0; f < 3; f++) {
+        ssg_time_begin(g, f, f == 0, 3, 0, &step);
+        CHECK(g->frame.jitter_x == 0.0f && g->frame.jitter_y == 0.0f);
+    }
+    ssg_graph_destroy(&g);
+}
+
+static const struct ssg_run_node *node_of(const struct ssg_run_stats *s, const char *name)
+{
+    for (int i = 0; i < s->node_count; i++)
+        if (!strcmp(s->nodes[i].name, name))
+            return &s->nodes[i];
+    return NULL;
+}
+
+/* A 5-frame sequence of a still camera: the G-buffer runs every frame (its pixels move),
+   the light maps once. */
+static void test_sequence_runs(void)
+{
+    struct ssg_graph *g = load("jitter 4");
+    if (!g)
+        return;
+    struct ssg_diags d = {0};
+    struct ssg_run_stats s = {0};
+    struct ssg_run_options opt = {.frames = 5, .no_files = 1, .stats = &s};
+    CHECK_EQ(ssg_graph_run(g, &opt, &d), SSG_OK);
+    const struct ssg_run_node *gb = node_of(&s, "g"), *lm = node_of(&s, "lm");
+    CHECK(gb && gb->calls == 5);
+    CHECK(lm && lm->calls == 1);
+    ssg_run_stats_free(&s);
+    ssg_diags_print(&d, stderr);
+    ssg_graph_destroy(&g);
+}
+
+static struct ssg_image *depth_at(struct ssg_graph *g, int frame)
+{
+    struct ssg_diags d = {0};
+    struct ssg_image *im = NULL;
+    struct ssg_run_options opt = {.no_files = 1};
+    CHECK_EQ(ssg_graph_set_frame(g, frame, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_run(g, &opt, &d), SSG_OK);
+    CHECK_EQ(ssg_graph_output(g, "g.depth", &im, &d), SSG_OK);
+    ssg_diags_print(&d, stderr);
+    return im;
+}
+
+static int same(const struct ssg_image *a, const struct ssg_image *b)
+{
+    return a && b && !memcmp(a->data, b->data, sizeof(float) * (size_t)a->width * a->height);
+}
+
+/* A kept graph stepped through frames 0 .. 4: each frame's depth differs from the one
+   before, frame 4 repeats frame 0, and a fresh graph run at frame 2 alone matches. */
+static void test_frames_repeat(void)
+{
+    struct ssg_graph *g = load("jitter 4");
+    if (!g)
+        return;
+    struct ssg_diags d = {0};
+    CHECK_EQ(ssg_graph_keep(g, 0, &d), SSG_OK);
+    struct ssg_image *im[5];
+    for (int f = 0; f < 5; f++)
+        im[f] = depth_at(g, f);
+    for (int f = 1; f < 5; f++)
+        CHECK(!same(im[f], im[f - 1]));
+    CHECK(same(im[4], im[0]));
+    struct ssg_graph *fresh = load("jitter 4");
+    if (fresh) {
+        CHECK_EQ(ssg_graph_keep(fresh, 0, &d), SSG_OK);
+        struct ssg_image *two = depth_at(fresh, 2);
+        CHECK(same(two, im[2]));
+        ssg_image_destroy(&two);
+        ssg_graph_destroy(&fresh);
+    }
+    for (int f = 0; f < 5; f++)
+        ssg_image_destroy(&im[f]);
+    ssg_graph_destroy(&g);
+}
+
+int main(void)
+{
+    test_sequence();
+    test_sequence_runs();
+    test_frames_repeat();
+    return check_report();
+}
