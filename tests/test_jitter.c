@@ -3,7 +3,8 @@
  * projection every node reads (ssg_frame_projection); none without the line. On a kept
  * graph with a still camera the G-buffer changes from frame to frame and repeats after N
  * frames, byte for byte; what reads no camera (rsm's light maps) still runs once in a
- * sequence; and the same frame run on its own gives the same bytes as in a sequence.
+ * sequence; and the same frame run on its own gives the same bytes as in a sequence, on
+ * the CPU and on GL.
  * (The line's errors: test_graph.c.) */
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,16 +14,21 @@
 #include "common/radical_inverse.h"
 #include "graph/graph.h"
 
-static struct ssg_graph *load(const char *jitter_line)
+static struct ssg_graph *load_on(const char *jitter_line, const char *backend)
 {
     char text[512];
     snprintf(text, sizeof text, "include \"rsm.graph\"\n%s\nsize 40 30\n", jitter_line);
-    struct ssg_overrides ov = {.seed = -1};
+    struct ssg_overrides ov = {.seed = -1, .backend = backend};
     struct ssg_graph *g = NULL;
     struct ssg_diags d = {0};
     CHECK_EQ(ssg_graph_load_text("graphs/jitter_test.graph", text, &ov, &g, &d), SSG_OK);
     ssg_diags_print(&d, stderr);
     return g;
+}
+
+static struct ssg_graph *load(const char *jitter_line)
+{
+    return load_on(jitter_line, "cpu");
 }
 
 /* The offsets of frames 0 .. 9 under jitter 4, and the projection's principal point. */
@@ -102,10 +108,11 @@ static int same(const struct ssg_image *a, const struct ssg_image *b)
 }
 
 /* A kept graph stepped through frames 0 .. 4: each frame's depth differs from the one
-   before, frame 4 repeats frame 0, and a fresh graph run at frame 2 alone matches. */
-static void test_frames_repeat(void)
+   before, frame 4 repeats frame 0, and a fresh graph run at frame 2 alone matches; on the
+   CPU's ray caster and on GL's rasteriser alike. */
+static void test_frames_repeat(const char *backend)
 {
-    struct ssg_graph *g = load("jitter 4");
+    struct ssg_graph *g = load_on("jitter 4", backend);
     if (!g)
         return;
     struct ssg_diags d = {0};
@@ -116,7 +123,7 @@ static void test_frames_repeat(void)
     for (int f = 1; f < 5; f++)
         CHECK(!same(im[f], im[f - 1]));
     CHECK(same(im[4], im[0]));
-    struct ssg_graph *fresh = load("jitter 4");
+    struct ssg_graph *fresh = load_on("jitter 4", backend);
     if (fresh) {
         CHECK_EQ(ssg_graph_keep(fresh, 0, &d), SSG_OK);
         struct ssg_image *two = depth_at(fresh, 2);
@@ -133,6 +140,7 @@ int main(void)
 {
     test_sequence();
     test_sequence_runs();
-    test_frames_repeat();
+    test_frames_repeat("cpu");
+    test_frames_repeat("gl");
     return check_report();
 }
