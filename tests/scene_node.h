@@ -139,6 +139,34 @@ static inline void *node_params(const struct ssg_node_desc *desc, const char *co
     return params;
 }
 
+/* Runs prepare() and the node's kernel on `backend` with the caller's ctx (its frame,
+   history_reset, ...); on GL the outputs come back to the CPU and every GL copy of
+   io's images is freed. Returns the node's error (its message in ctx->diags). */
+static inline enum ssg_err node_execute_on(const struct ssg_node_desc *desc,
+                                           const struct ssg_node_ctx *ctx, const void *params,
+                                           const struct ssg_io *io, enum ssg_backend backend)
+{
+    struct ssg_node_timing t;
+    enum ssg_err e = backend == SSG_BACKEND_GL ? ssg_gl_open(ctx->diags) : SSG_OK;
+    if (!e)
+        e = ssg_node_execute(desc, ctx, params, io, backend, &t);
+    if (backend == SSG_BACKEND_GL) {
+        double ms = 0;
+        for (int i = 0; i < desc->output_count; i++) {
+            if (!io->out[i])
+                continue; /* an on-demand output left unbound */
+            if (!e)
+                e = ssg_gl_to_cpu(io->out[i], &ms, ctx->diags);
+            ssg_gl_image_free(io->out[i]);
+        }
+        for (int i = 0; i < desc->input_count; i++)
+            if (io->in[i])
+                ssg_gl_image_free((struct ssg_image *)io->in[i]);
+        ssg_gl_close();
+    }
+    return e;
+}
+
 /* Runs the node on `backend` with the scene; `in` in port order (NULL = unconnected),
    `out` allocated by the caller to the node's output shapes. On GL the outputs come back
    to the CPU and every GL copy is freed. Returns the node's error (printed). prev is the
@@ -162,24 +190,7 @@ static inline enum ssg_err node_run_scene_at(const struct ssg_node_desc *desc,
     struct ssg_io_shapes shapes;
     ssg_io_shapes_of(desc, &io, &shapes);
     ssg_node_ctx_set_shapes(&ctx, &shapes);
-    struct ssg_node_timing t;
-    enum ssg_err e = backend == SSG_BACKEND_GL ? ssg_gl_open(&d) : SSG_OK;
-    if (!e)
-        e = ssg_node_execute(desc, &ctx, params, &io, backend, &t);
-    if (backend == SSG_BACKEND_GL) {
-        double ms = 0;
-        for (int i = 0; i < desc->output_count; i++) {
-            if (!out[i])
-                continue; /* an on-demand output left unbound */
-            if (!e)
-                e = ssg_gl_to_cpu(out[i], &ms, &d);
-            ssg_gl_image_free(out[i]);
-        }
-        for (int i = 0; i < desc->input_count; i++)
-            if (in[i])
-                ssg_gl_image_free((struct ssg_image *)in[i]);
-        ssg_gl_close();
-    }
+    enum ssg_err e = node_execute_on(desc, &ctx, params, &io, backend);
     ssg_diags_print(&d, stderr);
     return e;
 }

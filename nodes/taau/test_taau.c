@@ -11,8 +11,7 @@
 
 #include "common/radical_inverse.h"
 #include "gl_parity.h"
-#include "graph/exec.h"
-#include "graph/gl_backend.h"
+#include "scene_node.h" /* node_execute_on */
 #include "taau.h"
 
 /* One run's inputs (in's size w x h, the output's factor x that) and outputs. */
@@ -76,23 +75,8 @@ static int urun(const struct uframe *f, const char *const *sets, int n, int gl,
     struct ssg_node_ctx ctx = {.desc = d, .instance = "u", .frame = &frame, .diags = &diags,
                                .in_shape = ins, .out_shape = outs,
                                .history_reset = f->reset};
-    struct ssg_node_timing timing;
-    double ms = 0;
-    if (!e && gl)
-        e = ssg_gl_open(&diags);
     if (!e)
-        e = ssg_node_execute(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU,
-                             &timing);
-    if (gl) {
-        for (int i = 0; i < SSG_TAAU_OUTPUTS && !e; i++)
-            e = ssg_gl_to_cpu(out[i], &ms, &diags);
-        for (int i = 0; i < SSG_TAAU_OUTPUTS; i++)
-            if (out[i])
-                ssg_gl_image_free(out[i]);
-        for (int i = 0; i < SSG_TAAU_INPUTS; i++)
-            ssg_gl_image_free((struct ssg_image *)in[i]);
-        ssg_gl_close();
-    }
+        e = node_execute_on(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
     if (e) {
         fprintf(stderr, "taau run failed (%s): %s\n", gl ? "gl" : "cpu", why);
         ssg_diags_print(&diags, stderr);

@@ -11,8 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "graph/exec.h"
-#include "graph/gl_backend.h"
+#include "scene_node.h" /* node_execute_on */
 #include "temporal.h"
 
 /* One frame's inputs (NULL = unconnected optional port) and the three outputs. */
@@ -101,24 +100,8 @@ static int trun(const struct tframe *f, const char *const *sets, int n, int rese
     struct ssg_io io = {.in = in, .out = out};
     struct ssg_node_ctx ctx = {.desc = d, .instance = "t", .frame = &frame, .diags = &diags,
                                .in_shape = ins, .out_shape = outs, .history_reset = reset};
-    struct ssg_node_timing timing;
-    double ms = 0;
-    if (!e && gl)
-        e = ssg_gl_open(&diags);
     if (!e)
-        e = ssg_node_execute(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU,
-                             &timing);
-    if (gl) {
-        for (int i = 0; i < SSG_TEMPORAL_OUTPUTS && !e; i++)
-            e = ssg_gl_to_cpu(out[i], &ms, &diags);
-        for (int i = 0; i < SSG_TEMPORAL_OUTPUTS; i++)
-            if (out[i])
-                ssg_gl_image_free(out[i]);
-        for (int i = 0; i < SSG_TEMPORAL_INPUTS; i++)
-            if (in[i])
-                ssg_gl_image_free((struct ssg_image *)in[i]);
-        ssg_gl_close();
-    }
+        e = node_execute_on(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
     if (e) {
         fprintf(stderr, "temporal run failed (%s): %s\n", gl ? "gl" : "cpu", why);
         ssg_diags_print(&diags, stderr);
