@@ -124,7 +124,7 @@ static void test_errors(void)
     expect_error("jitter_negative.graph", "jitter -1\n", SSG_E_SIZE, 2, 8);
     expect_error("jitter_fraction.graph", "jitter 1.5\n", SSG_E_TYPE, 2, 8);
     expect_error("jitter_two.graph", "jitter 8 2\n", SSG_E_SYNTAX, 2, 10);
-    expect_error("jitter_none.graph", "jitter\n", SSG_E_SYNTAX, 2, 1);
+    expect_error("jitter_none.graph", "jitter\n", SSG_E_TYPE, 2, 1);
     expect_error("include_missing.graph", "include \"nope.graph\"\n", SSG_E_IO, 2, 9);
     expect_error("unknown_directive.graph", "sise 640 480\n", SSG_E_SYNTAX, 2, 1);
     expect_error("set_unknown.graph",

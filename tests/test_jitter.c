@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "common/radical_inverse.h"
+#include "scene/radical_inverse.h"
 #include "graph/graph.h"
 
 static struct ssg_graph *load_on(const char *jitter_line, const char *backend)

@@ -25,6 +25,7 @@ nodes/gaussian/gaussian_gl.c "dst" each axis's destination: the scratch image, t
 nodes/gaussian/gaussian_gl.c "axis" the pass's axis
 nodes/gaussian/gaussian_gl.c "layer" the dispatch's channel (a loop index)
 nodes/temporal/temporal_gl.c "reset" ctx->history_reset of this run, in no table
+nodes/taau/taau_gl.c "reset" ctx->history_reset of this run, in no table
 nodes/probe_light/probe_light_gl.c "lights" the frames pass: the node's second shader (one consts table serves the light pass)
 nodes/probe_light/probe_light_gl.c "frames" the scratch image the frames pass writes and the light pass reads
 nodes/probe_light/probe_light_gl.c "rot" the frames pass (second shader), as "lights"

@@ -267,39 +267,21 @@ static void directive_size(struct builder *b, const struct ssg_stmt *st)
         fail(b, SSG_E_SYNTAX);
         return;
     }
-    if (directive_int(b, st, 0, 1, 16384, &w) && directive_int(b, st, 1, 1, 16384, &h)) {
-        b->g->width = (int)w;
-        b->g->height = (int)h;
-        b->g->size_loc = st->args[0].value.loc;
-    }
+    if (directive_int(b, st, 0, 1, 16384, &w) && directive_int(b, st, 1, 1, 16384, &h))
+        b->g->width = (int)w, b->g->height = (int)h, b->g->size_loc = st->args[0].value.loc;
 }
 
-/* guard G: the band of G pixels rendered around the frame (ssg_frame.guard). */
-static void directive_guard(struct builder *b, const struct ssg_stmt *st)
+/* One integer in [lo, hi] after the keyword (guard G, jitter N); `what` completes "expects
+   one ..." when more are given. 1 when *out was set. */
+static int directive_one(struct builder *b, const struct ssg_stmt *st, long long lo,
+                         long long hi, const char *what, long long *out)
 {
-    long long g;
-    if (st->arg_count > 1) {
-        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->args[1].value.loc, "'guard' expects one "
-                    "number of pixels, e.g. guard 32");
-        fail(b, SSG_E_SYNTAX);
-    } else if (directive_int(b, st, 0, 0, SSG_GUARD_MAX, &g)) {
-        b->g->guard = (int)g;
-        b->g->guard_loc = st->args[0].value.loc;
-    }
-}
-
-/* jitter N: every frame's pixels sample N sub-pixel offsets in turn (graph_time.c). */
-static void directive_jitter(struct builder *b, const struct ssg_stmt *st)
-{
-    long long n;
-    if (st->arg_count != 1) {
-        ssg_diag_at(b->diags, SSG_E_SYNTAX, st->arg_count ? st->args[1].value.loc :
-                    st->name_loc, "'jitter' expects one number of phases, e.g. jitter 8 "
-                    "(0 = none)");
-        fail(b, SSG_E_SYNTAX);
-    } else if (directive_int(b, st, 0, 0, SSG_JITTER_MAX, &n)) {
-        b->g->jitter = (int)n;
-    }
+    if (st->arg_count <= 1)
+        return directive_int(b, st, 0, lo, hi, out);
+    ssg_diag_at(b->diags, SSG_E_SYNTAX, st->args[1].value.loc, "'%.*s' expects one %s",
+                (int)st->name_len, st->name, what);
+    fail(b, SSG_E_SYNTAX);
+    return 0;
 }
 
 /* backend cpu|gl: where nodes without their own backend= run. */
@@ -319,7 +301,7 @@ static void directive_backend(struct builder *b, const struct ssg_stmt *st)
 static void directive(struct builder *b, const struct ssg_stmt *st)
 {
     const char *path;
-    long long seed;
+    long long seed, n;
     char resolved[512];
     if (ssg_tok_eq(st->name, st->name_len, "scene")) {
         if ((path = directive_string(b, st))) {
@@ -333,10 +315,12 @@ static void directive(struct builder *b, const struct ssg_stmt *st)
                              sizeof b->g->lights_path);
     } else if (ssg_tok_eq(st->name, st->name_len, "size")) {
         directive_size(b, st);
-    } else if (ssg_tok_eq(st->name, st->name_len, "guard")) {
-        directive_guard(b, st);
-    } else if (ssg_tok_eq(st->name, st->name_len, "jitter")) {
-        directive_jitter(b, st);
+    } else if (ssg_tok_eq(st->name, st->name_len, "guard")) { /* ssg_frame.guard */
+        if (directive_one(b, st, 0, SSG_GUARD_MAX, "number of pixels, e.g. guard 32", &n))
+            b->g->guard = (int)n, b->g->guard_loc = st->args[0].value.loc;
+    } else if (ssg_tok_eq(st->name, st->name_len, "jitter")) { /* graph_time.c */
+        if (directive_one(b, st, 0, SSG_JITTER_MAX, "number of phases, e.g. jitter 8", &n))
+            b->g->jitter = (int)n;
     } else if (ssg_tok_eq(st->name, st->name_len, "seed")) {
         if (st->arg_count == 1 && directive_int(b, st, 0, 0, 2147483647LL, &seed))
             b->g->seed = seed;

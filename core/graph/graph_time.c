@@ -10,7 +10,7 @@
  * one), a cut of the path lies between them, or ssg_graph_set_view set a new camera. */
 #include <string.h>
 
-#include "common/radical_inverse.h" /* the Halton points the halton node also draws */
+#include "scene/radical_inverse.h" /* the Halton points the halton node also draws */
 #include "graph/graph.h"
 #include "scene/camera_path.h"
 

@@ -1,7 +1,8 @@
 /* halton.h - the parameters and constants of the `halton` node, shared by halton.c
  * (descriptor, check, prepare), halton_pattern.c (the rotation tiles), halton_cpu.c and
  * halton_gl.c (the copies into the outputs) and test_halton*.c here; the radical inverse
- * it is built on is nodes/common/radical_inverse.h, which the environment's lights share.
+ * it is built on is core/scene/radical_inverse.h, which the environment's lights and a
+ * graph's `jitter` line share.
  *
  * Method (the Halton sequence, eq. 5-7, and its period property, eq. 8): README.md in
  * this folder. Everything here is pure and thread-safe. */
@@ -10,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "common/radical_inverse.h"
+#include "scene/radical_inverse.h"
 #include "graph/node.h"
 
 /* Ports, one row each (node.h): enumerator, name, types, doc. */

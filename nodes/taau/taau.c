@@ -40,11 +40,12 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
 static enum ssg_err prepare(const struct ssg_node_ctx *ctx, const void *params, void *consts)
 {
     struct ssg_taau_consts *c = consts;
-    (void)ctx;
     c->p = *(const struct ssg_taau_params *)params;
     c->u.inv_factor = 1.0f / (float)c->p.factor;
     c->u.fac = (float)c->p.factor;
     c->u.neg_inv_2s2 = -1.0f / (2.0f * c->p.sigma * c->p.sigma);
+    c->u.jitter_x = ctx->frame->jitter_x;
+    c->u.jitter_y = ctx->frame->jitter_y;
     return SSG_OK;
 }
 

@@ -7,8 +7,6 @@ uniform sampler2DArray motion;     // x, y: previous pixel minus this one (in's 
 uniform sampler2DArray history, weight_in;
 layout(r32f) uniform writeonly image2DArray dst_out, dst_weight;
 uniform int reset;                 // ctx->history_reset: no history
-uniform vec2 jitter;               // the frame's jitter, in's pixels
-uniform ivec2 in_size;             // in's width and height
 
 #pragma ssg_params
 #pragma ssg_consts
@@ -47,9 +45,10 @@ void main()
     ivec2 p = ssg_pixel();
     if (ssg_outside(p))
         return;
+    ivec2 in_size = textureSize(src, 0).xy;
     vec3 wx, wy, inx, iny;
-    int i0 = axis(p.x, in_size.x, jitter.x, wx, inx);
-    int j0 = axis(p.y, in_size.y, jitter.y, wy, iny);
+    int i0 = axis(p.x, in_size.x, jitter_x, wx, inx);
+    int j0 = axis(p.y, in_size.y, jitter_y, wy, iny);
     // the three columns' sums over the three rows (row_sums on the CPU), then the row's
     precise float wsum = ((wx[0] + wx[1]) + wx[2]) * ((wy[0] + wy[1]) + wy[2]);
     precise float count = ((inx[0] + inx[1]) + inx[2]) * ((iny[0] + iny[1]) + iny[2]);

@@ -51,7 +51,10 @@ SSG_PARAMS_STRUCT(ssg_taau_params, SSG_TAAU_PARAMS);
 #define SSG_TAAU_UNIFORMS(U)                                                               \
     U(FLOAT, inv_factor, "1 / factor: an output coordinate in in's pixels")               \
     U(FLOAT, fac, "factor as a float: in's distances in output pixels")                   \
-    U(FLOAT, neg_inv_2s2, "-1 / (2 sigma^2): the Gaussian's exponent per squared pixel")
+    U(FLOAT, neg_inv_2s2, "-1 / (2 sigma^2): the Gaussian's exponent per squared pixel") \
+    U(FLOAT, jitter_x, "the frame's jitter (ctx->frame): in's samples' offset, in's pixels; " \
+      "prepare() runs again when it changes, as for a camera move")                         \
+    U(FLOAT, jitter_y, "likewise, down")
 SSG_UNIFORMS_STRUCT(ssg_taau_uniforms, SSG_TAAU_UNIFORMS);
 
 struct ssg_taau_consts {

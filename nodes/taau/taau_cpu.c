@@ -377,8 +377,8 @@ enum ssg_err ssg_taau_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     }
     j.ax = (struct axis){near, {wt, wt + n, wt + 2 * n}};
     j.ay = (struct axis){near + j.bw, {wt + j.bw, wt + n + j.bw, wt + 2 * n + j.bw}};
-    make_axis(c, &j.ax, j.bw, j.w, ctx->frame->jitter_x);
-    make_axis(c, &j.ay, j.bh, j.h, ctx->frame->jitter_y);
+    make_axis(c, &j.ax, j.bw, j.w, c->u.jitter_x);
+    make_axis(c, &j.ay, j.bh, j.h, c->u.jitter_y);
     int failed = 0;
     j.failed = &failed;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, moments_band, &j);

@@ -1,7 +1,7 @@
 /* taau_gl.c - the GL side of the `taau` node (method in README.md, shader taau.glsl): one
  * pass, one invocation per output pixel. Ports, parameters and prepare()'s constants are
- * bound by the tables; the frame's jitter, in's size and ctx->history_reset, which no
- * table holds, by hand. */
+ * bound by the tables (the frame's jitter among prepare()'s constants); ctx->history_reset,
+ * which no table holds, by hand. */
 #include <stdio.h>
 
 #include "gl/gl.h"
@@ -18,8 +18,6 @@ enum ssg_err ssg_taau_run_gl(const struct ssg_node_ctx *ctx, const void *consts,
     ssg_gl_pass_begin(&p, ctx, "taau.glsl", defines);
     ssg_gl_ports(&p, io);
     ssg_gl_int(&p, "reset", ctx->history_reset != 0);
-    ssg_gl_vec2(&p, "jitter", ctx->frame->jitter_x, ctx->frame->jitter_y);
-    ssg_gl_ivec2(&p, "in_size", in->width, in->height);
     ssg_gl_dispatch(&p, in->width * c->p.factor, in->height * c->p.factor);
     return ssg_gl_pass_end(&p);
 }

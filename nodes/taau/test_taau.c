@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "common/radical_inverse.h"
+#include "scene/radical_inverse.h"
 #include "gl_parity.h"
 #include "scene_node.h" /* node_execute_on */
 #include "taau.h"

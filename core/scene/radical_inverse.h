@@ -1,6 +1,7 @@
 /* radical_inverse.h - the radical inverse behind every Halton point of ssgraph: the
- * `halton` node's kernels and rotation tiles (nodes/halton) and the importance-sampled
- * directions of the environment's lights (env_lights.c). Szentandrasi, section 4.2, eq. 5
+ * `halton` node's kernels and rotation tiles (nodes/halton), the importance-sampled
+ * directions of the environment's lights (env_lights.c) and the sub-pixel offsets of a
+ * graph's `jitter` line (core/graph/graph_time.c). Szentandrasi, section 4.2, eq. 5
  * and 6; the sequence itself is in nodes/halton/README.md. Pure and thread-safe. */
 #ifndef SSG_RADICAL_INVERSE_H
 #define SSG_RADICAL_INVERSE_H
