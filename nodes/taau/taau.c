@@ -10,7 +10,6 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
                           const struct ssg_shape *in, struct ssg_shape *out, char *why,
                           size_t why_len)
 {
-    (void)frame;
     const struct ssg_taau_params *p = params;
     const struct ssg_shape *im = &in[SSG_TAAU_IN_IN];
     /* The shapes first: the graph's quiet first pass (graph_check.c) keeps them while the
@@ -30,6 +29,9 @@ static enum ssg_err check(const void *params, const struct ssg_frame *frame,
         e = "weight_in must be 1 channel of factor x in's size (prev of this node's weight)";
     else if (m->channels != 3 || !ssg_shape_same_size(m, im))
         e = "motion must be a 3-channel image the size of in";
+    else if (frame && frame->guard > 0) /* write crops a band only from frame-sized images */
+        e = "a frame with a guard band (a `guard` line or --guard) is not upsampled: the "
+            "band would stay in out; leave the guard band out";
     if (e) {
         snprintf(why, why_len, "%s", e);
         return SSG_E_SIZE;

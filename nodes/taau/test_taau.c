@@ -159,6 +159,14 @@ static void test_shapes(void)
     char why[256] = "";
     CHECK_EQ(ssg_shapes_infer(d, &params, &frame, ins, outs, why, sizeof why), SSG_E_SIZE);
     CHECK(strstr(why, "history must have") != NULL);
+    /* a guard band would stay in the output (write crops only frame-sized images) */
+    ins[SSG_TAAU_IN_HISTORY] = ssg_shape_of_image(f.hist, SSG_T_COLOR);
+    params.factor = 3; /* f's history is 3 x its input */
+    frame.guard = 4;
+    CHECK_EQ(ssg_shapes_infer(d, &params, &frame, ins, outs, why, sizeof why), SSG_E_SIZE);
+    CHECK(strstr(why, "guard band") != NULL);
+    frame.guard = 0;
+    CHECK_EQ(ssg_shapes_infer(d, &params, &frame, ins, outs, why, sizeof why), SSG_OK);
     uframe_free(&f);
 }
 
