@@ -114,14 +114,17 @@ void main()
     for (int c = 0; c < CHANNELS; c++) {
         precise float mean = m1[c] / count;
         precise float var = m2[c] / count - mean * mean;
-        precise float cur = wsum > 0.0 ? sum[c] * inv_wsum : mean;
+        // a subnormal weight counts as none (1 / W would be infinite), as on the CPU
+        precise float cur = wsum >= 1.17549435e-38 ? sum[c] * inv_wsum : mean;
         precise float sd = p_gamma * sqrt(var > 0.0 ? var : 0.0);
         precise float lo = mean - sd, hi = mean + sd;
-        float hc = h[c] < lo ? lo : h[c];
+        // a history that is not finite is this frame's estimate (it washes out)
+        float hf = isnan(h[c]) || isinf(h[c]) ? cur : h[c];
+        float hc = hf < lo ? lo : hf;
         hc = hc > hi ? hi : hc;
-        float hv = p_gamma > 0.0 ? hc : h[c];
+        float hv = p_gamma > 0.0 ? hc : hf;
         precise float blended = (hw * hv + wsum * cur) * inv_total;
-        imageStore(dst_out, ivec3(p, c), vec4(total > 0.0 ? blended : cur));
+        imageStore(dst_out, ivec3(p, c), vec4(total >= 1.17549435e-38 ? blended : cur));
     }
     SSG_STORE1(dst_weight, p, total < p_max_weight ? total : p_max_weight);
 }

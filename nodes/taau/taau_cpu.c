@@ -11,6 +11,7 @@
  * rows of four adjacent ones (one vector load a row). No fused multiply-adds: every
  * operation rounds as the shader's `precise` ones do, in the same order. */
 #include "common/vector_loops.h" /* first: see there */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -223,7 +224,9 @@ estimate(const struct job *j, struct chunk *restrict k, const float *restrict v,
     for (int i = 0; i < len; i++) {
         float sum = w0[i] * v[k->l[i]] + w1[i] * v[near[i]] + w2[i] * v[k->r[i]];
         float mu = mean[k->q[i]]; /* loaded either way: a select, not a branch */
-        k->cur[i] = k->wsum[i] > 0.0f ? sum * k->inv_wsum[i] : mu;
+        /* (a subnormal W would make 1 / W infinite: a GPU flushes it to 0, so both count
+           it as no weight) */
+        k->cur[i] = k->wsum[i] >= FLT_MIN ? sum * k->inv_wsum[i] : mu;
     }
 }
 
@@ -275,12 +278,15 @@ blend(const struct chunk *restrict k, const float *restrict mean, const float *r
 {
     for (int i = 0; i < len; i++) {
         float mu = mean[k->q[i]], s = sd[k->q[i]], c = k->cur[i], hv = k->hist[i];
+        /* a history that is not finite (a bad frame upstream) is this frame's estimate,
+           so that it washes out rather than spreading through the taps and the weight */
+        hv = fabsf(hv) <= FLT_MAX ? hv : c;
         float lo = mu - s, hi = mu + s;
         float hc = hv < lo ? lo : hv;
         hc = hc > hi ? hi : hc;
         hv = clamp ? hc : hv;
         float blended = (k->hw[i] * hv + k->wsum[i] * c) * k->inv_total[i];
-        out[i] = k->hw[i] + k->wsum[i] > 0.0f ? blended : c;
+        out[i] = k->hw[i] + k->wsum[i] >= FLT_MIN ? blended : c;
     }
 }
 

@@ -301,6 +301,58 @@ static void test_clamp(void)
     uframe_free(&f);
 }
 
+/* Weights that underflow to subnormals (a small sigma at factor 4) count as none: every
+   output of a constant picture stays that constant, over all eight jitter phases. */
+static void test_tiny_weights(void)
+{
+    struct uframe f = uframe_make(20, 15, 1, 4);
+    for (size_t i = 0; i < 20 * 15; i++)
+        f.in->data[i] = 0.5f;
+    const char *sets[] = {"factor=4", "sigma=0.2"};
+    double worst = 0;
+    for (int k = 0; k < 8; k++) {
+        jitter_of(k, &f.jx, &f.jy);
+        struct ssg_image *out, *wt;
+        if (urun(&f, sets, 2, 0, &out, &wt))
+            break;
+        for (size_t i = 0; i < 80 * 60; i++)
+            worst = isfinite(out->data[i]) ? fmax(worst, fabs(out->data[i] - 0.5)) : INFINITY;
+        feed_back(&f, out, wt);
+    }
+    CHECK(worst < 1e-6);
+    uframe_free(&f);
+}
+
+/* A history that is not finite (NaN with weight 0, an infinity with max_weight 0) gives a
+   finite output, the same as this frame's estimate, and does not spread; on both sides. */
+static void test_bad_history(int gl)
+{
+    struct uframe f = uframe_make(16, 12, 1, 2);
+    for (size_t i = 0; i < 16 * 12; i++)
+        f.in->data[i] = 0.25f;
+    for (size_t i = 0; i < 32 * 24; i++)
+        f.hist->data[i] = 0.25f, f.weight->data[i] = 1.0f;
+    f.hist->data[10 * 32 + 10] = NAN, f.weight->data[10 * 32 + 10] = 0.0f;
+    f.hist->data[5 * 32 + 20] = INFINITY;
+    f.reset = 0;
+    const char *none[] = {"max_weight=0"};
+    for (int k = 0; k < 4; k++) {
+        struct ssg_image *out, *wt;
+        if (urun(&f, k == 3 ? none : NULL, k == 3, gl, &out, &wt))
+            break;
+        int bad = 0;
+        for (size_t i = 0; i < 32 * 24; i++)
+            bad += !isfinite(out->data[i]) || fabs(out->data[i] - 0.25) > 1e-6;
+        CHECK_EQ(bad, 0);
+        if (k < 2) { /* the bad texels again, into the next frame's history */
+            out->data[10 * 32 + 10] = NAN;
+            out->data[5 * 32 + 20] = -INFINITY;
+        }
+        feed_back(&f, out, wt);
+    }
+    uframe_free(&f);
+}
+
 /* A frame that exercises every branch: random values, a stale history on a tenth of the
    pixels, motion up to +-40 output pixels (some outside), 1 or 3 channels. */
 static struct uframe random_frame(int w, int h, int ch)
@@ -369,6 +421,9 @@ int main(void)
     test_motion();
     test_outside();
     test_clamp();
+    test_tiny_weights();
+    test_bad_history(0);
+    test_bad_history(1);
     test_threads();
     parity("3 channels", 3, 0);
     parity("1 channel", 1, 0);
