@@ -388,7 +388,8 @@ enum ssg_err ssg_taau_run_cpu(const struct ssg_node_ctx *ctx, const void *consts
     int failed = 0;
     j.failed = &failed;
     ssg_parallel_rows(j.h, ROWS_PER_BAND, moments_band, &j);
-    ssg_parallel_rows(j.bh, ROWS_PER_BAND, band, &j);
+    if (!failed) /* the output reads every moment */
+        ssg_parallel_rows(j.bh, ROWS_PER_BAND, band, &j);
     free(block);
     if (failed)
         return ssg_node_fail(ctx, SSG_E_NOMEM, "no memory for a band's rows of %d pixels",
