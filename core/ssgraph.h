@@ -425,6 +425,12 @@ SSG_API enum ssg_err ssg_graph_set_lights(struct ssg_graph *graph, const char *l
  * one-frame runs keep it (rather than the path's) until the next ssg_graph_set_frame. */
 SSG_API enum ssg_err ssg_graph_camera_at(const struct ssg_graph *graph, int frame_index,
                                          struct ssg_view *out, struct ssg_diags *diags);
+/* Frame `frame_index`'s sub-pixel jitter (ssg_frame.jitter_x, _y) under the graph's
+ * `jitter N` line, 0, 0 without one: what an engine that rasterises its own G-buffer into
+ * an `input` graph must offset that frame's projection by (docs/time.md). SSG_E_VALUE for a
+ * negative frame. */
+SSG_API enum ssg_err ssg_graph_jitter_at(const struct ssg_graph *graph, int frame_index,
+                                         float jitter[2], struct ssg_diags *diags);
 SSG_API enum ssg_err ssg_graph_set_frame(struct ssg_graph *graph, int frame_index,
                                          struct ssg_diags *diags);
 

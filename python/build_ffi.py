@@ -164,6 +164,8 @@ enum ssg_err ssg_graph_set_lights(struct ssg_graph *graph, const char *lights,
                                   struct ssg_diags *diags);
 enum ssg_err ssg_graph_camera_at(const struct ssg_graph *graph, int frame_index,
                                  struct ssg_view *out, struct ssg_diags *diags);
+enum ssg_err ssg_graph_jitter_at(const struct ssg_graph *graph, int frame_index,
+                                 float jitter[2], struct ssg_diags *diags);
 enum ssg_err ssg_graph_set_frame(struct ssg_graph *graph, int frame_index,
                                  struct ssg_diags *diags);
 

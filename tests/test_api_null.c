@@ -43,6 +43,9 @@ static void graphs(void)
     struct ssg_view view;
     expect_usage(ssg_graph_camera_at(NULL, 0, &view, &d), &d, "ssg_graph_camera_at", "graph");
     d = (struct ssg_diags){0};
+    float jitter[2];
+    expect_usage(ssg_graph_jitter_at(NULL, 0, jitter, &d), &d, "ssg_graph_jitter_at", "graph");
+    d = (struct ssg_diags){0};
     expect_usage(ssg_graph_set_frame(NULL, 0, &d), &d, "ssg_graph_set_frame", "graph");
     d = (struct ssg_diags){0};
     expect_usage(ssg_scene_check(NULL, &d), &d, "ssg_scene_check", "path");

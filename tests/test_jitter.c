@@ -50,6 +50,10 @@ static void test_sequence(void)
         CHECK(g->frame.jitter_x == jx && g->frame.jitter_y == jy);
         struct ssg_projection p = ssg_frame_projection(&g->frame);
         CHECK(p.cx == 20.0f - jx && p.cy == 15.0f - jy);
+        float ask[2] = {9, 9}; /* what an engine asks for before the frame (ssgraph.h) */
+        struct ssg_diags d = {0};
+        CHECK_EQ(ssg_graph_jitter_at(g, f, ask, &d), SSG_OK);
+        CHECK(ask[0] == jx && ask[1] == jy);
         ssg_time_end(g, f);
     }
     /* the first four: (0, -1/6), (-1/4, 1/6), (1/4, -7/18), (-3/8, -1/18) */
@@ -63,6 +67,11 @@ static void test_sequence(void)
     for (int f = 0; f < 3; f++) {
         ssg_time_begin(g, f, f == 0, 3, 0, &step);
         CHECK(g->frame.jitter_x == 0.0f && g->frame.jitter_y == 0.0f);
+        float ask[2] = {9, 9};
+        struct ssg_diags d = {0};
+        CHECK_EQ(ssg_graph_jitter_at(g, f, ask, &d), SSG_OK);
+        CHECK(ask[0] == 0.0f && ask[1] == 0.0f);
+        CHECK_EQ(ssg_graph_jitter_at(g, -1, ask, &d), SSG_E_VALUE);
     }
     ssg_graph_destroy(&g);
 }

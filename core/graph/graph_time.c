@@ -50,14 +50,20 @@ static void use_camera(struct ssg_graph *g, const struct ssg_camera *camera)
    the Halton points (2, 3) of index 1 .. N in turn, less 0.5, so that the offsets cover
    the pixel evenly with their mean near its centre (Karis, High Quality Temporal
    Supersampling, SIGGRAPH 2014); index 0, the corner, is left out. 1 if it moved. */
-static int frame_jitter(struct ssg_graph *g, int frame)
+static void jitter_of(const struct ssg_graph *g, int frame, float *jx, float *jy)
 {
-    float jx = 0.0f, jy = 0.0f;
+    *jx = *jy = 0.0f;
     if (g->jitter > 0) {
         uint64_t i = (uint64_t)(frame % g->jitter) + 1;
-        jx = (float)(ssg_halton_radical_inverse(i, 2) - 0.5);
-        jy = (float)(ssg_halton_radical_inverse(i, 3) - 0.5);
+        *jx = (float)(ssg_halton_radical_inverse(i, 2) - 0.5);
+        *jy = (float)(ssg_halton_radical_inverse(i, 3) - 0.5);
     }
+}
+
+static int frame_jitter(struct ssg_graph *g, int frame)
+{
+    float jx, jy;
+    jitter_of(g, frame, &jx, &jy);
     int moved = jx != g->frame.jitter_x || jy != g->frame.jitter_y;
     g->frame.jitter_x = jx;
     g->frame.jitter_y = jy;
@@ -120,6 +126,20 @@ enum ssg_err ssg_graph_camera_at(const struct ssg_graph *g, int frame, struct ss
     memcpy(out->target, c.target, sizeof out->target);
     memcpy(out->up, c.up, sizeof out->up);
     out->fov_y = c.fov_y;
+    return SSG_OK;
+}
+
+enum ssg_err ssg_graph_jitter_at(const struct ssg_graph *g, int frame, float jitter[2],
+                                 struct ssg_diags *diags)
+{
+    if (ssg_api_null(diags, "ssg_graph_jitter_at", "graph, jitter", 2, g, jitter))
+        return SSG_E_USAGE;
+    if (frame < 0) {
+        ssg_diag_file(diags, SSG_E_VALUE, g->path, "no jitter for frame %d: frames count "
+                      "from 0", frame);
+        return SSG_E_VALUE;
+    }
+    jitter_of(g, frame, &jitter[0], &jitter[1]);
     return SSG_OK;
 }
 

@@ -390,6 +390,14 @@ class Graph:
                    view, what="the camera path")
         return _camera(view)
 
+    def jitter_at(self, frame: int) -> tuple:
+        """Frame `frame`'s sub-pixel jitter (x, y) in pixels under the graph's `jitter N`
+        line, (0.0, 0.0) without one (docs/time.md)."""
+        jitter = ffi.new("float[2]")
+        self._call(lib.ssg_graph_jitter_at, _args.integer(frame, "frame", 0, _args.INT_MAX),
+                   jitter, what="the jitter")
+        return (jitter[0], jitter[1])
+
     def set_frame(self, frame: int) -> "Graph":
         """The frame the next run starts at (docs/time.md): the next frame after the last
         run follows on from it (history kept); any other is a cut."""

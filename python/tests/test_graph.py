@@ -149,6 +149,16 @@ def test_camera_path_and_frames(repo):
         assert run.stats["frames"] == 2
 
 
+def test_jitter_at(repo):
+    # an engine asks for frame f's offset before rendering it (docs/time.md)
+    with ssgraph.load(repo / "graphs/gi_taau.graph", size=SIZE) as g:
+        assert g.jitter_at(0) == (0.0, pytest.approx(-1.0 / 6.0))
+        assert g.jitter_at(1) == (-0.25, pytest.approx(1.0 / 6.0))
+        assert g.jitter_at(8) == g.jitter_at(0)
+    with ssgraph.load(repo / "graphs/ssao.graph", size=SIZE) as g:
+        assert g.jitter_at(3) == (0.0, 0.0)
+
+
 def test_supply_an_engine_gbuffer(tmp_path):
     graph = tmp_path / "engine.graph"
     graph.write_text("size 40 30\n"
