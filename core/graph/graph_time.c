@@ -49,7 +49,7 @@ static void use_camera(struct ssg_graph *g, const struct ssg_camera *camera)
 /* Frame `frame`'s sub-pixel jitter under a `jitter N` line (ssg_frame.jitter_x, _y):
    the Halton points (2, 3) of index 1 .. N in turn, less 0.5, so that the offsets cover
    the pixel evenly with their mean near its centre (Karis, High Quality Temporal
-   Supersampling, SIGGRAPH 2014); index 0, the corner, is left out. 1 if it moved. */
+   Supersampling, SIGGRAPH 2014); index 0, the corner, is left out. */
 static void jitter_of(const struct ssg_graph *g, int frame, float *jx, float *jy)
 {
     *jx = *jy = 0.0f;
@@ -60,6 +60,7 @@ static void jitter_of(const struct ssg_graph *g, int frame, float *jx, float *jy
     }
 }
 
+/* Makes frame `frame`'s jitter the one every node sees (ssg_frame); 1 if it moved. */
 static int frame_jitter(struct ssg_graph *g, int frame)
 {
     float jx, jy;

@@ -64,6 +64,17 @@ static void make_axis(const struct ssg_taau_consts *c, struct axis *a, int n, in
 
 /* ---- the window's moments, once per pixel of in ---- */
 
+/* A window's mean and gamma times its deviation from its sums of v and v^2 over count
+   taps. */
+static inline void window_stats(float m1, float m2, float count, float gamma,
+                                float *restrict mean, float *restrict sd)
+{
+    float mu = m1 / count;
+    float var = m2 / count - mu * mu;
+    *mean = mu;
+    *sd = gamma * sqrtf(var > 0.0f ? var : 0.0f);
+}
+
 /* Row y of in: per pixel and channel the mean of its 3 x 3 window (taps outside in left
    out) and gamma times the deviation. Per column the three rows' sums (c1, c2: a row of
    in's width each), then the three columns', as the shader adds them; a tap outside in
@@ -95,24 +106,15 @@ SSG_VECTOR_CLONES static void moments_row(const struct job *j, int y, float *res
         float *restrict sd = j->sd[ch] + (size_t)y * w;
         const float count = 3.0f * ny;
         for (int x = 1; x < w - 1; x++) { /* the interior: one straight loop */
-            float m1 = c1[x - 1] + c1[x] + c1[x + 1];
-            float m2 = c2[x - 1] + c2[x] + c2[x + 1];
-            float mu = m1 / count;
-            float var = m2 / count - mu * mu;
-            mean[x] = mu;
-            sd[x] = gamma * sqrtf(var > 0.0f ? var : 0.0f);
+            window_stats(c1[x - 1] + c1[x] + c1[x + 1], c2[x - 1] + c2[x] + c2[x + 1], count,
+                         gamma, &mean[x], &sd[x]);
         }
         for (int x = 0; x < w; x += w > 1 ? w - 1 : 1) { /* the edges: the column past
                                                              one counts 0 times */
             float il = x > 0 ? 1.0f : 0.0f, ir = x < w - 1 ? 1.0f : 0.0f;
             int l = x > 0 ? x - 1 : 0, r = x < w - 1 ? x + 1 : w - 1;
-            float m1 = il * c1[l] + c1[x] + ir * c1[r];
-            float m2 = il * c2[l] + c2[x] + ir * c2[r];
-            float n = ((il + 1.0f) + ir) * ny;
-            float mu = m1 / n;
-            float var = m2 / n - mu * mu;
-            mean[x] = mu;
-            sd[x] = gamma * sqrtf(var > 0.0f ? var : 0.0f);
+            window_stats(il * c1[l] + c1[x] + ir * c1[r], il * c2[l] + c2[x] + ir * c2[r],
+                         ((il + 1.0f) + ir) * ny, gamma, &mean[x], &sd[x]);
         }
     }
 }

@@ -11,7 +11,7 @@
 
 #include "scene/radical_inverse.h"
 #include "gl_parity.h"
-#include "scene_node.h" /* node_execute_on */
+#include "scene_node.h" /* node_params, node_execute_on */
 #include "taau.h"
 
 /* One run's inputs (in's size w x h, the output's factor x that) and outputs. */
@@ -52,12 +52,9 @@ static int urun(const struct uframe *f, const char *const *sets, int n, int gl,
                 struct ssg_image **out_img, struct ssg_image **weight_img)
 {
     const struct ssg_node_desc *d = &ssg_node_taau;
-    struct ssg_taau_params params;
+    struct ssg_taau_params *params = node_params(d, sets, n);
     struct ssg_diags diags = {0};
-    ssg_params_defaults(d->params, &params);
     enum ssg_err e = SSG_OK;
-    for (int i = 0; i < n && !e; i++)
-        e = ssg_param_set_text(d->params, &params, sets[i], "<test>", d->name, &diags);
     const struct ssg_image *in[SSG_TAAU_INPUTS] = {f->in, f->motion, f->hist, f->weight};
     struct ssg_shape ins[SSG_MAX_PORTS] = {{0}}, outs[SSG_MAX_PORTS];
     for (int i = 0; i < SSG_TAAU_INPUTS; i++)
@@ -67,7 +64,7 @@ static int urun(const struct uframe *f, const char *const *sets, int n, int gl,
     frame.jitter_x = f->jx, frame.jitter_y = f->jy;
     char why[256] = "";
     if (!e)
-        e = ssg_shapes_infer(d, &params, &frame, ins, outs, why, sizeof why);
+        e = ssg_shapes_infer(d, params, &frame, ins, outs, why, sizeof why);
     struct ssg_image *out[SSG_TAAU_OUTPUTS] = {NULL};
     for (int i = 0; i < SSG_TAAU_OUTPUTS && !e; i++)
         out[i] = ssg_image_create(outs[i].width, outs[i].height, outs[i].channels);
@@ -76,7 +73,8 @@ static int urun(const struct uframe *f, const char *const *sets, int n, int gl,
                                .in_shape = ins, .out_shape = outs,
                                .history_reset = f->reset};
     if (!e)
-        e = node_execute_on(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
+        e = node_execute_on(d, &ctx, params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
+    free(params);
     if (e) {
         fprintf(stderr, "taau run failed (%s): %s\n", gl ? "gl" : "cpu", why);
         ssg_diags_print(&diags, stderr);

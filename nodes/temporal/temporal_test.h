@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "scene_node.h" /* node_execute_on */
+#include "scene_node.h" /* node_params, node_execute_on */
 #include "temporal.h"
 
 /* One frame's inputs (NULL = unconnected optional port) and the three outputs. */
@@ -75,12 +75,9 @@ static int trun(const struct tframe *f, const char *const *sets, int n, int rese
                 struct tresult *r)
 {
     const struct ssg_node_desc *d = &ssg_node_temporal;
-    struct ssg_temporal_params params;
+    struct ssg_temporal_params *params = node_params(d, sets, n);
     struct ssg_diags diags = {0};
-    ssg_params_defaults(d->params, &params);
     enum ssg_err e = SSG_OK;
-    for (int i = 0; i < n && !e; i++)
-        e = ssg_param_set_text(d->params, &params, sets[i], "<test>", d->name, &diags);
     const struct ssg_image *in[SSG_TEMPORAL_INPUTS] = {
         f->in, f->in2, f->hist, f->hist2, f->len, f->motion, f->depth, f->normal, f->pdepth,
         f->pnormal};
@@ -92,7 +89,7 @@ static int trun(const struct tframe *f, const char *const *sets, int n, int rese
     frame.width = f->in->width, frame.height = f->in->height;
     char why[256] = "";
     if (!e)
-        e = ssg_shapes_infer(d, &params, &frame, ins, outs, why, sizeof why);
+        e = ssg_shapes_infer(d, params, &frame, ins, outs, why, sizeof why);
     memset(r, 0, sizeof *r);
     struct ssg_image *out[SSG_TEMPORAL_OUTPUTS] = {NULL};
     for (int i = 0; i < SSG_TEMPORAL_OUTPUTS && !e; i++)
@@ -101,7 +98,8 @@ static int trun(const struct tframe *f, const char *const *sets, int n, int rese
     struct ssg_node_ctx ctx = {.desc = d, .instance = "t", .frame = &frame, .diags = &diags,
                                .in_shape = ins, .out_shape = outs, .history_reset = reset};
     if (!e)
-        e = node_execute_on(d, &ctx, &params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
+        e = node_execute_on(d, &ctx, params, &io, gl ? SSG_BACKEND_GL : SSG_BACKEND_CPU);
+    free(params);
     if (e) {
         fprintf(stderr, "temporal run failed (%s): %s\n", gl ? "gl" : "cpu", why);
         ssg_diags_print(&diags, stderr);
