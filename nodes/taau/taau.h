@@ -34,16 +34,17 @@ SSG_PORT_ENUM(ssg_taau_output, SSG_TAAU_OUT, SSG_TAAU_OUTPUTS);
    p_<field>. */
 #define SSG_TAAU_PARAMS(P)                                                                 \
     P(INT, factor, "out is factor x in's size on both axes", .def = 2, .min = 1, .max = 4,  \
-      .soft_min = 1, .soft_max = 4, .host_only = 1)                                         \
+      .soft_min = 1, .soft_max = 4, .unit = "times", .host_only = 1)                        \
     P(FLOAT, sigma, "standard deviation of the Gaussian that weights a sample by its "     \
       "distance to the output pixel's centre", .def = 0.5, .min = 0.05, .max = 4,         \
       .soft_min = 0.2, .soft_max = 1.5, .unit = "output pixels", .host_only = 1)          \
     P(FLOAT, max_weight, "the history's weight is capped here: the larger, the longer "   \
       "the samples of earlier frames count (about max_weight / 0.4 frames at factor 2)",  \
-      .def = 1, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 32)                      \
+      .def = 1, .min = 0, .max = 1000, .soft_min = 0, .soft_max = 32,                      \
+      .unit = "samples on the centre")                                                     \
     P(FLOAT, gamma, "history clamped to mean +/- gamma stddev of in's 3 x 3 samples "      \
       "around the output pixel; 0 = no clamp", .def = 1.5, .min = 0, .max = 1000,           \
-      .soft_min = 0, .soft_max = 4)
+      .soft_min = 0, .soft_max = 4, .unit = "standard deviations")
 SSG_PARAMS_STRUCT(ssg_taau_params, SSG_TAAU_PARAMS);
 
 /* What prepare() makes once for both backends (the shader reads it by name,
